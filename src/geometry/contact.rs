@@ -1,0 +1,108 @@
+//! The contact state at a point of the line of action: radii of curvature, velocities, slide-to-roll
+//! ratio, load share, load per unit face width and Hertzian pressure (physics notes, "Geometry and
+//! names"; Hertz line contact as in He–Cho–Singh §2 and Johnson, Contact Mechanics, eq 4.45).
+
+use serde::Serialize;
+
+use super::spur::SpurGeometry;
+
+/// One operating point in SI: pinion torque (N·m) and pinion speed (rad/s).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct OperatingState {
+    pub pinion_torque: f64,
+    pub pinion_speed: f64,
+}
+
+/// How the normal load is shared between pairs in contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Sharing {
+    /// 1/n of the load on each of n pairs in contact.
+    Equal,
+    /// Every contact carries the whole load.
+    Whole,
+}
+
+/// E' = 2 / [(1 − ν1²)/E1 + (1 − ν2²)/E2] (physics notes; He–Cho–Singh print a misplaced parenthesis).
+pub fn reduced_modulus(e: [f64; 2], nu: [f64; 2]) -> f64 {
+    2.0 / ((1.0 - nu[0] * nu[0]) / e[0] + (1.0 - nu[1] * nu[1]) / e[1])
+}
+
+/// The contact state at one point; SI units throughout.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ContactPoint {
+    /// Distance from T1 (m).
+    pub u: f64,
+    /// s = u − T1P: negative in approach, positive in recess (m).
+    pub s: f64,
+    /// ρ1 = u, ρ2 = T1T2 − u (m).
+    pub radius_of_curvature: [f64; 2],
+    /// R = ρ1ρ2/(ρ1 + ρ2) (m).
+    pub reduced_radius: f64,
+    /// v_i = ω_i ρ_i (m/s).
+    pub rolling_velocity: [f64; 2],
+    /// v_s = |v1 − v2| (m/s).
+    pub sliding_velocity: f64,
+    /// v_Σ = v1 + v2 (m/s).
+    pub sum_velocity: f64,
+    /// U = v_Σ / 2 (m/s).
+    pub entrainment_velocity: f64,
+    /// SR = v_s / U.
+    pub slide_to_roll: f64,
+    pub pairs_in_contact: usize,
+    pub load_share: f64,
+    /// w = share · F_bn / b (N/m).
+    pub load_per_width: f64,
+    /// p_H = sqrt(w E' / (2π R)) (Pa).
+    pub hertz_pressure: f64,
+    /// b_H = sqrt(8 w R / (π E')) (m).
+    pub hertz_half_width: f64,
+}
+
+impl SpurGeometry {
+    /// Normal load along the line of action, F_bn = T_p / r_b1 (N).
+    pub fn normal_load(&self, op: &OperatingState) -> f64 {
+        op.pinion_torque / self.base_radius[0]
+    }
+
+    /// Wheel speed ω2 = ω1 z1/z2 (rad/s).
+    pub fn wheel_speed(&self, op: &OperatingState) -> f64 {
+        op.pinion_speed / self.gear_ratio
+    }
+
+    /// Load share of a contact at `u` under the given sharing rule.
+    pub fn load_share(&self, u: f64, sharing: Sharing) -> f64 {
+        match sharing {
+            Sharing::Equal => 1.0 / self.pairs_in_contact(u) as f64,
+            Sharing::Whole => 1.0,
+        }
+    }
+
+    /// The contact state at `u` (from T1) for an operating point, with reduced modulus E'.
+    pub fn contact_at(&self, u: f64, op: &OperatingState, reduced_modulus: f64, sharing: Sharing) -> ContactPoint {
+        let rho = [u, self.line_of_action_length - u];
+        let r = rho[0] * rho[1] / (rho[0] + rho[1]);
+        let v = [op.pinion_speed * rho[0], self.wheel_speed(op) * rho[1]];
+        let vs = (v[0] - v[1]).abs();
+        let vsum = v[0] + v[1];
+        let ue = vsum / 2.0;
+        let n = self.pairs_in_contact(u);
+        let share = self.load_share(u, sharing);
+        let w = share * self.normal_load(op) / self.face_width;
+        ContactPoint {
+            u,
+            s: u - self.points.p,
+            radius_of_curvature: rho,
+            reduced_radius: r,
+            rolling_velocity: v,
+            sliding_velocity: vs,
+            sum_velocity: vsum,
+            entrainment_velocity: ue,
+            slide_to_roll: if ue > 0.0 { vs / ue } else { 0.0 },
+            pairs_in_contact: n,
+            load_share: share,
+            load_per_width: w,
+            hertz_pressure: (w * reduced_modulus / (2.0 * std::f64::consts::PI * r)).sqrt(),
+            hertz_half_width: (8.0 * w * r / (std::f64::consts::PI * reduced_modulus)).sqrt(),
+        }
+    }
+}

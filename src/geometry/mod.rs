@@ -1,0 +1,9 @@
+//! Involute gear geometry and the contact state along the line of action (plain SI `f64`).
+//!
+//! Knows nothing of scenes, friction or reports: it takes a [`spur::SpurPairInput`] and gives numbers.
+
+pub mod contact;
+pub mod spur;
+
+pub use contact::{ContactPoint, OperatingState};
+pub use spur::{involute, GeometryProblem, PairPart, SpurGeometry, SpurPairInput, TipSource};

@@ -1,0 +1,124 @@
+#![warn(clippy::print_stdout, clippy::print_stderr)]
+//! gearloss: gear mesh friction, efficiency and dynamics from a `.gear` scene.
+//!
+//! ```text
+//!  scene.gear ─parse─▶ SceneAst ─lower─▶ Scene ─evaluate─▶ Evaluation ─report─▶ Report ─render─▶ report folder
+//!   (text)     pest    (syntax)  units,  (uom,   only what  (SI f64)    serde   (data)  md, json,  (written to a
+//!                                names,  checked) the scene                              svg        temp folder,
+//!                                checks           asks for                                          then renamed)
+//! ```
+//!
+//! One public function per stage: [`parse`], [`lower`], [`evaluate`], [`report`], [`render`], and
+//! [`write_report_folder`]. Errors of the first two stages are [`SceneErrors`]: every problem with
+//! its span, reason and hints, rendered by miette. The library never prints.
+
+pub mod evaluate;
+pub mod friction;
+pub mod geometry;
+pub mod model;
+pub mod render;
+pub mod report;
+pub mod scene;
+
+use std::path::{Path, PathBuf};
+
+pub use evaluate::Evaluation;
+pub use model::Scene;
+pub use render::RenderedReport;
+pub use report::Report;
+pub use scene::ast::SceneAst;
+pub use scene::diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
+
+/// Stage 1: text → syntax tree.
+pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {
+    scene::parse::parse_scene_text(source).map_err(|diagnostics| SceneErrors {
+        source_name: source_name.into(),
+        source: source.into(),
+        diagnostics,
+    })
+}
+
+/// Stage 2: syntax tree → checked scene (units, names, ranges, geometry).
+pub fn lower(source_name: &str, source: &str, ast: &SceneAst) -> Result<Scene, SceneErrors> {
+    scene::lower::lower_scene(ast).map_err(|diagnostics| SceneErrors {
+        source_name: source_name.into(),
+        source: source.into(),
+        diagnostics,
+    })
+}
+
+/// Stages 1 and 2: what `gearloss check` runs.
+pub fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
+    let ast = parse(source_name, source)?;
+    lower(source_name, source, &ast)
+}
+
+/// Stage 3: computes what the scene asks for.
+pub fn evaluate(scene: &Scene) -> Evaluation {
+    evaluate::evaluate_scene(scene)
+}
+
+/// Stage 4: the serde report data.
+pub fn report(scene: &Scene, evaluation: &Evaluation) -> Report {
+    report::build_report(scene, evaluation)
+}
+
+/// Stage 5: the files of the report folder.
+pub fn render(report: &Report) -> Result<RenderedReport, String> {
+    render::render_report(report)
+}
+
+/// Writes `DIR/<slug>/` atomically: into a temporary folder beside it, then renamed into place.
+/// An existing report folder of the same name is replaced only once the new one is complete.
+pub fn write_report_folder(rendered: &RenderedReport, out_dir: &Path) -> std::io::Result<PathBuf> {
+    std::fs::create_dir_all(out_dir)?;
+    let target = out_dir.join(&rendered.slug);
+    let tmp = out_dir.join(format!(".{}.tmp-{}", rendered.slug, std::process::id()));
+    if tmp.exists() {
+        std::fs::remove_dir_all(&tmp)?;
+    }
+    std::fs::create_dir(&tmp)?;
+    let written = (|| {
+        for (name, content) in &rendered.files {
+            std::fs::write(tmp.join(name), content)?;
+        }
+        Ok::<(), std::io::Error>(())
+    })();
+    if let Err(e) = written {
+        let _ = std::fs::remove_dir_all(&tmp);
+        return Err(e);
+    }
+    let old = out_dir.join(format!(".{}.old-{}", rendered.slug, std::process::id()));
+    let had_old = target.exists();
+    if had_old {
+        std::fs::rename(&target, &old)?;
+    }
+    if let Err(e) = std::fs::rename(&tmp, &target) {
+        if had_old {
+            let _ = std::fs::rename(&old, &target);
+        }
+        let _ = std::fs::remove_dir_all(&tmp);
+        return Err(e);
+    }
+    if had_old {
+        std::fs::remove_dir_all(&old)?;
+    }
+    Ok(target)
+}
+
+/// Everything `gearloss run` does short of writing: check, evaluate, report, render.
+pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
+    let scene = check(source_name, source).map_err(RunError::Scene)?;
+    let evaluation = evaluate(&scene);
+    let report = report(&scene, &evaluation);
+    render(&report).map_err(RunError::Render)
+}
+
+/// Why a run failed.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    #[error("{0}")]
+    Scene(SceneErrors),
+    #[error("rendering the report failed: {0}")]
+    Render(String),
+}

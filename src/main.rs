@@ -1,0 +1,7 @@
+//! The `gearloss` command: argument parsing and exit codes live in `cli.rs`.
+
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    cli::main()
+}

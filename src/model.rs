@@ -1,0 +1,207 @@
+//! The lowered scene: names resolved, every quantity unit-checked and held as a uom value.
+//!
+//! This is what every later stage reads. Each given value keeps what the user wrote
+//! (for the report's scene summary, in the user's units) and where (for diagnostics).
+
+use uom::si::f64 as si;
+use uom::si::{Quantity, ISQ, SI};
+use uom::typenum::{N1, N2, P1, P2, Z0};
+
+use crate::scene::ast::Span;
+
+pub use si::{
+    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, MassDensity,
+    MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque,
+};
+
+/// 1/Pa, the unit of the pressure–viscosity coefficient α (uom has no named quantity for it).
+pub type ReciprocalPressure = Quantity<ISQ<P1, N1, P2, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
+/// N/m, the unit of mesh stiffness.
+pub type Stiffness = Quantity<ISQ<Z0, P1, N2, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
+
+/// A value as the user gave it: the checked value, the text written and where.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Given<T> {
+    pub value: T,
+    pub written: String,
+    pub span: Span,
+}
+
+/// One `.gear` scene after lowering.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    pub title: String,
+    pub gears: GearPair,
+    pub lubricant: Option<Lubricant>,
+    pub operating: Operating,
+    pub friction: Vec<FrictionLawSpec>,
+    pub analyses: Analyses,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LoadSharing {
+    /// Share 1 in single contact, 1/n where n pairs are in contact.
+    Equal,
+    /// Every contact carries the whole load (He–Cho–Singh).
+    None,
+}
+
+/// How the module was given.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ModuleSource {
+    Module,
+    /// `diametral_pitch = 10 1/in`: m = 1/P_d.
+    DiametralPitch(Given<ReciprocalLength>),
+}
+
+#[derive(Debug, Clone)]
+pub struct GearPair {
+    pub module: Given<Length>,
+    pub module_source: ModuleSource,
+    pub pressure_angle: Given<Angle>,
+    pub center_distance: Option<Given<Length>>,
+    pub face_width: Given<Length>,
+    pub load_sharing: LoadSharing,
+    pub pinion: Gear,
+    pub wheel: Gear,
+    /// Span of the `gears` block, for diagnostics about the pair as a whole.
+    pub span: Span,
+}
+
+#[derive(Debug, Clone)]
+pub struct Gear {
+    pub teeth: Given<u32>,
+    pub profile_shift: Given<f64>,
+    pub tip_diameter: Option<Given<Length>>,
+    pub inertia: Option<Given<MomentOfInertia>>,
+    pub material: Material,
+    pub roughness_ra: Option<Given<Length>>,
+    pub roughness_rq: Option<Given<Length>>,
+    pub roughness_rz: Option<Given<Length>>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone)]
+pub struct Material {
+    pub name: String,
+    pub youngs_modulus: Given<Pressure>,
+    pub poisson_ratio: Given<f64>,
+}
+
+/// The base oil family, for ISO/TR 14179-2's lubricant factor X_L.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LubricantType {
+    Mineral,
+    Pao,
+    PagInsoluble,
+    PagSoluble,
+    Traction,
+    PhosphateEster,
+}
+
+impl LubricantType {
+    pub const NAMES: &'static [&'static str] =
+        &["mineral", "pao", "pag_insoluble", "pag_soluble", "traction", "phosphate_ester"];
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Some(match name {
+            "mineral" => LubricantType::Mineral,
+            "pao" => LubricantType::Pao,
+            "pag_insoluble" => LubricantType::PagInsoluble,
+            "pag_soluble" => LubricantType::PagSoluble,
+            "traction" => LubricantType::Traction,
+            "phosphate_ester" => LubricantType::PhosphateEster,
+            _ => return None,
+        })
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct Lubricant {
+    pub name: String,
+    pub dynamic_viscosity: Given<DynamicViscosity>,
+    /// Given, or derived as η/ν when `kinematic_viscosity` is given instead.
+    pub density: Option<Given<MassDensity>>,
+    pub kinematic_viscosity: Option<Given<KinematicViscosity>>,
+    pub pressure_viscosity: Option<Given<ReciprocalPressure>>,
+    pub kind: Option<LubricantType>,
+    pub temperature: Option<Given<ThermodynamicTemperature>>,
+}
+
+impl Lubricant {
+    /// ν = η/ρ in m²/s, from whichever of density and kinematic viscosity was given.
+    pub fn kinematic_viscosity_si(&self) -> Option<f64> {
+        use uom::si::diffusion_coefficient::square_meter_per_second;
+        use uom::si::dynamic_viscosity::pascal_second;
+        use uom::si::mass_density::kilogram_per_cubic_meter;
+        if let Some(nu) = &self.kinematic_viscosity {
+            return Some(nu.value.get::<square_meter_per_second>());
+        }
+        self.density
+            .as_ref()
+            .map(|rho| self.dynamic_viscosity.value.get::<pascal_second>() / rho.value.get::<kilogram_per_cubic_meter>())
+    }
+}
+
+/// A swept or single operating variable: values in SI, plus how they were written.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sweep<T> {
+    pub values: Vec<T>,
+    /// The unit the user wrote, for the summary (`rpm`).
+    pub unit: String,
+    /// The values in the user's unit.
+    pub written_values: Vec<f64>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone)]
+pub struct Operating {
+    pub pinion_torque: Sweep<Torque>,
+    pub pinion_speed: Sweep<AngularVelocity>,
+}
+
+impl Operating {
+    /// The full product of the sweeps, torque-major: (torque index, speed index).
+    pub fn points(&self) -> Vec<(usize, usize)> {
+        let mut out = Vec::new();
+        for t in 0..self.pinion_torque.values.len() {
+            for n in 0..self.pinion_speed.values.len() {
+                out.push((t, n));
+            }
+        }
+        out
+    }
+}
+
+/// A friction law named in the `friction` block, with its arguments as given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionLawSpec {
+    pub id: String,
+    /// (argument name, SI value, as written)
+    pub arguments: Vec<(String, f64, String)>,
+    pub span: Span,
+}
+
+impl FrictionLawSpec {
+    pub fn argument(&self, name: &str) -> Option<f64> {
+        self.arguments.iter().find(|(n, _, _)| n == name).map(|(_, v, _)| *v)
+    }
+}
+
+/// The formulations of the output torque (Fernandes §2.3–2.4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Formulation {
+    External,
+    Internal,
+}
+
+/// What the scene asks to compute. Geometry and the contact state are always computed.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Analyses {
+    pub efficiency: Option<Vec<Formulation>>,
+    pub friction_along_loa: bool,
+    pub film: bool,
+}

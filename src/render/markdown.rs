@@ -1,0 +1,179 @@
+//! report.md: the report for a reader, in engineering units (mm, m/s, MPa, µm), fixed decimals.
+
+use std::fmt::Write;
+
+use crate::report::number::Q;
+use crate::report::{Report, Severity};
+
+/// Writes `x` with `d` decimals; non-finite values are written as `—` (and listed in the findings).
+pub fn fixed(x: f64, d: usize) -> String {
+    if x.is_finite() {
+        let s = format!("{x:.d$}");
+        if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+            s[1..].to_string()
+        } else {
+            s
+        }
+    } else {
+        "—".into()
+    }
+}
+
+fn scaled(q: &Q, factor: f64, d: usize) -> String {
+    fixed(q.si() * factor, d)
+}
+
+fn row(out: &mut String, cells: &[String]) {
+    let _ = writeln!(out, "| {} |", cells.join(" | "));
+}
+
+fn header(out: &mut String, cells: &[&str]) {
+    let _ = writeln!(out, "| {} |", cells.join(" | "));
+    let _ = writeln!(out, "|{}|", cells.iter().map(|_| "---").collect::<Vec<_>>().join("|"));
+}
+
+pub fn render_markdown(r: &Report) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "# {}\n", r.title);
+    let _ = writeln!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
+
+    let _ = writeln!(out, "## Scene\n");
+    header(&mut out, &["input", "as written", "SI"]);
+    for i in &r.inputs {
+        let unit = if i.si.unit == "1" { "" } else { i.si.unit };
+        row(&mut out, &[format!("`{}`", i.key), i.written.clone(), format!("{} {unit}", sig(i.si.si())).trim_end().to_string()]);
+    }
+
+    let g = &r.geometry;
+    let _ = writeln!(out, "\n## Geometry\n");
+    header(&mut out, &["quantity", "symbol", "value"]);
+    let deg = 180.0 / std::f64::consts::PI;
+    let rows: Vec<(&str, &str, String)> = vec![
+        ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
+        ("pressure angle", "α", format!("{}°", scaled(&g.pressure_angle, deg, 4))),
+        ("gear ratio", "u = z2/z1", fixed(g.gear_ratio.0, 4)),
+        ("centre distance", "a", format!("{} mm ({})", scaled(&g.center_distance, 1e3, 4), g.center_distance_source.replace('_', " "))),
+        ("zero-backlash centre distance", "a_0", format!("{} mm", scaled(&g.zero_backlash_center_distance, 1e3, 4))),
+        ("operating pressure angle", "α_w", format!("{}°", scaled(&g.operating_pressure_angle, deg, 4))),
+        ("zero-backlash pressure angle", "α_w0", format!("{}°", scaled(&g.zero_backlash_pressure_angle, deg, 4))),
+        ("face width", "b", format!("{} mm", scaled(&g.face_width, 1e3, 3))),
+        ("base pitch", "p_b", format!("{} mm", scaled(&g.base_pitch, 1e3, 4))),
+        ("line of action", "T1T2", format!("{} mm", scaled(&g.line_of_action_length, 1e3, 4))),
+        ("start of contact", "T1A", format!("{} mm", scaled(&g.points_from_t1.A, 1e3, 4))),
+        ("lowest point of single contact", "T1B", format!("{} mm", scaled(&g.points_from_t1.B, 1e3, 4))),
+        ("pitch point", "T1P", format!("{} mm", scaled(&g.points_from_t1.P, 1e3, 4))),
+        ("highest point of single contact", "T1D", format!("{} mm", scaled(&g.points_from_t1.D, 1e3, 4))),
+        ("end of contact", "T1E", format!("{} mm", scaled(&g.points_from_t1.E, 1e3, 4))),
+        ("transverse contact ratio", "ε_α", fixed(g.contact_ratio.0, 4)),
+        ("reduced modulus", "E'", format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3))),
+        ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
+    ];
+    for (q, s, v) in rows {
+        row(&mut out, &[q.into(), s.into(), v]);
+    }
+    let _ = writeln!(out);
+    header(&mut out, &["gear", "z", "x", "d mm", "d_b mm", "d_a mm", "d_a from", "d_w mm", "ε_i", "s_a mm", "x_min"]);
+    for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+        row(
+            &mut out,
+            &[
+                name.into(),
+                gr.teeth.to_string(),
+                fixed(gr.profile_shift.0, 4),
+                scaled(&gr.pitch_diameter, 1e3, 4),
+                scaled(&gr.base_diameter, 1e3, 4),
+                scaled(&gr.tip_diameter, 1e3, 4),
+                format!("{:?}", gr.tip_diameter_source).replace("AddendumRule", "addendum rule").replace("Given", "given"),
+                scaled(&gr.working_pitch_diameter, 1e3, 4),
+                fixed(gr.addendum_contact_ratio.0, 4),
+                scaled(&gr.tip_thickness, 1e3, 4),
+                fixed(gr.undercut_limit.0, 4),
+            ],
+        );
+    }
+
+    let _ = writeln!(out, "\n## Contact along the line of action\n");
+    for p in &r.plots {
+        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
+    }
+    let _ = writeln!(
+        out,
+        "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.\n"
+    );
+    for (k, op) in r.operating_points.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "### Operating point {}: {}\n\nT_p = {} N·m, n_p = {} rpm, F_bn = {} N, T_mesh = {} ms, v_t = {} m/s\n",
+            k + 1,
+            op.label,
+            fixed(op.pinion_torque.si(), 2),
+            fixed(op.pinion_speed.si() * 30.0 / std::f64::consts::PI, 1),
+            fixed(op.normal_load.si(), 1),
+            fixed(op.mesh_period.si() * 1e3, 5),
+            fixed(op.pitch_line_velocity.si(), 3)
+        );
+        header(
+            &mut out,
+            &["point", "T1C mm", "s mm", "ρ1 mm", "ρ2 mm", "R mm", "v1 m/s", "v2 m/s", "v_s m/s", "v_Σ m/s", "SR", "pairs", "share", "w N/mm", "p_H MPa", "b_H µm"],
+        );
+        for c in &op.contact {
+            row(
+                &mut out,
+                &[
+                    c.point.unwrap_or("").to_string(),
+                    scaled(&c.distance_from_t1, 1e3, 3),
+                    scaled(&c.s, 1e3, 3),
+                    scaled(&c.radius_of_curvature_pinion, 1e3, 3),
+                    scaled(&c.radius_of_curvature_wheel, 1e3, 3),
+                    scaled(&c.reduced_radius, 1e3, 3),
+                    scaled(&c.velocity_pinion, 1.0, 3),
+                    scaled(&c.velocity_wheel, 1.0, 3),
+                    scaled(&c.sliding_velocity, 1.0, 3),
+                    scaled(&c.sum_velocity, 1.0, 3),
+                    fixed(c.slide_to_roll.0, 3),
+                    c.pairs_in_contact.to_string(),
+                    fixed(c.load_share.0, 3),
+                    scaled(&c.load_per_width, 1e-3, 1),
+                    scaled(&c.hertz_pressure, 1e-6, 1),
+                    scaled(&c.hertz_half_width, 1e6, 1),
+                ],
+            );
+        }
+        let _ = writeln!(out);
+    }
+
+    let _ = writeln!(out, "## Findings\n");
+    for f in &r.findings {
+        let tag = match f.severity {
+            Severity::Note => "note",
+            Severity::Warning => "**warning**",
+        };
+        let _ = writeln!(out, "- {tag}: {}", f.message);
+    }
+    out
+}
+
+/// Six significant digits, for the SI column of the inputs.
+fn sig(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{x:.5e}");
+    let v: f64 = s.parse().unwrap_or(x);
+    if (1e-3..1e6).contains(&v.abs()) {
+        let decimals = (5 - v.abs().log10().floor() as i32).max(0) as usize;
+        let t = format!("{v:.decimals$}");
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    } else {
+        match s.split_once('e') {
+            Some((mantissa, exp)) if mantissa.contains('.') => {
+                format!("{}e{exp}", mantissa.trim_end_matches('0').trim_end_matches('.'))
+            }
+            _ => s,
+        }
+    }
+}

@@ -1,0 +1,33 @@
+//! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
+
+pub mod markdown;
+pub mod svg;
+
+use crate::report::Report;
+
+/// The files of a report folder: (file name, content).
+#[derive(Debug, Clone)]
+pub struct RenderedReport {
+    pub slug: String,
+    pub files: Vec<(String, String)>,
+}
+
+/// report.json: the report's serde data, pretty-printed.
+pub fn render_json(report: &Report) -> String {
+    let mut s = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
+    s.push('\n');
+    s
+}
+
+/// Renders every file of the report folder.
+pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
+    let mut files = vec![("report.md".to_string(), markdown::render_markdown(report)), ("report.json".to_string(), render_json(report))];
+    for plot in &report.plots {
+        let svg = match plot.file.as_str() {
+            "contact_state.svg" => svg::contact_state(report)?,
+            other => return Err(format!("no renderer for plot {other}")),
+        };
+        files.push((plot.file.clone(), svg));
+    }
+    Ok(RenderedReport { slug: report.slug.clone(), files })
+}

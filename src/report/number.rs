@@ -1,0 +1,59 @@
+//! Numbers in reports: dimensional values as `{"value": SI, "unit": "SI unit"}`, all rounded to
+//! ten significant digits so that output does not change with the last bit of a libm call.
+
+use serde::{Serialize, Serializer};
+
+/// Significant digits kept in report.json.
+pub const SIGNIFICANT_DIGITS: usize = 10;
+
+/// Rounds to [`SIGNIFICANT_DIGITS`] significant digits (non-finite values pass through).
+pub fn round_sig(x: f64) -> f64 {
+    if !x.is_finite() || x == 0.0 {
+        return if x == 0.0 { 0.0 } else { x };
+    }
+    format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x).parse().unwrap_or(x)
+}
+
+/// A plain (dimensionless) number, rounded when serialised; non-finite becomes `null`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl Serialize for Num {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if self.0.is_finite() {
+            s.serialize_f64(round_sig(self.0))
+        } else {
+            s.serialize_none()
+        }
+    }
+}
+
+/// A dimensional value in SI with its unit.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Q {
+    pub value: Num,
+    pub unit: &'static str,
+}
+
+impl Q {
+    pub fn new(value: f64, unit: &'static str) -> Q {
+        Q { value: Num(value), unit }
+    }
+    pub fn si(&self) -> f64 {
+        self.value.0
+    }
+}
+
+/// Shorthands for the SI units used in reports.
+pub fn m(x: f64) -> Q {
+    Q::new(x, "m")
+}
+pub fn rad(x: f64) -> Q {
+    Q::new(x, "rad")
+}
+pub fn pa(x: f64) -> Q {
+    Q::new(x, "Pa")
+}
+pub fn mps(x: f64) -> Q {
+    Q::new(x, "m/s")
+}

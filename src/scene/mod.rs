@@ -1,0 +1,8 @@
+//! The `.gear` language: grammar, syntax tree, units, diagnostics and lowering.
+
+pub mod ast;
+pub mod diagnostics;
+pub mod fields;
+pub mod lower;
+pub mod parse;
+pub mod units;

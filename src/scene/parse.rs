@@ -1,0 +1,424 @@
+//! Stage 1, parse: `.gear` text → [`SceneAst`], with pest (`grammar/gear.pest`).
+//!
+//! One `parse_x(pair)` per grammar rule, each matching on `as_rule()`; children are never taken by
+//! position. A syntax error becomes a [`Diagnostic`] that says, in words, what was expected.
+
+use pest::iterators::Pair;
+use pest::Parser;
+use pest_derive::Parser;
+
+use super::ast::*;
+use super::diagnostics::{Diagnostic, DiagnosticKind};
+
+#[derive(Parser)]
+#[grammar = "../grammar/gear.pest"]
+pub struct GearParser;
+
+/// Parses a whole scene file.
+pub fn parse_scene_text(source: &str) -> Result<SceneAst, Vec<Diagnostic>> {
+    let mut pairs = GearParser::parse(Rule::file, source).map_err(|e| vec![syntax_error(source, e)])?;
+    let file = pairs.next().expect("pest returns the file rule on success");
+    let mut errors = Vec::new();
+    let mut scene = None;
+    for pair in file.into_inner() {
+        match pair.as_rule() {
+            Rule::scene => scene = Some(parse_scene(pair, &mut errors)),
+            Rule::EOI => {}
+            rule => unreachable!("file holds only a scene, got {rule:?}"),
+        }
+    }
+    match scene {
+        Some(scene) if errors.is_empty() => Ok(scene),
+        _ => Err(errors),
+    }
+}
+
+/// Parses a lone unit expression such as `lbf*in` or `1/GPa` (used by the unit table's tests and `gearloss units`).
+pub fn parse_unit_text(text: &str) -> Result<UnitExpr, Vec<Diagnostic>> {
+    let mut pairs = GearParser::parse(Rule::unit, text).map_err(|e| vec![syntax_error(text, e)])?;
+    let pair = pairs.next().expect("pest returns the unit rule on success");
+    if pair.as_span().end() != text.len() {
+        let at = pair.as_span().end();
+        return Err(vec![Diagnostic::new(DiagnosticKind::Syntax, Span::new(at, text.len()), "unexpected text after the unit")]);
+    }
+    let mut errors = Vec::new();
+    let unit = parse_unit(pair, &mut errors);
+    if errors.is_empty() {
+        Ok(unit)
+    } else {
+        Err(errors)
+    }
+}
+
+fn parse_scene(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> SceneAst {
+    let mut scene = SceneAst { title: String::new(), title_span: pair.as_span().into(), items: Vec::new() };
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::kw_scene => {}
+            Rule::string => {
+                scene.title_span = p.as_span().into();
+                scene.title = parse_string(p);
+            }
+            Rule::body => scene.items = parse_body(p, errors),
+            rule => unreachable!("scene: {rule:?}"),
+        }
+    }
+    scene
+}
+
+fn parse_body(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Vec<Item> {
+    let mut items = Vec::new();
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::lbrace | Rule::rbrace => {}
+            Rule::assignment => items.push(parse_assignment(p, errors)),
+            Rule::block => items.push(Item::Block(parse_block(p, errors))),
+            Rule::call => items.push(Item::Call(parse_call(p, errors))),
+            rule => unreachable!("body: {rule:?}"),
+        }
+    }
+    items
+}
+
+fn parse_assignment(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Item {
+    let mut key = None;
+    let mut value = None;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::ident => key = Some(parse_ident(p)),
+            Rule::eq => {}
+            _ => value = Some(parse_value(p, errors)),
+        }
+    }
+    Item::Assignment {
+        key: key.expect("grammar: assignment has a key"),
+        value: value.expect("grammar: assignment has a value"),
+    }
+}
+
+fn parse_block(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Block {
+    let span = pair.as_span().into();
+    let mut kind = None;
+    let mut label = None;
+    let mut items = Vec::new();
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::ident => kind = Some(parse_ident(p)),
+            Rule::label => label = Some(parse_label(p)),
+            Rule::body => items = parse_body(p, errors),
+            rule => unreachable!("block: {rule:?}"),
+        }
+    }
+    Block { kind: kind.expect("grammar: block has a kind"), label, items, span }
+}
+
+fn parse_label(pair: Pair<Rule>) -> Name {
+    let span: Span = pair.as_span().into();
+    let mut text = String::new();
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::string => text = parse_string(p),
+            Rule::ident => text = p.as_str().to_string(),
+            rule => unreachable!("label: {rule:?}"),
+        }
+    }
+    Name { text, span }
+}
+
+fn parse_call(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Call {
+    let span = pair.as_span().into();
+    let mut name = None;
+    let mut arguments = Vec::new();
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::ident => name = Some(parse_ident(p)),
+            Rule::arguments => arguments = parse_arguments(p, errors),
+            rule => unreachable!("call: {rule:?}"),
+        }
+    }
+    Call { name: name.expect("grammar: call has a name"), arguments, span }
+}
+
+fn parse_arguments(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Vec<(Name, Value)> {
+    let mut out = Vec::new();
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::lparen | Rule::rparen | Rule::comma => {}
+            Rule::argument => out.push(parse_argument(p, errors)),
+            rule => unreachable!("arguments: {rule:?}"),
+        }
+    }
+    out
+}
+
+fn parse_argument(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (Name, Value) {
+    let mut key = None;
+    let mut value = None;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::ident => key = Some(parse_ident(p)),
+            Rule::eq => {}
+            _ => value = Some(parse_value(p, errors)),
+        }
+    }
+    (key.expect("grammar: argument has a name"), value.expect("grammar: argument has a value"))
+}
+
+fn parse_value(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Value {
+    let span: Span = pair.as_span().into();
+    let kind = match pair.as_rule() {
+        Rule::quantity => parse_quantity(pair, errors),
+        Rule::list => parse_list(pair, errors),
+        Rule::range => parse_range(pair, errors),
+        Rule::call => ValueKind::Call(parse_call(pair, errors)),
+        Rule::string => ValueKind::Text(parse_string(pair)),
+        rule => unreachable!("value: {rule:?}"),
+    };
+    Value { kind, span }
+}
+
+fn parse_quantity(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> ValueKind {
+    let mut number = f64::NAN;
+    let mut unit = None;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::number => number = parse_number(p),
+            Rule::unit => unit = Some(parse_unit(p, errors)),
+            rule => unreachable!("quantity: {rule:?}"),
+        }
+    }
+    ValueKind::Quantity { number, unit }
+}
+
+fn parse_list(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> ValueKind {
+    let mut items = Vec::new();
+    let mut unit = None;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::lbracket | Rule::comma => {}
+            Rule::number => {
+                let span = p.as_span().into();
+                items.push(ListItem::Number(parse_number(p), span));
+            }
+            Rule::ident => items.push(ListItem::Name(parse_ident(p))),
+            Rule::list_end => unit = parse_list_end(p, errors),
+            rule => unreachable!("list: {rule:?}"),
+        }
+    }
+    ValueKind::List { items, unit }
+}
+
+fn parse_list_end(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Option<UnitExpr> {
+    let mut unit = None;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::rbracket => {}
+            Rule::unit => unit = Some(parse_unit(p, errors)),
+            rule => unreachable!("list_end: {rule:?}"),
+        }
+    }
+    unit
+}
+
+fn parse_range(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> ValueKind {
+    let mut bounds = Vec::with_capacity(2);
+    let mut unit = None;
+    let mut step = None;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::number => bounds.push(parse_number(p)),
+            Rule::dotdot => {}
+            Rule::unit => unit = Some(parse_unit(p, errors)),
+            Rule::range_step => step = Some(parse_range_step(p)),
+            rule => unreachable!("range: {rule:?}"),
+        }
+    }
+    ValueKind::Range { from: bounds[0], to: bounds[1], unit, step }
+}
+
+fn parse_range_step(pair: Pair<Rule>) -> RangeStep {
+    let mut is_count = false;
+    let mut value = (f64::NAN, Span::default());
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::kw_step => is_count = false,
+            Rule::kw_count => is_count = true,
+            Rule::number => value = (p.as_str().parse().unwrap_or(f64::NAN), p.as_span().into()),
+            rule => unreachable!("range_step: {rule:?}"),
+        }
+    }
+    if is_count {
+        RangeStep::Count(value.0, value.1)
+    } else {
+        RangeStep::Step(value.0, value.1)
+    }
+}
+
+fn parse_unit(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> UnitExpr {
+    let text = pair.as_str().to_string();
+    let span = pair.as_span().into();
+    let mut factors = Vec::new();
+    let mut sign = 1;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::unit_one | Rule::star => sign = 1,
+            Rule::slash => sign = -1,
+            Rule::unit_factor => {
+                let (name, name_span, exponent) = parse_unit_factor(p, errors);
+                factors.push((name, name_span, sign * exponent));
+            }
+            rule => unreachable!("unit: {rule:?}"),
+        }
+    }
+    UnitExpr { text, span, factors }
+}
+
+fn parse_unit_factor(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (String, Span, i32) {
+    let mut name = (String::new(), Span::default());
+    let mut exponent = 1;
+    for p in pair.into_inner() {
+        match p.as_rule() {
+            Rule::unit_name => name = (p.as_str().to_string(), p.as_span().into()),
+            Rule::caret => {}
+            Rule::exponent => {
+                exponent = match p.as_str().parse::<i32>() {
+                    Ok(e) if (-6..=6).contains(&e) && e != 0 => e,
+                    _ => {
+                        errors.push(
+                            Diagnostic::new(
+                                DiagnosticKind::Syntax,
+                                p.as_span().into(),
+                                format!("unit exponent `{}` is not supported", p.as_str()),
+                            )
+                            .hint("exponents are whole numbers from -6 to 6, not 0, as in `kg*m^2`"),
+                        );
+                        1
+                    }
+                }
+            }
+            rule => unreachable!("unit_factor: {rule:?}"),
+        }
+    }
+    (name.0, name.1, exponent)
+}
+
+fn parse_ident(pair: Pair<Rule>) -> Name {
+    Name { text: pair.as_str().to_string(), span: pair.as_span().into() }
+}
+
+fn parse_number(pair: Pair<Rule>) -> f64 {
+    // The grammar admits only decimal numbers, which `f64::from_str` always accepts; an
+    // overflow gives ±inf, which lowering reports as non-finite.
+    pair.as_str().parse().unwrap_or(f64::NAN)
+}
+
+fn parse_string(pair: Pair<Rule>) -> String {
+    pair.into_inner()
+        .filter(|p| p.as_rule() == Rule::string_inner)
+        .map(|p| p.as_str().to_string())
+        .collect()
+}
+
+/// A pest error as a diagnostic: "expected `=` or `{`, found `x`", at the exact column.
+fn syntax_error(source: &str, error: pest::error::Error<Rule>) -> Diagnostic {
+    use pest::error::{ErrorVariant, InputLocation};
+    let at = match error.location {
+        InputLocation::Pos(p) => p,
+        InputLocation::Span((s, _)) => s,
+    };
+    let found = found_token(source, at);
+    let span = Span::new(at, at + found.len());
+    let (mut expected, unexpected) = match &error.variant {
+        ErrorVariant::ParsingError { positives, negatives } => (positives.clone(), negatives.clone()),
+        ErrorVariant::CustomError { message } => {
+            return Diagnostic::new(DiagnosticKind::Syntax, span, message.clone());
+        }
+    };
+    expected.sort_by_key(|r| describe_rule(*r));
+    expected.dedup_by_key(|r| describe_rule(*r));
+    let mut words: Vec<&str> = expected.iter().map(|r| describe_rule(*r)).collect();
+    words.dedup();
+    let found_text = if found.is_empty() { "the end of the file".to_string() } else { format!("`{found}`") };
+    let reason = if words.is_empty() {
+        let not: Vec<&str> = unexpected.iter().map(|r| describe_rule(*r)).collect();
+        format!("unexpected {}, found {found_text}", not.join(" or "))
+    } else {
+        format!("expected {}, found {found_text}", join_or(&words))
+    };
+    let mut d = Diagnostic::new(DiagnosticKind::Syntax, span, reason);
+    d.hints.push(syntax_hint(&expected, found).to_string());
+    d
+}
+
+fn syntax_hint(expected: &[Rule], found: &str) -> &'static str {
+    if expected.contains(&Rule::kw_scene) {
+        "a .gear file holds one `scene \"name\" { ... }`"
+    } else if expected.contains(&Rule::rbrace) && found.is_empty() {
+        "every `{` needs a closing `}`; the file ended inside a block"
+    } else if expected.contains(&Rule::rbracket) {
+        "a list is `[a, b, c] unit`, values separated by commas"
+    } else if expected.contains(&Rule::rparen) || expected.contains(&Rule::argument) {
+        "arguments are written `name(key = value, key = value)`"
+    } else if expected.contains(&Rule::number) || expected.contains(&Rule::quantity) || expected.contains(&Rule::range) {
+        "a value is a number with a unit (`4.5 mm`), a list (`[1, 2] rpm`), a range (`100..3000 rpm step 100`), a name or a \"string\""
+    } else if expected.contains(&Rule::eq) || expected.contains(&Rule::lbrace) {
+        "a line is `key = value`, `block { ... }` or a call like `coulomb(mu = 0.05)`"
+    } else if expected.contains(&Rule::EOI) {
+        "nothing may follow the scene's closing `}`"
+    } else {
+        "see README.md for the language; `gearloss units` lists the units"
+    }
+}
+
+fn join_or(words: &[&str]) -> String {
+    match words {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{} or {}", init.join(", "), last),
+    }
+}
+
+/// The token at a position, for "found ..." (a word, or one character).
+fn found_token(source: &str, at: usize) -> &str {
+    let rest = source.get(at..).unwrap_or("");
+    let word_len: usize = rest
+        .char_indices()
+        .take_while(|(_, c)| c.is_alphanumeric() || *c == '_' || *c == '.')
+        .map(|(_, c)| c.len_utf8())
+        .sum();
+    if word_len > 0 {
+        &rest[..word_len]
+    } else {
+        rest.chars().next().map_or("", |c| &rest[..c.len_utf8()])
+    }
+}
+
+/// What a grammar rule is called in an error message.
+pub fn describe_rule(rule: Rule) -> &'static str {
+    match rule {
+        Rule::EOI => "the end of the file",
+        Rule::file | Rule::scene | Rule::kw_scene => "`scene`",
+        Rule::body | Rule::lbrace => "`{`",
+        Rule::rbrace => "`}`",
+        Rule::assignment | Rule::block | Rule::call | Rule::ident | Rule::label | Rule::argument => "a name",
+        Rule::arguments | Rule::lparen => "`(`",
+        Rule::rparen => "`)`",
+        Rule::range | Rule::quantity | Rule::number => "a number",
+        Rule::range_step => "`step` or `count`",
+        Rule::kw_step => "`step`",
+        Rule::kw_count => "`count`",
+        Rule::list | Rule::lbracket => "`[`",
+        Rule::rbracket | Rule::list_end => "`]`",
+        Rule::unit | Rule::unit_factor | Rule::unit_name | Rule::unit_one => "a unit",
+        Rule::exponent => "a whole-number exponent",
+        Rule::string | Rule::quote => "a \"string\"",
+        Rule::string_inner => "text",
+        Rule::eq => "`=`",
+        Rule::comma => "`,`",
+        Rule::dotdot => "`..`",
+        Rule::star => "`*`",
+        Rule::slash => "`/`",
+        Rule::caret => "`^`",
+        _ => "a token",
+    }
+}

@@ -1,0 +1,376 @@
+//! The one unit table of the language.
+//!
+//! Every unit name the `.gear` language accepts is in [`UNITS`], with its factor to SI, its
+//! dimension and, for derived units and aliases, the composition it must equal (tested in
+//! `tests/it/units.rs`: `psi` equals `lbf/in^2`, `cP` equals `mPa*s`, ...). A written unit
+//! expression (`lbf*in`, `1/GPa`) is the product of its factors' powers.
+//!
+//! Angle is kept as a dimension of its own, so that `module = 20 deg` is refused.
+
+use std::f64::consts::PI;
+use std::fmt;
+
+/// Exponents of length, mass, time, temperature and plane angle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Dimension {
+    pub length: i8,
+    pub mass: i8,
+    pub time: i8,
+    pub temperature: i8,
+    pub angle: i8,
+}
+
+const fn dim(length: i8, mass: i8, time: i8, temperature: i8, angle: i8) -> Dimension {
+    Dimension { length, mass, time, temperature, angle }
+}
+
+impl Dimension {
+    pub const NONE: Dimension = dim(0, 0, 0, 0, 0);
+    pub const LENGTH: Dimension = dim(1, 0, 0, 0, 0);
+    pub const RECIPROCAL_LENGTH: Dimension = dim(-1, 0, 0, 0, 0);
+    pub const MASS: Dimension = dim(0, 1, 0, 0, 0);
+    pub const TIME: Dimension = dim(0, 0, 1, 0, 0);
+    pub const TEMPERATURE: Dimension = dim(0, 0, 0, 1, 0);
+    pub const ANGLE: Dimension = dim(0, 0, 0, 0, 1);
+    pub const FORCE: Dimension = dim(1, 1, -2, 0, 0);
+    pub const TORQUE: Dimension = dim(2, 1, -2, 0, 0);
+    pub const ANGULAR_VELOCITY: Dimension = dim(0, 0, -1, 0, 1);
+    pub const PRESSURE: Dimension = dim(-1, 1, -2, 0, 0);
+    pub const RECIPROCAL_PRESSURE: Dimension = dim(1, -1, 2, 0, 0);
+    pub const DYNAMIC_VISCOSITY: Dimension = dim(-1, 1, -1, 0, 0);
+    pub const KINEMATIC_VISCOSITY: Dimension = dim(2, 0, -1, 0, 0);
+    pub const DENSITY: Dimension = dim(-3, 1, 0, 0, 0);
+    pub const MOMENT_OF_INERTIA: Dimension = dim(2, 1, 0, 0, 0);
+    pub const STIFFNESS: Dimension = dim(0, 1, -2, 0, 0);
+    pub const POWER: Dimension = dim(2, 1, -3, 0, 0);
+    pub const VELOCITY: Dimension = dim(1, 0, -1, 0, 0);
+    pub const FREQUENCY: Dimension = dim(0, 0, -1, 0, 0);
+
+    pub fn pow(self, e: i32) -> Dimension {
+        let e = e.clamp(-127, 127) as i8;
+        let p = |x: i8| x.saturating_mul(e);
+        dim(p(self.length), p(self.mass), p(self.time), p(self.temperature), p(self.angle))
+    }
+
+    pub fn mul(self, o: Dimension) -> Dimension {
+        dim(
+            self.length.saturating_add(o.length),
+            self.mass.saturating_add(o.mass),
+            self.time.saturating_add(o.time),
+            self.temperature.saturating_add(o.temperature),
+            self.angle.saturating_add(o.angle),
+        )
+    }
+
+    /// What a gear engineer calls a quantity of this dimension.
+    pub fn name(self) -> &'static str {
+        NAMED.iter().find(|(d, _)| *d == self).map_or("quantity", |(_, n)| n)
+    }
+
+    /// An example unit of this dimension, for hints.
+    pub fn example_units(self) -> String {
+        let names: Vec<&str> = UNITS.iter().filter(|u| u.dimension == self).map(|u| u.name).take(6).collect();
+        if names.is_empty() {
+            self.si_unit().to_string()
+        } else {
+            names.join(", ")
+        }
+    }
+
+    /// The SI unit written in reports and report.json.
+    pub fn si_unit(self) -> String {
+        if let Some((_, s)) = SI_NAMES.iter().find(|(d, _)| *d == self) {
+            return (*s).to_string();
+        }
+        let mut num = Vec::new();
+        let mut den = Vec::new();
+        for (sym, e) in [("kg", self.mass), ("m", self.length), ("s", self.time), ("K", self.temperature), ("rad", self.angle)] {
+            match e {
+                0 => {}
+                1 => num.push(sym.to_string()),
+                e if e > 0 => num.push(format!("{sym}^{e}")),
+                -1 => den.push(sym.to_string()),
+                e => den.push(format!("{sym}^{}", -e)),
+            }
+        }
+        match (num.is_empty(), den.is_empty()) {
+            (true, true) => "1".into(),
+            (false, true) => num.join("*"),
+            (true, false) => format!("1/{}", den.join("/")),
+            (false, false) => format!("{}/{}", num.join("*"), den.join("/")),
+        }
+    }
+}
+
+const NAMED: &[(Dimension, &str)] = &[
+    (Dimension::NONE, "dimensionless number"),
+    (Dimension::LENGTH, "length"),
+    (Dimension::RECIPROCAL_LENGTH, "reciprocal length"),
+    (Dimension::MASS, "mass"),
+    (Dimension::TIME, "time"),
+    (Dimension::TEMPERATURE, "temperature"),
+    (Dimension::ANGLE, "angle"),
+    (Dimension::FORCE, "force"),
+    (Dimension::TORQUE, "torque"),
+    (Dimension::ANGULAR_VELOCITY, "rotational speed"),
+    (Dimension::PRESSURE, "pressure or elastic modulus"),
+    (Dimension::RECIPROCAL_PRESSURE, "reciprocal pressure"),
+    (Dimension::DYNAMIC_VISCOSITY, "dynamic viscosity"),
+    (Dimension::KINEMATIC_VISCOSITY, "kinematic viscosity"),
+    (Dimension::DENSITY, "density"),
+    (Dimension::MOMENT_OF_INERTIA, "moment of inertia"),
+    (Dimension::STIFFNESS, "stiffness"),
+    (Dimension::POWER, "power"),
+    (Dimension::VELOCITY, "velocity"),
+    (Dimension::FREQUENCY, "frequency"),
+];
+
+const SI_NAMES: &[(Dimension, &str)] = &[
+    (Dimension::NONE, "1"),
+    (Dimension::LENGTH, "m"),
+    (Dimension::RECIPROCAL_LENGTH, "1/m"),
+    (Dimension::ANGLE, "rad"),
+    (Dimension::FORCE, "N"),
+    (Dimension::TORQUE, "N*m"),
+    (Dimension::ANGULAR_VELOCITY, "rad/s"),
+    (Dimension::PRESSURE, "Pa"),
+    (Dimension::RECIPROCAL_PRESSURE, "1/Pa"),
+    (Dimension::DYNAMIC_VISCOSITY, "Pa*s"),
+    (Dimension::KINEMATIC_VISCOSITY, "m^2/s"),
+    (Dimension::DENSITY, "kg/m^3"),
+    (Dimension::MOMENT_OF_INERTIA, "kg*m^2"),
+    (Dimension::STIFFNESS, "N/m"),
+    (Dimension::POWER, "W"),
+    (Dimension::VELOCITY, "m/s"),
+    (Dimension::FREQUENCY, "Hz"),
+    (Dimension::TEMPERATURE, "K"),
+];
+
+/// One named unit.
+#[derive(Debug, Clone, Copy)]
+pub struct UnitDef {
+    pub name: &'static str,
+    /// Value in SI of one of this unit (for temperatures: of one degree).
+    pub factor: f64,
+    pub dimension: Dimension,
+    /// Added after scaling (only `degC`: 273.15 K); forbidden inside compound units.
+    pub offset: f64,
+    /// What this unit must equal, as `(multiplier, unit expression)`; tested.
+    pub composition: Option<(f64, &'static str)>,
+    pub description: &'static str,
+}
+
+const fn u(name: &'static str, factor: f64, dimension: Dimension, description: &'static str) -> UnitDef {
+    UnitDef { name, factor, dimension, offset: 0.0, composition: None, description }
+}
+
+const fn c(
+    name: &'static str,
+    factor: f64,
+    dimension: Dimension,
+    composition: (f64, &'static str),
+    description: &'static str,
+) -> UnitDef {
+    UnitDef { name, factor, dimension, offset: 0.0, composition: Some(composition), description }
+}
+
+const INCH: f64 = 0.0254;
+const POUND: f64 = 0.453_592_37;
+const STANDARD_GRAVITY: f64 = 9.806_65;
+const LBF: f64 = POUND * STANDARD_GRAVITY;
+
+/// The unit table. Base units first, then every derived unit with the composition it must equal.
+pub const UNITS: &[UnitDef] = &[
+    // length
+    u("m", 1.0, Dimension::LENGTH, "metre"),
+    c("cm", 1e-2, Dimension::LENGTH, (1e-2, "m"), "centimetre"),
+    c("mm", 1e-3, Dimension::LENGTH, (1e-3, "m"), "millimetre"),
+    c("um", 1e-6, Dimension::LENGTH, (1e-3, "mm"), "micrometre"),
+    c("µm", 1e-6, Dimension::LENGTH, (1.0, "um"), "micrometre (micro sign)"),
+    c("μm", 1e-6, Dimension::LENGTH, (1.0, "um"), "micrometre (Greek mu)"),
+    c("in", INCH, Dimension::LENGTH, (25.4, "mm"), "inch"),
+    c("uin", INCH * 1e-6, Dimension::LENGTH, (1e-6, "in"), "microinch"),
+    c("µin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (micro sign)"),
+    c("μin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (Greek mu)"),
+    c("ft", 12.0 * INCH, Dimension::LENGTH, (12.0, "in"), "foot"),
+    // mass
+    u("kg", 1.0, Dimension::MASS, "kilogram"),
+    c("g", 1e-3, Dimension::MASS, (1e-3, "kg"), "gram"),
+    c("lb", POUND, Dimension::MASS, (0.453_592_37, "kg"), "pound (mass)"),
+    // time
+    u("s", 1.0, Dimension::TIME, "second"),
+    c("ms", 1e-3, Dimension::TIME, (1e-3, "s"), "millisecond"),
+    c("min", 60.0, Dimension::TIME, (60.0, "s"), "minute"),
+    c("h", 3600.0, Dimension::TIME, (60.0, "min"), "hour"),
+    c("Hz", 1.0, Dimension::FREQUENCY, (1.0, "1/s"), "hertz"),
+    // angle
+    u("rad", 1.0, Dimension::ANGLE, "radian"),
+    c("deg", PI / 180.0, Dimension::ANGLE, (PI / 180.0, "rad"), "degree"),
+    c("°", PI / 180.0, Dimension::ANGLE, (1.0, "deg"), "degree (sign)"),
+    c("rev", 2.0 * PI, Dimension::ANGLE, (2.0 * PI, "rad"), "revolution"),
+    c("rpm", 2.0 * PI / 60.0, Dimension::ANGULAR_VELOCITY, (1.0, "rev/min"), "revolutions per minute"),
+    // temperature
+    u("K", 1.0, Dimension::TEMPERATURE, "kelvin"),
+    UnitDef {
+        name: "degC",
+        factor: 1.0,
+        dimension: Dimension::TEMPERATURE,
+        offset: 273.15,
+        composition: None,
+        description: "degree Celsius (absolute temperature, only on its own)",
+    },
+    // force
+    c("N", 1.0, Dimension::FORCE, (1.0, "kg*m/s^2"), "newton"),
+    c("kN", 1e3, Dimension::FORCE, (1e3, "N"), "kilonewton"),
+    c("lbf", LBF, Dimension::FORCE, (STANDARD_GRAVITY, "lb*m/s^2"), "pound-force"),
+    // pressure and modulus
+    c("Pa", 1.0, Dimension::PRESSURE, (1.0, "N/m^2"), "pascal"),
+    c("mPa", 1e-3, Dimension::PRESSURE, (1e-3, "Pa"), "millipascal (for mPa*s)"),
+    c("kPa", 1e3, Dimension::PRESSURE, (1e3, "Pa"), "kilopascal"),
+    c("MPa", 1e6, Dimension::PRESSURE, (1.0, "N/mm^2"), "megapascal"),
+    c("GPa", 1e9, Dimension::PRESSURE, (1e3, "MPa"), "gigapascal"),
+    c("bar", 1e5, Dimension::PRESSURE, (1e5, "Pa"), "bar"),
+    c("psi", LBF / (INCH * INCH), Dimension::PRESSURE, (1.0, "lbf/in^2"), "pound-force per square inch"),
+    c("ksi", 1e3 * LBF / (INCH * INCH), Dimension::PRESSURE, (1e3, "psi"), "kilopound-force per square inch"),
+    // viscosity
+    c("P", 0.1, Dimension::DYNAMIC_VISCOSITY, (0.1, "Pa*s"), "poise"),
+    c("cP", 1e-3, Dimension::DYNAMIC_VISCOSITY, (1.0, "mPa*s"), "centipoise"),
+    c("reyn", LBF / (INCH * INCH), Dimension::DYNAMIC_VISCOSITY, (1.0, "lbf*s/in^2"), "reyn"),
+    c("St", 1e-4, Dimension::KINEMATIC_VISCOSITY, (1.0, "cm^2/s"), "stokes"),
+    c("cSt", 1e-6, Dimension::KINEMATIC_VISCOSITY, (1.0, "mm^2/s"), "centistokes"),
+    // power and energy
+    c("J", 1.0, Dimension::TORQUE, (1.0, "N*m"), "joule"),
+    c("W", 1.0, Dimension::POWER, (1.0, "J/s"), "watt"),
+    c("kW", 1e3, Dimension::POWER, (1e3, "W"), "kilowatt"),
+    c("hp", 550.0 * LBF * 12.0 * INCH, Dimension::POWER, (550.0, "lbf*ft/s"), "horsepower (mechanical)"),
+];
+
+/// Looks a unit name up in the table.
+pub fn lookup(name: &str) -> Option<&'static UnitDef> {
+    UNITS.iter().find(|u| u.name == name)
+}
+
+/// A unit expression evaluated against the table.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scale {
+    pub factor: f64,
+    pub offset: f64,
+    pub dimension: Dimension,
+}
+
+impl Scale {
+    pub const ONE: Scale = Scale { factor: 1.0, offset: 0.0, dimension: Dimension::NONE };
+
+    /// Converts a number written in this unit to SI.
+    pub fn to_si(&self, x: f64) -> f64 {
+        x * self.factor + self.offset
+    }
+
+    /// Converts an SI value back to this unit.
+    pub fn from_si(&self, x: f64) -> f64 {
+        (x - self.offset) / self.factor
+    }
+}
+
+/// Why a unit expression could not be evaluated: the index of the offending factor.
+#[derive(Debug, Clone, PartialEq)]
+pub enum UnitError {
+    Unknown { index: usize, name: String, suggestion: Option<&'static str> },
+    OffsetInCompound { index: usize, name: String },
+}
+
+impl fmt::Display for UnitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            UnitError::Unknown { name, .. } => write!(f, "unknown unit `{name}`"),
+            UnitError::OffsetInCompound { name, .. } => {
+                write!(f, "`{name}` is an absolute temperature and cannot be part of a compound unit")
+            }
+        }
+    }
+}
+
+/// Evaluates a product of `(name, exponent)` factors.
+pub fn evaluate<'a>(factors: impl IntoIterator<Item = (&'a str, i32)>) -> Result<Scale, UnitError> {
+    let factors: Vec<(&str, i32)> = factors.into_iter().collect();
+    let mut scale = Scale::ONE;
+    for (index, (name, exponent)) in factors.iter().enumerate() {
+        let def = lookup(name).ok_or_else(|| UnitError::Unknown {
+            index,
+            name: name.to_string(),
+            suggestion: suggest(name),
+        })?;
+        if def.offset != 0.0 {
+            if factors.len() != 1 || *exponent != 1 {
+                return Err(UnitError::OffsetInCompound { index, name: name.to_string() });
+            }
+            scale.offset = def.offset;
+        }
+        scale.factor *= def.factor.powi(*exponent);
+        scale.dimension = scale.dimension.mul(def.dimension.pow(*exponent));
+    }
+    Ok(scale)
+}
+
+/// The nearest unit name, for "did you mean" hints.
+pub fn suggest(name: &str) -> Option<&'static str> {
+    let lower = name.to_ascii_lowercase();
+    UNITS
+        .iter()
+        .map(|u| (strsim::jaro_winkler(&lower, &u.name.to_ascii_lowercase()), u.name))
+        .filter(|(s, _)| *s > 0.75)
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, n)| n)
+}
+
+/// A uom quantity type that a scene value can be lowered into: its dimension in the unit table
+/// and how to build it from an SI number.
+pub trait SiQuantity: Sized {
+    const DIMENSION: Dimension;
+    fn from_si(value: f64) -> Self;
+    fn si(&self) -> f64;
+}
+
+macro_rules! si_quantity {
+    ($ty:ty, $dim:expr) => {
+        impl SiQuantity for $ty {
+            const DIMENSION: Dimension = $dim;
+            fn from_si(value: f64) -> Self {
+                <$ty>::from_si_value(value)
+            }
+            fn si(&self) -> f64 {
+                self.value
+            }
+        }
+    };
+}
+
+/// Builds a uom quantity from its SI value (uom stores SI values in its `value` field).
+trait FromSiValue {
+    fn from_si_value(value: f64) -> Self;
+}
+
+impl<D, U> FromSiValue for uom::si::Quantity<D, U, f64>
+where
+    D: uom::si::Dimension + ?Sized,
+    U: uom::si::Units<f64> + ?Sized,
+{
+    fn from_si_value(value: f64) -> Self {
+        uom::si::Quantity { dimension: std::marker::PhantomData, units: std::marker::PhantomData, value }
+    }
+}
+
+use crate::model as q;
+si_quantity!(q::Length, Dimension::LENGTH);
+si_quantity!(q::ReciprocalLength, Dimension::RECIPROCAL_LENGTH);
+si_quantity!(q::Angle, Dimension::ANGLE);
+si_quantity!(q::Torque, Dimension::TORQUE);
+si_quantity!(q::AngularVelocity, Dimension::ANGULAR_VELOCITY);
+si_quantity!(q::Pressure, Dimension::PRESSURE);
+si_quantity!(q::ReciprocalPressure, Dimension::RECIPROCAL_PRESSURE);
+si_quantity!(q::DynamicViscosity, Dimension::DYNAMIC_VISCOSITY);
+si_quantity!(q::KinematicViscosity, Dimension::KINEMATIC_VISCOSITY);
+si_quantity!(q::MassDensity, Dimension::DENSITY);
+si_quantity!(q::MomentOfInertia, Dimension::MOMENT_OF_INERTIA);
+si_quantity!(q::Stiffness, Dimension::STIFFNESS);
+si_quantity!(q::ThermodynamicTemperature, Dimension::TEMPERATURE);
