@@ -9,7 +9,11 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
-#[command(name = "gearloss", version, about = "Gear mesh friction, efficiency and dynamics from a .gear scene")]
+#[command(
+    name = "gearloss",
+    version,
+    about = "Gear mesh friction, efficiency and dynamics from a .gear scene"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -65,7 +69,13 @@ fn check(path: &Path) -> ExitCode {
     match gearloss::check(&path.display().to_string(), &source) {
         Ok(scene) => {
             let n = scene.operating.points().len();
-            println!("{}: scene \"{}\" is valid ({} operating point{})", path.display(), scene.title, n, if n == 1 { "" } else { "s" });
+            println!(
+                "{}: scene \"{}\" is valid ({} operating point{})",
+                path.display(),
+                scene.title,
+                n,
+                if n == 1 { "" } else { "s" }
+            );
             ExitCode::SUCCESS
         }
         Err(e) => report_errors(&e),
@@ -109,22 +119,39 @@ fn run(path: &Path, out: &Path) -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("error: cannot write the report under {}: {e}", out.display());
+            eprintln!(
+                "error: cannot write the report under {}: {e}",
+                out.display()
+            );
             ExitCode::from(EXIT_IO)
         }
     }
 }
 
 fn units_table() -> String {
-    let mut out = format!("{:<6} {:<24} {:>24} {:<16} {}\n", "unit", "quantity", "in SI", "SI unit", "equals");
+    let mut out = format!(
+        "{:<6} {:<24} {:>24} {:<16} {}\n",
+        "unit", "quantity", "in SI", "SI unit", "equals"
+    );
     for u in gearloss::scene::units::UNITS {
         let equals = match u.composition {
-            Some((k, expr)) if k == 1.0 => expr.to_string(),
+            Some((1.0, expr)) => expr.to_string(),
             Some((k, expr)) => format!("{k} {expr}"),
             None => String::new(),
         };
-        let si = if u.offset != 0.0 { format!("x + {}", u.offset) } else { format!("{:e}", u.factor) };
-        out.push_str(&format!("{:<6} {:<24} {:>24} {:<16} {}\n", u.name, u.dimension.name(), si, u.dimension.si_unit(), equals));
+        let si = if u.offset != 0.0 {
+            format!("x + {}", u.offset)
+        } else {
+            format!("{:e}", u.factor)
+        };
+        out.push_str(&format!(
+            "{:<6} {:<24} {:>24} {:<16} {}\n",
+            u.name,
+            u.dimension.name(),
+            si,
+            u.dimension.si_unit(),
+            equals
+        ));
     }
     out.push_str("\nCompound units multiply and divide these: N*m, lbf*in, kg*m^2, lbf*s^2*in, 1/Pa, mm^2/s, N/um.\n");
     out

@@ -44,7 +44,8 @@ impl Evaluation {
 
     /// The contact state at `u` for an operating point.
     pub fn contact_at(&self, u: f64, state: &OperatingState) -> ContactPoint {
-        self.geometry.contact_at(u, state, self.reduced_modulus, self.sharing())
+        self.geometry
+            .contact_at(u, state, self.reduced_modulus, self.sharing())
     }
 
     /// Evenly spaced positions from A to E for curves, with B and D taken from both sides so that
@@ -52,7 +53,9 @@ impl Evaluation {
     pub fn curve_positions(&self) -> Vec<f64> {
         let p = &self.geometry.points;
         let eps = 1e-9 * (p.e - p.a);
-        let mut u: Vec<f64> = (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
+        let mut u: Vec<f64> = (0..CURVE_SAMPLES)
+            .map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64)
+            .collect();
         u.extend([p.b - eps, p.b, p.p, p.d, p.d + eps]);
         u.sort_by(f64::total_cmp);
         u
@@ -62,8 +65,9 @@ impl Evaluation {
 /// Table positions: A..E in equal steps, with B, P and D inserted, each labelled where it is a named point.
 pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
     let p = &g.points;
-    let mut rows: Vec<(Option<&'static str>, f64)> =
-        (0..=TABLE_INTERVALS).map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64)).collect();
+    let mut rows: Vec<(Option<&'static str>, f64)> = (0..=TABLE_INTERVALS)
+        .map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64))
+        .collect();
     for (name, u) in p.named() {
         let tol = 1e-9 * (p.e - p.a);
         match rows.iter_mut().find(|(_, v)| (*v - u).abs() < tol) {
@@ -77,14 +81,22 @@ pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
 
 /// Evaluates a lowered scene. Lowering has checked the geometry, so this cannot fail on a lowered scene.
 pub fn evaluate_scene(scene: &Scene) -> Evaluation {
-    let geometry = scene.gears.geometry().expect("lowering refuses pairs whose geometry fails");
+    let geometry = scene
+        .gears
+        .geometry()
+        .expect("lowering refuses pairs whose geometry fails");
     let p = &scene.gears.pinion.material;
     let w = &scene.gears.wheel.material;
     let e_r = reduced_modulus(
         [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
         [p.poisson_ratio.value, w.poisson_ratio.value],
     );
-    let mut eval = Evaluation { geometry, reduced_modulus: e_r, sharing: scene.gears.load_sharing, points: Vec::new() };
+    let mut eval = Evaluation {
+        geometry,
+        reduced_modulus: e_r,
+        sharing: scene.gears.load_sharing,
+        points: Vec::new(),
+    };
     let rows = table_positions(&eval.geometry);
     let op = &scene.operating;
     eval.points = op
@@ -95,8 +107,15 @@ pub fn evaluate_scene(scene: &Scene) -> Evaluation {
                 pinion_torque: op.pinion_torque.values[ti].value,
                 pinion_speed: op.pinion_speed.values[ni].value,
             };
-            let table = rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, &state))).collect();
-            PointEvaluation { index: (ti, ni), state, table }
+            let table = rows
+                .iter()
+                .map(|(name, u)| (*name, eval.contact_at(*u, &state)))
+                .collect();
+            PointEvaluation {
+                index: (ti, ni),
+                state,
+                table,
+            }
         })
         .collect();
     eval

@@ -78,7 +78,13 @@ impl SpurGeometry {
     }
 
     /// The contact state at `u` (from T1) for an operating point, with reduced modulus E'.
-    pub fn contact_at(&self, u: f64, op: &OperatingState, reduced_modulus: f64, sharing: Sharing) -> ContactPoint {
+    pub fn contact_at(
+        &self,
+        u: f64,
+        op: &OperatingState,
+        reduced_modulus: f64,
+        sharing: Sharing,
+    ) -> ContactPoint {
         let rho = [u, self.line_of_action_length - u];
         let r = rho[0] * rho[1] / (rho[0] + rho[1]);
         let v = [op.pinion_speed * rho[0], self.wheel_speed(op) * rho[1]];

@@ -127,7 +127,13 @@ pub struct LoaPoints {
 impl LoaPoints {
     /// The named points in order, with their letters.
     pub fn named(&self) -> [(&'static str, f64); 5] {
-        [("A", self.a), ("B", self.b), ("P", self.p), ("D", self.d), ("E", self.e)]
+        [
+            ("A", self.a),
+            ("B", self.b),
+            ("P", self.p),
+            ("D", self.d),
+            ("E", self.e),
+        ]
     }
 }
 
@@ -186,7 +192,10 @@ impl SpurGeometry {
             }
             None => (a0, alpha_w0),
         };
-        let undercut_limit = [1.0 - z[0] * alpha.sin().powi(2) / 2.0, 1.0 - z[1] * alpha.sin().powi(2) / 2.0];
+        let undercut_limit = [
+            1.0 - z[0] * alpha.sin().powi(2) / 2.0,
+            1.0 - z[1] * alpha.sin().powi(2) / 2.0,
+        ];
         let involute_start = [
             r[0] * alpha.sin() - (1.0 - x[0]) * m / alpha.sin(),
             r[1] * alpha.sin() - (1.0 - x[1]) * m / alpha.sin(),
@@ -203,7 +212,10 @@ impl SpurGeometry {
                         input.teeth[i],
                         undercut_limit[i]
                     ),
-                    hint: format!("raise the profile shift to at least {:.4}", undercut_limit[i]),
+                    hint: format!(
+                        "raise the profile shift to at least {:.4}",
+                        undercut_limit[i]
+                    ),
                 });
             }
             if ra[i] <= rb[i] {
@@ -220,11 +232,17 @@ impl SpurGeometry {
                 continue;
             }
             let alpha_a = (rb[i] / ra[i]).acos();
-            tip_thickness[i] =
-                2.0 * ra[i] * ((PI / 2.0 + 2.0 * x[i] * alpha.tan()) / z[i] + involute(alpha) - involute(alpha_a));
+            tip_thickness[i] = 2.0
+                * ra[i]
+                * ((PI / 2.0 + 2.0 * x[i] * alpha.tan()) / z[i] + involute(alpha)
+                    - involute(alpha_a));
             if tip_thickness[i] <= 0.0 {
                 problems.push(GeometryProblem {
-                    part: if input.tip_diameter[i].is_some() { PairPart::TipDiameter(i) } else { PairPart::ProfileShift(i) },
+                    part: if input.tip_diameter[i].is_some() {
+                        PairPart::TipDiameter(i)
+                    } else {
+                        PairPart::ProfileShift(i)
+                    },
                     reason: format!(
                         "the {} tooth is pointed: tip thickness s_a = {:.4} mm",
                         gear_name(i),
@@ -304,7 +322,13 @@ impl SpurGeometry {
             working_pitch_radius: [rb[0] / alpha_w.cos(), rb[1] / alpha_w.cos()],
             base_pitch: pb,
             line_of_action_length: t1t2,
-            points: LoaPoints { a: t1a, b: t1e - pb, p: t1p, d: t1a + pb, e: t1e },
+            points: LoaPoints {
+                a: t1a,
+                b: t1e - pb,
+                p: t1p,
+                d: t1a + pb,
+                e: t1e,
+            },
             contact_ratio: eps,
             addendum_contact_ratio: [(t1e - t1p) / pb, (t1p - t1a) / pb],
             tip_thickness,

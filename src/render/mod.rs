@@ -14,14 +14,18 @@ pub struct RenderedReport {
 
 /// report.json: the report's serde data, pretty-printed.
 pub fn render_json(report: &Report) -> String {
-    let mut s = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
+    let mut s =
+        serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
     s.push('\n');
     s
 }
 
 /// Renders every file of the report folder.
 pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
-    let mut files = vec![("report.md".to_string(), markdown::render_markdown(report)), ("report.json".to_string(), render_json(report))];
+    let mut files = vec![
+        ("report.md".to_string(), markdown::render_markdown(report)),
+        ("report.json".to_string(), render_json(report)),
+    ];
     for plot in &report.plots {
         let svg = match plot.file.as_str() {
             "contact_state.svg" => svg::contact_state(report)?,
@@ -29,5 +33,8 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
         };
         files.push((plot.file.clone(), svg));
     }
-    Ok(RenderedReport { slug: report.slug.clone(), files })
+    Ok(RenderedReport {
+        slug: report.slug.clone(),
+        files,
+    })
 }

@@ -26,12 +26,35 @@ pub struct Report {
     pub curves: Curves,
 }
 
-/// One input of the scene, as written and in SI.
+/// One input of the scene, as written and in SI (a plain number when dimensionless).
 #[derive(Debug, Clone, Serialize)]
 pub struct InputRow {
     pub key: String,
     pub written: String,
-    pub si: Q,
+    pub si: SiValue,
+}
+
+/// A dimensional value with its unit, or a plain number.
+#[derive(Debug, Clone, Copy, Serialize)]
+#[serde(untagged)]
+pub enum SiValue {
+    Plain(Num),
+    Dimensional(Q),
+}
+
+impl SiValue {
+    pub fn si(&self) -> f64 {
+        match self {
+            SiValue::Plain(n) => n.0,
+            SiValue::Dimensional(q) => q.si(),
+        }
+    }
+    pub fn unit(&self) -> &'static str {
+        match self {
+            SiValue::Plain(_) => "",
+            SiValue::Dimensional(q) => q.unit,
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -170,7 +193,11 @@ pub fn slug(title: &str) -> String {
 }
 
 fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Given<T>, unit: &'static str) {
-    rows.push(InputRow { key: key.into(), written: g.written.clone(), si: Q::new(g.value.si(), unit) });
+    rows.push(InputRow {
+        key: key.into(),
+        written: g.written.clone(),
+        si: SiValue::Dimensional(Q::new(g.value.si(), unit)),
+    });
 }
 
 fn inputs(scene: &Scene) -> Vec<InputRow> {
@@ -186,11 +213,15 @@ fn inputs(scene: &Scene) -> Vec<InputRow> {
     }
     input(&mut rows, "gears.face_width", &g.face_width, "m");
     for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
-        rows.push(InputRow { key: format!("{name}.teeth"), written: gear.teeth.written.clone(), si: Q::new(gear.teeth.value as f64, "1") });
+        rows.push(InputRow {
+            key: format!("{name}.teeth"),
+            written: gear.teeth.written.clone(),
+            si: SiValue::Plain(Num(gear.teeth.value as f64)),
+        });
         rows.push(InputRow {
             key: format!("{name}.profile_shift"),
             written: gear.profile_shift.written.clone(),
-            si: Q::new(gear.profile_shift.value, "1"),
+            si: SiValue::Plain(Num(gear.profile_shift.value)),
         });
         if let Some(d) = &gear.tip_diameter {
             input(&mut rows, &format!("{name}.tip_diameter"), d, "m");
@@ -198,20 +229,34 @@ fn inputs(scene: &Scene) -> Vec<InputRow> {
         if let Some(j) = &gear.inertia {
             input(&mut rows, &format!("{name}.inertia"), j, "kg*m^2");
         }
-        for (key, r) in [("roughness_ra", &gear.roughness_ra), ("roughness_rq", &gear.roughness_rq), ("roughness_rz", &gear.roughness_rz)] {
+        for (key, r) in [
+            ("roughness_ra", &gear.roughness_ra),
+            ("roughness_rq", &gear.roughness_rq),
+            ("roughness_rz", &gear.roughness_rz),
+        ] {
             if let Some(r) = r {
                 input(&mut rows, &format!("{name}.{key}"), r, "m");
             }
         }
-        input(&mut rows, &format!("{name}.material ({}).youngs_modulus", gear.material.name), &gear.material.youngs_modulus, "Pa");
+        input(
+            &mut rows,
+            &format!("{name}.material ({}).youngs_modulus", gear.material.name),
+            &gear.material.youngs_modulus,
+            "Pa",
+        );
         rows.push(InputRow {
             key: format!("{name}.material ({}).poisson_ratio", gear.material.name),
             written: gear.material.poisson_ratio.written.clone(),
-            si: Q::new(gear.material.poisson_ratio.value, "1"),
+            si: SiValue::Plain(Num(gear.material.poisson_ratio.value)),
         });
     }
     if let Some(l) = &scene.lubricant {
-        input(&mut rows, "lubricant.dynamic_viscosity", &l.dynamic_viscosity, "Pa*s");
+        input(
+            &mut rows,
+            "lubricant.dynamic_viscosity",
+            &l.dynamic_viscosity,
+            "Pa*s",
+        );
         if let Some(d) = &l.density {
             input(&mut rows, "lubricant.density", d, "kg/m^3");
         }
@@ -251,14 +296,24 @@ fn geometry_report(eval: &Evaluation) -> GeometryReport {
         pressure_angle: rad(g.pressure_angle),
         gear_ratio: Num(g.gear_ratio),
         center_distance: m(g.center_distance),
-        center_distance_source: if g.center_distance_given { "given" } else { "zero_backlash" },
+        center_distance_source: if g.center_distance_given {
+            "given"
+        } else {
+            "zero_backlash"
+        },
         zero_backlash_center_distance: m(g.zero_backlash_center_distance),
         operating_pressure_angle: rad(g.operating_pressure_angle),
         zero_backlash_pressure_angle: rad(g.zero_backlash_pressure_angle),
         face_width: m(g.face_width),
         base_pitch: m(g.base_pitch),
         line_of_action_length: m(g.line_of_action_length),
-        points_from_t1: PointsReport { A: m(p.a), B: m(p.b), P: m(p.p), D: m(p.d), E: m(p.e) },
+        points_from_t1: PointsReport {
+            A: m(p.a),
+            B: m(p.b),
+            P: m(p.p),
+            D: m(p.d),
+            E: m(p.e),
+        },
         contact_ratio: Num(g.contact_ratio),
         reduced_modulus: pa(eval.reduced_modulus),
         load_sharing: eval.sharing,
@@ -289,13 +344,20 @@ fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> ContactRow {
     }
 }
 
-fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &PointEvaluation) -> OperatingPointReport {
+fn operating_point_report(
+    scene: &Scene,
+    eval: &Evaluation,
+    pe: &PointEvaluation,
+) -> OperatingPointReport {
     let g = &eval.geometry;
     let op = &scene.operating;
     let (ti, ni) = pe.index;
     let label = format!(
         "{} {}, {} {}",
-        op.pinion_torque.written_values[ti], op.pinion_torque.unit, op.pinion_speed.written_values[ni], op.pinion_speed.unit
+        op.pinion_torque.written_values[ti],
+        op.pinion_torque.unit,
+        op.pinion_speed.written_values[ni],
+        op.pinion_speed.unit
     );
     OperatingPointReport {
         pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
@@ -303,7 +365,10 @@ fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &PointEvaluation
         label,
         wheel_speed: Q::new(g.wheel_speed(&pe.state), "rad/s"),
         normal_load: Q::new(g.normal_load(&pe.state), "N"),
-        mesh_period: Q::new(2.0 * std::f64::consts::PI / (pe.state.pinion_speed * g.teeth[0] as f64), "s"),
+        mesh_period: Q::new(
+            2.0 * std::f64::consts::PI / (pe.state.pinion_speed * g.teeth[0] as f64),
+            "s",
+        ),
         pitch_line_velocity: mps(pe.state.pinion_speed * g.working_pitch_radius[0]),
         contact: pe.table.iter().map(|(n, c)| contact_row(*n, c)).collect(),
     }
@@ -314,7 +379,9 @@ pub fn pick(n: usize) -> Vec<usize> {
     if n <= MAX_CURVES {
         return (0..n).collect();
     }
-    let mut v: Vec<usize> = (0..MAX_CURVES).map(|i| i * (n - 1) / (MAX_CURVES - 1)).collect();
+    let mut v: Vec<usize> = (0..MAX_CURVES)
+        .map(|i| i * (n - 1) / (MAX_CURVES - 1))
+        .collect();
     v.dedup();
     v
 }
@@ -325,35 +392,74 @@ fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
     let torque0 = op.pinion_torque.values[0].value;
     let speed0 = op.pinion_speed.values[0].value;
     let at = |t: f64, n: f64| -> Vec<ContactPoint> {
-        let state = crate::geometry::OperatingState { pinion_torque: t, pinion_speed: n };
+        let state = crate::geometry::OperatingState {
+            pinion_torque: t,
+            pinion_speed: n,
+        };
         u.iter().map(|x| eval.contact_at(*x, &state)).collect()
     };
     let sliding_velocity = pick(op.pinion_speed.values.len())
         .into_iter()
         .map(|i| {
-            let label = format!("{} {}", op.pinion_speed.written_values[i], op.pinion_speed.unit);
-            (label, at(torque0, op.pinion_speed.values[i].value).iter().map(|c| c.sliding_velocity).collect())
+            let label = format!(
+                "{} {}",
+                op.pinion_speed.written_values[i], op.pinion_speed.unit
+            );
+            (
+                label,
+                at(torque0, op.pinion_speed.values[i].value)
+                    .iter()
+                    .map(|c| c.sliding_velocity)
+                    .collect(),
+            )
         })
         .collect();
     let hertz_pressure = pick(op.pinion_torque.values.len())
         .into_iter()
         .map(|i| {
-            let label = format!("{} {}", op.pinion_torque.written_values[i], op.pinion_torque.unit);
-            (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
+            let label = format!(
+                "{} {}",
+                op.pinion_torque.written_values[i], op.pinion_torque.unit
+            );
+            (
+                label,
+                at(op.pinion_torque.values[i].value, speed0)
+                    .iter()
+                    .map(|c| c.hertz_pressure)
+                    .collect(),
+            )
         })
         .collect();
-    let slide_to_roll = at(torque0, speed0).iter().map(|c| c.slide_to_roll).collect();
-    Curves { u, sliding_velocity, slide_to_roll, hertz_pressure, marks: eval.geometry.points.named().to_vec() }
+    let slide_to_roll = at(torque0, speed0)
+        .iter()
+        .map(|c| c.slide_to_roll)
+        .collect();
+    Curves {
+        u,
+        sliding_velocity,
+        slide_to_roll,
+        hertz_pressure,
+        marks: eval.geometry.points.named().to_vec(),
+    }
 }
 
 fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let g = &eval.geometry;
     let mut out = Vec::new();
-    let note = |m: String| Finding { severity: Severity::Note, message: m };
-    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    let note = |m: String| Finding {
+        severity: Severity::Note,
+        message: m,
+    };
+    let warn = |m: String| Finding {
+        severity: Severity::Warning,
+        message: m,
+    };
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
-            TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),
+            TipSource::Given => format!(
+                "{name} tip diameter as given: {:.4} mm",
+                2e3 * g.tip_radius[i]
+            ),
             TipSource::AddendumRule => format!(
                 "{name} tip diameter from the addendum rule d_a = m (z + 2 + 2x): {:.4} mm",
                 2e3 * g.tip_radius[i]
@@ -367,7 +473,11 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             )));
         }
         let start = g.involute_start_from_t1(i);
-        let (contact_start, beyond) = if i == 0 { (g.points.a, g.points.a < start) } else { (g.points.e, g.points.e > start) };
+        let (contact_start, beyond) = if i == 0 {
+            (g.points.a, g.points.a < start)
+        } else {
+            (g.points.e, g.points.e > start)
+        };
         if beyond {
             out.push(warn(format!(
                 "contact at {:.4} mm from T1 lies below the {name}'s generated involute, which starts at {:.4} mm (root interference with a rack-cut flank)",
@@ -397,8 +507,12 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
         )));
     }
     out.push(note(match scene.gears.load_sharing {
-        LoadSharing::Equal => "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into(),
-        LoadSharing::None => "load sharing: none (every contact carries the whole normal load)".into(),
+        LoadSharing::Equal => {
+            "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into()
+        }
+        LoadSharing::None => {
+            "load sharing: none (every contact carries the whole normal load)".into()
+        }
     }));
     out
 }
@@ -416,7 +530,10 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
         curves: curves(scene, eval),
     };
     for path in non_finite_paths(&report) {
-        report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
+        report.findings.push(Finding {
+            severity: Severity::Warning,
+            message: format!("not a finite number: {path}"),
+        });
     }
     report
 }

@@ -21,8 +21,13 @@ pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         .map(|(_, c)| c)
 }
 
+/// `what` is e.g. "key in the `gears` block": the name is put after its noun.
 pub fn unknown_name(what: &str, name: &Name, allowed: &[&str]) -> Diagnostic {
-    let mut d = Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("unknown {what} `{}`", name.text));
+    let reason = match what.split_once(' ') {
+        Some((noun, place)) => format!("unknown {noun} `{}` {place}", name.text),
+        None => format!("unknown {what} `{}`", name.text),
+    };
+    let mut d = Diagnostic::new(DiagnosticKind::UnknownName, name.span, reason);
     if let Some(n) = nearest(&name.text, allowed.iter().copied()) {
         d = d.hint(format!("did you mean `{n}`?"));
     }
@@ -53,7 +58,13 @@ impl<'a> Fields<'a> {
         calls: &[&str],
         errors: &mut Vec<Diagnostic>,
     ) -> Fields<'a> {
-        let mut f = Fields { what: what.into(), span, values: BTreeMap::new(), blocks: Vec::new(), calls: Vec::new() };
+        let mut f = Fields {
+            what: what.into(),
+            span,
+            values: BTreeMap::new(),
+            blocks: Vec::new(),
+            calls: Vec::new(),
+        };
         let all: Vec<&str> = keys.iter().chain(blocks).chain(calls).copied().collect();
         for item in items {
             match item {
@@ -65,7 +76,10 @@ impl<'a> Fields<'a> {
                                 key.span,
                                 format!("`{}` is given twice in {}", key.text, f.what),
                             )
-                            .hint(format!("`{}` was already given earlier in this block; keep one of them", first.text)),
+                            .hint(format!(
+                                "`{}` was already given earlier in this block; keep one of them",
+                                first.text
+                            )),
                         );
                     } else {
                         f.values.insert(key.text.as_str(), (key, value));
@@ -91,12 +105,21 @@ impl<'a> Fields<'a> {
     }
 
     pub fn missing(&self, key: &str, example: &str) -> Diagnostic {
-        Diagnostic::new(DiagnosticKind::MissingKey, self.span, format!("{} has no `{key}`", self.what))
-            .hint(format!("add `{key} = {example}`"))
+        Diagnostic::new(
+            DiagnosticKind::MissingKey,
+            self.span,
+            format!("{} has no `{key}`", self.what),
+        )
+        .hint(format!("add `{key} = {example}`"))
     }
 
     /// A required quantity.
-    pub fn required<Q: SiQuantity>(&self, key: &str, example: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
+    pub fn required<Q: SiQuantity>(
+        &self,
+        key: &str,
+        example: &str,
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<Given<Q>> {
         if !self.has(key) {
             errors.push(self.missing(key, example));
             return None;
@@ -105,46 +128,81 @@ impl<'a> Fields<'a> {
     }
 
     /// An optional quantity.
-    pub fn optional<Q: SiQuantity>(&self, key: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
+    pub fn optional<Q: SiQuantity>(
+        &self,
+        key: &str,
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<Given<Q>> {
         let (_, value) = self.values.get(key)?;
         let (si, written) = scalar(key, value, Q::DIMENSION, errors)?;
-        Some(Given { value: Q::from_si(si), written, span: value.span })
+        Some(Given {
+            value: Q::from_si(si),
+            written,
+            span: value.span,
+        })
     }
 
     /// An optional dimensionless number within `[lo, hi]`.
-    pub fn number(&self, key: &str, lo: f64, hi: f64, errors: &mut Vec<Diagnostic>) -> Option<Given<f64>> {
+    pub fn number(
+        &self,
+        key: &str,
+        lo: f64,
+        hi: f64,
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<Given<f64>> {
         let (_, value) = self.values.get(key)?;
         let (x, written) = scalar(key, value, Dimension::NONE, errors)?;
         if !(lo..=hi).contains(&x) {
             errors.push(
-                Diagnostic::new(DiagnosticKind::OutOfRange, value.span, format!("`{key}` = {x} is outside [{lo}, {hi}]"))
-                    .hint(format!("`{key}` must lie between {lo} and {hi}")),
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    value.span,
+                    format!("`{key}` = {x} is outside [{lo}, {hi}]"),
+                )
+                .hint(format!("`{key}` must lie between {lo} and {hi}")),
             );
             return None;
         }
-        Some(Given { value: x, written, span: value.span })
+        Some(Given {
+            value: x,
+            written,
+            span: value.span,
+        })
     }
 
     /// An optional name value (`load_sharing = equal`), checked against `allowed`.
-    pub fn name(&self, key: &str, allowed: &[&str], errors: &mut Vec<Diagnostic>) -> Option<&'a Name> {
+    pub fn name(
+        &self,
+        key: &str,
+        allowed: &[&str],
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<&'a Name> {
         let (_, value) = self.values.get(key)?;
         match &value.kind {
             ValueKind::Call(c) if c.arguments.is_empty() => {
                 if allowed.is_empty() || allowed.contains(&c.name.text.as_str()) {
                     Some(&c.name)
                 } else {
-                    errors.push(unknown_name(&format!("value for `{key}`"), &c.name, allowed));
+                    errors.push(unknown_name(
+                        &format!("value for `{key}`"),
+                        &c.name,
+                        allowed,
+                    ));
                     None
                 }
             }
             _ => {
                 errors.push(
-                    Diagnostic::new(DiagnosticKind::WrongDimension, value.span, format!("`{key}` expects a name"))
-                        .hint(if allowed.is_empty() {
-                            format!("write `{key} = name`")
-                        } else {
-                            format!("one of: {}", allowed.join(", "))
-                        }),
+                    Diagnostic::new(
+                        DiagnosticKind::WrongDimension,
+                        value.span,
+                        format!("`{key}` expects a name"),
+                    )
+                    .hint(if allowed.is_empty() {
+                        format!("write `{key} = name`")
+                    } else {
+                        format!("one of: {}", allowed.join(", "))
+                    }),
                 );
                 None
             }
@@ -152,7 +210,12 @@ impl<'a> Fields<'a> {
     }
 
     /// A quantity that may be swept: a single value, a list or a range.
-    pub fn sweep<Q: SiQuantity>(&self, key: &str, example: &str, errors: &mut Vec<Diagnostic>) -> Option<Sweep<Q>> {
+    pub fn sweep<Q: SiQuantity>(
+        &self,
+        key: &str,
+        example: &str,
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<Sweep<Q>> {
         if !self.has(key) {
             errors.push(self.missing(key, example));
             return None;
@@ -168,21 +231,34 @@ impl<'a> Fields<'a> {
 }
 
 /// Evaluates a unit (None: dimensionless) and checks it against the expected dimension.
-pub fn checked_scale(key: &str, unit: Option<&UnitExpr>, expected: Dimension, value_span: Span, errors: &mut Vec<Diagnostic>) -> Option<Scale> {
+pub fn checked_scale(
+    key: &str,
+    unit: Option<&UnitExpr>,
+    expected: Dimension,
+    value_span: Span,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Scale> {
     let scale = match unit {
         None => Scale::ONE,
         Some(u) => match units::evaluate(u.factors.iter().map(|(n, _, e)| (n.as_str(), *e))) {
             Ok(s) => s,
             Err(e) => {
                 let (index, hint) = match &e {
-                    UnitError::Unknown { index, suggestion, .. } => (
+                    UnitError::Unknown {
+                        index, suggestion, ..
+                    } => (
                         *index,
                         match suggestion {
-                            Some(s) => format!("did you mean `{s}`? `gearloss units` lists every unit"),
+                            Some(s) => {
+                                format!("did you mean `{s}`? `gearloss units` lists every unit")
+                            }
                             None => "`gearloss units` lists every unit".to_string(),
                         },
                     ),
-                    UnitError::OffsetInCompound { index, .. } => (*index, "write the temperature on its own, e.g. `90 degC`".into()),
+                    UnitError::OffsetInCompound { index, .. } => (
+                        *index,
+                        "write the temperature on its own, e.g. `90 degC`".into(),
+                    ),
                 };
                 let kind = match e {
                     UnitError::Unknown { .. } => DiagnosticKind::UnknownUnit,
@@ -195,16 +271,31 @@ pub fn checked_scale(key: &str, unit: Option<&UnitExpr>, expected: Dimension, va
     };
     if scale.dimension != expected {
         let (span, reason) = match unit {
-            None => (value_span, format!("`{key}` expects a {}, but the value has no unit", expected.name())),
+            None => (
+                value_span,
+                format!(
+                    "`{key}` expects {}, but the value has no unit",
+                    a(expected.name())
+                ),
+            ),
             Some(u) => (
                 u.span,
-                format!("`{key}` expects a {}, but `{}` is a {}", expected.name(), u.text, scale.dimension.name()),
+                format!(
+                    "`{key}` expects {}, but `{}` is {}",
+                    a(expected.name()),
+                    u.text,
+                    a(scale.dimension.name())
+                ),
             ),
         };
         let hint = if expected == Dimension::NONE {
             format!("`{key}` is a plain number: drop the unit")
         } else {
-            format!("use a unit of {} such as {}", expected.name(), expected.example_units())
+            format!(
+                "use a unit of {} such as {}",
+                expected.name(),
+                expected.example_units()
+            )
         };
         errors.push(Diagnostic::new(DiagnosticKind::WrongDimension, span, reason).hint(hint));
         return None;
@@ -217,15 +308,24 @@ fn finite(key: &str, x: f64, span: Span, errors: &mut Vec<Diagnostic>) -> Option
         Some(x)
     } else {
         errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, span, format!("`{key}` is not a finite number"))
-                .hint("numbers must lie within ±1.7e308"),
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                span,
+                format!("`{key}` is not a finite number"),
+            )
+            .hint("numbers must lie within ±1.7e308"),
         );
         None
     }
 }
 
 /// A single value in SI, and the text as written.
-pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(f64, String)> {
+pub fn scalar(
+    key: &str,
+    value: &Value,
+    expected: Dimension,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(f64, String)> {
     match &value.kind {
         ValueKind::Quantity { number, unit } => {
             let n = finite(key, *number, value.span, errors)?;
@@ -239,8 +339,15 @@ pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Di
         }
         _ => {
             errors.push(
-                Diagnostic::new(DiagnosticKind::WrongDimension, value.span, format!("`{key}` expects a single {}", expected.name()))
-                    .hint(format!("write one value, e.g. `{key} = 1 {}`", expected.si_unit())),
+                Diagnostic::new(
+                    DiagnosticKind::WrongDimension,
+                    value.span,
+                    format!("`{key}` expects a single {}", expected.name()),
+                )
+                .hint(format!(
+                    "write one value, e.g. `{key} = 1 {}`",
+                    expected.si_unit()
+                )),
             );
             None
         }
@@ -248,7 +355,12 @@ pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Di
 }
 
 /// The values of a single value, list or range: (SI values, unit as written, values as written).
-fn sweep_values(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(Vec<f64>, String, Vec<f64>)> {
+fn sweep_values(
+    key: &str,
+    value: &Value,
+    expected: Dimension,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(Vec<f64>, String, Vec<f64>)> {
     let (numbers, unit): (Vec<(f64, Span)>, &Option<UnitExpr>) = match &value.kind {
         ValueKind::Quantity { number, unit } => (vec![(*number, value.span)], unit),
         ValueKind::List { items, unit } => {
@@ -267,18 +379,34 @@ fn sweep_values(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<
             }
             if numbers.is_empty() {
                 errors.push(
-                    Diagnostic::new(DiagnosticKind::OutOfRange, value.span, format!("`{key}` is an empty list"))
-                        .hint("give at least one value"),
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        value.span,
+                        format!("`{key}` is an empty list"),
+                    )
+                    .hint("give at least one value"),
                 );
                 return None;
             }
             (numbers, unit)
         }
-        ValueKind::Range { from, to, unit, step } => (range_values(key, *from, *to, step, value.span, errors)?, unit),
+        ValueKind::Range {
+            from,
+            to,
+            unit,
+            step,
+        } => (
+            range_values(key, *from, *to, step, value.span, errors)?,
+            unit,
+        ),
         _ => {
             errors.push(
-                Diagnostic::new(DiagnosticKind::WrongDimension, value.span, format!("`{key}` expects a {}", expected.name()))
-                    .hint("write a value, a list `[a, b] unit` or a range `a..b unit step s`"),
+                Diagnostic::new(
+                    DiagnosticKind::WrongDimension,
+                    value.span,
+                    format!("`{key}` expects {}", a(expected.name())),
+                )
+                .hint("write a value, a list `[a, b] unit` or a range `a..b unit step s`"),
             );
             return None;
         }
@@ -295,13 +423,24 @@ fn sweep_values(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<
     Some((si, unit_text, written))
 }
 
-fn range_values(key: &str, from: f64, to: f64, step: &Option<RangeStep>, span: Span, errors: &mut Vec<Diagnostic>) -> Option<Vec<(f64, Span)>> {
+fn range_values(
+    key: &str,
+    from: f64,
+    to: f64,
+    step: &Option<RangeStep>,
+    span: Span,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Vec<(f64, Span)>> {
     let from = finite(key, from, span, errors)?;
     let to = finite(key, to, span, errors)?;
     if to < from {
         errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, span, format!("range {from}..{to} runs backwards"))
-                .hint("write the smaller value first"),
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                span,
+                format!("range {from}..{to} runs backwards"),
+            )
+            .hint("write the smaller value first"),
         );
         return None;
     }
@@ -318,22 +457,40 @@ fn range_values(key: &str, from: f64, to: f64, step: &Option<RangeStep>, span: S
                 _ => (11.0, span),
             };
             if !(n >= 2.0 && n <= MAX_SWEEP_LENGTH as f64 && n.fract() == 0.0) {
-                bad(errors, s, format!("count {n} is not a whole number from 2 to {MAX_SWEEP_LENGTH}"));
+                bad(
+                    errors,
+                    s,
+                    format!("count {n} is not a whole number from 2 to {MAX_SWEEP_LENGTH}"),
+                );
                 return None;
             }
             let n = n as usize;
-            (0..n).map(|i| from + (to - from) * i as f64 / (n - 1) as f64).collect()
+            (0..n)
+                .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
+                .collect()
         }
         Some(RangeStep::Step(st, s)) => {
+            if st.is_nan() || *st <= 0.0 {
+                bad(errors, *s, format!("range step {st} is not positive"));
+                return None;
+            }
             let count = ((to - from) / st + 1e-9).floor() + 1.0;
-            if !(*st > 0.0) || !(count <= MAX_SWEEP_LENGTH as f64) {
-                bad(errors, *s, format!("step {st} gives {count} values"));
+            if count.is_nan() || count > MAX_SWEEP_LENGTH as f64 {
+                bad(errors, *s, format!("range step {st} gives {count} values"));
                 return None;
             }
             (0..count as usize).map(|i| from + st * i as f64).collect()
         }
     };
     Some(values.into_iter().map(|v| (v, span)).collect())
+}
+
+/// "a length", "an angle".
+pub fn a(noun: &str) -> String {
+    match noun.chars().next() {
+        Some('a' | 'e' | 'i' | 'o' | 'u') => format!("an {noun}"),
+        _ => format!("a {noun}"),
+    }
 }
 
 /// A number as a user would write it back: shortest round-trip form.

@@ -1,0 +1,107 @@
+//! Fixture-driven tests: every scene in specs/ and tests/specs/ok renders (snapshots of report.md
+//! and report.json), every file in tests/specs/err fails with a diagnostic (snapshot of the
+//! rendered text), and the committed reports/ are what the code writes today.
+
+use std::path::Path;
+
+fn source_name(path: &Path) -> String {
+    // Relative to the project root, so snapshots hold no absolute path.
+    path.strip_prefix(crate::root())
+        .unwrap_or(path)
+        .display()
+        .to_string()
+}
+
+fn render(path: &Path) -> gearloss::RenderedReport {
+    let source = std::fs::read_to_string(path).unwrap();
+    gearloss::run_to_files(&source_name(path), &source).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn file<'a>(r: &'a gearloss::RenderedReport, name: &str) -> &'a str {
+    &r.files.iter().find(|(n, _)| n == name).unwrap().1
+}
+
+#[test]
+fn example_scenes_render() {
+    insta::glob!("../../specs", "*.gear", |path| {
+        let r = render(path);
+        insta::assert_snapshot!("md", file(&r, "report.md"));
+        insta::assert_snapshot!("json", file(&r, "report.json"));
+    });
+}
+
+#[test]
+fn ok_fixtures_render() {
+    insta::glob!("../specs/ok", "*.gear", |path| {
+        let r = render(path);
+        insta::assert_snapshot!(file(&r, "report.md"));
+    });
+}
+
+#[test]
+fn err_fixtures_fail_with_diagnostics() {
+    let mut count = 0;
+    insta::glob!("../specs/err", "*.gear", |path| {
+        let source = std::fs::read_to_string(path).unwrap();
+        let errors =
+            gearloss::check(&source_name(path), &source).expect_err("an err fixture must fail");
+        assert!(!errors.diagnostics.is_empty());
+        for d in &errors.diagnostics {
+            assert!(
+                !d.hints.is_empty(),
+                "every diagnostic carries a hint: {}",
+                d.reason
+            );
+            assert!(d.span.end <= source.len());
+        }
+        count += 1;
+        insta::assert_snapshot!(errors.render(false));
+    });
+    assert!(count >= 15, "only {count} bad inputs");
+}
+
+#[test]
+fn several_errors_are_all_reported() {
+    let path = crate::root().join("tests/specs/err/several_errors.gear");
+    let source = std::fs::read_to_string(&path).unwrap();
+    let errors = gearloss::check("several_errors.gear", &source).unwrap_err();
+    assert_eq!(errors.diagnostics.len(), 3, "{}", errors.render(false));
+}
+
+/// reports/ holds the rendered report of every scene in specs/. To refresh after a change:
+/// `for f in specs/*.gear; do cargo run --release -- run $f; done`.
+#[test]
+fn committed_reports_are_up_to_date() {
+    let mut stale = Vec::new();
+    for entry in std::fs::read_dir(crate::root().join("specs")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "gear") {
+            let r = render(&path);
+            for (name, content) in &r.files {
+                let committed = crate::root().join("reports").join(&r.slug).join(name);
+                if std::fs::read_to_string(&committed).ok().as_deref() != Some(content.as_str()) {
+                    stale.push(committed.display().to_string());
+                }
+            }
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "out of date (run `gearloss run` on each scene in specs/): {stale:#?}"
+    );
+}
+
+#[test]
+fn report_json_has_the_named_geometry_keys() {
+    let r = render(&crate::root().join("specs/fzg_type_c.gear"));
+    let v: serde_json::Value = serde_json::from_str(file(&r, "report.json")).unwrap();
+    let eps = v["geometry"]["contact_ratio"].as_f64().unwrap();
+    assert!((eps - 1.4362).abs() < 1e-4);
+    let aw = &v["geometry"]["operating_pressure_angle"];
+    assert_eq!(aw["unit"], "rad");
+    assert!((aw["value"].as_f64().unwrap().to_degrees() - 22.4388).abs() < 1e-4);
+    // Every dimensional number is {value, unit}: the contact rows carry units.
+    let row = &v["operating_points"][0]["contact"][0];
+    assert_eq!(row["hertz_pressure"]["unit"], "Pa");
+    assert_eq!(row["point"], "A");
+}
