@@ -3,11 +3,16 @@
 //! Geometry and the contact state along the line of action are always computed; friction,
 //! efficiency and film thickness only when the scene's `analyses` name them.
 
+use rayon::prelude::*;
 use serde::Serialize;
 
+use crate::efficiency::{self, EfficiencyResult};
+use crate::friction::{self, catalog, FrictionLaw, LawContext, Parameter, Regime};
 use crate::geometry::contact::{reduced_modulus, Sharing};
 use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
-use crate::model::{LoadSharing, Scene};
+use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
+use crate::numerics::quadrature::Integral;
+use crate::tribology::{Film, FilmInputs, Tribology};
 
 /// Points sampled along the line of action for curves and plots.
 pub const CURVE_SAMPLES: usize = 241;
@@ -15,12 +20,19 @@ pub const CURVE_SAMPLES: usize = 241;
 pub const TABLE_INTERVALS: usize = 12;
 
 /// Everything computed for one scene.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone)]
 pub struct Evaluation {
     pub geometry: SpurGeometry,
     /// E' (Pa).
     pub reduced_modulus: f64,
     pub sharing: LoadSharing,
+    pub tribology: Tribology,
+    /// Ohlendorf's gear loss factor H_V (geometry only).
+    pub ohlendorf_loss_factor: f64,
+    /// Formulations evaluated (empty when the scene asks for no efficiency).
+    pub formulations: Vec<Formulation>,
+    /// Film-thickness inputs when the film is computed (α known and asked for or needed).
+    pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
     pub points: Vec<PointEvaluation>,
 }
 
@@ -32,6 +44,53 @@ pub struct PointEvaluation {
     pub state: OperatingState,
     /// The contact-state table: the named points A B P D E and equal steps between A and E.
     pub table: Vec<(Option<&'static str>, ContactPoint)>,
+    /// Film thickness at the table rows, when computed.
+    pub film: Option<Vec<Film>>,
+    /// One entry per law of the scene, in the scene's order (empty when no analysis needs friction).
+    pub laws: Vec<LawEvaluation>,
+    /// Whether curves (for plots) were computed at this point.
+    pub has_curves: bool,
+}
+
+/// Where a law left its validity range along the line of action.
+#[derive(Debug, Clone, Serialize)]
+pub struct ValiditySummary {
+    pub samples: usize,
+    pub outside: usize,
+    /// (from, to) along the line of action from T1 (m), with the first reason met there.
+    pub intervals: Vec<(f64, f64, &'static str)>,
+}
+
+/// One friction law at one operating point.
+#[derive(Debug, Clone, Serialize)]
+pub struct LawEvaluation {
+    pub id: &'static str,
+    pub title: &'static str,
+    pub parameters: Vec<Parameter>,
+    pub notes: Vec<String>,
+    pub diverges_at_pitch: bool,
+    /// Signed μ at the table rows; None where the law diverges (at P).
+    pub table: Vec<Option<f64>>,
+    /// Regime at the table rows (composite law only).
+    pub regimes: Option<Vec<Regime>>,
+    pub switch_points: Vec<f64>,
+    pub mean_abs_mu: Integral,
+    pub validity: ValiditySummary,
+    pub efficiency: Vec<EfficiencyResult>,
+    /// 1 − μ̄ H_V with μ̄ = mean |μ| over A–E (Ohlendorf's cross-check).
+    pub ohlendorf_efficiency: f64,
+    pub curves: Option<LawCurves>,
+}
+
+/// Sampled curves of one law for plots.
+#[derive(Debug, Clone, Serialize)]
+pub struct LawCurves {
+    /// Signed μ at `Evaluation::curve_positions` (NaN where it diverges).
+    pub mu: Vec<f64>,
+    /// Local friction power loss at the same positions (W).
+    pub power_loss: Vec<f64>,
+    /// η(τ) at `cycle_times` for each formulation.
+    pub efficiency: Vec<(Formulation, Vec<f64>)>,
 }
 
 impl Evaluation {
@@ -39,6 +98,16 @@ impl Evaluation {
         match self.sharing {
             LoadSharing::Equal => Sharing::Equal,
             LoadSharing::None => Sharing::Whole,
+        }
+    }
+
+    /// The friction-law context at an operating point.
+    pub fn law_context(&self, state: OperatingState) -> LawContext<'_> {
+        LawContext {
+            geometry: &self.geometry,
+            state,
+            tribology: self.tribology,
+            sharing: self.sharing(),
         }
     }
 
@@ -79,8 +148,58 @@ pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
     rows
 }
 
+/// Times in the mesh cycle (in periods) at which η(τ) curves are sampled.
+pub fn cycle_times() -> Vec<f64> {
+    (0..CURVE_SAMPLES)
+        .map(|i| i as f64 / (CURVE_SAMPLES - 1) as f64 * (1.0 - 1e-9))
+        .collect()
+}
+
+/// The lubricant and surface data in SI.
+pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
+    let g = &scene.gears;
+    let mean = |f: fn(&crate::model::Gear) -> Option<f64>| match (f(&g.pinion), f(&g.wheel)) {
+        (Some(a), Some(b)) => Some(0.5 * (a + b)),
+        _ => None,
+    };
+    let ra = mean(|g| g.roughness_ra.as_ref().map(|r| r.value.value));
+    let rq = mean(|g| g.roughness_rq.as_ref().map(|r| r.value.value));
+    let rz = mean(|g| g.roughness_rz.as_ref().map(|r| r.value.value));
+    let rq_composite = match (&g.pinion.roughness_rq, &g.wheel.roughness_rq) {
+        (Some(a), Some(b)) => Some(a.value.value.hypot(b.value.value)),
+        _ => None,
+    };
+    let l = scene.lubricant.as_ref();
+    let (x_l, family) = match l.and_then(|l| l.kind) {
+        None => (1.0, "mineral (default)"),
+        Some(LubricantType::Mineral) => (1.0, "mineral"),
+        Some(LubricantType::Pao) => (0.8, "PAO"),
+        Some(LubricantType::PagInsoluble) => (0.7, "PAG, not water-soluble"),
+        Some(LubricantType::PagSoluble) => (0.6, "PAG, water-soluble"),
+        Some(LubricantType::Traction) => (1.5, "traction fluid"),
+        Some(LubricantType::PhosphateEster) => (1.3, "phosphate ester"),
+    };
+    Tribology {
+        dynamic_viscosity: l.map_or(0.0, |l| l.dynamic_viscosity.value.value),
+        kinematic_viscosity: l.and_then(|l| l.kinematic_viscosity_si()),
+        pressure_viscosity: l.and_then(|l| l.pressure_viscosity.as_ref().map(|a| a.value.value)),
+        ra_mean: ra,
+        rq_mean: rq,
+        rq_composite,
+        rz_mean: rz,
+        reduced_modulus,
+        lubricant_factor: x_l,
+        lubricant_family: family,
+    }
+}
+
 /// Evaluates a lowered scene. Lowering has checked the geometry, so this cannot fail on a lowered scene.
 pub fn evaluate_scene(scene: &Scene) -> Evaluation {
+    evaluate_scene_with_progress(scene, &|| {})
+}
+
+/// As [`evaluate_scene`], calling `tick` once per operating point evaluated (from any thread).
+pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> Evaluation {
     let geometry = scene
         .gears
         .geometry()
@@ -91,32 +210,178 @@ pub fn evaluate_scene(scene: &Scene) -> Evaluation {
         [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
         [p.poisson_ratio.value, w.poisson_ratio.value],
     );
+    let tribology = tribology(scene, e_r);
+    let analyses = &scene.analyses;
+    let film_inputs = tribology
+        .pressure_viscosity
+        .filter(|_| analyses.film)
+        .map(|alpha| {
+            let inputs = FilmInputs {
+                dynamic_viscosity: tribology.dynamic_viscosity,
+                pressure_viscosity: alpha,
+                reduced_modulus: e_r,
+            };
+            let cutoff = scene
+                .friction
+                .iter()
+                .find_map(|l| l.argument("filter_cutoff"))
+                .unwrap_or(0.8e-3);
+            (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
+        });
     let mut eval = Evaluation {
+        ohlendorf_loss_factor: 0.0,
         geometry,
         reduced_modulus: e_r,
         sharing: scene.gears.load_sharing,
+        tribology,
+        formulations: analyses.efficiency.clone().unwrap_or_default(),
+        film_inputs,
         points: Vec::new(),
     };
     let rows = table_positions(&eval.geometry);
     let op = &scene.operating;
-    eval.points = op
-        .points()
-        .into_iter()
-        .map(|(ti, ni)| {
+    let indices = op.points();
+    let with_curves = crate::report::pick(indices.len());
+    let wants_friction = analyses.friction_along_loa || analyses.efficiency.is_some();
+    let points: Vec<PointEvaluation> = indices
+        .par_iter()
+        .enumerate()
+        .map(|(k, &(ti, ni))| {
             let state = OperatingState {
                 pinion_torque: op.pinion_torque.values[ti].value,
                 pinion_speed: op.pinion_speed.values[ni].value,
             };
-            let table = rows
+            let table: Vec<(Option<&'static str>, ContactPoint)> = rows
                 .iter()
                 .map(|(name, u)| (*name, eval.contact_at(*u, &state)))
                 .collect();
+            let film = eval.film_inputs.map(|(inputs, lambda)| {
+                table.iter().map(|(_, c)| inputs.film(c, lambda)).collect()
+            });
+            let curves = with_curves.contains(&k);
+            let laws = if wants_friction {
+                scene
+                    .friction
+                    .iter()
+                    .map(|spec| evaluate_law(&eval, spec, state, &table, curves))
+                    .collect()
+            } else {
+                Vec::new()
+            };
+            tick();
             PointEvaluation {
                 index: (ti, ni),
                 state,
                 table,
+                film,
+                laws,
+                has_curves: curves,
             }
         })
         .collect();
+    eval.points = points;
+    eval.ohlendorf_loss_factor =
+        efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState {
+            pinion_torque: 1.0,
+            pinion_speed: 1.0,
+        }));
     eval
+}
+
+fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> ValiditySummary {
+    let mut intervals: Vec<(f64, f64, &'static str)> = Vec::new();
+    let mut outside = 0;
+    let mut open: Option<(f64, f64, &'static str)> = None;
+    for c in contacts {
+        match law.validity(c) {
+            Err(reason) => {
+                outside += 1;
+                open = Some(match open {
+                    Some((from, _, r)) => (from, c.u, r),
+                    None => (c.u, c.u, reason),
+                });
+            }
+            Ok(()) => {
+                if let Some(i) = open.take() {
+                    intervals.push(i);
+                }
+            }
+        }
+    }
+    if let Some(i) = open {
+        intervals.push(i);
+    }
+    ValiditySummary {
+        samples: contacts.len(),
+        outside,
+        intervals,
+    }
+}
+
+fn evaluate_law(
+    eval: &Evaluation,
+    spec: &crate::model::FrictionLawSpec,
+    state: OperatingState,
+    table: &[(Option<&'static str>, ContactPoint)],
+    curves: bool,
+) -> LawEvaluation {
+    let ctx = eval.law_context(state);
+    let law = friction::build(spec, &ctx);
+    let law = law.as_ref();
+    let diverges = law.diverges_at_pitch();
+    let value_at =
+        |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };
+    let positions = eval.curve_positions();
+    let contacts: Vec<ContactPoint> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
+    let taus = cycle_times();
+    let efficiency = eval
+        .formulations
+        .iter()
+        .map(|f| efficiency::evaluate_efficiency(&ctx, law, *f, &taus))
+        .collect();
+    let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
+    LawEvaluation {
+        id: catalog::entry(&spec.id).map_or("unknown", |e| e.id),
+        title: catalog::entry(&spec.id).map_or("", |e| e.title),
+        parameters: law.parameters(),
+        notes: law.notes(),
+        diverges_at_pitch: diverges,
+        table: table.iter().map(|(_, c)| value_at(c)).collect(),
+        regimes: law
+            .regime(&table[0].1)
+            .map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
+        switch_points: law.switch_points(),
+        ohlendorf_efficiency: 1.0 - mean_abs_mu.value * efficiency::ohlendorf_loss_factor(&ctx),
+        mean_abs_mu,
+        validity: validity_summary(law, &contacts),
+        efficiency,
+        curves: curves.then(|| LawCurves {
+            mu: contacts
+                .iter()
+                .map(|c| value_at(c).unwrap_or(f64::NAN))
+                .collect(),
+            power_loss: contacts
+                .iter()
+                .map(|c| {
+                    if diverges && c.s == 0.0 {
+                        0.0
+                    } else {
+                        efficiency::local_power_loss(&ctx, law, c)
+                    }
+                })
+                .collect(),
+            efficiency: eval
+                .formulations
+                .iter()
+                .map(|f| {
+                    (
+                        *f,
+                        taus.iter()
+                            .map(|t| efficiency::efficiency_at(&ctx, law, *f, *t))
+                            .collect(),
+                    )
+                })
+                .collect(),
+        }),
+    }
 }

@@ -12,13 +12,16 @@
 //! [`write_report_folder`]. Errors of the first two stages are [`SceneErrors`]: every problem with
 //! its span, reason and hints, rendered by miette. The library never prints.
 
+pub mod efficiency;
 pub mod evaluate;
 pub mod friction;
 pub mod geometry;
 pub mod model;
+pub mod numerics;
 pub mod render;
 pub mod report;
 pub mod scene;
+pub mod tribology;
 
 use std::path::{Path, PathBuf};
 

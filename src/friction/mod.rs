@@ -1,3 +1,177 @@
-//! Friction laws along the line of action: one file per law behind a small trait.
+//! Friction laws along the line of action: one file per law behind the small [`FrictionLaw`] trait.
+//!
+//! A law is built for one operating point ([`LawContext`]) from the scene's `friction { ... }` entry and
+//! then gives the **signed** coefficient of friction at any contact: positive in recess (s > 0),
+//! negative in approach (s < 0), and 0 exactly at the pitch point, where the sliding direction
+//! reverses (physics notes, "Friction laws"). Laws that diverge at P say so; callers never put their
+//! value at P into a table, plot or mean, and integrate the (integrable) singularity instead.
+//!
+//! ```
+//! use gearloss::friction::{FrictionLaw, coulomb::Coulomb};
+//! # use gearloss::geometry::ContactPoint;
+//! # let mut c: ContactPoint = gearloss::friction::testing::contact();
+//! let law = Coulomb { mu: 0.05 };
+//! c.s = -1e-3; // approach
+//! assert_eq!(law.mu(&c), -0.05);
+//! c.s = 2e-3; // recess
+//! assert_eq!(law.mu(&c), 0.05);
+//! ```
 
+pub mod benedict_kelley;
+pub mod benedict_kelley_bernard;
 pub mod catalog;
+pub mod composite;
+pub mod coulomb;
+pub mod drozdov_gavrikov;
+pub mod iso_14179_2;
+pub mod matsumoto;
+pub mod misharin;
+pub mod odonoghue_cameron;
+pub mod smoothed_coulomb;
+pub mod xu;
+
+use serde::Serialize;
+
+use crate::geometry::contact::Sharing;
+use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
+use crate::model::FrictionLawSpec;
+use crate::tribology::Tribology;
+
+/// Everything a law may read at one operating point.
+#[derive(Debug, Clone, Copy)]
+pub struct LawContext<'a> {
+    pub geometry: &'a SpurGeometry,
+    pub state: OperatingState,
+    pub tribology: Tribology,
+    pub sharing: Sharing,
+}
+
+impl LawContext<'_> {
+    /// The contact state at `u` (from T1).
+    pub fn contact_at(&self, u: f64) -> ContactPoint {
+        self.geometry
+            .contact_at(u, &self.state, self.tribology.reduced_modulus, self.sharing)
+    }
+}
+
+/// A lubrication regime of the composite law (Model V).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Regime {
+    /// Λ < 1: smoothed Coulomb (Model IV).
+    Boundary,
+    /// 1 ≤ Λ < 4: Benedict–Kelley (Model II).
+    Mixed,
+    /// Λ ≥ 4: Xu et al. (Model III).
+    FullFilm,
+}
+
+/// A parameter of a law as it was used (SI value and unit), for reports.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Parameter {
+    pub name: &'static str,
+    pub value: f64,
+    pub unit: &'static str,
+}
+
+/// A coefficient-of-friction law along the line of action.
+pub trait FrictionLaw: Send + Sync {
+    /// The id used in `.gear` files and report.json.
+    fn id(&self) -> &'static str;
+    /// Signed μ at a contact; 0 at s = 0 exactly.
+    fn mu(&self, c: &ContactPoint) -> f64;
+    /// `Err(reason)` where the contact lies outside the law's stated validity range.
+    fn validity(&self, _c: &ContactPoint) -> Result<(), &'static str> {
+        Ok(())
+    }
+    /// True when |μ| → ∞ at the pitch point (integrable).
+    fn diverges_at_pitch(&self) -> bool {
+        false
+    }
+    /// The lubrication regime, for laws that switch between regimes.
+    fn regime(&self, _c: &ContactPoint) -> Option<Regime> {
+        None
+    }
+    /// Positions along the line of action (from T1) where the law switches regime.
+    fn switch_points(&self) -> Vec<f64> {
+        Vec::new()
+    }
+    /// The parameters as used, SI.
+    fn parameters(&self) -> Vec<Parameter> {
+        Vec::new()
+    }
+    /// Notes the report must carry whenever this law is used (low confidence, unit readings, clamps).
+    fn notes(&self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// sgn(s) · magnitude, with 0 at s = 0 (the sliding direction reverses at P).
+pub fn signed(magnitude: f64, s: f64) -> f64 {
+    if s > 0.0 {
+        magnitude
+    } else if s < 0.0 {
+        -magnitude
+    } else {
+        0.0
+    }
+}
+
+/// Builds the law a scene names, for one operating point. The catalogue and lowering have checked
+/// that every input it needs is present.
+pub fn build(spec: &FrictionLawSpec, ctx: &LawContext) -> Box<dyn FrictionLaw> {
+    let arg = |name: &str| spec.argument(name).unwrap_or(f64::NAN);
+    match spec.id.as_str() {
+        "coulomb" => Box::new(coulomb::Coulomb { mu: arg("mu") }),
+        "benedict_kelley" => Box::new(benedict_kelley::BenedictKelley::new(&ctx.tribology)),
+        "benedict_kelley_bernard" => Box::new(benedict_kelley_bernard::BenedictKelleyBernard::new(
+            &ctx.tribology,
+        )),
+        "xu" => Box::new(xu::Xu::new(&ctx.tribology)),
+        "smoothed_coulomb" => Box::new(smoothed_coulomb::SmoothedCoulomb {
+            mu: arg("mu"),
+            phi: arg("phi"),
+        }),
+        "composite" => Box::new(composite::Composite::new(
+            ctx,
+            arg("filter_cutoff"),
+            arg("mu"),
+            arg("phi"),
+        )),
+        "misharin" => Box::new(misharin::Misharin::new(&ctx.tribology)),
+        "odonoghue_cameron" => Box::new(odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology)),
+        "drozdov_gavrikov" => Box::new(drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology)),
+        "iso_14179_2" => Box::new(iso_14179_2::Iso14179_2::new(ctx)),
+        "matsumoto" => Box::new(matsumoto::Matsumoto::new(
+            &ctx.tribology,
+            arg("mu_boundary"),
+            arg("mu_ehl"),
+        )),
+        other => unreachable!("lowering accepts only catalogued laws, got {other}"),
+    }
+}
+
+/// A contact state for examples and tests: FZG type C near the start of contact at 1000 rpm, 302 N·m.
+#[doc(hidden)]
+pub mod testing {
+    use crate::geometry::ContactPoint;
+
+    pub fn contact() -> ContactPoint {
+        ContactPoint {
+            u: 6.0e-3,
+            s: -7.97e-3,
+            radius_of_curvature: [6.0e-3, 28.9e-3],
+            reduced_radius: 4.97e-3,
+            rolling_velocity: [0.628, 2.02],
+            sliding_velocity: 1.39,
+            sum_velocity: 2.65,
+            entrainment_velocity: 1.325,
+            slide_to_roll: 1.05,
+            pairs_in_contact: 2,
+            load_share: 0.5,
+            load_per_width: 3.19e5,
+            hertz_pressure: 1.52e9,
+            hertz_half_width: 1.34e-4,
+        }
+    }
+}

@@ -69,15 +69,16 @@ impl SpurGeometry {
         op.pinion_speed / self.gear_ratio
     }
 
-    /// Load share of a contact at `u` under the given sharing rule.
-    pub fn load_share(&self, u: f64, sharing: Sharing) -> f64 {
+    /// Load share of one of `n` pairs in contact under the given sharing rule.
+    pub fn load_share(n: usize, sharing: Sharing) -> f64 {
         match sharing {
-            Sharing::Equal => 1.0 / self.pairs_in_contact(u) as f64,
+            Sharing::Equal => 1.0 / n as f64,
             Sharing::Whole => 1.0,
         }
     }
 
-    /// The contact state at `u` (from T1) for an operating point, with reduced modulus E'.
+    /// The contact state at `u` (from T1) for an operating point, with reduced modulus E'; the
+    /// number of pairs in contact is [`SpurGeometry::pairs_in_contact`].
     pub fn contact_at(
         &self,
         u: f64,
@@ -85,14 +86,25 @@ impl SpurGeometry {
         reduced_modulus: f64,
         sharing: Sharing,
     ) -> ContactPoint {
+        self.contact_with_pairs(u, op, reduced_modulus, sharing, self.pairs_in_contact(u))
+    }
+
+    /// The contact state at `u` when `n` pairs are in contact (known from the mesh cycle).
+    pub fn contact_with_pairs(
+        &self,
+        u: f64,
+        op: &OperatingState,
+        reduced_modulus: f64,
+        sharing: Sharing,
+        n: usize,
+    ) -> ContactPoint {
         let rho = [u, self.line_of_action_length - u];
         let r = rho[0] * rho[1] / (rho[0] + rho[1]);
         let v = [op.pinion_speed * rho[0], self.wheel_speed(op) * rho[1]];
         let vs = (v[0] - v[1]).abs();
         let vsum = v[0] + v[1];
         let ue = vsum / 2.0;
-        let n = self.pairs_in_contact(u);
-        let share = self.load_share(u, sharing);
+        let share = Self::load_share(n, sharing);
         let w = share * self.normal_load(op) / self.face_width;
         ContactPoint {
             u,

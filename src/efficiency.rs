@@ -1,0 +1,182 @@
+//! Instantaneous and mean mesh efficiency, and friction power loss (Fernandes et al. §2.3–2.4,
+//! generalised to μ varying along the line of action and any number of pairs in contact; physics
+//! notes, "Efficiency").
+//!
+//! At time τ (in mesh periods, τ = 0 when a pair enters at A) the pairs in contact are at
+//! u_k = T1A + p_b (τ + k), k = 0, 1, 2, while u_k < T1E. With R_p, R_w the base radii, i = z2/z1,
+//! and per contact j the signed μ_j, share w_j, s_j = u_j − T1P, T1C_j = u_j, T2C_j = T1T2 − u_j:
+//!
+//! - external: η = 1 − (1/R_p + 1/R_w) Σ_j w_j μ_j s_j  (= 1 − friction power / input power);
+//! - internal: η = (R_w + Σ_j μ_j w_j T2C_j) / (R_p + Σ_j μ_j w_j T1C_j) / i.
+//!
+//! Mean η̄ is the time mean over one mesh cycle, integrated piecewise between every zone boundary,
+//! pitch-point passage and regime switch by adaptive Gauss–Kronrod to a relative tolerance of 1e-10;
+//! the friction power loss is P = (1 − η̄) T_p ω_p.
+
+use serde::Serialize;
+
+use crate::friction::{FrictionLaw, LawContext};
+use crate::geometry::ContactPoint;
+use crate::model::Formulation;
+use crate::numerics::quadrature::{integrate, Integral};
+
+/// Relative tolerance of every mean.
+pub const MEAN_TOLERANCE: f64 = 1e-10;
+
+/// The contacts at time τ of the mesh cycle (τ in [0, 1)).
+/// The load is shared among the pairs found at τ, so that the shares always add up to one.
+pub fn contacts_at(ctx: &LawContext, tau: f64) -> Vec<ContactPoint> {
+    let g = ctx.geometry;
+    let positions: Vec<f64> = (0..4)
+        .map(|k| g.points.a + g.base_pitch * (tau + k as f64))
+        .filter(|u| *u >= g.points.a && *u < g.points.e)
+        .collect();
+    let n = positions.len();
+    positions
+        .into_iter()
+        .map(|u| g.contact_with_pairs(u, &ctx.state, ctx.tribology.reduced_modulus, ctx.sharing, n))
+        .collect()
+}
+
+/// Instantaneous efficiency at time τ.
+pub fn efficiency_at(
+    ctx: &LawContext,
+    law: &dyn FrictionLaw,
+    formulation: Formulation,
+    tau: f64,
+) -> f64 {
+    efficiency_of(ctx, law, formulation, &contacts_at(ctx, tau))
+}
+
+/// Efficiency for a given set of contacts.
+pub fn efficiency_of(
+    ctx: &LawContext,
+    law: &dyn FrictionLaw,
+    formulation: Formulation,
+    contacts: &[ContactPoint],
+) -> f64 {
+    let g = ctx.geometry;
+    let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
+    match formulation {
+        Formulation::External => {
+            let sum: f64 = contacts
+                .iter()
+                .map(|c| c.load_share * law.mu(c) * c.s)
+                .sum();
+            1.0 - (1.0 / rp + 1.0 / rw) * sum
+        }
+        Formulation::Internal => {
+            let (mut num, mut den) = (rw, rp);
+            for c in contacts {
+                let m = law.mu(c) * c.load_share;
+                num += m * (g.line_of_action_length - c.u);
+                den += m * c.u;
+            }
+            num / den / g.gear_ratio
+        }
+    }
+}
+
+/// Times in (0, 1) where the integrand changes form: zone boundaries, pitch passages, law switches.
+pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
+    let g = ctx.geometry;
+    let p = g.points;
+    let mut positions = vec![p.e, p.p];
+    positions.extend(law.switch_points());
+    let mut times = vec![0.0, 1.0];
+    for u in positions {
+        for k in 0..4 {
+            let tau = (u - p.a) / g.base_pitch - k as f64;
+            if tau > 0.0 && tau < 1.0 {
+                times.push(tau);
+            }
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    times
+}
+
+/// η̄ over one mesh cycle, with its error estimate.
+pub fn mean_efficiency(
+    ctx: &LawContext,
+    law: &dyn FrictionLaw,
+    formulation: Formulation,
+) -> Integral {
+    integrate(
+        |tau| efficiency_at(ctx, law, formulation, tau),
+        &break_times(ctx, law),
+        MEAN_TOLERANCE,
+    )
+}
+
+/// Positions along the line of action where a law's integrand changes form (for means over A–E).
+pub fn break_positions(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
+    let p = ctx.geometry.points;
+    let mut v = vec![p.a, p.b, p.p, p.d, p.e];
+    v.extend(law.switch_points());
+    v
+}
+
+/// Mean |μ| over the path of contact A–E (a length mean).
+pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
+    let p = ctx.geometry.points;
+    let i = integrate(
+        |u| law.mu(&ctx.contact_at(u)).abs(),
+        &break_positions(ctx, law),
+        MEAN_TOLERANCE,
+    );
+    Integral {
+        value: i.value / (p.e - p.a),
+        error: i.error / (p.e - p.a),
+        evaluations: i.evaluations,
+    }
+}
+
+/// Ohlendorf's gear loss factor H_V = π(u+1)/(z1 u cos β_b) · (1 − ε_α + ε_1² + ε_2²) (spur: cos β_b = 1).
+pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
+    let g = ctx.geometry;
+    let u = g.gear_ratio;
+    let [e1, e2] = g.addendum_contact_ratio;
+    std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u)
+        * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2)
+}
+
+/// Local friction power loss of one contact, |μ| F v_s (W).
+pub fn local_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, c: &ContactPoint) -> f64 {
+    let force = c.load_per_width * ctx.geometry.face_width;
+    law.mu(c).abs() * force * c.sliding_velocity
+}
+
+/// Mean efficiency result of one law and formulation at one operating point.
+#[derive(Debug, Clone, Serialize)]
+pub struct EfficiencyResult {
+    pub formulation: Formulation,
+    pub mean: Integral,
+    /// P = (1 − η̄) T_p ω_p (W).
+    pub power_loss: f64,
+    pub min: f64,
+    pub max: f64,
+}
+
+/// Evaluates η̄, the power loss and the range of η(τ) (sampled) for one law and formulation.
+pub fn evaluate_efficiency(
+    ctx: &LawContext,
+    law: &dyn FrictionLaw,
+    formulation: Formulation,
+    samples: &[f64],
+) -> EfficiencyResult {
+    let mean = mean_efficiency(ctx, law, formulation);
+    let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
+    for tau in samples {
+        let e = efficiency_at(ctx, law, formulation, *tau);
+        min = min.min(e);
+        max = max.max(e);
+    }
+    EfficiencyResult {
+        formulation,
+        power_loss: (1.0 - mean.value) * ctx.state.pinion_torque * ctx.state.pinion_speed,
+        mean,
+        min,
+        max,
+    }
+}

@@ -1,0 +1,77 @@
+//! Benedict–Kelley in the form of Bernard et al., Table 1:
+//! μ = 0.0127 · 50/(50 − S_rms) · log10[3.98e9 p_H² R / (η SR U³ E')],
+//! p_H in Pa, R in m, η in cP, U in m/s, E' in Pa, S_rms = mean Rq in µm. Valid while
+//! 50/(50 − S_rms) ≤ 3. Not equivalent to He–Cho–Singh's eq 14 (it runs ≈ 0.08 higher), so both
+//! are kept, named apart. Diverges (logarithmically) at P.
+
+use super::{signed, FrictionLaw, Parameter};
+use crate::geometry::ContactPoint;
+use crate::tribology::{units, Tribology};
+
+#[derive(Debug, Clone, Copy)]
+pub struct BenedictKelleyBernard {
+    pub viscosity_cp: f64,
+    pub roughness_rms_um: f64,
+    pub reduced_modulus: f64,
+}
+
+impl BenedictKelleyBernard {
+    pub fn new(t: &Tribology) -> Self {
+        BenedictKelleyBernard {
+            viscosity_cp: t.dynamic_viscosity * units::CP_PER_PA_S,
+            roughness_rms_um: t.rq_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
+            reduced_modulus: t.reduced_modulus,
+        }
+    }
+
+    fn argument(&self, c: &ContactPoint) -> f64 {
+        3.98e9 * c.hertz_pressure.powi(2) * c.reduced_radius
+            / (self.viscosity_cp
+                * c.slide_to_roll
+                * c.entrainment_velocity.powi(3)
+                * self.reduced_modulus)
+    }
+
+    pub fn magnitude(&self, c: &ContactPoint) -> f64 {
+        0.0127 * 50.0 / (50.0 - self.roughness_rms_um) * self.argument(c).log10()
+    }
+}
+
+impl FrictionLaw for BenedictKelleyBernard {
+    fn id(&self) -> &'static str {
+        "benedict_kelley_bernard"
+    }
+    fn mu(&self, c: &ContactPoint) -> f64 {
+        if c.s == 0.0 {
+            return 0.0;
+        }
+        signed(self.magnitude(c).max(0.0), c.s)
+    }
+    fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {
+        let factor = 50.0 / (50.0 - self.roughness_rms_um);
+        if !(factor > 0.0 && factor <= 3.0) {
+            Err("roughness factor 50/(50 − S_rms) outside (0, 3]")
+        } else if c.s != 0.0 && self.argument(c) <= 1.0 {
+            Err("log argument ≤ 1: μ would be ≤ 0 and is clamped to 0")
+        } else {
+            Ok(())
+        }
+    }
+    fn diverges_at_pitch(&self) -> bool {
+        true
+    }
+    fn parameters(&self) -> Vec<Parameter> {
+        vec![
+            Parameter {
+                name: "viscosity",
+                value: self.viscosity_cp / units::CP_PER_PA_S,
+                unit: "Pa*s",
+            },
+            Parameter {
+                name: "roughness_rq_mean",
+                value: self.roughness_rms_um / units::UM_PER_M,
+                unit: "m",
+            },
+        ]
+    }
+}

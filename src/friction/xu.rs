@@ -1,0 +1,88 @@
+//! Xu et al., Model III (He–Cho–Singh eq 18; Bernard §2.2):
+//! μ = exp(f) p_H^b2 |SR|^b3 U^b6 η^b7 R^b8,
+//! f = b1 + b4 |SR| p_H log10 η + b5 exp(−|SR| p_H log10 η) + b9 exp(S),
+//! p_H in GPa, U (entrainment) in m/s, η in cP, R in metres, S = mean Ra in µm. Both papers print
+//! b5 as the exponent of U: it is b6 (physics notes). μ → 0 at P (|SR|^b3).
+//!
+//! ```
+//! use gearloss::friction::{FrictionLaw, xu::Xu};
+//! let law = Xu { viscosity_cp: 95.0, roughness_um: 0.3 };
+//! let mut c = gearloss::friction::testing::contact();
+//! c.slide_to_roll = 0.0;
+//! assert_eq!(law.magnitude(&c), 0.0);
+//! ```
+
+use super::{signed, FrictionLaw, Parameter};
+use crate::geometry::ContactPoint;
+use crate::tribology::{units, Tribology};
+
+/// b1 … b9 of Xu (2005), as printed by both papers.
+pub const B: [f64; 9] = [
+    -8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.100601, 0.752755, -0.390958, 0.620305,
+];
+
+#[derive(Debug, Clone, Copy)]
+pub struct Xu {
+    pub viscosity_cp: f64,
+    pub roughness_um: f64,
+}
+
+impl Xu {
+    pub fn new(t: &Tribology) -> Self {
+        Xu {
+            viscosity_cp: t.dynamic_viscosity * units::CP_PER_PA_S,
+            roughness_um: t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
+        }
+    }
+
+    pub fn magnitude(&self, c: &ContactPoint) -> f64 {
+        let ph = c.hertz_pressure * units::GPA_PER_PA;
+        let sr = c.slide_to_roll.abs();
+        if sr == 0.0 {
+            return 0.0;
+        }
+        let l = sr * ph * self.viscosity_cp.log10();
+        let f = B[0] + B[3] * l + B[4] * (-l).exp() + B[8] * self.roughness_um.exp();
+        f.exp()
+            * ph.powf(B[1])
+            * sr.powf(B[2])
+            * c.entrainment_velocity.powf(B[5])
+            * self.viscosity_cp.powf(B[6])
+            * c.reduced_radius.powf(B[7])
+    }
+}
+
+impl FrictionLaw for Xu {
+    fn id(&self) -> &'static str {
+        "xu"
+    }
+    fn mu(&self, c: &ContactPoint) -> f64 {
+        signed(self.magnitude(c), c.s)
+    }
+    /// The approximate span of the twin-disc data behind the regression (Xu 2005): p_H 0.5–2.5 GPa,
+    /// entrainment velocity 0.5–25 m/s.
+    fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {
+        let ph = c.hertz_pressure * units::GPA_PER_PA;
+        if !(0.5..=2.5).contains(&ph) {
+            Err("p_H outside 0.5–2.5 GPa")
+        } else if !(0.5..=25.0).contains(&c.entrainment_velocity) {
+            Err("entrainment velocity outside 0.5–25 m/s")
+        } else {
+            Ok(())
+        }
+    }
+    fn parameters(&self) -> Vec<Parameter> {
+        vec![
+            Parameter {
+                name: "viscosity",
+                value: self.viscosity_cp / units::CP_PER_PA_S,
+                unit: "Pa*s",
+            },
+            Parameter {
+                name: "roughness_ra_mean",
+                value: self.roughness_um / units::UM_PER_M,
+                unit: "m",
+            },
+        ]
+    }
+}

@@ -1,0 +1,3 @@
+//! Numerical building blocks shared by the physics: adaptive quadrature.
+
+pub mod quadrature;
