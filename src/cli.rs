@@ -9,11 +9,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 #[derive(Parser)]
-#[command(
-    name = "gearloss",
-    version,
-    about = "Gear mesh friction, efficiency and dynamics from a .gear scene"
-)]
+#[command(name = "gearloss", version, about = "Gear mesh friction, efficiency and dynamics from a .gear scene")]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -119,31 +115,21 @@ fn run(path: &Path, out: &Path) -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!(
-                "error: cannot write the report under {}: {e}",
-                out.display()
-            );
+            eprintln!("error: cannot write the report under {}: {e}", out.display());
             ExitCode::from(EXIT_IO)
         }
     }
 }
 
 fn units_table() -> String {
-    let mut out = format!(
-        "{:<6} {:<24} {:>24} {:<16} {}\n",
-        "unit", "quantity", "in SI", "SI unit", "equals"
-    );
+    let mut out = format!("{:<6} {:<24} {:>24} {:<16} {}\n", "unit", "quantity", "in SI", "SI unit", "equals");
     for u in gearloss::scene::units::UNITS {
         let equals = match u.composition {
             Some((1.0, expr)) => expr.to_string(),
             Some((k, expr)) => format!("{k} {expr}"),
             None => String::new(),
         };
-        let si = if u.offset != 0.0 {
-            format!("x + {}", u.offset)
-        } else {
-            format!("{:e}", u.factor)
-        };
+        let si = if u.offset != 0.0 { format!("x + {}", u.offset) } else { format!("{:e}", u.factor) };
         out.push_str(&format!(
             "{:<6} {:<24} {:>24} {:<16} {}\n",
             u.name,

@@ -39,12 +39,7 @@ pub fn contacts_at(ctx: &LawContext, tau: f64) -> Vec<ContactPoint> {
 }
 
 /// Instantaneous efficiency at time τ.
-pub fn efficiency_at(
-    ctx: &LawContext,
-    law: &dyn FrictionLaw,
-    formulation: Formulation,
-    tau: f64,
-) -> f64 {
+pub fn efficiency_at(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation, tau: f64) -> f64 {
     efficiency_of(ctx, law, formulation, &contacts_at(ctx, tau))
 }
 
@@ -59,10 +54,7 @@ pub fn efficiency_of(
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
     match formulation {
         Formulation::External => {
-            let sum: f64 = contacts
-                .iter()
-                .map(|c| c.load_share * law.mu(c) * c.s)
-                .sum();
+            let sum: f64 = contacts.iter().map(|c| c.load_share * law.mu(c) * c.s).sum();
             1.0 - (1.0 / rp + 1.0 / rw) * sum
         }
         Formulation::Internal => {
@@ -97,16 +89,8 @@ pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
 }
 
 /// η̄ over one mesh cycle, with its error estimate.
-pub fn mean_efficiency(
-    ctx: &LawContext,
-    law: &dyn FrictionLaw,
-    formulation: Formulation,
-) -> Integral {
-    integrate(
-        |tau| efficiency_at(ctx, law, formulation, tau),
-        &break_times(ctx, law),
-        MEAN_TOLERANCE,
-    )
+pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation) -> Integral {
+    integrate(|tau| efficiency_at(ctx, law, formulation, tau), &break_times(ctx, law), MEAN_TOLERANCE)
 }
 
 /// Positions along the line of action where a law's integrand changes form (for means over A–E).
@@ -120,16 +104,8 @@ pub fn break_positions(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
 /// Mean |μ| over the path of contact A–E (a length mean).
 pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
     let p = ctx.geometry.points;
-    let i = integrate(
-        |u| law.mu(&ctx.contact_at(u)).abs(),
-        &break_positions(ctx, law),
-        MEAN_TOLERANCE,
-    );
-    Integral {
-        value: i.value / (p.e - p.a),
-        error: i.error / (p.e - p.a),
-        evaluations: i.evaluations,
-    }
+    let i = integrate(|u| law.mu(&ctx.contact_at(u)).abs(), &break_positions(ctx, law), MEAN_TOLERANCE);
+    Integral { value: i.value / (p.e - p.a), error: i.error / (p.e - p.a), evaluations: i.evaluations }
 }
 
 /// Ohlendorf's gear loss factor H_V = π(u+1)/(z1 u cos β_b) · (1 − ε_α + ε_1² + ε_2²) (spur: cos β_b = 1).
@@ -137,8 +113,7 @@ pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
     let g = ctx.geometry;
     let u = g.gear_ratio;
     let [e1, e2] = g.addendum_contact_ratio;
-    std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u)
-        * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2)
+    std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u) * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2)
 }
 
 /// Local friction power loss of one contact, |μ| F v_s (W).

@@ -103,18 +103,12 @@ impl Evaluation {
 
     /// The friction-law context at an operating point.
     pub fn law_context(&self, state: OperatingState) -> LawContext<'_> {
-        LawContext {
-            geometry: &self.geometry,
-            state,
-            tribology: self.tribology,
-            sharing: self.sharing(),
-        }
+        LawContext { geometry: &self.geometry, state, tribology: self.tribology, sharing: self.sharing() }
     }
 
     /// The contact state at `u` for an operating point.
     pub fn contact_at(&self, u: f64, state: &OperatingState) -> ContactPoint {
-        self.geometry
-            .contact_at(u, state, self.reduced_modulus, self.sharing())
+        self.geometry.contact_at(u, state, self.reduced_modulus, self.sharing())
     }
 
     /// Evenly spaced positions from A to E for curves, with B and D taken from both sides so that
@@ -122,9 +116,8 @@ impl Evaluation {
     pub fn curve_positions(&self) -> Vec<f64> {
         let p = &self.geometry.points;
         let eps = 1e-9 * (p.e - p.a);
-        let mut u: Vec<f64> = (0..CURVE_SAMPLES)
-            .map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64)
-            .collect();
+        let mut u: Vec<f64> =
+            (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
         u.extend([p.b - eps, p.b, p.p, p.d, p.d + eps]);
         u.sort_by(f64::total_cmp);
         u
@@ -134,9 +127,8 @@ impl Evaluation {
 /// Table positions: A..E in equal steps, with B, P and D inserted, each labelled where it is a named point.
 pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
     let p = &g.points;
-    let mut rows: Vec<(Option<&'static str>, f64)> = (0..=TABLE_INTERVALS)
-        .map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64))
-        .collect();
+    let mut rows: Vec<(Option<&'static str>, f64)> =
+        (0..=TABLE_INTERVALS).map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64)).collect();
     for (name, u) in p.named() {
         let tol = 1e-9 * (p.e - p.a);
         match rows.iter_mut().find(|(_, v)| (*v - u).abs() < tol) {
@@ -150,9 +142,7 @@ pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
 
 /// Times in the mesh cycle (in periods) at which η(τ) curves are sampled.
 pub fn cycle_times() -> Vec<f64> {
-    (0..CURVE_SAMPLES)
-        .map(|i| i as f64 / (CURVE_SAMPLES - 1) as f64 * (1.0 - 1e-9))
-        .collect()
+    (0..CURVE_SAMPLES).map(|i| i as f64 / (CURVE_SAMPLES - 1) as f64 * (1.0 - 1e-9)).collect()
 }
 
 /// The lubricant and surface data in SI.
@@ -200,10 +190,7 @@ pub fn evaluate_scene(scene: &Scene) -> Evaluation {
 
 /// As [`evaluate_scene`], calling `tick` once per operating point evaluated (from any thread).
 pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> Evaluation {
-    let geometry = scene
-        .gears
-        .geometry()
-        .expect("lowering refuses pairs whose geometry fails");
+    let geometry = scene.gears.geometry().expect("lowering refuses pairs whose geometry fails");
     let p = &scene.gears.pinion.material;
     let w = &scene.gears.wheel.material;
     let e_r = reduced_modulus(
@@ -212,22 +199,15 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
     );
     let tribology = tribology(scene, e_r);
     let analyses = &scene.analyses;
-    let film_inputs = tribology
-        .pressure_viscosity
-        .filter(|_| analyses.film)
-        .map(|alpha| {
-            let inputs = FilmInputs {
-                dynamic_viscosity: tribology.dynamic_viscosity,
-                pressure_viscosity: alpha,
-                reduced_modulus: e_r,
-            };
-            let cutoff = scene
-                .friction
-                .iter()
-                .find_map(|l| l.argument("filter_cutoff"))
-                .unwrap_or(0.8e-3);
-            (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
-        });
+    let film_inputs = tribology.pressure_viscosity.filter(|_| analyses.film).map(|alpha| {
+        let inputs = FilmInputs {
+            dynamic_viscosity: tribology.dynamic_viscosity,
+            pressure_viscosity: alpha,
+            reduced_modulus: e_r,
+        };
+        let cutoff = scene.friction.iter().find_map(|l| l.argument("filter_cutoff")).unwrap_or(0.8e-3);
+        (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
+    });
     let mut eval = Evaluation {
         ohlendorf_loss_factor: 0.0,
         geometry,
@@ -251,40 +231,23 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
                 pinion_torque: op.pinion_torque.values[ti].value,
                 pinion_speed: op.pinion_speed.values[ni].value,
             };
-            let table: Vec<(Option<&'static str>, ContactPoint)> = rows
-                .iter()
-                .map(|(name, u)| (*name, eval.contact_at(*u, &state)))
-                .collect();
-            let film = eval.film_inputs.map(|(inputs, lambda)| {
-                table.iter().map(|(_, c)| inputs.film(c, lambda)).collect()
-            });
+            let table: Vec<(Option<&'static str>, ContactPoint)> =
+                rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, &state))).collect();
+            let film =
+                eval.film_inputs.map(|(inputs, lambda)| table.iter().map(|(_, c)| inputs.film(c, lambda)).collect());
             let curves = with_curves.contains(&k);
             let laws = if wants_friction {
-                scene
-                    .friction
-                    .iter()
-                    .map(|spec| evaluate_law(&eval, spec, state, &table, curves))
-                    .collect()
+                scene.friction.iter().map(|spec| evaluate_law(&eval, spec, state, &table, curves)).collect()
             } else {
                 Vec::new()
             };
             tick();
-            PointEvaluation {
-                index: (ti, ni),
-                state,
-                table,
-                film,
-                laws,
-                has_curves: curves,
-            }
+            PointEvaluation { index: (ti, ni), state, table, film, laws, has_curves: curves }
         })
         .collect();
     eval.points = points;
     eval.ohlendorf_loss_factor =
-        efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState {
-            pinion_torque: 1.0,
-            pinion_speed: 1.0,
-        }));
+        efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
     eval
 }
 
@@ -311,11 +274,7 @@ fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> Validit
     if let Some(i) = open {
         intervals.push(i);
     }
-    ValiditySummary {
-        samples: contacts.len(),
-        outside,
-        intervals,
-    }
+    ValiditySummary { samples: contacts.len(), outside, intervals }
 }
 
 fn evaluate_law(
@@ -329,16 +288,11 @@ fn evaluate_law(
     let law = friction::build(spec, &ctx);
     let law = law.as_ref();
     let diverges = law.diverges_at_pitch();
-    let value_at =
-        |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };
+    let value_at = |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };
     let positions = eval.curve_positions();
     let contacts: Vec<ContactPoint> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
     let taus = cycle_times();
-    let efficiency = eval
-        .formulations
-        .iter()
-        .map(|f| efficiency::evaluate_efficiency(&ctx, law, *f, &taus))
-        .collect();
+    let efficiency = eval.formulations.iter().map(|f| efficiency::evaluate_efficiency(&ctx, law, *f, &taus)).collect();
     let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
     LawEvaluation {
         id: catalog::entry(&spec.id).map_or("unknown", |e| e.id),
@@ -347,40 +301,22 @@ fn evaluate_law(
         notes: law.notes(),
         diverges_at_pitch: diverges,
         table: table.iter().map(|(_, c)| value_at(c)).collect(),
-        regimes: law
-            .regime(&table[0].1)
-            .map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
+        regimes: law.regime(&table[0].1).map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
         switch_points: law.switch_points(),
         ohlendorf_efficiency: 1.0 - mean_abs_mu.value * efficiency::ohlendorf_loss_factor(&ctx),
         mean_abs_mu,
         validity: validity_summary(law, &contacts),
         efficiency,
         curves: curves.then(|| LawCurves {
-            mu: contacts
-                .iter()
-                .map(|c| value_at(c).unwrap_or(f64::NAN))
-                .collect(),
+            mu: contacts.iter().map(|c| value_at(c).unwrap_or(f64::NAN)).collect(),
             power_loss: contacts
                 .iter()
-                .map(|c| {
-                    if diverges && c.s == 0.0 {
-                        0.0
-                    } else {
-                        efficiency::local_power_loss(&ctx, law, c)
-                    }
-                })
+                .map(|c| if diverges && c.s == 0.0 { 0.0 } else { efficiency::local_power_loss(&ctx, law, c) })
                 .collect(),
             efficiency: eval
                 .formulations
                 .iter()
-                .map(|f| {
-                    (
-                        *f,
-                        taus.iter()
-                            .map(|t| efficiency::efficiency_at(&ctx, law, *f, *t))
-                            .collect(),
-                    )
-                })
+                .map(|f| (*f, taus.iter().map(|t| efficiency::efficiency_at(&ctx, law, *f, *t)).collect()))
                 .collect(),
         }),
     }

@@ -10,8 +10,8 @@ use uom::typenum::{N1, N2, P1, P2, Z0};
 use crate::scene::ast::Span;
 
 pub use si::{
-    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length,
-    MassDensity, MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque,
+    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, MassDensity,
+    MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque,
 };
 
 /// 1/Pa, the unit of the pressure–viscosity coefficient α (uom has no named quantity for it).
@@ -102,14 +102,8 @@ pub enum LubricantType {
 }
 
 impl LubricantType {
-    pub const NAMES: &'static [&'static str] = &[
-        "mineral",
-        "pao",
-        "pag_insoluble",
-        "pag_soluble",
-        "traction",
-        "phosphate_ester",
-    ];
+    pub const NAMES: &'static [&'static str] =
+        &["mineral", "pao", "pag_insoluble", "pag_soluble", "traction", "phosphate_ester"];
 
     pub fn from_name(name: &str) -> Option<Self> {
         Some(match name {
@@ -146,8 +140,7 @@ impl Lubricant {
             return Some(nu.value.get::<square_meter_per_second>());
         }
         self.density.as_ref().map(|rho| {
-            self.dynamic_viscosity.value.get::<pascal_second>()
-                / rho.value.get::<kilogram_per_cubic_meter>()
+            self.dynamic_viscosity.value.get::<pascal_second>() / rho.value.get::<kilogram_per_cubic_meter>()
         })
     }
 }
@@ -193,10 +186,7 @@ pub struct FrictionLawSpec {
 
 impl FrictionLawSpec {
     pub fn argument(&self, name: &str) -> Option<f64> {
-        self.arguments
-            .iter()
-            .find(|(n, _, _)| n == name)
-            .map(|(_, v, _)| *v)
+        self.arguments.iter().find(|(n, _, _)| n == name).map(|(_, v, _)| *v)
     }
 }
 

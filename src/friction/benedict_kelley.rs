@@ -20,8 +20,7 @@ pub const IMPERIAL_CONSTANT: f64 = 3.17e8;
 
 /// 3.17e8 × (lbf/in per N/mm) / (in/s per m/s)³: the constant for N/mm, cP and m/s.
 /// 1 N/mm = 25.4/4.4482216152605 lbf/in and 1 m/s = 1/0.0254 in/s; the result is 29 662, printed as 29 700.
-pub const CONSTANT_FROM_IMPERIAL: f64 =
-    IMPERIAL_CONSTANT * (25.4 / 4.448_221_615_260_5) * (0.0254 * 0.0254 * 0.0254);
+pub const CONSTANT_FROM_IMPERIAL: f64 = IMPERIAL_CONSTANT * (25.4 / 4.448_221_615_260_5) * (0.0254 * 0.0254 * 0.0254);
 
 /// The constant as He–Cho–Singh print it.
 pub const CONSTANT: f64 = 29_700.0;
@@ -76,16 +75,8 @@ impl FrictionLaw for BenedictKelley {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "viscosity",
-                value: self.viscosity_cp / units::CP_PER_PA_S,
-                unit: "Pa*s",
-            },
-            Parameter {
-                name: "roughness_ra_mean",
-                value: self.roughness_um / units::UM_PER_M,
-                unit: "m",
-            },
+            Parameter { name: "viscosity", value: self.viscosity_cp / units::CP_PER_PA_S, unit: "Pa*s" },
+            Parameter { name: "roughness_ra_mean", value: self.roughness_um / units::UM_PER_M, unit: "m" },
         ]
     }
 }

@@ -26,10 +26,7 @@ impl BenedictKelleyBernard {
 
     fn argument(&self, c: &ContactPoint) -> f64 {
         3.98e9 * c.hertz_pressure.powi(2) * c.reduced_radius
-            / (self.viscosity_cp
-                * c.slide_to_roll
-                * c.entrainment_velocity.powi(3)
-                * self.reduced_modulus)
+            / (self.viscosity_cp * c.slide_to_roll * c.entrainment_velocity.powi(3) * self.reduced_modulus)
     }
 
     pub fn magnitude(&self, c: &ContactPoint) -> f64 {
@@ -62,16 +59,8 @@ impl FrictionLaw for BenedictKelleyBernard {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "viscosity",
-                value: self.viscosity_cp / units::CP_PER_PA_S,
-                unit: "Pa*s",
-            },
-            Parameter {
-                name: "roughness_rq_mean",
-                value: self.roughness_rms_um / units::UM_PER_M,
-                unit: "m",
-            },
+            Parameter { name: "viscosity", value: self.viscosity_cp / units::CP_PER_PA_S, unit: "Pa*s" },
+            Parameter { name: "roughness_rq_mean", value: self.roughness_rms_um / units::UM_PER_M, unit: "m" },
         ]
     }
 }

@@ -52,18 +52,8 @@ pub struct LawEntry {
     pub needs: &'static [Needs],
 }
 
-const fn arg(
-    name: &'static str,
-    dimension: Dimension,
-    default: Option<f64>,
-    what: &'static str,
-) -> LawArgument {
-    LawArgument {
-        name,
-        dimension,
-        default,
-        what,
-    }
+const fn arg(name: &'static str, dimension: Dimension, default: Option<f64>, what: &'static str) -> LawArgument {
+    LawArgument { name, dimension, default, what }
 }
 
 use Needs::*;
@@ -88,23 +78,13 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, RoughnessRq],
     },
-    LawEntry {
-        id: "xu",
-        title: "Xu et al. (Model III)",
-        arguments: &[],
-        needs: &[Lubricant, RoughnessRa],
-    },
+    LawEntry { id: "xu", title: "Xu et al. (Model III)", arguments: &[], needs: &[Lubricant, RoughnessRa] },
     LawEntry {
         id: "smoothed_coulomb",
         title: "smoothed Coulomb (Model IV)",
         arguments: &[
             arg("mu", Dimension::NONE, None, "coefficient of friction"),
-            arg(
-                "phi",
-                Dimension::RECIPROCAL_LENGTH,
-                Some(50e3),
-                "smoothing factor Φ",
-            ),
+            arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "smoothing factor Φ"),
         ],
         needs: &[],
     },
@@ -112,33 +92,13 @@ pub const LAWS: &[LawEntry] = &[
         id: "composite",
         title: "composite (Model V)",
         arguments: &[
-            arg(
-                "filter_cutoff",
-                Dimension::LENGTH,
-                Some(0.8e-3),
-                "roughness filter cut-off L_x",
-            ),
-            arg(
-                "mu",
-                Dimension::NONE,
-                Some(f64::NAN),
-                "Model IV magnitude (default: mean |μ_BK| over A–E)",
-            ),
-            arg(
-                "phi",
-                Dimension::RECIPROCAL_LENGTH,
-                Some(50e3),
-                "Model IV smoothing factor Φ",
-            ),
+            arg("filter_cutoff", Dimension::LENGTH, Some(0.8e-3), "roughness filter cut-off L_x"),
+            arg("mu", Dimension::NONE, Some(f64::NAN), "Model IV magnitude (default: mean |μ_BK| over A–E)"),
+            arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "Model IV smoothing factor Φ"),
         ],
         needs: &[Lubricant, RoughnessRa, RoughnessRq, PressureViscosity],
     },
-    LawEntry {
-        id: "misharin",
-        title: "Misharin",
-        arguments: &[],
-        needs: &[Lubricant, KinematicViscosity],
-    },
+    LawEntry { id: "misharin", title: "Misharin", arguments: &[], needs: &[Lubricant, KinematicViscosity] },
     LawEntry {
         id: "odonoghue_cameron",
         title: "O'Donoghue–Cameron",
@@ -161,18 +121,8 @@ pub const LAWS: &[LawEntry] = &[
         id: "matsumoto",
         title: "Matsumoto (mixed regime)",
         arguments: &[
-            arg(
-                "mu_boundary",
-                Dimension::NONE,
-                Some(0.1),
-                "boundary friction coefficient",
-            ),
-            arg(
-                "mu_ehl",
-                Dimension::NONE,
-                Some(0.02),
-                "full-film friction coefficient",
-            ),
+            arg("mu_boundary", Dimension::NONE, Some(0.1), "boundary friction coefficient"),
+            arg("mu_ehl", Dimension::NONE, Some(0.02), "full-film friction coefficient"),
         ],
         needs: &[Lubricant, RoughnessRz, PressureViscosity],
     },

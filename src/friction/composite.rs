@@ -38,11 +38,7 @@ impl Composite {
         let (mu, derived) = if mu.is_finite() {
             (mu, false)
         } else {
-            let mean = integrate(
-                |u| mixed.magnitude(&ctx.contact_at(u)).max(0.0),
-                &[p.a, p.b, p.p, p.d, p.e],
-                1e-10,
-            );
+            let mean = integrate(|u| mixed.magnitude(&ctx.contact_at(u)).max(0.0), &[p.a, p.b, p.p, p.d, p.e], 1e-10);
             (mean.value / (p.e - p.a), true)
         };
         let mut law = Composite {
@@ -140,26 +136,10 @@ impl FrictionLaw for Composite {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "filter_cutoff",
-                value: self.filter_cutoff,
-                unit: "m",
-            },
-            Parameter {
-                name: "mu_boundary",
-                value: self.boundary.mu,
-                unit: "1",
-            },
-            Parameter {
-                name: "phi",
-                value: self.boundary.phi,
-                unit: "1/m",
-            },
-            Parameter {
-                name: "rq_composite",
-                value: self.rq_composite,
-                unit: "m",
-            },
+            Parameter { name: "filter_cutoff", value: self.filter_cutoff, unit: "m" },
+            Parameter { name: "mu_boundary", value: self.boundary.mu, unit: "1" },
+            Parameter { name: "phi", value: self.boundary.phi, unit: "1/m" },
+            Parameter { name: "rq_composite", value: self.rq_composite, unit: "m" },
         ]
     }
     fn notes(&self) -> Vec<String> {
@@ -168,10 +148,7 @@ impl FrictionLaw for Composite {
             self.filter_cutoff * 1e3
         )];
         if self.mu_from_benedict_kelley {
-            v.push(format!(
-                "composite: Model IV magnitude μ = {:.5}, the mean |μ_BK| over A–E",
-                self.boundary.mu
-            ));
+            v.push(format!("composite: Model IV magnitude μ = {:.5}, the mean |μ_BK| over A–E", self.boundary.mu));
         }
         v
     }

@@ -17,10 +17,6 @@ impl FrictionLaw for Coulomb {
         signed(self.mu, c.s)
     }
     fn parameters(&self) -> Vec<Parameter> {
-        vec![Parameter {
-            name: "mu",
-            value: self.mu,
-            unit: "1",
-        }]
+        vec![Parameter { name: "mu", value: self.mu, unit: "1" }]
     }
 }

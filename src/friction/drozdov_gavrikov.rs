@@ -22,10 +22,7 @@ pub struct DrozdovGavrikov {
 
 impl DrozdovGavrikov {
     pub fn new(t: &Tribology) -> Self {
-        DrozdovGavrikov {
-            kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN)
-                * units::CST_PER_M2_S,
-        }
+        DrozdovGavrikov { kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN) * units::CST_PER_M2_S }
     }
 
     pub fn magnitude(&self, c: &ContactPoint) -> f64 {

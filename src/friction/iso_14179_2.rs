@@ -42,9 +42,7 @@ impl Iso14179_2 {
             fbt_per_b
         };
         let v = if v_sum > 50.0 {
-            notes.push(format!(
-                "iso_14179_2: v_ΣC = {v_sum:.2} m/s is above 50 m/s; evaluated at 50 m/s"
-            ));
+            notes.push(format!("iso_14179_2: v_ΣC = {v_sum:.2} m/s is above 50 m/s; evaluated at 50 m/s"));
             50.0
         } else {
             if v_sum < 1.0 {
@@ -55,11 +53,7 @@ impl Iso14179_2 {
         if t.lubricant_family == "mineral (default)" {
             notes.push("iso_14179_2: no lubricant `type` given; X_L = 1.0 (mineral oil)".into());
         }
-        let mu_mz = 0.048
-            * (load / (v * rho)).powf(0.2)
-            * eta.powf(-0.05)
-            * ra.powf(0.25)
-            * t.lubricant_factor;
+        let mu_mz = 0.048 * (load / (v * rho)).powf(0.2) * eta.powf(-0.05) * ra.powf(0.25) * t.lubricant_factor;
         Iso14179_2 {
             mu_mz,
             load_per_width_n_per_mm: load,
@@ -80,31 +74,15 @@ impl FrictionLaw for Iso14179_2 {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "mu_mz",
-                value: self.mu_mz,
-                unit: "1",
-            },
-            Parameter {
-                name: "load_per_width",
-                value: self.load_per_width_n_per_mm * 1e3,
-                unit: "N/m",
-            },
-            Parameter {
-                name: "sum_velocity_at_pitch_point",
-                value: self.sum_velocity,
-                unit: "m/s",
-            },
+            Parameter { name: "mu_mz", value: self.mu_mz, unit: "1" },
+            Parameter { name: "load_per_width", value: self.load_per_width_n_per_mm * 1e3, unit: "N/m" },
+            Parameter { name: "sum_velocity_at_pitch_point", value: self.sum_velocity, unit: "m/s" },
             Parameter {
                 name: "reduced_radius_at_pitch_point",
                 value: self.reduced_radius_mm / units::MM_PER_M,
                 unit: "m",
             },
-            Parameter {
-                name: "lubricant_factor",
-                value: self.lubricant_factor,
-                unit: "1",
-            },
+            Parameter { name: "lubricant_factor", value: self.lubricant_factor, unit: "1" },
         ]
     }
     fn notes(&self) -> Vec<String> {

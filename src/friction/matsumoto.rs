@@ -56,21 +56,9 @@ impl FrictionLaw for Matsumoto {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "mu_boundary",
-                value: self.mu_boundary,
-                unit: "1",
-            },
-            Parameter {
-                name: "mu_ehl",
-                value: self.mu_ehl,
-                unit: "1",
-            },
-            Parameter {
-                name: "roughness_rz_mean",
-                value: self.rz_mean,
-                unit: "m",
-            },
+            Parameter { name: "mu_boundary", value: self.mu_boundary, unit: "1" },
+            Parameter { name: "mu_ehl", value: self.mu_ehl, unit: "1" },
+            Parameter { name: "roughness_rz_mean", value: self.rz_mean, unit: "m" },
         ]
     }
 }

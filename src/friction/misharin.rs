@@ -12,15 +12,10 @@ pub struct Misharin {
 
 impl Misharin {
     pub fn new(t: &Tribology) -> Self {
-        Misharin {
-            kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN)
-                * units::CST_PER_M2_S,
-        }
+        Misharin { kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN) * units::CST_PER_M2_S }
     }
     pub fn magnitude(&self, c: &ContactPoint) -> f64 {
-        0.3865
-            * (self.kinematic_viscosity_cst * c.entrainment_velocity.powi(2) * c.slide_to_roll)
-                .powf(-0.25)
+        0.3865 * (self.kinematic_viscosity_cst * c.entrainment_velocity.powi(2) * c.slide_to_roll).powf(-0.25)
     }
 }
 

@@ -49,8 +49,7 @@ pub struct LawContext<'a> {
 impl LawContext<'_> {
     /// The contact state at `u` (from T1).
     pub fn contact_at(&self, u: f64) -> ContactPoint {
-        self.geometry
-            .contact_at(u, &self.state, self.tribology.reduced_modulus, self.sharing)
+        self.geometry.contact_at(u, &self.state, self.tribology.reduced_modulus, self.sharing)
     }
 }
 
@@ -124,29 +123,15 @@ pub fn build(spec: &FrictionLawSpec, ctx: &LawContext) -> Box<dyn FrictionLaw> {
     match spec.id.as_str() {
         "coulomb" => Box::new(coulomb::Coulomb { mu: arg("mu") }),
         "benedict_kelley" => Box::new(benedict_kelley::BenedictKelley::new(&ctx.tribology)),
-        "benedict_kelley_bernard" => Box::new(benedict_kelley_bernard::BenedictKelleyBernard::new(
-            &ctx.tribology,
-        )),
+        "benedict_kelley_bernard" => Box::new(benedict_kelley_bernard::BenedictKelleyBernard::new(&ctx.tribology)),
         "xu" => Box::new(xu::Xu::new(&ctx.tribology)),
-        "smoothed_coulomb" => Box::new(smoothed_coulomb::SmoothedCoulomb {
-            mu: arg("mu"),
-            phi: arg("phi"),
-        }),
-        "composite" => Box::new(composite::Composite::new(
-            ctx,
-            arg("filter_cutoff"),
-            arg("mu"),
-            arg("phi"),
-        )),
+        "smoothed_coulomb" => Box::new(smoothed_coulomb::SmoothedCoulomb { mu: arg("mu"), phi: arg("phi") }),
+        "composite" => Box::new(composite::Composite::new(ctx, arg("filter_cutoff"), arg("mu"), arg("phi"))),
         "misharin" => Box::new(misharin::Misharin::new(&ctx.tribology)),
         "odonoghue_cameron" => Box::new(odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology)),
         "drozdov_gavrikov" => Box::new(drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology)),
         "iso_14179_2" => Box::new(iso_14179_2::Iso14179_2::new(ctx)),
-        "matsumoto" => Box::new(matsumoto::Matsumoto::new(
-            &ctx.tribology,
-            arg("mu_boundary"),
-            arg("mu_ehl"),
-        )),
+        "matsumoto" => Box::new(matsumoto::Matsumoto::new(&ctx.tribology, arg("mu_boundary"), arg("mu_ehl"))),
         other => unreachable!("lowering accepts only catalogued laws, got {other}"),
     }
 }

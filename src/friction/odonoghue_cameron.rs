@@ -18,8 +18,7 @@ impl ODonoghueCameron {
     pub fn new(t: &Tribology) -> Self {
         ODonoghueCameron {
             roughness_um: t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
-            kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN)
-                * units::CST_PER_M2_S,
+            kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN) * units::CST_PER_M2_S,
         }
     }
 
@@ -48,11 +47,7 @@ impl FrictionLaw for ODonoghueCameron {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "roughness_ra_mean",
-                value: self.roughness_um / units::UM_PER_M,
-                unit: "m",
-            },
+            Parameter { name: "roughness_ra_mean", value: self.roughness_um / units::UM_PER_M, unit: "m" },
             Parameter {
                 name: "kinematic_viscosity",
                 value: self.kinematic_viscosity_cst / units::CST_PER_M2_S,

@@ -41,16 +41,8 @@ impl FrictionLaw for SmoothedCoulomb {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "mu",
-                value: self.mu,
-                unit: "1",
-            },
-            Parameter {
-                name: "phi",
-                value: self.phi,
-                unit: "1/m",
-            },
+            Parameter { name: "mu", value: self.mu, unit: "1" },
+            Parameter { name: "phi", value: self.phi, unit: "1/m" },
         ]
     }
 }

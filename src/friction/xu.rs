@@ -17,9 +17,7 @@ use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
 /// b1 … b9 of Xu (2005), as printed by both papers.
-pub const B: [f64; 9] = [
-    -8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.100601, 0.752755, -0.390958, 0.620305,
-];
+pub const B: [f64; 9] = [-8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.100601, 0.752755, -0.390958, 0.620305];
 
 #[derive(Debug, Clone, Copy)]
 pub struct Xu {
@@ -73,16 +71,8 @@ impl FrictionLaw for Xu {
     }
     fn parameters(&self) -> Vec<Parameter> {
         vec![
-            Parameter {
-                name: "viscosity",
-                value: self.viscosity_cp / units::CP_PER_PA_S,
-                unit: "Pa*s",
-            },
-            Parameter {
-                name: "roughness_ra_mean",
-                value: self.roughness_um / units::UM_PER_M,
-                unit: "m",
-            },
+            Parameter { name: "viscosity", value: self.viscosity_cp / units::CP_PER_PA_S, unit: "Pa*s" },
+            Parameter { name: "roughness_ra_mean", value: self.roughness_um / units::UM_PER_M, unit: "m" },
         ]
     }
 }

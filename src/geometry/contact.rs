@@ -79,13 +79,7 @@ impl SpurGeometry {
 
     /// The contact state at `u` (from T1) for an operating point, with reduced modulus E'; the
     /// number of pairs in contact is [`SpurGeometry::pairs_in_contact`].
-    pub fn contact_at(
-        &self,
-        u: f64,
-        op: &OperatingState,
-        reduced_modulus: f64,
-        sharing: Sharing,
-    ) -> ContactPoint {
+    pub fn contact_at(&self, u: f64, op: &OperatingState, reduced_modulus: f64, sharing: Sharing) -> ContactPoint {
         self.contact_with_pairs(u, op, reduced_modulus, sharing, self.pairs_in_contact(u))
     }
 

@@ -127,13 +127,7 @@ pub struct LoaPoints {
 impl LoaPoints {
     /// The named points in order, with their letters.
     pub fn named(&self) -> [(&'static str, f64); 5] {
-        [
-            ("A", self.a),
-            ("B", self.b),
-            ("P", self.p),
-            ("D", self.d),
-            ("E", self.e),
-        ]
+        [("A", self.a), ("B", self.b), ("P", self.p), ("D", self.d), ("E", self.e)]
     }
 }
 
@@ -192,14 +186,9 @@ impl SpurGeometry {
             }
             None => (a0, alpha_w0),
         };
-        let undercut_limit = [
-            1.0 - z[0] * alpha.sin().powi(2) / 2.0,
-            1.0 - z[1] * alpha.sin().powi(2) / 2.0,
-        ];
-        let involute_start = [
-            r[0] * alpha.sin() - (1.0 - x[0]) * m / alpha.sin(),
-            r[1] * alpha.sin() - (1.0 - x[1]) * m / alpha.sin(),
-        ];
+        let undercut_limit = [1.0 - z[0] * alpha.sin().powi(2) / 2.0, 1.0 - z[1] * alpha.sin().powi(2) / 2.0];
+        let involute_start =
+            [r[0] * alpha.sin() - (1.0 - x[0]) * m / alpha.sin(), r[1] * alpha.sin() - (1.0 - x[1]) * m / alpha.sin()];
         let mut tip_thickness = [0.0; 2];
         for i in 0..2 {
             if x[i] < undercut_limit[i] - 1e-9 {
@@ -212,10 +201,7 @@ impl SpurGeometry {
                         input.teeth[i],
                         undercut_limit[i]
                     ),
-                    hint: format!(
-                        "raise the profile shift to at least {:.4}",
-                        undercut_limit[i]
-                    ),
+                    hint: format!("raise the profile shift to at least {:.4}", undercut_limit[i]),
                 });
             }
             if ra[i] <= rb[i] {
@@ -232,10 +218,8 @@ impl SpurGeometry {
                 continue;
             }
             let alpha_a = (rb[i] / ra[i]).acos();
-            tip_thickness[i] = 2.0
-                * ra[i]
-                * ((PI / 2.0 + 2.0 * x[i] * alpha.tan()) / z[i] + involute(alpha)
-                    - involute(alpha_a));
+            tip_thickness[i] =
+                2.0 * ra[i] * ((PI / 2.0 + 2.0 * x[i] * alpha.tan()) / z[i] + involute(alpha) - involute(alpha_a));
             if tip_thickness[i] <= 0.0 {
                 problems.push(GeometryProblem {
                     part: if input.tip_diameter[i].is_some() {
@@ -322,13 +306,7 @@ impl SpurGeometry {
             working_pitch_radius: [rb[0] / alpha_w.cos(), rb[1] / alpha_w.cos()],
             base_pitch: pb,
             line_of_action_length: t1t2,
-            points: LoaPoints {
-                a: t1a,
-                b: t1e - pb,
-                p: t1p,
-                d: t1a + pb,
-                e: t1e,
-            },
+            points: LoaPoints { a: t1a, b: t1e - pb, p: t1p, d: t1a + pb, e: t1e },
             contact_ratio: eps,
             addendum_contact_ratio: [(t1e - t1p) / pb, (t1p - t1a) / pb],
             tip_thickness,

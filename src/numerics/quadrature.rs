@@ -41,12 +41,8 @@ const WGK: [f64; 8] = [
     0.204_432_940_075_298_9,
     0.209_482_141_084_727_8,
 ];
-const WG: [f64; 4] = [
-    0.129_484_966_168_869_7,
-    0.279_705_391_489_276_7,
-    0.381_830_050_505_118_9,
-    0.417_959_183_673_469_4,
-];
+const WG: [f64; 4] =
+    [0.129_484_966_168_869_7, 0.279_705_391_489_276_7, 0.381_830_050_505_118_9, 0.417_959_183_673_469_4];
 
 /// One 15-point Kronrod estimate on [a, b] and its difference from the embedded 7-point Gauss rule.
 fn gk15(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
@@ -85,11 +81,7 @@ pub fn integrate(f: impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integr
         if err <= (rel_tol * total.abs()).max(1e-300) || !err.is_finite() {
             break;
         }
-        let (i, _) = pieces
-            .iter()
-            .enumerate()
-            .max_by(|x, y| x.1 .3.total_cmp(&y.1 .3))
-            .expect("at least one piece");
+        let (i, _) = pieces.iter().enumerate().max_by(|x, y| x.1 .3.total_cmp(&y.1 .3)).expect("at least one piece");
         let (a, b, _, _) = pieces[i];
         let m = 0.5 * (a + b);
         if m <= a || m >= b {
@@ -101,9 +93,5 @@ pub fn integrate(f: impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integr
         pieces[i] = (a, m, v1, e1);
         pieces.push((m, b, v2, e2));
     }
-    Integral {
-        value: pieces.iter().map(|p| p.2).sum(),
-        error: pieces.iter().map(|p| p.3).sum(),
-        evaluations,
-    }
+    Integral { value: pieces.iter().map(|p| p.2).sum(), error: pieces.iter().map(|p| p.3).sum(), evaluations }
 }

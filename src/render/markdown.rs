@@ -23,27 +23,19 @@ fn scaled(q: &Q, factor: f64, d: usize) -> String {
     fixed(q.si() * factor, d)
 }
 
-fn row(out: &mut String, cells: &[String]) {
+pub(crate) fn row(out: &mut String, cells: &[String]) {
     let _ = writeln!(out, "| {} |", cells.join(" | "));
 }
 
-fn header(out: &mut String, cells: &[&str]) {
+pub(crate) fn header(out: &mut String, cells: &[&str]) {
     let _ = writeln!(out, "| {} |", cells.join(" | "));
-    let _ = writeln!(
-        out,
-        "|{}|",
-        cells.iter().map(|_| "---").collect::<Vec<_>>().join("|")
-    );
+    let _ = writeln!(out, "|{}|", cells.iter().map(|_| "---").collect::<Vec<_>>().join("|"));
 }
 
 pub fn render_markdown(r: &Report) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "# {}\n", r.title);
-    let _ = writeln!(
-        out,
-        "Report written by gearloss from the scene `{}`.\n",
-        r.title
-    );
+    let _ = writeln!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
 
     let _ = writeln!(out, "## Scene\n");
     header(&mut out, &["input", "as written", "SI"]);
@@ -53,9 +45,7 @@ pub fn render_markdown(r: &Report) -> String {
             &[
                 format!("`{}`", i.key),
                 i.written.clone(),
-                format!("{} {}", sig(i.si.si()), i.si.unit())
-                    .trim_end()
-                    .to_string(),
+                format!("{} {}", sig(i.si.si()), i.si.unit()).trim_end().to_string(),
             ],
         );
     }
@@ -66,103 +56,34 @@ pub fn render_markdown(r: &Report) -> String {
     let deg = 180.0 / std::f64::consts::PI;
     let rows: Vec<(&str, &str, String)> = vec![
         ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
-        (
-            "pressure angle",
-            "α",
-            format!("{}°", scaled(&g.pressure_angle, deg, 4)),
-        ),
+        ("pressure angle", "α", format!("{}°", scaled(&g.pressure_angle, deg, 4))),
         ("gear ratio", "u = z2/z1", fixed(g.gear_ratio.0, 4)),
         (
             "centre distance",
             "a",
-            format!(
-                "{} mm ({})",
-                scaled(&g.center_distance, 1e3, 4),
-                g.center_distance_source.replace('_', " ")
-            ),
+            format!("{} mm ({})", scaled(&g.center_distance, 1e3, 4), g.center_distance_source.replace('_', " ")),
         ),
-        (
-            "zero-backlash centre distance",
-            "a_0",
-            format!("{} mm", scaled(&g.zero_backlash_center_distance, 1e3, 4)),
-        ),
-        (
-            "operating pressure angle",
-            "α_w",
-            format!("{}°", scaled(&g.operating_pressure_angle, deg, 4)),
-        ),
-        (
-            "zero-backlash pressure angle",
-            "α_w0",
-            format!("{}°", scaled(&g.zero_backlash_pressure_angle, deg, 4)),
-        ),
-        (
-            "face width",
-            "b",
-            format!("{} mm", scaled(&g.face_width, 1e3, 3)),
-        ),
-        (
-            "base pitch",
-            "p_b",
-            format!("{} mm", scaled(&g.base_pitch, 1e3, 4)),
-        ),
-        (
-            "line of action",
-            "T1T2",
-            format!("{} mm", scaled(&g.line_of_action_length, 1e3, 4)),
-        ),
-        (
-            "start of contact",
-            "T1A",
-            format!("{} mm", scaled(&g.points_from_t1.A, 1e3, 4)),
-        ),
-        (
-            "lowest point of single contact",
-            "T1B",
-            format!("{} mm", scaled(&g.points_from_t1.B, 1e3, 4)),
-        ),
-        (
-            "pitch point",
-            "T1P",
-            format!("{} mm", scaled(&g.points_from_t1.P, 1e3, 4)),
-        ),
-        (
-            "highest point of single contact",
-            "T1D",
-            format!("{} mm", scaled(&g.points_from_t1.D, 1e3, 4)),
-        ),
-        (
-            "end of contact",
-            "T1E",
-            format!("{} mm", scaled(&g.points_from_t1.E, 1e3, 4)),
-        ),
-        (
-            "transverse contact ratio",
-            "ε_α",
-            fixed(g.contact_ratio.0, 4),
-        ),
-        (
-            "reduced modulus",
-            "E'",
-            format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3)),
-        ),
-        (
-            "load sharing",
-            "",
-            format!("{:?}", g.load_sharing).to_lowercase(),
-        ),
+        ("zero-backlash centre distance", "a_0", format!("{} mm", scaled(&g.zero_backlash_center_distance, 1e3, 4))),
+        ("operating pressure angle", "α_w", format!("{}°", scaled(&g.operating_pressure_angle, deg, 4))),
+        ("zero-backlash pressure angle", "α_w0", format!("{}°", scaled(&g.zero_backlash_pressure_angle, deg, 4))),
+        ("face width", "b", format!("{} mm", scaled(&g.face_width, 1e3, 3))),
+        ("base pitch", "p_b", format!("{} mm", scaled(&g.base_pitch, 1e3, 4))),
+        ("line of action", "T1T2", format!("{} mm", scaled(&g.line_of_action_length, 1e3, 4))),
+        ("start of contact", "T1A", format!("{} mm", scaled(&g.points_from_t1.A, 1e3, 4))),
+        ("lowest point of single contact", "T1B", format!("{} mm", scaled(&g.points_from_t1.B, 1e3, 4))),
+        ("pitch point", "T1P", format!("{} mm", scaled(&g.points_from_t1.P, 1e3, 4))),
+        ("highest point of single contact", "T1D", format!("{} mm", scaled(&g.points_from_t1.D, 1e3, 4))),
+        ("end of contact", "T1E", format!("{} mm", scaled(&g.points_from_t1.E, 1e3, 4))),
+        ("transverse contact ratio", "ε_α", fixed(g.contact_ratio.0, 4)),
+        ("Ohlendorf gear loss factor", "H_V", fixed(g.ohlendorf_loss_factor.0, 5)),
+        ("reduced modulus", "E'", format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3))),
+        ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
     ];
     for (q, s, v) in rows {
         row(&mut out, &[q.into(), s.into(), v]);
     }
     let _ = writeln!(out);
-    header(
-        &mut out,
-        &[
-            "gear", "z", "x", "d mm", "d_b mm", "d_a mm", "d_a from", "d_w mm", "ε_i", "s_a mm",
-            "x_min",
-        ],
-    );
+    header(&mut out, &["gear", "z", "x", "d mm", "d_b mm", "d_a mm", "d_a from", "d_w mm", "ε_i", "s_a mm", "x_min"]);
     for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
         row(
             &mut out,
@@ -185,7 +106,7 @@ pub fn render_markdown(r: &Report) -> String {
     }
 
     let _ = writeln!(out, "\n## Contact along the line of action\n");
-    for p in &r.plots {
+    for p in r.plots.iter().filter(|p| p.file == "contact_state.svg") {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
     }
     let _ = writeln!(
@@ -207,8 +128,8 @@ pub fn render_markdown(r: &Report) -> String {
         header(
             &mut out,
             &[
-                "point", "T1C mm", "s mm", "ρ1 mm", "ρ2 mm", "R mm", "v1 m/s", "v2 m/s", "v_s m/s",
-                "v_Σ m/s", "SR", "pairs", "share", "w N/mm", "p_H MPa", "b_H µm",
+                "point", "T1C mm", "s mm", "ρ1 mm", "ρ2 mm", "R mm", "v1 m/s", "v2 m/s", "v_s m/s", "v_Σ m/s", "SR",
+                "pairs", "share", "w N/mm", "p_H MPa", "b_H µm",
             ],
         );
         for c in &op.contact {
@@ -235,7 +156,9 @@ pub fn render_markdown(r: &Report) -> String {
             );
         }
         let _ = writeln!(out);
+        super::markdown_friction::point(&mut out, op);
     }
+    super::markdown_friction::sweep(&mut out, r);
 
     let _ = writeln!(out, "## Findings\n");
     for f in &r.findings {
@@ -266,10 +189,7 @@ fn sig(x: f64) -> String {
     } else {
         match s.split_once('e') {
             Some((mantissa, exp)) if mantissa.contains('.') => {
-                format!(
-                    "{}e{exp}",
-                    mantissa.trim_end_matches('0').trim_end_matches('.')
-                )
+                format!("{}e{exp}", mantissa.trim_end_matches('0').trim_end_matches('.'))
             }
             _ => s,
         }

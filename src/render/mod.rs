@@ -1,6 +1,7 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
 pub mod markdown;
+pub mod markdown_friction;
 pub mod svg;
 
 use crate::report::Report;
@@ -14,8 +15,7 @@ pub struct RenderedReport {
 
 /// report.json: the report's serde data, pretty-printed.
 pub fn render_json(report: &Report) -> String {
-    let mut s =
-        serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
+    let mut s = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
     s.push('\n');
     s
 }
@@ -29,12 +29,15 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
     for plot in &report.plots {
         let svg = match plot.file.as_str() {
             "contact_state.svg" => svg::contact_state(report)?,
+            "sweep_speed.svg" => svg::sweep(report, true)?,
+            "sweep_torque.svg" => svg::sweep(report, false)?,
+            "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
             other => return Err(format!("no renderer for plot {other}")),
         };
         files.push((plot.file.clone(), svg));
     }
-    Ok(RenderedReport {
-        slug: report.slug.clone(),
-        files,
-    })
+    for (k, pc) in report.curves.points.iter().enumerate() {
+        files.push((pc.file.clone(), svg::point_friction(report, k)?));
+    }
+    Ok(RenderedReport { slug: report.slug.clone(), files })
 }

@@ -1,23 +1,36 @@
 //! SVG plots drawn with plotters' SVG backend (no system fonts: text is laid out by plotters' own estimate).
+//! Every plot reads the report only.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::report::Report;
 
-const PALETTE: [RGBColor; 6] = [
+const PALETTE: [RGBColor; 8] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
     RGBColor(148, 103, 189),
     RGBColor(255, 127, 14),
     RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(127, 127, 127),
 ];
 
-/// One panel: curves over x (mm from T1) with the named points marked.
-pub struct Panel<'a> {
-    pub y_label: &'a str,
+/// One panel of a figure.
+#[derive(Default)]
+pub struct Panel {
+    pub y_label: String,
+    pub x_label: String,
+    pub x: Vec<f64>,
+    /// (legend label, y); non-finite y values are left out.
     pub series: Vec<(String, Vec<f64>)>,
+    /// Vertical marks with a letter (A B P D E).
+    pub marks: Vec<(&'static str, f64)>,
+    /// Shaded x-ranges with a label (regime bands).
+    pub bands: Vec<(f64, f64, String)>,
+    /// Values with |y| above this are drawn at the limit and marked with ▲/▼.
+    pub clip: Option<f64>,
 }
 
 fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
@@ -29,46 +42,47 @@ fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
     if !lo.is_finite() {
         return (0.0, 1.0);
     }
-    let pad = if hi > lo {
-        0.06 * (hi - lo)
-    } else {
-        0.5 * hi.abs().max(1.0)
-    };
+    let pad = if hi > lo { 0.06 * (hi - lo) } else { 0.5 * hi.abs().max(1e-3) };
     (lo - pad, hi + pad)
 }
 
-fn draw_panel(
-    area: &DrawingArea<SVGBackend, Shift>,
-    x: &[f64],
-    marks: &[(&'static str, f64)],
-    panel: &Panel,
-    x_label: &str,
-) -> Result<(), String> {
+fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    let x = &panel.x;
+    if x.len() < 2 {
+        return Ok(());
+    }
     let (x0, x1) = (x[0], x[x.len() - 1]);
-    let (y0, y1) = bounds(panel.series.iter().flat_map(|(_, s)| s.iter().copied()));
+    let clip = |y: f64| panel.clip.map_or(y, |c| y.clamp(-c, c));
+    let (y0, y1) = bounds(panel.series.iter().flat_map(|(_, s)| s.iter().map(|y| clip(*y))));
     let mut chart = ChartBuilder::on(area)
         .margin(12)
         .x_label_area_size(36)
-        .y_label_area_size(64)
+        .y_label_area_size(72)
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(e)?;
     chart
         .configure_mesh()
-        .x_desc(x_label)
-        .y_desc(panel.y_label)
+        .x_desc(panel.x_label.as_str())
+        .y_desc(panel.y_label.as_str())
         .x_labels(8)
         .y_labels(6)
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(e)?;
-    for (name, u) in marks {
+    for (i, (a, b, label)) in panel.bands.iter().enumerate() {
+        let shade = PALETTE[(i + 5) % PALETTE.len()].mix(0.10);
+        chart.draw_series(std::iter::once(Rectangle::new([(*a, y0), (*b, y1)], shade.filled()))).map_err(e)?;
         chart
-            .draw_series(LineSeries::new(
-                vec![(*u, y0), (*u, y1)],
-                BLACK.mix(0.35).stroke_width(1),
-            ))
+            .draw_series(std::iter::once(Text::new(
+                label.clone(),
+                (*a, y0 + 0.08 * (y1 - y0)),
+                ("sans-serif", 12).into_font().color(&BLACK.mix(0.7)),
+            )))
             .map_err(e)?;
+    }
+    for (name, u) in &panel.marks {
+        chart.draw_series(LineSeries::new(vec![(*u, y0), (*u, y1)], BLACK.mix(0.35).stroke_width(1))).map_err(e)?;
         chart
             .draw_series(std::iter::once(Text::new(
                 name.to_string(),
@@ -79,19 +93,32 @@ fn draw_panel(
     }
     for (i, (label, ys)) in panel.series.iter().enumerate() {
         let color = PALETTE[i % PALETTE.len()];
-        let points: Vec<(f64, f64)> = x
-            .iter()
-            .zip(ys)
-            .filter(|(_, y)| y.is_finite())
-            .map(|(x, y)| (*x, *y))
-            .collect();
-        let s = chart
-            .draw_series(LineSeries::new(points, color.stroke_width(2)))
-            .map_err(e)?;
-        if !label.is_empty() {
-            s.label(label.clone()).legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2))
-            });
+        // Split at non-finite values so that gaps stay gaps.
+        let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+        let mut clipped = Vec::new();
+        for (x, y) in x.iter().zip(ys) {
+            if y.is_finite() {
+                let c = clip(*y);
+                if c != *y {
+                    clipped.push((*x, c));
+                }
+                runs.last_mut().expect("one run").push((*x, c));
+            } else if !runs.last().expect("one run").is_empty() {
+                runs.push(Vec::new());
+            }
+        }
+        for (k, run) in runs.into_iter().filter(|r| !r.is_empty()).enumerate() {
+            let s = chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
+            if k == 0 && !label.is_empty() {
+                s.label(label.clone())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2)));
+            }
+        }
+        if let Some(&(cx, cy)) = clipped.iter().min_by(|a, b| a.0.total_cmp(&b.0)) {
+            let mark = if cy > 0.0 { "▲ clipped" } else { "▼ clipped" };
+            chart
+                .draw_series(std::iter::once(Text::new(mark, (cx, cy), ("sans-serif", 11).into_font().color(&color))))
+                .map_err(e)?;
         }
     }
     if panel.series.iter().any(|(l, _)| !l.is_empty()) {
@@ -106,59 +133,195 @@ fn draw_panel(
     Ok(())
 }
 
-/// Stacked panels sharing an x axis (mm from T1); returns the SVG text.
-pub fn stacked_panels(
-    title: &str,
-    x_mm: &[f64],
-    marks_mm: &[(&'static str, f64)],
-    panels: &[Panel],
-    x_label: &str,
-) -> Result<String, String> {
+/// Stacked panels; returns the SVG text.
+pub fn figure(title: &str, panels: &[Panel]) -> Result<String, String> {
     let mut svg = String::new();
     {
         let height = 40 + 260 * panels.len() as u32;
         let root = SVGBackend::with_string(&mut svg, (900, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root
-            .titled(title, ("sans-serif", 18))
-            .map_err(|e| e.to_string())?;
+        let root = root.titled(title, ("sans-serif", 18)).map_err(|e| e.to_string())?;
         let areas = root.split_evenly((panels.len(), 1));
         for (area, panel) in areas.iter().zip(panels) {
-            draw_panel(area, x_mm, marks_mm, panel, x_label)?;
+            draw_panel(area, panel)?;
         }
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
 }
 
+fn mm(v: &[f64]) -> Vec<f64> {
+    v.iter().map(|u| u * 1e3).collect()
+}
+
+fn marks_mm(r: &Report) -> Vec<(&'static str, f64)> {
+    r.curves.marks.iter().map(|(n, u)| (*n, u * 1e3)).collect()
+}
+
 /// contact_state.svg: v_s (per speed), SR and p_H (per torque) along the line of action.
 pub fn contact_state(r: &Report) -> Result<String, String> {
     let c = &r.curves;
-    let x: Vec<f64> = c.u.iter().map(|u| u * 1e3).collect();
-    let marks: Vec<(&'static str, f64)> = c.marks.iter().map(|(n, u)| (*n, u * 1e3)).collect();
+    let along = |y: &str, series: Vec<(String, Vec<f64>)>| Panel {
+        y_label: y.into(),
+        x_label: "distance from T1 (mm)".into(),
+        x: mm(&c.u),
+        series,
+        marks: marks_mm(r),
+        ..Default::default()
+    };
+    let panels = [
+        along("sliding velocity v_s (m/s)", c.sliding_velocity.clone()),
+        along("slide-to-roll ratio SR", vec![(String::new(), c.slide_to_roll.clone())]),
+        along(
+            "Hertzian pressure p_H (MPa)",
+            c.hertz_pressure.iter().map(|(l, v)| (l.clone(), v.iter().map(|p| p * 1e-6).collect())).collect(),
+        ),
+    ];
+    figure(&format!("{}: contact along the line of action", r.title), &panels)
+}
+
+/// A symmetric clip level for signed μ curves: 1.3 × the largest |μ| away from the pitch point.
+fn mu_clip(x_mm: &[f64], series: &[(String, Vec<f64>)], p_mm: f64, half_width_mm: f64) -> f64 {
+    let mut max: f64 = 0.0;
+    for (_, ys) in series {
+        for (x, y) in x_mm.iter().zip(ys) {
+            if (x - p_mm).abs() > half_width_mm && y.is_finite() {
+                max = max.max(y.abs());
+            }
+        }
+    }
+    if max > 0.0 {
+        1.3 * max
+    } else {
+        1.0
+    }
+}
+
+/// point_K_friction.svg: μ and local power loss along the line of action, η over one mesh cycle.
+pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
+    let c = &r.curves;
+    let pc = &c.points[k];
+    let x = mm(&c.u);
+    let p_mm = r.geometry.points_from_t1.P.si() * 1e3;
+    let span = (x[x.len() - 1] - x[0]) * 0.06;
     let panels = [
         Panel {
-            y_label: "sliding velocity v_s (m/s)",
-            series: c.sliding_velocity.clone(),
+            y_label: "coefficient of friction μ (signed)".into(),
+            x_label: "distance from T1 (mm)".into(),
+            clip: Some(mu_clip(&x, &pc.mu, p_mm, span)),
+            x: x.clone(),
+            series: pc.mu.clone(),
+            marks: marks_mm(r),
+            bands: pc.regime_bands.iter().map(|(a, b, l)| (a * 1e3, b * 1e3, l.clone())).collect(),
         },
         Panel {
-            y_label: "slide-to-roll ratio SR",
-            series: vec![(String::new(), c.slide_to_roll.clone())],
+            y_label: "local friction power loss (W)".into(),
+            x_label: "distance from T1 (mm)".into(),
+            clip: Some(mu_clip(&x, &pc.power_loss, p_mm, span)),
+            x,
+            series: pc.power_loss.clone(),
+            marks: marks_mm(r),
+            ..Default::default()
         },
         Panel {
-            y_label: "Hertzian pressure p_H (MPa)",
-            series: c
-                .hertz_pressure
-                .iter()
-                .map(|(l, v)| (l.clone(), v.iter().map(|p| p * 1e-6).collect()))
-                .collect(),
+            y_label: "instantaneous efficiency η (%)".into(),
+            x_label: "time in mesh periods (0: a pair enters at A)".into(),
+            x: c.tau.clone(),
+            series: pc.efficiency.iter().map(|(l, v)| (l.clone(), v.iter().map(|e| 100.0 * e).collect())).collect(),
+            ..Default::default()
         },
     ];
-    stacked_panels(
-        &format!("{}: contact along the line of action", r.title),
-        &x,
-        &marks,
-        &panels,
-        "distance from T1 (mm)",
-    )
+    figure(&format!("{}: friction at {}", r.title, pc.label), &panels)
+}
+
+/// Mean η and power loss against the swept variable, at each value of the other one.
+/// `by_speed`: x is the pinion speed (rpm), one curve per (law, formulation, torque); else x is torque.
+pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
+    let key = |q: f64| format!("{q:.9e}");
+    let x_of = |rec: &crate::report::friction::EfficiencyRecord| {
+        if by_speed {
+            rec.pinion_speed.si() * 30.0 / std::f64::consts::PI
+        } else {
+            rec.pinion_torque.si()
+        }
+    };
+    let other = |rec: &crate::report::friction::EfficiencyRecord| {
+        if by_speed {
+            format!("{:.1} N·m", rec.pinion_torque.si())
+        } else {
+            format!("{:.0} rpm", rec.pinion_speed.si() * 30.0 / std::f64::consts::PI)
+        }
+    };
+    let mut xs: Vec<f64> = r.efficiency.iter().map(x_of).collect();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup_by(|a, b| key(*a) == key(*b));
+    let mut labels: Vec<String> = Vec::new();
+    for rec in &r.efficiency {
+        let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
+        if !labels.contains(&l) {
+            labels.push(l);
+        }
+    }
+    let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
+    let mut loss = eta.clone();
+    for rec in &r.efficiency {
+        let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
+        let i = labels.iter().position(|x| *x == l).expect("label collected above");
+        let j = xs.iter().position(|x| key(*x) == key(x_of(rec))).expect("x collected above");
+        eta[i].1[j] = 100.0 * rec.mean_efficiency.0;
+        loss[i].1[j] = rec.power_loss.si();
+    }
+    let x_label = if by_speed { "pinion speed (rpm)" } else { "pinion torque (N·m)" };
+    let panels = [
+        Panel {
+            y_label: "mean efficiency η̄ (%)".into(),
+            x_label: x_label.into(),
+            x: xs.clone(),
+            series: eta,
+            ..Default::default()
+        },
+        Panel {
+            y_label: "friction power loss (W)".into(),
+            x_label: x_label.into(),
+            x: xs,
+            series: loss,
+            ..Default::default()
+        },
+    ];
+    let what = if by_speed { "speed" } else { "torque" };
+    figure(&format!("{}: mean efficiency and power loss against {what}", r.title), &panels)
+}
+
+/// composite_mu_vs_speed.svg: mean |μ| of the composite law against speed, per torque (He–Cho–Singh Fig. 2b).
+pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
+    let mut xs: Vec<f64> = Vec::new();
+    let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for op in &r.operating_points {
+        let rpm = op.pinion_speed.si() * 30.0 / std::f64::consts::PI;
+        for law in op.friction.iter().filter(|l| l.law == "composite") {
+            let label = format!("{} @ {:.1} N·m", law.label, op.pinion_torque.si());
+            match series.iter_mut().find(|(l, _)| *l == label) {
+                Some((_, v)) => v.push((rpm, law.mean_abs_mu.0)),
+                None => series.push((label, vec![(rpm, law.mean_abs_mu.0)])),
+            }
+            xs.push(rpm);
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let series = series
+        .into_iter()
+        .map(|(l, pts)| {
+            let ys = xs.iter().map(|x| pts.iter().find(|(px, _)| px == x).map_or(f64::NAN, |p| p.1)).collect();
+            (l, ys)
+        })
+        .collect();
+    let panel = Panel {
+        y_label: "mean |μ| over A–E".into(),
+        x_label: "pinion speed (rpm)".into(),
+        x: xs,
+        series,
+        ..Default::default()
+    };
+    figure(&format!("{}: composite law, mean |μ| against speed", r.title), &[panel])
 }

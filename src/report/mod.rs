@@ -1,5 +1,6 @@
 //! Stage 4, report: the serde data every renderer reads. Nothing here formats text for a reader.
 
+pub mod friction;
 pub mod number;
 
 use serde::Serialize;
@@ -19,6 +20,8 @@ pub struct Report {
     pub inputs: Vec<InputRow>,
     pub geometry: GeometryReport,
     pub operating_points: Vec<OperatingPointReport>,
+    /// One record per (operating point, law, formulation); empty unless the scene asks for `efficiency`.
+    pub efficiency: Vec<friction::EfficiencyRecord>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
     /// Sampled curves for the plots (not in report.json: they repeat the tables at finer spacing).
@@ -117,6 +120,8 @@ pub struct GeometryReport {
     pub line_of_action_length: Q,
     pub points_from_t1: PointsReport,
     pub contact_ratio: Num,
+    /// Ohlendorf's gear loss factor H_V.
+    pub ohlendorf_loss_factor: Num,
     pub reduced_modulus: Q,
     pub load_sharing: LoadSharing,
     pub pinion: GearReport,
@@ -134,6 +139,13 @@ pub struct OperatingPointReport {
     pub mesh_period: Q,
     pub pitch_line_velocity: Q,
     pub contact: Vec<ContactRow>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film: Option<Vec<friction::FilmRow>>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub friction: Vec<friction::LawReport>,
+    /// The plot of μ, η and local power loss at this point, when drawn.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plot: Option<String>,
 }
 
 /// The contact state at one point of the line of action.
@@ -169,6 +181,25 @@ pub struct Curves {
     pub hertz_pressure: Vec<(String, Vec<f64>)>,
     /// A B P D E from T1 (m).
     pub marks: Vec<(&'static str, f64)>,
+    /// Per plotted operating point: μ, local power loss along the line of action, η over a cycle.
+    pub points: Vec<PointCurves>,
+    /// η(τ) sample times (mesh periods).
+    pub tau: Vec<f64>,
+}
+
+/// Curves of one operating point.
+#[derive(Debug, Clone, Default)]
+pub struct PointCurves {
+    pub file: String,
+    pub label: String,
+    /// (law label, signed μ)
+    pub mu: Vec<(String, Vec<f64>)>,
+    /// Composite regime bands along the line of action: (from, to, regime) in m.
+    pub regime_bands: Vec<(f64, f64, String)>,
+    /// (law label, W)
+    pub power_loss: Vec<(String, Vec<f64>)>,
+    /// (law label · formulation, η)
+    pub efficiency: Vec<(String, Vec<f64>)>,
 }
 
 /// At most this many curves of one kind are plotted (evenly picked from a sweep).
@@ -251,12 +282,7 @@ fn inputs(scene: &Scene) -> Vec<InputRow> {
         });
     }
     if let Some(l) = &scene.lubricant {
-        input(
-            &mut rows,
-            "lubricant.dynamic_viscosity",
-            &l.dynamic_viscosity,
-            "Pa*s",
-        );
+        input(&mut rows, "lubricant.dynamic_viscosity", &l.dynamic_viscosity, "Pa*s");
         if let Some(d) = &l.density {
             input(&mut rows, "lubricant.density", d, "kg/m^3");
         }
@@ -296,25 +322,16 @@ fn geometry_report(eval: &Evaluation) -> GeometryReport {
         pressure_angle: rad(g.pressure_angle),
         gear_ratio: Num(g.gear_ratio),
         center_distance: m(g.center_distance),
-        center_distance_source: if g.center_distance_given {
-            "given"
-        } else {
-            "zero_backlash"
-        },
+        center_distance_source: if g.center_distance_given { "given" } else { "zero_backlash" },
         zero_backlash_center_distance: m(g.zero_backlash_center_distance),
         operating_pressure_angle: rad(g.operating_pressure_angle),
         zero_backlash_pressure_angle: rad(g.zero_backlash_pressure_angle),
         face_width: m(g.face_width),
         base_pitch: m(g.base_pitch),
         line_of_action_length: m(g.line_of_action_length),
-        points_from_t1: PointsReport {
-            A: m(p.a),
-            B: m(p.b),
-            P: m(p.p),
-            D: m(p.d),
-            E: m(p.e),
-        },
+        points_from_t1: PointsReport { A: m(p.a), B: m(p.b), P: m(p.p), D: m(p.d), E: m(p.e) },
         contact_ratio: Num(g.contact_ratio),
+        ohlendorf_loss_factor: Num(eval.ohlendorf_loss_factor),
         reduced_modulus: pa(eval.reduced_modulus),
         load_sharing: eval.sharing,
         pinion: gear_report(g, 0),
@@ -344,33 +361,44 @@ fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> ContactRow {
     }
 }
 
-fn operating_point_report(
-    scene: &Scene,
-    eval: &Evaluation,
-    pe: &PointEvaluation,
-) -> OperatingPointReport {
+fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &PointEvaluation) -> OperatingPointReport {
     let g = &eval.geometry;
     let op = &scene.operating;
     let (ti, ni) = pe.index;
-    let label = format!(
-        "{} {}, {} {}",
-        op.pinion_torque.written_values[ti],
-        op.pinion_torque.unit,
-        op.pinion_speed.written_values[ni],
-        op.pinion_speed.unit
-    );
+    let _ = (ti, ni, op);
+    let label = operating_label(scene, pe);
     OperatingPointReport {
         pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
         pinion_speed: Q::new(pe.state.pinion_speed, "rad/s"),
         label,
         wheel_speed: Q::new(g.wheel_speed(&pe.state), "rad/s"),
         normal_load: Q::new(g.normal_load(&pe.state), "N"),
-        mesh_period: Q::new(
-            2.0 * std::f64::consts::PI / (pe.state.pinion_speed * g.teeth[0] as f64),
-            "s",
-        ),
+        mesh_period: Q::new(2.0 * std::f64::consts::PI / (pe.state.pinion_speed * g.teeth[0] as f64), "s"),
         pitch_line_velocity: mps(pe.state.pinion_speed * g.working_pitch_radius[0]),
         contact: pe.table.iter().map(|(n, c)| contact_row(*n, c)).collect(),
+        film: friction::film_rows(pe),
+        friction: scene.friction.iter().zip(&pe.laws).map(|(spec, law)| friction::law_report(spec, pe, law)).collect(),
+        plot: None,
+    }
+}
+
+/// `239.3 N*m, 100 rpm`: an operating point in the user's units.
+pub fn operating_label(scene: &Scene, pe: &PointEvaluation) -> String {
+    let op = &scene.operating;
+    let (ti, ni) = pe.index;
+    format!(
+        "{} {}, {} {}",
+        op.pinion_torque.written_values[ti],
+        op.pinion_torque.unit,
+        op.pinion_speed.written_values[ni],
+        op.pinion_speed.unit
+    )
+}
+
+pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
+    match f {
+        crate::model::Formulation::External => "external",
+        crate::model::Formulation::Internal => "internal",
     }
 }
 
@@ -379,9 +407,7 @@ pub fn pick(n: usize) -> Vec<usize> {
     if n <= MAX_CURVES {
         return (0..n).collect();
     }
-    let mut v: Vec<usize> = (0..MAX_CURVES)
-        .map(|i| i * (n - 1) / (MAX_CURVES - 1))
-        .collect();
+    let mut v: Vec<usize> = (0..MAX_CURVES).map(|i| i * (n - 1) / (MAX_CURVES - 1)).collect();
     v.dedup();
     v
 }
@@ -392,74 +418,81 @@ fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
     let torque0 = op.pinion_torque.values[0].value;
     let speed0 = op.pinion_speed.values[0].value;
     let at = |t: f64, n: f64| -> Vec<ContactPoint> {
-        let state = crate::geometry::OperatingState {
-            pinion_torque: t,
-            pinion_speed: n,
-        };
+        let state = crate::geometry::OperatingState { pinion_torque: t, pinion_speed: n };
         u.iter().map(|x| eval.contact_at(*x, &state)).collect()
     };
     let sliding_velocity = pick(op.pinion_speed.values.len())
         .into_iter()
         .map(|i| {
-            let label = format!(
-                "{} {}",
-                op.pinion_speed.written_values[i], op.pinion_speed.unit
-            );
-            (
-                label,
-                at(torque0, op.pinion_speed.values[i].value)
-                    .iter()
-                    .map(|c| c.sliding_velocity)
-                    .collect(),
-            )
+            let label = format!("{} {}", op.pinion_speed.written_values[i], op.pinion_speed.unit);
+            (label, at(torque0, op.pinion_speed.values[i].value).iter().map(|c| c.sliding_velocity).collect())
         })
         .collect();
     let hertz_pressure = pick(op.pinion_torque.values.len())
         .into_iter()
         .map(|i| {
-            let label = format!(
-                "{} {}",
-                op.pinion_torque.written_values[i], op.pinion_torque.unit
-            );
-            (
-                label,
-                at(op.pinion_torque.values[i].value, speed0)
-                    .iter()
-                    .map(|c| c.hertz_pressure)
-                    .collect(),
-            )
+            let label = format!("{} {}", op.pinion_torque.written_values[i], op.pinion_torque.unit);
+            (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
         })
         .collect();
-    let slide_to_roll = at(torque0, speed0)
-        .iter()
-        .map(|c| c.slide_to_roll)
-        .collect();
+    let slide_to_roll = at(torque0, speed0).iter().map(|c| c.slide_to_roll).collect();
     Curves {
         u,
         sliding_velocity,
         slide_to_roll,
         hertz_pressure,
         marks: eval.geometry.points.named().to_vec(),
+        points: point_curves(scene, eval),
+        tau: crate::evaluate::cycle_times(),
     }
+}
+
+fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves> {
+    let mut out = Vec::new();
+    for (k, pe) in eval.points.iter().enumerate() {
+        if !pe.has_curves || pe.laws.is_empty() {
+            continue;
+        }
+        let mut pc = PointCurves {
+            file: format!("point_{}_friction.svg", k + 1),
+            label: operating_label(scene, pe),
+            ..Default::default()
+        };
+        for (spec, law) in scene.friction.iter().zip(&pe.laws) {
+            let Some(c) = &law.curves else { continue };
+            let label = friction::law_label(spec);
+            pc.mu.push((label.clone(), c.mu.clone()));
+            pc.power_loss.push((label.clone(), c.power_loss.clone()));
+            for (f, eta) in &c.efficiency {
+                pc.efficiency.push((format!("{label} {}", formulation_name(*f)), eta.clone()));
+            }
+            if law.regimes.is_some() {
+                let g = &eval.geometry.points;
+                let mut edges = vec![g.a];
+                edges.extend(law.switch_points.iter().copied());
+                edges.push(g.e);
+                let ctx = eval.law_context(pe.state);
+                let built = crate::friction::build(spec, &ctx);
+                for w in edges.windows(2) {
+                    if let Some(r) = built.regime(&ctx.contact_at(0.5 * (w[0] + w[1]))) {
+                        pc.regime_bands.push((w[0], w[1], format!("{r:?}")));
+                    }
+                }
+            }
+        }
+        out.push(pc);
+    }
+    out
 }
 
 fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let g = &eval.geometry;
     let mut out = Vec::new();
-    let note = |m: String| Finding {
-        severity: Severity::Note,
-        message: m,
-    };
-    let warn = |m: String| Finding {
-        severity: Severity::Warning,
-        message: m,
-    };
+    let note = |m: String| Finding { severity: Severity::Note, message: m };
+    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
-            TipSource::Given => format!(
-                "{name} tip diameter as given: {:.4} mm",
-                2e3 * g.tip_radius[i]
-            ),
+            TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),
             TipSource::AddendumRule => format!(
                 "{name} tip diameter from the addendum rule d_a = m (z + 2 + 2x): {:.4} mm",
                 2e3 * g.tip_radius[i]
@@ -473,11 +506,8 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             )));
         }
         let start = g.involute_start_from_t1(i);
-        let (contact_start, beyond) = if i == 0 {
-            (g.points.a, g.points.a < start)
-        } else {
-            (g.points.e, g.points.e > start)
-        };
+        let (contact_start, beyond) =
+            if i == 0 { (g.points.a, g.points.a < start) } else { (g.points.e, g.points.e > start) };
         if beyond {
             out.push(warn(format!(
                 "contact at {:.4} mm from T1 lies below the {name}'s generated involute, which starts at {:.4} mm (root interference with a rack-cut flank)",
@@ -507,33 +537,61 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
         )));
     }
     out.push(note(match scene.gears.load_sharing {
-        LoadSharing::Equal => {
-            "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into()
-        }
-        LoadSharing::None => {
-            "load sharing: none (every contact carries the whole normal load)".into()
-        }
+        LoadSharing::Equal => "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into(),
+        LoadSharing::None => "load sharing: none (every contact carries the whole normal load)".into(),
     }));
     out
 }
 
 /// Builds the report of an evaluated scene.
 pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
+    let mut findings = findings(scene, eval);
+    findings.extend(friction::law_findings(scene, eval));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),
         inputs: inputs(scene),
         geometry: geometry_report(eval),
         operating_points: eval.points.iter().map(|p| operating_point_report(scene, eval, p)).collect(),
-        findings: findings(scene, eval),
-        plots: vec![PlotRef { file: "contact_state.svg".into(), title: "Sliding velocity, slide-to-roll ratio and Hertzian pressure along the line of action".into() }],
+        efficiency: friction::efficiency_records(scene, eval),
+        findings,
+        plots: vec![PlotRef {
+            file: "contact_state.svg".into(),
+            title: "Sliding velocity, slide-to-roll ratio and Hertzian pressure along the line of action".into(),
+        }],
         curves: curves(scene, eval),
     };
-    for path in non_finite_paths(&report) {
-        report.findings.push(Finding {
-            severity: Severity::Warning,
-            message: format!("not a finite number: {path}"),
+    for pc in &report.curves.points {
+        if let Some(op) = report.operating_points.iter_mut().find(|o| o.label == pc.label) {
+            op.plot = Some(pc.file.clone());
+        }
+    }
+    let sweeps = &scene.operating;
+    if !report.efficiency.is_empty() {
+        if sweeps.pinion_speed.values.len() > 1 {
+            report.plots.push(PlotRef {
+                file: "sweep_speed.svg".into(),
+                title: "Mean efficiency and power loss against pinion speed".into(),
+            });
+        }
+        if sweeps.pinion_torque.values.len() > 1 {
+            report.plots.push(PlotRef {
+                file: "sweep_torque.svg".into(),
+                title: "Mean efficiency and power loss against pinion torque".into(),
+            });
+        }
+    }
+    if sweeps.pinion_speed.values.len() > 1
+        && scene.friction.iter().any(|l| l.id == "composite")
+        && !eval.points[0].laws.is_empty()
+    {
+        report.plots.push(PlotRef {
+            file: "composite_mu_vs_speed.svg".into(),
+            title: "Composite law: mean |μ| against pinion speed (He–Cho–Singh Fig. 2b)".into(),
         });
+    }
+    for path in non_finite_paths(&report) {
+        report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
     report
 }

@@ -11,9 +11,7 @@ pub fn round_sig(x: f64) -> f64 {
     if !x.is_finite() || x == 0.0 {
         return if x == 0.0 { 0.0 } else { x };
     }
-    format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x)
-        .parse()
-        .unwrap_or(x)
+    format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x).parse().unwrap_or(x)
 }
 
 /// A plain (dimensionless) number, rounded when serialised; non-finite becomes `null`.
@@ -39,10 +37,7 @@ pub struct Q {
 
 impl Q {
     pub fn new(value: f64, unit: &'static str) -> Q {
-        Q {
-            value: Num(value),
-            unit,
-        }
+        Q { value: Num(value), unit }
     }
     pub fn si(&self) -> f64 {
         self.value.0

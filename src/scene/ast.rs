@@ -90,17 +90,9 @@ pub enum ValueKind {
     /// `4.5 mm`, `16`
     Quantity { number: f64, unit: Option<UnitExpr> },
     /// `[1, 2, 3] rpm`, `[external, internal]`
-    List {
-        items: Vec<ListItem>,
-        unit: Option<UnitExpr>,
-    },
+    List { items: Vec<ListItem>, unit: Option<UnitExpr> },
     /// `100..3000 rpm step 100`
-    Range {
-        from: f64,
-        to: f64,
-        unit: Option<UnitExpr>,
-        step: Option<RangeStep>,
-    },
+    Range { from: f64, to: f64, unit: Option<UnitExpr>, step: Option<RangeStep> },
     /// `equal`, `coulomb(mu = 0.08)`
     Call(Call),
     /// `"ISO VG 100"`

@@ -60,12 +60,7 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     pub fn new(kind: DiagnosticKind, span: Span, reason: impl Into<String>) -> Self {
-        Diagnostic {
-            kind,
-            span,
-            reason: reason.into(),
-            hints: Vec::new(),
-        }
+        Diagnostic { kind, span, reason: reason.into(), hints: Vec::new() }
     }
 
     pub fn hint(mut self, hint: impl Into<String>) -> Self {
@@ -94,36 +89,21 @@ impl SceneErrors {
 
     /// Renders every diagnostic as miette draws it (no colour when `color` is false), followed by a count.
     pub fn render(&self, color: bool) -> String {
-        let theme = if color {
-            GraphicalTheme::unicode()
-        } else {
-            GraphicalTheme::unicode_nocolor()
-        };
+        let theme = if color { GraphicalTheme::unicode() } else { GraphicalTheme::unicode_nocolor() };
         let handler = GraphicalReportHandler::new_themed(theme).with_width(100);
         let named = NamedSource::new(self.source_name.clone(), self.source.clone());
         let mut out = String::new();
         for d in &self.diagnostics {
             let (line, column) = self.line_column(d.span.start);
-            out.push_str(&format!(
-                "{}:{}:{}: {}\n",
-                self.source_name, line, column, d.reason
-            ));
-            let one = OneDiagnostic {
-                diagnostic: d,
-                source: &named,
-            };
+            out.push_str(&format!("{}:{}:{}: {}\n", self.source_name, line, column, d.reason));
+            let one = OneDiagnostic { diagnostic: d, source: &named };
             if handler.render_report(&mut out, &one).is_err() {
                 out.push_str(&d.reason);
             }
             out.push('\n');
         }
         let n = self.diagnostics.len();
-        out.push_str(&format!(
-            "{} {} in {}\n",
-            n,
-            if n == 1 { "error" } else { "errors" },
-            self.source_name
-        ));
+        out.push_str(&format!("{} {} in {}\n", n, if n == 1 { "error" } else { "errors" }, self.source_name));
         out
     }
 }
@@ -181,17 +161,8 @@ impl miette::Diagnostic for OneDiagnostic<'_> {
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
         let s = self.diagnostic.span;
-        let span = SourceSpan::new(
-            s.start.into(),
-            s.len().max(if s.start < self.source.inner().len() {
-                1
-            } else {
-                0
-            }),
-        );
-        Some(Box::new(std::iter::once(LabeledSpan::new_with_span(
-            Some("here".into()),
-            span,
-        ))))
+        let span =
+            SourceSpan::new(s.start.into(), s.len().max(if s.start < self.source.inner().len() { 1 } else { 0 }));
+        Some(Box::new(std::iter::once(LabeledSpan::new_with_span(Some("here".into()), span))))
     }
 }

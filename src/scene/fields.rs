@@ -58,13 +58,7 @@ impl<'a> Fields<'a> {
         calls: &[&str],
         errors: &mut Vec<Diagnostic>,
     ) -> Fields<'a> {
-        let mut f = Fields {
-            what: what.into(),
-            span,
-            values: BTreeMap::new(),
-            blocks: Vec::new(),
-            calls: Vec::new(),
-        };
+        let mut f = Fields { what: what.into(), span, values: BTreeMap::new(), blocks: Vec::new(), calls: Vec::new() };
         let all: Vec<&str> = keys.iter().chain(blocks).chain(calls).copied().collect();
         for item in items {
             match item {
@@ -105,21 +99,12 @@ impl<'a> Fields<'a> {
     }
 
     pub fn missing(&self, key: &str, example: &str) -> Diagnostic {
-        Diagnostic::new(
-            DiagnosticKind::MissingKey,
-            self.span,
-            format!("{} has no `{key}`", self.what),
-        )
-        .hint(format!("add `{key} = {example}`"))
+        Diagnostic::new(DiagnosticKind::MissingKey, self.span, format!("{} has no `{key}`", self.what))
+            .hint(format!("add `{key} = {example}`"))
     }
 
     /// A required quantity.
-    pub fn required<Q: SiQuantity>(
-        &self,
-        key: &str,
-        example: &str,
-        errors: &mut Vec<Diagnostic>,
-    ) -> Option<Given<Q>> {
+    pub fn required<Q: SiQuantity>(&self, key: &str, example: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
         if !self.has(key) {
             errors.push(self.missing(key, example));
             return None;
@@ -128,28 +113,14 @@ impl<'a> Fields<'a> {
     }
 
     /// An optional quantity.
-    pub fn optional<Q: SiQuantity>(
-        &self,
-        key: &str,
-        errors: &mut Vec<Diagnostic>,
-    ) -> Option<Given<Q>> {
+    pub fn optional<Q: SiQuantity>(&self, key: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
         let (_, value) = self.values.get(key)?;
         let (si, written) = scalar(key, value, Q::DIMENSION, errors)?;
-        Some(Given {
-            value: Q::from_si(si),
-            written,
-            span: value.span,
-        })
+        Some(Given { value: Q::from_si(si), written, span: value.span })
     }
 
     /// An optional dimensionless number within `[lo, hi]`.
-    pub fn number(
-        &self,
-        key: &str,
-        lo: f64,
-        hi: f64,
-        errors: &mut Vec<Diagnostic>,
-    ) -> Option<Given<f64>> {
+    pub fn number(&self, key: &str, lo: f64, hi: f64, errors: &mut Vec<Diagnostic>) -> Option<Given<f64>> {
         let (_, value) = self.values.get(key)?;
         let (x, written) = scalar(key, value, Dimension::NONE, errors)?;
         if !(lo..=hi).contains(&x) {
@@ -163,46 +134,29 @@ impl<'a> Fields<'a> {
             );
             return None;
         }
-        Some(Given {
-            value: x,
-            written,
-            span: value.span,
-        })
+        Some(Given { value: x, written, span: value.span })
     }
 
     /// An optional name value (`load_sharing = equal`), checked against `allowed`.
-    pub fn name(
-        &self,
-        key: &str,
-        allowed: &[&str],
-        errors: &mut Vec<Diagnostic>,
-    ) -> Option<&'a Name> {
+    pub fn name(&self, key: &str, allowed: &[&str], errors: &mut Vec<Diagnostic>) -> Option<&'a Name> {
         let (_, value) = self.values.get(key)?;
         match &value.kind {
             ValueKind::Call(c) if c.arguments.is_empty() => {
                 if allowed.is_empty() || allowed.contains(&c.name.text.as_str()) {
                     Some(&c.name)
                 } else {
-                    errors.push(unknown_name(
-                        &format!("value for `{key}`"),
-                        &c.name,
-                        allowed,
-                    ));
+                    errors.push(unknown_name(&format!("value for `{key}`"), &c.name, allowed));
                     None
                 }
             }
             _ => {
                 errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::WrongDimension,
-                        value.span,
-                        format!("`{key}` expects a name"),
-                    )
-                    .hint(if allowed.is_empty() {
-                        format!("write `{key} = name`")
-                    } else {
-                        format!("one of: {}", allowed.join(", "))
-                    }),
+                    Diagnostic::new(DiagnosticKind::WrongDimension, value.span, format!("`{key}` expects a name"))
+                        .hint(if allowed.is_empty() {
+                            format!("write `{key} = name`")
+                        } else {
+                            format!("one of: {}", allowed.join(", "))
+                        }),
                 );
                 None
             }
@@ -210,12 +164,7 @@ impl<'a> Fields<'a> {
     }
 
     /// A quantity that may be swept: a single value, a list or a range.
-    pub fn sweep<Q: SiQuantity>(
-        &self,
-        key: &str,
-        example: &str,
-        errors: &mut Vec<Diagnostic>,
-    ) -> Option<Sweep<Q>> {
+    pub fn sweep<Q: SiQuantity>(&self, key: &str, example: &str, errors: &mut Vec<Diagnostic>) -> Option<Sweep<Q>> {
         if !self.has(key) {
             errors.push(self.missing(key, example));
             return None;
@@ -244,9 +193,7 @@ pub fn checked_scale(
             Ok(s) => s,
             Err(e) => {
                 let (index, hint) = match &e {
-                    UnitError::Unknown {
-                        index, suggestion, ..
-                    } => (
+                    UnitError::Unknown { index, suggestion, .. } => (
                         *index,
                         match suggestion {
                             Some(s) => {
@@ -255,10 +202,9 @@ pub fn checked_scale(
                             None => "`gearloss units` lists every unit".to_string(),
                         },
                     ),
-                    UnitError::OffsetInCompound { index, .. } => (
-                        *index,
-                        "write the temperature on its own, e.g. `90 degC`".into(),
-                    ),
+                    UnitError::OffsetInCompound { index, .. } => {
+                        (*index, "write the temperature on its own, e.g. `90 degC`".into())
+                    }
                 };
                 let kind = match e {
                     UnitError::Unknown { .. } => DiagnosticKind::UnknownUnit,
@@ -271,31 +217,16 @@ pub fn checked_scale(
     };
     if scale.dimension != expected {
         let (span, reason) = match unit {
-            None => (
-                value_span,
-                format!(
-                    "`{key}` expects {}, but the value has no unit",
-                    a(expected.name())
-                ),
-            ),
+            None => (value_span, format!("`{key}` expects {}, but the value has no unit", a(expected.name()))),
             Some(u) => (
                 u.span,
-                format!(
-                    "`{key}` expects {}, but `{}` is {}",
-                    a(expected.name()),
-                    u.text,
-                    a(scale.dimension.name())
-                ),
+                format!("`{key}` expects {}, but `{}` is {}", a(expected.name()), u.text, a(scale.dimension.name())),
             ),
         };
         let hint = if expected == Dimension::NONE {
             format!("`{key}` is a plain number: drop the unit")
         } else {
-            format!(
-                "use a unit of {} such as {}",
-                expected.name(),
-                expected.example_units()
-            )
+            format!("use a unit of {} such as {}", expected.name(), expected.example_units())
         };
         errors.push(Diagnostic::new(DiagnosticKind::WrongDimension, span, reason).hint(hint));
         return None;
@@ -308,24 +239,15 @@ fn finite(key: &str, x: f64, span: Span, errors: &mut Vec<Diagnostic>) -> Option
         Some(x)
     } else {
         errors.push(
-            Diagnostic::new(
-                DiagnosticKind::OutOfRange,
-                span,
-                format!("`{key}` is not a finite number"),
-            )
-            .hint("numbers must lie within ±1.7e308"),
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, format!("`{key}` is not a finite number"))
+                .hint("numbers must lie within ±1.7e308"),
         );
         None
     }
 }
 
 /// A single value in SI, and the text as written.
-pub fn scalar(
-    key: &str,
-    value: &Value,
-    expected: Dimension,
-    errors: &mut Vec<Diagnostic>,
-) -> Option<(f64, String)> {
+pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(f64, String)> {
     match &value.kind {
         ValueKind::Quantity { number, unit } => {
             let n = finite(key, *number, value.span, errors)?;
@@ -344,10 +266,7 @@ pub fn scalar(
                     value.span,
                     format!("`{key}` expects a single {}", expected.name()),
                 )
-                .hint(format!(
-                    "write one value, e.g. `{key} = 1 {}`",
-                    expected.si_unit()
-                )),
+                .hint(format!("write one value, e.g. `{key} = 1 {}`", expected.si_unit())),
             );
             None
         }
@@ -370,8 +289,12 @@ fn sweep_values(
                     ListItem::Number(x, span) => numbers.push((*x, *span)),
                     ListItem::Name(n) => {
                         errors.push(
-                            Diagnostic::new(DiagnosticKind::WrongDimension, n.span, format!("`{key}` lists numbers, not names"))
-                                .hint("write the values as numbers with one unit after the list, e.g. `[100, 1000] rpm`"),
+                            Diagnostic::new(
+                                DiagnosticKind::WrongDimension,
+                                n.span,
+                                format!("`{key}` lists numbers, not names"),
+                            )
+                            .hint("write the values as numbers with one unit after the list, e.g. `[100, 1000] rpm`"),
                         );
                         return None;
                     }
@@ -379,26 +302,14 @@ fn sweep_values(
             }
             if numbers.is_empty() {
                 errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::OutOfRange,
-                        value.span,
-                        format!("`{key}` is an empty list"),
-                    )
-                    .hint("give at least one value"),
+                    Diagnostic::new(DiagnosticKind::OutOfRange, value.span, format!("`{key}` is an empty list"))
+                        .hint("give at least one value"),
                 );
                 return None;
             }
             (numbers, unit)
         }
-        ValueKind::Range {
-            from,
-            to,
-            unit,
-            step,
-        } => (
-            range_values(key, *from, *to, step, value.span, errors)?,
-            unit,
-        ),
+        ValueKind::Range { from, to, unit, step } => (range_values(key, *from, *to, step, value.span, errors)?, unit),
         _ => {
             errors.push(
                 Diagnostic::new(
@@ -435,20 +346,15 @@ fn range_values(
     let to = finite(key, to, span, errors)?;
     if to < from {
         errors.push(
-            Diagnostic::new(
-                DiagnosticKind::OutOfRange,
-                span,
-                format!("range {from}..{to} runs backwards"),
-            )
-            .hint("write the smaller value first"),
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, format!("range {from}..{to} runs backwards"))
+                .hint("write the smaller value first"),
         );
         return None;
     }
     let bad = |errors: &mut Vec<Diagnostic>, s: Span, reason: String| {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, s, reason)
-                .hint(format!("a sweep holds 1 to {MAX_SWEEP_LENGTH} values: `a..b unit step s` (s > 0) or `a..b unit count n` (n ≥ 2)")),
-        );
+        errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, s, reason).hint(format!(
+            "a sweep holds 1 to {MAX_SWEEP_LENGTH} values: `a..b unit step s` (s > 0) or `a..b unit count n` (n ≥ 2)"
+        )));
     };
     let values: Vec<f64> = match step {
         None | Some(RangeStep::Count(..)) => {
@@ -457,17 +363,11 @@ fn range_values(
                 _ => (11.0, span),
             };
             if !(n >= 2.0 && n <= MAX_SWEEP_LENGTH as f64 && n.fract() == 0.0) {
-                bad(
-                    errors,
-                    s,
-                    format!("count {n} is not a whole number from 2 to {MAX_SWEEP_LENGTH}"),
-                );
+                bad(errors, s, format!("count {n} is not a whole number from 2 to {MAX_SWEEP_LENGTH}"));
                 return None;
             }
             let n = n as usize;
-            (0..n)
-                .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
-                .collect()
+            (0..n).map(|i| from + (to - from) * i as f64 / (n - 1) as f64).collect()
         }
         Some(RangeStep::Step(st, s)) => {
             if st.is_nan() || *st <= 0.0 {

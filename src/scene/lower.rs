@@ -14,41 +14,14 @@ use crate::friction::catalog;
 use crate::geometry::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput};
 use crate::model::*;
 
-const SCENE_BLOCKS: &[&str] = &[
-    "gears",
-    "material",
-    "lubricant",
-    "operating",
-    "friction",
-    "analyses",
-];
-const GEARS_KEYS: &[&str] = &[
-    "module",
-    "diametral_pitch",
-    "pressure_angle",
-    "center_distance",
-    "face_width",
-    "load_sharing",
-];
-const GEAR_KEYS: &[&str] = &[
-    "teeth",
-    "profile_shift",
-    "tip_diameter",
-    "inertia",
-    "material",
-    "roughness_ra",
-    "roughness_rq",
-    "roughness_rz",
-];
+const SCENE_BLOCKS: &[&str] = &["gears", "material", "lubricant", "operating", "friction", "analyses"];
+const GEARS_KEYS: &[&str] =
+    &["module", "diametral_pitch", "pressure_angle", "center_distance", "face_width", "load_sharing"];
+const GEAR_KEYS: &[&str] =
+    &["teeth", "profile_shift", "tip_diameter", "inertia", "material", "roughness_ra", "roughness_rq", "roughness_rz"];
 const MATERIAL_KEYS: &[&str] = &["youngs_modulus", "poisson_ratio"];
-const LUBRICANT_KEYS: &[&str] = &[
-    "dynamic_viscosity",
-    "density",
-    "kinematic_viscosity",
-    "pressure_viscosity",
-    "type",
-    "temperature",
-];
+const LUBRICANT_KEYS: &[&str] =
+    &["dynamic_viscosity", "density", "kinematic_viscosity", "pressure_viscosity", "type", "temperature"];
 const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed"];
 const ANALYSES: &[&str] = &["efficiency", "friction_along_loa", "film", "contact"];
 const FORMULATIONS: &[&str] = &["external", "internal"];
@@ -56,15 +29,7 @@ const FORMULATIONS: &[&str] = &["external", "internal"];
 /// Lowers a parsed scene. On failure, every diagnostic found.
 pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     let mut errors = Vec::new();
-    let top = Fields::read(
-        "the scene",
-        ast.title_span,
-        &ast.items,
-        &[],
-        SCENE_BLOCKS,
-        &[],
-        &mut errors,
-    );
+    let top = Fields::read("the scene", ast.title_span, &ast.items, &[], SCENE_BLOCKS, &[], &mut errors);
 
     let mut materials: BTreeMap<&str, Material> = BTreeMap::new();
     let mut singles: BTreeMap<&str, &Block> = BTreeMap::new();
@@ -98,51 +63,29 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     }
     for (name, example) in [
         ("gears", "gears { module = 4.5 mm ... }"),
-        (
-            "operating",
-            "operating { pinion_torque = 100 N*m  pinion_speed = 1000 rpm }",
-        ),
+        ("operating", "operating { pinion_torque = 100 N*m  pinion_speed = 1000 rpm }"),
     ] {
         if !singles.contains_key(name) {
             errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::MissingKey,
-                    ast.title_span,
-                    format!("the scene has no `{name}` block"),
-                )
-                .hint(format!("add `{example}`")),
+                Diagnostic::new(DiagnosticKind::MissingKey, ast.title_span, format!("the scene has no `{name}` block"))
+                    .hint(format!("add `{example}`")),
             );
         }
     }
 
-    let gears = singles
-        .get("gears")
-        .and_then(|b| lower_gears(b, &materials, &mut errors));
-    let lubricant = singles
-        .get("lubricant")
-        .and_then(|b| lower_lubricant(b, &mut errors));
-    let operating = singles
-        .get("operating")
-        .and_then(|b| lower_operating(b, &mut errors));
-    let friction = singles
-        .get("friction")
-        .map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
-    let analyses = singles
-        .get("analyses")
-        .map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
+    let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
+    let lubricant = singles.get("lubricant").and_then(|b| lower_lubricant(b, &mut errors));
+    let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
+    let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
+    let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
 
     if let Some(g) = &gears {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
     match (gears, operating) {
-        (Some(gears), Some(operating)) if errors.is_empty() => Ok(Scene {
-            title: ast.title.clone(),
-            gears,
-            lubricant,
-            operating,
-            friction,
-            analyses,
-        }),
+        (Some(gears), Some(operating)) if errors.is_empty() => {
+            Ok(Scene { title: ast.title.clone(), gears, lubricant, operating, friction, analyses })
+        }
         _ => Err(errors),
     }
 }
@@ -154,35 +97,20 @@ fn block_label(block: &Block) -> &str {
 fn lower_material(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Material> {
     let Some(label) = &block.label else {
         errors.push(
-            Diagnostic::new(
-                DiagnosticKind::MissingKey,
-                block.kind.span,
-                "a material needs a name",
-            )
-            .hint("write `material steel { ... }`"),
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "a material needs a name")
+                .hint("write `material steel { ... }`"),
         );
         return None;
     };
-    let f = Fields::read(
-        format!("material `{}`", label.text),
-        block.span,
-        &block.items,
-        MATERIAL_KEYS,
-        &[],
-        &[],
-        errors,
-    );
+    let f =
+        Fields::read(format!("material `{}`", label.text), block.span, &block.items, MATERIAL_KEYS, &[], &[], errors);
     let e: Option<Given<Pressure>> = f.required("youngs_modulus", "206 GPa", errors);
     if !f.has("poisson_ratio") {
         errors.push(f.missing("poisson_ratio", "0.3"));
     }
     let nu = f.number("poisson_ratio", 0.0, 0.499, errors);
     let e = positive(e, "youngs_modulus", errors);
-    Some(Material {
-        name: label.text.clone(),
-        youngs_modulus: e?,
-        poisson_ratio: nu?,
-    })
+    Some(Material { name: label.text.clone(), youngs_modulus: e?, poisson_ratio: nu? })
 }
 
 fn positive<T: super::units::SiQuantity>(
@@ -195,31 +123,15 @@ fn positive<T: super::units::SiQuantity>(
         Some(g)
     } else {
         errors.push(
-            Diagnostic::new(
-                DiagnosticKind::OutOfRange,
-                g.span,
-                format!("`{key}` = {} must be positive", g.written),
-            )
-            .hint(format!("give `{key}` a value above zero")),
+            Diagnostic::new(DiagnosticKind::OutOfRange, g.span, format!("`{key}` = {} must be positive", g.written))
+                .hint(format!("give `{key}` a value above zero")),
         );
         None
     }
 }
 
-fn lower_gears(
-    block: &Block,
-    materials: &BTreeMap<&str, Material>,
-    errors: &mut Vec<Diagnostic>,
-) -> Option<GearPair> {
-    let f = Fields::read(
-        "the `gears` block",
-        block.span,
-        &block.items,
-        GEARS_KEYS,
-        &["pinion", "wheel"],
-        &[],
-        errors,
-    );
+fn lower_gears(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut Vec<Diagnostic>) -> Option<GearPair> {
+    let f = Fields::read("the `gears` block", block.span, &block.items, GEARS_KEYS, &["pinion", "wheel"], &[], errors);
     let (module, module_source) = match (f.has("module"), f.has("diametral_pitch")) {
         (true, true) => {
             let (key, _) = f.values["diametral_pitch"];
@@ -234,11 +146,8 @@ fn lower_gears(
             (None, ModuleSource::Module)
         }
         (false, true) => {
-            let p: Option<Given<ReciprocalLength>> = positive(
-                f.optional("diametral_pitch", errors),
-                "diametral_pitch",
-                errors,
-            );
+            let p: Option<Given<ReciprocalLength>> =
+                positive(f.optional("diametral_pitch", errors), "diametral_pitch", errors);
             match p {
                 Some(p) => {
                     let m = Given {
@@ -251,10 +160,7 @@ fn lower_gears(
                 None => (None, ModuleSource::Module),
             }
         }
-        _ => (
-            positive(f.required("module", "4.5 mm", errors), "module", errors),
-            ModuleSource::Module,
-        ),
+        _ => (positive(f.required("module", "4.5 mm", errors), "module", errors), ModuleSource::Module),
     };
     let pressure_angle: Option<Given<Angle>> = f.required("pressure_angle", "20 deg", errors);
     let pressure_angle = pressure_angle.and_then(|a| {
@@ -273,20 +179,9 @@ fn lower_gears(
             None
         }
     });
-    let center_distance = positive(
-        f.optional("center_distance", errors),
-        "center_distance",
-        errors,
-    );
-    let face_width = positive(
-        f.required("face_width", "14 mm", errors),
-        "face_width",
-        errors,
-    );
-    let load_sharing = match f
-        .name("load_sharing", &["equal", "none"], errors)
-        .map(|n| n.text.as_str())
-    {
+    let center_distance = positive(f.optional("center_distance", errors), "center_distance", errors);
+    let face_width = positive(f.required("face_width", "14 mm", errors), "face_width", errors);
+    let load_sharing = match f.name("load_sharing", &["equal", "none"], errors).map(|n| n.text.as_str()) {
         Some("none") => LoadSharing::None,
         _ => LoadSharing::Equal,
     };
@@ -307,12 +202,8 @@ fn lower_gears(
             [one, rest @ ..] => {
                 for r in rest {
                     errors.push(
-                        Diagnostic::new(
-                            DiagnosticKind::DuplicateKey,
-                            r.kind.span,
-                            format!("`{name}` is given twice"),
-                        )
-                        .hint(format!("keep one `{name}` block")),
+                        Diagnostic::new(DiagnosticKind::DuplicateKey, r.kind.span, format!("`{name}` is given twice"))
+                            .hint(format!("keep one `{name}` block")),
                     );
                 }
                 lower_gear(one, materials, errors)
@@ -336,55 +227,35 @@ fn lower_gears(
     Some(pair)
 }
 
-fn lower_gear(
-    block: &Block,
-    materials: &BTreeMap<&str, Material>,
-    errors: &mut Vec<Diagnostic>,
-) -> Option<Gear> {
+fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut Vec<Diagnostic>) -> Option<Gear> {
     let name = block.kind.text.as_str();
-    let f = Fields::read(
-        format!("the `{name}` block"),
-        block.span,
-        &block.items,
-        GEAR_KEYS,
-        &[],
-        &[],
-        errors,
-    );
+    let f = Fields::read(format!("the `{name}` block"), block.span, &block.items, GEAR_KEYS, &[], &[], errors);
     let teeth = match f.values.get("teeth") {
         None => {
             errors.push(f.missing("teeth", "20"));
             None
         }
-        Some((_, v)) => {
-            super::fields::scalar("teeth", v, Dimension::NONE, errors).and_then(|(z, written)| {
-                if z.fract() != 0.0 || !(5.0..=1000.0).contains(&z) {
-                    errors.push(
-                        Diagnostic::new(
-                            DiagnosticKind::OutOfRange,
-                            v.span,
-                            format!("{name} teeth = {z} is not a whole number from 5 to 1000"),
-                        )
-                        .hint("an involute gear needs at least 5 teeth"),
-                    );
-                    None
-                } else {
-                    Some(Given {
-                        value: z as u32,
-                        written,
-                        span: v.span,
-                    })
-                }
-            })
-        }
+        Some((_, v)) => super::fields::scalar("teeth", v, Dimension::NONE, errors).and_then(|(z, written)| {
+            if z.fract() != 0.0 || !(5.0..=1000.0).contains(&z) {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        v.span,
+                        format!("{name} teeth = {z} is not a whole number from 5 to 1000"),
+                    )
+                    .hint("an involute gear needs at least 5 teeth"),
+                );
+                None
+            } else {
+                Some(Given { value: z as u32, written, span: v.span })
+            }
+        }),
     };
-    let profile_shift = f
-        .number("profile_shift", -1.5, 2.5, errors)
-        .unwrap_or(Given {
-            value: 0.0,
-            written: "0 (default)".into(),
-            span: block.kind.span,
-        });
+    let profile_shift = f.number("profile_shift", -1.5, 2.5, errors).unwrap_or(Given {
+        value: 0.0,
+        written: "0 (default)".into(),
+        span: block.kind.span,
+    });
     let tip_diameter = positive(f.optional("tip_diameter", errors), "tip_diameter", errors);
     let inertia = positive(f.optional("inertia", errors), "inertia", errors);
     let mut rough = |key: &str| -> Option<Given<Length>> {
@@ -394,18 +265,18 @@ fn lower_gear(
                 Some(g)
             } else {
                 errors.push(
-                    Diagnostic::new(DiagnosticKind::OutOfRange, g.span, format!("`{key}` = {} is not a roughness", g.written))
-                        .hint("roughness lies between 0 and 1 mm; typical gear flanks have Ra 0.1 to 1 µm"),
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        g.span,
+                        format!("`{key}` = {} is not a roughness", g.written),
+                    )
+                    .hint("roughness lies between 0 and 1 mm; typical gear flanks have Ra 0.1 to 1 µm"),
                 );
                 None
             }
         })
     };
-    let (ra, rq, rz) = (
-        rough("roughness_ra"),
-        rough("roughness_rq"),
-        rough("roughness_rz"),
-    );
+    let (ra, rq, rz) = (rough("roughness_ra"), rough("roughness_rq"), rough("roughness_rz"));
     let material = match f.name("material", &[], errors) {
         None if !f.has("material") => {
             errors.push(f.missing("material", "steel"));
@@ -415,11 +286,8 @@ fn lower_gear(
         Some(m) => match materials.get(m.text.as_str()) {
             Some(mat) => Some(mat.clone()),
             None => {
-                let mut d = Diagnostic::new(
-                    DiagnosticKind::Undefined,
-                    m.span,
-                    format!("material `{}` is not defined", m.text),
-                );
+                let mut d =
+                    Diagnostic::new(DiagnosticKind::Undefined, m.span, format!("material `{}` is not defined", m.text));
                 if let Some(n) = super::fields::nearest(&m.text, materials.keys().copied()) {
                     d = d.hint(format!("did you mean `{n}`?"));
                 }
@@ -452,10 +320,7 @@ impl GearPair {
             module: self.module.value.get::<meter>(),
             pressure_angle: self.pressure_angle.value.value,
             teeth: [self.pinion.teeth.value, self.wheel.teeth.value],
-            profile_shift: [
-                self.pinion.profile_shift.value,
-                self.wheel.profile_shift.value,
-            ],
+            profile_shift: [self.pinion.profile_shift.value, self.wheel.profile_shift.value],
             tip_diameter: [g(&self.pinion.tip_diameter), g(&self.wheel.tip_diameter)],
             center_distance: g(&self.center_distance),
             face_width: self.face_width.value.get::<meter>(),
@@ -476,13 +341,8 @@ fn check_geometry(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Option<()> {
                 let span = match p.part {
                     PairPart::Teeth(i) => gear(i).teeth.span,
                     PairPart::ProfileShift(i) => gear(i).profile_shift.span,
-                    PairPart::TipDiameter(i) => gear(i)
-                        .tip_diameter
-                        .as_ref()
-                        .map_or(gear(i).span, |d| d.span),
-                    PairPart::CenterDistance => {
-                        pair.center_distance.as_ref().map_or(pair.span, |d| d.span)
-                    }
+                    PairPart::TipDiameter(i) => gear(i).tip_diameter.as_ref().map_or(gear(i).span, |d| d.span),
+                    PairPart::CenterDistance => pair.center_distance.as_ref().map_or(pair.span, |d| d.span),
                     PairPart::Pair => pair.span,
                 };
                 errors.push(Diagnostic::new(DiagnosticKind::Geometry, span, p.reason).hint(p.hint));
@@ -493,40 +353,15 @@ fn check_geometry(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Option<()> {
 }
 
 fn lower_lubricant(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Lubricant> {
-    let name = block
-        .label
-        .as_ref()
-        .map_or("lubricant".to_string(), |l| l.text.clone());
-    let f = Fields::read(
-        "the `lubricant` block",
-        block.span,
-        &block.items,
-        LUBRICANT_KEYS,
-        &[],
-        &[],
-        errors,
-    );
-    let eta = positive(
-        f.required("dynamic_viscosity", "95 mPa*s", errors),
-        "dynamic_viscosity",
-        errors,
-    );
-    let density: Option<Given<MassDensity>> =
-        positive(f.optional("density", errors), "density", errors);
-    let nu: Option<Given<KinematicViscosity>> = positive(
-        f.optional("kinematic_viscosity", errors),
-        "kinematic_viscosity",
-        errors,
-    );
-    let alpha = positive(
-        f.optional("pressure_viscosity", errors),
-        "pressure_viscosity",
-        errors,
-    );
+    let name = block.label.as_ref().map_or("lubricant".to_string(), |l| l.text.clone());
+    let f = Fields::read("the `lubricant` block", block.span, &block.items, LUBRICANT_KEYS, &[], &[], errors);
+    let eta = positive(f.required("dynamic_viscosity", "95 mPa*s", errors), "dynamic_viscosity", errors);
+    let density: Option<Given<MassDensity>> = positive(f.optional("density", errors), "density", errors);
+    let nu: Option<Given<KinematicViscosity>> =
+        positive(f.optional("kinematic_viscosity", errors), "kinematic_viscosity", errors);
+    let alpha = positive(f.optional("pressure_viscosity", errors), "pressure_viscosity", errors);
     let temperature = positive(f.optional("temperature", errors), "temperature", errors);
-    let kind = f
-        .name("type", LubricantType::NAMES, errors)
-        .and_then(|n| LubricantType::from_name(&n.text));
+    let kind = f.name("type", LubricantType::NAMES, errors).and_then(|n| LubricantType::from_name(&n.text));
     if f.has("density") && f.has("kinematic_viscosity") {
         let (key, _) = f.values["kinematic_viscosity"];
         errors.push(
@@ -550,70 +385,32 @@ fn lower_lubricant(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Lubric
 }
 
 fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operating> {
-    let f = Fields::read(
-        "the `operating` block",
-        block.span,
-        &block.items,
-        OPERATING_KEYS,
-        &[],
-        &[],
-        errors,
-    );
+    let f = Fields::read("the `operating` block", block.span, &block.items, OPERATING_KEYS, &[], &[], errors);
     let torque: Option<Sweep<Torque>> = f.sweep("pinion_torque", "[100, 200] N*m", errors);
     let speed: Option<Sweep<AngularVelocity>> = f.sweep("pinion_speed", "1000 rpm", errors);
     let check = |key: &str, values: &[f64], span: Span, errors: &mut Vec<Diagnostic>| -> bool {
         match values.iter().find(|v| **v <= 0.0) {
             Some(_) => {
                 errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::OutOfRange,
-                        span,
-                        format!("`{key}` must be positive"),
-                    )
-                    .hint("the pinion drives: give a positive torque and speed"),
+                    Diagnostic::new(DiagnosticKind::OutOfRange, span, format!("`{key}` must be positive"))
+                        .hint("the pinion drives: give a positive torque and speed"),
                 );
                 false
             }
             None => true,
         }
     };
-    let torque = torque.filter(|t| {
-        check(
-            "pinion_torque",
-            &t.values.iter().map(|v| v.value).collect::<Vec<_>>(),
-            t.span,
-            errors,
-        )
-    });
-    let speed = speed.filter(|s| {
-        check(
-            "pinion_speed",
-            &s.values.iter().map(|v| v.value).collect::<Vec<_>>(),
-            s.span,
-            errors,
-        )
-    });
-    Some(Operating {
-        pinion_torque: torque?,
-        pinion_speed: speed?,
-    })
+    let torque = torque
+        .filter(|t| check("pinion_torque", &t.values.iter().map(|v| v.value).collect::<Vec<_>>(), t.span, errors));
+    let speed =
+        speed.filter(|s| check("pinion_speed", &s.values.iter().map(|v| v.value).collect::<Vec<_>>(), s.span, errors));
+    Some(Operating { pinion_torque: torque?, pinion_speed: speed? })
 }
 
 fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
     let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id).collect();
-    let f = Fields::read(
-        "the `friction` block",
-        block.span,
-        &block.items,
-        &[],
-        &[],
-        &ids,
-        errors,
-    );
-    f.calls
-        .iter()
-        .filter_map(|c| lower_law(c, errors))
-        .collect()
+    let f = Fields::read("the `friction` block", block.span, &block.items, &[], &[], &ids, errors);
+    f.calls.iter().filter_map(|c| lower_law(c, errors)).collect()
 }
 
 /// A law call checked against the catalogue: arguments known, with the right dimension, defaults filled in.
@@ -624,33 +421,20 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLa
     let mut ok = true;
     for (name, value) in &call.arguments {
         let Some(spec) = entry.arguments.iter().find(|a| a.name == name.text) else {
-            errors.push(unknown_name(
-                &format!("argument of `{}`", entry.id),
-                name,
-                &names,
-            ));
+            errors.push(unknown_name(&format!("argument of `{}`", entry.id), name, &names));
             ok = false;
             continue;
         };
-        if arguments
-            .iter()
-            .any(|(n, _, _): &(String, f64, String)| n == spec.name)
-        {
+        if arguments.iter().any(|(n, _, _): &(String, f64, String)| n == spec.name) {
             errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::DuplicateKey,
-                    name.span,
-                    format!("`{}` is given twice", spec.name),
-                )
-                .hint("keep one"),
+                Diagnostic::new(DiagnosticKind::DuplicateKey, name.span, format!("`{}` is given twice", spec.name))
+                    .hint("keep one"),
             );
             ok = false;
             continue;
         }
         match value_scalar(spec.name, value, spec.dimension, errors) {
-            Some((x, written)) if x.is_finite() && x >= 0.0 => {
-                arguments.push((spec.name.to_string(), x, written))
-            }
+            Some((x, written)) if x.is_finite() && x >= 0.0 => arguments.push((spec.name.to_string(), x, written)),
             Some((x, _)) => {
                 errors.push(
                     Diagnostic::new(
@@ -658,10 +442,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLa
                         value.span,
                         format!("`{}` = {x} must not be negative", spec.name),
                     )
-                    .hint(format!(
-                        "{} is a magnitude; the sign follows the sliding direction",
-                        spec.what
-                    )),
+                    .hint(format!("{} is a magnitude; the sign follows the sliding direction", spec.what)),
                 );
                 ok = false;
             }
@@ -687,19 +468,10 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLa
             }
         }
     }
-    ok.then(|| FrictionLawSpec {
-        id: entry.id.to_string(),
-        arguments,
-        span: call.span,
-    })
+    ok.then(|| FrictionLawSpec { id: entry.id.to_string(), arguments, span: call.span })
 }
 
-fn value_scalar(
-    key: &str,
-    value: &Value,
-    dim: Dimension,
-    errors: &mut Vec<Diagnostic>,
-) -> Option<(f64, String)> {
+fn value_scalar(key: &str, value: &Value, dim: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(f64, String)> {
     super::fields::scalar(key, value, dim, errors)
 }
 
@@ -720,18 +492,20 @@ fn check_friction_needs(
                 catalog::Needs::RoughnessRa => both(|g| g.roughness_ra.is_some()),
                 catalog::Needs::RoughnessRq => both(|g| g.roughness_rq.is_some()),
                 catalog::Needs::RoughnessRz => both(|g| g.roughness_rz.is_some()),
-                catalog::Needs::KinematicViscosity => {
-                    lubricant.is_some_and(|l| l.kinematic_viscosity_si().is_some())
-                }
-                catalog::Needs::PressureViscosity => {
-                    lubricant.is_some_and(|l| l.pressure_viscosity.is_some())
-                }
+                catalog::Needs::KinematicViscosity => lubricant.is_some_and(|l| l.kinematic_viscosity_si().is_some()),
+                catalog::Needs::PressureViscosity => lubricant.is_some_and(|l| l.pressure_viscosity.is_some()),
             };
             if !present && (lubricant.is_some() || *need == catalog::Needs::Lubricant) {
                 let hint = match need {
-                    catalog::Needs::Lubricant => "add `lubricant \"name\" { dynamic_viscosity = 95 mPa*s  density = 880 kg/m^3 }`".to_string(),
-                    catalog::Needs::KinematicViscosity => "add `density` or `kinematic_viscosity` to the lubricant".to_string(),
-                    catalog::Needs::PressureViscosity => "add `pressure_viscosity = 2.0e-8 1/Pa` to the lubricant".to_string(),
+                    catalog::Needs::Lubricant => {
+                        "add `lubricant \"name\" { dynamic_viscosity = 95 mPa*s  density = 880 kg/m^3 }`".to_string()
+                    }
+                    catalog::Needs::KinematicViscosity => {
+                        "add `density` or `kinematic_viscosity` to the lubricant".to_string()
+                    }
+                    catalog::Needs::PressureViscosity => {
+                        "add `pressure_viscosity = 2.0e-8 1/Pa` to the lubricant".to_string()
+                    }
                     other => format!("add `{} = 0.4 um` to both `pinion` and `wheel`", other.key()),
                 };
                 errors.push(
@@ -748,15 +522,7 @@ fn check_friction_needs(
 }
 
 fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
-    let f = Fields::read(
-        "the `analyses` block",
-        block.span,
-        &block.items,
-        &[],
-        &[],
-        ANALYSES,
-        errors,
-    );
+    let f = Fields::read("the `analyses` block", block.span, &block.items, &[], &[], ANALYSES, errors);
     let mut a = Analyses::default();
     for call in &f.calls {
         match call.name.text.as_str() {
@@ -764,11 +530,7 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                 let mut formulations = vec![Formulation::External, Formulation::Internal];
                 for (name, value) in &call.arguments {
                     if name.text != "formulations" {
-                        errors.push(unknown_name(
-                            "argument of `efficiency`",
-                            name,
-                            &["formulations"],
-                        ));
+                        errors.push(unknown_name("argument of `efficiency`", name, &["formulations"]));
                         continue;
                     }
                     match &value.kind {
@@ -782,16 +544,10 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                                     ListItem::Name(n) if n.text == "internal" => {
                                         formulations.push(Formulation::Internal)
                                     }
-                                    ListItem::Name(n) => {
-                                        errors.push(unknown_name("formulation", n, FORMULATIONS))
-                                    }
+                                    ListItem::Name(n) => errors.push(unknown_name("formulation", n, FORMULATIONS)),
                                     ListItem::Number(_, s) => errors.push(
-                                        Diagnostic::new(
-                                            DiagnosticKind::WrongDimension,
-                                            *s,
-                                            "a formulation is a name",
-                                        )
-                                        .hint("write `formulations = [external, internal]`"),
+                                        Diagnostic::new(DiagnosticKind::WrongDimension, *s, "a formulation is a name")
+                                            .hint("write `formulations = [external, internal]`"),
                                     ),
                                 }
                             }

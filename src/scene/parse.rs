@@ -16,8 +16,7 @@ pub struct GearParser;
 
 /// Parses a whole scene file.
 pub fn parse_scene_text(source: &str) -> Result<SceneAst, Vec<Diagnostic>> {
-    let mut pairs =
-        GearParser::parse(Rule::file, source).map_err(|e| vec![syntax_error(source, e)])?;
+    let mut pairs = GearParser::parse(Rule::file, source).map_err(|e| vec![syntax_error(source, e)])?;
     let file = pairs.next().expect("pest returns the file rule on success");
     let mut errors = Vec::new();
     let mut scene = None;
@@ -56,11 +55,7 @@ pub fn parse_unit_text(text: &str) -> Result<UnitExpr, Vec<Diagnostic>> {
 }
 
 fn parse_scene(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> SceneAst {
-    let mut scene = SceneAst {
-        title: String::new(),
-        title_span: pair.as_span().into(),
-        items: Vec::new(),
-    };
+    let mut scene = SceneAst { title: String::new(), title_span: pair.as_span().into(), items: Vec::new() };
     for p in pair.into_inner() {
         match p.as_rule() {
             Rule::kw_scene => {}
@@ -118,12 +113,7 @@ fn parse_block(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Block {
             rule => unreachable!("block: {rule:?}"),
         }
     }
-    Block {
-        kind: kind.expect("grammar: block has a kind"),
-        label,
-        items,
-        span,
-    }
+    Block { kind: kind.expect("grammar: block has a kind"), label, items, span }
 }
 
 fn parse_label(pair: Pair<Rule>) -> Name {
@@ -152,11 +142,7 @@ fn parse_call(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Call {
             rule => unreachable!("call: {rule:?}"),
         }
     }
-    Call {
-        name: name.expect("grammar: call has a name"),
-        arguments,
-        span,
-    }
+    Call { name: name.expect("grammar: call has a name"), arguments, span }
 }
 
 fn parse_arguments(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Vec<(Name, Value)> {
@@ -181,10 +167,7 @@ fn parse_argument(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (Name, Valu
             _ => value = Some(parse_value(p, errors)),
         }
     }
-    (
-        key.expect("grammar: argument has a name"),
-        value.expect("grammar: argument has a value"),
-    )
+    (key.expect("grammar: argument has a name"), value.expect("grammar: argument has a value"))
 }
 
 fn parse_value(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Value {
@@ -256,12 +239,7 @@ fn parse_range(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> ValueKind {
             rule => unreachable!("range: {rule:?}"),
         }
     }
-    ValueKind::Range {
-        from: bounds[0],
-        to: bounds[1],
-        unit,
-        step,
-    }
+    ValueKind::Range { from: bounds[0], to: bounds[1], unit, step }
 }
 
 fn parse_range_step(pair: Pair<Rule>) -> RangeStep {
@@ -298,11 +276,7 @@ fn parse_unit(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> UnitExpr {
             rule => unreachable!("unit: {rule:?}"),
         }
     }
-    UnitExpr {
-        text,
-        span,
-        factors,
-    }
+    UnitExpr { text, span, factors }
 }
 
 fn parse_unit_factor(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (String, Span, i32) {
@@ -322,9 +296,7 @@ fn parse_unit_factor(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (String,
                                 p.as_span().into(),
                                 format!("unit exponent `{}` is not supported", p.as_str()),
                             )
-                            .hint(
-                                "exponents are whole numbers from -6 to 6, not 0, as in `kg*m^2`",
-                            ),
+                            .hint("exponents are whole numbers from -6 to 6, not 0, as in `kg*m^2`"),
                         );
                         1
                     }
@@ -337,10 +309,7 @@ fn parse_unit_factor(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (String,
 }
 
 fn parse_ident(pair: Pair<Rule>) -> Name {
-    Name {
-        text: pair.as_str().to_string(),
-        span: pair.as_span().into(),
-    }
+    Name { text: pair.as_str().to_string(), span: pair.as_span().into() }
 }
 
 fn parse_number(pair: Pair<Rule>) -> f64 {
@@ -350,10 +319,7 @@ fn parse_number(pair: Pair<Rule>) -> f64 {
 }
 
 fn parse_string(pair: Pair<Rule>) -> String {
-    pair.into_inner()
-        .filter(|p| p.as_rule() == Rule::string_inner)
-        .map(|p| p.as_str().to_string())
-        .collect()
+    pair.into_inner().filter(|p| p.as_rule() == Rule::string_inner).map(|p| p.as_str().to_string()).collect()
 }
 
 /// A pest error as a diagnostic: "expected `=` or `{`, found `x`", at the exact column.
@@ -366,10 +332,7 @@ fn syntax_error(source: &str, error: pest::error::Error<Rule>) -> Diagnostic {
     let found = found_token(source, at);
     let span = Span::new(at, at + found.len());
     let (mut expected, unexpected) = match &error.variant {
-        ErrorVariant::ParsingError {
-            positives,
-            negatives,
-        } => (positives.clone(), negatives.clone()),
+        ErrorVariant::ParsingError { positives, negatives } => (positives.clone(), negatives.clone()),
         ErrorVariant::CustomError { message } => {
             return Diagnostic::new(DiagnosticKind::Syntax, span, message.clone());
         }
@@ -378,11 +341,7 @@ fn syntax_error(source: &str, error: pest::error::Error<Rule>) -> Diagnostic {
     expected.dedup_by_key(|r| describe_rule(*r));
     let mut words: Vec<&str> = expected.iter().map(|r| describe_rule(*r)).collect();
     words.dedup();
-    let found_text = if found.is_empty() {
-        "the end of the file".to_string()
-    } else {
-        format!("`{found}`")
-    };
+    let found_text = if found.is_empty() { "the end of the file".to_string() } else { format!("`{found}`") };
     let reason = if words.is_empty() {
         let not: Vec<&str> = unexpected.iter().map(|r| describe_rule(*r)).collect();
         format!("unexpected {}, found {found_text}", not.join(" or "))
@@ -403,9 +362,7 @@ fn syntax_hint(expected: &[Rule], found: &str) -> &'static str {
         "a list is `[a, b, c] unit`, values separated by commas"
     } else if expected.contains(&Rule::rparen) || expected.contains(&Rule::argument) {
         "arguments are written `name(key = value, key = value)`"
-    } else if expected.contains(&Rule::number)
-        || expected.contains(&Rule::quantity)
-        || expected.contains(&Rule::range)
+    } else if expected.contains(&Rule::number) || expected.contains(&Rule::quantity) || expected.contains(&Rule::range)
     {
         "a value is a number with a unit (`4.5 mm`), a list (`[1, 2] rpm`), a range (`100..3000 rpm step 100`), a name or a \"string\""
     } else if expected.contains(&Rule::eq) || expected.contains(&Rule::lbrace) {
@@ -447,12 +404,7 @@ pub fn describe_rule(rule: Rule) -> &'static str {
         Rule::file | Rule::scene | Rule::kw_scene => "`scene`",
         Rule::body | Rule::lbrace => "`{`",
         Rule::rbrace => "`}`",
-        Rule::assignment
-        | Rule::block
-        | Rule::call
-        | Rule::ident
-        | Rule::label
-        | Rule::argument => "a name",
+        Rule::assignment | Rule::block | Rule::call | Rule::ident | Rule::label | Rule::argument => "a name",
         Rule::arguments | Rule::lparen => "`(`",
         Rule::rparen => "`)`",
         Rule::range | Rule::quantity | Rule::number => "a number",

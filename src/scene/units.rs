@@ -21,13 +21,7 @@ pub struct Dimension {
 }
 
 const fn dim(length: i8, mass: i8, time: i8, temperature: i8, angle: i8) -> Dimension {
-    Dimension {
-        length,
-        mass,
-        time,
-        temperature,
-        angle,
-    }
+    Dimension { length, mass, time, temperature, angle }
 }
 
 impl Dimension {
@@ -55,13 +49,7 @@ impl Dimension {
     pub fn pow(self, e: i32) -> Dimension {
         let e = e.clamp(-127, 127) as i8;
         let p = |x: i8| x.saturating_mul(e);
-        dim(
-            p(self.length),
-            p(self.mass),
-            p(self.time),
-            p(self.temperature),
-            p(self.angle),
-        )
+        dim(p(self.length), p(self.mass), p(self.time), p(self.temperature), p(self.angle))
     }
 
     pub fn times(self, o: Dimension) -> Dimension {
@@ -76,20 +64,12 @@ impl Dimension {
 
     /// What a gear engineer calls a quantity of this dimension.
     pub fn name(self) -> &'static str {
-        NAMED
-            .iter()
-            .find(|(d, _)| *d == self)
-            .map_or("quantity", |(_, n)| n)
+        NAMED.iter().find(|(d, _)| *d == self).map_or("quantity", |(_, n)| n)
     }
 
     /// An example unit of this dimension, for hints.
     pub fn example_units(self) -> String {
-        let names: Vec<&str> = UNITS
-            .iter()
-            .filter(|u| u.dimension == self)
-            .map(|u| u.name)
-            .take(6)
-            .collect();
+        let names: Vec<&str> = UNITS.iter().filter(|u| u.dimension == self).map(|u| u.name).take(6).collect();
         if names.is_empty() {
             self.si_unit().to_string()
         } else {
@@ -104,13 +84,9 @@ impl Dimension {
         }
         let mut num = Vec::new();
         let mut den = Vec::new();
-        for (sym, e) in [
-            ("kg", self.mass),
-            ("m", self.length),
-            ("s", self.time),
-            ("K", self.temperature),
-            ("rad", self.angle),
-        ] {
+        for (sym, e) in
+            [("kg", self.mass), ("m", self.length), ("s", self.time), ("K", self.temperature), ("rad", self.angle)]
+        {
             match e {
                 0 => {}
                 1 => num.push(sym.to_string()),
@@ -186,20 +162,8 @@ pub struct UnitDef {
     pub description: &'static str,
 }
 
-const fn u(
-    name: &'static str,
-    factor: f64,
-    dimension: Dimension,
-    description: &'static str,
-) -> UnitDef {
-    UnitDef {
-        name,
-        factor,
-        dimension,
-        offset: 0.0,
-        composition: None,
-        description,
-    }
+const fn u(name: &'static str, factor: f64, dimension: Dimension, description: &'static str) -> UnitDef {
+    UnitDef { name, factor, dimension, offset: 0.0, composition: None, description }
 }
 
 const fn c(
@@ -209,14 +173,7 @@ const fn c(
     composition: (f64, &'static str),
     description: &'static str,
 ) -> UnitDef {
-    UnitDef {
-        name,
-        factor,
-        dimension,
-        offset: 0.0,
-        composition: Some(composition),
-        description,
-    }
+    UnitDef { name, factor, dimension, offset: 0.0, composition: Some(composition), description }
 }
 
 const INCH: f64 = 0.0254;
@@ -231,53 +188,17 @@ pub const UNITS: &[UnitDef] = &[
     c("cm", 1e-2, Dimension::LENGTH, (1e-2, "m"), "centimetre"),
     c("mm", 1e-3, Dimension::LENGTH, (1e-3, "m"), "millimetre"),
     c("um", 1e-6, Dimension::LENGTH, (1e-3, "mm"), "micrometre"),
-    c(
-        "µm",
-        1e-6,
-        Dimension::LENGTH,
-        (1.0, "um"),
-        "micrometre (micro sign)",
-    ),
-    c(
-        "μm",
-        1e-6,
-        Dimension::LENGTH,
-        (1.0, "um"),
-        "micrometre (Greek mu)",
-    ),
+    c("µm", 1e-6, Dimension::LENGTH, (1.0, "um"), "micrometre (micro sign)"),
+    c("μm", 1e-6, Dimension::LENGTH, (1.0, "um"), "micrometre (Greek mu)"),
     c("in", INCH, Dimension::LENGTH, (25.4, "mm"), "inch"),
-    c(
-        "uin",
-        INCH * 1e-6,
-        Dimension::LENGTH,
-        (1e-6, "in"),
-        "microinch",
-    ),
-    c(
-        "µin",
-        INCH * 1e-6,
-        Dimension::LENGTH,
-        (1.0, "uin"),
-        "microinch (micro sign)",
-    ),
-    c(
-        "μin",
-        INCH * 1e-6,
-        Dimension::LENGTH,
-        (1.0, "uin"),
-        "microinch (Greek mu)",
-    ),
+    c("uin", INCH * 1e-6, Dimension::LENGTH, (1e-6, "in"), "microinch"),
+    c("µin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (micro sign)"),
+    c("μin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (Greek mu)"),
     c("ft", 12.0 * INCH, Dimension::LENGTH, (12.0, "in"), "foot"),
     // mass
     u("kg", 1.0, Dimension::MASS, "kilogram"),
     c("g", 1e-3, Dimension::MASS, (1e-3, "kg"), "gram"),
-    c(
-        "lb",
-        POUND,
-        Dimension::MASS,
-        (0.453_592_37, "kg"),
-        "pound (mass)",
-    ),
+    c("lb", POUND, Dimension::MASS, (0.453_592_37, "kg"), "pound (mass)"),
     // time
     u("s", 1.0, Dimension::TIME, "second"),
     c("ms", 1e-3, Dimension::TIME, (1e-3, "s"), "millisecond"),
@@ -286,34 +207,10 @@ pub const UNITS: &[UnitDef] = &[
     c("Hz", 1.0, Dimension::FREQUENCY, (1.0, "1/s"), "hertz"),
     // angle
     u("rad", 1.0, Dimension::ANGLE, "radian"),
-    c(
-        "deg",
-        PI / 180.0,
-        Dimension::ANGLE,
-        (PI / 180.0, "rad"),
-        "degree",
-    ),
-    c(
-        "°",
-        PI / 180.0,
-        Dimension::ANGLE,
-        (1.0, "deg"),
-        "degree (sign)",
-    ),
-    c(
-        "rev",
-        2.0 * PI,
-        Dimension::ANGLE,
-        (2.0 * PI, "rad"),
-        "revolution",
-    ),
-    c(
-        "rpm",
-        2.0 * PI / 60.0,
-        Dimension::ANGULAR_VELOCITY,
-        (1.0, "rev/min"),
-        "revolutions per minute",
-    ),
+    c("deg", PI / 180.0, Dimension::ANGLE, (PI / 180.0, "rad"), "degree"),
+    c("°", PI / 180.0, Dimension::ANGLE, (1.0, "deg"), "degree (sign)"),
+    c("rev", 2.0 * PI, Dimension::ANGLE, (2.0 * PI, "rad"), "revolution"),
+    c("rpm", 2.0 * PI / 60.0, Dimension::ANGULAR_VELOCITY, (1.0, "rev/min"), "revolutions per minute"),
     // temperature
     u("K", 1.0, Dimension::TEMPERATURE, "kelvin"),
     UnitDef {
@@ -327,93 +224,27 @@ pub const UNITS: &[UnitDef] = &[
     // force
     c("N", 1.0, Dimension::FORCE, (1.0, "kg*m/s^2"), "newton"),
     c("kN", 1e3, Dimension::FORCE, (1e3, "N"), "kilonewton"),
-    c(
-        "lbf",
-        LBF,
-        Dimension::FORCE,
-        (STANDARD_GRAVITY, "lb*m/s^2"),
-        "pound-force",
-    ),
+    c("lbf", LBF, Dimension::FORCE, (STANDARD_GRAVITY, "lb*m/s^2"), "pound-force"),
     // pressure and modulus
     c("Pa", 1.0, Dimension::PRESSURE, (1.0, "N/m^2"), "pascal"),
-    c(
-        "mPa",
-        1e-3,
-        Dimension::PRESSURE,
-        (1e-3, "Pa"),
-        "millipascal (for mPa*s)",
-    ),
+    c("mPa", 1e-3, Dimension::PRESSURE, (1e-3, "Pa"), "millipascal (for mPa*s)"),
     c("kPa", 1e3, Dimension::PRESSURE, (1e3, "Pa"), "kilopascal"),
-    c(
-        "MPa",
-        1e6,
-        Dimension::PRESSURE,
-        (1.0, "N/mm^2"),
-        "megapascal",
-    ),
+    c("MPa", 1e6, Dimension::PRESSURE, (1.0, "N/mm^2"), "megapascal"),
     c("GPa", 1e9, Dimension::PRESSURE, (1e3, "MPa"), "gigapascal"),
     c("bar", 1e5, Dimension::PRESSURE, (1e5, "Pa"), "bar"),
-    c(
-        "psi",
-        LBF / (INCH * INCH),
-        Dimension::PRESSURE,
-        (1.0, "lbf/in^2"),
-        "pound-force per square inch",
-    ),
-    c(
-        "ksi",
-        1e3 * LBF / (INCH * INCH),
-        Dimension::PRESSURE,
-        (1e3, "psi"),
-        "kilopound-force per square inch",
-    ),
+    c("psi", LBF / (INCH * INCH), Dimension::PRESSURE, (1.0, "lbf/in^2"), "pound-force per square inch"),
+    c("ksi", 1e3 * LBF / (INCH * INCH), Dimension::PRESSURE, (1e3, "psi"), "kilopound-force per square inch"),
     // viscosity
-    c(
-        "P",
-        0.1,
-        Dimension::DYNAMIC_VISCOSITY,
-        (0.1, "Pa*s"),
-        "poise",
-    ),
-    c(
-        "cP",
-        1e-3,
-        Dimension::DYNAMIC_VISCOSITY,
-        (1.0, "mPa*s"),
-        "centipoise",
-    ),
-    c(
-        "reyn",
-        LBF / (INCH * INCH),
-        Dimension::DYNAMIC_VISCOSITY,
-        (1.0, "lbf*s/in^2"),
-        "reyn",
-    ),
-    c(
-        "St",
-        1e-4,
-        Dimension::KINEMATIC_VISCOSITY,
-        (1.0, "cm^2/s"),
-        "stokes",
-    ),
-    c(
-        "cSt",
-        1e-6,
-        Dimension::KINEMATIC_VISCOSITY,
-        (1.0, "mm^2/s"),
-        "centistokes",
-    ),
+    c("P", 0.1, Dimension::DYNAMIC_VISCOSITY, (0.1, "Pa*s"), "poise"),
+    c("cP", 1e-3, Dimension::DYNAMIC_VISCOSITY, (1.0, "mPa*s"), "centipoise"),
+    c("reyn", LBF / (INCH * INCH), Dimension::DYNAMIC_VISCOSITY, (1.0, "lbf*s/in^2"), "reyn"),
+    c("St", 1e-4, Dimension::KINEMATIC_VISCOSITY, (1.0, "cm^2/s"), "stokes"),
+    c("cSt", 1e-6, Dimension::KINEMATIC_VISCOSITY, (1.0, "mm^2/s"), "centistokes"),
     // power and energy
     c("J", 1.0, Dimension::TORQUE, (1.0, "N*m"), "joule"),
     c("W", 1.0, Dimension::POWER, (1.0, "J/s"), "watt"),
     c("kW", 1e3, Dimension::POWER, (1e3, "W"), "kilowatt"),
-    c(
-        "hp",
-        550.0 * LBF * 12.0 * INCH,
-        Dimension::POWER,
-        (550.0, "lbf*ft/s"),
-        "horsepower (mechanical)",
-    ),
+    c("hp", 550.0 * LBF * 12.0 * INCH, Dimension::POWER, (550.0, "lbf*ft/s"), "horsepower (mechanical)"),
 ];
 
 /// Looks a unit name up in the table.
@@ -430,11 +261,7 @@ pub struct Scale {
 }
 
 impl Scale {
-    pub const ONE: Scale = Scale {
-        factor: 1.0,
-        offset: 0.0,
-        dimension: Dimension::NONE,
-    };
+    pub const ONE: Scale = Scale { factor: 1.0, offset: 0.0, dimension: Dimension::NONE };
 
     /// Converts a number written in this unit to SI.
     pub fn to_si(&self, x: f64) -> f64 {
@@ -450,15 +277,8 @@ impl Scale {
 /// Why a unit expression could not be evaluated: the index of the offending factor.
 #[derive(Debug, Clone, PartialEq)]
 pub enum UnitError {
-    Unknown {
-        index: usize,
-        name: String,
-        suggestion: Option<&'static str>,
-    },
-    OffsetInCompound {
-        index: usize,
-        name: String,
-    },
+    Unknown { index: usize, name: String, suggestion: Option<&'static str> },
+    OffsetInCompound { index: usize, name: String },
 }
 
 impl fmt::Display for UnitError {
@@ -466,10 +286,7 @@ impl fmt::Display for UnitError {
         match self {
             UnitError::Unknown { name, .. } => write!(f, "unknown unit `{name}`"),
             UnitError::OffsetInCompound { name, .. } => {
-                write!(
-                    f,
-                    "`{name}` is an absolute temperature and cannot be part of a compound unit"
-                )
+                write!(f, "`{name}` is an absolute temperature and cannot be part of a compound unit")
             }
         }
     }
@@ -487,10 +304,7 @@ pub fn evaluate<'a>(factors: impl IntoIterator<Item = (&'a str, i32)>) -> Result
         })?;
         if def.offset != 0.0 {
             if factors.len() != 1 || *exponent != 1 {
-                return Err(UnitError::OffsetInCompound {
-                    index,
-                    name: name.to_string(),
-                });
+                return Err(UnitError::OffsetInCompound { index, name: name.to_string() });
             }
             scale.offset = def.offset;
         }
@@ -505,12 +319,7 @@ pub fn suggest(name: &str) -> Option<&'static str> {
     let lower = name.to_ascii_lowercase();
     UNITS
         .iter()
-        .map(|u| {
-            (
-                strsim::jaro_winkler(&lower, &u.name.to_ascii_lowercase()),
-                u.name,
-            )
-        })
+        .map(|u| (strsim::jaro_winkler(&lower, &u.name.to_ascii_lowercase()), u.name))
         .filter(|(s, _)| *s > 0.75)
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, n)| n)
@@ -549,11 +358,7 @@ where
     U: uom::si::Units<f64> + ?Sized,
 {
     fn from_si_value(value: f64) -> Self {
-        uom::si::Quantity {
-            dimension: std::marker::PhantomData,
-            units: std::marker::PhantomData,
-            value,
-        }
+        uom::si::Quantity { dimension: std::marker::PhantomData, units: std::marker::PhantomData, value }
     }
 }
 

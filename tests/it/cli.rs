@@ -16,11 +16,7 @@ fn run_writes_a_complete_report_folder() {
         .current_dir(crate::root())
         .output()
         .unwrap();
-    assert!(
-        status.status.success(),
-        "{}",
-        String::from_utf8_lossy(&status.stderr)
-    );
+    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
     for f in ["report.md", "report.json", "contact_state.svg"] {
         assert!(out.join("fzg_type_c").join(f).is_file(), "{f} missing");
     }
@@ -32,36 +28,25 @@ fn run_writes_a_complete_report_folder() {
         .output()
         .unwrap();
     assert!(again.status.success());
-    let names: Vec<String> = std::fs::read_dir(&out)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into())
-        .collect();
+    let names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into()).collect();
     assert_eq!(names, vec!["fzg_type_c".to_string()]);
     std::fs::remove_dir_all(&out).unwrap();
 }
 
 #[test]
 fn bad_scene_exits_1_with_file_line_column() {
-    let o = gearloss()
-        .args(["check", "tests/specs/err/wrong_dimension.gear"])
-        .current_dir(crate::root())
-        .output()
-        .unwrap();
+    let o =
+        gearloss().args(["check", "tests/specs/err/wrong_dimension.gear"]).current_dir(crate::root()).output().unwrap();
     assert_eq!(o.status.code(), Some(1));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        err.contains("tests/specs/err/wrong_dimension.gear:4:31"),
-        "{err}"
-    );
+    assert!(err.contains("tests/specs/err/wrong_dimension.gear:4:31"), "{err}");
     assert!(err.contains("expects a length"), "{err}");
 }
 
 #[test]
 fn missing_file_exits_3_and_bad_arguments_exit_2() {
-    let o = gearloss()
-        .args(["check", "no/such/scene.gear"])
-        .output()
-        .unwrap();
+    let o = gearloss().args(["check", "no/such/scene.gear"]).output().unwrap();
     assert_eq!(o.status.code(), Some(3));
     let o = gearloss().args(["frobnicate"]).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
@@ -69,17 +54,10 @@ fn missing_file_exits_3_and_bad_arguments_exit_2() {
 
 #[test]
 fn check_and_units_succeed() {
-    let o = gearloss()
-        .args(["check", "specs/us_spur_inch.gear"])
-        .current_dir(crate::root())
-        .output()
-        .unwrap();
+    let o = gearloss().args(["check", "specs/us_spur_inch.gear"]).current_dir(crate::root()).output().unwrap();
     assert!(o.status.success());
     let o = gearloss().args(["units"]).output().unwrap();
     assert!(o.status.success());
     let table = String::from_utf8_lossy(&o.stdout);
-    assert!(
-        table.contains("reyn") && table.contains("lbf*s/in^2"),
-        "{table}"
-    );
+    assert!(table.contains("reyn") && table.contains("lbf*s/in^2"), "{table}");
 }

@@ -22,10 +22,7 @@ fn ctx(g: &SpurGeometry) -> LawContext<'_> {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     LawContext {
         geometry: g,
-        state: OperatingState {
-            pinion_torque: 239.3,
-            pinion_speed: 1000.0 * std::f64::consts::PI / 30.0,
-        },
+        state: OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 },
         tribology: tribology(&scene, reduced_modulus([206e9; 2], [0.3; 2])),
         sharing: Sharing::Equal,
     }
@@ -35,25 +32,15 @@ fn ctx(g: &SpurGeometry) -> LawContext<'_> {
 /// (external / internal, given tip diameters), 98.411 % / 98.432 % with the addendum rule, ± 0.001 points.
 #[test]
 fn fzg_type_c_mean_efficiency_matches_the_paper() {
-    let cases = [
-        (true, 0.04, 99.221, 99.226),
-        (true, 0.08, 98.442, 98.462),
-        (false, 0.08, 98.411, 98.432),
-    ];
+    let cases = [(true, 0.04, 99.221, 99.226), (true, 0.08, 98.442, 98.462), (false, 0.08, 98.411, 98.432)];
     for (tips, mu, ext, int) in cases {
         let g = SpurGeometry::compute(&fzg_input(tips)).unwrap();
         let c = ctx(&g);
         let law = Coulomb { mu };
         let e = 100.0 * mean_efficiency(&c, &law, External).value;
         let i = 100.0 * mean_efficiency(&c, &law, Internal).value;
-        assert!(
-            (e - ext).abs() < 1e-3,
-            "tips {tips} μ {mu}: external {e:.5} vs {ext}"
-        );
-        assert!(
-            (i - int).abs() < 1e-3,
-            "tips {tips} μ {mu}: internal {i:.5} vs {int}"
-        );
+        assert!((e - ext).abs() < 1e-3, "tips {tips} μ {mu}: external {e:.5} vs {ext}");
+        assert!((i - int).abs() < 1e-3, "tips {tips} μ {mu}: internal {i:.5} vs {int}");
     }
 }
 
@@ -82,11 +69,7 @@ fn external_mean_equals_one_minus_mu_hv() {
         let hv = ohlendorf_loss_factor(&c);
         for mu in [0.02, 0.05, 0.1] {
             let e = mean_efficiency(&c, &Coulomb { mu }, External).value;
-            assert!(
-                (e - (1.0 - mu * hv)).abs() < 1e-9,
-                "μ {mu}: {e} vs {}",
-                1.0 - mu * hv
-            );
+            assert!((e - (1.0 - mu * hv)).abs() < 1e-9, "μ {mu}: {e} vs {}", 1.0 - mu * hv);
         }
     }
 }
@@ -98,10 +81,8 @@ fn mean_reports_an_error_estimate_within_tolerance() {
     let m = mean_efficiency(&c, &Coulomb { mu: 0.08 }, Internal);
     assert!(m.error < 1e-10 * m.value, "error {}", m.error);
     let p = efficiency::evaluate_efficiency(&c, &Coulomb { mu: 0.08 }, External, &[0.5]).power_loss;
-    let expected = (1.0 - mean_efficiency(&c, &Coulomb { mu: 0.08 }, External).value)
-        * 239.3
-        * 1000.0
-        * std::f64::consts::PI
-        / 30.0;
+    let expected =
+        (1.0 - mean_efficiency(&c, &Coulomb { mu: 0.08 }, External).value) * 239.3 * 1000.0 * std::f64::consts::PI
+            / 30.0;
     assert!((p - expected).abs() < 1e-9 * expected);
 }

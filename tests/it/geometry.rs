@@ -13,21 +13,13 @@ fn fzg() -> SpurGeometry {
 #[test]
 fn fzg_type_c_against_the_paper() {
     let g = fzg();
-    assert!(
-        (g.contact_ratio - 1.4362).abs() < 1e-4,
-        "ε_α = {}",
-        g.contact_ratio
-    );
+    assert!((g.contact_ratio - 1.4362).abs() < 1e-4, "ε_α = {}", g.contact_ratio);
     assert!(
         (g.operating_pressure_angle.to_degrees() - 22.4388).abs() < 1e-4,
         "α_w = {}",
         g.operating_pressure_angle.to_degrees()
     );
-    assert!(
-        (g.line_of_action_length * 1e3 - 34.93).abs() < 5e-3,
-        "T1T2 = {} mm",
-        g.line_of_action_length * 1e3
-    );
+    assert!((g.line_of_action_length * 1e3 - 34.93).abs() < 5e-3, "T1T2 = {} mm", g.line_of_action_length * 1e3);
     assert_eq!(g.tip_source, [TipSource::Given, TipSource::Given]);
 }
 
@@ -55,18 +47,9 @@ fn fzg_type_c_by_an_independent_hand_calculation() {
     let p = g.points;
     assert!(rel(p.e - p.b, g.base_pitch) < 1e-12 && rel(p.d - p.a, g.base_pitch) < 1e-12);
     assert!(rel(p.p, rb1 * alpha_w.tan()) < 1e-12);
-    assert!(
-        rel(
-            g.addendum_contact_ratio[0] + g.addendum_contact_ratio[1],
-            g.contact_ratio
-        ) < 1e-12
-    );
+    assert!(rel(g.addendum_contact_ratio[0] + g.addendum_contact_ratio[1], g.contact_ratio) < 1e-12);
     // The zero-backlash centre distance of the paper's profile shifts is the given 91.5 mm to 0.1 µm.
-    assert!(
-        (g.zero_backlash_center_distance - a).abs() < 1e-6,
-        "a_0 = {}",
-        g.zero_backlash_center_distance
-    );
+    assert!((g.zero_backlash_center_distance - a).abs() < 1e-6, "a_0 = {}", g.zero_backlash_center_distance);
 }
 
 /// The inch scene: shifted teeth, tip diameters by the addendum rule, centre distance from the
@@ -92,20 +75,12 @@ fn inch_scene_contact_ratio_by_the_iso_21771_tangent_form() {
     let alpha_w = 0.5 * (lo + hi);
     let da = |z: f64, x: f64| m * (z + 2.0 + 2.0 * x);
     let alpha_a = |z: f64, x: f64| ((m * z * alpha.cos()) / da(z, x)).acos();
-    let eps = (z1 * (alpha_a(z1, x1).tan() - alpha_w.tan())
-        + z2 * (alpha_a(z2, x2).tan() - alpha_w.tan()))
-        / (2.0 * PI);
-    assert!(
-        (g.contact_ratio - eps).abs() < 1e-10,
-        "ε_α = {} vs ISO 21771 {eps}",
-        g.contact_ratio
-    );
+    let eps =
+        (z1 * (alpha_a(z1, x1).tan() - alpha_w.tan()) + z2 * (alpha_a(z2, x2).tan() - alpha_w.tan())) / (2.0 * PI);
+    assert!((g.contact_ratio - eps).abs() < 1e-10, "ε_α = {} vs ISO 21771 {eps}", g.contact_ratio);
     assert!((g.contact_ratio_iso21771() - eps).abs() < 1e-10);
     assert!((g.operating_pressure_angle - alpha_w).abs() < 1e-12);
-    assert_eq!(
-        g.tip_source,
-        [TipSource::AddendumRule, TipSource::AddendumRule]
-    );
+    assert_eq!(g.tip_source, [TipSource::AddendumRule, TipSource::AddendumRule]);
     assert!((g.module - m).abs() < 1e-15, "m = 1/P_d");
 }
 
@@ -122,11 +97,7 @@ fn high_contact_ratio_pairs_share_load_by_thirds() {
         face_width: 0.025,
     };
     let g = SpurGeometry::compute(&input).unwrap();
-    assert!(
-        g.contact_ratio > 2.0 && g.contact_ratio < 3.0,
-        "ε_α = {}",
-        g.contact_ratio
-    );
+    assert!(g.contact_ratio > 2.0 && g.contact_ratio < 3.0, "ε_α = {}", g.contact_ratio);
     let p = g.points;
     // Within a mesh cycle the reference pair sees 3 pairs while a third pair is inside (A, E), else 2.
     let n_at = |u: f64| g.pairs_in_contact(u);
@@ -135,30 +106,16 @@ fn high_contact_ratio_pairs_share_load_by_thirds() {
     assert_eq!(n_at(p.a + (frac + 0.5 * (1.0 - frac)) * g.base_pitch), 2);
     // Time-average of 1/n over one base pitch equals 1/ε_α (the load is always carried once in total).
     let k = 200_000;
-    let mean_pairs: f64 = (0..k)
-        .map(|i| n_at(p.a + (i as f64 + 0.5) / k as f64 * g.base_pitch) as f64)
-        .sum::<f64>()
-        / k as f64;
-    assert!(
-        (mean_pairs - g.contact_ratio).abs() < 1e-4,
-        "mean pairs {mean_pairs} vs ε_α {}",
-        g.contact_ratio
-    );
+    let mean_pairs: f64 =
+        (0..k).map(|i| n_at(p.a + (i as f64 + 0.5) / k as f64 * g.base_pitch) as f64).sum::<f64>() / k as f64;
+    assert!((mean_pairs - g.contact_ratio).abs() < 1e-4, "mean pairs {mean_pairs} vs ε_α {}", g.contact_ratio);
 }
 
 #[test]
 fn equal_sharing_carries_the_whole_load_between_b_and_d() {
     let g = fzg();
     let p = g.points;
-    for (u, n) in [
-        (p.a, 2),
-        (p.b, 1),
-        (p.p, 1),
-        (p.d, 1),
-        (p.e, 2),
-        (0.5 * (p.a + p.b), 2),
-        (0.5 * (p.d + p.e), 2),
-    ] {
+    for (u, n) in [(p.a, 2), (p.b, 1), (p.p, 1), (p.d, 1), (p.e, 2), (0.5 * (p.a + p.b), 2), (0.5 * (p.d + p.e), 2)] {
         assert_eq!(g.pairs_in_contact(u), n, "at {u}");
     }
 }
@@ -169,10 +126,7 @@ fn contact_state_closed_forms() {
     use gearloss::geometry::contact::{reduced_modulus, Sharing};
     use gearloss::geometry::OperatingState;
     let g = fzg();
-    let op = OperatingState {
-        pinion_torque: 302.0,
-        pinion_speed: 1000.0 * PI / 30.0,
-    };
+    let op = OperatingState { pinion_torque: 302.0, pinion_speed: 1000.0 * PI / 30.0 };
     let e_r = reduced_modulus([206e9, 206e9], [0.3, 0.3]);
     assert!((e_r - 2.0 * 206e9 / (2.0 * 0.91)).abs() < 1.0);
     for i in 0..=20 {
@@ -180,20 +134,11 @@ fn contact_state_closed_forms() {
         let c = g.contact_at(u, &op, e_r, Sharing::Equal);
         let vs = op.pinion_speed * (1.0 + 16.0 / 24.0) * c.s.abs();
         assert!((c.sliding_velocity - vs).abs() < 1e-12 * (1.0 + vs));
+        assert!((PI / 2.0 * c.hertz_pressure * c.hertz_half_width - c.load_per_width).abs() < 1e-9 * c.load_per_width);
         assert!(
-            (PI / 2.0 * c.hertz_pressure * c.hertz_half_width - c.load_per_width).abs()
-                < 1e-9 * c.load_per_width
-        );
-        assert!(
-            (c.reduced_radius
-                - c.radius_of_curvature[0] * c.radius_of_curvature[1] / g.line_of_action_length)
-                .abs()
+            (c.reduced_radius - c.radius_of_curvature[0] * c.radius_of_curvature[1] / g.line_of_action_length).abs()
                 < 1e-15
         );
     }
-    assert!(
-        g.contact_at(g.points.p, &op, e_r, Sharing::Equal)
-            .sliding_velocity
-            < 1e-12
-    );
+    assert!(g.contact_at(g.points.p, &op, e_r, Sharing::Equal).sliding_velocity < 1e-12);
 }

@@ -2,8 +2,10 @@
 
 mod cli;
 mod efficiency;
+mod friction;
 mod fuzz;
 mod geometry;
+mod properties;
 mod specs;
 mod units;
 
@@ -17,6 +19,5 @@ pub fn root() -> PathBuf {
 /// Reads a scene and lowers it, panicking with the rendered diagnostics if it fails.
 pub fn scene(path: &Path) -> gearloss::Scene {
     let source = std::fs::read_to_string(path).unwrap();
-    gearloss::check(&path.display().to_string(), &source)
-        .unwrap_or_else(|e| panic!("{}", e.render(false)))
+    gearloss::check(&path.display().to_string(), &source).unwrap_or_else(|e| panic!("{}", e.render(false)))
 }

@@ -6,10 +6,7 @@ use std::path::Path;
 
 fn source_name(path: &Path) -> String {
     // Relative to the project root, so snapshots hold no absolute path.
-    path.strip_prefix(crate::root())
-        .unwrap_or(path)
-        .display()
-        .to_string()
+    path.strip_prefix(crate::root()).unwrap_or(path).display().to_string()
 }
 
 fn render(path: &Path) -> gearloss::RenderedReport {
@@ -43,15 +40,10 @@ fn err_fixtures_fail_with_diagnostics() {
     let mut count = 0;
     insta::glob!("../specs/err", "*.gear", |path| {
         let source = std::fs::read_to_string(path).unwrap();
-        let errors =
-            gearloss::check(&source_name(path), &source).expect_err("an err fixture must fail");
+        let errors = gearloss::check(&source_name(path), &source).expect_err("an err fixture must fail");
         assert!(!errors.diagnostics.is_empty());
         for d in &errors.diagnostics {
-            assert!(
-                !d.hints.is_empty(),
-                "every diagnostic carries a hint: {}",
-                d.reason
-            );
+            assert!(!d.hints.is_empty(), "every diagnostic carries a hint: {}", d.reason);
             assert!(d.span.end <= source.len());
         }
         count += 1;
@@ -85,10 +77,7 @@ fn committed_reports_are_up_to_date() {
             }
         }
     }
-    assert!(
-        stale.is_empty(),
-        "out of date (run `gearloss run` on each scene in specs/): {stale:#?}"
-    );
+    assert!(stale.is_empty(), "out of date (run `gearloss run` on each scene in specs/): {stale:#?}");
 }
 
 #[test]

@@ -7,8 +7,7 @@ use gearloss::scene::units::{self, Dimension, UNITS};
 
 fn scale(text: &str) -> units::Scale {
     let u = parse_unit_text(text).unwrap_or_else(|e| panic!("{text}: {e:?}"));
-    units::evaluate(u.factors.iter().map(|(n, _, e)| (n.as_str(), *e)))
-        .unwrap_or_else(|e| panic!("{text}: {e}"))
+    units::evaluate(u.factors.iter().map(|(n, _, e)| (n.as_str(), *e))).unwrap_or_else(|e| panic!("{text}: {e}"))
 }
 
 /// Relative tolerance for factor comparisons: table constants are exact decimals, so only rounding differs.
@@ -27,14 +26,7 @@ fn every_alias_equals_its_composition() {
         };
         let s = scale(expr);
         assert_eq!(s.dimension, u.dimension, "{} vs {expr}", u.name);
-        assert!(
-            close(u.factor, k * s.factor),
-            "{}: {} vs {} × {expr} = {}",
-            u.name,
-            u.factor,
-            k,
-            k * s.factor
-        );
+        assert!(close(u.factor, k * s.factor), "{}: {} vs {} × {expr} = {}", u.name, u.factor, k, k * s.factor);
         checked += 1;
     }
     assert!(checked >= 40, "only {checked} compositions checked");
@@ -118,24 +110,12 @@ fn factors_agree_with_uom() {
         ("uin", Length::new::<length::microinch>(1.0).value),
         ("ft", Length::new::<length::foot>(1.0).value),
         ("lbf", Force::new::<force::pound_force>(1.0).value),
-        (
-            "psi",
-            Pressure::new::<pressure::pound_force_per_square_inch>(1.0).value,
-        ),
+        ("psi", Pressure::new::<pressure::pound_force_per_square_inch>(1.0).value),
         ("lbf*in", Torque::new::<torque::pound_force_inch>(1.0).value),
         ("lbf*ft", Torque::new::<torque::pound_force_foot>(1.0).value),
-        (
-            "rpm",
-            AngularVelocity::new::<angular_velocity::revolution_per_minute>(1.0).value,
-        ),
-        (
-            "cP",
-            DynamicViscosity::new::<dynamic_viscosity::centipoise>(1.0).value,
-        ),
-        (
-            "reyn",
-            DynamicViscosity::new::<dynamic_viscosity::reyn>(1.0).value,
-        ),
+        ("rpm", AngularVelocity::new::<angular_velocity::revolution_per_minute>(1.0).value),
+        ("cP", DynamicViscosity::new::<dynamic_viscosity::centipoise>(1.0).value),
+        ("reyn", DynamicViscosity::new::<dynamic_viscosity::reyn>(1.0).value),
         ("hp", Power::new::<power::horsepower>(1.0).value),
     ];
     // uom rounds the pound-force to 4.448222 N (7 digits); the table uses the exact 0.45359237 kg × 9.80665 m/s².
@@ -158,28 +138,12 @@ fn celsius_is_absolute_and_alone() {
 #[test]
 fn wrong_dimension_is_refused_with_the_expected_name() {
     let errors = unit_scale("N", Dimension::LENGTH).unwrap_err();
-    assert!(
-        errors[0].reason.contains("expects a length"),
-        "{}",
-        errors[0].reason
-    );
-    assert_eq!(
-        unit_scale("lbf*in", Dimension::TORQUE).unwrap(),
-        scale("lbf").factor * 0.0254
-    );
+    assert!(errors[0].reason.contains("expects a length"), "{}", errors[0].reason);
+    assert_eq!(unit_scale("lbf*in", Dimension::TORQUE).unwrap(), scale("lbf").factor * 0.0254);
 }
 
 #[test]
 fn unknown_units_get_a_suggestion() {
     let err = units::evaluate([("mmm", 1)]).unwrap_err();
-    assert!(
-        matches!(
-            err,
-            units::UnitError::Unknown {
-                suggestion: Some("mm"),
-                ..
-            }
-        ),
-        "{err:?}"
-    );
+    assert!(matches!(err, units::UnitError::Unknown { suggestion: Some("mm"), .. }), "{err:?}");
 }

@@ -1,0 +1,137 @@
+//! report.md: the friction, film and efficiency sections.
+
+use std::fmt::Write;
+
+use super::markdown::{fixed, header, row};
+use crate::report::friction::MuValue;
+use crate::report::{formulation_name, OperatingPointReport, Report};
+
+/// Film, μ along the line of action, and efficiency at one operating point.
+pub fn point(out: &mut String, op: &OperatingPointReport) {
+    if let Some(film) = &op.film {
+        let _ = writeln!(out, "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and Λ:\n");
+        header(out, &["point", "T1C mm", "h_c µm", "h_min µm", "Λ"]);
+        for f in film {
+            row(
+                out,
+                &[
+                    f.point.unwrap_or("").into(),
+                    fixed(f.distance_from_t1.si() * 1e3, 3),
+                    fixed(f.central_film.si() * 1e6, 4),
+                    fixed(f.minimum_film.si() * 1e6, 4),
+                    f.lambda.map_or("—".into(), |l| fixed(l.0, 3)),
+                ],
+            );
+        }
+        let _ = writeln!(out);
+    }
+    if op.friction.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "Signed coefficient of friction along the line of action (negative in approach):\n");
+    let mut cols = vec!["point".to_string(), "T1C mm".to_string()];
+    cols.extend(op.friction.iter().map(|l| format!("`{}`", l.label)));
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    for (i, r) in op.friction[0].mu_along_loa.iter().enumerate() {
+        let mut cells = vec![r.point.unwrap_or("").to_string(), fixed(r.distance_from_t1.si() * 1e3, 3)];
+        for law in &op.friction {
+            let m = &law.mu_along_loa[i];
+            let mut cell = match m.mu {
+                MuValue::Value(v) => fixed(v.0, 5),
+                MuValue::Text(t) => t.to_string(),
+            };
+            if let Some(reg) = m.regime {
+                cell.push_str(&format!(" ({})", format!("{reg:?}").to_lowercase()));
+            }
+            cells.push(cell);
+        }
+        row(out, &cells);
+    }
+    let _ = writeln!(out);
+    header(
+        out,
+        &[
+            "law",
+            "mean abs μ (A–E)",
+            "outside validity",
+            "formulation",
+            "η̄ %",
+            "error est.",
+            "P_loss W",
+            "η min %",
+            "η max %",
+            "1 − μ̄ H_V %",
+        ],
+    );
+    for law in &op.friction {
+        let validity = format!("{}/{}", law.validity.outside, law.validity.samples);
+        if law.efficiency.is_empty() {
+            row(
+                out,
+                &[
+                    format!("`{}`", law.label),
+                    fixed(law.mean_abs_mu.0, 5),
+                    validity.clone(),
+                    "—".into(),
+                    "—".into(),
+                    "—".into(),
+                    "—".into(),
+                    "—".into(),
+                    "—".into(),
+                    fixed(100.0 * law.ohlendorf_efficiency.0, 4),
+                ],
+            );
+        }
+        for e in &law.efficiency {
+            row(
+                out,
+                &[
+                    format!("`{}`", law.label),
+                    fixed(law.mean_abs_mu.0, 5),
+                    validity.clone(),
+                    formulation_name(e.formulation).into(),
+                    fixed(100.0 * e.mean_efficiency.0, 4),
+                    format!("{:.1e}", e.error_estimate.0),
+                    fixed(e.power_loss.si(), 2),
+                    fixed(100.0 * e.min_efficiency.0, 4),
+                    fixed(100.0 * e.max_efficiency.0, 4),
+                    fixed(100.0 * law.ohlendorf_efficiency.0, 4),
+                ],
+            );
+        }
+    }
+    let _ = writeln!(out);
+    if let Some(plot) = &op.plot {
+        let _ = writeln!(out, "![μ, local power loss and η over one mesh cycle]({plot})\n");
+    }
+}
+
+/// The sweep table and plots.
+pub fn sweep(out: &mut String, r: &Report) {
+    if r.efficiency.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "## Efficiency over the sweep\n");
+    let _ = writeln!(
+        out,
+        "Mean efficiency over one mesh cycle (time mean, adaptive Gauss–Kronrod to a relative tolerance of 1e-10, split at every zone boundary, pitch-point passage and regime switch) and friction power loss P = (1 − η̄) T_p ω_p.\n"
+    );
+    header(out, &["T_p N·m", "n_p rpm", "law", "formulation", "η̄ %", "P_loss W"]);
+    for rec in &r.efficiency {
+        row(
+            out,
+            &[
+                fixed(rec.pinion_torque.si(), 2),
+                fixed(rec.pinion_speed.si() * 30.0 / std::f64::consts::PI, 1),
+                format!("`{}`", rec.label),
+                formulation_name(rec.formulation).into(),
+                fixed(100.0 * rec.mean_efficiency.0, 4),
+                fixed(rec.power_loss.si(), 2),
+            ],
+        );
+    }
+    let _ = writeln!(out);
+    for p in r.plots.iter().filter(|p| p.file != "contact_state.svg") {
+        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
+    }
+}
