@@ -91,10 +91,13 @@ fn run(path: &Path, out: &Path) -> ExitCode {
     let n = scene.operating.points().len();
     let bar = (std::io::stderr().is_terminal() && n >= 50).then(|| {
         let bar = indicatif::ProgressBar::new(n as u64);
-        bar.set_message("evaluating operating points");
+        bar.set_message("operating points");
         bar
     });
-    let evaluation = gearloss::evaluate(&scene);
+    let evaluation = match &bar {
+        Some(bar) => gearloss::evaluate_with_progress(&scene, &|| bar.inc(1)),
+        None => gearloss::evaluate(&scene),
+    };
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }

@@ -18,23 +18,66 @@ use serde::Serialize;
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::ContactPoint;
 use crate::model::Formulation;
-use crate::numerics::quadrature::{integrate, Integral};
+use crate::numerics::quadrature::{integrate_singular, Integral};
 
 /// Relative tolerance of every mean.
 pub const MEAN_TOLERANCE: f64 = 1e-10;
 
+/// In the internal formulation, |μ| of a law that diverges at P is capped here: near P such a law
+/// exceeds any physical value, and R_p + Σ μ w T1C would pass through zero (self-locking), making
+/// η(τ) non-integrable. The band where the cap acts is found by [`internal_cap_band`] and reported.
+pub const INTERNAL_MU_CAP: f64 = 1.0;
+
+/// The positions (from T1) around P between which a divergent law's |μ| exceeds [`INTERNAL_MU_CAP`].
+pub fn internal_cap_band(ctx: &LawContext, law: &dyn FrictionLaw) -> Option<(f64, f64)> {
+    if !law.diverges_at_pitch() {
+        return None;
+    }
+    let p = ctx.geometry.points;
+    let above = |u: f64| law.mu(&ctx.contact_at(u)).abs() > INTERNAL_MU_CAP;
+    let edge = |from: f64| {
+        // from: a point away from P where |μ| ≤ cap; bisect towards P.
+        let (mut out, mut inn) = (from, p.p);
+        for _ in 0..200 {
+            let mid = 0.5 * (out + inn);
+            if mid == out || mid == inn {
+                break;
+            }
+            if above(mid) {
+                inn = mid
+            } else {
+                out = mid
+            }
+        }
+        out
+    };
+    let (lo, hi) = (edge(p.a), edge(p.e));
+    (hi > lo && (above(0.5 * (lo + p.p)) || above(0.5 * (hi + p.p)))).then_some((lo, hi))
+}
+
 /// The contacts at time τ of the mesh cycle (τ in [0, 1)).
 /// The load is shared among the pairs found at τ, so that the shares always add up to one.
 pub fn contacts_at(ctx: &LawContext, tau: f64) -> Vec<ContactPoint> {
+    contacts_near_pitch(ctx, tau, f64::NAN)
+}
+
+/// As [`contacts_at`], with `d` = τ − τ_P known exactly for the pair nearest the pitch point
+/// (NaN when not known): that pair's s = p_b d.
+pub fn contacts_near_pitch(ctx: &LawContext, tau: f64, d: f64) -> Vec<ContactPoint> {
     let g = ctx.geometry;
     let positions: Vec<f64> = (0..4)
         .map(|k| g.points.a + g.base_pitch * (tau + k as f64))
         .filter(|u| *u >= g.points.a && *u < g.points.e)
         .collect();
     let n = positions.len();
+    let exact = g.base_pitch * d;
     positions
         .into_iter()
-        .map(|u| g.contact_with_pairs(u, &ctx.state, ctx.tribology.reduced_modulus, ctx.sharing, n))
+        .map(|u| {
+            let s = u - g.points.p;
+            let s = if exact.is_finite() && (s - exact).abs() < 1e-6 * g.base_pitch { exact } else { s };
+            g.contact_exact(u, s, &ctx.state, ctx.tribology.reduced_modulus, ctx.sharing, n)
+        })
         .collect()
 }
 
@@ -59,8 +102,9 @@ pub fn efficiency_of(
         }
         Formulation::Internal => {
             let (mut num, mut den) = (rw, rp);
+            let cap = if law.diverges_at_pitch() { INTERNAL_MU_CAP } else { f64::INFINITY };
             for c in contacts {
-                let m = law.mu(c) * c.load_share;
+                let m = law.mu(c).clamp(-cap, cap) * c.load_share;
                 num += m * (g.line_of_action_length - c.u);
                 den += m * c.u;
             }
@@ -88,9 +132,24 @@ pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
     times
 }
 
+/// Times in the cycle at which a pair passes the pitch point (where a law may be singular).
+pub fn pitch_times(ctx: &LawContext) -> Vec<f64> {
+    let g = ctx.geometry;
+    (0..4).map(|k| (g.points.p - g.points.a) / g.base_pitch - k as f64).filter(|t| *t > 0.0 && *t < 1.0).collect()
+}
+
 /// η̄ over one mesh cycle, with its error estimate.
 pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation) -> Integral {
-    integrate(|tau| efficiency_at(ctx, law, formulation, tau), &break_times(ctx, law), MEAN_TOLERANCE)
+    // Every law is treated as singular at P: the t⁴ map is exact for the polynomial pieces of the
+    // Coulomb laws and removes the |s|^q kinks of the others.
+    let singular = pitch_times(ctx);
+    let _ = law.diverges_at_pitch();
+    integrate_singular(
+        |tau, d| efficiency_of(ctx, law, formulation, &contacts_near_pitch(ctx, tau, d)),
+        &break_times(ctx, law),
+        &singular,
+        MEAN_TOLERANCE,
+    )
 }
 
 /// Positions along the line of action where a law's integrand changes form (for means over A–E).
@@ -104,7 +163,10 @@ pub fn break_positions(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
 /// Mean |μ| over the path of contact A–E (a length mean).
 pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
     let p = ctx.geometry.points;
-    let i = integrate(|u| law.mu(&ctx.contact_at(u)).abs(), &break_positions(ctx, law), MEAN_TOLERANCE);
+    let singular = [p.p];
+    let contact = |u: f64, d: f64| if d.is_finite() { ctx.contact_at_offset(d) } else { ctx.contact_at(u) };
+    let i =
+        integrate_singular(|u, d| law.mu(&contact(u, d)).abs(), &break_positions(ctx, law), &singular, MEAN_TOLERANCE);
     Integral { value: i.value / (p.e - p.a), error: i.error / (p.e - p.a), evaluations: i.evaluations }
 }
 

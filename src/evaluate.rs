@@ -79,6 +79,8 @@ pub struct LawEvaluation {
     pub efficiency: Vec<EfficiencyResult>,
     /// 1 − μ̄ H_V with μ̄ = mean |μ| over A–E (Ohlendorf's cross-check).
     pub ohlendorf_efficiency: f64,
+    /// Where the internal formulation caps |μ| at [`efficiency::INTERNAL_MU_CAP`] (from, to from T1).
+    pub internal_cap_band: Option<(f64, f64)>,
     pub curves: Option<LawCurves>,
 }
 
@@ -304,6 +306,11 @@ fn evaluate_law(
         regimes: law.regime(&table[0].1).map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
         switch_points: law.switch_points(),
         ohlendorf_efficiency: 1.0 - mean_abs_mu.value * efficiency::ohlendorf_loss_factor(&ctx),
+        internal_cap_band: if eval.formulations.contains(&Formulation::Internal) {
+            efficiency::internal_cap_band(&ctx, law)
+        } else {
+            None
+        },
         mean_abs_mu,
         validity: validity_summary(law, &contacts),
         efficiency,

@@ -61,6 +61,11 @@ pub fn evaluate(scene: &Scene) -> Evaluation {
     evaluate::evaluate_scene(scene)
 }
 
+/// Stage 3 with a callback once per operating point evaluated (from any worker thread), for progress bars.
+pub fn evaluate_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> Evaluation {
+    evaluate::evaluate_scene_with_progress(scene, tick)
+}
+
 /// Stage 4: the serde report data.
 pub fn report(scene: &Scene, evaluation: &Evaluation) -> Report {
     report::build_report(scene, evaluation)

@@ -204,4 +204,6 @@ pub struct Analyses {
     pub efficiency: Option<Vec<Formulation>>,
     pub friction_along_loa: bool,
     pub film: bool,
+    /// Where `film` was asked for, for diagnostics.
+    pub film_span: Option<Span>,
 }

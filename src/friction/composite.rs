@@ -9,7 +9,7 @@ use super::smoothed_coulomb::SmoothedCoulomb;
 use super::xu::Xu;
 use super::{FrictionLaw, LawContext, Parameter, Regime};
 use crate::geometry::ContactPoint;
-use crate::numerics::quadrature::integrate;
+use crate::numerics::quadrature::integrate_singular;
 use crate::tribology::FilmInputs;
 
 /// Λ thresholds between boundary/mixed and mixed/full film.
@@ -38,7 +38,14 @@ impl Composite {
         let (mu, derived) = if mu.is_finite() {
             (mu, false)
         } else {
-            let mean = integrate(|u| mixed.magnitude(&ctx.contact_at(u)).max(0.0), &[p.a, p.b, p.p, p.d, p.e], 1e-10);
+            let mean = integrate_singular(
+                |u, d| {
+                    mixed.magnitude(&if d.is_finite() { ctx.contact_at_offset(d) } else { ctx.contact_at(u) }).max(0.0)
+                },
+                &[p.a, p.b, p.p, p.d, p.e],
+                &[p.p],
+                1e-10,
+            );
             (mean.value / (p.e - p.a), true)
         };
         let mut law = Composite {
@@ -79,7 +86,7 @@ impl Composite {
     /// Positions where the regime changes, by bisection between samples of different regime.
     fn find_switches(&self, ctx: &LawContext) -> Vec<f64> {
         let p = ctx.geometry.points;
-        let n = 400;
+        let n = 120;
         let at = |u: f64| Self::regime_of(self.lambda(&ctx.contact_at(u)));
         let mut out = Vec::new();
         let mut prev_u = p.a;
@@ -89,7 +96,7 @@ impl Composite {
             let r = at(u);
             if r != prev {
                 let (mut lo, mut hi) = (prev_u, u);
-                for _ in 0..80 {
+                for _ in 0..64 {
                     let mid = 0.5 * (lo + hi);
                     if at(mid) == prev {
                         lo = mid

@@ -51,6 +51,13 @@ impl LawContext<'_> {
     pub fn contact_at(&self, u: f64) -> ContactPoint {
         self.geometry.contact_at(u, &self.state, self.tribology.reduced_modulus, self.sharing)
     }
+
+    /// The contact state at distance `s` from the pitch point, with `s` exact (for integrands near P).
+    pub fn contact_at_offset(&self, s: f64) -> ContactPoint {
+        let g = self.geometry;
+        let u = g.points.p + s;
+        g.contact_exact(u, s, &self.state, self.tribology.reduced_modulus, self.sharing, g.pairs_in_contact(u))
+    }
 }
 
 /// A lubrication regime of the composite law (Model V).

@@ -92,17 +92,33 @@ impl SpurGeometry {
         sharing: Sharing,
         n: usize,
     ) -> ContactPoint {
+        self.contact_exact(u, u - self.points.p, op, reduced_modulus, sharing, n)
+    }
+
+    /// The contact state at `u` whose distance from the pitch point `s` is known more exactly than
+    /// `u − T1P` (near P, where u cannot resolve s): the sliding velocity and the sign use `s`.
+    pub fn contact_exact(
+        &self,
+        u: f64,
+        s: f64,
+        op: &OperatingState,
+        reduced_modulus: f64,
+        sharing: Sharing,
+        n: usize,
+    ) -> ContactPoint {
         let rho = [u, self.line_of_action_length - u];
         let r = rho[0] * rho[1] / (rho[0] + rho[1]);
         let v = [op.pinion_speed * rho[0], self.wheel_speed(op) * rho[1]];
-        let vs = (v[0] - v[1]).abs();
+        // v_s = |v1 − v2| = ω1 (1 + z1/z2) |s| (physics notes), written without the cancellation of
+        // v1 − v2 near the pitch point.
+        let vs = op.pinion_speed * (1.0 + 1.0 / self.gear_ratio) * s.abs();
         let vsum = v[0] + v[1];
         let ue = vsum / 2.0;
         let share = Self::load_share(n, sharing);
         let w = share * self.normal_load(op) / self.face_width;
         ContactPoint {
             u,
-            s: u - self.points.p,
+            s,
             radius_of_curvature: rho,
             reduced_radius: r,
             rolling_velocity: v,

@@ -31,6 +31,7 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
             "contact_state.svg" => svg::contact_state(report)?,
             "sweep_speed.svg" => svg::sweep(report, true)?,
             "sweep_torque.svg" => svg::sweep(report, false)?,
+            "sweep_mu.svg" => svg::sweep_mu(report)?,
             "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
             other => return Err(format!("no renderer for plot {other}")),
         };

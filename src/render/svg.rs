@@ -325,3 +325,71 @@ pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
     };
     figure(&format!("{}: composite law, mean |μ| against speed", r.title), &[panel])
 }
+
+/// sweep_mu.svg: mean η and power loss against μ for swept laws, at up to three operating points.
+pub fn sweep_mu(r: &Report) -> Result<String, String> {
+    let laws = crate::report::friction::mu_swept_laws(&r.efficiency);
+    let ops: Vec<usize> = match r.operating_points.len() {
+        0 => Vec::new(),
+        1 => vec![0],
+        2 => vec![0, 1],
+        n => vec![0, n / 2, n - 1],
+    };
+    let same = |a: &crate::report::number::Q, b: &crate::report::number::Q| a.si().to_bits() == b.si().to_bits();
+    let mut xs: Vec<f64> = Vec::new();
+    // (legend, [(μ, η̄ %, P_loss W)])
+    type Curve = (String, Vec<(f64, f64, f64)>);
+    let mut curves: Vec<Curve> = Vec::new();
+    for rec in r.efficiency.iter().filter(|x| laws.contains(&x.law)) {
+        let Some(k) = ops.iter().position(|&k| {
+            same(&r.operating_points[k].pinion_torque, &rec.pinion_torque)
+                && same(&r.operating_points[k].pinion_speed, &rec.pinion_speed)
+        }) else {
+            continue;
+        };
+        let Some(mu) = rec.parameters.get("mu") else { continue };
+        let label = format!(
+            "{} {} @ {}",
+            rec.law,
+            crate::report::formulation_name(rec.formulation),
+            r.operating_points[ops[k]].label
+        );
+        xs.push(mu);
+        let point = (mu, 100.0 * rec.mean_efficiency.0, rec.power_loss.si());
+        match curves.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, v)) => v.push(point),
+            None => curves.push((label, vec![point])),
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let pick = |j: usize| -> Vec<(String, Vec<f64>)> {
+        curves
+            .iter()
+            .map(|(l, pts)| {
+                let ys = xs
+                    .iter()
+                    .map(|x| pts.iter().find(|p| p.0 == *x).map_or(f64::NAN, |p| if j == 1 { p.1 } else { p.2 }))
+                    .collect();
+                (l.clone(), ys)
+            })
+            .collect()
+    };
+    let panels = [
+        Panel {
+            y_label: "mean efficiency η̄ (%)".into(),
+            x_label: "coefficient of friction μ".into(),
+            x: xs.clone(),
+            series: pick(1),
+            ..Default::default()
+        },
+        Panel {
+            y_label: "friction power loss (W)".into(),
+            x_label: "coefficient of friction μ".into(),
+            x: xs.clone(),
+            series: pick(2),
+            ..Default::default()
+        },
+    ];
+    figure(&format!("{}: mean efficiency and power loss against μ", r.title), &panels)
+}

@@ -29,6 +29,13 @@ impl MuValue {
 #[derive(Debug, Clone, Default)]
 pub struct Parameters(pub Vec<(&'static str, super::SiValue)>);
 
+impl Parameters {
+    /// The SI value of a parameter.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.0.iter().find(|(n, _)| *n == name).map(|(_, v)| v.si())
+    }
+}
+
 impl Serialize for Parameters {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeMap;
@@ -260,6 +267,23 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
                 "{label}: |μ| diverges at the pitch point; tables write `diverges` there, plots clip (marked ▲▼), means integrate the integrable singularity (adaptive Gauss–Kronrod split at P)"
             ));
         }
+        let bands: Vec<(usize, (f64, f64))> =
+            laws.iter().enumerate().filter_map(|(k, l)| l.internal_cap_band.map(|b| (k, b))).collect();
+        if let Some((k, (a, b))) = bands.iter().max_by(|x, y| (x.1 .1 - x.1 .0).total_cmp(&(y.1 .1 - y.1 .0))) {
+            push(
+                &mut out,
+                Severity::Warning,
+                format!(
+                    "{label}: |μ| exceeds {} near the pitch point; the internal formulation caps it there (else R_p + Σ μ w T1C would vanish: self-locking). Widest band: {:.6}–{:.6} mm from T1 at operating point {} ({} of {} points affected)",
+                    crate::efficiency::INTERNAL_MU_CAP,
+                    a * 1e3,
+                    b * 1e3,
+                    k + 1,
+                    bands.len(),
+                    laws.len()
+                ),
+            );
+        }
         let flagged: Vec<(usize, &LawEvaluation)> =
             laws.iter().enumerate().filter(|(_, l)| l.validity.outside > 0).map(|(k, l)| (k, *l)).collect();
         if !flagged.is_empty() {
@@ -279,6 +303,28 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
                 worst.validity.samples,
                 where_.join(", ")
             ));
+        }
+    }
+    out
+}
+
+/// The laws whose `mu` takes two or more values in the report (a μ sweep).
+pub fn mu_swept_laws(records: &[EfficiencyRecord]) -> Vec<&'static str> {
+    let mut out: Vec<&'static str> = Vec::new();
+    for rec in records {
+        if out.contains(&rec.law) {
+            continue;
+        }
+        let mut values: Vec<String> = records
+            .iter()
+            .filter(|x| x.law == rec.law)
+            .filter_map(|x| x.parameters.get("mu"))
+            .map(|m| format!("{m:.12e}"))
+            .collect();
+        values.sort();
+        values.dedup();
+        if values.len() > 1 {
+            out.push(rec.law);
         }
     }
     out

@@ -574,6 +574,12 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
                 title: "Mean efficiency and power loss against pinion speed".into(),
             });
         }
+        if !friction::mu_swept_laws(&report.efficiency).is_empty() {
+            report.plots.push(PlotRef {
+                file: "sweep_mu.svg".into(),
+                title: "Mean efficiency and power loss against the coefficient of friction".into(),
+            });
+        }
         if sweeps.pinion_torque.values.len() > 1 {
             report.plots.push(PlotRef {
                 file: "sweep_torque.svg".into(),

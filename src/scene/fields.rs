@@ -274,7 +274,7 @@ pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Di
 }
 
 /// The values of a single value, list or range: (SI values, unit as written, values as written).
-fn sweep_values(
+pub(crate) fn sweep_values(
     key: &str,
     value: &Value,
     expected: Dimension,

@@ -82,6 +82,18 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     if let Some(g) = &gears {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
+    if let Some(span) = analyses.film_span {
+        if lubricant.as_ref().is_none_or(|l| l.pressure_viscosity.is_none()) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    span,
+                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
+                )
+                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
+            );
+        }
+    }
     match (gears, operating) {
         (Some(gears), Some(operating)) if errors.is_empty() => {
             Ok(Scene { title: ast.title.clone(), gears, lubricant, operating, friction, analyses })
@@ -410,14 +422,18 @@ fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operat
 fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
     let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id).collect();
     let f = Fields::read("the `friction` block", block.span, &block.items, &[], &[], &ids, errors);
-    f.calls.iter().filter_map(|c| lower_law(c, errors)).collect()
+    f.calls.iter().flat_map(|c| lower_law(c, errors)).collect()
 }
 
 /// A law call checked against the catalogue: arguments known, with the right dimension, defaults filled in.
-pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLawSpec> {
-    let entry = catalog::entry(&call.name.text)?;
+/// A law call checked against the catalogue: arguments known, with the right dimension, defaults
+/// filled in. One argument may be a sweep (`coulomb(mu = [0.02, 0.04, 0.08])`): the law is then
+/// evaluated once per value.
+pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
+    let Some(entry) = catalog::entry(&call.name.text) else { return Vec::new() };
     let names: Vec<&str> = entry.arguments.iter().map(|a| a.name).collect();
-    let mut arguments = Vec::new();
+    let mut arguments: Vec<(String, f64, String)> = Vec::new();
+    let mut swept: Option<(String, Vec<(f64, String)>)> = None;
     let mut ok = true;
     for (name, value) in &call.arguments {
         let Some(spec) = entry.arguments.iter().find(|a| a.name == name.text) else {
@@ -425,7 +441,9 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLa
             ok = false;
             continue;
         };
-        if arguments.iter().any(|(n, _, _): &(String, f64, String)| n == spec.name) {
+        let given_before =
+            arguments.iter().any(|(n, _, _)| n == spec.name) || swept.as_ref().is_some_and(|(n, _)| n == spec.name);
+        if given_before {
             errors.push(
                 Diagnostic::new(DiagnosticKind::DuplicateKey, name.span, format!("`{}` is given twice", spec.name))
                     .hint("keep one"),
@@ -433,24 +451,54 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLa
             ok = false;
             continue;
         }
-        match value_scalar(spec.name, value, spec.dimension, errors) {
-            Some((x, written)) if x.is_finite() && x >= 0.0 => arguments.push((spec.name.to_string(), x, written)),
-            Some((x, _)) => {
-                errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::OutOfRange,
-                        value.span,
-                        format!("`{}` = {x} must not be negative", spec.name),
-                    )
-                    .hint(format!("{} is a magnitude; the sign follows the sliding direction", spec.what)),
-                );
-                ok = false;
+        let values: Option<Vec<(f64, String)>> = match &value.kind {
+            ValueKind::List { .. } | ValueKind::Range { .. } => {
+                if swept.is_some() {
+                    errors.push(
+                        Diagnostic::new(
+                            DiagnosticKind::OutOfRange,
+                            value.span,
+                            format!("`{}` sweeps a second argument", entry.id),
+                        )
+                        .hint("a law may sweep one argument; write a second law for another sweep"),
+                    );
+                    ok = false;
+                    continue;
+                }
+                super::fields::sweep_values(spec.name, value, spec.dimension, errors).map(|(si, unit, written)| {
+                    si.into_iter()
+                        .zip(written)
+                        .map(|(x, w)| (x, format!("{} {unit}", format_number(w)).trim_end().to_string()))
+                        .collect()
+                })
             }
-            None => ok = false,
+            _ => value_scalar(spec.name, value, spec.dimension, errors).map(|v| vec![v]),
+        };
+        let Some(values) = values else {
+            ok = false;
+            continue;
+        };
+        if let Some((x, _)) = values.iter().find(|(x, _)| !(x.is_finite() && *x >= 0.0)) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    value.span,
+                    format!("`{}` = {x} must not be negative", spec.name),
+                )
+                .hint(format!("{} is a magnitude; the sign follows the sliding direction", spec.what)),
+            );
+            ok = false;
+            continue;
+        }
+        if values.len() > 1 || matches!(value.kind, ValueKind::List { .. } | ValueKind::Range { .. }) {
+            swept = Some((spec.name.to_string(), values));
+        } else {
+            let (x, w) = values.into_iter().next().expect("one value");
+            arguments.push((spec.name.to_string(), x, w));
         }
     }
     for spec in entry.arguments {
-        if arguments.iter().any(|(n, _, _)| n == spec.name) {
+        if arguments.iter().any(|(n, _, _)| n == spec.name) || swept.as_ref().is_some_and(|(n, _)| n == spec.name) {
             continue;
         }
         match spec.default {
@@ -468,7 +516,20 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<FrictionLa
             }
         }
     }
-    ok.then(|| FrictionLawSpec { id: entry.id.to_string(), arguments, span: call.span })
+    if !ok {
+        return Vec::new();
+    }
+    match swept {
+        None => vec![FrictionLawSpec { id: entry.id.to_string(), arguments, span: call.span }],
+        Some((name, values)) => values
+            .into_iter()
+            .map(|(x, w)| {
+                let mut args = arguments.clone();
+                args.insert(0, (name.clone(), x, w));
+                FrictionLawSpec { id: entry.id.to_string(), arguments: args, span: call.span }
+            })
+            .collect(),
+    }
 }
 
 fn value_scalar(key: &str, value: &Value, dim: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(f64, String)> {
@@ -571,7 +632,10 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                 }
                 match other {
                     "friction_along_loa" => a.friction_along_loa = true,
-                    "film" => a.film = true,
+                    "film" => {
+                        a.film = true;
+                        a.film_span = Some(call.span);
+                    }
                     _ => {}
                 }
             }
