@@ -12,6 +12,7 @@
 //! [`write_report_folder`]. Errors of the first two stages are [`SceneErrors`]: every problem with
 //! its span, reason and hints, rendered by miette. The library never prints.
 
+pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;
 pub mod friction;

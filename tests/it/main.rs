@@ -1,6 +1,7 @@
 //! The one integration test binary (each extra `tests/*.rs` would relink every dependency).
 
 mod cli;
+mod dynamics;
 mod efficiency;
 mod friction;
 mod fuzz;

@@ -1,0 +1,23 @@
+//! Gear dynamics with sliding friction: the SDOF torsional model along the line of action
+//! (Fernandes et al. eqs 3–20, physics notes "Dynamics"), its exact and Magnus propagators,
+//! Floquet stability and periodic steady state, general ODE integrators with restarts at every
+//! switch time, and the error-against-run-time study.
+//!
+//! ```text
+//! SdofSystem (one mesh period as segments) ─▶ propagator (Φ_j, q_j per segment; exact or Magnus)
+//!        │                                          │
+//!        │                                          ▼
+//!        ├──▶ integrators (DOP853, DOPRI5, Radau5, Kværnø ESDIRK; restarts)   floquet (Φ(T), multipliers, X*(0))
+//!        ▼                                          ▼
+//!     numerics (error vs run time)             response (DTE, forces, dynamic factor, spectrum)
+//! ```
+
+pub mod floquet;
+pub mod integrators;
+pub mod numerics;
+pub mod propagator;
+pub mod response;
+pub mod sdof;
+
+pub use floquet::{Floquet, Multiplier};
+pub use sdof::{DynamicFormulation, SdofSystem, Segment, StiffnessModel};

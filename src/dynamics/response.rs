@@ -1,0 +1,142 @@
+//! The periodic steady-state response over one mesh period, from the Floquet periodic state:
+//! DTE, dynamic mesh force (total and per pair), friction force, dynamic factor, tooth separation,
+//! the DTE spectrum in mesh orders and the efficiency from the dynamic mesh force.
+
+use nalgebra::Vector2;
+use serde::Serialize;
+
+use super::floquet::Floquet;
+use super::propagator::advance;
+use super::sdof::SdofSystem;
+use crate::efficiency::contacts_at;
+
+/// Samples per mesh period of the reported response.
+pub const SAMPLES: usize = 256;
+/// Mesh orders kept in the DTE spectrum.
+pub const ORDERS: usize = 10;
+
+#[derive(Debug, Clone, Serialize)]
+pub struct PeriodicResponse {
+    /// Sample times in mesh periods, [0, 1).
+    pub tau: Vec<f64>,
+    /// DTE x (m).
+    pub dte: Vec<f64>,
+    /// Dynamic mesh force, total (N).
+    pub mesh_force: Vec<f64>,
+    /// Dynamic mesh force of each pair slot k (the pair that entered k periods ago), NaN when out of contact.
+    pub pair_force: Vec<Vec<f64>>,
+    /// Total friction force Σ μ_j F_j (N).
+    pub friction_force: Vec<f64>,
+    pub dte_peak_to_peak: f64,
+    pub dte_mean: f64,
+    /// max dynamic / max static mesh force (static: F0).
+    pub dynamic_factor: f64,
+    /// Intervals (τ from, τ to) where the mesh force is negative: tooth separation.
+    pub separation: Vec<(f64, f64)>,
+    /// (mesh order, amplitude of the DTE harmonic, m), orders 1..=ORDERS.
+    pub spectrum: Vec<(usize, f64)>,
+    /// Mean over the period of the instantaneous efficiency from the dynamic mesh force,
+    /// 1 − Σ |μ_j| F_j v_s,j / (T_p ω_p).
+    pub mean_dynamic_efficiency: Option<f64>,
+}
+
+/// The state at each sample time, marching segment by segment from X*(0).
+pub fn states(sys: &SdofSystem, x0: Vector2<f64>, taus: &[f64]) -> Vec<Vector2<f64>> {
+    let mut out = Vec::with_capacity(taus.len());
+    let mut x = x0;
+    let mut t = 0.0;
+    let mut k = 0;
+    for seg in &sys.segments {
+        while k < taus.len() && taus[k] * sys.period < seg.end {
+            let target = taus[k] * sys.period;
+            if target > t {
+                x = advance(sys, (seg.start, seg.end), t, target - t).apply(&x);
+                t = target;
+            }
+            out.push(x);
+            k += 1;
+        }
+        if seg.end > t {
+            x = advance(sys, (seg.start, seg.end), t, seg.end - t).apply(&x);
+            t = seg.end;
+        }
+    }
+    out
+}
+
+impl PeriodicResponse {
+    /// The response from a Floquet analysis; None when there is no periodic state (unstable).
+    pub fn compute(sys: &SdofSystem, floquet: &Floquet) -> Option<PeriodicResponse> {
+        let x0 = floquet.periodic_state?;
+        let taus: Vec<f64> = (0..SAMPLES).map(|i| i as f64 / SAMPLES as f64).collect();
+        let xs = states(sys, x0, &taus);
+        let mut r = PeriodicResponse {
+            tau: taus.clone(),
+            dte: xs.iter().map(|x| x[0]).collect(),
+            mesh_force: Vec::with_capacity(SAMPLES),
+            pair_force: vec![vec![f64::NAN; SAMPLES]; 3],
+            friction_force: Vec::with_capacity(SAMPLES),
+            dte_peak_to_peak: 0.0,
+            dte_mean: 0.0,
+            dynamic_factor: 0.0,
+            separation: Vec::new(),
+            spectrum: Vec::new(),
+            mean_dynamic_efficiency: None,
+        };
+        let g = sys.ctx.geometry;
+        let input_power = sys.ctx.state.pinion_torque * sys.ctx.state.pinion_speed;
+        let mut eta_sum = 0.0;
+        for (i, (tau, x)) in taus.iter().zip(&xs).enumerate() {
+            let t = tau * sys.period;
+            let f = sys.mesh_force(t, &[x[0], x[1]]);
+            r.mesh_force.push(f);
+            let contacts = contacts_at(&sys.ctx, *tau);
+            let mut friction = 0.0;
+            let mut loss = 0.0;
+            for c in &contacts {
+                let slot = (((c.u - g.points.a) / g.base_pitch) - tau).round() as usize;
+                if slot < 3 {
+                    r.pair_force[slot][i] = c.load_share * f;
+                }
+                let mu = sys.law.map_or(0.0, |l| l.mu(c));
+                friction += mu * c.load_share * f;
+                loss += mu.abs() * c.load_share * f * c.sliding_velocity;
+            }
+            r.friction_force.push(friction);
+            eta_sum += 1.0 - loss / input_power;
+        }
+        if sys.law.is_some() {
+            r.mean_dynamic_efficiency = Some(eta_sum / SAMPLES as f64);
+        }
+        let (lo, hi) = r.dte.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(*v), b.max(*v)));
+        r.dte_peak_to_peak = hi - lo;
+        r.dte_mean = r.dte.iter().sum::<f64>() / SAMPLES as f64;
+        r.dynamic_factor = r.mesh_force.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) / sys.static_force;
+        let mut open: Option<f64> = None;
+        for (i, f) in r.mesh_force.iter().enumerate() {
+            match (open, *f < 0.0) {
+                (None, true) => open = Some(taus[i]),
+                (Some(s), false) => {
+                    r.separation.push((s, taus[i]));
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+        if let Some(s) = open {
+            r.separation.push((s, 1.0));
+        }
+        r.spectrum = (1..=ORDERS)
+            .map(|h| {
+                let (mut re, mut im) = (0.0, 0.0);
+                for (i, x) in r.dte.iter().enumerate() {
+                    let arg = 2.0 * std::f64::consts::PI * (h * i) as f64 / SAMPLES as f64;
+                    re += x * arg.cos();
+                    im -= x * arg.sin();
+                }
+                (h, 2.0 * re.hypot(im) / SAMPLES as f64)
+            })
+            .collect();
+        Some(r)
+    }
+}

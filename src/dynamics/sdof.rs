@@ -1,0 +1,244 @@
+//! The SDOF torsional model of a spur pair (Fernandes et al. eqs 3–20; physics notes, "Dynamics"):
+//!
+//! x = DTE = R_p θ_p − R_w θ_w, m_e = J_p J_w / (J_p R_w² + J_w R_p²), F0 = T_p / R_p,
+//! - base:     m_e ẍ + c ẋ + k(t) x = F0
+//! - external: m_e ẍ + c ẋ + k(t) x = F0 (1 + f(t))
+//! - internal: m_e ẍ + (1 − f(t)) (c ẋ + k(t) x) = F0
+//!
+//! f = (J_w R_p g_p − J_p R_w g_w)/(J_p R_w² + J_w R_p²), g_p = −Σ μ_j w_j T1C_j, g_w = Σ μ_j w_j T2C_j,
+//! with w_j the load share of contact j and μ_j its signed coefficient of friction (any law of the
+//! scene, evaluated along the cycle). c = 2ζ sqrt(m_e k̄), k̄ the time mean of k(t).
+//!
+//! One mesh period [0, T) is cut into segments at every switch time: zone boundaries (k jumps),
+//! pitch-point passages (μ changes sign, f changes slope) and law regime switches. The state is
+//! X = [x, ẋ]; in a segment, Ẋ = A(t) X + b(t).
+
+use serde::Serialize;
+
+use crate::efficiency::{break_times, contacts_at};
+use crate::friction::{FrictionLaw, LawContext};
+
+/// Which equation of motion.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DynamicFormulation {
+    Base,
+    External,
+    Internal,
+}
+
+impl DynamicFormulation {
+    pub fn name(self) -> &'static str {
+        match self {
+            DynamicFormulation::Base => "base",
+            DynamicFormulation::External => "external",
+            DynamicFormulation::Internal => "internal",
+        }
+    }
+}
+
+/// Mesh stiffness over one mesh cycle.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StiffnessModel {
+    /// Rectangular: stiffness with 1, 2 and 3 pairs in contact (N/m).
+    PairsInContact { single: f64, double: f64, triple: f64 },
+    /// Values at equally spaced times over one mesh period, t = 0 when a pair enters at A,
+    /// linearly interpolated (periodic).
+    Table(Vec<f64>),
+}
+
+impl StiffnessModel {
+    /// k at time fraction τ ∈ [0, 1) with n pairs in contact.
+    pub fn at(&self, tau: f64, pairs: usize) -> f64 {
+        match self {
+            StiffnessModel::PairsInContact { single, double, triple } => match pairs {
+                0 | 1 => *single,
+                2 => *double,
+                _ => *triple,
+            },
+            StiffnessModel::Table(k) => {
+                let n = k.len();
+                let x = tau.rem_euclid(1.0) * n as f64;
+                let i = (x.floor() as usize).min(n - 1);
+                let frac = x - i as f64;
+                k[i] * (1.0 - frac) + k[(i + 1) % n] * frac
+            }
+        }
+    }
+
+    pub fn is_piecewise_constant(&self) -> bool {
+        matches!(self, StiffnessModel::PairsInContact { .. })
+    }
+}
+
+/// A piece of the mesh period on which k is constant (for the rectangular model) and μ keeps its sign.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Segment {
+    /// Start and end in seconds from the entry of a pair at A.
+    pub start: f64,
+    pub end: f64,
+    pub pairs: usize,
+}
+
+/// The SDOF system at one operating point, with its friction law and formulation.
+pub struct SdofSystem<'a> {
+    pub ctx: LawContext<'a>,
+    pub law: Option<&'a dyn FrictionLaw>,
+    pub formulation: DynamicFormulation,
+    pub stiffness: StiffnessModel,
+    /// Inertias of pinion and wheel (kg·m²).
+    pub inertia: [f64; 2],
+    pub equivalent_mass: f64,
+    pub damping: f64,
+    pub static_force: f64,
+    /// Mesh period T (s).
+    pub period: f64,
+    pub segments: Vec<Segment>,
+    pub mean_stiffness: f64,
+}
+
+impl<'a> SdofSystem<'a> {
+    /// Builds the system; c = 2ζ sqrt(m_e k̄).
+    pub fn new(
+        ctx: LawContext<'a>,
+        law: Option<&'a dyn FrictionLaw>,
+        formulation: DynamicFormulation,
+        stiffness: StiffnessModel,
+        inertia: [f64; 2],
+        damping_ratio: f64,
+    ) -> Self {
+        let g = ctx.geometry;
+        let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
+        let m_e = inertia[0] * inertia[1] / (inertia[0] * rw * rw + inertia[1] * rp * rp);
+        let period = 2.0 * std::f64::consts::PI / (ctx.state.pinion_speed * g.teeth[0] as f64);
+        let mut taus = match law {
+            Some(l) => break_times(&ctx, l),
+            None => {
+                let p = g.points;
+                let mut t = vec![0.0, 1.0];
+                for k in 0..4 {
+                    for u in [p.e, p.p] {
+                        let tau = (u - p.a) / g.base_pitch - k as f64;
+                        if tau > 0.0 && tau < 1.0 {
+                            t.push(tau);
+                        }
+                    }
+                }
+                t.sort_by(f64::total_cmp);
+                t
+            }
+        };
+        taus.dedup_by(|a, b| (*a - *b).abs() < 1e-14);
+        let segments: Vec<Segment> = taus
+            .windows(2)
+            .map(|w| Segment {
+                start: w[0] * period,
+                end: w[1] * period,
+                pairs: contacts_at(&ctx, 0.5 * (w[0] + w[1])).len(),
+            })
+            .collect();
+        // k̄ over the period (exact for the rectangular model, trapezoid on 4096 points for a table).
+        let mean_stiffness = match &stiffness {
+            StiffnessModel::PairsInContact { .. } => {
+                segments.iter().map(|s| stiffness.at(0.0, s.pairs) * (s.end - s.start)).sum::<f64>() / period
+            }
+            StiffnessModel::Table(k) => k.iter().sum::<f64>() / k.len() as f64,
+        };
+        SdofSystem {
+            ctx,
+            law,
+            formulation,
+            damping: 2.0 * damping_ratio * (m_e * mean_stiffness).sqrt(),
+            stiffness,
+            inertia,
+            equivalent_mass: m_e,
+            static_force: ctx.state.pinion_torque / rp,
+            period,
+            segments,
+            mean_stiffness,
+        }
+    }
+
+    /// k(t) (N/m); t in seconds, periodic.
+    pub fn stiffness_at(&self, t: f64) -> f64 {
+        let tau = (t / self.period).rem_euclid(1.0);
+        let pairs = contacts_at(&self.ctx, tau).len();
+        self.stiffness.at(tau, pairs)
+    }
+
+    /// f(t), the friction term of the external and internal formulations.
+    pub fn friction_term(&self, t: f64) -> f64 {
+        let Some(law) = self.law else { return 0.0 };
+        let g = self.ctx.geometry;
+        let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
+        let [jp, jw] = self.inertia;
+        let tau = (t / self.period).rem_euclid(1.0);
+        let (mut gp, mut gw) = (0.0, 0.0);
+        for c in contacts_at(&self.ctx, tau) {
+            let m = law.mu(&c) * c.load_share;
+            gp -= m * c.u;
+            gw += m * (g.line_of_action_length - c.u);
+        }
+        (jw * rp * gp - jp * rw * gw) / (jp * rw * rw + jw * rp * rp)
+    }
+
+    /// The system matrix and forcing at t: Ẋ = A X + b.
+    pub fn matrices(&self, t: f64) -> ([[f64; 2]; 2], [f64; 2]) {
+        let m = self.equivalent_mass;
+        let k = self.stiffness_at(t);
+        let c = self.damping;
+        let f0 = self.static_force;
+        match self.formulation {
+            DynamicFormulation::Base => ([[0.0, 1.0], [-k / m, -c / m]], [0.0, f0 / m]),
+            DynamicFormulation::External => {
+                ([[0.0, 1.0], [-k / m, -c / m]], [0.0, f0 * (1.0 + self.friction_term(t)) / m])
+            }
+            DynamicFormulation::Internal => {
+                let s = 1.0 - self.friction_term(t);
+                ([[0.0, 1.0], [-s * k / m, -s * c / m]], [0.0, f0 / m])
+            }
+        }
+    }
+
+    /// Right-hand side for general integrators.
+    pub fn rhs(&self, t: f64, x: &[f64; 2]) -> [f64; 2] {
+        let (a, b) = self.matrices(t);
+        [a[0][0] * x[0] + a[0][1] * x[1] + b[0], a[1][0] * x[0] + a[1][1] * x[1] + b[1]]
+    }
+
+    /// True when on every segment A is constant and b affine in t, so the exact propagator applies:
+    /// base, or external with a law of constant magnitude (Coulomb, ISO/TR 14179-2), rectangular k.
+    pub fn exact_applies(&self) -> bool {
+        self.stiffness.is_piecewise_constant()
+            && match self.formulation {
+                DynamicFormulation::Base => true,
+                DynamicFormulation::External => self.law.is_none_or(|l| matches!(l.id(), "coulomb" | "iso_14179_2")),
+                DynamicFormulation::Internal => self.law.is_none(),
+            }
+    }
+
+    /// Dynamic mesh force F = k x + c ẋ (times 1 − f for the internal formulation).
+    pub fn mesh_force(&self, t: f64, x: &[f64; 2]) -> f64 {
+        let elastic = self.stiffness_at(t) * x[0] + self.damping * x[1];
+        match self.formulation {
+            DynamicFormulation::Internal => (1.0 - self.friction_term(t)) * elastic,
+            _ => elastic,
+        }
+    }
+
+    /// The undamped natural frequency at the mean stiffness, f_n = sqrt(k̄/m_e)/2π (Hz).
+    pub fn natural_frequency(&self) -> f64 {
+        (self.mean_stiffness / self.equivalent_mass).sqrt() / (2.0 * std::f64::consts::PI)
+    }
+
+    /// All switch times within [0, n periods], for integrators that must restart there.
+    pub fn switch_times(&self, periods: usize) -> Vec<f64> {
+        let mut out = vec![0.0];
+        for p in 0..periods {
+            for s in &self.segments {
+                out.push(p as f64 * self.period + s.end);
+            }
+        }
+        out
+    }
+}
