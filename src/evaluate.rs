@@ -34,6 +34,8 @@ pub struct Evaluation {
     /// Film-thickness inputs when the film is computed (α known and asked for or needed).
     pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
     pub points: Vec<PointEvaluation>,
+    /// The dynamics, when the scene asks for them.
+    pub dynamics: Option<crate::evaluate_dynamics::DynamicsEvaluation>,
 }
 
 /// Everything computed at one operating point.
@@ -219,6 +221,7 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
         formulations: analyses.efficiency.clone().unwrap_or_default(),
         film_inputs,
         points: Vec::new(),
+        dynamics: None,
     };
     let rows = table_positions(&eval.geometry);
     let op = &scene.operating;
@@ -248,6 +251,7 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
         })
         .collect();
     eval.points = points;
+    eval.dynamics = crate::evaluate_dynamics::evaluate_dynamics(scene, &eval);
     eval.ohlendorf_loss_factor =
         efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
     eval

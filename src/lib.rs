@@ -15,6 +15,7 @@
 pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;
+pub mod evaluate_dynamics;
 pub mod friction;
 pub mod geometry;
 pub mod model;

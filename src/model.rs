@@ -35,7 +35,40 @@ pub struct Scene {
     pub lubricant: Option<Lubricant>,
     pub operating: Operating,
     pub friction: Vec<FrictionLawSpec>,
+    pub dynamics: Option<DynamicsSpec>,
     pub analyses: Analyses,
+}
+
+/// How the mesh stiffness k(t) is given.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StiffnessSpec {
+    /// Rectangular, with one, two (and three) pairs in contact (N/m); triple defaults to 3/2 double.
+    Pairs { single: f64, double: f64, triple: Option<f64> },
+    /// The ISO 6336-1 estimate from c' (physics notes): k_n = n c' b.
+    Iso6336,
+    /// Values over one mesh cycle (N/m), equally spaced, t = 0 when a pair enters at A.
+    Table(Vec<f64>),
+}
+
+/// The solver of the periodic response.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Solver {
+    /// The exact propagator where it applies, 4th-order Magnus elsewhere.
+    Auto,
+    /// 4th-order Magnus everywhere.
+    Magnus,
+}
+
+/// The `dynamics` block.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsSpec {
+    pub formulations: Vec<crate::dynamics::DynamicFormulation>,
+    pub stiffness: StiffnessSpec,
+    pub damping_ratio: f64,
+    pub friction: Option<FrictionLawSpec>,
+    pub solver: Solver,
+    pub span: Span,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -206,4 +239,10 @@ pub struct Analyses {
     pub film: bool,
     /// Where `film` was asked for, for diagnostics.
     pub film_span: Option<Span>,
+    pub dynamics: bool,
+    /// Pinion speeds (rad/s) of the stability map, with the unit and values as written.
+    pub stability_map: Option<Sweep<AngularVelocity>>,
+    pub numerics: bool,
+    /// Where `dynamics`, `stability_map` or `numerics` was asked for.
+    pub dynamics_span: Option<Span>,
 }

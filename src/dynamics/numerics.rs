@@ -20,8 +20,9 @@ pub const REPEATS: usize = 3;
 pub const SAMPLES_LAST_PERIOD: usize = 128;
 /// rtol 1e-3 … 1e-12.
 pub const LADDER: [f64; 10] = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
-/// A method stops climbing the ladder once one run takes longer than this (s).
-pub const TIME_BUDGET: f64 = 2.0;
+/// A method stops climbing the ladder once one run needs more right-hand-side evaluations than this
+/// (a count, not a time, so that the table is the same on every machine).
+pub const EVALUATION_BUDGET: usize = 2_000_000;
 
 #[derive(Debug, Clone, Serialize)]
 pub struct Run {
@@ -92,7 +93,7 @@ pub fn study(sys: &SdofSystem) -> Study {
                 seconds = seconds.min(t0.elapsed().as_secs_f64());
                 let failed = r.is_err();
                 result = Some(r);
-                if failed || seconds > TIME_BUDGET {
+                if failed {
                     break;
                 }
             }
@@ -126,7 +127,7 @@ pub fn study(sys: &SdofSystem) -> Study {
                     failure: Some(e),
                 },
             };
-            let stop = run.failure.is_some() || run.seconds > TIME_BUDGET;
+            let stop = run.failure.is_some() || run.counts.evaluations > EVALUATION_BUDGET;
             runs.push(run);
             if stop {
                 break;

@@ -38,7 +38,8 @@ impl DynamicFormulation {
 }
 
 /// Mesh stiffness over one mesh cycle.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum StiffnessModel {
     /// Rectangular: stiffness with 1, 2 and 3 pairs in contact (N/m).
     PairsInContact { single: f64, double: f64, triple: f64 },
@@ -95,6 +96,8 @@ pub struct SdofSystem<'a> {
     pub period: f64,
     pub segments: Vec<Segment>,
     pub mean_stiffness: f64,
+    /// False forces 4th-order Magnus even where the exact propagator applies (`solver = magnus`).
+    pub allow_exact: bool,
 }
 
 impl<'a> SdofSystem<'a> {
@@ -156,6 +159,7 @@ impl<'a> SdofSystem<'a> {
             period,
             segments,
             mean_stiffness,
+            allow_exact: true,
         }
     }
 
@@ -209,7 +213,8 @@ impl<'a> SdofSystem<'a> {
     /// True when on every segment A is constant and b affine in t, so the exact propagator applies:
     /// base, or external with a law of constant magnitude (Coulomb, ISO/TR 14179-2), rectangular k.
     pub fn exact_applies(&self) -> bool {
-        self.stiffness.is_piecewise_constant()
+        self.allow_exact
+            && self.stiffness.is_piecewise_constant()
             && match self.formulation {
                 DynamicFormulation::Base => true,
                 DynamicFormulation::External => self.law.is_none_or(|l| matches!(l.id(), "coulomb" | "iso_14179_2")),

@@ -159,6 +159,7 @@ pub fn render_markdown(r: &Report) -> String {
         super::markdown_friction::point(&mut out, op);
     }
     super::markdown_friction::sweep(&mut out, r);
+    super::markdown_dynamics::dynamics(&mut out, r);
 
     let _ = writeln!(out, "## Findings\n");
     for f in &r.findings {

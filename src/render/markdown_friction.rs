@@ -131,7 +131,7 @@ pub fn sweep(out: &mut String, r: &Report) {
         );
     }
     let _ = writeln!(out);
-    for p in r.plots.iter().filter(|p| p.file != "contact_state.svg") {
+    for p in r.plots.iter().filter(|p| p.file.starts_with("sweep_") || p.file.starts_with("composite_")) {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
     }
 }

@@ -1,10 +1,15 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
 pub mod markdown;
+pub mod markdown_dynamics;
 pub mod markdown_friction;
 pub mod svg;
 
 use crate::report::Report;
+
+/// Files whose names start with this hold run times: machine-dependent, never snapshotted or
+/// compared with the committed reports.
+pub const TIMING_PREFIX: &str = "timing_";
 
 /// The files of a report folder: (file name, content).
 #[derive(Debug, Clone)]
@@ -33,12 +38,24 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
             "sweep_torque.svg" => svg::sweep(report, false)?,
             "sweep_mu.svg" => svg::sweep_mu(report)?,
             "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
+            "stability_map.svg" => svg::stability_map(report)?,
+            "timing_work_precision.svg" => svg::work_precision(report)?,
             other => return Err(format!("no renderer for plot {other}")),
         };
         files.push((plot.file.clone(), svg));
     }
     for (k, pc) in report.curves.points.iter().enumerate() {
         files.push((pc.file.clone(), svg::point_friction(report, k)?));
+    }
+    if let Some(d) = &report.dynamics {
+        for (k, c) in d.curves.iter().enumerate() {
+            files.push((c.file.clone(), svg::dynamics_point(report, k)?));
+        }
+        if let Some(t) = &d.timings {
+            let mut json = serde_json::to_string_pretty(t).expect("timings serialise");
+            json.push('\n');
+            files.push((TIMING_PREFIX.to_string() + "numerics.json", json));
+        }
     }
     Ok(RenderedReport { slug: report.slug.clone(), files })
 }

@@ -393,3 +393,111 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
     ];
     figure(&format!("{}: mean efficiency and power loss against μ", r.title), &panels)
 }
+
+/// dynamics_point_K.svg: DTE over the steady-state cycle, mesh force per pair, friction force, DTE spectrum.
+pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
+    let d = r.dynamics.as_ref().ok_or("no dynamics in the report")?;
+    let c = &d.curves[k];
+    let tau_panel = |y: &str, series: Vec<(String, Vec<f64>)>| Panel {
+        y_label: y.into(),
+        x_label: "time in mesh periods (0: a pair enters at A)".into(),
+        x: c.tau.clone(),
+        series,
+        marks: c.marks.clone(),
+        ..Default::default()
+    };
+    let orders: Vec<f64> = (1..=c.spectrum.first().map_or(0, |s| s.1.len())).map(|o| o as f64).collect();
+    let panels = [
+        tau_panel("DTE x (µm)", c.dte.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| x * 1e6).collect())).collect()),
+        tau_panel("dynamic mesh force per pair (N)", c.pair_force.clone()),
+        tau_panel("friction force Σ μ F (N)", c.friction_force.clone()),
+        Panel {
+            y_label: "DTE harmonic amplitude (µm)".into(),
+            x_label: "mesh order".into(),
+            x: orders,
+            series: c.spectrum.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| x * 1e6).collect())).collect(),
+            ..Default::default()
+        },
+    ];
+    figure(&format!("{}: dynamics at {}", r.title, c.label), &panels)
+}
+
+/// stability_map.svg: spectral radius and dynamic factor against speed, per formulation.
+pub fn stability_map(r: &Report) -> Result<String, String> {
+    use crate::report::friction::MuValue;
+    let map = r.dynamics.as_ref().and_then(|d| d.stability_map.as_ref()).ok_or("no stability map")?;
+    let x: Vec<f64> = map.points.iter().map(|p| p.pinion_speed.si() * 30.0 / std::f64::consts::PI).collect();
+    let names: Vec<String> = map.formulations.iter().map(|f| format!("{f:?}").to_lowercase()).collect();
+    let mut rho: Vec<(String, Vec<f64>)> = names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| (n.clone(), map.points.iter().map(|p| p.spectral_radius[i].0).collect()))
+        .collect();
+    rho.push(("ρ = 1".into(), vec![1.0; x.len()]));
+    let kv = names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| {
+            let ys = map
+                .points
+                .iter()
+                .map(|p| match p.dynamic_factor[i] {
+                    MuValue::Value(v) => v.0,
+                    MuValue::Text(_) => f64::NAN,
+                })
+                .collect();
+            (n.clone(), ys)
+        })
+        .collect();
+    let panels = [
+        Panel {
+            y_label: "spectral radius ρ".into(),
+            x_label: "pinion speed (rpm)".into(),
+            x: x.clone(),
+            series: rho,
+            ..Default::default()
+        },
+        Panel {
+            y_label: "dynamic factor (stable speeds)".into(),
+            x_label: "pinion speed (rpm)".into(),
+            x,
+            series: kv,
+            ..Default::default()
+        },
+    ];
+    figure(&format!("{}: stability map at {:.1} N·m", r.title, map.pinion_torque.si()), &panels)
+}
+
+/// timing_work_precision.svg: log10 error against log10 run time, one curve per method (machine-dependent).
+pub fn work_precision(r: &Report) -> Result<String, String> {
+    let t = r.dynamics.as_ref().and_then(|d| d.timings.as_ref()).ok_or("no numerics")?;
+    let mut methods: Vec<String> = t.runs.iter().map(|x| x.0.clone()).collect();
+    methods.dedup();
+    // Each method on its own x grid: plot as separate panels' series sharing an x of log10 error.
+    let mut xs: Vec<f64> = t.runs.iter().filter(|x| x.2.is_finite() && x.2 > 0.0).map(|x| x.2.log10()).collect();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let series = methods
+        .iter()
+        .map(|m| {
+            let ys = xs
+                .iter()
+                .map(|x| {
+                    t.runs
+                        .iter()
+                        .find(|r| r.0 == *m && r.2 > 0.0 && (r.2.log10() - x).abs() < 1e-12)
+                        .map_or(f64::NAN, |r| r.3.log10())
+                })
+                .collect();
+            (m.clone(), ys)
+        })
+        .collect();
+    let panel = Panel {
+        y_label: "log10 run time (s)".into(),
+        x_label: "log10 error (max |x − x_ref| / peak-to-peak DTE)".into(),
+        x: xs,
+        series,
+        ..Default::default()
+    };
+    figure(&format!("{}: work-precision (this machine)", r.title), &[panel])
+}

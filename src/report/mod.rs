@@ -1,5 +1,6 @@
 //! Stage 4, report: the serde data every renderer reads. Nothing here formats text for a reader.
 
+pub mod dynamics;
 pub mod friction;
 pub mod number;
 
@@ -22,6 +23,8 @@ pub struct Report {
     pub operating_points: Vec<OperatingPointReport>,
     /// One record per (operating point, law, formulation); empty unless the scene asks for `efficiency`.
     pub efficiency: Vec<friction::EfficiencyRecord>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamics: Option<dynamics::DynamicsReport>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
     /// Sampled curves for the plots (not in report.json: they repeat the tables at finer spacing).
@@ -554,6 +557,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
         geometry: geometry_report(eval),
         operating_points: eval.points.iter().map(|p| operating_point_report(scene, eval, p)).collect(),
         efficiency: friction::efficiency_records(scene, eval),
+        dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
         findings,
         plots: vec![PlotRef {
             file: "contact_state.svg".into(),
@@ -561,6 +565,21 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
         }],
         curves: curves(scene, eval),
     };
+    if let Some(d) = &report.dynamics {
+        report.findings.extend(dynamics::dynamics_findings(d));
+        if d.stability_map.is_some() {
+            report.plots.push(PlotRef {
+                file: "stability_map.svg".into(),
+                title: "Floquet spectral radius and dynamic factor against pinion speed".into(),
+            });
+        }
+        if d.numerics.is_some() {
+            report.plots.push(PlotRef {
+                file: "timing_work_precision.svg".into(),
+                title: "Work-precision: error against run time (machine-dependent)".into(),
+            });
+        }
+    }
     for pc in &report.curves.points {
         if let Some(op) = report.operating_points.iter_mut().find(|o| o.label == pc.label) {
             op.plot = Some(pc.file.clone());

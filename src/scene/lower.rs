@@ -14,7 +14,7 @@ use crate::friction::catalog;
 use crate::geometry::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput};
 use crate::model::*;
 
-const SCENE_BLOCKS: &[&str] = &["gears", "material", "lubricant", "operating", "friction", "analyses"];
+const SCENE_BLOCKS: &[&str] = &["gears", "material", "lubricant", "operating", "friction", "dynamics", "analyses"];
 const GEARS_KEYS: &[&str] =
     &["module", "diametral_pitch", "pressure_angle", "center_distance", "face_width", "load_sharing"];
 const GEAR_KEYS: &[&str] =
@@ -23,7 +23,8 @@ const MATERIAL_KEYS: &[&str] = &["youngs_modulus", "poisson_ratio"];
 const LUBRICANT_KEYS: &[&str] =
     &["dynamic_viscosity", "density", "kinematic_viscosity", "pressure_viscosity", "type", "temperature"];
 const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed"];
-const ANALYSES: &[&str] = &["efficiency", "friction_along_loa", "film", "contact"];
+const ANALYSES: &[&str] =
+    &["efficiency", "friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics"];
 const FORMULATIONS: &[&str] = &["external", "internal"];
 
 /// Lowers a parsed scene. On failure, every diagnostic found.
@@ -78,6 +79,29 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
     let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
+    let dynamics = singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, &mut errors));
+    if let Some(span) = analyses.dynamics_span {
+        if !singles.contains_key("dynamics") {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::MissingKey, span, "the dynamics analyses need a `dynamics` block")
+                    .hint("add `dynamics { mesh_stiffness { single = 1.96e8 N/m  double = 3.92e8 N/m }  damping_ratio = 0.05  friction = coulomb(mu = 0.08) }`"),
+            );
+        }
+        if let Some(g) = &gears {
+            for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+                if gear.inertia.is_none() {
+                    errors.push(
+                        Diagnostic::new(
+                            DiagnosticKind::MissingKey,
+                            gear.span,
+                            format!("the dynamics need the {name}'s `inertia`"),
+                        )
+                        .hint(format!("add `inertia = 3.45e-4 kg*m^2` to `{name}`")),
+                    );
+                }
+            }
+        }
+    }
 
     if let Some(g) = &gears {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
@@ -96,7 +120,7 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     }
     match (gears, operating) {
         (Some(gears), Some(operating)) if errors.is_empty() => {
-            Ok(Scene { title: ast.title.clone(), gears, lubricant, operating, friction, analyses })
+            Ok(Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, analyses })
         }
         _ => Err(errors),
     }
@@ -626,11 +650,23 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                 }
                 a.efficiency = Some(formulations);
             }
+            "stability_map" => {
+                a.stability_map = super::lower_dynamics::lower_stability_map(call, errors);
+                a.dynamics_span = Some(call.span);
+            }
             other => {
                 if let Some((name, _)) = call.arguments.first() {
                     errors.push(unknown_name(&format!("argument of `{other}`"), name, &[]));
                 }
                 match other {
+                    "dynamics" => {
+                        a.dynamics = true;
+                        a.dynamics_span = Some(call.span);
+                    }
+                    "numerics" => {
+                        a.numerics = true;
+                        a.dynamics_span = Some(call.span);
+                    }
                     "friction_along_loa" => a.friction_along_loa = true,
                     "film" => {
                         a.film = true;

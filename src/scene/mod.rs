@@ -4,5 +4,6 @@ pub mod ast;
 pub mod diagnostics;
 pub mod fields;
 pub mod lower;
+pub mod lower_dynamics;
 pub mod parse;
 pub mod units;

@@ -1,0 +1,209 @@
+//! Stage 3 for the `dynamics` block: the SDOF model at every operating point and formulation, the
+//! stability map and the numerics study — only what the scene's analyses ask for.
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::dynamics::floquet::Verdict;
+use crate::dynamics::numerics::{study, Study};
+use crate::dynamics::propagator::Method;
+use crate::dynamics::response::PeriodicResponse;
+use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, SdofSystem, StiffnessModel};
+use crate::evaluate::Evaluation;
+use crate::friction::{self, FrictionLaw};
+use crate::geometry::{OperatingState, SpurGeometry};
+use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
+
+/// One formulation at one operating point.
+#[derive(Debug, Clone, Serialize)]
+pub struct FormulationResult {
+    pub formulation: DynamicFormulation,
+    pub method: Method,
+    pub multipliers: [Multiplier; 2],
+    pub spectral_radius: f64,
+    pub verdict: Verdict,
+    pub determinant: f64,
+    pub liouville: f64,
+    pub response: Option<PeriodicResponse>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct DynamicsPoint {
+    pub index: (usize, usize),
+    pub state: OperatingState,
+    pub mesh_frequency: f64,
+    pub results: Vec<FormulationResult>,
+}
+
+/// Spectral radius and dynamic factor of each formulation at one speed of the map.
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityPoint {
+    pub pinion_speed: f64,
+    pub spectral_radius: Vec<f64>,
+    pub dynamic_factor: Vec<Option<f64>>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct DynamicsEvaluation {
+    pub stiffness: StiffnessModel,
+    /// "given", "iso_6336" or "table".
+    pub stiffness_source: &'static str,
+    pub damping_ratio: f64,
+    pub equivalent_mass: f64,
+    pub damping: f64,
+    pub mean_stiffness: f64,
+    pub natural_frequency: f64,
+    pub formulations: Vec<DynamicFormulation>,
+    pub points: Vec<DynamicsPoint>,
+    pub stability_map: Option<Vec<StabilityPoint>>,
+    /// The formulation and operating point (index) of the numerics study, and the study.
+    pub numerics: Option<(DynamicFormulation, usize, Study)>,
+}
+
+/// The ISO 6336-1 single-pair stiffness per face width c' (N/(mm·µm)) (physics notes).
+pub fn iso_6336_single_stiffness(g: &SpurGeometry) -> f64 {
+    let (z1, z2) = (g.teeth[0] as f64, g.teeth[1] as f64);
+    let [x1, x2] = g.profile_shift;
+    let q = 0.04723 + 0.15551 / z1 + 0.25791 / z2 - 0.00635 * x1 - 0.11654 * x1 / z1 - 0.00193 * x2 - 0.24188 * x2 / z2
+        + 0.00529 * x1 * x1
+        + 0.00182 * x2 * x2;
+    let (c_m, c_r) = (0.8, 1.0);
+    let h_fp = 1.25;
+    let c_b = (1.0 + 0.5 * (1.2 - h_fp)) * (1.0 - 0.02 * (20.0 - g.pressure_angle.to_degrees()));
+    c_m * c_r * c_b / q
+}
+
+fn stiffness_model(spec: &DynamicsSpec, g: &SpurGeometry) -> (StiffnessModel, &'static str) {
+    match &spec.stiffness {
+        StiffnessSpec::Pairs { single, double, triple } => (
+            StiffnessModel::PairsInContact { single: *single, double: *double, triple: triple.unwrap_or(1.5 * double) },
+            "given",
+        ),
+        StiffnessSpec::Iso6336 => {
+            // c' in N/(mm·µm) times b in mm: N/µm, ×1e6: N/m.
+            let k = iso_6336_single_stiffness(g) * g.face_width * 1e3 * 1e6;
+            (StiffnessModel::PairsInContact { single: k, double: 2.0 * k, triple: 3.0 * k }, "iso_6336")
+        }
+        StiffnessSpec::Table(v) => (StiffnessModel::Table(v.clone()), "table"),
+    }
+}
+
+fn inertia(scene: &Scene) -> [f64; 2] {
+    let j = |g: &crate::model::Gear| g.inertia.as_ref().map_or(f64::NAN, |j| j.value.value);
+    [j(&scene.gears.pinion), j(&scene.gears.wheel)]
+}
+
+fn system<'a>(
+    eval: &'a Evaluation,
+    spec: &DynamicsSpec,
+    stiffness: &StiffnessModel,
+    law: Option<&'a dyn FrictionLaw>,
+    f: DynamicFormulation,
+    state: OperatingState,
+    inertia: [f64; 2],
+) -> SdofSystem<'a> {
+    let ctx = eval.law_context(state);
+    let law = if f == DynamicFormulation::Base { None } else { law };
+    let mut sys = SdofSystem::new(ctx, law, f, stiffness.clone(), inertia, spec.damping_ratio);
+    sys.allow_exact = spec.solver == Solver::Auto;
+    sys
+}
+
+fn analyse(sys: &SdofSystem, with_response: bool) -> FormulationResult {
+    let fl = Floquet::analyse(sys);
+    FormulationResult {
+        formulation: sys.formulation,
+        method: fl.method,
+        multipliers: fl.multipliers,
+        spectral_radius: fl.spectral_radius,
+        verdict: fl.verdict,
+        determinant: fl.determinant,
+        liouville: fl.liouville,
+        response: if with_response { PeriodicResponse::compute(sys, &fl) } else { None },
+    }
+}
+
+/// Evaluates the dynamics the scene asks for; None when it asks for none.
+pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEvaluation> {
+    let spec = scene.dynamics.as_ref()?;
+    let a = &scene.analyses;
+    if !(a.dynamics || a.stability_map.is_some() || a.numerics) {
+        return None;
+    }
+    let (stiffness, source) = stiffness_model(spec, &eval.geometry);
+    let j = inertia(scene);
+    let state_of = |ti: usize, ni: usize| OperatingState {
+        pinion_torque: scene.operating.pinion_torque.values[ti].value,
+        pinion_speed: scene.operating.pinion_speed.values[ni].value,
+    };
+    let probe_state = state_of(0, 0);
+    let probe = system(eval, spec, &stiffness, None, DynamicFormulation::Base, probe_state, j);
+    let law_for = |state: OperatingState| spec.friction.as_ref().map(|l| friction::build(l, &eval.law_context(state)));
+    let points = if a.dynamics {
+        scene
+            .operating
+            .points()
+            .par_iter()
+            .map(|&(ti, ni)| {
+                let state = state_of(ti, ni);
+                let law = law_for(state);
+                let results = spec
+                    .formulations
+                    .iter()
+                    .map(|f| analyse(&system(eval, spec, &stiffness, law.as_deref(), *f, state, j), true))
+                    .collect();
+                DynamicsPoint {
+                    index: (ti, ni),
+                    state,
+                    mesh_frequency: state.pinion_speed * eval.geometry.teeth[0] as f64 / (2.0 * std::f64::consts::PI),
+                    results,
+                }
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let stability_map = a.stability_map.as_ref().map(|speeds| {
+        speeds
+            .values
+            .par_iter()
+            .map(|w| {
+                let state = OperatingState { pinion_torque: probe_state.pinion_torque, pinion_speed: w.value };
+                let law = law_for(state);
+                let results: Vec<FormulationResult> = spec
+                    .formulations
+                    .iter()
+                    .map(|f| analyse(&system(eval, spec, &stiffness, law.as_deref(), *f, state, j), true))
+                    .collect();
+                StabilityPoint {
+                    pinion_speed: w.value,
+                    spectral_radius: results.iter().map(|r| r.spectral_radius).collect(),
+                    dynamic_factor: results.iter().map(|r| r.response.as_ref().map(|x| x.dynamic_factor)).collect(),
+                }
+            })
+            .collect()
+    });
+    let numerics = a.numerics.then(|| {
+        let f = if spec.formulations.contains(&DynamicFormulation::External) {
+            DynamicFormulation::External
+        } else {
+            spec.formulations[0]
+        };
+        let law = law_for(probe_state);
+        let sys = system(eval, spec, &stiffness, law.as_deref(), f, probe_state, j);
+        (f, 0, study(&sys))
+    });
+    Some(DynamicsEvaluation {
+        stiffness: stiffness.clone(),
+        stiffness_source: source,
+        damping_ratio: spec.damping_ratio,
+        equivalent_mass: probe.equivalent_mass,
+        damping: probe.damping,
+        mean_stiffness: probe.mean_stiffness,
+        natural_frequency: probe.natural_frequency(),
+        formulations: spec.formulations.clone(),
+        points,
+        stability_map,
+        numerics,
+    })
+}

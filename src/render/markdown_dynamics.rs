@@ -1,0 +1,161 @@
+//! report.md: the dynamics section (no run times: those live in the timing files).
+
+use std::fmt::Write;
+
+use super::markdown::{fixed, header, row};
+use crate::report::dynamics::{DynamicsReport, StiffnessReport};
+use crate::report::friction::MuValue;
+use crate::report::Report;
+
+fn sci(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:.3e}")
+    } else {
+        "—".into()
+    }
+}
+
+pub fn dynamics(out: &mut String, r: &Report) {
+    let Some(d) = &r.dynamics else { return };
+    let _ = writeln!(out, "## Dynamics\n");
+    let _ = writeln!(
+        out,
+        "SDOF torsional model along the line of action (Fernandes et al.); x = DTE = R_p θ_p − R_w θ_w. Periodic steady state from Floquet theory, (I − Φ(T)) X(0) = q(T); the exact propagator (matrix exponential) where the coefficients are constant on a segment, 4th-order Magnus elsewhere.\n"
+    );
+    header(out, &["quantity", "value"]);
+    let k = match &d.stiffness {
+        StiffnessReport::Pairs { single, double, triple } => format!(
+            "single {} / double {} / triple {} N/µm ({})",
+            fixed(single.si() * 1e-6, 2),
+            fixed(double.si() * 1e-6, 2),
+            fixed(triple.si() * 1e-6, 2),
+            d.stiffness_source.replace('_', " ")
+        ),
+        StiffnessReport::Table { table } => format!("table of {} values over one mesh cycle", table.len()),
+    };
+    for (q, v) in [
+        ("mesh stiffness", k),
+        ("mean stiffness k̄", format!("{} N/µm", fixed(d.mean_stiffness.si() * 1e-6, 3))),
+        ("equivalent mass m_e", format!("{} kg", fixed(d.equivalent_mass.si(), 5))),
+        ("damping ratio ζ, damping c", format!("{}, {} N·s/m", fixed(d.damping_ratio.0, 4), fixed(d.damping.si(), 2))),
+        ("natural frequency f_n", format!("{} Hz", fixed(d.natural_frequency.si(), 1))),
+        ("friction law", d.friction.clone().unwrap_or_else(|| "none (base model only)".into())),
+    ] {
+        row(out, &[q.into(), v]);
+    }
+    let _ = writeln!(out);
+    for p in &d.points {
+        let _ = writeln!(
+            out,
+            "### Dynamics at {}\n\nf_mesh = {} Hz, f_n/f_mesh = {}\n",
+            p.label,
+            fixed(p.mesh_frequency.si(), 2),
+            fixed(p.frequency_ratio.0, 3)
+        );
+        header(
+            out,
+            &[
+                "formulation",
+                "propagator",
+                "ρ",
+                "multipliers",
+                "verdict",
+                "det Φ(T)",
+                "Liouville",
+                "DTE p-p µm",
+                "K_v",
+                "η_dyn %",
+                "separation",
+            ],
+        );
+        for f in &p.formulations {
+            let mults: Vec<String> =
+                f.floquet_multipliers.iter().map(|[re, im]| format!("{:.6}{:+.6}i", re.0, im.0)).collect();
+            row(
+                out,
+                &[
+                    format!("{:?}", f.formulation).to_lowercase(),
+                    format!("{:?}", f.method).to_lowercase(),
+                    fixed(f.spectral_radius.0, 6),
+                    mults.join(", "),
+                    format!("{:?}", f.verdict).to_lowercase(),
+                    sci(f.monodromy_determinant.0),
+                    sci(f.liouville_determinant.0),
+                    f.dte_peak_to_peak.map_or("—".into(), |q| fixed(q.si() * 1e6, 4)),
+                    f.dynamic_factor.map_or("—".into(), |k| fixed(k.0, 4)),
+                    f.mean_dynamic_efficiency.map_or("—".into(), |e| fixed(100.0 * e.0, 4)),
+                    if f.tooth_separation.is_empty() { "none".into() } else { "**yes**".into() },
+                ],
+            );
+        }
+        let _ = writeln!(out);
+        if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
+            let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
+        }
+    }
+    if let Some(map) = &d.stability_map {
+        let _ = writeln!(
+            out,
+            "### Stability map\n\nPinion torque {} N·m, {} speeds.\n",
+            fixed(map.pinion_torque.si(), 2),
+            map.points.len()
+        );
+        header(out, &["formulation", "max ρ", "at rpm", "max K_v (stable)", "unstable ranges"]);
+        for (i, f) in map.formulations.iter().enumerate() {
+            let (mut rho, mut at, mut kv) = (0.0f64, 0.0, 0.0f64);
+            for p in &map.points {
+                if p.spectral_radius[i].0 > rho {
+                    rho = p.spectral_radius[i].0;
+                    at = p.pinion_speed.si() * 30.0 / std::f64::consts::PI;
+                }
+                if let MuValue::Value(v) = p.dynamic_factor[i] {
+                    kv = kv.max(v.0);
+                }
+            }
+            let ranges: Vec<String> = map.unstable_ranges[i]
+                .iter()
+                .map(|[a, b]| {
+                    format!("{:.0}–{:.0}", a.si() * 30.0 / std::f64::consts::PI, b.si() * 30.0 / std::f64::consts::PI)
+                })
+                .collect();
+            row(
+                out,
+                &[
+                    format!("{f:?}").to_lowercase(),
+                    fixed(rho, 6),
+                    fixed(at, 0),
+                    fixed(kv, 4),
+                    if ranges.is_empty() { "none".into() } else { format!("{} rpm", ranges.join(", ")) },
+                ],
+            );
+        }
+        let _ = writeln!(out, "\n![stability map](stability_map.svg)\n");
+    }
+    numerics(out, d);
+}
+
+fn numerics(out: &mut String, d: &DynamicsReport) {
+    let Some(n) = &d.numerics else { return };
+    let _ = writeln!(
+        out,
+        "### Numerical error of the integrators\n\n{:?} formulation at the first operating point, {} mesh periods from the static deflection, every integration restarted at every switch time. Error: max |x − x_ref| over the last period / peak-to-peak DTE, against the {:?} reference; final-state error in the scaled state norm. Run times are machine-dependent and kept in `timing_numerics.json` and `timing_work_precision.svg`.\n",
+        n.formulation, n.periods, n.reference
+    );
+    header(out, &["method", "rtol", "error", "final-state error", "steps", "rejected", "RHS evaluations", "note"]);
+    for r in &n.runs {
+        row(
+            out,
+            &[
+                r.method.clone(),
+                format!("{:.0e}", r.rtol.0),
+                r.error.map_or("—".into(), |e| sci(e.0)),
+                r.final_state_error.map_or("—".into(), |e| sci(e.0)),
+                r.steps.to_string(),
+                r.rejected.to_string(),
+                r.evaluations.to_string(),
+                r.failure.clone().unwrap_or_default(),
+            ],
+        );
+    }
+    let _ = writeln!(out, "\n![work-precision](timing_work_precision.svg)\n");
+}

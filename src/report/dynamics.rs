@@ -1,0 +1,383 @@
+//! The dynamics part of the report (serde data). Run times of the numerics study are kept out of it
+//! (they go to `timing_numerics.json` only), so report.json stays deterministic.
+
+use serde::Serialize;
+
+use super::number::{m, Num, Q};
+use super::{Finding, Severity};
+use crate::dynamics::floquet::Verdict;
+use crate::dynamics::propagator::Method;
+use crate::dynamics::{DynamicFormulation, StiffnessModel};
+use crate::evaluate::Evaluation;
+use crate::evaluate_dynamics::DynamicsEvaluation;
+use crate::model::Scene;
+
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum StiffnessReport {
+    Pairs { single: Q, double: Q, triple: Q },
+    Table { table: Vec<Q> },
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct SpectrumLine {
+    pub order: usize,
+    pub amplitude: Q,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct FormulationReport {
+    pub formulation: DynamicFormulation,
+    pub method: Method,
+    pub spectral_radius: Num,
+    /// [re, im] pairs.
+    pub floquet_multipliers: Vec<[Num; 2]>,
+    pub verdict: Verdict,
+    pub monodromy_determinant: Num,
+    /// exp(∫ tr A dt), which det Φ(T) must equal.
+    pub liouville_determinant: Num,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dte_peak_to_peak: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dte_mean: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamic_factor: Option<Num>,
+    /// Mesh-period fractions [from, to] where the dynamic mesh force is negative (teeth separate).
+    pub tooth_separation: Vec<[Num; 2]>,
+    pub spectrum: Vec<SpectrumLine>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mean_dynamic_efficiency: Option<Num>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct DynamicsPointReport {
+    pub label: String,
+    pub pinion_torque: Q,
+    pub pinion_speed: Q,
+    pub mesh_frequency: Q,
+    /// f_n / f_mesh.
+    pub frequency_ratio: Num,
+    pub formulations: Vec<FormulationReport>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityRow {
+    pub pinion_speed: Q,
+    pub spectral_radius: Vec<Num>,
+    /// A number, or `unstable` where no steady state exists.
+    pub dynamic_factor: Vec<super::friction::MuValue>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct StabilityMapReport {
+    pub pinion_torque: Q,
+    pub formulations: Vec<DynamicFormulation>,
+    /// Per formulation: speed ranges [from, to] (rad/s) where ρ > 1.
+    pub unstable_ranges: Vec<Vec<[Q; 2]>>,
+    pub points: Vec<StabilityRow>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct NumericsRow {
+    pub method: String,
+    pub rtol: Num,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<Num>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_state_error: Option<Num>,
+    pub steps: usize,
+    pub rejected: usize,
+    pub evaluations: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub failure: Option<String>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct NumericsReport {
+    pub formulation: DynamicFormulation,
+    pub reference: Method,
+    pub periods: usize,
+    pub runs: Vec<NumericsRow>,
+}
+
+/// Run times, for the timing files only.
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct Timings {
+    pub reference_seconds: f64,
+    /// (method, rtol, error, seconds)
+    pub runs: Vec<(String, f64, f64, f64)>,
+}
+
+/// Curves of one operating point for plots.
+#[derive(Debug, Clone, Default)]
+pub struct DynamicsCurves {
+    pub file: String,
+    pub label: String,
+    pub tau: Vec<f64>,
+    /// (formulation, DTE m)
+    pub dte: Vec<(String, Vec<f64>)>,
+    /// (pair label, N)
+    pub pair_force: Vec<(String, Vec<f64>)>,
+    /// (formulation, N)
+    pub friction_force: Vec<(String, Vec<f64>)>,
+    /// (formulation, amplitudes by order 1..)
+    pub spectrum: Vec<(String, Vec<f64>)>,
+    /// Zone boundary and pitch-point passage times (mesh periods).
+    pub marks: Vec<(&'static str, f64)>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct DynamicsReport {
+    pub model: &'static str,
+    pub stiffness_source: &'static str,
+    pub stiffness: StiffnessReport,
+    pub damping_ratio: Num,
+    pub equivalent_mass: Q,
+    pub damping: Q,
+    pub mean_stiffness: Q,
+    pub natural_frequency: Q,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<String>,
+    pub points: Vec<DynamicsPointReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stability_map: Option<StabilityMapReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub numerics: Option<NumericsReport>,
+    #[serde(skip)]
+    pub curves: Vec<DynamicsCurves>,
+    #[serde(skip)]
+    pub timings: Option<Timings>,
+}
+
+fn finite(x: f64) -> Option<Num> {
+    x.is_finite().then_some(Num(x))
+}
+
+pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
+    let stiffness = match &d.stiffness {
+        StiffnessModel::PairsInContact { single, double, triple } => StiffnessReport::Pairs {
+            single: Q::new(*single, "N/m"),
+            double: Q::new(*double, "N/m"),
+            triple: Q::new(*triple, "N/m"),
+        },
+        StiffnessModel::Table(v) => StiffnessReport::Table { table: v.iter().map(|k| Q::new(*k, "N/m")).collect() },
+    };
+    let g = &eval.geometry;
+    let tau_b = g.contact_ratio.fract();
+    let tau_p = ((g.points.p - g.points.a) / g.base_pitch).fract();
+    let picked = super::pick(d.points.len());
+    let mut curves = Vec::new();
+    let points = d
+        .points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let pe = eval.points.iter().find(|x| x.index == p.index).expect("same operating points");
+            let label = super::operating_label(scene, pe);
+            if picked.contains(&k) {
+                let mut c = DynamicsCurves {
+                    file: format!("dynamics_point_{}.svg", k + 1),
+                    label: label.clone(),
+                    marks: vec![("B|E", tau_b), ("P", tau_p)],
+                    ..Default::default()
+                };
+                for r in &p.results {
+                    let Some(resp) = &r.response else { continue };
+                    let name = r.formulation.name().to_string();
+                    c.tau = resp.tau.clone();
+                    c.dte.push((name.clone(), resp.dte.clone()));
+                    c.friction_force.push((name.clone(), resp.friction_force.clone()));
+                    c.spectrum.push((name.clone(), resp.spectrum.iter().map(|s| s.1).collect()));
+                    if c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base {
+                        c.pair_force = resp
+                            .pair_force
+                            .iter()
+                            .enumerate()
+                            .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
+                            .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), f.clone()))
+                            .collect();
+                    }
+                }
+                if !c.dte.is_empty() {
+                    curves.push(c);
+                }
+            }
+            DynamicsPointReport {
+                label,
+                pinion_torque: Q::new(p.state.pinion_torque, "N*m"),
+                pinion_speed: Q::new(p.state.pinion_speed, "rad/s"),
+                mesh_frequency: Q::new(p.mesh_frequency, "Hz"),
+                frequency_ratio: Num(d.natural_frequency / p.mesh_frequency),
+                formulations: p
+                    .results
+                    .iter()
+                    .map(|r| FormulationReport {
+                        formulation: r.formulation,
+                        method: r.method,
+                        spectral_radius: Num(r.spectral_radius),
+                        floquet_multipliers: r.multipliers.iter().map(|m| [Num(m.re), Num(m.im)]).collect(),
+                        verdict: r.verdict,
+                        monodromy_determinant: Num(r.determinant),
+                        liouville_determinant: Num(r.liouville),
+                        dte_peak_to_peak: r.response.as_ref().map(|x| m(x.dte_peak_to_peak)),
+                        dte_mean: r.response.as_ref().map(|x| m(x.dte_mean)),
+                        dynamic_factor: r.response.as_ref().map(|x| Num(x.dynamic_factor)),
+                        tooth_separation: r
+                            .response
+                            .as_ref()
+                            .map_or_else(Vec::new, |x| x.separation.iter().map(|(a, b)| [Num(*a), Num(*b)]).collect()),
+                        spectrum: r.response.as_ref().map_or_else(Vec::new, |x| {
+                            x.spectrum.iter().map(|(o, a)| SpectrumLine { order: *o, amplitude: m(*a) }).collect()
+                        }),
+                        mean_dynamic_efficiency: r.response.as_ref().and_then(|x| x.mean_dynamic_efficiency.map(Num)),
+                    })
+                    .collect(),
+            }
+        })
+        .collect();
+    let stability_map = d.stability_map.as_ref().map(|rows| {
+        let unstable_ranges = (0..d.formulations.len())
+            .map(|i| {
+                let mut ranges = Vec::new();
+                let mut open: Option<f64> = None;
+                let mut last = 0.0;
+                for r in rows {
+                    let bad = r.spectral_radius[i] > 1.0 + 1e-9;
+                    match (open, bad) {
+                        (None, true) => open = Some(r.pinion_speed),
+                        (Some(a), false) => {
+                            ranges.push([Q::new(a, "rad/s"), Q::new(last, "rad/s")]);
+                            open = None;
+                        }
+                        _ => {}
+                    }
+                    last = r.pinion_speed;
+                }
+                if let Some(a) = open {
+                    ranges.push([Q::new(a, "rad/s"), Q::new(last, "rad/s")]);
+                }
+                ranges
+            })
+            .collect();
+        StabilityMapReport {
+            pinion_torque: Q::new(scene.operating.pinion_torque.values[0].value, "N*m"),
+            formulations: d.formulations.clone(),
+            unstable_ranges,
+            points: rows
+                .iter()
+                .map(|r| StabilityRow {
+                    pinion_speed: Q::new(r.pinion_speed, "rad/s"),
+                    spectral_radius: r.spectral_radius.iter().map(|x| Num(*x)).collect(),
+                    dynamic_factor: r
+                        .dynamic_factor
+                        .iter()
+                        .map(|x| {
+                            x.map_or(super::friction::MuValue::Text("unstable"), |v| {
+                                super::friction::MuValue::Value(Num(v))
+                            })
+                        })
+                        .collect(),
+                })
+                .collect(),
+        }
+    });
+    let (numerics, timings) = match &d.numerics {
+        None => (None, None),
+        Some((f, _, study)) => (
+            Some(NumericsReport {
+                formulation: *f,
+                reference: study.reference,
+                periods: study.periods,
+                runs: study
+                    .runs
+                    .iter()
+                    .map(|r| NumericsRow {
+                        method: r.method.clone(),
+                        rtol: Num(r.rtol),
+                        error: finite(r.error),
+                        final_state_error: finite(r.final_state_error),
+                        steps: r.counts.steps,
+                        rejected: r.counts.rejected,
+                        evaluations: r.counts.evaluations,
+                        failure: r.failure.clone(),
+                    })
+                    .collect(),
+            }),
+            Some(Timings {
+                reference_seconds: study.reference_seconds,
+                runs: study.runs.iter().map(|r| (r.method.clone(), r.rtol, r.error, r.seconds)).collect(),
+            }),
+        ),
+    };
+    DynamicsReport {
+        model: "sdof",
+        stiffness_source: d.stiffness_source,
+        stiffness,
+        damping_ratio: Num(d.damping_ratio),
+        equivalent_mass: Q::new(d.equivalent_mass, "kg"),
+        damping: Q::new(d.damping, "N*s/m"),
+        mean_stiffness: Q::new(d.mean_stiffness, "N/m"),
+        natural_frequency: Q::new(d.natural_frequency, "Hz"),
+        friction: scene.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
+        points,
+        stability_map,
+        numerics,
+        curves,
+        timings,
+    }
+}
+
+/// Findings of the dynamics: instability, tooth separation, stiff ratios, Liouville.
+pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    for p in &r.points {
+        for f in &p.formulations {
+            let name = format!("{:?}", f.formulation).to_lowercase();
+            if f.verdict == Verdict::Unstable {
+                out.push(warn(format!(
+                    "dynamics at {} ({name}): parametrically unstable, spectral radius {:.6}; no steady state exists in the linear model and none is reported",
+                    p.label, f.spectral_radius.0
+                )));
+            }
+            if !f.tooth_separation.is_empty() {
+                let spans: Vec<String> =
+                    f.tooth_separation.iter().map(|[a, b]| format!("τ = {:.4}–{:.4}", a.0, b.0)).collect();
+                out.push(warn(format!(
+                    "dynamics at {} ({name}): the dynamic mesh force turns negative (tooth separation) at {}; the linear model is not valid there",
+                    p.label,
+                    spans.join(", ")
+                )));
+            }
+            let rel = ((f.monodromy_determinant.0 - f.liouville_determinant.0) / f.liouville_determinant.0).abs();
+            if rel > 1e-8 {
+                out.push(warn(format!(
+                    "dynamics at {} ({name}): det Φ(T) = {:e} differs from Liouville's {:e} by {rel:.1e}",
+                    p.label, f.monodromy_determinant.0, f.liouville_determinant.0
+                )));
+            }
+        }
+    }
+    if let Some(map) = &r.stability_map {
+        for (i, ranges) in map.unstable_ranges.iter().enumerate() {
+            if !ranges.is_empty() {
+                let list: Vec<String> = ranges
+                    .iter()
+                    .map(|[a, b]| {
+                        format!(
+                            "{:.0}–{:.0} rpm",
+                            a.si() * 30.0 / std::f64::consts::PI,
+                            b.si() * 30.0 / std::f64::consts::PI
+                        )
+                    })
+                    .collect();
+                out.push(warn(format!(
+                    "stability map ({:?}): unstable (ρ > 1) at {}",
+                    map.formulations[i],
+                    list.join(", ")
+                )));
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,195 @@
+//! Lowering of the `dynamics` block and the dynamics analyses.
+
+use super::ast::*;
+use super::diagnostics::{Diagnostic, DiagnosticKind};
+use super::fields::{scalar, sweep_values, unknown_name, Fields};
+use super::units::Dimension;
+use crate::dynamics::DynamicFormulation;
+use crate::model::{AngularVelocity, DynamicsSpec, Solver, StiffnessSpec, Sweep};
+use crate::scene::units::SiQuantity;
+
+const KEYS: &[&str] = &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver"];
+const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table"];
+const MODELS: &[&str] = &["sdof"];
+const SOLVERS: &[&str] = &["auto", "magnus"];
+const FORMULATIONS: &[&str] = &["base", "external", "internal"];
+
+pub fn lower_dynamics(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<DynamicsSpec> {
+    let f = Fields::read("the `dynamics` block", block.span, &block.items, KEYS, &["mesh_stiffness"], &[], errors);
+    // `model = sdof` is the only model so far; any other name is refused with the list.
+    f.name("model", MODELS, errors);
+    let formulations = match f.values.get("formulations") {
+        None => vec![DynamicFormulation::Base, DynamicFormulation::External, DynamicFormulation::Internal],
+        Some((_, v)) => formulations(v, errors)?,
+    };
+    let damping_ratio = f.number("damping_ratio", 0.0, 1.0, errors).map_or(0.05, |g| g.value);
+    let solver = match f.name("solver", SOLVERS, errors).map(|n| n.text.as_str()) {
+        Some("magnus") => Solver::Magnus,
+        _ => Solver::Auto,
+    };
+    let friction = match f.values.get("friction") {
+        None => None,
+        Some((_, v)) => match &v.kind {
+            ValueKind::Call(c) => match crate::friction::catalog::entry(&c.name.text) {
+                Some(_) => {
+                    let mut laws = super::lower::lower_law(c, errors);
+                    if laws.len() > 1 {
+                        errors.push(
+                            Diagnostic::new(
+                                DiagnosticKind::OutOfRange,
+                                v.span,
+                                "the dynamics take one friction law, not a sweep",
+                            )
+                            .hint("give one value, e.g. `friction = coulomb(mu = 0.08)`"),
+                        );
+                        return None;
+                    }
+                    laws.pop()
+                }
+                None => {
+                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.id).collect();
+                    errors.push(unknown_name("law for `friction`", &c.name, &ids));
+                    return None;
+                }
+            },
+            _ => {
+                errors.push(
+                    Diagnostic::new(DiagnosticKind::WrongDimension, v.span, "`friction` expects a law")
+                        .hint("write `friction = coulomb(mu = 0.08)`"),
+                );
+                return None;
+            }
+        },
+    };
+    if friction.is_none() && formulations.iter().any(|f| *f != DynamicFormulation::Base) {
+        errors.push(
+            f.missing("friction", "coulomb(mu = 0.08)")
+                .hint("the external and internal formulations need a friction law"),
+        );
+        return None;
+    }
+    let stiffness = stiffness(&f, errors)?;
+    Some(DynamicsSpec { formulations, stiffness, damping_ratio, friction, solver, span: block.kind.span })
+}
+
+fn formulations(v: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<DynamicFormulation>> {
+    let ValueKind::List { items, unit: None } = &v.kind else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::WrongDimension, v.span, "`formulations` expects a list of names")
+                .hint("write `formulations = [base, external, internal]`"),
+        );
+        return None;
+    };
+    let mut out = Vec::new();
+    for item in items {
+        match item {
+            ListItem::Name(n) => match n.text.as_str() {
+                "base" => out.push(DynamicFormulation::Base),
+                "external" => out.push(DynamicFormulation::External),
+                "internal" => out.push(DynamicFormulation::Internal),
+                _ => {
+                    errors.push(unknown_name("formulation", n, FORMULATIONS));
+                    return None;
+                }
+            },
+            ListItem::Number(_, s) => {
+                errors.push(
+                    Diagnostic::new(DiagnosticKind::WrongDimension, *s, "a formulation is a name")
+                        .hint("write `formulations = [base, external, internal]`"),
+                );
+                return None;
+            }
+        }
+    }
+    out.dedup();
+    Some(out)
+}
+
+fn stiffness(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<StiffnessSpec> {
+    if f.has("mesh_stiffness") {
+        return f.name("mesh_stiffness", &["iso_6336"], errors).map(|_| StiffnessSpec::Iso6336);
+    }
+    let Some(b) = f.blocks.first() else {
+        return Some(StiffnessSpec::Iso6336);
+    };
+    let k = Fields::read("`mesh_stiffness`", b.span, &b.items, STIFFNESS_KEYS, &[], &[], errors);
+    let get = |key: &str, errors: &mut Vec<Diagnostic>| -> Option<f64> {
+        let (_, v) = k.values.get(key)?;
+        let (x, _) = scalar(key, v, Dimension::STIFFNESS, errors)?;
+        if x > 0.0 {
+            Some(x)
+        } else {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, v.span, format!("`{key}` stiffness must be positive"))
+                    .hint("typical spur mesh stiffness is 1e8 to 1e9 N/m"),
+            );
+            None
+        }
+    };
+    if let Some((_, v)) = k.values.get("table") {
+        let (values, _, _) = sweep_values("table", v, Dimension::STIFFNESS, errors)?;
+        if values.len() < 4 || values.iter().any(|x| *x <= 0.0) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    v.span,
+                    "a stiffness table needs at least 4 positive values",
+                )
+                .hint("give k over one mesh cycle, equally spaced, from the entry of a pair at A"),
+            );
+            return None;
+        }
+        return Some(StiffnessSpec::Table(values));
+    }
+    let single = get("single", errors);
+    let double = get("double", errors);
+    let triple = get("triple", errors);
+    match (single, double) {
+        (Some(single), Some(double)) => Some(StiffnessSpec::Pairs { single, double, triple }),
+        _ => {
+            if !k.has("single") || !k.has("double") {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        b.kind.span,
+                        "`mesh_stiffness` needs `single` and `double` (or a `table`)",
+                    )
+                    .hint("write `mesh_stiffness { single = 1.96e8 N/m  double = 3.92e8 N/m }`"),
+                );
+            }
+            None
+        }
+    }
+}
+
+/// `stability_map(pinion_speed = 1000..60000 rpm step 100)`.
+pub fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Sweep<AngularVelocity>> {
+    let mut out = None;
+    for (name, value) in &call.arguments {
+        if name.text != "pinion_speed" {
+            errors.push(unknown_name("argument of `stability_map`", name, &["pinion_speed"]));
+            continue;
+        }
+        let (si, unit, written) = sweep_values("pinion_speed", value, Dimension::ANGULAR_VELOCITY, errors)?;
+        if si.iter().any(|x| *x <= 0.0) {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, value.span, "stability map speeds must be positive")
+                    .hint("write e.g. `1000..60000 rpm step 100`"),
+            );
+            return None;
+        }
+        out = Some(Sweep {
+            values: si.into_iter().map(AngularVelocity::from_si).collect(),
+            unit,
+            written_values: written,
+            span: value.span,
+        });
+    }
+    if out.is_none() {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, call.span, "`stability_map` needs `pinion_speed`")
+                .hint("write `stability_map(pinion_speed = 1000..60000 rpm step 100)`"),
+        );
+    }
+    out
+}
