@@ -61,3 +61,97 @@ fn sweep_10000_points_three_laws(bencher: divan::Bencher) {
     let scene = scene("50..500 N*m count 100", "100..10000 rpm count 100", "coulomb(mu = 0.05) xu benedict_kelley");
     bencher.bench(|| divan::black_box(gearloss::evaluate(&scene).points.len()));
 }
+
+mod dynamics {
+    use gearloss::dynamics::integrators::{integrate, Integrator};
+    use gearloss::dynamics::propagator::period_segments;
+    use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
+    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::geometry::OperatingState;
+    use nalgebra::Vector2;
+
+    const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+
+    fn fzg() -> gearloss::Scene {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
+        gearloss::check("fzg", &text).unwrap()
+    }
+
+    fn with_system<R>(rpm: f64, f: impl FnOnce(&SdofSystem) -> R) -> R {
+        let scene = fzg();
+        let eval = gearloss::evaluate(&scene);
+        let law = Coulomb { mu: 0.08 };
+        let ctx =
+            eval.law_context(OperatingState { pinion_torque: 239.3, pinion_speed: rpm * std::f64::consts::PI / 30.0 });
+        let sys = SdofSystem::new(ctx, Some(&law), DynamicFormulation::External, K, [3.45e-4, 15.24e-4], 0.05);
+        f(&sys)
+    }
+
+    /// Exact propagator (segment exponentials and 200 periods of chaining), FZG at 1000 rpm. Target < 10 µs.
+    #[divan::bench]
+    fn exact_propagator_200_periods(bencher: divan::Bencher) {
+        with_system(1000.0, |sys| {
+            bencher.bench(|| {
+                let (segs, _) = period_segments(sys);
+                let mut x = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+                for _ in 0..200 {
+                    for s in &segs {
+                        x = s.apply(&x);
+                    }
+                }
+                divan::black_box(x)
+            })
+        });
+    }
+
+    /// Floquet: monodromy, multipliers and the periodic state. Target < 5 µs.
+    #[divan::bench]
+    fn floquet_periodic_state(bencher: divan::Bencher) {
+        with_system(1000.0, |sys| bencher.bench(|| divan::black_box(Floquet::analyse(sys).periodic_state)));
+    }
+
+    fn ten_periods(sys: &SdofSystem) -> Vec<f64> {
+        (0..=64).map(|i| 9.0 * sys.period + sys.period * i as f64 / 64.0).collect()
+    }
+
+    /// DOP853 with restarts, 10 periods, rtol 1e-10 (error ≤ 1e-8 of the peak-to-peak DTE, tested). Target < 15 ms.
+    #[divan::bench(sample_count = 10)]
+    fn dop853_nominal_1e_8(bencher: divan::Bencher) {
+        with_system(1000.0, |sys| {
+            let times = ten_periods(sys);
+            let x0 = [sys.static_force / sys.mean_stiffness, 0.0];
+            bencher.bench(|| divan::black_box(integrate(sys, Integrator::Dop853, 1e-10, x0, &times).unwrap().1))
+        });
+    }
+
+    /// The stiff case, f_n/f_mesh ≈ 1000 (22.4 rpm), Radau5 at rtol 1e-11 (error ≤ 1e-6, tested). Target < 0.5 s.
+    #[divan::bench(sample_count = 3)]
+    fn radau5_stiff_1e_6(bencher: divan::Bencher) {
+        with_system(22.4, |sys| {
+            let times = ten_periods(sys);
+            let x0 = [sys.static_force / sys.mean_stiffness, 0.0];
+            bencher.bench(|| divan::black_box(integrate(sys, Integrator::Radau5, 1e-11, x0, &times).unwrap().1))
+        });
+    }
+
+    /// Spectral radius at 1000 speeds (external formulation). Target < 50 ms.
+    #[divan::bench(sample_count = 10)]
+    fn stability_map_1000_speeds(bencher: divan::Bencher) {
+        let scene = fzg();
+        let eval = gearloss::evaluate(&scene);
+        let law = Coulomb { mu: 0.08 };
+        bencher.bench(|| {
+            let mut max: f64 = 0.0;
+            for i in 0..1000 {
+                let rpm = 1000.0 + 59.0 * i as f64;
+                let ctx = eval.law_context(OperatingState {
+                    pinion_torque: 239.3,
+                    pinion_speed: rpm * std::f64::consts::PI / 30.0,
+                });
+                let sys = SdofSystem::new(ctx, Some(&law), DynamicFormulation::External, K, [3.45e-4, 15.24e-4], 0.05);
+                max = max.max(Floquet::analyse(&sys).spectral_radius);
+            }
+            divan::black_box(max)
+        });
+    }
+}

@@ -51,7 +51,11 @@ pub fn states(sys: &SdofSystem, x0: Vector2<f64>, taus: &[f64]) -> Vec<Vector2<f
     for seg in &sys.segments {
         let m = exact.then(|| segment_matrix(sys, seg.start, seg.end));
         // Magnus: the substep density that converged over the whole segment, reused for each sample step.
-        let density = if exact { 0.0 } else { magnus_adaptive(sys, seg.start, seg.end - seg.start).1 as f64 / (seg.end - seg.start) };
+        let density = if exact {
+            0.0
+        } else {
+            magnus_adaptive(sys, seg.start, seg.end - seg.start).1 as f64 / (seg.end - seg.start)
+        };
         let mut cache: Option<(f64, Matrix4<f64>)> = None;
         let mut step = |x: &Vector2<f64>, from: f64, dt: f64| -> Vector2<f64> {
             match &m {

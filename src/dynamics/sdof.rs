@@ -178,8 +178,11 @@ impl<'a> SdofSystem<'a> {
         let [jp, jw] = self.inertia;
         let tau = (t / self.period).rem_euclid(1.0);
         let (mut gp, mut gw) = (0.0, 0.0);
+        // A law that diverges at P is capped as in the internal efficiency formulation
+        // (crate::efficiency::INTERNAL_MU_CAP), so that 1 − f never vanishes.
+        let cap = if law.diverges_at_pitch() { crate::efficiency::INTERNAL_MU_CAP } else { f64::INFINITY };
         for c in contacts_at(&self.ctx, tau) {
-            let m = law.mu(&c) * c.load_share;
+            let m = law.mu(&c).clamp(-cap, cap) * c.load_share;
             gp -= m * c.u;
             gw += m * (g.line_of_action_length - c.u);
         }
