@@ -12,6 +12,7 @@
 //!     numerics (error vs run time)             response (DTE, forces, dynamic factor, spectrum)
 //! ```
 
+pub mod airy;
 pub mod floquet;
 pub mod integrators;
 pub mod numerics;

@@ -302,3 +302,25 @@ fn benchmark_configurations_reach_their_accuracy() {
         assert!(err <= bound, "{method:?} at {rpm} rpm: {err:e}");
     }
 }
+
+/// He & Singh's Airy closed form (undamped, internal formulation, stiffness linear in t on each
+/// segment) against the Magnus route: the homogeneous propagators agree to 1e-8 relative.
+#[test]
+fn airy_closed_form_matches_magnus() {
+    use gearloss::dynamics::airy::airy_propagator;
+    let (scene, g) = fzg();
+    let law = Coulomb { mu: 0.3 };
+    for rpm in [300.0, 3000.0] {
+        let sys = system(ctx(&scene, &g, rpm, 239.3), &law, DynamicFormulation::Internal, 0.0);
+        for s in &sys.segments {
+            let h = s.end - s.start;
+            let airy = airy_propagator(&sys, s.start, s.end, h).expect("applies: undamped internal");
+            let (m, _) = magnus_adaptive(&sys, s.start, h);
+            let rel = (airy - m.phi).norm() / m.phi.norm();
+            assert!(rel < 1e-8, "{rpm} rpm, segment {s:?}: {rel:e}");
+        }
+    }
+    // Not applicable when damped.
+    let damped = system(ctx(&scene, &g, 1000.0, 239.3), &law, DynamicFormulation::Internal, 0.05);
+    assert!(airy_propagator(&damped, damped.segments[0].start, damped.segments[0].end, 1e-4).is_none());
+}

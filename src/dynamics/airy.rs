@@ -1,0 +1,56 @@
+//! He & Singh's closed form for an undamped segment whose effective stiffness is linear in time
+//! (their eqs 22–42, written with Airy functions instead of √z J_{±1/3}, so that everything stays
+//! real for either sign of the slope; physics notes, "Dynamics").
+//!
+//! On a segment, ẍ + a(τ) x = g with a(τ) = α + β τ. The homogeneous equation ẍ = (p τ + q) x,
+//! p = −β, q = −α, becomes Airy's y'' = ξ y under ξ = sgn(p) |p|^{1/3} (τ + q/p), so Ai(ξ(τ)) and
+//! Bi(ξ(τ)) form a fundamental system and Φ(h) = W(h) W(0)⁻¹ with W = [[Ai, Bi], [ξ' Ai', ξ' Bi']].
+//! Ai, Bi and their derivatives come from the `complex-bessel` crate (Amos' algorithms).
+//!
+//! This is the homogeneous propagator of the internal formulation with ζ = 0 and a constant-magnitude
+//! law (f affine in t); it checks the Magnus route, which also carries the forcing.
+
+use complex_bessel::{airy, airyprime, biry, biryprime};
+use nalgebra::{Complex, Matrix2};
+
+use super::sdof::{DynamicFormulation, SdofSystem};
+
+/// a(τ) = α + β τ on [start, end], from A(t) sampled at the segment's quarter points.
+fn linear_stiffness(sys: &SdofSystem, start: f64, end: f64) -> (f64, f64) {
+    let seg = end - start;
+    let (t1, t2) = (start + 0.25 * seg, start + 0.75 * seg);
+    let a1 = -sys.matrices(t1).0[1][0];
+    let a2 = -sys.matrices(t2).0[1][0];
+    let beta = (a2 - a1) / (t2 - t1);
+    (a1 - beta * (t1 - start), beta)
+}
+
+fn fundamental(p: f64, q: f64, tau: f64) -> Option<Matrix2<f64>> {
+    let s = p.signum() * p.abs().cbrt();
+    let xi = Complex::new(s * (tau + q / p), 0.0);
+    let ai = airy(xi).ok()?.re;
+    let bi = biry(xi).ok()?.re;
+    let aip = airyprime(xi).ok()?.re;
+    let bip = biryprime(xi).ok()?.re;
+    Some(Matrix2::new(ai, bi, s * aip, s * bip))
+}
+
+/// The homogeneous propagator Φ over [start, start + h] by the Airy closed form, for an undamped
+/// segment (c = 0). None when the closed form does not apply (damped, or a(τ) not linear: the base
+/// and external formulations have constant a and are covered by the exact propagator).
+pub fn airy_propagator(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option<Matrix2<f64>> {
+    if sys.damping != 0.0 || sys.formulation != DynamicFormulation::Internal || !sys.stiffness.is_piecewise_constant() {
+        return None;
+    }
+    let (alpha, beta) = linear_stiffness(sys, start, end);
+    let (p, q) = (-beta, -alpha);
+    if beta.abs() * h <= 1e-12 * alpha.abs() {
+        // Constant stiffness: cos/sin.
+        let w = alpha.sqrt();
+        let (s, c) = (w * h).sin_cos();
+        return Some(Matrix2::new(c, s / w, -w * s, c));
+    }
+    let w0 = fundamental(p, q, 0.0)?;
+    let wh = fundamental(p, q, h)?;
+    Some(wh * w0.try_inverse()?)
+}
