@@ -106,6 +106,7 @@ fn system<'a>(
     let law = if f == DynamicFormulation::Base { None } else { law };
     let mut sys = SdofSystem::new(ctx, law, f, stiffness.clone(), inertia, spec.damping_ratio);
     sys.allow_exact = spec.solver == Solver::Auto;
+    sys.transmission_error = spec.transmission_error.clone();
     sys
 }
 

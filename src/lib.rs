@@ -44,8 +44,10 @@ pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {
 }
 
 /// Stage 2: syntax tree → checked scene (units, names, ranges, geometry).
+/// Files the scene names are read relative to the folder of `source_name`.
 pub fn lower(source_name: &str, source: &str, ast: &SceneAst) -> Result<Scene, SceneErrors> {
-    scene::lower::lower_scene(ast).map_err(|diagnostics| SceneErrors {
+    let base = Path::new(source_name).parent();
+    scene::lower::lower_scene_in(ast, base).map_err(|diagnostics| SceneErrors {
         source_name: source_name.into(),
         source: source.into(),
         diagnostics,

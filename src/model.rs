@@ -68,6 +68,8 @@ pub struct DynamicsSpec {
     pub damping_ratio: f64,
     pub friction: Option<FrictionLawSpec>,
     pub solver: Solver,
+    /// Static transmission error harmonics (amplitude m, phase rad) in mesh orders 1, 2, …
+    pub transmission_error: Vec<(f64, f64)>,
     pub span: Span,
 }
 

@@ -98,6 +98,8 @@ pub struct SdofSystem<'a> {
     pub mean_stiffness: f64,
     /// False forces 4th-order Magnus even where the exact propagator applies (`solver = magnus`).
     pub allow_exact: bool,
+    /// Static transmission error ε(t) = Σ a_n cos(2π n t/T + φ_n): (a_n in m, φ_n in rad), n = 1, 2, …
+    pub transmission_error: Vec<(f64, f64)>,
 }
 
 impl<'a> SdofSystem<'a> {
@@ -160,6 +162,7 @@ impl<'a> SdofSystem<'a> {
             segments,
             mean_stiffness,
             allow_exact: true,
+            transmission_error: Vec::new(),
         }
     }
 
@@ -189,20 +192,36 @@ impl<'a> SdofSystem<'a> {
         (jw * rp * gp - jp * rw * gw) / (jp * rw * rw + jw * rp * rp)
     }
 
-    /// The system matrix and forcing at t: Ẋ = A X + b.
+    /// ε(t) and ε̇(t) of the static transmission error.
+    pub fn transmission_error_at(&self, t: f64) -> (f64, f64) {
+        let w = 2.0 * std::f64::consts::PI / self.period;
+        let mut e = (0.0, 0.0);
+        for (n, (a, phi)) in self.transmission_error.iter().enumerate() {
+            let arg = w * (n + 1) as f64 * t + phi;
+            e.0 += a * arg.cos();
+            e.1 -= a * w * (n + 1) as f64 * arg.sin();
+        }
+        e
+    }
+
+    /// The system matrix and forcing at t: Ẋ = A X + b. The transmission error enters the base model
+    /// as c(ẋ − ε̇) + k(x − ε) (Fernandes eq 3 with the notes' reading c(ẋ − ε̇)), and the same way in the
+    /// elastic term of the friction formulations.
     pub fn matrices(&self, t: f64) -> ([[f64; 2]; 2], [f64; 2]) {
         let m = self.equivalent_mass;
         let k = self.stiffness_at(t);
         let c = self.damping;
         let f0 = self.static_force;
+        let (e, de) = self.transmission_error_at(t);
+        let excitation = k * e + c * de;
         match self.formulation {
-            DynamicFormulation::Base => ([[0.0, 1.0], [-k / m, -c / m]], [0.0, f0 / m]),
+            DynamicFormulation::Base => ([[0.0, 1.0], [-k / m, -c / m]], [0.0, (f0 + excitation) / m]),
             DynamicFormulation::External => {
-                ([[0.0, 1.0], [-k / m, -c / m]], [0.0, f0 * (1.0 + self.friction_term(t)) / m])
+                ([[0.0, 1.0], [-k / m, -c / m]], [0.0, (f0 * (1.0 + self.friction_term(t)) + excitation) / m])
             }
             DynamicFormulation::Internal => {
                 let s = 1.0 - self.friction_term(t);
-                ([[0.0, 1.0], [-s * k / m, -s * c / m]], [0.0, f0 / m])
+                ([[0.0, 1.0], [-s * k / m, -s * c / m]], [0.0, (f0 + s * excitation) / m])
             }
         }
     }
@@ -217,6 +236,7 @@ impl<'a> SdofSystem<'a> {
     /// base, or external with a law of constant magnitude (Coulomb, ISO/TR 14179-2), rectangular k.
     pub fn exact_applies(&self) -> bool {
         self.allow_exact
+            && self.transmission_error.is_empty()
             && self.stiffness.is_piecewise_constant()
             && match self.formulation {
                 DynamicFormulation::Base => true,
@@ -225,9 +245,10 @@ impl<'a> SdofSystem<'a> {
             }
     }
 
-    /// Dynamic mesh force F = k x + c ẋ (times 1 − f for the internal formulation).
+    /// Dynamic mesh force F = k (x − ε) + c (ẋ − ε̇) (times 1 − f for the internal formulation).
     pub fn mesh_force(&self, t: f64, x: &[f64; 2]) -> f64 {
-        let elastic = self.stiffness_at(t) * x[0] + self.damping * x[1];
+        let (e, de) = self.transmission_error_at(t);
+        let elastic = self.stiffness_at(t) * (x[0] - e) + self.damping * (x[1] - de);
         match self.formulation {
             DynamicFormulation::Internal => (1.0 - self.friction_term(t)) * elastic,
             _ => elastic,

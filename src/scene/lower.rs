@@ -29,6 +29,11 @@ const FORMULATIONS: &[&str] = &["external", "internal"];
 
 /// Lowers a parsed scene. On failure, every diagnostic found.
 pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
+    lower_scene_in(ast, None)
+}
+
+/// As [`lower_scene`], with the folder of the scene file, where files it names (a stiffness CSV) are read.
+pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Diagnostic>> {
     let mut errors = Vec::new();
     let top = Fields::read("the scene", ast.title_span, &ast.items, &[], SCENE_BLOCKS, &[], &mut errors);
 
@@ -79,7 +84,8 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
     let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
-    let dynamics = singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, &mut errors));
+    let dynamics =
+        singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));
     if let Some(span) = analyses.dynamics_span {
         if !singles.contains_key("dynamics") {
             errors.push(

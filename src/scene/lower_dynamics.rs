@@ -1,5 +1,7 @@
 //! Lowering of the `dynamics` block and the dynamics analyses.
 
+use std::path::Path;
+
 use super::ast::*;
 use super::diagnostics::{Diagnostic, DiagnosticKind};
 use super::fields::{scalar, sweep_values, unknown_name, Fields};
@@ -8,14 +10,24 @@ use crate::dynamics::DynamicFormulation;
 use crate::model::{AngularVelocity, DynamicsSpec, Solver, StiffnessSpec, Sweep};
 use crate::scene::units::SiQuantity;
 
-const KEYS: &[&str] = &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver"];
-const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table"];
+const KEYS: &[&str] =
+    &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
+const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file"];
+const STE_KEYS: &[&str] = &["amplitudes", "phases"];
 const MODELS: &[&str] = &["sdof"];
 const SOLVERS: &[&str] = &["auto", "magnus"];
 const FORMULATIONS: &[&str] = &["base", "external", "internal"];
 
-pub fn lower_dynamics(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<DynamicsSpec> {
-    let f = Fields::read("the `dynamics` block", block.span, &block.items, KEYS, &["mesh_stiffness"], &[], errors);
+pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) -> Option<DynamicsSpec> {
+    let f = Fields::read(
+        "the `dynamics` block",
+        block.span,
+        &block.items,
+        KEYS,
+        &["mesh_stiffness", "transmission_error"],
+        &[],
+        errors,
+    );
     // `model = sdof` is the only model so far; any other name is refused with the list.
     f.name("model", MODELS, errors);
     let formulations = match f.values.get("formulations") {
@@ -68,8 +80,47 @@ pub fn lower_dynamics(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Dyn
         );
         return None;
     }
-    let stiffness = stiffness(&f, errors)?;
-    Some(DynamicsSpec { formulations, stiffness, damping_ratio, friction, solver, span: block.kind.span })
+    let transmission_error = transmission_error(&f, errors)?;
+    let stiffness = stiffness(&f, base_dir, errors)?;
+    Some(DynamicsSpec {
+        formulations,
+        stiffness,
+        damping_ratio,
+        friction,
+        solver,
+        transmission_error,
+        span: block.kind.span,
+    })
+}
+
+/// `transmission_error { amplitudes = [1.5, 0.4] um  phases = [0, 90] deg }`: ε(t) = Σ a_n cos(2π n t/T + φ_n).
+fn transmission_error(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Vec<(f64, f64)>> {
+    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "transmission_error") else { return Some(Vec::new()) };
+    let t = Fields::read("`transmission_error`", b.span, &b.items, STE_KEYS, &[], &[], errors);
+    let Some((_, a)) = t.values.get("amplitudes") else {
+        errors.push(t.missing("amplitudes", "[1.5, 0.4] um"));
+        return None;
+    };
+    let (amps, _, _) = sweep_values("amplitudes", a, Dimension::LENGTH, errors)?;
+    let phases = match t.values.get("phases") {
+        None => vec![0.0; amps.len()],
+        Some((_, p)) => {
+            let (ph, _, _) = sweep_values("phases", p, Dimension::ANGLE, errors)?;
+            if ph.len() != amps.len() {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        p.span,
+                        format!("{} phases for {} amplitudes", ph.len(), amps.len()),
+                    )
+                    .hint("give one phase per harmonic, or none (all zero)"),
+                );
+                return None;
+            }
+            ph
+        }
+    };
+    Some(amps.into_iter().zip(phases).collect())
 }
 
 fn formulations(v: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<DynamicFormulation>> {
@@ -105,11 +156,64 @@ fn formulations(v: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<DynamicFo
     Some(out)
 }
 
-fn stiffness(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<StiffnessSpec> {
+/// A stiffness CSV next to the scene: one value per line in N/m (or `tau, k` pairs, then the second
+/// column is used); blank lines and lines starting with `#` are skipped.
+fn read_stiffness_csv(value: &Value, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) -> Option<Vec<f64>> {
+    let ValueKind::Text(name) = &value.kind else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::WrongDimension, value.span, "`file` expects a \"file name\"")
+                .hint("write `file = \"stiffness.csv\"`, a file next to the scene"),
+        );
+        return None;
+    };
+    let path = base_dir.map_or_else(|| Path::new(name).to_path_buf(), |d| d.join(name));
+    let text = match std::fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::Undefined, value.span, format!("cannot read `{name}`: {e}"))
+                    .hint("the path is relative to the folder of the scene file"),
+            );
+            return None;
+        }
+    };
+    let mut out = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let field = line.split([',', ';', '\t']).map(str::trim).filter(|x| !x.is_empty()).last().unwrap_or("");
+        match field.parse::<f64>() {
+            Ok(k) if k.is_finite() && k > 0.0 => out.push(k),
+            _ => {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        value.span,
+                        format!("`{name}` line {}: `{line}` is not a positive stiffness", i + 1),
+                    )
+                    .hint("one stiffness in N/m per line (or `tau, k`); `#` starts a comment"),
+                );
+                return None;
+            }
+        }
+    }
+    if out.len() < 4 {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, value.span, format!("`{name}` holds {} values", out.len()))
+                .hint("give at least 4 values over one mesh cycle"),
+        );
+        return None;
+    }
+    Some(out)
+}
+
+fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) -> Option<StiffnessSpec> {
     if f.has("mesh_stiffness") {
         return f.name("mesh_stiffness", &["iso_6336"], errors).map(|_| StiffnessSpec::Iso6336);
     }
-    let Some(b) = f.blocks.first() else {
+    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "mesh_stiffness") else {
         return Some(StiffnessSpec::Iso6336);
     };
     let k = Fields::read("`mesh_stiffness`", b.span, &b.items, STIFFNESS_KEYS, &[], &[], errors);
@@ -126,6 +230,9 @@ fn stiffness(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<StiffnessSpec> 
             None
         }
     };
+    if let Some((_, v)) = k.values.get("file") {
+        return read_stiffness_csv(v, base_dir, errors).map(StiffnessSpec::Table);
+    }
     if let Some((_, v)) = k.values.get("table") {
         let (values, _, _) = sweep_values("table", v, Dimension::STIFFNESS, errors)?;
         if values.len() < 4 || values.iter().any(|x| *x <= 0.0) {

@@ -324,3 +324,41 @@ fn airy_closed_form_matches_magnus() {
     let damped = system(ctx(&scene, &g, 1000.0, 239.3), &law, DynamicFormulation::Internal, 0.05);
     assert!(airy_propagator(&damped, damped.segments[0].start, damped.segments[0].end, 1e-4).is_none());
 }
+
+/// Static transmission error: with constant stiffness (single = double) and ε = a cos(ω t) the base
+/// model's steady DTE has the closed-form amplitude a |k + iωc| / |k − m ω² + iωc| about F0/k
+/// (tolerance 1e-6 relative on the peak-to-peak; propagated by Magnus, since the forcing is not affine).
+#[test]
+fn transmission_error_response_matches_the_closed_form() {
+    let (scene, g) = fzg();
+    let law = Coulomb { mu: 0.0 };
+    let c = ctx(&scene, &g, 3000.0, 239.3);
+    let k = 3.0e8;
+    let mut sys = SdofSystem::new(
+        c,
+        None,
+        DynamicFormulation::Base,
+        StiffnessModel::PairsInContact { single: k, double: k, triple: k },
+        J,
+        0.05,
+    );
+    let _ = &law;
+    let a = 2e-6;
+    sys.transmission_error = vec![(a, 0.0)];
+    assert!(!sys.exact_applies());
+    let fl = Floquet::analyse(&sys);
+    assert_eq!(fl.method, Method::Magnus4);
+    let r = PeriodicResponse::compute(&sys, &fl).unwrap();
+    let (m, cd, w) = (sys.equivalent_mass, sys.damping, 2.0 * std::f64::consts::PI / sys.period);
+    let amplitude = a * k.hypot(w * cd) / (k - m * w * w).hypot(w * cd);
+    // 256 samples of a pure harmonic: the sampled peak-to-peak is within cos(π/256) of the true one.
+    let sampled = r.dte_peak_to_peak / 2.0;
+    assert!(
+        (sampled - amplitude).abs() <= amplitude * (1.0 - (std::f64::consts::PI / 256.0).cos()) + 1e-6 * amplitude,
+        "{sampled} vs {amplitude}"
+    );
+    assert!((r.dte_mean - sys.static_force / k).abs() < 1e-9 * sys.static_force / k);
+    // The mesh force k(x − ε) + c(ẋ − ε̇) stays F0 on average.
+    let mean_force = r.mesh_force.iter().sum::<f64>() / r.mesh_force.len() as f64;
+    assert!((mean_force - sys.static_force).abs() < 1e-6 * sys.static_force);
+}
