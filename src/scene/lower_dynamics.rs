@@ -183,7 +183,7 @@ fn read_stiffness_csv(value: &Value, base_dir: Option<&Path>, errors: &mut Vec<D
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let field = line.split([',', ';', '\t']).map(str::trim).filter(|x| !x.is_empty()).next_back().unwrap_or("");
+        let field = line.split([',', ';', '\t']).map(str::trim).rfind(|x| !x.is_empty()).unwrap_or("");
         match field.parse::<f64>() {
             Ok(k) if k.is_finite() && k > 0.0 => out.push(k),
             _ => {
