@@ -27,6 +27,8 @@ pub struct PeriodicResponse {
     pub pair_force: Vec<Vec<f64>>,
     /// Total friction force Σ μ_j F_j (N).
     pub friction_force: Vec<f64>,
+    /// Friction torques on pinion and wheel, −Σ μ_j F_j T1C_j and Σ μ_j F_j T2C_j (N·m).
+    pub friction_torque: [Vec<f64>; 2],
     pub dte_peak_to_peak: f64,
     pub dte_mean: f64,
     /// max dynamic / max static mesh force (static: F0).
@@ -102,6 +104,7 @@ impl PeriodicResponse {
             mesh_force: Vec::with_capacity(SAMPLES),
             pair_force: vec![vec![f64::NAN; SAMPLES]; 3],
             friction_force: Vec::with_capacity(SAMPLES),
+            friction_torque: [Vec::with_capacity(SAMPLES), Vec::with_capacity(SAMPLES)],
             dte_peak_to_peak: 0.0,
             dte_mean: 0.0,
             dynamic_factor: 0.0,
@@ -118,6 +121,7 @@ impl PeriodicResponse {
             r.mesh_force.push(f);
             let contacts = contacts_at(&sys.ctx, *tau);
             let mut friction = 0.0;
+            let mut torque = [0.0, 0.0];
             let mut loss = 0.0;
             for c in &contacts {
                 let slot = (((c.u - g.points.a) / g.base_pitch) - tau).round() as usize;
@@ -126,9 +130,13 @@ impl PeriodicResponse {
                 }
                 let mu = sys.law.map_or(0.0, |l| l.mu(c));
                 friction += mu * c.load_share * f;
+                torque[0] -= mu * c.load_share * f * c.u;
+                torque[1] += mu * c.load_share * f * (g.line_of_action_length - c.u);
                 loss += mu.abs() * c.load_share * f * c.sliding_velocity;
             }
             r.friction_force.push(friction);
+            r.friction_torque[0].push(torque[0]);
+            r.friction_torque[1].push(torque[1]);
             eta_sum += 1.0 - loss / input_power;
         }
         if sys.law.is_some() {

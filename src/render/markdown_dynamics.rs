@@ -65,6 +65,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
                 "DTE p-p µm",
                 "K_v",
                 "η_dyn %",
+                "max friction N / T_p N·m / T_w N·m",
                 "separation",
             ],
         );
@@ -84,6 +85,12 @@ pub fn dynamics(out: &mut String, r: &Report) {
                     f.dte_peak_to_peak.map_or("—".into(), |q| fixed(q.si() * 1e6, 4)),
                     f.dynamic_factor.map_or("—".into(), |k| fixed(k.0, 4)),
                     f.mean_dynamic_efficiency.map_or("—".into(), |e| fixed(100.0 * e.0, 4)),
+                    match (&f.peak_friction_force, f.peak_friction_torque.as_slice()) {
+                        (Some(ff), [tp, tw]) => {
+                            format!("{} / {} / {}", fixed(ff.si(), 1), fixed(tp.si(), 3), fixed(tw.si(), 3))
+                        }
+                        _ => "—".into(),
+                    },
                     if f.tooth_separation.is_empty() { "none".into() } else { "**yes**".into() },
                 ],
             );

@@ -47,6 +47,11 @@ pub struct FormulationReport {
     pub spectrum: Vec<SpectrumLine>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mean_dynamic_efficiency: Option<Num>,
+    /// Peak |friction force| and peak |friction torque| on pinion and wheel over the cycle.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub peak_friction_force: Option<Q>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub peak_friction_torque: Vec<Q>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -230,6 +235,21 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                             x.spectrum.iter().map(|(o, a)| SpectrumLine { order: *o, amplitude: m(*a) }).collect()
                         }),
                         mean_dynamic_efficiency: r.response.as_ref().and_then(|x| x.mean_dynamic_efficiency.map(Num)),
+                        peak_friction_force: r
+                            .response
+                            .as_ref()
+                            .filter(|_| r.formulation != DynamicFormulation::Base)
+                            .map(|x| Q::new(x.friction_force.iter().fold(0.0, |a, b| a.max(b.abs())), "N")),
+                        peak_friction_torque: r
+                            .response
+                            .as_ref()
+                            .filter(|_| r.formulation != DynamicFormulation::Base)
+                            .map_or_else(Vec::new, |x| {
+                                x.friction_torque
+                                    .iter()
+                                    .map(|t| Q::new(t.iter().fold(0.0, |a, b| a.max(b.abs())), "N*m"))
+                                    .collect()
+                            }),
                     })
                     .collect(),
             }
