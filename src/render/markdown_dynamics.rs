@@ -70,8 +70,14 @@ pub fn dynamics(out: &mut String, r: &Report) {
             ],
         );
         for f in &p.formulations {
-            let mults: Vec<String> =
-                f.floquet_multipliers.iter().map(|[re, im]| format!("{:.6}{:+.6}i", re.0, im.0)).collect();
+            let mults: Vec<String> = f
+                .floquet_multipliers
+                .iter()
+                .map(|[re, im]| {
+                    let sign = if fixed(im.0, 6).starts_with('-') { '-' } else { '+' };
+                    format!("{}{sign}{}i", fixed(re.0, 6), fixed(im.0.abs(), 6))
+                })
+                .collect();
             row(
                 out,
                 &[
