@@ -56,18 +56,13 @@ impl FrictionLaw for BenedictKelley {
         "benedict_kelley"
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
-        if c.s == 0.0 {
-            return 0.0;
-        }
         signed(self.magnitude(c).max(0.0), c.s)
     }
     fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {
         if self.roughness_um >= 1.13 {
             Err("S_avg ≥ 1.13 µm makes the roughness factor 1.13/(1.13 − S) infinite or negative")
-        } else if c.s != 0.0 && self.argument(c) <= 1.0 {
-            Err("log argument ≤ 1: μ would be ≤ 0 and is clamped to 0")
         } else {
-            Ok(())
+            super::log_argument_validity(c, self.argument(c))
         }
     }
     fn diverges_at_pitch(&self) -> bool {

@@ -39,19 +39,14 @@ impl FrictionLaw for BenedictKelleyBernard {
         "benedict_kelley_bernard"
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
-        if c.s == 0.0 {
-            return 0.0;
-        }
         signed(self.magnitude(c).max(0.0), c.s)
     }
     fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {
         let factor = 50.0 / (50.0 - self.roughness_rms_um);
         if !(factor > 0.0 && factor <= 3.0) {
             Err("roughness factor 50/(50 − S_rms) outside (0, 3]")
-        } else if c.s != 0.0 && self.argument(c) <= 1.0 {
-            Err("log argument ≤ 1: μ would be ≤ 0 and is clamped to 0")
         } else {
-            Ok(())
+            super::log_argument_validity(c, self.argument(c))
         }
     }
     fn diverges_at_pitch(&self) -> bool {

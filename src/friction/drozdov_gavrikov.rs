@@ -39,9 +39,6 @@ impl FrictionLaw for DrozdovGavrikov {
         "drozdov_gavrikov"
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
-        if c.s == 0.0 {
-            return 0.0;
-        }
         signed(self.magnitude(c), c.s)
     }
     fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {

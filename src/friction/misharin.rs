@@ -24,9 +24,6 @@ impl FrictionLaw for Misharin {
         "misharin"
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
-        if c.s == 0.0 {
-            return 0.0;
-        }
         signed(self.magnitude(c), c.s)
     }
     fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {

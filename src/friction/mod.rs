@@ -112,7 +112,17 @@ pub trait FrictionLaw: Send + Sync {
     }
 }
 
-/// sgn(s) · magnitude, with 0 at s = 0 (the sliding direction reverses at P).
+/// The Benedict–Kelley forms take log10 of an argument that must exceed 1 (else μ ≤ 0, clamped to 0).
+pub(crate) fn log_argument_validity(c: &ContactPoint, argument: f64) -> Result<(), &'static str> {
+    if c.s != 0.0 && argument <= 1.0 {
+        Err("log argument ≤ 1: μ would be ≤ 0 and is clamped to 0")
+    } else {
+        Ok(())
+    }
+}
+
+/// sgn(s) · magnitude, with 0 at s = 0 (the sliding direction reverses at P) whatever the
+/// magnitude there (laws that diverge at P give ±∞ or NaN at s = 0, never returned).
 pub fn signed(magnitude: f64, s: f64) -> f64 {
     if s > 0.0 {
         magnitude

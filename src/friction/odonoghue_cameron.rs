@@ -37,9 +37,6 @@ impl FrictionLaw for ODonoghueCameron {
         "odonoghue_cameron"
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
-        if c.s == 0.0 {
-            return 0.0;
-        }
         signed(self.magnitude_with_radius_scale(c, units::MM_PER_M), c.s)
     }
     fn diverges_at_pitch(&self) -> bool {
