@@ -695,8 +695,3 @@ pub fn unit_scale(text: &str, expected: Dimension) -> Result<f64, Vec<Diagnostic
         None => Err(errors),
     }
 }
-
-#[allow(dead_code)]
-fn written(x: f64) -> String {
-    format_number(x)
-}

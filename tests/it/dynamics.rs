@@ -212,15 +212,7 @@ fn extreme_contact_ratios() {
     use gearloss::geometry::SpurPairInput;
     let (scene, _) = fzg();
     let fzg_input = scene.gears.spur_input();
-    let hcr_input = SpurPairInput {
-        module: 3e-3,
-        pressure_angle: 14.5f64.to_radians(),
-        teeth: [40, 60],
-        profile_shift: [0.0, 0.0],
-        tip_diameter: [Some(127.2e-3), Some(187.2e-3)],
-        center_distance: None,
-        face_width: 0.025,
-    };
+    let hcr_input = crate::high_contact_ratio_input();
     let with_ratio = |base: SpurPairInput, target: f64| -> SpurGeometry {
         // Scale both tip diameters' addenda until ε_α hits the target (bisection on the scale).
         let (mut lo, mut hi) = (0.3, 1.6);

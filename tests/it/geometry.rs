@@ -2,7 +2,7 @@
 
 use std::f64::consts::PI;
 
-use gearloss::geometry::{involute, SpurGeometry, SpurPairInput, TipSource};
+use gearloss::geometry::{involute, SpurGeometry, TipSource};
 
 fn fzg() -> SpurGeometry {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
@@ -87,15 +87,7 @@ fn inch_scene_contact_ratio_by_the_iso_21771_tangent_form() {
 /// High contact ratio pairs are supported: n pairs in contact and shares 1/2 and 1/3.
 #[test]
 fn high_contact_ratio_pairs_share_load_by_thirds() {
-    let input = SpurPairInput {
-        module: 3e-3,
-        pressure_angle: 14.5f64.to_radians(),
-        teeth: [40, 60],
-        profile_shift: [0.0, 0.0],
-        tip_diameter: [Some(127.2e-3), Some(187.2e-3)],
-        center_distance: None,
-        face_width: 0.025,
-    };
+    let input = crate::high_contact_ratio_input();
     let g = SpurGeometry::compute(&input).unwrap();
     assert!(g.contact_ratio > 2.0 && g.contact_ratio < 3.0, "ε_α = {}", g.contact_ratio);
     let p = g.points;

@@ -22,3 +22,16 @@ pub fn scene(path: &Path) -> gearloss::Scene {
     let source = std::fs::read_to_string(path).unwrap();
     gearloss::check(&path.display().to_string(), &source).unwrap_or_else(|e| panic!("{}", e.render(false)))
 }
+
+/// A 40/60-tooth, 14.5° pair with a long addendum: ε_α ≈ 2.47, up to three pairs in contact.
+pub fn high_contact_ratio_input() -> gearloss::geometry::SpurPairInput {
+    gearloss::geometry::SpurPairInput {
+        module: 3e-3,
+        pressure_angle: 14.5f64.to_radians(),
+        teeth: [40, 60],
+        profile_shift: [0.0, 0.0],
+        tip_diameter: [Some(127.2e-3), Some(187.2e-3)],
+        center_distance: None,
+        face_width: 0.025,
+    }
+}
