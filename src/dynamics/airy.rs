@@ -7,13 +7,18 @@
 //! Bi(ξ(τ)) form a fundamental system and Φ(h) = W(h) W(0)⁻¹ with W = [[Ai, Bi], [ξ' Ai', ξ' Bi']].
 //! Ai, Bi and their derivatives come from the `complex-bessel` crate (Amos' algorithms).
 //!
-//! This is the homogeneous propagator of the internal formulation with ζ = 0 and a constant-magnitude
-//! law (f affine in t); it checks the Magnus route, which also carries the forcing.
+//! The forcing of the internal formulation is the constant g = F0/m_e, so by Duhamel
+//! q = W(h) ∫₀ʰ W(s)⁻¹ [0, g] ds = W(h) (π g / ξ') [−∫ Bi(ξ(s)) ds, ∫ Ai(ξ(s)) ds]
+//! (the Wronskian of Ai and Bi is 1/π); the two integrals of Ai and Bi are taken by Gauss–Kronrod.
+//! This is the undamped internal formulation with a constant-magnitude law (f affine in t); it
+//! checks the Magnus route.
 
 use complex_bessel::{airy, airyprime, biry, biryprime};
 use nalgebra::{Complex, Matrix2};
 
+use super::propagator::Propagation;
 use super::sdof::{DynamicFormulation, SdofSystem};
+use crate::numerics::quadrature::integrate;
 
 /// a(τ) = α + β τ on [start, end], from A(t) sampled at the segment's quarter points.
 fn linear_stiffness(sys: &SdofSystem, start: f64, end: f64) -> (f64, f64) {
@@ -53,4 +58,30 @@ pub fn airy_propagator(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option
     let w0 = fundamental(p, q, 0.0)?;
     let wh = fundamental(p, q, h)?;
     Some(wh * w0.try_inverse()?)
+}
+
+/// The full propagation (Φ, q) over [start, start + h] by the Airy closed form and Duhamel's integral,
+/// for the undamped internal formulation without transmission error; None where it does not apply.
+pub fn airy_propagation(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option<Propagation> {
+    if !sys.transmission_error.is_empty() {
+        return None;
+    }
+    let phi = airy_propagator(sys, start, end, h)?;
+    let g = sys.static_force / sys.equivalent_mass;
+    let (alpha, beta) = linear_stiffness(sys, start, end);
+    let q = if beta.abs() * h <= 1e-12 * alpha.abs() {
+        // Constant stiffness ω²: x_p = g/ω² (1 − cos ωh), v_p = g/ω sin ωh.
+        let w = alpha.sqrt();
+        let (sn, cs) = (w * h).sin_cos();
+        nalgebra::Vector2::new(g / alpha * (1.0 - cs), g / w * sn)
+    } else {
+        let (p, qq) = (-beta, -alpha);
+        let s = p.signum() * p.abs().cbrt();
+        let xi = |t: f64| Complex::new(s * (t + qq / p), 0.0);
+        let ai = integrate(|t| airy(xi(t)).map_or(f64::NAN, |v| v.re), &[0.0, h], 1e-13).value;
+        let bi = integrate(|t| biry(xi(t)).map_or(f64::NAN, |v| v.re), &[0.0, h], 1e-13).value;
+        let wh = fundamental(p, qq, h)?;
+        wh * nalgebra::Vector2::new(-bi, ai) * (std::f64::consts::PI * g / s)
+    };
+    q.iter().all(|v| v.is_finite()).then_some(Propagation { phi, q })
 }

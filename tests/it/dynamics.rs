@@ -296,7 +296,7 @@ fn benchmark_configurations_reach_their_accuracy() {
 }
 
 /// He & Singh's Airy closed form (undamped, internal formulation, stiffness linear in t on each
-/// segment) against the Magnus route: the homogeneous propagators agree to 1e-8 relative.
+/// segment) against the Magnus route: the homogeneous propagators and the forced parts agree to 1e-8.
 #[test]
 fn airy_closed_form_matches_magnus() {
     use gearloss::dynamics::airy::airy_propagator;
@@ -310,6 +310,10 @@ fn airy_closed_form_matches_magnus() {
             let (m, _) = magnus_adaptive(&sys, s.start, h);
             let rel = (airy - m.phi).norm() / m.phi.norm();
             assert!(rel < 1e-8, "{rpm} rpm, segment {s:?}: {rel:e}");
+            // With the forcing (Duhamel over Ai and Bi): q agrees too.
+            let full = gearloss::dynamics::airy::airy_propagation(&sys, s.start, s.end, h).unwrap();
+            let rel_q = (full.q - m.q).norm() / m.q.norm();
+            assert!(rel_q < 1e-8, "{rpm} rpm, segment {s:?}: q {rel_q:e}");
         }
     }
     // Not applicable when damped.
