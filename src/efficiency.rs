@@ -38,7 +38,7 @@ pub fn internal_cap_band(ctx: &LawContext, law: &dyn FrictionLaw) -> Option<(f64
     let edge = |from: f64| {
         // from: a point away from P where |μ| ≤ cap; bisect towards P.
         let (mut out, mut inn) = (from, p.p);
-        for _ in 0..200 {
+        for _ in 0..64 {
             let mid = 0.5 * (out + inn);
             if mid == out || mid == inn {
                 break;
@@ -55,30 +55,56 @@ pub fn internal_cap_band(ctx: &LawContext, law: &dyn FrictionLaw) -> Option<(f64
     (hi > lo && (above(0.5 * (lo + p.p)) || above(0.5 * (hi + p.p)))).then_some((lo, hi))
 }
 
+/// The pairs in contact at one instant: at most four (ε_α < 3), kept on the stack because the
+/// mean-efficiency integrands build them at every quadrature node.
+#[derive(Debug, Clone, Copy)]
+pub struct Contacts {
+    items: [ContactPoint; 4],
+    len: usize,
+}
+
+impl std::ops::Deref for Contacts {
+    type Target = [ContactPoint];
+    fn deref(&self) -> &[ContactPoint] {
+        &self.items[..self.len]
+    }
+}
+
+impl<'a> IntoIterator for &'a Contacts {
+    type Item = &'a ContactPoint;
+    type IntoIter = std::slice::Iter<'a, ContactPoint>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.items[..self.len].iter()
+    }
+}
+
 /// The contacts at time τ of the mesh cycle (τ in [0, 1)).
 /// The load is shared among the pairs found at τ, so that the shares always add up to one.
-pub fn contacts_at(ctx: &LawContext, tau: f64) -> Vec<ContactPoint> {
+pub fn contacts_at(ctx: &LawContext, tau: f64) -> Contacts {
     contacts_near_pitch(ctx, tau, f64::NAN)
 }
 
 /// As [`contacts_at`], with `d` = τ − τ_P known exactly for the pair nearest the pitch point
 /// (NaN when not known): that pair's s = p_b d.
-pub fn contacts_near_pitch(ctx: &LawContext, tau: f64, d: f64) -> Vec<ContactPoint> {
+pub fn contacts_near_pitch(ctx: &LawContext, tau: f64, d: f64) -> Contacts {
     let g = ctx.geometry;
-    let positions: Vec<f64> = (0..4)
-        .map(|k| g.points.a + g.base_pitch * (tau + k as f64))
-        .filter(|u| *u >= g.points.a && *u < g.points.e)
-        .collect();
-    let n = positions.len();
+    let mut positions = [0.0; 4];
+    let mut n = 0;
+    for k in 0..4 {
+        let u = g.points.a + g.base_pitch * (tau + k as f64);
+        if u >= g.points.a && u < g.points.e {
+            positions[n] = u;
+            n += 1;
+        }
+    }
     let exact = g.base_pitch * d;
-    positions
-        .into_iter()
-        .map(|u| {
-            let s = u - g.points.p;
-            let s = if exact.is_finite() && (s - exact).abs() < 1e-6 * g.base_pitch { exact } else { s };
-            g.contact_exact(u, s, &ctx.state, ctx.tribology.reduced_modulus, ctx.sharing, n)
-        })
-        .collect()
+    let mut out = Contacts { items: [ContactPoint::default(); 4], len: n };
+    for (slot, u) in out.items.iter_mut().zip(&positions[..n]) {
+        let s = u - g.points.p;
+        let s = if exact.is_finite() && (s - exact).abs() < 1e-6 * g.base_pitch { exact } else { s };
+        *slot = g.contact_exact(*u, s, &ctx.state, ctx.tribology.reduced_modulus, ctx.sharing, n);
+    }
+    out
 }
 
 /// Instantaneous efficiency at time τ.
@@ -143,10 +169,10 @@ pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: For
     // Every law is treated as singular at P: the t⁴ map is exact for the polynomial pieces of the
     // Coulomb laws and removes the |s|^q kinks of the others.
     let singular = pitch_times(ctx);
-    let _ = law.diverges_at_pitch();
+    let breaks = break_times(ctx, law);
     integrate_singular(
         |tau, d| efficiency_of(ctx, law, formulation, &contacts_near_pitch(ctx, tau, d)),
-        &break_times(ctx, law),
+        &breaks,
         &singular,
         MEAN_TOLERANCE,
     )

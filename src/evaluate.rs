@@ -149,6 +149,16 @@ pub fn cycle_times() -> Vec<f64> {
     (0..CURVE_SAMPLES).map(|i| i as f64 / (CURVE_SAMPLES - 1) as f64 * (1.0 - 1e-9)).collect()
 }
 
+/// Where η(τ) is sampled for its range (min, max): 61 even times and both sides of every break
+/// time, where the extremes of piecewise-monotone η lie.
+pub fn range_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
+    let mut t: Vec<f64> = (0..61).map(|i| i as f64 / 60.0 * (1.0 - 1e-9)).collect();
+    for b in efficiency::break_times(ctx, law) {
+        t.extend([b - 1e-9, b + 1e-9].into_iter().filter(|x| (0.0..1.0).contains(x)));
+    }
+    t
+}
+
 /// The lubricant and surface data in SI.
 pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
     let g = &scene.gears;
@@ -298,7 +308,9 @@ fn evaluate_law(
     let positions = eval.curve_positions();
     let contacts: Vec<ContactPoint> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
     let taus = cycle_times();
-    let efficiency = eval.formulations.iter().map(|f| efficiency::evaluate_efficiency(&ctx, law, *f, &taus)).collect();
+    let range_taus = range_times(&ctx, law);
+    let efficiency =
+        eval.formulations.iter().map(|f| efficiency::evaluate_efficiency(&ctx, law, *f, &range_taus)).collect();
     let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
     LawEvaluation {
         id: catalog::entry(&spec.id).map_or("unknown", |e| e.id),

@@ -86,7 +86,7 @@ impl Composite {
     /// Positions where the regime changes, by bisection between samples of different regime.
     fn find_switches(&self, ctx: &LawContext) -> Vec<f64> {
         let p = ctx.geometry.points;
-        let n = 120;
+        let n = 60;
         let at = |u: f64| Self::regime_of(self.lambda(&ctx.contact_at(u)));
         let mut out = Vec::new();
         let mut prev_u = p.a;

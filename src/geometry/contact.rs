@@ -28,7 +28,7 @@ pub fn reduced_modulus(e: [f64; 2], nu: [f64; 2]) -> f64 {
 }
 
 /// The contact state at one point; SI units throughout.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
 pub struct ContactPoint {
     /// Distance from T1 (m).
     pub u: f64,
