@@ -185,7 +185,7 @@ impl<'a> SdofSystem<'a> {
         // (crate::efficiency::INTERNAL_MU_CAP), so that 1 − f never vanishes.
         let cap = if law.diverges_at_pitch() { crate::efficiency::INTERNAL_MU_CAP } else { f64::INFINITY };
         for c in &contacts_at(&self.ctx, tau) {
-            let m = law.mu(&c).clamp(-cap, cap) * c.load_share;
+            let m = law.mu(c).clamp(-cap, cap) * c.load_share;
             gp -= m * c.u;
             gw += m * (g.line_of_action_length - c.u);
         }
