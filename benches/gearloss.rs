@@ -3,9 +3,8 @@
 //! - one operating point, every law, both formulations, means to a relative tolerance of 1e-10 (target < 200 µs);
 //! - a 10 000-point torque × speed sweep with three laws, the whole evaluation stage (target < 2 s on 2 cores).
 
-use gearloss::efficiency::{mean_abs_mu, mean_efficiency};
+use gearloss::efficiency::{mean_abs_mu, mean_efficiencies};
 use gearloss::friction;
-use gearloss::model::Formulation;
 
 fn main() {
     divan::main();
@@ -46,9 +45,8 @@ fn one_point_all_laws_both_formulations(bencher: divan::Bencher) {
         let mut sum = 0.0;
         for spec in &scene.friction {
             let law = friction::build(spec, &ctx);
-            for f in [Formulation::External, Formulation::Internal] {
-                sum += mean_efficiency(&ctx, law.as_ref(), f).value;
-            }
+            let [external, internal] = mean_efficiencies(&ctx, law.as_ref());
+            sum += external.value + internal.value;
         }
         divan::black_box(sum)
     });
@@ -65,9 +63,8 @@ fn one_point_all_laws_with_mean_mu(bencher: divan::Bencher) {
         for spec in &scene.friction {
             let law = friction::build(spec, &ctx);
             sum += mean_abs_mu(&ctx, law.as_ref()).value;
-            for f in [Formulation::External, Formulation::Internal] {
-                sum += mean_efficiency(&ctx, law.as_ref(), f).value;
-            }
+            let [external, internal] = mean_efficiencies(&ctx, law.as_ref());
+            sum += external.value + internal.value;
         }
         divan::black_box(sum)
     });

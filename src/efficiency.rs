@@ -18,7 +18,7 @@ use serde::Serialize;
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::ContactPoint;
 use crate::model::Formulation;
-use crate::numerics::quadrature::{integrate_singular, Integral};
+use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
 
 /// Relative tolerance of every mean.
 pub const MEAN_TOLERANCE: f64 = 1e-10;
@@ -119,24 +119,29 @@ pub fn efficiency_of(
     formulation: Formulation,
     contacts: &[ContactPoint],
 ) -> f64 {
+    let [external, internal] = efficiencies_of(ctx, law, contacts);
+    match formulation {
+        Formulation::External => external,
+        Formulation::Internal => internal,
+    }
+}
+
+/// Both formulations for a given set of contacts, with one evaluation of μ per contact:
+/// [external, internal].
+pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> [f64; 2] {
     let g = ctx.geometry;
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
-    match formulation {
-        Formulation::External => {
-            let sum: f64 = contacts.iter().map(|c| c.load_share * law.mu(c) * c.s).sum();
-            1.0 - (1.0 / rp + 1.0 / rw) * sum
-        }
-        Formulation::Internal => {
-            let (mut num, mut den) = (rw, rp);
-            let cap = if law.diverges_at_pitch() { INTERNAL_MU_CAP } else { f64::INFINITY };
-            for c in contacts {
-                let m = law.mu(c).clamp(-cap, cap) * c.load_share;
-                num += m * (g.line_of_action_length - c.u);
-                den += m * c.u;
-            }
-            num / den / g.gear_ratio
-        }
+    let cap = if law.diverges_at_pitch() { INTERNAL_MU_CAP } else { f64::INFINITY };
+    let mut sum = 0.0;
+    let (mut num, mut den) = (rw, rp);
+    for c in contacts {
+        let mu = law.mu(c);
+        sum += c.load_share * mu * c.s;
+        let m = mu.clamp(-cap, cap) * c.load_share;
+        num += m * (g.line_of_action_length - c.u);
+        den += m * c.u;
     }
+    [1.0 - (1.0 / rp + 1.0 / rw) * sum, num / den / g.gear_ratio]
 }
 
 /// Times in (0, 1) where the integrand changes form: zone boundaries, pitch passages, law switches.
@@ -166,14 +171,21 @@ pub fn pitch_times(ctx: &LawContext) -> Vec<f64> {
 
 /// η̄ over one mesh cycle, with its error estimate.
 pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation) -> Integral {
-    // Every law is treated as singular at P: the t⁴ map is exact for the polynomial pieces of the
-    // Coulomb laws and removes the |s|^q kinks of the others.
-    let singular = pitch_times(ctx);
-    let breaks = break_times(ctx, law);
-    integrate_singular(
-        |tau, d| efficiency_of(ctx, law, formulation, &contacts_near_pitch(ctx, tau, d)),
-        &breaks,
-        &singular,
+    let [external, internal] = mean_efficiencies(ctx, law);
+    match formulation {
+        Formulation::External => external,
+        Formulation::Internal => internal,
+    }
+}
+
+/// η̄ of both formulations in one pass over shared quadrature nodes: [external, internal], each to
+/// [`MEAN_TOLERANCE`]. Every law is treated as singular at P: the t⁴ map is exact for the
+/// polynomial pieces of the Coulomb laws and removes the |s|^q kinks of the others.
+pub fn mean_efficiencies(ctx: &LawContext, law: &dyn FrictionLaw) -> [Integral; 2] {
+    integrate_singular_n(
+        |tau, d| efficiencies_of(ctx, law, &contacts_near_pitch(ctx, tau, d)),
+        &break_times(ctx, law),
+        &pitch_times(ctx),
         MEAN_TOLERANCE,
     )
 }
@@ -221,25 +233,38 @@ pub struct EfficiencyResult {
     pub max: f64,
 }
 
-/// Evaluates η̄, the power loss and the range of η(τ) (sampled) for one law and formulation.
-pub fn evaluate_efficiency(
+/// Evaluates η̄, the power loss and the range of η(τ) (sampled at `samples`) for the requested
+/// formulations, sharing the quadrature nodes and the samples between them.
+pub fn evaluate_efficiencies(
     ctx: &LawContext,
     law: &dyn FrictionLaw,
-    formulation: Formulation,
+    formulations: &[Formulation],
     samples: &[f64],
-) -> EfficiencyResult {
-    let mean = mean_efficiency(ctx, law, formulation);
-    let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
+) -> Vec<EfficiencyResult> {
+    if formulations.is_empty() {
+        return Vec::new();
+    }
+    let means = mean_efficiencies(ctx, law);
+    let mut range = [(f64::INFINITY, f64::NEG_INFINITY); 2];
     for tau in samples {
-        let e = efficiency_at(ctx, law, formulation, *tau);
-        min = min.min(e);
-        max = max.max(e);
+        for (r, e) in range.iter_mut().zip(efficiencies_of(ctx, law, &contacts_at(ctx, *tau))) {
+            *r = (r.0.min(e), r.1.max(e));
+        }
     }
-    EfficiencyResult {
-        formulation,
-        power_loss: (1.0 - mean.value) * ctx.state.pinion_torque * ctx.state.pinion_speed,
-        mean,
-        min,
-        max,
-    }
+    formulations
+        .iter()
+        .map(|f| {
+            let k = match f {
+                Formulation::External => 0,
+                Formulation::Internal => 1,
+            };
+            EfficiencyResult {
+                formulation: *f,
+                power_loss: (1.0 - means[k].value) * ctx.state.pinion_torque * ctx.state.pinion_speed,
+                mean: means[k],
+                min: range[k].0,
+                max: range[k].1,
+            }
+        })
+        .collect()
 }

@@ -309,8 +309,7 @@ fn evaluate_law(
     let contacts: Vec<ContactPoint> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
     let taus = cycle_times();
     let range_taus = range_times(&ctx, law);
-    let efficiency =
-        eval.formulations.iter().map(|f| efficiency::evaluate_efficiency(&ctx, law, *f, &range_taus)).collect();
+    let efficiency = efficiency::evaluate_efficiencies(&ctx, law, &eval.formulations, &range_taus);
     let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
     LawEvaluation {
         id: catalog::entry(&spec.id).map_or("unknown", |e| e.id),

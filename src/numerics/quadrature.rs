@@ -44,46 +44,57 @@ const WGK: [f64; 8] = [
 const WG: [f64; 4] =
     [0.129_484_966_168_869_7, 0.279_705_391_489_276_7, 0.381_830_050_505_118_9, 0.417_959_183_673_469_4];
 
-/// One 15-point Kronrod estimate on [a, b] with QUADPACK's error estimate (dqk15): the
-/// Kronrod–Gauss difference scaled by the integrand's variation, (200 |K − G| / I_asc)^1.5 · I_asc.
-fn gk15(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
-    let c = 0.5 * (a + b);
-    let h = 0.5 * (b - a);
-    let fc = f(c);
-    let mut k = fc * WGK[7];
-    let mut g = fc * WG[3];
-    let mut values = [(0.0, 0.0); 7];
-    for j in 0..7 {
-        let x = h * XGK[j];
-        let (f1, f2) = (f(c - x), f(c + x));
-        values[j] = (f1, f2);
-        k += WGK[j] * (f1 + f2);
-        if j % 2 == 1 {
-            g += WG[j / 2] * (f1 + f2);
-        }
-    }
-    let mean = 0.5 * k;
-    let mut asc = WGK[7] * (fc - mean).abs();
-    let mut abs = WGK[7] * fc.abs();
-    for j in 0..7 {
-        asc += WGK[j] * ((values[j].0 - mean).abs() + (values[j].1 - mean).abs());
-        abs += WGK[j] * (values[j].0.abs() + values[j].1.abs());
-    }
-    let (asc, abs) = (asc * h.abs(), abs * h.abs());
-    let mut err = ((k - g) * h).abs();
+/// The QUADPACK (dqk15) error estimate of one component: the Kronrod–Gauss difference scaled by the
+/// integrand's variation, (200 |K − G| / I_asc)^1.5 · I_asc, floored at 50 ε |I|.
+fn dqk15_error(k: f64, g: f64, asc: f64, abs: f64) -> f64 {
+    let mut err = (k - g).abs();
     if asc != 0.0 && err != 0.0 {
         err = asc * (200.0 * err / asc).powf(1.5).min(1.0);
     }
     if abs > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
         err = err.max(50.0 * f64::EPSILON * abs);
     }
-    (k * h, err)
+    err
+}
+
+/// One 15-point Kronrod estimate of N integrands on [a, b], each with its QUADPACK error estimate.
+fn gk15<const N: usize>(f: &impl Fn(f64) -> [f64; N], a: f64, b: f64) -> ([f64; N], [f64; N]) {
+    let c = 0.5 * (a + b);
+    let h = 0.5 * (b - a);
+    let fc = f(c);
+    let mut values = [([0.0; N], [0.0; N]); 7];
+    for (j, v) in values.iter_mut().enumerate() {
+        let x = h * XGK[j];
+        *v = (f(c - x), f(c + x));
+    }
+    let mut out = ([0.0; N], [0.0; N]);
+    for n in 0..N {
+        let mut k = fc[n] * WGK[7];
+        let mut g = fc[n] * WG[3];
+        for (j, (f1, f2)) in values.iter().enumerate() {
+            k += WGK[j] * (f1[n] + f2[n]);
+            if j % 2 == 1 {
+                g += WG[j / 2] * (f1[n] + f2[n]);
+            }
+        }
+        let mean = 0.5 * k;
+        let mut asc = WGK[7] * (fc[n] - mean).abs();
+        let mut abs = WGK[7] * fc[n].abs();
+        for (j, (f1, f2)) in values.iter().enumerate() {
+            asc += WGK[j] * ((f1[n] - mean).abs() + (f2[n] - mean).abs());
+            abs += WGK[j] * (f1[n].abs() + f2[n].abs());
+        }
+        out.0[n] = k * h;
+        out.1[n] = dqk15_error(k * h, g * h, asc * h.abs(), abs * h.abs());
+    }
+    out
 }
 
 /// Integrates `f` over `[breaks[0], breaks[last]]`, split at every interior break, to a relative
 /// tolerance `rel_tol` of the whole integral (with an absolute floor of 1e-300).
 pub fn integrate(f: impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integral {
-    integrate_singular(|x, _| f(x), breaks, &[], rel_tol)
+    let [r] = integrate_singular_n(|x, _| [f(x)], breaks, &[], rel_tol);
+    r
 }
 
 /// As [`integrate`], for an integrand with integrable singularities (or singular derivatives) at the
@@ -95,11 +106,22 @@ pub fn integrate(f: impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integr
 /// map (x itself cannot resolve a point 1e-20 away from a singular point at 0.01); d is NaN on
 /// pieces that touch no singular point.
 pub fn integrate_singular(f: impl Fn(f64, f64) -> f64, breaks: &[f64], singular: &[f64], rel_tol: f64) -> Integral {
+    let [r] = integrate_singular_n(|x, d| [f(x, d)], breaks, singular, rel_tol);
+    r
+}
+
+/// As [`integrate_singular`] for N integrands that share their (expensive) evaluation points; each
+/// meets the tolerance, the pieces are refined where any of them needs it.
+pub fn integrate_singular_n<const N: usize>(
+    f: impl Fn(f64, f64) -> [f64; N],
+    breaks: &[f64],
+    singular: &[f64],
+    rel_tol: f64,
+) -> [Integral; N] {
     let mut points: Vec<f64> = breaks.iter().copied().filter(|x| x.is_finite()).collect();
     points.sort_by(f64::total_cmp);
     points.dedup_by(|a, b| (*a - *b).abs() <= 1e-15 * (1.0 + b.abs()));
     let is_singular = |x: f64| singular.iter().any(|s| (s - x).abs() <= 1e-12 * (1.0 + x.abs()));
-    // Each piece [a, b] becomes one or two pieces in t; the map returns (x, dx/dt).
     let mut split = Vec::new();
     for w in points.windows(2) {
         let (a, b) = (w[0], w[1]);
@@ -114,66 +136,78 @@ pub fn integrate_singular(f: impl Fn(f64, f64) -> f64, breaks: &[f64], singular:
             }
         }
     }
-    let mut value = 0.0;
-    let mut error = 0.0;
-    let mut evaluations = 0;
+    let mut out = [Integral { value: 0.0, error: 0.0, evaluations: 0 }; N];
     for (a, b, kind) in split {
-        let r = match kind {
-            0 => adaptive(&|x: f64| f(x, f64::NAN), &[a, b], rel_tol),
+        let scale = |v: [f64; N], w: f64| v.map(|x| x * w);
+        let (values, errors, evaluations) = match kind {
+            0 => adaptive(&|x: f64| f(x, f64::NAN), a, b, rel_tol),
             1 => adaptive(
                 &|t: f64| {
                     let d = (b - a) * t.powi(4);
-                    f(a + d, d) * 4.0 * (b - a) * t.powi(3)
+                    scale(f(a + d, d), 4.0 * (b - a) * t.powi(3))
                 },
-                &[0.0, 1.0],
+                0.0,
+                1.0,
                 rel_tol,
             ),
             _ => adaptive(
                 &|t: f64| {
                     let d = (b - a) * t.powi(4);
-                    f(b - d, -d) * 4.0 * (b - a) * t.powi(3)
+                    scale(f(b - d, -d), 4.0 * (b - a) * t.powi(3))
                 },
-                &[0.0, 1.0],
+                0.0,
+                1.0,
                 rel_tol,
             ),
         };
-        value += r.value;
-        error += r.error;
-        evaluations += r.evaluations;
+        for n in 0..N {
+            out[n].value += values[n];
+            out[n].error += errors[n];
+            out[n].evaluations += evaluations;
+        }
     }
-    Integral { value, error, evaluations }
+    out
 }
 
-fn adaptive(f: &impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integral {
-    let width = breaks[breaks.len() - 1] - breaks[0];
-    let mut points: Vec<f64> = breaks.iter().copied().filter(|x| x.is_finite()).collect();
-    points.sort_by(f64::total_cmp);
-    points.dedup_by(|a, b| (*a - *b).abs() <= 1e-15 * (1.0 + b.abs()));
-    let mut pieces: Vec<(f64, f64, f64, f64)> = Vec::new();
-    let mut evaluations = 0;
-    for w in points.windows(2) {
-        let (v, e) = gk15(&f, w[0], w[1]);
-        evaluations += 15;
-        pieces.push((w[0], w[1], v, e));
-    }
+type Piece<const N: usize> = (f64, f64, [f64; N], [f64; N]);
+
+fn adaptive<const N: usize>(f: &impl Fn(f64) -> [f64; N], a: f64, b: f64, rel_tol: f64) -> ([f64; N], [f64; N], usize) {
+    let width = b - a;
+    let (v, e) = gk15(f, a, b);
+    let mut pieces: Vec<Piece<N>> = vec![(a, b, v, e)];
+    let mut evaluations = 15;
+    let sums = |pieces: &[Piece<N>]| {
+        let mut total = [0.0; N];
+        let mut err = [0.0; N];
+        for p in pieces {
+            for n in 0..N {
+                total[n] += p.2[n];
+                err[n] += p.3[n];
+            }
+        }
+        (total, err)
+    };
     for _ in 0..5000 {
-        let total: f64 = pieces.iter().map(|p| p.2).sum();
-        let err: f64 = pieces.iter().map(|p| p.3).sum();
-        if err <= (rel_tol * total.abs()).max(1e-300) || !err.is_finite() {
+        let (total, err) = sums(&pieces);
+        // The worst ratio of error to allowance over the components.
+        let ratio = |e: &[f64; N]| (0..N).map(|n| e[n] / (rel_tol * total[n].abs()).max(1e-300)).fold(0.0, f64::max);
+        if ratio(&err) <= 1.0 || err.iter().any(|e| !e.is_finite()) {
             break;
         }
-        let (i, _) = pieces.iter().enumerate().max_by(|x, y| x.1 .3.total_cmp(&y.1 .3)).expect("at least one piece");
+        let (i, _) =
+            pieces.iter().enumerate().max_by(|x, y| ratio(&x.1 .3).total_cmp(&ratio(&y.1 .3))).expect("a piece");
         let (a, b, _, _) = pieces[i];
         let m = 0.5 * (a + b);
         // Round-off: a piece this narrow cannot be refined meaningfully; keep its error estimate.
         if m <= a || m >= b || (b - a) < 1e-14 * width {
             break;
         }
-        let (v1, e1) = gk15(&f, a, m);
-        let (v2, e2) = gk15(&f, m, b);
+        let (v1, e1) = gk15(f, a, m);
+        let (v2, e2) = gk15(f, m, b);
         evaluations += 30;
         pieces[i] = (a, m, v1, e1);
         pieces.push((m, b, v2, e2));
     }
-    Integral { value: pieces.iter().map(|p| p.2).sum(), error: pieces.iter().map(|p| p.3).sum(), evaluations }
+    let (total, err) = sums(&pieces);
+    (total, err, evaluations)
 }

@@ -80,7 +80,7 @@ fn mean_reports_an_error_estimate_within_tolerance() {
     let c = ctx(&g);
     let m = mean_efficiency(&c, &Coulomb { mu: 0.08 }, Internal);
     assert!(m.error < 1e-10 * m.value, "error {}", m.error);
-    let p = efficiency::evaluate_efficiency(&c, &Coulomb { mu: 0.08 }, External, &[0.5]).power_loss;
+    let p = efficiency::evaluate_efficiencies(&c, &Coulomb { mu: 0.08 }, &[External], &[0.5])[0].power_loss;
     let expected =
         (1.0 - mean_efficiency(&c, &Coulomb { mu: 0.08 }, External).value) * 239.3 * 1000.0 * std::f64::consts::PI
             / 30.0;
