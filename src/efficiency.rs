@@ -78,6 +78,18 @@ impl<'a> IntoIterator for &'a Contacts {
     }
 }
 
+/// How many pairs are in contact at time τ of the mesh cycle (the count of [`contacts_at`], without
+/// building the contact states).
+pub fn pairs_at(ctx: &LawContext, tau: f64) -> usize {
+    let g = ctx.geometry;
+    (0..4)
+        .filter(|k| {
+            let u = g.points.a + g.base_pitch * (tau + *k as f64);
+            u >= g.points.a && u < g.points.e
+        })
+        .count()
+}
+
 /// The contacts at time τ of the mesh cycle (τ in [0, 1)).
 /// The load is shared among the pairs found at τ, so that the shares always add up to one.
 pub fn contacts_at(ctx: &LawContext, tau: f64) -> Contacts {

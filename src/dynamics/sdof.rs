@@ -15,7 +15,7 @@
 
 use serde::Serialize;
 
-use crate::efficiency::{break_times, contacts_at};
+use crate::efficiency::{break_times, contacts_at, pairs_at};
 use crate::friction::{FrictionLaw, LawContext};
 
 /// Which equation of motion.
@@ -136,11 +136,7 @@ impl<'a> SdofSystem<'a> {
         taus.dedup_by(|a, b| (*a - *b).abs() < 1e-14);
         let segments: Vec<Segment> = taus
             .windows(2)
-            .map(|w| Segment {
-                start: w[0] * period,
-                end: w[1] * period,
-                pairs: contacts_at(&ctx, 0.5 * (w[0] + w[1])).len(),
-            })
+            .map(|w| Segment { start: w[0] * period, end: w[1] * period, pairs: pairs_at(&ctx, 0.5 * (w[0] + w[1])) })
             .collect();
         // k̄ over the period (exact for the rectangular model, trapezoid on 4096 points for a table).
         let mean_stiffness = match &stiffness {
@@ -169,8 +165,7 @@ impl<'a> SdofSystem<'a> {
     /// k(t) (N/m); t in seconds, periodic.
     pub fn stiffness_at(&self, t: f64) -> f64 {
         let tau = (t / self.period).rem_euclid(1.0);
-        let pairs = contacts_at(&self.ctx, tau).len();
-        self.stiffness.at(tau, pairs)
+        self.stiffness.at(tau, pairs_at(&self.ctx, tau))
     }
 
     /// f(t), the friction term of the external and internal formulations.
