@@ -6,7 +6,7 @@
 //!
 //! ```
 //! use gearloss::friction::{FrictionLaw, xu::Xu};
-//! let law = Xu { viscosity_cp: 95.0, roughness_um: 0.3 };
+//! let law = Xu::from_units(95.0, 0.3);
 //! let mut c = gearloss::friction::testing::contact();
 //! c.slide_to_roll = 0.0;
 //! assert_eq!(law.magnitude(&c), 0.0);
@@ -23,13 +23,23 @@ pub const B: [f64; 9] = [-8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.1
 pub struct Xu {
     pub viscosity_cp: f64,
     pub roughness_um: f64,
+    /// log10 η, and exp(b1 + b9 e^S) η^b7: the parts that do not change along the line of action.
+    log_viscosity: f64,
+    constant: f64,
 }
 
 impl Xu {
     pub fn new(t: &Tribology) -> Self {
+        Xu::from_units(t.dynamic_viscosity * units::CP_PER_PA_S, t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M)
+    }
+
+    /// From η in cP and S (mean Ra) in µm.
+    pub fn from_units(viscosity_cp: f64, roughness_um: f64) -> Self {
         Xu {
-            viscosity_cp: t.dynamic_viscosity * units::CP_PER_PA_S,
-            roughness_um: t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
+            viscosity_cp,
+            roughness_um,
+            log_viscosity: viscosity_cp.log10(),
+            constant: (B[0] + B[8] * roughness_um.exp()).exp() * viscosity_cp.powf(B[6]),
         }
     }
 
@@ -39,14 +49,16 @@ impl Xu {
         if sr == 0.0 {
             return 0.0;
         }
-        let l = sr * ph * self.viscosity_cp.log10();
-        let f = B[0] + B[3] * l + B[4] * (-l).exp() + B[8] * self.roughness_um.exp();
-        f.exp()
-            * ph.powf(B[1])
-            * sr.powf(B[2])
-            * c.entrainment_velocity.powf(B[5])
-            * self.viscosity_cp.powf(B[6])
-            * c.reduced_radius.powf(B[7])
+        let l = sr * ph * self.log_viscosity;
+        // exp(f) p_H^b2 |SR|^b3 U^b6 η^b7 R^b8 with the constant factors folded in at construction.
+        self.constant
+            * (B[3] * l
+                + B[4] * (-l).exp()
+                + B[1] * ph.ln()
+                + B[2] * sr.ln()
+                + B[5] * c.entrainment_velocity.ln()
+                + B[7] * c.reduced_radius.ln())
+            .exp()
     }
 }
 

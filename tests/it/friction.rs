@@ -30,7 +30,7 @@ fn benedict_kelley_constant_is_the_imperial_one_converted() {
 /// Xu: zero at P, rising with |SR| at low SR (the linear, isothermal region; He–Cho–Singh §4).
 #[test]
 fn xu_vanishes_at_the_pitch_point_and_rises_with_slip() {
-    let law = Xu { viscosity_cp: 95.0, roughness_um: 0.3 };
+    let law = Xu::from_units(95.0, 0.3);
     let mut c = contact();
     c.slide_to_roll = 0.0;
     assert_eq!(law.magnitude(&c), 0.0);

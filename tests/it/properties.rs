@@ -48,11 +48,7 @@ fn context(g: &SpurGeometry, torque: f64, rpm: f64, sharing: Sharing) -> LawCont
 }
 
 fn laws(mu: f64) -> Vec<Box<dyn FrictionLaw>> {
-    vec![
-        Box::new(Coulomb { mu }),
-        Box::new(SmoothedCoulomb { mu, phi: 50e3 }),
-        Box::new(Xu { viscosity_cp: 50.0, roughness_um: 0.3 }),
-    ]
+    vec![Box::new(Coulomb { mu }), Box::new(SmoothedCoulomb { mu, phi: 50e3 }), Box::new(Xu::from_units(50.0, 0.3))]
 }
 
 proptest! {
