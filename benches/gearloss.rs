@@ -35,9 +35,9 @@ fn scene(torque: &str, speed: &str, laws: &str) -> gearloss::Scene {
 const EVERY_LAW: &str = "coulomb(mu = 0.05) benedict_kelley benedict_kelley_bernard xu smoothed_coulomb(mu = 0.05) \
     composite misharin odonoghue_cameron drozdov_gavrikov iso_14179_2 matsumoto";
 
-/// Every law at one operating point: build and η̄ for both formulations (tolerance 1e-10). Target < 200 µs.
-#[divan::bench]
-fn one_point_all_laws_both_formulations(bencher: divan::Bencher) {
+/// Every law at one operating point: build, η̄ of both formulations (tolerance 1e-10) and, when asked,
+/// the mean |μ| over A–E.
+fn one_point(bencher: divan::Bencher, with_mean_mu: bool) {
     let scene = scene("302 N*m", "1500 rpm", EVERY_LAW);
     let eval = gearloss::evaluate(&scene);
     let ctx = eval.law_context(eval.points[0].state);
@@ -45,6 +45,9 @@ fn one_point_all_laws_both_formulations(bencher: divan::Bencher) {
         let mut sum = 0.0;
         for spec in &scene.friction {
             let law = friction::build(spec, &ctx);
+            if with_mean_mu {
+                sum += mean_abs_mu(&ctx, law.as_ref()).value;
+            }
             let [external, internal] = mean_efficiencies(&ctx, law.as_ref());
             sum += external.value + internal.value;
         }
@@ -52,22 +55,16 @@ fn one_point_all_laws_both_formulations(bencher: divan::Bencher) {
     });
 }
 
-/// As above, plus the mean |μ| over A–E of every law (what a report row also shows).
+/// Target < 200 µs.
+#[divan::bench]
+fn one_point_all_laws_both_formulations(bencher: divan::Bencher) {
+    one_point(bencher, false);
+}
+
+/// What a report row also shows: the mean |μ| of every law.
 #[divan::bench]
 fn one_point_all_laws_with_mean_mu(bencher: divan::Bencher) {
-    let scene = scene("302 N*m", "1500 rpm", EVERY_LAW);
-    let eval = gearloss::evaluate(&scene);
-    let ctx = eval.law_context(eval.points[0].state);
-    bencher.bench(|| {
-        let mut sum = 0.0;
-        for spec in &scene.friction {
-            let law = friction::build(spec, &ctx);
-            sum += mean_abs_mu(&ctx, law.as_ref()).value;
-            let [external, internal] = mean_efficiencies(&ctx, law.as_ref());
-            sum += external.value + internal.value;
-        }
-        divan::black_box(sum)
-    });
+    one_point(bencher, true);
 }
 
 /// The evaluate stage on a 100 × 100 torque × speed sweep with three laws.
