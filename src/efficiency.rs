@@ -158,10 +158,16 @@ pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[Cont
 
 /// Times in (0, 1) where the integrand changes form: zone boundaries, pitch passages, law switches.
 pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
+    cycle_break_times(ctx, &law.switch_points())
+}
+
+/// Times in [0, 1] where a pair reaches E or P, or one of `switch_points` (positions from T1),
+/// with 0 and 1 included and sorted.
+pub fn cycle_break_times(ctx: &LawContext, switch_points: &[f64]) -> Vec<f64> {
     let g = ctx.geometry;
     let p = g.points;
     let mut positions = vec![p.e, p.p];
-    positions.extend(law.switch_points());
+    positions.extend_from_slice(switch_points);
     let mut times = vec![0.0, 1.0];
     for u in positions {
         for k in 0..4 {

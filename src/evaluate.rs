@@ -76,6 +76,8 @@ pub struct LawEvaluation {
     /// Regime at the table rows (composite law only).
     pub regimes: Option<Vec<Regime>>,
     pub switch_points: Vec<f64>,
+    /// Regime bands along the line of action between A, the switch points and E (composite only).
+    pub regime_bands: Vec<(f64, f64, Regime)>,
     pub mean_abs_mu: Integral,
     pub validity: ValiditySummary,
     pub efficiency: Vec<EfficiencyResult>,
@@ -293,6 +295,15 @@ fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> Validit
     ValiditySummary { samples: contacts.len(), outside, intervals }
 }
 
+/// The regime between consecutive switch points (A, switches…, E), for laws that have regimes.
+fn regime_bands(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<(f64, f64, Regime)> {
+    let p = ctx.geometry.points;
+    let mut edges = vec![p.a];
+    edges.extend(law.switch_points());
+    edges.push(p.e);
+    edges.windows(2).filter_map(|w| law.regime(&ctx.contact_at(0.5 * (w[0] + w[1]))).map(|r| (w[0], w[1], r))).collect()
+}
+
 fn evaluate_law(
     eval: &Evaluation,
     spec: &crate::model::FrictionLawSpec,
@@ -320,6 +331,7 @@ fn evaluate_law(
         table: table.iter().map(|(_, c)| value_at(c)).collect(),
         regimes: law.regime(&table[0].1).map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
         switch_points: law.switch_points(),
+        regime_bands: regime_bands(&ctx, law),
         ohlendorf_efficiency: 1.0 - mean_abs_mu.value * efficiency::ohlendorf_loss_factor(&ctx),
         internal_cap_band: if eval.formulations.contains(&Formulation::Internal) {
             efficiency::internal_cap_band(&ctx, law)

@@ -15,7 +15,7 @@
 
 use serde::Serialize;
 
-use crate::efficiency::{break_times, contacts_at, pairs_at};
+use crate::efficiency::{break_times, contacts_at, cycle_break_times, pairs_at};
 use crate::friction::{FrictionLaw, LawContext};
 
 /// Which equation of motion.
@@ -118,20 +118,7 @@ impl<'a> SdofSystem<'a> {
         let period = 2.0 * std::f64::consts::PI / (ctx.state.pinion_speed * g.teeth[0] as f64);
         let mut taus = match law {
             Some(l) => break_times(&ctx, l),
-            None => {
-                let p = g.points;
-                let mut t = vec![0.0, 1.0];
-                for k in 0..4 {
-                    for u in [p.e, p.p] {
-                        let tau = (u - p.a) / g.base_pitch - k as f64;
-                        if tau > 0.0 && tau < 1.0 {
-                            t.push(tau);
-                        }
-                    }
-                }
-                t.sort_by(f64::total_cmp);
-                t
-            }
+            None => cycle_break_times(&ctx, &[]),
         };
         taus.dedup_by(|a, b| (*a - *b).abs() < 1e-14);
         let segments: Vec<Segment> = taus

@@ -366,9 +366,6 @@ fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> ContactRow {
 
 fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &PointEvaluation) -> OperatingPointReport {
     let g = &eval.geometry;
-    let op = &scene.operating;
-    let (ti, ni) = pe.index;
-    let _ = (ti, ni, op);
     let label = operating_label(scene, pe);
     OperatingPointReport {
         pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
@@ -469,19 +466,7 @@ fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves> {
             for (f, eta) in &c.efficiency {
                 pc.efficiency.push((format!("{label} {}", formulation_name(*f)), eta.clone()));
             }
-            if law.regimes.is_some() {
-                let g = &eval.geometry.points;
-                let mut edges = vec![g.a];
-                edges.extend(law.switch_points.iter().copied());
-                edges.push(g.e);
-                let ctx = eval.law_context(pe.state);
-                let built = crate::friction::build(spec, &ctx);
-                for w in edges.windows(2) {
-                    if let Some(r) = built.regime(&ctx.contact_at(0.5 * (w[0] + w[1]))) {
-                        pc.regime_bands.push((w[0], w[1], format!("{r:?}")));
-                    }
-                }
-            }
+            pc.regime_bands.extend(law.regime_bands.iter().map(|(a, b, r)| (*a, *b, format!("{r:?}"))));
         }
         out.push(pc);
     }

@@ -502,7 +502,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
                         .collect()
                 })
             }
-            _ => value_scalar(spec.name, value, spec.dimension, errors).map(|v| vec![v]),
+            _ => super::fields::scalar(spec.name, value, spec.dimension, errors).map(|v| vec![v]),
         };
         let Some(values) = values else {
             ok = false;
@@ -560,10 +560,6 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
             })
             .collect(),
     }
-}
-
-fn value_scalar(key: &str, value: &Value, dim: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(f64, String)> {
-    super::fields::scalar(key, value, dim, errors)
 }
 
 fn check_friction_needs(

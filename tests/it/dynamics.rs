@@ -327,7 +327,6 @@ fn airy_closed_form_matches_magnus() {
 #[test]
 fn transmission_error_response_matches_the_closed_form() {
     let (scene, g) = fzg();
-    let law = Coulomb { mu: 0.0 };
     let c = ctx(&scene, &g, 3000.0, 239.3);
     let k = 3.0e8;
     let mut sys = SdofSystem::new(
@@ -338,7 +337,6 @@ fn transmission_error_response_matches_the_closed_form() {
         J,
         0.05,
     );
-    let _ = &law;
     let a = 2e-6;
     sys.transmission_error = vec![(a, 0.0)];
     assert!(!sys.exact_applies());
