@@ -4,7 +4,8 @@
 //!
 //! At time τ (in mesh periods, τ = 0 when a pair enters at A) the pairs in contact are at
 //! u_k = T1A + p_b (τ + k), k = 0, 1, 2, while u_k < T1E. With R_p, R_w the base radii, i = z2/z1,
-//! and per contact j the signed μ_j, share w_j, s_j = u_j − T1P, T1C_j = u_j, T2C_j = T1T2 − u_j:
+//! and per contact j the signed μ_j, force share w_j = 1/n (always: with `load_sharing = none` a
+//! law sees the whole load, but the n forces of the balance still add up to F_bn), s_j = u_j − T1P, T1C_j = u_j, T2C_j = T1T2 − u_j:
 //!
 //! - external: η = 1 − (1/R_p + 1/R_w) Σ_j w_j μ_j s_j  (= 1 − friction power / input power);
 //! - internal: η = (R_w + Σ_j μ_j w_j T2C_j) / (R_p + Σ_j μ_j w_j T1C_j) / i.
@@ -148,8 +149,8 @@ pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[Cont
     let (mut num, mut den) = (rw, rp);
     for c in contacts {
         let mu = law.mu(c);
-        sum += c.load_share * mu * c.s;
-        let m = mu.clamp(-cap, cap) * c.load_share;
+        sum += c.force_share * mu * c.s;
+        let m = mu.clamp(-cap, cap) * c.force_share;
         num += m * (g.line_of_action_length - c.u);
         den += m * c.u;
     }
@@ -234,9 +235,9 @@ pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
     std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u) * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2)
 }
 
-/// Local friction power loss of one contact, |μ| F v_s (W).
+/// Local friction power loss of one contact, |μ| F v_s (W), with F = its force share of F_bn.
 pub fn local_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, c: &ContactPoint) -> f64 {
-    let force = c.load_per_width * ctx.geometry.face_width;
+    let force = c.force_share * ctx.geometry.normal_load(&ctx.state);
     law.mu(c).abs() * force * c.sliding_velocity
 }
 

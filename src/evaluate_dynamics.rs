@@ -13,6 +13,7 @@ use crate::evaluate::Evaluation;
 use crate::friction::{self, FrictionLaw};
 use crate::geometry::{OperatingState, SpurGeometry};
 use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
+use crate::numerics::roots::brent;
 
 /// One formulation at one operating point.
 #[derive(Debug, Clone, Serialize)]
@@ -54,8 +55,13 @@ pub struct DynamicsEvaluation {
     pub mean_stiffness: f64,
     pub natural_frequency: f64,
     pub formulations: Vec<DynamicFormulation>,
+    /// The friction law diverges at the pitch point (no finite peak friction force).
+    pub friction_diverges_at_pitch: bool,
     pub points: Vec<DynamicsPoint>,
     pub stability_map: Option<Vec<StabilityPoint>>,
+    /// Per formulation: speed ranges (rad/s) where ρ > 1, their bounds located by Brent's method on
+    /// ρ(ω) − 1 between the map's speeds (to 1e-9 relative); a range open at an end of the map ends there.
+    pub unstable_ranges: Vec<Vec<(f64, f64)>>,
     /// The formulation and operating point (index) of the numerics study, and the study.
     pub numerics: Option<(DynamicFormulation, usize, Study)>,
 }
@@ -124,6 +130,37 @@ fn analyse(sys: &SdofSystem, with_response: bool) -> FormulationResult {
     }
 }
 
+/// ρ above 1 by more than this is unstable (the verdict's margin, [`Verdict`]).
+const UNSTABLE_MARGIN: f64 = 1e-9;
+
+/// The ranges where ρ > 1: between consecutive map speeds whose verdicts differ, the bound is the root
+/// of `excess(ω) = ρ(ω) − 1 − margin`, located by Brent's method to 1e-9 of the speed.
+fn unstable_ranges(rows: impl Iterator<Item = (f64, f64)>, excess: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    let mut open: Option<f64> = None;
+    let mut prev: Option<(f64, bool)> = None;
+    for (w, rho) in rows {
+        let bad = rho > 1.0 + UNSTABLE_MARGIN;
+        match prev {
+            None if bad => open = Some(w),
+            Some((w0, was_bad)) if was_bad != bad => {
+                let bound = brent(&excess, w0, w, 1e-9 * w);
+                if bad {
+                    open = Some(bound)
+                } else if let Some(a) = open.take() {
+                    out.push((a, bound))
+                }
+            }
+            _ => {}
+        }
+        prev = Some((w, bad));
+    }
+    if let (Some(a), Some((w, _))) = (open, prev) {
+        out.push((a, w));
+    }
+    out
+}
+
 /// Evaluates the dynamics the scene asks for; None when it asks for none.
 pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEvaluation> {
     let spec = scene.dynamics.as_ref()?;
@@ -164,26 +201,45 @@ pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEva
     } else {
         Vec::new()
     };
-    let stability_map = a.stability_map.as_ref().map(|speeds| {
+    let stability_map: Option<Vec<StabilityPoint>> = a.stability_map.as_ref().map(|speeds| {
         speeds
             .values
             .par_iter()
             .map(|w| {
                 let state = OperatingState { pinion_torque: probe_state.pinion_torque, pinion_speed: w.value };
                 let law = law_for(state);
-                let results: Vec<FormulationResult> = spec
+                let results: Vec<(f64, Option<f64>)> = spec
                     .formulations
                     .iter()
-                    .map(|f| analyse(&system(eval, spec, &stiffness, law.as_deref(), *f, state, j), true))
+                    .map(|f| {
+                        let sys = system(eval, spec, &stiffness, law.as_deref(), *f, state, j);
+                        let fl = Floquet::analyse(&sys);
+                        (fl.spectral_radius, PeriodicResponse::dynamic_factor(&sys, &fl))
+                    })
                     .collect();
                 StabilityPoint {
                     pinion_speed: w.value,
-                    spectral_radius: results.iter().map(|r| r.spectral_radius).collect(),
-                    dynamic_factor: results.iter().map(|r| r.response.as_ref().map(|x| x.dynamic_factor)).collect(),
+                    spectral_radius: results.iter().map(|r| r.0).collect(),
+                    dynamic_factor: results.iter().map(|r| r.1).collect(),
                 }
             })
             .collect()
     });
+    let unstable_ranges = match &stability_map {
+        None => Vec::new(),
+        Some(rows) => (0..spec.formulations.len())
+            .map(|i| {
+                let rho = |w: f64| {
+                    let state = OperatingState { pinion_torque: probe_state.pinion_torque, pinion_speed: w };
+                    let law = law_for(state);
+                    let f = spec.formulations[i];
+                    Floquet::analyse(&system(eval, spec, &stiffness, law.as_deref(), f, state, j)).spectral_radius
+                        - (1.0 + UNSTABLE_MARGIN)
+                };
+                unstable_ranges(rows.iter().map(|r| (r.pinion_speed, r.spectral_radius[i])), rho)
+            })
+            .collect(),
+    };
     let numerics = a.numerics.then(|| {
         let f = if spec.formulations.contains(&DynamicFormulation::External) {
             DynamicFormulation::External
@@ -203,8 +259,10 @@ pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEva
         mean_stiffness: probe.mean_stiffness,
         natural_frequency: probe.natural_frequency(),
         formulations: spec.formulations.clone(),
+        friction_diverges_at_pitch: law_for(probe_state).is_some_and(|l| l.diverges_at_pitch()),
         points,
         stability_map,
+        unstable_ranges,
         numerics,
     })
 }

@@ -19,6 +19,7 @@ pub mod numerics;
 pub mod propagator;
 pub mod response;
 pub mod sdof;
+pub mod trajectory;
 
 pub use floquet::{Floquet, Multiplier};
 pub use sdof::{DynamicFormulation, SdofSystem, Segment, StiffnessModel};

@@ -7,12 +7,12 @@
 
 use std::time::Instant;
 
-use nalgebra::Vector2;
+use nalgebra::{Matrix4, Vector2};
 use serde::Serialize;
 
 use super::integrators::{integrate, Counts, Integrator};
+use super::propagator::{from_exponential, magnus, magnus_adaptive, segment_matrix};
 use super::propagator::{period_segments, Method};
-use super::response::states;
 use super::sdof::SdofSystem;
 
 pub const PERIODS: usize = 10;
@@ -42,6 +42,56 @@ pub struct Study {
     pub reference_seconds: f64,
     pub periods: usize,
     pub runs: Vec<Run>,
+}
+
+/// The state at each sample time (τ in mesh periods, sorted, within [0, 1)), marching segment by
+/// segment from X(0). For the exact propagator exp(M dt) is cached for the common sample step.
+pub fn states(sys: &SdofSystem, x0: Vector2<f64>, taus: &[f64]) -> Vec<Vector2<f64>> {
+    let mut out = Vec::with_capacity(taus.len());
+    let mut x = x0;
+    let mut t = 0.0;
+    let mut k = 0;
+    let exact = sys.exact_applies();
+    for seg in &sys.segments {
+        let m = exact.then(|| segment_matrix(sys, seg.start, seg.end));
+        // Magnus: the substep density that converged over the whole segment, reused for each sample step.
+        let density = if exact {
+            0.0
+        } else {
+            magnus_adaptive(sys, seg.start, seg.end - seg.start).1 as f64 / (seg.end - seg.start)
+        };
+        let mut cache: Option<(f64, Matrix4<f64>)> = None;
+        let mut step = |x: &Vector2<f64>, from: f64, dt: f64| -> Vector2<f64> {
+            match &m {
+                Some(m) => {
+                    let e = match &cache {
+                        Some((h, e)) if (*h - dt).abs() <= 1e-12 * dt => *e,
+                        _ => {
+                            let e = (m * dt).exp();
+                            cache = Some((dt, e));
+                            e
+                        }
+                    };
+                    from_exponential(&e, from - seg.start).apply(x)
+                }
+                None => magnus(sys, from, dt, ((density * dt).ceil() as usize).max(2)).apply(x),
+            }
+        };
+        while k < taus.len() && taus[k] * sys.period < seg.end {
+            let target = taus[k] * sys.period;
+            if target > t {
+                x = step(&x, t, target - t);
+                t = target;
+            }
+            out.push(x);
+            k += 1;
+        }
+        if seg.end > t {
+            x = step(&x, t, seg.end - t);
+            t = seg.end;
+        }
+    }
+    out
 }
 
 /// The reference states at `times` (absolute), marching the propagators from x0.

@@ -1,176 +1,292 @@
 //! The periodic steady-state response over one mesh period, from the Floquet periodic state:
-//! DTE, dynamic mesh force (total and per pair), friction force, dynamic factor, tooth separation,
-//! the DTE spectrum in mesh orders and the efficiency from the dynamic mesh force.
+//! DTE, the tooth force of Fernandes eq 7 (total and per pair), the friction force the model applies,
+//! friction torques, dynamic factor, tooth separation, the DTE spectrum in mesh orders and the mean
+//! efficiency from the tooth force.
+//!
+//! No reported number is read off a grid ([`super::trajectory`]): maxima, minima and peak-to-peak
+//! values are located as roots of the time derivative (ẋ for the DTE, dF/dt for the tooth force,
+//! a central difference of the friction quantities, whose μ(u) has no closed derivative) plus the
+//! one-sided values at every switch time; the separation intervals are the located zeros of F; the
+//! means and the Fourier coefficients are integrated cell by cell with Gauss–Kronrod (15 points,
+//! QUADPACK error estimate) on the propagated state. The plot series are sampled on a uniform grid
+//! merged with both sides of every switch time and the located extrema.
+//!
+//! The friction force the model applies (physics notes, "Dynamics"): the external formulation puts
+//! μ_j w_j F0 into its equation (the static load), the internal one μ_j w_j F (the tooth force), with
+//! w_j = 1/n the force share of contact j. For the external formulation μ_j w_j F is also shown, named
+//! "μ × tooth force", since it is not what its equation applies.
 
-use nalgebra::{Matrix4, Vector2};
+use nalgebra::Vector2;
 use serde::Serialize;
 
 use super::floquet::Floquet;
-use super::propagator::{from_exponential, magnus, magnus_adaptive, segment_matrix};
-use super::sdof::SdofSystem;
+use super::sdof::{DynamicFormulation, SdofSystem};
+use super::trajectory::{Extremum, Trajectory};
 use crate::efficiency::contacts_at;
+use crate::numerics::quadrature::{integrate_pieces_n, Integral};
 
-/// Samples per mesh period of the reported response.
-pub const SAMPLES: usize = 256;
+/// Uniform plot samples per mesh period (merged with switch times and located extrema).
+pub const PLOT_SAMPLES: usize = 256;
 /// Mesh orders kept in the DTE spectrum.
 pub const ORDERS: usize = 10;
+/// Tolerance of the means and Fourier coefficients, relative to their scale (|x|max, 1 for η).
+pub const MEAN_TOLERANCE: f64 = 1e-10;
+/// Number of integrands in the one Gauss–Kronrod pass: x, η, and cos/sin of each order.
+const N_INTEGRANDS: usize = 2 + 2 * ORDERS;
 
-#[derive(Debug, Clone, Serialize)]
-pub struct PeriodicResponse {
-    /// Sample times in mesh periods, [0, 1).
+/// The response series at the plot times.
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct ResponseSeries {
+    /// Times in mesh periods, [0, 1], sorted; a switch time appears twice (both one-sided values).
     pub tau: Vec<f64>,
     /// DTE x (m).
     pub dte: Vec<f64>,
-    /// Dynamic mesh force, total (N).
-    pub mesh_force: Vec<f64>,
-    /// Dynamic mesh force of each pair slot k (the pair that entered k periods ago), NaN when out of contact.
+    /// Tooth force F (N).
+    pub tooth_force: Vec<f64>,
+    /// Tooth force of each pair slot k (the pair that entered k periods ago), NaN when out of contact.
     pub pair_force: Vec<Vec<f64>>,
-    /// Total friction force Σ μ_j F_j (N).
+    /// The friction force the model applies, Σ μ_j w_j N (N = F0 external, F internal) (N).
     pub friction_force: Vec<f64>,
-    /// Friction torques on pinion and wheel, −Σ μ_j F_j T1C_j and Σ μ_j F_j T2C_j (N·m).
-    pub friction_torque: [Vec<f64>; 2],
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct PeriodicResponse {
+    pub series: ResponseSeries,
+    /// Located extrema of the DTE (time in mesh periods).
+    pub dte_min: Extremum,
+    pub dte_max: Extremum,
     pub dte_peak_to_peak: f64,
-    pub dte_mean: f64,
-    /// max dynamic / max static mesh force (static: F0).
+    /// Time mean of x over the period, with its error estimate.
+    pub dte_mean: Integral,
+    pub tooth_force_min: Extremum,
+    pub tooth_force_max: Extremum,
+    /// max F / F0 (F0 = T_p / r_b1, the static tooth force).
     pub dynamic_factor: f64,
-    /// Intervals (τ from, τ to) where the mesh force is negative: tooth separation.
+    /// Intervals (τ from, τ to) in mesh periods where F < 0: the teeth separate.
     pub separation: Vec<(f64, f64)>,
     /// (mesh order, amplitude of the DTE harmonic, m), orders 1..=ORDERS.
     pub spectrum: Vec<(usize, f64)>,
-    /// Mean over the period of the instantaneous efficiency from the dynamic mesh force,
-    /// 1 − Σ |μ_j| F_j v_s,j / (T_p ω_p).
-    pub mean_dynamic_efficiency: Option<f64>,
+    /// Time mean of 1 − Σ |μ_j| w_j F v_s,j / (T_p ω_p), with its error estimate.
+    pub mean_dynamic_efficiency: Option<Integral>,
+    /// Largest instantaneous efficiency of that kind (above 1 only where F < 0).
+    pub max_dynamic_efficiency: Option<f64>,
+    /// Peak |applied friction force| (N) and peak |friction torque| on pinion and wheel (N·m); None
+    /// for a law that diverges at P (no finite peak).
+    pub peak_friction_force: Option<Extremum>,
+    pub peak_friction_torque: Option<[Extremum; 2]>,
+    /// External formulation only: peak |Σ μ_j w_j F| (μ × tooth force, not applied by its equation).
+    pub peak_mu_times_tooth_force: Option<Extremum>,
 }
 
-/// The state at each sample time (τ in mesh periods, sorted, within [0, 1)), marching segment by
-/// segment from X(0). For the exact propagator exp(M dt) is cached for the common sample step.
-pub fn states(sys: &SdofSystem, x0: Vector2<f64>, taus: &[f64]) -> Vec<Vector2<f64>> {
-    let mut out = Vec::with_capacity(taus.len());
-    let mut x = x0;
-    let mut t = 0.0;
-    let mut k = 0;
-    let exact = sys.exact_applies();
-    for seg in &sys.segments {
-        let m = exact.then(|| segment_matrix(sys, seg.start, seg.end));
-        // Magnus: the substep density that converged over the whole segment, reused for each sample step.
-        let density = if exact {
-            0.0
-        } else {
-            magnus_adaptive(sys, seg.start, seg.end - seg.start).1 as f64 / (seg.end - seg.start)
-        };
-        let mut cache: Option<(f64, Matrix4<f64>)> = None;
-        let mut step = |x: &Vector2<f64>, from: f64, dt: f64| -> Vector2<f64> {
-            match &m {
-                Some(m) => {
-                    let e = match &cache {
-                        Some((h, e)) if (*h - dt).abs() <= 1e-12 * dt => *e,
-                        _ => {
-                            let e = (m * dt).exp();
-                            cache = Some((dt, e));
-                            e
-                        }
-                    };
-                    from_exponential(&e, from - seg.start).apply(x)
-                }
-                None => magnus(sys, from, dt, ((density * dt).ceil() as usize).max(2)).apply(x),
-            }
-        };
-        while k < taus.len() && taus[k] * sys.period < seg.end {
-            let target = taus[k] * sys.period;
-            if target > t {
-                x = step(&x, t, target - t);
-                t = target;
-            }
-            out.push(x);
-            k += 1;
-        }
-        if seg.end > t {
-            x = step(&x, t, seg.end - t);
-            t = seg.end;
-        }
+/// What the friction does at one instant.
+#[derive(Debug, Clone, Copy, Default)]
+struct FrictionNow {
+    applied: f64,
+    mu_times_tooth_force: f64,
+    torque: [f64; 2],
+    loss: f64,
+}
+
+struct Eval<'t, 's, 'a> {
+    tr: &'t Trajectory<'s, 'a>,
+}
+
+impl Eval<'_, '_, '_> {
+    fn sys(&self) -> &SdofSystem<'_> {
+        self.tr.sys
     }
-    out
+
+    fn x(&self, p: usize, t: f64) -> [f64; 2] {
+        let s = self.tr.state(p, t);
+        [s[0], s[1]]
+    }
+
+    fn force(&self, p: usize, t: f64) -> f64 {
+        self.sys().tooth_force(t, self.tr.parameter_time(p, t), &self.x(p, t))
+    }
+
+    fn force_rate(&self, p: usize, t: f64) -> f64 {
+        self.sys().tooth_force_rate(t, self.tr.parameter_time(p, t), &self.x(p, t))
+    }
+
+    fn friction(&self, p: usize, t: f64) -> FrictionNow {
+        let sys = self.sys();
+        let mut out = FrictionNow::default();
+        if sys.law.is_none() {
+            return out;
+        }
+        let f = self.force(p, t);
+        let normal = match sys.formulation {
+            DynamicFormulation::Internal => f,
+            _ => sys.static_force,
+        };
+        let g = sys.ctx.geometry;
+        let tau = self.tr.parameter_time(p, t) / sys.period;
+        for c in &contacts_at(&sys.ctx, tau.rem_euclid(1.0)) {
+            let m = sys.friction_mu(c) * c.force_share;
+            out.applied += m * normal;
+            out.mu_times_tooth_force += m * f;
+            out.torque[0] -= m * normal * c.u;
+            out.torque[1] += m * normal * (g.line_of_action_length - c.u);
+            out.loss += m.abs() * f * c.sliding_velocity;
+        }
+        out
+    }
+
+    fn efficiency(&self, p: usize, t: f64) -> f64 {
+        let s = self.sys();
+        1.0 - self.friction(p, t).loss / (s.ctx.state.pinion_torque * s.ctx.state.pinion_speed)
+    }
+}
+
+/// Central-difference slope of `g` at t, for quantities whose μ(u) has no closed derivative.
+fn slope(g: &impl Fn(usize, f64) -> f64, p: usize, t: f64, h: f64) -> f64 {
+    (g(p, t + h) - g(p, t - h)) / (2.0 * h)
+}
+
+/// Largest |g| over the period, located.
+fn peak_abs(tr: &Trajectory, g: impl Fn(usize, f64) -> f64) -> Extremum {
+    let h = 1e-7 * tr.sys.period;
+    let e = tr.extrema(&g, |p, t| slope(&g, p, t, h));
+    if e.max.value.abs() >= e.min.value.abs() {
+        e.max
+    } else {
+        Extremum { value: e.min.value.abs(), time: e.min.time }
+    }
+}
+
+fn in_periods(e: Extremum, period: f64) -> Extremum {
+    Extremum { value: e.value, time: e.time / period }
 }
 
 impl PeriodicResponse {
     /// The response from a Floquet analysis; None when there is no periodic state (unstable).
     pub fn compute(sys: &SdofSystem, floquet: &Floquet) -> Option<PeriodicResponse> {
         let x0 = floquet.periodic_state?;
-        let taus: Vec<f64> = (0..SAMPLES).map(|i| i as f64 / SAMPLES as f64).collect();
-        let xs = states(sys, x0, &taus);
-        let mut r = PeriodicResponse {
-            tau: taus.clone(),
-            dte: xs.iter().map(|x| x[0]).collect(),
-            mesh_force: Vec::with_capacity(SAMPLES),
-            pair_force: vec![vec![f64::NAN; SAMPLES]; 3],
-            friction_force: Vec::with_capacity(SAMPLES),
-            friction_torque: [Vec::with_capacity(SAMPLES), Vec::with_capacity(SAMPLES)],
-            dte_peak_to_peak: 0.0,
-            dte_mean: 0.0,
-            dynamic_factor: 0.0,
-            separation: Vec::new(),
-            spectrum: Vec::new(),
-            mean_dynamic_efficiency: None,
-        };
-        let g = sys.ctx.geometry;
-        let input_power = sys.ctx.state.pinion_torque * sys.ctx.state.pinion_speed;
-        let mut eta_sum = 0.0;
-        for (i, (tau, x)) in taus.iter().zip(&xs).enumerate() {
-            let t = tau * sys.period;
-            let f = sys.mesh_force(t, &[x[0], x[1]]);
-            r.mesh_force.push(f);
-            let contacts = contacts_at(&sys.ctx, *tau);
-            let mut friction = 0.0;
-            let mut torque = [0.0, 0.0];
-            let mut loss = 0.0;
-            for c in &contacts {
-                let slot = (((c.u - g.points.a) / g.base_pitch) - tau).round() as usize;
-                if slot < 3 {
-                    r.pair_force[slot][i] = c.load_share * f;
-                }
-                let mu = sys.law.map_or(0.0, |l| l.mu(c));
-                friction += mu * c.load_share * f;
-                torque[0] -= mu * c.load_share * f * c.u;
-                torque[1] += mu * c.load_share * f * (g.line_of_action_length - c.u);
-                loss += mu.abs() * c.load_share * f * c.sliding_velocity;
-            }
-            r.friction_force.push(friction);
-            r.friction_torque[0].push(torque[0]);
-            r.friction_torque[1].push(torque[1]);
-            eta_sum += 1.0 - loss / input_power;
-        }
-        if sys.law.is_some() {
-            r.mean_dynamic_efficiency = Some(eta_sum / SAMPLES as f64);
-        }
-        let (lo, hi) = r.dte.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(*v), b.max(*v)));
-        r.dte_peak_to_peak = hi - lo;
-        r.dte_mean = r.dte.iter().sum::<f64>() / SAMPLES as f64;
-        r.dynamic_factor = r.mesh_force.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) / sys.static_force;
-        let mut open: Option<f64> = None;
-        for (i, f) in r.mesh_force.iter().enumerate() {
-            match (open, *f < 0.0) {
-                (None, true) => open = Some(taus[i]),
-                (Some(s), false) => {
-                    r.separation.push((s, taus[i]));
-                    open = None;
-                }
-                _ => {}
-            }
-        }
-        if let Some(s) = open {
-            r.separation.push((s, 1.0));
-        }
-        r.spectrum = (1..=ORDERS)
-            .map(|h| {
-                let (mut re, mut im) = (0.0, 0.0);
-                for (i, x) in r.dte.iter().enumerate() {
-                    let arg = 2.0 * std::f64::consts::PI * (h * i) as f64 / SAMPLES as f64;
-                    re += x * arg.cos();
-                    im -= x * arg.sin();
-                }
-                (h, 2.0 * re.hypot(im) / SAMPLES as f64)
-            })
+        let tr = Trajectory::new(sys, x0);
+        let ev = Eval { tr: &tr };
+        let period = sys.period;
+        let dte = tr.extrema(|p, t| ev.x(p, t)[0], |p, t| ev.x(p, t)[1]);
+        let force = tr.extrema(|p, t| ev.force(p, t), |p, t| ev.force_rate(p, t));
+        let separation = tr
+            .negative_intervals(|p, t| ev.force(p, t), &force.critical, 1e-13 * period)
+            .into_iter()
+            .map(|(a, b)| (a / period, b / period))
             .collect();
-        Some(r)
+        let with_law = sys.law.is_some();
+        // One Gauss–Kronrod pass over the grid cells: x, η and the Fourier coefficients of x.
+        let xscale = dte.max.value.abs().max(dte.min.value.abs()).max(f64::MIN_POSITIVE);
+        let mut tol = [MEAN_TOLERANCE * xscale * period; N_INTEGRANDS];
+        tol[1] = MEAN_TOLERANCE * period;
+        let w = 2.0 * std::f64::consts::PI / period;
+        let integrals = integrate_pieces_n(
+            |t| {
+                let p = tr.piece_of(t);
+                let x = ev.x(p, t)[0];
+                let mut v = [0.0; N_INTEGRANDS];
+                v[0] = x;
+                v[1] = if with_law { ev.efficiency(p, t) } else { 1.0 };
+                for h in 1..=ORDERS {
+                    let arg = w * h as f64 * t;
+                    v[2 * h] = x * arg.cos();
+                    v[2 * h + 1] = x * arg.sin();
+                }
+                v
+            },
+            &tr.cell_breaks(),
+            tol,
+        );
+        let mean =
+            |i: Integral| Integral { value: i.value / period, error: i.error / period, evaluations: i.evaluations };
+        let spectrum = (1..=ORDERS)
+            .map(|h| (h, 2.0 / period * integrals[2 * h].value.hypot(integrals[2 * h + 1].value)))
+            .collect();
+        let ev = &ev;
+        let friction = |f: fn(&FrictionNow) -> f64| move |p: usize, t: f64| f(&ev.friction(p, t));
+        // A law that diverges at P (Benedict–Kelley's log, Xu's power) has no finite peak friction
+        // force: its supremum is reached only at P itself, so none is reported (the report says so).
+        let finite_peaks = sys.law.is_some_and(|l| !l.diverges_at_pitch());
+        let (peak_friction_force, peak_friction_torque, peak_mu_f, max_eta) = if finite_peaks {
+            let eta = |p: usize, t: f64| ev.efficiency(p, t);
+            let h = 1e-7 * period;
+            let eta_max = tr.extrema(eta, |p, t| slope(&eta, p, t, h)).max.value;
+            (
+                Some(in_periods(peak_abs(&tr, friction(|f| f.applied)), period)),
+                Some([
+                    in_periods(peak_abs(&tr, friction(|f| f.torque[0])), period),
+                    in_periods(peak_abs(&tr, friction(|f| f.torque[1])), period),
+                ]),
+                (sys.formulation == DynamicFormulation::External)
+                    .then(|| in_periods(peak_abs(&tr, friction(|f| f.mu_times_tooth_force)), period)),
+                Some(eta_max),
+            )
+        } else if with_law {
+            let eta = |p: usize, t: f64| ev.efficiency(p, t);
+            let h = 1e-7 * period;
+            (None, None, None, Some(tr.extrema(eta, |p, t| slope(&eta, p, t, h)).max.value))
+        } else {
+            (None, None, None, None)
+        };
+        let extremes = [dte.min, dte.max, force.min, force.max];
+        Some(PeriodicResponse {
+            series: plot_series(&tr, ev, &extremes),
+            dte_peak_to_peak: dte.max.value - dte.min.value,
+            dte_min: in_periods(dte.min, period),
+            dte_max: in_periods(dte.max, period),
+            dte_mean: mean(integrals[0]),
+            tooth_force_min: in_periods(force.min, period),
+            tooth_force_max: in_periods(force.max, period),
+            dynamic_factor: force.max.value / sys.static_force,
+            separation,
+            spectrum,
+            mean_dynamic_efficiency: with_law.then(|| mean(integrals[1])),
+            max_dynamic_efficiency: max_eta,
+            peak_friction_force,
+            peak_friction_torque,
+            peak_mu_times_tooth_force: peak_mu_f,
+        })
     }
+
+    /// The dynamic factor alone (located max F / F0), for stability maps; None when unstable.
+    pub fn dynamic_factor(sys: &SdofSystem, floquet: &Floquet) -> Option<f64> {
+        let tr = Trajectory::new(sys, floquet.periodic_state?);
+        let ev = Eval { tr: &tr };
+        Some(tr.extrema(|p, t| ev.force(p, t), |p, t| ev.force_rate(p, t)).max.value / sys.static_force)
+    }
+}
+
+/// The plot series: uniform samples, both sides of every piece boundary, and the located extrema.
+fn plot_series(tr: &Trajectory, ev: &Eval, extremes: &[Extremum]) -> ResponseSeries {
+    let sys = tr.sys;
+    let period = sys.period;
+    let mut at: Vec<(f64, usize)> = (0..PLOT_SAMPLES)
+        .map(|i| i as f64 / PLOT_SAMPLES as f64 * period)
+        .map(|t| (t, tr.piece_of(t)))
+        .filter(|(t, p)| *t > tr.pieces[*p].start && *t < tr.pieces[*p].end)
+        .collect();
+    for (p, piece) in tr.pieces.iter().enumerate() {
+        at.push((piece.start, p));
+        at.push((piece.end, p));
+    }
+    at.extend(extremes.iter().map(|e| (e.time, tr.piece_of(e.time))));
+    at.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    at.dedup();
+    let g = sys.ctx.geometry;
+    let mut s = ResponseSeries { pair_force: vec![vec![f64::NAN; at.len()]; 3], ..Default::default() };
+    for (i, &(t, p)) in at.iter().enumerate() {
+        let x: Vector2<f64> = tr.state(p, t);
+        let f = ev.force(p, t);
+        s.tau.push(t / period);
+        s.dte.push(x[0]);
+        s.tooth_force.push(f);
+        s.friction_force.push(ev.friction(p, t).applied);
+        let tau = tr.parameter_time(p, t) / period;
+        for c in &contacts_at(&sys.ctx, tau.rem_euclid(1.0)) {
+            let slot = (((c.u - g.points.a) / g.base_pitch) - tau).round();
+            if (0.0..3.0).contains(&slot) {
+                s.pair_force[slot as usize][i] = c.force_share * f;
+            }
+        }
+    }
+    s
 }

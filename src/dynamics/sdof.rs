@@ -67,6 +67,18 @@ impl StiffnessModel {
         }
     }
 
+    /// dk/dτ at τ (per mesh period): 0 for the rectangular model, the slope of the table cell.
+    pub fn slope(&self, tau: f64) -> f64 {
+        match self {
+            StiffnessModel::PairsInContact { .. } => 0.0,
+            StiffnessModel::Table(k) => {
+                let n = k.len();
+                let i = ((tau.rem_euclid(1.0) * n as f64).floor() as usize).min(n - 1);
+                (k[(i + 1) % n] - k[i]) * n as f64
+            }
+        }
+    }
+
     pub fn is_piecewise_constant(&self) -> bool {
         matches!(self, StiffnessModel::PairsInContact { .. })
     }
@@ -157,31 +169,35 @@ impl<'a> SdofSystem<'a> {
 
     /// f(t), the friction term of the external and internal formulations.
     pub fn friction_term(&self, t: f64) -> f64 {
-        let Some(law) = self.law else { return 0.0 };
+        if self.law.is_none() {
+            return 0.0;
+        }
         let g = self.ctx.geometry;
         let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
         let [jp, jw] = self.inertia;
         let tau = (t / self.period).rem_euclid(1.0);
         let (mut gp, mut gw) = (0.0, 0.0);
         // A law that diverges at P is capped as in the internal efficiency formulation
-        // (crate::efficiency::INTERNAL_MU_CAP), so that 1 − f never vanishes.
-        let cap = if law.diverges_at_pitch() { crate::efficiency::INTERNAL_MU_CAP } else { f64::INFINITY };
+        // (crate::efficiency::INTERNAL_MU_CAP), so that 1 − f never vanishes. Each contact carries its
+        // force share 1/n of the tooth force, whatever load its law sees (`load_sharing`).
         for c in &contacts_at(&self.ctx, tau) {
-            let m = law.mu(c).clamp(-cap, cap) * c.load_share;
+            let m = self.friction_mu(c) * c.force_share;
             gp -= m * c.u;
             gw += m * (g.line_of_action_length - c.u);
         }
         (jw * rp * gp - jp * rw * gw) / (jp * rw * rw + jw * rp * rp)
     }
 
-    /// ε(t) and ε̇(t) of the static transmission error.
-    pub fn transmission_error_at(&self, t: f64) -> (f64, f64) {
+    /// ε(t), ε̇(t) and ε̈(t) of the static transmission error.
+    pub fn transmission_error_at(&self, t: f64) -> (f64, f64, f64) {
         let w = 2.0 * std::f64::consts::PI / self.period;
-        let mut e = (0.0, 0.0);
+        let mut e = (0.0, 0.0, 0.0);
         for (n, (a, phi)) in self.transmission_error.iter().enumerate() {
-            let arg = w * (n + 1) as f64 * t + phi;
+            let wn = w * (n + 1) as f64;
+            let arg = wn * t + phi;
             e.0 += a * arg.cos();
-            e.1 -= a * w * (n + 1) as f64 * arg.sin();
+            e.1 -= a * wn * arg.sin();
+            e.2 -= a * wn * wn * arg.cos();
         }
         e
     }
@@ -194,7 +210,7 @@ impl<'a> SdofSystem<'a> {
         let k = self.stiffness_at(t);
         let c = self.damping;
         let f0 = self.static_force;
-        let (e, de) = self.transmission_error_at(t);
+        let (e, de, _) = self.transmission_error_at(t);
         let excitation = k * e + c * de;
         match self.formulation {
             DynamicFormulation::Base => ([[0.0, 1.0], [-k / m, -c / m]], [0.0, (f0 + excitation) / m]),
@@ -227,14 +243,31 @@ impl<'a> SdofSystem<'a> {
             }
     }
 
-    /// Dynamic mesh force F = k (x − ε) + c (ẋ − ε̇) (times 1 − f for the internal formulation).
-    pub fn mesh_force(&self, t: f64, x: &[f64; 2]) -> f64 {
-        let (e, de) = self.transmission_error_at(t);
-        let elastic = self.stiffness_at(t) * (x[0] - e) + self.damping * (x[1] - de);
-        match self.formulation {
-            DynamicFormulation::Internal => (1.0 - self.friction_term(t)) * elastic,
-            _ => elastic,
-        }
+    /// The tooth normal force of Fernandes eq 7, F = c (ẋ − ε̇) + k (x − ε), in every formulation
+    /// (the internal formulation's (1 − f) factor belongs to its equation of motion, not to F).
+    /// `tp` is the time at which k is read (a one-sided limit at a stiffness step), `t` the state's.
+    pub fn tooth_force(&self, t: f64, tp: f64, x: &[f64; 2]) -> f64 {
+        let (e, de, _) = self.transmission_error_at(t);
+        self.stiffness_at(tp) * (x[0] - e) + self.damping * (x[1] - de)
+    }
+
+    /// dF/dt of [`SdofSystem::tooth_force`]: k'(x − ε) + k(ẋ − ε̇) + c(ẍ − ε̈), with ẍ from the
+    /// equation of motion on the segment that `tp` lies in.
+    pub fn tooth_force_rate(&self, t: f64, tp: f64, x: &[f64; 2]) -> f64 {
+        let (e, de, dde) = self.transmission_error_at(t);
+        let (a, b) = self.matrices(tp);
+        let acc = a[1][0] * x[0] + a[1][1] * x[1] + b[1];
+        let tau = (tp / self.period).rem_euclid(1.0);
+        let k_rate = self.stiffness.slope(tau) / self.period;
+        k_rate * (x[0] - e) + self.stiffness_at(tp) * (x[1] - de) + self.damping * (acc - dde)
+    }
+
+    /// The signed μ the model uses for a contact: the law's value, capped at ±
+    /// [`crate::efficiency::INTERNAL_MU_CAP`] for a law that diverges at P (as in [`SdofSystem::friction_term`]).
+    pub fn friction_mu(&self, c: &crate::geometry::ContactPoint) -> f64 {
+        let Some(law) = self.law else { return 0.0 };
+        let cap = if law.diverges_at_pitch() { crate::efficiency::INTERNAL_MU_CAP } else { f64::INFINITY };
+        law.mu(c).clamp(-cap, cap)
     }
 
     /// The undamped natural frequency at the mean stiffness, f_n = sqrt(k̄/m_e)/2π (Hz).

@@ -171,6 +171,7 @@ pub mod testing {
             slide_to_roll: 1.05,
             pairs_in_contact: 2,
             load_share: 0.5,
+            force_share: 0.5,
             load_per_width: 3.19e5,
             hertz_pressure: 1.52e9,
             hertz_half_width: 1.34e-4,

@@ -49,7 +49,12 @@ pub struct ContactPoint {
     /// SR = v_s / U.
     pub slide_to_roll: f64,
     pub pairs_in_contact: usize,
+    /// The share of the normal load the friction law and the Hertz formulas see: 1/n (`equal`) or 1
+    /// (`none`, He–Cho–Singh's reading: each contact sees the whole load F_bn/b).
     pub load_share: f64,
+    /// The share of F_bn this contact carries in the torque and power balance: always 1/n, so the
+    /// forces of the n pairs in contact add up to F_bn whatever `load_share` is.
+    pub force_share: f64,
     /// w = share · F_bn / b (N/m).
     pub load_per_width: f64,
     /// p_H = sqrt(w E' / (2π R)) (Pa).
@@ -128,6 +133,7 @@ impl SpurGeometry {
             slide_to_roll: if ue > 0.0 { vs / ue } else { 0.0 },
             pairs_in_contact: n,
             load_share: share,
+            force_share: if n > 0 { 1.0 / n as f64 } else { 0.0 },
             load_per_width: w,
             hertz_pressure: (w * reduced_modulus / (2.0 * std::f64::consts::PI * r)).sqrt(),
             hertz_half_width: (8.0 * w * r / (std::f64::consts::PI * reduced_modulus)).sqrt(),

@@ -1,3 +1,4 @@
-//! Numerical building blocks shared by the physics: adaptive quadrature.
+//! Numerical building blocks shared by the physics: adaptive quadrature and bracketed root finding.
 
 pub mod quadrature;
+pub mod roots;

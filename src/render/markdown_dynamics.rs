@@ -3,7 +3,7 @@
 use std::fmt::Write;
 
 use super::markdown::{fixed, header, row};
-use crate::report::dynamics::{DynamicsReport, StiffnessReport};
+use crate::report::dynamics::{DynamicsReport, FormulationReport, Located, StiffnessReport};
 use crate::report::friction::MuValue;
 use crate::report::Report;
 
@@ -65,7 +65,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
                 "DTE p-p µm",
                 "K_v",
                 "η_dyn %",
-                "max friction N / T_p N·m / T_w N·m",
+                "max applied friction N / T_p N·m / T_w N·m",
                 "separation",
             ],
         );
@@ -91,9 +91,17 @@ pub fn dynamics(out: &mut String, r: &Report) {
                     f.dte_peak_to_peak.map_or("—".into(), |q| fixed(q.si() * 1e6, 4)),
                     f.dynamic_factor.map_or("—".into(), |k| fixed(k.0, 4)),
                     f.mean_dynamic_efficiency.map_or("—".into(), |e| fixed(100.0 * e.0, 4)),
-                    match (&f.peak_friction_force, f.peak_friction_torque.as_slice()) {
-                        (Some(ff), [tp, tw]) => {
-                            format!("{} / {} / {}", fixed(ff.si(), 1), fixed(tp.si(), 3), fixed(tw.si(), 3))
+                    match (&f.peak_applied_friction_force, f.peak_friction_torque.as_slice()) {
+                        (Some(ff), [tp, tw]) => format!(
+                            "{} / {} / {}",
+                            fixed(ff.value.si(), 1),
+                            fixed(tp.value.si(), 3),
+                            fixed(tw.value.si(), 3)
+                        ),
+                        _ if f.formulation != crate::dynamics::DynamicFormulation::Base
+                            && d.friction_diverges_at_pitch =>
+                        {
+                            "diverges at P".into()
                         }
                         _ => "—".into(),
                     },
@@ -102,6 +110,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
             );
         }
         let _ = writeln!(out);
+        located_lines(out, &p.formulations);
         if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
             let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
         }
@@ -145,6 +154,43 @@ pub fn dynamics(out: &mut String, r: &Report) {
         let _ = writeln!(out, "\n![stability map](stability_map.svg)\n");
     }
     numerics(out, d);
+}
+
+/// The located extrema (value at τ in mesh periods), means with their error estimates, separation.
+fn located_lines(out: &mut String, formulations: &[FormulationReport]) {
+    let at = |l: &Located, scale: f64, digits: usize, unit: &str| {
+        format!("{} {unit} at τ = {}", fixed(l.value.si() * scale, digits), fixed(l.tau.0, 6))
+    };
+    for f in formulations {
+        let (Some(lo), Some(hi), Some(fmax), Some(fmin)) =
+            (&f.dte_min, &f.dte_max, &f.tooth_force_max, &f.tooth_force_min)
+        else {
+            continue;
+        };
+        let mut parts = vec![
+            format!("DTE min {}, max {}", at(lo, 1e6, 4, "µm"), at(hi, 1e6, 4, "µm")),
+            format!("tooth force F min {}, max {}", at(fmin, 1.0, 1, "N"), at(fmax, 1.0, 1, "N")),
+        ];
+        if let (Some(m), Some(e)) = (&f.dte_mean, &f.dte_mean_error) {
+            parts.push(format!("mean DTE {} µm (± {:.1e})", fixed(m.si() * 1e6, 4), e.si() * 1e6));
+        }
+        if let (Some(m), Some(e)) = (&f.mean_dynamic_efficiency, &f.mean_dynamic_efficiency_error) {
+            parts.push(format!("mean η_dyn {} % (± {:.1e})", fixed(100.0 * m.0, 4), 100.0 * e.0));
+        }
+        if let Some(ff) = &f.peak_applied_friction_force {
+            parts.push(format!("max applied friction force {}", at(ff, 1.0, 1, "N")));
+        }
+        if let Some(mf) = &f.peak_mu_times_tooth_force {
+            parts.push(format!("max μ × tooth force {} (not applied by this equation)", at(mf, 1.0, 1, "N")));
+        }
+        if !f.tooth_separation.is_empty() {
+            let spans: Vec<String> =
+                f.tooth_separation.iter().map(|[a, b]| format!("τ = {}–{}", fixed(a.0, 6), fixed(b.0, 6))).collect();
+            parts.push(format!("teeth separate at {}", spans.join(", ")));
+        }
+        let _ = writeln!(out, "- {}: {}", format!("{:?}", f.formulation).to_lowercase(), parts.join("; "));
+    }
+    let _ = writeln!(out);
 }
 
 fn numerics(out: &mut String, d: &DynamicsReport) {

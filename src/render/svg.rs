@@ -25,6 +25,10 @@ pub struct Panel {
     pub x: Vec<f64>,
     /// (legend label, y); non-finite y values are left out.
     pub series: Vec<(String, Vec<f64>)>,
+    /// Series on their own x values: (legend label, [(x, y)]), drawn after `series` in the same palette.
+    pub xy: Vec<(String, Vec<(f64, f64)>)>,
+    /// Single points drawn as markers with a legend: (label, [(x, y)]).
+    pub points: Vec<(String, Vec<(f64, f64)>)>,
     /// Vertical marks with a letter (A B P D E).
     pub marks: Vec<(&'static str, f64)>,
     /// Shaded x-ranges with a label (regime bands).
@@ -48,13 +52,21 @@ fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
-    let x = &panel.x;
-    if x.len() < 2 {
+    // Every series as (label, [(x, y)]): the shared-x ones first, then those on their own x.
+    let mut all: Vec<(String, Vec<(f64, f64)>)> = panel
+        .series
+        .iter()
+        .map(|(l, ys)| (l.clone(), panel.x.iter().copied().zip(ys.iter().copied()).collect()))
+        .collect();
+    all.extend(panel.xy.iter().cloned());
+    let xs = all.iter().chain(&panel.points).flat_map(|(_, v)| v.iter().map(|p| p.0));
+    let (x0, x1) =
+        xs.filter(|x| x.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |a, x| (a.0.min(x), a.1.max(x)));
+    if !(x1 > x0) {
         return Ok(());
     }
-    let (x0, x1) = (x[0], x[x.len() - 1]);
     let clip = |y: f64| panel.clip.map_or(y, |c| y.clamp(-c, c));
-    let (y0, y1) = bounds(panel.series.iter().flat_map(|(_, s)| s.iter().map(|y| clip(*y))));
+    let (y0, y1) = bounds(all.iter().chain(&panel.points).flat_map(|(_, s)| s.iter().map(|p| clip(p.1))));
     let mut chart = ChartBuilder::on(area)
         .margin(12)
         .x_label_area_size(36)
@@ -91,18 +103,18 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
             )))
             .map_err(e)?;
     }
-    for (i, (label, ys)) in panel.series.iter().enumerate() {
+    for (i, (label, pts)) in all.iter().enumerate() {
         let color = PALETTE[i % PALETTE.len()];
         // Split at non-finite values so that gaps stay gaps.
         let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
         let mut clipped = Vec::new();
-        for (x, y) in x.iter().zip(ys) {
-            if y.is_finite() {
-                let c = clip(*y);
-                if c != *y {
-                    clipped.push((*x, c));
+        for &(x, y) in pts {
+            if y.is_finite() && x.is_finite() {
+                let c = clip(y);
+                if c != y {
+                    clipped.push((x, c));
                 }
-                runs.last_mut().expect("one run").push((*x, c));
+                runs.last_mut().expect("one run").push((x, c));
             } else if !runs.last().expect("one run").is_empty() {
                 runs.push(Vec::new());
             }
@@ -121,7 +133,15 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
                 .map_err(e)?;
         }
     }
-    if panel.series.iter().any(|(l, _)| !l.is_empty()) {
+    for (i, (label, pts)) in panel.points.iter().enumerate() {
+        let color = PALETTE[(all.len() + i) % PALETTE.len()];
+        let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+        let s = chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
+        if !label.is_empty() {
+            s.label(label.clone()).legend(move |(x, y)| Cross::new((x + 8, y), 5, color.stroke_width(2)));
+        }
+    }
+    if all.iter().chain(&panel.points).any(|(l, _)| !l.is_empty()) {
         chart
             .configure_series_labels()
             .background_style(WHITE.mix(0.85))
@@ -213,6 +233,7 @@ pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
             series: pc.mu.clone(),
             marks: marks_mm(r),
             bands: pc.regime_bands.iter().map(|(a, b, l)| (a * 1e3, b * 1e3, l.clone())).collect(),
+            ..Default::default()
         },
         Panel {
             y_label: "local friction power loss (W)".into(),
@@ -398,19 +419,21 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
 pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
     let d = r.dynamics.as_ref().ok_or("no dynamics in the report")?;
     let c = &d.curves[k];
-    let tau_panel = |y: &str, series: Vec<(String, Vec<f64>)>| Panel {
+    let tau_panel = |y: &str, xy: Vec<(String, Vec<(f64, f64)>)>| Panel {
         y_label: y.into(),
         x_label: "time in mesh periods (0: a pair enters at A)".into(),
-        x: c.tau.clone(),
-        series,
+        xy,
         marks: c.marks.clone(),
         ..Default::default()
     };
     let orders: Vec<f64> = (1..=c.spectrum.first().map_or(0, |s| s.1.len())).map(|o| o as f64).collect();
     let panels = [
-        tau_panel("DTE x (µm)", c.dte.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| x * 1e6).collect())).collect()),
-        tau_panel("dynamic mesh force per pair (N)", c.pair_force.clone()),
-        tau_panel("friction force Σ μ F (N)", c.friction_force.clone()),
+        tau_panel(
+            "DTE x (µm)",
+            c.dte.iter().map(|(l, v)| (l.clone(), v.iter().map(|(t, x)| (*t, x * 1e6)).collect())).collect(),
+        ),
+        tau_panel("tooth force per pair (N)", c.pair_force.clone()),
+        tau_panel("applied friction force Σ μ w N (N)", c.friction_force.clone()),
         Panel {
             y_label: "DTE harmonic amplitude (µm)".into(),
             x_label: "mesh order".into(),

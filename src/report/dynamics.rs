@@ -19,6 +19,17 @@ pub enum StiffnessReport {
     Table { table: Vec<Q> },
 }
 
+/// A located extremum: value and time in mesh periods.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Located {
+    pub value: Q,
+    pub tau: Num,
+}
+
+fn located(e: crate::dynamics::trajectory::Extremum, unit: &'static str) -> Located {
+    Located { value: Q::new(e.value, unit), tau: Num(e.time) }
+}
+
 #[derive(Debug, Clone, Serialize)]
 pub struct SpectrumLine {
     pub order: usize,
@@ -38,20 +49,42 @@ pub struct FormulationReport {
     pub liouville_determinant: Num,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dte_peak_to_peak: Option<Q>,
+    /// Located extrema of the DTE (roots of ẋ = 0) with their times in mesh periods.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dte_min: Option<Located>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dte_max: Option<Located>,
+    /// Time mean of the DTE (Gauss–Kronrod on the state) and its error estimate.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dte_mean: Option<Q>,
     #[serde(skip_serializing_if = "Option::is_none")]
+    pub dte_mean_error: Option<Q>,
+    /// Located extrema of the tooth force F = c(ẋ − ε̇) + k(x − ε) (Fernandes eq 7).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tooth_force_min: Option<Located>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tooth_force_max: Option<Located>,
+    /// max F / F0.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamic_factor: Option<Num>,
-    /// Mesh-period fractions [from, to] where the dynamic mesh force is negative (teeth separate).
+    /// Mesh-period fractions [from, to] where the tooth force is negative (teeth separate), located.
     pub tooth_separation: Vec<[Num; 2]>,
     pub spectrum: Vec<SpectrumLine>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mean_dynamic_efficiency: Option<Num>,
-    /// Peak |friction force| and peak |friction torque| on pinion and wheel over the cycle.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub peak_friction_force: Option<Q>,
+    pub mean_dynamic_efficiency_error: Option<Num>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_dynamic_efficiency: Option<Num>,
+    /// Peak |friction force the model applies| (external: μ F0 shares; internal: μ F shares) and peak
+    /// |friction torque| on pinion and wheel over the cycle, located.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub peak_applied_friction_force: Option<Located>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub peak_friction_torque: Vec<Q>,
+    pub peak_friction_torque: Vec<Located>,
+    /// External formulation: peak |Σ μ_j w_j F| (μ × tooth force), which its equation does not apply.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub peak_mu_times_tooth_force: Option<Located>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -77,7 +110,7 @@ pub struct StabilityRow {
 pub struct StabilityMapReport {
     pub pinion_torque: Q,
     pub formulations: Vec<DynamicFormulation>,
-    /// Per formulation: speed ranges [from, to] (rad/s) where ρ > 1.
+    /// Per formulation: speed ranges [from, to] (rad/s) where ρ > 1, bounds located by root finding.
     pub unstable_ranges: Vec<Vec<[Q; 2]>>,
     pub points: Vec<StabilityRow>,
 }
@@ -118,13 +151,12 @@ pub struct Timings {
 pub struct DynamicsCurves {
     pub file: String,
     pub label: String,
-    pub tau: Vec<f64>,
-    /// (formulation, DTE m)
-    pub dte: Vec<(String, Vec<f64>)>,
-    /// (pair label, N)
-    pub pair_force: Vec<(String, Vec<f64>)>,
-    /// (formulation, N)
-    pub friction_force: Vec<(String, Vec<f64>)>,
+    /// (formulation, [(τ in mesh periods, DTE m)]): each on its own times (switch times twice, extrema).
+    pub dte: Vec<(String, Vec<(f64, f64)>)>,
+    /// (pair label, [(τ, tooth force of the pair N)])
+    pub pair_force: Vec<(String, Vec<(f64, f64)>)>,
+    /// (formulation, [(τ, applied friction force N)])
+    pub friction_force: Vec<(String, Vec<(f64, f64)>)>,
     /// (formulation, amplitudes by order 1..)
     pub spectrum: Vec<(String, Vec<f64>)>,
     /// Zone boundary and pitch-point passage times (mesh periods).
@@ -143,6 +175,8 @@ pub struct DynamicsReport {
     pub natural_frequency: Q,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction: Option<String>,
+    /// The law diverges at the pitch point: its peak friction force and torques are infinite and not reported.
+    pub friction_diverges_at_pitch: bool,
     pub points: Vec<DynamicsPointReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stability_map: Option<StabilityMapReport>,
@@ -172,112 +206,107 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
     let tau_p = ((g.points.p - g.points.a) / g.base_pitch).fract();
     let picked = super::pick(d.points.len());
     let mut curves = Vec::new();
-    let points = d
-        .points
-        .iter()
-        .enumerate()
-        .map(|(k, p)| {
-            let pe = eval.points.iter().find(|x| x.index == p.index).expect("same operating points");
-            let label = super::operating_label(scene, pe);
-            if picked.contains(&k) {
-                let mut c = DynamicsCurves {
-                    file: format!("dynamics_point_{}.svg", k + 1),
-                    label: label.clone(),
-                    marks: vec![("B|E", tau_b), ("P", tau_p)],
-                    ..Default::default()
-                };
-                for r in &p.results {
-                    let Some(resp) = &r.response else { continue };
-                    let name = r.formulation.name().to_string();
-                    c.tau = resp.tau.clone();
-                    c.dte.push((name.clone(), resp.dte.clone()));
-                    c.friction_force.push((name.clone(), resp.friction_force.clone()));
-                    c.spectrum.push((name.clone(), resp.spectrum.iter().map(|s| s.1).collect()));
-                    if c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base {
-                        c.pair_force = resp
-                            .pair_force
-                            .iter()
-                            .enumerate()
-                            .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
-                            .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), f.clone()))
-                            .collect();
-                    }
-                }
-                if !c.dte.is_empty() {
-                    curves.push(c);
-                }
-            }
-            DynamicsPointReport {
-                label,
-                pinion_torque: Q::new(p.state.pinion_torque, "N*m"),
-                pinion_speed: Q::new(p.state.pinion_speed, "rad/s"),
-                mesh_frequency: Q::new(p.mesh_frequency, "Hz"),
-                frequency_ratio: Num(d.natural_frequency / p.mesh_frequency),
-                formulations: p
-                    .results
-                    .iter()
-                    .map(|r| FormulationReport {
-                        formulation: r.formulation,
-                        method: r.method,
-                        spectral_radius: Num(r.spectral_radius),
-                        floquet_multipliers: r.multipliers.iter().map(|m| [Num(m.re), Num(m.im)]).collect(),
-                        verdict: r.verdict,
-                        monodromy_determinant: Num(r.determinant),
-                        liouville_determinant: Num(r.liouville),
-                        dte_peak_to_peak: r.response.as_ref().map(|x| m(x.dte_peak_to_peak)),
-                        dte_mean: r.response.as_ref().map(|x| m(x.dte_mean)),
-                        dynamic_factor: r.response.as_ref().map(|x| Num(x.dynamic_factor)),
-                        tooth_separation: r
-                            .response
-                            .as_ref()
-                            .map_or_else(Vec::new, |x| x.separation.iter().map(|(a, b)| [Num(*a), Num(*b)]).collect()),
-                        spectrum: r.response.as_ref().map_or_else(Vec::new, |x| {
-                            x.spectrum.iter().map(|(o, a)| SpectrumLine { order: *o, amplitude: m(*a) }).collect()
-                        }),
-                        mean_dynamic_efficiency: r.response.as_ref().and_then(|x| x.mean_dynamic_efficiency.map(Num)),
-                        peak_friction_force: r
-                            .response
-                            .as_ref()
-                            .filter(|_| r.formulation != DynamicFormulation::Base)
-                            .map(|x| Q::new(x.friction_force.iter().fold(0.0, |a, b| a.max(b.abs())), "N")),
-                        peak_friction_torque: r
-                            .response
-                            .as_ref()
-                            .filter(|_| r.formulation != DynamicFormulation::Base)
-                            .map_or_else(Vec::new, |x| {
-                                x.friction_torque
-                                    .iter()
-                                    .map(|t| Q::new(t.iter().fold(0.0, |a, b| a.max(b.abs())), "N*m"))
-                                    .collect()
-                            }),
-                    })
-                    .collect(),
-            }
-        })
-        .collect();
-    let stability_map = d.stability_map.as_ref().map(|rows| {
-        let unstable_ranges = (0..d.formulations.len())
-            .map(|i| {
-                let mut ranges = Vec::new();
-                let mut open: Option<f64> = None;
-                let mut last = 0.0;
-                for r in rows {
-                    let bad = r.spectral_radius[i] > 1.0 + 1e-9;
-                    match (open, bad) {
-                        (None, true) => open = Some(r.pinion_speed),
-                        (Some(a), false) => {
-                            ranges.push([Q::new(a, "rad/s"), Q::new(last, "rad/s")]);
-                            open = None;
+    let points =
+        d.points
+            .iter()
+            .enumerate()
+            .map(|(k, p)| {
+                let pe = eval.points.iter().find(|x| x.index == p.index).expect("same operating points");
+                let label = super::operating_label(scene, pe);
+                if picked.contains(&k) {
+                    let mut c = DynamicsCurves {
+                        file: format!("dynamics_point_{}.svg", k + 1),
+                        label: label.clone(),
+                        marks: vec![("B|E", tau_b), ("P", tau_p)],
+                        ..Default::default()
+                    };
+                    for r in &p.results {
+                        let Some(resp) = &r.response else { continue };
+                        let name = r.formulation.name().to_string();
+                        let ser = &resp.series;
+                        let xy = |v: &[f64]| ser.tau.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
+                        c.dte.push((name.clone(), xy(&ser.dte)));
+                        if r.formulation != DynamicFormulation::Base {
+                            c.friction_force.push((name.clone(), xy(&ser.friction_force)));
                         }
-                        _ => {}
+                        c.spectrum.push((name.clone(), resp.spectrum.iter().map(|s| s.1).collect()));
+                        if c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base {
+                            c.pair_force = ser
+                                .pair_force
+                                .iter()
+                                .enumerate()
+                                .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
+                                .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), xy(f)))
+                                .collect();
+                        }
                     }
-                    last = r.pinion_speed;
+                    if !c.dte.is_empty() {
+                        curves.push(c);
+                    }
                 }
-                if let Some(a) = open {
-                    ranges.push([Q::new(a, "rad/s"), Q::new(last, "rad/s")]);
+                DynamicsPointReport {
+                    label,
+                    pinion_torque: Q::new(p.state.pinion_torque, "N*m"),
+                    pinion_speed: Q::new(p.state.pinion_speed, "rad/s"),
+                    mesh_frequency: Q::new(p.mesh_frequency, "Hz"),
+                    frequency_ratio: Num(d.natural_frequency / p.mesh_frequency),
+                    formulations: p
+                        .results
+                        .iter()
+                        .map(|r| FormulationReport {
+                            formulation: r.formulation,
+                            method: r.method,
+                            spectral_radius: Num(r.spectral_radius),
+                            floquet_multipliers: r.multipliers.iter().map(|m| [Num(m.re), Num(m.im)]).collect(),
+                            verdict: r.verdict,
+                            monodromy_determinant: Num(r.determinant),
+                            liouville_determinant: Num(r.liouville),
+                            dte_peak_to_peak: r.response.as_ref().map(|x| m(x.dte_peak_to_peak)),
+                            dte_min: r.response.as_ref().map(|x| located(x.dte_min, "m")),
+                            dte_max: r.response.as_ref().map(|x| located(x.dte_max, "m")),
+                            dte_mean: r.response.as_ref().map(|x| m(x.dte_mean.value)),
+                            dte_mean_error: r.response.as_ref().map(|x| m(x.dte_mean.error)),
+                            tooth_force_min: r.response.as_ref().map(|x| located(x.tooth_force_min, "N")),
+                            tooth_force_max: r.response.as_ref().map(|x| located(x.tooth_force_max, "N")),
+                            dynamic_factor: r.response.as_ref().map(|x| Num(x.dynamic_factor)),
+                            tooth_separation: r.response.as_ref().map_or_else(Vec::new, |x| {
+                                x.separation.iter().map(|(a, b)| [Num(*a), Num(*b)]).collect()
+                            }),
+                            spectrum: r.response.as_ref().map_or_else(Vec::new, |x| {
+                                x.spectrum.iter().map(|(o, a)| SpectrumLine { order: *o, amplitude: m(*a) }).collect()
+                            }),
+                            mean_dynamic_efficiency: r
+                                .response
+                                .as_ref()
+                                .and_then(|x| x.mean_dynamic_efficiency.map(|i| Num(i.value))),
+                            mean_dynamic_efficiency_error: r
+                                .response
+                                .as_ref()
+                                .and_then(|x| x.mean_dynamic_efficiency.map(|i| Num(i.error))),
+                            max_dynamic_efficiency: r.response.as_ref().and_then(|x| x.max_dynamic_efficiency.map(Num)),
+                            peak_applied_friction_force: r
+                                .response
+                                .as_ref()
+                                .and_then(|x| x.peak_friction_force.map(|e| located(e, "N"))),
+                            peak_friction_torque: r
+                                .response
+                                .as_ref()
+                                .and_then(|x| x.peak_friction_torque)
+                                .map_or_else(Vec::new, |t| t.iter().map(|e| located(*e, "N*m")).collect()),
+                            peak_mu_times_tooth_force: r
+                                .response
+                                .as_ref()
+                                .and_then(|x| x.peak_mu_times_tooth_force.map(|e| located(e, "N"))),
+                        })
+                        .collect(),
                 }
-                ranges
             })
+            .collect();
+    let stability_map = d.stability_map.as_ref().map(|rows| {
+        let unstable_ranges = d
+            .unstable_ranges
+            .iter()
+            .map(|ranges| ranges.iter().map(|(a, b)| [Q::new(*a, "rad/s"), Q::new(*b, "rad/s")]).collect())
             .collect();
         StabilityMapReport {
             pinion_torque: Q::new(scene.operating.pinion_torque.values[0].value, "N*m"),
@@ -339,6 +368,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         mean_stiffness: Q::new(d.mean_stiffness, "N/m"),
         natural_frequency: Q::new(d.natural_frequency, "Hz"),
         friction: scene.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
+        friction_diverges_at_pitch: d.friction_diverges_at_pitch,
         points,
         stability_map,
         numerics,

@@ -55,13 +55,14 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
 
     /// External η = 1 − friction power / input power, pointwise (tolerance 1e-12):
-    /// friction power Σ |μ_j| w_j F_bn v_s,j, input power T_p ω_p.
+    /// friction power Σ |μ_j| F_bn/n v_s,j (the n forces add up to F_bn whatever load the law sees),
+    /// input power T_p ω_p.
     #[test]
     fn external_efficiency_is_an_energy_balance(g in pair(), torque in 1.0f64..2000.0, rpm in 10.0f64..10000.0, tau in 0.0f64..1.0, mu in 0.01f64..0.2, whole in any::<bool>()) {
         let ctx = context(&g, torque, rpm, if whole { Sharing::Whole } else { Sharing::Equal });
         for law in laws(mu) {
             let contacts = contacts_at(&ctx, tau);
-            let friction_power: f64 = contacts.iter().map(|c| law.mu(c).abs() * c.load_per_width * g.face_width * c.sliding_velocity).sum();
+            let friction_power: f64 = contacts.iter().map(|c| law.mu(c).abs() * g.normal_load(&ctx.state) / contacts.len() as f64 * c.sliding_velocity).sum();
             let input = torque * ctx.state.pinion_speed;
             let eta = efficiency_at(&ctx, law.as_ref(), External, tau);
             prop_assert!((eta - (1.0 - friction_power / input)).abs() < 1e-12, "{} {eta} vs {}", law.id(), 1.0 - friction_power / input);
