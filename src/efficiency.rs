@@ -20,6 +20,7 @@ use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::ContactPoint;
 use crate::model::Formulation;
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
+use crate::numerics::roots::extrema;
 
 /// Relative tolerance of every mean.
 pub const MEAN_TOLERANCE: f64 = 1e-10;
@@ -252,24 +253,20 @@ pub struct EfficiencyResult {
     pub max: f64,
 }
 
-/// Evaluates η̄, the power loss and the range of η(τ) (sampled at `samples`) for the requested
-/// formulations, sharing the quadrature nodes and the samples between them.
+/// Evaluates η̄, the power loss and the range of η(τ) for the requested formulations, sharing the
+/// quadrature nodes between them. The range is located ([`crate::numerics::roots::extrema`]): on
+/// each piece between break times, roots of dη/dτ bracketed on 32 nodes, plus the one-sided limits
+/// at every break (η jumps where a pair enters or leaves).
 pub fn evaluate_efficiencies(
     ctx: &LawContext,
     law: &dyn FrictionLaw,
     formulations: &[Formulation],
-    samples: &[f64],
 ) -> Vec<EfficiencyResult> {
     if formulations.is_empty() {
         return Vec::new();
     }
     let means = mean_efficiencies(ctx, law);
-    let mut range = [(f64::INFINITY, f64::NEG_INFINITY); 2];
-    for tau in samples {
-        for (r, e) in range.iter_mut().zip(efficiencies_of(ctx, law, &contacts_at(ctx, *tau))) {
-            *r = (r.0.min(e), r.1.max(e));
-        }
-    }
+    let breaks = break_times(ctx, law);
     formulations
         .iter()
         .map(|f| {
@@ -277,12 +274,14 @@ pub fn evaluate_efficiencies(
                 Formulation::External => 0,
                 Formulation::Internal => 1,
             };
+            let ((min, _), (max, _)) =
+                extrema(|tau| efficiencies_of(ctx, law, &contacts_at(ctx, tau))[k], &breaks, 32, 1e-12);
             EfficiencyResult {
                 formulation: *f,
                 power_loss: (1.0 - means[k].value) * ctx.state.pinion_torque * ctx.state.pinion_speed,
                 mean: means[k],
-                min: range[k].0,
-                max: range[k].1,
+                min,
+                max,
             }
         })
         .collect()

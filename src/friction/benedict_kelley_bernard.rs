@@ -45,6 +45,8 @@ impl FrictionLaw for BenedictKelleyBernard {
         let factor = 50.0 / (50.0 - self.roughness_rms_um);
         if !(factor > 0.0 && factor <= 3.0) {
             Err("roughness factor 50/(50 − S_rms) outside (0, 3]")
+        } else if self.magnitude(c) > 0.1 {
+            Err("μ above 0.1, which Bernard say the law approaches")
         } else {
             super::log_argument_validity(c, self.argument(c))
         }

@@ -10,6 +10,7 @@ use super::xu::Xu;
 use super::{FrictionLaw, LawContext, Parameter, Regime};
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::integrate_singular;
+use crate::numerics::roots::brent;
 use crate::tribology::FilmInputs;
 
 /// Λ thresholds between boundary/mixed and mixed/full film.
@@ -23,6 +24,7 @@ pub struct Composite {
     pub film: FilmInputs,
     pub boundary: SmoothedCoulomb,
     pub mixed: BenedictKelley,
+    /// Xu without its own film check: Model V uses it only where its Λ ≥ 4.
     pub full_film: Xu,
     /// True when Model IV's magnitude was derived as the mean |μ_BK| over A–E.
     pub mu_from_benedict_kelley: bool,
@@ -58,7 +60,10 @@ impl Composite {
             },
             boundary: SmoothedCoulomb { mu, phi },
             mixed,
-            full_film: Xu::new(t),
+            full_film: Xu::from_units(
+                t.dynamic_viscosity * crate::tribology::units::CP_PER_PA_S,
+                t.ra_mean.unwrap_or(f64::NAN) * crate::tribology::units::UM_PER_M,
+            ),
             mu_from_benedict_kelley: derived,
             switches: Vec::new(),
             mixed_at_pitch: false,
@@ -83,31 +88,61 @@ impl Composite {
         }
     }
 
-    /// Positions where the regime changes, by bisection between samples of different regime.
+    /// Positions where the regime changes, located, never read off a grid: A–E is split where Λ may
+    /// jump (B and D, where the number of pairs and so the load changes); on each smooth piece the
+    /// critical points of Λ(u) (roots of a central-difference dΛ/du bracketed on 60 nodes, Brent)
+    /// split it further into stretches where Λ is monotone, and on each of those Λ(u) − 1 and
+    /// Λ(u) − 4 have at most one root, found by Brent's method to 1e-12 of A–E. A jump across a level
+    /// at B or D is a switch there. So a band narrower than the grid is found as long as it contains a
+    /// critical point of Λ between two nodes of opposite slope.
     fn find_switches(&self, ctx: &LawContext) -> Vec<f64> {
         let p = ctx.geometry.points;
-        let n = 60;
-        let at = |u: f64| Self::regime_of(self.lambda(&ctx.contact_at(u)));
+        let span = p.e - p.a;
+        let xtol = 1e-12 * span;
+        let nudge = 1e-12 * span;
+        let lambda = |u: f64| self.lambda(&ctx.contact_at(u));
+        let mut cuts = vec![p.a];
+        cuts.extend([p.b, p.d].into_iter().filter(|u| *u > p.a + nudge && *u < p.e - nudge));
+        cuts.push(p.e);
+        cuts.sort_by(f64::total_cmp);
         let mut out = Vec::new();
-        let mut prev_u = p.a;
-        let mut prev = at(p.a);
-        for i in 1..=n {
-            let u = p.a + (p.e - p.a) * i as f64 / n as f64;
-            let r = at(u);
-            if r != prev {
-                let (mut lo, mut hi) = (prev_u, u);
-                for _ in 0..64 {
-                    let mid = 0.5 * (lo + hi);
-                    if at(mid) == prev {
-                        lo = mid
-                    } else {
-                        hi = mid
-                    }
-                }
-                out.push(0.5 * (lo + hi));
+        let mut last_regime: Option<Regime> = None;
+        for w in cuts.windows(2) {
+            let (a, b) = (w[0] + nudge, w[1] - nudge);
+            if b <= a {
+                continue;
             }
-            prev = r;
-            prev_u = u;
+            let h = 1e-7 * (b - a);
+            let slope = |u: f64| lambda((u + h).min(b)) - lambda((u - h).max(a));
+            let n = 60;
+            let mut knots = vec![a];
+            let mut prev = (a, slope(a));
+            for i in 1..=n {
+                let u = a + (b - a) * i as f64 / n as f64;
+                let d = slope(u);
+                if d == 0.0 && u < b {
+                    knots.push(u);
+                } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
+                    knots.push(brent(slope, prev.0, u, xtol));
+                }
+                prev = (u, d);
+            }
+            knots.push(b);
+            let start = Self::regime_of(lambda(a));
+            if last_regime.is_some_and(|r| r != start) {
+                out.push(w[0]);
+            }
+            for k in knots.windows(2) {
+                let (l0, l1) = (lambda(k[0]), lambda(k[1]));
+                let mut roots: Vec<f64> = [MIXED_FROM, FULL_FILM_FROM]
+                    .into_iter()
+                    .filter(|level| (l0 < *level) != (l1 < *level))
+                    .map(|level| brent(|u| lambda(u) - level, k[0], k[1], xtol))
+                    .collect();
+                roots.sort_by(f64::total_cmp);
+                out.extend(roots);
+            }
+            last_regime = Some(Self::regime_of(lambda(b)));
         }
         out
     }

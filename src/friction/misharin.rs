@@ -27,10 +27,12 @@ impl FrictionLaw for Misharin {
         signed(self.magnitude(c), c.s)
     }
     fn validity(&self, c: &ContactPoint) -> Result<(), &'static str> {
-        if (0.4..=1.3).contains(&c.slide_to_roll) {
-            Ok(())
-        } else {
+        if !(0.4..=1.3).contains(&c.slide_to_roll) {
             Err("SR outside [0.4, 1.3]")
+        } else if !(0.02..=0.08).contains(&self.magnitude(c)) {
+            Err("μ outside Misharin's 0.02–0.08")
+        } else {
+            Ok(())
         }
     }
     fn diverges_at_pitch(&self) -> bool {

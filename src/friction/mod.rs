@@ -91,6 +91,13 @@ pub trait FrictionLaw: Send + Sync {
         Ok(())
     }
     /// True when |μ| → ∞ at the pitch point (integrable).
+    /// The largest |μ| this law can plausibly give in a lubricated steel contact. Above it a number
+    /// is flagged as outside validity. Default 0.3: lubricated steel gears stay below about 0.15 even
+    /// in boundary lubrication, and dry steel on steel is 0.5–0.8, so |μ| > 0.3 means the law has
+    /// been pushed (by a viscosity, speed or load far outside its data) beyond the physics it fits.
+    fn plausible_max(&self) -> f64 {
+        0.3
+    }
     fn diverges_at_pitch(&self) -> bool {
         false
     }

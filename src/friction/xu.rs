@@ -14,7 +14,7 @@
 
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
-use crate::tribology::{units, Tribology};
+use crate::tribology::{units, FilmInputs, Tribology};
 
 /// b1 … b9 of Xu (2005), as printed by both papers.
 pub const B: [f64; 9] = [-8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.100601, 0.752755, -0.390958, 0.620305];
@@ -26,11 +26,25 @@ pub struct Xu {
     /// log10 η, and exp(b1 + b9 e^S) η^b7: the parts that do not change along the line of action.
     log_viscosity: f64,
     constant: f64,
+    /// Film inputs and composite roughness σ = sqrt(Rq1² + Rq2²) when the scene gives them: the
+    /// regression is a full-film fit, so a contact with h_min/σ < 1 (Dowson–Higginson minimum film;
+    /// boundary lubrication) is outside it.
+    pub film: Option<(FilmInputs, f64)>,
 }
 
 impl Xu {
     pub fn new(t: &Tribology) -> Self {
-        Xu::from_units(t.dynamic_viscosity * units::CP_PER_PA_S, t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M)
+        let mut law =
+            Xu::from_units(t.dynamic_viscosity * units::CP_PER_PA_S, t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M);
+        if let (Some(alpha), Some(sigma)) = (t.pressure_viscosity, t.rq_composite) {
+            let inputs = FilmInputs {
+                dynamic_viscosity: t.dynamic_viscosity,
+                pressure_viscosity: alpha,
+                reduced_modulus: t.reduced_modulus,
+            };
+            law.film = Some((inputs, sigma));
+        }
+        law
     }
 
     /// From η in cP and S (mean Ra) in µm.
@@ -40,6 +54,7 @@ impl Xu {
             roughness_um,
             log_viscosity: viscosity_cp.log10(),
             constant: (B[0] + B[8] * roughness_um.exp()).exp() * viscosity_cp.powf(B[6]),
+            film: None,
         }
     }
 
@@ -77,6 +92,8 @@ impl FrictionLaw for Xu {
             Err("p_H outside 0.5–2.5 GPa")
         } else if !(0.5..=25.0).contains(&c.entrainment_velocity) {
             Err("entrainment velocity outside 0.5–25 m/s")
+        } else if self.film.is_some_and(|(f, sigma)| f.minimum(c) / sigma < 1.0) {
+            Err("h_min/σ < 1: a full-film fit used in boundary lubrication")
         } else {
             Ok(())
         }

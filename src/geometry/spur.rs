@@ -182,6 +182,24 @@ impl SpurGeometry {
                     });
                     return Err(problems);
                 }
+                // Below the zero-backlash centre distance the teeth collide: not a pair that can be
+                // assembled. Allowed: 1e-3 m of rounding in the given value (FZG C: 91.5 against 91.5001 mm).
+                if a < a0 - 1e-3 * m {
+                    problems.push(GeometryProblem {
+                        part: PairPart::CenterDistance,
+                        reason: format!(
+                            "centre distance {:.4} mm is {:.4} mm below the zero-backlash centre distance {:.4} mm (α_w = {:.4}°): the teeth would collide",
+                            a * 1e3,
+                            (a0 - a) * 1e3,
+                            a0 * 1e3,
+                            alpha_w0.to_degrees()
+                        ),
+                        hint: format!(
+                            "give a centre distance of at least {:.4} mm, leave it out for zero backlash, or raise the profile shifts' sum",
+                            a0 * 1e3
+                        ),
+                    });
+                }
                 (a, c.acos())
             }
             None => (a0, alpha_w0),

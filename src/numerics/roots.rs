@@ -29,3 +29,51 @@ pub fn brent(f: impl Fn(f64) -> f64, a: f64, b: f64, xtol: f64) -> f64 {
         0.5 * (lo + hi)
     })
 }
+
+/// Minimum and maximum (value, x) of `f` over [breaks[0], breaks[last]], where `f` is smooth between
+/// consecutive breaks and may jump at them. Located, not sampled: on each piece the sign changes of a
+/// central-difference f' are bracketed on `nodes` equal steps and refined by [`brent`] to `xtol`; the
+/// one-sided limits at both ends of every piece (f read `xtol` inside) are candidates too.
+///
+/// ```
+/// use gearloss::numerics::roots::extrema;
+/// // sin on [0, 2π] split at 1: max 1 at π/2, min −1 at 3π/2.
+/// let ((lo, at_lo), (hi, at_hi)) = extrema(f64::sin, &[0.0, 1.0, 6.283185307179586], 8, 1e-13);
+/// assert!((hi - 1.0).abs() < 1e-15 && (at_hi - std::f64::consts::FRAC_PI_2).abs() < 1e-7);
+/// assert!((lo + 1.0).abs() < 1e-15 && (at_lo - 3.0 * std::f64::consts::FRAC_PI_2).abs() < 1e-7);
+/// ```
+pub fn extrema(f: impl Fn(f64) -> f64, breaks: &[f64], nodes: usize, xtol: f64) -> ((f64, f64), (f64, f64)) {
+    let mut lo = (f64::INFINITY, f64::NAN);
+    let mut hi = (f64::NEG_INFINITY, f64::NAN);
+    let mut consider = |x: f64, v: f64| {
+        if v < lo.0 {
+            lo = (v, x);
+        }
+        if v > hi.0 {
+            hi = (v, x);
+        }
+    };
+    for w in breaks.windows(2) {
+        let (a, b) = (w[0] + xtol, w[1] - xtol);
+        if b <= a {
+            continue;
+        }
+        let h = 1e-6 * (b - a) / nodes as f64;
+        let slope = |x: f64| f((x + h).min(b)) - f((x - h).max(a));
+        consider(a, f(a));
+        consider(b, f(b));
+        let mut prev = (a, slope(a));
+        for i in 1..=nodes {
+            let x = a + (b - a) * i as f64 / nodes as f64;
+            let d = slope(x);
+            if d == 0.0 {
+                consider(x, f(x));
+            } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
+                let r = brent(slope, prev.0, x, xtol);
+                consider(r, f(r));
+            }
+            prev = (x, d);
+        }
+    }
+    (lo, hi)
+}

@@ -62,7 +62,7 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
     let xs = all.iter().chain(&panel.points).flat_map(|(_, v)| v.iter().map(|p| p.0));
     let (x0, x1) =
         xs.filter(|x| x.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |a, x| (a.0.min(x), a.1.max(x)));
-    if !(x1 > x0) {
+    if x1.partial_cmp(&x0) != Some(std::cmp::Ordering::Greater) {
         return Ok(());
     }
     let clip = |y: f64| panel.clip.map_or(y, |c| y.clamp(-c, c));
@@ -491,35 +491,49 @@ pub fn stability_map(r: &Report) -> Result<String, String> {
     figure(&format!("{}: stability map at {:.1} N·m", r.title, map.pinion_torque.si()), &panels)
 }
 
-/// timing_work_precision.svg: log10 error against log10 run time, one curve per method (machine-dependent).
+/// timing_work_precision.svg: log10 run time against log10 error, one full curve per method through
+/// every tolerance it ran (in ladder order), the exact/Magnus reference as a point at the error floor,
+/// failed runs marked at the worst error seen (machine-dependent: never snapshotted).
 pub fn work_precision(r: &Report) -> Result<String, String> {
     let t = r.dynamics.as_ref().and_then(|d| d.timings.as_ref()).ok_or("no numerics")?;
     let mut methods: Vec<String> = t.runs.iter().map(|x| x.0.clone()).collect();
     methods.dedup();
-    // Each method on its own x grid: plot as separate panels' series sharing an x of log10 error.
-    let mut xs: Vec<f64> = t.runs.iter().filter(|x| x.2.is_finite() && x.2 > 0.0).map(|x| x.2.log10()).collect();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    let series = methods
+    let ok = |e: f64| e.is_finite() && e > 0.0;
+    let floor = t.runs.iter().filter(|x| ok(x.2)).map(|x| x.2).fold(f64::INFINITY, f64::min);
+    let worst = t.runs.iter().filter(|x| ok(x.2)).map(|x| x.2).fold(0.0f64, f64::max);
+    let xy = methods
         .iter()
         .map(|m| {
-            let ys = xs
+            let pts = t
+                .runs
                 .iter()
-                .map(|x| {
-                    t.runs
-                        .iter()
-                        .find(|r| r.0 == *m && r.2 > 0.0 && (r.2.log10() - x).abs() < 1e-12)
-                        .map_or(f64::NAN, |r| r.3.log10())
-                })
+                .filter(|r| r.0 == *m && ok(r.2) && r.3 > 0.0)
+                .map(|r| (r.2.log10(), r.3.log10()))
                 .collect();
-            (m.clone(), ys)
+            (m.clone(), pts)
         })
         .collect();
+    let mut points = Vec::new();
+    if t.reference_seconds > 0.0 && floor.is_finite() {
+        points.push((
+            "exact/Magnus reference (error ≈ 0)".to_string(),
+            vec![(floor.log10() - 1.0, t.reference_seconds.log10())],
+        ));
+    }
+    let failed: Vec<(f64, f64)> = t
+        .runs
+        .iter()
+        .filter(|r| !ok(r.2) && r.3 > 0.0 && r.3.is_finite())
+        .map(|r| (worst.max(1e-16).log10() + 0.5, r.3.log10()))
+        .collect();
+    if !failed.is_empty() {
+        points.push(("failed run (placed right of the worst error)".to_string(), failed));
+    }
     let panel = Panel {
         y_label: "log10 run time (s)".into(),
         x_label: "log10 error (max |x − x_ref| / peak-to-peak DTE)".into(),
-        x: xs,
-        series,
+        xy,
+        points,
         ..Default::default()
     };
     figure(&format!("{}: work-precision (this machine)", r.title), &[panel])

@@ -166,6 +166,9 @@ pub struct DynamicsCurves {
 #[derive(Debug, Clone, Serialize)]
 pub struct DynamicsReport {
     pub model: &'static str,
+    /// k_double / k_single of a rectangular stiffness (None for a table).
+    #[serde(skip)]
+    pub stiffness_step_ratio: Option<f64>,
     pub stiffness_source: &'static str,
     pub stiffness: StiffnessReport,
     pub damping_ratio: Num,
@@ -360,6 +363,10 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
     };
     DynamicsReport {
         model: "sdof",
+        stiffness_step_ratio: match &d.stiffness {
+            StiffnessModel::PairsInContact { single, double, .. } => Some(double / single),
+            StiffnessModel::Table(_) => None,
+        },
         stiffness_source: d.stiffness_source,
         stiffness,
         damping_ratio: Num(d.damping_ratio),
@@ -398,6 +405,26 @@ pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
                     p.label,
                     spans.join(", ")
                 )));
+            }
+            if let (Some(eta), false) = (&f.max_dynamic_efficiency, f.tooth_separation.is_empty()) {
+                if eta.0 > 1.0 {
+                    out.push(warn(format!(
+                        "dynamics at {} ({name}): the instantaneous efficiency from the tooth force reaches {:.6} > 1 where the teeth separate (F < 0 makes the friction power negative); the mean dynamic efficiency there is not physical",
+                        p.label, eta.0
+                    )));
+                }
+            }
+            let step_kv = r.stiffness_step_ratio.filter(|_| p.frequency_ratio.0 > 10.0);
+            if let (Some(ratio), Some(kv)) = (step_kv, &f.dynamic_factor) {
+                if (kv.0 - ratio).abs() < 0.05 * ratio {
+                    out.push(Finding {
+                        severity: Severity::Note,
+                        message: format!(
+                            "dynamics at {} ({name}): K_v = {:.4} ≈ k_double/k_single = {:.4} comes from the stiffness step, not from dynamics: x is continuous where a pair enters, so F = k_double x jumps there (f_n/f_mesh = {:.1}, quasi-static). A stiffness table with ramps (`mesh_stiffness {{ table = [...] }}` or a CSV file) gives the dynamic factor of a real mesh",
+                            p.label, kv.0, ratio, p.frequency_ratio.0
+                        ),
+                    });
+                }
             }
             let rel = ((f.monodromy_determinant.0 - f.liouville_determinant.0) / f.liouville_determinant.0).abs();
             if rel > 1e-8 {

@@ -3,6 +3,7 @@
 pub mod dynamics;
 pub mod friction;
 pub mod number;
+pub mod plausibility;
 
 use serde::Serialize;
 
@@ -505,19 +506,12 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
         }
     }
     if g.center_distance_given {
-        let diff = g.center_distance - g.zero_backlash_center_distance;
         out.push(note(format!(
             "operating pressure angle from the given centre distance {:.4} mm; the zero-backlash centre distance is {:.4} mm (α_w = {:.4}°)",
             g.center_distance * 1e3,
             g.zero_backlash_center_distance * 1e3,
             g.zero_backlash_pressure_angle.to_degrees()
         )));
-        if diff < -1e-3 * g.module {
-            out.push(warn(format!(
-                "the given centre distance is {:.4} mm below the zero-backlash one: the teeth would bind",
-                -diff * 1e3
-            )));
-        }
     } else {
         out.push(note(format!(
             "centre distance from the involute function (zero backlash): {:.4} mm",
@@ -535,6 +529,7 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
 pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
     let mut findings = findings(scene, eval);
     findings.extend(friction::law_findings(scene, eval));
+    findings.extend(plausibility::plausibility_findings(scene, eval));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),

@@ -438,8 +438,8 @@ fn transmission_error_response_matches_the_closed_form() {
     assert!((mid - sys.static_force).abs() < 1e-6 * sys.static_force, "{mid}");
 }
 
-/// Meissner's closed form: the undamped-or-damped base model with rectangular stiffness is m ẍ + c ẋ
-/// + k_i x = 0 on each zone, whose transition matrix is the damped oscillator's,
+/// Meissner's closed form: the base model with rectangular stiffness is m ẍ + c ẋ + k_i x = 0 on
+/// each zone, whose transition matrix is the damped oscillator's,
 /// e^{−σh} [[cos ω_d h + σ/ω_d sin, sin/ω_d], [−ω_i²/ω_d sin, cos − σ/ω_d sin]], ω_d² = k_i/m − σ².
 /// Its monodromy (double zone, then single zone) gives the spectral radius in closed form.
 fn meissner_spectral_radius(sys: &SdofSystem) -> f64 {

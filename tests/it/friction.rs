@@ -83,7 +83,9 @@ fn odonoghue_cameron_radius_unit() {
     assert!((in_m / in_mm - 1e3f64.sqrt()).abs() < 1e-9);
 }
 
-/// Misharin: 0.3865 (ν U² SR)^−1/4 is 0.3865 at ν = 1 cSt, U = 1 m/s, SR = 1; invalid outside SR ∈ [0.4, 1.3].
+/// Misharin: 0.3865 (ν U² SR)^−1/4 is 0.3865 at ν = 1 cSt, U = 1 m/s, SR = 1; invalid outside SR ∈ [0.4, 1.3]
+/// and outside its μ range 0.02–0.08 (ν = 100 cSt, U = 6 m/s, SR = 1: μ = 0.0499, valid; ν = 1 cSt:
+/// μ = 0.41, invalid).
 #[test]
 fn misharin_closed_form_and_range() {
     let law = Misharin { kinematic_viscosity_cst: 1.0 };
@@ -95,7 +97,12 @@ fn misharin_closed_form_and_range() {
     assert!((law.magnitude(&c) - 0.3865 / 2.0).abs() < 1e-15);
     assert!(law.validity(&c).is_err());
     c.slide_to_roll = 0.8;
-    assert!(law.validity(&c).is_ok());
+    assert_eq!(law.validity(&c), Err("μ outside Misharin's 0.02–0.08"));
+    let thick = Misharin { kinematic_viscosity_cst: 100.0 };
+    c.entrainment_velocity = 6.0;
+    c.slide_to_roll = 1.0;
+    assert!((thick.magnitude(&c) - 0.3865 * 3600f64.powf(-0.25)).abs() < 1e-15);
+    assert!(thick.validity(&c).is_ok());
 }
 
 /// Smoothed Coulomb: odd in s, zero at P, tends to Coulomb as Φ|s| grows (within 2/(πΦ|s|)·2μ/π).
@@ -239,4 +246,39 @@ fn divergent_means_converge() {
     let coarse = integrate(f, &[p.a, p.b, p.p, p.d, p.e], 1e-6).value;
     let fine = integrate(f, &[p.a, p.b, p.p, p.d, p.e], 1e-12).value;
     assert!(((coarse - fine) / fine).abs() < 2e-6, "{coarse} vs {fine}");
+}
+
+/// Model V's regime switches are located, not read off a grid: at every speed of the NASA sweep the
+/// switch points equal the regime changes of a 10⁵-point scan of A–E (same count, each within one scan
+/// step), and inside a zone Λ equals 1 or 4 there to 1e-9.
+#[test]
+fn composite_switches_match_a_dense_scan() {
+    let scene = spec("composite_speed_sweep.gear");
+    let eval = evaluate_scene(&scene);
+    let g = eval.geometry.points;
+    for pe in &eval.points {
+        let ctx = eval.law_context(pe.state);
+        let law = Composite::new(&ctx, 0.8e-3, f64::NAN, 50e3);
+        let n = 100_000;
+        let step = (g.e - g.a) / n as f64;
+        let mut scanned = Vec::new();
+        let mut prev = Composite::regime_of(law.lambda(&ctx.contact_at(g.a)));
+        for i in 1..n {
+            let u = g.a + step * i as f64;
+            let r = Composite::regime_of(law.lambda(&ctx.contact_at(u)));
+            if r != prev {
+                scanned.push(u);
+            }
+            prev = r;
+        }
+        let found = law.switch_points();
+        assert_eq!(found.len(), scanned.len(), "{:?}: {found:?} vs scan {scanned:?}", pe.state);
+        for (a, b) in found.iter().zip(&scanned) {
+            assert!((a - b).abs() <= step, "switch {a} vs scan {b}");
+            if (a - g.b).abs() > 1e-9 && (a - g.d).abs() > 1e-9 {
+                let lambda = law.lambda(&ctx.contact_at(*a));
+                assert!((lambda - 1.0).abs() < 1e-9 || (lambda - 4.0).abs() < 1e-9, "Λ = {lambda} at {a}");
+            }
+        }
+    }
 }
