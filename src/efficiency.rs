@@ -213,7 +213,8 @@ pub fn mean_efficiencies(ctx: &LawContext, law: &dyn FrictionLaw) -> [Integral; 
 /// Positions along the line of action where a law's integrand changes form (for means over A–E).
 pub fn break_positions(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
     let p = ctx.geometry.points;
-    let mut v = vec![p.a, p.b, p.p, p.d, p.e];
+    let mut v = vec![p.a, p.p, p.e];
+    v.extend(ctx.geometry.pair_change_points().iter().map(|(_, u)| *u));
     v.extend(law.switch_points());
     v
 }

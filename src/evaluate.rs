@@ -117,14 +117,21 @@ impl Evaluation {
         self.geometry.contact_at(u, state, self.reduced_modulus, self.sharing())
     }
 
-    /// Evenly spaced positions from A to E for curves, with B and D taken from both sides so that
-    /// the jumps of the load share are drawn vertical.
+    /// Evenly spaced positions from A to E for curves, with every point where the number of pairs
+    /// changes (B and D for ε_α < 2) taken from both sides so that the jumps of the load share are
+    /// drawn vertical.
     pub fn curve_positions(&self) -> Vec<f64> {
         let p = &self.geometry.points;
         let eps = 1e-9 * (p.e - p.a);
         let mut u: Vec<f64> =
             (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
-        u.extend([p.b - eps, p.b, p.p, p.d, p.d + eps]);
+        u.push(p.p);
+        let g = &self.geometry;
+        for (_, c) in g.pair_change_points() {
+            u.push(c);
+            // The side on which the number of pairs differs from the point itself (B: before, D: after).
+            u.extend([c - eps, c + eps].into_iter().filter(|v| g.pairs_in_contact(*v) != g.pairs_in_contact(c)));
+        }
         u.sort_by(f64::total_cmp);
         u
     }
@@ -135,7 +142,7 @@ pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
     let p = &g.points;
     let mut rows: Vec<(Option<&'static str>, f64)> =
         (0..=TABLE_INTERVALS).map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64)).collect();
-    for (name, u) in p.named() {
+    for (name, u) in g.named_points() {
         let tol = 1e-9 * (p.e - p.a);
         match rows.iter_mut().find(|(_, v)| (*v - u).abs() < tol) {
             Some(row) => *row = (Some(name), u),

@@ -44,7 +44,11 @@ impl Composite {
                 |u, d| {
                     mixed.magnitude(&if d.is_finite() { ctx.contact_at_offset(d) } else { ctx.contact_at(u) }).max(0.0)
                 },
-                &[p.a, p.b, p.p, p.d, p.e],
+                &[
+                    [p.a, p.p, p.e].as_slice(),
+                    &ctx.geometry.pair_change_points().iter().map(|(_, u)| *u).collect::<Vec<_>>(),
+                ]
+                .concat(),
                 &[p.p],
                 1e-10,
             );
@@ -89,7 +93,7 @@ impl Composite {
     }
 
     /// Positions where the regime changes, located, never read off a grid: A–E is split where Λ may
-    /// jump (B and D, where the number of pairs and so the load changes); on each smooth piece the
+    /// jump (every point where the number of pairs and so the load changes); on each smooth piece the
     /// critical points of Λ(u) (roots of a central-difference dΛ/du bracketed on 60 nodes, Brent)
     /// split it further into stretches where Λ is monotone, and on each of those Λ(u) − 1 and
     /// Λ(u) − 4 have at most one root, found by Brent's method to 1e-12 of A–E. A jump across a level
@@ -102,7 +106,9 @@ impl Composite {
         let nudge = 1e-12 * span;
         let lambda = |u: f64| self.lambda(&ctx.contact_at(u));
         let mut cuts = vec![p.a];
-        cuts.extend([p.b, p.d].into_iter().filter(|u| *u > p.a + nudge && *u < p.e - nudge));
+        cuts.extend(
+            ctx.geometry.pair_change_points().iter().map(|(_, u)| *u).filter(|u| *u > p.a + nudge && *u < p.e - nudge),
+        );
         cuts.push(p.e);
         cuts.sort_by(f64::total_cmp);
         let mut out = Vec::new();

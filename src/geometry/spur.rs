@@ -333,6 +333,36 @@ impl SpurGeometry {
         })
     }
 
+    /// The points of A–E where the number of pairs in contact changes, A + k p_b and E − k p_b (k ≥ 1)
+    /// strictly inside A–E, sorted, with their names. For 1 < ε_α < 2 these are B = E − p_b and
+    /// D = A + p_b, the limits of single contact (A B P D E). For 2 ≤ ε_α < 3 there is no single
+    /// contact and the order of E − p_b and A + p_b is reversed, so they are not called B and D: the
+    /// names say how each point is built (`E−2pb`, `A+pb`, `E−pb`, `A+2pb`), where 3 ↔ 2 pairs change.
+    pub fn pair_change_points(&self) -> Vec<(&'static str, f64)> {
+        let (a, e, pb) = (self.points.a, self.points.e, self.base_pitch);
+        let tol = 1e-9 * pb;
+        let single = self.contact_ratio < 2.0;
+        let mut out: Vec<(&'static str, f64)> = [
+            (if single { "D" } else { "A+pb" }, a + pb),
+            ("A+2pb", a + 2.0 * pb),
+            (if single { "B" } else { "E−pb" }, e - pb),
+            ("E−2pb", e - 2.0 * pb),
+        ]
+        .into_iter()
+        .filter(|(_, u)| *u > a + tol && *u < e - tol)
+        .collect();
+        out.sort_by(|x, y| x.1.total_cmp(&y.1));
+        out
+    }
+
+    /// A, every point where the number of pairs changes, P and E, sorted along the line of action.
+    pub fn named_points(&self) -> Vec<(&'static str, f64)> {
+        let mut v = vec![("A", self.points.a), ("P", self.points.p), ("E", self.points.e)];
+        v.extend(self.pair_change_points());
+        v.sort_by(|x, y| x.1.total_cmp(&y.1));
+        v
+    }
+
     /// How many pairs are in contact when one of them is at `u` (from T1): the pair itself, plus
     /// every neighbour one or more base pitches away that lies strictly inside (A, E). At the zone
     /// boundaries this gives the single-contact value, so B and D carry the whole load.

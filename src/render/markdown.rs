@@ -54,6 +54,23 @@ pub fn render_markdown(r: &Report) -> String {
     let _ = writeln!(out, "\n## Geometry\n");
     header(&mut out, &["quantity", "symbol", "value"]);
     let deg = 180.0 / std::f64::consts::PI;
+    let mm = |q: &crate::report::number::Q| format!("{} mm", scaled(q, 1e3, 4));
+    let pts = &g.points_from_t1;
+    let mut contact_rows: Vec<(f64, String, String, String)> =
+        vec![(pts.A.si(), "start of contact".into(), "T1A".into(), mm(&pts.A))];
+    if let Some(b) = &pts.B {
+        contact_rows.push((b.si(), "lowest point of single contact".into(), "T1B".into(), mm(b)));
+    }
+    contact_rows.push((pts.P.si(), "pitch point".into(), "T1P".into(), mm(&pts.P)));
+    if let Some(d) = &pts.D {
+        contact_rows.push((d.si(), "highest point of single contact".into(), "T1D".into(), mm(d)));
+    }
+    for c in &pts.pair_changes {
+        let u = &c.distance_from_t1;
+        contact_rows.push((u.si(), "number of pairs changes (3 ↔ 2)".into(), format!("T1({})", c.name), mm(u)));
+    }
+    contact_rows.push((pts.E.si(), "end of contact".into(), "T1E".into(), mm(&pts.E)));
+    contact_rows.sort_by(|x, y| x.0.total_cmp(&y.0));
     let rows: Vec<(&str, &str, String)> = vec![
         ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
         ("pressure angle", "α", format!("{}°", scaled(&g.pressure_angle, deg, 4))),
@@ -69,18 +86,20 @@ pub fn render_markdown(r: &Report) -> String {
         ("face width", "b", format!("{} mm", scaled(&g.face_width, 1e3, 3))),
         ("base pitch", "p_b", format!("{} mm", scaled(&g.base_pitch, 1e3, 4))),
         ("line of action", "T1T2", format!("{} mm", scaled(&g.line_of_action_length, 1e3, 4))),
-        ("start of contact", "T1A", format!("{} mm", scaled(&g.points_from_t1.A, 1e3, 4))),
-        ("lowest point of single contact", "T1B", format!("{} mm", scaled(&g.points_from_t1.B, 1e3, 4))),
-        ("pitch point", "T1P", format!("{} mm", scaled(&g.points_from_t1.P, 1e3, 4))),
-        ("highest point of single contact", "T1D", format!("{} mm", scaled(&g.points_from_t1.D, 1e3, 4))),
-        ("end of contact", "T1E", format!("{} mm", scaled(&g.points_from_t1.E, 1e3, 4))),
         ("transverse contact ratio", "ε_α", fixed(g.contact_ratio.0, 4)),
         ("Ohlendorf gear loss factor", "H_V", fixed(g.ohlendorf_loss_factor.0, 5)),
         ("reduced modulus", "E'", format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3))),
         ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
     ];
-    for (q, s, v) in rows {
-        row(&mut out, &[q.into(), s.into(), v]);
+    let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
+    for (q, s, v) in before {
+        row(&mut out, &[q.to_string(), s.to_string(), v.clone()]);
+    }
+    for (_, q, s, v) in contact_rows {
+        row(&mut out, &[q, s, v]);
+    }
+    for (q, s, v) in after {
+        row(&mut out, &[q.to_string(), s.to_string(), v.clone()]);
     }
     let _ = writeln!(out);
     header(&mut out, &["gear", "z", "x", "d mm", "d_b mm", "d_a mm", "d_a from", "d_w mm", "ε_i", "s_a mm", "x_min"]);

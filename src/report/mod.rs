@@ -103,10 +103,23 @@ pub struct GearReport {
 #[allow(non_snake_case)]
 pub struct PointsReport {
     pub A: Q,
-    pub B: Q,
+    /// B = E − p_b and D = A + p_b, the limits of single contact: only for ε_α < 2.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub B: Option<Q>,
     pub P: Q,
-    pub D: Q,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub D: Option<Q>,
     pub E: Q,
+    /// For ε_α ≥ 2: every point where the number of pairs changes (A + k p_b, E − k p_b), in order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub pair_changes: Vec<NamedPoint>,
+}
+
+/// A named point of the line of action.
+#[derive(Debug, Clone, Serialize)]
+pub struct NamedPoint {
+    pub name: &'static str,
+    pub distance_from_t1: Q,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -333,7 +346,24 @@ fn geometry_report(eval: &Evaluation) -> GeometryReport {
         face_width: m(g.face_width),
         base_pitch: m(g.base_pitch),
         line_of_action_length: m(g.line_of_action_length),
-        points_from_t1: PointsReport { A: m(p.a), B: m(p.b), P: m(p.p), D: m(p.d), E: m(p.e) },
+        points_from_t1: {
+            let single = g.contact_ratio < 2.0;
+            PointsReport {
+                A: m(p.a),
+                B: single.then(|| m(p.b)),
+                P: m(p.p),
+                D: single.then(|| m(p.d)),
+                E: m(p.e),
+                pair_changes: if single {
+                    Vec::new()
+                } else {
+                    g.pair_change_points()
+                        .into_iter()
+                        .map(|(name, u)| NamedPoint { name, distance_from_t1: m(u) })
+                        .collect()
+                },
+            }
+        },
         contact_ratio: Num(g.contact_ratio),
         ohlendorf_loss_factor: Num(eval.ohlendorf_loss_factor),
         reduced_modulus: pa(eval.reduced_modulus),
@@ -442,7 +472,7 @@ fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
         sliding_velocity,
         slide_to_roll,
         hertz_pressure,
-        marks: eval.geometry.points.named().to_vec(),
+        marks: eval.geometry.named_points(),
         points: point_curves(scene, eval),
         tau: crate::evaluate::cycle_times(),
     }

@@ -134,3 +134,41 @@ fn contact_state_closed_forms() {
     }
     assert!(g.contact_at(g.points.p, &op, e_r, Sharing::Equal).sliding_velocity < 1e-12);
 }
+
+/// Where the number of pairs in contact changes, for any contact ratio: for the 40/60 pair with
+/// ε_α ≈ 2.47 the points A+kp_b and E−kp_b (k = 1, 2) inside A–E, in order, each with a change of
+/// the pair count across it (3 ↔ 2), the count constant between them, and none of them called B or
+/// D (the single-contact limits, which do not exist here); they are rows of the contact table. For
+/// FZG type C (ε_α = 1.44) the classical A B P D E.
+#[test]
+fn pair_change_points_for_any_contact_ratio() {
+    let g = SpurGeometry::compute(&crate::high_contact_ratio_input()).unwrap();
+    assert!(g.contact_ratio > 2.0 && g.contact_ratio < 3.0, "ε_α = {}", g.contact_ratio);
+    let changes = g.pair_change_points();
+    let (a, e, pb) = (g.points.a, g.points.e, g.base_pitch);
+    let mut expected = vec![a + pb, a + 2.0 * pb, e - pb, e - 2.0 * pb];
+    expected.retain(|u| *u > a && *u < e);
+    expected.sort_by(f64::total_cmp);
+    assert_eq!(changes.iter().map(|c| c.1).collect::<Vec<_>>(), expected);
+    assert!(changes.iter().all(|(n, _)| *n != "B" && *n != "D"), "{changes:?}");
+    let d = 1e-6 * pb;
+    let mut knots = vec![a];
+    knots.extend(changes.iter().map(|c| c.1));
+    knots.push(e);
+    for w in knots.windows(2) {
+        let (lo, hi) = (g.pairs_in_contact(w[0] + d), g.pairs_in_contact(w[1] - d));
+        assert_eq!(lo, hi, "count changes inside ({}, {})", w[0], w[1]);
+        assert!(lo == 2 || lo == 3);
+    }
+    for (name, u) in &changes {
+        let (before, after) = (g.pairs_in_contact(u - d), g.pairs_in_contact(u + d));
+        assert!(before != after && before.min(after) == 2 && before.max(after) == 3, "{name}: {before} → {after}");
+    }
+    let rows = gearloss::evaluate::table_positions(&g);
+    for (name, _) in &changes {
+        assert!(rows.iter().any(|(n, _)| n == &Some(*name)), "{name} not in the table");
+    }
+    let fzg = crate::scene(&crate::root().join("specs/fzg_type_c.gear")).gears.geometry().unwrap();
+    let names: Vec<&str> = fzg.named_points().iter().map(|p| p.0).collect();
+    assert_eq!(names, ["A", "B", "P", "D", "E"]);
+}
