@@ -225,11 +225,9 @@ impl<'s, 'a> Trajectory<'s, 'a> {
             }
         }
         if let Some(s) = open {
-            // Separation running through the end of the period: it joins the one that started at 0.
-            match out.first() {
-                Some(&(a, b)) if a <= self.pieces[0].start => out[0] = (s - self.sys.period, b),
-                _ => out.push((s, self.sys.period)),
-            }
+            // A separation running through the end of the period continues at τ = 0 of the next one
+            // (reported as two intervals, [s, T] and the one starting at 0).
+            out.push((s, self.sys.period));
         }
         out
     }

@@ -244,6 +244,7 @@ pub fn integrate_pieces_n<const N: usize>(
         stack.push((w[0], w[1], 0u32));
         while let Some((a, b, depth)) = stack.pop() {
             let (v, e) = gk15(&f, a, b);
+            out[0].evaluations += 15;
             let share = (b - a) / total;
             let ok = (0..N).all(|n| e[n] <= abs_tol[n] * share || !e[n].is_finite());
             let m = 0.5 * (a + b);
@@ -251,13 +252,16 @@ pub fn integrate_pieces_n<const N: usize>(
                 for n in 0..N {
                     out[n].value += v[n];
                     out[n].error += e[n];
-                    out[n].evaluations += 15;
                 }
             } else {
                 stack.push((m, b, depth + 1));
                 stack.push((a, m, depth + 1));
             }
         }
+    }
+    let evaluations = out[0].evaluations;
+    for o in out.iter_mut() {
+        o.evaluations = evaluations;
     }
     out
 }
