@@ -77,6 +77,7 @@ fn sweep_10000_points_three_laws(bencher: divan::Bencher) {
 mod dynamics {
     use gearloss::dynamics::integrators::{integrate, Integrator};
     use gearloss::dynamics::propagator::period_segments;
+    use gearloss::dynamics::response::PeriodicResponse;
     use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
     use gearloss::friction::coulomb::Coulomb;
     use gearloss::geometry::OperatingState;
@@ -143,6 +144,16 @@ mod dynamics {
             let times = ten_periods(sys);
             let x0 = [sys.static_force / sys.mean_stiffness, 0.0];
             bencher.bench(|| divan::black_box(integrate(sys, Integrator::Radau5, 1e-11, x0, &times).unwrap().1))
+        });
+    }
+
+    /// The periodic response with every extremum located, means and spectrum integrated (external
+    /// formulation, FZG at 1000 rpm, f_n/f_mesh ≈ 22). Target < 20 ms.
+    #[divan::bench(sample_count = 20)]
+    fn periodic_response_located_1000_rpm(bencher: divan::Bencher) {
+        with_system(1000.0, |sys| {
+            let fl = Floquet::analyse(sys);
+            bencher.bench(|| divan::black_box(PeriodicResponse::compute(sys, &fl).map(|r| r.dte_peak_to_peak)))
         });
     }
 
