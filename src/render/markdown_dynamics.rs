@@ -2,7 +2,7 @@
 
 use std::fmt::Write;
 
-use super::markdown::{fixed, header, row};
+use super::table::{fixed, header, row};
 use crate::report::dynamics::{DynamicsReport, FormulationReport, Located, StiffnessReport};
 use crate::report::friction::MuValue;
 use crate::report::Report;

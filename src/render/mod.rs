@@ -4,6 +4,7 @@ pub mod markdown;
 pub mod markdown_dynamics;
 pub mod markdown_friction;
 pub mod svg;
+pub mod table;
 
 use crate::report::Report;
 

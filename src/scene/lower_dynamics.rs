@@ -44,7 +44,7 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         Some((_, v)) => match &v.kind {
             ValueKind::Call(c) => match crate::friction::catalog::entry(&c.name.text) {
                 Some(_) => {
-                    let mut laws = super::lower::lower_law(c, errors);
+                    let mut laws = super::lower_friction::lower_law(c, errors);
                     if laws.len() > 1 {
                         errors.push(
                             Diagnostic::new(

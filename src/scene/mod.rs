@@ -5,5 +5,7 @@ pub mod diagnostics;
 pub mod fields;
 pub mod lower;
 pub mod lower_dynamics;
+pub mod lower_friction;
+pub mod lower_gears;
 pub mod parse;
 pub mod units;

@@ -1,0 +1,167 @@
+//! Lowering of the `friction` block and of one law call: arguments checked against the catalogue
+//! (known, right dimension, defaults filled in, one argument swept), and the inputs each law needs.
+
+use super::ast::*;
+use super::diagnostics::{Diagnostic, DiagnosticKind};
+use super::fields::{format_number, unknown_name, Fields};
+use crate::friction::catalog;
+use crate::model::*;
+
+pub(super) fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
+    let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id).collect();
+    let f = Fields::read("the `friction` block", block.span, &block.items, &[], &[], &ids, errors);
+    f.calls.iter().flat_map(|c| lower_law(c, errors)).collect()
+}
+
+/// A law call checked against the catalogue: arguments known, with the right dimension, defaults filled in.
+/// A law call checked against the catalogue: arguments known, with the right dimension, defaults
+/// filled in. One argument may be a sweep (`coulomb(mu = [0.02, 0.04, 0.08])`): the law is then
+/// evaluated once per value.
+pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
+    let Some(entry) = catalog::entry(&call.name.text) else { return Vec::new() };
+    let names: Vec<&str> = entry.arguments.iter().map(|a| a.name).collect();
+    let mut arguments: Vec<(String, f64, String)> = Vec::new();
+    let mut swept: Option<(String, Vec<(f64, String)>)> = None;
+    let mut ok = true;
+    for (name, value) in &call.arguments {
+        let Some(spec) = entry.arguments.iter().find(|a| a.name == name.text) else {
+            errors.push(unknown_name(&format!("argument of `{}`", entry.id), name, &names));
+            ok = false;
+            continue;
+        };
+        let given_before =
+            arguments.iter().any(|(n, _, _)| n == spec.name) || swept.as_ref().is_some_and(|(n, _)| n == spec.name);
+        if given_before {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::DuplicateKey, name.span, format!("`{}` is given twice", spec.name))
+                    .hint("keep one"),
+            );
+            ok = false;
+            continue;
+        }
+        let values: Option<Vec<(f64, String)>> = match &value.kind {
+            ValueKind::List { .. } | ValueKind::Range { .. } => {
+                if swept.is_some() {
+                    errors.push(
+                        Diagnostic::new(
+                            DiagnosticKind::OutOfRange,
+                            value.span,
+                            format!("`{}` sweeps a second argument", entry.id),
+                        )
+                        .hint("a law may sweep one argument; write a second law for another sweep"),
+                    );
+                    ok = false;
+                    continue;
+                }
+                super::fields::sweep_values(spec.name, value, spec.dimension, errors).map(|(si, unit, written)| {
+                    si.into_iter()
+                        .zip(written)
+                        .map(|(x, w)| (x, format!("{} {unit}", format_number(w)).trim_end().to_string()))
+                        .collect()
+                })
+            }
+            _ => super::fields::scalar(spec.name, value, spec.dimension, errors).map(|v| vec![v]),
+        };
+        let Some(values) = values else {
+            ok = false;
+            continue;
+        };
+        if let Some((x, _)) = values.iter().find(|(x, _)| !(x.is_finite() && *x >= 0.0)) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    value.span,
+                    format!("`{}` = {x} must not be negative", spec.name),
+                )
+                .hint(format!("{} is a magnitude; the sign follows the sliding direction", spec.what)),
+            );
+            ok = false;
+            continue;
+        }
+        if values.len() > 1 || matches!(value.kind, ValueKind::List { .. } | ValueKind::Range { .. }) {
+            swept = Some((spec.name.to_string(), values));
+        } else {
+            let (x, w) = values.into_iter().next().expect("one value");
+            arguments.push((spec.name.to_string(), x, w));
+        }
+    }
+    for spec in entry.arguments {
+        if arguments.iter().any(|(n, _, _)| n == spec.name) || swept.as_ref().is_some_and(|(n, _)| n == spec.name) {
+            continue;
+        }
+        match spec.default {
+            Some(d) => arguments.push((spec.name.to_string(), d, "default".into())),
+            None => {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        call.span,
+                        format!("`{}` needs `{}` ({})", entry.id, spec.name, spec.what),
+                    )
+                    .hint(format!("write `{}({} = ...)`", entry.id, spec.name)),
+                );
+                ok = false;
+            }
+        }
+    }
+    if !ok {
+        return Vec::new();
+    }
+    match swept {
+        None => vec![FrictionLawSpec { id: entry.id.to_string(), arguments, span: call.span }],
+        Some((name, values)) => values
+            .into_iter()
+            .map(|(x, w)| {
+                let mut args = arguments.clone();
+                args.insert(0, (name.clone(), x, w));
+                FrictionLawSpec { id: entry.id.to_string(), arguments: args, span: call.span }
+            })
+            .collect(),
+    }
+}
+
+pub(super) fn check_friction_needs(
+    laws: &[FrictionLawSpec],
+    gears: &GearPair,
+    lubricant: Option<&Lubricant>,
+    errors: &mut Vec<Diagnostic>,
+) {
+    for law in laws {
+        let Some(entry) = catalog::entry(&law.id) else {
+            continue;
+        };
+        for need in entry.needs {
+            let both = |get: fn(&Gear) -> bool| get(&gears.pinion) && get(&gears.wheel);
+            let present = match need {
+                catalog::Needs::Lubricant => lubricant.is_some(),
+                catalog::Needs::RoughnessRa => both(|g| g.roughness_ra.is_some()),
+                catalog::Needs::RoughnessRq => both(|g| g.roughness_rq.is_some()),
+                catalog::Needs::RoughnessRz => both(|g| g.roughness_rz.is_some()),
+                catalog::Needs::KinematicViscosity => lubricant.is_some_and(|l| l.kinematic_viscosity_si().is_some()),
+                catalog::Needs::PressureViscosity => lubricant.is_some_and(|l| l.pressure_viscosity.is_some()),
+            };
+            if !present && (lubricant.is_some() || *need == catalog::Needs::Lubricant) {
+                let hint = match need {
+                    catalog::Needs::Lubricant => {
+                        "add `lubricant \"name\" { dynamic_viscosity = 95 mPa*s  density = 880 kg/m^3 }`".to_string()
+                    }
+                    catalog::Needs::KinematicViscosity => {
+                        "add `density` or `kinematic_viscosity` to the lubricant".to_string()
+                    }
+                    catalog::Needs::PressureViscosity => {
+                        "add `pressure_viscosity = 2.0e-8 1/Pa` to the lubricant".to_string()
+                    }
+                    other => format!("add `{} = 0.4 um` to both `pinion` and `wheel`", other.key()),
+                };
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        law.span,
+                        format!("`{}` needs `{}`, which the scene lacks", law.id, need.key()),
+                    )
+                    .hint(hint),
+                );
+            }
+        }
+    }
+}

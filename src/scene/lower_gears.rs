@@ -1,0 +1,285 @@
+//! Lowering of the `gears` and `material` blocks: the gear pair with its checked quantities, and
+//! the pair's geometry checks mapped back to the spans the user wrote.
+
+use std::collections::BTreeMap;
+
+use uom::si::length::meter;
+
+use super::ast::*;
+use super::diagnostics::{Diagnostic, DiagnosticKind};
+use super::fields::Fields;
+use super::units::Dimension;
+use crate::geometry::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput};
+use crate::model::*;
+
+const GEARS_KEYS: &[&str] =
+    &["module", "diametral_pitch", "pressure_angle", "center_distance", "face_width", "load_sharing"];
+const GEAR_KEYS: &[&str] =
+    &["teeth", "profile_shift", "tip_diameter", "inertia", "material", "roughness_ra", "roughness_rq", "roughness_rz"];
+const MATERIAL_KEYS: &[&str] = &["youngs_modulus", "poisson_ratio"];
+
+pub(super) fn block_label(block: &Block) -> &str {
+    block.label.as_ref().map_or("", |l| l.text.as_str())
+}
+
+pub(super) fn lower_material(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Material> {
+    let Some(label) = &block.label else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "a material needs a name")
+                .hint("write `material steel { ... }`"),
+        );
+        return None;
+    };
+    let f =
+        Fields::read(format!("material `{}`", label.text), block.span, &block.items, MATERIAL_KEYS, &[], &[], errors);
+    let e: Option<Given<Pressure>> = f.required("youngs_modulus", "206 GPa", errors);
+    if !f.has("poisson_ratio") {
+        errors.push(f.missing("poisson_ratio", "0.3"));
+    }
+    let nu = f.number("poisson_ratio", 0.0, 0.499, errors);
+    let e = positive(e, "youngs_modulus", errors);
+    Some(Material { name: label.text.clone(), youngs_modulus: e?, poisson_ratio: nu? })
+}
+
+pub(super) fn positive<T: super::units::SiQuantity>(
+    g: Option<Given<T>>,
+    key: &str,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Given<T>> {
+    let g = g?;
+    if g.value.si() > 0.0 {
+        Some(g)
+    } else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, g.span, format!("`{key}` = {} must be positive", g.written))
+                .hint(format!("give `{key}` a value above zero")),
+        );
+        None
+    }
+}
+
+pub(super) fn lower_gears(
+    block: &Block,
+    materials: &BTreeMap<&str, Material>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<GearPair> {
+    let f = Fields::read("the `gears` block", block.span, &block.items, GEARS_KEYS, &["pinion", "wheel"], &[], errors);
+    let (module, module_source) = match (f.has("module"), f.has("diametral_pitch")) {
+        (true, true) => {
+            let (key, _) = f.values["diametral_pitch"];
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    key.span,
+                    "both `module` and `diametral_pitch` are given",
+                )
+                .hint("give one of them: m = 1/P_d"),
+            );
+            (None, ModuleSource::Module)
+        }
+        (false, true) => {
+            let p: Option<Given<ReciprocalLength>> =
+                positive(f.optional("diametral_pitch", errors), "diametral_pitch", errors);
+            match p {
+                Some(p) => {
+                    let m = Given {
+                        value: Length::new::<meter>(1.0 / p.value.value),
+                        written: format!("1/({})", p.written),
+                        span: p.span,
+                    };
+                    (Some(m), ModuleSource::DiametralPitch(p))
+                }
+                None => (None, ModuleSource::Module),
+            }
+        }
+        _ => (positive(f.required("module", "4.5 mm", errors), "module", errors), ModuleSource::Module),
+    };
+    let pressure_angle: Option<Given<Angle>> = f.required("pressure_angle", "20 deg", errors);
+    let pressure_angle = pressure_angle.and_then(|a| {
+        let deg = a.value.value.to_degrees();
+        if (10.0..=35.0).contains(&deg) {
+            Some(a)
+        } else {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    a.span,
+                    format!("pressure angle {deg:.4}° is outside 10° to 35°"),
+                )
+                .hint("standard pressure angles are 14.5°, 20° and 25°"),
+            );
+            None
+        }
+    });
+    let center_distance = positive(f.optional("center_distance", errors), "center_distance", errors);
+    let face_width = positive(f.required("face_width", "14 mm", errors), "face_width", errors);
+    let load_sharing = match f.name("load_sharing", &["equal", "none"], errors).map(|n| n.text.as_str()) {
+        Some("none") => LoadSharing::None,
+        _ => LoadSharing::Equal,
+    };
+    let mut gear = |name: &str| -> Option<Gear> {
+        let found: Vec<&&Block> = f.blocks.iter().filter(|b| b.kind.text == name).collect();
+        match found.as_slice() {
+            [] => {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        block.kind.span,
+                        format!("the `gears` block has no `{name}`"),
+                    )
+                    .hint(format!("add `{name} {{ teeth = 20  material = steel }}`")),
+                );
+                None
+            }
+            [one, rest @ ..] => {
+                for r in rest {
+                    errors.push(
+                        Diagnostic::new(DiagnosticKind::DuplicateKey, r.kind.span, format!("`{name}` is given twice"))
+                            .hint(format!("keep one `{name}` block")),
+                    );
+                }
+                lower_gear(one, materials, errors)
+            }
+        }
+    };
+    let pinion = gear("pinion");
+    let wheel = gear("wheel");
+    let pair = GearPair {
+        module: module?,
+        module_source,
+        pressure_angle: pressure_angle?,
+        center_distance,
+        face_width: face_width?,
+        load_sharing,
+        pinion: pinion?,
+        wheel: wheel?,
+        span: block.kind.span,
+    };
+    check_geometry(&pair, errors)?;
+    Some(pair)
+}
+
+fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut Vec<Diagnostic>) -> Option<Gear> {
+    let name = block.kind.text.as_str();
+    let f = Fields::read(format!("the `{name}` block"), block.span, &block.items, GEAR_KEYS, &[], &[], errors);
+    let teeth = match f.values.get("teeth") {
+        None => {
+            errors.push(f.missing("teeth", "20"));
+            None
+        }
+        Some((_, v)) => super::fields::scalar("teeth", v, Dimension::NONE, errors).and_then(|(z, written)| {
+            if z.fract() != 0.0 || !(5.0..=1000.0).contains(&z) {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        v.span,
+                        format!("{name} teeth = {z} is not a whole number from 5 to 1000"),
+                    )
+                    .hint("an involute gear needs at least 5 teeth"),
+                );
+                None
+            } else {
+                Some(Given { value: z as u32, written, span: v.span })
+            }
+        }),
+    };
+    let profile_shift = f.number("profile_shift", -1.5, 2.5, errors).unwrap_or(Given {
+        value: 0.0,
+        written: "0 (default)".into(),
+        span: block.kind.span,
+    });
+    let tip_diameter = positive(f.optional("tip_diameter", errors), "tip_diameter", errors);
+    let inertia = positive(f.optional("inertia", errors), "inertia", errors);
+    let mut rough = |key: &str| -> Option<Given<Length>> {
+        let r: Option<Given<Length>> = f.optional(key, errors);
+        r.and_then(|g| {
+            if g.value.value >= 0.0 && g.value.value < 1e-3 {
+                Some(g)
+            } else {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        g.span,
+                        format!("`{key}` = {} is not a roughness", g.written),
+                    )
+                    .hint("roughness lies between 0 and 1 mm; typical gear flanks have Ra 0.1 to 1 µm"),
+                );
+                None
+            }
+        })
+    };
+    let (ra, rq, rz) = (rough("roughness_ra"), rough("roughness_rq"), rough("roughness_rz"));
+    let material = match f.name("material", &[], errors) {
+        None if !f.has("material") => {
+            errors.push(f.missing("material", "steel"));
+            None
+        }
+        None => None,
+        Some(m) => match materials.get(m.text.as_str()) {
+            Some(mat) => Some(mat.clone()),
+            None => {
+                let mut d =
+                    Diagnostic::new(DiagnosticKind::Undefined, m.span, format!("material `{}` is not defined", m.text));
+                if let Some(n) = super::fields::nearest(&m.text, materials.keys().copied()) {
+                    d = d.hint(format!("did you mean `{n}`?"));
+                }
+                errors.push(d.hint(format!(
+                    "define it in the scene: `material {} {{ youngs_modulus = 206 GPa  poisson_ratio = 0.3 }}`",
+                    m.text
+                )));
+                None
+            }
+        },
+    };
+    Some(Gear {
+        teeth: teeth?,
+        profile_shift,
+        tip_diameter,
+        inertia,
+        material: material?,
+        roughness_ra: ra,
+        roughness_rq: rq,
+        roughness_rz: rz,
+        span: block.kind.span,
+    })
+}
+
+impl GearPair {
+    /// The geometry input in SI.
+    pub fn spur_input(&self) -> SpurPairInput {
+        let g = |x: &Option<Given<Length>>| x.as_ref().map(|d| d.value.get::<meter>());
+        SpurPairInput {
+            module: self.module.value.get::<meter>(),
+            pressure_angle: self.pressure_angle.value.value,
+            teeth: [self.pinion.teeth.value, self.wheel.teeth.value],
+            profile_shift: [self.pinion.profile_shift.value, self.wheel.profile_shift.value],
+            tip_diameter: [g(&self.pinion.tip_diameter), g(&self.wheel.tip_diameter)],
+            center_distance: g(&self.center_distance),
+            face_width: self.face_width.value.get::<meter>(),
+        }
+    }
+
+    pub fn geometry(&self) -> Result<SpurGeometry, Vec<GeometryProblem>> {
+        SpurGeometry::compute(&self.spur_input())
+    }
+}
+
+pub(super) fn check_geometry(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Option<()> {
+    match pair.geometry() {
+        Ok(_) => Some(()),
+        Err(problems) => {
+            for p in problems {
+                let gear = |i: usize| if i == 0 { &pair.pinion } else { &pair.wheel };
+                let span = match p.part {
+                    PairPart::Teeth(i) => gear(i).teeth.span,
+                    PairPart::ProfileShift(i) => gear(i).profile_shift.span,
+                    PairPart::TipDiameter(i) => gear(i).tip_diameter.as_ref().map_or(gear(i).span, |d| d.span),
+                    PairPart::CenterDistance => pair.center_distance.as_ref().map_or(pair.span, |d| d.span),
+                    PairPart::Pair => pair.span,
+                };
+                errors.push(Diagnostic::new(DiagnosticKind::Geometry, span, p.reason).hint(p.hint));
+            }
+            None
+        }
+    }
+}
