@@ -235,7 +235,7 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
     let rows = table_positions(&eval.geometry);
     let op = &scene.operating;
     let indices = op.points();
-    let with_curves = crate::report::pick(indices.len());
+    let with_curves = pick(indices.len());
     let wants_friction = analyses.friction_along_loa || analyses.efficiency.is_some();
     let points: Vec<PointEvaluation> = indices
         .par_iter()
@@ -260,7 +260,11 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
         })
         .collect();
     eval.points = points;
-    eval.dynamics = crate::evaluate_dynamics::evaluate_dynamics(scene, &eval);
+    let first = OperatingState {
+        pinion_torque: scene.operating.pinion_torque.values[0].value,
+        pinion_speed: scene.operating.pinion_speed.values[0].value,
+    };
+    eval.dynamics = crate::evaluate_dynamics::evaluate_dynamics(scene, eval.law_context(first));
     eval.ohlendorf_loss_factor =
         efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
     eval
@@ -360,4 +364,17 @@ fn evaluate_law(
                 .collect(),
         }),
     }
+}
+
+/// At most this many curves of one kind are plotted (evenly picked from a sweep).
+pub const MAX_CURVES: usize = 6;
+
+/// Indices of at most `MAX_CURVES` values evenly picked from `n`.
+pub fn pick(n: usize) -> Vec<usize> {
+    if n <= MAX_CURVES {
+        return (0..n).collect();
+    }
+    let mut v: Vec<usize> = (0..MAX_CURVES).map(|i| i * (n - 1) / (MAX_CURVES - 1)).collect();
+    v.dedup();
+    v
 }

@@ -9,8 +9,7 @@ use crate::dynamics::numerics::{study, Study};
 use crate::dynamics::propagator::Method;
 use crate::dynamics::response::PeriodicResponse;
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, SdofSystem, StiffnessModel};
-use crate::evaluate::Evaluation;
-use crate::friction::{self, FrictionLaw};
+use crate::friction::{self, FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, SpurGeometry};
 use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
 use crate::numerics::roots::brent;
@@ -100,7 +99,7 @@ fn inertia(scene: &Scene) -> [f64; 2] {
 }
 
 fn system<'a>(
-    eval: &'a Evaluation,
+    base: LawContext<'a>,
     spec: &DynamicsSpec,
     stiffness: &StiffnessModel,
     law: Option<&'a dyn FrictionLaw>,
@@ -108,7 +107,7 @@ fn system<'a>(
     state: OperatingState,
     inertia: [f64; 2],
 ) -> SdofSystem<'a> {
-    let ctx = eval.law_context(state);
+    let ctx = LawContext { state, ..base };
     let law = if f == DynamicFormulation::Base { None } else { law };
     let mut sys = SdofSystem::new(ctx, law, f, stiffness.clone(), inertia, spec.damping_ratio);
     sys.allow_exact = spec.solver == Solver::Auto;
@@ -162,21 +161,23 @@ fn unstable_ranges(rows: impl Iterator<Item = (f64, f64)>, excess: impl Fn(f64) 
 }
 
 /// Evaluates the dynamics the scene asks for; None when it asks for none.
-pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEvaluation> {
+/// `base` is the law context of the scene's pair (its state is replaced by each operating point's).
+pub fn evaluate_dynamics(scene: &Scene, base: LawContext) -> Option<DynamicsEvaluation> {
     let spec = scene.dynamics.as_ref()?;
     let a = &scene.analyses;
     if !(a.dynamics || a.stability_map.is_some() || a.numerics) {
         return None;
     }
-    let (stiffness, source) = stiffness_model(spec, &eval.geometry);
+    let (stiffness, source) = stiffness_model(spec, base.geometry);
     let j = inertia(scene);
     let state_of = |ti: usize, ni: usize| OperatingState {
         pinion_torque: scene.operating.pinion_torque.values[ti].value,
         pinion_speed: scene.operating.pinion_speed.values[ni].value,
     };
     let probe_state = state_of(0, 0);
-    let probe = system(eval, spec, &stiffness, None, DynamicFormulation::Base, probe_state, j);
-    let law_for = |state: OperatingState| spec.friction.as_ref().map(|l| friction::build(l, &eval.law_context(state)));
+    let probe = system(base, spec, &stiffness, None, DynamicFormulation::Base, probe_state, j);
+    let law_for =
+        |state: OperatingState| spec.friction.as_ref().map(|l| friction::build(l, &LawContext { state, ..base }));
     let points = if a.dynamics {
         scene
             .operating
@@ -188,12 +189,12 @@ pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEva
                 let results = spec
                     .formulations
                     .iter()
-                    .map(|f| analyse(&system(eval, spec, &stiffness, law.as_deref(), *f, state, j), true))
+                    .map(|f| analyse(&system(base, spec, &stiffness, law.as_deref(), *f, state, j), true))
                     .collect();
                 DynamicsPoint {
                     index: (ti, ni),
                     state,
-                    mesh_frequency: state.pinion_speed * eval.geometry.teeth[0] as f64 / (2.0 * std::f64::consts::PI),
+                    mesh_frequency: state.pinion_speed * base.geometry.teeth[0] as f64 / (2.0 * std::f64::consts::PI),
                     results,
                 }
             })
@@ -212,7 +213,7 @@ pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEva
                     .formulations
                     .iter()
                     .map(|f| {
-                        let sys = system(eval, spec, &stiffness, law.as_deref(), *f, state, j);
+                        let sys = system(base, spec, &stiffness, law.as_deref(), *f, state, j);
                         let fl = Floquet::analyse(&sys);
                         (fl.spectral_radius, PeriodicResponse::dynamic_factor(&sys, &fl))
                     })
@@ -233,7 +234,7 @@ pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEva
                     let state = OperatingState { pinion_torque: probe_state.pinion_torque, pinion_speed: w };
                     let law = law_for(state);
                     let f = spec.formulations[i];
-                    Floquet::analyse(&system(eval, spec, &stiffness, law.as_deref(), f, state, j)).spectral_radius
+                    Floquet::analyse(&system(base, spec, &stiffness, law.as_deref(), f, state, j)).spectral_radius
                         - (1.0 + UNSTABLE_MARGIN)
                 };
                 unstable_ranges(rows.iter().map(|r| (r.pinion_speed, r.spectral_radius[i])), rho)
@@ -247,7 +248,7 @@ pub fn evaluate_dynamics(scene: &Scene, eval: &Evaluation) -> Option<DynamicsEva
             spec.formulations[0]
         };
         let law = law_for(probe_state);
-        let sys = system(eval, spec, &stiffness, law.as_deref(), f, probe_state, j);
+        let sys = system(base, spec, &stiffness, law.as_deref(), f, probe_state, j);
         (f, 0, study(&sys))
     });
     Some(DynamicsEvaluation {

@@ -219,8 +219,7 @@ pub struct PointCurves {
     pub efficiency: Vec<(String, Vec<f64>)>,
 }
 
-/// At most this many curves of one kind are plotted (evenly picked from a sweep).
-pub const MAX_CURVES: usize = 6;
+pub use crate::evaluate::{pick, MAX_CURVES};
 
 /// The folder name of a scene: lower case, ASCII letters and digits, words joined by `_`.
 pub fn slug(title: &str) -> String {
@@ -431,16 +430,6 @@ pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
         crate::model::Formulation::External => "external",
         crate::model::Formulation::Internal => "internal",
     }
-}
-
-/// Indices of at most `MAX_CURVES` values evenly picked from `n`.
-pub fn pick(n: usize) -> Vec<usize> {
-    if n <= MAX_CURVES {
-        return (0..n).collect();
-    }
-    let mut v: Vec<usize> = (0..MAX_CURVES).map(|i| i * (n - 1) / (MAX_CURVES - 1)).collect();
-    v.dedup();
-    v
 }
 
 fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
