@@ -15,7 +15,7 @@
 //! with the one-sided values at both ends of every piece (where a force may jump). This is what
 //! every reported maximum, minimum and peak-to-peak comes from; the grid itself is only a bracket.
 
-use crate::numerics::roots::brent;
+use crate::numerics::roots::{bracketed_roots, brent};
 use nalgebra::{Matrix4, Vector2};
 
 use super::propagator::{from_exponential, magnus, magnus_adaptive, segment_matrix};
@@ -170,17 +170,7 @@ impl<'s, 'a> Trajectory<'s, 'a> {
         for (p, piece) in self.pieces.iter().enumerate() {
             consider(g(p, piece.start), piece.start);
             consider(g(p, piece.end), piece.end);
-            let mut roots = Vec::new();
-            let mut prev = (piece.start, dg(p, piece.start));
-            for &t in &piece.times[1..] {
-                let d = dg(p, t);
-                if d == 0.0 && t < piece.end {
-                    roots.push(t);
-                } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
-                    roots.push(brent(|s| dg(p, s), prev.0, t, xtol));
-                }
-                prev = (t, d);
-            }
+            let roots = bracketed_roots(|s| dg(p, s), &piece.times, xtol);
             for t in &roots {
                 consider(g(p, *t), *t);
             }

@@ -10,7 +10,7 @@ use super::xu::Xu;
 use super::{FrictionLaw, LawContext, Parameter, Regime};
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::integrate_singular;
-use crate::numerics::roots::brent;
+use crate::numerics::roots::{bracketed_roots, brent};
 use crate::tribology::FilmInputs;
 
 /// Λ thresholds between boundary/mixed and mixed/full film.
@@ -121,18 +121,9 @@ impl Composite {
             let h = 1e-7 * (b - a);
             let slope = |u: f64| lambda((u + h).min(b)) - lambda((u - h).max(a));
             let n = 60;
+            let grid: Vec<f64> = (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
             let mut knots = vec![a];
-            let mut prev = (a, slope(a));
-            for i in 1..=n {
-                let u = a + (b - a) * i as f64 / n as f64;
-                let d = slope(u);
-                if d == 0.0 && u < b {
-                    knots.push(u);
-                } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
-                    knots.push(brent(slope, prev.0, u, xtol));
-                }
-                prev = (u, d);
-            }
+            knots.extend(bracketed_roots(slope, &grid, xtol));
             knots.push(b);
             let start = Self::regime_of(lambda(a));
             if last_regime.is_some_and(|r| r != start) {

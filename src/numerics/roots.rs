@@ -62,18 +62,37 @@ pub fn extrema(f: impl Fn(f64) -> f64, breaks: &[f64], nodes: usize, xtol: f64) 
         let slope = |x: f64| f((x + h).min(b)) - f((x - h).max(a));
         consider(a, f(a));
         consider(b, f(b));
-        let mut prev = (a, slope(a));
-        for i in 1..=nodes {
-            let x = a + (b - a) * i as f64 / nodes as f64;
-            let d = slope(x);
-            if d == 0.0 {
-                consider(x, f(x));
-            } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
-                let r = brent(slope, prev.0, x, xtol);
-                consider(r, f(r));
-            }
-            prev = (x, d);
+        let grid: Vec<f64> = (0..=nodes).map(|i| a + (b - a) * i as f64 / nodes as f64).collect();
+        for r in bracketed_roots(slope, &grid, xtol) {
+            consider(r, f(r));
         }
     }
     (lo, hi)
+}
+
+/// The roots of `f` between the first and last of `nodes` (sorted): every sign change between two
+/// neighbouring nodes refined by [`brent`] to `xtol`, and every node before the last where f is
+/// exactly 0. Two roots between the same two nodes are not seen: the nodes must be fine enough.
+///
+/// ```
+/// use gearloss::numerics::roots::bracketed_roots;
+/// let r = bracketed_roots(f64::cos, &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0], 1e-14);
+/// assert_eq!(r.len(), 2);
+/// assert!((r[0] - std::f64::consts::FRAC_PI_2).abs() < 1e-13 && (r[1] - 1.5 * std::f64::consts::PI).abs() < 1e-13);
+/// ```
+pub fn bracketed_roots(f: impl Fn(f64) -> f64, nodes: &[f64], xtol: f64) -> Vec<f64> {
+    let mut roots = Vec::new();
+    let Some(&first) = nodes.first() else { return roots };
+    let last = nodes[nodes.len() - 1];
+    let mut prev = (first, f(first));
+    for &x in &nodes[1..] {
+        let d = f(x);
+        if d == 0.0 && x < last {
+            roots.push(x);
+        } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
+            roots.push(brent(&f, prev.0, x, xtol));
+        }
+        prev = (x, d);
+    }
+    roots
 }
