@@ -30,6 +30,16 @@ pub const MEAN_TOLERANCE: f64 = 1e-10;
 /// η(τ) non-integrable. The band where the cap acts is found by [`internal_cap_band`] and reported.
 pub const INTERNAL_MU_CAP: f64 = 1.0;
 
+/// The largest |μ| the internal formulation (and the dynamics' friction term) uses for `law`:
+/// [`INTERNAL_MU_CAP`] for a law that diverges at P, unbounded otherwise.
+pub fn internal_mu_cap(law: &dyn FrictionLaw) -> f64 {
+    if law.diverges_at_pitch() {
+        INTERNAL_MU_CAP
+    } else {
+        f64::INFINITY
+    }
+}
+
 /// The positions (from T1) around P between which a divergent law's |μ| exceeds [`INTERNAL_MU_CAP`].
 pub fn internal_cap_band(ctx: &LawContext, law: &dyn FrictionLaw) -> Option<(f64, f64)> {
     if !law.diverges_at_pitch() {
@@ -145,7 +155,7 @@ pub fn efficiency_of(
 pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> [f64; 2] {
     let g = ctx.geometry;
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
-    let cap = if law.diverges_at_pitch() { INTERNAL_MU_CAP } else { f64::INFINITY };
+    let cap = internal_mu_cap(law);
     let mut sum = 0.0;
     let (mut num, mut den) = (rw, rp);
     for c in contacts {

@@ -206,27 +206,16 @@ impl PeriodicResponse {
         // A law that diverges at P (Benedict–Kelley's log, Xu's power) has no finite peak friction
         // force: its supremum is reached only at P itself, so none is reported (the report says so).
         let finite_peaks = sys.law.is_some_and(|l| !l.diverges_at_pitch());
-        let (peak_friction_force, peak_friction_torque, peak_mu_f, max_eta) = if finite_peaks {
+        let peak = |f: fn(&FrictionNow) -> f64| finite_peaks.then(|| in_periods(peak_abs(&tr, friction(f)), period));
+        let peak_friction_force = peak(|f| f.applied);
+        let peak_friction_torque = peak(|f| f.torque[0]).zip(peak(|f| f.torque[1])).map(|(p, w)| [p, w]);
+        let external = sys.formulation == DynamicFormulation::External;
+        let peak_mu_f = if external { peak(|f| f.mu_times_tooth_force) } else { None };
+        let max_eta = with_law.then(|| {
             let eta = |p: usize, t: f64| ev.efficiency(p, t);
             let h = 1e-7 * period;
-            let eta_max = tr.extrema(eta, |p, t| slope(&eta, p, t, h)).max.value;
-            (
-                Some(in_periods(peak_abs(&tr, friction(|f| f.applied)), period)),
-                Some([
-                    in_periods(peak_abs(&tr, friction(|f| f.torque[0])), period),
-                    in_periods(peak_abs(&tr, friction(|f| f.torque[1])), period),
-                ]),
-                (sys.formulation == DynamicFormulation::External)
-                    .then(|| in_periods(peak_abs(&tr, friction(|f| f.mu_times_tooth_force)), period)),
-                Some(eta_max),
-            )
-        } else if with_law {
-            let eta = |p: usize, t: f64| ev.efficiency(p, t);
-            let h = 1e-7 * period;
-            (None, None, None, Some(tr.extrema(eta, |p, t| slope(&eta, p, t, h)).max.value))
-        } else {
-            (None, None, None, None)
-        };
+            tr.extrema(eta, |p, t| slope(&eta, p, t, h)).max.value
+        });
         let extremes = [dte.min, dte.max, force.min, force.max];
         Some(PeriodicResponse {
             series: plot_series(&tr, ev, &extremes),

@@ -266,7 +266,7 @@ impl<'a> SdofSystem<'a> {
     /// [`crate::efficiency::INTERNAL_MU_CAP`] for a law that diverges at P (as in [`SdofSystem::friction_term`]).
     pub fn friction_mu(&self, c: &crate::geometry::ContactPoint) -> f64 {
         let Some(law) = self.law else { return 0.0 };
-        let cap = if law.diverges_at_pitch() { crate::efficiency::INTERNAL_MU_CAP } else { f64::INFINITY };
+        let cap = crate::efficiency::internal_mu_cap(law);
         law.mu(c).clamp(-cap, cap)
     }
 
