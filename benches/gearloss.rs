@@ -4,7 +4,6 @@
 //! - a 10 000-point torque × speed sweep with three laws, the whole evaluation stage (target < 2 s on 2 cores).
 
 use gearloss::efficiency::{mean_abs_mu, mean_efficiencies};
-use gearloss::friction;
 
 fn main() {
     divan::main();
@@ -44,7 +43,7 @@ fn one_point(bencher: divan::Bencher, with_mean_mu: bool) {
     bencher.bench(|| {
         let mut sum = 0.0;
         for spec in &scene.friction {
-            let law = friction::build(spec, &ctx);
+            let law = spec.build(&ctx);
             if with_mean_mu {
                 sum += mean_abs_mu(&ctx, law.as_ref()).value;
             }

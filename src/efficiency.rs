@@ -17,10 +17,17 @@
 use serde::Serialize;
 
 use crate::friction::{FrictionLaw, LawContext};
-use crate::geometry::ContactPoint;
-use crate::model::Formulation;
+use crate::geometry::{ContactPoint, Contacts};
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
 use crate::numerics::roots::extrema;
+
+/// The formulations of the output torque (Fernandes §2.3–2.4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Formulation {
+    External,
+    Internal,
+}
 
 /// Relative tolerance of every mean.
 pub const MEAN_TOLERANCE: f64 = 1e-10;
@@ -67,68 +74,9 @@ pub fn internal_cap_band(ctx: &LawContext, law: &dyn FrictionLaw) -> Option<(f64
     (hi > lo && (above(0.5 * (lo + p.p)) || above(0.5 * (hi + p.p)))).then_some((lo, hi))
 }
 
-/// The pairs in contact at one instant: at most four (ε_α < 3), kept on the stack because the
-/// mean-efficiency integrands build them at every quadrature node.
-#[derive(Debug, Clone, Copy)]
-pub struct Contacts {
-    items: [ContactPoint; 4],
-    len: usize,
-}
-
-impl std::ops::Deref for Contacts {
-    type Target = [ContactPoint];
-    fn deref(&self) -> &[ContactPoint] {
-        &self.items[..self.len]
-    }
-}
-
-impl<'a> IntoIterator for &'a Contacts {
-    type Item = &'a ContactPoint;
-    type IntoIter = std::slice::Iter<'a, ContactPoint>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.items[..self.len].iter()
-    }
-}
-
-/// How many pairs are in contact at time τ of the mesh cycle (the count of [`contacts_at`], without
-/// building the contact states).
-pub fn pairs_at(ctx: &LawContext, tau: f64) -> usize {
-    let g = ctx.geometry;
-    (0..4)
-        .filter(|k| {
-            let u = g.points.a + g.base_pitch * (tau + *k as f64);
-            u >= g.points.a && u < g.points.e
-        })
-        .count()
-}
-
-/// The contacts at time τ of the mesh cycle (τ in [0, 1)).
-/// The load is shared among the pairs found at τ, so that the shares always add up to one.
+/// The contacts at time τ of the mesh cycle (τ in [0, 1)) ([`crate::geometry::Mesh::contacts_at`]).
 pub fn contacts_at(ctx: &LawContext, tau: f64) -> Contacts {
-    contacts_near_pitch(ctx, tau, f64::NAN)
-}
-
-/// As [`contacts_at`], with `d` = τ − τ_P known exactly for the pair nearest the pitch point
-/// (NaN when not known): that pair's s = p_b d.
-pub fn contacts_near_pitch(ctx: &LawContext, tau: f64, d: f64) -> Contacts {
-    let g = ctx.geometry;
-    let mut positions = [0.0; 4];
-    let mut n = 0;
-    for k in 0..4 {
-        let u = g.points.a + g.base_pitch * (tau + k as f64);
-        if u >= g.points.a && u < g.points.e {
-            positions[n] = u;
-            n += 1;
-        }
-    }
-    let exact = g.base_pitch * d;
-    let mut out = Contacts { items: [ContactPoint::default(); 4], len: n };
-    for (slot, u) in out.items.iter_mut().zip(&positions[..n]) {
-        let s = u - g.points.p;
-        let s = if exact.is_finite() && (s - exact).abs() < 1e-6 * g.base_pitch { exact } else { s };
-        *slot = g.contact_exact(*u, s, &ctx.state, ctx.tribology.reduced_modulus, ctx.sharing, n);
-    }
-    out
+    ctx.mesh().contacts_at(tau)
 }
 
 /// Instantaneous efficiency at time τ.
@@ -170,33 +118,7 @@ pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[Cont
 
 /// Times in (0, 1) where the integrand changes form: zone boundaries, pitch passages, law switches.
 pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
-    cycle_break_times(ctx, &law.switch_points())
-}
-
-/// Times in [0, 1] where a pair reaches E or P, or one of `switch_points` (positions from T1),
-/// with 0 and 1 included and sorted.
-pub fn cycle_break_times(ctx: &LawContext, switch_points: &[f64]) -> Vec<f64> {
-    let g = ctx.geometry;
-    let p = g.points;
-    let mut positions = vec![p.e, p.p];
-    positions.extend_from_slice(switch_points);
-    let mut times = vec![0.0, 1.0];
-    for u in positions {
-        for k in 0..4 {
-            let tau = (u - p.a) / g.base_pitch - k as f64;
-            if tau > 0.0 && tau < 1.0 {
-                times.push(tau);
-            }
-        }
-    }
-    times.sort_by(f64::total_cmp);
-    times
-}
-
-/// Times in the cycle at which a pair passes the pitch point (where a law may be singular).
-pub fn pitch_times(ctx: &LawContext) -> Vec<f64> {
-    let g = ctx.geometry;
-    (0..4).map(|k| (g.points.p - g.points.a) / g.base_pitch - k as f64).filter(|t| *t > 0.0 && *t < 1.0).collect()
+    ctx.geometry.cycle_break_times(&law.switch_points())
 }
 
 /// η̄ over one mesh cycle, with its error estimate.
@@ -213,9 +135,9 @@ pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: For
 /// polynomial pieces of the Coulomb laws and removes the |s|^q kinks of the others.
 pub fn mean_efficiencies(ctx: &LawContext, law: &dyn FrictionLaw) -> [Integral; 2] {
     integrate_singular_n(
-        |tau, d| efficiencies_of(ctx, law, &contacts_near_pitch(ctx, tau, d)),
+        |tau, d| efficiencies_of(ctx, law, &ctx.mesh().contacts_near_pitch(tau, d)),
         &break_times(ctx, law),
-        &pitch_times(ctx),
+        &ctx.geometry.pitch_times(),
         MEAN_TOLERANCE,
     )
 }

@@ -7,7 +7,8 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::efficiency::{self, EfficiencyResult};
-use crate::friction::{self, catalog, FrictionLaw, LawContext, Parameter, Regime};
+use crate::friction::catalog::LawId;
+use crate::friction::{FrictionLaw, LawContext, Parameter, Regime};
 use crate::geometry::contact::{reduced_modulus, Sharing};
 use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
 use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
@@ -66,7 +67,7 @@ pub struct ValiditySummary {
 /// One friction law at one operating point.
 #[derive(Debug, Clone, Serialize)]
 pub struct LawEvaluation {
-    pub id: &'static str,
+    pub id: LawId,
     pub title: &'static str,
     pub parameters: Vec<Parameter>,
     pub notes: Vec<String>,
@@ -323,7 +324,7 @@ fn evaluate_law(
     curves: bool,
 ) -> LawEvaluation {
     let ctx = eval.law_context(state);
-    let law = friction::build(spec, &ctx);
+    let law = spec.build(&ctx);
     let law = law.as_ref();
     let diverges = law.diverges_at_pitch();
     let value_at = |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };
@@ -333,8 +334,8 @@ fn evaluate_law(
     let efficiency = efficiency::evaluate_efficiencies(&ctx, law, &eval.formulations);
     let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
     LawEvaluation {
-        id: catalog::entry(&spec.id).map_or("unknown", |e| e.id),
-        title: catalog::entry(&spec.id).map_or("", |e| e.title),
+        id: spec.law,
+        title: spec.law.entry().title,
         parameters: law.parameters(),
         notes: law.notes(),
         diverges_at_pitch: diverges,

@@ -9,7 +9,7 @@ use crate::dynamics::numerics::{study, Study};
 use crate::dynamics::propagator::Method;
 use crate::dynamics::response::PeriodicResponse;
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, SdofSystem, StiffnessModel};
-use crate::friction::{self, FrictionLaw, LawContext};
+use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, SpurGeometry};
 use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
 use crate::numerics::roots::brent;
@@ -65,30 +65,13 @@ pub struct DynamicsEvaluation {
     pub numerics: Option<(DynamicFormulation, usize, Study)>,
 }
 
-/// The ISO 6336-1 single-pair stiffness per face width c' (N/(mm·µm)) (physics notes).
-pub fn iso_6336_single_stiffness(g: &SpurGeometry) -> f64 {
-    let (z1, z2) = (g.teeth[0] as f64, g.teeth[1] as f64);
-    let [x1, x2] = g.profile_shift;
-    let q = 0.04723 + 0.15551 / z1 + 0.25791 / z2 - 0.00635 * x1 - 0.11654 * x1 / z1 - 0.00193 * x2 - 0.24188 * x2 / z2
-        + 0.00529 * x1 * x1
-        + 0.00182 * x2 * x2;
-    let (c_m, c_r) = (0.8, 1.0);
-    let h_fp = 1.25;
-    let c_b = (1.0 + 0.5 * (1.2 - h_fp)) * (1.0 - 0.02 * (20.0 - g.pressure_angle.to_degrees()));
-    c_m * c_r * c_b / q
-}
-
 fn stiffness_model(spec: &DynamicsSpec, g: &SpurGeometry) -> (StiffnessModel, &'static str) {
     match &spec.stiffness {
         StiffnessSpec::Pairs { single, double, triple } => (
             StiffnessModel::PairsInContact { single: *single, double: *double, triple: triple.unwrap_or(1.5 * double) },
             "given",
         ),
-        StiffnessSpec::Iso6336 => {
-            // c' in N/(mm·µm) times b in mm: N/µm, ×1e6: N/m.
-            let k = iso_6336_single_stiffness(g) * g.face_width * 1e3 * 1e6;
-            (StiffnessModel::PairsInContact { single: k, double: 2.0 * k, triple: 3.0 * k }, "iso_6336")
-        }
+        StiffnessSpec::Iso6336 => (StiffnessModel::iso_6336(g), "iso_6336"),
         StiffnessSpec::Table(v) => (StiffnessModel::Table(v.clone()), "table"),
     }
 }
@@ -176,8 +159,7 @@ pub fn evaluate_dynamics(scene: &Scene, base: LawContext) -> Option<DynamicsEval
     };
     let probe_state = state_of(0, 0);
     let probe = system(base, spec, &stiffness, None, DynamicFormulation::Base, probe_state, j);
-    let law_for =
-        |state: OperatingState| spec.friction.as_ref().map(|l| friction::build(l, &LawContext { state, ..base }));
+    let law_for = |state: OperatingState| spec.friction.as_ref().map(|l| l.build(&LawContext { state, ..base }));
     let points = if a.dynamics {
         scene
             .operating

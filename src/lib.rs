@@ -12,6 +12,7 @@
 //! [`write_report_folder`]. Errors of the first two stages are [`SceneErrors`]: every problem with
 //! its span, reason and hints, rendered by miette. The library never prints.
 
+pub mod diagnostics;
 pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;
@@ -20,6 +21,7 @@ pub mod friction;
 pub mod geometry;
 pub mod model;
 pub mod numerics;
+pub mod quantity;
 pub mod render;
 pub mod report;
 pub mod scene;
@@ -27,12 +29,12 @@ pub mod tribology;
 
 use std::path::{Path, PathBuf};
 
+pub use diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
 pub use evaluate::Evaluation;
 pub use model::Scene;
 pub use render::RenderedReport;
 pub use report::Report;
 pub use scene::ast::SceneAst;
-pub use scene::diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
 
 /// Stage 1: text → syntax tree.
 pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {

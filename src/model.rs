@@ -7,8 +7,10 @@ use uom::si::f64 as si;
 use uom::si::{Quantity, ISQ, SI};
 use uom::typenum::{N1, N2, P1, P2, Z0};
 
-use crate::scene::ast::Span;
+use crate::diagnostics::Span;
 
+pub use crate::efficiency::Formulation;
+pub use crate::friction::catalog::{FrictionLawSpec, LawId};
 pub use si::{
     Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, MassDensity,
     MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque,
@@ -208,29 +210,6 @@ impl Operating {
         }
         out
     }
-}
-
-/// A friction law named in the `friction` block, with its arguments as given.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FrictionLawSpec {
-    pub id: String,
-    /// (argument name, SI value, as written)
-    pub arguments: Vec<(String, f64, String)>,
-    pub span: Span,
-}
-
-impl FrictionLawSpec {
-    pub fn argument(&self, name: &str) -> Option<f64> {
-        self.arguments.iter().find(|(n, _, _)| n == name).map(|(_, v, _)| *v)
-    }
-}
-
-/// The formulations of the output torque (Fernandes §2.3–2.4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Formulation {
-    External,
-    Internal,
 }
 
 /// What the scene asks to compute. Geometry and the contact state are always computed.

@@ -22,7 +22,6 @@ use serde::Serialize;
 use super::floquet::Floquet;
 use super::sdof::{DynamicFormulation, SdofSystem};
 use super::trajectory::{Extremum, Trajectory};
-use crate::efficiency::contacts_at;
 use crate::numerics::quadrature::{integrate_pieces_n, Integral};
 
 /// Uniform plot samples per mesh period (merged with switch times and located extrema).
@@ -122,7 +121,7 @@ impl Eval<'_, '_, '_> {
         };
         let g = sys.ctx.geometry;
         let tau = self.tr.parameter_time(p, t) / sys.period;
-        for c in &contacts_at(&sys.ctx, tau.rem_euclid(1.0)) {
+        for c in &sys.ctx.mesh().contacts_at(tau.rem_euclid(1.0)) {
             let m = sys.friction_mu(c) * c.force_share;
             out.applied += m * normal;
             out.mu_times_tooth_force += m * f;
@@ -270,7 +269,7 @@ fn plot_series(tr: &Trajectory, ev: &Eval, extremes: &[Extremum]) -> ResponseSer
         s.tooth_force.push(f);
         s.friction_force.push(ev.friction(p, t).applied);
         let tau = tr.parameter_time(p, t) / period;
-        for c in &contacts_at(&sys.ctx, tau.rem_euclid(1.0)) {
+        for c in &sys.ctx.mesh().contacts_at(tau.rem_euclid(1.0)) {
             let slot = (((c.u - g.points.a) / g.base_pitch) - tau).round();
             if (0.0..3.0).contains(&slot) {
                 s.pair_force[slot as usize][i] = c.force_share * f;

@@ -15,8 +15,9 @@
 
 use serde::Serialize;
 
-use crate::efficiency::{break_times, contacts_at, cycle_break_times, pairs_at};
+use crate::efficiency::break_times;
 use crate::friction::{FrictionLaw, LawContext};
+pub use crate::geometry::stiffness::StiffnessModel;
 
 /// Which equation of motion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -34,53 +35,6 @@ impl DynamicFormulation {
             DynamicFormulation::External => "external",
             DynamicFormulation::Internal => "internal",
         }
-    }
-}
-
-/// Mesh stiffness over one mesh cycle.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum StiffnessModel {
-    /// Rectangular: stiffness with 1, 2 and 3 pairs in contact (N/m).
-    PairsInContact { single: f64, double: f64, triple: f64 },
-    /// Values at equally spaced times over one mesh period, t = 0 when a pair enters at A,
-    /// linearly interpolated (periodic).
-    Table(Vec<f64>),
-}
-
-impl StiffnessModel {
-    /// k at time fraction τ ∈ [0, 1) with n pairs in contact.
-    pub fn at(&self, tau: f64, pairs: usize) -> f64 {
-        match self {
-            StiffnessModel::PairsInContact { single, double, triple } => match pairs {
-                0 | 1 => *single,
-                2 => *double,
-                _ => *triple,
-            },
-            StiffnessModel::Table(k) => {
-                let n = k.len();
-                let x = tau.rem_euclid(1.0) * n as f64;
-                let i = (x.floor() as usize).min(n - 1);
-                let frac = x - i as f64;
-                k[i] * (1.0 - frac) + k[(i + 1) % n] * frac
-            }
-        }
-    }
-
-    /// dk/dτ at τ (per mesh period): 0 for the rectangular model, the slope of the table cell.
-    pub fn slope(&self, tau: f64) -> f64 {
-        match self {
-            StiffnessModel::PairsInContact { .. } => 0.0,
-            StiffnessModel::Table(k) => {
-                let n = k.len();
-                let i = ((tau.rem_euclid(1.0) * n as f64).floor() as usize).min(n - 1);
-                (k[(i + 1) % n] - k[i]) * n as f64
-            }
-        }
-    }
-
-    pub fn is_piecewise_constant(&self) -> bool {
-        matches!(self, StiffnessModel::PairsInContact { .. })
     }
 }
 
@@ -127,15 +81,19 @@ impl<'a> SdofSystem<'a> {
         let g = ctx.geometry;
         let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
         let m_e = inertia[0] * inertia[1] / (inertia[0] * rw * rw + inertia[1] * rp * rp);
-        let period = 2.0 * std::f64::consts::PI / (ctx.state.pinion_speed * g.teeth[0] as f64);
+        let period = g.mesh_period(ctx.state.pinion_speed);
         let mut taus = match law {
             Some(l) => break_times(&ctx, l),
-            None => cycle_break_times(&ctx, &[]),
+            None => ctx.geometry.cycle_break_times(&[]),
         };
         taus.dedup_by(|a, b| (*a - *b).abs() < 1e-14);
         let segments: Vec<Segment> = taus
             .windows(2)
-            .map(|w| Segment { start: w[0] * period, end: w[1] * period, pairs: pairs_at(&ctx, 0.5 * (w[0] + w[1])) })
+            .map(|w| Segment {
+                start: w[0] * period,
+                end: w[1] * period,
+                pairs: ctx.geometry.pairs_at(0.5 * (w[0] + w[1])),
+            })
             .collect();
         // k̄ over the period (exact for the rectangular model, trapezoid on 4096 points for a table).
         let mean_stiffness = match &stiffness {
@@ -164,7 +122,7 @@ impl<'a> SdofSystem<'a> {
     /// k(t) (N/m); t in seconds, periodic.
     pub fn stiffness_at(&self, t: f64) -> f64 {
         let tau = (t / self.period).rem_euclid(1.0);
-        self.stiffness.at(tau, pairs_at(&self.ctx, tau))
+        self.stiffness.at(tau, self.ctx.geometry.pairs_at(tau))
     }
 
     /// f(t), the friction term of the external and internal formulations.
@@ -180,7 +138,7 @@ impl<'a> SdofSystem<'a> {
         // A law that diverges at P is capped as in the internal efficiency formulation
         // (crate::efficiency::INTERNAL_MU_CAP), so that 1 − f never vanishes. Each contact carries its
         // force share 1/n of the tooth force, whatever load its law sees (`load_sharing`).
-        for c in &contacts_at(&self.ctx, tau) {
+        for c in &self.ctx.mesh().contacts_at(tau) {
             let m = self.friction_mu(c) * c.force_share;
             gp -= m * c.u;
             gw += m * (g.line_of_action_length - c.u);
@@ -238,7 +196,7 @@ impl<'a> SdofSystem<'a> {
             && self.stiffness.is_piecewise_constant()
             && match self.formulation {
                 DynamicFormulation::Base => true,
-                DynamicFormulation::External => self.law.is_none_or(|l| matches!(l.id(), "coulomb" | "iso_14179_2")),
+                DynamicFormulation::External => self.law.is_none_or(|l| l.constant_magnitude()),
                 DynamicFormulation::Internal => self.law.is_none(),
             }
     }

@@ -1,8 +1,79 @@
-//! The names of the friction laws a scene may ask for, their arguments and what they need from the scene.
+//! The catalogue of friction laws: each law's typed identity ([`LawId`]), the name a scene writes,
+//! its arguments and what it needs from the scene, and its own constructor.
 //!
-//! Lowering checks `friction { ... }` against this table; the laws themselves live one per file.
+//! Lowering checks `friction { ... }` against this table and produces [`FrictionLawSpec`]s; evaluation
+//! builds a law for an operating point with [`FrictionLawSpec::build`]. The laws live one per file.
 
-use crate::scene::units::Dimension;
+use serde::Serialize;
+
+use super::{FrictionLaw, LawContext};
+use crate::diagnostics::Span;
+use crate::quantity::Dimension;
+
+/// The typed identity of a law of the catalogue (serialised as its scene name).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LawId {
+    Coulomb,
+    BenedictKelley,
+    BenedictKelleyBernard,
+    Xu,
+    SmoothedCoulomb,
+    Composite,
+    Misharin,
+    ODonoghueCameron,
+    DrozdovGavrikov,
+    Iso14179_2,
+    Matsumoto,
+}
+
+impl LawId {
+    /// The catalogue entry of this law.
+    pub fn entry(self) -> &'static LawEntry {
+        &LAWS[self as usize]
+    }
+
+    /// The name a scene writes (`coulomb`), also used in report.json.
+    pub fn name(self) -> &'static str {
+        self.entry().name
+    }
+}
+
+impl std::fmt::Display for LawId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl Serialize for LawId {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+/// A friction law named in the `friction` block (or the dynamics block), with its arguments as given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionLawSpec {
+    pub law: LawId,
+    /// (argument name, SI value, as written)
+    pub arguments: Vec<(String, f64, String)>,
+    pub span: Span,
+}
+
+impl FrictionLawSpec {
+    pub fn argument(&self, name: &str) -> Option<f64> {
+        self.arguments.iter().find(|(n, _, _)| n == name).map(|(_, v, _)| *v)
+    }
+
+    /// The argument in SI; lowering has filled in every default and checked every required one.
+    fn arg(&self, name: &str) -> f64 {
+        self.argument(name).unwrap_or(f64::NAN)
+    }
+
+    /// Builds the law for one operating point, by the constructor of its catalogue entry.
+    pub fn build(&self, ctx: &LawContext) -> Box<dyn FrictionLaw> {
+        (self.law.entry().build)(self, ctx)
+    }
+}
 
 /// Something a law reads from the scene, named by the key the user writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -46,10 +117,14 @@ pub struct LawArgument {
 /// One entry of the catalogue.
 #[derive(Debug, Clone, Copy)]
 pub struct LawEntry {
-    pub id: &'static str,
+    pub id: LawId,
+    /// The name a scene writes.
+    pub name: &'static str,
     pub title: &'static str,
     pub arguments: &'static [LawArgument],
     pub needs: &'static [Needs],
+    /// Builds the law at one operating point from the lowered arguments.
+    pub build: fn(&FrictionLawSpec, &LawContext) -> Box<dyn FrictionLaw>,
 }
 
 const fn arg(name: &'static str, dimension: Dimension, default: Option<f64>, what: &'static str) -> LawArgument {
@@ -61,35 +136,51 @@ use Needs::*;
 /// Every law a `.gear` file can name.
 pub const LAWS: &[LawEntry] = &[
     LawEntry {
-        id: "coulomb",
+        id: LawId::Coulomb,
+        name: "coulomb",
         title: "Coulomb (Model I)",
         arguments: &[arg("mu", Dimension::NONE, None, "coefficient of friction")],
         needs: &[],
+        build: |s, _| Box::new(super::coulomb::Coulomb { mu: s.arg("mu") }),
     },
     LawEntry {
-        id: "benedict_kelley",
+        id: LawId::BenedictKelley,
+        name: "benedict_kelley",
         title: "Benedict–Kelley (He–Cho–Singh eq 14)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
+        build: |_, ctx| Box::new(super::benedict_kelley::BenedictKelley::new(&ctx.tribology)),
     },
     LawEntry {
-        id: "benedict_kelley_bernard",
+        id: LawId::BenedictKelleyBernard,
+        name: "benedict_kelley_bernard",
         title: "Benedict–Kelley (Bernard Table 1)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRq],
+        build: |_, ctx| Box::new(super::benedict_kelley_bernard::BenedictKelleyBernard::new(&ctx.tribology)),
     },
-    LawEntry { id: "xu", title: "Xu et al. (Model III)", arguments: &[], needs: &[Lubricant, RoughnessRa] },
     LawEntry {
-        id: "smoothed_coulomb",
+        id: LawId::Xu,
+        name: "xu",
+        title: "Xu et al. (Model III)",
+        arguments: &[],
+        needs: &[Lubricant, RoughnessRa],
+        build: |_, ctx| Box::new(super::xu::Xu::new(&ctx.tribology)),
+    },
+    LawEntry {
+        id: LawId::SmoothedCoulomb,
+        name: "smoothed_coulomb",
         title: "smoothed Coulomb (Model IV)",
         arguments: &[
             arg("mu", Dimension::NONE, None, "coefficient of friction"),
             arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "smoothing factor Φ"),
         ],
         needs: &[],
+        build: |s, _| Box::new(super::smoothed_coulomb::SmoothedCoulomb { mu: s.arg("mu"), phi: s.arg("phi") }),
     },
     LawEntry {
-        id: "composite",
+        id: LawId::Composite,
+        name: "composite",
         title: "composite (Model V)",
         arguments: &[
             arg("filter_cutoff", Dimension::LENGTH, Some(0.8e-3), "roughness filter cut-off L_x"),
@@ -97,37 +188,58 @@ pub const LAWS: &[LawEntry] = &[
             arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "Model IV smoothing factor Φ"),
         ],
         needs: &[Lubricant, RoughnessRa, RoughnessRq, PressureViscosity],
+        build: |s, ctx| {
+            Box::new(super::composite::Composite::new(ctx, s.arg("filter_cutoff"), s.arg("mu"), s.arg("phi")))
+        },
     },
-    LawEntry { id: "misharin", title: "Misharin", arguments: &[], needs: &[Lubricant, KinematicViscosity] },
     LawEntry {
-        id: "odonoghue_cameron",
+        id: LawId::Misharin,
+        name: "misharin",
+        title: "Misharin",
+        arguments: &[],
+        needs: &[Lubricant, KinematicViscosity],
+        build: |_, ctx| Box::new(super::misharin::Misharin::new(&ctx.tribology)),
+    },
+    LawEntry {
+        id: LawId::ODonoghueCameron,
+        name: "odonoghue_cameron",
         title: "O'Donoghue–Cameron",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa, KinematicViscosity],
+        build: |_, ctx| Box::new(super::odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology)),
     },
     LawEntry {
-        id: "drozdov_gavrikov",
+        id: LawId::DrozdovGavrikov,
+        name: "drozdov_gavrikov",
         title: "Drozdov–Gavrikov (low confidence)",
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
+        build: |_, ctx| Box::new(super::drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology)),
     },
     LawEntry {
-        id: "iso_14179_2",
+        id: LawId::Iso14179_2,
+        name: "iso_14179_2",
         title: "ISO/TR 14179-2 (Niemann–Schlenk)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
+        build: |_, ctx| Box::new(super::iso_14179_2::Iso14179_2::new(ctx)),
     },
     LawEntry {
-        id: "matsumoto",
+        id: LawId::Matsumoto,
+        name: "matsumoto",
         title: "Matsumoto (mixed regime)",
         arguments: &[
             arg("mu_boundary", Dimension::NONE, Some(0.1), "boundary friction coefficient"),
             arg("mu_ehl", Dimension::NONE, Some(0.02), "full-film friction coefficient"),
         ],
         needs: &[Lubricant, RoughnessRz, PressureViscosity],
+        build: |s, ctx| {
+            Box::new(super::matsumoto::Matsumoto::new(&ctx.tribology, s.arg("mu_boundary"), s.arg("mu_ehl")))
+        },
     },
 ];
 
-pub fn entry(id: &str) -> Option<&'static LawEntry> {
-    LAWS.iter().find(|l| l.id == id)
+/// The entry a scene names, by its written name.
+pub fn entry(name: &str) -> Option<&'static LawEntry> {
+    LAWS.iter().find(|l| l.name == name)
 }

@@ -10,8 +10,11 @@ pub struct Coulomb {
 }
 
 impl FrictionLaw for Coulomb {
-    fn id(&self) -> &'static str {
-        "coulomb"
+    fn constant_magnitude(&self) -> bool {
+        true
+    }
+    fn id(&self) -> super::catalog::LawId {
+        super::catalog::LawId::Coulomb
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.mu, c.s)

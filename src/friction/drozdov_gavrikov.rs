@@ -35,8 +35,8 @@ impl DrozdovGavrikov {
 }
 
 impl FrictionLaw for DrozdovGavrikov {
-    fn id(&self) -> &'static str {
-        "drozdov_gavrikov"
+    fn id(&self) -> super::catalog::LawId {
+        super::catalog::LawId::DrozdovGavrikov
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

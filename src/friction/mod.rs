@@ -33,8 +33,7 @@ pub mod xu;
 use serde::Serialize;
 
 use crate::geometry::contact::Sharing;
-use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
-use crate::model::FrictionLawSpec;
+use crate::geometry::{ContactPoint, Mesh, OperatingState, SpurGeometry};
 use crate::tribology::Tribology;
 
 /// Everything a law may read at one operating point.
@@ -47,16 +46,24 @@ pub struct LawContext<'a> {
 }
 
 impl LawContext<'_> {
+    /// The pair at this operating point: the contact states of its mesh cycle.
+    pub fn mesh(&self) -> Mesh<'_> {
+        Mesh {
+            pair: self.geometry,
+            state: self.state,
+            reduced_modulus: self.tribology.reduced_modulus,
+            sharing: self.sharing,
+        }
+    }
+
     /// The contact state at `u` (from T1).
     pub fn contact_at(&self, u: f64) -> ContactPoint {
-        self.geometry.contact_at(u, &self.state, self.tribology.reduced_modulus, self.sharing)
+        self.mesh().contact_at(u)
     }
 
     /// The contact state at distance `s` from the pitch point, with `s` exact (for integrands near P).
     pub fn contact_at_offset(&self, s: f64) -> ContactPoint {
-        let g = self.geometry;
-        let u = g.points.p + s;
-        g.contact_exact(u, s, &self.state, self.tribology.reduced_modulus, self.sharing, g.pairs_in_contact(u))
+        self.mesh().contact_at_offset(s)
     }
 }
 
@@ -82,8 +89,8 @@ pub struct Parameter {
 
 /// A coefficient-of-friction law along the line of action.
 pub trait FrictionLaw: Send + Sync {
-    /// The id used in `.gear` files and report.json.
-    fn id(&self) -> &'static str;
+    /// The law's identity in the catalogue.
+    fn id(&self) -> catalog::LawId;
     /// Signed μ at a contact; 0 at s = 0 exactly.
     fn mu(&self, c: &ContactPoint) -> f64;
     /// `Err(reason)` where the contact lies outside the law's stated validity range.
@@ -97,6 +104,11 @@ pub trait FrictionLaw: Send + Sync {
     /// been pushed (by a viscosity, speed or load far outside its data) beyond the physics it fits.
     fn plausible_max(&self) -> f64 {
         0.3
+    }
+    /// True when |μ| is the same at every contact off the pitch point (Coulomb, ISO/TR 14179-2): then
+    /// the friction forcing of the external formulation is piecewise affine in time.
+    fn constant_magnitude(&self) -> bool {
+        false
     }
     fn diverges_at_pitch(&self) -> bool {
         false
@@ -137,26 +149,6 @@ pub fn signed(magnitude: f64, s: f64) -> f64 {
         -magnitude
     } else {
         0.0
-    }
-}
-
-/// Builds the law a scene names, for one operating point. The catalogue and lowering have checked
-/// that every input it needs is present.
-pub fn build(spec: &FrictionLawSpec, ctx: &LawContext) -> Box<dyn FrictionLaw> {
-    let arg = |name: &str| spec.argument(name).unwrap_or(f64::NAN);
-    match spec.id.as_str() {
-        "coulomb" => Box::new(coulomb::Coulomb { mu: arg("mu") }),
-        "benedict_kelley" => Box::new(benedict_kelley::BenedictKelley::new(&ctx.tribology)),
-        "benedict_kelley_bernard" => Box::new(benedict_kelley_bernard::BenedictKelleyBernard::new(&ctx.tribology)),
-        "xu" => Box::new(xu::Xu::new(&ctx.tribology)),
-        "smoothed_coulomb" => Box::new(smoothed_coulomb::SmoothedCoulomb { mu: arg("mu"), phi: arg("phi") }),
-        "composite" => Box::new(composite::Composite::new(ctx, arg("filter_cutoff"), arg("mu"), arg("phi"))),
-        "misharin" => Box::new(misharin::Misharin::new(&ctx.tribology)),
-        "odonoghue_cameron" => Box::new(odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology)),
-        "drozdov_gavrikov" => Box::new(drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology)),
-        "iso_14179_2" => Box::new(iso_14179_2::Iso14179_2::new(ctx)),
-        "matsumoto" => Box::new(matsumoto::Matsumoto::new(&ctx.tribology, arg("mu_boundary"), arg("mu_ehl"))),
-        other => unreachable!("lowering accepts only catalogued laws, got {other}"),
     }
 }
 

@@ -33,8 +33,8 @@ impl SmoothedCoulomb {
 }
 
 impl FrictionLaw for SmoothedCoulomb {
-    fn id(&self) -> &'static str {
-        "smoothed_coulomb"
+    fn id(&self) -> super::catalog::LawId {
+        super::catalog::LawId::SmoothedCoulomb
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         self.at(c.s)

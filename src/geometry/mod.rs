@@ -3,7 +3,10 @@
 //! Knows nothing of scenes, friction or reports: it takes a [`spur::SpurPairInput`] and gives numbers.
 
 pub mod contact;
+pub mod mesh;
 pub mod spur;
+pub mod stiffness;
 
 pub use contact::{ContactPoint, OperatingState};
+pub use mesh::{Contacts, Mesh};
 pub use spur::{involute, GeometryProblem, PairPart, SpurGeometry, SpurPairInput, TipSource};

@@ -319,7 +319,7 @@ pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
     let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     for op in &r.operating_points {
         let rpm = op.pinion_speed.si() * 30.0 / std::f64::consts::PI;
-        for law in op.friction.iter().filter(|l| l.law == "composite") {
+        for law in op.friction.iter().filter(|l| l.law == crate::friction::catalog::LawId::Composite) {
             let label = format!("{} @ {:.1} N·m", law.label, op.pinion_torque.si());
             match series.iter_mut().find(|(l, _)| *l == label) {
                 Some((_, v)) => v.push((rpm, law.mean_abs_mu.0)),

@@ -85,7 +85,7 @@ pub struct EfficiencyReport {
 /// One law at one operating point.
 #[derive(Debug, Clone, Serialize)]
 pub struct LawReport {
-    pub law: &'static str,
+    pub law: crate::friction::catalog::LawId,
     /// As written in the scene, e.g. `coulomb(mu = 0.04)`.
     pub label: String,
     pub title: &'static str,
@@ -115,7 +115,7 @@ pub struct FilmRow {
 /// One record per (operating point, law, formulation): the flat table of a sweep.
 #[derive(Debug, Clone, Serialize)]
 pub struct EfficiencyRecord {
-    pub law: &'static str,
+    pub law: crate::friction::catalog::LawId,
     pub label: String,
     pub formulation: Formulation,
     pub pinion_torque: Q,
@@ -131,9 +131,9 @@ pub fn law_label(spec: &FrictionLawSpec) -> String {
     let args: Vec<String> =
         spec.arguments.iter().filter(|(_, _, w)| w != "default").map(|(n, _, w)| format!("{n} = {w}")).collect();
     if args.is_empty() {
-        spec.id.clone()
+        spec.law.name().to_string()
     } else {
-        format!("{}({})", spec.id, args.join(", "))
+        format!("{}({})", spec.law.name(), args.join(", "))
     }
 }
 
@@ -309,8 +309,8 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
 }
 
 /// The laws whose `mu` takes two or more values in the report (a μ sweep).
-pub fn mu_swept_laws(records: &[EfficiencyRecord]) -> Vec<&'static str> {
-    let mut out: Vec<&'static str> = Vec::new();
+pub fn mu_swept_laws(records: &[EfficiencyRecord]) -> Vec<crate::friction::catalog::LawId> {
+    let mut out = Vec::new();
     for rec in records {
         if out.contains(&rec.law) {
             continue;

@@ -606,7 +606,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
         }
     }
     if sweeps.pinion_speed.values.len() > 1
-        && scene.friction.iter().any(|l| l.id == "composite")
+        && scene.friction.iter().any(|l| l.law == crate::friction::catalog::LawId::Composite)
         && !eval.points[0].laws.is_empty()
     {
         report.plots.push(PlotRef {

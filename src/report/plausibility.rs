@@ -38,7 +38,7 @@ pub fn plausibility_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
                     out.push(warn(format!(
                         "operating point {} ({label}), {} ({f}): efficiency outside [0, 1] (η̄ = {:.6}, η from {:.6} to {:.6}): the law gives friction no gear mesh can have here",
                         k + 1,
-                        law.id,
+                        law.id.name(),
                         e.mean.value,
                         e.min,
                         e.max
@@ -48,7 +48,7 @@ pub fn plausibility_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
                     out.push(warn(format!(
                         "operating point {} ({label}), {} ({f}): power loss {:.3} W above the input power {:.3} W",
                         k + 1,
-                        law.id,
+                        law.id.name(),
                         e.power_loss,
                         input
                     )));

@@ -1,25 +1,6 @@
 //! The syntax tree of a `.gear` file: what was written, with spans, before any name or unit is checked.
 
-use serde::Serialize;
-
-/// A byte range in the scene source.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
-pub struct Span {
-    pub start: usize,
-    pub end: usize,
-}
-
-impl Span {
-    pub fn new(start: usize, end: usize) -> Self {
-        Span { start, end }
-    }
-    pub fn len(&self) -> usize {
-        self.end - self.start
-    }
-    pub fn is_empty(&self) -> bool {
-        self.end == self.start
-    }
-}
+pub use crate::diagnostics::Span;
 
 impl From<pest::Span<'_>> for Span {
     fn from(s: pest::Span<'_>) -> Self {

@@ -4,8 +4,8 @@
 use std::collections::BTreeMap;
 
 use super::ast::*;
-use super::diagnostics::{Diagnostic, DiagnosticKind};
 use super::units::{self, Dimension, Scale, SiQuantity, UnitError};
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::{Given, Sweep};
 
 /// Sweeps longer than this are refused (a typo in a step, not a study).
@@ -226,7 +226,7 @@ pub fn checked_scale(
         let hint = if expected == Dimension::NONE {
             format!("`{key}` is a plain number: drop the unit")
         } else {
-            format!("use a unit of {} such as {}", expected.name(), expected.example_units())
+            format!("use a unit of {} such as {}", expected.name(), super::units::example_units(expected))
         };
         errors.push(Diagnostic::new(DiagnosticKind::WrongDimension, span, reason).hint(hint));
         return None;

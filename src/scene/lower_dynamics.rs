@@ -3,9 +3,9 @@
 use std::path::Path;
 
 use super::ast::*;
-use super::diagnostics::{Diagnostic, DiagnosticKind};
 use super::fields::{scalar, sweep_values, unknown_name, Fields};
 use super::units::Dimension;
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::dynamics::DynamicFormulation;
 use crate::model::{AngularVelocity, DynamicsSpec, Solver, StiffnessSpec, Sweep};
 use crate::scene::units::SiQuantity;
@@ -59,7 +59,7 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
                     laws.pop()
                 }
                 None => {
-                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.id).collect();
+                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.name).collect();
                     errors.push(unknown_name("law for `friction`", &c.name, &ids));
                     return None;
                 }

@@ -2,13 +2,13 @@
 //! (known, right dimension, defaults filled in, one argument swept), and the inputs each law needs.
 
 use super::ast::*;
-use super::diagnostics::{Diagnostic, DiagnosticKind};
 use super::fields::{format_number, unknown_name, Fields};
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::friction::catalog;
 use crate::model::*;
 
 pub(super) fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
-    let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id).collect();
+    let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.name).collect();
     let f = Fields::read("the `friction` block", block.span, &block.items, &[], &[], &ids, errors);
     f.calls.iter().flat_map(|c| lower_law(c, errors)).collect()
 }
@@ -25,7 +25,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
     let mut ok = true;
     for (name, value) in &call.arguments {
         let Some(spec) = entry.arguments.iter().find(|a| a.name == name.text) else {
-            errors.push(unknown_name(&format!("argument of `{}`", entry.id), name, &names));
+            errors.push(unknown_name(&format!("argument of `{}`", entry.name), name, &names));
             ok = false;
             continue;
         };
@@ -46,7 +46,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
                         Diagnostic::new(
                             DiagnosticKind::OutOfRange,
                             value.span,
-                            format!("`{}` sweeps a second argument", entry.id),
+                            format!("`{}` sweeps a second argument", entry.name),
                         )
                         .hint("a law may sweep one argument; write a second law for another sweep"),
                     );
@@ -96,9 +96,9 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
                     Diagnostic::new(
                         DiagnosticKind::MissingKey,
                         call.span,
-                        format!("`{}` needs `{}` ({})", entry.id, spec.name, spec.what),
+                        format!("`{}` needs `{}` ({})", entry.name, spec.name, spec.what),
                     )
-                    .hint(format!("write `{}({} = ...)`", entry.id, spec.name)),
+                    .hint(format!("write `{}({} = ...)`", entry.name, spec.name)),
                 );
                 ok = false;
             }
@@ -108,13 +108,13 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
         return Vec::new();
     }
     match swept {
-        None => vec![FrictionLawSpec { id: entry.id.to_string(), arguments, span: call.span }],
+        None => vec![FrictionLawSpec { law: entry.id, arguments, span: call.span }],
         Some((name, values)) => values
             .into_iter()
             .map(|(x, w)| {
                 let mut args = arguments.clone();
                 args.insert(0, (name.clone(), x, w));
-                FrictionLawSpec { id: entry.id.to_string(), arguments: args, span: call.span }
+                FrictionLawSpec { law: entry.id, arguments: args, span: call.span }
             })
             .collect(),
     }
@@ -127,9 +127,7 @@ pub(super) fn check_friction_needs(
     errors: &mut Vec<Diagnostic>,
 ) {
     for law in laws {
-        let Some(entry) = catalog::entry(&law.id) else {
-            continue;
-        };
+        let entry = law.law.entry();
         for need in entry.needs {
             let both = |get: fn(&Gear) -> bool| get(&gears.pinion) && get(&gears.wheel);
             let present = match need {
@@ -157,7 +155,7 @@ pub(super) fn check_friction_needs(
                     Diagnostic::new(
                         DiagnosticKind::MissingKey,
                         law.span,
-                        format!("`{}` needs `{}`, which the scene lacks", law.id, need.key()),
+                        format!("`{}` needs `{}`, which the scene lacks", entry.name, need.key()),
                     )
                     .hint(hint),
                 );

@@ -6,9 +6,9 @@ use std::collections::BTreeMap;
 use uom::si::length::meter;
 
 use super::ast::*;
-use super::diagnostics::{Diagnostic, DiagnosticKind};
 use super::fields::Fields;
 use super::units::Dimension;
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::geometry::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput};
 use crate::model::*;
 

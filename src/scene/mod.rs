@@ -1,7 +1,6 @@
 //! The `.gear` language: grammar, syntax tree, units, diagnostics and lowering.
 
 pub mod ast;
-pub mod diagnostics;
 pub mod fields;
 pub mod lower;
 pub mod lower_dynamics;

@@ -8,7 +8,7 @@ use pest::Parser;
 use pest_derive::Parser;
 
 use super::ast::*;
-use super::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
 
 #[derive(Parser)]
 #[grammar = "../grammar/gear.pest"]

@@ -10,143 +10,7 @@
 use std::f64::consts::PI;
 use std::fmt;
 
-/// Exponents of length, mass, time, temperature and plane angle.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Dimension {
-    pub length: i8,
-    pub mass: i8,
-    pub time: i8,
-    pub temperature: i8,
-    pub angle: i8,
-}
-
-const fn dim(length: i8, mass: i8, time: i8, temperature: i8, angle: i8) -> Dimension {
-    Dimension { length, mass, time, temperature, angle }
-}
-
-impl Dimension {
-    pub const NONE: Dimension = dim(0, 0, 0, 0, 0);
-    pub const LENGTH: Dimension = dim(1, 0, 0, 0, 0);
-    pub const RECIPROCAL_LENGTH: Dimension = dim(-1, 0, 0, 0, 0);
-    pub const MASS: Dimension = dim(0, 1, 0, 0, 0);
-    pub const TIME: Dimension = dim(0, 0, 1, 0, 0);
-    pub const TEMPERATURE: Dimension = dim(0, 0, 0, 1, 0);
-    pub const ANGLE: Dimension = dim(0, 0, 0, 0, 1);
-    pub const FORCE: Dimension = dim(1, 1, -2, 0, 0);
-    pub const TORQUE: Dimension = dim(2, 1, -2, 0, 0);
-    pub const ANGULAR_VELOCITY: Dimension = dim(0, 0, -1, 0, 1);
-    pub const PRESSURE: Dimension = dim(-1, 1, -2, 0, 0);
-    pub const RECIPROCAL_PRESSURE: Dimension = dim(1, -1, 2, 0, 0);
-    pub const DYNAMIC_VISCOSITY: Dimension = dim(-1, 1, -1, 0, 0);
-    pub const KINEMATIC_VISCOSITY: Dimension = dim(2, 0, -1, 0, 0);
-    pub const DENSITY: Dimension = dim(-3, 1, 0, 0, 0);
-    pub const MOMENT_OF_INERTIA: Dimension = dim(2, 1, 0, 0, 0);
-    pub const STIFFNESS: Dimension = dim(0, 1, -2, 0, 0);
-    pub const POWER: Dimension = dim(2, 1, -3, 0, 0);
-    pub const VELOCITY: Dimension = dim(1, 0, -1, 0, 0);
-    pub const FREQUENCY: Dimension = dim(0, 0, -1, 0, 0);
-
-    pub fn pow(self, e: i32) -> Dimension {
-        let e = e.clamp(-127, 127) as i8;
-        let p = |x: i8| x.saturating_mul(e);
-        dim(p(self.length), p(self.mass), p(self.time), p(self.temperature), p(self.angle))
-    }
-
-    pub fn times(self, o: Dimension) -> Dimension {
-        dim(
-            self.length.saturating_add(o.length),
-            self.mass.saturating_add(o.mass),
-            self.time.saturating_add(o.time),
-            self.temperature.saturating_add(o.temperature),
-            self.angle.saturating_add(o.angle),
-        )
-    }
-
-    /// What a gear engineer calls a quantity of this dimension.
-    pub fn name(self) -> &'static str {
-        NAMED.iter().find(|(d, _)| *d == self).map_or("quantity", |(_, n)| n)
-    }
-
-    /// An example unit of this dimension, for hints.
-    pub fn example_units(self) -> String {
-        let names: Vec<&str> = UNITS.iter().filter(|u| u.dimension == self).map(|u| u.name).take(6).collect();
-        if names.is_empty() {
-            self.si_unit().to_string()
-        } else {
-            names.join(", ")
-        }
-    }
-
-    /// The SI unit written in reports and report.json.
-    pub fn si_unit(self) -> String {
-        if let Some((_, s)) = SI_NAMES.iter().find(|(d, _)| *d == self) {
-            return (*s).to_string();
-        }
-        let mut num = Vec::new();
-        let mut den = Vec::new();
-        for (sym, e) in
-            [("kg", self.mass), ("m", self.length), ("s", self.time), ("K", self.temperature), ("rad", self.angle)]
-        {
-            match e {
-                0 => {}
-                1 => num.push(sym.to_string()),
-                e if e > 0 => num.push(format!("{sym}^{e}")),
-                -1 => den.push(sym.to_string()),
-                e => den.push(format!("{sym}^{}", -e)),
-            }
-        }
-        match (num.is_empty(), den.is_empty()) {
-            (true, true) => "1".into(),
-            (false, true) => num.join("*"),
-            (true, false) => format!("1/{}", den.join("/")),
-            (false, false) => format!("{}/{}", num.join("*"), den.join("/")),
-        }
-    }
-}
-
-const NAMED: &[(Dimension, &str)] = &[
-    (Dimension::NONE, "dimensionless number"),
-    (Dimension::LENGTH, "length"),
-    (Dimension::RECIPROCAL_LENGTH, "reciprocal length"),
-    (Dimension::MASS, "mass"),
-    (Dimension::TIME, "time"),
-    (Dimension::TEMPERATURE, "temperature"),
-    (Dimension::ANGLE, "angle"),
-    (Dimension::FORCE, "force"),
-    (Dimension::TORQUE, "torque"),
-    (Dimension::ANGULAR_VELOCITY, "rotational speed"),
-    (Dimension::PRESSURE, "pressure or elastic modulus"),
-    (Dimension::RECIPROCAL_PRESSURE, "reciprocal pressure"),
-    (Dimension::DYNAMIC_VISCOSITY, "dynamic viscosity"),
-    (Dimension::KINEMATIC_VISCOSITY, "kinematic viscosity"),
-    (Dimension::DENSITY, "density"),
-    (Dimension::MOMENT_OF_INERTIA, "moment of inertia"),
-    (Dimension::STIFFNESS, "stiffness"),
-    (Dimension::POWER, "power"),
-    (Dimension::VELOCITY, "velocity"),
-    (Dimension::FREQUENCY, "frequency"),
-];
-
-const SI_NAMES: &[(Dimension, &str)] = &[
-    (Dimension::NONE, "1"),
-    (Dimension::LENGTH, "m"),
-    (Dimension::RECIPROCAL_LENGTH, "1/m"),
-    (Dimension::ANGLE, "rad"),
-    (Dimension::FORCE, "N"),
-    (Dimension::TORQUE, "N*m"),
-    (Dimension::ANGULAR_VELOCITY, "rad/s"),
-    (Dimension::PRESSURE, "Pa"),
-    (Dimension::RECIPROCAL_PRESSURE, "1/Pa"),
-    (Dimension::DYNAMIC_VISCOSITY, "Pa*s"),
-    (Dimension::KINEMATIC_VISCOSITY, "m^2/s"),
-    (Dimension::DENSITY, "kg/m^3"),
-    (Dimension::MOMENT_OF_INERTIA, "kg*m^2"),
-    (Dimension::STIFFNESS, "N/m"),
-    (Dimension::POWER, "W"),
-    (Dimension::VELOCITY, "m/s"),
-    (Dimension::FREQUENCY, "Hz"),
-    (Dimension::TEMPERATURE, "K"),
-];
+pub use crate::quantity::Dimension;
 
 /// One named unit.
 #[derive(Debug, Clone, Copy)]
@@ -246,6 +110,16 @@ pub const UNITS: &[UnitDef] = &[
     c("kW", 1e3, Dimension::POWER, (1e3, "W"), "kilowatt"),
     c("hp", 550.0 * LBF * 12.0 * INCH, Dimension::POWER, (550.0, "lbf*ft/s"), "horsepower (mechanical)"),
 ];
+
+/// Example units of a dimension from the table, for hints.
+pub fn example_units(dimension: Dimension) -> String {
+    let names: Vec<&str> = UNITS.iter().filter(|u| u.dimension == dimension).map(|u| u.name).take(6).collect();
+    if names.is_empty() {
+        dimension.si_unit()
+    } else {
+        names.join(", ")
+    }
+}
 
 /// Looks a unit name up in the table.
 pub fn lookup(name: &str) -> Option<&'static UnitDef> {

@@ -112,7 +112,7 @@ fn nasa_scene_benedict_kelley_balances_on_the_normal_load() {
     let scene = crate::scene(&crate::root().join("specs/composite_speed_sweep.gear"));
     let eval = gearloss::evaluate(&scene);
     let point = &eval.points[0];
-    let bk = point.laws.iter().find(|l| l.id == "benedict_kelley").expect("benedict_kelley evaluated");
+    let bk = point.laws.iter().find(|l| l.id.name() == "benedict_kelley").expect("benedict_kelley evaluated");
     let eta = 100.0 * bk.efficiency[0].mean.value;
     assert!((eta - 98.765).abs() < 1e-3, "η̄ = {eta}");
 }
@@ -123,8 +123,8 @@ fn efficiency_range_is_located() {
     let scene = crate::scene(&crate::root().join("specs/composite_speed_sweep.gear"));
     let eval = gearloss::evaluate(&scene);
     let ctx = eval.law_context(eval.points[0].state);
-    let k = scene.friction.iter().position(|l| l.id == "benedict_kelley").unwrap();
-    let law = gearloss::friction::build(&scene.friction[k], &ctx);
+    let k = scene.friction.iter().position(|l| l.law.name() == "benedict_kelley").unwrap();
+    let law = scene.friction[k].build(&ctx);
     let scan =
         (0..100_000).map(|i| efficiency_at(&ctx, law.as_ref(), External, i as f64 / 1e5)).fold(f64::INFINITY, f64::min);
     let located = eval.points[0].laws[k].efficiency[0].min;

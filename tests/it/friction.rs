@@ -16,7 +16,29 @@ fn spec(name: &str) -> gearloss::Scene {
 }
 
 fn law_index(scene: &gearloss::Scene, id: &str) -> usize {
-    scene.friction.iter().position(|l| l.id == id).unwrap()
+    scene.friction.iter().position(|l| l.law.name() == id).unwrap()
+}
+
+/// Every catalogue entry sits at the index of its typed identity, has a unique scene name, and its
+/// constructor builds a law that reports that identity.
+#[test]
+fn catalogue_entries_build_the_law_they_name() {
+    use gearloss::friction::catalog::LAWS;
+    let scene = spec("fzg_type_c.gear");
+    let eval = evaluate_scene(&scene);
+    let ctx = eval.law_context(eval.points[0].state);
+    for (i, entry) in LAWS.iter().enumerate() {
+        assert_eq!(entry.id as usize, i, "{}", entry.name);
+        assert_eq!(entry.id.name(), entry.name);
+        assert_eq!(LAWS.iter().filter(|e| e.name == entry.name).count(), 1);
+        let arguments = entry.arguments.iter().map(|a| (a.name.to_string(), a.default.unwrap_or(0.05), String::new()));
+        let spec = gearloss::model::FrictionLawSpec {
+            law: entry.id,
+            arguments: arguments.collect(),
+            span: Default::default(),
+        };
+        assert_eq!(spec.build(&ctx).id(), entry.id);
+    }
 }
 
 /// He–Cho–Singh's 29700 is Benedict and Kelley's 3.17e8 (lb/in, cP, in/s) in N/mm, cP, m/s:
@@ -152,7 +174,7 @@ fn composite_switches_regime_where_lambda_crosses_1_and_4() {
             seen.insert(format!("{r:?}"));
         }
         let ctx = eval.law_context(pe.state);
-        let built = gearloss::friction::build(&scene.friction[k], &ctx);
+        let built = scene.friction[k].build(&ctx);
         let g = &eval.geometry.points;
         for u in &law.switch_points {
             let inside_zone = (u - g.b).abs() > 1e-7 && (u - g.d).abs() > 1e-7;
