@@ -52,8 +52,8 @@ impl BenedictKelley {
 }
 
 impl FrictionLaw for BenedictKelley {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::BenedictKelley
+    fn id(&self) -> super::LawId {
+        super::LawId::BenedictKelley
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c).max(0.0), c.s)

@@ -35,8 +35,8 @@ impl BenedictKelleyBernard {
 }
 
 impl FrictionLaw for BenedictKelleyBernard {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::BenedictKelleyBernard
+    fn id(&self) -> super::LawId {
+        super::LawId::BenedictKelleyBernard
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c).max(0.0), c.s)

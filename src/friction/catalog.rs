@@ -4,49 +4,15 @@
 //! Lowering checks `friction { ... }` against this table and produces [`FrictionLawSpec`]s; evaluation
 //! builds a law for an operating point with [`FrictionLawSpec::build`]. The laws live one per file.
 
-use serde::Serialize;
-
+pub use super::law_id::LawId;
 use super::{FrictionLaw, LawContext};
 use crate::diagnostics::Span;
 use crate::quantity::Dimension;
-
-/// The typed identity of a law of the catalogue (serialised as its scene name).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum LawId {
-    Coulomb,
-    BenedictKelley,
-    BenedictKelleyBernard,
-    Xu,
-    SmoothedCoulomb,
-    Composite,
-    Misharin,
-    ODonoghueCameron,
-    DrozdovGavrikov,
-    Iso14179_2,
-    Matsumoto,
-}
 
 impl LawId {
     /// The catalogue entry of this law.
     pub fn entry(self) -> &'static LawEntry {
         &LAWS[self as usize]
-    }
-
-    /// The name a scene writes (`coulomb`), also used in report.json.
-    pub fn name(self) -> &'static str {
-        self.entry().name
-    }
-}
-
-impl std::fmt::Display for LawId {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl Serialize for LawId {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
     }
 }
 
@@ -118,8 +84,6 @@ pub struct LawArgument {
 #[derive(Debug, Clone, Copy)]
 pub struct LawEntry {
     pub id: LawId,
-    /// The name a scene writes.
-    pub name: &'static str,
     pub title: &'static str,
     pub arguments: &'static [LawArgument],
     pub needs: &'static [Needs],
@@ -137,7 +101,6 @@ use Needs::*;
 pub const LAWS: &[LawEntry] = &[
     LawEntry {
         id: LawId::Coulomb,
-        name: "coulomb",
         title: "Coulomb (Model I)",
         arguments: &[arg("mu", Dimension::NONE, None, "coefficient of friction")],
         needs: &[],
@@ -145,7 +108,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::BenedictKelley,
-        name: "benedict_kelley",
         title: "Benedict–Kelley (He–Cho–Singh eq 14)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
@@ -153,7 +115,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::BenedictKelleyBernard,
-        name: "benedict_kelley_bernard",
         title: "Benedict–Kelley (Bernard Table 1)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRq],
@@ -161,7 +122,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::Xu,
-        name: "xu",
         title: "Xu et al. (Model III)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
@@ -169,7 +129,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::SmoothedCoulomb,
-        name: "smoothed_coulomb",
         title: "smoothed Coulomb (Model IV)",
         arguments: &[
             arg("mu", Dimension::NONE, None, "coefficient of friction"),
@@ -180,7 +139,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::Composite,
-        name: "composite",
         title: "composite (Model V)",
         arguments: &[
             arg("filter_cutoff", Dimension::LENGTH, Some(0.8e-3), "roughness filter cut-off L_x"),
@@ -194,7 +152,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::Misharin,
-        name: "misharin",
         title: "Misharin",
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
@@ -202,7 +159,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::ODonoghueCameron,
-        name: "odonoghue_cameron",
         title: "O'Donoghue–Cameron",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa, KinematicViscosity],
@@ -210,7 +166,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::DrozdovGavrikov,
-        name: "drozdov_gavrikov",
         title: "Drozdov–Gavrikov (low confidence)",
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
@@ -218,7 +173,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::Iso14179_2,
-        name: "iso_14179_2",
         title: "ISO/TR 14179-2 (Niemann–Schlenk)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
@@ -226,7 +180,6 @@ pub const LAWS: &[LawEntry] = &[
     },
     LawEntry {
         id: LawId::Matsumoto,
-        name: "matsumoto",
         title: "Matsumoto (mixed regime)",
         arguments: &[
             arg("mu_boundary", Dimension::NONE, Some(0.1), "boundary friction coefficient"),
@@ -241,5 +194,5 @@ pub const LAWS: &[LawEntry] = &[
 
 /// The entry a scene names, by its written name.
 pub fn entry(name: &str) -> Option<&'static LawEntry> {
-    LAWS.iter().find(|l| l.name == name)
+    LAWS.iter().find(|l| l.id.name() == name)
 }

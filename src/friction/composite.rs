@@ -146,8 +146,8 @@ impl Composite {
 }
 
 impl FrictionLaw for Composite {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::Composite
+    fn id(&self) -> super::LawId {
+        super::LawId::Composite
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         match Self::regime_of(self.lambda(c)) {

@@ -13,8 +13,8 @@ impl FrictionLaw for Coulomb {
     fn constant_magnitude(&self) -> bool {
         true
     }
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::Coulomb
+    fn id(&self) -> super::LawId {
+        super::LawId::Coulomb
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.mu, c.s)

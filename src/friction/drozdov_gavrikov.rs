@@ -35,8 +35,8 @@ impl DrozdovGavrikov {
 }
 
 impl FrictionLaw for DrozdovGavrikov {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::DrozdovGavrikov
+    fn id(&self) -> super::LawId {
+        super::LawId::DrozdovGavrikov
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

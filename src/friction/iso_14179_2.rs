@@ -69,8 +69,8 @@ impl FrictionLaw for Iso14179_2 {
     fn constant_magnitude(&self) -> bool {
         true
     }
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::Iso14179_2
+    fn id(&self) -> super::LawId {
+        super::LawId::Iso14179_2
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.mu_mz, c.s)

@@ -40,8 +40,8 @@ impl Matsumoto {
 }
 
 impl FrictionLaw for Matsumoto {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::Matsumoto
+    fn id(&self) -> super::LawId {
+        super::LawId::Matsumoto
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

@@ -20,8 +20,8 @@ impl Misharin {
 }
 
 impl FrictionLaw for Misharin {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::Misharin
+    fn id(&self) -> super::LawId {
+        super::LawId::Misharin
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

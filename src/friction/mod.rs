@@ -24,6 +24,7 @@ pub mod composite;
 pub mod coulomb;
 pub mod drozdov_gavrikov;
 pub mod iso_14179_2;
+pub mod law_id;
 pub mod matsumoto;
 pub mod misharin;
 pub mod odonoghue_cameron;
@@ -31,6 +32,8 @@ pub mod smoothed_coulomb;
 pub mod xu;
 
 use serde::Serialize;
+
+pub use law_id::LawId;
 
 use crate::geometry::contact::Sharing;
 use crate::geometry::{ContactPoint, Mesh, OperatingState, SpurGeometry};
@@ -90,7 +93,7 @@ pub struct Parameter {
 /// A coefficient-of-friction law along the line of action.
 pub trait FrictionLaw: Send + Sync {
     /// The law's identity in the catalogue.
-    fn id(&self) -> catalog::LawId;
+    fn id(&self) -> LawId;
     /// Signed μ at a contact; 0 at s = 0 exactly.
     fn mu(&self, c: &ContactPoint) -> f64;
     /// `Err(reason)` where the contact lies outside the law's stated validity range.

@@ -33,8 +33,8 @@ impl ODonoghueCameron {
 }
 
 impl FrictionLaw for ODonoghueCameron {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::ODonoghueCameron
+    fn id(&self) -> super::LawId {
+        super::LawId::ODonoghueCameron
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude_with_radius_scale(c, units::MM_PER_M), c.s)

@@ -33,8 +33,8 @@ impl SmoothedCoulomb {
 }
 
 impl FrictionLaw for SmoothedCoulomb {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::SmoothedCoulomb
+    fn id(&self) -> super::LawId {
+        super::LawId::SmoothedCoulomb
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         self.at(c.s)

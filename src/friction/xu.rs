@@ -78,8 +78,8 @@ impl Xu {
 }
 
 impl FrictionLaw for Xu {
-    fn id(&self) -> super::catalog::LawId {
-        super::catalog::LawId::Xu
+    fn id(&self) -> super::LawId {
+        super::LawId::Xu
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

@@ -59,7 +59,7 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
                     laws.pop()
                 }
                 None => {
-                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.name).collect();
+                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.id.name()).collect();
                     errors.push(unknown_name("law for `friction`", &c.name, &ids));
                     return None;
                 }

@@ -8,7 +8,7 @@ use crate::friction::catalog;
 use crate::model::*;
 
 pub(super) fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
-    let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.name).collect();
+    let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id.name()).collect();
     let f = Fields::read("the `friction` block", block.span, &block.items, &[], &[], &ids, errors);
     f.calls.iter().flat_map(|c| lower_law(c, errors)).collect()
 }
@@ -25,7 +25,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
     let mut ok = true;
     for (name, value) in &call.arguments {
         let Some(spec) = entry.arguments.iter().find(|a| a.name == name.text) else {
-            errors.push(unknown_name(&format!("argument of `{}`", entry.name), name, &names));
+            errors.push(unknown_name(&format!("argument of `{}`", entry.id.name()), name, &names));
             ok = false;
             continue;
         };
@@ -46,7 +46,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
                         Diagnostic::new(
                             DiagnosticKind::OutOfRange,
                             value.span,
-                            format!("`{}` sweeps a second argument", entry.name),
+                            format!("`{}` sweeps a second argument", entry.id.name()),
                         )
                         .hint("a law may sweep one argument; write a second law for another sweep"),
                     );
@@ -96,9 +96,9 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
                     Diagnostic::new(
                         DiagnosticKind::MissingKey,
                         call.span,
-                        format!("`{}` needs `{}` ({})", entry.name, spec.name, spec.what),
+                        format!("`{}` needs `{}` ({})", entry.id.name(), spec.name, spec.what),
                     )
-                    .hint(format!("write `{}({} = ...)`", entry.name, spec.name)),
+                    .hint(format!("write `{}({} = ...)`", entry.id.name(), spec.name)),
                 );
                 ok = false;
             }
@@ -155,7 +155,7 @@ pub(super) fn check_friction_needs(
                     Diagnostic::new(
                         DiagnosticKind::MissingKey,
                         law.span,
-                        format!("`{}` needs `{}`, which the scene lacks", entry.name, need.key()),
+                        format!("`{}` needs `{}`, which the scene lacks", entry.id.name(), need.key()),
                     )
                     .hint(hint),
                 );

