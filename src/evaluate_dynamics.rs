@@ -19,7 +19,7 @@ use crate::numerics::roots::brent;
 pub struct FormulationResult {
     pub formulation: DynamicFormulation,
     pub method: Method,
-    pub multipliers: [Multiplier; 2],
+    pub multipliers: Vec<Multiplier>,
     pub spectral_radius: f64,
     pub verdict: Verdict,
     pub determinant: f64,
@@ -103,7 +103,7 @@ fn analyse(sys: &SdofSystem, with_response: bool) -> FormulationResult {
     FormulationResult {
         formulation: sys.formulation,
         method: fl.method,
-        multipliers: fl.multipliers,
+        multipliers: fl.multipliers.clone(),
         spectral_radius: fl.spectral_radius,
         verdict: fl.verdict,
         determinant: fl.determinant,
@@ -231,7 +231,8 @@ pub fn evaluate_dynamics(scene: &Scene, base: LawContext) -> Option<DynamicsEval
         };
         let law = law_for(probe_state);
         let sys = system(base, spec, &stiffness, law.as_deref(), f, probe_state, j);
-        (f, 0, study(&sys))
+        let x0 = nalgebra::Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+        (f, 0, study(&sys, x0))
     });
     Some(DynamicsEvaluation {
         stiffness: stiffness.clone(),

@@ -62,7 +62,7 @@ pub fn airy_propagator(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option
 
 /// The full propagation (Φ, q) over [start, start + h] by the Airy closed form and Duhamel's integral,
 /// for the undamped internal formulation without transmission error; None where it does not apply.
-pub fn airy_propagation(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option<Propagation> {
+pub fn airy_propagation(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option<Propagation<2>> {
     if !sys.transmission_error.is_empty() {
         return None;
     }

@@ -1,14 +1,16 @@
-//! Floquet analysis of the periodic SDOF system (He & Singh §4; physics notes, "Dynamics"):
+//! Floquet analysis of a periodic model with n states (He & Singh §4; physics notes, "Dynamics"):
 //! monodromy Φ(T) = Π Φ_j, multipliers = eig Φ(T), stable while every |λ| < 1, and the periodic
 //! forced response directly from (I − Φ(T)) X*(0) = q(T), with no marching through transients.
 //! Liouville's formula det Φ(T) = exp(∫₀ᵀ tr A dt) checks the propagators.
+//!
+//! The multipliers of a 2-state model come from the closed form of a 2×2 eigenproblem; for n > 2
+//! from nalgebra's real Schur decomposition (`complex_eigenvalues`).
 
-use nalgebra::{Matrix2, Vector2};
+use nalgebra::{DMatrix, DVector, Matrix2, SMatrix, SVector, Vector2};
 use serde::Serialize;
 
-use super::propagator::{monodromy, period_segments, Method, Propagation};
-use super::sdof::{DynamicFormulation, SdofSystem};
-use crate::numerics::quadrature::integrate;
+use super::model::PeriodicModel;
+use super::propagator::{monodromy, period_segments, Method, PeriodPropagation, Propagation};
 
 /// A Floquet multiplier.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -37,24 +39,24 @@ pub enum Verdict {
 
 /// Everything Floquet theory gives at one operating point and formulation.
 #[derive(Debug, Clone)]
-pub struct Floquet {
-    pub segments: Vec<Propagation>,
+pub struct Floquet<const N: usize> {
+    /// The propagation of every segment of the period, and how each was propagated.
+    pub period: PeriodPropagation<N>,
     pub method: Method,
-    pub monodromy: Propagation,
-    pub multipliers: [Multiplier; 2],
+    pub monodromy: Propagation<N>,
+    /// Sorted by decreasing modulus.
+    pub multipliers: Vec<Multiplier>,
     pub spectral_radius: f64,
     pub verdict: Verdict,
     /// det Φ(T) and exp(∫ tr A) (Liouville).
     pub determinant: f64,
     pub liouville: f64,
     /// X*(0) of the periodic response; None when I − Φ(T) is singular or the system is unstable.
-    pub periodic_state: Option<Vector2<f64>>,
+    pub periodic_state: Option<SVector<f64, N>>,
 }
 
-/// Eigenvalues of a real 2×2 matrix.
-pub fn eigenvalues(m: &Matrix2<f64>) -> [Multiplier; 2] {
-    let tr = m.trace();
-    let det = m.determinant();
+/// Eigenvalues of a real 2×2 matrix (closed form; the larger-modulus one first for real pairs).
+pub fn eigenvalues_2x2(tr: f64, det: f64) -> [Multiplier; 2] {
     let disc = 0.25 * tr * tr - det;
     if disc >= 0.0 {
         let r = disc.sqrt();
@@ -65,25 +67,45 @@ pub fn eigenvalues(m: &Matrix2<f64>) -> [Multiplier; 2] {
     }
 }
 
-/// exp(∫₀ᵀ tr A(t) dt): tr A = −c/m_e (base, external) or −(1 − f) c/m_e (internal).
-pub fn liouville(sys: &SdofSystem) -> f64 {
-    let c = sys.damping / sys.equivalent_mass;
-    let integral = match sys.formulation {
-        DynamicFormulation::Internal => {
-            let breaks: Vec<f64> = std::iter::once(0.0).chain(sys.segments.iter().map(|s| s.end)).collect();
-            integrate(|t| -(1.0 - sys.friction_term(t)) * c, &breaks, 1e-13).value
-        }
-        _ => -c * sys.period,
-    };
-    integral.exp()
+/// Eigenvalues of a real n×n matrix: closed form for n = 2, the real Schur form otherwise (sorted
+/// by decreasing modulus, then by decreasing imaginary part).
+pub fn eigenvalues<const N: usize>(m: &SMatrix<f64, N, N>) -> Vec<Multiplier> {
+    if N == 2 {
+        return eigenvalues_2x2(m.trace(), determinant(m)).to_vec();
+    }
+    let d = DMatrix::from_fn(N, N, |i, j| m[(i, j)]);
+    let mut v: Vec<Multiplier> = d.complex_eigenvalues().iter().map(|c| Multiplier { re: c.re, im: c.im }).collect();
+    v.sort_by(|a, b| b.abs().total_cmp(&a.abs()).then(b.im.total_cmp(&a.im)));
+    v
 }
 
-impl Floquet {
-    pub fn analyse(sys: &SdofSystem) -> Floquet {
-        let (segments, method) = period_segments(sys);
-        let mono = monodromy(&segments);
+/// det m (nalgebra's closed form for n = 2, LU otherwise).
+pub fn determinant<const N: usize>(m: &SMatrix<f64, N, N>) -> f64 {
+    if N == 2 {
+        Matrix2::from_fn(|i, j| m[(i, j)]).determinant()
+    } else {
+        DMatrix::from_fn(N, N, |i, j| m[(i, j)]).determinant()
+    }
+}
+
+/// x with m x = b, None when m is singular (nalgebra's closed-form inverse for n = 2, LU otherwise).
+pub fn solve<const N: usize>(m: &SMatrix<f64, N, N>, b: &SVector<f64, N>) -> Option<SVector<f64, N>> {
+    if N == 2 {
+        let inv = Matrix2::from_fn(|i, j| m[(i, j)]).try_inverse()?;
+        let x = inv * Vector2::new(b[0], b[1]);
+        Some(SVector::from_fn(|i, _| x[i]))
+    } else {
+        let x = DMatrix::from_fn(N, N, |i, j| m[(i, j)]).lu().solve(&DVector::from_fn(N, |i, _| b[i]))?;
+        Some(SVector::from_fn(|i, _| x[i]))
+    }
+}
+
+impl<const N: usize> Floquet<N> {
+    pub fn analyse<M: PeriodicModel<N> + ?Sized>(model: &M) -> Floquet<N> {
+        let period = period_segments(model);
+        let mono = monodromy(&period.segments);
         let multipliers = eigenvalues(&mono.phi);
-        let rho = multipliers[0].abs().max(multipliers[1].abs());
+        let rho = multipliers.iter().map(Multiplier::abs).fold(0.0, f64::max);
         let verdict = if rho > 1.0 + 1e-9 {
             Verdict::Unstable
         } else if rho >= 1.0 - 1e-9 {
@@ -93,16 +115,14 @@ impl Floquet {
         };
         let periodic_state = match verdict {
             Verdict::Unstable => None,
-            _ => (Matrix2::identity() - mono.phi)
-                .try_inverse()
-                .map(|inv| inv * mono.q)
+            _ => solve(&(SMatrix::<f64, N, N>::identity() - mono.phi), &mono.q)
                 .filter(|x| x.iter().all(|v| v.is_finite())),
         };
         Floquet {
-            determinant: mono.phi.determinant(),
-            liouville: liouville(sys),
-            segments,
-            method,
+            determinant: determinant(&mono.phi),
+            liouville: model.trace_integral().exp(),
+            method: period.method,
+            period,
             monodromy: mono,
             multipliers,
             spectral_radius: rho,

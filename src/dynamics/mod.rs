@@ -15,6 +15,7 @@
 pub mod airy;
 pub mod floquet;
 pub mod integrators;
+pub mod model;
 pub mod numerics;
 pub mod propagator;
 pub mod response;
@@ -22,4 +23,5 @@ pub mod sdof;
 pub mod trajectory;
 
 pub use floquet::{Floquet, Multiplier};
-pub use sdof::{DynamicFormulation, SdofSystem, Segment, StiffnessModel};
+pub use model::{PeriodicModel, Segment};
+pub use sdof::{DynamicFormulation, SdofSystem, StiffnessModel};

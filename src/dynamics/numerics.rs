@@ -7,13 +7,12 @@
 
 use std::time::Instant;
 
-use nalgebra::{Matrix4, Vector2};
+use nalgebra::SVector;
 use serde::Serialize;
 
 use super::integrators::{integrate, Counts, Integrator};
-use super::propagator::{from_exponential, magnus, magnus_adaptive, segment_matrix};
-use super::propagator::{period_segments, Method};
-use super::sdof::SdofSystem;
+use super::model::PeriodicModel;
+use super::propagator::{period_segments, Method, PeriodPropagation, SegmentExponential, SegmentRoute};
 
 pub const PERIODS: usize = 10;
 pub const REPEATS: usize = 3;
@@ -44,41 +43,39 @@ pub struct Study {
     pub runs: Vec<Run>,
 }
 
-/// The state at each sample time (τ in mesh periods, sorted, within [0, 1)), marching segment by
-/// segment from X(0). For the exact propagator exp(M dt) is cached for the common sample step.
-pub fn states(sys: &SdofSystem, x0: Vector2<f64>, taus: &[f64]) -> Vec<Vector2<f64>> {
+/// The state at each sample time (τ in periods, sorted, within [0, 1)), marching segment by segment
+/// from X(0) on the period's routes. For an exact route exp(M dt) is cached for the common sample step.
+pub fn states<M: PeriodicModel<N> + ?Sized, const N: usize>(
+    sys: &M,
+    period: &PeriodPropagation<N>,
+    x0: SVector<f64, N>,
+    taus: &[f64],
+) -> Vec<SVector<f64, N>> {
     let mut out = Vec::with_capacity(taus.len());
     let mut x = x0;
     let mut t = 0.0;
     let mut k = 0;
-    let exact = sys.exact_applies();
-    for seg in &sys.segments {
-        let m = exact.then(|| segment_matrix(sys, seg.start, seg.end));
-        // Magnus: the substep density that converged over the whole segment, reused for each sample step.
-        let density = if exact {
-            0.0
-        } else {
-            magnus_adaptive(sys, seg.start, seg.end - seg.start).1 as f64 / (seg.end - seg.start)
-        };
-        let mut cache: Option<(f64, Matrix4<f64>)> = None;
-        let mut step = |x: &Vector2<f64>, from: f64, dt: f64| -> Vector2<f64> {
-            match &m {
-                Some(m) => {
+    let length = sys.period();
+    for (seg, route) in sys.segments().iter().zip(&period.routes) {
+        let mut cache: Option<(f64, SegmentExponential<N>)> = None;
+        let mut step = |x: &SVector<f64, N>, from: f64, dt: f64| -> SVector<f64, N> {
+            match route {
+                SegmentRoute::Exact(s) => {
                     let e = match &cache {
                         Some((h, e)) if (*h - dt).abs() <= 1e-12 * dt => *e,
                         _ => {
-                            let e = (m * dt).exp();
+                            let e = s.exponential(dt);
                             cache = Some((dt, e));
                             e
                         }
                     };
-                    from_exponential(&e, from - seg.start).apply(x)
+                    e.from(from - seg.start).apply(x)
                 }
-                None => magnus(sys, from, dt, ((density * dt).ceil() as usize).max(2)).apply(x),
+                SegmentRoute::Magnus { .. } => route.propagate(sys, from, dt).apply(x),
             }
         };
-        while k < taus.len() && taus[k] * sys.period < seg.end {
-            let target = taus[k] * sys.period;
+        while k < taus.len() && taus[k] * length < seg.end {
+            let target = taus[k] * length;
             if target > t {
                 x = step(&x, t, target - t);
                 t = target;
@@ -95,18 +92,23 @@ pub fn states(sys: &SdofSystem, x0: Vector2<f64>, taus: &[f64]) -> Vec<Vector2<f
 }
 
 /// The reference states at `times` (absolute), marching the propagators from x0.
-pub fn reference(sys: &SdofSystem, x0: Vector2<f64>, times: &[f64]) -> Vec<Vector2<f64>> {
-    let (segs, _) = period_segments(sys);
+pub fn reference<M: PeriodicModel<N> + ?Sized, const N: usize>(
+    sys: &M,
+    x0: SVector<f64, N>,
+    times: &[f64],
+) -> Vec<SVector<f64, N>> {
+    let period = period_segments(sys);
+    let length = sys.period();
     let mut out = Vec::with_capacity(times.len());
     let mut start = x0;
     let mut k = 0;
     for p in 0..PERIODS {
-        let offset = p as f64 * sys.period;
+        let offset = p as f64 * length;
         let local: Vec<f64> =
-            times[k..].iter().take_while(|t| **t < offset + sys.period).map(|t| (t - offset) / sys.period).collect();
-        out.extend(states(sys, start, &local));
+            times[k..].iter().take_while(|t| **t < offset + length).map(|t| (t - offset) / length).collect();
+        out.extend(states(sys, &period, start, &local));
         k += local.len();
-        start = segs.iter().fold(start, |x, s| s.apply(&x));
+        start = period.segments.iter().fold(start, |x, s| s.apply(&x));
     }
     while out.len() < times.len() {
         out.push(start);
@@ -114,12 +116,13 @@ pub fn reference(sys: &SdofSystem, x0: Vector2<f64>, times: &[f64]) -> Vec<Vecto
     out
 }
 
-pub fn study(sys: &SdofSystem) -> Study {
-    let x0 = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
-    let last = (PERIODS - 1) as f64 * sys.period;
+/// The study on `sys`, started from `x0` (the static deflection).
+pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<f64, N>) -> Study {
+    let length = sys.period();
+    let last = (PERIODS - 1) as f64 * length;
     let mut times: Vec<f64> =
-        (0..SAMPLES_LAST_PERIOD).map(|i| last + sys.period * i as f64 / SAMPLES_LAST_PERIOD as f64).collect();
-    times.push(PERIODS as f64 * sys.period);
+        (0..SAMPLES_LAST_PERIOD).map(|i| last + length * i as f64 / SAMPLES_LAST_PERIOD as f64).collect();
+    times.push(PERIODS as f64 * length);
     let mut best = f64::INFINITY;
     let mut reference_states = Vec::new();
     for _ in 0..REPEATS {
@@ -127,11 +130,10 @@ pub fn study(sys: &SdofSystem) -> Study {
         reference_states = reference(sys, x0, &times);
         best = best.min(t0.elapsed().as_secs_f64());
     }
-    let xs: Vec<f64> = reference_states[..SAMPLES_LAST_PERIOD].iter().map(|x| x[0]).collect();
+    let xs: Vec<f64> = reference_states[..SAMPLES_LAST_PERIOD].iter().map(|x| sys.observed(x)).collect();
     let p2p = xs.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) - xs.iter().fold(f64::INFINITY, |a, b| a.min(*b));
-    let scale = sys.static_force / sys.mean_stiffness;
-    let vscale = scale * (sys.mean_stiffness / sys.equivalent_mass).sqrt();
-    let (_, method) = period_segments(sys);
+    let scale = sys.state_scale();
+    let method = period_segments(sys).method;
     let mut runs = Vec::new();
     for integrator in Integrator::ALL {
         for rtol in LADDER {
@@ -139,7 +141,7 @@ pub fn study(sys: &SdofSystem) -> Study {
             let mut result = None;
             for _ in 0..REPEATS {
                 let t0 = Instant::now();
-                let r = integrate(sys, integrator, rtol, [x0[0], x0[1]], &times);
+                let r = integrate(sys, integrator, rtol, std::array::from_fn(|i| x0[i]), &times);
                 seconds = seconds.min(t0.elapsed().as_secs_f64());
                 let failed = r.is_err();
                 result = Some(r);
@@ -152,11 +154,13 @@ pub fn study(sys: &SdofSystem) -> Study {
                     let err = states[..SAMPLES_LAST_PERIOD]
                         .iter()
                         .zip(&reference_states)
-                        .map(|(a, b)| (a[0] - b[0]).abs())
+                        .map(|(a, b)| (sys.observed(&SVector::from(*a)) - sys.observed(b)).abs())
                         .fold(0.0, f64::max)
                         / p2p.max(f64::MIN_POSITIVE);
                     let (a, b) = (states[SAMPLES_LAST_PERIOD], reference_states[SAMPLES_LAST_PERIOD]);
-                    let fse = ((a[0] - b[0]) / scale).hypot((a[1] - b[1]) / vscale);
+                    // The scaled state norm, as a chain of hypot (no overflow, exact for one component).
+                    let fse =
+                        (SVector::<f64, N>::from(a) - b).component_div(&scale).iter().fold(0.0_f64, |n, v| n.hypot(*v));
                     Run {
                         method: integrator.name().into(),
                         rtol,

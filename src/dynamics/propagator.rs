@@ -1,34 +1,39 @@
-//! Propagators of the SDOF state over a segment: X(t1) = Φ X(t0) + q.
+//! Propagators of an n-state periodic model over a segment: X(t1) = Φ X(t0) + q.
 //!
-//! - **Exact**: where A is constant and b(t) = b0 + b1 (t − t0) on the segment, the augmented matrix
-//!   M = [[A, b0, b1], [0, 0, 0, 0], [0, 0, 1, 0]] on [x, ẋ, 1, τ] (d1/dt = 0, dτ/dt = 1) gives exp(M h) exactly
-//!   (nalgebra's Padé matrix exponential): Φ is its top-left block, q its third column.
+//! - **Exact**: where A is constant and b(t) = b0 + b1 (t − t0) on a segment ([`AffineSegment`]), the
+//!   augmented matrix M = [[A, b0, b1], [0, 0, 0], [0, 1, 0]] on [X, 1, τ] (d1/dt = 0, dτ/dt = 1)
+//!   gives exp(M h) exactly (nalgebra's Padé matrix exponential): Φ is its top-left block, q its
+//!   last two columns.
 //! - **Magnus**: otherwise, the 4th-order Magnus expansion with two Gauss–Legendre nodes on the
-//!   augmented [x, ẋ, 1] system, Ω = h/2 (A1 + A2) + (√3/12) h² [A2, A1] (Blanes, Casas, Oteo, Ros,
+//!   augmented [X, 1] system, Ω = h/2 (A1 + A2) + (√3/12) h² [A2, A1] (Blanes, Casas, Oteo, Ros,
 //!   Phys. Rep. 470, 2009, eq 253), with substeps doubled until two successive results agree.
+//!
+//! The augmented matrices are static (4×4, 3×3) for the 2-state models and dynamic otherwise, so the
+//! SDOF path allocates nothing.
 
-use nalgebra::{Matrix2, Matrix3, Matrix4, Vector2};
+use nalgebra::allocator::Allocator;
+use nalgebra::{DefaultAllocator, Dim, DimMin, Dyn, OMatrix, SMatrix, SVector, U3, U4};
 
-use super::sdof::SdofSystem;
+use super::model::PeriodicModel;
 
 /// X(end) = Φ X(start) + q.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Propagation {
-    pub phi: Matrix2<f64>,
-    pub q: Vector2<f64>,
+pub struct Propagation<const N: usize> {
+    pub phi: SMatrix<f64, N, N>,
+    pub q: SVector<f64, N>,
 }
 
-impl Propagation {
+impl<const N: usize> Propagation<N> {
     pub fn identity() -> Self {
-        Propagation { phi: Matrix2::identity(), q: Vector2::zeros() }
+        Propagation { phi: SMatrix::identity(), q: SVector::zeros() }
     }
 
     /// `self` followed by `next`.
-    pub fn then(&self, next: &Propagation) -> Propagation {
+    pub fn then(&self, next: &Propagation<N>) -> Propagation<N> {
         Propagation { phi: next.phi * self.phi, q: next.phi * self.q + next.q }
     }
 
-    pub fn apply(&self, x: &Vector2<f64>) -> Vector2<f64> {
+    pub fn apply(&self, x: &SVector<f64, N>) -> SVector<f64, N> {
         self.phi * x + self.q
     }
 }
@@ -45,97 +50,212 @@ pub enum Method {
 /// divides the error by 16, so the error of the finer result is estimated as |P_2n − P_n| / 15.
 pub const MAGNUS_TOLERANCE: f64 = 1e-11;
 
-/// The augmented matrix of a segment [start, end] on which A is constant and b affine:
-/// on [x, ẋ, 1, τ] with τ = t − start, M = [[A, b(start), b'], [0, 0, 0, 0], [0, 0, 1, 0]].
-/// (b is sampled at the segment's quarter points, away from the jumps at its ends.)
-pub fn segment_matrix(sys: &SdofSystem, start: f64, end: f64) -> Matrix4<f64> {
-    let seg = end - start;
-    let (t1, t2) = (start + 0.25 * seg, start + 0.75 * seg);
-    let (a, b1) = sys.matrices(t1);
-    let (_, b2) = sys.matrices(t2);
-    let slope = [(b2[0] - b1[0]) / (t2 - t1), (b2[1] - b1[1]) / (t2 - t1)];
-    let b0 = [b1[0] - slope[0] * (t1 - start), b1[1] - slope[1] * (t1 - start)];
-    #[rustfmt::skip]
-    let m = Matrix4::new(
-        a[0][0], a[0][1], b0[0], slope[0],
-        a[1][0], a[1][1], b0[1], slope[1],
-        0.0, 0.0, 0.0, 0.0,
-        0.0, 0.0, 1.0, 0.0,
-    );
-    m
+/// A segment on which A is constant and b(t) = b0 + b1 (t − start).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AffineSegment<const N: usize> {
+    pub start: f64,
+    pub a: SMatrix<f64, N, N>,
+    pub b0: SVector<f64, N>,
+    pub b1: SVector<f64, N>,
 }
 
-/// The propagation over `h` from `from` (τ = from − start) given E = exp(M h).
-pub fn from_exponential(e: &Matrix4<f64>, tau: f64) -> Propagation {
-    Propagation {
-        phi: Matrix2::new(e[(0, 0)], e[(0, 1)], e[(1, 0)], e[(1, 1)]),
-        q: Vector2::new(e[(0, 2)] + e[(0, 3)] * tau, e[(1, 2)] + e[(1, 3)] * tau),
+/// exp(M h) of an [`AffineSegment`], as the blocks that matter: X(start + τ + h) = Φ X + q0 + q1 τ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SegmentExponential<const N: usize> {
+    pub phi: SMatrix<f64, N, N>,
+    pub q0: SVector<f64, N>,
+    pub q1: SVector<f64, N>,
+}
+
+impl<const N: usize> SegmentExponential<N> {
+    /// The propagation over h from `start + tau`.
+    pub fn from(&self, tau: f64) -> Propagation<N> {
+        Propagation { phi: self.phi, q: self.q0 + self.q1 * tau }
     }
 }
 
-/// Exact propagation from `from` over `h` inside the segment [start, end].
-pub fn exact(sys: &SdofSystem, start: f64, end: f64, from: f64, h: f64) -> Propagation {
-    let e = (segment_matrix(sys, start, end) * h).exp();
-    from_exponential(&e, from - start)
+/// exp of an n×n matrix given by its entries, returned as its entries: a static matrix of size `dim`
+/// (U3, U4) or a dynamic one.
+fn exponential<D>(dim: D, entry: impl Fn(usize, usize) -> f64) -> OMatrix<f64, D, D>
+where
+    D: Dim + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    OMatrix::<f64, D, D>::from_fn_generic(dim, dim, entry).exp()
 }
 
-fn augmented(sys: &SdofSystem, t: f64) -> Matrix3<f64> {
-    let (a, b) = sys.matrices(t);
-    Matrix3::new(a[0][0], a[0][1], b[0], a[1][0], a[1][1], b[1], 0.0, 0.0, 0.0)
+impl<const N: usize> AffineSegment<N> {
+    /// The affine form of a model's segment [start, end], from A and b sampled at its quarter points
+    /// (away from the jumps at its ends).
+    pub fn of<M: PeriodicModel<N> + ?Sized>(model: &M, start: f64, end: f64) -> Self {
+        let seg = end - start;
+        let (t1, t2) = (start + 0.25 * seg, start + 0.75 * seg);
+        let (a, b1) = model.system(t1);
+        let (_, b2) = model.system(t2);
+        let slope = (b2 - b1) / (t2 - t1);
+        let b0 = b1 - slope * (t1 - start);
+        AffineSegment { start, a, b0, b1: slope }
+    }
+
+    /// A X + b(t).
+    pub fn rhs(&self, t: f64, x: &SVector<f64, N>) -> SVector<f64, N> {
+        self.a * x + self.b0 + self.b1 * (t - self.start)
+    }
+
+    /// The augmented matrix entry (i, j) of M = [[A, b0, b1], [0, 0, 0], [0, 1, 0]], times h.
+    fn augmented(&self, h: f64, i: usize, j: usize) -> f64 {
+        let m = if i < N {
+            match j {
+                j if j < N => self.a[(i, j)],
+                j if j == N => self.b0[i],
+                _ => self.b1[i],
+            }
+        } else if i == N + 1 && j == N {
+            1.0
+        } else {
+            0.0
+        };
+        m * h
+    }
+
+    /// exp(M h).
+    pub fn exponential(&self, h: f64) -> SegmentExponential<N> {
+        if N == 2 {
+            let e = exponential(U4, |i, j| self.augmented(h, i, j));
+            split(|i, j| e[(i, j)])
+        } else {
+            let e = exponential(Dyn(N + 2), |i, j| self.augmented(h, i, j));
+            split(|i, j| e[(i, j)])
+        }
+    }
+
+    /// Exact propagation from `from` over `h` inside the segment.
+    pub fn propagate(&self, from: f64, h: f64) -> Propagation<N> {
+        self.exponential(h).from(from - self.start)
+    }
+}
+
+/// The blocks of exp(M h) from its entries. (Kept free of allocator bounds: inside a function with a
+/// `DefaultAllocator: Allocator<D, D>` clause, rustc no longer finds the static matrices' constructors.)
+fn split<const N: usize>(e: impl Fn(usize, usize) -> f64) -> SegmentExponential<N> {
+    SegmentExponential {
+        phi: SMatrix::from_fn(|i, j| e(i, j)),
+        q0: SVector::from_fn(|i, _| e(i, N)),
+        q1: SVector::from_fn(|i, _| e(i, N + 1)),
+    }
 }
 
 /// 4th-order Magnus over [t0, t0 + h] in `n` equal substeps.
-pub fn magnus(sys: &SdofSystem, t0: f64, h: f64, n: usize) -> Propagation {
+pub fn magnus<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M, t0: f64, h: f64, n: usize) -> Propagation<N> {
+    if N == 2 {
+        magnus_in(model, U3, t0, h, n)
+    } else {
+        magnus_in(model, Dyn(N + 1), t0, h, n)
+    }
+}
+
+fn magnus_in<M: PeriodicModel<N> + ?Sized, D, const N: usize>(
+    model: &M,
+    dim: D,
+    t0: f64,
+    h: f64,
+    n: usize,
+) -> Propagation<N>
+where
+    D: Dim + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    let augmented = |t: f64| {
+        let (a, b) = model.system(t);
+        OMatrix::<f64, D, D>::from_fn_generic(dim, dim, |i, j| match (i < N, j < N) {
+            (true, true) => a[(i, j)],
+            (true, false) => b[i],
+            _ => 0.0,
+        })
+    };
     let dt = h / n as f64;
     let c = 3f64.sqrt() / 6.0;
-    let mut e = Matrix3::<f64>::identity();
+    let mut e = OMatrix::<f64, D, D>::identity_generic(dim, dim);
     for i in 0..n {
         let t = t0 + i as f64 * dt;
-        let a1 = augmented(sys, t + (0.5 - c) * dt);
-        let a2 = augmented(sys, t + (0.5 + c) * dt);
-        let omega = (a1 + a2) * (0.5 * dt) + (a2 * a1 - a1 * a2) * (3f64.sqrt() / 12.0 * dt * dt);
+        let a1 = augmented(t + (0.5 - c) * dt);
+        let a2 = augmented(t + (0.5 + c) * dt);
+        let omega = (&a1 + &a2) * (0.5 * dt) + (&a2 * &a1 - &a1 * &a2) * (3f64.sqrt() / 12.0 * dt * dt);
         e = omega.exp() * e;
     }
-    Propagation { phi: Matrix2::new(e[(0, 0)], e[(0, 1)], e[(1, 0)], e[(1, 1)]), q: Vector2::new(e[(0, 2)], e[(1, 2)]) }
+    let blocks = split::<N>(|i, j| if j <= N { e[(i, j)] } else { 0.0 });
+    Propagation { phi: blocks.phi, q: blocks.q0 }
 }
 
 /// Magnus with substeps doubled until successive results agree to [`MAGNUS_TOLERANCE`]; returns
 /// the propagation and the substeps used.
-pub fn magnus_adaptive(sys: &SdofSystem, t0: f64, h: f64) -> (Propagation, usize) {
-    let scale = |p: &Propagation| p.phi.norm() + p.q.norm() / sys.static_force.abs().max(1e-300) * sys.mean_stiffness;
+pub fn magnus_adaptive<M: PeriodicModel<N> + ?Sized, const N: usize>(
+    model: &M,
+    t0: f64,
+    h: f64,
+) -> (Propagation<N>, usize) {
     let mut n = 2;
-    let mut prev = magnus(sys, t0, h, n);
+    let mut prev = magnus(model, t0, h, n);
     loop {
         n *= 2;
-        let next = magnus(sys, t0, h, n);
-        let diff = (next.phi - prev.phi).norm()
-            + (next.q - prev.q).norm() / sys.static_force.abs().max(1e-300) * sys.mean_stiffness;
-        if diff / 15.0 <= MAGNUS_TOLERANCE * scale(&next) || n >= 1 << 14 {
+        let next = magnus(model, t0, h, n);
+        let diff = model.propagation_size(&(next.phi - prev.phi), &(next.q - prev.q));
+        if diff / 15.0 <= MAGNUS_TOLERANCE * model.propagation_size(&next.phi, &next.q) || n >= 1 << 14 {
             return (next, n);
         }
         prev = next;
     }
 }
 
-/// Propagation from `from` over `h` inside `segment` (start, end), by the method that applies.
-pub fn advance(sys: &SdofSystem, segment: (f64, f64), from: f64, h: f64) -> Propagation {
-    if sys.exact_applies() {
-        exact(sys, segment.0, segment.1, from, h)
-    } else {
-        magnus_adaptive(sys, from, h).0
+/// How one segment of the period is propagated: its exact affine form, or the Magnus substep
+/// density (substeps per second) that converged over the whole segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SegmentRoute<const N: usize> {
+    Exact(AffineSegment<N>),
+    Magnus { density: f64 },
+}
+
+impl<const N: usize> SegmentRoute<N> {
+    /// Propagation from `from` over `h` inside the segment.
+    pub fn propagate<M: PeriodicModel<N> + ?Sized>(&self, model: &M, from: f64, h: f64) -> Propagation<N> {
+        match self {
+            SegmentRoute::Exact(seg) => seg.propagate(from, h),
+            SegmentRoute::Magnus { density } => magnus(model, from, h, ((density * h).ceil() as usize).max(2)),
+        }
     }
 }
 
-/// Propagation over each segment of one mesh period, and the method used.
-pub fn period_segments(sys: &SdofSystem) -> (Vec<Propagation>, Method) {
-    if sys.exact_applies() {
-        (sys.segments.iter().map(|s| exact(sys, s.start, s.end, s.start, s.end - s.start)).collect(), Method::Exact)
-    } else {
-        (sys.segments.iter().map(|s| magnus_adaptive(sys, s.start, s.end - s.start).0).collect(), Method::Magnus4)
+/// The propagation over each segment of one period, the route of each segment, and the method used
+/// (exact when every segment is affine).
+#[derive(Debug, Clone)]
+pub struct PeriodPropagation<const N: usize> {
+    pub segments: Vec<Propagation<N>>,
+    pub routes: Vec<SegmentRoute<N>>,
+    pub method: Method,
+}
+
+/// Propagates every segment of one period by the route that applies.
+pub fn period_segments<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) -> PeriodPropagation<N> {
+    let mut segments = Vec::with_capacity(model.segments().len());
+    let mut routes = Vec::with_capacity(model.segments().len());
+    let mut all_exact = true;
+    for (j, s) in model.segments().iter().enumerate() {
+        let h = s.end - s.start;
+        if model.segment_is_affine(j) {
+            let seg = AffineSegment::of(model, s.start, s.end);
+            segments.push(seg.propagate(s.start, h));
+            routes.push(SegmentRoute::Exact(seg));
+        } else {
+            all_exact = false;
+            let (p, n) = magnus_adaptive(model, s.start, h);
+            segments.push(p);
+            routes.push(SegmentRoute::Magnus { density: n as f64 / h });
+        }
     }
+    PeriodPropagation { segments, routes, method: if all_exact { Method::Exact } else { Method::Magnus4 } }
 }
 
 /// The monodromy propagation over one period (Φ(T), q(T)).
-pub fn monodromy(segments: &[Propagation]) -> Propagation {
+pub fn monodromy<const N: usize>(segments: &[Propagation<N>]) -> Propagation<N> {
     segments.iter().fold(Propagation::identity(), |acc, s| acc.then(s))
 }

@@ -86,8 +86,11 @@ struct FrictionNow {
     loss: f64,
 }
 
+/// The SDOF trajectory.
+type SdofTrajectory<'s, 'a> = Trajectory<'s, SdofSystem<'a>, 2>;
+
 struct Eval<'t, 's, 'a> {
-    tr: &'t Trajectory<'s, 'a>,
+    tr: &'t SdofTrajectory<'s, 'a>,
 }
 
 impl Eval<'_, '_, '_> {
@@ -144,7 +147,7 @@ fn slope(g: &impl Fn(usize, f64) -> f64, p: usize, t: f64, h: f64) -> f64 {
 }
 
 /// Largest |g| over the period, located.
-fn peak_abs(tr: &Trajectory, g: impl Fn(usize, f64) -> f64) -> Extremum {
+fn peak_abs(tr: &SdofTrajectory, g: impl Fn(usize, f64) -> f64) -> Extremum {
     let h = 1e-7 * tr.sys.period;
     let e = tr.extrema(&g, |p, t| slope(&g, p, t, h));
     if e.max.value.abs() >= e.min.value.abs() {
@@ -160,9 +163,9 @@ fn in_periods(e: Extremum, period: f64) -> Extremum {
 
 impl PeriodicResponse {
     /// The response from a Floquet analysis; None when there is no periodic state (unstable).
-    pub fn compute(sys: &SdofSystem, floquet: &Floquet) -> Option<PeriodicResponse> {
+    pub fn compute(sys: &SdofSystem, floquet: &Floquet<2>) -> Option<PeriodicResponse> {
         let x0 = floquet.periodic_state?;
-        let tr = Trajectory::new(sys, x0);
+        let tr = Trajectory::new(sys, &floquet.period, x0);
         let ev = Eval { tr: &tr };
         let period = sys.period;
         let dte = tr.extrema(|p, t| ev.x(p, t)[0], |p, t| ev.x(p, t)[1]);
@@ -236,15 +239,15 @@ impl PeriodicResponse {
     }
 
     /// The dynamic factor alone (located max F / F0), for stability maps; None when unstable.
-    pub fn dynamic_factor(sys: &SdofSystem, floquet: &Floquet) -> Option<f64> {
-        let tr = Trajectory::new(sys, floquet.periodic_state?);
+    pub fn dynamic_factor(sys: &SdofSystem, floquet: &Floquet<2>) -> Option<f64> {
+        let tr = Trajectory::new(sys, &floquet.period, floquet.periodic_state?);
         let ev = Eval { tr: &tr };
         Some(tr.extrema(|p, t| ev.force(p, t), |p, t| ev.force_rate(p, t)).max.value / sys.static_force)
     }
 }
 
 /// The plot series: uniform samples, both sides of every piece boundary, and the located extrema.
-fn plot_series(tr: &Trajectory, ev: &Eval, extremes: &[Extremum]) -> ResponseSeries {
+fn plot_series(tr: &SdofTrajectory, ev: &Eval, extremes: &[Extremum]) -> ResponseSeries {
     let sys = tr.sys;
     let period = sys.period;
     let mut at: Vec<(f64, usize)> = (0..PLOT_SAMPLES)

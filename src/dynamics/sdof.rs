@@ -13,8 +13,10 @@
 //! pitch-point passages (μ changes sign, f changes slope) and law regime switches. The state is
 //! X = [x, ẋ]; in a segment, Ẋ = A(t) X + b(t).
 
+use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 use serde::Serialize;
 
+use super::model::{PeriodicModel, Segment};
 use crate::efficiency::break_times;
 use crate::friction::{FrictionLaw, LawContext};
 pub use crate::geometry::stiffness::StiffnessModel;
@@ -36,15 +38,6 @@ impl DynamicFormulation {
             DynamicFormulation::Internal => "internal",
         }
     }
-}
-
-/// A piece of the mesh period on which k is constant (for the rectangular model) and μ keeps its sign.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Segment {
-    /// Start and end in seconds from the entry of a pair at A.
-    pub start: f64,
-    pub end: f64,
-    pub pairs: usize,
 }
 
 /// The SDOF system at one operating point, with its friction law and formulation.
@@ -87,18 +80,16 @@ impl<'a> SdofSystem<'a> {
             None => ctx.geometry.cycle_break_times(&[]),
         };
         taus.dedup_by(|a, b| (*a - *b).abs() < 1e-14);
-        let segments: Vec<Segment> = taus
-            .windows(2)
-            .map(|w| Segment {
-                start: w[0] * period,
-                end: w[1] * period,
-                pairs: ctx.geometry.pairs_at(0.5 * (w[0] + w[1])),
-            })
-            .collect();
+        let segments: Vec<Segment> =
+            taus.windows(2).map(|w| Segment { start: w[0] * period, end: w[1] * period }).collect();
         // k̄ over the period (exact for the rectangular model, trapezoid on 4096 points for a table).
         let mean_stiffness = match &stiffness {
             StiffnessModel::PairsInContact { .. } => {
-                segments.iter().map(|s| stiffness.at(0.0, s.pairs) * (s.end - s.start)).sum::<f64>() / period
+                taus.windows(2)
+                    .zip(&segments)
+                    .map(|(w, s)| stiffness.at(0.0, ctx.geometry.pairs_at(0.5 * (w[0] + w[1]))) * (s.end - s.start))
+                    .sum::<f64>()
+                    / period
             }
             StiffnessModel::Table(k) => k.iter().sum::<f64>() / k.len() as f64,
         };
@@ -182,12 +173,6 @@ impl<'a> SdofSystem<'a> {
         }
     }
 
-    /// Right-hand side for general integrators.
-    pub fn rhs(&self, t: f64, x: &[f64; 2]) -> [f64; 2] {
-        let (a, b) = self.matrices(t);
-        [a[0][0] * x[0] + a[0][1] * x[1] + b[0], a[1][0] * x[0] + a[1][1] * x[1] + b[1]]
-    }
-
     /// True when on every segment A is constant and b affine in t, so the exact propagator applies:
     /// base, or external with a law of constant magnitude (Coulomb, ISO/TR 14179-2), rectangular k.
     pub fn exact_applies(&self) -> bool {
@@ -232,15 +217,63 @@ impl<'a> SdofSystem<'a> {
     pub fn natural_frequency(&self) -> f64 {
         (self.mean_stiffness / self.equivalent_mass).sqrt() / (2.0 * std::f64::consts::PI)
     }
+}
 
-    /// All switch times within [0, n periods], for integrators that must restart there.
-    pub fn switch_times(&self, periods: usize) -> Vec<f64> {
-        let mut out = vec![0.0];
-        for p in 0..periods {
-            for s in &self.segments {
-                out.push(p as f64 * self.period + s.end);
-            }
+impl PeriodicModel<2> for SdofSystem<'_> {
+    fn name(&self) -> &'static str {
+        "sdof"
+    }
+
+    fn period(&self) -> f64 {
+        self.period
+    }
+
+    fn segments(&self) -> &[Segment] {
+        &self.segments
+    }
+
+    fn system(&self, t: f64) -> (SMatrix<f64, 2, 2>, SVector<f64, 2>) {
+        let (a, b) = self.matrices(t);
+        (Matrix2::new(a[0][0], a[0][1], a[1][0], a[1][1]), Vector2::new(b[0], b[1]))
+    }
+
+    fn segment_is_affine(&self, _segment: usize) -> bool {
+        self.exact_applies()
+    }
+
+    /// x_s = F0/k̄ and x_s ω_n with ω_n = sqrt(k̄/m_e).
+    fn state_scale(&self) -> SVector<f64, 2> {
+        let xs = self.static_force / self.mean_stiffness;
+        Vector2::new(xs, xs * (self.mean_stiffness / self.equivalent_mass).sqrt())
+    }
+
+    /// sqrt(|A₂₁|) = sqrt(k(t)/m_e) (times sqrt(1 − f) in the internal formulation).
+    fn highest_frequency(&self, t: f64) -> f64 {
+        self.matrices(t).0[1][0].abs().sqrt()
+    }
+
+    /// The nodes of a stiffness table, where k'(t) jumps.
+    fn smooth_cuts(&self) -> Vec<f64> {
+        match &self.stiffness {
+            StiffnessModel::Table(k) => (1..k.len()).map(|i| i as f64 / k.len() as f64 * self.period).collect(),
+            _ => Vec::new(),
         }
-        out
+    }
+
+    /// ‖Φ‖ + ‖q‖ k̄/F0 (q in units of the static deflection).
+    fn propagation_size(&self, phi: &SMatrix<f64, 2, 2>, q: &SVector<f64, 2>) -> f64 {
+        phi.norm() + q.norm() / self.static_force.abs().max(1e-300) * self.mean_stiffness
+    }
+
+    /// −c T/m_e (base, external) or −∫(1 − f) c/m_e dt (internal).
+    fn trace_integral(&self) -> f64 {
+        let c = self.damping / self.equivalent_mass;
+        match self.formulation {
+            DynamicFormulation::Internal => {
+                let breaks: Vec<f64> = std::iter::once(0.0).chain(self.segments.iter().map(|s| s.end)).collect();
+                crate::numerics::quadrature::integrate(|t| -(1.0 - self.friction_term(t)) * c, &breaks, 1e-13).value
+            }
+            _ => -c * self.period,
+        }
     }
 }

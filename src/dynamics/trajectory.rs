@@ -1,11 +1,12 @@
-//! The periodic state X(t) = [x, ẋ] over one mesh period as a function that can be evaluated at any
+//! The periodic state X(t) of any [`PeriodicModel`] over one period as a function that can be evaluated at any
 //! time, and the location of the extrema and zeros of quantities built on it.
 //!
 //! The period is cut into *pieces* at every switch time of the system (zone boundaries, pitch-point
-//! passages, regime switches) and at every node of a stiffness table (where k'(t) jumps), so every
-//! quantity is smooth inside a piece. Each piece carries a grid fine enough to bracket every
-//! oscillation: at least [`NODES_PER_OSCILLATION`] nodes per period of the fastest free oscillation
-//! ω = sqrt(max|A₂₁|) on the piece (so between two nodes the velocity changes sign at most once
+//! passages, regime switches) and at the model's smooth cuts (nodes of a stiffness table, where
+//! k'(t) jumps), so every quantity is smooth inside a piece. Each piece carries a grid fine enough to
+//! bracket every oscillation: at least [`NODES_PER_OSCILLATION`] nodes per period of the fastest free
+//! oscillation ω on the piece ([`PeriodicModel::highest_frequency`]; sqrt(|A₂₁|) for the SDOF
+//! model), so that between two nodes the velocity changes sign at most once
 //! for any oscillating part), and at least [`MIN_NODES`] per piece. The state at the nodes is
 //! marched from the Floquet periodic state X*(0); the state at any other time is propagated from
 //! the node before it (the exact propagator where it applies, Magnus otherwise).
@@ -16,10 +17,10 @@
 //! every reported maximum, minimum and peak-to-peak comes from; the grid itself is only a bracket.
 
 use crate::numerics::roots::{bracketed_roots, brent};
-use nalgebra::{Matrix4, Vector2};
+use nalgebra::SVector;
 
-use super::propagator::{from_exponential, magnus, magnus_adaptive, segment_matrix};
-use super::sdof::{SdofSystem, StiffnessModel};
+use super::model::PeriodicModel;
+use super::propagator::{PeriodPropagation, SegmentRoute};
 
 /// Grid nodes per period of the fastest free oscillation on a piece.
 pub const NODES_PER_OSCILLATION: f64 = 16.0;
@@ -28,19 +29,17 @@ pub const MIN_NODES: usize = 8;
 
 /// One smooth piece of the period.
 #[derive(Debug, Clone)]
-pub struct Piece {
-    /// Start and end (s from the entry of a pair at A).
+pub struct Piece<const N: usize> {
+    /// Start and end (s from the start of the period).
     pub start: f64,
     pub end: f64,
-    /// Index of the system segment it lies in.
+    /// Index of the model's segment it lies in.
     pub segment: usize,
-    /// Exact route: the segment's augmented matrix; None for Magnus.
-    matrix: Option<Matrix4<f64>>,
-    /// Magnus substeps per second that converged on the segment.
-    density: f64,
+    /// How the segment is propagated (exact affine form, or Magnus with its substep density).
+    route: SegmentRoute<N>,
     /// Grid times and states (both ends included).
     pub times: Vec<f64>,
-    pub states: Vec<Vector2<f64>>,
+    pub states: Vec<SVector<f64, N>>,
 }
 
 /// A located extremum: its value and time (s).
@@ -60,51 +59,42 @@ pub struct Extrema {
 }
 
 /// The periodic state on its pieces.
-pub struct Trajectory<'s, 'a> {
-    pub sys: &'s SdofSystem<'a>,
-    pub pieces: Vec<Piece>,
+pub struct Trajectory<'s, M: ?Sized, const N: usize> {
+    pub sys: &'s M,
+    pub pieces: Vec<Piece<N>>,
 }
 
-impl<'s, 'a> Trajectory<'s, 'a> {
-    /// The periodic trajectory from X*(0).
-    pub fn new(sys: &'s SdofSystem<'a>, x0: Vector2<f64>) -> Self {
-        let exact = sys.exact_applies();
-        let mut cuts: Vec<f64> = Vec::new();
-        if let StiffnessModel::Table(k) = &sys.stiffness {
-            cuts.extend((1..k.len()).map(|i| i as f64 / k.len() as f64 * sys.period));
-        }
+impl<'s, M: PeriodicModel<N> + ?Sized, const N: usize> Trajectory<'s, M, N> {
+    /// The periodic trajectory from X*(0), on the routes of the period's propagation (from Floquet).
+    pub fn new(sys: &'s M, period: &PeriodPropagation<N>, x0: SVector<f64, N>) -> Self {
+        let cuts = sys.smooth_cuts();
         let mut pieces = Vec::new();
         let mut x = x0;
-        for (j, seg) in sys.segments.iter().enumerate() {
-            let matrix = exact.then(|| segment_matrix(sys, seg.start, seg.end));
-            let density = if exact {
-                0.0
-            } else {
-                magnus_adaptive(sys, seg.start, seg.end - seg.start).1 as f64 / (seg.end - seg.start)
-            };
+        for (j, seg) in sys.segments().iter().enumerate() {
+            let route = period.routes[j];
             let mut bounds = vec![seg.start];
             bounds.extend(cuts.iter().copied().filter(|t| *t > seg.start && *t < seg.end));
             bounds.push(seg.end);
             for w in bounds.windows(2) {
                 let (a, b) = (w[0], w[1]);
-                let omega = [0.02, 0.5, 0.98]
-                    .iter()
-                    .map(|f| sys.matrices(a + f * (b - a)).0[1][0].abs().sqrt())
-                    .fold(0.0, f64::max);
+                let omega =
+                    [0.02, 0.5, 0.98].iter().map(|f| sys.highest_frequency(a + f * (b - a))).fold(0.0, f64::max);
                 let n = ((b - a) * omega / (2.0 * std::f64::consts::PI) * NODES_PER_OSCILLATION).ceil() as usize;
                 let n = n.max(MIN_NODES);
-                let mut piece =
-                    Piece { start: a, end: b, segment: j, matrix, density, times: Vec::new(), states: Vec::new() };
+                let mut piece = Piece { start: a, end: b, segment: j, route, times: Vec::new(), states: Vec::new() };
                 let h = (b - a) / n as f64;
-                let step = matrix.map(|m| (m * h).exp());
+                let step = match &route {
+                    SegmentRoute::Exact(s) => Some(s.exponential(h)),
+                    SegmentRoute::Magnus { .. } => None,
+                };
                 piece.times.push(a);
                 piece.states.push(x);
                 for i in 1..=n {
                     let from = a + (i - 1) as f64 * h;
                     let t = if i == n { b } else { a + i as f64 * h };
                     x = match (&step, i == n) {
-                        (Some(e), false) => from_exponential(e, from - seg.start).apply(&x),
-                        _ => piece.advance(sys, &x, from, t - from, seg.start),
+                        (Some(e), false) => e.from(from - seg.start).apply(&x),
+                        _ => piece.advance(sys, &x, from, t - from),
                     };
                     piece.times.push(t);
                     piece.states.push(x);
@@ -116,21 +106,21 @@ impl<'s, 'a> Trajectory<'s, 'a> {
     }
 
     /// The state at `t` inside piece `p`.
-    pub fn state(&self, p: usize, t: f64) -> Vector2<f64> {
+    pub fn state(&self, p: usize, t: f64) -> SVector<f64, N> {
         let piece = &self.pieces[p];
         let i = piece.times.partition_point(|s| *s <= t).saturating_sub(1).min(piece.times.len() - 1);
         let from = piece.times[i];
         if t <= from {
             return piece.states[i];
         }
-        piece.advance(self.sys, &piece.states[i], from, t - from, self.sys.segments[piece.segment].start)
+        piece.advance(self.sys, &piece.states[i], from, t - from)
     }
 
     /// The time at which the system's coefficients are read for `t` in piece `p`: `t` itself inside,
     /// a point just inside at the ends (one-sided limits where k or μ jump).
     pub fn parameter_time(&self, p: usize, t: f64) -> f64 {
         let piece = &self.pieces[p];
-        let d = (1e-12 * self.sys.period).min(0.25 * (piece.end - piece.start));
+        let d = (1e-12 * self.sys.period()).min(0.25 * (piece.end - piece.start));
         t.clamp(piece.start + d, piece.end - d)
     }
 
@@ -155,7 +145,7 @@ impl<'s, 'a> Trajectory<'s, 'a> {
     /// its sign changes between grid nodes are refined by Brent's method; the one-sided values at
     /// both ends of each piece are candidates too.
     pub fn extrema(&self, g: impl Fn(usize, f64) -> f64, dg: impl Fn(usize, f64) -> f64) -> Extrema {
-        let xtol = 1e-13 * self.sys.period;
+        let xtol = 1e-13 * self.sys.period();
         let mut min = Extremum { value: f64::INFINITY, time: 0.0 };
         let mut max = Extremum { value: f64::NEG_INFINITY, time: 0.0 };
         let mut critical = Vec::with_capacity(self.pieces.len());
@@ -217,21 +207,24 @@ impl<'s, 'a> Trajectory<'s, 'a> {
         if let Some(s) = open {
             // A separation running through the end of the period continues at τ = 0 of the next one
             // (reported as two intervals, [s, T] and the one starting at 0).
-            out.push((s, self.sys.period));
+            out.push((s, self.sys.period()));
         }
         out
     }
 }
 
-impl Piece {
-    /// Propagates `x` from `from` over `h` (inside this piece; `seg_start` is its segment's start).
-    fn advance(&self, sys: &SdofSystem, x: &Vector2<f64>, from: f64, h: f64, seg_start: f64) -> Vector2<f64> {
+impl<const N: usize> Piece<N> {
+    /// Propagates `x` from `from` over `h` (inside this piece).
+    fn advance<M: PeriodicModel<N> + ?Sized>(
+        &self,
+        sys: &M,
+        x: &SVector<f64, N>,
+        from: f64,
+        h: f64,
+    ) -> SVector<f64, N> {
         if h <= 0.0 {
             return *x;
         }
-        match &self.matrix {
-            Some(m) => from_exponential(&(m * h).exp(), from - seg_start).apply(x),
-            None => magnus(sys, from, h, ((self.density * h).ceil() as usize).max(2)).apply(x),
-        }
+        self.route.propagate(sys, from, h).apply(x)
     }
 }
