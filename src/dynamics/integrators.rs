@@ -12,10 +12,11 @@ use differential_equations::interpolate::Interpolation;
 use differential_equations::ode::solve_ode;
 use differential_equations::prelude::*;
 use differential_equations::solout::Solout;
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
 use serde::Serialize;
 
 use super::model::PeriodicModel;
+use super::propagator::AffineSegment;
 
 /// An integrator of the study.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -49,14 +50,38 @@ pub struct Counts {
     pub evaluations: usize,
 }
 
+/// The scaled system on one restart interval: on an affine segment its scaled affine form
+/// (dz/dt = A_s z + b0_s + b1_s (t − start), a few multiply-adds), the model itself otherwise.
+/// Either way the right-hand side is one-sided: the model is read at times clamped just inside the
+/// segment (`window`), so a stage at the segment's end never sees the next segment's k(t) or μ sign.
 struct Scaled<'a, M: ?Sized, const N: usize> {
     model: &'a M,
     scale: SVector<f64, N>,
+    affine: Option<AffineSegment<N>>,
+    window: (f64, f64),
+}
+
+impl<M: PeriodicModel<N> + ?Sized, const N: usize> Scaled<'_, M, N> {
+    /// A_s = S⁻¹ A S, b_s = S⁻¹ b of an affine segment.
+    fn scaled(&self, seg: &AffineSegment<N>) -> AffineSegment<N> {
+        let s = &self.scale;
+        AffineSegment {
+            start: seg.start,
+            a: SMatrix::from_fn(|r, c| if r == c { seg.a[(r, c)] } else { seg.a[(r, c)] * s[c] / s[r] }),
+            b0: seg.b0.component_div(s),
+            b1: seg.b1.component_div(s),
+        }
+    }
 }
 
 impl<M: PeriodicModel<N> + ?Sized, const N: usize> ODE<f64, [f64; N]> for Scaled<'_, M, N> {
     fn diff(&self, t: f64, z: &[f64; N], dz: &mut [f64; N]) {
-        let (a, b) = self.model.system(t);
+        if let Some(seg) = &self.affine {
+            let d = seg.rhs(t, &SVector::from(*z));
+            dz.copy_from_slice(d.as_slice());
+            return;
+        }
+        let (a, b) = self.model.system(t.clamp(self.window.0, self.window.1));
         let x = SVector::<f64, N>::from_fn(|i, _| z[i] * self.scale[i]);
         let d = a * x + b;
         for i in 0..N {
@@ -66,7 +91,15 @@ impl<M: PeriodicModel<N> + ?Sized, const N: usize> ODE<f64, [f64; N]> for Scaled
 
     /// The exact Jacobian of the scaled linear system (the implicit methods need no finite differences).
     fn jacobian(&self, t: f64, _z: &[f64; N], j: &mut Matrix<f64>) {
-        let (a, _) = self.model.system(t);
+        if let Some(seg) = &self.affine {
+            for r in 0..N {
+                for c in 0..N {
+                    j[(r, c)] = seg.a[(r, c)];
+                }
+            }
+            return;
+        }
+        let (a, _) = self.model.system(t.clamp(self.window.0, self.window.1));
         for r in 0..N {
             for c in 0..N {
                 j[(r, c)] = if r == c { a[(r, c)] } else { a[(r, c)] * self.scale[c] / self.scale[r] };
@@ -156,7 +189,22 @@ pub fn integrate<M: PeriodicModel<N> + ?Sized, const N: usize>(
 ) -> Result<(Vec<[f64; N]>, Counts), String> {
     let scale = model.state_scale();
     let period = model.period();
-    let ode = Scaled { model, scale };
+    let base = Scaled { model, scale, affine: None, window: (0.0, 0.0) };
+    // The affine form of every affine segment, computed once (scaled); None where the model is general.
+    let forms: Vec<Option<AffineSegment<N>>> = model
+        .segments()
+        .iter()
+        .enumerate()
+        .map(|(j, s)| model.segment_is_affine(j).then(|| base.scaled(&AffineSegment::of(model, s.start, s.end))))
+        .collect();
+    let segment_of = |t: f64| {
+        let p = (t / period).floor();
+        let local = t - p * period;
+        let j = model.segments().partition_point(|s| s.end <= local).min(model.segments().len() - 1);
+        let s = model.segments()[j];
+        let d = (1e-12 * period).min(0.25 * (s.end - s.start));
+        (p * period, j, (p * period + s.start + d, p * period + s.end - d))
+    };
     let t_end = *times.last().ok_or("no output times")?;
     let periods = (t_end / period).ceil() as usize + 1;
     // Restart at every switch time, and stop at every output time (the crate's t_eval output is not
@@ -174,6 +222,8 @@ pub fn integrate<M: PeriodicModel<N> + ?Sized, const N: usize>(
         if tb <= ta {
             continue;
         }
+        let (offset, j, window) = segment_of(0.5 * (ta + tb));
+        let ode = Scaled { affine: forms[j].map(|f| AffineSegment { start: f.start + offset, ..f }), window, ..base };
         let (t_last, y_last, c) = segment(&ode, method, rtol, ta, tb, z)?;
         counts.steps += c.steps;
         counts.rejected += c.rejected;

@@ -44,7 +44,8 @@ pub struct Study {
 }
 
 /// The state at each sample time (τ in periods, sorted, within [0, 1)), marching segment by segment
-/// from X(0) on the period's routes. For an exact route exp(M dt) is cached for the common sample step.
+/// from X(0) on the period's routes. On an exact route exp(M dt) is computed once for the common
+/// sample step, and a segment without samples is crossed with its known propagation.
 pub fn states<M: PeriodicModel<N> + ?Sized, const N: usize>(
     sys: &M,
     period: &PeriodPropagation<N>,
@@ -53,10 +54,14 @@ pub fn states<M: PeriodicModel<N> + ?Sized, const N: usize>(
 ) -> Vec<SVector<f64, N>> {
     let mut out = Vec::with_capacity(taus.len());
     let mut x = x0;
-    let mut t = 0.0;
     let mut k = 0;
     let length = sys.period();
-    for (seg, route) in sys.segments().iter().zip(&period.routes) {
+    for ((seg, route), whole) in sys.segments().iter().zip(&period.routes).zip(&period.segments) {
+        if !(k < taus.len() && taus[k] * length < seg.end) {
+            x = whole.apply(&x);
+            continue;
+        }
+        let mut t = seg.start;
         let mut cache: Option<(f64, SegmentExponential<N>)> = None;
         let mut step = |x: &SVector<f64, N>, from: f64, dt: f64| -> SVector<f64, N> {
             match route {
@@ -74,6 +79,7 @@ pub fn states<M: PeriodicModel<N> + ?Sized, const N: usize>(
                 SegmentRoute::Magnus { .. } => route.propagate(sys, from, dt).apply(x),
             }
         };
+        let entry = x;
         while k < taus.len() && taus[k] * length < seg.end {
             let target = taus[k] * length;
             if target > t {
@@ -83,10 +89,8 @@ pub fn states<M: PeriodicModel<N> + ?Sized, const N: usize>(
             out.push(x);
             k += 1;
         }
-        if seg.end > t {
-            x = step(&x, t, seg.end - t);
-            t = seg.end;
-        }
+        // The segment's end from its entry state, as in the monodromy (no extra exponential).
+        x = whole.apply(&entry);
     }
     out
 }
@@ -106,8 +110,10 @@ pub fn reference<M: PeriodicModel<N> + ?Sized, const N: usize>(
         let offset = p as f64 * length;
         let local: Vec<f64> =
             times[k..].iter().take_while(|t| **t < offset + length).map(|t| (t - offset) / length).collect();
-        out.extend(states(sys, &period, start, &local));
-        k += local.len();
+        if !local.is_empty() {
+            out.extend(states(sys, &period, start, &local));
+            k += local.len();
+        }
         start = period.segments.iter().fold(start, |x, s| s.apply(&x));
     }
     while out.len() < times.len() {
@@ -116,13 +122,36 @@ pub fn reference<M: PeriodicModel<N> + ?Sized, const N: usize>(
     out
 }
 
+/// The output times of the study: [`SAMPLES_LAST_PERIOD`] equal steps over the last of [`PERIODS`]
+/// periods, and the end of the run.
+pub fn study_times(period: f64) -> Vec<f64> {
+    let last = (PERIODS - 1) as f64 * period;
+    let mut times: Vec<f64> =
+        (0..SAMPLES_LAST_PERIOD).map(|i| last + period * i as f64 / SAMPLES_LAST_PERIOD as f64).collect();
+    times.push(PERIODS as f64 * period);
+    times
+}
+
+/// max |x − x_ref| over the last period / peak-to-peak of x_ref there (x: the model's observed displacement).
+pub fn relative_error<M: PeriodicModel<N> + ?Sized, const N: usize>(
+    sys: &M,
+    states: &[[f64; N]],
+    reference: &[SVector<f64, N>],
+) -> f64 {
+    let xs: Vec<f64> = reference[..SAMPLES_LAST_PERIOD].iter().map(|x| sys.observed(x)).collect();
+    let p2p = xs.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) - xs.iter().fold(f64::INFINITY, |a, b| a.min(*b));
+    states[..SAMPLES_LAST_PERIOD]
+        .iter()
+        .zip(reference)
+        .map(|(a, b)| (sys.observed(&SVector::from(*a)) - sys.observed(b)).abs())
+        .fold(0.0, f64::max)
+        / p2p.max(f64::MIN_POSITIVE)
+}
+
 /// The study on `sys`, started from `x0` (the static deflection).
 pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<f64, N>) -> Study {
     let length = sys.period();
-    let last = (PERIODS - 1) as f64 * length;
-    let mut times: Vec<f64> =
-        (0..SAMPLES_LAST_PERIOD).map(|i| last + length * i as f64 / SAMPLES_LAST_PERIOD as f64).collect();
-    times.push(PERIODS as f64 * length);
+    let times = study_times(length);
     let mut best = f64::INFINITY;
     let mut reference_states = Vec::new();
     for _ in 0..REPEATS {
@@ -130,8 +159,6 @@ pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<
         reference_states = reference(sys, x0, &times);
         best = best.min(t0.elapsed().as_secs_f64());
     }
-    let xs: Vec<f64> = reference_states[..SAMPLES_LAST_PERIOD].iter().map(|x| sys.observed(x)).collect();
-    let p2p = xs.iter().fold(f64::NEG_INFINITY, |a, b| a.max(*b)) - xs.iter().fold(f64::INFINITY, |a, b| a.min(*b));
     let scale = sys.state_scale();
     let method = period_segments(sys).method;
     let mut runs = Vec::new();
@@ -151,12 +178,7 @@ pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<
             }
             let run = match result.expect("one repeat ran") {
                 Ok((states, counts)) => {
-                    let err = states[..SAMPLES_LAST_PERIOD]
-                        .iter()
-                        .zip(&reference_states)
-                        .map(|(a, b)| (sys.observed(&SVector::from(*a)) - sys.observed(b)).abs())
-                        .fold(0.0, f64::max)
-                        / p2p.max(f64::MIN_POSITIVE);
+                    let err = relative_error(sys, &states, &reference_states);
                     let (a, b) = (states[SAMPLES_LAST_PERIOD], reference_states[SAMPLES_LAST_PERIOD]);
                     // The scaled state norm, as a chain of hypot (no overflow, exact for one component).
                     let fse =
