@@ -64,7 +64,7 @@ fn check(path: &Path) -> ExitCode {
     };
     match gearloss::check(&path.display().to_string(), &source) {
         Ok(scene) => {
-            let n = scene.operating.points().len();
+            let n = scene.operating.count();
             println!(
                 "{}: scene \"{}\" is valid ({} operating point{})",
                 path.display(),
@@ -88,7 +88,7 @@ fn run(path: &Path, out: &Path) -> ExitCode {
         Ok(s) => s,
         Err(e) => return report_errors(&e),
     };
-    let n = scene.operating.points().len();
+    let n = scene.operating.count();
     let bar = (std::io::stderr().is_terminal() && n >= 50).then(|| {
         let bar = indicatif::ProgressBar::new(n as u64);
         bar.set_message("operating points");

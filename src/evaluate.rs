@@ -20,9 +20,59 @@ pub const CURVE_SAMPLES: usize = 241;
 /// Equal intervals of the contact-state table between A and E (B, P and D are added).
 pub const TABLE_INTERVALS: usize = 12;
 
+/// One operating point of the scene: the product of its sweeps expanded once, torque-major, with
+/// the state in SI and the label in the units the user wrote. Evaluation, report and render all
+/// read the cases; none rebuilds them from the scene.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Case {
+    /// Index of the torque and of the speed in the scene's sweeps.
+    pub torque_index: usize,
+    pub speed_index: usize,
+    pub state: OperatingState,
+    /// `239.3 N*m, 100 rpm`.
+    pub label: String,
+}
+
+/// The cases of a scene's operating sweeps.
+pub fn cases(op: &crate::model::Operating) -> Vec<Case> {
+    let mut out = Vec::with_capacity(op.pinion_torque.values.len() * op.pinion_speed.values.len());
+    for (ti, torque) in op.pinion_torque.values.iter().enumerate() {
+        for (ni, speed) in op.pinion_speed.values.iter().enumerate() {
+            out.push(Case {
+                torque_index: ti,
+                speed_index: ni,
+                state: OperatingState { pinion_torque: torque.value, pinion_speed: speed.value },
+                label: format!(
+                    "{} {}, {} {}",
+                    op.pinion_torque.written_values[ti],
+                    op.pinion_torque.unit,
+                    op.pinion_speed.written_values[ni],
+                    op.pinion_speed.unit
+                ),
+            });
+        }
+    }
+    out
+}
+
+/// Contact quantities along the line of action for the contact-state plot: v_s at each plotted speed
+/// (first torque), p_H at each plotted torque (first speed), SR at the first operating point.
+#[derive(Debug, Clone, Default)]
+pub struct ContactCurves {
+    /// Positions from T1 (m), [`Evaluation::curve_positions`].
+    pub u: Vec<f64>,
+    /// (speed as written, v_s in m/s).
+    pub sliding_velocity: Vec<(String, Vec<f64>)>,
+    pub slide_to_roll: Vec<f64>,
+    /// (torque as written, p_H in Pa).
+    pub hertz_pressure: Vec<(String, Vec<f64>)>,
+}
+
 /// Everything computed for one scene.
 #[derive(Debug, Clone)]
 pub struct Evaluation {
+    /// The operating points, in the order of `points`.
+    pub cases: Vec<Case>,
     pub geometry: SpurGeometry,
     /// E' (Pa).
     pub reduced_modulus: f64,
@@ -35,6 +85,7 @@ pub struct Evaluation {
     /// Film-thickness inputs when the film is computed (α known and asked for or needed).
     pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
     pub points: Vec<PointEvaluation>,
+    pub contact_curves: ContactCurves,
     /// The dynamics, when the scene asks for them.
     pub dynamics: Option<crate::evaluate_dynamics::DynamicsEvaluation>,
 }
@@ -42,9 +93,11 @@ pub struct Evaluation {
 /// Everything computed at one operating point.
 #[derive(Debug, Clone, Serialize)]
 pub struct PointEvaluation {
-    /// (torque index, speed index) into the scene's sweeps.
-    pub index: (usize, usize),
+    /// Index into [`Evaluation::cases`].
+    pub case: usize,
     pub state: OperatingState,
+    /// T = 2π/(ω1 z1) (s).
+    pub mesh_period: f64,
     /// The contact-state table: the named points A B P D E and equal steps between A and E.
     pub table: Vec<(Option<&'static str>, ContactPoint)>,
     /// Film thickness at the table rows, when computed.
@@ -223,6 +276,7 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
         (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
     });
     let mut eval = Evaluation {
+        cases: cases(&scene.operating),
         ohlendorf_loss_factor: 0.0,
         geometry,
         reduced_modulus: e_r,
@@ -231,21 +285,18 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
         formulations: analyses.efficiency.clone().unwrap_or_default(),
         film_inputs,
         points: Vec::new(),
+        contact_curves: ContactCurves::default(),
         dynamics: None,
     };
     let rows = table_positions(&eval.geometry);
-    let op = &scene.operating;
-    let indices = op.points();
-    let with_curves = pick(indices.len());
+    let with_curves = pick(eval.cases.len());
     let wants_friction = analyses.friction_along_loa || analyses.efficiency.is_some();
-    let points: Vec<PointEvaluation> = indices
+    let points: Vec<PointEvaluation> = eval
+        .cases
         .par_iter()
         .enumerate()
-        .map(|(k, &(ti, ni))| {
-            let state = OperatingState {
-                pinion_torque: op.pinion_torque.values[ti].value,
-                pinion_speed: op.pinion_speed.values[ni].value,
-            };
+        .map(|(k, case)| {
+            let state = case.state;
             let table: Vec<(Option<&'static str>, ContactPoint)> =
                 rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, &state))).collect();
             let film =
@@ -257,18 +308,45 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
                 Vec::new()
             };
             tick();
-            PointEvaluation { index: (ti, ni), state, table, film, laws, has_curves: curves }
+            let mesh_period = eval.geometry.mesh_period(state.pinion_speed);
+            PointEvaluation { case: k, state, mesh_period, table, film, laws, has_curves: curves }
         })
         .collect();
     eval.points = points;
-    let first = OperatingState {
-        pinion_torque: scene.operating.pinion_torque.values[0].value,
-        pinion_speed: scene.operating.pinion_speed.values[0].value,
-    };
-    eval.dynamics = crate::evaluate_dynamics::evaluate_dynamics(scene, eval.law_context(first));
+    eval.contact_curves = contact_curves(scene, &eval);
+    eval.dynamics =
+        crate::evaluate_dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state));
     eval.ohlendorf_loss_factor =
         efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
     eval
+}
+
+/// The contact curves of the contact-state plot.
+fn contact_curves(scene: &Scene, eval: &Evaluation) -> ContactCurves {
+    let u = eval.curve_positions();
+    let op = &scene.operating;
+    let torque0 = op.pinion_torque.values[0].value;
+    let speed0 = op.pinion_speed.values[0].value;
+    let at = |t: f64, n: f64| -> Vec<ContactPoint> {
+        let state = OperatingState { pinion_torque: t, pinion_speed: n };
+        u.iter().map(|x| eval.contact_at(*x, &state)).collect()
+    };
+    let sliding_velocity = pick(op.pinion_speed.values.len())
+        .into_iter()
+        .map(|i| {
+            let label = format!("{} {}", op.pinion_speed.written_values[i], op.pinion_speed.unit);
+            (label, at(torque0, op.pinion_speed.values[i].value).iter().map(|c| c.sliding_velocity).collect())
+        })
+        .collect();
+    let hertz_pressure = pick(op.pinion_torque.values.len())
+        .into_iter()
+        .map(|i| {
+            let label = format!("{} {}", op.pinion_torque.written_values[i], op.pinion_torque.unit);
+            (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
+        })
+        .collect();
+    let slide_to_roll = at(torque0, speed0).iter().map(|c| c.slide_to_roll).collect();
+    ContactCurves { u, sliding_velocity, slide_to_roll, hertz_pressure }
 }
 
 fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> ValiditySummary {

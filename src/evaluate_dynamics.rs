@@ -9,6 +9,7 @@ use crate::dynamics::numerics::{study, Study};
 use crate::dynamics::propagator::Method;
 use crate::dynamics::response::PeriodicResponse;
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, SdofSystem, StiffnessModel};
+use crate::evaluate::Case;
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, SpurGeometry};
 use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
@@ -29,7 +30,8 @@ pub struct FormulationResult {
 
 #[derive(Debug, Clone, Serialize)]
 pub struct DynamicsPoint {
-    pub index: (usize, usize),
+    /// Index into the evaluation's cases.
+    pub case: usize,
     pub state: OperatingState,
     pub mesh_frequency: f64,
     pub results: Vec<FormulationResult>,
@@ -145,7 +147,7 @@ fn unstable_ranges(rows: impl Iterator<Item = (f64, f64)>, excess: impl Fn(f64) 
 
 /// Evaluates the dynamics the scene asks for; None when it asks for none.
 /// `base` is the law context of the scene's pair (its state is replaced by each operating point's).
-pub fn evaluate_dynamics(scene: &Scene, base: LawContext) -> Option<DynamicsEvaluation> {
+pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Option<DynamicsEvaluation> {
     let spec = scene.dynamics.as_ref()?;
     let a = &scene.analyses;
     if !(a.dynamics || a.stability_map.is_some() || a.numerics) {
@@ -153,20 +155,15 @@ pub fn evaluate_dynamics(scene: &Scene, base: LawContext) -> Option<DynamicsEval
     }
     let (stiffness, source) = stiffness_model(spec, base.geometry);
     let j = inertia(scene);
-    let state_of = |ti: usize, ni: usize| OperatingState {
-        pinion_torque: scene.operating.pinion_torque.values[ti].value,
-        pinion_speed: scene.operating.pinion_speed.values[ni].value,
-    };
-    let probe_state = state_of(0, 0);
+    let probe_state = cases[0].state;
     let probe = system(base, spec, &stiffness, None, DynamicFormulation::Base, probe_state, j);
     let law_for = |state: OperatingState| spec.friction.as_ref().map(|l| l.build(&LawContext { state, ..base }));
     let points = if a.dynamics {
-        scene
-            .operating
-            .points()
+        cases
             .par_iter()
-            .map(|&(ti, ni)| {
-                let state = state_of(ti, ni);
+            .enumerate()
+            .map(|(k, case)| {
+                let state = case.state;
                 let law = law_for(state);
                 let results = spec
                     .formulations
@@ -174,7 +171,7 @@ pub fn evaluate_dynamics(scene: &Scene, base: LawContext) -> Option<DynamicsEval
                     .map(|f| analyse(&system(base, spec, &stiffness, law.as_deref(), *f, state, j), true))
                     .collect();
                 DynamicsPoint {
-                    index: (ti, ni),
+                    case: k,
                     state,
                     mesh_frequency: state.pinion_speed * base.geometry.teeth[0] as f64 / (2.0 * std::f64::consts::PI),
                     results,

@@ -188,6 +188,8 @@ pub struct Sweep<T> {
     pub values: Vec<T>,
     /// The unit the user wrote, for the summary (`rpm`).
     pub unit: String,
+    /// SI per unit written (π/30 for rpm).
+    pub factor: f64,
     /// The values in the user's unit.
     pub written_values: Vec<f64>,
     pub span: Span,
@@ -200,15 +202,9 @@ pub struct Operating {
 }
 
 impl Operating {
-    /// The full product of the sweeps, torque-major: (torque index, speed index).
-    pub fn points(&self) -> Vec<(usize, usize)> {
-        let mut out = Vec::new();
-        for t in 0..self.pinion_torque.values.len() {
-            for n in 0..self.pinion_speed.values.len() {
-                out.push((t, n));
-            }
-        }
-        out
+    /// The number of operating points: the product of the sweeps.
+    pub fn count(&self) -> usize {
+        self.pinion_torque.values.len() * self.pinion_speed.values.len()
     }
 }
 

@@ -108,11 +108,12 @@ pub fn render_markdown(r: &Report) -> String {
     for (k, op) in r.operating_points.iter().enumerate() {
         let _ = writeln!(
             out,
-            "### Operating point {}: {}\n\nT_p = {} N·m, n_p = {} rpm, F_bn = {} N, T_mesh = {} ms, v_t = {} m/s\n",
+            "### Operating point {}: {}\n\nT_p = {} N·m, n_p = {} {}, F_bn = {} N, T_mesh = {} ms, v_t = {} m/s\n",
             k + 1,
             op.label,
             fixed(op.pinion_torque.si(), 2),
-            fixed(op.pinion_speed.si() * 30.0 / std::f64::consts::PI, 1),
+            fixed(r.speed_unit.value(&op.pinion_speed), 1),
+            r.speed_unit.name,
             fixed(op.normal_load.si(), 1),
             fixed(op.mesh_period.si() * 1e3, 5),
             fixed(op.pitch_line_velocity.si(), 3)

@@ -122,13 +122,15 @@ pub fn dynamics(out: &mut String, r: &Report) {
             fixed(map.pinion_torque.si(), 2),
             map.points.len()
         );
-        header(out, &["formulation", "max ρ", "at rpm", "max K_v (stable)", "unstable ranges"]);
+        let unit = &map.speed_unit;
+        let at_unit = format!("at {}", unit.name);
+        header(out, &["formulation", "max ρ", &at_unit, "max K_v (stable)", "unstable ranges"]);
         for (i, f) in map.formulations.iter().enumerate() {
             let (mut rho, mut at, mut kv) = (0.0f64, 0.0, 0.0f64);
             for p in &map.points {
                 if p.spectral_radius[i].0 > rho {
                     rho = p.spectral_radius[i].0;
-                    at = p.pinion_speed.si() * 30.0 / std::f64::consts::PI;
+                    at = unit.value(&p.pinion_speed);
                 }
                 if let MuValue::Value(v) = p.dynamic_factor[i] {
                     kv = kv.max(v.0);
@@ -136,9 +138,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
             }
             let ranges: Vec<String> = map.unstable_ranges[i]
                 .iter()
-                .map(|[a, b]| {
-                    format!("{:.0}–{:.0}", a.si() * 30.0 / std::f64::consts::PI, b.si() * 30.0 / std::f64::consts::PI)
-                })
+                .map(|[a, b]| format!("{:.0}–{:.0}", unit.value(a), unit.value(b)))
                 .collect();
             row(
                 out,
@@ -147,7 +147,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
                     fixed(rho, 6),
                     fixed(at, 0),
                     fixed(kv, 4),
-                    if ranges.is_empty() { "none".into() } else { format!("{} rpm", ranges.join(", ")) },
+                    if ranges.is_empty() { "none".into() } else { format!("{} {}", ranges.join(", "), unit.name) },
                 ],
             );
         }

@@ -116,13 +116,14 @@ pub fn sweep(out: &mut String, r: &Report) {
         out,
         "Mean efficiency over one mesh cycle (time mean, adaptive Gauss–Kronrod to a relative tolerance of 1e-10, split at every zone boundary, pitch-point passage and regime switch) and friction power loss P = (1 − η̄) T_p ω_p.\n"
     );
-    header(out, &["T_p N·m", "n_p rpm", "law", "formulation", "η̄ %", "P_loss W"]);
+    let speed = format!("n_p {}", r.speed_unit.name);
+    header(out, &["T_p N·m", &speed, "law", "formulation", "η̄ %", "P_loss W"]);
     for rec in &r.efficiency {
         row(
             out,
             &[
                 fixed(rec.pinion_torque.si(), 2),
-                fixed(rec.pinion_speed.si() * 30.0 / std::f64::consts::PI, 1),
+                fixed(r.speed_unit.value(&rec.pinion_speed), 1),
                 format!("`{}`", rec.label),
                 formulation_name(rec.formulation).into(),
                 fixed(100.0 * rec.mean_efficiency.0, 4),

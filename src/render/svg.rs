@@ -256,12 +256,12 @@ pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
 }
 
 /// Mean η and power loss against the swept variable, at each value of the other one.
-/// `by_speed`: x is the pinion speed (rpm), one curve per (law, formulation, torque); else x is torque.
+/// `by_speed`: x is the pinion speed (in the unit the scene wrote), one curve per (law, formulation, torque); else x is torque.
 pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     let key = |q: f64| format!("{q:.9e}");
     let x_of = |rec: &crate::report::friction::EfficiencyRecord| {
         if by_speed {
-            rec.pinion_speed.si() * 30.0 / std::f64::consts::PI
+            r.speed_unit.value(&rec.pinion_speed)
         } else {
             rec.pinion_torque.si()
         }
@@ -270,7 +270,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
         if by_speed {
             format!("{:.1} N·m", rec.pinion_torque.si())
         } else {
-            format!("{:.0} rpm", rec.pinion_speed.si() * 30.0 / std::f64::consts::PI)
+            format!("{:.0} {}", r.speed_unit.value(&rec.pinion_speed), r.speed_unit.name)
         }
     };
     let mut xs: Vec<f64> = r.efficiency.iter().map(x_of).collect();
@@ -292,22 +292,17 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
         eta[i].1[j] = 100.0 * rec.mean_efficiency.0;
         loss[i].1[j] = rec.power_loss.si();
     }
-    let x_label = if by_speed { "pinion speed (rpm)" } else { "pinion torque (N·m)" };
+    let x_label =
+        if by_speed { format!("pinion speed ({})", r.speed_unit.name) } else { "pinion torque (N·m)".to_string() };
     let panels = [
         Panel {
             y_label: "mean efficiency η̄ (%)".into(),
-            x_label: x_label.into(),
+            x_label: x_label.clone(),
             x: xs.clone(),
             series: eta,
             ..Default::default()
         },
-        Panel {
-            y_label: "friction power loss (W)".into(),
-            x_label: x_label.into(),
-            x: xs,
-            series: loss,
-            ..Default::default()
-        },
+        Panel { y_label: "friction power loss (W)".into(), x_label, x: xs, series: loss, ..Default::default() },
     ];
     let what = if by_speed { "speed" } else { "torque" };
     figure(&format!("{}: mean efficiency and power loss against {what}", r.title), &panels)
@@ -318,14 +313,14 @@ pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
     let mut xs: Vec<f64> = Vec::new();
     let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     for op in &r.operating_points {
-        let rpm = op.pinion_speed.si() * 30.0 / std::f64::consts::PI;
+        let speed = r.speed_unit.value(&op.pinion_speed);
         for law in op.friction.iter().filter(|l| l.law == crate::friction::catalog::LawId::Composite) {
             let label = format!("{} @ {:.1} N·m", law.label, op.pinion_torque.si());
             match series.iter_mut().find(|(l, _)| *l == label) {
-                Some((_, v)) => v.push((rpm, law.mean_abs_mu.0)),
-                None => series.push((label, vec![(rpm, law.mean_abs_mu.0)])),
+                Some((_, v)) => v.push((speed, law.mean_abs_mu.0)),
+                None => series.push((label, vec![(speed, law.mean_abs_mu.0)])),
             }
-            xs.push(rpm);
+            xs.push(speed);
         }
     }
     xs.sort_by(f64::total_cmp);
@@ -339,7 +334,7 @@ pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
         .collect();
     let panel = Panel {
         y_label: "mean |μ| over A–E".into(),
-        x_label: "pinion speed (rpm)".into(),
+        x_label: format!("pinion speed ({})", r.speed_unit.name),
         x: xs,
         series,
         ..Default::default()
@@ -449,7 +444,8 @@ pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
 pub fn stability_map(r: &Report) -> Result<String, String> {
     use crate::report::friction::MuValue;
     let map = r.dynamics.as_ref().and_then(|d| d.stability_map.as_ref()).ok_or("no stability map")?;
-    let x: Vec<f64> = map.points.iter().map(|p| p.pinion_speed.si() * 30.0 / std::f64::consts::PI).collect();
+    let x: Vec<f64> = map.points.iter().map(|p| map.speed_unit.value(&p.pinion_speed)).collect();
+    let x_label = format!("pinion speed ({})", map.speed_unit.name);
     let names: Vec<String> = map.formulations.iter().map(|f| format!("{f:?}").to_lowercase()).collect();
     let mut rho: Vec<(String, Vec<f64>)> = names
         .iter()
@@ -475,18 +471,12 @@ pub fn stability_map(r: &Report) -> Result<String, String> {
     let panels = [
         Panel {
             y_label: "spectral radius ρ".into(),
-            x_label: "pinion speed (rpm)".into(),
+            x_label: x_label.clone(),
             x: x.clone(),
             series: rho,
             ..Default::default()
         },
-        Panel {
-            y_label: "dynamic factor (stable speeds)".into(),
-            x_label: "pinion speed (rpm)".into(),
-            x,
-            series: kv,
-            ..Default::default()
-        },
+        Panel { y_label: "dynamic factor (stable speeds)".into(), x_label, x, series: kv, ..Default::default() },
     ];
     figure(&format!("{}: stability map at {:.1} N·m", r.title, map.pinion_torque.si()), &panels)
 }

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::number::{m, Num, Q};
+use super::number::{m, DisplayUnit, Num, Q};
 use super::{Finding, Severity};
 use crate::dynamics::floquet::Verdict;
 use crate::dynamics::propagator::Method;
@@ -113,6 +113,9 @@ pub struct StabilityMapReport {
     /// Per formulation: speed ranges [from, to] (rad/s) where ρ > 1, bounds located by root finding.
     pub unstable_ranges: Vec<Vec<[Q; 2]>>,
     pub points: Vec<StabilityRow>,
+    /// The unit the map's speeds were written in.
+    #[serde(skip)]
+    pub speed_unit: DisplayUnit,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -214,8 +217,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
             .iter()
             .enumerate()
             .map(|(k, p)| {
-                let pe = eval.points.iter().find(|x| x.index == p.index).expect("same operating points");
-                let label = super::operating_label(scene, pe);
+                let label = eval.cases[p.case].label.clone();
                 if picked.contains(&k) {
                     let mut c = DynamicsCurves {
                         file: format!("dynamics_point_{}.svg", k + 1),
@@ -315,6 +317,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
             pinion_torque: Q::new(scene.operating.pinion_torque.values[0].value, "N*m"),
             formulations: d.formulations.clone(),
             unstable_ranges,
+            speed_unit: scene.analyses.stability_map.as_ref().map(DisplayUnit::of).unwrap_or_default(),
             points: rows
                 .iter()
                 .map(|r| StabilityRow {
@@ -441,11 +444,8 @@ pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
                 let list: Vec<String> = ranges
                     .iter()
                     .map(|[a, b]| {
-                        format!(
-                            "{:.0}–{:.0} rpm",
-                            a.si() * 30.0 / std::f64::consts::PI,
-                            b.si() * 30.0 / std::f64::consts::PI
-                        )
+                        let u = &map.speed_unit;
+                        format!("{:.0}–{:.0} {}", u.value(a), u.value(b), u.name)
                     })
                     .collect();
                 out.push(warn(format!(

@@ -31,6 +31,9 @@ pub struct Report {
     /// Sampled curves for the plots (not in report.json: they repeat the tables at finer spacing).
     #[serde(skip)]
     pub curves: Curves,
+    /// The unit the scene wrote the pinion speed in, for tables and plot axes.
+    #[serde(skip)]
+    pub speed_unit: number::DisplayUnit,
 }
 
 /// One input of the scene, as written and in SI (a plain number when dimensionless).
@@ -396,33 +399,20 @@ fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> ContactRow {
 
 fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &PointEvaluation) -> OperatingPointReport {
     let g = &eval.geometry;
-    let label = operating_label(scene, pe);
+    let label = eval.cases[pe.case].label.clone();
     OperatingPointReport {
         pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
         pinion_speed: Q::new(pe.state.pinion_speed, "rad/s"),
         label,
         wheel_speed: Q::new(g.wheel_speed(&pe.state), "rad/s"),
         normal_load: Q::new(g.normal_load(&pe.state), "N"),
-        mesh_period: Q::new(2.0 * std::f64::consts::PI / (pe.state.pinion_speed * g.teeth[0] as f64), "s"),
+        mesh_period: Q::new(pe.mesh_period, "s"),
         pitch_line_velocity: mps(pe.state.pinion_speed * g.working_pitch_radius[0]),
         contact: pe.table.iter().map(|(n, c)| contact_row(*n, c)).collect(),
         film: friction::film_rows(pe),
         friction: scene.friction.iter().zip(&pe.laws).map(|(spec, law)| friction::law_report(spec, pe, law)).collect(),
         plot: None,
     }
-}
-
-/// `239.3 N*m, 100 rpm`: an operating point in the user's units.
-pub fn operating_label(scene: &Scene, pe: &PointEvaluation) -> String {
-    let op = &scene.operating;
-    let (ti, ni) = pe.index;
-    format!(
-        "{} {}, {} {}",
-        op.pinion_torque.written_values[ti],
-        op.pinion_torque.unit,
-        op.pinion_speed.written_values[ni],
-        op.pinion_speed.unit
-    )
 }
 
 pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
@@ -433,34 +423,12 @@ pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
 }
 
 fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
-    let u = eval.curve_positions();
-    let op = &scene.operating;
-    let torque0 = op.pinion_torque.values[0].value;
-    let speed0 = op.pinion_speed.values[0].value;
-    let at = |t: f64, n: f64| -> Vec<ContactPoint> {
-        let state = crate::geometry::OperatingState { pinion_torque: t, pinion_speed: n };
-        u.iter().map(|x| eval.contact_at(*x, &state)).collect()
-    };
-    let sliding_velocity = pick(op.pinion_speed.values.len())
-        .into_iter()
-        .map(|i| {
-            let label = format!("{} {}", op.pinion_speed.written_values[i], op.pinion_speed.unit);
-            (label, at(torque0, op.pinion_speed.values[i].value).iter().map(|c| c.sliding_velocity).collect())
-        })
-        .collect();
-    let hertz_pressure = pick(op.pinion_torque.values.len())
-        .into_iter()
-        .map(|i| {
-            let label = format!("{} {}", op.pinion_torque.written_values[i], op.pinion_torque.unit);
-            (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
-        })
-        .collect();
-    let slide_to_roll = at(torque0, speed0).iter().map(|c| c.slide_to_roll).collect();
+    let c = &eval.contact_curves;
     Curves {
-        u,
-        sliding_velocity,
-        slide_to_roll,
-        hertz_pressure,
+        u: c.u.clone(),
+        sliding_velocity: c.sliding_velocity.clone(),
+        slide_to_roll: c.slide_to_roll.clone(),
+        hertz_pressure: c.hertz_pressure.clone(),
         marks: eval.geometry.named_points(),
         points: point_curves(scene, eval),
         tau: crate::evaluate::cycle_times(),
@@ -475,7 +443,7 @@ fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves> {
         }
         let mut pc = PointCurves {
             file: format!("point_{}_friction.svg", k + 1),
-            label: operating_label(scene, pe),
+            label: eval.cases[pe.case].label.clone(),
             ..Default::default()
         };
         for (spec, law) in scene.friction.iter().zip(&pe.laws) {
@@ -548,7 +516,7 @@ fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
 pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
     let mut findings = findings(scene, eval);
     findings.extend(friction::law_findings(scene, eval));
-    findings.extend(plausibility::plausibility_findings(scene, eval));
+    findings.extend(plausibility::plausibility_findings(eval));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),
@@ -563,6 +531,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
             title: "Sliding velocity, slide-to-roll ratio and Hertzian pressure along the line of action".into(),
         }],
         curves: curves(scene, eval),
+        speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
     };
     if let Some(d) = &report.dynamics {
         report.findings.extend(dynamics::dynamics_findings(d));

@@ -44,6 +44,26 @@ impl Q {
     }
 }
 
+/// A unit the user wrote, for display in tables and plots: the value in it is SI / factor.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DisplayUnit {
+    pub name: String,
+    /// SI per unit.
+    pub factor: f64,
+}
+
+impl DisplayUnit {
+    /// The unit a sweep was written in.
+    pub fn of<T>(sweep: &crate::model::Sweep<T>) -> DisplayUnit {
+        DisplayUnit { name: sweep.unit.clone(), factor: sweep.factor }
+    }
+
+    /// A value in this unit.
+    pub fn value(&self, q: &Q) -> f64 {
+        q.si() / self.factor
+    }
+}
+
 /// Shorthands for the SI units used in reports.
 pub fn m(x: f64) -> Q {
     Q::new(x, "m")

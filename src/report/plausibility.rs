@@ -5,16 +5,15 @@
 
 use super::{Finding, Severity};
 use crate::evaluate::Evaluation;
-use crate::model::Scene;
 
 /// b_H / R above which the half-space (line-contact) assumption of Hertz's formulas fails.
 pub const HALF_WIDTH_LIMIT: f64 = 0.1;
 
-pub fn plausibility_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
+pub fn plausibility_findings(eval: &Evaluation) -> Vec<Finding> {
     let mut out = Vec::new();
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     for (k, pe) in eval.points.iter().enumerate() {
-        let label = super::operating_label(scene, pe);
+        let label = &eval.cases[pe.case].label;
         if let Some((name, c)) =
             pe.table.iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
                 (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))

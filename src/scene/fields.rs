@@ -170,9 +170,10 @@ impl<'a> Fields<'a> {
             return None;
         }
         let (_, value) = self.values.get(key)?;
-        sweep_values(key, value, Q::DIMENSION, errors).map(|(si, unit, written)| Sweep {
+        sweep_values(key, value, Q::DIMENSION, errors).map(|(si, unit, written, factor)| Sweep {
             values: si.into_iter().map(Q::from_si).collect(),
             unit,
+            factor,
             written_values: written,
             span: value.span,
         })
@@ -279,7 +280,7 @@ pub(crate) fn sweep_values(
     value: &Value,
     expected: Dimension,
     errors: &mut Vec<Diagnostic>,
-) -> Option<(Vec<f64>, String, Vec<f64>)> {
+) -> Option<(Vec<f64>, String, Vec<f64>, f64)> {
     let (numbers, unit): (Vec<(f64, Span)>, &Option<UnitExpr>) = match &value.kind {
         ValueKind::Quantity { number, unit } => (vec![(*number, value.span)], unit),
         ValueKind::List { items, unit } => {
@@ -331,7 +332,7 @@ pub(crate) fn sweep_values(
         written.push(x);
     }
     let unit_text = unit.as_ref().map_or(String::new(), |u| u.text.clone());
-    Some((si, unit_text, written))
+    Some((si, unit_text, written, scale.factor))
 }
 
 fn range_values(

@@ -101,11 +101,11 @@ fn transmission_error(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Vec<(f
         errors.push(t.missing("amplitudes", "[1.5, 0.4] um"));
         return None;
     };
-    let (amps, _, _) = sweep_values("amplitudes", a, Dimension::LENGTH, errors)?;
+    let (amps, _, _, _) = sweep_values("amplitudes", a, Dimension::LENGTH, errors)?;
     let phases = match t.values.get("phases") {
         None => vec![0.0; amps.len()],
         Some((_, p)) => {
-            let (ph, _, _) = sweep_values("phases", p, Dimension::ANGLE, errors)?;
+            let (ph, _, _, _) = sweep_values("phases", p, Dimension::ANGLE, errors)?;
             if ph.len() != amps.len() {
                 errors.push(
                     Diagnostic::new(
@@ -234,7 +234,7 @@ fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) 
         return read_stiffness_csv(v, base_dir, errors).map(StiffnessSpec::Table);
     }
     if let Some((_, v)) = k.values.get("table") {
-        let (values, _, _) = sweep_values("table", v, Dimension::STIFFNESS, errors)?;
+        let (values, _, _, _) = sweep_values("table", v, Dimension::STIFFNESS, errors)?;
         if values.len() < 4 || values.iter().any(|x| *x <= 0.0) {
             errors.push(
                 Diagnostic::new(
@@ -277,7 +277,7 @@ pub fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<
             errors.push(unknown_name("argument of `stability_map`", name, &["pinion_speed"]));
             continue;
         }
-        let (si, unit, written) = sweep_values("pinion_speed", value, Dimension::ANGULAR_VELOCITY, errors)?;
+        let (si, unit, written, factor) = sweep_values("pinion_speed", value, Dimension::ANGULAR_VELOCITY, errors)?;
         if si.iter().any(|x| *x <= 0.0) {
             errors.push(
                 Diagnostic::new(DiagnosticKind::OutOfRange, value.span, "stability map speeds must be positive")
@@ -288,6 +288,7 @@ pub fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<
         out = Some(Sweep {
             values: si.into_iter().map(AngularVelocity::from_si).collect(),
             unit,
+            factor,
             written_values: written,
             span: value.span,
         });

@@ -53,7 +53,7 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
                     ok = false;
                     continue;
                 }
-                super::fields::sweep_values(spec.name, value, spec.dimension, errors).map(|(si, unit, written)| {
+                super::fields::sweep_values(spec.name, value, spec.dimension, errors).map(|(si, unit, written, _)| {
                     si.into_iter()
                         .zip(written)
                         .map(|(x, w)| (x, format!("{} {unit}", format_number(w)).trim_end().to_string()))
