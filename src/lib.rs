@@ -16,7 +16,6 @@ pub mod diagnostics;
 pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;
-pub mod evaluate_dynamics;
 pub mod friction;
 pub mod geometry;
 pub mod model;

@@ -139,7 +139,7 @@ impl<const N: usize> AffineSegment<N> {
 /// `DefaultAllocator: Allocator<D, D>` clause, rustc no longer finds the static matrices' constructors.)
 fn split<const N: usize>(e: impl Fn(usize, usize) -> f64) -> SegmentExponential<N> {
     SegmentExponential {
-        phi: SMatrix::from_fn(|i, j| e(i, j)),
+        phi: SMatrix::from_fn(&e),
         q0: SVector::from_fn(|i, _| e(i, N)),
         q1: SVector::from_fn(|i, _| e(i, N + 1)),
     }

@@ -3,10 +3,12 @@
 //! Knows nothing of scenes, friction or reports: it takes a [`spur::SpurPairInput`] and gives numbers.
 
 pub mod contact;
+pub mod involute;
 pub mod mesh;
 pub mod spur;
 pub mod stiffness;
 
 pub use contact::{ContactPoint, OperatingState};
+pub use involute::involute;
 pub use mesh::{Contacts, Mesh};
-pub use spur::{involute, GeometryProblem, PairPart, SpurGeometry, SpurPairInput, TipSource};
+pub use spur::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput, TipSource};

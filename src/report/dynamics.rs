@@ -4,12 +4,12 @@
 use serde::Serialize;
 
 use super::number::{m, DisplayUnit, Num, Q};
-use super::{Finding, Severity};
+pub use super::numerics::{NumericsReport, NumericsRow, Timings};
 use crate::dynamics::floquet::Verdict;
 use crate::dynamics::propagator::Method;
 use crate::dynamics::{DynamicFormulation, StiffnessModel};
+use crate::evaluate::dynamics::DynamicsEvaluation;
 use crate::evaluate::Evaluation;
-use crate::evaluate_dynamics::DynamicsEvaluation;
 use crate::model::Scene;
 
 #[derive(Debug, Clone, Serialize)]
@@ -116,37 +116,6 @@ pub struct StabilityMapReport {
     /// The unit the map's speeds were written in.
     #[serde(skip)]
     pub speed_unit: DisplayUnit,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct NumericsRow {
-    pub method: String,
-    pub rtol: Num,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub error: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub final_state_error: Option<Num>,
-    pub steps: usize,
-    pub rejected: usize,
-    pub evaluations: usize,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub failure: Option<String>,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct NumericsReport {
-    pub formulation: DynamicFormulation,
-    pub reference: Method,
-    pub periods: usize,
-    pub runs: Vec<NumericsRow>,
-}
-
-/// Run times, for the timing files only.
-#[derive(Debug, Clone, Default, Serialize)]
-pub struct Timings {
-    pub reference_seconds: f64,
-    /// (method, rtol, error, seconds)
-    pub runs: Vec<(String, f64, f64, f64)>,
 }
 
 /// Curves of one operating point for plots.
@@ -365,7 +334,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         ),
     };
     DynamicsReport {
-        model: "sdof",
+        model: d.model,
         stiffness_step_ratio: match &d.stiffness {
             StiffnessModel::PairsInContact { single, double, .. } => Some(double / single),
             StiffnessModel::Table(_) => None,
@@ -385,76 +354,4 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         curves,
         timings,
     }
-}
-
-/// Findings of the dynamics: instability, tooth separation, stiff ratios, Liouville.
-pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
-    let mut out = Vec::new();
-    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
-    for p in &r.points {
-        for f in &p.formulations {
-            let name = format!("{:?}", f.formulation).to_lowercase();
-            if f.verdict == Verdict::Unstable {
-                out.push(warn(format!(
-                    "dynamics at {} ({name}): parametrically unstable, spectral radius {:.6}; no steady state exists in the linear model and none is reported",
-                    p.label, f.spectral_radius.0
-                )));
-            }
-            if !f.tooth_separation.is_empty() {
-                let spans: Vec<String> =
-                    f.tooth_separation.iter().map(|[a, b]| format!("τ = {:.4}–{:.4}", a.0, b.0)).collect();
-                out.push(warn(format!(
-                    "dynamics at {} ({name}): the dynamic mesh force turns negative (tooth separation) at {}; the linear model is not valid there",
-                    p.label,
-                    spans.join(", ")
-                )));
-            }
-            if let (Some(eta), false) = (&f.max_dynamic_efficiency, f.tooth_separation.is_empty()) {
-                if eta.0 > 1.0 {
-                    out.push(warn(format!(
-                        "dynamics at {} ({name}): the instantaneous efficiency from the tooth force reaches {:.6} > 1 where the teeth separate (F < 0 makes the friction power negative); the mean dynamic efficiency there is not physical",
-                        p.label, eta.0
-                    )));
-                }
-            }
-            let step_kv = r.stiffness_step_ratio.filter(|_| p.frequency_ratio.0 > 10.0);
-            if let (Some(ratio), Some(kv)) = (step_kv, &f.dynamic_factor) {
-                if (kv.0 - ratio).abs() < 0.05 * ratio {
-                    out.push(Finding {
-                        severity: Severity::Note,
-                        message: format!(
-                            "dynamics at {} ({name}): K_v = {:.4} ≈ k_double/k_single = {:.4} comes from the stiffness step, not from dynamics: x is continuous where a pair enters, so F = k_double x jumps there (f_n/f_mesh = {:.1}, quasi-static). A stiffness table with ramps (`mesh_stiffness {{ table = [...] }}` or a CSV file) gives the dynamic factor of a real mesh",
-                            p.label, kv.0, ratio, p.frequency_ratio.0
-                        ),
-                    });
-                }
-            }
-            let rel = ((f.monodromy_determinant.0 - f.liouville_determinant.0) / f.liouville_determinant.0).abs();
-            if rel > 1e-8 {
-                out.push(warn(format!(
-                    "dynamics at {} ({name}): det Φ(T) = {:e} differs from Liouville's {:e} by {rel:.1e}",
-                    p.label, f.monodromy_determinant.0, f.liouville_determinant.0
-                )));
-            }
-        }
-    }
-    if let Some(map) = &r.stability_map {
-        for (i, ranges) in map.unstable_ranges.iter().enumerate() {
-            if !ranges.is_empty() {
-                let list: Vec<String> = ranges
-                    .iter()
-                    .map(|[a, b]| {
-                        let u = &map.speed_unit;
-                        format!("{:.0}–{:.0} {}", u.value(a), u.value(b), u.name)
-                    })
-                    .collect();
-                out.push(warn(format!(
-                    "stability map ({:?}): unstable (ρ > 1) at {}",
-                    map.formulations[i],
-                    list.join(", ")
-                )));
-            }
-        }
-    }
-    out
 }

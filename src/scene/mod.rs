@@ -2,9 +2,13 @@
 
 pub mod ast;
 pub mod fields;
+pub mod grammar;
 pub mod lower;
 pub mod lower_dynamics;
 pub mod lower_friction;
 pub mod lower_gears;
 pub mod parse;
+pub mod sweeps;
+pub mod syntax_errors;
 pub mod units;
+pub mod values;

@@ -8,7 +8,7 @@ use crate::dynamics::floquet::Verdict;
 use crate::dynamics::numerics::{study, Study};
 use crate::dynamics::propagator::Method;
 use crate::dynamics::response::PeriodicResponse;
-use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, SdofSystem, StiffnessModel};
+use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, PeriodicModel, SdofSystem, StiffnessModel};
 use crate::evaluate::Case;
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, SpurGeometry};
@@ -47,6 +47,8 @@ pub struct StabilityPoint {
 
 #[derive(Debug, Clone, Serialize)]
 pub struct DynamicsEvaluation {
+    /// The model that ran ([`crate::dynamics::PeriodicModel::name`]).
+    pub model: &'static str,
     pub stiffness: StiffnessModel,
     /// "given", "iso_6336" or "table".
     pub stiffness_source: &'static str,
@@ -232,6 +234,7 @@ pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Opt
         (f, 0, study(&sys, x0))
     });
     Some(DynamicsEvaluation {
+        model: probe.name(),
         stiffness: stiffness.clone(),
         stiffness_source: source,
         damping_ratio: spec.damping_ratio,

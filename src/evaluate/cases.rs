@@ -1,0 +1,125 @@
+//! The operating points of a scene expanded once into cases, and the fixed sample sets of the
+//! report: the contact-state table positions, the curve positions and cycle times, the picked
+//! operating points whose curves are plotted.
+
+use serde::Serialize;
+
+use super::Evaluation;
+use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
+use crate::model::Scene;
+
+/// One operating point of the scene: the product of its sweeps expanded once, torque-major, with
+/// the state in SI and the label in the units the user wrote. Evaluation, report and render all
+/// read the cases; none rebuilds them from the scene.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Case {
+    /// Index of the torque and of the speed in the scene's sweeps.
+    pub torque_index: usize,
+    pub speed_index: usize,
+    pub state: OperatingState,
+    /// `239.3 N*m, 100 rpm`.
+    pub label: String,
+}
+
+/// The cases of a scene's operating sweeps.
+pub fn cases(op: &crate::model::Operating) -> Vec<Case> {
+    let mut out = Vec::with_capacity(op.pinion_torque.values.len() * op.pinion_speed.values.len());
+    for (ti, torque) in op.pinion_torque.values.iter().enumerate() {
+        for (ni, speed) in op.pinion_speed.values.iter().enumerate() {
+            out.push(Case {
+                torque_index: ti,
+                speed_index: ni,
+                state: OperatingState { pinion_torque: torque.value, pinion_speed: speed.value },
+                label: format!(
+                    "{} {}, {} {}",
+                    op.pinion_torque.written_values[ti],
+                    op.pinion_torque.unit,
+                    op.pinion_speed.written_values[ni],
+                    op.pinion_speed.unit
+                ),
+            });
+        }
+    }
+    out
+}
+
+/// Contact quantities along the line of action for the contact-state plot: v_s at each plotted speed
+/// (first torque), p_H at each plotted torque (first speed), SR at the first operating point.
+#[derive(Debug, Clone, Default)]
+pub struct ContactCurves {
+    /// Positions from T1 (m), [`Evaluation::curve_positions`].
+    pub u: Vec<f64>,
+    /// (speed as written, v_s in m/s).
+    pub sliding_velocity: Vec<(String, Vec<f64>)>,
+    pub slide_to_roll: Vec<f64>,
+    /// (torque as written, p_H in Pa).
+    pub hertz_pressure: Vec<(String, Vec<f64>)>,
+}
+
+/// Table positions: A..E in equal steps, with B, P and D inserted, each labelled where it is a named point.
+pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
+    let p = &g.points;
+    let mut rows: Vec<(Option<&'static str>, f64)> =
+        (0..=TABLE_INTERVALS).map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64)).collect();
+    for (name, u) in g.named_points() {
+        let tol = 1e-9 * (p.e - p.a);
+        match rows.iter_mut().find(|(_, v)| (*v - u).abs() < tol) {
+            Some(row) => *row = (Some(name), u),
+            None => rows.push((Some(name), u)),
+        }
+    }
+    rows.sort_by(|a, b| a.1.total_cmp(&b.1));
+    rows
+}
+
+/// Times in the mesh cycle (in periods) at which η(τ) curves are sampled.
+pub fn cycle_times() -> Vec<f64> {
+    (0..CURVE_SAMPLES).map(|i| i as f64 / (CURVE_SAMPLES - 1) as f64 * (1.0 - 1e-9)).collect()
+}
+
+/// The contact curves of the contact-state plot.
+pub(super) fn contact_curves(scene: &Scene, eval: &Evaluation) -> ContactCurves {
+    let u = eval.curve_positions();
+    let op = &scene.operating;
+    let torque0 = op.pinion_torque.values[0].value;
+    let speed0 = op.pinion_speed.values[0].value;
+    let at = |t: f64, n: f64| -> Vec<ContactPoint> {
+        let state = OperatingState { pinion_torque: t, pinion_speed: n };
+        u.iter().map(|x| eval.contact_at(*x, &state)).collect()
+    };
+    let sliding_velocity = pick(op.pinion_speed.values.len())
+        .into_iter()
+        .map(|i| {
+            let label = format!("{} {}", op.pinion_speed.written_values[i], op.pinion_speed.unit);
+            (label, at(torque0, op.pinion_speed.values[i].value).iter().map(|c| c.sliding_velocity).collect())
+        })
+        .collect();
+    let hertz_pressure = pick(op.pinion_torque.values.len())
+        .into_iter()
+        .map(|i| {
+            let label = format!("{} {}", op.pinion_torque.written_values[i], op.pinion_torque.unit);
+            (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
+        })
+        .collect();
+    let slide_to_roll = at(torque0, speed0).iter().map(|c| c.slide_to_roll).collect();
+    ContactCurves { u, sliding_velocity, slide_to_roll, hertz_pressure }
+}
+
+/// At most this many curves of one kind are plotted (evenly picked from a sweep).
+pub const MAX_CURVES: usize = 6;
+
+/// Indices of at most `MAX_CURVES` values evenly picked from `n`.
+pub fn pick(n: usize) -> Vec<usize> {
+    if n <= MAX_CURVES {
+        return (0..n).collect();
+    }
+    let mut v: Vec<usize> = (0..MAX_CURVES).map(|i| i * (n - 1) / (MAX_CURVES - 1)).collect();
+    v.dedup();
+    v
+}
+
+/// Points sampled along the line of action for curves and plots.
+pub const CURVE_SAMPLES: usize = 241;
+
+/// Equal intervals of the contact-state table between A and E (B, P and D are added).
+pub const TABLE_INTERVALS: usize = 12;

@@ -1,0 +1,212 @@
+//! Stage 3, evaluate: computes only what the scene asks for, in plain SI `f64`.
+//!
+//! The sweeps are expanded once into [`Case`]s ([`cases`]); at each case the contact state along the
+//! line of action is always computed, friction, efficiency and film thickness only when the scene's
+//! `analyses` name them ([`laws`]), and the dynamics only when it has a `dynamics` block and asks for
+//! them ([`dynamics`]). Report and render read the evaluation; they never recompute physics.
+
+pub mod cases;
+pub mod dynamics;
+pub mod laws;
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::efficiency;
+use crate::friction::LawContext;
+use crate::geometry::contact::{reduced_modulus, Sharing};
+use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
+use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
+use crate::tribology::{Film, FilmInputs, Tribology};
+
+pub use cases::{
+    cases, cycle_times, pick, table_positions, Case, ContactCurves, CURVE_SAMPLES, MAX_CURVES, TABLE_INTERVALS,
+};
+pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
+
+/// Everything computed for one scene.
+#[derive(Debug, Clone)]
+pub struct Evaluation {
+    /// The operating points, in the order of `points`.
+    pub cases: Vec<Case>,
+    pub geometry: SpurGeometry,
+    /// E' (Pa).
+    pub reduced_modulus: f64,
+    pub sharing: LoadSharing,
+    pub tribology: Tribology,
+    /// Ohlendorf's gear loss factor H_V (geometry only).
+    pub ohlendorf_loss_factor: f64,
+    /// Formulations evaluated (empty when the scene asks for no efficiency).
+    pub formulations: Vec<Formulation>,
+    /// Film-thickness inputs when the film is computed (α known and asked for or needed).
+    pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
+    pub points: Vec<PointEvaluation>,
+    pub contact_curves: ContactCurves,
+    /// The dynamics, when the scene asks for them.
+    pub dynamics: Option<crate::evaluate::dynamics::DynamicsEvaluation>,
+}
+
+/// Everything computed at one operating point.
+#[derive(Debug, Clone, Serialize)]
+pub struct PointEvaluation {
+    /// Index into [`Evaluation::cases`].
+    pub case: usize,
+    pub state: OperatingState,
+    /// T = 2π/(ω1 z1) (s).
+    pub mesh_period: f64,
+    /// The contact-state table: the named points A B P D E and equal steps between A and E.
+    pub table: Vec<(Option<&'static str>, ContactPoint)>,
+    /// Film thickness at the table rows, when computed.
+    pub film: Option<Vec<Film>>,
+    /// One entry per law of the scene, in the scene's order (empty when no analysis needs friction).
+    pub laws: Vec<LawEvaluation>,
+    /// Whether curves (for plots) were computed at this point.
+    pub has_curves: bool,
+}
+
+impl Evaluation {
+    pub fn sharing(&self) -> Sharing {
+        match self.sharing {
+            LoadSharing::Equal => Sharing::Equal,
+            LoadSharing::None => Sharing::Whole,
+        }
+    }
+
+    /// The friction-law context at an operating point.
+    pub fn law_context(&self, state: OperatingState) -> LawContext<'_> {
+        LawContext { geometry: &self.geometry, state, tribology: self.tribology, sharing: self.sharing() }
+    }
+
+    /// The contact state at `u` for an operating point.
+    pub fn contact_at(&self, u: f64, state: &OperatingState) -> ContactPoint {
+        self.geometry.contact_at(u, state, self.reduced_modulus, self.sharing())
+    }
+
+    /// Evenly spaced positions from A to E for curves, with every point where the number of pairs
+    /// changes (B and D for ε_α < 2) taken from both sides so that the jumps of the load share are
+    /// drawn vertical.
+    pub fn curve_positions(&self) -> Vec<f64> {
+        let p = &self.geometry.points;
+        let eps = 1e-9 * (p.e - p.a);
+        let mut u: Vec<f64> =
+            (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
+        u.push(p.p);
+        let g = &self.geometry;
+        for (_, c) in g.pair_change_points() {
+            u.push(c);
+            // The side on which the number of pairs differs from the point itself (B: before, D: after).
+            u.extend([c - eps, c + eps].into_iter().filter(|v| g.pairs_in_contact(*v) != g.pairs_in_contact(c)));
+        }
+        u.sort_by(f64::total_cmp);
+        u
+    }
+}
+
+/// The lubricant and surface data in SI.
+pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
+    let g = &scene.gears;
+    let mean = |f: fn(&crate::model::Gear) -> Option<f64>| match (f(&g.pinion), f(&g.wheel)) {
+        (Some(a), Some(b)) => Some(0.5 * (a + b)),
+        _ => None,
+    };
+    let ra = mean(|g| g.roughness_ra.as_ref().map(|r| r.value.value));
+    let rq = mean(|g| g.roughness_rq.as_ref().map(|r| r.value.value));
+    let rz = mean(|g| g.roughness_rz.as_ref().map(|r| r.value.value));
+    let rq_composite = match (&g.pinion.roughness_rq, &g.wheel.roughness_rq) {
+        (Some(a), Some(b)) => Some(a.value.value.hypot(b.value.value)),
+        _ => None,
+    };
+    let l = scene.lubricant.as_ref();
+    let (x_l, family) = match l.and_then(|l| l.kind) {
+        None => (1.0, "mineral (default)"),
+        Some(LubricantType::Mineral) => (1.0, "mineral"),
+        Some(LubricantType::Pao) => (0.8, "PAO"),
+        Some(LubricantType::PagInsoluble) => (0.7, "PAG, not water-soluble"),
+        Some(LubricantType::PagSoluble) => (0.6, "PAG, water-soluble"),
+        Some(LubricantType::Traction) => (1.5, "traction fluid"),
+        Some(LubricantType::PhosphateEster) => (1.3, "phosphate ester"),
+    };
+    Tribology {
+        dynamic_viscosity: l.map_or(0.0, |l| l.dynamic_viscosity.value.value),
+        kinematic_viscosity: l.and_then(|l| l.kinematic_viscosity_si()),
+        pressure_viscosity: l.and_then(|l| l.pressure_viscosity.as_ref().map(|a| a.value.value)),
+        ra_mean: ra,
+        rq_mean: rq,
+        rq_composite,
+        rz_mean: rz,
+        reduced_modulus,
+        lubricant_factor: x_l,
+        lubricant_family: family,
+    }
+}
+
+/// Evaluates a lowered scene. Lowering has checked the geometry, so this cannot fail on a lowered scene.
+pub fn evaluate_scene(scene: &Scene) -> Evaluation {
+    evaluate_scene_with_progress(scene, &|| {})
+}
+
+/// As [`evaluate_scene`], calling `tick` once per operating point evaluated (from any thread).
+pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> Evaluation {
+    let geometry = scene.gears.geometry().expect("lowering refuses pairs whose geometry fails");
+    let p = &scene.gears.pinion.material;
+    let w = &scene.gears.wheel.material;
+    let e_r = reduced_modulus(
+        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
+        [p.poisson_ratio.value, w.poisson_ratio.value],
+    );
+    let tribology = tribology(scene, e_r);
+    let analyses = &scene.analyses;
+    let film_inputs = tribology.pressure_viscosity.filter(|_| analyses.film).map(|alpha| {
+        let inputs = FilmInputs {
+            dynamic_viscosity: tribology.dynamic_viscosity,
+            pressure_viscosity: alpha,
+            reduced_modulus: e_r,
+        };
+        let cutoff = scene.friction.iter().find_map(|l| l.argument("filter_cutoff")).unwrap_or(0.8e-3);
+        (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
+    });
+    let mut eval = Evaluation {
+        cases: cases(&scene.operating),
+        ohlendorf_loss_factor: 0.0,
+        geometry,
+        reduced_modulus: e_r,
+        sharing: scene.gears.load_sharing,
+        tribology,
+        formulations: analyses.efficiency.clone().unwrap_or_default(),
+        film_inputs,
+        points: Vec::new(),
+        contact_curves: ContactCurves::default(),
+        dynamics: None,
+    };
+    let rows = table_positions(&eval.geometry);
+    let with_curves = pick(eval.cases.len());
+    let wants_friction = analyses.friction_along_loa || analyses.efficiency.is_some();
+    let points: Vec<PointEvaluation> = eval
+        .cases
+        .par_iter()
+        .enumerate()
+        .map(|(k, case)| {
+            let state = case.state;
+            let table: Vec<(Option<&'static str>, ContactPoint)> =
+                rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, &state))).collect();
+            let film =
+                eval.film_inputs.map(|(inputs, lambda)| table.iter().map(|(_, c)| inputs.film(c, lambda)).collect());
+            let curves = with_curves.contains(&k);
+            let laws = if wants_friction {
+                scene.friction.iter().map(|spec| laws::evaluate_law(&eval, spec, state, &table, curves)).collect()
+            } else {
+                Vec::new()
+            };
+            tick();
+            let mesh_period = eval.geometry.mesh_period(state.pinion_speed);
+            PointEvaluation { case: k, state, mesh_period, table, film, laws, has_curves: curves }
+        })
+        .collect();
+    eval.points = points;
+    eval.contact_curves = cases::contact_curves(scene, &eval);
+    eval.dynamics =
+        crate::evaluate::dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state));
+    eval.ohlendorf_loss_factor =
+        efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
+    eval
+}

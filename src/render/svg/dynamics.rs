@@ -1,0 +1,124 @@
+//! Dynamics plots: the periodic response at one operating point, the stability map and the
+//! work-precision diagram of the numerics study.
+
+use super::{figure, Panel};
+use crate::report::Report;
+
+/// dynamics_point_K.svg: DTE over the steady-state cycle, mesh force per pair, friction force, DTE spectrum.
+pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
+    let d = r.dynamics.as_ref().ok_or("no dynamics in the report")?;
+    let c = &d.curves[k];
+    let tau_panel = |y: &str, xy: Vec<(String, Vec<(f64, f64)>)>| Panel {
+        y_label: y.into(),
+        x_label: "time in mesh periods (0: a pair enters at A)".into(),
+        xy,
+        marks: c.marks.clone(),
+        ..Default::default()
+    };
+    let orders: Vec<f64> = (1..=c.spectrum.first().map_or(0, |s| s.1.len())).map(|o| o as f64).collect();
+    let panels = [
+        tau_panel(
+            "DTE x (µm)",
+            c.dte.iter().map(|(l, v)| (l.clone(), v.iter().map(|(t, x)| (*t, x * 1e6)).collect())).collect(),
+        ),
+        tau_panel("tooth force per pair (N)", c.pair_force.clone()),
+        tau_panel("applied friction force Σ μ w N (N)", c.friction_force.clone()),
+        Panel {
+            y_label: "DTE harmonic amplitude (µm)".into(),
+            x_label: "mesh order".into(),
+            x: orders,
+            series: c.spectrum.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| x * 1e6).collect())).collect(),
+            ..Default::default()
+        },
+    ];
+    figure(&format!("{}: dynamics at {}", r.title, c.label), &panels)
+}
+
+/// stability_map.svg: spectral radius and dynamic factor against speed, per formulation.
+pub fn stability_map(r: &Report) -> Result<String, String> {
+    use crate::report::friction::MuValue;
+    let map = r.dynamics.as_ref().and_then(|d| d.stability_map.as_ref()).ok_or("no stability map")?;
+    let x: Vec<f64> = map.points.iter().map(|p| map.speed_unit.value(&p.pinion_speed)).collect();
+    let x_label = format!("pinion speed ({})", map.speed_unit.name);
+    let names: Vec<String> = map.formulations.iter().map(|f| format!("{f:?}").to_lowercase()).collect();
+    let mut rho: Vec<(String, Vec<f64>)> = names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| (n.clone(), map.points.iter().map(|p| p.spectral_radius[i].0).collect()))
+        .collect();
+    rho.push(("ρ = 1".into(), vec![1.0; x.len()]));
+    let kv = names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| {
+            let ys = map
+                .points
+                .iter()
+                .map(|p| match p.dynamic_factor[i] {
+                    MuValue::Value(v) => v.0,
+                    MuValue::Text(_) => f64::NAN,
+                })
+                .collect();
+            (n.clone(), ys)
+        })
+        .collect();
+    let panels = [
+        Panel {
+            y_label: "spectral radius ρ".into(),
+            x_label: x_label.clone(),
+            x: x.clone(),
+            series: rho,
+            ..Default::default()
+        },
+        Panel { y_label: "dynamic factor (stable speeds)".into(), x_label, x, series: kv, ..Default::default() },
+    ];
+    figure(&format!("{}: stability map at {:.1} N·m", r.title, map.pinion_torque.si()), &panels)
+}
+
+/// timing_work_precision.svg: log10 run time against log10 error, one full curve per method through
+/// every tolerance it ran (in ladder order), the exact/Magnus reference as a point at the error floor,
+/// failed runs marked at the worst error seen (machine-dependent: never snapshotted).
+pub fn work_precision(r: &Report) -> Result<String, String> {
+    let t = r.dynamics.as_ref().and_then(|d| d.timings.as_ref()).ok_or("no numerics")?;
+    let mut methods: Vec<String> = t.runs.iter().map(|x| x.0.clone()).collect();
+    methods.dedup();
+    let ok = |e: f64| e.is_finite() && e > 0.0;
+    let floor = t.runs.iter().filter(|x| ok(x.2)).map(|x| x.2).fold(f64::INFINITY, f64::min);
+    let worst = t.runs.iter().filter(|x| ok(x.2)).map(|x| x.2).fold(0.0f64, f64::max);
+    let xy = methods
+        .iter()
+        .map(|m| {
+            let pts = t
+                .runs
+                .iter()
+                .filter(|r| r.0 == *m && ok(r.2) && r.3 > 0.0)
+                .map(|r| (r.2.log10(), r.3.log10()))
+                .collect();
+            (m.clone(), pts)
+        })
+        .collect();
+    let mut points = Vec::new();
+    if t.reference_seconds > 0.0 && floor.is_finite() {
+        points.push((
+            "exact/Magnus reference (error ≈ 0)".to_string(),
+            vec![(floor.log10() - 1.0, t.reference_seconds.log10())],
+        ));
+    }
+    let failed: Vec<(f64, f64)> = t
+        .runs
+        .iter()
+        .filter(|r| !ok(r.2) && r.3 > 0.0 && r.3.is_finite())
+        .map(|r| (worst.max(1e-16).log10() + 0.5, r.3.log10()))
+        .collect();
+    if !failed.is_empty() {
+        points.push(("failed run (placed right of the worst error)".to_string(), failed));
+    }
+    let panel = Panel {
+        y_label: "log10 run time (s)".into(),
+        x_label: "log10 error (max |x − x_ref| / peak-to-peak DTE)".into(),
+        xy,
+        points,
+        ..Default::default()
+    };
+    figure(&format!("{}: work-precision (this machine)", r.title), &[panel])
+}

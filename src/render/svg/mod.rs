@@ -1,0 +1,177 @@
+//! SVG plots drawn with plotters' SVG backend (no system fonts: text is laid out by plotters' own estimate).
+//! Every plot reads the report only.
+
+mod contact;
+mod dynamics;
+mod sweeps;
+
+pub use contact::{contact_state, point_friction};
+pub use dynamics::{dynamics_point, stability_map, work_precision};
+pub use sweeps::{composite_mu_vs_speed, sweep, sweep_mu};
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(127, 127, 127),
+];
+
+/// One panel of a figure.
+#[derive(Default)]
+pub struct Panel {
+    pub y_label: String,
+    pub x_label: String,
+    pub x: Vec<f64>,
+    /// (legend label, y); non-finite y values are left out.
+    pub series: Vec<(String, Vec<f64>)>,
+    /// Series on their own x values: (legend label, [(x, y)]), drawn after `series` in the same palette.
+    pub xy: Vec<(String, Vec<(f64, f64)>)>,
+    /// Single points drawn as markers with a legend: (label, [(x, y)]).
+    pub points: Vec<(String, Vec<(f64, f64)>)>,
+    /// Vertical marks with a letter (A B P D E).
+    pub marks: Vec<(&'static str, f64)>,
+    /// Shaded x-ranges with a label (regime bands).
+    pub bands: Vec<(f64, f64, String)>,
+    /// Values with |y| above this are drawn at the limit and marked with ▲/▼.
+    pub clip: Option<f64>,
+}
+
+fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.filter(|v| v.is_finite()) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    let pad = if hi > lo { 0.06 * (hi - lo) } else { 0.5 * hi.abs().max(1e-3) };
+    (lo - pad, hi + pad)
+}
+
+fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    // Every series as (label, [(x, y)]): the shared-x ones first, then those on their own x.
+    let mut all: Vec<(String, Vec<(f64, f64)>)> = panel
+        .series
+        .iter()
+        .map(|(l, ys)| (l.clone(), panel.x.iter().copied().zip(ys.iter().copied()).collect()))
+        .collect();
+    all.extend(panel.xy.iter().cloned());
+    let xs = all.iter().chain(&panel.points).flat_map(|(_, v)| v.iter().map(|p| p.0));
+    let (x0, x1) =
+        xs.filter(|x| x.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |a, x| (a.0.min(x), a.1.max(x)));
+    if x1.partial_cmp(&x0) != Some(std::cmp::Ordering::Greater) {
+        return Ok(());
+    }
+    let clip = |y: f64| panel.clip.map_or(y, |c| y.clamp(-c, c));
+    let (y0, y1) = bounds(all.iter().chain(&panel.points).flat_map(|(_, s)| s.iter().map(|p| clip(p.1))));
+    let mut chart = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(72)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(e)?;
+    chart
+        .configure_mesh()
+        .x_desc(panel.x_label.as_str())
+        .y_desc(panel.y_label.as_str())
+        .x_labels(8)
+        .y_labels(6)
+        .light_line_style(WHITE.mix(0.0))
+        .draw()
+        .map_err(e)?;
+    for (i, (a, b, label)) in panel.bands.iter().enumerate() {
+        let shade = PALETTE[(i + 5) % PALETTE.len()].mix(0.10);
+        chart.draw_series(std::iter::once(Rectangle::new([(*a, y0), (*b, y1)], shade.filled()))).map_err(e)?;
+        chart
+            .draw_series(std::iter::once(Text::new(
+                label.clone(),
+                (*a, y0 + 0.08 * (y1 - y0)),
+                ("sans-serif", 12).into_font().color(&BLACK.mix(0.7)),
+            )))
+            .map_err(e)?;
+    }
+    for (name, u) in &panel.marks {
+        chart.draw_series(LineSeries::new(vec![(*u, y0), (*u, y1)], BLACK.mix(0.35).stroke_width(1))).map_err(e)?;
+        chart
+            .draw_series(std::iter::once(Text::new(
+                name.to_string(),
+                (*u, y1),
+                ("sans-serif", 14).into_font().color(&BLACK),
+            )))
+            .map_err(e)?;
+    }
+    for (i, (label, pts)) in all.iter().enumerate() {
+        let color = PALETTE[i % PALETTE.len()];
+        // Split at non-finite values so that gaps stay gaps.
+        let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+        let mut clipped = Vec::new();
+        for &(x, y) in pts {
+            if y.is_finite() && x.is_finite() {
+                let c = clip(y);
+                if c != y {
+                    clipped.push((x, c));
+                }
+                runs.last_mut().expect("one run").push((x, c));
+            } else if !runs.last().expect("one run").is_empty() {
+                runs.push(Vec::new());
+            }
+        }
+        for (k, run) in runs.into_iter().filter(|r| !r.is_empty()).enumerate() {
+            let s = chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
+            if k == 0 && !label.is_empty() {
+                s.label(label.clone())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2)));
+            }
+        }
+        if let Some(&(cx, cy)) = clipped.iter().min_by(|a, b| a.0.total_cmp(&b.0)) {
+            let mark = if cy > 0.0 { "▲ clipped" } else { "▼ clipped" };
+            chart
+                .draw_series(std::iter::once(Text::new(mark, (cx, cy), ("sans-serif", 11).into_font().color(&color))))
+                .map_err(e)?;
+        }
+    }
+    for (i, (label, pts)) in panel.points.iter().enumerate() {
+        let color = PALETTE[(all.len() + i) % PALETTE.len()];
+        let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+        let s = chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
+        if !label.is_empty() {
+            s.label(label.clone()).legend(move |(x, y)| Cross::new((x + 8, y), 5, color.stroke_width(2)));
+        }
+    }
+    if all.iter().chain(&panel.points).any(|(l, _)| !l.is_empty()) {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.3))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(e)?;
+    }
+    Ok(())
+}
+
+/// Stacked panels; returns the SVG text.
+pub fn figure(title: &str, panels: &[Panel]) -> Result<String, String> {
+    let mut svg = String::new();
+    {
+        let height = 40 + 260 * panels.len() as u32;
+        let root = SVGBackend::with_string(&mut svg, (900, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let root = root.titled(title, ("sans-serif", 18)).map_err(|e| e.to_string())?;
+        let areas = root.split_evenly((panels.len(), 1));
+        for (area, panel) in areas.iter().zip(panels) {
+            draw_panel(area, panel)?;
+        }
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}

@@ -1,0 +1,160 @@
+//! Plots over the operating sweeps: mean efficiency and power loss against speed or torque, the
+//! composite law's mean |μ| against speed, and η̄ against a swept μ.
+
+use super::{figure, Panel};
+use crate::report::Report;
+
+/// Mean η and power loss against the swept variable, at each value of the other one.
+/// `by_speed`: x is the pinion speed (in the unit the scene wrote), one curve per (law, formulation, torque); else x is torque.
+pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
+    let key = |q: f64| format!("{q:.9e}");
+    let x_of = |rec: &crate::report::friction::EfficiencyRecord| {
+        if by_speed {
+            r.speed_unit.value(&rec.pinion_speed)
+        } else {
+            rec.pinion_torque.si()
+        }
+    };
+    let other = |rec: &crate::report::friction::EfficiencyRecord| {
+        if by_speed {
+            format!("{:.1} N·m", rec.pinion_torque.si())
+        } else {
+            format!("{:.0} {}", r.speed_unit.value(&rec.pinion_speed), r.speed_unit.name)
+        }
+    };
+    let mut xs: Vec<f64> = r.efficiency.iter().map(x_of).collect();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup_by(|a, b| key(*a) == key(*b));
+    let mut labels: Vec<String> = Vec::new();
+    for rec in &r.efficiency {
+        let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
+        if !labels.contains(&l) {
+            labels.push(l);
+        }
+    }
+    let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
+    let mut loss = eta.clone();
+    for rec in &r.efficiency {
+        let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
+        let i = labels.iter().position(|x| *x == l).expect("label collected above");
+        let j = xs.iter().position(|x| key(*x) == key(x_of(rec))).expect("x collected above");
+        eta[i].1[j] = 100.0 * rec.mean_efficiency.0;
+        loss[i].1[j] = rec.power_loss.si();
+    }
+    let x_label =
+        if by_speed { format!("pinion speed ({})", r.speed_unit.name) } else { "pinion torque (N·m)".to_string() };
+    let panels = [
+        Panel {
+            y_label: "mean efficiency η̄ (%)".into(),
+            x_label: x_label.clone(),
+            x: xs.clone(),
+            series: eta,
+            ..Default::default()
+        },
+        Panel { y_label: "friction power loss (W)".into(), x_label, x: xs, series: loss, ..Default::default() },
+    ];
+    let what = if by_speed { "speed" } else { "torque" };
+    figure(&format!("{}: mean efficiency and power loss against {what}", r.title), &panels)
+}
+
+/// composite_mu_vs_speed.svg: mean |μ| of the composite law against speed, per torque (He–Cho–Singh Fig. 2b).
+pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
+    let mut xs: Vec<f64> = Vec::new();
+    let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for op in &r.operating_points {
+        let speed = r.speed_unit.value(&op.pinion_speed);
+        for law in op.friction.iter().filter(|l| l.law == crate::friction::catalog::LawId::Composite) {
+            let label = format!("{} @ {:.1} N·m", law.label, op.pinion_torque.si());
+            match series.iter_mut().find(|(l, _)| *l == label) {
+                Some((_, v)) => v.push((speed, law.mean_abs_mu.0)),
+                None => series.push((label, vec![(speed, law.mean_abs_mu.0)])),
+            }
+            xs.push(speed);
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let series = series
+        .into_iter()
+        .map(|(l, pts)| {
+            let ys = xs.iter().map(|x| pts.iter().find(|(px, _)| px == x).map_or(f64::NAN, |p| p.1)).collect();
+            (l, ys)
+        })
+        .collect();
+    let panel = Panel {
+        y_label: "mean |μ| over A–E".into(),
+        x_label: format!("pinion speed ({})", r.speed_unit.name),
+        x: xs,
+        series,
+        ..Default::default()
+    };
+    figure(&format!("{}: composite law, mean |μ| against speed", r.title), &[panel])
+}
+
+/// sweep_mu.svg: mean η and power loss against μ for swept laws, at up to three operating points.
+pub fn sweep_mu(r: &Report) -> Result<String, String> {
+    let laws = crate::report::friction::mu_swept_laws(&r.efficiency);
+    let ops: Vec<usize> = match r.operating_points.len() {
+        0 => Vec::new(),
+        1 => vec![0],
+        2 => vec![0, 1],
+        n => vec![0, n / 2, n - 1],
+    };
+    let same = |a: &crate::report::number::Q, b: &crate::report::number::Q| a.si().to_bits() == b.si().to_bits();
+    let mut xs: Vec<f64> = Vec::new();
+    // (legend, [(μ, η̄ %, P_loss W)])
+    type Curve = (String, Vec<(f64, f64, f64)>);
+    let mut curves: Vec<Curve> = Vec::new();
+    for rec in r.efficiency.iter().filter(|x| laws.contains(&x.law)) {
+        let Some(k) = ops.iter().position(|&k| {
+            same(&r.operating_points[k].pinion_torque, &rec.pinion_torque)
+                && same(&r.operating_points[k].pinion_speed, &rec.pinion_speed)
+        }) else {
+            continue;
+        };
+        let Some(mu) = rec.parameters.get("mu") else { continue };
+        let label = format!(
+            "{} {} @ {}",
+            rec.law,
+            crate::report::formulation_name(rec.formulation),
+            r.operating_points[ops[k]].label
+        );
+        xs.push(mu);
+        let point = (mu, 100.0 * rec.mean_efficiency.0, rec.power_loss.si());
+        match curves.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, v)) => v.push(point),
+            None => curves.push((label, vec![point])),
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let pick = |j: usize| -> Vec<(String, Vec<f64>)> {
+        curves
+            .iter()
+            .map(|(l, pts)| {
+                let ys = xs
+                    .iter()
+                    .map(|x| pts.iter().find(|p| p.0 == *x).map_or(f64::NAN, |p| if j == 1 { p.1 } else { p.2 }))
+                    .collect();
+                (l.clone(), ys)
+            })
+            .collect()
+    };
+    let panels = [
+        Panel {
+            y_label: "mean efficiency η̄ (%)".into(),
+            x_label: "coefficient of friction μ".into(),
+            x: xs.clone(),
+            series: pick(1),
+            ..Default::default()
+        },
+        Panel {
+            y_label: "friction power loss (W)".into(),
+            x_label: "coefficient of friction μ".into(),
+            x: xs.clone(),
+            series: pick(2),
+            ..Default::default()
+        },
+    ];
+    figure(&format!("{}: mean efficiency and power loss against μ", r.title), &panels)
+}

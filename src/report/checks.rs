@@ -1,0 +1,57 @@
+//! Findings about the scene as a whole: notes on how it was read and warnings about its inputs.
+
+use super::{Finding, Severity};
+use crate::evaluate::Evaluation;
+use crate::geometry::TipSource;
+use crate::model::{LoadSharing, Scene};
+
+pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
+    let g = &eval.geometry;
+    let mut out = Vec::new();
+    let note = |m: String| Finding { severity: Severity::Note, message: m };
+    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    for (i, name) in [(0, "pinion"), (1, "wheel")] {
+        out.push(note(match g.tip_source[i] {
+            TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),
+            TipSource::AddendumRule => format!(
+                "{name} tip diameter from the addendum rule d_a = m (z + 2 + 2x): {:.4} mm",
+                2e3 * g.tip_radius[i]
+            ),
+        }));
+        if g.tip_thickness[i] < 0.2 * g.module {
+            out.push(warn(format!(
+                "{name} tip thickness s_a = {:.4} mm is below 0.2 m = {:.4} mm: risk of a brittle tip",
+                g.tip_thickness[i] * 1e3,
+                0.2e3 * g.module
+            )));
+        }
+        let start = g.involute_start_from_t1(i);
+        let (contact_start, beyond) =
+            if i == 0 { (g.points.a, g.points.a < start) } else { (g.points.e, g.points.e > start) };
+        if beyond {
+            out.push(warn(format!(
+                "contact at {:.4} mm from T1 lies below the {name}'s generated involute, which starts at {:.4} mm (root interference with a rack-cut flank)",
+                contact_start * 1e3,
+                start * 1e3
+            )));
+        }
+    }
+    if g.center_distance_given {
+        out.push(note(format!(
+            "operating pressure angle from the given centre distance {:.4} mm; the zero-backlash centre distance is {:.4} mm (α_w = {:.4}°)",
+            g.center_distance * 1e3,
+            g.zero_backlash_center_distance * 1e3,
+            g.zero_backlash_pressure_angle.to_degrees()
+        )));
+    } else {
+        out.push(note(format!(
+            "centre distance from the involute function (zero backlash): {:.4} mm",
+            g.center_distance * 1e3
+        )));
+    }
+    out.push(note(match scene.gears.load_sharing {
+        LoadSharing::Equal => "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into(),
+        LoadSharing::None => "load sharing: none (every contact carries the whole normal load)".into(),
+    }));
+    out
+}

@@ -1,0 +1,114 @@
+//! The scene's inputs as the user wrote them and in SI, for the report's first table.
+
+use serde::Serialize;
+
+use super::number::{Num, Q};
+use crate::model::{Given, ModuleSource, Scene};
+use crate::scene::units::SiQuantity;
+
+/// One input of the scene, as written and in SI (a plain number when dimensionless).
+#[derive(Debug, Clone, Serialize)]
+pub struct InputRow {
+    pub key: String,
+    pub written: String,
+    pub si: SiValue,
+}
+
+/// A dimensional value with its unit, or a plain number.
+#[derive(Debug, Clone, Copy, Serialize)]
+#[serde(untagged)]
+pub enum SiValue {
+    Plain(Num),
+    Dimensional(Q),
+}
+
+impl SiValue {
+    pub fn si(&self) -> f64 {
+        match self {
+            SiValue::Plain(n) => n.0,
+            SiValue::Dimensional(q) => q.si(),
+        }
+    }
+    pub fn unit(&self) -> &'static str {
+        match self {
+            SiValue::Plain(_) => "",
+            SiValue::Dimensional(q) => q.unit,
+        }
+    }
+}
+
+pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Given<T>, unit: &'static str) {
+    rows.push(InputRow {
+        key: key.into(),
+        written: g.written.clone(),
+        si: SiValue::Dimensional(Q::new(g.value.si(), unit)),
+    });
+}
+
+pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
+    let mut rows = Vec::new();
+    let g = &scene.gears;
+    if let ModuleSource::DiametralPitch(p) = &g.module_source {
+        input(&mut rows, "gears.diametral_pitch", p, "1/m");
+    }
+    input(&mut rows, "gears.module", &g.module, "m");
+    input(&mut rows, "gears.pressure_angle", &g.pressure_angle, "rad");
+    if let Some(a) = &g.center_distance {
+        input(&mut rows, "gears.center_distance", a, "m");
+    }
+    input(&mut rows, "gears.face_width", &g.face_width, "m");
+    for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+        rows.push(InputRow {
+            key: format!("{name}.teeth"),
+            written: gear.teeth.written.clone(),
+            si: SiValue::Plain(Num(gear.teeth.value as f64)),
+        });
+        rows.push(InputRow {
+            key: format!("{name}.profile_shift"),
+            written: gear.profile_shift.written.clone(),
+            si: SiValue::Plain(Num(gear.profile_shift.value)),
+        });
+        if let Some(d) = &gear.tip_diameter {
+            input(&mut rows, &format!("{name}.tip_diameter"), d, "m");
+        }
+        if let Some(j) = &gear.inertia {
+            input(&mut rows, &format!("{name}.inertia"), j, "kg*m^2");
+        }
+        for (key, r) in [
+            ("roughness_ra", &gear.roughness_ra),
+            ("roughness_rq", &gear.roughness_rq),
+            ("roughness_rz", &gear.roughness_rz),
+        ] {
+            if let Some(r) = r {
+                input(&mut rows, &format!("{name}.{key}"), r, "m");
+            }
+        }
+        input(
+            &mut rows,
+            &format!("{name}.material ({}).youngs_modulus", gear.material.name),
+            &gear.material.youngs_modulus,
+            "Pa",
+        );
+        rows.push(InputRow {
+            key: format!("{name}.material ({}).poisson_ratio", gear.material.name),
+            written: gear.material.poisson_ratio.written.clone(),
+            si: SiValue::Plain(Num(gear.material.poisson_ratio.value)),
+        });
+    }
+    if let Some(l) = &scene.lubricant {
+        input(&mut rows, "lubricant.dynamic_viscosity", &l.dynamic_viscosity, "Pa*s");
+        if let Some(d) = &l.density {
+            input(&mut rows, "lubricant.density", d, "kg/m^3");
+        }
+        if let Some(n) = &l.kinematic_viscosity {
+            input(&mut rows, "lubricant.kinematic_viscosity", n, "m^2/s");
+        }
+        if let Some(a) = &l.pressure_viscosity {
+            input(&mut rows, "lubricant.pressure_viscosity", a, "1/Pa");
+        }
+        if let Some(t) = &l.temperature {
+            input(&mut rows, "lubricant.temperature", t, "K");
+        }
+    }
+    rows
+}
