@@ -115,6 +115,13 @@ pub struct FilmRow {
 /// One record per (operating point, law, formulation): the flat table of a sweep.
 #[derive(Debug, Clone, Serialize)]
 pub struct EfficiencyRecord {
+    /// The case (operating point) and its torque and speed indices in the sweeps, for grouping.
+    #[serde(skip)]
+    pub case: usize,
+    #[serde(skip)]
+    pub torque_index: usize,
+    #[serde(skip)]
+    pub speed_index: usize,
     pub law: crate::friction::catalog::LawId,
     pub label: String,
     pub formulation: Formulation,
@@ -218,7 +225,11 @@ pub fn efficiency_records(scene: &Scene, eval: &Evaluation) -> Vec<EfficiencyRec
     for pe in &eval.points {
         for (spec, law) in scene.friction.iter().zip(&pe.laws) {
             for e in &law.efficiency {
+                let case = &eval.cases[pe.case];
                 out.push(EfficiencyRecord {
+                    case: pe.case,
+                    torque_index: case.torque_index,
+                    speed_index: case.speed_index,
                     law: law.id,
                     label: law_label(spec),
                     formulation: e.formulation,
@@ -308,24 +319,16 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     out
 }
 
-/// The laws whose `mu` takes two or more values in the report (a μ sweep).
+/// The laws whose `mu` takes two or more values in the report (a μ sweep), in order of appearance;
+/// one pass over the records.
 pub fn mu_swept_laws(records: &[EfficiencyRecord]) -> Vec<crate::friction::catalog::LawId> {
-    let mut out = Vec::new();
+    let mut first: Vec<(crate::friction::catalog::LawId, f64, bool)> = Vec::new();
     for rec in records {
-        if out.contains(&rec.law) {
-            continue;
-        }
-        let mut values: Vec<String> = records
-            .iter()
-            .filter(|x| x.law == rec.law)
-            .filter_map(|x| x.parameters.get("mu"))
-            .map(|m| format!("{m:.12e}"))
-            .collect();
-        values.sort();
-        values.dedup();
-        if values.len() > 1 {
-            out.push(rec.law);
+        let Some(mu) = rec.parameters.get("mu") else { continue };
+        match first.iter_mut().find(|(law, _, _)| *law == rec.law) {
+            Some((_, m, swept)) => *swept |= m.to_bits() != mu.to_bits(),
+            None => first.push((rec.law, mu, false)),
         }
     }
-    out
+    first.into_iter().filter(|(_, _, swept)| *swept).map(|(law, _, _)| law).collect()
 }

@@ -7,24 +7,32 @@ use crate::report::Report;
 /// Mean η and power loss against the swept variable, at each value of the other one.
 /// `by_speed`: x is the pinion speed (in the unit the scene wrote), one curve per (law, formulation, torque); else x is torque.
 pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
-    let key = |q: f64| format!("{q:.9e}");
-    let x_of = |rec: &crate::report::friction::EfficiencyRecord| {
+    use crate::report::friction::EfficiencyRecord;
+    // Records are grouped by their sweep indices, never by formatted values.
+    let x_index = |rec: &EfficiencyRecord| if by_speed { rec.speed_index } else { rec.torque_index };
+    let x_of = |rec: &EfficiencyRecord| {
         if by_speed {
             r.speed_unit.value(&rec.pinion_speed)
         } else {
             rec.pinion_torque.si()
         }
     };
-    let other = |rec: &crate::report::friction::EfficiencyRecord| {
+    let other = |rec: &EfficiencyRecord| {
         if by_speed {
             format!("{:.1} N·m", rec.pinion_torque.si())
         } else {
             format!("{:.0} {}", r.speed_unit.value(&rec.pinion_speed), r.speed_unit.name)
         }
     };
-    let mut xs: Vec<f64> = r.efficiency.iter().map(x_of).collect();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup_by(|a, b| key(*a) == key(*b));
+    // (sweep index, x), sorted by x.
+    let mut columns: Vec<(usize, f64)> = Vec::new();
+    for rec in &r.efficiency {
+        if !columns.iter().any(|(i, _)| *i == x_index(rec)) {
+            columns.push((x_index(rec), x_of(rec)));
+        }
+    }
+    columns.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let xs: Vec<f64> = columns.iter().map(|c| c.1).collect();
     let mut labels: Vec<String> = Vec::new();
     for rec in &r.efficiency {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
@@ -37,7 +45,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     for rec in &r.efficiency {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
         let i = labels.iter().position(|x| *x == l).expect("label collected above");
-        let j = xs.iter().position(|x| key(*x) == key(x_of(rec))).expect("x collected above");
+        let j = columns.iter().position(|c| c.0 == x_index(rec)).expect("column collected above");
         eta[i].1[j] = 100.0 * rec.mean_efficiency.0;
         loss[i].1[j] = rec.power_loss.si();
     }
@@ -100,16 +108,12 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
         2 => vec![0, 1],
         n => vec![0, n / 2, n - 1],
     };
-    let same = |a: &crate::report::number::Q, b: &crate::report::number::Q| a.si().to_bits() == b.si().to_bits();
     let mut xs: Vec<f64> = Vec::new();
     // (legend, [(μ, η̄ %, P_loss W)])
     type Curve = (String, Vec<(f64, f64, f64)>);
     let mut curves: Vec<Curve> = Vec::new();
     for rec in r.efficiency.iter().filter(|x| laws.contains(&x.law)) {
-        let Some(k) = ops.iter().position(|&k| {
-            same(&r.operating_points[k].pinion_torque, &rec.pinion_torque)
-                && same(&r.operating_points[k].pinion_speed, &rec.pinion_speed)
-        }) else {
+        let Some(k) = ops.iter().position(|&k| k == rec.case) else {
             continue;
         };
         let Some(mu) = rec.parameters.get("mu") else { continue };
