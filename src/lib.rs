@@ -3,14 +3,34 @@
 //!
 //! ```text
 //!  scene.gear ─parse─▶ SceneAst ─lower─▶ Scene ─evaluate─▶ Evaluation ─report─▶ Report ─render─▶ report folder
-//!   (text)     pest    (syntax)  units,  (uom,   only what  (SI f64)    serde   (data)  md, json,  (written to a
-//!                                names,  checked) the scene                              svg        temp folder,
-//!                                checks           asks for                                          then renamed)
+//!   (text)     pest    (syntax)  units,  (uom,   cases,     (SI f64)    serde   (data)  md, json,  (written to a
+//!                                names,  checked) only what                              svg        temp folder,
+//!                                checks           is asked                                          then renamed)
 //! ```
 //!
-//! One public function per stage: [`parse`], [`lower`], [`evaluate`], [`report`], [`render`], and
+//! One public function per stage: [`parse`], [`lower`], [`evaluate()`], [`report()`], [`render()`], and
 //! [`write_report_folder`]. Errors of the first two stages are [`SceneErrors`]: every problem with
 //! its span, reason and hints, rendered by miette. The library never prints.
+//!
+//! The layers, each importing only from those below it (no import circles):
+//!
+//! ```text
+//!  cli ─ lib                      the binary's commands; one function per stage
+//!  render/ (markdown, svg/)       formats the report; never computes
+//!  report/                        the serde report: numbers and series ready to draw, findings
+//!  evaluate/ (cases, laws,        expands the sweeps into cases once; friction, efficiency and the
+//!             dynamics)           dynamics at each case, only what the scene asks for
+//!  scene/                         the language: grammar, parse, units, lowering to the model
+//!  model                          the lowered scene (uom quantities, what the user wrote)
+//!  dynamics/                      the n-state periodic engine (PeriodicModel: propagators, Floquet,
+//!                                 trajectory, integrators, numerics study) and its models (SDOF)
+//!  efficiency                     η(t), η̄ and power loss of a law along the mesh cycle
+//!  friction/                      the law catalogue (typed LawId, one constructor each), one law a file
+//!  tribology/                     lubricant and surface data in SI, film thickness
+//!  geometry/ (spur, mesh,         the pair: involute geometry, the mesh cycle (contacts, switch
+//!             stiffness)          times), contact states, mesh stiffness
+//!  numerics/ quantity diagnostics quadrature and roots; physical dimensions; spans and diagnostics
+//! ```
 
 pub mod diagnostics;
 pub mod dynamics;

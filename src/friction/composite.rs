@@ -2,7 +2,7 @@
 //! each contact — Λ < 1 boundary → smoothed Coulomb (Model IV), 1 ≤ Λ < 4 mixed → Benedict–Kelley
 //! eq 14 (Model II), Λ ≥ 4 full film → Xu (Model III). Λ = h_c/R_comp · sqrt(L_x/(2 b_H)) with the
 //! Dowson–Toyoda central film ([`crate::tribology::film`]). Model IV's magnitude is the mean |μ_BK|
-//! over A–E at the operating point unless `mu` is given (He–Cho–Singh §3.5, their ref [4]).
+//! over A–E at the operating point unless `mu` is given (He–Cho–Singh §3.5, their ref \[4\]).
 
 use super::benedict_kelley::BenedictKelley;
 use super::smoothed_coulomb::SmoothedCoulomb;

@@ -30,7 +30,7 @@ pub fn brent(f: impl Fn(f64) -> f64, a: f64, b: f64, xtol: f64) -> f64 {
     })
 }
 
-/// Minimum and maximum (value, x) of `f` over [breaks[0], breaks[last]], where `f` is smooth between
+/// Minimum and maximum (value, x) of `f` over `[breaks[0], breaks[last]]`, where `f` is smooth between
 /// consecutive breaks and may jump at them. Located, not sampled: on each piece the sign changes of a
 /// central-difference f' are bracketed on `nodes` equal steps and refined by [`brent`] to `xtol`; the
 /// one-sided limits at both ends of every piece (f read `xtol` inside) are candidates too.

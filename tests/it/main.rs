@@ -3,6 +3,7 @@
 mod cli;
 mod dynamics;
 mod efficiency;
+mod engine;
 mod friction;
 mod fuzz;
 mod geometry;
