@@ -80,7 +80,6 @@ mod dynamics {
     use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
     use gearloss::friction::coulomb::Coulomb;
     use gearloss::geometry::OperatingState;
-    use nalgebra::Vector2;
 
     const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
 
@@ -105,7 +104,7 @@ mod dynamics {
         with_system(1000.0, |sys| {
             bencher.bench(|| {
                 let segs = period_segments(sys).segments;
-                let mut x = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+                let mut x = sys.static_state();
                 for _ in 0..200 {
                     for s in &segs {
                         x = s.apply(&x);
@@ -131,7 +130,7 @@ mod dynamics {
     fn dop853_nominal_1e_8(bencher: divan::Bencher) {
         with_system(1000.0, |sys| {
             let times = ten_periods(sys);
-            let x0 = [sys.static_force / sys.mean_stiffness, 0.0];
+            let x0: [f64; 2] = sys.static_state().into();
             bencher.bench(|| divan::black_box(integrate(sys, Integrator::Dop853, 1e-10, x0, &times).unwrap().1))
         });
     }
@@ -145,7 +144,7 @@ mod dynamics {
         use gearloss::dynamics::numerics::{reference, relative_error, study_times, LADDER};
         with_system(1000.0, |sys| {
             let times = study_times(sys.period);
-            let x0 = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+            let x0 = sys.static_state();
             let exact = reference(sys, x0, &times);
             let rtol = LADDER
                 .into_iter()
@@ -166,7 +165,7 @@ mod dynamics {
         use gearloss::dynamics::numerics::{reference, study_times};
         with_system(1000.0, |sys| {
             let times = study_times(sys.period);
-            let x0 = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+            let x0 = sys.static_state();
             bencher.bench(|| divan::black_box(reference(sys, x0, &times)))
         });
     }
@@ -176,7 +175,7 @@ mod dynamics {
     fn radau5_stiff_1e_6(bencher: divan::Bencher) {
         with_system(22.4, |sys| {
             let times = ten_periods(sys);
-            let x0 = [sys.static_force / sys.mean_stiffness, 0.0];
+            let x0: [f64; 2] = sys.static_state().into();
             bencher.bench(|| divan::black_box(integrate(sys, Integrator::Radau5, 1e-12, x0, &times).unwrap().1))
         });
     }

@@ -67,7 +67,7 @@ impl<M: PeriodicModel<N> + ?Sized, const N: usize> Scaled<'_, M, N> {
         let s = &self.scale;
         AffineSegment {
             start: seg.start,
-            a: SMatrix::from_fn(|r, c| if r == c { seg.a[(r, c)] } else { seg.a[(r, c)] * s[c] / s[r] }),
+            a: scaled_matrix(&seg.a, s),
             b0: seg.b0.component_div(s),
             b1: seg.b1.component_div(s),
         }
@@ -100,12 +100,18 @@ impl<M: PeriodicModel<N> + ?Sized, const N: usize> ODE<f64, [f64; N]> for Scaled
             return;
         }
         let (a, _) = self.model.system(t.clamp(self.window.0, self.window.1));
+        let a = scaled_matrix(&a, &self.scale);
         for r in 0..N {
             for c in 0..N {
-                j[(r, c)] = if r == c { a[(r, c)] } else { a[(r, c)] * self.scale[c] / self.scale[r] };
+                j[(r, c)] = a[(r, c)];
             }
         }
     }
+}
+
+/// S⁻¹ A S for the scaled state z = X / s (the diagonal kept as it is, exactly).
+fn scaled_matrix<const N: usize>(a: &SMatrix<f64, N, N>, s: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+    SMatrix::from_fn(|r, c| if r == c { a[(r, c)] } else { a[(r, c)] * s[c] / s[r] })
 }
 
 /// Keeps the last state the solver reached, and nothing else.

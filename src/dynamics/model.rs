@@ -77,8 +77,11 @@ pub trait PeriodicModel<const N: usize>: Sync {
     /// ∫₀ᵀ tr A dt for Liouville's check det Φ(T) = exp(∫ tr A); by default integrated segment by
     /// segment with adaptive Gauss–Kronrod to 1e-13.
     fn trace_integral(&self) -> f64 {
-        let breaks: Vec<f64> = std::iter::once(0.0).chain(self.segments().iter().map(|s| s.end)).collect();
-        crate::numerics::quadrature::integrate(|t| self.system(t).0.trace(), &breaks, 1e-13).value
+        crate::numerics::quadrature::integrate(|t| self.system(t).0.trace(), &self.breaks(), 1e-13).value
+    }
+    /// 0 and the end of every segment: the breaks of piecewise quadrature over one period.
+    fn breaks(&self) -> Vec<f64> {
+        std::iter::once(0.0).chain(self.segments().iter().map(|s| s.end)).collect()
     }
     /// The displacement the numerics study measures its error on (the DTE): the first state by default.
     fn observed(&self, x: &SVector<f64, N>) -> f64 {

@@ -213,6 +213,11 @@ impl<'a> SdofSystem<'a> {
         law.mu(c).clamp(-cap, cap)
     }
 
+    /// X = [F0/k̄, 0]: the static deflection at rest, where the numerics study starts.
+    pub fn static_state(&self) -> Vector2<f64> {
+        Vector2::new(self.static_force / self.mean_stiffness, 0.0)
+    }
+
     /// The undamped natural frequency at the mean stiffness, f_n = sqrt(k̄/m_e)/2π (Hz).
     pub fn natural_frequency(&self) -> f64 {
         (self.mean_stiffness / self.equivalent_mass).sqrt() / (2.0 * std::f64::consts::PI)
@@ -270,8 +275,8 @@ impl PeriodicModel<2> for SdofSystem<'_> {
         let c = self.damping / self.equivalent_mass;
         match self.formulation {
             DynamicFormulation::Internal => {
-                let breaks: Vec<f64> = std::iter::once(0.0).chain(self.segments.iter().map(|s| s.end)).collect();
-                crate::numerics::quadrature::integrate(|t| -(1.0 - self.friction_term(t)) * c, &breaks, 1e-13).value
+                crate::numerics::quadrature::integrate(|t| -(1.0 - self.friction_term(t)) * c, &self.breaks(), 1e-13)
+                    .value
             }
             _ => -c * self.period,
         }

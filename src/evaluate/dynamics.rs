@@ -230,8 +230,7 @@ pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Opt
         };
         let law = law_for(probe_state);
         let sys = system(base, spec, &stiffness, law.as_deref(), f, probe_state, j);
-        let x0 = nalgebra::Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
-        (f, 0, study(&sys, x0))
+        (f, 0, study(&sys, sys.static_state()))
     });
     Some(DynamicsEvaluation {
         model: probe.name(),

@@ -13,7 +13,6 @@ use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
 use gearloss::geometry::{OperatingState, SpurGeometry};
-use nalgebra::Vector2;
 
 const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
 const J: [f64; 2] = [3.45e-4, 15.24e-4];
@@ -205,7 +204,7 @@ fn integrator_errors(rpm: f64, formulation: DynamicFormulation) -> Vec<(Integrat
     let (scene, g) = fzg();
     let law = Coulomb { mu: 0.08 };
     let sys = system(ctx(&scene, &g, rpm, 239.3), &law, formulation, 0.05);
-    let x0 = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+    let x0 = sys.static_state();
     let times: Vec<f64> = (0..=64).map(|i| 2.0 * sys.period + sys.period * i as f64 / 64.0).collect();
     let reference = reference(&sys, x0, &times);
     let p2p = {
@@ -366,7 +365,7 @@ fn benchmark_configurations_reach_their_accuracy() {
     {
         let sys = system(ctx(&scene, &g, rpm, 239.3), &law, DynamicFormulation::External, 0.05);
         let times: Vec<f64> = (0..=64).map(|i| 9.0 * sys.period + sys.period * i as f64 / 64.0).collect();
-        let x0 = Vector2::new(sys.static_force / sys.mean_stiffness, 0.0);
+        let x0 = sys.static_state();
         let reference = reference(&sys, x0, &times);
         let xs: Vec<f64> = reference.iter().map(|x| x[0]).collect();
         let p2p =
