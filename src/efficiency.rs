@@ -17,7 +17,7 @@
 use serde::Serialize;
 
 use crate::friction::{FrictionLaw, LawContext};
-use crate::geometry::{ContactPoint, Contacts};
+use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
 use crate::numerics::roots::extrema;
 
@@ -74,14 +74,9 @@ pub fn internal_cap_band(ctx: &LawContext, law: &dyn FrictionLaw) -> Option<(f64
     (hi > lo && (above(0.5 * (lo + p.p)) || above(0.5 * (hi + p.p)))).then_some((lo, hi))
 }
 
-/// The contacts at time τ of the mesh cycle (τ in [0, 1)) ([`crate::geometry::Mesh::contacts_at`]).
-pub fn contacts_at(ctx: &LawContext, tau: f64) -> Contacts {
-    ctx.mesh().contacts_at(tau)
-}
-
 /// Instantaneous efficiency at time τ.
 pub fn efficiency_at(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation, tau: f64) -> f64 {
-    efficiency_of(ctx, law, formulation, &contacts_at(ctx, tau))
+    efficiency_of(ctx, law, formulation, &ctx.mesh().contacts_at(tau))
 }
 
 /// Efficiency for a given set of contacts.
@@ -208,7 +203,7 @@ pub fn evaluate_efficiencies(
                 Formulation::Internal => 1,
             };
             let ((min, _), (max, _)) =
-                extrema(|tau| efficiencies_of(ctx, law, &contacts_at(ctx, tau))[k], &breaks, 32, 1e-12);
+                extrema(|tau| efficiencies_of(ctx, law, &ctx.mesh().contacts_at(tau))[k], &breaks, 32, 1e-12);
             EfficiencyResult {
                 formulation: *f,
                 power_loss: (1.0 - means[k].value) * ctx.state.pinion_torque * ctx.state.pinion_speed,

@@ -234,11 +234,19 @@ pub struct PeriodPropagation<const N: usize> {
     pub method: Method,
 }
 
+/// The method of a period: exact when every segment is affine, Magnus where any is not.
+pub fn period_method<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) -> Method {
+    if (0..model.segments().len()).all(|j| model.segment_is_affine(j)) {
+        Method::Exact
+    } else {
+        Method::Magnus4
+    }
+}
+
 /// Propagates every segment of one period by the route that applies.
 pub fn period_segments<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) -> PeriodPropagation<N> {
     let mut segments = Vec::with_capacity(model.segments().len());
     let mut routes = Vec::with_capacity(model.segments().len());
-    let mut all_exact = true;
     for (j, s) in model.segments().iter().enumerate() {
         let h = s.end - s.start;
         if model.segment_is_affine(j) {
@@ -246,13 +254,12 @@ pub fn period_segments<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) 
             segments.push(seg.propagate(s.start, h));
             routes.push(SegmentRoute::Exact(seg));
         } else {
-            all_exact = false;
             let (p, n) = magnus_adaptive(model, s.start, h);
             segments.push(p);
             routes.push(SegmentRoute::Magnus { density: n as f64 / h });
         }
     }
-    PeriodPropagation { segments, routes, method: if all_exact { Method::Exact } else { Method::Magnus4 } }
+    PeriodPropagation { segments, routes, method: period_method(model) }
 }
 
 /// The monodromy propagation over one period (Φ(T), q(T)).

@@ -6,8 +6,8 @@
 //! k'(t) jumps), so every quantity is smooth inside a piece. Each piece carries a grid fine enough to
 //! bracket every oscillation: at least [`NODES_PER_OSCILLATION`] nodes per period of the fastest free
 //! oscillation ω on the piece ([`PeriodicModel::highest_frequency`]; sqrt(|A₂₁|) for the SDOF
-//! model), so that between two nodes the velocity changes sign at most once
-//! for any oscillating part), and at least [`MIN_NODES`] per piece. The state at the nodes is
+//! model), so that between two nodes the velocity of any oscillating part changes sign at most
+//! once, and at least [`MIN_NODES`] per piece. The state at the nodes is
 //! marched from the Floquet periodic state X*(0); the state at any other time is propagated from
 //! the node before it (the exact propagator where it applies, Magnus otherwise).
 //!

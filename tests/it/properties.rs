@@ -1,7 +1,7 @@
 //! Property tests over random valid gear pairs and laws: energy balance, the μ → 0 limit, and
 //! agreement of the two formulations to first order in μ.
 
-use gearloss::efficiency::{contacts_at, efficiency_at, mean_efficiency};
+use gearloss::efficiency::{efficiency_at, mean_efficiency};
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::smoothed_coulomb::SmoothedCoulomb;
 use gearloss::friction::xu::Xu;
@@ -61,7 +61,7 @@ proptest! {
     fn external_efficiency_is_an_energy_balance(g in pair(), torque in 1.0f64..2000.0, rpm in 10.0f64..10000.0, tau in 0.0f64..1.0, mu in 0.01f64..0.2, whole in any::<bool>()) {
         let ctx = context(&g, torque, rpm, if whole { Sharing::Whole } else { Sharing::Equal });
         for law in laws(mu) {
-            let contacts = contacts_at(&ctx, tau);
+            let contacts = ctx.mesh().contacts_at(tau);
             let friction_power: f64 = contacts.iter().map(|c| law.mu(c).abs() * g.normal_load(&ctx.state) / contacts.len() as f64 * c.sliding_velocity).sum();
             let input = torque * ctx.state.pinion_speed;
             let eta = efficiency_at(&ctx, law.as_ref(), External, tau);
