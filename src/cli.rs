@@ -17,9 +17,21 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Evaluate a scene and write its report folder (report.md, report.json, SVG plots).
+    /// Evaluate a scene and write its report folder (report.md, report.json, SVG plots, record files).
     Run {
         scene: PathBuf,
+        /// Folder that receives `<scene-slug>/` (or `<scene-slug>.shard-K-of-N/` with --shard).
+        #[arg(long, default_value = "reports")]
+        out: PathBuf,
+        /// Evaluate only the K-th of N equal blocks of the operating points (1 ≤ K ≤ N), writing its
+        /// record files and a manifest for `gearloss merge`.
+        #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+        shard: Option<gearloss::Shard>,
+    },
+    /// Combine the shard folders of one scene into the report a single run gives.
+    Merge {
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
         /// Folder that receives `<scene-slug>/`.
         #[arg(long, default_value = "reports")]
         out: PathBuf,
@@ -33,10 +45,23 @@ enum Command {
 const EXIT_SCENE: u8 = 1;
 const EXIT_IO: u8 = 3;
 
+/// `K/N` with 1 ≤ K ≤ N ≤ 1 000 000.
+fn parse_shard(text: &str) -> Result<gearloss::Shard, String> {
+    let hint = "write --shard K/N with whole numbers 1 ≤ K ≤ N, e.g. --shard 2/4";
+    let (k, n) = text.split_once('/').ok_or_else(|| format!("`{text}` is not K/N: {hint}"))?;
+    let k: usize = k.trim().parse().map_err(|_| format!("`{k}` is not a whole number: {hint}"))?;
+    let n: usize = n.trim().parse().map_err(|_| format!("`{n}` is not a whole number: {hint}"))?;
+    if k == 0 || k > n || n > 1_000_000 {
+        return Err(format!("shard {k}/{n} does not exist: {hint} (N at most 1000000)"));
+    }
+    Ok(gearloss::Shard { index: k, count: n })
+}
+
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Run { scene, out } => run(&scene, &out),
+        Command::Run { scene, out, shard } => run(&scene, &out, shard),
+        Command::Merge { shards, out } => merge(&shards, &out),
         Command::Check { scene } => check(&scene),
         Command::Units => {
             print!("{}", units_table());
@@ -46,7 +71,7 @@ pub fn main() -> ExitCode {
 }
 
 fn read(path: &Path) -> Result<String, ExitCode> {
-    std::fs::read_to_string(path).map_err(|e| {
+    gearloss::scene::source::read_text(path, gearloss::scene::source::MAX_SCENE_BYTES).map_err(|e| {
         eprintln!("error: cannot read {}: {e}", path.display());
         ExitCode::from(EXIT_IO)
     })
@@ -78,7 +103,66 @@ fn check(path: &Path) -> ExitCode {
     }
 }
 
-fn run(path: &Path, out: &Path) -> ExitCode {
+/// A progress bar over the whole run, a stage at a time, on a terminal only.
+struct Bar(Option<indicatif::ProgressBar>);
+
+impl Bar {
+    fn new() -> Bar {
+        Bar(std::io::stderr().is_terminal().then(|| {
+            let bar = indicatif::ProgressBar::new(0);
+            if let Ok(style) = indicatif::ProgressStyle::with_template("{msg:>9} [{bar:40}] {pos}/{len} {elapsed}") {
+                bar.set_style(style.progress_chars("=> "));
+            }
+            bar
+        }))
+    }
+}
+
+impl gearloss::Progress for Bar {
+    fn stage(&self, label: &'static str, total: u64) {
+        if let Some(bar) = &self.0 {
+            bar.set_message(label);
+            bar.set_length(total);
+            bar.set_position(0);
+        }
+    }
+    fn advance(&self, n: u64) {
+        if let Some(bar) = &self.0 {
+            bar.inc(n);
+        }
+    }
+}
+
+impl Drop for Bar {
+    fn drop(&mut self) {
+        if let Some(bar) = &self.0 {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+fn finished(result: Result<(PathBuf, Vec<String>), gearloss::RunError>) -> ExitCode {
+    match result {
+        Ok((dir, files)) => {
+            println!("wrote {}", dir.display());
+            for file in files {
+                println!("  {file}");
+            }
+            ExitCode::SUCCESS
+        }
+        Err(gearloss::RunError::Scene(e)) => report_errors(&e),
+        Err(e @ gearloss::RunError::Shards(_)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(EXIT_SCENE)
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(EXIT_IO)
+        }
+    }
+}
+
+fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>) -> ExitCode {
     let source = match read(path) {
         Ok(s) => s,
         Err(code) => return code,
@@ -88,40 +172,17 @@ fn run(path: &Path, out: &Path) -> ExitCode {
         Ok(s) => s,
         Err(e) => return report_errors(&e),
     };
-    let n = scene.operating.count();
-    let bar = (std::io::stderr().is_terminal() && n >= 50).then(|| {
-        let bar = indicatif::ProgressBar::new(n as u64);
-        bar.set_message("operating points");
-        bar
-    });
-    let evaluation = match &bar {
-        Some(bar) => gearloss::evaluate_with_progress(&scene, &|| bar.inc(1)),
-        None => gearloss::evaluate(&scene),
-    };
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
-    let report = gearloss::report(&scene, &evaluation);
-    let rendered = match gearloss::render(&report) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(EXIT_IO);
-        }
-    };
-    match gearloss::write_report_folder(&rendered, out) {
-        Ok(dir) => {
-            println!("wrote {}", dir.display());
-            for (file, _) in &rendered.files {
-                println!("  {file}");
-            }
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("error: cannot write the report under {}: {e}", out.display());
-            ExitCode::from(EXIT_IO)
-        }
-    }
+    let bar = Bar::new();
+    let result = gearloss::run_into(&name, &source, &scene, out, shard, &bar);
+    drop(bar);
+    finished(result)
+}
+
+fn merge(shards: &[PathBuf], out: &Path) -> ExitCode {
+    let bar = Bar::new();
+    let result = gearloss::merge_into(shards, out, &bar);
+    drop(bar);
+    finished(result)
 }
 
 fn units_table() -> String {

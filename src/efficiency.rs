@@ -29,6 +29,16 @@ pub enum Formulation {
     Internal,
 }
 
+impl Formulation {
+    /// `external` or `internal`, as the scene writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Formulation::External => "external",
+            Formulation::Internal => "internal",
+        }
+    }
+}
+
 /// Relative tolerance of every mean.
 pub const MEAN_TOLERANCE: f64 = 1e-10;
 

@@ -36,6 +36,7 @@ pub mod diagnostics;
 pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;
+pub mod folder;
 pub mod friction;
 pub mod geometry;
 pub mod model;
@@ -44,12 +45,15 @@ pub mod quantity;
 pub mod render;
 pub mod report;
 pub mod scene;
+pub mod shard;
 pub mod tribology;
 
 use std::path::{Path, PathBuf};
 
 pub use diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
-pub use evaluate::Evaluation;
+pub use evaluate::records::{RecordSink, RecordWriter};
+pub use evaluate::{Evaluation, Plan, Shard, Tally};
+use folder::ReportFolder;
 pub use model::Scene;
 pub use render::RenderedReport;
 pub use report::Report;
@@ -81,70 +85,166 @@ pub fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
     lower(source_name, source, &ast)
 }
 
-/// Stage 3: computes what the scene asks for.
+/// Stage 3 in one piece, in memory: every point in detail (small scenes, tests and benches).
 pub fn evaluate(scene: &Scene) -> Evaluation {
     evaluate::evaluate_scene(scene)
 }
 
-/// Stage 3 with a callback once per operating point evaluated (from any worker thread), for progress bars.
-pub fn evaluate_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> Evaluation {
-    evaluate::evaluate_scene_with_progress(scene, tick)
+/// Stage 3, the sweep: the plan's points streamed, their summary rows written to `sink` in sweep
+/// order, their tally returned. Memory does not grow with the sweep.
+pub fn evaluate_sweep(
+    scene: &Scene,
+    plan: &Plan,
+    sink: &mut dyn RecordSink,
+    progress: &dyn Progress,
+) -> std::io::Result<Tally> {
+    let eval = evaluate::prepare(scene, plan);
+    progress.stage("evaluate", plan.range.len() as u64);
+    evaluate::stream::evaluate_records(scene, &eval, plan, sink, &|n| progress.advance(n as u64))
 }
 
-/// Stage 4: the serde report data.
-pub fn report(scene: &Scene, evaluation: &Evaluation) -> Report {
-    report::build_report(scene, evaluation)
+/// Stage 3, the details: the plan's detail points in full, the contact curves and the dynamics.
+pub fn evaluate_details(scene: &Scene, plan: &Plan, progress: &dyn Progress) -> Evaluation {
+    let mut eval = evaluate::prepare(scene, plan);
+    progress.stage("details", plan.detail.len() as u64);
+    evaluate::evaluate_details(scene, &mut eval, plan, &|| progress.advance(1));
+    eval
 }
 
-/// Stage 5: the files of the report folder.
+/// Stage 4: the serde report data, from the detail points and the tally of every point.
+pub fn report(scene: &Scene, evaluation: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
+    report::build_report(scene, evaluation, tally, plan)
+}
+
+/// Stage 5: the files of the report folder (the record files are written as the sweep runs).
 pub fn render(report: &Report) -> Result<RenderedReport, String> {
     render::render_report(report)
 }
 
-/// Writes `DIR/<slug>/` atomically: into a temporary folder beside it, then renamed into place.
-/// An existing report folder of the same name is replaced only once the new one is complete.
-pub fn write_report_folder(rendered: &RenderedReport, out_dir: &Path) -> std::io::Result<PathBuf> {
-    std::fs::create_dir_all(out_dir)?;
-    let target = out_dir.join(&rendered.slug);
-    let tmp = out_dir.join(format!(".{}.tmp-{}", rendered.slug, std::process::id()));
-    if tmp.exists() {
-        std::fs::remove_dir_all(&tmp)?;
-    }
-    std::fs::create_dir(&tmp)?;
-    let written = (|| {
-        for (name, content) in &rendered.files {
-            std::fs::write(tmp.join(name), content)?;
-        }
-        Ok::<(), std::io::Error>(())
-    })();
-    if let Err(e) = written {
-        let _ = std::fs::remove_dir_all(&tmp);
-        return Err(e);
-    }
-    let old = out_dir.join(format!(".{}.old-{}", rendered.slug, std::process::id()));
-    let had_old = target.exists();
-    if had_old {
-        std::fs::rename(&target, &old)?;
-    }
-    if let Err(e) = std::fs::rename(&tmp, &target) {
-        if had_old {
-            let _ = std::fs::rename(&old, &target);
-        }
-        let _ = std::fs::remove_dir_all(&tmp);
-        return Err(e);
-    }
-    if had_old {
-        std::fs::remove_dir_all(&old)?;
-    }
-    Ok(target)
+/// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
+pub fn report_of(scene: &Scene) -> Report {
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let tally = evaluate_sweep(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
+        .expect("records that go nowhere cannot fail to be written");
+    let eval = evaluate_details(scene, &plan, &Quiet);
+    report(scene, &eval, &tally, &plan)
 }
 
-/// Everything `gearloss run` does short of writing: check, evaluate, report, render.
+/// Told how a run proceeds, for a progress bar; the library never prints.
+pub trait Progress: Sync {
+    /// A stage begins with `total` steps.
+    fn stage(&self, _label: &'static str, _total: u64) {}
+    /// `n` steps of the stage are done.
+    fn advance(&self, _n: u64) {}
+}
+
+/// No progress reported.
+pub struct Quiet;
+impl Progress for Quiet {}
+
+/// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
+pub fn has_records(scene: &Scene) -> bool {
+    let a = &scene.analyses;
+    a.friction_along_loa || a.efficiency.is_some() || (a.dynamics && scene.dynamics.is_some())
+}
+
+/// Stages 3 to 5 after the sweep: details, report and render, with the record files (given) added.
+fn finish(
+    scene: &Scene,
+    plan: &Plan,
+    tally: &Tally,
+    progress: &dyn Progress,
+) -> Result<RenderedReport, RunError> {
+    let eval = evaluate_details(scene, plan, progress);
+    progress.stage("report", 1);
+    let report = report(scene, &eval, tally, plan);
+    progress.stage("render", 1);
+    render(&report).map_err(RunError::Render)
+}
+
+/// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
+/// render; the record files are among the files returned.
 pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
     let scene = check(source_name, source).map_err(RunError::Scene)?;
-    let evaluation = evaluate(&scene);
-    let report = report(&scene, &evaluation);
-    render(&report).map_err(RunError::Render)
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), true).map_err(RunError::io("records"))?;
+    let tally = evaluate_sweep(&scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
+    let mut rendered = finish(&scene, &plan, &tally, &Quiet)?;
+    if has_records(&scene) {
+        let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
+        let text = |b: Vec<u8>| String::from_utf8(b).expect("records are UTF-8");
+        rendered.files.push((report::sweep::RECORDS_CSV.into(), text(csv)));
+        rendered.files.push((report::sweep::RECORDS_JSONL.into(), text(jsonl)));
+    }
+    Ok(rendered)
+}
+
+/// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
+/// `out_dir/<slug>.shard-K-of-N/` with the shard's records and tally for `gearloss merge`),
+/// written into a temporary folder and renamed into place. Returns the folder and its files.
+pub fn run_into(
+    source_name: &str,
+    source: &str,
+    scene: &Scene,
+    out_dir: &Path,
+    shard: Option<Shard>,
+    progress: &dyn Progress,
+) -> Result<(PathBuf, Vec<String>), RunError> {
+    let plan = Plan::new(&scene.operating, shard, &scene.operating.detail_points);
+    let slug = report::slug(&scene.title);
+    let name = match shard {
+        Some(s) => format!("{slug}.shard-{}-of-{}", s.index, s.count),
+        None => slug,
+    };
+    let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
+    let mut files = Vec::new();
+    let tally = if has_records(scene) {
+        let mut sink = shard::record_files(&folder).map_err(RunError::io("the record files"))?;
+        let tally = evaluate_sweep(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
+        sink.finish().map_err(RunError::io("the record files"))?;
+        files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
+        tally
+    } else {
+        evaluate_sweep(scene, &plan, &mut evaluate::records::NoRecords, progress)
+            .map_err(RunError::io("the record files"))?
+    };
+    if let Some(shard) = shard {
+        let manifest = shard::Manifest::new(source_name, source, shard, &plan, tally);
+        folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
+        files.push(shard::MANIFEST.into());
+    } else {
+        let rendered = finish(scene, &plan, &tally, progress)?;
+        progress.stage("write", rendered.files.len() as u64);
+        for (file, content) in &rendered.files {
+            folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+            files.push(file.clone());
+            progress.advance(1);
+        }
+    }
+    let dir = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok((dir, files))
+}
+
+/// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
+/// (record files concatenated in shard order, tallies folded in shard order).
+pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -> Result<(PathBuf, Vec<String>), RunError> {
+    let set = shard::ShardSet::read(shards)?;
+    let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let folder = ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    let mut files = Vec::new();
+    if has_records(&scene) {
+        progress.stage("merge", set.folders.len() as u64);
+        set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
+        files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
+    }
+    let rendered = finish(&scene, &plan, &set.tally, progress)?;
+    for (file, content) in &rendered.files {
+        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(file.clone());
+    }
+    let dir = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok((dir, files))
 }
 
 /// Why a run failed.
@@ -154,4 +254,14 @@ pub enum RunError {
     Scene(SceneErrors),
     #[error("rendering the report failed: {0}")]
     Render(String),
+    #[error("cannot write {what}: {source}")]
+    Io { what: &'static str, source: std::io::Error },
+    #[error("{0}")]
+    Shards(String),
+}
+
+impl RunError {
+    fn io(what: &'static str) -> impl Fn(std::io::Error) -> RunError {
+        move |source| RunError::Io { what, source }
+    }
 }

@@ -199,7 +199,12 @@ pub struct Sweep<T> {
 pub struct Operating {
     pub pinion_torque: Sweep<Torque>,
     pub pinion_speed: Sweep<AngularVelocity>,
+    /// Operating points the scene asks to see in full (0-based; written 1-based as `detail_points`).
+    pub detail_points: Vec<usize>,
 }
+
+/// Most operating points a scene may ask for (the product of its sweeps).
+pub const MAX_OPERATING_POINTS: usize = 10_000_000;
 
 impl Operating {
     /// The number of operating points: the product of the sweeps.

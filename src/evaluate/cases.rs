@@ -13,6 +13,8 @@ use crate::model::Scene;
 /// read the cases; none rebuilds them from the scene.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Case {
+    /// The operating point's number in the sweep, 0-based, torque-major.
+    pub index: usize,
     /// Index of the torque and of the speed in the scene's sweeps.
     pub torque_index: usize,
     pub speed_index: usize,
@@ -21,26 +23,34 @@ pub struct Case {
     pub label: String,
 }
 
-/// The cases of a scene's operating sweeps.
+/// The cases of a scene's operating sweeps (all of them: small sweeps, tests).
 pub fn cases(op: &crate::model::Operating) -> Vec<Case> {
-    let mut out = Vec::with_capacity(op.pinion_torque.values.len() * op.pinion_speed.values.len());
-    for (ti, torque) in op.pinion_torque.values.iter().enumerate() {
-        for (ni, speed) in op.pinion_speed.values.iter().enumerate() {
-            out.push(Case {
-                torque_index: ti,
-                speed_index: ni,
-                state: OperatingState { pinion_torque: torque.value, pinion_speed: speed.value },
-                label: format!(
-                    "{} {}, {} {}",
-                    op.pinion_torque.written_values[ti],
-                    op.pinion_torque.unit,
-                    op.pinion_speed.written_values[ni],
-                    op.pinion_speed.unit
-                ),
-            });
-        }
+    (0..op.count()).map(|k| case_at(op, k)).collect()
+}
+
+/// Operating point `k` (0-based, torque-major) of a scene's sweeps, built on its own so that a
+/// sweep of any size is never expanded in memory.
+pub fn case_at(op: &crate::model::Operating, k: usize) -> Case {
+    let (ti, ni) = (k / op.pinion_speed.values.len(), k % op.pinion_speed.values.len());
+    Case {
+        index: k,
+        torque_index: ti,
+        speed_index: ni,
+        state: state_at(op, k),
+        label: format!(
+            "{} {}, {} {}",
+            op.pinion_torque.written_values[ti],
+            op.pinion_torque.unit,
+            op.pinion_speed.written_values[ni],
+            op.pinion_speed.unit
+        ),
     }
-    out
+}
+
+/// The operating state of point `k` (no label: the inner loop of a sweep).
+pub fn state_at(op: &crate::model::Operating, k: usize) -> OperatingState {
+    let (ti, ni) = (k / op.pinion_speed.values.len(), k % op.pinion_speed.values.len());
+    OperatingState { pinion_torque: op.pinion_torque.values[ti].value, pinion_speed: op.pinion_speed.values[ni].value }
 }
 
 /// Contact quantities along the line of action for the contact-state plot: v_s at each plotted speed

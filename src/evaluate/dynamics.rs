@@ -147,39 +147,66 @@ fn unstable_ranges(rows: impl Iterator<Item = (f64, f64)>, excess: impl Fn(f64) 
     out
 }
 
-/// Evaluates the dynamics the scene asks for; None when it asks for none.
+/// The SDOF model's fixed inputs for a scene: built once, then analysed at any operating point.
+pub struct DynamicsSetup<'a> {
+    base: LawContext<'a>,
+    spec: &'a DynamicsSpec,
+    stiffness: StiffnessModel,
+    source: &'static str,
+    inertia: [f64; 2],
+}
+
+impl<'a> DynamicsSetup<'a> {
+    /// The setup when the scene has a `dynamics` block; `base` is the law context of the scene's pair
+    /// (its state is replaced by each operating point's).
+    pub fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
+        let spec = scene.dynamics.as_ref()?;
+        let (stiffness, source) = stiffness_model(spec, base.geometry);
+        Some(DynamicsSetup { base, spec, stiffness, source, inertia: inertia(scene) })
+    }
+
+    fn law_for(&self, state: OperatingState) -> Option<Box<dyn FrictionLaw + 'a>> {
+        self.spec.friction.as_ref().map(|l| l.build(&LawContext { state, ..self.base }))
+    }
+
+    /// Every formulation at operating point `case` (its index in the caller's list) with its periodic
+    /// response (located extrema, spectrum, series).
+    pub fn point(&self, case: usize, state: OperatingState) -> DynamicsPoint {
+        let law = self.law_for(state);
+        let results = self
+            .spec
+            .formulations
+            .iter()
+            .map(|f| {
+                let sys = system(self.base, self.spec, &self.stiffness, law.as_deref(), *f, state, self.inertia);
+                analyse(&sys, true)
+            })
+            .collect();
+        DynamicsPoint {
+            case,
+            state,
+            mesh_frequency: state.pinion_speed * self.base.geometry.teeth[0] as f64 / (2.0 * std::f64::consts::PI),
+            results,
+        }
+    }
+}
+
+/// Evaluates the dynamics the scene asks for at the given cases (the detail points), the stability
+/// map and the numerics study; None when it asks for none.
 /// `base` is the law context of the scene's pair (its state is replaced by each operating point's).
 pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Option<DynamicsEvaluation> {
-    let spec = scene.dynamics.as_ref()?;
+    let setup = DynamicsSetup::new(scene, base)?;
     let a = &scene.analyses;
     if !(a.dynamics || a.stability_map.is_some() || a.numerics) {
         return None;
     }
-    let (stiffness, source) = stiffness_model(spec, base.geometry);
-    let j = inertia(scene);
+    let spec = setup.spec;
+    let (stiffness, source, j) = (&setup.stiffness, setup.source, setup.inertia);
     let probe_state = cases[0].state;
-    let probe = system(base, spec, &stiffness, None, DynamicFormulation::Base, probe_state, j);
-    let law_for = |state: OperatingState| spec.friction.as_ref().map(|l| l.build(&LawContext { state, ..base }));
+    let probe = system(base, spec, stiffness, None, DynamicFormulation::Base, probe_state, j);
+    let law_for = |state: OperatingState| setup.law_for(state);
     let points = if a.dynamics {
-        cases
-            .par_iter()
-            .enumerate()
-            .map(|(k, case)| {
-                let state = case.state;
-                let law = law_for(state);
-                let results = spec
-                    .formulations
-                    .iter()
-                    .map(|f| analyse(&system(base, spec, &stiffness, law.as_deref(), *f, state, j), true))
-                    .collect();
-                DynamicsPoint {
-                    case: k,
-                    state,
-                    mesh_frequency: state.pinion_speed * base.geometry.teeth[0] as f64 / (2.0 * std::f64::consts::PI),
-                    results,
-                }
-            })
-            .collect()
+        cases.par_iter().enumerate().map(|(k, case)| setup.point(k, case.state)).collect()
     } else {
         Vec::new()
     };
@@ -194,7 +221,7 @@ pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Opt
                     .formulations
                     .iter()
                     .map(|f| {
-                        let sys = system(base, spec, &stiffness, law.as_deref(), *f, state, j);
+                        let sys = system(base, spec, stiffness, law.as_deref(), *f, state, j);
                         let fl = Floquet::analyse(&sys);
                         (fl.spectral_radius, PeriodicResponse::dynamic_factor(&sys, &fl))
                     })
@@ -215,7 +242,7 @@ pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Opt
                     let state = OperatingState { pinion_torque: probe_state.pinion_torque, pinion_speed: w };
                     let law = law_for(state);
                     let f = spec.formulations[i];
-                    Floquet::analyse(&system(base, spec, &stiffness, law.as_deref(), f, state, j)).spectral_radius
+                    Floquet::analyse(&system(base, spec, stiffness, law.as_deref(), f, state, j)).spectral_radius
                         - (1.0 + UNSTABLE_MARGIN)
                 };
                 unstable_ranges(rows.iter().map(|r| (r.pinion_speed, r.spectral_radius[i])), rho)
@@ -229,7 +256,7 @@ pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Opt
             spec.formulations[0]
         };
         let law = law_for(probe_state);
-        let sys = system(base, spec, &stiffness, law.as_deref(), f, probe_state, j);
+        let sys = system(base, spec, stiffness, law.as_deref(), f, probe_state, j);
         (f, 0, study(&sys, sys.static_state()))
     });
     Some(DynamicsEvaluation {

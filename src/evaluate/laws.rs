@@ -20,7 +20,8 @@ pub struct ValiditySummary {
     pub intervals: Vec<(f64, f64, &'static str)>,
 }
 
-/// One friction law at one operating point.
+/// One friction law at one operating point. Outside the detail points only the summary is filled
+/// (μ̄, efficiency, validity, the internal cap band); the table, regimes and curves stay empty.
 #[derive(Debug, Clone, Serialize)]
 pub struct LawEvaluation {
     pub id: LawId,
@@ -106,6 +107,7 @@ pub(super) fn evaluate_law(
     spec: &crate::model::FrictionLawSpec,
     state: OperatingState,
     table: &[(Option<&'static str>, ContactPoint)],
+    detail: bool,
     curves: bool,
 ) -> LawEvaluation {
     let ctx = eval.law_context(state);
@@ -113,8 +115,7 @@ pub(super) fn evaluate_law(
     let law = law.as_ref();
     let diverges = law.diverges_at_pitch();
     let value_at = |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };
-    let positions = eval.curve_positions();
-    let contacts: Vec<ContactPoint> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
+    let contacts: Vec<ContactPoint> = eval.positions.iter().map(|u| ctx.contact_at(*u)).collect();
     let taus = cycle_times();
     let efficiency = efficiency::evaluate_efficiencies(&ctx, law, &eval.formulations);
     let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
@@ -124,10 +125,13 @@ pub(super) fn evaluate_law(
         parameters: law.parameters(),
         notes: law.notes(),
         diverges_at_pitch: diverges,
-        table: table.iter().map(|(_, c)| value_at(c)).collect(),
-        regimes: law.regime(&table[0].1).map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
+        table: if detail { table.iter().map(|(_, c)| value_at(c)).collect() } else { Vec::new() },
+        regimes: law
+            .regime(&table[0].1)
+            .filter(|_| detail)
+            .map(|_| table.iter().filter_map(|(_, c)| law.regime(c)).collect()),
         switch_points: law.switch_points(),
-        regime_bands: regime_bands(&ctx, law),
+        regime_bands: if detail { regime_bands(&ctx, law) } else { Vec::new() },
         ohlendorf_efficiency: 1.0 - mean_abs_mu.value * efficiency::ohlendorf_loss_factor(&ctx),
         internal_cap_band: if eval.formulations.contains(&Formulation::Internal) {
             efficiency::internal_cap_band(&ctx, law)
@@ -137,7 +141,7 @@ pub(super) fn evaluate_law(
         mean_abs_mu,
         validity: validity_summary(law, &contacts),
         efficiency,
-        curves: curves.then(|| LawCurves {
+        curves: (detail && curves).then(|| LawCurves {
             mu: contacts.iter().map(|c| value_at(c).unwrap_or(f64::NAN)).collect(),
             power_loss: contacts
                 .iter()

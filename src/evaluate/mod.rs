@@ -8,6 +8,10 @@
 pub mod cases;
 pub mod dynamics;
 pub mod laws;
+pub mod plan;
+pub mod records;
+pub mod stream;
+pub mod tally;
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -20,15 +24,25 @@ use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
 use crate::tribology::{Film, FilmInputs, Tribology};
 
 pub use cases::{
-    cases, cycle_times, pick, table_positions, Case, ContactCurves, CURVE_SAMPLES, MAX_CURVES, TABLE_INTERVALS,
+    case_at, cases, cycle_times, pick, state_at, table_positions, Case, ContactCurves, CURVE_SAMPLES, MAX_CURVES,
+    TABLE_INTERVALS,
 };
+pub use plan::{Plan, Shard};
+pub use records::{RecordSink, SummaryRow};
+pub use tally::Tally;
 pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 
 /// Everything computed for one scene.
 #[derive(Debug, Clone)]
 pub struct Evaluation {
-    /// The operating points, in the order of `points`.
+    /// The operating points reported in full (the plan's detail points), in the order of `points`.
     pub cases: Vec<Case>,
+    /// The contact-state table's positions (A..E in equal steps with B, P, D).
+    pub table_rows: Vec<(Option<&'static str>, f64)>,
+    /// [`Evaluation::curve_positions`], computed once.
+    pub positions: Vec<f64>,
+    /// Whether an analysis needs the friction laws.
+    pub wants_friction: bool,
     pub geometry: SpurGeometry,
     /// E' (Pa).
     pub reduced_modulus: f64,
@@ -140,13 +154,18 @@ pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
     }
 }
 
-/// Evaluates a lowered scene. Lowering has checked the geometry, so this cannot fail on a lowered scene.
+/// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
+/// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).
 pub fn evaluate_scene(scene: &Scene) -> Evaluation {
-    evaluate_scene_with_progress(scene, &|| {})
+    let plan = Plan::new(&scene.operating, None, &[]);
+    let mut eval = prepare(scene, &plan);
+    evaluate_details(scene, &mut eval, &plan, &|| {});
+    eval
 }
 
-/// As [`evaluate_scene`], calling `tick` once per operating point evaluated (from any thread).
-pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> Evaluation {
+/// Everything but the operating points: geometry, materials, lubricant, the fixed sample positions.
+/// Lowering has checked the geometry, so this cannot fail on a lowered scene.
+pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
     let geometry = scene.gears.geometry().expect("lowering refuses pairs whose geometry fails");
     let p = &scene.gears.pinion.material;
     let w = &scene.gears.wheel.material;
@@ -166,47 +185,57 @@ pub fn evaluate_scene_with_progress(scene: &Scene, tick: &(dyn Fn() + Sync)) -> 
         (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
     });
     let mut eval = Evaluation {
-        cases: cases(&scene.operating),
+        cases: plan.detail_cases(&scene.operating),
         ohlendorf_loss_factor: 0.0,
+        table_rows: table_positions(&geometry),
+        positions: Vec::new(),
         geometry,
         reduced_modulus: e_r,
         sharing: scene.gears.load_sharing,
         tribology,
         formulations: analyses.efficiency.clone().unwrap_or_default(),
         film_inputs,
+        wants_friction: analyses.friction_along_loa || analyses.efficiency.is_some(),
         points: Vec::new(),
         contact_curves: ContactCurves::default(),
         dynamics: None,
     };
-    let rows = table_positions(&eval.geometry);
-    let with_curves = pick(eval.cases.len());
-    let wants_friction = analyses.friction_along_loa || analyses.efficiency.is_some();
+    eval.positions = eval.curve_positions();
+    eval.ohlendorf_loss_factor =
+        efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
+    eval
+}
+
+/// The contact-state table of one operating point.
+pub fn contact_table(eval: &Evaluation, state: &OperatingState) -> Vec<(Option<&'static str>, ContactPoint)> {
+    eval.table_rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, state))).collect()
+}
+
+/// The detail points of the plan in full (tables, film, laws, curves), the contact curves and the
+/// dynamics; `tick` is called once per detail point.
+pub fn evaluate_details(scene: &Scene, eval: &mut Evaluation, plan: &Plan, tick: &(dyn Fn() + Sync)) {
     let points: Vec<PointEvaluation> = eval
         .cases
         .par_iter()
         .enumerate()
-        .map(|(k, case)| {
+        .map(|(i, case)| {
             let state = case.state;
-            let table: Vec<(Option<&'static str>, ContactPoint)> =
-                rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, &state))).collect();
+            let table = contact_table(eval, &state);
             let film =
                 eval.film_inputs.map(|(inputs, lambda)| table.iter().map(|(_, c)| inputs.film(c, lambda)).collect());
-            let curves = with_curves.contains(&k);
-            let laws = if wants_friction {
-                scene.friction.iter().map(|spec| laws::evaluate_law(&eval, spec, state, &table, curves)).collect()
+            let curves = plan.curves.binary_search(&case.index).is_ok();
+            let laws = if eval.wants_friction {
+                scene.friction.iter().map(|spec| laws::evaluate_law(eval, spec, state, &table, true, curves)).collect()
             } else {
                 Vec::new()
             };
             tick();
             let mesh_period = eval.geometry.mesh_period(state.pinion_speed);
-            PointEvaluation { case: k, state, mesh_period, table, film, laws, has_curves: curves }
+            PointEvaluation { case: i, state, mesh_period, table, film, laws, has_curves: curves }
         })
         .collect();
     eval.points = points;
-    eval.contact_curves = cases::contact_curves(scene, &eval);
+    eval.contact_curves = cases::contact_curves(scene, eval);
     eval.dynamics =
         crate::evaluate::dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state));
-    eval.ohlendorf_loss_factor =
-        efficiency::ohlendorf_loss_factor(&eval.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
-    eval
 }

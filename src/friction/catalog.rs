@@ -26,6 +26,17 @@ pub struct FrictionLawSpec {
 }
 
 impl FrictionLawSpec {
+    /// `coulomb(mu = 0.04)`: the law as the user wrote it (defaults left out).
+    pub fn label(&self) -> String {
+        let args: Vec<String> =
+            self.arguments.iter().filter(|(_, _, w)| w != "default").map(|(n, _, w)| format!("{n} = {w}")).collect();
+        if args.is_empty() {
+            self.law.name().to_string()
+        } else {
+            format!("{}({})", self.law.name(), args.join(", "))
+        }
+    }
+
     pub fn argument(&self, name: &str) -> Option<f64> {
         self.arguments.iter().find(|(n, _, _)| n == name).map(|(_, v, _)| *v)
     }

@@ -105,11 +105,11 @@ pub fn render_markdown(r: &Report) -> String {
         out,
         "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.\n"
     );
-    for (k, op) in r.operating_points.iter().enumerate() {
+    for op in &r.operating_points {
         let _ = writeln!(
             out,
             "### Operating point {}: {}\n\nT_p = {} N·m, n_p = {} {}, F_bn = {} N, T_mesh = {} ms, v_t = {} m/s\n",
-            k + 1,
+            op.index + 1,
             op.label,
             fixed(op.pinion_torque.si(), 2),
             fixed(r.speed_unit.value(&op.pinion_speed), 1),
@@ -153,6 +153,7 @@ pub fn render_markdown(r: &Report) -> String {
     }
     super::markdown_friction::sweep(&mut out, r);
     super::markdown_dynamics::dynamics(&mut out, r);
+    super::markdown_sweep::sweep_summary(&mut out, r);
 
     let _ = writeln!(out, "## Findings\n");
     for f in &r.findings {

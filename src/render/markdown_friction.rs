@@ -117,8 +117,15 @@ pub fn sweep(out: &mut String, r: &Report) {
         "Mean efficiency over one mesh cycle (time mean, adaptive Gauss–Kronrod to a relative tolerance of 1e-10, split at every zone boundary, pitch-point passage and regime switch) and friction power loss P = (1 − η̄) T_p ω_p.\n"
     );
     let speed = format!("n_p {}", r.speed_unit.name);
+    // A large sweep lists the points reported in full; the record files have every point.
+    let full = r.records.as_ref().is_none_or(|x| x.reported_in_full >= x.operating_points);
+    if !full {
+        let _ = writeln!(out, "At the operating points reported in full (every point: `records.csv`):
+");
+    }
     header(out, &["T_p N·m", &speed, "law", "formulation", "η̄ %", "P_loss W"]);
-    for rec in &r.efficiency {
+    let shown = |case: usize| full || r.operating_points.iter().any(|o| o.index == case);
+    for rec in r.efficiency.iter().filter(|x| shown(x.case)) {
         row(
             out,
             &[

@@ -3,6 +3,7 @@
 pub mod markdown;
 pub mod markdown_dynamics;
 pub mod markdown_friction;
+pub mod markdown_sweep;
 pub mod svg;
 pub mod table;
 
@@ -38,6 +39,7 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
             "sweep_speed.svg" => svg::sweep(report, true)?,
             "sweep_torque.svg" => svg::sweep(report, false)?,
             "sweep_mu.svg" => svg::sweep_mu(report)?,
+            "map_efficiency.svg" => svg::efficiency_map(report)?,
             "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
             "stability_map.svg" => svg::stability_map(report)?,
             "timing_work_precision.svg" => svg::work_precision(report)?,

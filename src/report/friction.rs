@@ -4,8 +4,9 @@ use serde::Serialize;
 
 use super::number::{m, Num, Q};
 use super::{Finding, Severity};
-use crate::evaluate::{Evaluation, LawEvaluation, PointEvaluation};
-use crate::friction::{Parameter, Regime};
+use crate::evaluate::records::{ParameterValue, RowKind};
+use crate::evaluate::{Evaluation, LawEvaluation, PointEvaluation, Tally};
+use crate::friction::Regime;
 use crate::model::{Formulation, FrictionLawSpec, Scene};
 
 /// μ at a row: a number, or the word `diverges` where the law is singular (at P).
@@ -27,21 +28,30 @@ impl MuValue {
 
 /// A law's parameters as a JSON object in the law's own order: `{"mu": 0.04, "phi": {"value": 5e4, "unit": "1/m"}}`.
 #[derive(Debug, Clone, Default)]
-pub struct Parameters(pub Vec<(&'static str, super::SiValue)>);
+pub struct Parameters(pub Vec<ParameterValue>);
 
 impl Parameters {
     /// The SI value of a parameter.
     pub fn get(&self, name: &str) -> Option<f64> {
-        self.0.iter().find(|(n, _)| *n == name).map(|(_, v)| v.si())
+        self.0.iter().find(|p| p.name == name).map(|p| p.value)
     }
 }
 
 impl Serialize for Parameters {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeMap;
+        #[derive(Serialize)]
+        struct Dimensional<'a> {
+            value: Num,
+            unit: &'a str,
+        }
         let mut map = s.serialize_map(Some(self.0.len()))?;
-        for (k, v) in &self.0 {
-            map.serialize_entry(k, v)?;
+        for p in &self.0 {
+            if p.unit == "1" {
+                map.serialize_entry(&p.name, &Num(p.value))?;
+            } else {
+                map.serialize_entry(&p.name, &Dimensional { value: Num(p.value), unit: &p.unit })?;
+            }
         }
         map.end()
     }
@@ -135,26 +145,16 @@ pub struct EfficiencyRecord {
 
 /// `coulomb(mu = 0.04)`: the law as the user wrote it (defaults left out).
 pub fn law_label(spec: &FrictionLawSpec) -> String {
-    let args: Vec<String> =
-        spec.arguments.iter().filter(|(_, _, w)| w != "default").map(|(n, _, w)| format!("{n} = {w}")).collect();
-    if args.is_empty() {
-        spec.law.name().to_string()
-    } else {
-        format!("{}({})", spec.law.name(), args.join(", "))
-    }
-}
-
-fn parameter(p: &Parameter) -> (&'static str, super::SiValue) {
-    let value = if p.unit == "1" {
-        super::SiValue::Plain(Num(p.value))
-    } else {
-        super::SiValue::Dimensional(Q::new(p.value, p.unit))
-    };
-    (p.name, value)
+    spec.label()
 }
 
 pub fn parameters(law: &LawEvaluation) -> Parameters {
-    Parameters(law.parameters.iter().map(parameter).collect())
+    Parameters(
+        law.parameters
+            .iter()
+            .map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() })
+            .collect(),
+    )
 }
 
 pub fn law_report(spec: &FrictionLawSpec, pe: &PointEvaluation, law: &LawEvaluation) -> LawReport {
@@ -220,67 +220,63 @@ pub fn film_rows(pe: &PointEvaluation) -> Option<Vec<FilmRow>> {
     })
 }
 
-pub fn efficiency_records(scene: &Scene, eval: &Evaluation) -> Vec<EfficiencyRecord> {
-    let mut out = Vec::new();
-    for pe in &eval.points {
-        for (spec, law) in scene.friction.iter().zip(&pe.laws) {
-            for e in &law.efficiency {
-                let case = &eval.cases[pe.case];
-                out.push(EfficiencyRecord {
-                    case: pe.case,
-                    torque_index: case.torque_index,
-                    speed_index: case.speed_index,
-                    law: law.id,
-                    label: law_label(spec),
-                    formulation: e.formulation,
-                    pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
-                    pinion_speed: Q::new(pe.state.pinion_speed, "rad/s"),
-                    mean_efficiency: Num(e.mean.value),
-                    error_estimate: Num(e.mean.error),
-                    power_loss: Q::new(e.power_loss, "W"),
-                    parameters: parameters(law),
-                });
-            }
-        }
-    }
-    out
+/// The efficiency records the report keeps (every point of a small sweep; the plotted ones of a
+/// large one), from the run's tally.
+pub fn efficiency_records(scene: &Scene, tally: &Tally) -> Vec<EfficiencyRecord> {
+    tally
+        .kept
+        .iter()
+        .filter(|r| r.kind == RowKind::Efficiency)
+        .filter_map(|r| {
+            let spec = &scene.friction[r.law_index?];
+            Some(EfficiencyRecord {
+                case: r.point - 1,
+                torque_index: r.torque_index,
+                speed_index: r.speed_index,
+                law: spec.law,
+                label: r.label.clone(),
+                formulation: if r.formulation == "internal" { Formulation::Internal } else { Formulation::External },
+                pinion_torque: Q::new(r.pinion_torque, "N*m"),
+                pinion_speed: Q::new(r.pinion_speed, "rad/s"),
+                mean_efficiency: Num(r.mean_efficiency?),
+                error_estimate: Num(r.mean_efficiency_error?),
+                power_loss: Q::new(r.power_loss?, "W"),
+                parameters: Parameters(r.parameters.clone()),
+            })
+        })
+        .collect()
 }
 
-/// Findings about the laws: their notes, validity, divergence handling.
-pub fn law_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
+/// Findings about the laws: their notes, validity, divergence handling, over every point of the run.
+pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Finding> {
     let mut out: Vec<Finding> = Vec::new();
     let push = |out: &mut Vec<Finding>, severity, message: String| {
         if !out.iter().any(|f| f.message == message) {
             out.push(Finding { severity, message });
         }
     };
-    if eval.points.first().is_none_or(|p| p.laws.is_empty()) {
+    if !eval.wants_friction {
         if !scene.friction.is_empty() {
             push(&mut out, Severity::Note, "friction laws are listed but no analysis asks for them (add `friction_along_loa` or `efficiency` to `analyses`)".into());
         }
         return out;
     }
-    for (i, spec) in scene.friction.iter().enumerate() {
+    for (spec, law) in scene.friction.iter().zip(&tally.laws) {
         let label = law_label(spec);
-        let laws: Vec<&LawEvaluation> = eval.points.iter().map(|p| &p.laws[i]).collect();
-        for law in &laws {
-            for note in &law.notes {
-                let severity = if note.contains("LOW CONFIDENCE") || note.contains("underestimated") {
-                    Severity::Warning
-                } else {
-                    Severity::Note
-                };
-                push(&mut out, severity, note.clone());
-            }
+        for note in &law.notes {
+            let severity = if note.contains("LOW CONFIDENCE") || note.contains("underestimated") {
+                Severity::Warning
+            } else {
+                Severity::Note
+            };
+            push(&mut out, severity, note.clone());
         }
-        if laws.iter().any(|l| l.diverges_at_pitch) {
+        if law.diverges_at_pitch {
             push(&mut out, Severity::Note, format!(
                 "{label}: |μ| diverges at the pitch point; tables write `diverges` there, plots clip (marked ▲▼), means integrate the integrable singularity (adaptive Gauss–Kronrod split at P)"
             ));
         }
-        let bands: Vec<(usize, (f64, f64))> =
-            laws.iter().enumerate().filter_map(|(k, l)| l.internal_cap_band.map(|b| (k, b))).collect();
-        if let Some((k, (a, b))) = bands.iter().max_by(|x, y| (x.1 .1 - x.1 .0).total_cmp(&(y.1 .1 - y.1 .0))) {
+        if let Some((k, a, b)) = law.widest_cap {
             push(
                 &mut out,
                 Severity::Warning,
@@ -290,28 +286,21 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
                     a * 1e3,
                     b * 1e3,
                     k + 1,
-                    bands.len(),
-                    laws.len()
+                    law.capped_points,
+                    law.points
                 ),
             );
         }
-        let flagged: Vec<(usize, &LawEvaluation)> =
-            laws.iter().enumerate().filter(|(_, l)| l.validity.outside > 0).map(|(k, l)| (k, *l)).collect();
-        if !flagged.is_empty() {
-            let (k, worst) = flagged.iter().max_by_key(|(_, l)| l.validity.outside).copied().expect("non-empty");
-            let where_: Vec<String> = worst
-                .validity
-                .intervals
-                .iter()
-                .map(|(a, b, r)| format!("{:.3}–{:.3} mm ({r})", a * 1e3, b * 1e3))
-                .collect();
+        if let Some(worst) = &law.worst {
+            let where_: Vec<String> =
+                worst.intervals.iter().map(|(a, b, r)| format!("{:.3}–{:.3} mm ({r})", a * 1e3, b * 1e3)).collect();
             push(&mut out, Severity::Warning, format!(
                 "{label}: outside its validity range at {} of {} operating points; worst at operating point {}: {} of {} samples along A–E, at {}",
-                flagged.len(),
-                laws.len(),
-                k + 1,
-                worst.validity.outside,
-                worst.validity.samples,
+                law.flagged_points,
+                law.points,
+                worst.point + 1,
+                worst.outside,
+                worst.samples,
                 where_.join(", ")
             ));
         }

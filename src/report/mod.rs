@@ -10,6 +10,7 @@ pub mod numerics;
 pub mod plausibility;
 pub mod points;
 pub mod scene;
+pub mod sweep;
 
 pub use geometry::{GearReport, GeometryReport, NamedPoint, PointsReport};
 pub use points::{ContactRow, Curves, OperatingPointReport, PointCurves};
@@ -17,7 +18,7 @@ pub use scene::{InputRow, SiValue};
 
 use serde::Serialize;
 
-use crate::evaluate::Evaluation;
+use crate::evaluate::{Evaluation, Plan, Tally};
 use crate::model::Scene;
 
 /// The report of one scene.
@@ -28,9 +29,17 @@ pub struct Report {
     pub slug: String,
     pub inputs: Vec<InputRow>,
     pub geometry: GeometryReport,
+    /// The operating points reported in full: every point of a small sweep, a bounded set of a large one.
     pub operating_points: Vec<OperatingPointReport>,
-    /// One record per (operating point, law, formulation); empty unless the scene asks for `efficiency`.
+    /// One record per (operating point, law, formulation) kept in the report (every point of a small
+    /// sweep, the plotted ones of a large one; records.csv has all); empty unless the scene asks for `efficiency`.
     pub efficiency: Vec<friction::EfficiencyRecord>,
+    /// The record files: one row per operating point × law × formulation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub records: Option<sweep::RecordsReport>,
+    /// Extremes over every operating point of a sweep (more than one point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sweep: Option<sweep::SweepReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<dynamics::DynamicsReport>,
     pub findings: Vec<Finding>,
@@ -41,6 +50,12 @@ pub struct Report {
     /// The unit the scene wrote the pinion speed in, for tables and plot axes.
     #[serde(skip)]
     pub speed_unit: number::DisplayUnit,
+    /// The map plots' grid (torque and speed indices), when the sweep has a map.
+    #[serde(skip)]
+    pub map_grid: Option<(Vec<usize>, Vec<usize>)>,
+    /// The torque and speed indices the sweep plots draw a curve for.
+    #[serde(skip)]
+    pub sweep_curves: (Vec<usize>, Vec<usize>),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -84,24 +99,25 @@ pub fn slug(title: &str) -> String {
 }
 
 pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
-    match f {
-        crate::model::Formulation::External => "external",
-        crate::model::Formulation::Internal => "internal",
-    }
+    f.name()
 }
 
-/// Builds the report of an evaluated scene.
-pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
+/// Builds the report of an evaluated scene: the detail points from `eval`, everything over the
+/// sweep from the run's `tally`.
+pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
     let mut findings = checks::findings(scene, eval);
-    findings.extend(friction::law_findings(scene, eval));
-    findings.extend(plausibility::plausibility_findings(eval));
+    findings.extend(friction::law_findings(scene, eval, tally));
+    findings.extend(plausibility::plausibility_findings(tally));
+    findings.extend(sweep::sweep_findings(tally, plan));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),
         inputs: scene::inputs(scene),
         geometry: geometry::geometry_report(eval),
         operating_points: eval.points.iter().map(|p| points::operating_point_report(scene, eval, p)).collect(),
-        efficiency: friction::efficiency_records(scene, eval),
+        efficiency: friction::efficiency_records(scene, tally),
+        records: sweep::records_report(tally, plan),
+        sweep: sweep::sweep_report(tally, plan),
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
         findings,
         plots: vec![PlotRef {
@@ -110,6 +126,11 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
         }],
         curves: points::curves(scene, eval),
         speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
+        sweep_curves: (plan.curve_indices().0.to_vec(), plan.curve_indices().1.to_vec()),
+        map_grid: sweep::has_map(plan).then(|| {
+            let (t, s) = plan.map_grid();
+            (t.to_vec(), s.to_vec())
+        }),
     };
     if let Some(d) = &report.dynamics {
         report.findings.extend(dynamics_findings::dynamics_findings(d));
@@ -152,9 +173,15 @@ pub fn build_report(scene: &Scene, eval: &Evaluation) -> Report {
             });
         }
     }
+    if !report.efficiency.is_empty() && sweep::has_map(plan) {
+        report.plots.push(PlotRef {
+            file: "map_efficiency.svg".into(),
+            title: "Mean efficiency and power loss over the torque × speed map".into(),
+        });
+    }
     if sweeps.pinion_speed.values.len() > 1
         && scene.friction.iter().any(|l| l.law == crate::friction::catalog::LawId::Composite)
-        && !eval.points[0].laws.is_empty()
+        && eval.wants_friction
     {
         report.plots.push(PlotRef {
             file: "composite_mu_vs_speed.svg".into(),

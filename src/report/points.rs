@@ -11,6 +11,9 @@ use crate::model::Scene;
 
 #[derive(Debug, Clone, Serialize)]
 pub struct OperatingPointReport {
+    /// The point's number in the sweep, 0-based (records.csv's `point` is this + 1).
+    #[serde(skip)]
+    pub index: usize,
     pub pinion_torque: Q,
     pub pinion_speed: Q,
     /// The operating point as the user wrote its units, e.g. `239.3 N*m, 100 rpm`.
@@ -109,6 +112,7 @@ pub(super) fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &Poin
     let g = &eval.geometry;
     let label = eval.cases[pe.case].label.clone();
     OperatingPointReport {
+        index: eval.cases[pe.case].index,
         pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
         pinion_speed: Q::new(pe.state.pinion_speed, "rad/s"),
         label,
@@ -138,12 +142,12 @@ pub(super) fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
 
 pub(super) fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves> {
     let mut out = Vec::new();
-    for (k, pe) in eval.points.iter().enumerate() {
+    for pe in &eval.points {
         if !pe.has_curves || pe.laws.is_empty() {
             continue;
         }
         let mut pc = PointCurves {
-            file: format!("point_{}_friction.svg", k + 1),
+            file: format!("point_{}_friction.svg", eval.cases[pe.case].index + 1),
             label: eval.cases[pe.case].label.clone(),
             ..Default::default()
         };

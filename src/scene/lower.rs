@@ -15,7 +15,9 @@ use crate::model::*;
 const SCENE_BLOCKS: &[&str] = &["gears", "material", "lubricant", "operating", "friction", "dynamics", "analyses"];
 const LUBRICANT_KEYS: &[&str] =
     &["dynamic_viscosity", "density", "kinematic_viscosity", "pressure_viscosity", "type", "temperature"];
-const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed"];
+const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed", "detail_points"];
+/// Most operating points a scene may name with `detail_points`.
+pub const MAX_DETAIL_POINTS: usize = 20;
 const ANALYSES: &[&str] =
     &["efficiency", "friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics"];
 const FORMULATIONS: &[&str] = &["external", "internal"];
@@ -177,7 +179,50 @@ fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operat
         .filter(|t| check("pinion_torque", &t.values.iter().map(|v| v.value).collect::<Vec<_>>(), t.span, errors));
     let speed =
         speed.filter(|s| check("pinion_speed", &s.values.iter().map(|v| v.value).collect::<Vec<_>>(), s.span, errors));
-    Some(Operating { pinion_torque: torque?, pinion_speed: speed? })
+    let (torque, speed) = (torque?, speed?);
+    let count = torque.values.len() as u128 * speed.values.len() as u128;
+    if count > MAX_OPERATING_POINTS as u128 {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                speed.span,
+                format!(
+                    "{} torques × {} speeds = {count} operating points, above the limit of {MAX_OPERATING_POINTS}",
+                    torque.values.len(),
+                    speed.values.len()
+                ),
+            )
+            .hint("use fewer values, or split the map into several scenes (or shards: `gearloss run --shard K/N`)"),
+        );
+        return None;
+    }
+    let detail_points = detail_points(&f, count as usize, errors)?;
+    Some(Operating { pinion_torque: torque, pinion_speed: speed, detail_points })
+}
+
+/// `detail_points = [1, 57]`: operating points (1-based, torque-major, as in records.csv) reported in
+/// full besides the default ones; returned 0-based.
+fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Option<Vec<usize>> {
+    let Some((_, value)) = f.values.get("detail_points") else {
+        return Some(Vec::new());
+    };
+    let (numbers, _, _, _) = super::sweeps::sweep_values("detail_points", value, Dimension::NONE, errors)?;
+    let bad = |reason: String| {
+        Diagnostic::new(DiagnosticKind::OutOfRange, value.span, reason).hint(format!(
+            "list up to {MAX_DETAIL_POINTS} point numbers from 1 to {count} (1-based, torque-major, as in records.csv), e.g. `detail_points = [1, {count}]`"
+        ))
+    };
+    if numbers.len() > MAX_DETAIL_POINTS {
+        errors.push(bad(format!("`detail_points` lists {} points, above the limit of {MAX_DETAIL_POINTS}", numbers.len())));
+        return None;
+    }
+    match numbers.iter().find(|x| !(x.fract() == 0.0 && **x >= 1.0 && **x <= count as f64)) {
+        Some(x) => {
+            errors.push(bad(format!("`detail_points` names point {x}; the sweep has points 1 to {count}")));
+            None
+        }
+        None => Some(numbers.iter().map(|x| *x as usize - 1).collect()),
+    }
 }
 
 fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {

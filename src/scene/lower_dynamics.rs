@@ -167,12 +167,12 @@ fn read_stiffness_csv(value: &Value, base_dir: Option<&Path>, errors: &mut Vec<D
         return None;
     };
     let path = base_dir.map_or_else(|| Path::new(name).to_path_buf(), |d| d.join(name));
-    let text = match std::fs::read_to_string(&path) {
+    let text = match super::source::read_text(&path, super::source::MAX_TABLE_BYTES) {
         Ok(t) => t,
         Err(e) => {
             errors.push(
                 Diagnostic::new(DiagnosticKind::Undefined, value.span, format!("cannot read `{name}`: {e}"))
-                    .hint("the path is relative to the folder of the scene file"),
+                    .hint("a text file of at most 4 MiB; the path is relative to the folder of the scene file"),
             );
             return None;
         }

@@ -8,6 +8,7 @@ pub mod lower_dynamics;
 pub mod lower_friction;
 pub mod lower_gears;
 pub mod parse;
+pub mod source;
 pub mod sweeps;
 pub mod syntax_errors;
 pub mod units;

@@ -245,8 +245,7 @@ fn matsumoto_limits() {
 fn no_scene_report_has_a_non_finite_number() {
     for name in ["bernard_table4.gear", "composite_speed_sweep.gear", "fzg_type_c.gear", "us_spur_inch.gear"] {
         let scene = spec(name);
-        let eval = evaluate_scene(&scene);
-        let report = gearloss::report(&scene, &eval);
+        let report = gearloss::report_of(&scene);
         assert!(
             gearloss::report::non_finite_paths(&report).is_empty(),
             "{name}: {:?}",

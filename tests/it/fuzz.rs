@@ -7,8 +7,7 @@ const FZG: &str = include_str!("../../specs/fzg_type_c.gear");
 fn run(text: &str) {
     match gearloss::check("fuzz.gear", text) {
         Ok(scene) => {
-            let eval = gearloss::evaluate(&scene);
-            let report = gearloss::report(&scene, &eval);
+            let report = gearloss::report_of(&scene);
             gearloss::render(&report).expect("a checked scene renders");
         }
         Err(e) => {

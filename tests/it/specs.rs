@@ -24,6 +24,9 @@ fn example_scenes_render() {
         let r = render(path);
         insta::assert_snapshot!("md", file(&r, "report.md"));
         insta::assert_snapshot!("json", file(&r, "report.json"));
+        if let Some((_, csv)) = r.files.iter().find(|(n, _)| n == "records.csv") {
+            insta::assert_snapshot!("csv", csv);
+        }
     });
 }
 

@@ -3,10 +3,12 @@
 
 mod contact;
 mod dynamics;
+mod maps;
 mod sweeps;
 
 pub use contact::{contact_state, point_friction};
 pub use dynamics::{dynamics_point, stability_map, work_precision};
+pub use maps::efficiency_map;
 pub use sweeps::{composite_mu_vs_speed, sweep, sweep_mu};
 
 use plotters::coord::Shift;
@@ -43,6 +45,24 @@ pub struct Panel {
     pub clip: Option<f64>,
 }
 
+/// A range plotters can draw ticks for: finite, increasing, with a finite width not lost in the
+/// rounding of its ends. A degenerate range is widened around its value; None if none can be drawn
+/// (values near the largest f64), so that a plot can never hang or fail on extreme numbers.
+pub(crate) fn plottable(lo: f64, hi: f64) -> Option<(f64, f64)> {
+    if !(lo.is_finite() && hi.is_finite()) || hi < lo {
+        return None;
+    }
+    let scale = lo.abs().max(hi.abs());
+    if scale > 1e300 {
+        return None;
+    }
+    if hi - lo <= 1e-9 * scale || hi == lo {
+        let half = (1e-3 * scale).max(1e-12);
+        return Some((lo - half, hi + half));
+    }
+    Some((lo, hi))
+}
+
 fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for v in values.filter(|v| v.is_finite()) {
@@ -71,8 +91,10 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
     if x1.partial_cmp(&x0) != Some(std::cmp::Ordering::Greater) {
         return Ok(());
     }
+    let Some((x0, x1)) = plottable(x0, x1) else { return Ok(()) };
     let clip = |y: f64| panel.clip.map_or(y, |c| y.clamp(-c, c));
     let (y0, y1) = bounds(all.iter().chain(&panel.points).flat_map(|(_, s)| s.iter().map(|p| clip(p.1))));
+    let Some((y0, y1)) = plottable(y0, y1) else { return Ok(()) };
     let mut chart = ChartBuilder::on(area)
         .margin(12)
         .x_label_area_size(36)

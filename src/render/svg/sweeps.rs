@@ -24,9 +24,19 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
             format!("{:.0} {}", r.speed_unit.value(&rec.pinion_speed), r.speed_unit.name)
         }
     };
+    // One curve per picked value of the other variable ([`Report::sweep_curves`]).
+    let on_curve = |rec: &&EfficiencyRecord| {
+        let (t, s) = &r.sweep_curves;
+        if by_speed {
+            t.binary_search(&rec.torque_index).is_ok()
+        } else {
+            s.binary_search(&rec.speed_index).is_ok()
+        }
+    };
+    let records: Vec<&EfficiencyRecord> = r.efficiency.iter().filter(on_curve).collect();
     // (sweep index, x), sorted by x.
     let mut columns: Vec<(usize, f64)> = Vec::new();
-    for rec in &r.efficiency {
+    for rec in &records {
         if !columns.iter().any(|(i, _)| *i == x_index(rec)) {
             columns.push((x_index(rec), x_of(rec)));
         }
@@ -34,7 +44,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     columns.sort_by(|a, b| a.1.total_cmp(&b.1));
     let xs: Vec<f64> = columns.iter().map(|c| c.1).collect();
     let mut labels: Vec<String> = Vec::new();
-    for rec in &r.efficiency {
+    for rec in &records {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
         if !labels.contains(&l) {
             labels.push(l);
@@ -42,7 +52,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     }
     let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
     let mut loss = eta.clone();
-    for rec in &r.efficiency {
+    for rec in &records {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
         let i = labels.iter().position(|x| *x == l).expect("label collected above");
         let j = columns.iter().position(|c| c.0 == x_index(rec)).expect("column collected above");
@@ -113,7 +123,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
     type Curve = (String, Vec<(f64, f64, f64)>);
     let mut curves: Vec<Curve> = Vec::new();
     for rec in r.efficiency.iter().filter(|x| laws.contains(&x.law)) {
-        let Some(k) = ops.iter().position(|&k| k == rec.case) else {
+        let Some(k) = ops.iter().position(|&k| r.operating_points[k].index == rec.case) else {
             continue;
         };
         let Some(mu) = rec.parameters.get("mu") else { continue };

@@ -1,0 +1,143 @@
+//! The plan of a run over a sweep: which operating points it evaluates (all, or one shard's share),
+//! which it reports in full (the detail points: contact tables, μ along the line of action, plots)
+//! and which it keeps the summary rows of for the report's tables and plots (the kept points).
+//! Every point gets its summary record; the report's size is bounded whatever the sweep's.
+
+use std::ops::Range;
+
+use super::cases::{case_at, Case, MAX_CURVES};
+use crate::model::Operating;
+
+/// Sweeps of up to this many operating points report every point in full (as small scenes always did).
+pub const ALL_IN_DETAIL: usize = 100;
+/// Larger sweeps report this many values of each sweep in full (their products: up to 9 points).
+pub const DETAIL_PER_SWEEP: usize = 3;
+/// A sweep plot draws at most this many values along its x axis.
+pub const PLOTTED_VALUES: usize = 200;
+/// A map plot's grid has at most this many values of each sweep.
+pub const MAP_VALUES: usize = 40;
+pub use crate::model::MAX_OPERATING_POINTS;
+
+/// One share of a sharded run: `index` of `count`, 1-based (`--shard 2/4`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub struct Shard {
+    pub index: usize,
+    pub count: usize,
+}
+
+impl Shard {
+    /// The operating points of this share of `n`: a contiguous block, so that the shards' record
+    /// files concatenate in order to a single run's.
+    pub fn range(&self, n: usize) -> Range<usize> {
+        let at = |i: usize| ((i as u128 * n as u128) / self.count as u128) as usize;
+        at(self.index - 1)..at(self.index)
+    }
+}
+
+/// Indices of at most `max` values evenly picked from `n` (the first and the last included).
+pub fn evenly(n: usize, max: usize) -> Vec<usize> {
+    if n <= max {
+        return (0..n).collect();
+    }
+    if max < 2 {
+        return vec![0];
+    }
+    let mut v: Vec<usize> = (0..max).map(|i| i * (n - 1) / (max - 1)).collect();
+    v.dedup();
+    v
+}
+
+/// Which points a run evaluates, details and keeps.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    pub torques: usize,
+    pub speeds: usize,
+    /// The points this run evaluates (all of them unless sharded).
+    pub range: Range<usize>,
+    /// Points reported in full, ascending (the first point always among them).
+    pub detail: Vec<usize>,
+    /// Detail points whose curves (μ, η(t), local power loss) are plotted.
+    pub curves: Vec<usize>,
+    everything: bool,
+    curve_torques: Vec<usize>,
+    curve_speeds: Vec<usize>,
+    plot_torques: Vec<usize>,
+    plot_speeds: Vec<usize>,
+    map_torques: Vec<usize>,
+    map_speeds: Vec<usize>,
+}
+
+impl Plan {
+    /// The plan for a scene's sweeps; `named` are points the scene asks to see in full (0-based).
+    pub fn new(op: &Operating, shard: Option<Shard>, named: &[usize]) -> Plan {
+        let (nt, ns) = (op.pinion_torque.values.len(), op.pinion_speed.values.len());
+        let n = nt * ns;
+        let everything = n <= ALL_IN_DETAIL;
+        let (detail, curves) = if everything {
+            ((0..n).collect(), evenly(n, MAX_CURVES))
+        } else {
+            let mut d: Vec<usize> = evenly(nt, DETAIL_PER_SWEEP)
+                .into_iter()
+                .flat_map(|t| evenly(ns, DETAIL_PER_SWEEP).into_iter().map(move |s| t * ns + s))
+                .collect();
+            d.extend(named.iter().copied().filter(|k| *k < n));
+            d.sort_unstable();
+            d.dedup();
+            (d.clone(), d)
+        };
+        Plan {
+            torques: nt,
+            speeds: ns,
+            range: shard.map_or(0..n, |s| s.range(n)),
+            detail,
+            curves,
+            everything,
+            curve_torques: evenly(nt, MAX_CURVES),
+            curve_speeds: evenly(ns, MAX_CURVES),
+            plot_torques: evenly(nt, PLOTTED_VALUES),
+            plot_speeds: evenly(ns, PLOTTED_VALUES),
+            map_torques: evenly(nt, MAP_VALUES),
+            map_speeds: evenly(ns, MAP_VALUES),
+        }
+    }
+
+    /// Operating points of the scene (not only of this run's range).
+    pub fn count(&self) -> usize {
+        self.torques * self.speeds
+    }
+
+    /// Whether every point of the sweep is reported in full.
+    pub fn everything_in_detail(&self) -> bool {
+        self.everything
+    }
+
+    /// Whether the report keeps the summary rows of point `k`: every point of a small sweep; else
+    /// the picked curves of the sweep plots (each at up to [`PLOTTED_VALUES`] x values), the map grid
+    /// and the detail points.
+    pub fn kept(&self, k: usize) -> bool {
+        if self.everything {
+            return true;
+        }
+        let (t, s) = (k / self.speeds, k % self.speeds);
+        let has = |v: &[usize], i: usize| v.binary_search(&i).is_ok();
+        (has(&self.curve_torques, t) && has(&self.plot_speeds, s))
+            || (has(&self.curve_speeds, s) && has(&self.plot_torques, t))
+            || (has(&self.map_torques, t) && has(&self.map_speeds, s))
+            || has(&self.detail, k)
+    }
+
+    /// The grid of the map plots: (torque indices, speed indices).
+    pub fn map_grid(&self) -> (&[usize], &[usize]) {
+        (&self.map_torques, &self.map_speeds)
+    }
+
+    /// The torque and speed indices drawn as curves in the sweep plots (at most [`MAX_CURVES`] each).
+    pub fn curve_indices(&self) -> (&[usize], &[usize]) {
+        (&self.curve_torques, &self.curve_speeds)
+    }
+
+    /// The cases of the detail points.
+    pub fn detail_cases(&self, op: &Operating) -> Vec<Case> {
+        self.detail.iter().map(|k| case_at(op, *k)).collect()
+    }
+}

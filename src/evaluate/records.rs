@@ -1,0 +1,244 @@
+//! The summary records of a run: one row per operating point × law × formulation, streamed to
+//! `records.csv` and `records.jsonl` as the points are evaluated, so that memory does not grow with
+//! the sweep. Every number is in SI; the CSV header names the unit of each column.
+//!
+//! Rows of one point come in a fixed order: the efficiency rows (the scene's laws in order, each
+//! with its formulations), or one friction row per law when the scene asks for friction without
+//! efficiency, then the dynamics rows (one per dynamic formulation). Points come in the order of
+//! the sweep (torque-major), so the records of a sharded run concatenate to those of a single run.
+
+use std::io::Write;
+
+use serde::{Deserialize, Serialize};
+
+/// One parameter of a law at the point (SI value and unit; `1` for a plain number).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ParameterValue {
+    pub name: String,
+    pub value: f64,
+    pub unit: String,
+}
+
+/// What a row reports.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RowKind {
+    /// Mean efficiency and power loss of a law in one formulation.
+    Efficiency,
+    /// μ̄ and validity of a law (the scene asks for friction, not efficiency).
+    Friction,
+    /// The dynamics summary of one dynamic formulation.
+    Dynamics,
+}
+
+/// One summary record.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SummaryRow {
+    /// Operating point number, 1-based, torque-major (as in the report).
+    pub point: usize,
+    pub torque_index: usize,
+    pub speed_index: usize,
+    #[serde(rename = "pinion_torque_N_m")]
+    pub pinion_torque: f64,
+    #[serde(rename = "pinion_speed_rad_s")]
+    pub pinion_speed: f64,
+    pub kind: RowKind,
+    /// Index of the law in the scene's friction list (dynamics rows: none).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub law_index: Option<usize>,
+    /// Catalogue name of the law (`coulomb`), empty when the row has none.
+    pub law: String,
+    /// The law as written, `coulomb(mu = 0.04)`.
+    pub label: String,
+    /// `external`, `internal`, `base`, or empty for friction rows.
+    pub formulation: String,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub mean_abs_mu: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub mean_efficiency: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub mean_efficiency_error: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub min_efficiency: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub max_efficiency: Option<f64>,
+    #[serde(rename = "power_loss_W", skip_serializing_if = "Option::is_none", default)]
+    pub power_loss: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub validity_samples: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub validity_outside: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub spectral_radius: Option<f64>,
+    #[serde(rename = "dte_peak_to_peak_m", skip_serializing_if = "Option::is_none", default)]
+    pub dte_peak_to_peak: Option<f64>,
+    #[serde(rename = "dte_mean_m", skip_serializing_if = "Option::is_none", default)]
+    pub dte_mean: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub dynamic_factor: Option<f64>,
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    pub parameters: Vec<ParameterValue>,
+}
+
+impl SummaryRow {
+    /// The row's numbers by CSV column name, in [`CSV_COLUMNS`] order after the text columns.
+    fn numbers(&self) -> [(&'static str, Option<f64>); 14] {
+        let count = |n: Option<usize>| n.map(|n| n as f64);
+        [
+            ("pinion_torque_N_m", Some(self.pinion_torque)),
+            ("pinion_speed_rad_s", Some(self.pinion_speed)),
+            ("mean_abs_mu", self.mean_abs_mu),
+            ("mean_efficiency", self.mean_efficiency),
+            ("mean_efficiency_error", self.mean_efficiency_error),
+            ("min_efficiency", self.min_efficiency),
+            ("max_efficiency", self.max_efficiency),
+            ("power_loss_W", self.power_loss),
+            ("validity_samples", count(self.validity_samples)),
+            ("validity_outside", count(self.validity_outside)),
+            ("spectral_radius", self.spectral_radius),
+            ("dte_peak_to_peak_m", self.dte_peak_to_peak),
+            ("dte_mean_m", self.dte_mean),
+            ("dynamic_factor", self.dynamic_factor),
+        ]
+    }
+
+    /// Names of the columns whose value is present but not a finite number.
+    pub fn non_finite(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.numbers().into_iter().filter(|(_, v)| v.is_some_and(|x| !x.is_finite())).map(|(n, _)| n)
+    }
+}
+
+/// The columns of `records.csv`, in order.
+pub const CSV_COLUMNS: [&str; 21] = [
+    "point",
+    "torque_index",
+    "speed_index",
+    "pinion_torque_N_m",
+    "pinion_speed_rad_s",
+    "kind",
+    "law",
+    "label",
+    "formulation",
+    "mean_abs_mu",
+    "mean_efficiency",
+    "mean_efficiency_error",
+    "min_efficiency",
+    "max_efficiency",
+    "power_loss_W",
+    "validity_samples",
+    "validity_outside",
+    "spectral_radius",
+    "dte_peak_to_peak_m",
+    "dte_mean_m",
+    "dynamic_factor",
+];
+
+/// The header line of `records.csv`.
+pub fn csv_header() -> String {
+    let mut s = CSV_COLUMNS.join(",");
+    s.push('\n');
+    s
+}
+
+/// A number as the record files write it: the shortest text that reads back to the same f64
+/// (serde_json's), integers without a fraction; empty for a missing or non-finite value.
+fn number(x: Option<f64>) -> String {
+    match x {
+        Some(x) if x.is_finite() => {
+            if x.fract() == 0.0 && x.abs() < 1e15 {
+                format!("{}", x as i64)
+            } else {
+                serde_json::to_string(&x).expect("a finite f64 serialises")
+            }
+        }
+        _ => String::new(),
+    }
+}
+
+/// A text cell: quoted when it holds a comma, a quote or a line end (RFC 4180).
+fn text(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// One CSV line of a row.
+pub fn csv_line(row: &SummaryRow) -> String {
+    let kind = match row.kind {
+        RowKind::Efficiency => "efficiency",
+        RowKind::Friction => "friction",
+        RowKind::Dynamics => "dynamics",
+    };
+    let n = row.numbers();
+    let mut cells = vec![
+        row.point.to_string(),
+        row.torque_index.to_string(),
+        row.speed_index.to_string(),
+        number(n[0].1),
+        number(n[1].1),
+        kind.to_string(),
+        text(&row.law),
+        text(&row.label),
+        text(&row.formulation),
+    ];
+    cells.extend(n[2..].iter().map(|(_, v)| number(*v)));
+    let mut line = cells.join(",");
+    line.push('\n');
+    line
+}
+
+/// One JSON Lines line of a row (non-finite numbers become `null`).
+pub fn jsonl_line(row: &SummaryRow) -> String {
+    let mut line = serde_json::to_string(row).expect("a row serialises");
+    line.push('\n');
+    line
+}
+
+/// Where the rows go as they are computed.
+pub trait RecordSink {
+    /// Takes the rows of consecutive operating points, in order.
+    fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()>;
+}
+
+/// Writes `records.csv` and `records.jsonl` through two writers (files, or buffers in tests).
+pub struct RecordWriter<C: Write, J: Write> {
+    pub csv: C,
+    pub jsonl: J,
+}
+
+impl<C: Write, J: Write> RecordWriter<C, J> {
+    /// Starts both files: the CSV header line (JSON Lines has none).
+    pub fn new(mut csv: C, jsonl: J, with_header: bool) -> std::io::Result<Self> {
+        if with_header {
+            csv.write_all(csv_header().as_bytes())?;
+        }
+        Ok(RecordWriter { csv, jsonl })
+    }
+
+    pub fn finish(mut self) -> std::io::Result<(C, J)> {
+        self.csv.flush()?;
+        self.jsonl.flush()?;
+        Ok((self.csv, self.jsonl))
+    }
+}
+
+impl<C: Write, J: Write> RecordSink for RecordWriter<C, J> {
+    fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
+        for row in rows {
+            self.csv.write_all(csv_line(row).as_bytes())?;
+            self.jsonl.write_all(jsonl_line(row).as_bytes())?;
+        }
+        Ok(())
+    }
+}
+
+/// Drops the rows (a run that only wants the report's summary).
+pub struct NoRecords;
+
+impl RecordSink for NoRecords {
+    fn write_rows(&mut self, _: &[SummaryRow]) -> std::io::Result<()> {
+        Ok(())
+    }
+}

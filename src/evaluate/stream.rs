@@ -1,0 +1,206 @@
+//! The sweep, streamed: the plan's points are evaluated in blocks of [`BLOCK`] (in parallel within
+//! a block), each point's summary rows go to the record sink in sweep order and its tally is folded
+//! in; nothing of a point is kept beyond its block, so memory is bounded whatever the sweep's size
+//! and time grows linearly with it.
+
+use rayon::prelude::*;
+
+use super::dynamics::DynamicsSetup;
+use super::laws::{evaluate_law, LawEvaluation};
+use super::records::{ParameterValue, RecordSink, RowKind, SummaryRow};
+use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
+use super::{case_at, contact_table, state_at, Evaluation, Plan};
+use crate::efficiency::EfficiencyResult;
+use crate::model::Scene;
+
+/// Points evaluated together before their rows are written.
+pub const BLOCK: usize = 1024;
+
+/// Evaluates the plan's range of points, writes their rows to `sink` and returns their tally;
+/// `tick(n)` is called after each block with the number of points it held.
+pub fn evaluate_records(
+    scene: &Scene,
+    eval: &Evaluation,
+    plan: &Plan,
+    sink: &mut dyn RecordSink,
+    tick: &(dyn Fn(usize) + Sync),
+) -> std::io::Result<Tally> {
+    let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
+    let dynamics = DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0)))
+        .filter(|_| scene.analyses.dynamics);
+    let mut tally = Tally::default();
+    let mut start = plan.range.start;
+    while start < plan.range.end {
+        let end = (start + BLOCK).min(plan.range.end);
+        let block: Vec<(Vec<SummaryRow>, Tally)> = (start..end)
+            .into_par_iter()
+            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), k))
+            .collect();
+        for (rows, t) in block {
+            sink.write_rows(&rows)?;
+            tally.absorb(t);
+        }
+        tick(end - start);
+        start = end;
+    }
+    Ok(tally)
+}
+
+fn parameters(law: &LawEvaluation) -> Vec<ParameterValue> {
+    law.parameters
+        .iter()
+        .map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() })
+        .collect()
+}
+
+/// The rows and the tally of point `k`.
+fn point_summary(
+    scene: &Scene,
+    eval: &Evaluation,
+    plan: &Plan,
+    labels: &[String],
+    dynamics: Option<&DynamicsSetup>,
+    k: usize,
+) -> (Vec<SummaryRow>, Tally) {
+    let op = &scene.operating;
+    let state = state_at(op, k);
+    let (ti, si) = (k / plan.speeds, k % plan.speeds);
+    let table = contact_table(eval, &state);
+    let blank = SummaryRow {
+        point: k + 1,
+        torque_index: ti,
+        speed_index: si,
+        pinion_torque: state.pinion_torque,
+        pinion_speed: state.pinion_speed,
+        kind: RowKind::Friction,
+        law_index: None,
+        law: String::new(),
+        label: String::new(),
+        formulation: String::new(),
+        mean_abs_mu: None,
+        mean_efficiency: None,
+        mean_efficiency_error: None,
+        min_efficiency: None,
+        max_efficiency: None,
+        power_loss: None,
+        validity_samples: None,
+        validity_outside: None,
+        spectral_radius: None,
+        dte_peak_to_peak: None,
+        dte_mean: None,
+        dynamic_factor: None,
+        parameters: Vec::new(),
+    };
+    let mut rows = Vec::new();
+    let mut laws = Vec::new();
+    let mut implausible: Vec<Implausible> = Vec::new();
+    if let Some((name, c)) = table
+        .iter()
+        .filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius)
+        .max_by(|a, b| (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius)))
+    {
+        implausible.push(Implausible::HalfWidth {
+            half_width: c.hertz_half_width,
+            limit: HALF_WIDTH_LIMIT * c.reduced_radius,
+            u: c.u,
+            named: name.map(str::to_string),
+        });
+    }
+    if eval.wants_friction {
+        let input = state.pinion_torque * state.pinion_speed;
+        for (i, spec) in scene.friction.iter().enumerate() {
+            let law = evaluate_law(eval, spec, state, &table, false, false);
+            let law_row = SummaryRow {
+                law_index: Some(i),
+                law: law.id.name().to_string(),
+                label: labels[i].clone(),
+                mean_abs_mu: Some(law.mean_abs_mu.value),
+                validity_samples: Some(law.validity.samples),
+                validity_outside: Some(law.validity.outside),
+                parameters: parameters(&law),
+                ..blank.clone()
+            };
+            if law.efficiency.is_empty() {
+                rows.push(law_row.clone());
+            }
+            for e in &law.efficiency {
+                rows.push(efficiency_row(&law_row, e));
+                let f = e.formulation.name().to_string();
+                let bad = |x: f64| !(0.0..=1.0).contains(&x);
+                if bad(e.mean.value) || bad(e.min) || bad(e.max) {
+                    implausible.push(Implausible::Efficiency {
+                        law: law.id.name().into(),
+                        formulation: f.clone(),
+                        mean: e.mean.value,
+                        min: e.min,
+                        max: e.max,
+                    });
+                }
+                if e.power_loss > input {
+                    implausible.push(Implausible::PowerLoss {
+                        law: law.id.name().into(),
+                        formulation: f,
+                        loss: e.power_loss,
+                        input,
+                    });
+                }
+            }
+            laws.push(law_tally(k, &law));
+        }
+    }
+    if let Some(setup) = dynamics {
+        let point = setup.point(k, state);
+        let law = scene.dynamics.as_ref().and_then(|d| d.friction.as_ref());
+        for r in &point.results {
+            let friction = law.filter(|_| r.formulation != crate::dynamics::DynamicFormulation::Base);
+            let resp = r.response.as_ref();
+            rows.push(SummaryRow {
+                kind: RowKind::Dynamics,
+                law: friction.map_or(String::new(), |l| l.law.name().to_string()),
+                label: friction.map_or(String::new(), |l| l.label()),
+                formulation: r.formulation.name().to_string(),
+                spectral_radius: Some(r.spectral_radius),
+                dte_peak_to_peak: resp.map(|x| x.dte_peak_to_peak),
+                dte_mean: resp.map(|x| x.dte_mean.value),
+                dynamic_factor: resp.map(|x| x.dynamic_factor),
+                ..blank.clone()
+            });
+        }
+    }
+    let implausible = implausible
+        .into_iter()
+        .map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what })
+        .collect();
+    let tally = Tally::of_point(k, &rows, plan.kept(k), laws, implausible);
+    (rows, tally)
+}
+
+fn efficiency_row(law_row: &SummaryRow, e: &EfficiencyResult) -> SummaryRow {
+    SummaryRow {
+        kind: RowKind::Efficiency,
+        formulation: e.formulation.name().to_string(),
+        mean_efficiency: Some(e.mean.value),
+        mean_efficiency_error: Some(e.mean.error),
+        min_efficiency: Some(e.min),
+        max_efficiency: Some(e.max),
+        power_loss: Some(e.power_loss),
+        ..law_row.clone()
+    }
+}
+
+fn law_tally(k: usize, law: &LawEvaluation) -> LawTally {
+    LawTally {
+        points: 1,
+        notes: law.notes.clone(),
+        diverges_at_pitch: law.diverges_at_pitch,
+        capped_points: usize::from(law.internal_cap_band.is_some()),
+        widest_cap: law.internal_cap_band.map(|(a, b)| (k, a, b)),
+        flagged_points: usize::from(law.validity.outside > 0),
+        worst: (law.validity.outside > 0).then(|| WorstValidity {
+            point: k,
+            outside: law.validity.outside,
+            samples: law.validity.samples,
+            intervals: law.validity.intervals.iter().map(|(a, b, r)| (*a, *b, r.to_string())).collect(),
+        }),
+    }
+}

@@ -1,0 +1,86 @@
+//! The report folder, written whole or not at all: files go into a hidden temporary folder beside
+//! the target (`.<name>.tmp-<pid>-<n>`), which is renamed into place once complete. Whatever
+//! happens before [`ReportFolder::commit`] (an error, a panic), dropping the folder removes the
+//! temporary one. Concurrent runs writing the same folder all succeed; the last to commit wins
+//! and no temporary or displaced folder is left behind.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+static UNIQUE: AtomicUsize = AtomicUsize::new(0);
+
+/// A name beside `name` in `dir` that no other process or thread uses: `.name.what-pid-n`.
+fn unique(dir: &Path, name: &str, what: &str) -> PathBuf {
+    let n = UNIQUE.fetch_add(1, Ordering::Relaxed);
+    dir.join(format!(".{name}.{what}-{}-{n}", std::process::id()))
+}
+
+/// A report folder being written.
+#[derive(Debug)]
+pub struct ReportFolder {
+    dir: PathBuf,
+    name: String,
+    tmp: PathBuf,
+    committed: bool,
+}
+
+impl ReportFolder {
+    /// Starts `out_dir/name/`, creating `out_dir` if needed. `out_dir` naming a file is an error.
+    pub fn create(out_dir: &Path, name: &str) -> std::io::Result<ReportFolder> {
+        if out_dir.exists() && !out_dir.is_dir() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::AlreadyExists,
+                format!("{} is not a folder (give --out a folder, or a path that does not exist yet)", out_dir.display()),
+            ));
+        }
+        std::fs::create_dir_all(out_dir)?;
+        let tmp = unique(out_dir, name, "tmp");
+        std::fs::create_dir(&tmp)?;
+        Ok(ReportFolder { dir: out_dir.to_path_buf(), name: name.to_string(), tmp, committed: false })
+    }
+
+    /// The path of a file inside the folder being written.
+    pub fn path(&self, file: &str) -> PathBuf {
+        self.tmp.join(file)
+    }
+
+    /// Writes one file of the folder.
+    pub fn write(&self, file: &str, content: &[u8]) -> std::io::Result<()> {
+        std::fs::write(self.path(file), content)
+    }
+
+    /// Renames the finished folder into place, replacing a folder of the same name. Another run may
+    /// put its folder there at the same time: the displaced folder is moved aside under a unique
+    /// name and removed, and the rename is tried again.
+    pub fn commit(mut self) -> std::io::Result<PathBuf> {
+        let target = self.dir.join(&self.name);
+        let mut last = None;
+        for _ in 0..256 {
+            match std::fs::rename(&self.tmp, &target) {
+                Ok(()) => {
+                    self.committed = true;
+                    return Ok(target);
+                }
+                Err(e) if target.exists() => {
+                    last = Some(e);
+                    let old = unique(&self.dir, &self.name, "old");
+                    match std::fs::rename(&target, &old) {
+                        Ok(()) => std::fs::remove_dir_all(&old)?,
+                        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+                        Err(e) => return Err(e),
+                    }
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        Err(last.unwrap_or_else(|| std::io::Error::other("the report folder could not be renamed into place")))
+    }
+}
+
+impl Drop for ReportFolder {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_dir_all(&self.tmp);
+        }
+    }
+}

@@ -1,0 +1,65 @@
+//! report.md: the sweep as a whole — where the record files are and the extremes over every
+//! operating point.
+
+use std::fmt::Write;
+
+use super::table::{fixed, header, row, sig};
+use crate::report::Report;
+
+/// The "Records and extremes over the sweep" section (nothing for a run without records).
+pub fn sweep_summary(out: &mut String, r: &Report) {
+    let Some(rec) = &r.records else { return };
+    let _ = writeln!(out, "## Records and extremes over the sweep\n");
+    let points = |n: usize| format!("{n} operating point{}", if n == 1 { "" } else { "s" });
+    let _ = writeln!(
+        out,
+        "Every operating point × law × formulation has one row in `{}` and `{}`: {} row{} over {}, SI units named in the column headers. {} reported in full above.\n",
+        rec.csv,
+        rec.jsonl,
+        rec.rows,
+        if rec.rows == 1 { "" } else { "s" },
+        points(rec.operating_points),
+        if rec.reported_in_full >= rec.operating_points { "Every point is".to_string() } else { format!("{} of them are", points(rec.reported_in_full)) }
+    );
+    let Some(s) = &r.sweep else { return };
+    if !s.efficiency.is_empty() {
+        let _ = writeln!(
+            out,
+            "Extremes of the mean efficiency and the power loss over all {} operating points (point numbers as in the records):\n",
+            s.operating_points
+        );
+        header(out, &["law", "formulation", "min η̄ %", "at point", "max η̄ %", "at point", "max P_loss W", "at point"]);
+        let point = |p: Option<usize>| p.map_or("—".to_string(), |p| p.to_string());
+        for e in &s.efficiency {
+            row(
+                out,
+                &[
+                    format!("`{}`", e.label),
+                    e.formulation.clone(),
+                    e.min_efficiency.as_ref().map_or("—".into(), |v| fixed(100.0 * v.value.0, 4)),
+                    point(e.min_efficiency.as_ref().map(|v| v.point)),
+                    e.max_efficiency.as_ref().map_or("—".into(), |v| fixed(100.0 * v.value.0, 4)),
+                    point(e.max_efficiency.as_ref().map(|v| v.point)),
+                    e.max_power_loss.as_ref().map_or("—".into(), |v| fixed(v.value.si(), 2)),
+                    point(e.max_power_loss.as_ref().map(|v| v.point)),
+                ],
+            );
+        }
+        let _ = writeln!(out);
+    }
+    if !s.dynamics.is_empty() {
+        header(out, &["dynamic formulation", "unstable points (ρ > 1)", "max spectral radius ρ", "at point"]);
+        for d in &s.dynamics {
+            row(
+                out,
+                &[
+                    d.formulation.clone(),
+                    format!("{} of {}", d.unstable_points, s.operating_points),
+                    d.max_spectral_radius.as_ref().map_or("—".into(), |v| sig(v.value.0)),
+                    d.max_spectral_radius.as_ref().map_or("—".into(), |v| v.point.to_string()),
+                ],
+            );
+        }
+        let _ = writeln!(out);
+    }
+}

@@ -1,0 +1,144 @@
+//! Sharded runs: `gearloss run SCENE --shard K/N` evaluates the K-th contiguous block of the sweep's
+//! operating points ([`crate::evaluate::Shard::range`]) and writes its record files and a manifest
+//! (`shard.json`: the scene's text, the shard, and the tally of its points); `gearloss merge`
+//! checks that the folders are the N shards of one scene, concatenates their record files in
+//! shard order (byte for byte those of a single run) and folds their tallies in the same order
+//! (exactly a single run's tally), then reports as a single run does.
+
+use std::fs::File;
+use std::io::{BufRead, BufReader, BufWriter, Write};
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+
+use crate::evaluate::{Plan, Shard, Tally};
+use crate::folder::ReportFolder;
+use crate::report::sweep::{RECORDS_CSV, RECORDS_JSONL};
+use crate::{Progress, RecordWriter, RunError};
+
+/// The manifest of a shard folder.
+pub const MANIFEST: &str = "shard.json";
+/// The manifest's format, checked by `merge`.
+pub const FORMAT: &str = "gearloss-shard-1";
+
+/// Opens the record files of a folder being written.
+pub fn record_files(folder: &ReportFolder) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
+    let csv = BufWriter::new(File::create(folder.path(RECORDS_CSV))?);
+    let jsonl = BufWriter::new(File::create(folder.path(RECORDS_JSONL))?);
+    RecordWriter::new(csv, jsonl, true)
+}
+
+/// What a shard folder says of itself.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Manifest {
+    pub format: String,
+    pub gearloss_version: String,
+    /// The scene as given to `run`, its path (files it names are read relative to it) and text.
+    pub source_name: String,
+    pub source: String,
+    pub shard: Shard,
+    /// Operating points of the whole sweep, and this shard's [from, to).
+    pub operating_points: usize,
+    pub range: (usize, usize),
+    pub tally: Tally,
+}
+
+impl Manifest {
+    pub fn new(source_name: &str, source: &str, shard: Shard, plan: &Plan, tally: Tally) -> Manifest {
+        Manifest {
+            format: FORMAT.into(),
+            gearloss_version: env!("CARGO_PKG_VERSION").into(),
+            source_name: source_name.into(),
+            source: source.into(),
+            shard,
+            operating_points: plan.count(),
+            range: (plan.range.start, plan.range.end),
+            tally,
+        }
+    }
+
+    pub fn to_json(&self) -> Vec<u8> {
+        let mut v = serde_json::to_vec_pretty(self).expect("a manifest serialises");
+        v.push(b'\n');
+        v
+    }
+}
+
+/// The N shards of one scene, in shard order, with their tallies folded.
+#[derive(Debug)]
+pub struct ShardSet {
+    pub source_name: String,
+    pub source: String,
+    pub folders: Vec<PathBuf>,
+    pub tally: Tally,
+}
+
+impl ShardSet {
+    /// Reads and checks the manifests: one scene, one shard count, every shard exactly once.
+    pub fn read(folders: &[PathBuf]) -> Result<ShardSet, RunError> {
+        let bad = |m: String| RunError::Shards(m);
+        let mut manifests = Vec::new();
+        for dir in folders {
+            let path = dir.join(MANIFEST);
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| bad(format!("{}: cannot read the shard manifest: {e} (is this a folder written by `gearloss run --shard K/N`?)", path.display())))?;
+            let m: Manifest = serde_json::from_str(&text)
+                .map_err(|e| bad(format!("{}: not a gearloss shard manifest: {e}", path.display())))?;
+            if m.format != FORMAT {
+                return Err(bad(format!("{}: shard format {} is not {FORMAT}", path.display(), m.format)));
+            }
+            manifests.push((dir.clone(), m));
+        }
+        let Some((_, first)) = manifests.first() else {
+            return Err(bad("no shard folders given".into()));
+        };
+        let (count, source, source_name) = (first.shard.count, first.source.clone(), first.source_name.clone());
+        for (dir, m) in &manifests {
+            if m.source != source || m.source_name != source_name {
+                return Err(bad(format!("{} holds a shard of another scene than {source_name}", dir.display())));
+            }
+            if m.shard.count != count {
+                return Err(bad(format!("{} is a shard of {}, the others of {count}", dir.display(), m.shard.count)));
+            }
+        }
+        manifests.sort_by_key(|(_, m)| m.shard.index);
+        let have: Vec<usize> = manifests.iter().map(|(_, m)| m.shard.index).collect();
+        if have != (1..=count).collect::<Vec<_>>() {
+            let missing: Vec<String> =
+                (1..=count).filter(|k| !have.contains(k)).map(|k| format!("{k}/{count}")).collect();
+            return Err(bad(format!(
+                "merge needs each of the {count} shards exactly once; got {:?}{}",
+                have,
+                if missing.is_empty() { String::new() } else { format!(", missing {}", missing.join(", ")) }
+            )));
+        }
+        let mut tally = Tally::default();
+        let mut dirs = Vec::new();
+        for (dir, m) in manifests {
+            tally.absorb(m.tally);
+            dirs.push(dir);
+        }
+        Ok(ShardSet { source_name, source, folders: dirs, tally })
+    }
+
+    /// Writes the merged record files into `folder`: each file of each shard in shard order, the CSV
+    /// header once.
+    pub fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<()> {
+        for (file, header) in [(RECORDS_CSV, true), (RECORDS_JSONL, false)] {
+            let mut out = BufWriter::new(File::create(folder.path(file))?);
+            for (k, dir) in self.folders.iter().enumerate() {
+                let mut input = BufReader::new(File::open(dir.join(file))?);
+                if header && k > 0 {
+                    let mut skipped = Vec::new();
+                    input.read_until(b'\n', &mut skipped)?;
+                }
+                std::io::copy(&mut input, &mut out)?;
+                if file == RECORDS_CSV {
+                    progress.advance(1);
+                }
+            }
+            out.flush()?;
+        }
+        Ok(())
+    }
+}
