@@ -19,7 +19,7 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
         rec.rows,
         if rec.rows == 1 { "" } else { "s" },
         points(rec.operating_points),
-        if rec.reported_in_full >= rec.operating_points { "Every point is".to_string() } else { format!("{} of them are", points(rec.reported_in_full)) }
+        if rec.reported_in_full >= rec.operating_points { "Every point is".to_string() } else { format!("{} of them are", rec.reported_in_full) }
     );
     let Some(s) = &r.sweep else { return };
     if !s.efficiency.is_empty() {

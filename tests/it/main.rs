@@ -9,6 +9,7 @@ mod fuzz;
 mod geometry;
 mod properties;
 mod specs;
+mod sweeps;
 mod units;
 
 use std::path::{Path, PathBuf};

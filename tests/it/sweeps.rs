@@ -1,0 +1,177 @@
+//! Sweeps at scale: the records stream in sweep order, the report stays bounded, shards merge into
+//! a single run byte for byte, and concurrent runs into one folder all succeed.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use gearloss::evaluate::plan::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
+use gearloss::{Plan, Shard};
+
+fn gearloss() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_gearloss"))
+}
+
+fn temp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("gearloss-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn run(args: &[&str], out: &Path) -> std::process::Output {
+    let o = gearloss().args(args).arg("--out").arg(out).current_dir(crate::root()).output().unwrap();
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    o
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into()).collect();
+    v.sort();
+    v
+}
+
+/// Shards cover every point exactly once, in order, for any N (including N above the point count).
+#[test]
+fn shards_partition_the_points_in_order() {
+    for n in [1, 7, 100, 1000] {
+        for count in [1, 2, 3, 4, 7, 16, 2000] {
+            let mut next = 0;
+            for index in 1..=count {
+                let r = Shard { index, count }.range(n);
+                assert_eq!(r.start, next, "n {n}, shard {index}/{count}");
+                next = r.end;
+            }
+            assert_eq!(next, n);
+        }
+    }
+}
+
+/// The report keeps a bounded set of rows whatever the sweep: at most 2 × 6 × PLOTTED_VALUES + MAP_VALUES²
+/// + the detail points, independent of the number of points.
+#[test]
+fn the_kept_points_are_bounded() {
+    let scene = crate::scene(&crate::root().join("tests/specs/ok/large_sweep.gear"));
+    for (nt, ns) in [(10, 10), (1000, 1000), (3000, 10), (1, 100_000)] {
+        let mut op = scene.operating.clone();
+        op.pinion_torque.values = vec![op.pinion_torque.values[0]; nt];
+        op.pinion_torque.written_values = vec![1.0; nt];
+        op.pinion_speed.values = vec![op.pinion_speed.values[0]; ns];
+        op.pinion_speed.written_values = vec![1.0; ns];
+        let plan = Plan::new(&op, None, &[]);
+        let kept = (0..nt * ns).filter(|k| plan.kept(*k)).count();
+        let bound = 2 * 6 * PLOTTED_VALUES + MAP_VALUES * MAP_VALUES + plan.detail.len();
+        if nt * ns <= ALL_IN_DETAIL {
+            assert_eq!(kept, nt * ns);
+        } else {
+            assert!(kept <= bound, "{nt} × {ns}: {kept} kept, bound {bound}");
+            assert!(plan.detail.len() <= 9, "{nt} × {ns}: {} detail points", plan.detail.len());
+        }
+    }
+    assert_eq!(evenly(10, 3), vec![0, 4, 9]);
+    assert_eq!(evenly(2, 6), vec![0, 1]);
+}
+
+/// A large sweep's report: 9 default detail points plus the two the scene names; every point in the
+/// records, in sweep order, one row per point × law × formulation.
+#[test]
+fn a_large_sweep_reports_a_bounded_set_and_records_every_point() {
+    let path = crate::root().join("tests/specs/ok/large_sweep.gear");
+    let source = std::fs::read_to_string(&path).unwrap();
+    let r = gearloss::run_to_files("large_sweep.gear", &source).unwrap();
+    let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap().1;
+    let csv: Vec<&str> = file("records.csv").lines().collect();
+    assert_eq!(csv.len(), 1 + 144 * 2);
+    let points: Vec<usize> = csv[1..].iter().map(|l| l.split(',').next().unwrap().parse().unwrap()).collect();
+    assert!(points.windows(2).all(|w| w[0] <= w[1]), "rows in sweep order");
+    assert_eq!((points[0], points[points.len() - 1]), (1, 144));
+    let jsonl: Vec<&str> = file("records.jsonl").lines().collect();
+    assert_eq!(jsonl.len(), 144 * 2);
+    let report: serde_json::Value = serde_json::from_str(file("report.json")).unwrap();
+    assert_eq!(report["operating_points"].as_array().unwrap().len(), 9 + 2);
+    assert_eq!(report["records"]["rows"], 288);
+    assert!(r.files.iter().any(|(f, _)| f == "map_efficiency.svg"));
+    // The extremes over the sweep are those of the records (exact over the evaluated points).
+    let rows: Vec<serde_json::Value> = jsonl.iter().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let bk: Vec<&serde_json::Value> = rows.iter().filter(|x| x["law"] == "benedict_kelley").collect();
+    let (min_at, min) = bk
+        .iter()
+        .map(|x| (x["point"].as_u64().unwrap(), x["mean_efficiency"].as_f64().unwrap()))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap();
+    let e = report["sweep"]["efficiency"].as_array().unwrap().iter().find(|e| e["label"] == "benedict_kelley").unwrap();
+    assert_eq!(e["min_efficiency"]["point"].as_u64().unwrap(), min_at);
+    assert!((e["min_efficiency"]["value"].as_f64().unwrap() - min).abs() < 1e-9);
+}
+
+/// `run --shard K/4` four times, then `merge`: the record files equal a single run's byte for byte,
+/// and so do report.md and report.json.
+#[test]
+fn four_shards_merged_equal_one_run() {
+    let out = temp("shards");
+    let scene = "tests/specs/ok/large_sweep.gear";
+    run(&["run", scene], &out.join("single"));
+    let mut shards = Vec::new();
+    for k in 1..=4 {
+        let o = run(&["run", scene, "--shard", &format!("{k}/4")], &out.join("shards"));
+        assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("large_sweep.shard-{k}-of-4")));
+        shards.push(out.join("shards").join(format!("large_sweep.shard-{k}-of-4")));
+    }
+    // Merge in any order: the manifests say which shard is which.
+    shards.reverse();
+    let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("merged")).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let single = out.join("single/large_sweep");
+    let merged = out.join("merged/large_sweep");
+    assert_eq!(names(&single), names(&merged));
+    for f in names(&single) {
+        assert!(std::fs::read(single.join(&f)).unwrap() == std::fs::read(merged.join(&f)).unwrap(), "{f} differs");
+    }
+    // A missing shard is an error that names it.
+    let o = gearloss().arg("merge").args(&shards[1..]).arg("--out").arg(out.join("bad")).output().unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("missing 4/4"), "{}", String::from_utf8_lossy(&o.stderr));
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// Many runs writing the same folder at once all succeed and leave only the final folder.
+#[test]
+fn concurrent_runs_into_one_folder_all_succeed() {
+    let out = temp("concurrent");
+    let children: Vec<std::process::Child> = (0..24)
+        .map(|_| {
+            gearloss()
+                .args(["run", "tests/specs/ok/minimal.gear", "--out"])
+                .arg(&out)
+                .current_dir(crate::root())
+                .stdout(std::process::Stdio::null())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .unwrap()
+        })
+        .collect();
+    for c in children {
+        let o = c.wait_with_output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    assert_eq!(names(&out), vec!["minimal".to_string()]);
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// `--out` naming a file is "not a folder", exit 3, nothing written.
+#[test]
+fn out_naming_a_file_is_not_a_folder() {
+    let dir = temp("out-file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("a-file");
+    std::fs::write(&file, "x").unwrap();
+    let o = gearloss()
+        .args(["run", "tests/specs/ok/minimal.gear", "--out"])
+        .arg(&file)
+        .current_dir(crate::root())
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(3));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("is not a folder"), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(names(&dir), vec!["a-file".to_string()]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
