@@ -2,6 +2,19 @@
 //! errors, 2 usage errors (clap), 3 files could not be read or written.
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
+/// Print a line to stdout or stderr, ignoring a closed pipe (`gearloss check x | head -1` must not
+/// panic as `println!` would).
+macro_rules! say {
+    (out, $($t:tt)*) => {{ use std::io::Write as _; let _ = write!(std::io::stdout().lock(), $($t)*); }};
+    (err, $($t:tt)*) => {{ use std::io::Write as _; let _ = write!(std::io::stderr().lock(), $($t)*); }};
+}
+macro_rules! outln {
+    ($($t:tt)*) => {{ use std::io::Write as _; let _ = writeln!(std::io::stdout().lock(), $($t)*); }};
+}
+macro_rules! errln {
+    ($($t:tt)*) => {{ use std::io::Write as _; let _ = writeln!(std::io::stderr().lock(), $($t)*); }};
+}
+
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -64,7 +77,7 @@ pub fn main() -> ExitCode {
         Command::Merge { shards, out } => merge(&shards, &out),
         Command::Check { scene } => check(&scene),
         Command::Units => {
-            print!("{}", units_table());
+            say!(out, "{}", units_table());
             ExitCode::SUCCESS
         }
     }
@@ -72,13 +85,13 @@ pub fn main() -> ExitCode {
 
 fn read(path: &Path) -> Result<String, ExitCode> {
     gearloss::scene::source::read_text(path, gearloss::scene::source::MAX_SCENE_BYTES).map_err(|e| {
-        eprintln!("error: cannot read {}: {e}", path.display());
+        errln!("error: cannot read {}: {e}", path.display());
         ExitCode::from(EXIT_IO)
     })
 }
 
 fn report_errors(errors: &gearloss::SceneErrors) -> ExitCode {
-    eprint!("{}", errors.render(std::io::stderr().is_terminal()));
+    say!(err, "{}", errors.render(std::io::stderr().is_terminal()));
     ExitCode::from(EXIT_SCENE)
 }
 
@@ -90,7 +103,7 @@ fn check(path: &Path) -> ExitCode {
     match gearloss::check(&path.display().to_string(), &source) {
         Ok(scene) => {
             let n = scene.operating.count();
-            println!(
+            outln!(
                 "{}: scene \"{}\" is valid ({} operating point{})",
                 path.display(),
                 scene.title,
@@ -144,19 +157,19 @@ impl Drop for Bar {
 fn finished(result: Result<(PathBuf, Vec<String>), gearloss::RunError>) -> ExitCode {
     match result {
         Ok((dir, files)) => {
-            println!("wrote {}", dir.display());
+            outln!("wrote {}", dir.display());
             for file in files {
-                println!("  {file}");
+                outln!("  {file}");
             }
             ExitCode::SUCCESS
         }
         Err(gearloss::RunError::Scene(e)) => report_errors(&e),
         Err(e @ gearloss::RunError::Shards(_)) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             ExitCode::from(EXIT_SCENE)
         }
         Err(e) => {
-            eprintln!("error: {e}");
+            errln!("error: {e}");
             ExitCode::from(EXIT_IO)
         }
     }

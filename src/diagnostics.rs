@@ -77,13 +77,30 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     pub fn new(kind: DiagnosticKind, span: Span, reason: impl Into<String>) -> Self {
-        Diagnostic { kind, span, reason: reason.into(), hints: Vec::new() }
+        Diagnostic { kind, span, reason: one_line(reason.into()), hints: Vec::new() }
     }
 
     pub fn hint(mut self, hint: impl Into<String>) -> Self {
-        self.hints.push(hint.into());
+        self.hints.push(one_line(hint.into()));
         self
     }
+}
+
+/// A message on one line: line ends and other control characters (from the scene's text quoted in
+/// a message) are written as escapes, so that a message never breaks a terminal line or a log.
+pub fn one_line(s: String) -> String {
+    if !s.chars().any(char::is_control) {
+        return s;
+    }
+    s.chars()
+        .map(|c| match c {
+            '\n' => "\\n".to_string(),
+            '\r' => "\\r".to_string(),
+            '\t' => "\\t".to_string(),
+            c if c.is_control() => format!("\\u{{{:04X}}}", c as u32),
+            c => c.to_string(),
+        })
+        .collect()
 }
 
 /// All problems found in one scene file, with its source for rendering.

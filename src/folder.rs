@@ -30,7 +30,10 @@ impl ReportFolder {
         if out_dir.exists() && !out_dir.is_dir() {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::AlreadyExists,
-                format!("{} is not a folder (give --out a folder, or a path that does not exist yet)", out_dir.display()),
+                format!(
+                    "{} is not a folder (give --out a folder, or a path that does not exist yet)",
+                    out_dir.display()
+                ),
             ));
         }
         std::fs::create_dir_all(out_dir)?;

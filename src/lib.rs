@@ -149,12 +149,7 @@ pub fn has_records(scene: &Scene) -> bool {
 }
 
 /// Stages 3 to 5 after the sweep: details, report and render, with the record files (given) added.
-fn finish(
-    scene: &Scene,
-    plan: &Plan,
-    tally: &Tally,
-    progress: &dyn Progress,
-) -> Result<RenderedReport, RunError> {
+fn finish(scene: &Scene, plan: &Plan, tally: &Tally, progress: &dyn Progress) -> Result<RenderedReport, RunError> {
     let eval = evaluate_details(scene, plan, progress);
     progress.stage("report", 1);
     let report = report(scene, &eval, tally, plan);
@@ -227,11 +222,16 @@ pub fn run_into(
 
 /// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
 /// (record files concatenated in shard order, tallies folded in shard order).
-pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -> Result<(PathBuf, Vec<String>), RunError> {
+pub fn merge_into(
+    shards: &[PathBuf],
+    out_dir: &Path,
+    progress: &dyn Progress,
+) -> Result<(PathBuf, Vec<String>), RunError> {
     let set = shard::ShardSet::read(shards)?;
     let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let folder = ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
     let mut files = Vec::new();
     if has_records(&scene) {
         progress.stage("merge", set.folders.len() as u64);

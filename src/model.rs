@@ -227,4 +227,6 @@ pub struct Analyses {
     pub numerics: bool,
     /// Where `dynamics`, `stability_map` or `numerics` was asked for.
     pub dynamics_span: Option<Span>,
+    /// Where `efficiency` or `friction_along_loa` was asked for (they need friction laws).
+    pub friction_span: Option<Span>,
 }

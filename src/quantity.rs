@@ -14,6 +14,10 @@ pub struct Dimension {
     pub angle: i8,
 }
 
+/// Largest power of a base dimension a unit may carry (m^12 is far beyond any physical quantity;
+/// the bound keeps every exponent exact, never saturated).
+pub const MAX_EXPONENT: i32 = 24;
+
 const fn dim(length: i8, mass: i8, time: i8, temperature: i8, angle: i8) -> Dimension {
     Dimension { length, mass, time, temperature, angle }
 }
@@ -40,20 +44,30 @@ impl Dimension {
     pub const VELOCITY: Dimension = dim(1, 0, -1, 0, 0);
     pub const FREQUENCY: Dimension = dim(0, 0, -1, 0, 0);
 
+    /// This dimension to the power `e`; None when an exponent would leave ±[`MAX_EXPONENT`].
+    pub fn checked_pow(self, e: i32) -> Option<Dimension> {
+        let p = |x: i8| i32::from(x).checked_mul(e).filter(|v| v.abs() <= MAX_EXPONENT).map(|v| v as i8);
+        Some(dim(p(self.length)?, p(self.mass)?, p(self.time)?, p(self.temperature)?, p(self.angle)?))
+    }
+
+    /// The product of two dimensions; None when an exponent would leave ±[`MAX_EXPONENT`].
+    pub fn checked_times(self, o: Dimension) -> Option<Dimension> {
+        let a = |x: i8, y: i8| Some(x + y).filter(|v| v.abs() <= MAX_EXPONENT as i8);
+        Some(dim(
+            a(self.length, o.length)?,
+            a(self.mass, o.mass)?,
+            a(self.time, o.time)?,
+            a(self.temperature, o.temperature)?,
+            a(self.angle, o.angle)?,
+        ))
+    }
+
     pub fn pow(self, e: i32) -> Dimension {
-        let e = e.clamp(-127, 127) as i8;
-        let p = |x: i8| x.saturating_mul(e);
-        dim(p(self.length), p(self.mass), p(self.time), p(self.temperature), p(self.angle))
+        self.checked_pow(e).expect("unit exponents stay within ±MAX_EXPONENT")
     }
 
     pub fn times(self, o: Dimension) -> Dimension {
-        dim(
-            self.length.saturating_add(o.length),
-            self.mass.saturating_add(o.mass),
-            self.time.saturating_add(o.time),
-            self.temperature.saturating_add(o.temperature),
-            self.angle.saturating_add(o.angle),
-        )
+        self.checked_times(o).expect("unit exponents stay within ±MAX_EXPONENT")
     }
 
     /// What a gear engineer calls a quantity of this dimension.

@@ -80,8 +80,12 @@ impl ShardSet {
         let mut manifests = Vec::new();
         for dir in folders {
             let path = dir.join(MANIFEST);
-            let text = std::fs::read_to_string(&path)
-                .map_err(|e| bad(format!("{}: cannot read the shard manifest: {e} (is this a folder written by `gearloss run --shard K/N`?)", path.display())))?;
+            let text = std::fs::read_to_string(&path).map_err(|e| {
+                bad(format!(
+                    "{}: cannot read the shard manifest: {e} (is this a folder written by `gearloss run --shard K/N`?)",
+                    path.display()
+                ))
+            })?;
             let m: Manifest = serde_json::from_str(&text)
                 .map_err(|e| bad(format!("{}: not a gearloss shard manifest: {e}", path.display())))?;
             if m.format != FORMAT {

@@ -27,10 +27,10 @@ pub use cases::{
     case_at, cases, cycle_times, pick, state_at, table_positions, Case, ContactCurves, CURVE_SAMPLES, MAX_CURVES,
     TABLE_INTERVALS,
 };
+pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 pub use plan::{Plan, Shard};
 pub use records::{RecordSink, SummaryRow};
 pub use tally::Tally;
-pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 
 /// Everything computed for one scene.
 #[derive(Debug, Clone)]

@@ -26,8 +26,8 @@ pub fn evaluate_records(
     tick: &(dyn Fn(usize) + Sync),
 ) -> std::io::Result<Tally> {
     let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
-    let dynamics = DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0)))
-        .filter(|_| scene.analyses.dynamics);
+    let dynamics =
+        DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
     let mut tally = Tally::default();
     let mut start = plan.range.start;
     while start < plan.range.end {
@@ -47,10 +47,7 @@ pub fn evaluate_records(
 }
 
 fn parameters(law: &LawEvaluation) -> Vec<ParameterValue> {
-    law.parameters
-        .iter()
-        .map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() })
-        .collect()
+    law.parameters.iter().map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() }).collect()
 }
 
 /// The rows and the tally of point `k`.
@@ -94,10 +91,10 @@ fn point_summary(
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
-    if let Some((name, c)) = table
-        .iter()
-        .filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius)
-        .max_by(|a, b| (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius)))
+    if let Some((name, c)) =
+        table.iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
+            (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
+        })
     {
         implausible.push(Implausible::HalfWidth {
             half_width: c.hertz_half_width,
@@ -167,10 +164,8 @@ fn point_summary(
             });
         }
     }
-    let implausible = implausible
-        .into_iter()
-        .map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what })
-        .collect();
+    let implausible =
+        implausible.into_iter().map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what }).collect();
     let tally = Tally::of_point(k, &rows, plan.kept(k), laws, implausible);
     (rows, tally)
 }

@@ -120,8 +120,11 @@ pub fn sweep(out: &mut String, r: &Report) {
     // A large sweep lists the points reported in full; the record files have every point.
     let full = r.records.as_ref().is_none_or(|x| x.reported_in_full >= x.operating_points);
     if !full {
-        let _ = writeln!(out, "At the operating points reported in full (every point: `records.csv`):
-");
+        let _ = writeln!(
+            out,
+            "At the operating points reported in full (every point: `records.csv`):
+"
+        );
     }
     header(out, &["T_p N·m", &speed, "law", "formulation", "η̄ %", "P_loss W"]);
     let shown = |case: usize| full || r.operating_points.iter().any(|o| o.index == case);

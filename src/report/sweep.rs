@@ -61,7 +61,7 @@ pub const RECORDS_CSV: &str = "records.csv";
 pub const RECORDS_JSONL: &str = "records.jsonl";
 
 pub fn records_report(tally: &Tally, plan: &Plan) -> Option<RecordsReport> {
-    (tally.rows > 0).then(|| RecordsReport {
+    (tally.rows > 0).then_some(RecordsReport {
         csv: RECORDS_CSV,
         jsonl: RECORDS_JSONL,
         rows: tally.rows,

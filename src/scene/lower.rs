@@ -104,6 +104,18 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         }
     }
 
+    // (A law that failed to lower has its own error; this one is for a scene that lists none.)
+    let lists_laws = singles.get("friction").is_some_and(|b| !b.items.is_empty());
+    if let (Some(span), false) = (analyses.friction_span, lists_laws) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                span,
+                "`efficiency` and `friction_along_loa` need friction laws, and the scene lists none",
+            )
+            .hint("add a block such as `friction { coulomb(mu = 0.05) }` (README lists the laws)"),
+        );
+    }
     if let Some(g) = &gears {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
@@ -213,7 +225,10 @@ fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Opti
         ))
     };
     if numbers.len() > MAX_DETAIL_POINTS {
-        errors.push(bad(format!("`detail_points` lists {} points, above the limit of {MAX_DETAIL_POINTS}", numbers.len())));
+        errors.push(bad(format!(
+            "`detail_points` lists {} points, above the limit of {MAX_DETAIL_POINTS}",
+            numbers.len()
+        )));
         return None;
     }
     match numbers.iter().find(|x| !(x.fract() == 0.0 && **x >= 1.0 && **x <= count as f64)) {
@@ -256,6 +271,16 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                                 }
                             }
                             formulations.dedup();
+                            if items.is_empty() {
+                                errors.push(
+                                    Diagnostic::new(
+                                        DiagnosticKind::OutOfRange,
+                                        value.span,
+                                        "`formulations` is an empty list: there is nothing to compute",
+                                    )
+                                    .hint("name at least one: `formulations = [external, internal]`, or leave the argument out for both"),
+                                );
+                            }
                         }
                         _ => errors.push(
                             Diagnostic::new(
@@ -268,6 +293,7 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                     }
                 }
                 a.efficiency = Some(formulations);
+                a.friction_span = Some(call.span);
             }
             "stability_map" => {
                 a.stability_map = super::lower_dynamics::lower_stability_map(call, errors);
@@ -286,7 +312,10 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                         a.numerics = true;
                         a.dynamics_span = Some(call.span);
                     }
-                    "friction_along_loa" => a.friction_along_loa = true,
+                    "friction_along_loa" => {
+                        a.friction_along_loa = true;
+                        a.friction_span = Some(call.span);
+                    }
                     "film" => {
                         a.film = true;
                         a.film_span = Some(call.span);

@@ -3,11 +3,13 @@
 pub mod ast;
 pub mod fields;
 pub mod grammar;
+pub mod limits;
 pub mod lower;
 pub mod lower_dynamics;
 pub mod lower_friction;
 pub mod lower_gears;
 pub mod parse;
+pub mod screen;
 pub mod source;
 pub mod sweeps;
 pub mod syntax_errors;

@@ -15,6 +15,10 @@ pub use super::syntax_errors::describe_rule;
 
 /// Parses a whole scene file.
 pub fn parse_scene_text(source: &str) -> Result<SceneAst, Vec<Diagnostic>> {
+    let screened = super::screen::screen(source);
+    if !screened.is_empty() {
+        return Err(screened);
+    }
     let mut pairs = GearParser::parse(Rule::file, source).map_err(|e| vec![syntax_error(source, e)])?;
     let file = pairs.next().expect("pest returns the file rule on success");
     let mut errors = Vec::new();

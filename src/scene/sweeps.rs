@@ -33,6 +33,18 @@ pub(crate) fn sweep_values(
                     }
                 }
             }
+            if numbers.len() > MAX_SWEEP_LENGTH {
+                // The opening bracket: a span over the whole list would print every line of it.
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        Span::new(value.span.start, value.span.start + 1),
+                        format!("`{key}` lists {} values, above the limit of {MAX_SWEEP_LENGTH}", numbers.len()),
+                    )
+                    .hint("a sweep holds at most that many values; split the study into several scenes or use shards"),
+                );
+                return None;
+            }
             if numbers.is_empty() {
                 errors.push(
                     Diagnostic::new(DiagnosticKind::OutOfRange, value.span, format!("`{key}` is an empty list"))
@@ -60,7 +72,11 @@ pub(crate) fn sweep_values(
     let mut written = Vec::with_capacity(numbers.len());
     for (x, span) in numbers {
         let x = finite(key, x, span, errors)?;
-        si.push(finite(key, scale.to_si(x), span, errors)?);
+        let v = finite(key, scale.to_si(x), span, errors)?;
+        if !super::limits::plausible(key, v, span, errors) {
+            return None;
+        }
+        si.push(v);
         written.push(x);
     }
     let unit_text = unit.as_ref().map_or(String::new(), |u| u.text.clone());

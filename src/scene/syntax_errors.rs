@@ -37,7 +37,9 @@ pub(super) fn syntax_error(source: &str, error: pest::error::Error<Rule>) -> Dia
 }
 
 fn syntax_hint(expected: &[Rule], found: &str) -> &'static str {
-    if expected.contains(&Rule::kw_scene) {
+    if found == "," && !expected.contains(&Rule::rbracket) && !expected.contains(&Rule::rparen) {
+        "items are separated by spaces or line ends, not commas (commas separate the values of a `[...]` list and the arguments of a call)"
+    } else if expected.contains(&Rule::kw_scene) {
         "a .gear file holds one `scene \"name\" { ... }`"
     } else if expected.contains(&Rule::rbrace) && found.is_empty() {
         "every `{` needs a closing `}`; the file ended inside a block"

@@ -151,8 +151,19 @@ impl Scale {
 /// Why a unit expression could not be evaluated: the index of the offending factor.
 #[derive(Debug, Clone, PartialEq)]
 pub enum UnitError {
-    Unknown { index: usize, name: String, suggestion: Option<&'static str> },
-    OffsetInCompound { index: usize, name: String },
+    Unknown {
+        index: usize,
+        name: String,
+        suggestion: Option<&'static str>,
+    },
+    OffsetInCompound {
+        index: usize,
+        name: String,
+    },
+    /// An exponent of a base dimension leaves ±[`crate::quantity::MAX_EXPONENT`] at this factor.
+    ExponentOverflow {
+        index: usize,
+    },
 }
 
 impl fmt::Display for UnitError {
@@ -162,6 +173,11 @@ impl fmt::Display for UnitError {
             UnitError::OffsetInCompound { name, .. } => {
                 write!(f, "`{name}` is an absolute temperature and cannot be part of a compound unit")
             }
+            UnitError::ExponentOverflow { .. } => write!(
+                f,
+                "the unit's powers overflow: an exponent of a base unit exceeds ±{}",
+                crate::quantity::MAX_EXPONENT
+            ),
         }
     }
 }
@@ -183,7 +199,11 @@ pub fn evaluate<'a>(factors: impl IntoIterator<Item = (&'a str, i32)>) -> Result
             scale.offset = def.offset;
         }
         scale.factor *= def.factor.powi(*exponent);
-        scale.dimension = scale.dimension.times(def.dimension.pow(*exponent));
+        scale.dimension = def
+            .dimension
+            .checked_pow(*exponent)
+            .and_then(|d| scale.dimension.checked_times(d))
+            .ok_or(UnitError::ExponentOverflow { index })?;
     }
     Ok(scale)
 }

@@ -34,10 +34,15 @@ pub fn checked_scale(
                     UnitError::OffsetInCompound { index, .. } => {
                         (*index, "write the temperature on its own, e.g. `90 degC`".into())
                     }
+                    UnitError::ExponentOverflow { index } => {
+                        (*index, "no physical quantity needs such powers: check the unit for a repeated factor".into())
+                    }
                 };
                 let kind = match e {
                     UnitError::Unknown { .. } => DiagnosticKind::UnknownUnit,
-                    UnitError::OffsetInCompound { .. } => DiagnosticKind::WrongDimension,
+                    UnitError::OffsetInCompound { .. } | UnitError::ExponentOverflow { .. } => {
+                        DiagnosticKind::WrongDimension
+                    }
                 };
                 errors.push(Diagnostic::new(kind, u.factors[index].1, e.to_string()).hint(hint));
                 return None;
@@ -67,9 +72,14 @@ pub fn finite(key: &str, x: f64, span: Span, errors: &mut Vec<Diagnostic>) -> Op
     if x.is_finite() {
         Some(x)
     } else {
+        let reason = if x.is_nan() {
+            format!("`{key}` is NaN: not a number")
+        } else {
+            format!("`{key}` is infinite: not a finite number")
+        };
         errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, span, format!("`{key}` is not a finite number"))
-                .hint("numbers must lie within ±1.7e308"),
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, reason)
+                .hint("give a finite number (within ±1.7e308, and within the quantity's plausible range)"),
         );
         None
     }
@@ -82,6 +92,9 @@ pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Di
             let n = finite(key, *number, value.span, errors)?;
             let scale = checked_scale(key, unit.as_ref(), expected, value.span, errors)?;
             let si = finite(key, scale.to_si(n), value.span, errors)?;
+            if !super::limits::plausible(key, si, value.span, errors) {
+                return None;
+            }
             let written = match unit {
                 Some(u) => format!("{} {}", format_number(n), u.text),
                 None => format_number(n),

@@ -1,5 +1,6 @@
 //! The binary: exit codes, atomic report folders, diagnostics on stderr.
 
+use std::path::Path;
 use std::process::Command;
 
 fn gearloss() -> Command {
@@ -60,4 +61,35 @@ fn check_and_units_succeed() {
     assert!(o.status.success());
     let table = String::from_utf8_lossy(&o.stdout);
     assert!(table.contains("reyn") && table.contains("lbf*s/in^2"), "{table}");
+}
+
+/// Files are capped before they are read: a scene above 16 MiB, a device, a pipe are refused with exit 3.
+#[test]
+fn oversized_or_special_scene_files_are_refused_before_reading() {
+    let dir = std::env::temp_dir().join(format!("gearloss-big-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let big = dir.join("big.gear");
+    let f = std::fs::File::create(&big).unwrap();
+    f.set_len(gearloss::scene::source::MAX_SCENE_BYTES + 1).unwrap();
+    for (path, reason) in [(big.as_path(), "larger than the limit"), (Path::new("/dev/zero"), "not a regular file")] {
+        let o = gearloss().arg("check").arg(path).output().unwrap();
+        assert_eq!(o.status.code(), Some(3), "{}", path.display());
+        assert!(String::from_utf8_lossy(&o.stderr).contains(reason), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A closed stdout or stderr (`gearloss check x | head -1`) is not a panic.
+#[test]
+fn a_closed_pipe_is_not_a_panic() {
+    let mut child = gearloss()
+        .args(["check", "tests/specs/err/several_errors.gear"])
+        .current_dir(crate::root())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    drop(child.stdout.take());
+    assert_eq!(child.wait().unwrap().code(), Some(1));
 }

@@ -42,14 +42,24 @@ fn ok_fixtures_render() {
 fn err_fixtures_fail_with_diagnostics() {
     let mut count = 0;
     insta::glob!("../specs/err", "*.gear", |path| {
-        let source = std::fs::read_to_string(path).unwrap();
+        count += 1;
+        // A file that cannot be read as a scene (not UTF-8) fails where the binary reads it.
+        let source = match gearloss::scene::source::read_text(path, gearloss::scene::source::MAX_SCENE_BYTES) {
+            Ok(s) => s,
+            Err(e) => {
+                insta::assert_snapshot!(format!("cannot read {}: {e}", source_name(path)));
+                return;
+            }
+        };
         let errors = gearloss::check(&source_name(path), &source).expect_err("an err fixture must fail");
         assert!(!errors.diagnostics.is_empty());
         for d in &errors.diagnostics {
             assert!(!d.hints.is_empty(), "every diagnostic carries a hint: {}", d.reason);
             assert!(d.span.end <= source.len());
+            for text in std::iter::once(&d.reason).chain(&d.hints) {
+                assert!(!text.chars().any(char::is_control), "a raw control character in a message: {text:?}");
+            }
         }
-        count += 1;
         insta::assert_snapshot!(errors.render(false));
     });
     assert!(count >= 15, "only {count} bad inputs");

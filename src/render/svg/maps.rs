@@ -69,9 +69,11 @@ fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map, spe
         .y_labels(6)
         .draw()
         .map_err(e)?;
-    let cells = m.values.iter().enumerate().flat_map(|(t, row)| {
-        row.iter().enumerate().filter(|(_, v)| v.is_finite()).map(move |(s, v)| (t, s, *v))
-    });
+    let cells = m
+        .values
+        .iter()
+        .enumerate()
+        .flat_map(|(t, row)| row.iter().enumerate().filter(|(_, v)| v.is_finite()).map(move |(s, v)| (t, s, *v)));
     chart
         .draw_series(cells.map(|(t, s, v)| {
             Rectangle::new([(xe[s], ye[t]), (xe[s + 1], ye[t + 1])], colour((v - lo) / span).filled())
@@ -83,7 +85,9 @@ fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map, spe
 /// The map plot; the grid is the report's [`crate::report::Report::map_grid`].
 pub fn efficiency_map(r: &Report) -> Result<String, String> {
     let Some((ti, si)) = &r.map_grid else { return Err("the report has no map grid".into()) };
-    let on_grid = |rec: &&EfficiencyRecord| ti.binary_search(&rec.torque_index).is_ok() && si.binary_search(&rec.speed_index).is_ok();
+    let on_grid = |rec: &&EfficiencyRecord| {
+        ti.binary_search(&rec.torque_index).is_ok() && si.binary_search(&rec.speed_index).is_ok()
+    };
     let mut combos: Vec<(String, crate::model::Formulation)> = Vec::new();
     for rec in &r.efficiency {
         if !combos.iter().any(|(l, f)| *l == rec.label && *f == rec.formulation) && combos.len() < MAX_MAPS {
@@ -93,7 +97,8 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
     let mut speeds = vec![f64::NAN; si.len()];
     let mut torques = vec![f64::NAN; ti.len()];
     for rec in r.efficiency.iter().filter(on_grid) {
-        let (t, s) = (ti.binary_search(&rec.torque_index).unwrap_or(0), si.binary_search(&rec.speed_index).unwrap_or(0));
+        let (t, s) =
+            (ti.binary_search(&rec.torque_index).unwrap_or(0), si.binary_search(&rec.speed_index).unwrap_or(0));
         speeds[s] = r.speed_unit.value(&rec.pinion_speed);
         torques[t] = rec.pinion_torque.si();
     }
@@ -105,7 +110,8 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
         let mut eta = vec![vec![f64::NAN; si.len()]; ti.len()];
         let mut loss = eta.clone();
         for rec in r.efficiency.iter().filter(on_grid).filter(|x| x.label == *label && x.formulation == *f) {
-            let (t, s) = (ti.binary_search(&rec.torque_index).unwrap_or(0), si.binary_search(&rec.speed_index).unwrap_or(0));
+            let (t, s) =
+                (ti.binary_search(&rec.torque_index).unwrap_or(0), si.binary_search(&rec.speed_index).unwrap_or(0));
             eta[t][s] = 100.0 * rec.mean_efficiency.0;
             loss[t][s] = rec.power_loss.si();
         }
