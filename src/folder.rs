@@ -64,7 +64,8 @@ impl ReportFolder {
                     self.committed = true;
                     return Ok(target);
                 }
-                Err(e) if target.exists() => {
+                // Another run's folder is in the way (or was, a moment ago): move it aside and retry.
+                Err(e) if target.exists() || is_in_the_way(&e) => {
                     last = Some(e);
                     let old = unique(&self.dir, &self.name, "old");
                     match std::fs::rename(&target, &old) {
@@ -78,6 +79,11 @@ impl ReportFolder {
         }
         Err(last.unwrap_or_else(|| std::io::Error::other("the report folder could not be renamed into place")))
     }
+}
+
+/// A rename failed because the target is a non-empty folder (ENOTEMPTY, EEXIST).
+fn is_in_the_way(e: &std::io::Error) -> bool {
+    matches!(e.kind(), std::io::ErrorKind::DirectoryNotEmpty | std::io::ErrorKind::AlreadyExists)
 }
 
 impl Drop for ReportFolder {

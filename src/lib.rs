@@ -98,6 +98,15 @@ pub fn evaluate_sweep(
     sink: &mut dyn RecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<Tally> {
+    Ok(stream(scene, plan, sink, progress)?.tally)
+}
+
+fn stream(
+    scene: &Scene,
+    plan: &Plan,
+    sink: &mut dyn RecordSink,
+    progress: &dyn Progress,
+) -> std::io::Result<evaluate::stream::Streamed> {
     let eval = evaluate::prepare(scene, plan);
     progress.stage("evaluate", plan.range.len() as u64);
     evaluate::stream::evaluate_records(scene, &eval, plan, sink, &|n| progress.advance(n as u64))
@@ -105,9 +114,18 @@ pub fn evaluate_sweep(
 
 /// Stage 3, the details: the plan's detail points in full, the contact curves and the dynamics.
 pub fn evaluate_details(scene: &Scene, plan: &Plan, progress: &dyn Progress) -> Evaluation {
+    details(scene, plan, &[], progress)
+}
+
+fn details(
+    scene: &Scene,
+    plan: &Plan,
+    known: &[(usize, evaluate::dynamics::DynamicsPoint)],
+    progress: &dyn Progress,
+) -> Evaluation {
     let mut eval = evaluate::prepare(scene, plan);
     progress.stage("details", plan.detail.len() as u64);
-    evaluate::evaluate_details(scene, &mut eval, plan, &|| progress.advance(1));
+    evaluate::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));
     eval
 }
 
@@ -124,10 +142,10 @@ pub fn render(report: &Report) -> Result<RenderedReport, String> {
 /// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
 pub fn report_of(scene: &Scene) -> Report {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let tally = evaluate_sweep(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
+    let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
         .expect("records that go nowhere cannot fail to be written");
-    let eval = evaluate_details(scene, &plan, &Quiet);
-    report(scene, &eval, &tally, &plan)
+    let eval = details(scene, &plan, &streamed.detail_dynamics, &Quiet);
+    report(scene, &eval, &streamed.tally, &plan)
 }
 
 /// Told how a run proceeds, for a progress bar; the library never prints.
@@ -148,9 +166,15 @@ pub fn has_records(scene: &Scene) -> bool {
     a.friction_along_loa || a.efficiency.is_some() || (a.dynamics && scene.dynamics.is_some())
 }
 
-/// Stages 3 to 5 after the sweep: details, report and render, with the record files (given) added.
-fn finish(scene: &Scene, plan: &Plan, tally: &Tally, progress: &dyn Progress) -> Result<RenderedReport, RunError> {
-    let eval = evaluate_details(scene, plan, progress);
+/// Stages 3 to 5 after the sweep: details (reusing the dynamics the stream computed), report, render.
+fn finish(
+    scene: &Scene,
+    plan: &Plan,
+    tally: &Tally,
+    known: &[(usize, evaluate::dynamics::DynamicsPoint)],
+    progress: &dyn Progress,
+) -> Result<RenderedReport, RunError> {
+    let eval = details(scene, plan, known, progress);
     progress.stage("report", 1);
     let report = report(scene, &eval, tally, plan);
     progress.stage("render", 1);
@@ -163,8 +187,8 @@ pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, R
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let mut sink = RecordWriter::new(Vec::new(), Vec::new(), true).map_err(RunError::io("records"))?;
-    let tally = evaluate_sweep(&scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
-    let mut rendered = finish(&scene, &plan, &tally, &Quiet)?;
+    let streamed = stream(&scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
+    let mut rendered = finish(&scene, &plan, &streamed.tally, &streamed.detail_dynamics, &Quiet)?;
     if has_records(&scene) {
         let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
         let text = |b: Vec<u8>| String::from_utf8(b).expect("records are UTF-8");
@@ -193,22 +217,21 @@ pub fn run_into(
     };
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
     let mut files = Vec::new();
-    let tally = if has_records(scene) {
+    let streamed = if has_records(scene) {
         let mut sink = shard::record_files(&folder).map_err(RunError::io("the record files"))?;
-        let tally = evaluate_sweep(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
+        let streamed = stream(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
         sink.finish().map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
-        tally
+        streamed
     } else {
-        evaluate_sweep(scene, &plan, &mut evaluate::records::NoRecords, progress)
-            .map_err(RunError::io("the record files"))?
+        stream(scene, &plan, &mut evaluate::records::NoRecords, progress).map_err(RunError::io("the record files"))?
     };
     if let Some(shard) = shard {
-        let manifest = shard::Manifest::new(source_name, source, shard, &plan, tally);
+        let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
         folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
         files.push(shard::MANIFEST.into());
     } else {
-        let rendered = finish(scene, &plan, &tally, progress)?;
+        let rendered = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, progress)?;
         progress.stage("write", rendered.files.len() as u64);
         for (file, content) in &rendered.files {
             folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
@@ -238,7 +261,7 @@ pub fn merge_into(
         set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
     }
-    let rendered = finish(&scene, &plan, &set.tally, progress)?;
+    let rendered = finish(&scene, &plan, &set.tally, &[], progress)?;
     for (file, content) in &rendered.files {
         folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
         files.push(file.clone());

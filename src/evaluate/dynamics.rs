@@ -194,7 +194,14 @@ impl<'a> DynamicsSetup<'a> {
 /// Evaluates the dynamics the scene asks for at the given cases (the detail points), the stability
 /// map and the numerics study; None when it asks for none.
 /// `base` is the law context of the scene's pair (its state is replaced by each operating point's).
-pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Option<DynamicsEvaluation> {
+/// `known` holds dynamics already computed by the sweep's stream, by point number (0-based); the
+/// cases among them are not computed again.
+pub fn evaluate_dynamics(
+    scene: &Scene,
+    cases: &[Case],
+    base: LawContext,
+    known: &[(usize, DynamicsPoint)],
+) -> Option<DynamicsEvaluation> {
     let setup = DynamicsSetup::new(scene, base)?;
     let a = &scene.analyses;
     if !(a.dynamics || a.stability_map.is_some() || a.numerics) {
@@ -206,7 +213,14 @@ pub fn evaluate_dynamics(scene: &Scene, cases: &[Case], base: LawContext) -> Opt
     let probe = system(base, spec, stiffness, None, DynamicFormulation::Base, probe_state, j);
     let law_for = |state: OperatingState| setup.law_for(state);
     let points = if a.dynamics {
-        cases.par_iter().enumerate().map(|(k, case)| setup.point(k, case.state)).collect()
+        cases
+            .par_iter()
+            .enumerate()
+            .map(|(k, case)| match known.iter().find(|(i, _)| *i == case.index) {
+                Some((_, p)) => DynamicsPoint { case: k, ..p.clone() },
+                None => setup.point(k, case.state),
+            })
+            .collect()
     } else {
         Vec::new()
     };

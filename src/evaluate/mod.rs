@@ -159,7 +159,7 @@ pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
 pub fn evaluate_scene(scene: &Scene) -> Evaluation {
     let plan = Plan::new(&scene.operating, None, &[]);
     let mut eval = prepare(scene, &plan);
-    evaluate_details(scene, &mut eval, &plan, &|| {});
+    evaluate_details(scene, &mut eval, &plan, &[], &|| {});
     eval
 }
 
@@ -213,7 +213,14 @@ pub fn contact_table(eval: &Evaluation, state: &OperatingState) -> Vec<(Option<&
 
 /// The detail points of the plan in full (tables, film, laws, curves), the contact curves and the
 /// dynamics; `tick` is called once per detail point.
-pub fn evaluate_details(scene: &Scene, eval: &mut Evaluation, plan: &Plan, tick: &(dyn Fn() + Sync)) {
+/// `known` are dynamics the sweep's stream already computed (by point number), reused as they are.
+pub fn evaluate_details(
+    scene: &Scene,
+    eval: &mut Evaluation,
+    plan: &Plan,
+    known: &[(usize, dynamics::DynamicsPoint)],
+    tick: &(dyn Fn() + Sync),
+) {
     let points: Vec<PointEvaluation> = eval
         .cases
         .par_iter()
@@ -237,5 +244,5 @@ pub fn evaluate_details(scene: &Scene, eval: &mut Evaluation, plan: &Plan, tick:
     eval.points = points;
     eval.contact_curves = cases::contact_curves(scene, eval);
     eval.dynamics =
-        crate::evaluate::dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state));
+        crate::evaluate::dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), known);
 }

@@ -5,7 +5,7 @@
 
 use rayon::prelude::*;
 
-use super::dynamics::DynamicsSetup;
+use super::dynamics::{DynamicsPoint, DynamicsSetup};
 use super::laws::{evaluate_law, LawEvaluation};
 use super::records::{ParameterValue, RecordSink, RowKind, SummaryRow};
 use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
@@ -16,6 +16,15 @@ use crate::model::Scene;
 /// Points evaluated together before their rows are written.
 pub const BLOCK: usize = 1024;
 
+/// What the stream computed beyond the tally: the dynamics of the detail points in its range, so
+/// that the details of a single run do not compute them twice.
+#[derive(Debug, Default)]
+pub struct Streamed {
+    pub tally: Tally,
+    /// (point, its dynamics), for the plan's detail points.
+    pub detail_dynamics: Vec<(usize, DynamicsPoint)>,
+}
+
 /// Evaluates the plan's range of points, writes their rows to `sink` and returns their tally;
 /// `tick(n)` is called after each block with the number of points it held.
 pub fn evaluate_records(
@@ -24,27 +33,33 @@ pub fn evaluate_records(
     plan: &Plan,
     sink: &mut dyn RecordSink,
     tick: &(dyn Fn(usize) + Sync),
-) -> std::io::Result<Tally> {
+) -> std::io::Result<Streamed> {
     let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
     let dynamics =
         DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
-    let mut tally = Tally::default();
+    let mut out = Streamed::default();
     let mut start = plan.range.start;
     while start < plan.range.end {
         let end = (start + BLOCK).min(plan.range.end);
-        let block: Vec<(Vec<SummaryRow>, Tally)> = (start..end)
+        let block: Vec<Summary> = (start..end)
             .into_par_iter()
             .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), k))
             .collect();
-        for (rows, t) in block {
+        for (k, (rows, t, d)) in (start..end).zip(block) {
             sink.write_rows(&rows)?;
-            tally.absorb(t);
+            out.tally.absorb(t);
+            if let Some(d) = d.filter(|_| plan.detail.binary_search(&k).is_ok()) {
+                out.detail_dynamics.push((k, d));
+            }
         }
         tick(end - start);
         start = end;
     }
-    Ok(tally)
+    Ok(out)
 }
+
+/// A point's rows, tally and dynamics (when the scene asks for them).
+type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
 
 fn parameters(law: &LawEvaluation) -> Vec<ParameterValue> {
     law.parameters.iter().map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() }).collect()
@@ -58,7 +73,7 @@ fn point_summary(
     labels: &[String],
     dynamics: Option<&DynamicsSetup>,
     k: usize,
-) -> (Vec<SummaryRow>, Tally) {
+) -> Summary {
     let op = &scene.operating;
     let state = state_at(op, k);
     let (ti, si) = (k / plan.speeds, k % plan.speeds);
@@ -145,6 +160,7 @@ fn point_summary(
             laws.push(law_tally(k, &law));
         }
     }
+    let mut dynamics_point = None;
     if let Some(setup) = dynamics {
         let point = setup.point(k, state);
         let law = scene.dynamics.as_ref().and_then(|d| d.friction.as_ref());
@@ -163,11 +179,12 @@ fn point_summary(
                 ..blank.clone()
             });
         }
+        dynamics_point = Some(point);
     }
     let implausible =
         implausible.into_iter().map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what }).collect();
     let tally = Tally::of_point(k, &rows, plan.kept(k), laws, implausible);
-    (rows, tally)
+    (rows, tally, dynamics_point)
 }
 
 fn efficiency_row(law_row: &SummaryRow, e: &EfficiencyResult) -> SummaryRow {

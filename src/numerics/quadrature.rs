@@ -214,8 +214,10 @@ fn adaptive<const N: usize>(f: &impl Fn(f64) -> [f64; N], a: f64, b: f64, rel_to
 
 /// As [`integrate_singular_n`] without singular points, to an absolute tolerance per component over
 /// the whole interval: each piece between breaks gets the share of it that its width has, and is
-/// bisected until its QUADPACK estimate is below that share (at most 2⁴⁰ pieces in depth, never below
-/// 1e-14 of the piece). For integrands such as Fourier coefficients whose value may be near zero,
+/// bisected until its QUADPACK estimate is below that share (at most 40 bisections deep, never below
+/// 1e-14 of the piece, and at most [`MAX_PIECE_EVALUATIONS`] integrand evaluations in all: past that
+/// budget the remaining pieces are taken as they are and their error estimates say the tolerance was
+/// not met, so that a nearly singular integrand costs seconds, never hours). For integrands such as Fourier coefficients whose value may be near zero,
 /// where a relative tolerance could never be met.
 ///
 /// ```
@@ -225,6 +227,9 @@ fn adaptive<const N: usize>(f: &impl Fn(f64) -> [f64; N], a: f64, b: f64, rel_to
 /// assert!((a.value - std::f64::consts::PI).abs() < 1e-11 && b.value.abs() < 1e-11);
 /// assert!(a.error <= 1e-12 && b.error <= 1e-12);
 /// ```
+/// The evaluation budget of [`integrate_pieces_n`].
+pub const MAX_PIECE_EVALUATIONS: usize = 30_000;
+
 pub fn integrate_pieces_n<const N: usize>(
     f: impl Fn(f64) -> [f64; N],
     breaks: &[f64],
@@ -248,7 +253,8 @@ pub fn integrate_pieces_n<const N: usize>(
             let share = (b - a) / total;
             let ok = (0..N).all(|n| e[n] <= abs_tol[n] * share || !e[n].is_finite());
             let m = 0.5 * (a + b);
-            if ok || depth >= 40 || m <= a || m >= b || (b - a) < 1e-14 * (w[1] - w[0]) {
+            let spent = out[0].evaluations >= MAX_PIECE_EVALUATIONS;
+            if ok || spent || depth >= 40 || m <= a || m >= b || (b - a) < 1e-14 * (w[1] - w[0]) {
                 for n in 0..N {
                     out[n].value += v[n];
                     out[n].error += e[n];

@@ -6,6 +6,7 @@ mod efficiency;
 mod engine;
 mod friction;
 mod fuzz;
+mod fuzz_campaign;
 mod geometry;
 mod properties;
 mod specs;
