@@ -1,7 +1,8 @@
 //! Speed targets (issue 3), measured with divan: `cargo bench`.
 //!
 //! - one operating point, every law, both formulations, means to a relative tolerance of 1e-10 (target < 200 µs);
-//! - a 10 000-point torque × speed sweep with three laws, the whole evaluation stage (target < 2 s on 2 cores).
+//! - a 10 000-point torque × speed sweep with three laws, the whole evaluation stage (target < 2 s on 2 cores);
+//! - a whole run of the binary over a 200 × 200 map with one law (target < 20 s on 2 cores).
 
 use gearloss::efficiency::{mean_abs_mu, mean_efficiencies};
 
@@ -66,11 +67,44 @@ fn one_point_all_laws_with_mean_mu(bencher: divan::Bencher) {
     one_point(bencher, true);
 }
 
-/// The evaluate stage on a 100 × 100 torque × speed sweep with three laws.
+/// The evaluate stage on a 100 × 100 torque × speed sweep with three laws: every point streamed
+/// (summary rows built, tally folded; the rows go nowhere here).
 #[divan::bench(sample_count = 3, sample_size = 1)]
 fn sweep_10000_points_three_laws(bencher: divan::Bencher) {
     let scene = scene("50..500 N*m count 100", "100..10000 rpm count 100", "coulomb(mu = 0.05) xu benedict_kelley");
-    bencher.bench(|| divan::black_box(gearloss::evaluate(&scene).points.len()));
+    let plan = gearloss::Plan::new(&scene.operating, None, &[]);
+    bencher.bench(|| {
+        let tally =
+            gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::records::NoRecords, &gearloss::Quiet);
+        divan::black_box(tally.expect("no writes").points)
+    });
+}
+
+/// Issue 9's whole-run target: `gearloss run` on a 200 × 200 torque × speed map with one law, efficiency
+/// only, records and report written (target < 20 s on 2 cores; peak memory < 300 MB is measured with
+/// farm-bench, README "Sweeps at scale").
+#[divan::bench(sample_count = 3, sample_size = 1)]
+fn whole_run_200x200(bencher: divan::Bencher) {
+    let dir = std::env::temp_dir().join(format!("gearloss-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = ALL_LAWS
+        .replace("OP_TORQUE", "50..400 N*m count 200")
+        .replace("OP_SPEED", "100..6000 rpm count 200")
+        .replace("LAWS", "coulomb(mu = 0.04)")
+        .replace("efficiency  friction_along_loa", "efficiency(formulations = [external])");
+    let path = dir.join("map.gear");
+    std::fs::write(&path, text).unwrap();
+    bencher.bench(|| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_gearloss"))
+            .arg("run")
+            .arg(&path)
+            .arg("--out")
+            .arg(dir.join("out"))
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    });
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 mod dynamics {

@@ -8,18 +8,22 @@
 //!                                checks           is asked                                          then renamed)
 //! ```
 //!
-//! One public function per stage: [`parse`], [`lower`], [`evaluate()`], [`report()`], [`render()`], and
-//! [`write_report_folder`]. Errors of the first two stages are [`SceneErrors`]: every problem with
+//! One public function per stage: [`parse`], [`lower`], [`evaluate_sweep`] (the sweep streamed, its
+//! summary rows to the record files, its tally returned) with [`evaluate_details`] (the detail points in
+//! full), [`report()`] and [`render()`]; [`run_into`] and [`merge_into`] run them into a report folder
+//! (whole or sharded). Errors of the first two stages are [`SceneErrors`]: every problem with
 //! its span, reason and hints, rendered by miette. The library never prints.
 //!
 //! The layers, each importing only from those below it (no import circles):
 //!
 //! ```text
 //!  cli ─ lib                      the binary's commands; one function per stage
+//!  shard, folder                  shards and merge; a report folder written whole (concurrent-safe)
 //!  render/ (markdown, svg/)       formats the report; never computes
 //!  report/                        the serde report: numbers and series ready to draw, findings
-//!  evaluate/ (cases, laws,        expands the sweeps into cases once; friction, efficiency and the
-//!             dynamics)           dynamics at each case, only what the scene asks for
+//!  evaluate/ (plan, stream,       the run's plan (points, detail points, kept rows); the sweep streamed in
+//!    records, tally, laws,        blocks: rows to the record files, a mergeable tally; friction,
+//!    dynamics, cases)             efficiency and dynamics at each point, only what the scene asks for
 //!  scene/                         the language: grammar, parse, units, lowering to the model
 //!  model                          the lowered scene (uom quantities, what the user wrote)
 //!  dynamics/                      the n-state periodic engine (PeriodicModel: propagators, Floquet,
@@ -41,6 +45,7 @@ pub mod friction;
 pub mod geometry;
 pub mod model;
 pub mod numerics;
+pub mod progress;
 pub mod quantity;
 pub mod render;
 pub mod report;
@@ -55,6 +60,7 @@ pub use evaluate::records::{RecordSink, RecordWriter};
 pub use evaluate::{Evaluation, Plan, Shard, Tally};
 use folder::ReportFolder;
 pub use model::Scene;
+pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
 pub use scene::ast::SceneAst;
@@ -85,7 +91,8 @@ pub fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
     lower(source_name, source, &ast)
 }
 
-/// Stage 3 in one piece, in memory: every point in detail (small scenes, tests and benches).
+/// Stage 3's detail points in memory: every point of a sweep of up to 100 points in full (tests and
+/// benches); a larger sweep's detail points only — its every point goes through [`evaluate_sweep`].
 pub fn evaluate(scene: &Scene) -> Evaluation {
     evaluate::evaluate_scene(scene)
 }
@@ -147,18 +154,6 @@ pub fn report_of(scene: &Scene) -> Report {
     let eval = details(scene, &plan, &streamed.detail_dynamics, &Quiet);
     report(scene, &eval, &streamed.tally, &plan)
 }
-
-/// Told how a run proceeds, for a progress bar; the library never prints.
-pub trait Progress: Sync {
-    /// A stage begins with `total` steps.
-    fn stage(&self, _label: &'static str, _total: u64) {}
-    /// `n` steps of the stage are done.
-    fn advance(&self, _n: u64) {}
-}
-
-/// No progress reported.
-pub struct Quiet;
-impl Progress for Quiet {}
 
 /// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
 pub fn has_records(scene: &Scene) -> bool {
@@ -250,7 +245,7 @@ pub fn merge_into(
     out_dir: &Path,
     progress: &dyn Progress,
 ) -> Result<(PathBuf, Vec<String>), RunError> {
-    let set = shard::ShardSet::read(shards)?;
+    let set = shard::ShardSet::read(shards).map_err(RunError::Shards)?;
     let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let folder =

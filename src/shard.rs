@@ -11,10 +11,11 @@ use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
+use crate::evaluate::records::RecordWriter;
 use crate::evaluate::{Plan, Shard, Tally};
 use crate::folder::ReportFolder;
+use crate::progress::Progress;
 use crate::report::sweep::{RECORDS_CSV, RECORDS_JSONL};
-use crate::{Progress, RecordWriter, RunError};
 
 /// The manifest of a shard folder.
 pub const MANIFEST: &str = "shard.json";
@@ -74,9 +75,10 @@ pub struct ShardSet {
 }
 
 impl ShardSet {
-    /// Reads and checks the manifests: one scene, one shard count, every shard exactly once.
-    pub fn read(folders: &[PathBuf]) -> Result<ShardSet, RunError> {
-        let bad = |m: String| RunError::Shards(m);
+    /// Reads and checks the manifests: one scene, one shard count, every shard exactly once; the
+    /// error says which folder is wrong and why.
+    pub fn read(folders: &[PathBuf]) -> Result<ShardSet, String> {
+        let bad = |m: String| m;
         let mut manifests = Vec::new();
         for dir in folders {
             let path = dir.join(MANIFEST);

@@ -161,5 +161,31 @@ pub(super) fn check_friction_needs(
                 );
             }
         }
+        if matches!(law.law, catalog::LawId::Xu | catalog::LawId::Composite) {
+            check_xu_roughness(law, gears, errors);
+        }
+    }
+}
+
+/// Largest mean roughness S (µm) Xu et al.'s fit is evaluated at: its factor exp(b9 e^S) is 2·10⁵ at
+/// 3 µm and overflows (μ not a number) near 7 µm; the fit was made on surfaces far smoother.
+pub const XU_MAX_ROUGHNESS_UM: f64 = 5.0;
+
+fn check_xu_roughness(law: &FrictionLawSpec, gears: &GearPair, errors: &mut Vec<Diagnostic>) {
+    let ra = |g: &Gear| g.roughness_ra.as_ref().map(|r| r.value.value);
+    let (Some(a), Some(b)) = (ra(&gears.pinion), ra(&gears.wheel)) else { return };
+    let s_um = 0.5 * (a + b) * 1e6;
+    if s_um > XU_MAX_ROUGHNESS_UM {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                law.span,
+                format!(
+                    "`{}` reads Xu et al.'s fit at the mean roughness S = {s_um:.3} µm, above {XU_MAX_ROUGHNESS_UM} µm, where its factor exp(b9·e^S) gives no meaningful (or no finite) μ",
+                    law.law.name()
+                ),
+            )
+            .hint("check `roughness_ra` of both gears (in µm, not µin?), or choose a law made for rough surfaces"),
+        );
     }
 }
