@@ -133,7 +133,13 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     }
     match (gears, operating) {
         (Some(gears), Some(operating)) if errors.is_empty() => {
-            Ok(Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, analyses })
+            let scene = Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, analyses };
+            super::lower_dynamics::check_frequency_ratio(&scene, &mut errors);
+            if errors.is_empty() {
+                Ok(scene)
+            } else {
+                Err(errors)
+            }
         }
         _ => Err(errors),
     }

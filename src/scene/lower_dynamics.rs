@@ -7,7 +7,8 @@ use super::fields::{scalar, sweep_values, unknown_name, Fields};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::dynamics::DynamicFormulation;
-use crate::model::{AngularVelocity, DynamicsSpec, Solver, StiffnessSpec, Sweep};
+use crate::geometry::stiffness::StiffnessModel;
+use crate::model::{AngularVelocity, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
 use crate::scene::units::SiQuantity;
 
 const KEYS: &[&str] =
@@ -300,4 +301,61 @@ pub fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<
         );
     }
     out
+}
+
+/// Most natural periods per mesh period the dynamics are computed for. The work per mesh period
+/// grows with f_n/f_mesh (the trajectory follows every oscillation to locate the extrema); far
+/// below the resonances the response is quasi-static, and at 5 000 periods a run still takes seconds.
+pub const MAX_FREQUENCY_RATIO: f64 = 5_000.0;
+
+/// Refuses dynamics at speeds so low that f_n/f_mesh exceeds [`MAX_FREQUENCY_RATIO`] (f_n from the
+/// stiffest mesh state, an upper bound), naming the lowest speed allowed.
+pub(super) fn check_frequency_ratio(scene: &Scene, errors: &mut Vec<Diagnostic>) {
+    let (Some(spec), a) = (scene.dynamics.as_ref(), &scene.analyses) else { return };
+    if !(a.dynamics || a.numerics || a.stability_map.is_some()) {
+        return;
+    }
+    let Ok(g) = scene.gears.geometry() else { return };
+    let j = |gear: &Gear| gear.inertia.as_ref().map(|j| j.value.value);
+    let (Some(j1), Some(j2)) = (j(&scene.gears.pinion), j(&scene.gears.wheel)) else { return };
+    let k_max = match &spec.stiffness {
+        StiffnessSpec::Pairs { single, double, triple } => single.max(*double).max(triple.unwrap_or(1.5 * double)),
+        StiffnessSpec::Iso6336 => match StiffnessModel::iso_6336(&g) {
+            StiffnessModel::PairsInContact { single, double, triple } => single.max(double).max(triple),
+            StiffnessModel::Table(v) => v.iter().copied().fold(0.0, f64::max),
+        },
+        StiffnessSpec::Table(v) => v.iter().copied().fold(0.0, f64::max),
+    };
+    let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
+    let m_e = j1 * j2 / (j1 * rw * rw + j2 * rp * rp);
+    let f_n = (k_max / m_e).sqrt() / (2.0 * std::f64::consts::PI);
+    let z1 = g.teeth[0] as f64;
+    let lowest_allowed = f_n / MAX_FREQUENCY_RATIO / z1 * 2.0 * std::f64::consts::PI; // rad/s
+    let mut sweeps = vec![&scene.operating.pinion_speed];
+    sweeps.extend(a.stability_map.as_ref());
+    for sweep in sweeps {
+        let lowest = sweep.values.iter().map(|w| w.value).fold(f64::INFINITY, f64::min);
+        if lowest < lowest_allowed {
+            let f_mesh = lowest * z1 / (2.0 * std::f64::consts::PI);
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    sweep.span,
+                    format!(
+                        "the dynamics at {:.4} {} would follow {:.0} natural periods per mesh period (f_n up to {:.1} Hz, f_mesh {:.4} Hz), above the limit of {MAX_FREQUENCY_RATIO}",
+                        lowest / sweep.factor,
+                        sweep.unit,
+                        f_n / f_mesh,
+                        f_n,
+                        f_mesh
+                    ),
+                )
+                .hint(format!(
+                    "that far below resonance the response is quasi-static; give the dynamics speeds of at least {:.4} {}",
+                    lowest_allowed / sweep.factor,
+                    sweep.unit
+                )),
+            );
+        }
+    }
 }
