@@ -1,7 +1,8 @@
 //! The report folder, written whole or not at all: files go into a hidden temporary folder beside
 //! the target (`.<name>.tmp-<pid>-<n>`), which is renamed into place once complete. Whatever
 //! happens before [`ReportFolder::commit`] (an error, a panic), dropping the folder removes the
-//! temporary one. Concurrent runs writing the same folder all succeed; the last to commit wins
+//! temporary one; a run killed by a signal leaves its temporary folder, which the next run into the
+//! same place removes. Concurrent runs writing the same folder all succeed; the last to commit wins
 //! and no temporary or displaced folder is left behind.
 
 use std::path::{Path, PathBuf};
@@ -37,6 +38,7 @@ impl ReportFolder {
             ));
         }
         std::fs::create_dir_all(out_dir)?;
+        remove_stale(out_dir, name);
         let tmp = unique(out_dir, name, "tmp");
         std::fs::create_dir(&tmp)?;
         Ok(ReportFolder { dir: out_dir.to_path_buf(), name: name.to_string(), tmp, committed: false })
@@ -78,6 +80,26 @@ impl ReportFolder {
             }
         }
         Err(last.unwrap_or_else(|| std::io::Error::other("the report folder could not be renamed into place")))
+    }
+}
+
+/// Removes the temporary and displaced folders that runs killed before they could clean up (a
+/// signal, a power cut) left beside `name`: those whose process no longer exists (Linux: no
+/// `/proc/<pid>`; elsewhere nothing is removed).
+fn remove_stale(dir: &Path, name: &str) {
+    if !Path::new("/proc/self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(dir) else { return };
+    for entry in entries.flatten() {
+        let file = entry.file_name().to_string_lossy().into_owned();
+        let Some(rest) = [".tmp-", ".old-"].iter().find_map(|w| file.strip_prefix(&format!(".{name}{w}"))) else {
+            continue;
+        };
+        let Some(pid) = rest.split('-').next().and_then(|p| p.parse::<u32>().ok()) else { continue };
+        if pid != std::process::id() && !Path::new(&format!("/proc/{pid}")).exists() {
+            let _ = std::fs::remove_dir_all(entry.path());
+        }
     }
 }
 

@@ -175,3 +175,31 @@ fn out_naming_a_file_is_not_a_folder() {
     assert_eq!(names(&dir), vec!["a-file".to_string()]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A run killed before it could clean up leaves `.slug.tmp-PID-N`; the next run into the same place
+/// removes it (its process is gone).
+#[test]
+fn a_killed_runs_temporary_folder_is_removed_by_the_next_run() {
+    let out = temp("stale");
+    let stale = out.join(".minimal.tmp-999999999-0");
+    std::fs::create_dir_all(&stale).unwrap();
+    std::fs::write(stale.join("report.md"), "half").unwrap();
+    run(&["run", "tests/specs/ok/minimal.gear"], &out);
+    assert_eq!(names(&out), vec!["minimal".to_string()]);
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// Plot axes of non-finite, huge or degenerate ranges never hang or fail: the panel is widened or
+/// left empty.
+#[test]
+fn plots_of_extreme_values_finish() {
+    use gearloss::render::svg::{figure, Panel};
+    for x in [vec![1e308, 1.7e308], vec![0.0, f64::MIN_POSITIVE], vec![1.0, 1.0], vec![f64::NAN, f64::INFINITY]] {
+        for y in [vec![1e308, -1e308], vec![2.0, 2.0], vec![f64::NAN, 1.0], vec![5e-324, 0.0]] {
+            let started = std::time::Instant::now();
+            let panel = Panel { x: x.clone(), series: vec![("s".into(), y.clone())], ..Default::default() };
+            assert!(figure("t", &[panel]).is_ok(), "{x:?} {y:?}");
+            assert!(started.elapsed().as_secs() < 5, "{x:?} {y:?}");
+        }
+    }
+}
