@@ -56,6 +56,10 @@ pub struct Report {
     /// The torque and speed indices the sweep plots draw a curve for.
     #[serde(skip)]
     pub sweep_curves: (Vec<usize>, Vec<usize>),
+    /// Mean |μ| of the composite law at the kept points: (torque index, torque N·m, speed rad/s, law
+    /// label, mean |μ|), in sweep order, one per point and law.
+    #[serde(skip)]
+    pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -127,6 +131,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         curves: points::curves(scene, eval),
         speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
         sweep_curves: (plan.curve_indices().0.to_vec(), plan.curve_indices().1.to_vec()),
+        composite_mu: sweep::composite_mu(scene, tally),
         map_grid: sweep::has_map(plan).then(|| {
             let (t, s) = plan.map_grid();
             (t.to_vec(), s.to_vec())

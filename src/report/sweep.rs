@@ -134,3 +134,21 @@ pub fn sweep_findings(tally: &Tally, plan: &Plan) -> Vec<Finding> {
     }
     out
 }
+
+/// Mean |μ| of every composite law at the kept points, one per point and law (the efficiency rows of
+/// one law repeat it per formulation), for the composite plot.
+pub fn composite_mu(scene: &crate::model::Scene, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
+    let mut out: Vec<(usize, f64, f64, String, f64)> = Vec::new();
+    let mut last: Option<(usize, usize)> = None;
+    for r in &tally.kept {
+        let Some(i) = r.law_index else { continue };
+        if scene.friction[i].law != crate::friction::catalog::LawId::Composite || last == Some((r.point, i)) {
+            continue;
+        }
+        last = Some((r.point, i));
+        if let Some(mu) = r.mean_abs_mu {
+            out.push((r.torque_index, r.pinion_torque, r.pinion_speed, r.label.clone(), mu));
+        }
+    }
+    out
+}

@@ -79,16 +79,18 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
 pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
     let mut xs: Vec<f64> = Vec::new();
     let mut series: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
-    for op in &r.operating_points {
-        let speed = r.speed_unit.value(&op.pinion_speed);
-        for law in op.friction.iter().filter(|l| l.law == crate::friction::catalog::LawId::Composite) {
-            let label = format!("{} @ {:.1} N·m", law.label, op.pinion_torque.si());
-            match series.iter_mut().find(|(l, _)| *l == label) {
-                Some((_, v)) => v.push((speed, law.mean_abs_mu.0)),
-                None => series.push((label, vec![(speed, law.mean_abs_mu.0)])),
-            }
-            xs.push(speed);
+    let curve_torques = &r.sweep_curves.0;
+    for (ti, torque, speed, law, mu) in &r.composite_mu {
+        if curve_torques.binary_search(ti).is_err() {
+            continue;
         }
+        let speed = *speed / r.speed_unit.factor;
+        let label = format!("{law} @ {torque:.1} N·m");
+        match series.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, v)) => v.push((speed, *mu)),
+            None => series.push((label, vec![(speed, *mu)])),
+        }
+        xs.push(speed);
     }
     xs.sort_by(f64::total_cmp);
     xs.dedup();
