@@ -8,40 +8,54 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
 /// A key's plausible range in SI, and how the range reads in the message.
 pub struct Limit {
     pub key: &'static str,
+    /// The SI unit of the value in the message (empty for a plain number).
+    pub si_unit: &'static str,
     pub lo: f64,
     pub hi: f64,
     pub shown: &'static str,
 }
 
-const fn limit(key: &'static str, lo: f64, hi: f64, shown: &'static str) -> Limit {
-    Limit { key, lo, hi, shown }
+const fn limit(key: &'static str, si_unit: &'static str, lo: f64, hi: f64, shown: &'static str) -> Limit {
+    Limit { key, si_unit, lo, hi, shown }
 }
 
 /// Every quantity with a plausible range (keys as the scene writes them).
 pub const LIMITS: &[Limit] = &[
-    limit("module", 1e-5, 0.2, "0.01 mm to 200 mm"),
-    limit("diametral_pitch", 5.0, 1e5, "0.127 to 2540 1/in"),
-    limit("face_width", 1e-4, 5.0, "0.1 mm to 5 m"),
-    limit("center_distance", 1e-3, 20.0, "1 mm to 20 m"),
-    limit("tip_diameter", 1e-4, 40.0, "0.1 mm to 40 m"),
-    limit("pinion_torque", 1e-6, 1e8, "1e-6 N·m to 1e8 N·m"),
-    limit("pinion_speed", 1e-4, 1.05e5, "0.001 rpm to 1 000 000 rpm"),
-    limit("youngs_modulus", 1e8, 2e12, "0.1 GPa to 2000 GPa"),
-    limit("inertia", 1e-12, 1e6, "1e-12 to 1e6 kg·m²"),
-    limit("dynamic_viscosity", 1e-5, 1e4, "0.01 mPa·s to 1e4 Pa·s"),
-    limit("kinematic_viscosity", 1e-8, 1.0, "0.01 cSt to 1e6 cSt"),
-    limit("density", 100.0, 3e4, "100 to 30 000 kg/m³"),
-    limit("pressure_viscosity", 1e-10, 1e-6, "1e-10 to 1e-6 1/Pa"),
-    limit("temperature", 173.15, 673.15, "-100 °C to 400 °C"),
-    limit("roughness_ra", 0.0, 1e-3, "0 to 1 mm"),
-    limit("roughness_rq", 0.0, 1e-3, "0 to 1 mm"),
-    limit("roughness_rz", 0.0, 1e-2, "0 to 10 mm"),
-    limit("single", 1e4, 1e12, "1e4 to 1e12 N/m"),
-    limit("double", 1e4, 1e12, "1e4 to 1e12 N/m"),
-    limit("triple", 1e4, 1e12, "1e4 to 1e12 N/m"),
-    limit("table", 1e4, 1e12, "1e4 to 1e12 N/m"),
-    limit("amplitudes", 0.0, 1e-2, "0 to 10 mm"),
+    limit("module", "m", 1e-5, 0.2, "0.01 mm to 200 mm"),
+    limit("diametral_pitch", "1/m", 5.0, 1e5, "0.127 to 2540 1/in"),
+    limit("face_width", "m", 1e-4, 5.0, "0.1 mm to 5 m"),
+    limit("center_distance", "m", 1e-3, 20.0, "1 mm to 20 m"),
+    limit("tip_diameter", "m", 1e-4, 40.0, "0.1 mm to 40 m"),
+    limit("pinion_torque", "N*m", 1e-6, 1e8, "1e-6 N·m to 1e8 N·m"),
+    limit("pinion_speed", "rad/s", 1e-4, 1.05e5, "0.001 rpm to 1 000 000 rpm"),
+    limit("youngs_modulus", "Pa", 1e8, 2e12, "0.1 GPa to 2000 GPa"),
+    limit("inertia", "kg*m^2", 1e-12, 1e6, "1e-12 to 1e6 kg·m²"),
+    limit("dynamic_viscosity", "Pa*s", 1e-5, 1e4, "0.01 mPa·s to 1e4 Pa·s"),
+    limit("kinematic_viscosity", "m^2/s", 1e-8, 1.0, "0.01 cSt to 1e6 cSt"),
+    limit("density", "kg/m^3", 100.0, 3e4, "100 to 30 000 kg/m³"),
+    limit("pressure_viscosity", "1/Pa", 1e-10, 1e-6, "1e-10 to 1e-6 1/Pa"),
+    limit("temperature", "K", 173.15, 673.15, "-100 °C to 400 °C"),
+    limit("roughness_ra", "m", 0.0, 1e-3, "0 to 1 mm"),
+    limit("roughness_rq", "m", 0.0, 1e-3, "0 to 1 mm"),
+    limit("roughness_rz", "m", 0.0, 1e-2, "0 to 10 mm"),
+    limit("single", "N/m", 1e4, 1e12, "1e4 to 1e12 N/m"),
+    limit("double", "N/m", 1e4, 1e12, "1e4 to 1e12 N/m"),
+    limit("triple", "N/m", 1e4, 1e12, "1e4 to 1e12 N/m"),
+    limit("table", "N/m", 1e4, 1e12, "1e4 to 1e12 N/m"),
+    limit("amplitudes", "m", 0.0, 1e-2, "0 to 10 mm"),
+    // Friction-law arguments (a lubricated gear contact has μ below about 0.15, dry steel about 0.8).
+    limit("mu", "", 0.0, 1.0, "0 to 1"),
+    limit("mu_boundary", "", 0.0, 1.0, "0 to 1"),
+    limit("mu_ehl", "", 0.0, 1.0, "0 to 1"),
+    limit("phi", "1/m", 1.0, 1e9, "1 to 1e9 1/m"),
+    limit("filter_cutoff", "m", 1e-6, 1.0, "1 µm to 1 m"),
 ];
+
+/// A value in SI for the message: plain for moderate magnitudes, in exponent form otherwise.
+fn shown(x: f64, unit: &str) -> String {
+    let number = if (1e-3..1e6).contains(&x.abs()) || x == 0.0 { format!("{x}") } else { format!("{x:e}") };
+    format!("{number} {unit}").trim_end().to_string()
+}
 
 /// Checks an SI value of `key` against its plausible range; false (with a diagnostic) outside it.
 pub fn plausible(key: &str, si: f64, span: Span, errors: &mut Vec<Diagnostic>) -> bool {
@@ -54,7 +68,7 @@ pub fn plausible(key: &str, si: f64, span: Span, errors: &mut Vec<Diagnostic>) -
         Diagnostic::new(
             DiagnosticKind::OutOfRange,
             span,
-            format!("`{key}` = {si:e} (SI) is outside its plausible range, {}", l.shown),
+            format!("`{key}` = {} is outside its plausible range, {}", shown(si, l.si_unit), l.shown),
         )
         .hint("check the number, its exponent and its unit (`gearloss units` lists the units)"),
     );

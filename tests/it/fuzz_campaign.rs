@@ -1,7 +1,7 @@
 //! The fuzz campaign (not run in CI; README gives the command and its last result):
 //!
 //! ```text
-//! GEARLOSS_FUZZ_CASES=100000 cargo test --release --test it fuzz_campaign -- --ignored --nocapture
+//! GEARLOSS_FUZZ_CASES=100000 cargo test --release --test it -- --ignored --exact fuzz_campaign::fuzz_campaign --nocapture
 //! ```
 //!
 //! Every case is a grammar-aware mutation of a seed (every scene in specs/ and tests/specs/): numbers
@@ -21,7 +21,7 @@ use std::sync::Mutex;
 use std::time::Instant;
 
 /// Seconds a case may take before the watchdog calls it a hang.
-const CASE_SECONDS: u64 = 60;
+const CASE_SECONDS: u64 = 120;
 /// Largest sweep run whole in the campaign (larger valid scenes are checked only, and counted).
 const MAX_RUN_POINTS: usize = 20_000;
 const MAX_RUN_DYNAMICS_POINTS: usize = 100;
@@ -333,7 +333,7 @@ fn fuzz_campaign() {
     // Watchdog: the start time of each worker's case (ms since start; 0 = idle).
     let workers = 2;
     let busy: Vec<AtomicU64> = (0..workers).map(|_| AtomicU64::new(0)).collect();
-    let current: Vec<Mutex<String>> = (0..workers).map(|_| Mutex::new(String::new())).collect();
+    let current: Vec<Mutex<(usize, String)>> = (0..workers).map(|_| Mutex::new((0, String::new()))).collect();
     let next = AtomicUsize::new(0);
     let counts: Mutex<Vec<(Outcome, usize)>> = Mutex::new(Vec::new());
     let failures = AtomicUsize::new(0);
@@ -346,10 +346,10 @@ fn fuzz_campaign() {
             let now = started.elapsed().as_millis() as u64;
             for (w, b) in busy.iter().enumerate() {
                 let t = b.load(Ordering::Relaxed);
-                if t > 0 && now - t > CASE_SECONDS * 1000 {
-                    let text = current[w].lock().unwrap().clone();
+                if t > 0 && now.saturating_sub(t) > CASE_SECONDS * 1000 {
+                    let (k, text) = current[w].lock().unwrap().clone();
                     std::fs::write(dir.join("hang.gear"), text).unwrap();
-                    eprintln!("hang: a case ran over {CASE_SECONDS} s; it is in target/fuzz/hang.gear");
+                    eprintln!("hang: case {k} ran over {CASE_SECONDS} s; it is in target/fuzz/hang.gear");
                     std::process::abort();
                 }
             }
@@ -357,6 +357,8 @@ fn fuzz_campaign() {
         for w in 0..workers {
             let (busy, current, next, counts, failures, seeds, units, dir) =
                 (&busy, &current, &next, &counts, &failures, &seeds, &units, &dir);
+            // One single-threaded rayon pool per worker: cases never compete for one shared pool.
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a rayon pool");
             s.spawn(move || loop {
                 let k = next.fetch_add(1, Ordering::Relaxed);
                 if k >= cases {
@@ -369,11 +371,11 @@ fn fuzz_campaign() {
                 for _ in 0..[1, 1, 1, 2, 2, 3][rng.below(6)] {
                     text = mutate(&text, &mut rng, units);
                 }
-                *current[w].lock().unwrap() = text.clone();
+                *current[w].lock().unwrap() = (k, text.clone());
                 // Kept on disk while it runs: an abort (stack overflow, out of memory) leaves it here.
                 std::fs::write(dir.join(format!("current-{w}.gear")), &text).unwrap();
                 busy[w].store(started.elapsed().as_millis() as u64 + 1, Ordering::Relaxed);
-                let outcome = case(&text);
+                let outcome = pool.install(|| case(&text));
                 busy[w].store(0, Ordering::Relaxed);
                 if matches!(outcome, Outcome::Panic | Outcome::BadDiagnostic | Outcome::NonFinite) {
                     let n = failures.fetch_add(1, Ordering::Relaxed);
@@ -403,6 +405,18 @@ fn fuzz_campaign() {
         let _ = std::fs::remove_file(dir.join(format!("current-{w}.gear")));
     }
     assert_eq!(failed, 0, "failing cases are in target/fuzz/failures/");
+}
+
+/// Reruns one case of the campaign: `GEARLOSS_FUZZ_FILE=target/fuzz/hang.gear cargo test --release --test it
+/// -- --ignored --exact fuzz_campaign::fuzz_case --nocapture` prints its outcome and time.
+#[test]
+#[ignore = "reruns one fuzz case, on demand"]
+fn fuzz_case() {
+    let path = std::env::var("GEARLOSS_FUZZ_FILE").expect("GEARLOSS_FUZZ_FILE names the case");
+    let text = String::from_utf8_lossy(&std::fs::read(path).unwrap()).into_owned();
+    let started = Instant::now();
+    let outcome = case(&text);
+    println!("{outcome:?} in {:.2} s", started.elapsed().as_secs_f64());
 }
 
 /// A quick share of the campaign in every test run: 300 cases, so that the mutator itself stays tested.
