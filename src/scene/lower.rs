@@ -135,6 +135,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         (Some(gears), Some(operating)) if errors.is_empty() => {
             let scene = Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, analyses };
             super::lower_dynamics::check_frequency_ratio(&scene, &mut errors);
+            check_record_rows(&scene, &mut errors);
             if errors.is_empty() {
                 Ok(scene)
             } else {
@@ -216,6 +217,31 @@ fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operat
     }
     let detail_points = detail_points(&f, count as usize, errors)?;
     Some(Operating { pinion_torque: torque, pinion_speed: speed, detail_points })
+}
+
+/// Most summary rows a run may write (points × laws × formulations, and the dynamics rows): about
+/// 20 GB of records.csv.
+pub const MAX_RECORD_ROWS: u128 = 100_000_000;
+
+fn check_record_rows(scene: &Scene, errors: &mut Vec<Diagnostic>) {
+    let a = &scene.analyses;
+    let per_law = a.efficiency.as_ref().map_or(usize::from(a.friction_along_loa), |f| f.len().max(1));
+    let dynamics = if a.dynamics { scene.dynamics.as_ref().map_or(0, |d| d.formulations.len()) } else { 0 };
+    let per_point = (scene.friction.len() * per_law + dynamics) as u128;
+    let rows = scene.operating.count() as u128 * per_point;
+    if rows > MAX_RECORD_ROWS {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                scene.operating.pinion_speed.span,
+                format!(
+                    "{} operating points × {per_point} rows each (laws × formulations, dynamics) = {rows} summary rows, above the limit of {MAX_RECORD_ROWS}",
+                    scene.operating.count()
+                ),
+            )
+            .hint("fewer operating points or fewer laws; or split the study into several scenes"),
+        );
+    }
 }
 
 /// `detail_points = [1, 57]`: operating points (1-based, torque-major, as in records.csv) reported in

@@ -7,10 +7,29 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::friction::catalog;
 use crate::model::*;
 
+/// Most laws a scene may compare, a swept argument's values counted one by one (each is a column of
+/// every table and a curve of every plot of an operating point).
+pub const MAX_LAW_VARIANTS: usize = 256;
+
 pub(super) fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
     let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id.name()).collect();
     let f = Fields::read("the `friction` block", block.span, &block.items, &[], &[], &ids, errors);
-    f.calls.iter().flat_map(|c| lower_law(c, errors)).collect()
+    let laws: Vec<FrictionLawSpec> = f.calls.iter().flat_map(|c| lower_law(c, errors)).collect();
+    if laws.len() > MAX_LAW_VARIANTS {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                block.kind.span,
+                format!(
+                    "the `friction` block names {} laws (swept values counted), above the limit of {MAX_LAW_VARIANTS}",
+                    laws.len()
+                ),
+            )
+            .hint("sweep a law's argument over fewer values (its curve is smooth: 20 to 50 values show it)"),
+        );
+        return Vec::new();
+    }
+    laws
 }
 
 /// A law call checked against the catalogue: arguments known, with the right dimension, defaults filled in.
