@@ -149,9 +149,9 @@ fn seeds_in(dirs: &[&str]) -> Vec<String> {
                 .filter(|l| l.trim() != "numerics")
                 .map(|l| {
                     if l.contains("stability_map(") {
-                        "        stability_map(pinion_speed = [1000, 20000] rpm)"
+                        "        stability_map(pinion_speed = [1000, 20000] rpm)".to_string()
                     } else {
-                        l
+                        shorten_sweeps(l)
                     }
                 })
                 .collect::<Vec<_>>()
