@@ -383,6 +383,9 @@ fn fuzz_campaign() {
             let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("a rayon pool");
             s.spawn(move || loop {
                 let k = next.fetch_add(1, Ordering::Relaxed);
+                if k > 0 && k % 10_000 == 0 && k < cases {
+                    eprintln!("{k} cases in {:.0} s", started.elapsed().as_secs_f64());
+                }
                 if k >= cases {
                     next.fetch_add(1, Ordering::Relaxed);
                     return;
