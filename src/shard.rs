@@ -78,33 +78,32 @@ impl ShardSet {
     /// Reads and checks the manifests: one scene, one shard count, every shard exactly once; the
     /// error says which folder is wrong and why.
     pub fn read(folders: &[PathBuf]) -> Result<ShardSet, String> {
-        let bad = |m: String| m;
         let mut manifests = Vec::new();
         for dir in folders {
             let path = dir.join(MANIFEST);
             let text = std::fs::read_to_string(&path).map_err(|e| {
-                bad(format!(
+                format!(
                     "{}: cannot read the shard manifest: {e} (is this a folder written by `gearloss run --shard K/N`?)",
                     path.display()
-                ))
+                )
             })?;
             let m: Manifest = serde_json::from_str(&text)
-                .map_err(|e| bad(format!("{}: not a gearloss shard manifest: {e}", path.display())))?;
+                .map_err(|e| format!("{}: not a gearloss shard manifest: {e}", path.display()))?;
             if m.format != FORMAT {
-                return Err(bad(format!("{}: shard format {} is not {FORMAT}", path.display(), m.format)));
+                return Err(format!("{}: shard format {} is not {FORMAT}", path.display(), m.format));
             }
             manifests.push((dir.clone(), m));
         }
         let Some((_, first)) = manifests.first() else {
-            return Err(bad("no shard folders given".into()));
+            return Err("no shard folders given".to_string());
         };
         let (count, source, source_name) = (first.shard.count, first.source.clone(), first.source_name.clone());
         for (dir, m) in &manifests {
             if m.source != source || m.source_name != source_name {
-                return Err(bad(format!("{} holds a shard of another scene than {source_name}", dir.display())));
+                return Err(format!("{} holds a shard of another scene than {source_name}", dir.display()));
             }
             if m.shard.count != count {
-                return Err(bad(format!("{} is a shard of {}, the others of {count}", dir.display(), m.shard.count)));
+                return Err(format!("{} is a shard of {}, the others of {count}", dir.display(), m.shard.count));
             }
         }
         manifests.sort_by_key(|(_, m)| m.shard.index);
@@ -112,11 +111,11 @@ impl ShardSet {
         if have != (1..=count).collect::<Vec<_>>() {
             let missing: Vec<String> =
                 (1..=count).filter(|k| !have.contains(k)).map(|k| format!("{k}/{count}")).collect();
-            return Err(bad(format!(
+            return Err(format!(
                 "merge needs each of the {count} shards exactly once; got {:?}{}",
                 have,
                 if missing.is_empty() { String::new() } else { format!(", missing {}", missing.join(", ")) }
-            )));
+            ));
         }
         let mut tally = Tally::default();
         let mut dirs = Vec::new();

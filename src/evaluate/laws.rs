@@ -46,6 +46,16 @@ pub struct LawEvaluation {
     pub curves: Option<LawCurves>,
 }
 
+impl LawEvaluation {
+    /// The law's parameters at the point, owned (for the record files and the report).
+    pub fn parameter_values(&self) -> Vec<super::records::ParameterValue> {
+        self.parameters
+            .iter()
+            .map(|p| super::records::ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() })
+            .collect()
+    }
+}
+
 /// Sampled curves of one law for plots.
 #[derive(Debug, Clone, Serialize)]
 pub struct LawCurves {

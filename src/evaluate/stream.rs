@@ -7,7 +7,7 @@ use rayon::prelude::*;
 
 use super::dynamics::{DynamicsPoint, DynamicsSetup};
 use super::laws::{evaluate_law, LawEvaluation};
-use super::records::{ParameterValue, RecordSink, RowKind, SummaryRow};
+use super::records::{RecordSink, RowKind, SummaryRow};
 use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
 use super::{case_at, contact_table, state_at, Evaluation, Plan};
 use crate::efficiency::EfficiencyResult;
@@ -60,10 +60,6 @@ pub fn evaluate_records(
 
 /// A point's rows, tally and dynamics (when the scene asks for them).
 type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
-
-fn parameters(law: &LawEvaluation) -> Vec<ParameterValue> {
-    law.parameters.iter().map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() }).collect()
-}
 
 /// The rows and the tally of point `k`.
 fn point_summary(
@@ -129,7 +125,7 @@ fn point_summary(
                 mean_abs_mu: Some(law.mean_abs_mu.value),
                 validity_samples: Some(law.validity.samples),
                 validity_outside: Some(law.validity.outside),
-                parameters: parameters(&law),
+                parameters: law.parameter_values(),
                 ..blank.clone()
             };
             if law.efficiency.is_empty() {

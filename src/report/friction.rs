@@ -149,12 +149,7 @@ pub fn law_label(spec: &FrictionLawSpec) -> String {
 }
 
 pub fn parameters(law: &LawEvaluation) -> Parameters {
-    Parameters(
-        law.parameters
-            .iter()
-            .map(|p| ParameterValue { name: p.name.into(), value: p.value, unit: p.unit.into() })
-            .collect(),
-    )
+    Parameters(law.parameter_values())
 }
 
 pub fn law_report(spec: &FrictionLawSpec, pe: &PointEvaluation, law: &LawEvaluation) -> LawReport {
