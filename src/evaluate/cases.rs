@@ -23,11 +23,6 @@ pub struct Case {
     pub label: String,
 }
 
-/// The cases of a scene's operating sweeps (all of them: small sweeps, tests).
-pub fn cases(op: &crate::model::Operating) -> Vec<Case> {
-    (0..op.count()).map(|k| case_at(op, k)).collect()
-}
-
 /// Operating point `k` (0-based, torque-major) of a scene's sweeps, built on its own so that a
 /// sweep of any size is never expanded in memory.
 pub fn case_at(op: &crate::model::Operating, k: usize) -> Case {
@@ -120,10 +115,18 @@ pub const MAX_CURVES: usize = 6;
 
 /// Indices of at most `MAX_CURVES` values evenly picked from `n`.
 pub fn pick(n: usize) -> Vec<usize> {
-    if n <= MAX_CURVES {
+    evenly(n, MAX_CURVES)
+}
+
+/// Indices of at most `max` values evenly picked from `n` (the first and the last included).
+pub fn evenly(n: usize, max: usize) -> Vec<usize> {
+    if n <= max {
         return (0..n).collect();
     }
-    let mut v: Vec<usize> = (0..MAX_CURVES).map(|i| i * (n - 1) / (MAX_CURVES - 1)).collect();
+    if max < 2 {
+        return vec![0];
+    }
+    let mut v: Vec<usize> = (0..max).map(|i| i * (n - 1) / (max - 1)).collect();
     v.dedup();
     v
 }

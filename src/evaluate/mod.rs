@@ -24,7 +24,7 @@ use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
 use crate::tribology::{Film, FilmInputs, Tribology};
 
 pub use cases::{
-    case_at, cases, cycle_times, pick, state_at, table_positions, Case, ContactCurves, CURVE_SAMPLES, MAX_CURVES,
+    case_at, cycle_times, pick, state_at, table_positions, Case, ContactCurves, CURVE_SAMPLES, MAX_CURVES,
     TABLE_INTERVALS,
 };
 pub use laws::{LawCurves, LawEvaluation, ValiditySummary};

@@ -5,6 +5,7 @@
 
 use std::ops::Range;
 
+pub use super::cases::evenly;
 use super::cases::{case_at, Case, MAX_CURVES};
 use crate::model::Operating;
 
@@ -32,19 +33,6 @@ impl Shard {
         let at = |i: usize| ((i as u128 * n as u128) / self.count as u128) as usize;
         at(self.index - 1)..at(self.index)
     }
-}
-
-/// Indices of at most `max` values evenly picked from `n` (the first and the last included).
-pub fn evenly(n: usize, max: usize) -> Vec<usize> {
-    if n <= max {
-        return (0..n).collect();
-    }
-    if max < 2 {
-        return vec![0];
-    }
-    let mut v: Vec<usize> = (0..max).map(|i| i * (n - 1) / (max - 1)).collect();
-    v.dedup();
-    v
 }
 
 /// Which points a run evaluates, details and keeps.
