@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use super::Evaluation;
-use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
+use crate::geometry::{ContactPoint, OperatingState, PairGeometry};
 use crate::model::Scene;
 
 /// One operating point of the scene: the product of its sweeps expanded once, torque-major, with
@@ -62,7 +62,7 @@ pub struct ContactCurves {
 }
 
 /// Table positions: A..E in equal steps, with B, P and D inserted, each labelled where it is a named point.
-pub fn table_positions(g: &SpurGeometry) -> Vec<(Option<&'static str>, f64)> {
+pub fn table_positions(g: &PairGeometry) -> Vec<(Option<&'static str>, f64)> {
     let p = &g.points;
     let mut rows: Vec<(Option<&'static str>, f64)> =
         (0..=TABLE_INTERVALS).map(|i| (None, p.a + (p.e - p.a) * i as f64 / TABLE_INTERVALS as f64)).collect();

@@ -11,7 +11,7 @@ use crate::dynamics::response::PeriodicResponse;
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, PeriodicModel, SdofSystem, StiffnessModel};
 use crate::evaluate::Case;
 use crate::friction::{FrictionLaw, LawContext};
-use crate::geometry::{OperatingState, SpurGeometry};
+use crate::geometry::{OperatingState, PairGeometry};
 use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
 use crate::numerics::roots::brent;
 
@@ -69,7 +69,7 @@ pub struct DynamicsEvaluation {
     pub numerics: Option<(DynamicFormulation, usize, Study)>,
 }
 
-fn stiffness_model(spec: &DynamicsSpec, g: &SpurGeometry) -> (StiffnessModel, &'static str) {
+fn stiffness_model(spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
     match &spec.stiffness {
         StiffnessSpec::Pairs { single, double, triple } => (
             StiffnessModel::PairsInContact { single: *single, double: *double, triple: triple.unwrap_or(1.5 * double) },

@@ -19,7 +19,7 @@ use serde::Serialize;
 use crate::efficiency;
 use crate::friction::LawContext;
 use crate::geometry::contact::{reduced_modulus, Sharing};
-use crate::geometry::{ContactPoint, OperatingState, SpurGeometry};
+use crate::geometry::{ContactPoint, OperatingState, PairGeometry};
 use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
 use crate::tribology::{Film, FilmInputs, Tribology};
 
@@ -43,7 +43,7 @@ pub struct Evaluation {
     pub positions: Vec<f64>,
     /// Whether an analysis needs the friction laws.
     pub wants_friction: bool,
-    pub geometry: SpurGeometry,
+    pub geometry: PairGeometry,
     /// E' (Pa).
     pub reduced_modulus: f64,
     pub sharing: LoadSharing,

@@ -36,13 +36,13 @@ use serde::Serialize;
 pub use law_id::LawId;
 
 use crate::geometry::contact::Sharing;
-use crate::geometry::{ContactPoint, Mesh, OperatingState, SpurGeometry};
+use crate::geometry::{ContactPoint, Mesh, OperatingState, PairGeometry};
 use crate::tribology::Tribology;
 
 /// Everything a law may read at one operating point.
 #[derive(Debug, Clone, Copy)]
 pub struct LawContext<'a> {
-    pub geometry: &'a SpurGeometry,
+    pub geometry: &'a PairGeometry,
     pub state: OperatingState,
     pub tribology: Tribology,
     pub sharing: Sharing,

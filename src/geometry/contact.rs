@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use super::spur::SpurGeometry;
+use super::pair::PairGeometry;
 
 /// One operating point in SI: pinion torque (N·m) and pinion speed (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -63,7 +63,7 @@ pub struct ContactPoint {
     pub hertz_half_width: f64,
 }
 
-impl SpurGeometry {
+impl PairGeometry {
     /// Normal load along the line of action, F_bn = T_p / r_b1 (N).
     pub fn normal_load(&self, op: &OperatingState) -> f64 {
         op.pinion_torque / self.base_radius[0]
@@ -83,7 +83,7 @@ impl SpurGeometry {
     }
 
     /// The contact state at `u` (from T1) for an operating point, with reduced modulus E'; the
-    /// number of pairs in contact is [`SpurGeometry::pairs_in_contact`].
+    /// number of pairs in contact is [`PairGeometry::pairs_in_contact`].
     pub fn contact_at(&self, u: f64, op: &OperatingState, reduced_modulus: f64, sharing: Sharing) -> ContactPoint {
         self.contact_with_pairs(u, op, reduced_modulus, sharing, self.pairs_in_contact(u))
     }

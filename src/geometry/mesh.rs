@@ -3,17 +3,17 @@
 //!
 //! Time is measured in mesh periods, τ ∈ [0, 1), with τ = 0 when a pair enters contact at A. The
 //! pairs in contact at τ are at u_k = T1A + p_b (τ + k), k = 0, 1, 2, …, while u_k < T1E (at most
-//! [`MAX_CONTACTS`] for ε_α < 4). [`SpurGeometry`] answers the questions of the cycle that do not
+//! [`MAX_CONTACTS`] for ε_α < 4). [`PairGeometry`] answers the questions of the cycle that do not
 //! depend on the load; [`Mesh`] adds an operating point and gives the contact states.
 //! Efficiency, friction and dynamics all read the cycle from here.
 
 use super::contact::Sharing;
-use super::{ContactPoint, OperatingState, SpurGeometry};
+use super::{ContactPoint, OperatingState, PairGeometry};
 
 /// The most pairs that can be in contact at once (ε_α < 4).
 pub const MAX_CONTACTS: usize = 4;
 
-impl SpurGeometry {
+impl PairGeometry {
     /// How many pairs are in contact at time τ of the mesh cycle.
     pub fn pairs_at(&self, tau: f64) -> usize {
         (0..MAX_CONTACTS)
@@ -60,7 +60,7 @@ impl SpurGeometry {
 /// A pair at one operating point: the contact states of the mesh cycle.
 #[derive(Debug, Clone, Copy)]
 pub struct Mesh<'a> {
-    pub pair: &'a SpurGeometry,
+    pub pair: &'a PairGeometry,
     pub state: OperatingState,
     /// E' (Pa).
     pub reduced_modulus: f64,

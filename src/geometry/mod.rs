@@ -1,14 +1,14 @@
 //! Involute gear geometry and the contact state along the line of action (plain SI `f64`).
 //!
-//! Knows nothing of scenes, friction or reports: it takes a [`spur::SpurPairInput`] and gives numbers.
+//! Knows nothing of scenes, friction or reports: it takes a [`pair::PairInput`] and gives numbers.
 
 pub mod contact;
 pub mod involute;
 pub mod mesh;
-pub mod spur;
+pub mod pair;
 pub mod stiffness;
 
 pub use contact::{ContactPoint, OperatingState};
 pub use involute::involute;
 pub use mesh::{Contacts, Mesh};
-pub use spur::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput, TipSource};
+pub use pair::{GeometryProblem, PairGeometry, PairInput, PairPart, TipSource};

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use super::SpurGeometry;
+use super::PairGeometry;
 
 /// Mesh stiffness over one mesh cycle.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -54,7 +54,7 @@ impl StiffnessModel {
 }
 
 /// The ISO 6336-1 single-pair stiffness per face width c' (N/(mm·µm)) (physics notes).
-pub fn iso_6336_single_stiffness(g: &SpurGeometry) -> f64 {
+pub fn iso_6336_single_stiffness(g: &PairGeometry) -> f64 {
     let (z1, z2) = (g.teeth[0] as f64, g.teeth[1] as f64);
     let [x1, x2] = g.profile_shift;
     let q = 0.04723 + 0.15551 / z1 + 0.25791 / z2 - 0.00635 * x1 - 0.11654 * x1 / z1 - 0.00193 * x2 - 0.24188 * x2 / z2
@@ -68,7 +68,7 @@ pub fn iso_6336_single_stiffness(g: &SpurGeometry) -> f64 {
 
 impl StiffnessModel {
     /// The ISO 6336-1 estimate, rectangular with k_n = n c' b (physics notes, "Mesh stiffness").
-    pub fn iso_6336(g: &SpurGeometry) -> StiffnessModel {
+    pub fn iso_6336(g: &PairGeometry) -> StiffnessModel {
         // c' in N/(mm·µm) times b in mm: N/µm, ×1e6: N/m.
         let k = iso_6336_single_stiffness(g) * g.face_width * 1e3 * 1e6;
         StiffnessModel::PairsInContact { single: k, double: 2.0 * k, triple: 3.0 * k }

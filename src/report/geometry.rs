@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use super::number::{m, pa, rad, Num, Q};
 use crate::evaluate::Evaluation;
-use crate::geometry::{SpurGeometry, TipSource};
+use crate::geometry::{PairGeometry, TipSource};
 use crate::model::LoadSharing;
 
 #[derive(Debug, Clone, Serialize)]
@@ -68,7 +68,7 @@ pub struct GeometryReport {
     pub wheel: GearReport,
 }
 
-pub(super) fn gear_report(g: &SpurGeometry, i: usize) -> GearReport {
+pub(super) fn gear_report(g: &PairGeometry, i: usize) -> GearReport {
     GearReport {
         teeth: g.teeth[i],
         profile_shift: Num(g.profile_shift[i]),

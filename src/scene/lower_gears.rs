@@ -9,7 +9,7 @@ use super::ast::*;
 use super::fields::Fields;
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
-use crate::geometry::{GeometryProblem, PairPart, SpurGeometry, SpurPairInput};
+use crate::geometry::{GeometryProblem, PairGeometry, PairInput, PairPart};
 use crate::model::*;
 
 const GEARS_KEYS: &[&str] =
@@ -246,9 +246,9 @@ fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut 
 
 impl GearPair {
     /// The geometry input in SI.
-    pub fn spur_input(&self) -> SpurPairInput {
+    pub fn pair_input(&self) -> PairInput {
         let g = |x: &Option<Given<Length>>| x.as_ref().map(|d| d.value.get::<meter>());
-        SpurPairInput {
+        PairInput {
             module: self.module.value.get::<meter>(),
             pressure_angle: self.pressure_angle.value.value,
             teeth: [self.pinion.teeth.value, self.wheel.teeth.value],
@@ -259,8 +259,8 @@ impl GearPair {
         }
     }
 
-    pub fn geometry(&self) -> Result<SpurGeometry, Vec<GeometryProblem>> {
-        SpurGeometry::compute(&self.spur_input())
+    pub fn geometry(&self) -> Result<PairGeometry, Vec<GeometryProblem>> {
+        PairGeometry::compute(&self.pair_input())
     }
 }
 

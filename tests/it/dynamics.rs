@@ -12,18 +12,18 @@ use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
-use gearloss::geometry::{OperatingState, SpurGeometry};
+use gearloss::geometry::{OperatingState, PairGeometry};
 
 const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
 const J: [f64; 2] = [3.45e-4, 15.24e-4];
 
-fn fzg() -> (gearloss::Scene, SpurGeometry) {
+fn fzg() -> (gearloss::Scene, PairGeometry) {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     let g = scene.gears.geometry().unwrap();
     (scene, g)
 }
 
-fn ctx<'a>(scene: &gearloss::Scene, g: &'a SpurGeometry, rpm: f64, torque: f64) -> LawContext<'a> {
+fn ctx<'a>(scene: &gearloss::Scene, g: &'a PairGeometry, rpm: f64, torque: f64) -> LawContext<'a> {
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: torque, pinion_speed: rpm * std::f64::consts::PI / 30.0 },
@@ -281,21 +281,21 @@ fn extreme_friction_damping_and_load() {
 /// a stiffness that follows the number of pairs.
 #[test]
 fn extreme_contact_ratios() {
-    use gearloss::geometry::SpurPairInput;
+    use gearloss::geometry::PairInput;
     let (scene, _) = fzg();
-    let fzg_input = scene.gears.spur_input();
+    let fzg_input = scene.gears.pair_input();
     let hcr_input = crate::high_contact_ratio_input();
-    let with_ratio = |base: SpurPairInput, target: f64| -> SpurGeometry {
+    let with_ratio = |base: PairInput, target: f64| -> PairGeometry {
         // Scale both tip diameters' addenda until ε_α hits the target (bisection on the scale).
         let (mut lo, mut hi) = (0.3, 1.6);
         let g_at = |s: f64| {
-            let mut i: SpurPairInput = base;
+            let mut i: PairInput = base;
             for k in 0..2 {
                 let r = base.module * base.teeth[k] as f64 / 2.0;
                 let ra = base.tip_diameter[k].unwrap() / 2.0;
                 i.tip_diameter[k] = Some(2.0 * (r + s * (ra - r)));
             }
-            SpurGeometry::compute(&i)
+            PairGeometry::compute(&i)
         };
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);

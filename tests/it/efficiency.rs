@@ -6,19 +6,19 @@ use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::LawContext;
 use gearloss::geometry::contact::{reduced_modulus, Sharing};
-use gearloss::geometry::{OperatingState, SpurGeometry, SpurPairInput};
+use gearloss::geometry::{OperatingState, PairGeometry, PairInput};
 use gearloss::model::Formulation::{External, Internal};
 
-fn fzg_input(tips: bool) -> SpurPairInput {
+fn fzg_input(tips: bool) -> PairInput {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
-    let mut input = scene.gears.spur_input();
+    let mut input = scene.gears.pair_input();
     if !tips {
         input.tip_diameter = [None, None];
     }
     input
 }
 
-fn ctx(g: &SpurGeometry) -> LawContext<'_> {
+fn ctx(g: &PairGeometry) -> LawContext<'_> {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     LawContext {
         geometry: g,
@@ -34,7 +34,7 @@ fn ctx(g: &SpurGeometry) -> LawContext<'_> {
 fn fzg_type_c_mean_efficiency_matches_the_paper() {
     let cases = [(true, 0.04, 99.221, 99.226), (true, 0.08, 98.442, 98.462), (false, 0.08, 98.411, 98.432)];
     for (tips, mu, ext, int) in cases {
-        let g = SpurGeometry::compute(&fzg_input(tips)).unwrap();
+        let g = PairGeometry::compute(&fzg_input(tips)).unwrap();
         let c = ctx(&g);
         let law = Coulomb { mu };
         let e = 100.0 * mean_efficiency(&c, &law, External).value;
@@ -47,7 +47,7 @@ fn fzg_type_c_mean_efficiency_matches_the_paper() {
 /// η = 1 at the pitch point (single contact there), and 97 % < η < 100 % over the cycle at μ = 0.08.
 #[test]
 fn efficiency_is_one_at_the_pitch_point_and_bounded() {
-    let g = SpurGeometry::compute(&fzg_input(true)).unwrap();
+    let g = PairGeometry::compute(&fzg_input(true)).unwrap();
     let c = ctx(&g);
     let law = Coulomb { mu: 0.08 };
     let tau_p = (g.points.p - g.points.a) / g.base_pitch;
@@ -64,7 +64,7 @@ fn efficiency_is_one_at_the_pitch_point_and_bounded() {
 #[test]
 fn external_mean_equals_one_minus_mu_hv() {
     for tips in [true, false] {
-        let g = SpurGeometry::compute(&fzg_input(tips)).unwrap();
+        let g = PairGeometry::compute(&fzg_input(tips)).unwrap();
         let c = ctx(&g);
         let hv = ohlendorf_loss_factor(&c);
         for mu in [0.02, 0.05, 0.1] {
@@ -76,7 +76,7 @@ fn external_mean_equals_one_minus_mu_hv() {
 
 #[test]
 fn mean_reports_an_error_estimate_within_tolerance() {
-    let g = SpurGeometry::compute(&fzg_input(true)).unwrap();
+    let g = PairGeometry::compute(&fzg_input(true)).unwrap();
     let c = ctx(&g);
     let m = mean_efficiency(&c, &Coulomb { mu: 0.08 }, Internal);
     assert!(m.error < 1e-10 * m.value, "error {}", m.error);
@@ -92,7 +92,7 @@ fn mean_reports_an_error_estimate_within_tolerance() {
 /// Counting each contact's whole load in the balance would double the loss in the double-contact zone.
 #[test]
 fn load_sharing_none_changes_only_what_a_law_sees() {
-    let g = SpurGeometry::compute(&fzg_input(true)).unwrap();
+    let g = PairGeometry::compute(&fzg_input(true)).unwrap();
     let equal = ctx(&g);
     let whole = LawContext { sharing: Sharing::Whole, ..ctx(&g) };
     let law = Coulomb { mu: 0.08 };

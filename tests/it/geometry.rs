@@ -2,9 +2,9 @@
 
 use std::f64::consts::PI;
 
-use gearloss::geometry::{involute, SpurGeometry, TipSource};
+use gearloss::geometry::{involute, PairGeometry, TipSource};
 
-fn fzg() -> SpurGeometry {
+fn fzg() -> PairGeometry {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     scene.gears.geometry().unwrap()
 }
@@ -88,7 +88,7 @@ fn inch_scene_contact_ratio_by_the_iso_21771_tangent_form() {
 #[test]
 fn high_contact_ratio_pairs_share_load_by_thirds() {
     let input = crate::high_contact_ratio_input();
-    let g = SpurGeometry::compute(&input).unwrap();
+    let g = PairGeometry::compute(&input).unwrap();
     assert!(g.contact_ratio > 2.0 && g.contact_ratio < 3.0, "ε_α = {}", g.contact_ratio);
     let p = g.points;
     // Within a mesh cycle the reference pair sees 3 pairs while a third pair is inside (A, E), else 2.
@@ -142,7 +142,7 @@ fn contact_state_closed_forms() {
 /// FZG type C (ε_α = 1.44) the classical A B P D E.
 #[test]
 fn pair_change_points_for_any_contact_ratio() {
-    let g = SpurGeometry::compute(&crate::high_contact_ratio_input()).unwrap();
+    let g = PairGeometry::compute(&crate::high_contact_ratio_input()).unwrap();
     assert!(g.contact_ratio > 2.0 && g.contact_ratio < 3.0, "ε_α = {}", g.contact_ratio);
     let changes = g.pair_change_points();
     let (a, e, pb) = (g.points.a, g.points.e, g.base_pitch);

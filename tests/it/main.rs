@@ -27,8 +27,8 @@ pub fn scene(path: &Path) -> gearloss::Scene {
 }
 
 /// A 40/60-tooth, 14.5° pair with a long addendum: ε_α ≈ 2.47, up to three pairs in contact.
-pub fn high_contact_ratio_input() -> gearloss::geometry::SpurPairInput {
-    gearloss::geometry::SpurPairInput {
+pub fn high_contact_ratio_input() -> gearloss::geometry::PairInput {
+    gearloss::geometry::PairInput {
         module: 3e-3,
         pressure_angle: 14.5f64.to_radians(),
         teeth: [40, 60],

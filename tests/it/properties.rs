@@ -7,17 +7,17 @@ use gearloss::friction::smoothed_coulomb::SmoothedCoulomb;
 use gearloss::friction::xu::Xu;
 use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
-use gearloss::geometry::{OperatingState, SpurGeometry, SpurPairInput};
+use gearloss::geometry::{OperatingState, PairGeometry, PairInput};
 use gearloss::model::Formulation::{External, Internal};
 use gearloss::tribology::Tribology;
 use proptest::prelude::*;
 
-fn pair() -> impl Strategy<Value = SpurGeometry> {
+fn pair() -> impl Strategy<Value = PairGeometry> {
     (14u32..40, 1.0f64..4.0, 0.5e-3f64..10e-3, -0.3f64..0.6, -0.3f64..0.6, 15.0f64..25.0).prop_filter_map(
         "meshing pair",
         |(z1, ratio, m, x1, x2, alpha)| {
             let z2 = (z1 as f64 * ratio).round() as u32;
-            SpurGeometry::compute(&SpurPairInput {
+            PairGeometry::compute(&PairInput {
                 module: m,
                 pressure_angle: alpha.to_radians(),
                 teeth: [z1, z2],
@@ -31,7 +31,7 @@ fn pair() -> impl Strategy<Value = SpurGeometry> {
     )
 }
 
-fn context(g: &SpurGeometry, torque: f64, rpm: f64, sharing: Sharing) -> LawContext<'_> {
+fn context(g: &PairGeometry, torque: f64, rpm: f64, sharing: Sharing) -> LawContext<'_> {
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: torque, pinion_speed: rpm * std::f64::consts::PI / 30.0 },

@@ -13,7 +13,7 @@ pub use super::involute::{inverse_involute, involute};
 
 /// What the geometry needs, in SI units (m, rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SpurPairInput {
+pub struct PairInput {
     pub module: f64,
     pub pressure_angle: f64,
     /// [pinion, wheel]
@@ -53,7 +53,7 @@ pub struct GeometryProblem {
 
 /// The geometry of an external spur pair. Index 0 is the pinion (driving), 1 the wheel.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SpurGeometry {
+pub struct PairGeometry {
     pub module: f64,
     pub pressure_angle: f64,
     pub teeth: [u32; 2],
@@ -110,9 +110,9 @@ impl LoaPoints {
     }
 }
 
-impl SpurGeometry {
+impl PairGeometry {
     /// Computes the pair's geometry and refuses pairs that cannot mesh, with every problem found.
-    pub fn compute(input: &SpurPairInput) -> Result<SpurGeometry, Vec<GeometryProblem>> {
+    pub fn compute(input: &PairInput) -> Result<PairGeometry, Vec<GeometryProblem>> {
         let mut problems = Vec::new();
         let m = input.module;
         let alpha = input.pressure_angle;
@@ -284,7 +284,7 @@ impl SpurGeometry {
             });
             return Err(problems);
         }
-        Ok(SpurGeometry {
+        Ok(PairGeometry {
             module: m,
             pressure_angle: alpha,
             teeth: input.teeth,
@@ -370,7 +370,7 @@ impl SpurGeometry {
     }
 
     /// ε_α by ISO 21771's tangent form, ε_α = [z1 (tan α_a1 − tan α_w) + z2 (tan α_a2 − tan α_w)] / 2π,
-    /// independent of the line-of-action construction used by [`SpurGeometry::compute`].
+    /// independent of the line-of-action construction used by [`PairGeometry::compute`].
     pub fn contact_ratio_iso21771(&self) -> f64 {
         let mut sum = 0.0;
         for i in 0..2 {
