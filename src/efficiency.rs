@@ -17,6 +17,7 @@
 use serde::Serialize;
 
 use crate::friction::{FrictionLaw, LawContext};
+use crate::geometry::mesh::LINE_NODES;
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
 use crate::numerics::roots::extrema;
@@ -107,7 +108,8 @@ pub fn efficiency_of(
 /// [external, internal].
 pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> [f64; 2] {
     let g = ctx.geometry;
-    let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
+    // Arms of the normal force, r_b cos β_b (He & Singh eq 8; r_b for a spur pair).
+    let (rp, rw) = (g.normal_force_arm(0), g.normal_force_arm(1));
     let cap = internal_mu_cap(law);
     let mut sum = 0.0;
     let (mut num, mut den) = (rw, rp);
@@ -139,12 +141,41 @@ pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: For
 /// [`MEAN_TOLERANCE`]. Every law is treated as singular at P: the t⁴ map is exact for the
 /// polynomial pieces of the Coulomb laws and removes the |s|^q kinks of the others.
 pub fn mean_efficiencies(ctx: &LawContext, law: &dyn FrictionLaw) -> [Integral; 2] {
+    if ctx.geometry.is_helical() {
+        return mean_efficiencies_along_lines(ctx, law);
+    }
     integrate_singular_n(
         |tau, d| efficiencies_of(ctx, law, &ctx.mesh().contacts_near_pitch(tau, d)),
         &break_times(ctx, law),
         &ctx.geometry.pitch_times(),
         MEAN_TOLERANCE,
     )
+}
+
+/// η̄ of a helical pair: the time integral over the cycle (adaptive Gauss–Kronrod between the break
+/// times, graded at the times a line end passes the pitch line) of η(τ), whose line integrals use
+/// [`LINE_NODES`] and 2 × [`LINE_NODES`] graded Gauss–Legendre points per piece of line
+/// ([`crate::geometry::Mesh::line_contacts`]). The doubled rule gives the value; the error estimate
+/// is the larger of the time quadrature's and the difference of the two rules (0 up to rounding for
+/// the Coulomb laws, whose line integrands are polynomials the rules integrate exactly).
+pub fn mean_efficiencies_along_lines(ctx: &LawContext, law: &dyn FrictionLaw) -> [Integral; 2] {
+    let mesh = ctx.mesh();
+    let [e1, i1, e2, i2] = integrate_singular_n(
+        |tau, _| {
+            let [a, b] = efficiencies_of(ctx, law, &mesh.line_contacts(tau, LINE_NODES));
+            let [c, d] = efficiencies_of(ctx, law, &mesh.line_contacts(tau, 2 * LINE_NODES));
+            [a, b, c, d]
+        },
+        &break_times(ctx, law),
+        &ctx.geometry.pitch_times(),
+        MEAN_TOLERANCE,
+    );
+    let combine = |coarse: Integral, fine: Integral| Integral {
+        value: fine.value,
+        error: fine.error.max((fine.value - coarse.value).abs()),
+        evaluations: fine.evaluations,
+    };
+    [combine(e1, e2), combine(i1, i2)]
 }
 
 /// Positions along the line of action where a law's integrand changes form (for means over A–E).
@@ -167,11 +198,21 @@ pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
 }
 
 /// Ohlendorf's gear loss factor H_V = π(u+1)/(z1 u cos β_b) · (1 − ε_α + ε_1² + ε_2²) (spur: cos β_b = 1).
+///
+/// For a helical pair 1 − μ H_V is the mean efficiency of a *slice* model (equal load sharing within
+/// each transverse slice of the face), not of constant stiffness density along the contact lines,
+/// which puts more load where more line length is and so weights the ends of the path (physics
+/// notes, "Helical pairs"): the two agree as β → 0 and when ε_β is an integer.
 pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
     let g = ctx.geometry;
     let u = g.gear_ratio;
     let [e1, e2] = g.addendum_contact_ratio;
-    std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u) * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2)
+    let h = std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u) * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2);
+    if g.is_helical() {
+        h / g.base_helix_angle.cos()
+    } else {
+        h
+    }
 }
 
 /// Local friction power loss of one contact, |μ| F v_s (W), with F = its force share of F_bn.

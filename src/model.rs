@@ -50,6 +50,9 @@ pub enum StiffnessSpec {
     Iso6336,
     /// Values over one mesh cycle (N/m), equally spaced, t = 0 when a pair enters at A.
     Table(Vec<f64>),
+    /// Stiffness density k along the contact lines (N/m²), He & Singh's k: k(t) = k cos²β_b L(t)
+    /// along the transverse line of action (k × face width per pair for a spur pair).
+    PerLength(f64),
 }
 
 /// The solver of the periodic response.
@@ -84,19 +87,31 @@ pub enum LoadSharing {
     None,
 }
 
-/// How the module was given.
+/// How the module was given. For a helical pair `module` and `diametral_pitch` are normal values
+/// (ISO 21771, AGMA), the `transverse_*` keys transverse ones: m_n = m_t cos β.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ModuleSource {
     Module,
     /// `diametral_pitch = 10 1/in`: m = 1/P_d.
     DiametralPitch(Given<ReciprocalLength>),
+    /// `transverse_module = 5 mm`: m_n = m_t cos β.
+    TransverseModule(Given<Length>),
+    /// `transverse_diametral_pitch = 8 1/in`: m_n = cos β / P_dt.
+    TransverseDiametralPitch(Given<ReciprocalLength>),
 }
 
 #[derive(Debug, Clone)]
 pub struct GearPair {
     pub module: Given<Length>,
     pub module_source: ModuleSource,
+    /// Normal pressure angle α_n (the pressure angle of a spur pair).
     pub pressure_angle: Given<Angle>,
+    /// `transverse_pressure_angle` when it was given instead: tan α_n = tan α_t cos β.
+    pub transverse_pressure_angle: Option<Given<Angle>>,
+    /// Helix angle β at the reference circle; None for a spur pair.
+    pub helix_angle: Option<Given<Angle>>,
+    /// `hand = left | right`: accepted and reported; the models here do not depend on it.
+    pub hand: Option<String>,
     pub center_distance: Option<Given<Length>>,
     pub face_width: Given<Length>,
     pub load_sharing: LoadSharing,

@@ -40,11 +40,26 @@ fn fundamental(p: f64, q: f64, tau: f64) -> Option<Matrix2<f64>> {
     Some(Matrix2::new(ai, bi, s * aip, s * bip))
 }
 
+/// True when the undamped system's a(t) is linear in t on every segment: the spur internal
+/// formulation with a rectangular k (f affine for a constant-magnitude law), a helical pair's base
+/// formulation (K_e = k cos²β_b L(t), piecewise linear) and the chord variant of the internal one
+/// (He & Singh eqs 25–35).
+pub fn linear_on_segments(sys: &SdofSystem) -> bool {
+    use crate::geometry::stiffness::StiffnessModel;
+    sys.damping == 0.0
+        && match sys.formulation {
+            DynamicFormulation::Internal => sys.stiffness.is_piecewise_constant(),
+            DynamicFormulation::Base => matches!(sys.stiffness, StiffnessModel::PerLength { .. }),
+            DynamicFormulation::InternalChord => true,
+            DynamicFormulation::External => false,
+        }
+}
+
 /// The homogeneous propagator Φ over [start, start + h] by the Airy closed form, for an undamped
 /// segment (c = 0). None when the closed form does not apply (damped, or a(τ) not linear: the base
 /// and external formulations have constant a and are covered by the exact propagator).
 pub fn airy_propagator(sys: &SdofSystem, start: f64, end: f64, h: f64) -> Option<Matrix2<f64>> {
-    if sys.damping != 0.0 || sys.formulation != DynamicFormulation::Internal || !sys.stiffness.is_piecewise_constant() {
+    if !linear_on_segments(sys) {
         return None;
     }
     let (alpha, beta) = linear_stiffness(sys, start, end);

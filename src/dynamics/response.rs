@@ -117,12 +117,15 @@ impl Eval<'_, '_, '_> {
         if sys.law.is_none() {
             return out;
         }
-        let f = self.force(p, t);
-        let normal = match sys.formulation {
-            DynamicFormulation::Internal => f,
-            _ => sys.static_force,
-        };
         let g = sys.ctx.geometry;
+        // The tooth force F is along the transverse line of action; the normal force of a helical
+        // pair is F / cos β_b (He & Singh eq 3), and friction is μ times the normal force.
+        let to_normal = if g.is_helical() { 1.0 / g.base_helix_angle.cos() } else { 1.0 };
+        let f = self.force(p, t) * to_normal;
+        let normal = match sys.formulation {
+            DynamicFormulation::Internal | DynamicFormulation::InternalChord => f,
+            _ => sys.static_force * to_normal,
+        };
         let tau = self.tr.parameter_time(p, t) / sys.period;
         for c in &sys.ctx.mesh().contacts_at(tau.rem_euclid(1.0)) {
             let m = sys.friction_mu(c) * c.force_share;
@@ -272,6 +275,15 @@ fn plot_series(tr: &SdofTrajectory, ev: &Eval, extremes: &[Extremum]) -> Respons
         s.tooth_force.push(f);
         s.friction_force.push(ev.friction(p, t).applied);
         let tau = tr.parameter_time(p, t) / period;
+        if g.is_helical() {
+            // Each line carries its share L_k / L of the force (constant stiffness density).
+            let lines = g.contact_lines(tau.rem_euclid(1.0));
+            let total: f64 = lines.iter().map(|l| l.length).sum();
+            for l in lines.iter().filter(|l| l.index < 3) {
+                s.pair_force[l.index][i] = l.length / total * f;
+            }
+            continue;
+        }
         for c in &sys.ctx.mesh().contacts_at(tau.rem_euclid(1.0)) {
             let slot = (((c.u - g.points.a) / g.base_pitch) - tau).round();
             if (0.0..3.0).contains(&slot) {

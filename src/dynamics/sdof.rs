@@ -28,6 +28,9 @@ pub enum DynamicFormulation {
     Base,
     External,
     Internal,
+    /// The internal formulation with its stiffness term (1 − f) k replaced by straight chords between
+    /// its values at the break times: He & Singh's eq 25, offered for comparison with the exact one.
+    InternalChord,
 }
 
 impl DynamicFormulation {
@@ -36,6 +39,7 @@ impl DynamicFormulation {
             DynamicFormulation::Base => "base",
             DynamicFormulation::External => "external",
             DynamicFormulation::Internal => "internal",
+            DynamicFormulation::InternalChord => "internal_chord",
         }
     }
 }
@@ -92,6 +96,9 @@ impl<'a> SdofSystem<'a> {
                     / period
             }
             StiffnessModel::Table(k) => k.iter().sum::<f64>() / k.len() as f64,
+            StiffnessModel::PerLength { density, cos2_base_helix } => {
+                density * cos2_base_helix * ctx.geometry.mean_contact_length()
+            }
         };
         SdofSystem {
             ctx,
@@ -113,7 +120,7 @@ impl<'a> SdofSystem<'a> {
     /// k(t) (N/m); t in seconds, periodic.
     pub fn stiffness_at(&self, t: f64) -> f64 {
         let tau = (t / self.period).rem_euclid(1.0);
-        self.stiffness.at(tau, self.ctx.geometry.pairs_at(tau))
+        self.stiffness.on_pair(self.ctx.geometry, tau)
     }
 
     /// f(t), the friction term of the external and internal formulations.
@@ -134,7 +141,26 @@ impl<'a> SdofSystem<'a> {
             gp -= m * c.u;
             gw += m * (g.line_of_action_length - c.u);
         }
-        (jw * rp * gp - jp * rw * gw) / (jp * rw * rw + jw * rp * rp)
+        let f = (jw * rp * gp - jp * rw * gw) / (jp * rw * rw + jw * rp * rp);
+        // Helical (He & Singh eqs 19–24): the moments are per unit normal force, F_e = F_bn cos β_b.
+        if g.is_helical() {
+            f / g.base_helix_angle.cos()
+        } else {
+            f
+        }
+    }
+
+    /// The chord of (1 − f) k over the segment holding t (He & Singh eq 25): the straight line
+    /// between its one-sided values at the segment's ends.
+    pub fn chord_stiffness(&self, t: f64) -> f64 {
+        let tl = t.rem_euclid(self.period);
+        let j = self.segments.iter().position(|s| tl < s.end).unwrap_or(self.segments.len() - 1);
+        let s = self.segments[j];
+        let eps = 1e-9 * (s.end - s.start);
+        let value = |x: f64| (1.0 - self.friction_term(x)) * self.stiffness_at(x);
+        let (k0, k1) = (value(s.start + eps), value(s.end - eps));
+        let frac = ((tl - s.start - eps) / (s.end - s.start - 2.0 * eps)).clamp(0.0, 1.0);
+        k0 + (k1 - k0) * frac
     }
 
     /// ε(t), ε̇(t) and ε̈(t) of the static transmission error.
@@ -170,6 +196,11 @@ impl<'a> SdofSystem<'a> {
                 let s = 1.0 - self.friction_term(t);
                 ([[0.0, 1.0], [-s * k / m, -s * c / m]], [0.0, (f0 + s * excitation) / m])
             }
+            DynamicFormulation::InternalChord => {
+                let s = 1.0 - self.friction_term(t);
+                let chord = self.chord_stiffness(t);
+                ([[0.0, 1.0], [-chord / m, -s * c / m]], [0.0, (f0 + s * excitation) / m])
+            }
         }
     }
 
@@ -182,7 +213,7 @@ impl<'a> SdofSystem<'a> {
             && match self.formulation {
                 DynamicFormulation::Base => true,
                 DynamicFormulation::External => self.law.is_none_or(|l| l.constant_magnitude()),
-                DynamicFormulation::Internal => self.law.is_none(),
+                DynamicFormulation::Internal | DynamicFormulation::InternalChord => self.law.is_none(),
             }
     }
 
@@ -201,7 +232,7 @@ impl<'a> SdofSystem<'a> {
         let (a, b) = self.matrices(tp);
         let acc = a[1][0] * x[0] + a[1][1] * x[1] + b[1];
         let tau = (tp / self.period).rem_euclid(1.0);
-        let k_rate = self.stiffness.slope(tau) / self.period;
+        let k_rate = self.stiffness.slope_on_pair(self.ctx.geometry, tau) / self.period;
         k_rate * (x[0] - e) + self.stiffness_at(tp) * (x[1] - de) + self.damping * (acc - dde)
     }
 
@@ -274,7 +305,7 @@ impl PeriodicModel<2> for SdofSystem<'_> {
     fn trace_integral(&self) -> f64 {
         let c = self.damping / self.equivalent_mass;
         match self.formulation {
-            DynamicFormulation::Internal => {
+            DynamicFormulation::Internal | DynamicFormulation::InternalChord => {
                 crate::numerics::quadrature::integrate(|t| -(1.0 - self.friction_term(t)) * c, &self.breaks(), 1e-13)
                     .value
             }

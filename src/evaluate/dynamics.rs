@@ -77,6 +77,7 @@ fn stiffness_model(spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'
         ),
         StiffnessSpec::Iso6336 => (StiffnessModel::iso_6336(g), "iso_6336"),
         StiffnessSpec::Table(v) => (StiffnessModel::Table(v.clone()), "table"),
+        StiffnessSpec::PerLength(k) => (StiffnessModel::per_length(*k, g), "per_length"),
     }
 }
 

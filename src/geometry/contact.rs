@@ -64,9 +64,9 @@ pub struct ContactPoint {
 }
 
 impl PairGeometry {
-    /// Normal load along the line of action, F_bn = T_p / r_b1 (N).
+    /// Normal load, F_bn = T_p / (r_b1 cos β_b) (N); T_p / r_b1 along the line of action of a spur pair.
     pub fn normal_load(&self, op: &OperatingState) -> f64 {
-        op.pinion_torque / self.base_radius[0]
+        op.pinion_torque / self.normal_force_arm(0)
     }
 
     /// Wheel speed ω2 = ω1 z1/z2 (rad/s).
@@ -111,16 +111,41 @@ impl PairGeometry {
         sharing: Sharing,
         n: usize,
     ) -> ContactPoint {
-        let rho = [u, self.line_of_action_length - u];
+        let share = Self::load_share(n, sharing);
+        let w = share * self.normal_load(op) / self.face_width;
+        self.contact_with_load(u, s, op, reduced_modulus, w, [share, if n > 0 { 1.0 / n as f64 } else { 0.0 }], n)
+    }
+
+    /// The contact state at `u` (s = u − T1P, exact) under a load per unit contact length `w`
+    /// (N/m), with `shares` = [load share the law sees, force share in the balance] and `n` pairs or
+    /// lines in contact. For a helical pair the radii of curvature are those of the normal section,
+    /// ρ_i / cos β_b, as ISO/TR 14179-2 and ISO 6336-2 take them; the velocities are the transverse
+    /// ones (physics notes, "Helical pairs").
+    #[allow(clippy::too_many_arguments)]
+    pub fn contact_with_load(
+        &self,
+        u: f64,
+        s: f64,
+        op: &OperatingState,
+        reduced_modulus: f64,
+        w: f64,
+        shares: [f64; 2],
+        n: usize,
+    ) -> ContactPoint {
+        let transverse = [u, self.line_of_action_length - u];
+        let rho = if self.is_helical() {
+            let c = self.base_helix_angle.cos();
+            [transverse[0] / c, transverse[1] / c]
+        } else {
+            transverse
+        };
         let r = rho[0] * rho[1] / (rho[0] + rho[1]);
-        let v = [op.pinion_speed * rho[0], self.wheel_speed(op) * rho[1]];
+        let v = [op.pinion_speed * transverse[0], self.wheel_speed(op) * transverse[1]];
         // v_s = |v1 − v2| = ω1 (1 + z1/z2) |s| (physics notes), written without the cancellation of
         // v1 − v2 near the pitch point.
         let vs = op.pinion_speed * (1.0 + 1.0 / self.gear_ratio) * s.abs();
         let vsum = v[0] + v[1];
         let ue = vsum / 2.0;
-        let share = Self::load_share(n, sharing);
-        let w = share * self.normal_load(op) / self.face_width;
         ContactPoint {
             u,
             s,
@@ -132,8 +157,8 @@ impl PairGeometry {
             entrainment_velocity: ue,
             slide_to_roll: if ue > 0.0 { vs / ue } else { 0.0 },
             pairs_in_contact: n,
-            load_share: share,
-            force_share: if n > 0 { 1.0 / n as f64 } else { 0.0 },
+            load_share: shares[0],
+            force_share: shares[1],
             load_per_width: w,
             hertz_pressure: (w * reduced_modulus / (2.0 * std::f64::consts::PI * r)).sqrt(),
             hertz_half_width: (8.0 * w * r / (std::f64::consts::PI * reduced_modulus)).sqrt(),

@@ -16,6 +16,9 @@ pub const MAX_CONTACTS: usize = 4;
 impl PairGeometry {
     /// How many pairs are in contact at time τ of the mesh cycle.
     pub fn pairs_at(&self, tau: f64) -> usize {
+        if self.is_helical() {
+            return self.contact_lines(tau).len();
+        }
         (0..MAX_CONTACTS)
             .filter(|k| {
                 let u = self.points.a + self.base_pitch * (tau + *k as f64);
@@ -27,6 +30,9 @@ impl PairGeometry {
     /// Times in [0, 1] where a pair reaches E or P, or one of `switch_points` (positions from T1),
     /// with 0 and 1 included and sorted: the switch times of one mesh cycle.
     pub fn cycle_break_times(&self, switch_points: &[f64]) -> Vec<f64> {
+        if self.is_helical() {
+            return self.helical_break_times(switch_points);
+        }
         let p = self.points;
         let mut positions = vec![p.e, p.p];
         positions.extend_from_slice(switch_points);
@@ -45,6 +51,9 @@ impl PairGeometry {
 
     /// Times in the cycle at which a pair passes the pitch point (where a law may be singular).
     pub fn pitch_times(&self) -> Vec<f64> {
+        if self.is_helical() {
+            return self.pitch_line_times();
+        }
         (0..MAX_CONTACTS)
             .map(|k| (self.points.p - self.points.a) / self.base_pitch - k as f64)
             .filter(|t| *t > 0.0 && *t < 1.0)
@@ -67,18 +76,28 @@ pub struct Mesh<'a> {
     pub sharing: Sharing,
 }
 
-/// The pairs in contact at one instant, kept on the stack because the mean-efficiency integrands
-/// build them at every quadrature node.
-#[derive(Debug, Clone, Copy)]
-pub struct Contacts {
-    items: [ContactPoint; MAX_CONTACTS],
-    len: usize,
+/// Gauss–Legendre nodes per piece of a contact line in [`Mesh::contacts_at`] (each piece between
+/// a line end and the pitch line; graded towards the pitch line). The mean efficiency doubles them
+/// to estimate the error of the line integrals ([`crate::efficiency`]).
+pub const LINE_NODES: usize = 8;
+
+/// The contacts at one instant: for a spur pair the pairs in contact, kept on the stack because the
+/// mean-efficiency integrands build them at every quadrature node; for a helical pair the
+/// quadrature points along the contact lines, each carrying its share of the normal load
+/// (w dl / F_bn, so that Σ over the points of share × g(u) is ∫ g w dl / F_bn).
+#[derive(Debug, Clone)]
+pub enum Contacts {
+    Pairs([ContactPoint; MAX_CONTACTS], usize),
+    Lines(Vec<ContactPoint>),
 }
 
 impl std::ops::Deref for Contacts {
     type Target = [ContactPoint];
     fn deref(&self) -> &[ContactPoint] {
-        &self.items[..self.len]
+        match self {
+            Contacts::Pairs(items, len) => &items[..*len],
+            Contacts::Lines(v) => v,
+        }
     }
 }
 
@@ -86,20 +105,47 @@ impl<'a> IntoIterator for &'a Contacts {
     type Item = &'a ContactPoint;
     type IntoIter = std::slice::Iter<'a, ContactPoint>;
     fn into_iter(self) -> Self::IntoIter {
-        self.items[..self.len].iter()
+        self.iter()
     }
 }
 
+/// Nodes and weights of the [`LINE_NODES`]-point and doubled Gauss–Legendre rules on [0, 1].
+fn line_rule(nodes: usize) -> &'static (Vec<f64>, Vec<f64>) {
+    use std::sync::OnceLock;
+    static RULES: [OnceLock<(Vec<f64>, Vec<f64>)>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    let slot = match nodes {
+        n if n == LINE_NODES => 0,
+        n if n == 2 * LINE_NODES => 1,
+        _ => 2,
+    };
+    RULES[slot].get_or_init(|| crate::numerics::quadrature::gauss_legendre(nodes))
+}
+
 impl Mesh<'_> {
-    /// The contact state at `u` (from T1).
+    /// The contact state at `u` (from T1). For a helical pair, under the mean load per unit line
+    /// length F_bn / L̄ (the load at u varies with L(t)); `pairs_in_contact` is then 0.
     pub fn contact_at(&self, u: f64) -> ContactPoint {
+        if self.pair.is_helical() {
+            return self.mean_line_contact(u, u - self.pair.points.p);
+        }
         self.pair.contact_at(u, &self.state, self.reduced_modulus, self.sharing)
+    }
+
+    fn mean_line_contact(&self, u: f64, s: f64) -> ContactPoint {
+        let g = self.pair;
+        let length = g.mean_contact_length();
+        let w = g.normal_load(&self.state) / length;
+        let share = g.face_width / length;
+        g.contact_with_load(u, s, &self.state, self.reduced_modulus, w, [share, share], 0)
     }
 
     /// The contact state at distance `s` from the pitch point, with `s` exact (for integrands near P).
     pub fn contact_at_offset(&self, s: f64) -> ContactPoint {
         let g = self.pair;
         let u = g.points.p + s;
+        if g.is_helical() {
+            return self.mean_line_contact(u, s);
+        }
         g.contact_exact(u, s, &self.state, self.reduced_modulus, self.sharing, g.pairs_in_contact(u))
     }
 
@@ -113,6 +159,9 @@ impl Mesh<'_> {
     /// point (NaN when not known): that pair's s = p_b d.
     pub fn contacts_near_pitch(&self, tau: f64, d: f64) -> Contacts {
         let g = self.pair;
+        if g.is_helical() {
+            return self.line_contacts(tau, LINE_NODES);
+        }
         let mut positions = [0.0; MAX_CONTACTS];
         let mut n = 0;
         for k in 0..MAX_CONTACTS {
@@ -123,12 +172,53 @@ impl Mesh<'_> {
             }
         }
         let exact = g.base_pitch * d;
-        let mut out = Contacts { items: [ContactPoint::default(); MAX_CONTACTS], len: n };
-        for (slot, u) in out.items.iter_mut().zip(&positions[..n]) {
+        let mut items = [ContactPoint::default(); MAX_CONTACTS];
+        for (slot, u) in items.iter_mut().zip(&positions[..n]) {
             let s = u - g.points.p;
             let s = if exact.is_finite() && (s - exact).abs() < 1e-6 * g.base_pitch { exact } else { s };
             *slot = g.contact_exact(*u, s, &self.state, self.reduced_modulus, self.sharing, n);
         }
-        out
+        Contacts::Pairs(items, n)
+    }
+
+    /// The quadrature points along the contact lines of a helical pair at τ, `nodes` Gauss–Legendre
+    /// points per piece. Each line is cut at the pitch line; on a piece that touches it the nodes
+    /// are graded towards it (u = T1P + (u_end − T1P) v³), which keeps the rule exact for the
+    /// piecewise-polynomial integrands of the Coulomb laws and makes the integrable singularities
+    /// of laws that diverge at P harmless. Load per unit length w = F_bn / L(τ) (constant stiffness
+    /// density, He & Singh assumption 2); each point's force share is w dl / F_bn = dl / L.
+    pub fn line_contacts(&self, tau: f64, nodes: usize) -> Contacts {
+        let g = self.pair;
+        let lines = g.contact_lines(tau);
+        let length: f64 = lines.iter().map(|l| l.length).sum();
+        let w = g.normal_load(&self.state) / length;
+        let load_share = g.face_width / length;
+        let (x, wt) = line_rule(nodes);
+        let pitch = g.points.p;
+        let per_u = 1.0 / g.base_helix_angle.sin() / length;
+        let mut out = Vec::with_capacity(lines.len() * 2 * nodes);
+        for line in lines.iter() {
+            let (lo, hi) = (line.u[0].min(line.u[1]), line.u[0].max(line.u[1]));
+            let mut push = |s: f64, dl: f64| {
+                let c = g.contact_with_load(pitch + s, s, &self.state, self.reduced_modulus, w, [load_share, dl], lines.len());
+                out.push(c);
+            };
+            if lo < pitch && pitch < hi {
+                // Two pieces graded towards P: s = h v³, ds = 3 h v² dv.
+                for h in [lo - pitch, hi - pitch] {
+                    for (v, wv) in x.iter().zip(wt) {
+                        push(h * v * v * v, 3.0 * h.abs() * v * v * wv * per_u);
+                    }
+                }
+            } else {
+                // One side of P: graded towards the end nearer P, s = s_near + (s_far − s_near) v³.
+                let (near, far) = if lo >= pitch { (lo, hi) } else { (hi, lo) };
+                let h = far - near;
+                for (v, wv) in x.iter().zip(wt) {
+                    push(near - pitch + h * v * v * v, 3.0 * h.abs() * v * v * wv * per_u);
+                }
+            }
+        }
+        Contacts::Lines(out)
     }
 }

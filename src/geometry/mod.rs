@@ -3,9 +3,11 @@
 //! Knows nothing of scenes, friction or reports: it takes a [`pair::PairInput`] and gives numbers.
 
 pub mod contact;
+pub mod contact_lines;
 pub mod involute;
 pub mod mesh;
 pub mod pair;
+pub mod regions;
 pub mod stiffness;
 
 pub use contact::{ContactPoint, OperatingState};

@@ -1,9 +1,14 @@
-//! Spur involute pair geometry: radii, operating pressure angle, the points A B P D E on the line of
-//! action and the contact ratios (physics notes, "Geometry and names"; Fernandes et al. §3, Table 1;
-//! ISO 21771 for the addendum rule, the involute function and the tooth thickness).
+//! Involute pair geometry, spur or helical: radii, operating pressure angle, the points A B P D E on
+//! the transverse line of action and the contact ratios (Fernandes et al. §3, Table 1; ISO 21771 for
+//! the addendum rule, the involute function, the tooth thickness and the helical relations).
 //!
 //! Distances along the line of action are measured from T1, the tangency point on the pinion's base
-//! circle: `T1 – A – B – P – D – E – T2`.
+//! circle: `T1 – A – B – P – D – E – T2`. A helical pair is computed in its transverse section
+//! (ISO 21771): with the normal module m_n, normal pressure angle α_n and helix angle β at the
+//! reference circle, tan α_t = tan α_n / cos β, m_t = m_n / cos β, d = z m_t, d_b = d cos α_t,
+//! tan β_b = tan β cos α_t, p_bt = π m_t cos α_t, overlap ratio ε_β = b sin β / (π m_n) and total
+//! contact ratio ε_γ = ε_α + ε_β. Profile shifts are normal coefficients (x m_n is the shift). A
+//! spur pair is β = 0, where every transverse value equals the normal one.
 
 use std::f64::consts::PI;
 
@@ -14,8 +19,12 @@ pub use super::involute::{inverse_involute, involute};
 /// What the geometry needs, in SI units (m, rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PairInput {
+    /// Normal module m_n (the module of a spur pair).
     pub module: f64,
+    /// Normal pressure angle α_n.
     pub pressure_angle: f64,
+    /// Helix angle β at the reference circle (0 for a spur pair).
+    pub helix_angle: f64,
     /// [pinion, wheel]
     pub teeth: [u32; 2],
     pub profile_shift: [f64; 2],
@@ -29,7 +38,7 @@ pub struct PairInput {
 pub enum TipSource {
     /// Given in the scene.
     Given,
-    /// d_a = m (z + 2 + 2x).
+    /// d_a = m_t z + 2 m_n (1 + x) (spur: m (z + 2 + 2x)).
     AddendumRule,
 }
 
@@ -54,8 +63,22 @@ pub struct GeometryProblem {
 /// The geometry of an external spur pair. Index 0 is the pinion (driving), 1 the wheel.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PairGeometry {
+    /// Normal module m_n.
     pub module: f64,
+    /// Normal pressure angle α_n.
     pub pressure_angle: f64,
+    /// β at the reference circle (rad); 0 for a spur pair.
+    pub helix_angle: f64,
+    /// β_b, tan β_b = tan β cos α_t.
+    pub base_helix_angle: f64,
+    /// m_t = m_n / cos β.
+    pub transverse_module: f64,
+    /// α_t, tan α_t = tan α_n / cos β.
+    pub transverse_pressure_angle: f64,
+    /// ε_β = b sin β / (π m_n).
+    pub overlap_ratio: f64,
+    /// ε_γ = ε_α + ε_β.
+    pub total_contact_ratio: f64,
     pub teeth: [u32; 2],
     pub profile_shift: [f64; 2],
     pub face_width: f64,
@@ -74,13 +97,13 @@ pub struct PairGeometry {
     pub zero_backlash_pressure_angle: f64,
     pub zero_backlash_center_distance: f64,
     pub working_pitch_radius: [f64; 2],
-    /// p_b = π m cos α
+    /// Transverse base pitch p_bt = π m_t cos α_t (p_b = π m cos α for a spur pair).
     pub base_pitch: f64,
     /// T1T2 = a sin α_w
     pub line_of_action_length: f64,
     /// T1A, T1B, T1P, T1D, T1E
     pub points: LoaPoints,
-    /// ε_α = AE / p_b
+    /// Transverse contact ratio ε_α = AE / p_bt.
     pub contact_ratio: f64,
     /// ε_1 = PE/p_b (pinion addendum, recess), ε_2 = AP/p_b (wheel addendum, approach)
     pub addendum_contact_ratio: [f64; 2],
@@ -89,7 +112,7 @@ pub struct PairGeometry {
     /// Smallest profile shift free of undercut, x_min = 1 − z sin²α / 2 (h_a0* = 1).
     pub undercut_limit: [f64; 2],
     /// Start of the generated involute (form circle) along the line of action from the gear's own T:
-    /// T_iF_i = r_i sin α − (1 − x_i) m / sin α (rack addendum 1·m).
+    /// T_iF_i = r_i sin α_t − (1 − x_i) m_n / sin α_t (rack addendum 1·m_n).
     pub involute_start: [f64; 2],
 }
 
@@ -114,8 +137,14 @@ impl PairGeometry {
     /// Computes the pair's geometry and refuses pairs that cannot mesh, with every problem found.
     pub fn compute(input: &PairInput) -> Result<PairGeometry, Vec<GeometryProblem>> {
         let mut problems = Vec::new();
-        let m = input.module;
-        let alpha = input.pressure_angle;
+        let m_n = input.module;
+        let alpha_n = input.pressure_angle;
+        let beta = input.helix_angle;
+        // Transverse section (ISO 21771). For β = 0, cos β = 1 and atan(tan α) = α exactly, so a
+        // spur pair gets its normal values unchanged.
+        let m = if beta == 0.0 { m_n } else { m_n / beta.cos() };
+        let alpha = if beta == 0.0 { alpha_n } else { (alpha_n.tan() / beta.cos()).atan() };
+        let beta_b = (beta.tan() * alpha.cos()).atan();
         let z = [input.teeth[0] as f64, input.teeth[1] as f64];
         let x = input.profile_shift;
         for i in 0..2 {
@@ -139,11 +168,15 @@ impl PairGeometry {
                 Some(d) => d / 2.0,
                 None => {
                     tip_source[i] = TipSource::AddendumRule;
-                    m * (z[i] + 2.0 + 2.0 * x[i]) / 2.0
+                    if beta == 0.0 {
+                        m * (z[i] + 2.0 + 2.0 * x[i]) / 2.0
+                    } else {
+                        m * z[i] / 2.0 + m_n * (1.0 + x[i])
+                    }
                 }
             };
         }
-        let inv_w0 = involute(alpha) + 2.0 * alpha.tan() * (x[0] + x[1]) / (z[0] + z[1]);
+        let inv_w0 = involute(alpha) + 2.0 * alpha_n.tan() * (x[0] + x[1]) / (z[0] + z[1]);
         let alpha_w0 = inverse_involute(inv_w0);
         let a0 = (rb[0] + rb[1]) / alpha_w0.cos();
         let (a, alpha_w) = match input.center_distance {
@@ -163,7 +196,7 @@ impl PairGeometry {
                 }
                 // Below the zero-backlash centre distance the teeth collide: not a pair that can be
                 // assembled. Allowed: 1e-3 m of rounding in the given value (FZG C: 91.5 against 91.5001 mm).
-                if a < a0 - 1e-3 * m {
+                if a < a0 - 1e-3 * m_n {
                     problems.push(GeometryProblem {
                         part: PairPart::CenterDistance,
                         reason: format!(
@@ -183,9 +216,13 @@ impl PairGeometry {
             }
             None => (a0, alpha_w0),
         };
-        let undercut_limit = [1.0 - z[0] * alpha.sin().powi(2) / 2.0, 1.0 - z[1] * alpha.sin().powi(2) / 2.0];
-        let involute_start =
-            [r[0] * alpha.sin() - (1.0 - x[0]) * m / alpha.sin(), r[1] * alpha.sin() - (1.0 - x[1]) * m / alpha.sin()];
+        // Rack addendum 1·m_n; in the transverse section x_min = 1 − z sin²α_t / (2 cos β).
+        let undercut_limit =
+            [1.0 - z[0] * alpha.sin().powi(2) * (m / m_n) / 2.0, 1.0 - z[1] * alpha.sin().powi(2) * (m / m_n) / 2.0];
+        let involute_start = [
+            r[0] * alpha.sin() - (1.0 - x[0]) * m_n / alpha.sin(),
+            r[1] * alpha.sin() - (1.0 - x[1]) * m_n / alpha.sin(),
+        ];
         let mut tip_thickness = [0.0; 2];
         for i in 0..2 {
             if x[i] < undercut_limit[i] - 1e-9 {
@@ -216,7 +253,7 @@ impl PairGeometry {
             }
             let alpha_a = (rb[i] / ra[i]).acos();
             tip_thickness[i] =
-                2.0 * ra[i] * ((PI / 2.0 + 2.0 * x[i] * alpha.tan()) / z[i] + involute(alpha) - involute(alpha_a));
+                2.0 * ra[i] * ((PI / 2.0 + 2.0 * x[i] * alpha_n.tan()) / z[i] + involute(alpha) - involute(alpha_a));
             if tip_thickness[i] <= 0.0 {
                 problems.push(GeometryProblem {
                     part: if input.tip_diameter[i].is_some() {
@@ -284,9 +321,29 @@ impl PairGeometry {
             });
             return Err(problems);
         }
+        let overlap = input.face_width * beta.sin() / (PI * m_n);
+        if eps + overlap > super::contact_lines::MAX_TOTAL_CONTACT_RATIO {
+            problems.push(GeometryProblem {
+                part: PairPart::Pair,
+                reason: format!(
+                    "total contact ratio ε_γ = {:.4} (ε_α {eps:.4} + ε_β {overlap:.4}) is above {}",
+                    eps + overlap,
+                    super::contact_lines::MAX_TOTAL_CONTACT_RATIO
+                ),
+                hint: "reduce the face width or the helix angle: more than 7 contact lines at once are not supported"
+                    .into(),
+            });
+            return Err(problems);
+        }
         Ok(PairGeometry {
-            module: m,
-            pressure_angle: alpha,
+            module: m_n,
+            pressure_angle: alpha_n,
+            helix_angle: beta,
+            base_helix_angle: beta_b,
+            transverse_module: m,
+            transverse_pressure_angle: alpha,
+            overlap_ratio: overlap,
+            total_contact_ratio: eps + overlap,
             teeth: input.teeth,
             profile_shift: x,
             face_width: input.face_width,
@@ -358,6 +415,27 @@ impl PairGeometry {
             }
         }
         n
+    }
+
+    /// True when the pair has a helix angle.
+    pub fn is_helical(&self) -> bool {
+        self.helix_angle != 0.0
+    }
+
+    /// The arm of the normal tooth force about gear `i`'s axis, r_b,i cos β_b: the normal force is
+    /// inclined by β_b to the transverse plane (He & Singh eq 8; r_b,i for a spur pair).
+    pub fn normal_force_arm(&self, i: usize) -> f64 {
+        if self.is_helical() {
+            self.base_radius[i] * self.base_helix_angle.cos()
+        } else {
+            self.base_radius[i]
+        }
+    }
+
+    /// Axial force on the pinion from a pinion torque T_p (N·m): F_a = F_t tan β with
+    /// F_t = T_p / r_1 the tangential force at the reference circle (ISO 6336-1 §5; 0 for spur).
+    pub fn axial_force(&self, pinion_torque: f64) -> f64 {
+        pinion_torque / self.pitch_radius[0] * self.helix_angle.tan()
     }
 
     /// Involute start (form circle) of gear `i`, as a distance from T1.

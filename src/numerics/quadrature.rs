@@ -271,3 +271,42 @@ pub fn integrate_pieces_n<const N: usize>(
     }
     out
 }
+
+/// Nodes and weights of the n-point Gauss–Legendre rule on [0, 1], by Newton's iteration on the
+/// Legendre polynomial P_n from Tricomi's initial guesses (Abramowitz & Stegun 25.4.29; exact for
+/// polynomials of degree 2n − 1).
+///
+/// ```
+/// use gearloss::numerics::quadrature::gauss_legendre;
+/// let (x, w) = gauss_legendre(3);
+/// let i: f64 = x.iter().zip(&w).map(|(x, w)| w * x.powi(5)).sum();
+/// assert!((i - 1.0 / 6.0).abs() < 1e-15);
+/// ```
+pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
+    let mut nodes = Vec::with_capacity(n);
+    let mut weights = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+        let mut dp = 1.0;
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, x);
+            for k in 2..=n {
+                let k = k as f64;
+                let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            let p = if n == 0 { 1.0 } else { p1 };
+            let prev = if n == 1 { 1.0 } else { p0 };
+            dp = n as f64 * (x * p - prev) / (x * x - 1.0);
+            let dx = p / dp;
+            x -= dx;
+            if dx.abs() < 1e-16 {
+                break;
+            }
+        }
+        nodes.push(0.5 * (1.0 - x));
+        weights.push(1.0 / ((1.0 - x * x) * dp * dp));
+    }
+    (nodes, weights)
+}

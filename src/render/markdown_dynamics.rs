@@ -32,6 +32,12 @@ pub fn dynamics(out: &mut String, r: &Report) {
             d.stiffness_source.replace('_', " ")
         ),
         StiffnessReport::Table { table } => format!("table of {} values over one mesh cycle", table.len()),
+        StiffnessReport::PerLength { per_length, cos2_base_helix_angle } => format!(
+            "density k = {} N/(mm·µm) along the contact lines; k(t) = k cos²β_b L(t), cos²β_b = {} ({})",
+            fixed(per_length.si() * 1e-9, 4),
+            fixed(cos2_base_helix_angle.0, 6),
+            d.stiffness_source.replace('_', " ")
+        ),
     };
     for (q, v) in [
         ("mesh stiffness", k),

@@ -17,6 +17,8 @@ use crate::model::Scene;
 pub enum StiffnessReport {
     Pairs { single: Q, double: Q, triple: Q },
     Table { table: Vec<Q> },
+    /// Stiffness density along the contact lines (N/m²) and the factor cos²β_b of k(t) = k cos²β_b L(t).
+    PerLength { per_length: Q, cos2_base_helix_angle: Num },
 }
 
 /// A located extremum: value and time in mesh periods.
@@ -175,6 +177,10 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
             triple: Q::new(*triple, "N/m"),
         },
         StiffnessModel::Table(v) => StiffnessReport::Table { table: v.iter().map(|k| Q::new(*k, "N/m")).collect() },
+        StiffnessModel::PerLength { density, cos2_base_helix } => StiffnessReport::PerLength {
+            per_length: Q::new(*density, "N/m^2"),
+            cos2_base_helix_angle: Num(*cos2_base_helix),
+        },
     };
     let g = &eval.geometry;
     let tau_b = g.contact_ratio.fract();
@@ -337,7 +343,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         model: d.model,
         stiffness_step_ratio: match &d.stiffness {
             StiffnessModel::PairsInContact { single, double, .. } => Some(double / single),
-            StiffnessModel::Table(_) => None,
+            StiffnessModel::Table(_) | StiffnessModel::PerLength { .. } => None,
         },
         stiffness_source: d.stiffness_source,
         stiffness,

@@ -48,10 +48,19 @@ pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Give
 pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
     let mut rows = Vec::new();
     let g = &scene.gears;
-    if let ModuleSource::DiametralPitch(p) = &g.module_source {
-        input(&mut rows, "gears.diametral_pitch", p, "1/m");
+    match &g.module_source {
+        ModuleSource::DiametralPitch(p) => input(&mut rows, "gears.diametral_pitch", p, "1/m"),
+        ModuleSource::TransverseDiametralPitch(p) => input(&mut rows, "gears.transverse_diametral_pitch", p, "1/m"),
+        ModuleSource::TransverseModule(m) => input(&mut rows, "gears.transverse_module", m, "m"),
+        ModuleSource::Module => {}
+    }
+    if let Some(b) = &g.helix_angle {
+        input(&mut rows, "gears.helix_angle", b, "rad");
     }
     input(&mut rows, "gears.module", &g.module, "m");
+    if let Some(a) = &g.transverse_pressure_angle {
+        input(&mut rows, "gears.transverse_pressure_angle", a, "rad");
+    }
     input(&mut rows, "gears.pressure_angle", &g.pressure_angle, "rad");
     if let Some(a) = &g.center_distance {
         input(&mut rows, "gears.center_distance", a, "m");

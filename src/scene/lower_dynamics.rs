@@ -13,11 +13,11 @@ use crate::scene::units::SiQuantity;
 
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
-const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file"];
+const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file", "per_length"];
 const STE_KEYS: &[&str] = &["amplitudes", "phases"];
 const MODELS: &[&str] = &["sdof"];
 const SOLVERS: &[&str] = &["auto", "magnus"];
-const FORMULATIONS: &[&str] = &["base", "external", "internal"];
+const FORMULATIONS: &[&str] = &["base", "external", "internal", "internal_chord"];
 
 pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) -> Option<DynamicsSpec> {
     let f = Fields::read(
@@ -139,6 +139,7 @@ fn formulations(v: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<DynamicFo
                 "base" => out.push(DynamicFormulation::Base),
                 "external" => out.push(DynamicFormulation::External),
                 "internal" => out.push(DynamicFormulation::Internal),
+                "internal_chord" => out.push(DynamicFormulation::InternalChord),
                 _ => {
                     errors.push(unknown_name("formulation", n, FORMULATIONS));
                     return None;
@@ -231,6 +232,17 @@ fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) 
             None
         }
     };
+    if let Some((_, v)) = k.values.get("per_length") {
+        let (x, _) = scalar("per_length", v, Dimension::PRESSURE, errors)?;
+        if x > 0.0 {
+            return Some(StiffnessSpec::PerLength(x));
+        }
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, v.span, "`per_length` stiffness must be positive")
+                .hint("a stiffness density along the contact lines, typically 1e10 to 2e10 N/m^2 (10 to 20 N/(mm*um))"),
+        );
+        return None;
+    }
     if let Some((_, v)) = k.values.get("file") {
         return read_stiffness_csv(v, base_dir, errors).map(StiffnessSpec::Table);
     }
@@ -323,8 +335,16 @@ pub(super) fn check_frequency_ratio(scene: &Scene, errors: &mut Vec<Diagnostic>)
         StiffnessSpec::Iso6336 => match StiffnessModel::iso_6336(&g) {
             StiffnessModel::PairsInContact { single, double, triple } => single.max(double).max(triple),
             StiffnessModel::Table(v) => v.iter().copied().fold(0.0, f64::max),
+            StiffnessModel::PerLength { density, cos2_base_helix } => {
+                density * cos2_base_helix * (g.contact_ratio.ceil() + g.overlap_ratio.ceil()) * g.face_width
+                    / g.base_helix_angle.cos()
+            }
         },
         StiffnessSpec::Table(v) => v.iter().copied().fold(0.0, f64::max),
+        // An upper bound of k cos²β_b L(t): L ≤ (⌈ε_α⌉ + ⌈ε_β⌉) b / cos β_b.
+        StiffnessSpec::PerLength(k) => {
+            k * g.base_helix_angle.cos() * (g.contact_ratio.ceil() + g.overlap_ratio.ceil()) * g.face_width
+        }
     };
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
     let m_e = j1 * j2 / (j1 * rw * rw + j2 * rp * rp);

@@ -8,6 +8,7 @@ mod friction;
 mod fuzz;
 mod fuzz_campaign;
 mod geometry;
+mod helical;
 mod properties;
 mod specs;
 mod sweeps;
@@ -31,6 +32,7 @@ pub fn high_contact_ratio_input() -> gearloss::geometry::PairInput {
     gearloss::geometry::PairInput {
         module: 3e-3,
         pressure_angle: 14.5f64.to_radians(),
+        helix_angle: 0.0,
         teeth: [40, 60],
         profile_shift: [0.0, 0.0],
         tip_diameter: [Some(127.2e-3), Some(187.2e-3)],

@@ -20,6 +20,7 @@ fn pair() -> impl Strategy<Value = PairGeometry> {
             PairGeometry::compute(&PairInput {
                 module: m,
                 pressure_angle: alpha.to_radians(),
+                helix_angle: 0.0,
                 teeth: [z1, z2],
                 profile_shift: [x1, x2],
                 tip_diameter: [None, None],
