@@ -64,6 +64,27 @@ pub fn render_markdown(r: &Report) -> String {
         ("reduced modulus", "E'", format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3))),
         ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
     ];
+    let mut rows = rows;
+    if let Some(h) = &g.helical {
+        let at = rows.iter().position(|r| r.1 == "α").map_or(0, |i| i + 1);
+        let helical_rows: Vec<(&str, &str, String)> = vec![
+            ("helix angle (reference circle)", "β", format!("{}°", scaled(&g.helix_angle, deg, 4))),
+            ("base helix angle", "β_b", format!("{}°", scaled(&h.base_helix_angle, deg, 4))),
+            ("transverse module", "m_t", format!("{} mm", scaled(&h.transverse_module, 1e3, 4))),
+            ("transverse pressure angle", "α_t", format!("{}°", scaled(&h.transverse_pressure_angle, deg, 4))),
+        ];
+        rows.splice(at..at, helical_rows);
+        rows[0].0 = "normal module";
+        rows[0].1 = "m_n";
+        rows[at - 1].0 = "normal pressure angle";
+        rows[at - 1].1 = "α_n";
+        let at = rows.iter().position(|r| r.1 == "ε_α").map_or(rows.len(), |i| i + 1);
+        let more: Vec<(&str, &str, String)> = vec![
+            ("overlap ratio", "ε_β", fixed(g.overlap_ratio.0, 4)),
+            ("total contact ratio", "ε_γ", fixed(g.total_contact_ratio.0, 4)),
+        ];
+        rows.splice(at..at, more);
+    }
     let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
     for (q, s, v) in before {
         row(&mut out, &[q.to_string(), s.to_string(), v.clone()]);
@@ -95,6 +116,9 @@ pub fn render_markdown(r: &Report) -> String {
                 fixed(gr.undercut_limit.0, 4),
             ],
         );
+    }
+    if let Some(h) = &g.helical {
+        super::markdown_helical::plane_of_action(&mut out, h, &r.plots);
     }
 
     let _ = writeln!(out, "\n## Contact along the line of action\n");

@@ -3,6 +3,7 @@
 pub mod markdown;
 pub mod markdown_dynamics;
 pub mod markdown_friction;
+pub mod markdown_helical;
 pub mod markdown_sweep;
 pub mod svg;
 pub mod table;
@@ -36,6 +37,7 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
     for plot in &report.plots {
         let svg = match plot.file.as_str() {
             "contact_state.svg" => svg::contact_state(report)?,
+            "plane_of_action.svg" => svg::plane_of_action(report)?,
             "sweep_speed.svg" => svg::sweep(report, true)?,
             "sweep_torque.svg" => svg::sweep(report, false)?,
             "sweep_mu.svg" => svg::sweep_mu(report)?,

@@ -47,8 +47,12 @@ pub struct NamedPoint {
 
 #[derive(Debug, Clone, Serialize)]
 pub struct GeometryReport {
+    /// Normal module (the module of a spur pair).
     pub module: Q,
+    /// Normal pressure angle.
     pub pressure_angle: Q,
+    /// β at the reference circle (0 for spur).
+    pub helix_angle: Q,
     pub gear_ratio: Num,
     pub center_distance: Q,
     pub center_distance_source: &'static str,
@@ -59,7 +63,16 @@ pub struct GeometryReport {
     pub base_pitch: Q,
     pub line_of_action_length: Q,
     pub points_from_t1: PointsReport,
+    /// The transverse contact ratio ε_α (also `transverse_contact_ratio`).
     pub contact_ratio: Num,
+    pub transverse_contact_ratio: Num,
+    /// ε_β = b sin β / (π m_n) (0 for spur).
+    pub overlap_ratio: Num,
+    /// ε_γ = ε_α + ε_β.
+    pub total_contact_ratio: Num,
+    /// Helical pairs: transverse values, contact lines and regions of the cycle.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub helical: Option<super::helical::HelicalReport>,
     /// Ohlendorf's gear loss factor H_V.
     pub ohlendorf_loss_factor: Num,
     pub reduced_modulus: Q,
@@ -89,6 +102,7 @@ pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
     GeometryReport {
         module: m(g.module),
         pressure_angle: rad(g.pressure_angle),
+        helix_angle: rad(g.helix_angle),
         gear_ratio: Num(g.gear_ratio),
         center_distance: m(g.center_distance),
         center_distance_source: if g.center_distance_given { "given" } else { "zero_backlash" },
@@ -117,6 +131,10 @@ pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
             }
         },
         contact_ratio: Num(g.contact_ratio),
+        transverse_contact_ratio: Num(g.contact_ratio),
+        overlap_ratio: Num(g.overlap_ratio),
+        total_contact_ratio: Num(g.total_contact_ratio),
+        helical: super::helical::helical_report(eval),
         ohlendorf_loss_factor: Num(eval.ohlendorf_loss_factor),
         reduced_modulus: pa(eval.reduced_modulus),
         load_sharing: eval.sharing,

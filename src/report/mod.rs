@@ -5,6 +5,7 @@ pub mod dynamics;
 pub mod dynamics_findings;
 pub mod friction;
 pub mod geometry;
+pub mod helical;
 pub mod number;
 pub mod numerics;
 pub mod plausibility;
@@ -137,6 +138,12 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             (t.to_vec(), s.to_vec())
         }),
     };
+    if report.geometry.helical.is_some() {
+        report.plots.push(PlotRef {
+            file: "plane_of_action.svg".into(),
+            title: "Plane of action: contact lines at four instants over μ(u), and the contact length L(t)".into(),
+        });
+    }
     if let Some(d) = &report.dynamics {
         report.findings.extend(dynamics_findings::dynamics_findings(d));
         if d.stability_map.is_some() {

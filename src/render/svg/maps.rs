@@ -11,7 +11,7 @@ use crate::report::Report;
 pub const MAX_MAPS: usize = 3;
 
 /// A colour from dark blue (0) through green to yellow (1), after viridis.
-fn colour(t: f64) -> RGBColor {
+pub(super) fn colour(t: f64) -> RGBColor {
     const STOPS: [(f64, f64, f64); 5] =
         [(68.0, 1.0, 84.0), (59.0, 82.0, 139.0), (33.0, 145.0, 140.0), (94.0, 201.0, 98.0), (253.0, 231.0, 37.0)];
     let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.0 } * (STOPS.len() - 1) as f64;
