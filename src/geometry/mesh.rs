@@ -200,7 +200,15 @@ impl Mesh<'_> {
         for line in lines.iter() {
             let (lo, hi) = (line.u[0].min(line.u[1]), line.u[0].max(line.u[1]));
             let mut push = |s: f64, dl: f64| {
-                let c = g.contact_with_load(pitch + s, s, &self.state, self.reduced_modulus, w, [load_share, dl], lines.len());
+                let c = g.contact_with_load(
+                    pitch + s,
+                    s,
+                    &self.state,
+                    self.reduced_modulus,
+                    w,
+                    [load_share, dl],
+                    lines.len(),
+                );
                 out.push(c);
             };
             if lo < pitch && pitch < hi {

@@ -15,10 +15,19 @@ use crate::model::Scene;
 #[derive(Debug, Clone, Serialize)]
 #[serde(untagged)]
 pub enum StiffnessReport {
-    Pairs { single: Q, double: Q, triple: Q },
-    Table { table: Vec<Q> },
+    Pairs {
+        single: Q,
+        double: Q,
+        triple: Q,
+    },
+    Table {
+        table: Vec<Q>,
+    },
     /// Stiffness density along the contact lines (N/m²) and the factor cos²β_b of k(t) = k cos²β_b L(t).
-    PerLength { per_length: Q, cos2_base_helix_angle: Num },
+    PerLength {
+        per_length: Q,
+        cos2_base_helix_angle: Num,
+    },
 }
 
 /// A located extremum: value and time in mesh periods.

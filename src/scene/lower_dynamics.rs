@@ -237,10 +237,10 @@ fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) 
         if x > 0.0 {
             return Some(StiffnessSpec::PerLength(x));
         }
-        errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, v.span, "`per_length` stiffness must be positive")
-                .hint("a stiffness density along the contact lines, typically 1e10 to 2e10 N/m^2 (10 to 20 N/(mm*um))"),
-        );
+        errors
+            .push(Diagnostic::new(DiagnosticKind::OutOfRange, v.span, "`per_length` stiffness must be positive").hint(
+                "a stiffness density along the contact lines, typically 1e10 to 2e10 N/m^2 (10 to 20 N/(mm*um))",
+            ));
         return None;
     }
     if let Some((_, v)) = k.values.get("file") {

@@ -84,12 +84,16 @@ pub(super) fn lower_gears(
             Some(b)
         } else {
             errors.push(
-                Diagnostic::new(DiagnosticKind::OutOfRange, b.span, format!("helix angle {deg:.4}° is outside 0° to 45°"))
-                    .hint(if deg < 0.0 {
-                        "give the helix angle as a positive value and the hand as `hand = left` or `hand = right`"
-                    } else {
-                        "industrial helical gears use 8° to 30°; above 45° the axial force exceeds the tangential force"
-                    }),
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    b.span,
+                    format!("helix angle {deg:.4}° is outside 0° to 45°"),
+                )
+                .hint(if deg < 0.0 {
+                    "give the helix angle as a positive value and the hand as `hand = left` or `hand = right`"
+                } else {
+                    "industrial helical gears use 8° to 30°; above 45° the axial force exceeds the tangential force"
+                }),
             );
             None
         }
@@ -114,7 +118,8 @@ pub(super) fn lower_gears(
         }
         ["module"] => (positive(f.optional("module", errors), "module", errors), ModuleSource::Module),
         ["transverse_module"] => {
-            let m: Option<Given<Length>> = positive(f.optional("transverse_module", errors), "transverse_module", errors);
+            let m: Option<Given<Length>> =
+                positive(f.optional("transverse_module", errors), "transverse_module", errors);
             match m {
                 Some(m) => (
                     Some(Given {

@@ -89,7 +89,12 @@ fn plane(
 /// The figure; Err when the report has no helical geometry.
 pub fn plane_of_action(r: &Report) -> Result<String, String> {
     let Some(h) = &r.geometry.helical else { return Err("the pair is not helical".into()) };
-    let mu = r.curves.points.first().and_then(|p| p.mu.first()).map(|(l, v)| (l.as_str(), r.curves.u.as_slice(), v.as_slice()));
+    let mu = r
+        .curves
+        .points
+        .first()
+        .and_then(|p| p.mu.first())
+        .map(|(l, v)| (l.as_str(), r.curves.u.as_slice(), v.as_slice()));
     let [tau, total, approach, recess] = &h.length_curve;
     let mm = |v: &Vec<f64>| v.iter().map(|x| x * 1e3).collect::<Vec<_>>();
     let panel = Panel {
