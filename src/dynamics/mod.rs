@@ -14,6 +14,7 @@
 
 pub mod airy;
 pub mod floquet;
+pub mod free;
 pub mod integrators;
 pub mod model;
 pub mod numerics;

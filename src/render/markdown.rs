@@ -173,7 +173,7 @@ pub fn render_markdown(r: &Report) -> String {
             );
         }
         let _ = writeln!(out);
-        super::markdown_friction::point(&mut out, op);
+        super::markdown_friction::point(&mut out, op, g.helical.is_some());
     }
     super::markdown_friction::sweep(&mut out, r);
     super::markdown_dynamics::dynamics(&mut out, r);
