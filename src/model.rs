@@ -65,6 +65,14 @@ pub enum Solver {
     Magnus,
 }
 
+/// The free response asked for: X(0) = (x0, v0) followed over `periods` mesh periods.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FreeResponseSpec {
+    pub x0: f64,
+    pub v0: f64,
+    pub periods: usize,
+}
+
 /// The `dynamics` block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicsSpec {
@@ -75,6 +83,8 @@ pub struct DynamicsSpec {
     pub solver: Solver,
     /// Static transmission error harmonics (amplitude m, phase rad) in mesh orders 1, 2, …
     pub transmission_error: Vec<(f64, f64)>,
+    /// `free_response { x0 = .. v0 = .. periods = .. }`: initial DTE (m), its rate (m/s), periods.
+    pub free_response: Option<FreeResponseSpec>,
     pub span: Span,
 }
 

@@ -104,8 +104,11 @@ pub fn free_response<M: PeriodicModel<2> + ?Sized>(
     let mut series = (Vec::new(), Vec::new());
     for n in 0..periods {
         let e = zero.extrema(|p, t| hom(p, t, &x)[0], |p, t| hom(p, t, &x)[1]);
-        let (value, time) =
-            if e.max.value.abs() >= e.min.value.abs() { (e.max.value.abs(), e.max.time) } else { (e.min.value.abs(), e.min.time) };
+        let (value, time) = if e.max.value.abs() >= e.min.value.abs() {
+            (e.max.value.abs(), e.max.time)
+        } else {
+            (e.min.value.abs(), e.min.time)
+        };
         if value > peak.value {
             peak = Extremum { value, time: n as f64 + time / t_mesh };
         }
@@ -120,7 +123,15 @@ pub fn free_response<M: PeriodicModel<2> + ?Sized>(
         }
         x = phi * x;
     }
-    FreeResponse { initial: x0, periods, peak, first_period_peak: first, last_period_peak: last, lines: lines(sys, floquet, &zero, &hom, x0), series }
+    FreeResponse {
+        initial: x0,
+        periods,
+        peak,
+        first_period_peak: first,
+        last_period_peak: last,
+        lines: lines(sys, floquet, &zero, &hom, x0),
+        series,
+    }
 }
 
 /// The spectrum lines of the free response from `x0` (module doc).
@@ -165,7 +176,10 @@ fn lines<M: PeriodicModel<2> + ?Sized>(
             let im = integrals[(i * TERMS + k) * 2 + 1];
             let a = c[i] * Complex::new(re.value, im.value) / t_mesh;
             let err = c[i].norm() * (re.error + im.error) / t_mesh;
-            match buckets.iter_mut().find(|b| (b.0 - order).abs() < 1e-9) {
+            // Merge terms at one frequency from modes of equal growth (a complex pair); real
+            // multipliers of different modulus stay apart.
+            let growth = lambda.norm();
+            match buckets.iter_mut().find(|b| (b.0 - order).abs() < 1e-9 && (b.3 - growth).abs() <= 1e-12 * growth) {
                 Some(b) => {
                     b.1 += a;
                     b.2 += err;

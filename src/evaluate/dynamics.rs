@@ -26,6 +26,8 @@ pub struct FormulationResult {
     pub determinant: f64,
     pub liouville: f64,
     pub response: Option<PeriodicResponse>,
+    /// The free response from the scene's initial state (detail points only).
+    pub free: Option<crate::dynamics::free::FreeResponse>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -103,8 +105,9 @@ fn system<'a>(
     sys
 }
 
-fn analyse(sys: &SdofSystem, with_response: bool) -> FormulationResult {
+fn analyse(sys: &SdofSystem, with_response: bool, free: Option<crate::model::FreeResponseSpec>) -> FormulationResult {
     let fl = Floquet::analyse(sys);
+    let free = free.map(|fr| crate::dynamics::free::free_response(sys, &fl, [fr.x0, fr.v0], fr.periods));
     FormulationResult {
         formulation: sys.formulation,
         method: fl.method,
@@ -114,6 +117,7 @@ fn analyse(sys: &SdofSystem, with_response: bool) -> FormulationResult {
         determinant: fl.determinant,
         liouville: fl.liouville,
         response: if with_response { PeriodicResponse::compute(sys, &fl) } else { None },
+        free,
     }
 }
 
@@ -180,7 +184,7 @@ impl<'a> DynamicsSetup<'a> {
             .iter()
             .map(|f| {
                 let sys = system(self.base, self.spec, &self.stiffness, law.as_deref(), *f, state, self.inertia);
-                analyse(&sys, true)
+                analyse(&sys, true, self.spec.free_response)
             })
             .collect();
         DynamicsPoint {

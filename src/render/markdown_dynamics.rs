@@ -87,7 +87,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
             row(
                 out,
                 &[
-                    format!("{:?}", f.formulation).to_lowercase(),
+                    f.formulation.name().to_string(),
                     format!("{:?}", f.method).to_lowercase(),
                     fixed(f.spectral_radius.0, 6),
                     mults.join(", "),
@@ -117,8 +117,14 @@ pub fn dynamics(out: &mut String, r: &Report) {
         }
         let _ = writeln!(out);
         located_lines(out, &p.formulations);
+        free_lines(out, &p.formulations);
         if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
-            let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
+            if !c.dte.is_empty() {
+                let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
+            }
+            if !c.free.is_empty() {
+                let _ = writeln!(out, "![free response from the initial state]({})\n", c.free_file);
+            }
         }
     }
     if let Some(map) = &d.stability_map {
@@ -149,7 +155,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
             row(
                 out,
                 &[
-                    format!("{f:?}").to_lowercase(),
+                    f.name().to_string(),
                     fixed(rho, 6),
                     fixed(at, 0),
                     fixed(kv, 4),
@@ -163,6 +169,38 @@ pub fn dynamics(out: &mut String, r: &Report) {
 }
 
 /// The located extrema (value at τ in mesh periods), means with their error estimates, separation.
+/// The free responses: peak, growth and the Floquet-mode spectrum lines.
+fn free_lines(out: &mut String, formulations: &[FormulationReport]) {
+    for f in formulations {
+        let Some(fr) = &f.free_response else { continue };
+        let _ = writeln!(
+            out,
+            "Free response, {}: x0 = {} µm, v0 = {} m/s over {} mesh periods; peak |x| {} µm at t = {} T; largest |x| in the first period {} µm, in the last {} µm. Lines (Floquet modes, f = arg λ/(2πT) + k f_mesh):\n",
+            f.formulation.name(),
+            fixed(fr.x0.si() * 1e6, 5),
+            fixed(fr.v0.si(), 5),
+            fr.periods,
+            fixed(fr.peak.value.si() * 1e6, 5),
+            fixed(fr.peak.tau.0, 4),
+            fixed(fr.first_period_peak.si() * 1e6, 5),
+            fixed(fr.last_period_peak.si() * 1e6, 5)
+        );
+        header(out, &["f / f_mesh", "amplitude µm", "error est. µm", "growth per period |λ|"]);
+        for l in &fr.lines {
+            row(
+                out,
+                &[
+                    fixed(l.order.0, 4),
+                    fixed(l.amplitude.si() * 1e6, 6),
+                    format!("{:.1e}", l.amplitude_error.si() * 1e6),
+                    fixed(l.growth_per_period.0, 6),
+                ],
+            );
+        }
+        let _ = writeln!(out);
+    }
+}
+
 fn located_lines(out: &mut String, formulations: &[FormulationReport]) {
     let at = |l: &Located, scale: f64, digits: usize, unit: &str| {
         format!("{} {unit} at τ = {}", fixed(l.value.si() * scale, digits), fixed(l.tau.0, 6))
@@ -194,7 +232,7 @@ fn located_lines(out: &mut String, formulations: &[FormulationReport]) {
                 f.tooth_separation.iter().map(|[a, b]| format!("τ = {}–{}", fixed(a.0, 6), fixed(b.0, 6))).collect();
             parts.push(format!("teeth separate at {}", spans.join(", ")));
         }
-        let _ = writeln!(out, "- {}: {}", format!("{:?}", f.formulation).to_lowercase(), parts.join("; "));
+        let _ = writeln!(out, "- {}: {}", f.formulation.name().to_string(), parts.join("; "));
     }
     let _ = writeln!(out);
 }

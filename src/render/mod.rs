@@ -54,7 +54,12 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
     }
     if let Some(d) = &report.dynamics {
         for (k, c) in d.curves.iter().enumerate() {
-            files.push((c.file.clone(), svg::dynamics_point(report, k)?));
+            if !c.dte.is_empty() {
+                files.push((c.file.clone(), svg::dynamics_point(report, k)?));
+            }
+            if !c.free.is_empty() {
+                files.push((c.free_file.clone(), svg::free_response(report, k)?));
+            }
         }
         if let Some(t) = &d.timings {
             let mut json = serde_json::to_string_pretty(t).expect("timings serialise");

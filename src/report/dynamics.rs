@@ -96,6 +96,53 @@ pub struct FormulationReport {
     /// External formulation: peak |Σ μ_j w_j F| (μ × tooth force), which its equation does not apply.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peak_mu_times_tooth_force: Option<Located>,
+    /// The free (homogeneous) response from the scene's initial state, when asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub free_response: Option<FreeResponseReport>,
+}
+
+/// The free response X(t + nT) = Φ(t, 0) Φ(T)ⁿ X(0) and its Floquet-mode spectrum lines.
+#[derive(Debug, Clone, Serialize)]
+pub struct FreeResponseReport {
+    pub x0: Q,
+    pub v0: Q,
+    pub periods: usize,
+    /// Largest |DTE| over the window, located; time in mesh periods from the start.
+    pub peak: Located,
+    pub first_period_peak: Q,
+    pub last_period_peak: Q,
+    /// Largest lines first: frequency in mesh orders, one-sided amplitude at t = 0, its error
+    /// estimate, growth per period |λ|.
+    pub lines: Vec<FreeLine>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct FreeLine {
+    pub order: Num,
+    pub amplitude: Q,
+    pub amplitude_error: Q,
+    pub growth_per_period: Num,
+}
+
+fn free_report(f: &crate::dynamics::free::FreeResponse) -> FreeResponseReport {
+    FreeResponseReport {
+        x0: m(f.initial[0]),
+        v0: Q::new(f.initial[1], "m/s"),
+        periods: f.periods,
+        peak: located(f.peak, "m"),
+        first_period_peak: m(f.first_period_peak),
+        last_period_peak: m(f.last_period_peak),
+        lines: f
+            .lines
+            .iter()
+            .map(|l| FreeLine {
+                order: Num(l.order),
+                amplitude: m(l.amplitude),
+                amplitude_error: m(l.error),
+                growth_per_period: Num(l.growth),
+            })
+            .collect(),
+    }
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -144,6 +191,9 @@ pub struct DynamicsCurves {
     pub spectrum: Vec<(String, Vec<f64>)>,
     /// Zone boundary and pitch-point passage times (mesh periods).
     pub marks: Vec<(&'static str, f64)>,
+    /// free_response_point_K.svg and its series (formulation, [(t in mesh periods, DTE m)]).
+    pub free_file: String,
+    pub free: Vec<(String, Vec<(f64, f64)>)>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -205,11 +255,16 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                 if picked.contains(&k) {
                     let mut c = DynamicsCurves {
                         file: format!("dynamics_point_{}.svg", k + 1),
+                        free_file: format!("free_response_point_{}.svg", k + 1),
                         label: label.clone(),
                         marks: vec![("B|E", tau_b), ("P", tau_p)],
                         ..Default::default()
                     };
                     for r in &p.results {
+                        if let Some(fr) = &r.free {
+                            let pts = fr.series.0.iter().copied().zip(fr.series.1.iter().copied()).collect();
+                            c.free.push((r.formulation.name().to_string(), pts));
+                        }
                         let Some(resp) = &r.response else { continue };
                         let name = r.formulation.name().to_string();
                         let ser = &resp.series;
@@ -229,7 +284,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                                 .collect();
                         }
                     }
-                    if !c.dte.is_empty() {
+                    if !c.dte.is_empty() || !c.free.is_empty() {
                         curves.push(c);
                     }
                 }
@@ -286,6 +341,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                                 .response
                                 .as_ref()
                                 .and_then(|x| x.peak_mu_times_tooth_force.map(|e| located(e, "N"))),
+                            free_response: r.free.as_ref().map(free_report),
                         })
                         .collect(),
                 }

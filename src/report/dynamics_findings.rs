@@ -11,7 +11,7 @@ pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     for p in &r.points {
         for f in &p.formulations {
-            let name = format!("{:?}", f.formulation).to_lowercase();
+            let name = f.formulation.name().to_string();
             if f.verdict == Verdict::Unstable {
                 out.push(warn(format!(
                     "dynamics at {} ({name}): parametrically unstable, spectral radius {:.6}; no steady state exists in the linear model and none is reported",

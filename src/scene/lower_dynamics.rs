@@ -8,7 +8,7 @@ use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::dynamics::DynamicFormulation;
 use crate::geometry::stiffness::StiffnessModel;
-use crate::model::{AngularVelocity, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
+use crate::model::{AngularVelocity, DynamicsSpec, FreeResponseSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
 use crate::scene::units::SiQuantity;
 
 const KEYS: &[&str] =
@@ -25,7 +25,7 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         block.span,
         &block.items,
         KEYS,
-        &["mesh_stiffness", "transmission_error"],
+        &["mesh_stiffness", "transmission_error", "free_response"],
         &[],
         errors,
     );
@@ -82,6 +82,7 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         return None;
     }
     let transmission_error = transmission_error(&f, errors)?;
+    let free_response = free_response(&f, errors)?;
     let stiffness = stiffness(&f, base_dir, errors)?;
     Some(DynamicsSpec {
         formulations,
@@ -90,8 +91,36 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         friction,
         solver,
         transmission_error,
+        free_response,
         span: block.kind.span,
     })
+}
+
+/// Most mesh periods of a free response.
+pub const MAX_FREE_PERIODS: usize = 2000;
+
+/// `free_response { x0 = 2e-6 in  v0 = 20 in/s  periods = 20 }` (He & Singh Figs 8–9).
+fn free_response(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Option<FreeResponseSpec>> {
+    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "free_response") else { return Some(None) };
+    let t = Fields::read("`free_response`", b.span, &b.items, &["x0", "v0", "periods"], &[], &[], errors);
+    let get = |key: &str, dim: Dimension, errors: &mut Vec<Diagnostic>| -> Option<f64> {
+        match t.values.get(key) {
+            None => Some(0.0),
+            Some((_, v)) => scalar(key, v, dim, errors).map(|(x, _)| x),
+        }
+    };
+    let x0 = get("x0", Dimension::LENGTH, errors);
+    let v0 = get("v0", Dimension::VELOCITY, errors);
+    let periods = t.number("periods", 1.0, MAX_FREE_PERIODS as f64, errors).map_or(20.0, |g| g.value);
+    let (x0, v0) = (x0?, v0?);
+    if x0 == 0.0 && v0 == 0.0 {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, b.kind.span, "a free response needs an initial state")
+                .hint("give `x0` (a DTE) or `v0` (its rate), e.g. `x0 = 2e-6 in  v0 = 20 in/s`"),
+        );
+        return None;
+    }
+    Some(Some(FreeResponseSpec { x0, v0, periods: periods.round() as usize }))
 }
 
 /// `transmission_error { amplitudes = [1.5, 0.4] um  phases = [0, 90] deg }`: ε(t) = Σ a_n cos(2π n t/T + φ_n).

@@ -34,13 +34,31 @@ pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
     figure(&format!("{}: dynamics at {}", r.title, c.label), &panels)
 }
 
+/// free_response_point_K.svg: the free (homogeneous) DTE from the scene's initial state over the
+/// requested mesh periods, per formulation (He & Singh Figs 8–9).
+pub fn free_response(r: &Report, k: usize) -> Result<String, String> {
+    let d = r.dynamics.as_ref().ok_or("no dynamics in the report")?;
+    let c = &d.curves[k];
+    let panels: Vec<Panel> = c
+        .free
+        .iter()
+        .map(|(l, v)| Panel {
+            y_label: format!("free DTE, {l} (µm)"),
+            x_label: "time in mesh periods".into(),
+            xy: vec![(l.clone(), v.iter().map(|(t, x)| (*t, x * 1e6)).collect())],
+            ..Default::default()
+        })
+        .collect();
+    figure(&format!("{}: free response at {}", r.title, c.label), &panels)
+}
+
 /// stability_map.svg: spectral radius and dynamic factor against speed, per formulation.
 pub fn stability_map(r: &Report) -> Result<String, String> {
     use crate::report::friction::MuValue;
     let map = r.dynamics.as_ref().and_then(|d| d.stability_map.as_ref()).ok_or("no stability map")?;
     let x: Vec<f64> = map.points.iter().map(|p| map.speed_unit.value(&p.pinion_speed)).collect();
     let x_label = format!("pinion speed ({})", map.speed_unit.name);
-    let names: Vec<String> = map.formulations.iter().map(|f| format!("{f:?}").to_lowercase()).collect();
+    let names: Vec<String> = map.formulations.iter().map(|f| f.name().to_string()).collect();
     let mut rho: Vec<(String, Vec<f64>)> = names
         .iter()
         .enumerate()
