@@ -28,10 +28,13 @@ impl Iso14179_2 {
         let t = &ctx.tribology;
         let u = g.gear_ratio;
         let alpha_wt = g.operating_pressure_angle;
-        let fbt_per_b = g.normal_load(&ctx.state) / (g.face_width * units::MM_PER_M);
+        // F_bt: the transverse force at the base circle, T_p / r_b1 (= F_bn for a spur pair).
+        let fbt_per_b = ctx.state.pinion_torque / g.base_radius[0] / (g.face_width * units::MM_PER_M);
         let vt = ctx.state.pinion_speed * g.working_pitch_radius[0];
         let v_sum = 2.0 * vt * alpha_wt.sin();
         let rho = u / (1.0 + u).powi(2) * g.center_distance * units::MM_PER_M * alpha_wt.sin();
+        // ρ_redC = u/(1+u)² · a sin α_wt / cos β_b (helical pairs; cos β_b = 1 for spur).
+        let rho = if g.is_helical() { rho / g.base_helix_angle.cos() } else { rho };
         let eta = t.dynamic_viscosity * units::CP_PER_PA_S;
         let ra = t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M;
         let mut notes = Vec::new();

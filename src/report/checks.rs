@@ -13,6 +13,10 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),
+            TipSource::AddendumRule if g.is_helical() => format!(
+                "{name} tip diameter from the addendum rule d_a = m_t z + 2 m_n (1 + x): {:.4} mm",
+                2e3 * g.tip_radius[i]
+            ),
             TipSource::AddendumRule => format!(
                 "{name} tip diameter from the addendum rule d_a = m (z + 2 + 2x): {:.4} mm",
                 2e3 * g.tip_radius[i]
@@ -49,9 +53,43 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             g.center_distance * 1e3
         )));
     }
+    if g.is_helical() {
+        out.extend(helical_findings(g));
+        return out;
+    }
     out.push(note(match scene.gears.load_sharing {
         LoadSharing::Equal => "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into(),
         LoadSharing::None => "load sharing: none (every contact carries the whole normal load)".into(),
     }));
+    out
+}
+
+/// Helical pairs: how the load is shared, and the checks on the overlap ratio and the helix angle.
+fn helical_findings(g: &crate::geometry::PairGeometry) -> Vec<Finding> {
+    let mut out = vec![Finding {
+        severity: Severity::Note,
+        message: format!(
+            "load sharing: constant stiffness density along the contact lines (He & Singh): w = F_bn / L(t), L̄ = ε_α b / cos β_b = {:.4} mm",
+            g.mean_contact_length() * 1e3
+        ),
+    }];
+    if g.overlap_ratio < 1.0 {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "overlap ratio ε_β = {:.4} is below 1: the contact length varies strongly over the cycle (a quiet helical mesh has ε_β ≥ 1; widen the face or raise β)",
+                g.overlap_ratio
+            ),
+        });
+    }
+    if g.helix_angle.to_degrees() > 30.0 {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "helix angle {:.2}° is above 30°: the axial force F_a = F_t tan β exceeds 0.58 F_t (bearings; consider a double-helical pair)",
+                g.helix_angle.to_degrees()
+            ),
+        });
+    }
     out
 }
