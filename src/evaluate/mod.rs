@@ -1,6 +1,6 @@
 //! Stage 3, evaluate: computes only what the scene asks for, in plain SI `f64`.
 //!
-//! The sweeps are expanded once into [`Case`]s ([`cases()`]); at each case the contact state along the
+//! The operating points reported in full become [`Case`]s ([`cases`]); at each case the contact state along the
 //! line of action is always computed, friction, efficiency and film thickness only when the scene's
 //! `analyses` name them ([`laws`]), and the dynamics only when it has a `dynamics` block and asks for
 //! them ([`dynamics`]). Report and render read the evaluation; they never recompute physics.

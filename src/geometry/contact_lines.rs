@@ -26,7 +26,7 @@ pub const MAX_LINES: usize = 8;
 pub struct ContactLine {
     /// k: the line entered k mesh periods before the one entering at τ = 0.
     pub index: usize,
-    /// z at its two ends, z[0] < z[1] (m).
+    /// z at its two ends, smaller first (m).
     pub z: [f64; 2],
     /// u at those ends (m from T1); equal for a spur pair.
     pub u: [f64; 2],

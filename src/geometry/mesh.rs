@@ -86,6 +86,8 @@ pub const LINE_NODES: usize = 8;
 /// quadrature points along the contact lines, each carrying its share of the normal load
 /// (w dl / F_bn, so that Σ over the points of share × g(u) is ∫ g w dl / F_bn).
 #[derive(Debug, Clone)]
+// The stack variant is the hot one (spur sweeps build it at every quadrature node): not boxed.
+#[allow(clippy::large_enum_variant)]
 pub enum Contacts {
     Pairs([ContactPoint; MAX_CONTACTS], usize),
     Lines(Vec<ContactPoint>),

@@ -232,7 +232,7 @@ fn located_lines(out: &mut String, formulations: &[FormulationReport]) {
                 f.tooth_separation.iter().map(|[a, b]| format!("τ = {}–{}", fixed(a.0, 6), fixed(b.0, 6))).collect();
             parts.push(format!("teeth separate at {}", spans.join(", ")));
         }
-        let _ = writeln!(out, "- {}: {}", f.formulation.name().to_string(), parts.join("; "));
+        let _ = writeln!(out, "- {}: {}", f.formulation.name(), parts.join("; "));
     }
     let _ = writeln!(out);
 }

@@ -15,6 +15,9 @@ pub struct LengthAt {
     pub tau: Num,
 }
 
+/// The two ends (u, z) of a contact line (m).
+pub type LineEnds = [(f64, f64); 2];
+
 /// The axial force at one reported operating point.
 #[derive(Debug, Clone, Serialize)]
 pub struct AxialForce {
@@ -43,7 +46,7 @@ pub struct HelicalReport {
     #[serde(skip)]
     pub path: [f64; 4],
     #[serde(skip)]
-    pub lines_at: Vec<(f64, Vec<[(f64, f64); 2]>)>,
+    pub lines_at: Vec<(f64, Vec<LineEnds>)>,
     /// For the plot: τ, L, L on the approach side, L on the recess side (m), over one cycle.
     #[serde(skip)]
     pub length_curve: [Vec<f64>; 4],

@@ -4,7 +4,7 @@
 use gearloss::geometry::regions::{LineEnd::*, PitchSide::*};
 use gearloss::geometry::{PairGeometry, PairInput};
 
-use crate::{root, scene};
+use crate::root;
 
 /// The NASA-ART pair (He & Singh §2) with `beta` as the reference helix angle (m_n = m_t cos β,
 /// tan α_n = tan α_t cos β, so that the transverse values stay those of the paper).
