@@ -158,11 +158,11 @@ impl PairGeometry {
         out
     }
 
-    /// Times in (0, 1) at which an end of a line passes the pitch line (x_k = T1P or T1P + b tan β_b):
-    /// where the mean-efficiency integrand of a law singular at P has a singular derivative.
-    pub fn pitch_line_times(&self) -> Vec<f64> {
+    /// The times in (0, 1) at which the z = +b/2 end of some line reaches one of `positions`, sorted
+    /// and without duplicates.
+    fn times_at(&self, positions: impl IntoIterator<Item = f64>) -> Vec<f64> {
         let mut times = Vec::new();
-        for u in [self.points.p, self.points.p + self.line_lead()] {
+        for u in positions {
             for k in 0..MAX_LINES {
                 let tau = (u - self.points.a) / self.base_pitch - k as f64;
                 if tau > 1e-14 && tau < 1.0 - 1e-14 {
@@ -175,23 +175,21 @@ impl PairGeometry {
         times
     }
 
+    /// Times in (0, 1) at which an end of a line passes the pitch line (x_k = T1P or T1P + b tan β_b):
+    /// where the mean-efficiency integrand of a law singular at P has a singular derivative.
+    pub fn pitch_line_times(&self) -> Vec<f64> {
+        self.times_at([self.points.p, self.points.p + self.line_lead()])
+    }
+
     /// The break times of one mesh cycle for a helical pair: 0, 1, and every time a line end passes
     /// a corner of the path or one of `switch_points` (the pitch point is always included), sorted
     /// and without duplicates.
     pub fn helical_break_times(&self, switch_points: &[f64]) -> Vec<f64> {
         let mut positions = vec![self.points.p];
         positions.extend_from_slice(switch_points);
-        let mut times = vec![0.0, 1.0];
-        for u in self.line_end_positions(&positions) {
-            for k in 0..MAX_LINES {
-                let tau = (u - self.points.a) / self.base_pitch - k as f64;
-                if tau > 1e-14 && tau < 1.0 - 1e-14 {
-                    times.push(tau);
-                }
-            }
-        }
-        times.sort_by(f64::total_cmp);
-        times.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+        let mut times = vec![0.0];
+        times.extend(self.times_at(self.line_end_positions(&positions)));
+        times.push(1.0);
         times
     }
 }
