@@ -21,6 +21,7 @@ pub mod numerics;
 pub mod propagator;
 pub mod response;
 pub mod sdof;
+pub mod six_dof;
 pub mod trajectory;
 
 pub use floquet::{Floquet, Multiplier};

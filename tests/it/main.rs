@@ -10,6 +10,7 @@ mod fuzz_campaign;
 mod geometry;
 mod helical;
 mod properties;
+mod six_dof;
 mod specs;
 mod sweeps;
 mod units;
