@@ -22,6 +22,7 @@ pub mod propagator;
 pub mod response;
 pub mod sdof;
 pub mod six_dof;
+pub mod six_dof_response;
 pub mod trajectory;
 
 pub use floquet::{Floquet, Multiplier};

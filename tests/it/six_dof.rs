@@ -99,3 +99,90 @@ fn liouville_and_two_propagation_methods() {
     );
     assert!((a.spectral_radius - b.spectral_radius).abs() < 1e-9);
 }
+
+mod response {
+    use gearloss::dynamics::six_dof_response::SixDofResponse;
+    use gearloss::dynamics::Floquet;
+    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::friction::FrictionLaw;
+
+    use super::{ctx, fzg, six};
+
+    /// The mean OLOA bearing force balances the mean friction force Σ μ_i N_i (pinion +, wheel −), to
+    /// 1e-8 relative: y is periodic, so the means of ÿ and ẏ vanish.
+    #[test]
+    fn mean_oloa_bearing_force_balances_the_mean_friction_force() {
+        let (scene, g) = fzg();
+        let law = Coulomb { mu: 0.08 };
+        let s = six(ctx(&scene, &g, 1000.0), Some(&law), 5e8);
+        let r = SixDofResponse::compute(&s, &Floquet::analyse(&s)).unwrap();
+        let f = r.friction_force.mean.value;
+        assert!(f.abs() > 1.0, "mean friction force {f}");
+        assert!((r.gears[0].bearing_force_oloa.mean.value - f).abs() < 1e-8 * f.abs());
+        assert!((r.gears[1].bearing_force_oloa.mean.value + f).abs() < 1e-8 * f.abs());
+        // Along the line of action both bearings carry the mean mesh force N̄, pinion − and wheel +
+        // (equal to 1e-8); N̄ is within 5 % of F0 = T_p/r_b1 (mean (1 − f) N = F0 exactly).
+        let (p, w) = (r.gears[0].bearing_force_loa.mean.value, r.gears[1].bearing_force_loa.mean.value);
+        assert!((p + w).abs() < 1e-8 * w.abs(), "{p} {w}");
+        let n0 = s.mesh.static_force;
+        assert!((w - n0).abs() < 0.05 * n0, "{w} vs {n0}");
+    }
+
+    /// He & Singh §3 ("friction has most significant effect in the OLOA dynamics") and He–Cho–Singh:
+    /// with friction the OLOA bearing force has mesh harmonics (orders 1 and 2 above 5 % of the mean
+    /// friction force; exactly zero without friction), and of the DTE harmonics 1–5 the second is
+    /// the one friction amplifies most (ratio of amplitudes with μ = 0.08 to μ = 0).
+    #[test]
+    fn friction_excites_the_oloa_harmonics_and_the_second_dte_harmonic_most() {
+        let (scene, g) = fzg();
+        let law = Coulomb { mu: 0.08 };
+        let with = six(ctx(&scene, &g, 1000.0), Some(&law), 5e8);
+        let without = six(ctx(&scene, &g, 1000.0), None, 5e8);
+        let rw = SixDofResponse::compute(&with, &Floquet::analyse(&with)).unwrap();
+        let r0 = SixDofResponse::compute(&without, &Floquet::analyse(&without)).unwrap();
+        let f = rw.friction_force.mean.value.abs();
+        for o in 0..2 {
+            assert!(rw.gears[0].bearing_force_oloa.spectrum[o] > 0.05 * f, "order {}", o + 1);
+            assert_eq!(r0.gears[0].bearing_force_oloa.spectrum[o], 0.0);
+        }
+        let ratios: Vec<f64> = (0..5).map(|o| rw.dte.spectrum[o] / r0.dte.spectrum[o]).collect();
+        let best = ratios.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)).unwrap().0;
+        assert_eq!(best + 1, 2, "amplification by order {ratios:?}");
+    }
+
+    /// He–Cho–Singh: Model III (Xu) gives the smallest OLOA excitation near the pitch point: within
+    /// ±2 % of a mesh period around the pitch passage max |μ̄| is smallest for Xu, among Coulomb
+    /// (μ = 0.08), Benedict–Kelley and Xu.
+    #[test]
+    fn xu_gives_the_smallest_oloa_excitation_near_the_pitch_point() {
+        let (scene, g) = fzg();
+        let c = ctx(&scene, &g, 1000.0);
+        let spec = |name: &str| {
+            let l = gearloss::friction::catalog::entry(name).unwrap();
+            let arguments = l
+                .arguments
+                .iter()
+                .map(|a| (a.name.to_string(), a.default.unwrap_or(f64::NAN), "default".to_string()))
+                .collect();
+            gearloss::friction::catalog::FrictionLawSpec { law: l.id, arguments, span: Default::default() }.build(&c)
+        };
+        let laws: Vec<(String, Box<dyn FrictionLaw>)> = vec![
+            ("coulomb".into(), Box::new(Coulomb { mu: 0.08 })),
+            ("benedict_kelley".into(), spec("benedict_kelley")),
+            ("xu".into(), spec("xu")),
+        ];
+        let tau_p = g.pitch_times()[0];
+        let mut peaks = Vec::new();
+        for (name, law) in &laws {
+            let s = six(c, Some(law.as_ref()), 5e8);
+            let t = s.mesh.period;
+            let peak = (0..=400)
+                .map(|i| (tau_p - 0.02 + 0.04 * i as f64 / 400.0) * t)
+                .map(|x| s.mean_mu(x).abs())
+                .fold(0.0f64, f64::max);
+            peaks.push((name.clone(), peak));
+        }
+        let xu = peaks.iter().find(|p| p.0 == "xu").unwrap().1;
+        assert!(peaks.iter().all(|p| p.0 == "xu" || p.1 > xu), "{peaks:?}");
+    }
+}
