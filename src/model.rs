@@ -12,7 +12,7 @@ use crate::diagnostics::Span;
 pub use crate::efficiency::Formulation;
 pub use crate::friction::catalog::{FrictionLawSpec, LawId};
 pub use si::{
-    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, MassDensity,
+    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, Mass, MassDensity,
     MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque,
 };
 
@@ -73,9 +73,19 @@ pub struct FreeResponseSpec {
     pub periods: usize,
 }
 
+/// Which dynamic model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DynamicModel {
+    /// The SDOF torsional model along the line of action.
+    Sdof,
+    /// θ, LOA and OLOA translations of both gears on their bearings, [pinion, wheel].
+    SixDof { bearings: [crate::dynamics::six_dof::Bearing; 2] },
+}
+
 /// The `dynamics` block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DynamicsSpec {
+    pub model: DynamicModel,
     pub formulations: Vec<crate::dynamics::DynamicFormulation>,
     pub stiffness: StiffnessSpec,
     pub damping_ratio: f64,
@@ -137,6 +147,8 @@ pub struct Gear {
     pub profile_shift: Given<f64>,
     pub tip_diameter: Option<Given<Length>>,
     pub inertia: Option<Given<MomentOfInertia>>,
+    /// The gear's mass with its shaft share, for the 6-DOF model.
+    pub mass: Option<Given<Mass>>,
     pub material: Material,
     pub roughness_ra: Option<Given<Length>>,
     pub roughness_rq: Option<Given<Length>>,

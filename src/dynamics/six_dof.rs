@@ -225,3 +225,17 @@ impl PeriodicModel<STATES> for SixDofSystem<'_> {
         Self::deflection(x).0
     }
 }
+
+impl SixDofSystem<'_> {
+    /// The static state at rest under the mean stiffness, where the numerics study starts:
+    /// δ_θ = F0/k̄ + F0/K_xp + F0/K_xg (so that δ = F0/k̄), x_p = −F0/K_xp, x_g = F0/K_xg, y = 0.
+    pub fn static_state(&self) -> SVector<f64, STATES> {
+        let f0 = self.mesh.static_force;
+        let (xp, xg) = (-f0 / self.bearings[0].loa, f0 / self.bearings[1].loa);
+        let mut x = SVector::<f64, STATES>::zeros();
+        x[0] = f0 / self.mesh.mean_stiffness - xp + xg;
+        x[1] = xp;
+        x[2] = xg;
+        x
+    }
+}

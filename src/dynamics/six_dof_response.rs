@@ -200,3 +200,13 @@ impl SixDofResponse {
         })
     }
 }
+
+/// The dynamic factor alone (located max N / F0), for stability maps; None when unstable.
+pub fn dynamic_factor(sys: &SixDofSystem, floquet: &Floquet<STATES>) -> Option<f64> {
+    let tr = Trajectory::new(sys, &floquet.period, floquet.periodic_state?);
+    let period = sys.period();
+    let force = |p: usize, t: f64| sys.mesh_force(tr.parameter_time(p, t), &tr.state(p, t));
+    let h = 1e-7 * period;
+    let e = tr.extrema(force, |p, t| (force(p, t + h) - force(p, t - h)) / (2.0 * h));
+    Some(e.max.value / sys.mesh.static_force)
+}

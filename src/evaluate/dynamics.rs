@@ -8,11 +8,13 @@ use crate::dynamics::floquet::Verdict;
 use crate::dynamics::numerics::{study, Study};
 use crate::dynamics::propagator::Method;
 use crate::dynamics::response::PeriodicResponse;
+use crate::dynamics::six_dof::SixDofSystem;
+use crate::dynamics::six_dof_response::{self, SixDofResponse};
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, PeriodicModel, SdofSystem, StiffnessModel};
 use crate::evaluate::Case;
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
+use crate::model::{DynamicModel, DynamicsSpec, Scene, Solver, StiffnessSpec};
 use crate::numerics::roots::brent;
 
 /// One formulation at one operating point.
@@ -28,6 +30,8 @@ pub struct FormulationResult {
     pub response: Option<PeriodicResponse>,
     /// The free response from the scene's initial state (detail points only).
     pub free: Option<crate::dynamics::free::FreeResponse>,
+    /// The 6-DOF model's periodic response (`model = six_dof`; then `response` is None).
+    pub six_dof: Option<SixDofResponse>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -59,6 +63,10 @@ pub struct DynamicsEvaluation {
     pub damping: f64,
     pub mean_stiffness: f64,
     pub natural_frequency: f64,
+    /// 6-DOF: the natural frequencies of the mean undamped system (Hz), ascending, and the ratio of
+    /// the highest to the lowest (how stiff the system is for an integrator).
+    pub natural_frequencies: Vec<f64>,
+    pub stiffness_ratio: Option<f64>,
     pub formulations: Vec<DynamicFormulation>,
     /// The friction law diverges at the pitch point (no finite peak friction force).
     pub friction_diverges_at_pitch: bool,
@@ -118,6 +126,7 @@ fn analyse(sys: &SdofSystem, with_response: bool, free: Option<crate::model::Fre
         liouville: fl.liouville,
         response: if with_response { PeriodicResponse::compute(sys, &fl) } else { None },
         free,
+        six_dof: None,
     }
 }
 
@@ -159,6 +168,8 @@ pub struct DynamicsSetup<'a> {
     stiffness: StiffnessModel,
     source: &'static str,
     inertia: [f64; 2],
+    /// Masses and bearings for `model = six_dof`.
+    six: Option<([f64; 2], [crate::dynamics::six_dof::Bearing; 2])>,
 }
 
 impl<'a> DynamicsSetup<'a> {
@@ -167,7 +178,68 @@ impl<'a> DynamicsSetup<'a> {
     pub fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
         let spec = scene.dynamics.as_ref()?;
         let (stiffness, source) = stiffness_model(spec, base.geometry);
-        Some(DynamicsSetup { base, spec, stiffness, source, inertia: inertia(scene) })
+        let six = match spec.model {
+            DynamicModel::SixDof { bearings } => {
+                let m = |g: &crate::model::Gear| g.mass.as_ref().map_or(f64::NAN, |m| m.value.value);
+                Some(([m(&scene.gears.pinion), m(&scene.gears.wheel)], bearings))
+            }
+            DynamicModel::Sdof => None,
+        };
+        Some(DynamicsSetup { base, spec, stiffness, source, inertia: inertia(scene), six })
+    }
+
+    fn sdof(&self, law: Option<&'a dyn FrictionLaw>, f: DynamicFormulation, state: OperatingState) -> SdofSystem<'a> {
+        system(self.base, self.spec, &self.stiffness, law, f, state, self.inertia)
+    }
+
+    /// The formulation at one state: Floquet analysis, and with `with_response` the periodic (and
+    /// free) response, by the scene's model.
+    fn analyse(
+        &self,
+        law: Option<&'a dyn FrictionLaw>,
+        f: DynamicFormulation,
+        state: OperatingState,
+        with_response: bool,
+    ) -> FormulationResult {
+        let sys = self.sdof(law, f, state);
+        let Some((mass, bearings)) = self.six else {
+            return analyse(&sys, with_response, self.spec.free_response);
+        };
+        let six = SixDofSystem::new(sys, mass, bearings);
+        let fl = Floquet::analyse(&six);
+        FormulationResult {
+            formulation: f,
+            method: fl.method,
+            multipliers: fl.multipliers.clone(),
+            spectral_radius: fl.spectral_radius,
+            verdict: fl.verdict,
+            determinant: fl.determinant,
+            liouville: fl.liouville,
+            response: None,
+            free: None,
+            six_dof: if with_response { SixDofResponse::compute(&six, &fl) } else { None },
+        }
+    }
+
+    /// The spectral radius and (when stable) the dynamic factor at one state, for stability maps.
+    fn stability(
+        &self,
+        law: Option<&'a dyn FrictionLaw>,
+        f: DynamicFormulation,
+        state: OperatingState,
+    ) -> (f64, Option<f64>) {
+        let sys = self.sdof(law, f, state);
+        match self.six {
+            None => {
+                let fl = Floquet::analyse(&sys);
+                (fl.spectral_radius, PeriodicResponse::dynamic_factor(&sys, &fl))
+            }
+            Some((mass, bearings)) => {
+                let six = SixDofSystem::new(sys, mass, bearings);
+                let fl = Floquet::analyse(&six);
+                (fl.spectral_radius, six_dof_response::dynamic_factor(&six, &fl))
+            }
+        }
     }
 
     fn law_for(&self, state: OperatingState) -> Option<Box<dyn FrictionLaw + 'a>> {
@@ -183,8 +255,8 @@ impl<'a> DynamicsSetup<'a> {
             .formulations
             .iter()
             .map(|f| {
-                let sys = system(self.base, self.spec, &self.stiffness, law.as_deref(), *f, state, self.inertia);
-                analyse(&sys, true, self.spec.free_response)
+                let law = if *f == DynamicFormulation::Base { None } else { law.as_deref() };
+                self.analyse(law, *f, state, true)
             })
             .collect();
         DynamicsPoint {
@@ -240,9 +312,8 @@ pub fn evaluate_dynamics(
                     .formulations
                     .iter()
                     .map(|f| {
-                        let sys = system(base, spec, stiffness, law.as_deref(), *f, state, j);
-                        let fl = Floquet::analyse(&sys);
-                        (fl.spectral_radius, PeriodicResponse::dynamic_factor(&sys, &fl))
+                        let law = if *f == DynamicFormulation::Base { None } else { law.as_deref() };
+                        setup.stability(law, *f, state)
                     })
                     .collect();
                 StabilityPoint {
@@ -261,8 +332,16 @@ pub fn evaluate_dynamics(
                     let state = OperatingState { pinion_torque: probe_state.pinion_torque, pinion_speed: w };
                     let law = law_for(state);
                     let f = spec.formulations[i];
-                    Floquet::analyse(&system(base, spec, stiffness, law.as_deref(), f, state, j)).spectral_radius
-                        - (1.0 + UNSTABLE_MARGIN)
+                    let law = if f == DynamicFormulation::Base { None } else { law.as_deref() };
+                    let rho = match setup.six {
+                        None => Floquet::analyse(&system(base, spec, stiffness, law, f, state, j)).spectral_radius,
+                        Some((mass, bearings)) => {
+                            let six =
+                                SixDofSystem::new(system(base, spec, stiffness, law, f, state, j), mass, bearings);
+                            Floquet::analyse(&six).spectral_radius
+                        }
+                    };
+                    rho - (1.0 + UNSTABLE_MARGIN)
                 };
                 unstable_ranges(rows.iter().map(|r| (r.pinion_speed, r.spectral_radius[i])), rho)
             })
@@ -275,11 +354,22 @@ pub fn evaluate_dynamics(
             spec.formulations[0]
         };
         let law = law_for(probe_state);
-        let sys = system(base, spec, stiffness, law.as_deref(), f, probe_state, j);
-        (f, 0, study(&sys, sys.static_state()))
+        let law = if f == DynamicFormulation::Base { None } else { law.as_deref() };
+        let sys = system(base, spec, stiffness, law, f, probe_state, j);
+        match setup.six {
+            None => (f, 0, study(&sys, sys.static_state())),
+            Some((mass, bearings)) => {
+                let six = SixDofSystem::new(sys, mass, bearings);
+                let x0 = six.static_state();
+                (f, 0, study(&six, x0))
+            }
+        }
+    });
+    let six_probe = setup.six.map(|(mass, bearings)| {
+        SixDofSystem::new(system(base, spec, stiffness, None, DynamicFormulation::Base, probe_state, j), mass, bearings)
     });
     Some(DynamicsEvaluation {
-        model: probe.name(),
+        model: six_probe.as_ref().map_or(probe.name(), |s| s.name()),
         stiffness: stiffness.clone(),
         stiffness_source: source,
         damping_ratio: spec.damping_ratio,
@@ -287,6 +377,8 @@ pub fn evaluate_dynamics(
         damping: probe.damping,
         mean_stiffness: probe.mean_stiffness,
         natural_frequency: probe.natural_frequency(),
+        natural_frequencies: six_probe.as_ref().map_or_else(Vec::new, |s| s.frequencies.clone()),
+        stiffness_ratio: six_probe.as_ref().map(|s| s.stiffness_ratio()),
         formulations: spec.formulations.clone(),
         friction_diverges_at_pitch: law_for(probe_state).is_some_and(|l| l.diverges_at_pitch()),
         points,

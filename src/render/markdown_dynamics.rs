@@ -18,10 +18,17 @@ fn sci(x: f64) -> String {
 pub fn dynamics(out: &mut String, r: &Report) {
     let Some(d) = &r.dynamics else { return };
     let _ = writeln!(out, "## Dynamics\n");
-    let _ = writeln!(
-        out,
-        "SDOF torsional model along the line of action (Fernandes et al.); x = DTE = R_p θ_p − R_w θ_w. Periodic steady state from Floquet theory, (I − Φ(T)) X(0) = q(T); the exact propagator (matrix exponential) where the coefficients are constant on a segment, 4th-order Magnus elsewhere.\n"
-    );
+    if d.model == "six_dof" {
+        let _ = writeln!(
+            out,
+            "6-DOF model (He–Cho–Singh eqs 1–9): rotation, line-of-action (x) and off-line-of-action (y) translations of both gears on their bearings; DTE = r_b1 θ_p − r_b2 θ_g + x_p − x_g, mesh force N = k(t) δ + c δ̇ shared by the n pairs in contact, friction μ_i N_i along y (pinion +, wheel −) with moment arms T1C_i and T2C_i. The rigid-body rotation is removed: 10 vibratory states; ρ is theirs. Periodic steady state from Floquet theory; exact propagator where the coefficients are constant on a segment, 4th-order Magnus elsewhere.\n"
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "SDOF torsional model along the line of action (Fernandes et al.); x = DTE = R_p θ_p − R_w θ_w. Periodic steady state from Floquet theory, (I − Φ(T)) X(0) = q(T); the exact propagator (matrix exponential) where the coefficients are constant on a segment, 4th-order Magnus elsewhere.\n"
+        );
+    }
     header(out, &["quantity", "value"]);
     let k = match &d.stiffness {
         StiffnessReport::Pairs { single, double, triple } => format!(
@@ -48,6 +55,13 @@ pub fn dynamics(out: &mut String, r: &Report) {
         ("friction law", d.friction.clone().unwrap_or_else(|| "none (base model only)".into())),
     ] {
         row(out, &[q.into(), v]);
+    }
+    if !d.natural_frequencies.is_empty() {
+        let f: Vec<String> = d.natural_frequencies.iter().map(|f| fixed(f.si(), 1)).collect();
+        row(out, &["natural frequencies of the mean system".into(), format!("{} Hz", f.join(", "))]);
+        if let Some(r) = d.stiffness_ratio {
+            row(out, &["highest / lowest natural frequency".into(), fixed(r.0, 2)]);
+        }
     }
     let _ = writeln!(out);
     for p in &d.points {
@@ -117,6 +131,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
         }
         let _ = writeln!(out);
         located_lines(out, &p.formulations);
+        bearing_lines(out, &p.formulations);
         free_lines(out, &p.formulations);
         if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
             if !c.dte.is_empty() {
@@ -169,6 +184,48 @@ pub fn dynamics(out: &mut String, r: &Report) {
 }
 
 /// The located extrema (value at τ in mesh periods), means with their error estimates, separation.
+/// 6-DOF: the bearing forces and displacements of both gears, per formulation.
+fn bearing_lines(out: &mut String, formulations: &[FormulationReport]) {
+    if formulations.iter().all(|f| f.gears.is_empty()) {
+        return;
+    }
+    header(
+        out,
+        &[
+            "formulation",
+            "gear",
+            "LOA bearing force p-p N",
+            "LOA mean N",
+            "OLOA bearing force p-p N",
+            "OLOA mean N",
+            "OLOA orders 1 / 2 N",
+            "y p-p µm",
+            "x p-p µm",
+        ],
+    );
+    for f in formulations {
+        for g in &f.gears {
+            let order =
+                |k: usize| g.bearing_force_oloa_spectrum.get(k).map_or("—".into(), |l| fixed(l.amplitude.si(), 3));
+            row(
+                out,
+                &[
+                    f.formulation.name().into(),
+                    g.gear.into(),
+                    fixed(g.bearing_force_loa_peak_to_peak.si(), 2),
+                    fixed(g.bearing_force_loa_mean.si(), 2),
+                    fixed(g.bearing_force_oloa_peak_to_peak.si(), 3),
+                    fixed(g.bearing_force_oloa_mean.si(), 3),
+                    format!("{} / {}", order(0), order(1)),
+                    fixed(g.oloa_displacement_peak_to_peak.si() * 1e6, 5),
+                    fixed(g.loa_displacement_peak_to_peak.si() * 1e6, 5),
+                ],
+            );
+        }
+    }
+    let _ = writeln!(out);
+}
+
 /// The free responses: peak, growth and the Floquet-mode spectrum lines.
 fn free_lines(out: &mut String, formulations: &[FormulationReport]) {
     for f in formulations {

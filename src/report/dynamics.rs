@@ -99,6 +99,79 @@ pub struct FormulationReport {
     /// The free (homogeneous) response from the scene's initial state, when asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub free_response: Option<FreeResponseReport>,
+    /// 6-DOF model: the largest force on one pair (N/n, located), the mean friction force Σ μ_i N_i
+    /// and per gear [pinion, wheel] the bearing forces and displacements.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pair_force_max: Option<Located>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction_force_mean: Option<Q>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub gears: Vec<GearDynamicsReport>,
+}
+
+/// One gear of the 6-DOF model: bearing forces K x (LOA) and K y (OLOA) and displacements, located
+/// extremes, integrated means with error estimates, the OLOA bearing force spectrum in mesh orders.
+#[derive(Debug, Clone, Serialize)]
+pub struct GearDynamicsReport {
+    pub gear: &'static str,
+    pub bearing_force_loa_peak_to_peak: Q,
+    pub bearing_force_loa_mean: Q,
+    pub bearing_force_oloa_peak_to_peak: Q,
+    pub bearing_force_oloa_mean: Q,
+    pub bearing_force_oloa_mean_error: Q,
+    pub bearing_force_oloa_min: Located,
+    pub bearing_force_oloa_max: Located,
+    pub bearing_force_oloa_spectrum: Vec<SpectrumLine>,
+    pub loa_displacement_peak_to_peak: Q,
+    pub oloa_displacement_peak_to_peak: Q,
+}
+
+/// The 6-DOF response in the report's fields: the DTE, mesh force (as the tooth force), dynamic
+/// factor, friction force and the gears' bearings.
+fn six_dof_fields(f: &mut FormulationReport, x: &crate::dynamics::six_dof_response::SixDofResponse) {
+    f.dte_peak_to_peak = Some(m(x.dte.peak_to_peak()));
+    f.dte_min = Some(located(x.dte.min, "m"));
+    f.dte_max = Some(located(x.dte.max, "m"));
+    f.dte_mean = Some(m(x.dte.mean.value));
+    f.dte_mean_error = Some(m(x.dte.mean.error));
+    f.tooth_force_min = Some(located(x.mesh_force[0], "N"));
+    f.tooth_force_max = Some(located(x.mesh_force[1], "N"));
+    f.dynamic_factor = Some(Num(x.dynamic_factor));
+    f.spectrum =
+        x.dte.spectrum.iter().enumerate().map(|(o, a)| SpectrumLine { order: o + 1, amplitude: m(*a) }).collect();
+    let (lo, hi) = (x.friction_force.min, x.friction_force.max);
+    let peak = if hi.value.abs() >= lo.value.abs() {
+        hi
+    } else {
+        crate::dynamics::trajectory::Extremum { value: lo.value.abs(), time: lo.time }
+    };
+    f.peak_applied_friction_force = Some(located(peak, "N"));
+    f.pair_force_max = Some(located(x.pair_force_max, "N"));
+    f.friction_force_mean = Some(Q::new(x.friction_force.mean.value, "N"));
+    f.gears = vec![gear_dynamics("pinion", &x.gears[0]), gear_dynamics("wheel", &x.gears[1])];
+}
+
+fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::GearResponse) -> GearDynamicsReport {
+    let n = |x: f64| Q::new(x, "N");
+    GearDynamicsReport {
+        gear: name,
+        bearing_force_loa_peak_to_peak: n(g.bearing_force_loa.peak_to_peak()),
+        bearing_force_loa_mean: n(g.bearing_force_loa.mean.value),
+        bearing_force_oloa_peak_to_peak: n(g.bearing_force_oloa.peak_to_peak()),
+        bearing_force_oloa_mean: n(g.bearing_force_oloa.mean.value),
+        bearing_force_oloa_mean_error: n(g.bearing_force_oloa.mean.error),
+        bearing_force_oloa_min: located(g.bearing_force_oloa.min, "N"),
+        bearing_force_oloa_max: located(g.bearing_force_oloa.max, "N"),
+        bearing_force_oloa_spectrum: g
+            .bearing_force_oloa
+            .spectrum
+            .iter()
+            .enumerate()
+            .map(|(o, a)| SpectrumLine { order: o + 1, amplitude: Q::new(*a, "N") })
+            .collect(),
+        loa_displacement_peak_to_peak: m(g.displacement_loa[1].value - g.displacement_loa[0].value),
+        oloa_displacement_peak_to_peak: m(g.displacement_oloa[1].value - g.displacement_oloa[0].value),
+    }
 }
 
 /// The free response X(t + nT) = Φ(t, 0) Φ(T)ⁿ X(0) and its Floquet-mode spectrum lines.
@@ -191,6 +264,8 @@ pub struct DynamicsCurves {
     pub spectrum: Vec<(String, Vec<f64>)>,
     /// Zone boundary and pitch-point passage times (mesh periods).
     pub marks: Vec<(&'static str, f64)>,
+    /// 6-DOF: (label, [(τ, OLOA bearing force N)]) per gear and formulation.
+    pub oloa: Vec<(String, Vec<(f64, f64)>)>,
     /// free_response_point_K.svg and its series (formulation, [(t in mesh periods, DTE m)]).
     pub free_file: String,
     pub free: Vec<(String, Vec<(f64, f64)>)>,
@@ -209,6 +284,11 @@ pub struct DynamicsReport {
     pub damping: Q,
     pub mean_stiffness: Q,
     pub natural_frequency: Q,
+    /// 6-DOF: natural frequencies of the mean undamped system, ascending, and highest/lowest.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub natural_frequencies: Vec<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stiffness_ratio: Option<Num>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction: Option<String>,
     /// The law diverges at the pitch point: its peak friction force and torques are infinite and not reported.
@@ -246,58 +326,70 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
     let tau_p = ((g.points.p - g.points.a) / g.base_pitch).fract();
     let picked = super::pick(d.points.len());
     let mut curves = Vec::new();
-    let points =
-        d.points
-            .iter()
-            .enumerate()
-            .map(|(k, p)| {
-                let label = eval.cases[p.case].label.clone();
-                if picked.contains(&k) {
-                    let mut c = DynamicsCurves {
-                        file: format!("dynamics_point_{}.svg", k + 1),
-                        free_file: format!("free_response_point_{}.svg", k + 1),
-                        label: label.clone(),
-                        marks: vec![("B|E", tau_b), ("P", tau_p)],
-                        ..Default::default()
-                    };
-                    for r in &p.results {
-                        if let Some(fr) = &r.free {
-                            let pts = fr.series.0.iter().copied().zip(fr.series.1.iter().copied()).collect();
-                            c.free.push((r.formulation.name().to_string(), pts));
-                        }
-                        let Some(resp) = &r.response else { continue };
-                        let name = r.formulation.name().to_string();
-                        let ser = &resp.series;
-                        let xy = |v: &[f64]| ser.tau.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
-                        c.dte.push((name.clone(), xy(&ser.dte)));
-                        if r.formulation != DynamicFormulation::Base {
-                            c.friction_force.push((name.clone(), xy(&ser.friction_force)));
-                        }
-                        c.spectrum.push((name.clone(), resp.spectrum.iter().map(|s| s.1).collect()));
-                        if c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base {
-                            c.pair_force = ser
-                                .pair_force
-                                .iter()
-                                .enumerate()
-                                .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
-                                .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), xy(f)))
-                                .collect();
-                        }
+    let points = d
+        .points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let label = eval.cases[p.case].label.clone();
+            if picked.contains(&k) {
+                let mut c = DynamicsCurves {
+                    file: format!("dynamics_point_{}.svg", k + 1),
+                    free_file: format!("free_response_point_{}.svg", k + 1),
+                    label: label.clone(),
+                    marks: vec![("B|E", tau_b), ("P", tau_p)],
+                    ..Default::default()
+                };
+                for r in &p.results {
+                    if let Some(fr) = &r.free {
+                        let pts = fr.series.0.iter().copied().zip(fr.series.1.iter().copied()).collect();
+                        c.free.push((r.formulation.name().to_string(), pts));
                     }
-                    if !c.dte.is_empty() || !c.free.is_empty() {
-                        curves.push(c);
+                    if let Some(x) = &r.six_dof {
+                        let name = r.formulation.name();
+                        let xy = |v: &[f64]| x.series[0].iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
+                        c.dte.push((name.to_string(), xy(&x.series[1])));
+                        c.oloa.push((format!("{name}: pinion"), xy(&x.series[2])));
+                        c.oloa.push((format!("{name}: wheel"), xy(&x.series[3])));
+                        if r.formulation != DynamicFormulation::Base {
+                            c.friction_force.push((name.to_string(), xy(&x.series[4])));
+                        }
+                        c.spectrum.push((name.to_string(), x.dte.spectrum.clone()));
+                    }
+                    let Some(resp) = &r.response else { continue };
+                    let name = r.formulation.name().to_string();
+                    let ser = &resp.series;
+                    let xy = |v: &[f64]| ser.tau.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
+                    c.dte.push((name.clone(), xy(&ser.dte)));
+                    if r.formulation != DynamicFormulation::Base {
+                        c.friction_force.push((name.clone(), xy(&ser.friction_force)));
+                    }
+                    c.spectrum.push((name.clone(), resp.spectrum.iter().map(|s| s.1).collect()));
+                    if c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base {
+                        c.pair_force = ser
+                            .pair_force
+                            .iter()
+                            .enumerate()
+                            .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
+                            .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), xy(f)))
+                            .collect();
                     }
                 }
-                DynamicsPointReport {
-                    label,
-                    pinion_torque: Q::new(p.state.pinion_torque, "N*m"),
-                    pinion_speed: Q::new(p.state.pinion_speed, "rad/s"),
-                    mesh_frequency: Q::new(p.mesh_frequency, "Hz"),
-                    frequency_ratio: Num(d.natural_frequency / p.mesh_frequency),
-                    formulations: p
-                        .results
-                        .iter()
-                        .map(|r| FormulationReport {
+                if !c.dte.is_empty() || !c.free.is_empty() {
+                    curves.push(c);
+                }
+            }
+            DynamicsPointReport {
+                label,
+                pinion_torque: Q::new(p.state.pinion_torque, "N*m"),
+                pinion_speed: Q::new(p.state.pinion_speed, "rad/s"),
+                mesh_frequency: Q::new(p.mesh_frequency, "Hz"),
+                frequency_ratio: Num(d.natural_frequency / p.mesh_frequency),
+                formulations: p
+                    .results
+                    .iter()
+                    .map(|r| {
+                        let mut f = FormulationReport {
                             formulation: r.formulation,
                             method: r.method,
                             spectral_radius: Num(r.spectral_radius),
@@ -342,11 +434,19 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                                 .as_ref()
                                 .and_then(|x| x.peak_mu_times_tooth_force.map(|e| located(e, "N"))),
                             free_response: r.free.as_ref().map(free_report),
-                        })
-                        .collect(),
-                }
-            })
-            .collect();
+                            pair_force_max: None,
+                            friction_force_mean: None,
+                            gears: Vec::new(),
+                        };
+                        if let Some(x) = &r.six_dof {
+                            six_dof_fields(&mut f, x);
+                        }
+                        f
+                    })
+                    .collect(),
+            }
+        })
+        .collect();
     let stability_map = d.stability_map.as_ref().map(|rows| {
         let unstable_ranges = d
             .unstable_ranges
@@ -417,6 +517,8 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         damping: Q::new(d.damping, "N*s/m"),
         mean_stiffness: Q::new(d.mean_stiffness, "N/m"),
         natural_frequency: Q::new(d.natural_frequency, "Hz"),
+        natural_frequencies: d.natural_frequencies.iter().map(|f| Q::new(*f, "Hz")).collect(),
+        stiffness_ratio: d.stiffness_ratio.map(Num),
         friction: scene.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
         friction_diverges_at_pitch: d.friction_diverges_at_pitch,
         points,

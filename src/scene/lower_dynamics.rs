@@ -6,16 +6,20 @@ use super::ast::*;
 use super::fields::{scalar, sweep_values, unknown_name, Fields};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::dynamics::six_dof::Bearing;
 use crate::dynamics::DynamicFormulation;
 use crate::geometry::stiffness::StiffnessModel;
-use crate::model::{AngularVelocity, DynamicsSpec, FreeResponseSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
+use crate::model::{
+    AngularVelocity, DynamicModel, DynamicsSpec, FreeResponseSpec, Gear, Scene, Solver, StiffnessSpec, Sweep,
+};
 use crate::scene::units::SiQuantity;
 
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
 const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file", "per_length"];
 const STE_KEYS: &[&str] = &["amplitudes", "phases"];
-const MODELS: &[&str] = &["sdof"];
+const MODELS: &[&str] = &["sdof", "six_dof"];
+const BEARING_KEYS: &[&str] = &["loa", "oloa", "damping_ratio"];
 const SOLVERS: &[&str] = &["auto", "magnus"];
 const FORMULATIONS: &[&str] = &["base", "external", "internal", "internal_chord"];
 
@@ -25,12 +29,11 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         block.span,
         &block.items,
         KEYS,
-        &["mesh_stiffness", "transmission_error", "free_response"],
+        &["mesh_stiffness", "transmission_error", "free_response", "bearings"],
         &[],
         errors,
     );
-    // `model = sdof` is the only model so far; any other name is refused with the list.
-    f.name("model", MODELS, errors);
+    let six_dof = f.name("model", MODELS, errors).is_some_and(|n| n.text == "six_dof");
     let formulations = match f.values.get("formulations") {
         None => vec![DynamicFormulation::Base, DynamicFormulation::External, DynamicFormulation::Internal],
         Some((_, v)) => formulations(v, errors)?,
@@ -83,8 +86,36 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
     }
     let transmission_error = transmission_error(&f, errors)?;
     let free_response = free_response(&f, errors)?;
+    let model = if six_dof {
+        if let Some(bad) =
+            formulations.iter().find(|x| !matches!(x, DynamicFormulation::Base | DynamicFormulation::Internal))
+        {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    f.values.get("formulations").map_or(block.kind.span, |(_, v)| v.span),
+                    format!("the six_dof model takes the `base` and `internal` formulations, not `{}`", bad.name()),
+                )
+                .hint(
+                    "friction acts through the mesh force in the 6-DOF model: write `formulations = [base, internal]`",
+                ),
+            );
+            return None;
+        }
+        DynamicModel::SixDof { bearings: bearings(&f, block, errors)? }
+    } else {
+        if let Some(b) = f.blocks.iter().find(|b| b.kind.text == "bearings") {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, b.kind.span, "`bearings` belong to the six_dof model")
+                    .hint("write `model = six_dof` to use them, or leave them out for the SDOF model"),
+            );
+            return None;
+        }
+        DynamicModel::Sdof
+    };
     let stiffness = stiffness(&f, base_dir, errors)?;
     Some(DynamicsSpec {
+        model,
         formulations,
         stiffness,
         damping_ratio,
@@ -94,6 +125,55 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         free_response,
         span: block.kind.span,
     })
+}
+
+/// `bearings { pinion { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }  wheel { ... } }`.
+fn bearings(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -> Option<[Bearing; 2]> {
+    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "bearings") else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "the six_dof model needs `bearings`")
+                .hint("add `bearings { pinion { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }  wheel { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 } }`"),
+        );
+        return None;
+    };
+    let t = Fields::read("`bearings`", b.span, &b.items, &[], &["pinion", "wheel"], &[], errors);
+    let mut out = [None, None];
+    for (i, name) in ["pinion", "wheel"].iter().enumerate() {
+        let Some(g) = t.blocks.iter().find(|x| x.kind.text == *name) else {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::MissingKey, b.kind.span, format!("`bearings` has no `{name}`"))
+                    .hint(format!("add `{name} {{ loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }}`")),
+            );
+            continue;
+        };
+        let k = Fields::read(format!("the `{name}` bearing"), g.span, &g.items, BEARING_KEYS, &[], &[], errors);
+        let stiff = |key: &str, errors: &mut Vec<Diagnostic>| -> Option<f64> {
+            let Some((_, v)) = k.values.get(key) else {
+                errors.push(k.missing(key, "5e8 N/m"));
+                return None;
+            };
+            let (x, _) = scalar(key, v, Dimension::STIFFNESS, errors)?;
+            if x > 0.0 {
+                Some(x)
+            } else {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        v.span,
+                        format!("`{key}` bearing stiffness must be positive"),
+                    )
+                    .hint("rolling-element bearings with their housing: about 1e8 to 1e10 N/m"),
+                );
+                None
+            }
+        };
+        let (loa, oloa) = (stiff("loa", errors), stiff("oloa", errors));
+        let zeta = k.number("damping_ratio", 0.0, 1.0, errors).map_or(0.02, |g| g.value);
+        if let (Some(loa), Some(oloa)) = (loa, oloa) {
+            out[i] = Some(Bearing { loa, oloa, damping_ratio: zeta });
+        }
+    }
+    Some([out[0]?, out[1]?])
 }
 
 /// Most mesh periods of a free response.

@@ -27,8 +27,17 @@ const GEARS_KEYS: &[&str] = &[
 ];
 /// The keys that give the module, one of which is needed.
 const MODULE_KEYS: [&str; 4] = ["module", "diametral_pitch", "transverse_module", "transverse_diametral_pitch"];
-const GEAR_KEYS: &[&str] =
-    &["teeth", "profile_shift", "tip_diameter", "inertia", "material", "roughness_ra", "roughness_rq", "roughness_rz"];
+const GEAR_KEYS: &[&str] = &[
+    "teeth",
+    "profile_shift",
+    "tip_diameter",
+    "inertia",
+    "mass",
+    "material",
+    "roughness_ra",
+    "roughness_rq",
+    "roughness_rz",
+];
 const MATERIAL_KEYS: &[&str] = &["youngs_modulus", "poisson_ratio"];
 
 pub(super) fn block_label(block: &Block) -> &str {
@@ -301,6 +310,7 @@ fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut 
     });
     let tip_diameter = positive(f.optional("tip_diameter", errors), "tip_diameter", errors);
     let inertia = positive(f.optional("inertia", errors), "inertia", errors);
+    let mass = positive(f.optional("mass", errors), "mass", errors);
     let mut rough = |key: &str| -> Option<Given<Length>> {
         let r: Option<Given<Length>> = f.optional(key, errors);
         r.and_then(|g| {
@@ -347,6 +357,7 @@ fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut 
         profile_shift,
         tip_diameter,
         inertia,
+        mass,
         material: material?,
         roughness_ra: ra,
         roughness_rq: rq,

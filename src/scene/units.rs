@@ -268,5 +268,6 @@ si_quantity!(q::DynamicViscosity, Dimension::DYNAMIC_VISCOSITY);
 si_quantity!(q::KinematicViscosity, Dimension::KINEMATIC_VISCOSITY);
 si_quantity!(q::MassDensity, Dimension::DENSITY);
 si_quantity!(q::MomentOfInertia, Dimension::MOMENT_OF_INERTIA);
+si_quantity!(q::Mass, Dimension::MASS);
 si_quantity!(q::Stiffness, Dimension::STIFFNESS);
 si_quantity!(q::ThermodynamicTemperature, Dimension::TEMPERATURE);

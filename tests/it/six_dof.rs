@@ -11,7 +11,7 @@ use gearloss::geometry::{OperatingState, PairGeometry};
 const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
 const J: [f64; 2] = [3.45e-4, 15.24e-4];
 /// FZG type C gears as steel discs: m = ρ π b d² / 4 with b = 14 mm (spec comment of fzg_bearings.gear).
-const MASS: [f64; 2] = [0.58, 1.26];
+const MASS: [f64; 2] = [0.59, 1.21];
 
 pub fn fzg() -> (gearloss::Scene, PairGeometry) {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
@@ -184,5 +184,36 @@ mod response {
         }
         let xu = peaks.iter().find(|p| p.0 == "xu").unwrap().1;
         assert!(peaks.iter().all(|p| p.0 == "xu" || p.1 > xu), "{peaks:?}");
+    }
+}
+
+/// The "done when": the committed FZG-on-bearings report (kept up to date by
+/// `specs::committed_reports_are_up_to_date`) carries the 6-DOF records, each dimensional value as
+/// {"value", "unit"}.
+#[test]
+fn six_dof_report_carries_the_required_fields() {
+    let text = std::fs::read_to_string(crate::root().join("reports/fzg_type_c_on_bearings/report.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let d = &v["dynamics"];
+    assert_eq!(d["model"], "six_dof");
+    assert!(d["stiffness_ratio"].as_f64().unwrap() > 1.0);
+    for p in d["points"].as_array().unwrap() {
+        for f in p["formulations"].as_array().unwrap() {
+            assert!(f["spectral_radius"].is_number());
+            assert_eq!(f["floquet_multipliers"].as_array().unwrap().len(), 10);
+            for key in ["dte_peak_to_peak", "dte_mean"] {
+                assert_eq!(f[key]["unit"], "m", "{key}");
+            }
+            assert!(f["dynamic_factor"].as_f64().unwrap() > 1.0);
+            let gears = f["gears"].as_array().unwrap();
+            assert_eq!(gears.len(), 2);
+            for g in gears {
+                for key in ["bearing_force_oloa_peak_to_peak", "bearing_force_oloa_mean"] {
+                    assert_eq!(g[key]["unit"], "N", "{key}");
+                    assert!(g[key]["value"].is_number());
+                }
+                assert_eq!(g["oloa_displacement_peak_to_peak"]["unit"], "m");
+            }
+        }
     }
 }

@@ -16,12 +16,17 @@ pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
         ..Default::default()
     };
     let orders: Vec<f64> = (1..=c.spectrum.first().map_or(0, |s| s.1.len())).map(|o| o as f64).collect();
+    let second = if c.oloa.is_empty() {
+        tau_panel("tooth force per pair (N)", c.pair_force.clone())
+    } else {
+        tau_panel("OLOA bearing force K_y y (N)", c.oloa.clone())
+    };
     let panels = [
         tau_panel(
             "DTE x (µm)",
             c.dte.iter().map(|(l, v)| (l.clone(), v.iter().map(|(t, x)| (*t, x * 1e6)).collect())).collect(),
         ),
-        tau_panel("tooth force per pair (N)", c.pair_force.clone()),
+        second,
         tau_panel("applied friction force Σ μ w N (N)", c.friction_force.clone()),
         Panel {
             y_label: "DTE harmonic amplitude (µm)".into(),
