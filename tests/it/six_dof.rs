@@ -217,3 +217,39 @@ fn six_dof_report_carries_the_required_fields() {
         }
     }
 }
+
+/// He & Singh's helical 6-DOF through the same model: on the NASA-ART pair (μ = 0.2, ζ = 0.05) the
+/// stiff-bearing limit is again the helical SDOF internal formulation (DTE of the periodic state to
+/// 2e-3 relative at K = 1e11 N/m, 1/K convergence), and μ = 0 leaves y ≡ 0.
+#[test]
+fn helical_six_dof_tends_to_the_helical_sdof() {
+    let g = crate::helical::nasa_art(21.5);
+    let law = Coulomb { mu: 0.2 };
+    let (scene, _) = fzg();
+    let c = LawContext {
+        geometry: &g,
+        state: OperatingState { pinion_torque: 226.0, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 },
+        tribology: tribology(&scene, 226e9),
+        sharing: Sharing::Equal,
+    };
+    let k = StiffnessModel::per_length(5.676e9, &g);
+    let j = [9.4117e-4, 1.8530e-3];
+    let sdof = |l: Option<&'static Coulomb>| {
+        let f = if l.is_some() { DynamicFormulation::Internal } else { DynamicFormulation::Base };
+        SdofSystem::new(c, l.map(|x| x as &dyn FrictionLaw), f, k.clone(), j, 0.05)
+    };
+    let law: &'static Coulomb = Box::leak(Box::new(law));
+    let x_ref = Floquet::analyse(&sdof(Some(law))).periodic_state.unwrap()[0];
+    let errors: Vec<f64> = [1e11, 1e12]
+        .iter()
+        .map(|kb| {
+            let s = SixDofSystem::new(sdof(Some(law)), [0.6, 0.9], bearings(*kb));
+            let x = Floquet::analyse(&s).periodic_state.unwrap();
+            (SixDofSystem::deflection(&x).0 - x_ref).abs() / x_ref.abs()
+        })
+        .collect();
+    assert!(errors[0] < 2e-3 && (7.0..13.0).contains(&(errors[0] / errors[1])), "{errors:?}");
+    let s = SixDofSystem::new(sdof(None), [0.6, 0.9], bearings(5e8));
+    let x = Floquet::analyse(&s).periodic_state.unwrap();
+    assert!([3, 4, 8, 9].iter().all(|i| x[*i] == 0.0));
+}
