@@ -245,3 +245,92 @@ mod dynamics {
         });
     }
 }
+
+/// The 6-DOF model (issue 11): FZG type C on bearings (specs/fzg_bearings.gear), Coulomb μ 0.08,
+/// internal formulation (friction inside the system matrix: 4th-order Magnus on every segment).
+mod six_dof {
+    use gearloss::dynamics::integrators::{integrate, Integrator};
+    use gearloss::dynamics::numerics::{reference, relative_error, study_times, LADDER};
+    use gearloss::dynamics::six_dof::{Bearing, SixDofSystem};
+    use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
+    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::geometry::OperatingState;
+
+    const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+
+    fn with_system<R>(rpm: f64, bearing: f64, f: impl FnOnce(&SixDofSystem) -> R) -> R {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
+        let scene = gearloss::check("fzg", &text).unwrap();
+        let eval = gearloss::evaluate(&scene);
+        let law = Coulomb { mu: 0.08 };
+        let ctx =
+            eval.law_context(OperatingState { pinion_torque: 239.3, pinion_speed: rpm * std::f64::consts::PI / 30.0 });
+        let mesh = SdofSystem::new(ctx, Some(&law), DynamicFormulation::Internal, K, [3.45e-4, 15.24e-4], 0.05);
+        let b = Bearing { loa: bearing, oloa: bearing, damping_ratio: 0.02 };
+        f(&SixDofSystem::new(mesh, [0.59, 1.21], [b, b]))
+    }
+
+    /// Floquet for one operating point: monodromy, multipliers and the periodic state. Target < 200 µs.
+    #[divan::bench]
+    fn floquet_one_point(bencher: divan::Bencher) {
+        with_system(1000.0, 5e8, |sys| bencher.bench(|| divan::black_box(Floquet::analyse(sys).periodic_state)));
+    }
+
+    /// The same without friction (A constant on every segment: the exact propagator), for comparison.
+    #[divan::bench]
+    fn floquet_one_point_base(bencher: divan::Bencher) {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
+        let scene = gearloss::check("fzg", &text).unwrap();
+        let eval = gearloss::evaluate(&scene);
+        let ctx = eval
+            .law_context(OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 });
+        let mesh = SdofSystem::new(ctx, None, DynamicFormulation::Base, K, [3.45e-4, 15.24e-4], 0.05);
+        let b = Bearing { loa: 5e8, oloa: 5e8, damping_ratio: 0.02 };
+        let sys = SixDofSystem::new(mesh, [0.59, 1.21], [b, b]);
+        bencher.bench(|| divan::black_box(Floquet::analyse(&sys).periodic_state));
+    }
+
+    /// A 1000-speed stability map (spectral radius), the scene parsed once. Target < 0.5 s.
+    #[divan::bench(sample_count = 3)]
+    fn stability_map_1000_speeds(bencher: divan::Bencher) {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
+        let scene = gearloss::check("fzg", &text).unwrap();
+        let eval = gearloss::evaluate(&scene);
+        let law = Coulomb { mu: 0.08 };
+        let b = Bearing { loa: 5e8, oloa: 5e8, damping_ratio: 0.02 };
+        bencher.bench(|| {
+            let mut max: f64 = 0.0;
+            for i in 0..1000 {
+                let rpm = 1000.0 + 59.0 * i as f64;
+                let ctx = eval.law_context(OperatingState {
+                    pinion_torque: 239.3,
+                    pinion_speed: rpm * std::f64::consts::PI / 30.0,
+                });
+                let mesh = SdofSystem::new(ctx, Some(&law), DynamicFormulation::Internal, K, [3.45e-4, 15.24e-4], 0.05);
+                let sys = SixDofSystem::new(mesh, [0.59, 1.21], [b, b]);
+                max = max.max(Floquet::analyse(&sys).spectral_radius);
+            }
+            divan::black_box(max)
+        });
+    }
+
+    /// The stiff case, bearings 1e11 N/m (highest/lowest natural frequency ≈ 20): the best general
+    /// integrator (DOP853) at the loosest rtol of the ladder that reaches 1e-6 relative DTE error over
+    /// the numerics study's 10 periods (checked before timing). Target < 1 s.
+    #[divan::bench(sample_count = 3)]
+    fn stiff_bearings_dop853_1e_6(bencher: divan::Bencher) {
+        with_system(1000.0, 1e11, |sys| {
+            let times = study_times(sys.mesh.period);
+            let x0 = sys.static_state();
+            let exact = reference(sys, x0, &times);
+            let rtol = LADDER
+                .into_iter()
+                .find(|r| {
+                    let (s, _) = integrate(sys, Integrator::Dop853, *r, x0.into(), &times).unwrap();
+                    relative_error(sys, &s, &exact) <= 1e-6
+                })
+                .expect("DOP853 reaches 1e-6 on the ladder");
+            bencher.bench(|| divan::black_box(integrate(sys, Integrator::Dop853, rtol, x0.into(), &times).unwrap().1))
+        });
+    }
+}
