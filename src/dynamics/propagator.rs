@@ -166,6 +166,20 @@ pub fn magnus_order(n: usize) -> usize {
     }
 }
 
+/// [[A(t), b(t)], [0, 0]]: the homogeneous form of Ẋ = A X + b whose exponential holds Φ and q.
+fn augmented_at<M: PeriodicModel<N> + ?Sized, D, const N: usize>(model: &M, dim: D, t: f64) -> OMatrix<f64, D, D>
+where
+    D: Dim,
+    DefaultAllocator: Allocator<D, D>,
+{
+    let (a, b) = model.system(t);
+    OMatrix::<f64, D, D>::from_fn_generic(dim, dim, |i, j| match (i < N, j < N) {
+        (true, true) => a[(i, j)],
+        (true, false) => b[i],
+        _ => 0.0,
+    })
+}
+
 /// 6th-order Magnus with three Gauss–Legendre nodes and four commutators (Blanes, Casas & Ros,
 /// BIT 40 (2000) 434–450; Blanes, Casas, Oteo & Ros, Phys. Rep. 470 (2009) eq 4.22): with A_1..A_3 at
 /// the nodes, α1 = h A_2, α2 = (√15 h/3)(A_3 − A_1), α3 = (10 h/3)(A_3 − 2A_2 + A_1),
@@ -181,14 +195,7 @@ where
     D: Dim + DimMin<D, Output = D>,
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
-    let augmented = |t: f64| {
-        let (a, b) = model.system(t);
-        OMatrix::<f64, D, D>::from_fn_generic(dim, dim, |i, j| match (i < N, j < N) {
-            (true, true) => a[(i, j)],
-            (true, false) => b[i],
-            _ => 0.0,
-        })
-    };
+    let augmented = |t: f64| augmented_at(model, dim, t);
     let comm = |x: &OMatrix<f64, D, D>, y: &OMatrix<f64, D, D>| x * y - y * x;
     let dt = h / n as f64;
     let c = 0.15f64.sqrt();
@@ -222,14 +229,7 @@ where
     D: Dim + DimMin<D, Output = D>,
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
-    let augmented = |t: f64| {
-        let (a, b) = model.system(t);
-        OMatrix::<f64, D, D>::from_fn_generic(dim, dim, |i, j| match (i < N, j < N) {
-            (true, true) => a[(i, j)],
-            (true, false) => b[i],
-            _ => 0.0,
-        })
-    };
+    let augmented = |t: f64| augmented_at(model, dim, t);
     let dt = h / n as f64;
     let c = 3f64.sqrt() / 6.0;
     let mut e = OMatrix::<f64, D, D>::identity_generic(dim, dim);

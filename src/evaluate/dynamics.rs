@@ -113,20 +113,30 @@ fn system<'a>(
     sys
 }
 
+impl FormulationResult {
+    /// The Floquet numbers of a formulation, without any response.
+    fn of<const N: usize>(formulation: DynamicFormulation, fl: &Floquet<N>) -> FormulationResult {
+        FormulationResult {
+            formulation,
+            method: fl.method,
+            multipliers: fl.multipliers.clone(),
+            spectral_radius: fl.spectral_radius,
+            verdict: fl.verdict,
+            determinant: fl.determinant,
+            liouville: fl.liouville,
+            response: None,
+            free: None,
+            six_dof: None,
+        }
+    }
+}
+
 fn analyse(sys: &SdofSystem, with_response: bool, free: Option<crate::model::FreeResponseSpec>) -> FormulationResult {
     let fl = Floquet::analyse(sys);
-    let free = free.map(|fr| crate::dynamics::free::free_response(sys, &fl, [fr.x0, fr.v0], fr.periods));
     FormulationResult {
-        formulation: sys.formulation,
-        method: fl.method,
-        multipliers: fl.multipliers.clone(),
-        spectral_radius: fl.spectral_radius,
-        verdict: fl.verdict,
-        determinant: fl.determinant,
-        liouville: fl.liouville,
         response: if with_response { PeriodicResponse::compute(sys, &fl) } else { None },
-        free,
-        six_dof: None,
+        free: free.map(|fr| crate::dynamics::free::free_response(sys, &fl, [fr.x0, fr.v0], fr.periods)),
+        ..FormulationResult::of(sys.formulation, &fl)
     }
 }
 
@@ -208,16 +218,8 @@ impl<'a> DynamicsSetup<'a> {
         let six = SixDofSystem::new(sys, mass, bearings);
         let fl = Floquet::analyse(&six);
         FormulationResult {
-            formulation: f,
-            method: fl.method,
-            multipliers: fl.multipliers.clone(),
-            spectral_radius: fl.spectral_radius,
-            verdict: fl.verdict,
-            determinant: fl.determinant,
-            liouville: fl.liouville,
-            response: None,
-            free: None,
             six_dof: if with_response { SixDofResponse::compute(&six, &fl) } else { None },
+            ..FormulationResult::of(f, &fl)
         }
     }
 
