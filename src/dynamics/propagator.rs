@@ -180,6 +180,29 @@ where
     })
 }
 
+/// Chains `n` equal substeps of [t0, t0 + h], each the exponential of the Ω that `omega` builds from
+/// the augmented matrix at any time, the substep's start and its length; returns (Φ, q).
+fn chained<M: PeriodicModel<N> + ?Sized, D, const N: usize>(
+    model: &M,
+    dim: D,
+    (t0, h, n): (f64, f64, usize),
+    omega: impl Fn(&dyn Fn(f64) -> OMatrix<f64, D, D>, f64, f64) -> OMatrix<f64, D, D>,
+) -> Propagation<N>
+where
+    D: Dim + DimMin<D, Output = D>,
+    DefaultAllocator: Allocator<D, D> + Allocator<D>,
+{
+    let augmented = |t: f64| augmented_at(model, dim, t);
+    let dt = h / n as f64;
+    let mut e = OMatrix::<f64, D, D>::identity_generic(dim, dim);
+    for i in 0..n {
+        let t = t0 + i as f64 * dt;
+        e = omega(&augmented, t, dt).exp() * e;
+    }
+    let blocks = split::<N>(|i, j| if j <= N { e[(i, j)] } else { 0.0 });
+    Propagation { phi: blocks.phi, q: blocks.q0 }
+}
+
 /// 6th-order Magnus with three Gauss–Legendre nodes and four commutators (Blanes, Casas & Ros,
 /// BIT 40 (2000) 434–450; Blanes, Casas, Oteo & Ros, Phys. Rep. 470 (2009) eq 4.22): with A_1..A_3 at
 /// the nodes, α1 = h A_2, α2 = (√15 h/3)(A_3 − A_1), α3 = (10 h/3)(A_3 − 2A_2 + A_1),
@@ -195,14 +218,9 @@ where
     D: Dim + DimMin<D, Output = D>,
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
-    let augmented = |t: f64| augmented_at(model, dim, t);
     let comm = |x: &OMatrix<f64, D, D>, y: &OMatrix<f64, D, D>| x * y - y * x;
-    let dt = h / n as f64;
-    let c = 0.15f64.sqrt();
-    let s15 = 15f64.sqrt();
-    let mut e = OMatrix::<f64, D, D>::identity_generic(dim, dim);
-    for i in 0..n {
-        let t = t0 + i as f64 * dt;
+    let (c, s15) = (0.15f64.sqrt(), 15f64.sqrt());
+    chained(model, dim, (t0, h, n), |augmented, t, dt| {
         let a1 = augmented(t + (0.5 - c) * dt);
         let a2 = augmented(t + 0.5 * dt);
         let a3 = augmented(t + (0.5 + c) * dt);
@@ -211,13 +229,11 @@ where
         let al3 = (&a3 - &a2 * 2.0 + &a1) * (10.0 * dt / 3.0);
         let c1 = comm(&al1, &al2);
         let c2 = comm(&al1, &(&al3 * 2.0 + &c1)) * (-1.0 / 60.0);
-        let omega = &al1 + &al3 * (1.0 / 12.0) + comm(&(&al1 * -20.0 - &al3 + &c1), &(&al2 + &c2)) * (1.0 / 240.0);
-        e = omega.exp() * e;
-    }
-    let blocks = split::<N>(|i, j| if j <= N { e[(i, j)] } else { 0.0 });
-    Propagation { phi: blocks.phi, q: blocks.q0 }
+        &al1 + &al3 * (1.0 / 12.0) + comm(&(&al1 * -20.0 - &al3 + &c1), &(&al2 + &c2)) * (1.0 / 240.0)
+    })
 }
 
+/// 4th-order Magnus with two Gauss–Legendre nodes: Ω = h (A_1 + A_2)/2 + (√3 h²/12) [A_2, A_1].
 fn magnus_in<M: PeriodicModel<N> + ?Sized, D, const N: usize>(
     model: &M,
     dim: D,
@@ -229,19 +245,12 @@ where
     D: Dim + DimMin<D, Output = D>,
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
-    let augmented = |t: f64| augmented_at(model, dim, t);
-    let dt = h / n as f64;
     let c = 3f64.sqrt() / 6.0;
-    let mut e = OMatrix::<f64, D, D>::identity_generic(dim, dim);
-    for i in 0..n {
-        let t = t0 + i as f64 * dt;
+    chained(model, dim, (t0, h, n), |augmented, t, dt| {
         let a1 = augmented(t + (0.5 - c) * dt);
         let a2 = augmented(t + (0.5 + c) * dt);
-        let omega = (&a1 + &a2) * (0.5 * dt) + (&a2 * &a1 - &a1 * &a2) * (3f64.sqrt() / 12.0 * dt * dt);
-        e = omega.exp() * e;
-    }
-    let blocks = split::<N>(|i, j| if j <= N { e[(i, j)] } else { 0.0 });
-    Propagation { phi: blocks.phi, q: blocks.q0 }
+        (&a1 + &a2) * (0.5 * dt) + (&a2 * &a1 - &a1 * &a2) * (3f64.sqrt() / 12.0 * dt * dt)
+    })
 }
 
 /// Magnus with substeps doubled until successive results agree to [`MAGNUS_TOLERANCE`]; returns
