@@ -7,6 +7,7 @@ pub mod contact_lines;
 pub mod involute;
 pub mod mesh;
 pub mod pair;
+pub mod path;
 pub mod regions;
 pub mod stiffness;
 

@@ -5,12 +5,15 @@ use serde::Serialize;
 
 use super::number::{m, DisplayUnit, Num, Q};
 pub use super::numerics::{NumericsReport, NumericsRow, Timings};
-use crate::dynamics::floquet::Verdict;
-use crate::dynamics::propagator::Method;
 use crate::dynamics::{DynamicFormulation, StiffnessModel};
 use crate::evaluate::dynamics::DynamicsEvaluation;
 use crate::evaluate::Evaluation;
 use crate::model::Scene;
+
+use super::dynamics_records::{free_report, located, six_dof_fields};
+pub use super::dynamics_records::{
+    FormulationReport, FreeLine, FreeResponseReport, GearDynamicsReport, Located, SpectrumLine,
+};
 
 #[derive(Debug, Clone, Serialize)]
 #[serde(untagged)]
@@ -28,194 +31,6 @@ pub enum StiffnessReport {
         per_length: Q,
         cos2_base_helix_angle: Num,
     },
-}
-
-/// A located extremum: value and time in mesh periods.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct Located {
-    pub value: Q,
-    pub tau: Num,
-}
-
-fn located(e: crate::dynamics::trajectory::Extremum, unit: &'static str) -> Located {
-    Located { value: Q::new(e.value, unit), tau: Num(e.time) }
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct SpectrumLine {
-    pub order: usize,
-    pub amplitude: Q,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct FormulationReport {
-    pub formulation: DynamicFormulation,
-    pub method: Method,
-    pub spectral_radius: Num,
-    /// [re, im] pairs.
-    pub floquet_multipliers: Vec<[Num; 2]>,
-    pub verdict: Verdict,
-    pub monodromy_determinant: Num,
-    /// exp(∫ tr A dt), which det Φ(T) must equal.
-    pub liouville_determinant: Num,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dte_peak_to_peak: Option<Q>,
-    /// Located extrema of the DTE (roots of ẋ = 0) with their times in mesh periods.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dte_min: Option<Located>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dte_max: Option<Located>,
-    /// Time mean of the DTE (Gauss–Kronrod on the state) and its error estimate.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dte_mean: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dte_mean_error: Option<Q>,
-    /// Located extrema of the tooth force F = c(ẋ − ε̇) + k(x − ε) (Fernandes eq 7).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub tooth_force_min: Option<Located>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub tooth_force_max: Option<Located>,
-    /// max F / F0.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dynamic_factor: Option<Num>,
-    /// Mesh-period fractions [from, to] where the tooth force is negative (teeth separate), located.
-    pub tooth_separation: Vec<[Num; 2]>,
-    pub spectrum: Vec<SpectrumLine>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mean_dynamic_efficiency: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mean_dynamic_efficiency_error: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub max_dynamic_efficiency: Option<Num>,
-    /// Peak |friction force the model applies| (external: μ F0 shares; internal: μ F shares) and peak
-    /// |friction torque| on pinion and wheel over the cycle, located.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub peak_applied_friction_force: Option<Located>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub peak_friction_torque: Vec<Located>,
-    /// External formulation: peak |Σ μ_j w_j F| (μ × tooth force), which its equation does not apply.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub peak_mu_times_tooth_force: Option<Located>,
-    /// The free (homogeneous) response from the scene's initial state, when asked for.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub free_response: Option<FreeResponseReport>,
-    /// 6-DOF model: the largest force on one pair (N/n, located), the mean friction force Σ μ_i N_i
-    /// and per gear [pinion, wheel] the bearing forces and displacements.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub pair_force_max: Option<Located>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub friction_force_mean: Option<Q>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub gears: Vec<GearDynamicsReport>,
-}
-
-/// One gear of the 6-DOF model: bearing forces K x (LOA) and K y (OLOA) and displacements, located
-/// extremes, integrated means with error estimates, the OLOA bearing force spectrum in mesh orders.
-#[derive(Debug, Clone, Serialize)]
-pub struct GearDynamicsReport {
-    pub gear: &'static str,
-    pub bearing_force_loa_peak_to_peak: Q,
-    pub bearing_force_loa_mean: Q,
-    pub bearing_force_oloa_peak_to_peak: Q,
-    pub bearing_force_oloa_mean: Q,
-    pub bearing_force_oloa_mean_error: Q,
-    pub bearing_force_oloa_min: Located,
-    pub bearing_force_oloa_max: Located,
-    pub bearing_force_oloa_spectrum: Vec<SpectrumLine>,
-    pub loa_displacement_peak_to_peak: Q,
-    pub oloa_displacement_peak_to_peak: Q,
-}
-
-/// The 6-DOF response in the report's fields: the DTE, mesh force (as the tooth force), dynamic
-/// factor, friction force and the gears' bearings.
-fn six_dof_fields(f: &mut FormulationReport, x: &crate::dynamics::six_dof_response::SixDofResponse) {
-    f.dte_peak_to_peak = Some(m(x.dte.peak_to_peak()));
-    f.dte_min = Some(located(x.dte.min, "m"));
-    f.dte_max = Some(located(x.dte.max, "m"));
-    f.dte_mean = Some(m(x.dte.mean.value));
-    f.dte_mean_error = Some(m(x.dte.mean.error));
-    f.tooth_force_min = Some(located(x.mesh_force[0], "N"));
-    f.tooth_force_max = Some(located(x.mesh_force[1], "N"));
-    f.dynamic_factor = Some(Num(x.dynamic_factor));
-    f.spectrum =
-        x.dte.spectrum.iter().enumerate().map(|(o, a)| SpectrumLine { order: o + 1, amplitude: m(*a) }).collect();
-    let (lo, hi) = (x.friction_force.min, x.friction_force.max);
-    let peak = if hi.value.abs() >= lo.value.abs() {
-        hi
-    } else {
-        crate::dynamics::trajectory::Extremum { value: lo.value.abs(), time: lo.time }
-    };
-    f.peak_applied_friction_force = Some(located(peak, "N"));
-    f.pair_force_max = Some(located(x.pair_force_max, "N"));
-    f.friction_force_mean = Some(Q::new(x.friction_force.mean.value, "N"));
-    f.gears = vec![gear_dynamics("pinion", &x.gears[0]), gear_dynamics("wheel", &x.gears[1])];
-}
-
-fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::GearResponse) -> GearDynamicsReport {
-    let n = |x: f64| Q::new(x, "N");
-    GearDynamicsReport {
-        gear: name,
-        bearing_force_loa_peak_to_peak: n(g.bearing_force_loa.peak_to_peak()),
-        bearing_force_loa_mean: n(g.bearing_force_loa.mean.value),
-        bearing_force_oloa_peak_to_peak: n(g.bearing_force_oloa.peak_to_peak()),
-        bearing_force_oloa_mean: n(g.bearing_force_oloa.mean.value),
-        bearing_force_oloa_mean_error: n(g.bearing_force_oloa.mean.error),
-        bearing_force_oloa_min: located(g.bearing_force_oloa.min, "N"),
-        bearing_force_oloa_max: located(g.bearing_force_oloa.max, "N"),
-        bearing_force_oloa_spectrum: g
-            .bearing_force_oloa
-            .spectrum
-            .iter()
-            .enumerate()
-            .map(|(o, a)| SpectrumLine { order: o + 1, amplitude: Q::new(*a, "N") })
-            .collect(),
-        loa_displacement_peak_to_peak: m(g.displacement_loa[1].value - g.displacement_loa[0].value),
-        oloa_displacement_peak_to_peak: m(g.displacement_oloa[1].value - g.displacement_oloa[0].value),
-    }
-}
-
-/// The free response X(t + nT) = Φ(t, 0) Φ(T)ⁿ X(0) and its Floquet-mode spectrum lines.
-#[derive(Debug, Clone, Serialize)]
-pub struct FreeResponseReport {
-    pub x0: Q,
-    pub v0: Q,
-    pub periods: usize,
-    /// Largest |DTE| over the window, located; time in mesh periods from the start.
-    pub peak: Located,
-    pub first_period_peak: Q,
-    pub last_period_peak: Q,
-    /// Largest lines first: frequency in mesh orders, one-sided amplitude at t = 0, its error
-    /// estimate, growth per period |λ|.
-    pub lines: Vec<FreeLine>,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct FreeLine {
-    pub order: Num,
-    pub amplitude: Q,
-    pub amplitude_error: Q,
-    pub growth_per_period: Num,
-}
-
-fn free_report(f: &crate::dynamics::free::FreeResponse) -> FreeResponseReport {
-    FreeResponseReport {
-        x0: m(f.initial[0]),
-        v0: Q::new(f.initial[1], "m/s"),
-        periods: f.periods,
-        peak: located(f.peak, "m"),
-        first_period_peak: m(f.first_period_peak),
-        last_period_peak: m(f.last_period_peak),
-        lines: f
-            .lines
-            .iter()
-            .map(|l| FreeLine {
-                order: Num(l.order),
-                amplitude: m(l.amplitude),
-                amplitude_error: m(l.error),
-                growth_per_period: Num(l.growth),
-            })
-            .collect(),
-    }
 }
 
 #[derive(Debug, Clone, Serialize)]

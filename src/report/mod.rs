@@ -3,6 +3,7 @@
 pub mod checks;
 pub mod dynamics;
 pub mod dynamics_findings;
+pub mod dynamics_records;
 pub mod friction;
 pub mod geometry;
 pub mod helical;

@@ -179,3 +179,21 @@ impl<'a> Fields<'a> {
         })
     }
 }
+
+/// `g` when its value is above zero; otherwise an error naming `key` (and None).
+pub(super) fn positive<T: super::units::SiQuantity>(
+    g: Option<Given<T>>,
+    key: &str,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Given<T>> {
+    let g = g?;
+    if g.value.si() > 0.0 {
+        Some(g)
+    } else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, g.span, format!("`{key}` = {} must be positive", g.written))
+                .hint(format!("give `{key}` a value above zero")),
+        );
+        None
+    }
+}

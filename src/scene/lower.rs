@@ -5,9 +5,10 @@
 use std::collections::BTreeMap;
 
 use super::ast::*;
+use super::fields::positive;
 use super::fields::{checked_scale, unknown_name, Fields};
 use super::lower_friction::{check_friction_needs, lower_friction};
-use super::lower_gears::{block_label, lower_gears, lower_material, positive};
+use super::lower_gears::{block_label, lower_gears, lower_material};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;

@@ -4,22 +4,18 @@ use std::path::Path;
 
 use super::ast::*;
 use super::fields::{scalar, sweep_values, unknown_name, Fields};
+use super::lower_dynamics_blocks::{bearings, free_response, transmission_error};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
-use crate::dynamics::six_dof::Bearing;
 use crate::dynamics::DynamicFormulation;
 use crate::geometry::stiffness::StiffnessModel;
-use crate::model::{
-    AngularVelocity, DynamicModel, DynamicsSpec, FreeResponseSpec, Gear, Scene, Solver, StiffnessSpec, Sweep,
-};
+use crate::model::{AngularVelocity, DynamicModel, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
 use crate::scene::units::SiQuantity;
 
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
 const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file", "per_length"];
-const STE_KEYS: &[&str] = &["amplitudes", "phases"];
 const MODELS: &[&str] = &["sdof", "six_dof"];
-const BEARING_KEYS: &[&str] = &["loa", "oloa", "damping_ratio"];
 const SOLVERS: &[&str] = &["auto", "magnus"];
 const FORMULATIONS: &[&str] = &["base", "external", "internal", "internal_chord"];
 
@@ -125,112 +121,6 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         free_response,
         span: block.kind.span,
     })
-}
-
-/// `bearings { pinion { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }  wheel { ... } }`.
-fn bearings(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -> Option<[Bearing; 2]> {
-    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "bearings") else {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "the six_dof model needs `bearings`")
-                .hint("add `bearings { pinion { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }  wheel { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 } }`"),
-        );
-        return None;
-    };
-    let t = Fields::read("`bearings`", b.span, &b.items, &[], &["pinion", "wheel"], &[], errors);
-    let mut out = [None, None];
-    for (i, name) in ["pinion", "wheel"].iter().enumerate() {
-        let Some(g) = t.blocks.iter().find(|x| x.kind.text == *name) else {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::MissingKey, b.kind.span, format!("`bearings` has no `{name}`"))
-                    .hint(format!("add `{name} {{ loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }}`")),
-            );
-            continue;
-        };
-        let k = Fields::read(format!("the `{name}` bearing"), g.span, &g.items, BEARING_KEYS, &[], &[], errors);
-        let stiff = |key: &str, errors: &mut Vec<Diagnostic>| -> Option<f64> {
-            let Some((_, v)) = k.values.get(key) else {
-                errors.push(k.missing(key, "5e8 N/m"));
-                return None;
-            };
-            let (x, _) = scalar(key, v, Dimension::STIFFNESS, errors)?;
-            if x > 0.0 {
-                Some(x)
-            } else {
-                errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::OutOfRange,
-                        v.span,
-                        format!("`{key}` bearing stiffness must be positive"),
-                    )
-                    .hint("rolling-element bearings with their housing: about 1e8 to 1e10 N/m"),
-                );
-                None
-            }
-        };
-        let (loa, oloa) = (stiff("loa", errors), stiff("oloa", errors));
-        let zeta = k.number("damping_ratio", 0.0, 1.0, errors).map_or(0.02, |g| g.value);
-        if let (Some(loa), Some(oloa)) = (loa, oloa) {
-            out[i] = Some(Bearing { loa, oloa, damping_ratio: zeta });
-        }
-    }
-    Some([out[0]?, out[1]?])
-}
-
-/// Most mesh periods of a free response.
-pub const MAX_FREE_PERIODS: usize = 2000;
-
-/// `free_response { x0 = 2e-6 in  v0 = 20 in/s  periods = 20 }` (He & Singh Figs 8–9).
-fn free_response(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Option<FreeResponseSpec>> {
-    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "free_response") else { return Some(None) };
-    let t = Fields::read("`free_response`", b.span, &b.items, &["x0", "v0", "periods"], &[], &[], errors);
-    let get = |key: &str, dim: Dimension, errors: &mut Vec<Diagnostic>| -> Option<f64> {
-        match t.values.get(key) {
-            None => Some(0.0),
-            Some((_, v)) => scalar(key, v, dim, errors).map(|(x, _)| x),
-        }
-    };
-    let x0 = get("x0", Dimension::LENGTH, errors);
-    let v0 = get("v0", Dimension::VELOCITY, errors);
-    let periods = t.number("periods", 1.0, MAX_FREE_PERIODS as f64, errors).map_or(20.0, |g| g.value);
-    let (x0, v0) = (x0?, v0?);
-    if x0 == 0.0 && v0 == 0.0 {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::MissingKey, b.kind.span, "a free response needs an initial state")
-                .hint("give `x0` (a DTE) or `v0` (its rate), e.g. `x0 = 2e-6 in  v0 = 20 in/s`"),
-        );
-        return None;
-    }
-    Some(Some(FreeResponseSpec { x0, v0, periods: periods.round() as usize }))
-}
-
-/// `transmission_error { amplitudes = [1.5, 0.4] um  phases = [0, 90] deg }`: ε(t) = Σ a_n cos(2π n t/T + φ_n).
-fn transmission_error(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Vec<(f64, f64)>> {
-    let Some(b) = f.blocks.iter().find(|b| b.kind.text == "transmission_error") else { return Some(Vec::new()) };
-    let t = Fields::read("`transmission_error`", b.span, &b.items, STE_KEYS, &[], &[], errors);
-    let Some((_, a)) = t.values.get("amplitudes") else {
-        errors.push(t.missing("amplitudes", "[1.5, 0.4] um"));
-        return None;
-    };
-    let (amps, _, _, _) = sweep_values("amplitudes", a, Dimension::LENGTH, errors)?;
-    let phases = match t.values.get("phases") {
-        None => vec![0.0; amps.len()],
-        Some((_, p)) => {
-            let (ph, _, _, _) = sweep_values("phases", p, Dimension::ANGLE, errors)?;
-            if ph.len() != amps.len() {
-                errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::OutOfRange,
-                        p.span,
-                        format!("{} phases for {} amplitudes", ph.len(), amps.len()),
-                    )
-                    .hint("give one phase per harmonic, or none (all zero)"),
-                );
-                return None;
-            }
-            ph
-        }
-    };
-    Some(amps.into_iter().zip(phases).collect())
 }
 
 fn formulations(v: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<DynamicFormulation>> {

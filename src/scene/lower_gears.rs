@@ -6,7 +6,8 @@ use std::collections::BTreeMap;
 use uom::si::length::meter;
 
 use super::ast::*;
-use super::fields::Fields;
+use super::fields::{positive, Fields};
+use super::lower_tooth_system::ToothSystem;
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::geometry::{GeometryProblem, PairGeometry, PairInput, PairPart};
@@ -25,8 +26,6 @@ const GEARS_KEYS: &[&str] = &[
     "face_width",
     "load_sharing",
 ];
-/// The keys that give the module, one of which is needed.
-const MODULE_KEYS: [&str; 4] = ["module", "diametral_pitch", "transverse_module", "transverse_diametral_pitch"];
 const GEAR_KEYS: &[&str] = &[
     "teeth",
     "profile_shift",
@@ -63,161 +62,14 @@ pub(super) fn lower_material(block: &Block, errors: &mut Vec<Diagnostic>) -> Opt
     Some(Material { name: label.text.clone(), youngs_modulus: e?, poisson_ratio: nu? })
 }
 
-pub(super) fn positive<T: super::units::SiQuantity>(
-    g: Option<Given<T>>,
-    key: &str,
-    errors: &mut Vec<Diagnostic>,
-) -> Option<Given<T>> {
-    let g = g?;
-    if g.value.si() > 0.0 {
-        Some(g)
-    } else {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, g.span, format!("`{key}` = {} must be positive", g.written))
-                .hint(format!("give `{key}` a value above zero")),
-        );
-        None
-    }
-}
-
 pub(super) fn lower_gears(
     block: &Block,
     materials: &BTreeMap<&str, Material>,
     errors: &mut Vec<Diagnostic>,
 ) -> Option<GearPair> {
     let f = Fields::read("the `gears` block", block.span, &block.items, GEARS_KEYS, &["pinion", "wheel"], &[], errors);
-    let helix_angle: Option<Given<Angle>> = f.optional("helix_angle", errors);
-    let helix_angle = helix_angle.and_then(|b| {
-        let deg = b.value.value.to_degrees();
-        if (0.0..=45.0).contains(&deg) {
-            Some(b)
-        } else {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::OutOfRange,
-                    b.span,
-                    format!("helix angle {deg:.4}° is outside 0° to 45°"),
-                )
-                .hint(if deg < 0.0 {
-                    "give the helix angle as a positive value and the hand as `hand = left` or `hand = right`"
-                } else {
-                    "industrial helical gears use 8° to 30°; above 45° the axial force exceeds the tangential force"
-                }),
-            );
-            None
-        }
-    });
-    let hand = f.name("hand", &["left", "right"], errors).map(|n| n.text.clone());
-    let cos_beta = helix_angle.as_ref().map_or(1.0, |b| b.value.value.cos());
-    let beta_written = helix_angle.as_ref().map_or(String::new(), |b| b.written.clone());
-    let given: Vec<&str> = MODULE_KEYS.iter().copied().filter(|k| f.has(k)).collect();
-    let (module, module_source) = match given.as_slice() {
-        [] => (positive(f.required("module", "4.5 mm", errors), "module", errors), ModuleSource::Module),
-        [_, second, ..] => {
-            let (key, _) = f.values[*second];
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::DuplicateKey,
-                    key.span,
-                    format!("the module is given twice: `{}` and `{second}`", given[0]),
-                )
-                .hint("give one of `module`, `diametral_pitch` (normal values) or `transverse_module`, `transverse_diametral_pitch`"),
-            );
-            (None, ModuleSource::Module)
-        }
-        ["module"] => (positive(f.optional("module", errors), "module", errors), ModuleSource::Module),
-        ["transverse_module"] => {
-            let m: Option<Given<Length>> =
-                positive(f.optional("transverse_module", errors), "transverse_module", errors);
-            match m {
-                Some(m) => (
-                    Some(Given {
-                        value: Length::new::<meter>(m.value.get::<meter>() * cos_beta),
-                        written: format!("({}) · cos({beta_written})", m.written),
-                        span: m.span,
-                    }),
-                    ModuleSource::TransverseModule(m),
-                ),
-                None => (None, ModuleSource::Module),
-            }
-        }
-        [key] => {
-            let transverse = *key == "transverse_diametral_pitch";
-            let p: Option<Given<ReciprocalLength>> = positive(f.optional(key, errors), key, errors);
-            match p {
-                Some(p) => {
-                    let factor = if transverse { cos_beta } else { 1.0 };
-                    let m = Given {
-                        value: Length::new::<meter>(factor / p.value.value),
-                        written: if transverse {
-                            format!("cos({beta_written})/({})", p.written)
-                        } else {
-                            format!("1/({})", p.written)
-                        },
-                        span: p.span,
-                    };
-                    let source = if transverse {
-                        ModuleSource::TransverseDiametralPitch(p)
-                    } else {
-                        ModuleSource::DiametralPitch(p)
-                    };
-                    (Some(m), source)
-                }
-                None => (None, ModuleSource::Module),
-            }
-        }
-    };
-    if helix_angle.is_none() {
-        for key in ["transverse_module", "transverse_diametral_pitch", "transverse_pressure_angle"] {
-            if let Some((k, _)) = f.values.get(key) {
-                errors.push(
-                    Diagnostic::new(DiagnosticKind::MissingKey, k.span, format!("`{key}` needs a `helix_angle`"))
-                        .hint("transverse values belong to a helical pair: add `helix_angle = 15 deg`, or give the normal value (for a spur pair they are the same)"),
-                );
-            }
-        }
-    }
-    let (pressure_angle, transverse_pressure_angle) =
-        match (f.has("pressure_angle"), f.has("transverse_pressure_angle")) {
-            (true, true) => {
-                let (key, _) = f.values["transverse_pressure_angle"];
-                errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::DuplicateKey,
-                        key.span,
-                        "both `pressure_angle` and `transverse_pressure_angle` are given",
-                    )
-                    .hint("give one of them: tan α_n = tan α_t cos β"),
-                );
-                (None, None)
-            }
-            (false, true) => {
-                let t: Option<Given<Angle>> = f.optional("transverse_pressure_angle", errors);
-                let normal = t.as_ref().map(|t| Given {
-                    value: Angle::new::<uom::si::angle::radian>((t.value.value.tan() * cos_beta).atan()),
-                    written: format!("atan(tan({}) · cos({beta_written}))", t.written),
-                    span: t.span,
-                });
-                (normal, t)
-            }
-            _ => (f.required("pressure_angle", "20 deg", errors), None),
-        };
-    let pressure_angle = pressure_angle.and_then(|a| {
-        let deg = a.value.value.to_degrees();
-        if (10.0..=35.0).contains(&deg) {
-            Some(a)
-        } else {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::OutOfRange,
-                    a.span,
-                    format!("pressure angle {deg:.4}° is outside 10° to 35°"),
-                )
-                .hint("standard pressure angles are 14.5°, 20° and 25°"),
-            );
-            None
-        }
-    });
+    let ToothSystem { helix_angle, hand, module, module_source, pressure_angle, transverse_pressure_angle } =
+        super::lower_tooth_system::lower_tooth_system(&f, errors);
     let center_distance = positive(f.optional("center_distance", errors), "center_distance", errors);
     let face_width = positive(f.required("face_width", "14 mm", errors), "face_width", errors);
     let load_sharing = match f.name("load_sharing", &["equal", "none"], errors).map(|n| n.text.as_str()) {
