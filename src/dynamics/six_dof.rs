@@ -91,6 +91,33 @@ impl<'a> SixDofSystem<'a> {
         }
     }
 
+    /// The largest |μ_i| × its force share among the pairs in contact at t: the friction force of the
+    /// most loaded pair per unit of N (for a helical pair, the largest line's share of Σ μ dl / L).
+    pub fn largest_pair_mu(&self, t: f64) -> f64 {
+        let m = &self.mesh;
+        if m.law.is_none() {
+            return 0.0;
+        }
+        let g = m.ctx.geometry;
+        let tau = (t / m.period).rem_euclid(1.0);
+        if g.is_helical() {
+            // Per line: the share of the friction force carried by its quadrature points.
+            // The points come line by line: LINE_NODES per piece, two pieces when a line crosses P.
+            let contacts = m.ctx.mesh().contacts_at(tau);
+            let (mut start, mut largest) = (0, 0.0f64);
+            for l in g.contact_lines(tau).iter() {
+                let (lo, hi) = (l.u[0].min(l.u[1]), l.u[0].max(l.u[1]));
+                let pieces = if lo < g.points.p && g.points.p < hi { 2 } else { 1 };
+                let end = (start + pieces * crate::geometry::mesh::LINE_NODES).min(contacts.len());
+                let sum: f64 = contacts[start..end].iter().map(|c| m.friction_mu(c) * c.force_share).sum();
+                largest = largest.max(sum.abs());
+                start = end;
+            }
+            return largest / g.base_helix_angle.cos();
+        }
+        m.ctx.mesh().contacts_at(tau).iter().map(|c| (m.friction_mu(c) * c.force_share).abs()).fold(0.0, f64::max)
+    }
+
     /// The mesh deflection δ and its rate from a state.
     pub fn deflection(x: &SVector<f64, STATES>) -> (f64, f64) {
         (x[0] + x[1] - x[2], x[5] + x[6] - x[7])

@@ -59,6 +59,8 @@ pub struct SixDofResponse {
     pub mesh_force: [Extremum; 2],
     /// Largest force on one pair, N / n, located.
     pub pair_force_max: Extremum,
+    /// Largest friction force on one pair, max_i |μ_i| N / n, located.
+    pub pair_friction_force_max: Extremum,
     /// max N / F0.
     pub dynamic_factor: f64,
     /// The friction force Σ μ_i N_i along y (on the pinion), with its mean and spectrum.
@@ -109,6 +111,9 @@ impl SixDofResponse {
         let per_pair = tr.extrema(|p, t| force(p, t) / pairs(p, t), |p, t| force_rate(p, t) / pairs(p, t));
         let friction = |p: usize, t: f64| sys.mean_mu(tr.parameter_time(p, t)) * force(p, t);
         let h = 1e-7 * period;
+        let pair_friction = |p: usize, t: f64| sys.largest_pair_mu(tr.parameter_time(p, t)) * force(p, t).abs();
+        let pair_friction_ext =
+            tr.extrema(pair_friction, |p, t| (pair_friction(p, t + h) - pair_friction(p, t - h)) / (2.0 * h));
         let friction_ext = tr.extrema(friction, |p, t| (friction(p, t + h) - friction(p, t - h)) / (2.0 * h));
         let k = [sys.bearings[0].loa, sys.bearings[1].loa, sys.bearings[0].oloa, sys.bearings[1].oloa];
         // Bearing forces K q on the gear's bearing (q = x_p, x_g, y_p, y_g: states 1..=4).
@@ -193,6 +198,7 @@ impl SixDofResponse {
             dte: range(0, in_periods(dte.min, period), in_periods(dte.max, period)),
             mesh_force: [in_periods(n.min, period), in_periods(n.max, period)],
             pair_force_max: in_periods(per_pair.max, period),
+            pair_friction_force_max: in_periods(pair_friction_ext.max, period),
             dynamic_factor: n.max.value / sys.mesh.static_force,
             friction_force: range(5, in_periods(friction_ext.min, period), in_periods(friction_ext.max, period)),
             gears: [gear(0), gear(1)],

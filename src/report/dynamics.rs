@@ -251,6 +251,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                             free_response: r.free.as_ref().map(free_report),
                             pair_force_max: None,
                             friction_force_mean: None,
+                            pair_friction_force_max: None,
                             gears: Vec::new(),
                         };
                         if let Some(x) = &r.six_dof {

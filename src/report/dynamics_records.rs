@@ -84,6 +84,9 @@ pub struct FormulationReport {
     pub pair_force_max: Option<Located>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction_force_mean: Option<Q>,
+    /// 6-DOF: the largest friction force on one pair, max_i |μ_i N_i|, located.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pair_friction_force_max: Option<Located>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub gears: Vec<GearDynamicsReport>,
 }
@@ -101,6 +104,7 @@ pub struct GearDynamicsReport {
     pub bearing_force_oloa_min: Located,
     pub bearing_force_oloa_max: Located,
     pub bearing_force_oloa_spectrum: Vec<SpectrumLine>,
+    pub bearing_force_loa_spectrum: Vec<SpectrumLine>,
     pub loa_displacement_peak_to_peak: Q,
     pub oloa_displacement_peak_to_peak: Q,
 }
@@ -116,8 +120,7 @@ pub(super) fn six_dof_fields(f: &mut FormulationReport, x: &crate::dynamics::six
     f.tooth_force_min = Some(located(x.mesh_force[0], "N"));
     f.tooth_force_max = Some(located(x.mesh_force[1], "N"));
     f.dynamic_factor = Some(Num(x.dynamic_factor));
-    f.spectrum =
-        x.dte.spectrum.iter().enumerate().map(|(o, a)| SpectrumLine { order: o + 1, amplitude: m(*a) }).collect();
+    f.spectrum = lines(&x.dte.spectrum, "m");
     let (lo, hi) = (x.friction_force.min, x.friction_force.max);
     let peak = if hi.value.abs() >= lo.value.abs() {
         hi
@@ -126,8 +129,14 @@ pub(super) fn six_dof_fields(f: &mut FormulationReport, x: &crate::dynamics::six
     };
     f.peak_applied_friction_force = Some(located(peak, "N"));
     f.pair_force_max = Some(located(x.pair_force_max, "N"));
+    f.pair_friction_force_max = Some(located(x.pair_friction_force_max, "N"));
     f.friction_force_mean = Some(Q::new(x.friction_force.mean.value, "N"));
     f.gears = vec![gear_dynamics("pinion", &x.gears[0]), gear_dynamics("wheel", &x.gears[1])];
+}
+
+/// Amplitudes of mesh orders 1, 2, … as report lines.
+fn lines(amplitudes: &[f64], unit: &'static str) -> Vec<SpectrumLine> {
+    amplitudes.iter().enumerate().map(|(o, a)| SpectrumLine { order: o + 1, amplitude: Q::new(*a, unit) }).collect()
 }
 
 fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::GearResponse) -> GearDynamicsReport {
@@ -141,13 +150,8 @@ fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::Gear
         bearing_force_oloa_mean_error: n(g.bearing_force_oloa.mean.error),
         bearing_force_oloa_min: located(g.bearing_force_oloa.min, "N"),
         bearing_force_oloa_max: located(g.bearing_force_oloa.max, "N"),
-        bearing_force_oloa_spectrum: g
-            .bearing_force_oloa
-            .spectrum
-            .iter()
-            .enumerate()
-            .map(|(o, a)| SpectrumLine { order: o + 1, amplitude: Q::new(*a, "N") })
-            .collect(),
+        bearing_force_oloa_spectrum: lines(&g.bearing_force_oloa.spectrum, "N"),
+        bearing_force_loa_spectrum: lines(&g.bearing_force_loa.spectrum, "N"),
         loa_displacement_peak_to_peak: m(g.displacement_loa[1].value - g.displacement_loa[0].value),
         oloa_displacement_peak_to_peak: m(g.displacement_oloa[1].value - g.displacement_oloa[0].value),
     }
