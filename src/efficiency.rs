@@ -208,11 +208,7 @@ pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
     let u = g.gear_ratio;
     let [e1, e2] = g.addendum_contact_ratio;
     let h = std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u) * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2);
-    if g.is_helical() {
-        h / g.base_helix_angle.cos()
-    } else {
-        h
-    }
+    g.to_normal(h)
 }
 
 /// Local friction power loss of one contact, |μ| F v_s (W), with F = its force share of F_bn.

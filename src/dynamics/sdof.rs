@@ -125,14 +125,21 @@ impl<'a> SdofSystem<'a> {
 
     /// f(t), the friction term of the external and internal formulations.
     pub fn friction_term(&self, t: f64) -> f64 {
+        self.friction_terms(t)[0]
+    }
+
+    /// [f(t), μ̄(t)] from one pass over the contacts: the friction term and the mean signed μ of the
+    /// contacts, Σ μ_j w_j (the friction force along the off-line direction per unit of the tooth
+    /// force, as the 6-DOF model uses it); both per unit of normal force for a helical pair.
+    pub fn friction_terms(&self, t: f64) -> [f64; 2] {
         if self.law.is_none() {
-            return 0.0;
+            return [0.0; 2];
         }
         let g = self.ctx.geometry;
         let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
         let [jp, jw] = self.inertia;
         let tau = (t / self.period).rem_euclid(1.0);
-        let (mut gp, mut gw) = (0.0, 0.0);
+        let (mut gp, mut gw, mut mu) = (0.0, 0.0, 0.0);
         // A law that diverges at P is capped as in the internal efficiency formulation
         // (crate::efficiency::INTERNAL_MU_CAP), so that 1 − f never vanishes. Each contact carries its
         // force share 1/n of the tooth force, whatever load its law sees (`load_sharing`).
@@ -140,14 +147,11 @@ impl<'a> SdofSystem<'a> {
             let m = self.friction_mu(c) * c.force_share;
             gp -= m * c.u;
             gw += m * (g.line_of_action_length - c.u);
+            mu += m;
         }
         let f = (jw * rp * gp - jp * rw * gw) / (jp * rw * rw + jw * rp * rp);
         // Helical (He & Singh eqs 19–24): the moments are per unit normal force, F_e = F_bn cos β_b.
-        if g.is_helical() {
-            f / g.base_helix_angle.cos()
-        } else {
-            f
-        }
+        [g.to_normal(f), g.to_normal(mu)]
     }
 
     /// The chord of (1 − f) k over the segment holding t (He & Singh eq 25): the straight line

@@ -77,18 +77,7 @@ impl<'a> SixDofSystem<'a> {
     /// μ̄(t) = Σ_i μ_i / n along y per unit of N (module doc), with the same cap as the SDOF model for
     /// laws that diverge at P.
     pub fn mean_mu(&self, t: f64) -> f64 {
-        let m = &self.mesh;
-        if m.law.is_none() {
-            return 0.0;
-        }
-        let g = m.ctx.geometry;
-        let tau = (t / m.period).rem_euclid(1.0);
-        let s: f64 = m.ctx.mesh().contacts_at(tau).iter().map(|c| m.friction_mu(c) * c.force_share).sum();
-        if g.is_helical() {
-            s / g.base_helix_angle.cos()
-        } else {
-            s
-        }
+        self.mesh.friction_terms(t)[1]
     }
 
     /// The largest |μ_i| × its force share among the pairs in contact at t: the friction force of the
@@ -106,14 +95,13 @@ impl<'a> SixDofSystem<'a> {
             let contacts = m.ctx.mesh().contacts_at(tau);
             let (mut start, mut largest) = (0, 0.0f64);
             for l in g.contact_lines(tau).iter() {
-                let (lo, hi) = (l.u[0].min(l.u[1]), l.u[0].max(l.u[1]));
-                let pieces = if lo < g.points.p && g.points.p < hi { 2 } else { 1 };
+                let pieces = crate::geometry::mesh::line_pieces(l.u[0].min(l.u[1]), l.u[0].max(l.u[1]), g.points.p);
                 let end = (start + pieces * crate::geometry::mesh::LINE_NODES).min(contacts.len());
                 let sum: f64 = contacts[start..end].iter().map(|c| m.friction_mu(c) * c.force_share).sum();
                 largest = largest.max(sum.abs());
                 start = end;
             }
-            return largest / g.base_helix_angle.cos();
+            return g.to_normal(largest);
         }
         m.ctx.mesh().contacts_at(tau).iter().map(|c| (m.friction_mu(c) * c.force_share).abs()).fold(0.0, f64::max)
     }
@@ -181,8 +169,7 @@ impl PeriodicModel<STATES> for SixDofSystem<'_> {
         let m = &self.mesh;
         let k = m.stiffness_at(t);
         let c = m.damping;
-        let f = m.friction_term(t);
-        let mu = self.mean_mu(t);
+        let [f, mu] = m.friction_terms(t);
         let mut a = SMatrix::<f64, STATES, STATES>::zeros();
         for i in 0..5 {
             a[(i, i + 5)] = 1.0;

@@ -111,6 +111,16 @@ impl<'a> IntoIterator for &'a Contacts {
     }
 }
 
+/// How many pieces [`Mesh::line_contacts`] cuts a line spanning [lo, hi] along u into: two when it
+/// crosses the pitch point, one otherwise (each piece holds `nodes` quadrature points).
+pub fn line_pieces(lo: f64, hi: f64, pitch: f64) -> usize {
+    if lo < pitch && pitch < hi {
+        2
+    } else {
+        1
+    }
+}
+
 /// Nodes and weights of the [`LINE_NODES`]-point and doubled Gauss–Legendre rules on [0, 1].
 fn line_rule(nodes: usize) -> &'static (Vec<f64>, Vec<f64>) {
     use std::sync::OnceLock;
@@ -213,7 +223,7 @@ impl Mesh<'_> {
                 );
                 out.push(c);
             };
-            if lo < pitch && pitch < hi {
+            if line_pieces(lo, hi, pitch) == 2 {
                 // Two pieces graded towards P: s = h v³, ds = 3 h v² dv.
                 for h in [lo - pitch, hi - pitch] {
                     for (v, wv) in x.iter().zip(wt) {

@@ -69,6 +69,16 @@ impl PairGeometry {
         }
     }
 
+    /// A force (or moment) per unit of the transverse force F_bn cos β_b, taken per unit of the normal
+    /// force F_bn instead: x / cos β_b (x itself for a spur pair).
+    pub fn to_normal(&self, x: f64) -> f64 {
+        if self.is_helical() {
+            x / self.base_helix_angle.cos()
+        } else {
+            x
+        }
+    }
+
     /// Axial force on the pinion from a pinion torque T_p (N·m): F_a = F_t tan β with
     /// F_t = T_p / r_1 the tangential force at the reference circle (ISO 6336-1 §5; 0 for spur).
     pub fn axial_force(&self, pinion_torque: f64) -> f64 {
