@@ -43,6 +43,7 @@ pub mod evaluate;
 pub mod folder;
 pub mod friction;
 pub mod geometry;
+pub mod losses;
 pub mod model;
 pub mod numerics;
 pub mod progress;

@@ -13,7 +13,7 @@ pub use crate::efficiency::Formulation;
 pub use crate::friction::catalog::{FrictionLawSpec, LawId};
 pub use si::{
     Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, Mass, MassDensity,
-    MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque,
+    MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque, Velocity, VolumeRate,
 };
 
 /// 1/Pa, the unit of the pressure–viscosity coefficient α (uom has no named quantity for it).
@@ -173,11 +173,13 @@ pub enum LubricantType {
     PagSoluble,
     Traction,
     PhosphateEster,
+    /// Synthetic (carboxylic) ester.
+    Ester,
 }
 
 impl LubricantType {
     pub const NAMES: &'static [&'static str] =
-        &["mineral", "pao", "pag_insoluble", "pag_soluble", "traction", "phosphate_ester"];
+        &["mineral", "pao", "pag_insoluble", "pag_soluble", "traction", "phosphate_ester", "ester"];
 
     pub fn from_name(name: &str) -> Option<Self> {
         Some(match name {
@@ -187,8 +189,27 @@ impl LubricantType {
             "pag_soluble" => LubricantType::PagSoluble,
             "traction" => LubricantType::Traction,
             "phosphate_ester" => LubricantType::PhosphateEster,
+            "ester" => LubricantType::Ester,
             _ => return None,
         })
+    }
+
+    /// The name as written in a scene.
+    pub fn name(self) -> &'static str {
+        Self::NAMES[self as usize]
+    }
+
+    /// The name in words, for reports.
+    pub fn words(self) -> &'static str {
+        match self {
+            LubricantType::Mineral => "mineral",
+            LubricantType::Pao => "PAO",
+            LubricantType::PagInsoluble => "PAG, not water-soluble",
+            LubricantType::PagSoluble => "PAG, water-soluble",
+            LubricantType::Traction => "traction fluid",
+            LubricantType::PhosphateEster => "phosphate ester",
+            LubricantType::Ester => "synthetic ester",
+        }
     }
 }
 
@@ -202,6 +223,9 @@ pub struct Lubricant {
     pub pressure_viscosity: Option<Given<ReciprocalPressure>>,
     pub kind: Option<LubricantType>,
     pub temperature: Option<Given<ThermodynamicTemperature>>,
+    /// ν40, ν100 and ρ15 when the oil was given by grade or measured values (the values above are
+    /// then at the oil temperature).
+    pub oil: Option<crate::tribology::lubricant::OilData>,
 }
 
 impl Lubricant {
@@ -236,6 +260,8 @@ pub struct Sweep<T> {
 pub struct Operating {
     pub pinion_torque: Sweep<Torque>,
     pub pinion_speed: Sweep<AngularVelocity>,
+    /// The oil (sump or injection) temperature, at which the lubricant's values are read.
+    pub oil_temperature: Option<Given<ThermodynamicTemperature>>,
     /// Operating points the scene asks to see in full (0-based; written 1-based as `detail_points`).
     pub detail_points: Vec<usize>,
 }

@@ -43,6 +43,8 @@ impl Dimension {
     pub const POWER: Dimension = dim(2, 1, -3, 0, 0);
     pub const VELOCITY: Dimension = dim(1, 0, -1, 0, 0);
     pub const FREQUENCY: Dimension = dim(0, 0, -1, 0, 0);
+    pub const VOLUME: Dimension = dim(3, 0, 0, 0, 0);
+    pub const VOLUME_RATE: Dimension = dim(3, 0, -1, 0, 0);
 
     /// This dimension to the power `e`; None when an exponent would leave ±[`MAX_EXPONENT`].
     pub fn checked_pow(self, e: i32) -> Option<Dimension> {

@@ -20,7 +20,7 @@ use crate::efficiency;
 use crate::friction::LawContext;
 use crate::geometry::contact::{reduced_modulus, Sharing};
 use crate::geometry::{ContactPoint, OperatingState, PairGeometry};
-use crate::model::{Formulation, LoadSharing, LubricantType, Scene};
+use crate::model::{Formulation, LoadSharing, Scene};
 use crate::tribology::{Film, FilmInputs, Tribology};
 
 pub use cases::{
@@ -133,12 +133,10 @@ pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
     let l = scene.lubricant.as_ref();
     let (x_l, family) = match l.and_then(|l| l.kind) {
         None => (1.0, "mineral (default)"),
-        Some(LubricantType::Mineral) => (1.0, "mineral"),
-        Some(LubricantType::Pao) => (0.8, "PAO"),
-        Some(LubricantType::PagInsoluble) => (0.7, "PAG, not water-soluble"),
-        Some(LubricantType::PagSoluble) => (0.6, "PAG, water-soluble"),
-        Some(LubricantType::Traction) => (1.5, "traction fluid"),
-        Some(LubricantType::PhosphateEster) => (1.3, "phosphate ester"),
+        Some(base) => match crate::tribology::lubricant::iso_lubricant_factor(base) {
+            Some(x) => (x, base.words()),
+            None => (1.0, "synthetic ester (no ISO/TR 14179-2 X_L: 1.0)"),
+        },
     };
     Tribology {
         dynamic_viscosity: l.map_or(0.0, |l| l.dynamic_viscosity.value.value),

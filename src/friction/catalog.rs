@@ -185,9 +185,10 @@ pub const LAWS: &[LawEntry] = &[
     LawEntry {
         id: LawId::Iso14179_2,
         title: "ISO/TR 14179-2 (Niemann–Schlenk)",
-        arguments: &[],
+        // x_l = 0 (the default) reads X_L from the lubricant's base oil.
+        arguments: &[arg("x_l", Dimension::NONE, Some(0.0), "lubricant factor X_L (default: the lubricant's)")],
         needs: &[Lubricant, RoughnessRa],
-        build: |_, ctx| Box::new(super::iso_14179_2::Iso14179_2::new(ctx)),
+        build: |s, ctx| Box::new(super::iso_14179_2::Iso14179_2::new(ctx, s.arg("x_l"))),
     },
     LawEntry {
         id: LawId::Matsumoto,

@@ -6,7 +6,8 @@
 //! F_bt in N (transverse load at the base circle), b in mm, v_ΣC = 2 v_t sin α_wt in m/s (v_t at the
 //! operating pitch circle), ρ_redC = u/(1+u)² · a sin α_wt / cos β_b in mm, η_oil in mPa·s, Ra the
 //! mean Ra in µm. F_bt/b below 150 N/mm is raised to 150; v_ΣC above 50 m/s is evaluated at 50; below
-//! 1 m/s μ is underestimated, which is flagged.
+//! 1 m/s μ is underestimated, which is flagged. X_L is the lubricant's (ISO/TR 14179-2's table by
+//! base oil) unless the law is given `x_l`.
 
 use super::{signed, FrictionLaw, LawContext, Parameter};
 use crate::geometry::ContactPoint;
@@ -23,7 +24,8 @@ pub struct Iso14179_2 {
 }
 
 impl Iso14179_2 {
-    pub fn new(ctx: &LawContext) -> Self {
+    /// `x_l` overrides the lubricant's X_L when above zero.
+    pub fn new(ctx: &LawContext, x_l: f64) -> Self {
         let g = ctx.geometry;
         let t = &ctx.tribology;
         let u = g.gear_ratio;
@@ -53,16 +55,18 @@ impl Iso14179_2 {
             }
             v_sum
         };
-        if t.lubricant_family == "mineral (default)" {
+        let x_l_given = x_l > 0.0;
+        let lubricant_factor = if x_l_given { x_l } else { t.lubricant_factor };
+        if !x_l_given && t.lubricant_family == "mineral (default)" {
             notes.push("iso_14179_2: no lubricant `type` given; X_L = 1.0 (mineral oil)".into());
         }
-        let mu_mz = 0.048 * (load / (v * rho)).powf(0.2) * eta.powf(-0.05) * ra.powf(0.25) * t.lubricant_factor;
+        let mu_mz = 0.048 * (load / (v * rho)).powf(0.2) * eta.powf(-0.05) * ra.powf(0.25) * lubricant_factor;
         Iso14179_2 {
             mu_mz,
             load_per_width_n_per_mm: load,
             sum_velocity: v,
             reduced_radius_mm: rho,
-            lubricant_factor: t.lubricant_factor,
+            lubricant_factor,
             notes,
         }
     }

@@ -39,6 +39,10 @@ pub const LIMITS: &[Limit] = &[
     limit("density", "kg/m^3", 100.0, 3e4, "100 to 30 000 kg/m³"),
     limit("pressure_viscosity", "1/Pa", 1e-10, 1e-6, "1e-10 to 1e-6 1/Pa"),
     limit("temperature", "K", 173.15, 673.15, "-100 °C to 400 °C"),
+    limit("oil_temperature", "K", 233.15, 473.15, "-40 °C to 200 °C"),
+    limit("nu_40", "m^2/s", 1e-6, 0.1, "1 cSt to 1e5 cSt"),
+    limit("nu_100", "m^2/s", 1e-6, 0.1, "1 cSt to 1e5 cSt"),
+    limit("density_15", "kg/m^3", 500.0, 2500.0, "500 to 2500 kg/m³"),
     limit("roughness_ra", "m", 0.0, 1e-3, "0 to 1 mm"),
     limit("roughness_rq", "m", 0.0, 1e-3, "0 to 1 mm"),
     limit("roughness_rz", "m", 0.0, 1e-2, "0 to 10 mm"),
@@ -52,6 +56,7 @@ pub const LIMITS: &[Limit] = &[
     limit("mu_boundary", "", 0.0, 1.0, "0 to 1"),
     limit("mu_ehl", "", 0.0, 1.0, "0 to 1"),
     limit("phi", "1/m", 1.0, 1e9, "1 to 1e9 1/m"),
+    limit("x_l", "", 0.1, 3.0, "0.1 to 3"),
     limit("filter_cutoff", "m", 1e-6, 1.0, "1 µm to 1 m"),
 ];
 

@@ -9,14 +9,13 @@ use super::fields::positive;
 use super::fields::{checked_scale, unknown_name, Fields};
 use super::lower_friction::{check_friction_needs, lower_friction};
 use super::lower_gears::{block_label, lower_gears, lower_material};
+use super::lower_lubricant::{lower_lubricant, lower_lubricant_value};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
 
 const SCENE_BLOCKS: &[&str] = &["gears", "material", "lubricant", "operating", "friction", "dynamics", "analyses"];
-const LUBRICANT_KEYS: &[&str] =
-    &["dynamic_viscosity", "density", "kinematic_viscosity", "pressure_viscosity", "type", "temperature"];
-const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed", "detail_points"];
+const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed", "oil_temperature", "detail_points"];
 /// Most operating points a scene may name with `detail_points`.
 pub const MAX_DETAIL_POINTS: usize = 20;
 const ANALYSES: &[&str] =
@@ -31,7 +30,7 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
 /// As [`lower_scene`], with the folder of the scene file, where files it names (a stiffness CSV) are read.
 pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Diagnostic>> {
     let mut errors = Vec::new();
-    let top = Fields::read("the scene", ast.title_span, &ast.items, &[], SCENE_BLOCKS, &[], &mut errors);
+    let top = Fields::read("the scene", ast.title_span, &ast.items, &["lubricant"], SCENE_BLOCKS, &[], &mut errors);
 
     let mut materials: BTreeMap<&str, Material> = BTreeMap::new();
     let mut singles: BTreeMap<&str, &Block> = BTreeMap::new();
@@ -76,8 +75,24 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     }
 
     let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
-    let lubricant = singles.get("lubricant").and_then(|b| lower_lubricant(b, &mut errors));
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
+    let oil_temperature = operating.as_ref().and_then(|o| o.oil_temperature.as_ref());
+    let lubricant = match (singles.get("lubricant"), top.values.get("lubricant")) {
+        (Some(_), Some((key, _))) => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    key.span,
+                    "the scene has a `lubricant` block and `lubricant = ...`",
+                )
+                .hint("keep one of them"),
+            );
+            None
+        }
+        (Some(b), None) => lower_lubricant(b, oil_temperature, &mut errors),
+        (None, Some((_, v))) => lower_lubricant_value(v, oil_temperature, &mut errors),
+        (None, None) => None,
+    };
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
     let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
     let dynamics =
@@ -159,38 +174,6 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     }
 }
 
-fn lower_lubricant(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Lubricant> {
-    let name = block.label.as_ref().map_or("lubricant".to_string(), |l| l.text.clone());
-    let f = Fields::read("the `lubricant` block", block.span, &block.items, LUBRICANT_KEYS, &[], &[], errors);
-    let eta = positive(f.required("dynamic_viscosity", "95 mPa*s", errors), "dynamic_viscosity", errors);
-    let density: Option<Given<MassDensity>> = positive(f.optional("density", errors), "density", errors);
-    let nu: Option<Given<KinematicViscosity>> =
-        positive(f.optional("kinematic_viscosity", errors), "kinematic_viscosity", errors);
-    let alpha = positive(f.optional("pressure_viscosity", errors), "pressure_viscosity", errors);
-    let temperature = positive(f.optional("temperature", errors), "temperature", errors);
-    let kind = f.name("type", LubricantType::NAMES, errors).and_then(|n| LubricantType::from_name(&n.text));
-    if f.has("density") && f.has("kinematic_viscosity") {
-        let (key, _) = f.values["kinematic_viscosity"];
-        errors.push(
-            Diagnostic::new(
-                DiagnosticKind::DuplicateKey,
-                key.span,
-                "both `density` and `kinematic_viscosity` are given",
-            )
-            .hint("give one of them: ν = η/ρ"),
-        );
-    }
-    Some(Lubricant {
-        name,
-        dynamic_viscosity: eta?,
-        density,
-        kinematic_viscosity: nu,
-        pressure_viscosity: alpha,
-        kind,
-        temperature,
-    })
-}
-
 fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operating> {
     let f = Fields::read("the `operating` block", block.span, &block.items, OPERATING_KEYS, &[], &[], errors);
     let torque: Option<Sweep<Torque>> = f.sweep("pinion_torque", "[100, 200] N*m", errors);
@@ -229,7 +212,8 @@ fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operat
         return None;
     }
     let detail_points = detail_points(&f, count as usize, errors)?;
-    Some(Operating { pinion_torque: torque, pinion_speed: speed, detail_points })
+    let oil_temperature = positive(f.optional("oil_temperature", errors), "oil_temperature", errors);
+    Some(Operating { pinion_torque: torque, pinion_speed: speed, oil_temperature, detail_points })
 }
 
 /// Most summary rows a run may write (points × laws × formulations, and the dynamics rows): about

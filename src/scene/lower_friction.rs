@@ -160,7 +160,7 @@ pub(super) fn check_friction_needs(
             if !present && (lubricant.is_some() || *need == catalog::Needs::Lubricant) {
                 let hint = match need {
                     catalog::Needs::Lubricant => {
-                        "add `lubricant \"name\" { dynamic_viscosity = 95 mPa*s  density = 880 kg/m^3 }`".to_string()
+                        "add `lubricant = iso_vg(100, mineral)` (with `oil_temperature` in `operating`) or `lubricant \"name\" { dynamic_viscosity = 95 mPa*s  density = 880 kg/m^3 }`".to_string()
                     }
                     catalog::Needs::KinematicViscosity => {
                         "add `density` or `kinematic_viscosity` to the lubricant".to_string()

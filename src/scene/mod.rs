@@ -9,6 +9,7 @@ pub mod lower_dynamics;
 pub mod lower_dynamics_blocks;
 pub mod lower_friction;
 pub mod lower_gears;
+pub mod lower_lubricant;
 pub mod lower_tooth_system;
 pub mod parse;
 pub mod screen;

@@ -141,26 +141,62 @@ fn parse_call(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Call {
         span.end = p.as_span().end();
         match p.as_rule() {
             Rule::ident => name = Some(parse_ident(p)),
-            Rule::arguments => arguments = parse_arguments(p, errors),
+            Rule::arguments => {
+                let n = name.as_ref().expect("grammar: the name comes first");
+                arguments = parse_arguments(p, n, errors)
+            }
             rule => unreachable!("call: {rule:?}"),
         }
     }
     Call { name: name.expect("grammar: call has a name"), arguments, span }
 }
 
-fn parse_arguments(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Vec<(Name, Value)> {
+/// Functions whose arguments may be given in order, and the names the positions stand for.
+const POSITIONAL: &[(&str, &[&str])] = &[("iso_vg", &["grade", "base"])];
+
+fn parse_arguments(pair: Pair<Rule>, call: &Name, errors: &mut Vec<Diagnostic>) -> Vec<(Name, Value)> {
     let mut out = Vec::new();
+    let names = POSITIONAL.iter().find(|(f, _)| *f == call.text).map_or(&[][..], |(_, n)| *n);
+    let mut position = 0;
     for p in pair.into_inner() {
         match p.as_rule() {
             Rule::lparen | Rule::rparen | Rule::comma => {}
-            Rule::argument => out.push(parse_argument(p, errors)),
+            Rule::argument => {
+                let (key, value) = parse_argument(p, errors);
+                match key {
+                    Some(key) => out.push((key, value)),
+                    None => {
+                        match names.get(position) {
+                            Some(name) => out.push((Name { text: name.to_string(), span: value.span }, value)),
+                            None => errors.push(
+                                Diagnostic::new(
+                                    DiagnosticKind::Syntax,
+                                    value.span,
+                                    format!("`{}` takes its arguments by name", call.text),
+                                )
+                                .hint(if names.is_empty() {
+                                    "write `name = value`, e.g. `coulomb(mu = 0.04)`".to_string()
+                                } else {
+                                    format!(
+                                        "`{}` takes {} arguments in order: {}",
+                                        call.text,
+                                        names.len(),
+                                        names.join(", ")
+                                    )
+                                }),
+                            ),
+                        }
+                        position += 1;
+                    }
+                }
+            }
             rule => unreachable!("arguments: {rule:?}"),
         }
     }
     out
 }
 
-fn parse_argument(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (Name, Value) {
+fn parse_argument(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (Option<Name>, Value) {
     let mut key = None;
     let mut value = None;
     for p in pair.into_inner() {
@@ -170,7 +206,7 @@ fn parse_argument(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> (Name, Valu
             _ => value = Some(parse_value(p, errors)),
         }
     }
-    (key.expect("grammar: argument has a name"), value.expect("grammar: argument has a value"))
+    (key, value.expect("grammar: argument has a value"))
 }
 
 fn parse_value(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Value {

@@ -60,6 +60,7 @@ pub const UNITS: &[UnitDef] = &[
     c("μin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (Greek mu)"),
     c("ft", 12.0 * INCH, Dimension::LENGTH, (12.0, "in"), "foot"),
     // mass
+    c("l", 1e-3, Dimension::VOLUME, (1e-3, "m^3"), "litre"),
     u("kg", 1.0, Dimension::MASS, "kilogram"),
     c("g", 1e-3, Dimension::MASS, (1e-3, "kg"), "gram"),
     c("lb", POUND, Dimension::MASS, (0.453_592_37, "kg"), "pound (mass)"),
@@ -271,3 +272,5 @@ si_quantity!(q::MomentOfInertia, Dimension::MOMENT_OF_INERTIA);
 si_quantity!(q::Mass, Dimension::MASS);
 si_quantity!(q::Stiffness, Dimension::STIFFNESS);
 si_quantity!(q::ThermodynamicTemperature, Dimension::TEMPERATURE);
+si_quantity!(q::Velocity, Dimension::VELOCITY);
+si_quantity!(q::VolumeRate, Dimension::VOLUME_RATE);

@@ -1,6 +1,7 @@
 //! Lubricant and surface inputs in SI, and EHL film thickness along the line of action.
 
 pub mod film;
+pub mod lubricant;
 
 pub use film::{Film, FilmInputs};
 

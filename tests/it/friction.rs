@@ -214,7 +214,7 @@ fn iso_14179_2_hand_value() {
     let eval = evaluate_scene(&scene);
     let state =
         gearloss::geometry::OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 };
-    let law = Iso14179_2::new(&eval.law_context(state));
+    let law = Iso14179_2::new(&eval.law_context(state), 0.0);
     let aw = g.operating_pressure_angle;
     let fbt_b = 239.3 / g.base_radius[0] / 14.0;
     let vt = state.pinion_speed * g.working_pitch_radius[0];
