@@ -12,8 +12,8 @@ use crate::diagnostics::Span;
 pub use crate::efficiency::Formulation;
 pub use crate::friction::catalog::{FrictionLawSpec, LawId};
 pub use si::{
-    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Length, Mass, MassDensity,
-    MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque, Velocity, VolumeRate,
+    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Force, Length, Mass,
+    MassDensity, MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque, Velocity, VolumeRate,
 };
 
 /// 1/Pa, the unit of the pressure–viscosity coefficient α (uom has no named quantity for it).
@@ -38,6 +38,8 @@ pub struct Scene {
     pub operating: Operating,
     pub friction: Vec<FrictionLawSpec>,
     pub dynamics: Option<DynamicsSpec>,
+    /// Lubrication method, bearings and seals, for the loss budget beside the mesh.
+    pub gearbox: Option<crate::losses::Gearbox>,
     pub analyses: Analyses,
 }
 
@@ -280,6 +282,8 @@ impl Operating {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Analyses {
     pub efficiency: Option<Vec<Formulation>>,
+    /// The grid of `efficiency_map(pinion_torque = ..., pinion_speed = ...)`.
+    pub efficiency_map: Option<(Sweep<Torque>, Sweep<AngularVelocity>)>,
     pub friction_along_loa: bool,
     pub film: bool,
     /// Where `film` was asked for, for diagnostics.

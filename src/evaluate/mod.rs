@@ -8,6 +8,7 @@
 pub mod cases;
 pub mod dynamics;
 pub mod laws;
+pub mod map;
 pub mod plan;
 pub mod records;
 pub mod stream;
@@ -58,6 +59,8 @@ pub struct Evaluation {
     pub contact_curves: ContactCurves,
     /// The dynamics, when the scene asks for them.
     pub dynamics: Option<crate::evaluate::dynamics::DynamicsEvaluation>,
+    /// The efficiency map, when the scene asks for one.
+    pub efficiency_map: Option<map::EfficiencyMap>,
 }
 
 /// Everything computed at one operating point.
@@ -89,6 +92,16 @@ impl Evaluation {
     /// The friction-law context at an operating point.
     pub fn law_context(&self, state: OperatingState) -> LawContext<'_> {
         LawContext { geometry: &self.geometry, state, tribology: self.tribology, sharing: self.sharing() }
+    }
+
+    /// The loss budget beside the mesh at an operating point, when the scene describes its gearbox
+    /// (lowering has checked that it has a lubricant then).
+    pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
+        let gearbox = scene.gearbox.as_ref()?;
+        let t = &self.tribology;
+        let nu = t.kinematic_viscosity.unwrap_or(f64::NAN);
+        let rho = t.dynamic_viscosity / nu;
+        Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, nu, rho))
     }
 
     /// The contact state at `u` for an operating point.
@@ -197,6 +210,7 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
         points: Vec::new(),
         contact_curves: ContactCurves::default(),
         dynamics: None,
+        efficiency_map: None,
     };
     eval.positions = eval.curve_positions();
     eval.ohlendorf_loss_factor =
@@ -243,4 +257,5 @@ pub fn evaluate_details(
     eval.contact_curves = cases::contact_curves(scene, eval);
     eval.dynamics =
         crate::evaluate::dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), known);
+    eval.efficiency_map = map::evaluate_map(scene, eval);
 }

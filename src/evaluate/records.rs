@@ -78,6 +78,9 @@ pub struct SummaryRow {
     pub dynamic_factor: Option<f64>,
     #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub parameters: Vec<ParameterValue>,
+    /// The loss budget of an efficiency row, when the scene describes its gearbox (records.jsonl only).
+    #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
+    pub budget: Option<crate::losses::BudgetParts>,
 }
 
 impl SummaryRow {

@@ -98,7 +98,9 @@ fn point_summary(
         dte_mean: None,
         dynamic_factor: None,
         parameters: Vec::new(),
+        budget: None,
     };
+    let budget = eval.loss_budget(scene, &state);
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
@@ -132,7 +134,9 @@ fn point_summary(
                 rows.push(law_row.clone());
             }
             for e in &law.efficiency {
-                rows.push(efficiency_row(&law_row, e));
+                let mut row = efficiency_row(&law_row, e);
+                row.budget = budget.as_ref().map(|b| b.with_mesh(e.power_loss, input));
+                rows.push(row);
                 let f = e.formulation.name().to_string();
                 let bad = |x: f64| !(0.0..=1.0).contains(&x);
                 if bad(e.mean.value) || bad(e.min) || bad(e.max) {

@@ -47,6 +47,38 @@ impl LossBudget {
     }
 }
 
+/// The budget of one (operating point, law, formulation): the mesh loss it was given plus the parts
+/// beside the mesh, the total and the total efficiency 1 − P_total/P_in, as the record files carry it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+pub struct BudgetParts {
+    #[serde(rename = "gear_no_load_W", skip_serializing_if = "Option::is_none", default)]
+    pub gear_no_load: Option<f64>,
+    #[serde(rename = "bearings_no_load_W", skip_serializing_if = "Option::is_none", default)]
+    pub bearings_no_load: Option<f64>,
+    #[serde(rename = "bearings_load_W", skip_serializing_if = "Option::is_none", default)]
+    pub bearings_load: Option<f64>,
+    #[serde(rename = "seals_W", skip_serializing_if = "Option::is_none", default)]
+    pub seals: Option<f64>,
+    #[serde(rename = "total_loss_W")]
+    pub total_loss: f64,
+    pub total_efficiency: f64,
+}
+
+impl LossBudget {
+    /// The parts with a mesh loss `mesh` (W) at input power `input` (W).
+    pub fn with_mesh(&self, mesh: f64, input: f64) -> BudgetParts {
+        let total = mesh + self.beside_mesh();
+        BudgetParts {
+            gear_no_load: self.gear_no_load,
+            bearings_no_load: self.bearings_no_load,
+            bearings_load: self.bearings_load,
+            seals: self.seals,
+            total_loss: total,
+            total_efficiency: 1.0 - total / input,
+        }
+    }
+}
+
 /// Radial and axial load per bearing place of one shaft (N).
 fn place_loads(places: &[super::Bearing], f_bt: f64, alpha_wt: f64, axial: f64, r_w: f64) -> Vec<(f64, f64)> {
     let count: usize = places.iter().map(|b| b.count).sum();

@@ -13,7 +13,7 @@ pub mod gear_no_load;
 pub mod seals;
 
 pub use bearings::{Bearing, BearingType};
-pub use budget::{loss_budget, BearingLoss, LossBudget};
+pub use budget::{loss_budget, BearingLoss, BudgetParts, LossBudget};
 pub use gear_no_load::Lubrication;
 pub use seals::Seal;
 

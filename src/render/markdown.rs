@@ -9,6 +9,7 @@ pub fn render_markdown(r: &Report) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "# {}\n", r.title);
     let _ = writeln!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
+    out.push_str(&super::markdown_losses::headline(r));
 
     let _ = writeln!(out, "## Scene\n");
     header(&mut out, &["input", "as written", "SI"]);
@@ -22,6 +23,8 @@ pub fn render_markdown(r: &Report) -> String {
             ],
         );
     }
+
+    out.push_str(&super::markdown_losses::lubricant_section(r));
 
     let g = &r.geometry;
     let _ = writeln!(out, "\n## Geometry\n");
@@ -176,6 +179,8 @@ pub fn render_markdown(r: &Report) -> String {
         super::markdown_friction::point(&mut out, op, g.helical.is_some());
     }
     super::markdown_friction::sweep(&mut out, r);
+    out.push_str(&super::markdown_losses::budget_section(r));
+    out.push_str(&super::markdown_losses::map_section(r));
     super::markdown_dynamics::dynamics(&mut out, r);
     super::markdown_sweep::sweep_summary(&mut out, r);
 

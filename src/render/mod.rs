@@ -4,6 +4,7 @@ pub mod markdown;
 pub mod markdown_dynamics;
 pub mod markdown_friction;
 pub mod markdown_helical;
+pub mod markdown_losses;
 pub mod markdown_sweep;
 pub mod svg;
 pub mod table;
@@ -42,12 +43,17 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
             "sweep_torque.svg" => svg::sweep(report, false)?,
             "sweep_mu.svg" => svg::sweep_mu(report)?,
             "map_efficiency.svg" => svg::efficiency_map(report)?,
+            "loss_budget.svg" => svg::loss_budget(report)?,
+            "efficiency_map.svg" => svg::efficiency_contours(report)?,
             "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
             "stability_map.svg" => svg::stability_map(report)?,
             "timing_work_precision.svg" => svg::work_precision(report)?,
             other => return Err(format!("no renderer for plot {other}")),
         };
         files.push((plot.file.clone(), svg));
+    }
+    if let Some(m) = &report.efficiency_map {
+        files.push((m.csv.clone(), markdown_losses::map_csv(report, m)));
     }
     for (k, pc) in report.curves.points.iter().enumerate() {
         files.push((pc.file.clone(), svg::point_friction(report, k)?));

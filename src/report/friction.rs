@@ -141,6 +141,9 @@ pub struct EfficiencyRecord {
     pub error_estimate: Num,
     pub power_loss: Q,
     pub parameters: Parameters,
+    /// The loss budget at this point with this record's mesh loss, when the scene describes its gearbox.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub budget: Option<super::losses::BudgetRecord>,
 }
 
 /// `coulomb(mu = 0.04)`: the law as the user wrote it (defaults left out).
@@ -237,6 +240,7 @@ pub fn efficiency_records(scene: &Scene, tally: &Tally) -> Vec<EfficiencyRecord>
                 error_estimate: Num(r.mean_efficiency_error?),
                 power_loss: Q::new(r.power_loss?, "W"),
                 parameters: Parameters(r.parameters.clone()),
+                budget: r.budget.as_ref().map(super::losses::budget_record),
             })
         })
         .collect()

@@ -7,6 +7,7 @@ pub mod dynamics_records;
 pub mod friction;
 pub mod geometry;
 pub mod helical;
+pub mod losses;
 pub mod number;
 pub mod numerics;
 pub mod plausibility;
@@ -44,6 +45,14 @@ pub struct Report {
     pub sweep: Option<sweep::SweepReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<dynamics::DynamicsReport>,
+    /// The lubricant at the oil temperature, when the scene has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lubricant: Option<losses::LubricantReport>,
+    /// Whether the efficiency records carry a loss budget (the scene describes its gearbox).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub loss_budget: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub efficiency_map: Option<losses::MapReport>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
     /// Sampled curves for the plots (not in report.json: they repeat the tables at finer spacing).
@@ -125,6 +134,9 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         records: sweep::records_report(tally, plan),
         sweep: sweep::sweep_report(tally, plan),
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
+        lubricant: losses::lubricant_report(scene, eval),
+        loss_budget: scene.gearbox.is_some(),
+        efficiency_map: eval.efficiency_map.as_ref().map(|m| losses::map_report(scene, m)),
         findings,
         plots: vec![PlotRef {
             file: "contact_state.svg".into(),
@@ -199,6 +211,18 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         report.plots.push(PlotRef {
             file: "composite_mu_vs_speed.svg".into(),
             title: "Composite law: mean |μ| against pinion speed (He–Cho–Singh Fig. 2b)".into(),
+        });
+    }
+    if report.loss_budget && !report.efficiency.is_empty() {
+        report.plots.push(PlotRef {
+            file: "loss_budget.svg".into(),
+            title: "Loss budget at each operating point: mesh, gear churning, bearings, seals".into(),
+        });
+    }
+    if report.efficiency_map.is_some() {
+        report.plots.push(PlotRef {
+            file: "efficiency_map.svg".into(),
+            title: "Efficiency map: total and mesh efficiency and total loss over torque × speed".into(),
         });
     }
     for path in non_finite_paths(&report) {

@@ -14,12 +14,13 @@ use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
 
-const SCENE_BLOCKS: &[&str] = &["gears", "material", "lubricant", "operating", "friction", "dynamics", "analyses"];
+const SCENE_BLOCKS: &[&str] =
+    &["gears", "material", "lubricant", "operating", "friction", "dynamics", "gearbox", "analyses"];
 const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed", "oil_temperature", "detail_points"];
 /// Most operating points a scene may name with `detail_points`.
 pub const MAX_DETAIL_POINTS: usize = 20;
 const ANALYSES: &[&str] =
-    &["efficiency", "friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics"];
+    &["efficiency", "efficiency_map", "friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics"];
 const FORMULATIONS: &[&str] = &["external", "internal"];
 
 /// Lowers a parsed scene. On failure, every diagnostic found.
@@ -95,6 +96,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     };
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
     let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
+    let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));
     let dynamics =
         singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));
     if let Some(span) = analyses.dynamics_span {
@@ -147,6 +149,9 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     if let Some(g) = &gears {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
+    if let (Some(gb), Some(block)) = (&gearbox, singles.get("gearbox")) {
+        super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
+    }
     if let Some(span) = analyses.film_span {
         if lubricant.as_ref().is_none_or(|l| l.pressure_viscosity.is_none()) {
             errors.push(
@@ -161,7 +166,8 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     }
     match (gears, operating) {
         (Some(gears), Some(operating)) if errors.is_empty() => {
-            let scene = Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, analyses };
+            let scene =
+                Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, gearbox, analyses };
             super::lower_dynamics::check_frequency_ratio(&scene, &mut errors);
             check_record_rows(&scene, &mut errors);
             if errors.is_empty() {
@@ -323,6 +329,12 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                 }
                 a.efficiency = Some(formulations);
                 a.friction_span = Some(call.span);
+            }
+            "efficiency_map" => {
+                a.efficiency_map = super::lower_gearbox::lower_efficiency_map(call, errors);
+                // The map's formulations are those of `efficiency`: both unless the scene names them.
+                a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
+                a.friction_span = a.friction_span.or(Some(call.span));
             }
             "stability_map" => {
                 a.stability_map = super::lower_dynamics::lower_stability_map(call, errors);

@@ -8,6 +8,7 @@ pub mod lower;
 pub mod lower_dynamics;
 pub mod lower_dynamics_blocks;
 pub mod lower_friction;
+pub mod lower_gearbox;
 pub mod lower_gears;
 pub mod lower_lubricant;
 pub mod lower_tooth_system;

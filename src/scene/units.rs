@@ -273,4 +273,5 @@ si_quantity!(q::Mass, Dimension::MASS);
 si_quantity!(q::Stiffness, Dimension::STIFFNESS);
 si_quantity!(q::ThermodynamicTemperature, Dimension::TEMPERATURE);
 si_quantity!(q::Velocity, Dimension::VELOCITY);
+si_quantity!(q::Force, Dimension::FORCE);
 si_quantity!(q::VolumeRate, Dimension::VOLUME_RATE);

@@ -4,12 +4,14 @@
 mod contact;
 mod dynamics;
 mod helical;
+mod losses;
 mod maps;
 mod sweeps;
 
 pub use contact::{contact_state, point_friction};
 pub use dynamics::{dynamics_point, free_response, stability_map, work_precision};
 pub use helical::plane_of_action;
+pub use losses::{efficiency_map as efficiency_contours, loss_budget};
 pub use maps::efficiency_map;
 pub use sweeps::{composite_mu_vs_speed, sweep, sweep_mu};
 

@@ -1,0 +1,240 @@
+//! report.md's headline (the answer first), the lubricant at temperature, the loss budget and the
+//! efficiency map; and efficiency_map.csv.
+
+use std::fmt::Write;
+
+use super::table::{fixed, header, law_words, row, sig};
+use crate::report::losses::MapReport;
+use crate::report::{Report, Severity};
+
+/// Rows of the headline's table before it points to the details.
+const HEADLINE_ROWS: usize = 12;
+
+/// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
+/// budget's total where given), the map's range, and the count of warnings and notes.
+pub fn headline(r: &Report) -> String {
+    let mut out = String::new();
+    let g = &r.geometry;
+    let kind = if g.helix_angle.si() > 0.0 {
+        format!("helical pair β = {:.2}°", g.helix_angle.si().to_degrees())
+    } else {
+        "spur pair".to_string()
+    };
+    let oil = r.lubricant.as_ref().map_or(String::new(), |l| match &l.temperature {
+        Some(t) => format!(", {} at {:.0} °C", l.name, t.si() - 273.15),
+        None => format!(", {}", l.name),
+    });
+    let _ = writeln!(out, "## Headline\n");
+    let _ = writeln!(
+        out,
+        "{kind}, z = {}/{}, m = {} mm, b = {} mm{oil}; {} operating point(s).\n",
+        r.geometry.pinion.teeth,
+        r.geometry.wheel.teeth,
+        fixed(g.module.si() * 1e3, 3),
+        fixed(g.face_width.si() * 1e3, 2),
+        r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
+    );
+    if !r.efficiency.is_empty() {
+        let mut cols = vec!["operating point", "law", "formulation", "η̄ mesh %", "P mesh W"];
+        if r.loss_budget {
+            cols.extend(["P total W", "η total %"]);
+        }
+        header(&mut out, &cols);
+        for e in r.efficiency.iter().take(HEADLINE_ROWS) {
+            let mut cells = vec![
+                format!(
+                    "{} N·m, {} {}",
+                    sig(e.pinion_torque.si()),
+                    sig(r.speed_unit.value(&e.pinion_speed)),
+                    r.speed_unit.name
+                ),
+                law_words(&e.label),
+                e.formulation.name().to_string(),
+                fixed(100.0 * e.mean_efficiency.0, 3),
+                fixed(e.power_loss.si(), 2),
+            ];
+            if let Some(b) = &e.budget {
+                cells.extend([fixed(b.total_loss.si(), 2), fixed(100.0 * b.total_efficiency.0, 3)]);
+            }
+            row(&mut out, &cells);
+        }
+        if r.efficiency.len() > HEADLINE_ROWS {
+            let _ = writeln!(out, "\n… and {} more rows under Efficiency below.", r.efficiency.len() - HEADLINE_ROWS);
+        }
+        let _ = writeln!(out);
+    }
+    if let Some(m) = &r.efficiency_map {
+        for x in &m.ranges {
+            let total = x.total_efficiency.map_or(String::new(), |t| {
+                format!("; total η {}–{} %", fixed(100.0 * t[0].0, 2), fixed(100.0 * t[1].0, 2))
+            });
+            let _ = writeln!(
+                out,
+                "- Map, {} ({}): mesh η̄ {}–{} %{total} over its {} × {} grid points.",
+                law_words(&x.label),
+                x.formulation.name(),
+                fixed(100.0 * x.mesh_efficiency[0].0, 2),
+                fixed(100.0 * x.mesh_efficiency[1].0, 2),
+                m.pinion_torques.len(),
+                m.pinion_speeds.len()
+            );
+        }
+        let _ = writeln!(out);
+    }
+    if !r.loss_budget && !r.efficiency.is_empty() {
+        let _ = writeln!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
+    }
+    let warnings = r.findings.iter().filter(|f| f.severity == Severity::Warning).count();
+    let notes = r.findings.len() - warnings;
+    let _ = writeln!(out, "Findings: {warnings} warning(s), {notes} note(s) (listed at the end).\n");
+    out
+}
+
+/// The lubricant at the oil temperature and where its values come from.
+pub fn lubricant_section(r: &Report) -> String {
+    let mut out = String::new();
+    let Some(l) = &r.lubricant else { return out };
+    let _ = writeln!(out, "\n## Lubricant\n");
+    header(&mut out, &["quantity", "value"]);
+    row(&mut out, &["name".into(), l.name.clone()]);
+    if let Some(b) = &l.base {
+        row(&mut out, &["base oil".into(), b.clone()]);
+    }
+    if let Some(t) = &l.temperature {
+        row(&mut out, &["oil temperature".into(), format!("{} °C", fixed(t.si() - 273.15, 1))]);
+    }
+    if let Some(n) = &l.kinematic_viscosity {
+        row(&mut out, &["kinematic viscosity ν".into(), format!("{} mm²/s", fixed(n.si() * 1e6, 3))]);
+    }
+    row(&mut out, &["dynamic viscosity η".into(), format!("{} mPa·s", fixed(l.dynamic_viscosity.si() * 1e3, 3))]);
+    if let Some(d) = &l.density {
+        row(&mut out, &["density ρ".into(), format!("{} kg/m³", fixed(d.si(), 1))]);
+    }
+    if let Some(a) = &l.pressure_viscosity {
+        row(&mut out, &["pressure–viscosity coefficient α".into(), format!("{} 1/GPa", fixed(a.si() * 1e9, 3))]);
+    }
+    row(&mut out, &["lubricant factor X_L (ISO/TR 14179-2)".into(), fixed(l.lubricant_factor.0, 3)]);
+    if let (Some(a), Some(b), Some(d)) = (&l.nu_40, &l.nu_100, &l.density_15) {
+        row(&mut out, &["ν40 / ν100".into(), format!("{} / {} mm²/s", fixed(a.si() * 1e6, 2), fixed(b.si() * 1e6, 3))]);
+        row(&mut out, &["density at 15 °C".into(), format!("{} kg/m³", fixed(d.si(), 1))]);
+    }
+    if let Some(vi) = &l.viscosity_index {
+        row(&mut out, &["viscosity index (ASTM D2270)".into(), fixed(vi.0, 1)]);
+    }
+    let _ = writeln!(out, "\nSource: {}.", l.source);
+    out
+}
+
+/// The loss budget of every efficiency record, in W and as shares of the total.
+pub fn budget_section(r: &Report) -> String {
+    let mut out = String::new();
+    if !r.loss_budget || r.efficiency.is_empty() {
+        return out;
+    }
+    let _ = writeln!(out, "\n## Loss budget\n");
+    let _ = writeln!(
+        out,
+        "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gear churning or jet impulse) + P_VL (bearings, Palmgren: no-load and load-dependent) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
+    );
+    header(
+        &mut out,
+        &[
+            "operating point",
+            "law",
+            "formulation",
+            "mesh W",
+            "churning W",
+            "bearings no-load W",
+            "bearings load W",
+            "seals W",
+            "total W",
+            "mesh %",
+            "η total %",
+        ],
+    );
+    let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| fixed(q.si(), 2));
+    for e in &r.efficiency {
+        let Some(b) = &e.budget else { continue };
+        row(
+            &mut out,
+            &[
+                format!(
+                    "{} N·m, {} {}",
+                    sig(e.pinion_torque.si()),
+                    sig(r.speed_unit.value(&e.pinion_speed)),
+                    r.speed_unit.name
+                ),
+                law_words(&e.label),
+                e.formulation.name().to_string(),
+                fixed(e.power_loss.si(), 2),
+                w(b.gear_no_load),
+                w(b.bearings_no_load),
+                w(b.bearings_load),
+                w(b.seals),
+                fixed(b.total_loss.si(), 2),
+                fixed(100.0 * e.power_loss.si() / b.total_loss.si(), 1),
+                fixed(100.0 * b.total_efficiency.0, 3),
+            ],
+        );
+    }
+    out
+}
+
+/// The map's section: what it is, its ranges, its files.
+pub fn map_section(r: &Report) -> String {
+    let mut out = String::new();
+    let Some(m) = &r.efficiency_map else { return out };
+    let _ = writeln!(out, "\n## Efficiency map\n");
+    let _ = writeln!(
+        out,
+        "{} torques × {} speeds, every law and formulation; every cell is in `{}` (one row per grid point, law and formulation). Ranges over the grid points:\n",
+        m.pinion_torques.len(),
+        m.pinion_speeds.len(),
+        m.csv
+    );
+    header(&mut out, &["law", "formulation", "mesh η̄ %", "total η %", "total loss W"]);
+    for x in &m.ranges {
+        row(
+            &mut out,
+            &[
+                law_words(&x.label),
+                x.formulation.name().to_string(),
+                format!("{} – {}", fixed(100.0 * x.mesh_efficiency[0].0, 3), fixed(100.0 * x.mesh_efficiency[1].0, 3)),
+                x.total_efficiency
+                    .map_or("—".into(), |t| format!("{} – {}", fixed(100.0 * t[0].0, 3), fixed(100.0 * t[1].0, 3))),
+                x.total_loss.map_or("—".into(), |t| format!("{} – {}", fixed(t[0].si(), 1), fixed(t[1].si(), 1))),
+            ],
+        );
+    }
+    out
+}
+
+/// efficiency_map.csv: one row per grid point, law and formulation (SI: N·m, rad/s, W).
+pub fn map_csv(r: &Report, m: &MapReport) -> String {
+    let mut out = String::from(
+        "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,gear_no_load_W,bearings_no_load_W,bearings_load_W,seals_W,total_loss_W,total_efficiency\n",
+    );
+    let _ = r;
+    let num = |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::report::number::round_sig(x)));
+    for c in &m.cells {
+        let b = c.budget;
+        let _ = writeln!(
+            out,
+            "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{}",
+            num(Some(m.pinion_torques[c.torque_index].0)),
+            num(Some(m.pinion_speeds[c.speed_index].0)),
+            m.speeds_written[c.speed_index],
+            m.labels[c.law_index].replace('"', "\"\""),
+            c.formulation.name(),
+            num(Some(c.mesh_efficiency)),
+            num(Some(c.mesh_loss)),
+            num(b.and_then(|b| b.gear_no_load)),
+            num(b.and_then(|b| b.bearings_no_load)),
+            num(b.and_then(|b| b.bearings_load)),
+            num(b.and_then(|b| b.seals)),
+            num(b.map(|b| b.total_loss)),
+            num(b.map(|b| b.total_efficiency)),
+        );
+    }
+    out
+}

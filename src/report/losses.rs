@@ -1,0 +1,158 @@
+//! The lubricant at temperature, the loss budget of each efficiency record, and the efficiency map.
+
+use serde::Serialize;
+
+use super::number::{Num, Q};
+use crate::evaluate::map::{EfficiencyMap, MapCell};
+use crate::evaluate::Evaluation;
+use crate::losses::BudgetParts;
+use crate::model::{Formulation, Scene};
+
+/// What the laws, films and losses read from the oil, and where it came from.
+#[derive(Debug, Clone, Serialize)]
+pub struct LubricantReport {
+    pub name: String,
+    pub base: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub temperature: Option<Q>,
+    pub dynamic_viscosity: Q,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kinematic_viscosity: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub density: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pressure_viscosity: Option<Q>,
+    /// X_L of ISO/TR 14179-2 by base oil (a law's `x_l` overrides it there).
+    pub lubricant_factor: Num,
+    /// ν40, ν100, ρ15 and the viscosity index when the oil was given by grade or measured values.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nu_40: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nu_100: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub density_15: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub viscosity_index: Option<Num>,
+    pub source: String,
+}
+
+pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantReport> {
+    let l = scene.lubricant.as_ref()?;
+    let t = &eval.tribology;
+    let source = match &l.oil {
+        Some(oil) => {
+            format!("{}; ν by ASTM D341 (Walther) through ν40 and ν100, ρ by thermal expansion 7e-4 1/K", oil.source)
+        }
+        None => "given at the oil temperature in the scene".to_string(),
+    };
+    Some(LubricantReport {
+        name: l.name.clone(),
+        base: l.kind.map(|b| b.words().to_string()),
+        temperature: l.temperature.as_ref().map(|g| Q::new(g.value.value, "K")),
+        dynamic_viscosity: Q::new(t.dynamic_viscosity, "Pa*s"),
+        kinematic_viscosity: t.kinematic_viscosity.map(|v| Q::new(v, "m^2/s")),
+        density: t.kinematic_viscosity.map(|v| Q::new(t.dynamic_viscosity / v, "kg/m^3")),
+        pressure_viscosity: t.pressure_viscosity.map(|a| Q::new(a, "1/Pa")),
+        lubricant_factor: Num(t.lubricant_factor),
+        nu_40: l.oil.as_ref().map(|o| Q::new(o.nu_40, "m^2/s")),
+        nu_100: l.oil.as_ref().map(|o| Q::new(o.nu_100, "m^2/s")),
+        density_15: l.oil.as_ref().map(|o| Q::new(o.density_15, "kg/m^3")),
+        viscosity_index: l.oil.as_ref().map(|o| Num(o.viscosity_index())),
+        source,
+    })
+}
+
+/// The budget beside an efficiency record's mesh loss, in W; parts the scene does not describe are absent.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BudgetRecord {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gear_no_load: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearings_no_load: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bearings_load: Option<Q>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seals: Option<Q>,
+    pub total_loss: Q,
+    pub total_efficiency: Num,
+}
+
+pub fn budget_record(p: &BudgetParts) -> BudgetRecord {
+    let w = |x: Option<f64>| x.map(|x| Q::new(x, "W"));
+    BudgetRecord {
+        gear_no_load: w(p.gear_no_load),
+        bearings_no_load: w(p.bearings_no_load),
+        bearings_load: w(p.bearings_load),
+        seals: w(p.seals),
+        total_loss: Q::new(p.total_loss, "W"),
+        total_efficiency: Num(p.total_efficiency),
+    }
+}
+
+/// Extremes of one law and formulation over the map's grid points (the grid is what the map
+/// evaluates; these are its extremes, not the located extremes of a continuous function).
+#[derive(Debug, Clone, Serialize)]
+pub struct MapRange {
+    pub label: String,
+    pub formulation: Formulation,
+    /// [lowest, highest] over the grid.
+    pub mesh_efficiency: [Num; 2],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub total_efficiency: Option<[Num; 2]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub total_loss: Option<[Q; 2]>,
+}
+
+/// The efficiency map: its grid and ranges; the cells are in efficiency_map.csv.
+#[derive(Debug, Clone, Serialize)]
+pub struct MapReport {
+    /// Pinion torques (N·m) and speeds (rad/s) of the grid.
+    pub pinion_torques: Vec<Num>,
+    pub pinion_speeds: Vec<Num>,
+    pub ranges: Vec<MapRange>,
+    pub csv: String,
+    #[serde(skip)]
+    pub speeds_written: Vec<f64>,
+    #[serde(skip)]
+    pub speed_unit: String,
+    #[serde(skip)]
+    pub labels: Vec<String>,
+    #[serde(skip)]
+    pub cells: Vec<MapCell>,
+}
+
+fn range(values: impl Iterator<Item = f64>) -> [f64; 2] {
+    values.fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], v| [lo.min(v), hi.max(v)])
+}
+
+pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
+    let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
+    let mut ranges = Vec::new();
+    for (i, label) in labels.iter().enumerate() {
+        for f in scene.analyses.efficiency.clone().unwrap_or_default() {
+            let cells: Vec<&MapCell> = map.cells.iter().filter(|c| c.law_index == i && c.formulation == f).collect();
+            if cells.is_empty() {
+                continue;
+            }
+            let mesh = range(cells.iter().map(|c| c.mesh_efficiency));
+            let budgets: Option<Vec<BudgetParts>> = cells.iter().map(|c| c.budget).collect();
+            ranges.push(MapRange {
+                label: label.clone(),
+                formulation: f,
+                mesh_efficiency: mesh.map(Num),
+                total_efficiency: budgets.as_ref().map(|b| range(b.iter().map(|p| p.total_efficiency)).map(Num)),
+                total_loss: budgets.as_ref().map(|b| range(b.iter().map(|p| p.total_loss)).map(|x| Q::new(x, "W"))),
+            });
+        }
+    }
+    MapReport {
+        pinion_torques: map.torques.iter().map(|t| Num(*t)).collect(),
+        pinion_speeds: map.speeds.iter().map(|s| Num(*s)).collect(),
+        ranges,
+        csv: "efficiency_map.csv".into(),
+        speeds_written: map.speeds_written.clone(),
+        speed_unit: map.speed_unit.clone(),
+        labels,
+        cells: map.cells.clone(),
+    }
+}

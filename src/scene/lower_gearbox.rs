@@ -1,0 +1,240 @@
+//! The `gearbox` block: lubrication method, and the bearings and seals on each shaft.
+//!
+//! ```text
+//! gearbox {
+//!     lubrication = dip(pinion_immersion = 0 mm, wheel_immersion = 30 mm, axis_height = 80 mm, housing_width = 200 mm)
+//!     pinion_shaft {
+//!         bearing(type = cylindrical_roller, bore = 30 mm, outside = 72 mm, at = -40 mm)
+//!         bearing(type = cylindrical_roller, bore = 30 mm, outside = 72 mm, at = 40 mm)
+//!         seal(diameter = 30 mm)
+//!     }
+//!     wheel_shaft { bearing(type = deep_groove_ball, mean_diameter = 55 mm, count = 2, static_load_rating = 18 kN) }
+//! }
+//! ```
+
+use super::ast::*;
+use super::fields::{positive, unknown_name, Fields};
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::losses::{Bearing, BearingType, Gearbox, Lubrication, Seal};
+use crate::model::{Force, Length, Velocity, VolumeRate};
+
+const SHAFTS: [&str; 2] = ["pinion_shaft", "wheel_shaft"];
+const DIP: &[&str] = &["pinion_immersion", "wheel_immersion", "axis_height", "housing_width"];
+const INJECTION: &[&str] = &["flow", "jet_speed"];
+const BEARING: &[&str] = &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1"];
+const SEAL: &[&str] = &["diameter", "count"];
+
+/// A call's arguments read as the entries of a block.
+fn call_fields<'a>(
+    call: &Call,
+    what: &str,
+    keys: &[&str],
+    items: &'a mut Vec<Item>,
+    errors: &mut Vec<Diagnostic>,
+) -> Fields<'a> {
+    *items = call.arguments.iter().map(|(k, v)| Item::Assignment { key: k.clone(), value: v.clone() }).collect();
+    Fields::read(what, call.span, items, keys, &[], &[], errors)
+}
+
+fn metres(g: Option<crate::model::Given<Length>>) -> Option<f64> {
+    g.map(|g| g.value.value)
+}
+
+pub(super) fn lower_gearbox(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Gearbox> {
+    let f = Fields::read("the `gearbox` block", block.span, &block.items, &["lubrication"], &SHAFTS, &[], errors);
+    let before = errors.len();
+    let lubrication = f.values.get("lubrication").and_then(|(_, v)| lower_lubrication(v, errors));
+    let mut bearings: [Vec<Bearing>; 2] = [Vec::new(), Vec::new()];
+    let mut seals: [Vec<Seal>; 2] = [Vec::new(), Vec::new()];
+    for shaft in &f.blocks {
+        let s = SHAFTS.iter().position(|n| *n == shaft.kind.text).unwrap_or(0);
+        let what = format!("the `{}` block", SHAFTS[s]);
+        let sf = Fields::read(&what, shaft.span, &shaft.items, &[], &[], &["bearing", "seal"], errors);
+        for call in &sf.calls {
+            match call.name.text.as_str() {
+                "bearing" => bearings[s].extend(lower_bearing(call, errors)),
+                _ => seals[s].extend(lower_seal(call, errors)),
+            }
+        }
+        check_positions(&bearings[s], shaft, errors);
+    }
+    (errors.len() == before).then_some(Gearbox { lubrication, bearings, seals })
+}
+
+fn lower_lubrication(value: &Value, errors: &mut Vec<Diagnostic>) -> Option<Lubrication> {
+    let ValueKind::Call(call) = &value.kind else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::WrongDimension, value.span, "`lubrication` expects `dip(...)` or `injection(...)`")
+                .hint("write `lubrication = dip(pinion_immersion = 0 mm, wheel_immersion = 30 mm, axis_height = 80 mm, housing_width = 200 mm)`"),
+        );
+        return None;
+    };
+    let mut items = Vec::new();
+    match call.name.text.as_str() {
+        "dip" => {
+            let f = call_fields(call, "`dip(...)`", DIP, &mut items, errors);
+            let e1 = metres(f.required("pinion_immersion", "0 mm", errors));
+            let e2 = metres(f.required("wheel_immersion", "30 mm", errors));
+            let h = metres(positive(f.required("axis_height", "80 mm", errors), "axis_height", errors));
+            let l = metres(positive(f.required("housing_width", "200 mm", errors), "housing_width", errors));
+            let (e1, e2, h, l) = (e1?, e2?, h?, l?);
+            if e1 < 0.0 || e2 < 0.0 {
+                errors.push(
+                    Diagnostic::new(DiagnosticKind::OutOfRange, call.span, "an immersion depth is negative")
+                        .hint("give the depth of the tip circle below the oil level; 0 for a gear above the oil"),
+                );
+                return None;
+            }
+            Some(Lubrication::Dip { immersion: [e1, e2], axis_height: h, housing_width: l })
+        }
+        "injection" => {
+            let f = call_fields(call, "`injection(...)`", INJECTION, &mut items, errors);
+            let q: Option<crate::model::Given<VolumeRate>> =
+                positive(f.required("flow", "2 l/min", errors), "flow", errors);
+            let v: Option<crate::model::Given<Velocity>> = f.required("jet_speed", "10 m/s", errors);
+            Some(Lubrication::Injection { flow: q?.value.value, jet_speed: v?.value.value.max(0.0) })
+        }
+        _ => {
+            errors.push(unknown_name("lubrication method", &call.name, &["dip", "injection"]));
+            None
+        }
+    }
+}
+
+fn lower_bearing(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Bearing> {
+    let mut items = Vec::new();
+    let f = call_fields(call, "`bearing(...)`", BEARING, &mut items, errors);
+    let kind = match f.name("type", BearingType::NAMES, errors) {
+        Some(n) => BearingType::from_name(&n.text),
+        None => {
+            if !f.has("type") {
+                errors.push(f.missing("type", "cylindrical_roller"));
+            }
+            None
+        }
+    };
+    let bore = metres(positive(f.optional("bore", errors), "bore", errors));
+    let outside = metres(positive(f.optional("outside", errors), "outside", errors));
+    let mean = metres(positive(f.optional("mean_diameter", errors), "mean_diameter", errors));
+    let mean_diameter = match (bore, outside, mean) {
+        (Some(d), Some(big_d), None) if big_d > d => Some(0.5 * (d + big_d)),
+        (None, None, Some(dm)) => Some(dm),
+        _ => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    call.span,
+                    "a bearing needs `bore` and `outside` (D > d), or `mean_diameter`",
+                )
+                .hint("write `bearing(type = cylindrical_roller, bore = 30 mm, outside = 72 mm)`"),
+            );
+            None
+        }
+    };
+    let count = f.number("count", 1.0, 64.0, errors).map_or(1, |c| c.value.round() as usize);
+    let c0: Option<crate::model::Given<Force>> =
+        positive(f.optional("static_load_rating", errors), "static_load_rating", errors);
+    let kind = kind?;
+    if kind.needs_static_rating() && c0.is_none() && !f.has("f1") {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                call.span,
+                format!("a {} bearing's load-dependent moment needs its static load rating C_0", kind.name()),
+            )
+            .hint("add `static_load_rating = 20 kN` (from the bearing's catalogue), or give `f1`"),
+        );
+        return None;
+    }
+    Some(Bearing {
+        kind,
+        mean_diameter: mean_diameter?,
+        count,
+        static_load_rating: c0.map(|c| c.value.value),
+        f0: f.number("f0", 0.1, 100.0, errors).map(|g| g.value),
+        f1: f.number("f1", 1e-6, 0.1, errors).map(|g| g.value),
+        position: metres(f.optional("at", errors)),
+    })
+}
+
+fn lower_seal(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Seal> {
+    let mut items = Vec::new();
+    let f = call_fields(call, "`seal(...)`", SEAL, &mut items, errors);
+    let d = metres(positive(f.required("diameter", "30 mm", errors), "diameter", errors));
+    let count = f.number("count", 1.0, 64.0, errors).map_or(1, |c| c.value.round() as usize);
+    Some(Seal { diameter: d?, count })
+}
+
+/// Positions (`at`) on all or none of a shaft's bearing places, and then on exactly two.
+fn check_positions(bearings: &[Bearing], shaft: &Block, errors: &mut Vec<Diagnostic>) {
+    let with = bearings.iter().filter(|b| b.position.is_some()).count();
+    let ok = with == 0 || (with == 2 && bearings.len() == 2 && bearings[0].position != bearings[1].position);
+    if !ok {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, shaft.kind.span, "bearing positions (`at`) need exactly two bearing places at different positions")
+                .hint("give `at` on both of the shaft's two bearings (the gear's mid-plane at 0), or on none: the load is then shared equally"),
+        );
+    }
+}
+
+/// The budget adds the mesh loss of `efficiency`; bearings need the oil's kinematic viscosity and
+/// injection its density.
+pub(super) fn check_gearbox_needs(
+    gearbox: &Gearbox,
+    block: &Block,
+    lubricant: Option<&crate::model::Lubricant>,
+    analyses: &crate::model::Analyses,
+    errors: &mut Vec<Diagnostic>,
+) {
+    if analyses.efficiency.is_none() {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                block.kind.span,
+                "the loss budget of `gearbox` needs the mesh loss of `efficiency`",
+            )
+            .hint("add `efficiency(formulations = [external])` to `analyses`"),
+        );
+    }
+    let needs_oil = gearbox.bearings.iter().any(|b| !b.is_empty())
+        || matches!(gearbox.lubrication, Some(Lubrication::Injection { .. }));
+    if needs_oil && lubricant.and_then(|l| l.kinematic_viscosity_si()).is_none() {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "bearing and injection losses need the oil's kinematic viscosity and density")
+                .hint("add `lubricant = iso_vg(100, mineral)` with `oil_temperature` in `operating`, or `density` to the lubricant block"),
+        );
+    }
+}
+
+/// Most values along each axis of an efficiency map.
+pub const MAX_MAP_VALUES: usize = 200;
+
+/// `efficiency_map(pinion_torque = 10..400 N*m count 40, pinion_speed = 100..6000 rpm count 40)`.
+pub(super) fn lower_efficiency_map(
+    call: &Call,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(crate::model::Sweep<crate::model::Torque>, crate::model::Sweep<crate::model::AngularVelocity>)> {
+    let mut items = Vec::new();
+    let f = call_fields(call, "`efficiency_map(...)`", &["pinion_torque", "pinion_speed"], &mut items, errors);
+    let t: Option<crate::model::Sweep<crate::model::Torque>> = f.sweep("pinion_torque", "10..400 N*m count 40", errors);
+    let s: Option<crate::model::Sweep<crate::model::AngularVelocity>> =
+        f.sweep("pinion_speed", "100..6000 rpm count 40", errors);
+    let (t, s) = (t?, s?);
+    for (key, n, values, span) in [
+        ("pinion_torque", t.values.len(), t.values.iter().map(|v| v.value).collect::<Vec<_>>(), t.span),
+        ("pinion_speed", s.values.len(), s.values.iter().map(|v| v.value).collect(), s.span),
+    ] {
+        if !(2..=MAX_MAP_VALUES).contains(&n) || values.iter().any(|v| *v <= 0.0) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    span,
+                    format!("the map's `{key}` needs 2 to {MAX_MAP_VALUES} positive values, not {n}"),
+                )
+                .hint(format!("write a range such as `{key} = 10..400 N*m count 40`")),
+            );
+            return None;
+        }
+    }
+    Some((t, s))
+}
