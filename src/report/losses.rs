@@ -12,6 +12,7 @@ use crate::model::{Formulation, Scene};
 #[derive(Debug, Clone, Serialize)]
 pub struct LubricantReport {
     pub name: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub base: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub temperature: Option<Q>,

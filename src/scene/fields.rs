@@ -59,7 +59,8 @@ impl<'a> Fields<'a> {
         errors: &mut Vec<Diagnostic>,
     ) -> Fields<'a> {
         let mut f = Fields { what: what.into(), span, values: BTreeMap::new(), blocks: Vec::new(), calls: Vec::new() };
-        let all: Vec<&str> = keys.iter().chain(blocks).chain(calls).copied().collect();
+        // A name that is both a key and a block (`lubricant`) is listed once, as a block.
+        let all: Vec<&str> = keys.iter().filter(|k| !blocks.contains(k)).chain(blocks).chain(calls).copied().collect();
         for item in items {
             match item {
                 Item::Assignment { key, value } if keys.contains(&key.text.as_str()) => {

@@ -146,7 +146,11 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
             .hint("add a block such as `friction { coulomb(mu = 0.05) }` (README lists the laws)"),
         );
     }
-    if let Some(g) = &gears {
+    // A lubricant that failed to lower has its own error; the laws' needs are checked against a
+    // lowered one or a missing one.
+    let lubricant_failed =
+        lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));
+    if let (Some(g), false) = (&gears, lubricant_failed) {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
     if let (Some(gb), Some(block)) = (&gearbox, singles.get("gearbox")) {

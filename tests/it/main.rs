@@ -9,6 +9,7 @@ mod fuzz;
 mod fuzz_campaign;
 mod geometry;
 mod helical;
+mod losses;
 mod properties;
 mod six_dof;
 mod specs;

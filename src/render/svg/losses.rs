@@ -102,7 +102,7 @@ struct Field<'a> {
 
 /// "Nice" iso-levels spanning [lo, hi]: about `n` of them on a 1-2-5 step.
 fn levels(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    if !(hi > lo) {
+    if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
         return vec![lo];
     }
     let raw = (hi - lo) / n as f64;

@@ -1,0 +1,162 @@
+//! The lubricant at temperature, the loss models and the loss budget end to end (issue: a gearbox
+//! power-loss calculator). Tolerances are stated per test.
+
+use gearloss::evaluate::evaluate_scene;
+use gearloss::geometry::OperatingState;
+use gearloss::losses::{loss_budget, Bearing, BearingType, Gearbox, Lubrication, Seal};
+
+fn spec(name: &str) -> gearloss::Scene {
+    crate::scene(&crate::root().join("specs").join(name))
+}
+
+fn rpm(n: f64) -> f64 {
+    n * std::f64::consts::PI / 30.0
+}
+
+/// `lubricant = iso_vg(100, mineral)` at 90 °C: ν by ASTM D341 computed by hand through the
+/// catalogue's ν40 = 100 and ν100 (to 1e-6 relative), η = ρ ν, ρ = ρ15 (1 − 7e-4 · 75).
+#[test]
+fn catalogue_oil_at_temperature_by_hand() {
+    let scene = spec("fzg_c14_gearbox.gear");
+    let l = scene.lubricant.as_ref().unwrap();
+    let oil = l.oil.as_ref().unwrap();
+    let (nu40, nu100) = (oil.nu_40 * 1e6, oil.nu_100 * 1e6);
+    let w = |nu: f64| (nu + 0.7f64).log10().log10();
+    let b = (w(nu40) - w(nu100)) / (373.15f64.log10() - 313.15f64.log10());
+    let a = w(nu40) + b * 313.15f64.log10();
+    let nu90 = 10f64.powf(10f64.powf(a - b * 363.15f64.log10())) - 0.7;
+    let rho90 = 885.0 * (1.0 - 7e-4 * 75.0);
+    let eta = l.dynamic_viscosity.value.value;
+    assert!((eta / (rho90 * nu90 * 1e-6) - 1.0).abs() < 1e-6, "η = {eta} vs {}", rho90 * nu90 * 1e-6);
+    // The catalogue oil is a VG 100 of VI 95: ν40 = 100 mm²/s exactly.
+    assert!((nu40 - 100.0).abs() < 1e-12);
+    assert!((gearloss::tribology::lubricant::viscosity_index(nu40, nu100) - 95.0).abs() < 1e-6);
+}
+
+/// The C14 point of the peer comparison: FZG C at load stage 8 (239.3 N·m), 1500 rpm, ISO VG 100
+/// mineral at 90 °C, Ra 0.3 µm, `x_l = 0.846`: μ_mZ within 0.5 % of the peer's 0.04487.
+#[test]
+fn c14_mu_matches_the_peer() {
+    use gearloss::friction::iso_14179_2::Iso14179_2;
+    let scene = spec("fzg_c14_gearbox.gear");
+    let eval = evaluate_scene(&scene);
+    let state = OperatingState { pinion_torque: 239.3, pinion_speed: rpm(1500.0) };
+    let mu = Iso14179_2::new(&eval.law_context(state), 0.846).mu_mz;
+    assert!((mu / 0.04487 - 1.0).abs() < 5e-3, "μ_mZ = {mu}");
+    // X_L of the lubricant (mineral: 1.0) when the law has no `x_l`.
+    let default = Iso14179_2::new(&eval.law_context(state), 0.0).mu_mz;
+    assert!((default / mu - 1.0 / 0.846).abs() < 1e-12);
+}
+
+/// The budget by hand at 239.3 N·m, 1500 rpm: Mauz churning, Palmgren bearings (two NJ 406 per
+/// shaft sharing F_bt equally), seals 7.69e-6 d² n; and the record's total is mesh + the parts
+/// (to 1e-9 relative).
+#[test]
+fn budget_by_hand() {
+    let scene = spec("fzg_c14_gearbox.gear");
+    let eval = evaluate_scene(&scene);
+    let g = &eval.geometry;
+    let (t, w1) = (239.3, rpm(1500.0));
+    let w2 = w1 / g.gear_ratio;
+    let nu = eval.tribology.kinematic_viscosity.unwrap();
+    let rho = eval.tribology.dynamic_viscosity / nu;
+    let b = eval.loss_budget(&scene, &OperatingState { pinion_torque: t, pinion_speed: w1 }).unwrap();
+
+    let v_t = w1 * g.working_pitch_radius[0];
+    let (e1, e2, h_c, l_h, width): (f64, f64, f64, f64, f64) = (41.2, 59.2, 100.0, 200.0, 14.0);
+    let c_sp = (4.0 * e2 / (3.0 * h_c)).powf(1.5) * 2.0 * h_c / l_h;
+    let c1 = 0.063 * (e1 + e2) / 10.0 + 0.0128 * (width / 10.0f64).powi(3);
+    let c2 = (e1 + e2) / 800.0 + 0.2;
+    let churning = c_sp * c1 * (c2 * v_t / 10.0).exp() * w1;
+    assert!((b.gear_no_load.unwrap() / churning - 1.0).abs() < 1e-9);
+
+    let dm = 60.0;
+    let m0 = |w: f64| {
+        let nn = nu * 1e6 * w * 30.0 / std::f64::consts::PI;
+        1e-7 * 2.5 * nn.powf(2.0 / 3.0) * dm * dm * dm * 1e-3
+    };
+    let no_load = 2.0 * (m0(w1) * w1 + m0(w2) * w2);
+    assert!((b.bearings_no_load.unwrap() / no_load - 1.0).abs() < 1e-9);
+    let fr = t / g.base_radius[0] / 2.0;
+    let load = 2.0 * 0.0003 * fr * dm * 1e-3 * (w1 + w2);
+    assert!((b.bearings_load.unwrap() / load - 1.0).abs() < 1e-9);
+    let seals = 7.69e-6 * 900.0 * (1500.0 + 1000.0);
+    assert!((b.seals.unwrap() / seals - 1.0).abs() < 1e-9);
+
+    let parts = b.with_mesh(100.0, t * w1);
+    assert!((parts.total_loss - (100.0 + churning + no_load + load + seals)).abs() < 1e-9 * parts.total_loss);
+    assert!((parts.total_efficiency - (1.0 - parts.total_loss / (t * w1))).abs() < 1e-15);
+    let _ = rho;
+}
+
+/// The lever rule: bearings at −40 and +60 mm carry 60 % and 40 % of F_bt; a helical pair's axial
+/// force goes to the first, and its moment F_a r_w / 100 mm adds along the line of centres.
+#[test]
+fn lever_rule_and_axial_moment() {
+    let scene = spec("metric_helical.gear");
+    let g = scene.gears.geometry().unwrap();
+    let place = |at: f64| Bearing {
+        kind: BearingType::CylindricalRoller,
+        mean_diameter: 0.05,
+        count: 1,
+        static_load_rating: None,
+        f0: None,
+        f1: None,
+        position: Some(at),
+    };
+    let gb =
+        Gearbox { lubrication: None, bearings: [vec![place(-0.04), place(0.06)], vec![]], seals: [vec![], vec![]] };
+    let t = 200.0;
+    let b = loss_budget(&gb, &g, t, rpm(1000.0), 50e-6, 870.0);
+    let f_bt = t / g.base_radius[0];
+    let (ft, fr) = (f_bt * g.operating_pressure_angle.cos(), f_bt * g.operating_pressure_angle.sin());
+    let m = g.axial_force(t) * g.working_pitch_radius[0] / 0.1;
+    let r1 = (0.6 * ft).hypot(0.6 * fr - m);
+    let r2 = (0.4 * ft).hypot(0.4 * fr + m);
+    assert!((b.bearings[0].radial_load / r1 - 1.0).abs() < 1e-12, "{} vs {r1}", b.bearings[0].radial_load);
+    assert!((b.bearings[1].radial_load / r2 - 1.0).abs() < 1e-12);
+    assert!((b.bearings[0].axial_load - g.axial_force(t)).abs() < 1e-9 && b.bearings[1].axial_load == 0.0);
+    assert!(b.gear_no_load.is_none() && b.seals.is_none());
+}
+
+/// Limits: no oil above the gears gives no churning; injection at zero flow no impulse loss; a
+/// gearbox with nothing in it adds nothing.
+#[test]
+fn loss_limits() {
+    let g = spec("fzg_c14_gearbox.gear").gears.geometry().unwrap();
+    let dry = Lubrication::Dip { immersion: [0.0, 0.0], axis_height: 0.1, housing_width: 0.2 };
+    assert_eq!(dry.power_loss(100.0, 5.0, 0.014, 870.0), 0.0);
+    let jet = Lubrication::Injection { flow: 0.0, jet_speed: 10.0 };
+    assert_eq!(jet.power_loss(100.0, 5.0, 0.014, 870.0), 0.0);
+    let empty = Gearbox {
+        lubrication: None,
+        bearings: [vec![], vec![]],
+        seals: [vec![Seal { diameter: 0.03, count: 0 }], vec![]],
+    };
+    assert_eq!(loss_budget(&empty, &g, 100.0, 100.0, 1e-5, 870.0).beside_mesh(), 0.0);
+}
+
+/// The report: the budget rows of report.json add up, the map's CSV has a row per grid point, law
+/// and formulation, and the headline leads report.md.
+#[test]
+fn report_budget_and_map() {
+    let path = crate::root().join("specs/fzg_c14_gearbox.gear");
+    let source = std::fs::read_to_string(&path).unwrap();
+    let out = gearloss::run_to_files("fzg_c14_gearbox.gear", &source).unwrap_or_else(|_| panic!("the spec runs"));
+    let file = |name: &str| out.files.iter().find(|(f, _)| f == name).map(|(_, c)| c.clone()).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&file("report.json")).unwrap();
+    for rec in json["efficiency"].as_array().unwrap() {
+        let b = &rec["budget"];
+        let parts: f64 = ["gear_no_load", "bearings_no_load", "bearings_load", "seals"]
+            .iter()
+            .map(|k| b[k]["value"].as_f64().unwrap())
+            .sum::<f64>()
+            + rec["power_loss"]["value"].as_f64().unwrap();
+        assert!((parts / b["total_loss"]["value"].as_f64().unwrap() - 1.0).abs() < 1e-8);
+    }
+    let csv = file("efficiency_map.csv");
+    assert_eq!(csv.lines().count(), 1 + 40 * 40 * 2 * 2);
+    let md = file("report.md");
+    assert!(md.find("## Headline").unwrap() < md.find("## Scene").unwrap());
+    assert!(file("loss_budget.svg").contains("<svg") && file("efficiency_map.svg").contains("<svg"));
+}
