@@ -59,6 +59,8 @@ pub struct ContactCurves {
     pub slide_to_roll: Vec<f64>,
     /// (torque as written, p_H in Pa).
     pub hertz_pressure: Vec<(String, Vec<f64>)>,
+    /// The share of the normal load on one contact, at the first operating point.
+    pub load_share: Vec<f64>,
 }
 
 /// Table positions: A..E in equal steps, with B, P and D inserted, each labelled where it is a named point.
@@ -106,8 +108,10 @@ pub(super) fn contact_curves(scene: &Scene, eval: &Evaluation) -> ContactCurves 
             (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
         })
         .collect();
-    let slide_to_roll = at(torque0, speed0).iter().map(|c| c.slide_to_roll).collect();
-    ContactCurves { u, sliding_velocity, slide_to_roll, hertz_pressure }
+    let first = at(torque0, speed0);
+    let slide_to_roll = first.iter().map(|c| c.slide_to_roll).collect();
+    let load_share = first.iter().map(|c| c.load_share).collect();
+    ContactCurves { u, sliding_velocity, slide_to_roll, hertz_pressure, load_share }
 }
 
 /// At most this many curves of one kind are plotted (evenly picked from a sweep).

@@ -63,6 +63,8 @@ pub struct Curves {
     pub slide_to_roll: Vec<f64>,
     /// (label, p_H in Pa) for each plotted torque.
     pub hertz_pressure: Vec<(String, Vec<f64>)>,
+    /// Load share of one contact along the line of action.
+    pub load_share: Vec<f64>,
     /// A B P D E from T1 (m).
     pub marks: Vec<(&'static str, f64)>,
     /// Per plotted operating point: μ, local power loss along the line of action, η over a cycle.
@@ -134,6 +136,7 @@ pub(super) fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
         sliding_velocity: c.sliding_velocity.clone(),
         slide_to_roll: c.slide_to_roll.clone(),
         hertz_pressure: c.hertz_pressure.clone(),
+        load_share: c.load_share.clone(),
         marks: eval.geometry.named_points(),
         points: point_curves(scene, eval),
         tau: crate::evaluate::cycle_times(),

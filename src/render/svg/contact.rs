@@ -26,9 +26,10 @@ pub fn contact_state(r: &Report) -> Result<String, String> {
         along("sliding velocity v_s (m/s)", c.sliding_velocity.clone()),
         along("slide-to-roll ratio SR", vec![(String::new(), c.slide_to_roll.clone())]),
         along(
-            "Hertzian pressure p_H (MPa)",
+            "Hertzian pressure p_H per contact (MPa)",
             c.hertz_pressure.iter().map(|(l, v)| (l.clone(), v.iter().map(|p| p * 1e-6).collect())).collect(),
         ),
+        along("load share of one contact", vec![(String::new(), c.load_share.clone())]),
     ];
     figure(&format!("{}: contact along the line of action", r.title), &panels)
 }
@@ -69,7 +70,7 @@ pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
             ..Default::default()
         },
         Panel {
-            y_label: "local friction power loss (W)".into(),
+            y_label: "friction power loss per unit path, one contact (W)".into(),
             x_label: "distance from T1 (mm)".into(),
             clip: Some(mu_clip(&x, &pc.power_loss, p_mm, span)),
             x,

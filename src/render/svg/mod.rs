@@ -29,6 +29,9 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(127, 127, 127),
 ];
 
+/// Series of fewer points than this get a marker at every point.
+const MARKERS_BELOW: usize = 20;
+
 /// One panel of a figure.
 #[derive(Default)]
 pub struct Panel {
@@ -151,13 +154,15 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
                 runs.push(Vec::new());
             }
         }
-        for (k, run) in runs.into_iter().filter(|r| !r.is_empty()).enumerate() {
-            let s = chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
-            if k == 0 && !label.is_empty() {
-                s.label(label.clone())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2)));
+        // A sweep of few points gets a marker at each point (the line alone hides where they are).
+        let few = pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()).count() < MARKERS_BELOW;
+        for run in runs.into_iter().filter(|r| !r.is_empty()) {
+            if few {
+                chart.draw_series(run.iter().map(|p| Circle::new(*p, 3, color.filled()))).map_err(e)?;
             }
+            chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
         }
+        let _ = label;
         if let Some(&(cx, cy)) = clipped.iter().min_by(|a, b| a.0.total_cmp(&b.0)) {
             let mark = if cy > 0.0 { "▲ clipped" } else { "▼ clipped" };
             chart
@@ -168,36 +173,83 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
     for (i, (label, pts)) in panel.points.iter().enumerate() {
         let color = PALETTE[(all.len() + i) % PALETTE.len()];
         let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
-        let s = chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
-        if !label.is_empty() {
-            s.label(label.clone()).legend(move |(x, y)| Cross::new((x + 8, y), 5, color.stroke_width(2)));
-        }
-    }
-    if all.iter().chain(&panel.points).any(|(l, _)| !l.is_empty()) {
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.3))
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(e)?;
+        chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
+        let _ = label;
     }
     Ok(())
 }
 
-/// Stacked panels; returns the SVG text.
+/// Stacked panels; returns the SVG text. Legends stand in a column right of the plot areas, so
+/// that they never hide a curve.
 pub fn figure(title: &str, panels: &[Panel]) -> Result<String, String> {
     let mut svg = String::new();
     {
+        let labelled = panels.iter().any(|p| legend_entries(p).iter().any(|(l, _, _)| !l.is_empty()));
         let height = 40 + 260 * panels.len() as u32;
-        let root = SVGBackend::with_string(&mut svg, (900, height)).into_drawing_area();
+        let width = if labelled { 1140 } else { 900 };
+        let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let root = root.titled(title, ("sans-serif", 18)).map_err(|e| e.to_string())?;
         let areas = root.split_evenly((panels.len(), 1));
         for (area, panel) in areas.iter().zip(panels) {
-            draw_panel(area, panel)?;
+            if labelled {
+                let (plot, legend) = area.split_horizontally(880);
+                draw_panel(&plot, panel)?;
+                draw_legend(&legend, panel)?;
+            } else {
+                draw_panel(area, panel)?;
+            }
         }
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
+}
+
+/// (label in words, colour, drawn as a cross) of every labelled series of a panel, in drawing order.
+fn legend_entries(panel: &Panel) -> Vec<(String, RGBColor, bool)> {
+    let lines = panel.series.iter().map(|(l, _)| l).chain(panel.xy.iter().map(|(l, _)| l));
+    let n = panel.series.len() + panel.xy.len();
+    let mut out: Vec<(String, RGBColor, bool)> =
+        lines.enumerate().map(|(i, l)| (legend_words(l), PALETTE[i % PALETTE.len()], false)).collect();
+    out.extend(
+        panel.points.iter().enumerate().map(|(i, (l, _))| (legend_words(l), PALETTE[(n + i) % PALETTE.len()], true)),
+    );
+    out
+}
+
+/// A law's label in words wherever it starts a legend label (`coulomb(mu = 0.04) external` →
+/// "Coulomb μ = 0.04 external"); other labels as they are.
+pub(crate) fn legend_words(label: &str) -> String {
+    for law in crate::friction::catalog::LAWS {
+        let name = law.id.name();
+        if let Some(rest) = label.strip_prefix(name) {
+            let (args, tail) = if rest.starts_with('(') {
+                match rest.find(')') {
+                    Some(i) => (&rest[..=i], &rest[i + 1..]),
+                    None => (rest, ""),
+                }
+            } else if rest.is_empty() || rest.starts_with(' ') {
+                ("", rest)
+            } else {
+                continue;
+            };
+            return format!("{}{tail}", super::table::law_words(&format!("{name}{args}")));
+        }
+    }
+    label.to_string()
+}
+
+fn draw_legend(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    let font = ("sans-serif", 12).into_font();
+    for (k, (label, color, cross)) in legend_entries(panel).into_iter().filter(|(l, _, _)| !l.is_empty()).enumerate() {
+        let y = 24 + 18 * k as i32;
+        if cross {
+            area.draw(&Cross::new((14, y), 5, color.stroke_width(2))).map_err(e)?;
+        } else {
+            area.draw(&PathElement::new(vec![(4, y), (24, y)], color.stroke_width(2))).map_err(e)?;
+        }
+        area.draw(&Text::new(label, (30, y - 6), font.clone())).map_err(e)?;
+    }
+    Ok(())
 }

@@ -63,13 +63,19 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
         if by_speed { format!("pinion speed ({})", r.speed_unit.name) } else { "pinion torque (N·m)".to_string() };
     let panels = [
         Panel {
-            y_label: "mean efficiency η̄ (%)".into(),
+            y_label: "mean mesh efficiency η̄ (%)".into(),
             x_label: x_label.clone(),
             x: xs.clone(),
             series: eta,
             ..Default::default()
         },
-        Panel { y_label: "friction power loss (W)".into(), x_label, x: xs, series: loss, ..Default::default() },
+        Panel {
+            y_label: "mesh friction power loss, all contacts (W)".into(),
+            x_label,
+            x: xs,
+            series: loss,
+            ..Default::default()
+        },
     ];
     let what = if by_speed { "speed" } else { "torque" };
     figure(&format!("{}: mean efficiency and power loss against {what}", r.title), &panels)
@@ -158,7 +164,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
     };
     let panels = [
         Panel {
-            y_label: "mean efficiency η̄ (%)".into(),
+            y_label: "mean mesh efficiency η̄ (%)".into(),
             x_label: "coefficient of friction μ".into(),
             x: xs.clone(),
             series: pick(1),
