@@ -44,6 +44,7 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
             "sweep_mu.svg" => svg::sweep_mu(report)?,
             "map_efficiency.svg" => svg::efficiency_map(report)?,
             "loss_budget.svg" => svg::loss_budget(report)?,
+            "film.svg" => svg::film(report)?,
             "efficiency_map.svg" => svg::efficiency_contours(report)?,
             "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
             "stability_map.svg" => svg::stability_map(report)?,

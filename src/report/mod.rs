@@ -213,6 +213,11 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             title: "Composite law: mean |μ| against pinion speed (He–Cho–Singh Fig. 2b)".into(),
         });
     }
+    if report.operating_points.iter().any(|o| o.film.is_some()) {
+        report
+            .plots
+            .push(PlotRef { file: "film.svg".into(), title: "Film thickness and Λ along the line of action".into() });
+    }
     if report.loss_budget && !report.efficiency.is_empty() {
         report.plots.push(PlotRef {
             file: "loss_budget.svg".into(),

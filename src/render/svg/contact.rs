@@ -88,3 +88,49 @@ pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
     ];
     figure(&format!("{}: friction at {}", r.title, pc.label), &panels)
 }
+
+/// film.svg: central and minimum film thickness and Λ along the line of action at up to six
+/// operating points (at the contact-state table's positions).
+pub fn film(r: &Report) -> Result<String, String> {
+    let with_film: Vec<&crate::report::OperatingPointReport> =
+        r.operating_points.iter().filter(|o| o.film.is_some()).collect();
+    let picked: Vec<&crate::report::OperatingPointReport> =
+        crate::report::pick(with_film.len()).into_iter().map(|i| with_film[i]).collect();
+    let xy = |get: &dyn Fn(&crate::report::friction::FilmRow) -> Option<f64>| -> Vec<(String, Vec<(f64, f64)>)> {
+        picked
+            .iter()
+            .map(|o| {
+                let rows = o.film.as_deref().unwrap_or(&[]);
+                let pts = rows.iter().filter_map(|f| Some((f.distance_from_t1.si() * 1e3, get(f)?))).collect();
+                (o.label.clone(), pts)
+            })
+            .collect()
+    };
+    let mut panels = vec![
+        Panel {
+            y_label: "central film h_c (µm)".into(),
+            x_label: "distance from T1 (mm)".into(),
+            xy: xy(&|f| Some(f.central_film.si() * 1e6)),
+            marks: marks_mm(r),
+            ..Default::default()
+        },
+        Panel {
+            y_label: "minimum film h_min (µm)".into(),
+            x_label: "distance from T1 (mm)".into(),
+            xy: xy(&|f| Some(f.minimum_film.si() * 1e6)),
+            marks: marks_mm(r),
+            ..Default::default()
+        },
+    ];
+    let lambda = xy(&|f| f.lambda.map(|l| l.0));
+    if lambda.iter().any(|(_, p)| !p.is_empty()) {
+        panels.push(Panel {
+            y_label: "film parameter Λ".into(),
+            x_label: "distance from T1 (mm)".into(),
+            xy: lambda,
+            marks: marks_mm(r),
+            ..Default::default()
+        });
+    }
+    figure(&format!("{}: film thickness and Λ along the line of action", r.title), &panels)
+}

@@ -8,7 +8,7 @@ mod losses;
 mod maps;
 mod sweeps;
 
-pub use contact::{contact_state, point_friction};
+pub use contact::{contact_state, film, point_friction};
 pub use dynamics::{dynamics_point, free_response, stability_map, work_precision};
 pub use helical::plane_of_action;
 pub use losses::{efficiency_map as efficiency_contours, loss_budget};
