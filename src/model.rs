@@ -165,55 +165,7 @@ pub struct Material {
     pub poisson_ratio: Given<f64>,
 }
 
-/// The base oil family, for ISO/TR 14179-2's lubricant factor X_L.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum LubricantType {
-    Mineral,
-    Pao,
-    PagInsoluble,
-    PagSoluble,
-    Traction,
-    PhosphateEster,
-    /// Synthetic (carboxylic) ester.
-    Ester,
-}
-
-impl LubricantType {
-    pub const NAMES: &'static [&'static str] =
-        &["mineral", "pao", "pag_insoluble", "pag_soluble", "traction", "phosphate_ester", "ester"];
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Some(match name {
-            "mineral" => LubricantType::Mineral,
-            "pao" => LubricantType::Pao,
-            "pag_insoluble" => LubricantType::PagInsoluble,
-            "pag_soluble" => LubricantType::PagSoluble,
-            "traction" => LubricantType::Traction,
-            "phosphate_ester" => LubricantType::PhosphateEster,
-            "ester" => LubricantType::Ester,
-            _ => return None,
-        })
-    }
-
-    /// The name as written in a scene.
-    pub fn name(self) -> &'static str {
-        Self::NAMES[self as usize]
-    }
-
-    /// The name in words, for reports.
-    pub fn words(self) -> &'static str {
-        match self {
-            LubricantType::Mineral => "mineral",
-            LubricantType::Pao => "PAO",
-            LubricantType::PagInsoluble => "PAG, not water-soluble",
-            LubricantType::PagSoluble => "PAG, water-soluble",
-            LubricantType::Traction => "traction fluid",
-            LubricantType::PhosphateEster => "phosphate ester",
-            LubricantType::Ester => "synthetic ester",
-        }
-    }
-}
+pub use crate::tribology::lubricant::BaseOil as LubricantType;
 
 #[derive(Debug, Clone)]
 pub struct Lubricant {

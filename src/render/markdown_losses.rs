@@ -10,6 +10,11 @@ use crate::report::{Report, Severity};
 /// Rows of the headline's table before it points to the details.
 const HEADLINE_ROWS: usize = 12;
 
+/// `239.3 N·m, 1500 rpm`: a record's operating point in the units the scene wrote.
+fn point_label(r: &Report, e: &crate::report::friction::EfficiencyRecord) -> String {
+    format!("{} N·m, {} {}", sig(e.pinion_torque.si()), sig(r.speed_unit.value(&e.pinion_speed)), r.speed_unit.name)
+}
+
 /// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
 /// budget's total where given), the map's range, and the count of warnings and notes.
 pub fn headline(r: &Report) -> String {
@@ -42,12 +47,7 @@ pub fn headline(r: &Report) -> String {
         header(&mut out, &cols);
         for e in r.efficiency.iter().take(HEADLINE_ROWS) {
             let mut cells = vec![
-                format!(
-                    "{} N·m, {} {}",
-                    sig(e.pinion_torque.si()),
-                    sig(r.speed_unit.value(&e.pinion_speed)),
-                    r.speed_unit.name
-                ),
+                point_label(r, e),
                 law_words(&e.label),
                 e.formulation.name().to_string(),
                 fixed(100.0 * e.mean_efficiency.0, 3),
@@ -158,12 +158,7 @@ pub fn budget_section(r: &Report) -> String {
         row(
             &mut out,
             &[
-                format!(
-                    "{} N·m, {} {}",
-                    sig(e.pinion_torque.si()),
-                    sig(r.speed_unit.value(&e.pinion_speed)),
-                    r.speed_unit.name
-                ),
+                point_label(r, e),
                 law_words(&e.label),
                 e.formulation.name().to_string(),
                 fixed(e.power_loss.si(), 2),

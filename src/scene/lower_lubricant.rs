@@ -269,7 +269,7 @@ fn resolve(
         return None;
     };
     let at = oil.at(theta.value.value);
-    let given = |x: f64, unit: &str, scale: f64| format!("{} {unit}", crate::report::number::round_sig(x * scale));
+    let given = |x: f64, unit: &str, scale: f64| format!("{:.6} {unit}", x * scale);
     let alpha = alpha.or_else(|| {
         at.pressure_viscosity.map(|a| Given {
             value: ReciprocalPressure::from_si(a),

@@ -13,7 +13,55 @@
 
 use serde::Serialize;
 
-pub use crate::model::LubricantType as BaseOil;
+/// The base oil family, for ISO/TR 14179-2's lubricant factor X_L.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BaseOil {
+    Mineral,
+    Pao,
+    PagInsoluble,
+    PagSoluble,
+    Traction,
+    PhosphateEster,
+    /// Synthetic (carboxylic) ester.
+    Ester,
+}
+
+impl BaseOil {
+    pub const NAMES: &'static [&'static str] =
+        &["mineral", "pao", "pag_insoluble", "pag_soluble", "traction", "phosphate_ester", "ester"];
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Some(match name {
+            "mineral" => BaseOil::Mineral,
+            "pao" => BaseOil::Pao,
+            "pag_insoluble" => BaseOil::PagInsoluble,
+            "pag_soluble" => BaseOil::PagSoluble,
+            "traction" => BaseOil::Traction,
+            "phosphate_ester" => BaseOil::PhosphateEster,
+            "ester" => BaseOil::Ester,
+            _ => return None,
+        })
+    }
+
+    /// The name as written in a scene.
+    pub fn name(self) -> &'static str {
+        Self::NAMES[self as usize]
+    }
+
+    /// The name in words, for reports.
+    pub fn words(self) -> &'static str {
+        match self {
+            BaseOil::Mineral => "mineral",
+            BaseOil::Pao => "PAO",
+            BaseOil::PagInsoluble => "PAG, not water-soluble",
+            BaseOil::PagSoluble => "PAG, water-soluble",
+            BaseOil::Traction => "traction fluid",
+            BaseOil::PhosphateEster => "phosphate ester",
+            BaseOil::Ester => "synthetic ester",
+        }
+    }
+}
 
 /// 0 °C in kelvin.
 pub const CELSIUS_ZERO: f64 = 273.15;
