@@ -138,7 +138,7 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
             )))
             .map_err(e)?;
     }
-    for (i, (label, pts)) in all.iter().enumerate() {
+    for (i, (_, pts)) in all.iter().enumerate() {
         let color = PALETTE[i % PALETTE.len()];
         // Split at non-finite values so that gaps stay gaps.
         let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
@@ -162,7 +162,6 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
             }
             chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
         }
-        let _ = label;
         if let Some(&(cx, cy)) = clipped.iter().min_by(|a, b| a.0.total_cmp(&b.0)) {
             let mark = if cy > 0.0 { "▲ clipped" } else { "▼ clipped" };
             chart
@@ -170,11 +169,10 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
                 .map_err(e)?;
         }
     }
-    for (i, (label, pts)) in panel.points.iter().enumerate() {
+    for (i, (_, pts)) in panel.points.iter().enumerate() {
         let color = PALETTE[(all.len() + i) % PALETTE.len()];
         let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
         chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
-        let _ = label;
     }
     Ok(())
 }
