@@ -78,7 +78,11 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
     let oil_temperature = operating.as_ref().and_then(|o| o.oil_temperature.as_ref());
+    // An `oil_temperature` that failed to lower has its own error: the lubricant is not read at none.
+    let temperature_failed = oil_temperature.is_none()
+        && singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
     let lubricant = match (singles.get("lubricant"), top.values.get("lubricant")) {
+        _ if temperature_failed => None,
         (Some(_), Some((key, _))) => {
             errors.push(
                 Diagnostic::new(
@@ -153,7 +157,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     if let (Some(g), false) = (&gears, lubricant_failed) {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
-    if let (Some(gb), Some(block)) = (&gearbox, singles.get("gearbox")) {
+    if let (Some(gb), Some(block), false) = (&gearbox, singles.get("gearbox"), lubricant_failed) {
         super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
     }
     if let Some(span) = analyses.film_span {
@@ -222,7 +226,18 @@ fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operat
         return None;
     }
     let detail_points = detail_points(&f, count as usize, errors)?;
-    let oil_temperature = positive(f.optional("oil_temperature", errors), "oil_temperature", errors);
+    let oil_temperature = match f.values.get("oil_temperature") {
+        Some((_, v)) if matches!(v.kind, ValueKind::List { .. } | ValueKind::Range { .. }) => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, v.span, "`oil_temperature` takes one value per scene")
+                    .hint(
+                    "write `oil_temperature = 90 degC`; for several temperatures run the scene once per temperature",
+                ),
+            );
+            None
+        }
+        _ => positive(f.optional("oil_temperature", errors), "oil_temperature", errors),
+    };
     Some(Operating { pinion_torque: torque, pinion_speed: speed, oil_temperature, detail_points })
 }
 
