@@ -99,8 +99,7 @@ impl Evaluation {
     pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
         let gearbox = scene.gearbox.as_ref()?;
         let t = &self.tribology;
-        let nu = t.kinematic_viscosity.unwrap_or(f64::NAN);
-        let rho = t.dynamic_viscosity / nu;
+        let (nu, rho) = (t.kinematic_viscosity.unwrap_or(f64::NAN), t.density().unwrap_or(f64::NAN));
         Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, nu, rho))
     }
 

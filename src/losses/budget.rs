@@ -25,11 +25,14 @@ pub struct BearingLoss {
     pub axial_load: f64,
     /// Power loss of all `count` bearings (W): no-load and load-dependent.
     pub no_load: f64,
-    /// `None` when the bearing's f_1 needs a static load rating the scene does not give.
+    /// `None` when the bearing's f_1 needs a static load rating it lacks (lowering refuses such a
+    /// scene; a bearing built in code without one adds no load-dependent loss).
     pub load: Option<f64>,
 }
 
 /// Everything but the mesh at one operating point (W); parts the scene does not describe are `None`.
+/// (Where a model leaves its tested range the report says so once for the run:
+/// [`super::Lubrication::note`].)
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct LossBudget {
     pub gear_no_load: Option<f64>,
@@ -37,7 +40,6 @@ pub struct LossBudget {
     pub bearings_load: Option<f64>,
     pub seals: Option<f64>,
     pub bearings: Vec<BearingLoss>,
-    pub notes: Vec<String>,
 }
 
 impl LossBudget {
@@ -105,13 +107,12 @@ pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f6
     let v_t = omega_1 * g.working_pitch_radius[0];
     if let Some(l) = &gearbox.lubrication {
         out.gear_no_load = Some(l.power_loss(omega_1, v_t, g.face_width, rho));
-        out.notes.extend(l.note(v_t));
     }
     let omegas = [omega_1, omega_1 / g.gear_ratio];
     let f_bt = torque / g.base_radius[0];
     let axial = g.axial_force(torque);
     if gearbox.bearings.iter().any(|b| !b.is_empty()) {
-        let (mut no_load, mut load, mut all_load) = (0.0, 0.0, true);
+        let (mut no_load, mut load) = (0.0, 0.0);
         for (s, places) in gearbox.bearings.iter().enumerate().filter(|(_, p)| !p.is_empty()) {
             let loads = place_loads(places, f_bt, g.operating_pressure_angle, axial, g.working_pitch_radius[s]);
             for (b, (fr, fa)) in places.iter().zip(loads) {
@@ -119,10 +120,7 @@ pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f6
                 let p0 = b.no_load_moment(nu, omegas[s]) * omegas[s] * n;
                 let p1 = b.load_moment(fr, fa).map(|m| m * omegas[s] * n);
                 no_load += p0;
-                match p1 {
-                    Some(p) => load += p,
-                    None => all_load = false,
-                }
+                load += p1.unwrap_or(0.0);
                 out.bearings.push(BearingLoss {
                     shaft: ["pinion", "wheel"][s],
                     kind: b.kind.name(),
@@ -136,9 +134,6 @@ pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f6
         }
         out.bearings_no_load = Some(no_load);
         out.bearings_load = Some(load);
-        if !all_load {
-            out.notes.push("bearings: a ball or spherical roller bearing without `static_load_rating` has no load-dependent loss in the budget".into());
-        }
     }
     if gearbox.seals.iter().any(|s| !s.is_empty()) {
         out.seals = Some(

@@ -72,11 +72,11 @@ impl Lubrication {
         }
     }
 
-    /// A note when the speed is outside the model's tested range.
+    /// A note when the pitch-line speed v_t (m/s) is outside the model's tested range.
     pub fn note(&self, v_t: f64) -> Option<String> {
         match self {
             Lubrication::Dip { .. } if v_t > MAUZ_SPEED_LIMIT => Some(format!(
-                "gear churning: v_t = {v_t:.1} m/s is above the 60 m/s of Mauz's tests; P_VZ0 is extrapolated"
+                "gear churning: the fastest pitch-line speed, v_t = {v_t:.1} m/s, is above the 60 m/s of Mauz's tests; P_VZ0 is extrapolated there"
             )),
             _ => None,
         }

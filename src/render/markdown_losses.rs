@@ -205,11 +205,10 @@ pub fn map_section(r: &Report) -> String {
 }
 
 /// efficiency_map.csv: one row per grid point, law and formulation (SI: N·m, rad/s, W).
-pub fn map_csv(r: &Report, m: &MapReport) -> String {
+pub fn map_csv(m: &MapReport) -> String {
     let mut out = String::from(
         "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,gear_no_load_W,bearings_no_load_W,bearings_load_W,seals_W,total_loss_W,total_efficiency\n",
     );
-    let _ = r;
     let num = |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::report::number::round_sig(x)));
     for c in &m.cells {
         let b = c.budget;

@@ -54,7 +54,7 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
         files.push((plot.file.clone(), svg));
     }
     if let Some(m) = &report.efficiency_map {
-        files.push((m.csv.clone(), markdown_losses::map_csv(report, m)));
+        files.push((m.csv.clone(), markdown_losses::map_csv(m)));
     }
     for (k, pc) in report.curves.points.iter().enumerate() {
         files.push((pc.file.clone(), svg::point_friction(report, k)?));

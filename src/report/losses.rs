@@ -3,6 +3,7 @@
 use serde::Serialize;
 
 use super::number::{Num, Q};
+use super::{Finding, Severity};
 use crate::evaluate::map::{EfficiencyMap, MapCell};
 use crate::evaluate::Evaluation;
 use crate::losses::BudgetParts;
@@ -52,7 +53,7 @@ pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantRep
         temperature: l.temperature.as_ref().map(|g| Q::new(g.value.value, "K")),
         dynamic_viscosity: Q::new(t.dynamic_viscosity, "Pa*s"),
         kinematic_viscosity: t.kinematic_viscosity.map(|v| Q::new(v, "m^2/s")),
-        density: t.kinematic_viscosity.map(|v| Q::new(t.dynamic_viscosity / v, "kg/m^3")),
+        density: t.density().map(|rho| Q::new(rho, "kg/m^3")),
         pressure_viscosity: t.pressure_viscosity.map(|a| Q::new(a, "1/Pa")),
         lubricant_factor: Num(t.lubricant_factor),
         nu_40: l.oil.as_ref().map(|o| Q::new(o.nu_40, "m^2/s")),
@@ -156,4 +157,14 @@ pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
         labels,
         cells: map.cells.clone(),
     }
+}
+
+/// A warning where the scene's fastest operating point or map speed takes a loss model beyond its
+/// tested range (Mauz's dip churning above 60 m/s pitch-line speed).
+pub fn loss_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
+    let Some(l) = scene.gearbox.as_ref().and_then(|g| g.lubrication.as_ref()) else { return Vec::new() };
+    let map_speeds = scene.analyses.efficiency_map.iter().flat_map(|(_, s)| s.values.iter());
+    let fastest = scene.operating.pinion_speed.values.iter().chain(map_speeds).map(|w| w.value).fold(0.0, f64::max);
+    let v_t = fastest * eval.geometry.working_pitch_radius[0];
+    l.note(v_t).map(|message| Finding { severity: Severity::Warning, message }).into_iter().collect()
 }

@@ -124,6 +124,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
     findings.extend(friction::law_findings(scene, eval, tally));
     findings.extend(plausibility::plausibility_findings(tally));
     findings.extend(sweep::sweep_findings(tally, plan));
+    findings.extend(losses::loss_findings(scene, eval));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),

@@ -181,6 +181,19 @@ impl<'a> Fields<'a> {
     }
 }
 
+/// A call's arguments read as the entries of a block (`dip(...)`, `bearing(...)`, `iso_vg(...)`);
+/// `items` holds them for as long as the fields are read.
+pub(super) fn call_fields<'a>(
+    call: &Call,
+    what: &str,
+    keys: &[&str],
+    items: &'a mut Vec<Item>,
+    errors: &mut Vec<Diagnostic>,
+) -> Fields<'a> {
+    *items = call.arguments.iter().map(|(k, v)| Item::Assignment { key: k.clone(), value: v.clone() }).collect();
+    Fields::read(what, call.span, items, keys, &[], &[], errors)
+}
+
 /// `g` when its value is above zero; otherwise an error naming `key` (and None).
 pub(super) fn positive<T: super::units::SiQuantity>(
     g: Option<Given<T>>,

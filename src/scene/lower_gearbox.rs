@@ -13,7 +13,7 @@
 //! ```
 
 use super::ast::*;
-use super::fields::{positive, unknown_name, Fields};
+use super::fields::{call_fields, positive, unknown_name, Fields};
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::losses::{Bearing, BearingType, Gearbox, Lubrication, Seal};
 use crate::model::{Force, Length, Velocity, VolumeRate};
@@ -23,18 +23,6 @@ const DIP: &[&str] = &["pinion_immersion", "wheel_immersion", "axis_height", "ho
 const INJECTION: &[&str] = &["flow", "jet_speed"];
 const BEARING: &[&str] = &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1"];
 const SEAL: &[&str] = &["diameter", "count"];
-
-/// A call's arguments read as the entries of a block.
-fn call_fields<'a>(
-    call: &Call,
-    what: &str,
-    keys: &[&str],
-    items: &'a mut Vec<Item>,
-    errors: &mut Vec<Diagnostic>,
-) -> Fields<'a> {
-    *items = call.arguments.iter().map(|(k, v)| Item::Assignment { key: k.clone(), value: v.clone() }).collect();
-    Fields::read(what, call.span, items, keys, &[], &[], errors)
-}
 
 fn metres(g: Option<crate::model::Given<Length>>) -> Option<f64> {
     g.map(|g| g.value.value)

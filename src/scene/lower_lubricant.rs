@@ -9,7 +9,7 @@
 //! follow ([`crate::tribology::lubricant`]) and every law, film and loss reads them.
 
 use super::ast::*;
-use super::fields::{positive, unknown_name, Fields};
+use super::fields::{call_fields, positive, unknown_name, Fields};
 use super::units::SiQuantity;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
@@ -52,9 +52,8 @@ pub(super) fn lower_lubricant_value(
         errors.push(unknown_name("lubricant function", &call.name, &["iso_vg"]));
         return None;
     }
-    let items: Vec<Item> =
-        call.arguments.iter().map(|(k, v)| Item::Assignment { key: k.clone(), value: v.clone() }).collect();
-    let f = Fields::read("`iso_vg(...)`", call.span, &items, &["grade", "base"], &[], &[], errors);
+    let mut items = Vec::new();
+    let f = call_fields(call, "`iso_vg(...)`", &["grade", "base"], &mut items, errors);
     if !f.has("grade") || !f.has("base") {
         errors.push(
             Diagnostic::new(DiagnosticKind::MissingKey, call.span, "`iso_vg` needs a grade and a base oil").hint(

@@ -29,6 +29,13 @@ pub struct Tribology {
     pub lubricant_family: &'static str,
 }
 
+impl Tribology {
+    /// ρ = η/ν (kg/m³), when the kinematic viscosity is known.
+    pub fn density(&self) -> Option<f64> {
+        self.kinematic_viscosity.map(|nu| self.dynamic_viscosity / nu)
+    }
+}
+
 /// Unit conversions used by the empirical laws, in one place.
 pub mod units {
     /// Pa·s → cP (= mPa·s).

@@ -59,7 +59,6 @@ fn budget_by_hand() {
     let (t, w1) = (239.3, rpm(1500.0));
     let w2 = w1 / g.gear_ratio;
     let nu = eval.tribology.kinematic_viscosity.unwrap();
-    let rho = eval.tribology.dynamic_viscosity / nu;
     let b = eval.loss_budget(&scene, &OperatingState { pinion_torque: t, pinion_speed: w1 }).unwrap();
 
     let v_t = w1 * g.working_pitch_radius[0];
@@ -86,7 +85,6 @@ fn budget_by_hand() {
     let parts = b.with_mesh(100.0, t * w1);
     assert!((parts.total_loss - (100.0 + churning + no_load + load + seals)).abs() < 1e-9 * parts.total_loss);
     assert!((parts.total_efficiency - (1.0 - parts.total_loss / (t * w1))).abs() < 1e-15);
-    let _ = rho;
 }
 
 /// The lever rule: bearings at −40 and +60 mm carry 60 % and 40 % of F_bt; a helical pair's axial
@@ -159,4 +157,22 @@ fn report_budget_and_map() {
     let md = file("report.md");
     assert!(md.find("## Headline").unwrap() < md.find("## Scene").unwrap());
     assert!(file("loss_budget.svg").contains("<svg") && file("efficiency_map.svg").contains("<svg"));
+}
+
+/// Mauz's dip churning was tested up to 60 m/s pitch-line speed: a scene whose fastest point is
+/// beyond (20 000 rpm: v_t = 76.7 m/s on the FZG C pinion) gets one warning; the spec (at most
+/// 6000 rpm, 23 m/s) none.
+#[test]
+fn churning_beyond_its_tested_speed_is_flagged() {
+    let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
+    let warnings = |src: &str| -> usize {
+        let out = gearloss::run_to_files("s.gear", src).unwrap_or_else(|_| panic!("the scene runs"));
+        let json = &out.files.iter().find(|(f, _)| f == "report.json").unwrap().1;
+        let v: serde_json::Value = serde_json::from_str(json).unwrap();
+        v["findings"].as_array().unwrap().iter().filter(|f| f["message"].as_str().unwrap().contains("Mauz")).count()
+    };
+    assert_eq!(warnings(&source), 0);
+    let fast = source.replace("pinion_speed    = [500, 1500, 3000] rpm", "pinion_speed    = [500, 20000] rpm");
+    assert_ne!(fast, source);
+    assert_eq!(warnings(&fast), 1);
 }

@@ -229,8 +229,8 @@ fn draw_field(
 /// scene describes its gearbox; else mesh η and mesh loss.
 pub fn efficiency_map(r: &Report) -> Result<String, String> {
     let Some(m) = &r.efficiency_map else { return Err("the report has no efficiency map".into()) };
-    let factor = m.pinion_speeds.first().map_or(1.0, |s| s.0) / m.speeds_written.first().copied().unwrap_or(1.0);
-    let speeds: Vec<f64> = m.pinion_speeds.iter().map(|s| s.0 / factor).collect();
+    // Speeds in the unit the scene wrote them in.
+    let speeds = &m.speeds_written;
     let torques: Vec<f64> = m.pinion_torques.iter().map(|t| t.0).collect();
     let first = m.cells.first().map(|c| c.formulation);
     let mut fields = Vec::new();
@@ -269,7 +269,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         let areas = root.split_evenly((rows, per_row));
         for (area, (title, values, unit)) in areas.iter().zip(fields) {
-            let f = Field { title, speeds: &speeds, torques: &torques, values, unit };
+            let f = Field { title, speeds, torques: &torques, values, unit };
             draw_field(area, &f, &m.speed_unit)?;
         }
         root.present().map_err(|e| e.to_string())?;
