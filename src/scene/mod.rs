@@ -11,6 +11,7 @@ pub mod lower_friction;
 pub mod lower_gearbox;
 pub mod lower_gears;
 pub mod lower_lubricant;
+pub mod lower_operating;
 pub mod lower_tooth_system;
 pub mod parse;
 pub mod screen;
