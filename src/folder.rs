@@ -49,9 +49,13 @@ impl ReportFolder {
         self.tmp.join(file)
     }
 
-    /// Writes one file of the folder.
+    /// Writes one file of the folder (`dir/file` in a subfolder, created as needed).
     pub fn write(&self, file: &str, content: &[u8]) -> std::io::Result<()> {
-        std::fs::write(self.path(file), content)
+        let path = self.path(file);
+        if let Some(parent) = path.parent() {
+            std::fs::create_dir_all(parent)?;
+        }
+        std::fs::write(path, content)
     }
 
     /// Renames the finished folder into place, replacing a folder of the same name. Another run may

@@ -169,29 +169,89 @@ fn finish(
     tally: &Tally,
     known: &[(usize, evaluate::dynamics::DynamicsPoint)],
     progress: &dyn Progress,
-) -> Result<RenderedReport, RunError> {
+) -> Result<(Report, RenderedReport), RunError> {
     let eval = details(scene, plan, known, progress);
     progress.stage("report", 1);
     let report = report(scene, &eval, tally, plan);
     progress.stage("render", 1);
-    render(&report).map_err(RunError::Render)
+    let rendered = render(&report).map_err(RunError::Render)?;
+    Ok((report, rendered))
 }
 
-/// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
-/// render; the record files are among the files returned.
-pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
-    let scene = check(source_name, source).map_err(RunError::Scene)?;
+/// One scene (at one oil temperature) run in memory: its report and files, the record files included.
+fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let mut sink = RecordWriter::new(Vec::new(), Vec::new(), true).map_err(RunError::io("records"))?;
-    let streamed = stream(&scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
-    let mut rendered = finish(&scene, &plan, &streamed.tally, &streamed.detail_dynamics, &Quiet)?;
-    if has_records(&scene) {
+    let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
+    let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, &Quiet)?;
+    if has_records(scene) {
         let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
         let text = |b: Vec<u8>| String::from_utf8(b).expect("records are UTF-8");
         rendered.files.push((report::sweep::RECORDS_CSV.into(), text(csv)));
         rendered.files.push((report::sweep::RECORDS_JSONL.into(), text(jsonl)));
     }
-    Ok(rendered)
+    Ok((report, rendered.files))
+}
+
+/// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
+/// render; the record files are among the files returned. A scene with several oil temperatures
+/// gives one report per temperature in its folder (`oil_temperature_90degC/report.md`) and their
+/// comparison at the top ([`report::oil_sweep`]).
+pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
+    let scene = check(source_name, source).map_err(RunError::Scene)?;
+    let slug = report::slug(&scene.title);
+    let labels = scene.oil_temperature_labels();
+    if labels.is_empty() {
+        let (_, files) = run_scene_to_files(&scene)?;
+        return Ok(RenderedReport { slug, files });
+    }
+    let mut files = Vec::new();
+    let mut runs = Vec::new();
+    for (i, label) in labels.into_iter().enumerate() {
+        let at = scene.at_oil_temperature(i);
+        let (report, run_files) = run_scene_to_files(&at)?;
+        let dir = report::oil_sweep::run_folder(&label);
+        files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
+        runs.push((label, oil_kelvin(&at), report));
+    }
+    let top =
+        render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::Render)?;
+    Ok(RenderedReport { slug, files: top.into_iter().chain(files).collect() })
+}
+
+/// The oil temperature (K) a scene runs at.
+fn oil_kelvin(scene: &Scene) -> f64 {
+    scene.operating.oil_temperature.as_ref().map_or(f64::NAN, |t| t.value.value)
+}
+
+/// One scene (at one oil temperature) into `folder`, its files under `dir` (`""`: the top): the
+/// record files as the sweep runs, then the report. Returns the report and the files written.
+fn run_scene_into(
+    scene: &Scene,
+    folder: &ReportFolder,
+    dir: &str,
+    progress: &dyn Progress,
+) -> Result<(Report, Vec<String>), RunError> {
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let mut files = Vec::new();
+    let streamed = if has_records(scene) {
+        let mut sink = shard::record_files(folder, dir).map_err(RunError::io("the record files"))?;
+        let streamed = stream(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
+        sink.finish().map_err(RunError::io("the record files"))?;
+        files.extend([path(report::sweep::RECORDS_CSV), path(report::sweep::RECORDS_JSONL)]);
+        streamed
+    } else {
+        stream(scene, &plan, &mut evaluate::records::NoRecords, progress).map_err(RunError::io("the record files"))?
+    };
+    let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, progress)?;
+    progress.stage("write", rendered.files.len() as u64);
+    for (file, content) in &rendered.files {
+        folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(path(file));
+        progress.advance(1);
+    }
+    Ok((report, files))
 }
 
 /// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
@@ -205,16 +265,41 @@ pub fn run_into(
     shard: Option<Shard>,
     progress: &dyn Progress,
 ) -> Result<(PathBuf, Vec<String>), RunError> {
-    let plan = Plan::new(&scene.operating, shard, &scene.operating.detail_points);
     let slug = report::slug(&scene.title);
-    let name = match shard {
-        Some(s) => format!("{slug}.shard-{}-of-{}", s.index, s.count),
-        None => slug,
+    let labels = scene.oil_temperature_labels();
+    let Some(shard) = shard else {
+        let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
+        if labels.is_empty() {
+            let (_, files) = run_scene_into(scene, &folder, "", progress)?;
+            return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
+        }
+        let (mut files, mut runs) = (Vec::new(), Vec::new());
+        for (i, label) in labels.into_iter().enumerate() {
+            let at = scene.at_oil_temperature(i);
+            let (report, written) = run_scene_into(&at, &folder, &report::oil_sweep::run_folder(&label), progress)?;
+            files.extend(written);
+            runs.push((label, oil_kelvin(&at), report));
+        }
+        let top = render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs))
+            .map_err(RunError::Render)?;
+        for (file, content) in top {
+            folder.write(&file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+            files.insert(0, file);
+        }
+        return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
     };
+    if !labels.is_empty() {
+        return Err(RunError::Shards(format!(
+            "the scene runs at {} oil temperatures: run it whole, or shard one scene per temperature",
+            labels.len()
+        )));
+    }
+    let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
+    let name = format!("{slug}.shard-{}-of-{}", shard.index, shard.count);
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
     let mut files = Vec::new();
     let streamed = if has_records(scene) {
-        let mut sink = shard::record_files(&folder).map_err(RunError::io("the record files"))?;
+        let mut sink = shard::record_files(&folder, "").map_err(RunError::io("the record files"))?;
         let streamed = stream(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
         sink.finish().map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
@@ -222,19 +307,9 @@ pub fn run_into(
     } else {
         stream(scene, &plan, &mut evaluate::records::NoRecords, progress).map_err(RunError::io("the record files"))?
     };
-    if let Some(shard) = shard {
-        let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
-        folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
-        files.push(shard::MANIFEST.into());
-    } else {
-        let rendered = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, progress)?;
-        progress.stage("write", rendered.files.len() as u64);
-        for (file, content) in &rendered.files {
-            folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
-            files.push(file.clone());
-            progress.advance(1);
-        }
-    }
+    let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
+    folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
+    files.push(shard::MANIFEST.into());
     let dir = folder.commit().map_err(RunError::io("the report folder"))?;
     Ok((dir, files))
 }
@@ -257,7 +332,7 @@ pub fn merge_into(
         set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
     }
-    let rendered = finish(&scene, &plan, &set.tally, &[], progress)?;
+    let (_, rendered) = finish(&scene, &plan, &set.tally, &[], progress)?;
     for (file, content) in &rendered.files {
         folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
         files.push(file.clone());

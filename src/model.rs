@@ -43,6 +43,41 @@ pub struct Scene {
     pub analyses: Analyses,
 }
 
+impl Scene {
+    /// The scene at the `i`-th temperature of its `oil_temperature` sweep: the lubricant moved to
+    /// that temperature (α too when it comes from the base oil), no sweep left. The scene itself
+    /// when it has no sweep.
+    pub fn at_oil_temperature(&self, i: usize) -> Scene {
+        let mut scene = self.clone();
+        let Some(sweep) = scene.operating.oil_temperatures.take() else {
+            return scene;
+        };
+        let theta = Given {
+            value: sweep.values[i],
+            written: format!("{} {}", sweep.written_values[i], sweep.unit),
+            span: sweep.span,
+        };
+        if let Some(l) = scene.lubricant.take() {
+            let alpha = if l.alpha_from_oil { None } else { l.pressure_viscosity };
+            let span = l.dynamic_viscosity.span;
+            scene.lubricant = Some(match l.oil {
+                Some(oil) => Lubricant::of_oil(l.name, oil, alpha, span, &theta),
+                None => Lubricant { pressure_viscosity: alpha, ..l },
+            });
+        }
+        scene.operating.oil_temperature = Some(theta);
+        scene
+    }
+
+    /// The oil temperatures the scene runs at, as written (`90 degC`): one per run.
+    pub fn oil_temperature_labels(&self) -> Vec<String> {
+        match &self.operating.oil_temperatures {
+            Some(s) => s.written_values.iter().map(|w| format!("{w} {}", s.unit)).collect(),
+            None => Vec::new(),
+        }
+    }
+}
+
 /// How the mesh stiffness k(t) is given.
 #[derive(Debug, Clone, PartialEq)]
 pub enum StiffnessSpec {
@@ -180,6 +215,58 @@ pub struct Lubricant {
     /// ν40, ν100 and ρ15 when the oil was given by grade or measured values (the values above are
     /// then at the oil temperature).
     pub oil: Option<crate::tribology::lubricant::OilData>,
+    /// Whether α comes from the base oil's α(ν) (and so moves with the temperature).
+    pub alpha_from_oil: bool,
+}
+
+impl Lubricant {
+    /// An oil given by grade or by ν40, ν100 and ρ15, at the oil temperature θ: ν by ASTM D341, ρ by
+    /// thermal expansion, η = ρν, α from the base oil unless `alpha` is given
+    /// ([`crate::tribology::lubricant::OilData::at`]).
+    pub fn of_oil(
+        name: String,
+        oil: crate::tribology::lubricant::OilData,
+        alpha: Option<Given<ReciprocalPressure>>,
+        span: Span,
+        theta: &Given<ThermodynamicTemperature>,
+    ) -> Lubricant {
+        use uom::si::dynamic_viscosity::pascal_second;
+        use uom::si::mass_density::kilogram_per_cubic_meter;
+        use uom::si::thermodynamic_temperature::kelvin;
+        let at = oil.at(theta.value.get::<kelvin>());
+        let written = |x: f64, unit: &str, scale: f64| format!("{:.6} {unit}", x * scale);
+        let alpha_from_oil = alpha.is_none() && at.pressure_viscosity.is_some();
+        let alpha = alpha.or_else(|| {
+            at.pressure_viscosity.map(|a| Given {
+                value: ReciprocalPressure {
+                    dimension: std::marker::PhantomData,
+                    units: std::marker::PhantomData,
+                    value: a,
+                },
+                written: format!("{a:.4e} 1/Pa"),
+                span,
+            })
+        });
+        Lubricant {
+            name,
+            dynamic_viscosity: Given {
+                value: DynamicViscosity::new::<pascal_second>(at.dynamic_viscosity),
+                written: written(at.dynamic_viscosity, "mPa*s", 1e3),
+                span,
+            },
+            density: Some(Given {
+                value: MassDensity::new::<kilogram_per_cubic_meter>(at.density),
+                written: written(at.density, "kg/m^3", 1.0),
+                span,
+            }),
+            kinematic_viscosity: None,
+            pressure_viscosity: alpha,
+            kind: Some(oil.base),
+            temperature: Some(theta.clone()),
+            oil: Some(oil),
+            alpha_from_oil,
+        }
+    }
 }
 
 impl Lubricant {
@@ -216,6 +303,9 @@ pub struct Operating {
     pub pinion_speed: Sweep<AngularVelocity>,
     /// The oil (sump or injection) temperature, at which the lubricant's values are read.
     pub oil_temperature: Option<Given<ThermodynamicTemperature>>,
+    /// `oil_temperature = [60, 90, 120] degC` (two values or more): the scene runs once at each
+    /// ([`Scene::at_oil_temperature`]); `oil_temperature` is then the first of them.
+    pub oil_temperatures: Option<Sweep<ThermodynamicTemperature>>,
     /// Operating points the scene asks to see in full (0-based; written 1-based as `detail_points`).
     pub detail_points: Vec<usize>,
 }

@@ -23,9 +23,16 @@ pub const MANIFEST: &str = "shard.json";
 pub const FORMAT: &str = "gearloss-shard-1";
 
 /// Opens the record files of a folder being written.
-pub fn record_files(folder: &ReportFolder) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
-    let csv = BufWriter::new(File::create(folder.path(RECORDS_CSV))?);
-    let jsonl = BufWriter::new(File::create(folder.path(RECORDS_JSONL))?);
+pub fn record_files(
+    folder: &ReportFolder,
+    dir: &str,
+) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
+    let at = |f: &str| if dir.is_empty() { folder.path(f) } else { folder.path(&format!("{dir}/{f}")) };
+    if let Some(parent) = at(RECORDS_CSV).parent() {
+        std::fs::create_dir_all(parent)?;
+    }
+    let csv = BufWriter::new(File::create(at(RECORDS_CSV))?);
+    let jsonl = BufWriter::new(File::create(at(RECORDS_JSONL))?);
     RecordWriter::new(csv, jsonl, true)
 }
 

@@ -44,6 +44,7 @@ pub fn evaluate_map(scene: &Scene, eval: &Evaluation) -> Option<EfficiencyMap> {
         pinion_torque: torques.clone(),
         pinion_speed: speeds.clone(),
         oil_temperature: scene.operating.oil_temperature.clone(),
+        oil_temperatures: None,
         detail_points: Vec::new(),
     };
     let n = grid.count();

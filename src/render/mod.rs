@@ -6,6 +6,7 @@ pub mod markdown_friction;
 pub mod markdown_helical;
 pub mod markdown_losses;
 pub mod markdown_sweep;
+pub mod oil_sweep;
 pub mod svg;
 pub mod table;
 

@@ -10,6 +10,7 @@ pub mod helical;
 pub mod losses;
 pub mod number;
 pub mod numerics;
+pub mod oil_sweep;
 pub mod plausibility;
 pub mod points;
 pub mod scene;

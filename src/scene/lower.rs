@@ -9,7 +9,7 @@ use super::fields::{checked_scale, unknown_name, Fields};
 use super::lower_friction::{check_friction_needs, lower_friction};
 use super::lower_gears::{block_label, lower_gears, lower_material};
 use super::lower_lubricant::{lower_lubricant, lower_lubricant_value};
-use super::lower_operating::{check_record_rows, lower_operating};
+use super::lower_operating::{check_oil_sweep, check_record_rows, lower_operating};
 pub use super::lower_operating::{MAX_DETAIL_POINTS, MAX_RECORD_ROWS};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
@@ -97,6 +97,9 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         (None, Some((_, v))) => lower_lubricant_value(v, oil_temperature, &mut errors),
         (None, None) => None,
     };
+    if let Some(op) = &operating {
+        check_oil_sweep(op, lubricant.as_ref(), &mut errors);
+    }
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
     let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
     let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));

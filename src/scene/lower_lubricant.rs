@@ -10,7 +10,6 @@
 
 use super::ast::*;
 use super::fields::{call_fields, positive, unknown_name, Fields};
-use super::units::SiQuantity;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
 use crate::tribology::lubricant::{self, catalogue, BaseOil, OilData, ISO_VG_GRADES};
@@ -141,6 +140,7 @@ pub(super) fn lower_lubricant(
         kind: base,
         temperature: temperature.or_else(|| oil_temperature.cloned()),
         oil: None,
+        alpha_from_oil: false,
     })
 }
 
@@ -267,31 +267,5 @@ fn resolve(
         );
         return None;
     };
-    let at = oil.at(theta.value.value);
-    let given = |x: f64, unit: &str, scale: f64| format!("{:.6} {unit}", x * scale);
-    let alpha = alpha.or_else(|| {
-        at.pressure_viscosity.map(|a| Given {
-            value: ReciprocalPressure::from_si(a),
-            written: format!("{a:.4e} 1/Pa"),
-            span,
-        })
-    });
-    Some(Lubricant {
-        name,
-        dynamic_viscosity: Given {
-            value: DynamicViscosity::from_si(at.dynamic_viscosity),
-            written: given(at.dynamic_viscosity, "mPa*s", 1e3),
-            span,
-        },
-        density: Some(Given {
-            value: MassDensity::from_si(at.density),
-            written: given(at.density, "kg/m^3", 1.0),
-            span,
-        }),
-        kinematic_viscosity: None,
-        pressure_viscosity: alpha,
-        kind: Some(oil.base),
-        temperature: Some(theta.clone()),
-        oil: Some(oil),
-    })
+    Some(Lubricant::of_oil(name, oil, alpha, span, theta))
 }

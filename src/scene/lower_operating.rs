@@ -10,6 +10,8 @@ use crate::model::*;
 const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed", "oil_temperature", "detail_points"];
 /// Most operating points a scene may name in `detail_points`.
 pub const MAX_DETAIL_POINTS: usize = 20;
+/// Most oil temperatures a scene may run at (each is a whole run of the scene).
+pub const MAX_OIL_TEMPERATURES: usize = 25;
 
 pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operating> {
     let f = Fields::read("the `operating` block", block.span, &block.items, OPERATING_KEYS, &[], &[], errors);
@@ -49,19 +51,8 @@ pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Op
         return None;
     }
     let detail_points = detail_points(&f, count as usize, errors)?;
-    let oil_temperature = match f.values.get("oil_temperature") {
-        Some((_, v)) if matches!(v.kind, ValueKind::List { .. } | ValueKind::Range { .. }) => {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::OutOfRange, v.span, "`oil_temperature` takes one value per scene")
-                    .hint(
-                    "write `oil_temperature = 90 degC`; for several temperatures run the scene once per temperature",
-                ),
-            );
-            None
-        }
-        _ => positive(f.optional("oil_temperature", errors), "oil_temperature", errors),
-    };
-    Some(Operating { pinion_torque: torque, pinion_speed: speed, oil_temperature, detail_points })
+    let (oil_temperature, oil_temperatures) = oil_temperatures(&f, errors);
+    Some(Operating { pinion_torque: torque, pinion_speed: speed, oil_temperature, oil_temperatures, detail_points })
 }
 
 /// Most summary rows a run may write (points × laws × formulations, and the dynamics rows): about
@@ -115,4 +106,55 @@ fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Opti
         }
         None => Some(numbers.iter().map(|x| *x as usize - 1).collect()),
     }
+}
+
+/// `oil_temperature = 90 degC`, or a list or range of temperatures the scene runs at one after the
+/// other: the first value (at which the scene lowers) and, for two values or more, the sweep.
+fn oil_temperatures(
+    f: &Fields,
+    errors: &mut Vec<Diagnostic>,
+) -> (Option<Given<ThermodynamicTemperature>>, Option<Sweep<ThermodynamicTemperature>>) {
+    let Some((_, value)) = f.values.get("oil_temperature") else {
+        return (None, None);
+    };
+    if !matches!(value.kind, ValueKind::List { .. } | ValueKind::Range { .. }) {
+        return (positive(f.optional("oil_temperature", errors), "oil_temperature", errors), None);
+    }
+    let Some(sweep) = f.sweep::<ThermodynamicTemperature>("oil_temperature", "[60, 90] degC", errors) else {
+        return (None, None);
+    };
+    let n = sweep.values.len();
+    let written: Vec<String> = sweep.written_values.iter().map(|w| format!("{w} {}", sweep.unit)).collect();
+    let bad = |reason: String, hint: &str| Diagnostic::new(DiagnosticKind::OutOfRange, value.span, reason).hint(hint);
+    if n > MAX_OIL_TEMPERATURES {
+        errors.push(bad(
+            format!("`oil_temperature` lists {n} temperatures, above the limit of {MAX_OIL_TEMPERATURES}"),
+            "each temperature is a whole run of the scene: give fewer, e.g. `oil_temperature = 40..120 degC step 20`",
+        ));
+        return (None, None);
+    }
+    if let Some(i) = (1..n).find(|i| written[..*i].contains(&written[*i])) {
+        errors.push(bad(format!("`oil_temperature` lists {} twice", written[i]), "give each temperature once"));
+        return (None, None);
+    }
+    let first = Given { value: sweep.values[0], written: written[0].clone(), span: sweep.span };
+    (Some(first), (n > 1).then_some(sweep))
+}
+
+/// A sweep of oil temperatures moves the lubricant in temperature: only an oil given by grade or by
+/// ν40, ν100 and ρ15 can be moved.
+pub(super) fn check_oil_sweep(operating: &Operating, lubricant: Option<&Lubricant>, errors: &mut Vec<Diagnostic>) {
+    let Some(sweep) = &operating.oil_temperatures else {
+        return;
+    };
+    if lubricant.is_some_and(|l| l.oil.is_some()) {
+        return;
+    }
+    let reason = match lubricant {
+        None => "the scene sweeps `oil_temperature` but has no lubricant to read at those temperatures",
+        Some(_) => "the lubricant's values hold at one temperature and cannot follow an `oil_temperature` sweep",
+    };
+    errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, sweep.span, reason).hint(
+        "give the oil by grade (`lubricant = iso_vg(100, mineral)`) or by `nu_40`, `nu_100` and `density_15`, or write one `oil_temperature`",
+    ));
 }

@@ -10,6 +10,7 @@ mod fuzz_campaign;
 mod geometry;
 mod helical;
 mod losses;
+mod oil_sweep;
 mod properties;
 mod six_dof;
 mod specs;

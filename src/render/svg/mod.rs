@@ -180,11 +180,16 @@ fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<()
 /// Stacked panels; returns the SVG text. Legends stand in a column right of the plot areas, so
 /// that they never hide a curve.
 pub fn figure(title: &str, panels: &[Panel]) -> Result<String, String> {
+    figure_with_legend(title, panels, 260)
+}
+
+/// [`figure`] with a legend column `legend_width` pixels wide, for long legend labels.
+pub fn figure_with_legend(title: &str, panels: &[Panel], legend_width: u32) -> Result<String, String> {
     let mut svg = String::new();
     {
         let labelled = panels.iter().any(|p| legend_entries(p).iter().any(|(l, _, _)| !l.is_empty()));
         let height = 40 + 260 * panels.len() as u32;
-        let width = if labelled { 1140 } else { 900 };
+        let width = if labelled { 880 + legend_width } else { 900 };
         let root = SVGBackend::with_string(&mut svg, (width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let root = root.titled(title, ("sans-serif", 18)).map_err(|e| e.to_string())?;

@@ -1,0 +1,152 @@
+//! The top of a report folder of a scene run at several oil temperatures: report.md (which
+//! temperature's report is where, the lubricant at each temperature, efficiency and losses against
+//! the temperature), report.json and efficiency_vs_oil_temperature.svg.
+
+use std::fmt::Write;
+
+use super::svg::{figure_with_legend, Panel};
+use super::table::{fixed, header, law_words, row, sig};
+use crate::evaluate::plan::evenly;
+use crate::report::oil_sweep::{OilSweepReport, OilSweepRow};
+
+/// The plot of the efficiency against the oil temperature.
+pub const OIL_SWEEP_PLOT: &str = "efficiency_vs_oil_temperature.svg";
+/// Rows of report.md's table (each row one point, law, formulation and temperature); report.json
+/// holds every row.
+const TABLE_ROWS: usize = 96;
+/// Curves of the plot: evenly picked rows.
+const PLOTTED_ROWS: usize = 8;
+
+/// report.md, report.json and the plot.
+pub fn render_oil_sweep(r: &OilSweepReport) -> Result<Vec<(String, String)>, String> {
+    let mut json = serde_json::to_string_pretty(r).map_err(|e| e.to_string())?;
+    json.push('\n');
+    let mut files = vec![("report.md".to_string(), markdown(r)), ("report.json".to_string(), json)];
+    if !r.efficiency.is_empty() {
+        files.push((OIL_SWEEP_PLOT.to_string(), plot(r)?));
+    }
+    Ok(files)
+}
+
+/// `239.3 N·m, 1500 rpm`.
+fn point(r: &OilSweepReport, e: &OilSweepRow) -> String {
+    format!("{} N·m, {} {}", sig(e.pinion_torque.si()), sig(r.speed_unit.value(&e.pinion_speed)), r.speed_unit.name)
+}
+
+fn celsius(r: &OilSweepReport, i: usize) -> f64 {
+    r.runs[i].oil_temperature.si() - 273.15
+}
+
+fn markdown(r: &OilSweepReport) -> String {
+    let mut out = String::new();
+    let n = r.runs.len();
+    let _ = writeln!(out, "# {}\n", r.title);
+    let _ = writeln!(out, "## Headline\n");
+    let labels: Vec<&str> = r.runs.iter().map(|x| x.label.as_str()).collect();
+    let _ = writeln!(
+        out,
+        "The scene run at {n} oil temperatures ({}): the lubricant's values, every law, film and loss \
+         follow the temperature. Each temperature's full report is in its own folder:\n",
+        labels.join(", ")
+    );
+    for x in &r.runs {
+        let _ =
+            writeln!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", x.label, x.folder, x.warnings, x.notes);
+    }
+    if r.runs.iter().any(|x| x.lubricant.is_some()) {
+        let _ = writeln!(out, "\n## Lubricant at each temperature\n");
+        header(&mut out, &["oil temperature", "ν mm²/s", "η mPa·s", "ρ kg/m³", "α 1/GPa"]);
+        for x in &r.runs {
+            let Some(l) = &x.lubricant else { continue };
+            let opt = |q: Option<f64>, f: f64, d: usize| q.map_or("—".to_string(), |v| fixed(v * f, d));
+            row(
+                &mut out,
+                &[
+                    x.label.clone(),
+                    opt(l.kinematic_viscosity.map(|q| q.si()), 1e6, 3),
+                    fixed(l.dynamic_viscosity.si() * 1e3, 3),
+                    opt(l.density.map(|q| q.si()), 1.0, 1),
+                    opt(l.pressure_viscosity.map(|q| q.si()), 1e9, 3),
+                ],
+            );
+        }
+        if let Some(l) = r.runs[0].lubricant.as_ref() {
+            let _ = writeln!(out, "\nSource: {}.", l.source);
+        }
+    }
+    if !r.efficiency.is_empty() {
+        let _ = writeln!(out, "\n## Efficiency against oil temperature\n");
+        let mut cols = vec!["operating point", "law", "formulation", "oil temperature", "η̄ mesh %", "P mesh W"];
+        if r.loss_budget {
+            cols.extend(["P total W", "η total %"]);
+        }
+        header(&mut out, &cols);
+        let mut rows = 0;
+        'rows: for e in &r.efficiency {
+            for (i, x) in r.runs.iter().enumerate() {
+                if rows == TABLE_ROWS {
+                    break 'rows;
+                }
+                let mut cells = vec![
+                    point(r, e),
+                    law_words(&e.label),
+                    e.formulation.name().to_string(),
+                    x.label.clone(),
+                    fixed(100.0 * e.mean_efficiency[i].0, 3),
+                    fixed(e.power_loss[i].si(), 2),
+                ];
+                if let (Some(t), Some(eta)) = (&e.total_loss, &e.total_efficiency) {
+                    cells.extend([fixed(t[i].si(), 2), fixed(100.0 * eta[i].0, 3)]);
+                }
+                row(&mut out, &cells);
+                rows += 1;
+            }
+        }
+        let all = r.efficiency.len() * n;
+        if all > rows {
+            let _ = writeln!(out, "\n… {} more rows in report.json.", all - rows);
+        }
+        let _ = writeln!(out, "\n![efficiency against oil temperature]({OIL_SWEEP_PLOT})");
+    }
+    out
+}
+
+/// η̄ mesh (and total η with a gearbox) and the mesh loss against the oil temperature, one curve
+/// per picked (operating point, law, formulation).
+fn plot(r: &OilSweepReport) -> Result<String, String> {
+    let x: Vec<f64> = (0..r.runs.len()).map(|i| celsius(r, i)).collect();
+    let picked: Vec<&OilSweepRow> =
+        evenly(r.efficiency.len(), PLOTTED_ROWS).into_iter().map(|k| &r.efficiency[k]).collect();
+    let name = |e: &OilSweepRow| format!("{} {} @ {}", e.label, e.formulation.name(), point(r, e));
+    // Legend labels name the law in words (`legend_words`) and the operating point as written.
+    let series = |f: &dyn Fn(&OilSweepRow) -> Vec<f64>| -> Vec<(String, Vec<f64>)> {
+        picked.iter().map(|e| (name(e), f(e))).collect()
+    };
+    let x_label = "oil temperature (°C)".to_string();
+    let mut panels = vec![
+        Panel {
+            y_label: "mean mesh efficiency η̄ (%)".into(),
+            x_label: x_label.clone(),
+            x: x.clone(),
+            series: series(&|e| e.mean_efficiency.iter().map(|v| 100.0 * v.0).collect()),
+            ..Default::default()
+        },
+        Panel {
+            y_label: "mesh friction power loss, all contacts (W)".into(),
+            x_label: x_label.clone(),
+            x: x.clone(),
+            series: series(&|e| e.power_loss.iter().map(|q| q.si()).collect()),
+            ..Default::default()
+        },
+    ];
+    if r.loss_budget {
+        panels.push(Panel {
+            y_label: "total efficiency of the gearbox (%)".into(),
+            x_label,
+            x,
+            series: series(&|e| e.total_efficiency.iter().flatten().map(|v| 100.0 * v.0).collect()),
+            ..Default::default()
+        });
+    }
+    figure_with_legend(&format!("{}: efficiency against oil temperature", r.title), &panels, 420)
+}

@@ -1,0 +1,71 @@
+//! A scene run at several oil temperatures (`oil_temperature = [60, 90, 120] degC`): one full
+//! report per temperature in its folder, and their comparison at the top.
+
+use serde_json::Value;
+
+/// The FZG C14 gearbox spec with a 4 × 4 map (the map is not what these tests look at) and the
+/// oil temperature as given.
+fn c14(oil_temperature: &str) -> String {
+    std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear"))
+        .unwrap()
+        .replace("oil_temperature = 90 degC", &format!("oil_temperature = {oil_temperature}"))
+        .replace("count 40", "count 4")
+}
+
+fn file<'a>(r: &'a gearloss::RenderedReport, name: &str) -> &'a str {
+    &r.files.iter().find(|(f, _)| f == name).unwrap_or_else(|| panic!("no {name}")).1
+}
+
+/// Each temperature is a whole run: its folder holds the report a scene written at that one
+/// temperature gives, byte for byte (report.json, records.csv); the comparison's rows are the runs'
+/// records in run order.
+#[test]
+fn each_temperature_is_the_run_at_that_temperature() {
+    let swept = gearloss::run_to_files("c14.gear", &c14("[60, 90, 120] degC")).unwrap();
+    let single = gearloss::run_to_files("c14.gear", &c14("90 degC")).unwrap();
+    for dir in ["oil_temperature_60degC", "oil_temperature_90degC", "oil_temperature_120degC"] {
+        for f in ["report.md", "report.json", "records.csv", "efficiency_map.csv", "loss_budget.svg"] {
+            file(&swept, &format!("{dir}/{f}"));
+        }
+    }
+    for f in ["report.json", "records.csv", "report.md"] {
+        assert_eq!(file(&swept, &format!("oil_temperature_90degC/{f}")), file(&single, f), "{f}");
+    }
+    let top: Value = serde_json::from_str(file(&swept, "report.json")).unwrap();
+    let one: Value = serde_json::from_str(file(&single, "report.json")).unwrap();
+    let rows = top["efficiency"].as_array().unwrap();
+    let records = one["efficiency"].as_array().unwrap();
+    assert_eq!(rows.len(), records.len());
+    for (row, rec) in rows.iter().zip(records) {
+        assert_eq!(row["mean_efficiency"][1], rec["mean_efficiency"]);
+        assert_eq!(row["power_loss"][1], rec["power_loss"]);
+        assert_eq!(row["total_loss"][1], rec["budget"]["total_loss"]);
+    }
+    assert!(file(&swept, "report.md").contains("(oil_temperature_120degC/report.md)"));
+    assert!(file(&swept, "efficiency_vs_oil_temperature.svg").starts_with("<svg"));
+}
+
+/// What the temperature changes, against closed forms: ν falls with the temperature (ASTM D341);
+/// ISO/TR 14179-2's μ_mZ ∝ η_oil^-0.05 with everything else fixed, and the mesh loss of the
+/// internal formulation is P_in μ H_V to first order in μ, so P(60 °C)/P(120 °C) equals
+/// (η60/η120)^-0.05 to within the second-order term, below 0.2 % here (μ ≈ 0.05 changes by 9 %).
+#[test]
+fn the_temperature_moves_viscosity_and_friction_as_the_laws_say() {
+    let swept = gearloss::run_to_files("c14.gear", &c14("[60, 90, 120] degC")).unwrap();
+    let top: Value = serde_json::from_str(file(&swept, "report.json")).unwrap();
+    let runs = top["runs"].as_array().unwrap();
+    let nu: Vec<f64> = runs.iter().map(|r| r["lubricant"]["kinematic_viscosity"]["value"].as_f64().unwrap()).collect();
+    let eta: Vec<f64> = runs.iter().map(|r| r["lubricant"]["dynamic_viscosity"]["value"].as_f64().unwrap()).collect();
+    assert!(nu[0] > nu[1] && nu[1] > nu[2], "ν = {nu:?}");
+    let kelvin: Vec<f64> = runs.iter().map(|r| r["oil_temperature"]["value"].as_f64().unwrap()).collect();
+    assert_eq!(kelvin, [333.15, 363.15, 393.15]);
+    let expected = (eta[0] / eta[2]).powf(-0.05);
+    let mut checked = 0;
+    for row in top["efficiency"].as_array().unwrap().iter().filter(|r| r["formulation"] == "internal") {
+        let p: Vec<f64> = row["power_loss"].as_array().unwrap().iter().map(|q| q["value"].as_f64().unwrap()).collect();
+        let ratio = p[0] / p[2];
+        assert!((ratio / expected - 1.0).abs() < 2e-3, "{}: {ratio} vs {expected}", row["label"]);
+        checked += 1;
+    }
+    assert_eq!(checked, 18);
+}
