@@ -189,24 +189,41 @@ fn draw_field(
         .y_label_formatter(&|y| super::super::table::sig(*y))
         .draw()
         .map_err(e)?;
-    // Filled bands: each grid cell split 4 × 4, coloured by the band of its bilinear centre value.
+    // Filled bands: each grid cell split 4 × 4, coloured by the band of its bilinear centre value;
+    // along each row of sub-cells, neighbours in the same band are drawn as one rectangle (the
+    // picture is the same, the file a fraction of the size).
     const SUB: usize = 4;
     let (ns, nt) = (f.speeds.len(), f.torques.len());
-    let band = |v: f64| lv.iter().filter(|l| v >= **l).count() as f64 / lv.len().max(1) as f64;
+    let band = |v: f64| lv.iter().filter(|l| v >= **l).count();
+    let x_at = |k: usize| {
+        let (s, i) = (k / SUB, k % SUB);
+        if s + 1 >= ns {
+            f.speeds[ns - 1]
+        } else {
+            f.speeds[s] + i as f64 / SUB as f64 * (f.speeds[s + 1] - f.speeds[s])
+        }
+    };
     let mut cells = Vec::new();
     for t in 0..nt - 1 {
-        for s in 0..ns - 1 {
-            for j in 0..SUB {
-                for i in 0..SUB {
-                    let (fs0, ft0) = (i as f64 / SUB as f64, j as f64 / SUB as f64);
-                    let (fs1, ft1) = (fs0 + 1.0 / SUB as f64, ft0 + 1.0 / SUB as f64);
-                    let v = bilinear(&f.values, s as f64 + 0.5 * (fs0 + fs1), t as f64 + 0.5 * (ft0 + ft1));
-                    if !v.is_finite() {
-                        continue;
+        for j in 0..SUB {
+            let (ft0, ft1) = (j as f64 / SUB as f64, (j + 1) as f64 / SUB as f64);
+            let y = |fr: f64| f.torques[t] + fr * (f.torques[t + 1] - f.torques[t]);
+            // (first sub-column, band) of the run being built.
+            let mut run: Option<(usize, usize)> = None;
+            for k in 0..=(ns - 1) * SUB {
+                let here = (k < (ns - 1) * SUB)
+                    .then(|| {
+                        let (s, i) = (k / SUB, k % SUB);
+                        bilinear(&f.values, s as f64 + (i as f64 + 0.5) / SUB as f64, t as f64 + 0.5 * (ft0 + ft1))
+                    })
+                    .filter(|v| v.is_finite())
+                    .map(band);
+                if run.map(|r| r.1) != here {
+                    if let Some((k0, b)) = run {
+                        let fill = colour(b as f64 / lv.len().max(1) as f64).filled();
+                        cells.push(Rectangle::new([(x_at(k0), y(ft0)), (x_at(k), y(ft1))], fill));
                     }
-                    let x = |fr: f64| f.speeds[s] + fr * (f.speeds[s + 1] - f.speeds[s]);
-                    let y = |fr: f64| f.torques[t] + fr * (f.torques[t + 1] - f.torques[t]);
-                    cells.push(Rectangle::new([(x(fs0), y(ft0)), (x(fs1), y(ft1))], colour(band(v)).filled()));
+                    run = here.map(|b| (k, b));
                 }
             }
         }
