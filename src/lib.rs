@@ -200,28 +200,33 @@ fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), 
 pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let slug = report::slug(&scene.title);
-    let labels = scene.oil_temperature_labels();
-    if labels.is_empty() {
+    if scene.operating.oil_temperatures.is_none() {
         let (_, files) = run_scene_to_files(&scene)?;
         return Ok(RenderedReport { slug, files });
     }
     let mut files = Vec::new();
-    let mut runs = Vec::new();
-    for (i, label) in labels.into_iter().enumerate() {
-        let at = scene.at_oil_temperature(i);
-        let (report, run_files) = run_scene_to_files(&at)?;
-        let dir = report::oil_sweep::run_folder(&label);
+    let top = each_oil_temperature(&scene, |at, dir| {
+        let (report, run_files) = run_scene_to_files(at)?;
         files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
-        runs.push((label, oil_kelvin(&at), report));
-    }
-    let top =
-        render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::Render)?;
+        Ok(report)
+    })?;
     Ok(RenderedReport { slug, files: top.into_iter().chain(files).collect() })
 }
 
-/// The oil temperature (K) a scene runs at.
-fn oil_kelvin(scene: &Scene) -> f64 {
-    scene.operating.oil_temperature.as_ref().map_or(f64::NAN, |t| t.value.value)
+/// Runs a scene at each of its oil temperatures by `run_one(scene at θ, its folder)` and renders
+/// the comparison of the runs: the files at the top of the report folder.
+fn each_oil_temperature(
+    scene: &Scene,
+    mut run_one: impl FnMut(&Scene, &str) -> Result<Report, RunError>,
+) -> Result<Vec<(String, String)>, RunError> {
+    let mut runs = Vec::new();
+    for (i, label) in scene.oil_temperature_labels().into_iter().enumerate() {
+        let at = scene.at_oil_temperature(i);
+        let report = run_one(&at, &report::oil_sweep::run_folder(&label))?;
+        let kelvin = at.operating.oil_temperature.as_ref().map_or(f64::NAN, |t| t.value.value);
+        runs.push((label, kelvin, report));
+    }
+    render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::Render)
 }
 
 /// One scene (at one oil temperature) into `folder`, its files under `dir` (`""`: the top): the
@@ -273,18 +278,15 @@ pub fn run_into(
             let (_, files) = run_scene_into(scene, &folder, "", progress)?;
             return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
         }
-        let (mut files, mut runs) = (Vec::new(), Vec::new());
-        for (i, label) in labels.into_iter().enumerate() {
-            let at = scene.at_oil_temperature(i);
-            let (report, written) = run_scene_into(&at, &folder, &report::oil_sweep::run_folder(&label), progress)?;
+        let mut files = Vec::new();
+        let top = each_oil_temperature(scene, |at, dir| {
+            let (report, written) = run_scene_into(at, &folder, dir, progress)?;
             files.extend(written);
-            runs.push((label, oil_kelvin(&at), report));
-        }
-        let top = render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs))
-            .map_err(RunError::Render)?;
-        for (file, content) in top {
+            Ok(report)
+        })?;
+        for (k, (file, content)) in top.into_iter().enumerate() {
             folder.write(&file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
-            files.insert(0, file);
+            files.insert(k, file);
         }
         return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
     };

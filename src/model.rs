@@ -52,11 +52,7 @@ impl Scene {
         let Some(sweep) = scene.operating.oil_temperatures.take() else {
             return scene;
         };
-        let theta = Given {
-            value: sweep.values[i],
-            written: format!("{} {}", sweep.written_values[i], sweep.unit),
-            span: sweep.span,
-        };
+        let theta = Given { value: sweep.values[i], written: sweep.label(i), span: sweep.span };
         if let Some(l) = scene.lubricant.take() {
             let alpha = if l.alpha_from_oil { None } else { l.pressure_viscosity };
             let span = l.dynamic_viscosity.span;
@@ -72,7 +68,7 @@ impl Scene {
     /// The oil temperatures the scene runs at, as written (`90 degC`): one per run.
     pub fn oil_temperature_labels(&self) -> Vec<String> {
         match &self.operating.oil_temperatures {
-            Some(s) => s.written_values.iter().map(|w| format!("{w} {}", s.unit)).collect(),
+            Some(s) => (0..s.values.len()).map(|i| s.label(i)).collect(),
             None => Vec::new(),
         }
     }
@@ -295,6 +291,13 @@ pub struct Sweep<T> {
     /// The values in the user's unit.
     pub written_values: Vec<f64>,
     pub span: Span,
+}
+
+impl<T> Sweep<T> {
+    /// Value `i` as written, with its unit (`90 degC`).
+    pub fn label(&self, i: usize) -> String {
+        format!("{} {}", self.written_values[i], self.unit)
+    }
 }
 
 #[derive(Debug, Clone)]

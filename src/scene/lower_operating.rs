@@ -124,7 +124,7 @@ fn oil_temperatures(
         return (None, None);
     };
     let n = sweep.values.len();
-    let written: Vec<String> = sweep.written_values.iter().map(|w| format!("{w} {}", sweep.unit)).collect();
+    let written: Vec<String> = (0..n).map(|i| sweep.label(i)).collect();
     let bad = |reason: String, hint: &str| Diagnostic::new(DiagnosticKind::OutOfRange, value.span, reason).hint(hint);
     if n > MAX_OIL_TEMPERATURES {
         errors.push(bad(

@@ -93,3 +93,40 @@ fn a_closed_pipe_is_not_a_panic() {
     drop(child.stdout.take());
     assert_eq!(child.wait().unwrap().code(), Some(1));
 }
+
+/// A scene with an oil temperature sweep: the binary writes each temperature's folder and the
+/// comparison at the top in one report folder; `--shard` is refused with a message and exit 1.
+#[test]
+fn oil_temperature_sweep_writes_one_folder_per_temperature() {
+    let out = std::env::temp_dir().join(format!("gearloss-cli-oil-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let o = gearloss()
+        .args(["run", "specs/fzg_c14_oil_temperatures.gear", "--out"])
+        .arg(&out)
+        .current_dir(crate::root())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let dir = out.join("fzg_c14_gearbox_at_five_oil_temperatures");
+    for f in ["report.md", "report.json", "efficiency_vs_oil_temperature.svg"] {
+        assert!(dir.join(f).is_file(), "{f} missing");
+    }
+    for t in [40, 60, 80, 100, 120] {
+        for f in ["report.md", "records.csv", "loss_budget.svg"] {
+            assert!(dir.join(format!("oil_temperature_{t}degC")).join(f).is_file(), "{t}: {f} missing");
+        }
+    }
+    let o = gearloss()
+        .args(["run", "specs/fzg_c14_oil_temperatures.gear", "--shard", "1/2", "--out"])
+        .arg(&out)
+        .current_dir(crate::root())
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("5 oil temperatures"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    std::fs::remove_dir_all(&out).unwrap();
+}
