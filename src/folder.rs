@@ -49,13 +49,19 @@ impl ReportFolder {
         self.tmp.join(file)
     }
 
-    /// Writes one file of the folder (`dir/file` in a subfolder, created as needed).
-    pub fn write(&self, file: &str, content: &[u8]) -> std::io::Result<()> {
+    /// Creates one file of the folder for writing (`dir/file` in a subfolder, created as needed).
+    pub fn create_file(&self, file: &str) -> std::io::Result<std::fs::File> {
         let path = self.path(file);
         if let Some(parent) = path.parent() {
             std::fs::create_dir_all(parent)?;
         }
-        std::fs::write(path, content)
+        std::fs::File::create(path)
+    }
+
+    /// Writes one file of the folder ([`ReportFolder::create_file`]).
+    pub fn write(&self, file: &str, content: &[u8]) -> std::io::Result<()> {
+        use std::io::Write;
+        self.create_file(file)?.write_all(content)
     }
 
     /// Renames the finished folder into place, replacing a folder of the same name. Another run may

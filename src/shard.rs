@@ -27,12 +27,9 @@ pub fn record_files(
     folder: &ReportFolder,
     dir: &str,
 ) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
-    let at = |f: &str| if dir.is_empty() { folder.path(f) } else { folder.path(&format!("{dir}/{f}")) };
-    if let Some(parent) = at(RECORDS_CSV).parent() {
-        std::fs::create_dir_all(parent)?;
-    }
-    let csv = BufWriter::new(File::create(at(RECORDS_CSV))?);
-    let jsonl = BufWriter::new(File::create(at(RECORDS_JSONL))?);
+    let at = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let csv = BufWriter::new(folder.create_file(&at(RECORDS_CSV))?);
+    let jsonl = BufWriter::new(folder.create_file(&at(RECORDS_JSONL))?);
     RecordWriter::new(csv, jsonl, true)
 }
 
@@ -137,7 +134,7 @@ impl ShardSet {
     /// header once.
     pub fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<()> {
         for (file, header) in [(RECORDS_CSV, true), (RECORDS_JSONL, false)] {
-            let mut out = BufWriter::new(File::create(folder.path(file))?);
+            let mut out = BufWriter::new(folder.create_file(file)?);
             for (k, dir) in self.folders.iter().enumerate() {
                 let mut input = BufReader::new(File::open(dir.join(file))?);
                 if header && k > 0 {

@@ -17,7 +17,6 @@ use crate::model::*;
 
 const SCENE_BLOCKS: &[&str] =
     &["gears", "material", "lubricant", "operating", "friction", "dynamics", "gearbox", "analyses"];
-/// Most operating points a scene may name with `detail_points`.
 const ANALYSES: &[&str] =
     &["efficiency", "efficiency_map", "friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics"];
 const FORMULATIONS: &[&str] = &["external", "internal"];
