@@ -99,8 +99,17 @@ impl Evaluation {
     pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
         let gearbox = scene.gearbox.as_ref()?;
         let t = &self.tribology;
-        let (nu, rho) = (t.kinematic_viscosity.unwrap_or(f64::NAN), t.density().unwrap_or(f64::NAN));
-        Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, nu, rho))
+        let oil = crate::losses::Oil {
+            nu: t.kinematic_viscosity.unwrap_or(f64::NAN),
+            rho: t.density().unwrap_or(f64::NAN),
+            eta: t.dynamic_viscosity,
+            mineral: scene
+                .lubricant
+                .as_ref()
+                .and_then(|l| l.kind)
+                .is_none_or(|k| k == crate::model::LubricantType::Mineral),
+        };
+        Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, &oil))
     }
 
     /// The contact state at `u` for an operating point.

@@ -22,10 +22,15 @@
 //! (needed by the ball and spherical roller types). `f0` and `f1` given on a bearing replace the
 //! table's.
 //!
+//! A bearing given with its SKF geometry constants is computed by the SKF model instead
+//! ([`super::skf_bearing`]): its rolling moment M_rr takes the place of M_0 and its sliding moment
+//! M_sl that of M_1 in the budget (both grow with the load there; M_rr carries the viscous, speed-
+//! governed part as M_0 does).
+//!
 //! ```
 //! use gearloss::losses::{Bearing, BearingType};
 //! let b = Bearing { kind: BearingType::CylindricalRoller, mean_diameter: 0.060, count: 1,
-//!                   static_load_rating: None, f0: None, f1: None, position: None };
+//!                   static_load_rating: None, f0: None, f1: None, position: None, skf: None };
 //! // ν = 14 mm²/s, n = 1500 rpm: ν n = 21 000 ≥ 2000, M_0 = 1e-7 · 2.5 · 21000^(2/3) · 60³ N·mm.
 //! let m0 = 1e-7 * 2.5 * 21000f64.powf(2.0 / 3.0) * 216000.0 * 1e-3;
 //! assert!((b.no_load_moment(14e-6, 1500.0 * std::f64::consts::PI / 30.0) - m0).abs() < 1e-12);
@@ -115,6 +120,8 @@ pub struct Bearing {
     pub f1: Option<f64>,
     /// Axial position along the shaft from the gear's mid-plane (m), for the lever rule.
     pub position: Option<f64>,
+    /// The SKF model's constants with the bore d and outside diameter D (m) it needs.
+    pub skf: Option<(super::skf_bearing::SkfConstants, [f64; 2])>,
 }
 
 impl Bearing {
@@ -135,6 +142,34 @@ impl Bearing {
         };
         Some(f1 * self.kind.p1(fr, fa) * self.mean_diameter)
     }
+
+    /// The two moments (N·m) of one bearing under F_r, F_a (N) at ν (m²/s) and ω (rad/s): Palmgren's
+    /// M_0 and M_1, or the SKF model's M_rr and M_sl for a bearing given with SKF constants (in a
+    /// mineral oil or not). The second is `None` when the bearing lacks a C_0 its model needs.
+    pub fn moments(&self, fr: f64, fa: f64, nu: f64, omega: f64, mineral: bool) -> (f64, Option<f64>) {
+        match &self.skf {
+            Some((k, [d, big_d])) => {
+                let n = omega * 30.0 / std::f64::consts::PI;
+                let c0 = self.static_load_rating;
+                match super::skf_bearing::skf_moments(
+                    self.kind,
+                    k,
+                    d * 1e3,
+                    big_d * 1e3,
+                    c0,
+                    fr,
+                    fa,
+                    nu * 1e6,
+                    n,
+                    mineral,
+                ) {
+                    Some((rr, sl)) => (rr * 1e-3, Some(sl * 1e-3)),
+                    None => (0.0, None),
+                }
+            }
+            None => (self.no_load_moment(nu, omega), self.load_moment(fr, fa)),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -150,6 +185,7 @@ mod tests {
             f0: None,
             f1: None,
             position: None,
+            skf: None,
         }
     }
 

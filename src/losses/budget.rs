@@ -10,7 +10,7 @@
 
 use serde::Serialize;
 
-use super::Gearbox;
+use super::{gear_no_load::GearsRunning, Gearbox, Oil};
 use crate::geometry::PairGeometry;
 
 /// The loads and losses of one bearing place.
@@ -100,15 +100,14 @@ fn place_loads(places: &[super::Bearing], f_bt: f64, alpha_wt: f64, axial: f64, 
     }
 }
 
-/// The budget at pinion torque T_1 (N·m) and speed ω_1 (rad/s), with the oil's kinematic viscosity
-/// ν (m²/s) and density ρ (kg/m³) at the oil temperature.
-pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f64, nu: f64, rho: f64) -> LossBudget {
+/// The budget at pinion torque T_1 (N·m) and speed ω_1 (rad/s) in `oil`.
+pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f64, oil: &Oil) -> LossBudget {
     let mut out = LossBudget::default();
-    let v_t = omega_1 * g.working_pitch_radius[0];
-    if let Some(l) = &gearbox.lubrication {
-        out.gear_no_load = Some(l.power_loss(omega_1, v_t, g.face_width, rho));
-    }
     let omegas = [omega_1, omega_1 / g.gear_ratio];
+    if let Some(l) = &gearbox.lubrication {
+        let gears = GearsRunning { omega: omegas, pitch_radius: g.working_pitch_radius, face_width: g.face_width };
+        out.gear_no_load = Some(l.power_loss(&gears, oil));
+    }
     let f_bt = torque / g.base_radius[0];
     let axial = g.axial_force(torque);
     if gearbox.bearings.iter().any(|b| !b.is_empty()) {
@@ -117,8 +116,9 @@ pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f6
             let loads = place_loads(places, f_bt, g.operating_pressure_angle, axial, g.working_pitch_radius[s]);
             for (b, (fr, fa)) in places.iter().zip(loads) {
                 let n = b.count as f64;
-                let p0 = b.no_load_moment(nu, omegas[s]) * omegas[s] * n;
-                let p1 = b.load_moment(fr, fa).map(|m| m * omegas[s] * n);
+                let (m0, m1) = b.moments(fr, fa, oil.nu, omegas[s], oil.mineral);
+                let p0 = m0 * omegas[s] * n;
+                let p1 = m1.map(|m| m * omegas[s] * n);
                 no_load += p0;
                 load += p1.unwrap_or(0.0);
                 out.bearings.push(BearingLoss {

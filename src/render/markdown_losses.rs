@@ -134,7 +134,7 @@ pub fn budget_section(r: &Report) -> String {
     let _ = writeln!(out, "\n## Loss budget\n");
     let _ = writeln!(
         out,
-        "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gear churning or jet impulse) + P_VL (bearings, Palmgren: no-load and load-dependent) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
+        "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gears without load: churning for dip lubrication; jet impulse and windage for injection) + P_VL (bearings: Palmgren's M_0 and M_1 in the no-load and load columns, or for a bearing given with SKF constants the SKF model's rolling M_rr and sliding M_sl) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
     );
     header(
         &mut out,
@@ -143,7 +143,7 @@ pub fn budget_section(r: &Report) -> String {
             "law",
             "formulation",
             "mesh W",
-            "churning W",
+            "gears no-load W",
             "bearings no-load W",
             "bearings load W",
             "seals W",

@@ -8,20 +8,26 @@
 //!         bearing(type = cylindrical_roller, bore = 30 mm, outside = 72 mm, at = 40 mm)
 //!         seal(diameter = 30 mm)
 //!     }
-//!     wheel_shaft { bearing(type = deep_groove_ball, mean_diameter = 55 mm, count = 2, static_load_rating = 18 kN) }
+//!     wheel_shaft {
+//!         bearing(type = deep_groove_ball, bore = 30 mm, outside = 55 mm, static_load_rating = 11.2 kN,
+//!                 model = skf(r1 = 4.1e-7, r2 = 1.7, s1 = 3.73e-3, s2 = 14.6), count = 2)
+//!     }
 //! }
 //! ```
 
 use super::ast::*;
 use super::fields::{call_fields, positive, unknown_name, Fields};
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::losses::skf_bearing::{self, SkfConstants};
 use crate::losses::{Bearing, BearingType, Gearbox, Lubrication, Seal};
 use crate::model::{Force, Length, Velocity, VolumeRate};
 
 const SHAFTS: [&str; 2] = ["pinion_shaft", "wheel_shaft"];
 const DIP: &[&str] = &["pinion_immersion", "wheel_immersion", "axis_height", "housing_width"];
 const INJECTION: &[&str] = &["flow", "jet_speed"];
-const BEARING: &[&str] = &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1"];
+const BEARING: &[&str] =
+    &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1", "model"];
+const SKF: &[&str] = &["r1", "r2", "s1", "s2", "y", "mu_bl", "mu_ehl"];
 const SEAL: &[&str] = &["diameter", "count"];
 
 fn metres(g: Option<crate::model::Given<Length>>) -> Option<f64> {
@@ -123,14 +129,20 @@ fn lower_bearing(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Bearing> {
     let c0: Option<crate::model::Given<Force>> =
         positive(f.optional("static_load_rating", errors), "static_load_rating", errors);
     let kind = kind?;
-    if kind.needs_static_rating() && c0.is_none() && !f.has("f1") {
+    let skf = lower_bearing_model(&f, kind, bore.zip(outside), errors).ok()?;
+    // Palmgren's f_1 of the ball and spherical types, and SKF's contact angle α_F of a deep groove
+    // ball bearing under axial load, need C_0.
+    let needs_c0 =
+        if skf.is_some() { kind == BearingType::DeepGrooveBall } else { kind.needs_static_rating() && !f.has("f1") };
+    if needs_c0 && c0.is_none() {
+        let hint = if skf.is_some() { "" } else { ", or give `f1`" };
         errors.push(
             Diagnostic::new(
                 DiagnosticKind::MissingKey,
                 call.span,
                 format!("a {} bearing's load-dependent moment needs its static load rating C_0", kind.name()),
             )
-            .hint("add `static_load_rating = 20 kN` (from the bearing's catalogue), or give `f1`"),
+            .hint(format!("add `static_load_rating = 20 kN` (from the bearing's catalogue){hint}")),
         );
         return None;
     }
@@ -142,7 +154,88 @@ fn lower_bearing(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Bearing> {
         f0: f.number("f0", 0.1, 100.0, errors).map(|g| g.value),
         f1: f.number("f1", 1e-6, 0.1, errors).map(|g| g.value),
         position: metres(f.optional("at", errors)),
+        skf,
     })
+}
+
+/// `model = palmgren` (the default) or `model = skf(r1 = …, r2 = …, s1 = …, s2 = …)`: the SKF model's
+/// constants with the bearing's [d, D]; `Err` after an error.
+fn lower_bearing_model(
+    f: &Fields,
+    kind: BearingType,
+    diameters: Option<(f64, f64)>,
+    errors: &mut Vec<Diagnostic>,
+) -> Result<Option<(SkfConstants, [f64; 2])>, ()> {
+    let Some((_, value)) = f.values.get("model") else { return Ok(None) };
+    let model = match &value.kind {
+        ValueKind::Call(c) if c.name.text == "palmgren" && c.arguments.is_empty() => return Ok(None),
+        ValueKind::Call(c) if c.name.text == "skf" => c,
+        ValueKind::Call(c) => {
+            errors.push(unknown_name("model for a bearing", &c.name, &["palmgren", "skf"]));
+            return Err(());
+        }
+        _ => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::WrongDimension, value.span, "`model` expects `palmgren` or `skf(...)`")
+                    .hint("write `model = skf(r1 = 1.09e-6, s1 = 0.16, s2 = 0.0015)` with the series' constants from SKF's tables"),
+            );
+            return Err(());
+        }
+    };
+    let fail = |errors: &mut Vec<Diagnostic>, reason: String, hint: &str| {
+        errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, model.span, reason).hint(hint.to_string()));
+        Err(())
+    };
+    if !skf_bearing::supports(kind) {
+        return fail(
+            errors,
+            format!("the SKF model is not available here for a {} bearing", kind.name()),
+            "the SKF model covers deep_groove_ball, cylindrical_roller and tapered_roller; use `model = palmgren` (with `f0`, `f1`)",
+        );
+    }
+    if f.has("f0") || f.has("f1") {
+        return fail(
+            errors,
+            "`f0` and `f1` are Palmgren's factors, not the SKF model's".into(),
+            "leave out `f0` and `f1`, or `model`",
+        );
+    }
+    let Some((d, big_d)) = diameters else {
+        return fail(
+            errors,
+            "the SKF model needs the bearing's `bore` and `outside` diameters".into(),
+            "write `bore = 30 mm, outside = 72 mm` instead of `mean_diameter`",
+        );
+    };
+    let mut items = Vec::new();
+    let k = call_fields(model, "`skf(...)`", SKF, &mut items, errors);
+    let needs_r2 = kind != BearingType::CylindricalRoller;
+    let constant = |key: &str, required: bool, errors: &mut Vec<Diagnostic>| -> Option<f64> {
+        if required && !k.has(key) {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::MissingKey, k.span, format!("`skf(...)` has no `{key}`")).hint(
+                    format!(
+                "add `{key}`, the value for the bearing's series in SKF's table of geometry constants (R1, R2, S1, S2)"
+            ),
+                ),
+            );
+        }
+        k.number(key, 0.0, 1e4, errors).map(|g| g.value)
+    };
+    let before = errors.len();
+    let r1 = constant("r1", true, errors);
+    let r2 = constant("r2", needs_r2, errors);
+    let s1 = constant("s1", true, errors);
+    let s2 = constant("s2", true, errors);
+    let y = k.number("y", 0.3, 5.0, errors).map_or(1.6, |g| g.value);
+    let mu_bl = k.number("mu_bl", 0.0, 1.0, errors).map_or(skf_bearing::MU_BOUNDARY, |g| g.value);
+    let mu_ehl = k.number("mu_ehl", 0.0, 1.0, errors).map(|g| g.value);
+    if errors.len() > before {
+        return Err(());
+    }
+    let (Some(r1), Some(s1), Some(s2)) = (r1, s1, s2) else { return Err(()) };
+    let constants = SkfConstants { r1, r2: r2.unwrap_or(0.0), s1, s2, y, mu_bl, mu_ehl };
+    Ok(Some((constants, [d, big_d])))
 }
 
 fn lower_seal(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Seal> {

@@ -3,7 +3,11 @@
 
 use gearloss::evaluate::evaluate_scene;
 use gearloss::geometry::OperatingState;
-use gearloss::losses::{loss_budget, Bearing, BearingType, Gearbox, Lubrication, Seal};
+use gearloss::losses::gear_no_load::{windage_loss, GearsRunning};
+use gearloss::losses::{loss_budget, Bearing, BearingType, Gearbox, Lubrication, Oil, Seal};
+
+/// A mineral oil of 50 mm²/s and 870 kg/m³.
+const OIL: Oil = Oil { nu: 50e-6, rho: 870.0, eta: 50e-6 * 870.0, mineral: true };
 
 fn spec(name: &str) -> gearloss::Scene {
     crate::scene(&crate::root().join("specs").join(name))
@@ -87,6 +91,56 @@ fn budget_by_hand() {
     assert!((parts.total_efficiency - (1.0 - parts.total_loss / (t * w1))).abs() < 1e-15);
 }
 
+/// The injection gearbox on SKF-model bearings by hand at 239.3 N·m, 3000 rpm: the jet's impulse
+/// ρ Q v_t (v_t + v_j) plus both gears' Anderson–Loewenthal windage; each 16006 bearing (two per
+/// shaft, F_r = F_bt/2, F_a = 0) with M_rr = φ_ish φ_rs R1 d_m^1.96 F_r^0.54 (νn)^0.6 and
+/// M_sl = μ_sl S1 d_m^-0.26 F_r^(5/3), written out here in N·mm, rpm and mm²/s (to 1e-9 relative).
+#[test]
+fn injection_and_skf_budget_by_hand() {
+    let scene = spec("fzg_c14_injection.gear");
+    let eval = evaluate_scene(&scene);
+    let g = &eval.geometry;
+    let (t, w1) = (239.3, rpm(3000.0));
+    let b = eval.loss_budget(&scene, &OperatingState { pinion_torque: t, pinion_speed: w1 }).unwrap();
+    let nu = eval.tribology.kinematic_viscosity.unwrap() * 1e6;
+    let eta_cp = eval.tribology.dynamic_viscosity * 1e3;
+    let rho = eval.tribology.density().unwrap();
+
+    let n = [3000.0, 3000.0 / g.gear_ratio];
+    let r = g.working_pitch_radius;
+    let v_t = w1 * r[0];
+    let impulse = rho * 2e-3 / 60.0 * v_t * (v_t + 10.0);
+    let windage: f64 = (0..2)
+        .map(|i| {
+            2.82e-7
+                * (1.0 + 2.3 * 0.014 / r[i])
+                * n[i].powf(2.8)
+                * r[i].powf(4.6)
+                * (0.028 * eta_cp + 0.019).powf(0.2)
+                * 1e3
+        })
+        .sum();
+    assert!((b.gear_no_load.unwrap() / (impulse + windage) - 1.0).abs() < 1e-9);
+    assert!(windage > 1.0 && windage < impulse, "windage {windage} W, impulse {impulse} W");
+
+    let (d, big_d) = (30.0, 55.0);
+    let dm: f64 = 42.5;
+    let fr = t / g.base_radius[0] / 2.0;
+    let (mut rolling, mut sliding) = (0.0, 0.0);
+    for n in n {
+        let phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * dm).powf(1.28) * nu.powf(0.64));
+        let phi_rs = (-3e-8 * nu * n * (d + big_d) * (3.1 / (2.0 * (big_d - d))).sqrt()).exp();
+        let m_rr = phi_ish * phi_rs * 4.3e-7 * dm.powf(1.96) * fr.powf(0.54) * (nu * n).powf(0.6);
+        let phi_bl = (-2.6e-8 * (n * nu).powf(1.4) * dm).exp();
+        let m_sl = (0.15 * phi_bl + 0.05 * (1.0 - phi_bl)) * 4.63e-3 * dm.powf(-0.26) * fr.powf(5.0 / 3.0);
+        let w = n * std::f64::consts::PI / 30.0;
+        rolling += 2.0 * m_rr * 1e-3 * w;
+        sliding += 2.0 * m_sl * 1e-3 * w;
+    }
+    assert!((b.bearings_no_load.unwrap() / rolling - 1.0).abs() < 1e-9, "{:?} vs {rolling}", b.bearings_no_load);
+    assert!((b.bearings_load.unwrap() / sliding - 1.0).abs() < 1e-9, "{:?} vs {sliding}", b.bearings_load);
+}
+
 /// The lever rule: bearings at −40 and +60 mm carry 60 % and 40 % of F_bt; a helical pair's axial
 /// force goes to the first, and its moment F_a r_w / 100 mm adds along the line of centres.
 #[test]
@@ -101,11 +155,12 @@ fn lever_rule_and_axial_moment() {
         f0: None,
         f1: None,
         position: Some(at),
+        skf: None,
     };
     let gb =
         Gearbox { lubrication: None, bearings: [vec![place(-0.04), place(0.06)], vec![]], seals: [vec![], vec![]] };
     let t = 200.0;
-    let b = loss_budget(&gb, &g, t, rpm(1000.0), 50e-6, 870.0);
+    let b = loss_budget(&gb, &g, t, rpm(1000.0), &OIL);
     let f_bt = t / g.base_radius[0];
     let (ft, fr) = (f_bt * g.operating_pressure_angle.cos(), f_bt * g.operating_pressure_angle.sin());
     let m = g.axial_force(t) * g.working_pitch_radius[0] / 0.1;
@@ -117,21 +172,24 @@ fn lever_rule_and_axial_moment() {
     assert!(b.gear_no_load.is_none() && b.seals.is_none());
 }
 
-/// Limits: no oil above the gears gives no churning; injection at zero flow no impulse loss; a
-/// gearbox with nothing in it adds nothing.
+/// Limits: no oil above the gears gives no churning; injection at zero flow leaves only the two
+/// gears' windage; a gearbox with nothing in it adds nothing.
 #[test]
 fn loss_limits() {
     let g = spec("fzg_c14_gearbox.gear").gears.geometry().unwrap();
+    let gears = GearsRunning { omega: [100.0, 50.0], pitch_radius: [0.05, 0.1], face_width: 0.014 };
     let dry = Lubrication::Dip { immersion: [0.0, 0.0], axis_height: 0.1, housing_width: 0.2 };
-    assert_eq!(dry.power_loss(100.0, 5.0, 0.014, 870.0), 0.0);
+    assert_eq!(dry.power_loss(&gears, &OIL), 0.0);
     let jet = Lubrication::Injection { flow: 0.0, jet_speed: 10.0 };
-    assert_eq!(jet.power_loss(100.0, 5.0, 0.014, 870.0), 0.0);
+    let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
+    let windage = windage_loss(rpm(100.0), 0.05, 0.014, OIL.eta) + windage_loss(rpm(50.0), 0.1, 0.014, OIL.eta);
+    assert_eq!(jet.power_loss(&gears, &OIL), windage);
     let empty = Gearbox {
         lubrication: None,
         bearings: [vec![], vec![]],
         seals: [vec![Seal { diameter: 0.03, count: 0 }], vec![]],
     };
-    assert_eq!(loss_budget(&empty, &g, 100.0, 100.0, 1e-5, 870.0).beside_mesh(), 0.0);
+    assert_eq!(loss_budget(&empty, &g, 100.0, 100.0, &OIL).beside_mesh(), 0.0);
 }
 
 /// The report: the budget rows of report.json add up, the map's CSV has a row per grid point, law

@@ -8,8 +8,7 @@ use super::{plottable, PALETTE};
 use crate::report::Report;
 
 /// The parts of a budget bar, bottom to top.
-const PARTS: [&str; 5] =
-    ["mesh (load-dependent)", "gear churning / jet", "bearings, no-load", "bearings, load", "seals"];
+const PARTS: [&str; 5] = ["mesh (load-dependent)", "gears no-load", "bearings, no-load", "bearings, load", "seals"];
 
 /// loss_budget.svg: one bar per operating point and law (the first formulation of each law),
 /// stacked by part; the legend stands beside the plot area.
