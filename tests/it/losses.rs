@@ -52,6 +52,30 @@ fn c14_mu_matches_the_peer() {
     assert!((default / mu - 1.0 / 0.846).abs() < 1e-12);
 }
 
+/// The peer's mesh loss, 279.65 W, is P_in μ_mZ H_V with Ohlendorf's H_V = 0.1950 and its μ_mZ for
+/// load stage 8 applied at the wheel (239.3 N·m and 1500 rpm on the wheel, the peer's element `W`:
+/// the pinion at 159.53 N·m and 2250 rpm, the same input power): there Schlenk's μ_mZ is the
+/// pinion-side 0.04487 times ((1/1.5)/1.5)^0.2 = 0.038152, and 37 589.6 W · 0.1950 · 0.038152 =
+/// 279.65 W. gearloss at that point, `x_l = 0.846`, external formulation: within 0.5 % of 279.65 W
+/// (it gives 278.90 W, −0.27 %: μ −0.16 %, H −0.1 %).
+#[test]
+fn c14_mesh_loss_matches_the_peer_with_the_load_at_the_wheel() {
+    use gearloss::efficiency::{evaluate_efficiencies, Formulation};
+    use gearloss::friction::iso_14179_2::Iso14179_2;
+    let scene = spec("fzg_c14_gearbox.gear");
+    let eval = evaluate_scene(&scene);
+    let state = OperatingState { pinion_torque: 239.3 / 1.5, pinion_speed: rpm(2250.0) };
+    let input = state.pinion_torque * state.pinion_speed;
+    assert!((input - 239.3 * rpm(1500.0)).abs() < 1e-9 * input);
+    let ctx = eval.law_context(state);
+    let law = Iso14179_2::new(&ctx, 0.846);
+    let peer_mu = 0.04487 * (1.0f64 / 2.25).powf(0.2);
+    assert!((law.mu_mz / peer_mu - 1.0).abs() < 5e-3, "μ_mZ = {} vs {peer_mu}", law.mu_mz);
+    assert!((input * 0.1950 * peer_mu - 279.65).abs() < 0.01, "the peer's arithmetic");
+    let p = evaluate_efficiencies(&ctx, &law, &[Formulation::External])[0].power_loss;
+    assert!((p / 279.65 - 1.0).abs() < 5e-3, "mesh loss {p} W vs the peer's 279.65 W");
+}
+
 /// The budget by hand at 239.3 N·m, 1500 rpm: Mauz churning, Palmgren bearings (two NJ 406 per
 /// shaft sharing F_bt equally), seals 7.69e-6 d² n; and the record's total is mesh + the parts
 /// (to 1e-9 relative).
