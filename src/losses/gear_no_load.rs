@@ -28,9 +28,9 @@
 //!
 //! n the gear's speed (rpm), R its pitch radius (m), b the face width (m) and η the oil's dynamic
 //! viscosity at the oil temperature (cP = mPa·s): 0.028 η + 0.019 is their viscosity of the mist,
-//! air's 0.019 cP plus a share of the oil's. Their tests ran jet-lubricated spur gears of 89 mm
-//! pitch diameter up to 10 000 rpm (46 m/s). Dip lubrication does not add it: Mauz's measured
-//! torque contains the windage of the dipping gears.
+//! air's 0.019 cP plus a share of the oil's (their fit to NASA's jet-lubricated spur-gear tests).
+//! Dip lubrication does not add it: Mauz's measured torque contains the windage of the dipping
+//! gears.
 //!
 //! ```
 //! use gearloss::losses::gear_no_load::mauz_dip_torque;
