@@ -223,7 +223,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
     if report.loss_budget && !report.efficiency.is_empty() {
         report.plots.push(PlotRef {
             file: "loss_budget.svg".into(),
-            title: "Loss budget at each operating point: mesh, gear churning, bearings, seals".into(),
+            title: "Loss budget at each operating point: mesh, gears without load, bearings, seals".into(),
         });
     }
     if report.efficiency_map.is_some() {
