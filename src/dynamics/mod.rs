@@ -19,6 +19,7 @@ pub mod integrators;
 pub mod model;
 pub mod numerics;
 pub mod propagator;
+pub mod rank_one;
 pub mod response;
 pub mod sdof;
 pub mod six_dof;

@@ -59,6 +59,11 @@ pub trait PeriodicModel<const N: usize>: Sync {
     fn system(&self, t: f64) -> (SMatrix<f64, N, N>, SVector<f64, N>);
     /// True when on segment `j` A is constant and b affine in t, so that the exact propagator applies.
     fn segment_is_affine(&self, segment: usize) -> bool;
+    /// A row n such that on segment `j` A(t) − A(t') = w nᵀ for any t, t' in it (A varies along one
+    /// row, with any column w(t)): the spectral rank-one propagator applies there. None by default.
+    fn varying_row(&self, _segment: usize) -> Option<SVector<f64, N>> {
+        None
+    }
     /// A typical size of each state component (a displacement, a velocity), for tolerances and
     /// error norms: the integrators work on X / scale.
     fn state_scale(&self) -> SVector<f64, N>;

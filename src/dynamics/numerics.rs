@@ -12,7 +12,7 @@ use serde::Serialize;
 
 use super::integrators::{integrate, Counts, Integrator};
 use super::model::PeriodicModel;
-use super::propagator::{period_method, period_segments, Method, PeriodPropagation, SegmentExponential, SegmentRoute};
+use super::propagator::{period_segments, Method, PeriodPropagation, SegmentExponential, SegmentRoute};
 
 pub const PERIODS: usize = 10;
 pub const REPEATS: usize = 3;
@@ -76,7 +76,7 @@ pub fn states<M: PeriodicModel<N> + ?Sized, const N: usize>(
                     };
                     e.from(from - seg.start).apply(x)
                 }
-                SegmentRoute::Magnus { .. } => route.propagate(sys, from, dt).apply(x),
+                SegmentRoute::RankOne(_) | SegmentRoute::Magnus { .. } => route.propagate(sys, from, dt).apply(x),
             }
         };
         let entry = x;
@@ -160,7 +160,7 @@ pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<
         best = best.min(t0.elapsed().as_secs_f64());
     }
     let scale = sys.state_scale();
-    let method = period_method(sys);
+    let method = period_segments(sys).method;
     let mut runs = Vec::new();
     for integrator in Integrator::ALL {
         for rtol in LADDER {

@@ -8,13 +8,20 @@
 //!   augmented [X, 1] system, Ω = h/2 (A1 + A2) + (√3/12) h² [A2, A1] (Blanes, Casas, Oteo, Ros,
 //!   Phys. Rep. 470, 2009, eq 253), with substeps doubled until two successive results agree.
 //!
+//! - **Spectral (rank one)**: where A(t) varies along one row only (A0 + w(t) nᵀ, the 6-DOF model
+//!   with friction), Chebyshev collocation of the scalar Volterra equation for nᵀX in A0's modal
+//!   form ([`super::rank_one`]), whose cost does not grow with the fast modes as Magnus' does.
+//!
 //! The augmented matrices are static (4×4, 3×3) for the 2-state models and dynamic otherwise, so the
 //! SDOF path allocates nothing.
+
+use std::sync::Arc;
 
 use nalgebra::allocator::Allocator;
 use nalgebra::{DefaultAllocator, Dim, DimMin, Dyn, OMatrix, SMatrix, SVector, U3, U4};
 
 use super::model::PeriodicModel;
+use super::rank_one::RankOneSegment;
 
 /// X(end) = Φ X(start) + q.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -44,6 +51,8 @@ impl<const N: usize> Propagation<N> {
 pub enum Method {
     Exact,
     Magnus4,
+    /// Chebyshev collocation of the rank-one (Volterra) form on every segment where A varies.
+    Spectral,
 }
 
 /// Relative error at which a Magnus segment is accepted. Halving the substep of a 4th-order method
@@ -275,11 +284,12 @@ pub fn magnus_adaptive<M: PeriodicModel<N> + ?Sized, const N: usize>(
     }
 }
 
-/// How one segment of the period is propagated: its exact affine form, or the Magnus substep
-/// density (substeps per second) that converged over the whole segment.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// How one segment of the period is propagated: its exact affine form, its rank-one modal form, or
+/// the Magnus substep density (substeps per second) that converged over the whole segment.
+#[derive(Debug, Clone)]
 pub enum SegmentRoute<const N: usize> {
     Exact(AffineSegment<N>),
+    RankOne(Arc<RankOneSegment<N>>),
     Magnus { density: f64 },
 }
 
@@ -288,6 +298,7 @@ impl<const N: usize> SegmentRoute<N> {
     pub fn propagate<M: PeriodicModel<N> + ?Sized>(&self, model: &M, from: f64, h: f64) -> Propagation<N> {
         match self {
             SegmentRoute::Exact(seg) => seg.propagate(from, h),
+            SegmentRoute::RankOne(seg) => seg.propagate(model, from, h),
             SegmentRoute::Magnus { density } => magnus(model, from, h, ((density * h).ceil() as usize).max(2)),
         }
     }
@@ -302,34 +313,68 @@ pub struct PeriodPropagation<const N: usize> {
     pub method: Method,
 }
 
-/// The method of a period: exact when every segment is affine, Magnus where any is not.
-pub fn period_method<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) -> Method {
-    if (0..model.segments().len()).all(|j| model.segment_is_affine(j)) {
-        Method::Exact
-    } else {
-        Method::Magnus4
-    }
+/// Whether A is the same at the Chebyshev nodes of [start, end] (to 1e-14 of its size) and b
+/// affine there: the exact propagator applies although the model cannot promise it (friction
+/// arms that cancel between two pairs on either side of the pitch point).
+fn constant_on<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M, start: f64, end: f64) -> bool {
+    let d = 1e-12 * (end - start);
+    let at = |s: f64| model.system((start + s * (end - start)).clamp(start + d, end - d));
+    let (a0, b0) = at(0.0);
+    let (_, b1) = at(1.0);
+    let size = a0.abs().max() + b0.abs().max() + b1.abs().max();
+    crate::numerics::chebyshev::Lobatto::get(8).nodes.iter().all(|s| {
+        let (a, b) = at(*s);
+        (a - a0).abs().max() + (b - b0 - (b1 - b0) * *s).abs().max() <= 1e-14 * size
+    })
 }
 
-/// Propagates every segment of one period by the route that applies.
+/// Propagates every segment of one period by the route that applies: exact where A is constant,
+/// spectral where it varies along one row (a reference reused across segments with the same row,
+/// as on both sides of the pitch point), Magnus otherwise.
 pub fn period_segments<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) -> PeriodPropagation<N> {
     let mut segments = Vec::with_capacity(model.segments().len());
     let mut routes = Vec::with_capacity(model.segments().len());
+    let mut reference: Option<(SVector<f64, N>, Arc<RankOneSegment<N>>)> = None;
     for (j, s) in model.segments().iter().enumerate() {
         let h = s.end - s.start;
-        if model.segment_is_affine(j) {
-            let seg = AffineSegment::of(model, s.start, s.end);
-            segments.push(seg.propagate(s.start, h));
-            routes.push(SegmentRoute::Exact(seg));
+        // A model that gives a varying row accepts a structured route: the exact one where A
+        // turns out constant on the segment.
+        let affine =
+            model.segment_is_affine(j) || (model.varying_row(j).is_some() && constant_on(model, s.start, s.end));
+        let rank_one = || {
+            let row = model.varying_row(j)?;
+            if let Some((r, seg)) = &reference {
+                if *r == row {
+                    if let Some(seg) = seg.moved(model, s.start, s.end) {
+                        return Some((row, Arc::new(seg)));
+                    }
+                }
+            }
+            RankOneSegment::new(model, s.start, s.end, row).map(|seg| (row, Arc::new(seg)))
+        };
+        let route = if affine {
+            SegmentRoute::Exact(AffineSegment::of(model, s.start, s.end))
+        } else if let Some((row, seg)) = rank_one() {
+            reference = Some((row, seg.clone()));
+            SegmentRoute::RankOne(seg)
         } else {
             let (p, n) = magnus_adaptive(model, s.start, h);
             segments.push(p);
             routes.push(SegmentRoute::Magnus { density: n as f64 / h });
-        }
+            continue;
+        };
+        segments.push(route.propagate(model, s.start, h));
+        routes.push(route);
     }
-    PeriodPropagation { segments, routes, method: period_method(model) }
+    let method = if routes.iter().all(|r| matches!(r, SegmentRoute::Exact(_))) {
+        Method::Exact
+    } else if routes.iter().any(|r| matches!(r, SegmentRoute::Magnus { .. })) {
+        Method::Magnus4
+    } else {
+        Method::Spectral
+    };
+    PeriodPropagation { segments, routes, method }
 }
-
 /// The monodromy propagation over one period (Φ(T), q(T)).
 pub fn monodromy<const N: usize>(segments: &[Propagation<N>]) -> Propagation<N> {
     segments.iter().fold(Propagation::identity(), |acc, s| acc.then(s))

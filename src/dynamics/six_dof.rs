@@ -214,6 +214,34 @@ impl PeriodicModel<STATES> for SixDofSystem<'_> {
         self.mesh.allow_exact && self.mesh.law.is_none() && self.mesh.stiffness.is_piecewise_constant()
     }
 
+    /// With a piecewise-constant stiffness A varies on a segment only through f(t) and μ̄(t), which
+    /// scale the mesh force N = k δ + c δ̇: its row (k of the segment, c) is the varying row.
+    fn varying_row(&self, segment: usize) -> Option<SVector<f64, STATES>> {
+        if !self.mesh.allow_exact || !self.mesh.stiffness.is_piecewise_constant() {
+            return None;
+        }
+        let s = self.mesh.segments[segment];
+        let k = self.mesh.stiffness_at(0.5 * (s.start + s.end));
+        let mut row = SVector::<f64, STATES>::zeros();
+        for (j, sign) in [(0, 1.0), (1, 1.0), (2, -1.0)] {
+            row[j] = k * sign;
+            row[j + 5] = self.mesh.damping * sign;
+        }
+        Some(row)
+    }
+
+    /// ∫ tr A dt with tr A = −(1 − f) c/m_e − c/m_p − c/m_g − (c_xp + c_yp)/m_p − (c_xg + c_yg)/m_g
+    /// (the diagonal of [`PeriodicModel::system`]): only f(t) is integrated (adaptive Gauss–Kronrod to
+    /// 1e-13 between the switch times), without building A.
+    fn trace_integral(&self) -> f64 {
+        let m = &self.mesh;
+        let c = m.damping;
+        let [cp, cg] = [self.bearing_damping(0), self.bearing_damping(1)];
+        let constant = c / m.equivalent_mass + (c + cp[0] + cp[1]) / self.mass[0] + (c + cg[0] + cg[1]) / self.mass[1];
+        let f = crate::numerics::quadrature::integrate(|t| m.friction_term(t), &self.breaks(), 1e-13).value;
+        -constant * m.period + c / m.equivalent_mass * f
+    }
+
     /// Displacements in units of the static deflection F0/k̄, velocities times ω_n.
     fn state_scale(&self) -> SVector<f64, STATES> {
         let s = self.mesh.state_scale();

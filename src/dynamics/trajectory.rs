@@ -71,7 +71,7 @@ impl<'s, M: PeriodicModel<N> + ?Sized, const N: usize> Trajectory<'s, M, N> {
         let mut pieces = Vec::new();
         let mut x = x0;
         for (j, seg) in sys.segments().iter().enumerate() {
-            let route = period.routes[j];
+            let route = period.routes[j].clone();
             let mut bounds = vec![seg.start];
             bounds.extend(cuts.iter().copied().filter(|t| *t > seg.start && *t < seg.end));
             bounds.push(seg.end);
@@ -81,11 +81,12 @@ impl<'s, M: PeriodicModel<N> + ?Sized, const N: usize> Trajectory<'s, M, N> {
                     [0.02, 0.5, 0.98].iter().map(|f| sys.highest_frequency(a + f * (b - a))).fold(0.0, f64::max);
                 let n = ((b - a) * omega / (2.0 * std::f64::consts::PI) * NODES_PER_OSCILLATION).ceil() as usize;
                 let n = n.max(MIN_NODES);
-                let mut piece = Piece { start: a, end: b, segment: j, route, times: Vec::new(), states: Vec::new() };
+                let mut piece =
+                    Piece { start: a, end: b, segment: j, route: route.clone(), times: Vec::new(), states: Vec::new() };
                 let h = (b - a) / n as f64;
                 let step = match &route {
                     SegmentRoute::Exact(s) => Some(s.exponential(h)),
-                    SegmentRoute::Magnus { .. } => None,
+                    SegmentRoute::RankOne(_) | SegmentRoute::Magnus { .. } => None,
                 };
                 piece.times.push(a);
                 piece.states.push(x);

@@ -1,4 +1,7 @@
-//! Numerical building blocks shared by the physics: adaptive quadrature and bracketed root finding.
+//! Numerical building blocks shared by the physics: adaptive quadrature, bracketed root finding,
+//! Chebyshev–Lobatto spectral integration and the small dense linear algebra of the propagators.
 
+pub mod chebyshev;
+pub mod dense;
 pub mod quadrature;
 pub mod roots;

@@ -1,5 +1,6 @@
 //! The 6-DOF model (He–Cho–Singh eqs 1–9): limits, balances and Floquet identities on FZG type C.
 
+use gearloss::dynamics::propagator::Method;
 use gearloss::dynamics::six_dof::{Bearing, SixDofSystem};
 use gearloss::dynamics::{DynamicFormulation, Floquet, PeriodicModel, SdofSystem, StiffnessModel};
 use gearloss::evaluate::tribology;
@@ -78,8 +79,9 @@ fn without_friction_nothing_moves_off_the_line_of_action() {
     assert!(x[1] != 0.0 && x[2] != 0.0);
 }
 
-/// det Φ(T) = exp(∫ tr A dt) (Liouville) to 1e-9 relative with friction, and the exact and Magnus
-/// propagations of the frictionless model agree to 1e-9 (periodic state, relative to its norm).
+/// det Φ(T) = exp(∫ tr A dt) (Liouville) to 1e-9 relative with friction; the exact and Magnus
+/// propagations of the frictionless model agree to 1e-9, and so do the spectral rank-one and Magnus
+/// propagations of the model with friction (periodic state relative to its norm, spectral radius).
 #[test]
 fn liouville_and_two_propagation_methods() {
     let (scene, g) = fzg();
@@ -98,6 +100,14 @@ fn liouville_and_two_propagation_methods() {
         (xa - xb).component_div(&exact.state_scale()).norm() < 1e-9 * xa.component_div(&exact.state_scale()).norm()
     );
     assert!((a.spectral_radius - b.spectral_radius).abs() < 1e-9);
+    let mut magnus = six(ctx(&scene, &g, 1000.0), Some(&law), 5e8);
+    magnus.mesh.allow_exact = false;
+    let b = Floquet::analyse(&magnus);
+    assert_eq!((fl.method, b.method), (Method::Spectral, Method::Magnus4));
+    let (xa, xb) = (fl.periodic_state.unwrap(), b.periodic_state.unwrap());
+    let scale = s.state_scale();
+    assert!((xa - xb).component_div(&scale).norm() < 1e-9 * xa.component_div(&scale).norm());
+    assert!((fl.spectral_radius - b.spectral_radius).abs() < 1e-9);
 }
 
 mod response {

@@ -1,0 +1,98 @@
+//! Chebyshev–Lobatto nodes on [0, 1] and the spectral integration matrix S on them: for the
+//! polynomial p of degree ≤ M through the values f_m at the nodes s_m, (S f)_i = ∫₀^{s_i} p(s) ds
+//! (Trefethen, *Spectral Methods in MATLAB*, SIAM 2000, ch. 12; the Clenshaw–Curtis weights are its
+//! last row). Built once per M from the Chebyshev coefficients of p:
+//! c_k = (2/M) Σ″_m f_m T_k(x_m) (halved for k = 0 and k = M), x_m = −cos(π m / M), and
+//! ∫T_0 = T_1, ∫T_1 = T_2/4, ∫T_k = T_{k+1}/(2(k+1)) − T_{k−1}/(2(k−1)) (+ constants), taken from
+//! x = −1 and halved for the map x = 2s − 1.
+//!
+//! ```
+//! use gearloss::numerics::chebyshev::Lobatto;
+//! let c = Lobatto::get(16);
+//! // ∫₀^s cos(3u) du = sin(3s)/3 at every node, to rounding.
+//! let f: Vec<f64> = c.nodes.iter().map(|s| (3.0 * s).cos()).collect();
+//! for (i, s) in c.nodes.iter().enumerate() {
+//!     let integral: f64 = (0..=16).map(|m| c.integration[(i, m)] * f[m]).sum();
+//!     assert!((integral - (3.0 * s).sin() / 3.0).abs() < 1e-14);
+//! }
+//! ```
+
+use std::sync::OnceLock;
+
+use nalgebra::DMatrix;
+
+/// The node counts (M + 1 nodes, degree M) for which the nodes and S are kept.
+pub const DEGREES: [usize; 6] = [8, 16, 24, 32, 48, 64];
+
+/// Nodes and integration matrix of degree M on [0, 1].
+#[derive(Debug, Clone)]
+pub struct Lobatto {
+    pub degree: usize,
+    /// s_m = (1 − cos(π m / M)) / 2, ascending from 0 to 1.
+    pub nodes: Vec<f64>,
+    /// S: (M + 1) × (M + 1).
+    pub integration: DMatrix<f64>,
+}
+
+impl Lobatto {
+    /// The nodes and S for a degree of [`DEGREES`] (built on first use).
+    pub fn get(degree: usize) -> &'static Lobatto {
+        static CACHE: [OnceLock<Lobatto>; DEGREES.len()] = [const { OnceLock::new() }; DEGREES.len()];
+        let i = DEGREES.iter().position(|d| *d == degree).expect("a degree of DEGREES");
+        CACHE[i].get_or_init(|| Lobatto::new(degree))
+    }
+
+    fn new(m: usize) -> Self {
+        let pi = std::f64::consts::PI;
+        let nodes: Vec<f64> = (0..=m).map(|i| 0.5 * (1.0 - (pi * i as f64 / m as f64).cos())).collect();
+        // T_k(x_i) with x_i = −cos(π i/M) = cos(π − π i/M), for k up to M + 1.
+        let t = |k: usize, i: usize| (k as f64 * (pi - pi * i as f64 / m as f64)).cos();
+        let mut s = DMatrix::zeros(m + 1, m + 1);
+        for col in 0..=m {
+            // Coefficients of the polynomial through the unit vector e_col.
+            let end = if col == 0 || col == m { 0.5 } else { 1.0 };
+            let c: Vec<f64> = (0..=m)
+                .map(|k| {
+                    let half = if k == 0 || k == m { 0.5 } else { 1.0 };
+                    half * 2.0 / m as f64 * end * t(k, col)
+                })
+                .collect();
+            // Coefficients of its antiderivative (degree M + 1).
+            let mut d = vec![0.0; m + 2];
+            d[1] += c[0];
+            if m >= 1 {
+                d[2] += 0.25 * c[1];
+            }
+            for (k, ck) in c.iter().enumerate().skip(2) {
+                d[k + 1] += ck / (2.0 * (k + 1) as f64);
+                d[k - 1] -= ck / (2.0 * (k - 1) as f64);
+            }
+            let at_minus_one: f64 = d.iter().enumerate().map(|(k, dk)| if k % 2 == 0 { *dk } else { -dk }).sum();
+            for i in 0..=m {
+                let value: f64 = d.iter().enumerate().map(|(k, dk)| dk * t(k, i)).sum();
+                // dx = 2 ds.
+                s[(i, col)] = 0.5 * (value - at_minus_one);
+            }
+        }
+        Lobatto { degree: m, nodes, integration: s }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Exact for polynomials of degree ≤ M (tolerance 1e-14): ∫₀^s u^k du = s^(k+1)/(k+1).
+    #[test]
+    fn exact_for_polynomials() {
+        for &m in &DEGREES {
+            let c = Lobatto::get(m);
+            for k in [0, 1, 2, m / 2, m] {
+                for (i, s) in c.nodes.iter().enumerate() {
+                    let v: f64 = (0..=m).map(|j| c.integration[(i, j)] * c.nodes[j].powi(k as i32)).sum();
+                    assert!((v - s.powi(k as i32 + 1) / (k + 1) as f64).abs() < 1e-14, "M {m} k {k}");
+                }
+            }
+        }
+    }
+}
