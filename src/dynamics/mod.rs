@@ -1,10 +1,11 @@
 //! Gear dynamics with sliding friction: the SDOF torsional model along the line of action
-//! (Fernandes et al. eqs 3–20, physics notes "Dynamics"), its exact and Magnus propagators,
+//! (Fernandes et al. eqs 3–20, physics notes "Dynamics"), the 6-DOF model on bearings, the exact, spectral
+//! rank-one and Magnus propagators,
 //! Floquet stability and periodic steady state, general ODE integrators with restarts at every
 //! switch time, and the error-against-run-time study.
 //!
 //! ```text
-//! SdofSystem (one mesh period as segments) ─▶ propagator (Φ_j, q_j per segment; exact or Magnus)
+//! SdofSystem (one mesh period as segments) ─▶ propagator (Φ_j, q_j per segment; exact, rank_one or Magnus)
 //!        │                                          │
 //!        │                                          ▼
 //!        ├──▶ integrators (DOP853, DOPRI5, Radau5, Kværnø ESDIRK; restarts)   floquet (Φ(T), multipliers, X*(0))
