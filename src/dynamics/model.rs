@@ -103,3 +103,25 @@ pub trait PeriodicModel<const N: usize>: Sync {
         out
     }
 }
+
+/// X(end) = Φ X(start) + q.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Propagation<const N: usize> {
+    pub phi: SMatrix<f64, N, N>,
+    pub q: SVector<f64, N>,
+}
+
+impl<const N: usize> Propagation<N> {
+    pub fn identity() -> Self {
+        Propagation { phi: SMatrix::identity(), q: SVector::zeros() }
+    }
+
+    /// `self` followed by `next`.
+    pub fn then(&self, next: &Propagation<N>) -> Propagation<N> {
+        Propagation { phi: next.phi * self.phi, q: next.phi * self.q + next.q }
+    }
+
+    pub fn apply(&self, x: &SVector<f64, N>) -> SVector<f64, N> {
+        self.phi * x + self.q
+    }
+}

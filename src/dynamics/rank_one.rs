@@ -27,8 +27,7 @@
 
 use nalgebra::{Complex, SMatrix, SVector};
 
-use super::model::PeriodicModel;
-use super::propagator::Propagation;
+use super::model::{PeriodicModel, Propagation};
 use crate::numerics::chebyshev::{Lobatto, DEGREES};
 use crate::numerics::dense::{eigen, solve_dense};
 
