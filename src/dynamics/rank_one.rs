@@ -71,8 +71,6 @@ pub struct RankOneSegment<const N: usize> {
     modes: Vec<Mode<N>>,
     /// max |λ| (1/s): sets the piece lengths.
     fastest: f64,
-    /// max |w| over the check nodes: 0 when A is constant on the segment.
-    pub variation: f64,
 }
 
 /// The equal pieces of a propagation: their starts and their common nodes.
@@ -97,9 +95,8 @@ impl<const N: usize> RankOneSegment<N> {
     /// Chebyshev nodes (to 1e-10 of ‖A0‖).
     pub fn new<M: PeriodicModel<N> + ?Sized>(model: &M, start: f64, end: f64, row: SVector<f64, N>) -> Option<Self> {
         let scale = model.state_scale();
-        let scaled = |a: &SMatrix<f64, N, N>| SMatrix::<f64, N, N>::from_fn(|i, j| a[(i, j)] * scale[j] / scale[i]);
         let a0 = model.system(0.5 * (start + end)).0;
-        let a0_scaled = scaled(&a0);
+        let a0_scaled = scaled(&a0, &scale);
         let row_scaled = row.component_mul(&scale);
         let (lambda, v) = eigen(&a0_scaled)?;
         let v_inv = v.clone().try_inverse()?;
@@ -122,29 +119,24 @@ impl<const N: usize> RankOneSegment<N> {
         }
         let fastest = lambda.iter().map(|l| l.norm()).fold(0.0, f64::max);
         let projector = row_scaled.component_mul(&scale) / row_scaled.norm_squared();
-        RankOneSegment { start, end, scale, a0, projector, row: row_scaled, modes, fastest, variation: 0.0 }
-            .checked(model)
+        RankOneSegment { start, end, scale, a0, projector, row: row_scaled, modes, fastest }.checked(model)
     }
 
     /// The same reference A0 and row used on another segment [start, end] (where A differs from A0
     /// along the row as well: the other side of the pitch point); None if it does not.
     pub fn moved<M: PeriodicModel<N> + ?Sized>(&self, model: &M, start: f64, end: f64) -> Option<Self> {
-        RankOneSegment { start, end, variation: 0.0, ..self.clone() }.checked(model)
+        RankOneSegment { start, end, ..self.clone() }.checked(model)
     }
 
-    /// Self if A(t) − A0 = w nᵀ at the Chebyshev nodes of the segment (to 1e-10 of ‖A0‖), with
-    /// `variation` set to the largest ‖w nᵀ‖ / ‖A0‖ there.
-    fn checked<M: PeriodicModel<N> + ?Sized>(mut self, model: &M) -> Option<Self> {
-        let scale = self.scale;
-        let scaled = |a: &SMatrix<f64, N, N>| SMatrix::<f64, N, N>::from_fn(|i, j| a[(i, j)] * scale[j] / scale[i]);
-        let size = scaled(&self.a0).abs().max();
+    /// Self if A(t) − A0 = w nᵀ at the Chebyshev nodes of the segment (to 1e-10 of ‖A0‖).
+    fn checked<M: PeriodicModel<N> + ?Sized>(self, model: &M) -> Option<Self> {
+        let size = scaled(&self.a0, &self.scale).abs().max();
         for s in &Lobatto::get(8).nodes {
             let a = model.system(self.inside(self.start + s * (self.end - self.start))).0;
             let w = self.column(&a);
-            if (scaled(&(a - self.a0)) - w * self.row.transpose()).abs().max() > 1e-10 * size {
+            if (scaled(&(a - self.a0), &self.scale) - w * self.row.transpose()).abs().max() > 1e-10 * size {
                 return None;
             }
-            self.variation = self.variation.max(w.abs().max() * self.row.abs().max() / size);
         }
         Some(self)
     }
@@ -325,6 +317,11 @@ impl<const N: usize> RankOneSegment<N> {
             q: q.component_mul(&self.scale),
         }
     }
+}
+
+/// D⁻¹ A D: A on the scaled state X / scale.
+fn scaled<const N: usize>(a: &SMatrix<f64, N, N>, scale: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+    SMatrix::from_fn(|i, j| a[(i, j)] * scale[j] / scale[i])
 }
 
 /// Re(a b).
