@@ -101,6 +101,15 @@ pub fn reference<M: PeriodicModel<N> + ?Sized, const N: usize>(
     x0: SVector<f64, N>,
     times: &[f64],
 ) -> Vec<SVector<f64, N>> {
+    reference_by_method(sys, x0, times).0
+}
+
+/// [`reference`] and the method its period was propagated by.
+pub fn reference_by_method<M: PeriodicModel<N> + ?Sized, const N: usize>(
+    sys: &M,
+    x0: SVector<f64, N>,
+    times: &[f64],
+) -> (Vec<SVector<f64, N>>, Method) {
     let period = period_segments(sys);
     let length = sys.period();
     let mut out = Vec::with_capacity(times.len());
@@ -119,7 +128,7 @@ pub fn reference<M: PeriodicModel<N> + ?Sized, const N: usize>(
     while out.len() < times.len() {
         out.push(start);
     }
-    out
+    (out, period.method)
 }
 
 /// The output times of the study: [`SAMPLES_LAST_PERIOD`] equal steps over the last of [`PERIODS`]
@@ -154,13 +163,13 @@ pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<
     let times = study_times(length);
     let mut best = f64::INFINITY;
     let mut reference_states = Vec::new();
+    let mut method = Method::Exact;
     for _ in 0..REPEATS {
         let t0 = Instant::now();
-        reference_states = reference(sys, x0, &times);
+        (reference_states, method) = reference_by_method(sys, x0, &times);
         best = best.min(t0.elapsed().as_secs_f64());
     }
     let scale = sys.state_scale();
-    let method = period_segments(sys).method;
     let mut runs = Vec::new();
     for integrator in Integrator::ALL {
         for rtol in LADDER {

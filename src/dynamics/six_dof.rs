@@ -117,6 +117,16 @@ impl<'a> SixDofSystem<'a> {
         self.mesh.stiffness_at(tp) * d + self.mesh.damping * v
     }
 
+    /// The row of N = k (δ_θ + x_p − x_g) + c (their rates) over the 10 states, for stiffness k.
+    pub fn mesh_force_row(&self, k: f64) -> SVector<f64, STATES> {
+        let mut row = SVector::<f64, STATES>::zeros();
+        for (j, sign) in [(0, 1.0), (1, 1.0), (2, -1.0)] {
+            row[j] = k * sign;
+            row[j + 5] = self.mesh.damping * sign;
+        }
+        row
+    }
+
     /// The natural frequencies (Hz) of the undamped mean system (k = k̄, μ = 0), ascending.
     pub fn natural_frequencies(&self) -> Vec<f64> {
         let m = &self.mesh;
@@ -168,18 +178,12 @@ impl PeriodicModel<STATES> for SixDofSystem<'_> {
     fn system(&self, t: f64) -> (SMatrix<f64, STATES, STATES>, SVector<f64, STATES>) {
         let m = &self.mesh;
         let k = m.stiffness_at(t);
-        let c = m.damping;
         let [f, mu] = m.friction_terms(t);
         let mut a = SMatrix::<f64, STATES, STATES>::zeros();
         for i in 0..5 {
             a[(i, i + 5)] = 1.0;
         }
-        // N = k (q0 + q1 − q2) + c (v0 + v1 − v2): its row over the 10 states.
-        let mut n_row = [0.0; STATES];
-        for (j, s) in [(0, 1.0), (1, 1.0), (2, -1.0)] {
-            n_row[j] = k * s;
-            n_row[j + 5] = c * s;
-        }
+        let n_row = self.mesh_force_row(k);
         // Rows of the accelerations: (coefficient of N, mass) per coordinate.
         let per_n = [
             -(1.0 - f) / m.equivalent_mass,
@@ -221,12 +225,7 @@ impl PeriodicModel<STATES> for SixDofSystem<'_> {
             return None;
         }
         let s = self.mesh.segments[segment];
-        let k = self.mesh.stiffness_at(0.5 * (s.start + s.end));
-        let mut row = SVector::<f64, STATES>::zeros();
-        for (j, sign) in [(0, 1.0), (1, 1.0), (2, -1.0)] {
-            row[j] = k * sign;
-            row[j + 5] = self.mesh.damping * sign;
-        }
+        let row = self.mesh_force_row(self.mesh.stiffness_at(0.5 * (s.start + s.end)));
         Some(row)
     }
 
