@@ -25,22 +25,23 @@
 //! nearly defective A0), or A(t) is found not to vary along n alone, no segment is built and the
 //! caller keeps Magnus.
 
+mod collocation;
+
 use nalgebra::{Complex, SMatrix, SVector};
 
-use super::model::{PeriodicModel, Propagation};
-use crate::numerics::chebyshev::{Lobatto, DEGREES};
-use crate::numerics::dense::{eigen, solve_dense};
+pub use collocation::{MAX_PHASE, PIECE_DEGREE};
+
+use super::model::PeriodicModel;
+use crate::numerics::chebyshev::{clenshaw, Lobatto};
+use crate::numerics::dense::eigen;
 
 type C64 = Complex<f64>;
 
-/// The largest phase 2 ω_max h (rad) a piece of each degree of [`DEGREES`] resolves to ~1e-14
-/// (measured: the integration of cos(w s) on [0, 1]).
-pub const MAX_PHASE: [f64; 6] = [0.6, 6.0, 13.0, 22.0, 42.0, 66.0];
 /// The largest condition number ‖V‖ ‖V⁻¹‖ (Frobenius) of A0's eigenvectors accepted.
 pub const MAX_CONDITION: f64 = 1e6;
-/// The degree of a full piece: the cost of a piece grows as its degree cubed (the dense solve) and
-/// the pieces needed as 1 / [`MAX_PHASE`]; 24 is the cheapest measured.
-pub const PIECE_DEGREE: usize = 24;
+/// How closely (relative to ‖A0‖, scaled) the interpolant of w must reproduce the model between
+/// its nodes to stand in for it.
+pub const INTERPOLATION_TOLERANCE: f64 = 1e-13;
 
 /// One mode of A0 (for a conjugate pair, the member with Im λ > 0 stands for both).
 #[derive(Debug, Clone)]
@@ -55,6 +56,10 @@ struct Mode<const N: usize> {
     n_hat: C64,
     /// Whether the mode enters N at all (|n̂| above rounding).
     drives_mesh: bool,
+    /// b̂ = V⁻¹ b of the segment's constant forcing.
+    forcing: C64,
+    /// For a mode that drives the mesh: ŵ(t) = α φ(t) (0 for the others).
+    alpha: C64,
 }
 
 /// One segment's reference matrix, in modal form, and the constant row along which A varies.
@@ -66,38 +71,64 @@ pub struct RankOneSegment<const N: usize> {
     /// A0 unscaled, and D² n / |D n|², so that the scaled w = D⁻¹ (A − A0) D² n / |D n|².
     a0: SMatrix<f64, N, N>,
     projector: SVector<f64, N>,
+    /// scale_j / scale_i: D⁻¹ A D = A ∘ ratio; and max |D⁻¹ A0 D|.
+    ratio: SMatrix<f64, N, N>,
+    size: f64,
     /// D n: the row in scaled states.
     row: SVector<f64, N>,
+    /// D⁻¹ b: the forcing, constant on the segment.
+    forcing: SVector<f64, N>,
     modes: Vec<Mode<N>>,
+    /// Σ |α_j|² over the modes that drive the mesh.
+    alpha_norm: f64,
+    /// The entries of w not zero at every check node (the accelerations w drives).
+    support: Vec<usize>,
+    /// w(t) on the segment, where a Chebyshev interpolant reproduces it (else the model is
+    /// evaluated at every node).
+    interpolant: Option<ColumnInterpolant>,
     /// max |λ| (1/s): sets the piece lengths.
     fastest: f64,
 }
 
-/// The equal pieces of a propagation: their starts and their common nodes.
-struct PiecePlan {
-    starts: Vec<f64>,
-    nodes: PieceNodes,
+/// w(s) on a segment (s ∈ [0, 1]) through its values at the Chebyshev–Lobatto nodes of a degree,
+/// as Chebyshev series of the entries that are not zero at every node.
+#[derive(Debug, Clone)]
+struct ColumnInterpolant {
+    support: Vec<usize>,
+    /// One Chebyshev series per entry of the support.
+    series: Vec<Vec<f64>>,
 }
 
-/// A piece's nodes: times, S scaled to its length, e^{λ τ_m} per mode.
-struct PieceNodes {
-    tau: Vec<f64>,
-    /// S scaled to the piece, row-major.
-    s: Vec<f64>,
-    /// [m][mode] row-major: e^{λ τ_m} and e^{−λ τ_m}.
-    e: Vec<C64>,
-    back: Vec<C64>,
+impl ColumnInterpolant {
+    fn new<const N: usize>(degree: usize, columns: &[SVector<f64, N>]) -> Self {
+        let support: Vec<usize> = (0..N).filter(|i| columns.iter().any(|c| c[*i] != 0.0)).collect();
+        let nodes = Lobatto::get(degree);
+        let series =
+            support.iter().map(|i| nodes.coefficients(&columns.iter().map(|c| c[*i]).collect::<Vec<_>>())).collect();
+        ColumnInterpolant { support, series }
+    }
+
+    /// w(s).
+    fn at<const N: usize>(&self, s: f64) -> SVector<f64, N> {
+        let mut w = SVector::<f64, N>::zeros();
+        for (i, c) in self.support.iter().zip(&self.series) {
+            w[*i] = clenshaw(c, s);
+        }
+        w
+    }
 }
 
 impl<const N: usize> RankOneSegment<N> {
     /// The segment [start, end] of `model`, whose A(t) varies along `row` only (in unscaled states).
-    /// None when A0 has no well-conditioned eigenbasis or A(t) − A0 is not w nᵀ at the segment's
-    /// Chebyshev nodes (to 1e-10 of ‖A0‖).
+    /// None when A0 has no well-conditioned eigenbasis or [`RankOneSegment::checked`] fails.
     pub fn new<M: PeriodicModel<N> + ?Sized>(model: &M, start: f64, end: f64, row: SVector<f64, N>) -> Option<Self> {
         let scale = model.state_scale();
-        let a0 = model.system(0.5 * (start + end)).0;
-        let a0_scaled = scaled(&a0, &scale);
+        let (a0, b0) = model.system(0.5 * (start + end));
+        let ratio = SMatrix::<f64, N, N>::from_fn(|i, j| scale[j] / scale[i]);
+        let a0_scaled = a0.component_mul(&ratio);
+        let size = a0_scaled.abs().max();
         let row_scaled = row.component_mul(&scale);
+        let forcing = b0.component_div(&scale);
         let (lambda, v) = eigen(&a0_scaled)?;
         let v_inv = v.clone().try_inverse()?;
         if v.norm() * v_inv.norm() > MAX_CONDITION * N as f64 {
@@ -110,7 +141,18 @@ impl<const N: usize> RankOneSegment<N> {
             let n_hat = (0..N).map(|i| vector[i] * row_scaled[i]).sum();
             let weight = if lambda[j].im > 0.0 { 2.0 } else { 1.0 };
             let dual = SVector::<C64, N>::from_fn(|i, _| v_inv[(j, i)]);
-            modes.push(Mode { lambda: lambda[j], weight, vector, dual, n_hat, drives_mesh: true });
+            let b_hat = modal(&dual, &forcing);
+            let zero = C64::default();
+            modes.push(Mode {
+                lambda: lambda[j],
+                weight,
+                vector,
+                dual,
+                n_hat,
+                drives_mesh: true,
+                forcing: b_hat,
+                alpha: zero,
+            });
             j += if weight == 2.0 { 2 } else { 1 };
         }
         let largest = modes.iter().map(|m| m.n_hat.norm() * m.dual.norm()).fold(0.0, f64::max);
@@ -119,7 +161,24 @@ impl<const N: usize> RankOneSegment<N> {
         }
         let fastest = lambda.iter().map(|l| l.norm()).fold(0.0, f64::max);
         let projector = row_scaled.component_mul(&scale) / row_scaled.norm_squared();
-        RankOneSegment { start, end, scale, a0, projector, row: row_scaled, modes, fastest }.checked(model)
+        let interpolant = None;
+        RankOneSegment {
+            start,
+            end,
+            scale,
+            a0,
+            projector,
+            ratio,
+            size,
+            row: row_scaled,
+            forcing,
+            modes,
+            alpha_norm: 0.0,
+            support: Vec::new(),
+            interpolant,
+            fastest,
+        }
+        .checked(model)
     }
 
     /// The same reference A0 and row used on another segment [start, end] (where A differs from A0
@@ -128,17 +187,102 @@ impl<const N: usize> RankOneSegment<N> {
         RankOneSegment { start, end, ..self.clone() }.checked(model)
     }
 
-    /// Self if A(t) − A0 = w nᵀ at the Chebyshev nodes of the segment (to 1e-10 of ‖A0‖).
-    fn checked<M: PeriodicModel<N> + ?Sized>(self, model: &M) -> Option<Self> {
-        let size = scaled(&self.a0, &self.scale).abs().max();
-        for s in &Lobatto::get(8).nodes {
-            let a = model.system(self.inside(self.start + s * (self.end - self.start))).0;
-            let w = self.column(&a);
-            if (scaled(&(a - self.a0), &self.scale) - w * self.row.transpose()).abs().max() > 1e-10 * size {
-                return None;
-            }
-        }
+    /// Self, with the modal direction α of the varying column and its interpolant, if at the
+    /// Chebyshev nodes of the segment (17, or 33 where w needs the finer interpolant)
+    /// A(t) − A0 = w(t) nᵀ (to 1e-10 of ‖A0‖), b(t) is the constant b (to 1e-12), and the part of w
+    /// that drives the mesh keeps one modal direction, ŵ_j(t) = α_j φ(t) (to 1e-9): true of the
+    /// gear models, where w is f(t) times a fixed column on the torsional and line-of-action
+    /// states (μ̄(t) moves only the states off the line of action, which do not feed back into N).
+    /// Then the collocation kernel is the same for every piece of a segment.
+    ///
+    /// w is interpolated at degree 16 where the degree-8 interpolant through every other node
+    /// already reproduces the nodes between to [`INTERPOLATION_TOLERANCE`], else at degree 32
+    /// where the degree-16 one does at the 16 nodes between; else every node evaluates the model.
+    fn checked<M: PeriodicModel<N> + ?Sized>(mut self, model: &M) -> Option<Self> {
+        let coarse: Vec<SVector<f64, N>> =
+            Lobatto::get(16).nodes.iter().map(|s| self.sample(model, *s)).collect::<Option<_>>()?;
+        self.support = (0..N).filter(|i| coarse.iter().any(|c| c[*i] != 0.0)).collect();
+        self.set_direction(&coarse)?;
+        let even: Vec<_> = coarse.iter().step_by(2).copied().collect();
+        let odd: Vec<_> = coarse.iter().skip(1).step_by(2).copied().collect();
+        self.interpolant = if self.reproduces(8, &even, 16, &odd) {
+            Some(ColumnInterpolant::new(16, &coarse))
+        } else {
+            let fine = Lobatto::get(32);
+            let between: Vec<_> =
+                fine.nodes.iter().skip(1).step_by(2).map(|s| self.sample(model, *s)).collect::<Option<_>>()?;
+            self.check_direction(&between)?;
+            self.reproduces(16, &coarse, 32, &between).then(|| {
+                let all: Vec<_> = (0..=32).map(|j| if j % 2 == 0 { coarse[j / 2] } else { between[j / 2] }).collect();
+                ColumnInterpolant::new(32, &all)
+            })
+        };
         Some(self)
+    }
+
+    /// The scaled w at s ∈ [0, 1] of the segment; None where A − A0 is not w nᵀ or b is not the
+    /// segment's constant forcing.
+    fn sample<M: PeriodicModel<N> + ?Sized>(&self, model: &M, s: f64) -> Option<SVector<f64, N>> {
+        let (a, b) = model.system(self.inside(self.start + s * (self.end - self.start)));
+        let w = self.column(&a);
+        let rank_one =
+            ((a - self.a0).component_mul(&self.ratio) - w * self.row.transpose()).abs().max() <= 1e-10 * self.size;
+        let forced = (b.component_div(&self.scale) - self.forcing).abs().max() <= 1e-12 * self.forcing.abs().max();
+        (rank_one && forced).then_some(w)
+    }
+
+    /// α from the largest of `columns` in the modes that drive the mesh; None unless every column
+    /// is along it ([`RankOneSegment::check_direction`]).
+    fn set_direction(&mut self, columns: &[SVector<f64, N>]) -> Option<()> {
+        let norm = |w: &SVector<f64, N>| self.driving_hats(w).iter().map(|c| c.norm_sqr()).sum::<f64>();
+        let largest = columns.iter().max_by(|a, b| norm(a).total_cmp(&norm(b)))?;
+        let alpha = self.driving_hats(largest);
+        self.alpha_norm = alpha.iter().map(|c| c.norm_sqr()).sum();
+        for (m, a) in self.modes.iter_mut().zip(alpha) {
+            m.alpha = a;
+        }
+        self.check_direction(columns)
+    }
+
+    /// Whether the modal columns that drive the mesh are α φ (to 1e-9 of |α|).
+    fn check_direction(&self, columns: &[SVector<f64, N>]) -> Option<()> {
+        columns
+            .iter()
+            .all(|w| {
+                let hats = self.driving_hats(w);
+                let phi = self.direction_share(&hats);
+                let off: f64 = hats.iter().zip(&self.modes).map(|(h, m)| (h - m.alpha * phi).norm_sqr()).sum();
+                off <= 1e-18 * self.alpha_norm
+            })
+            .then_some(())
+    }
+
+    /// ŵ_j = (V⁻¹ w)_j of the modes that drive the mesh, 0 for the others.
+    fn driving_hats(&self, w: &SVector<f64, N>) -> Vec<C64> {
+        self.modes.iter().map(|m| if m.drives_mesh { modal(&m.dual, w) } else { C64::default() }).collect()
+    }
+
+    /// Whether the interpolant of `degree` through `columns` reproduces `between`, the columns at
+    /// the odd nodes of `finer` (= 2 degree), to [`INTERPOLATION_TOLERANCE`] of ‖A0‖.
+    fn reproduces(
+        &self,
+        degree: usize,
+        columns: &[SVector<f64, N>],
+        finer: usize,
+        between: &[SVector<f64, N>],
+    ) -> bool {
+        let interpolant = ColumnInterpolant::new(degree, columns);
+        let size = self.size / self.row.norm();
+        let nodes = Lobatto::get(finer).nodes.iter().skip(1).step_by(2);
+        nodes.zip(between).all(|(s, w)| (interpolant.at::<N>(*s) - w).abs().max() <= INTERPOLATION_TOLERANCE * size)
+    }
+
+    /// φ = Re Σ_j conj(α_j) ŵ_j / Σ |α_j|² from the modal column ŵ of every mode.
+    fn direction_share(&self, hats: &[C64]) -> f64 {
+        if self.alpha_norm == 0.0 {
+            return 0.0;
+        }
+        self.modes.iter().zip(hats).map(|(m, h)| (m.alpha.conj() * h).re).sum::<f64>() / self.alpha_norm
     }
 
     /// t moved just inside the segment: A and b at its ends are one-sided limits.
@@ -151,202 +295,21 @@ impl<const N: usize> RankOneSegment<N> {
     fn column(&self, a: &SMatrix<f64, N, N>) -> SVector<f64, N> {
         ((a - self.a0) * self.projector).component_div(&self.scale)
     }
-
-    /// The propagation from `from` over `h` inside the segment, in equal pieces short enough for
-    /// their degree. (Run in parallel, the pieces gained ~5 %: waking the threads costs about what
-    /// a piece does.)
-    pub fn propagate<M: PeriodicModel<N> + ?Sized>(&self, model: &M, from: f64, h: f64) -> Propagation<N> {
-        let plan = self.plan(from, h);
-        (0..plan.starts.len()).fold(Propagation::identity(), |acc, k| acc.then(&self.piece(model, &plan, k)))
-    }
-
-    /// How [from, from + h] is cut: pieces of at most [`MAX_PHASE`] at [`PIECE_DEGREE`], a single
-    /// piece of the lowest degree that resolves it when shorter.
-    fn plan(&self, from: f64, h: f64) -> PiecePlan {
-        let phase = 2.0 * self.fastest * h;
-        let top = DEGREES.iter().position(|d| *d == PIECE_DEGREE).unwrap_or(DEGREES.len() - 1);
-        let pieces = (phase / MAX_PHASE[top]).ceil().max(1.0) as usize;
-        let degree = DEGREES[MAX_PHASE.iter().position(|p| phase / pieces as f64 <= *p).unwrap_or(top)];
-        let dt = h / pieces as f64;
-        PiecePlan { starts: (0..pieces).map(|k| from + k as f64 * dt).collect(), nodes: self.nodes(degree, dt) }
-    }
-
-    fn nodes(&self, degree: usize, h: f64) -> PieceNodes {
-        let cheb = Lobatto::get(degree);
-        let tau: Vec<f64> = cheb.nodes.iter().map(|x| x * h).collect();
-        let e: Vec<C64> = tau.iter().flat_map(|t| self.modes.iter().map(move |m| (m.lambda * *t).exp())).collect();
-        let back = e.iter().map(|x| x.inv()).collect();
-        let n = tau.len();
-        PieceNodes { s: (0..n * n).map(|x| cheb.integration[(x / n, x % n)] * h).collect(), tau, e, back }
-    }
-
-    /// One piece [a, a + h] by collocation at `nodes`. Complex products are split into real ones
-    /// (Re(p w) = Re p Re w − Im p Im w) on flat row-major arrays whose inner loops run along
-    /// contiguous rows: the systems are small, and a general matrix product's set-up would cost
-    /// more than the arithmetic.
-    fn piece<M: PeriodicModel<N> + ?Sized>(&self, model: &M, plan: &PiecePlan, k: usize) -> Propagation<N> {
-        let (a, nodes) = (plan.starts[k], &plan.nodes);
-        let (count, r) = (nodes.tau.len(), self.modes.len());
-        let s = &nodes.s;
-        let last = count - 1;
-        let driving: Vec<usize> = (0..r).filter(|k| self.modes[*k].drives_mesh).collect();
-        let nd = driving.len();
-        // Per node m and mode k: e^{−λτ_m} ŵ(τ_m) and e^{−λτ_m} b̂(τ_m), the integrands of S.
-        let mut w_hat = vec![C64::default(); count * r];
-        let mut b_hat = vec![C64::default(); count * r];
-        for (m, t) in nodes.tau.iter().enumerate() {
-            let (a_t, b_t) = model.system(self.inside(a + t));
-            let w = self.column(&a_t);
-            let b = b_t.component_div(&self.scale);
-            for (k, mode) in self.modes.iter().enumerate() {
-                // w and b are sparse in the gear models (accelerations only): skip their zeros.
-                let (mut wk, mut bk) = (C64::default(), C64::default());
-                for i in 0..N {
-                    if w[i] != 0.0 {
-                        wk += mode.dual[i] * w[i];
-                    }
-                    if b[i] != 0.0 {
-                        bk += mode.dual[i] * b[i];
-                    }
-                }
-                let back = nodes.back[m * r + k];
-                w_hat[m * r + k] = wk * back;
-                b_hat[m * r + k] = bk * back;
-            }
-        }
-        // Rows 2x, 2x + 1 over the nodes: (Re, Im) of ŵ and b̂ of the x-th driving mode, and
-        // (Re, −Im) of P = weight n̂ e^{λτ} (so that Re(P ŵ) = Σ over both rows).
-        let split = |values: &[C64], sign: f64| -> Vec<f64> {
-            let mut out = vec![0.0; 2 * nd * count];
-            for (x, k) in driving.iter().enumerate() {
-                for m in 0..count {
-                    let v = values[m * r + k];
-                    out[2 * x * count + m] = v.re;
-                    out[(2 * x + 1) * count + m] = sign * v.im;
-                }
-            }
-            out
-        };
-        let (wt, bt) = (split(&w_hat, 1.0), split(&b_hat, 1.0));
-        let p_values: Vec<C64> = (0..count * r)
-            .map(|x| {
-                let mode = &self.modes[x % r];
-                mode.n_hat * nodes.e[x] * mode.weight
-            })
-            .collect();
-        let pt = split(&p_values, -1.0);
-        // I − G with G_im = S_im Re Σ_k P_ik ŵ_k(τ_m); right-hand sides: the free response of every
-        // initial state, Re Σ_k P_ik (V⁻¹)_kc, and the forcing Σ_m S_im Re Σ_k P_ik b̂_k(τ_m).
-        let mut system = vec![0.0; count * count];
-        let mut rhs = vec![0.0; count * (N + 1)];
-        let (mut g, mut f) = (vec![0.0; count], vec![0.0; count]);
-        for i in 0..count {
-            g.fill(0.0);
-            f.fill(0.0);
-            for y in 0..2 * nd {
-                let c = pt[y * count + i];
-                for ((gm, fm), (w, b)) in g
-                    .iter_mut()
-                    .zip(f.iter_mut())
-                    .zip(wt[y * count..(y + 1) * count].iter().zip(&bt[y * count..(y + 1) * count]))
-                {
-                    *gm += c * w;
-                    *fm += c * b;
-                }
-            }
-            let row = &s[i * count..(i + 1) * count];
-            for ((out, sim), gm) in system[i * count..(i + 1) * count].iter_mut().zip(row).zip(&g) {
-                *out = -sim * gm;
-            }
-            system[i * count + i] += 1.0;
-            let out = &mut rhs[i * (N + 1)..(i + 1) * (N + 1)];
-            out[N] = row.iter().zip(&f).map(|(a, b)| a * b).sum();
-            for (x, k) in driving.iter().enumerate() {
-                let (pr, pi) = (pt[2 * x * count + i], pt[(2 * x + 1) * count + i]);
-                for (o, d) in out[..N].iter_mut().zip(self.modes[*k].dual.iter()) {
-                    *o += pr * d.re + pi * d.im;
-                }
-            }
-        }
-        // Initial states that do not reach N (the OLOA states of the gear models) leave it at 0:
-        // only the other columns are solved for.
-        let size = rhs.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let live: Vec<usize> =
-            (0..=N).filter(|c| (0..count).any(|i| rhs[i * (N + 1) + c].abs() > 1e-15 * size)).collect();
-        let compact: Vec<f64> =
-            (0..count).flat_map(|i| live.iter().map(move |c| (i, *c))).map(|(i, c)| rhs[i * (N + 1) + c]).collect();
-        let solved = solve_dense(system, count, compact, live.len());
-        let mut mesh = vec![0.0; count * (N + 1)];
-        for i in 0..count {
-            for (x, c) in live.iter().enumerate() {
-                mesh[i * (N + 1) + c] = solved[i * live.len() + x];
-            }
-        }
-        // Every mode at the end: z(h) = e^{λh} (z(0) + Σ_m S_Mm (e^{−λτ_m} ŵ N + e^{−λτ_m} b̂)).
-        let ends = &s[last * count..];
-        let mut x = SMatrix::<f64, N, N>::zeros();
-        let mut q = SVector::<f64, N>::zeros();
-        let (mut zr, mut zi) = (vec![0.0; N + 1], vec![0.0; N + 1]);
-        for (k, mode) in self.modes.iter().enumerate() {
-            zr.fill(0.0);
-            zi.fill(0.0);
-            let mut forced = C64::default();
-            for m in 0..count {
-                let alpha = w_hat[m * r + k] * ends[m];
-                forced += b_hat[m * r + k] * ends[m];
-                for ((a, b), n) in zr.iter_mut().zip(zi.iter_mut()).zip(&mesh[m * (N + 1)..(m + 1) * (N + 1)]) {
-                    *a += alpha.re * n;
-                    *b += alpha.im * n;
-                }
-            }
-            let end = nodes.e[last * r + k] * mode.weight;
-            for c in 0..=N {
-                let z = (C64::new(zr[c], zi[c]) + if c < N { mode.dual[c] } else { forced }) * end;
-                for i in 0..N {
-                    let value = re_mul(mode.vector[i], z);
-                    if c < N {
-                        x[(i, c)] += value;
-                    } else {
-                        q[i] += value;
-                    }
-                }
-            }
-        }
-        Propagation {
-            phi: SMatrix::from_fn(|i, j| x[(i, j)] * self.scale[i] / self.scale[j]),
-            q: q.component_mul(&self.scale),
-        }
-    }
 }
 
-/// D⁻¹ A D: A on the scaled state X / scale.
-fn scaled<const N: usize>(a: &SMatrix<f64, N, N>, scale: &SVector<f64, N>) -> SMatrix<f64, N, N> {
-    SMatrix::from_fn(|i, j| a[(i, j)] * scale[j] / scale[i])
+/// dual · w for a real w, skipping its zeros (w and b are sparse in the gear models: accelerations
+/// only).
+fn modal<const N: usize>(dual: &SVector<C64, N>, w: &SVector<f64, N>) -> C64 {
+    let mut sum = C64::default();
+    for i in 0..N {
+        if w[i] != 0.0 {
+            sum += dual[i] * w[i];
+        }
+    }
+    sum
 }
 
 /// Re(a b).
 fn re_mul(a: C64, b: C64) -> f64 {
     a.re * b.re - a.im * b.im
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Each degree integrates cos(w s) on [0, 1] to 1e-13 (absolute, at every node) for w up to its
-    /// [`MAX_PHASE`]: the resolution the piece lengths are chosen by.
-    #[test]
-    fn every_degree_resolves_its_phase() {
-        for (degree, w) in DEGREES.iter().zip(MAX_PHASE) {
-            let c = Lobatto::get(*degree);
-            for (i, s) in c.nodes.iter().enumerate() {
-                let v: f64 = c.nodes.iter().enumerate().map(|(m, x)| c.integration[(i, m)] * (w * x).cos()).sum();
-                assert!(
-                    (v - (w * s).sin() / w).abs() < 1e-13,
-                    "degree {degree}, w {w}: {:e}",
-                    (v - (w * s).sin() / w).abs()
-                );
-            }
-        }
-    }
 }

@@ -1,0 +1,276 @@
+//! The pieces of a [`RankOneSegment`]'s propagation: the Chebyshev–Lobatto collocation of the
+//! scalar Volterra equation for the mesh force N on each piece, and every mode's end state
+//! (module docs of [`super`]).
+
+use nalgebra::{SMatrix, SVector};
+
+use super::{re_mul, RankOneSegment, C64};
+use crate::dynamics::model::{PeriodicModel, Propagation};
+use crate::numerics::chebyshev::{Lobatto, DEGREES};
+use crate::numerics::dense::Augmented;
+
+/// The largest phase 2 ω_max h (rad) a piece of each degree of [`DEGREES`] resolves to ~1e-14
+/// (measured: the integration of cos(w s) on [0, 1]).
+pub const MAX_PHASE: [f64; 6] = [0.6, 6.0, 13.0, 22.0, 42.0, 66.0];
+/// The degree of a full piece: the cost of a piece grows as its degree cubed (the dense solve) and
+/// the pieces needed as 1 / [`MAX_PHASE`]; 24 is the cheapest measured.
+pub const PIECE_DEGREE: usize = 24;
+
+/// The equal pieces of a propagation: their starts and their common nodes.
+struct PiecePlan<const N: usize> {
+    starts: Vec<f64>,
+    nodes: PieceNodes<N>,
+}
+
+/// What all pieces of one length share: the nodes, the collocation kernel, the free response and
+/// the quadrature weights of the end state (mode k at node m: index m r + k).
+struct PieceNodes<const N: usize> {
+    tau: Vec<f64>,
+    /// M_im = S_im Re Σ_j weight n̂_j α_j e^{λ_j (τ_i − τ_m)} over the modes driving the mesh:
+    /// the system of a piece is I − M diag(φ).
+    kernel: Vec<f64>,
+    /// The right-hand sides, count × live columns: Re Σ_j weight n̂_j e^{λ_j τ_i} (V⁻¹)_jc for the
+    /// unit initial states that reach N, and the free response to the forcing (column N).
+    free: Vec<f64>,
+    /// The columns (0..N initial states, N the forcing) that reach N.
+    live: Vec<usize>,
+    /// S_Mm e^{−λ_k τ_m}: the end state's quadrature of e^{−λσ} ŵ N.
+    ends: Vec<C64>,
+    /// The piece's map without the variation (A0 and the forcing alone), scaled states.
+    free_map: Propagation<N>,
+    /// weight e^{λ_k h} v_k per mode, (Re, Im): turns the modes' end corrections into states.
+    end_vectors: Vec<[SVector<f64, N>; 2]>,
+}
+
+/// The buffers one propagation's pieces share.
+struct Workspace {
+    system: Augmented,
+    /// S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) at k count + m, and N at x count + m (live column x).
+    weights_re: Vec<f64>,
+    weights_im: Vec<f64>,
+    mesh: Vec<f64>,
+    phi: Vec<f64>,
+    /// Σ_m S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) N_c(τ_m): mode k, live column x at k · live + x.
+    z_re: Vec<f64>,
+    z_im: Vec<f64>,
+}
+
+impl<const N: usize> RankOneSegment<N> {
+    /// The propagation from `from` over `h` inside the segment, in equal pieces short enough for
+    /// their degree. (Run in parallel, the pieces gained ~5 %: waking the threads costs about what
+    /// a piece does.)
+    pub fn propagate<M: PeriodicModel<N> + ?Sized>(&self, model: &M, from: f64, h: f64) -> Propagation<N> {
+        let plan = self.plan(from, h);
+        let (count, r, live) = (plan.nodes.tau.len(), self.modes.len(), plan.nodes.live.len());
+        let mut ws = Workspace {
+            system: Augmented::zeros(count, live),
+            weights_re: vec![0.0; count * r],
+            weights_im: vec![0.0; count * r],
+            mesh: vec![0.0; count * live],
+            phi: vec![0.0; count],
+            z_re: vec![0.0; r * live],
+            z_im: vec![0.0; r * live],
+        };
+        let scaled = (0..plan.starts.len())
+            .fold(Propagation::identity(), |acc, k| acc.then(&self.piece(model, &plan, k, &mut ws)));
+        Propagation {
+            phi: SMatrix::from_fn(|i, j| scaled.phi[(i, j)] * self.scale[i] / self.scale[j]),
+            q: scaled.q.component_mul(&self.scale),
+        }
+    }
+
+    /// How [from, from + h] is cut: pieces of at most [`MAX_PHASE`] at [`PIECE_DEGREE`], a single
+    /// piece of the lowest degree that resolves it when shorter.
+    fn plan(&self, from: f64, h: f64) -> PiecePlan<N> {
+        let phase = 2.0 * self.fastest * h;
+        let top = DEGREES.iter().position(|d| *d == PIECE_DEGREE).unwrap_or(DEGREES.len() - 1);
+        let pieces = (phase / MAX_PHASE[top]).ceil().max(1.0) as usize;
+        let degree = DEGREES[MAX_PHASE.iter().position(|p| phase / pieces as f64 <= *p).unwrap_or(top)];
+        let dt = h / pieces as f64;
+        PiecePlan { starts: (0..pieces).map(|k| from + k as f64 * dt).collect(), nodes: self.nodes(degree, dt) }
+    }
+
+    /// The nodes, kernel, free response and end weights of a piece of length h at `degree`.
+    fn nodes(&self, degree: usize, h: f64) -> PieceNodes<N> {
+        let cheb = Lobatto::get(degree);
+        let (count, r) = (degree + 1, self.modes.len());
+        let tau: Vec<f64> = cheb.nodes.iter().map(|x| x * h).collect();
+        // S scaled to the piece, row-major (the transpose's column-major storage).
+        let s: Vec<f64> = cheb.integration.transpose().as_slice().iter().map(|x| x * h).collect();
+        let e: Vec<C64> = tau.iter().flat_map(|t| self.modes.iter().map(move |m| (m.lambda * *t).exp())).collect();
+        let back: Vec<C64> = e.iter().map(|x| x.inv()).collect();
+        let driving: Vec<usize> = (0..r).filter(|k| self.modes[*k].drives_mesh).collect();
+        // weight n̂ e^{λ τ_i} per node and driving mode: the mesh force's share of each mode.
+        let p: Vec<C64> = (0..count)
+            .flat_map(|i| driving.iter().map(move |k| (i, *k)))
+            .map(|(i, k)| self.modes[k].n_hat * self.modes[k].weight * e[i * r + k])
+            .collect();
+        let nd = driving.len();
+        // e^{−λ τ_m} of the driving modes, (Re, Im) along m.
+        let back_re: Vec<f64> = driving.iter().flat_map(|k| back.iter().skip(*k).step_by(r).map(|b| b.re)).collect();
+        let back_im: Vec<f64> = driving.iter().flat_map(|k| back.iter().skip(*k).step_by(r).map(|b| b.im)).collect();
+        let mut kernel = vec![0.0; count * count];
+        let mut all = vec![0.0; count * (N + 1)];
+        for i in 0..count {
+            let row = &mut kernel[i * count..(i + 1) * count];
+            for (x, k) in driving.iter().enumerate() {
+                let pa = p[i * nd + x] * self.modes[*k].alpha;
+                let (re, im) = (&back_re[x * count..(x + 1) * count], &back_im[x * count..(x + 1) * count]);
+                for ((out, br), bi) in row.iter_mut().zip(re).zip(im) {
+                    *out += pa.re * br - pa.im * bi;
+                }
+            }
+            for (out, s) in row.iter_mut().zip(&s[i * count..(i + 1) * count]) {
+                *out *= s;
+            }
+            for (x, k) in driving.iter().enumerate() {
+                let mode = &self.modes[*k];
+                let integral: C64 = (0..count).map(|m| back[m * r + k] * s[i * count + m]).sum();
+                for c in 0..N {
+                    all[i * (N + 1) + c] += re_mul(p[i * nd + x], mode.dual[c]);
+                }
+                all[i * (N + 1) + N] += re_mul(p[i * nd + x] * mode.forcing, integral);
+            }
+        }
+        // Initial states that do not reach N (the OLOA states of the gear models) leave it at 0:
+        // only the other columns are solved for.
+        let size = all.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let live: Vec<usize> =
+            (0..=N).filter(|c| (0..count).any(|i| all[i * (N + 1) + c].abs() > 1e-15 * size)).collect();
+        let free =
+            (0..count).flat_map(|i| live.iter().map(move |c| (i, *c))).map(|(i, c)| all[i * (N + 1) + c]).collect();
+        let last = count - 1;
+        let ends: Vec<C64> = (0..count * r).map(|x| back[x] * s[last * count + x / r]).collect();
+        let mut free_map = Propagation::<N> { phi: SMatrix::zeros(), q: SVector::zeros() };
+        let mut end_vectors = Vec::with_capacity(r);
+        for (k, mode) in self.modes.iter().enumerate() {
+            let v = mode.vector * (e[last * r + k] * mode.weight);
+            let forced = mode.forcing * (0..count).map(|m| ends[m * r + k]).sum::<C64>();
+            for i in 0..N {
+                for c in 0..N {
+                    free_map.phi[(i, c)] += re_mul(v[i], mode.dual[c]);
+                }
+                free_map.q[i] += re_mul(v[i], forced);
+            }
+            end_vectors.push([v.map(|x| x.re), v.map(|x| x.im)]);
+        }
+        PieceNodes { tau, kernel, free, live, ends, free_map, end_vectors }
+    }
+
+    /// One piece [a, a + h] (scaled states): φ at the nodes, the collocation system
+    /// (I − M diag φ) N = R, then every mode's end state
+    /// z(h) = e^{λh} (z(0) + b̂ Σ_m S_Mm e^{−λτ_m} + Σ_m S_Mm e^{−λτ_m} ŵ(τ_m) N(τ_m)):
+    /// the map of A0 and b alone ([`PieceNodes::free_map`]) plus the last sum's share.
+    fn piece<M: PeriodicModel<N> + ?Sized>(
+        &self,
+        model: &M,
+        plan: &PiecePlan<N>,
+        k: usize,
+        ws: &mut Workspace,
+    ) -> Propagation<N> {
+        self.variation_at_nodes(model, plan.starts[k], &plan.nodes, ws);
+        Self::assemble(&plan.nodes, ws);
+        ws.system.solve();
+        Self::end_map(&plan.nodes, ws)
+    }
+
+    /// φ and S_Mm e^{−λ_k τ_m} ŵ_k at the nodes of the piece from `a`.
+    #[inline(never)]
+    fn variation_at_nodes<M: PeriodicModel<N> + ?Sized>(
+        &self,
+        model: &M,
+        a: f64,
+        nodes: &PieceNodes<N>,
+        ws: &mut Workspace,
+    ) {
+        let (count, r) = (nodes.tau.len(), self.modes.len());
+        for (m, t) in nodes.tau.iter().enumerate() {
+            let w = match &self.interpolant {
+                Some(p) => p.at(((a + t - self.start) / (self.end - self.start)).clamp(0.0, 1.0)),
+                None => self.column(&model.system(self.inside(a + t)).0),
+            };
+            let mut share = 0.0;
+            for (k, mode) in self.modes.iter().enumerate() {
+                let hat: C64 = self.support.iter().map(|i| mode.dual[*i] * w[*i]).sum();
+                share += (mode.alpha.conj() * hat).re;
+                let weight = nodes.ends[m * r + k] * hat;
+                ws.weights_re[k * count + m] = weight.re;
+                ws.weights_im[k * count + m] = weight.im;
+            }
+            ws.phi[m] = if self.alpha_norm == 0.0 { 0.0 } else { share / self.alpha_norm };
+        }
+    }
+
+    /// [I − M diag φ | R].
+    #[inline(never)]
+    fn assemble(nodes: &PieceNodes<N>, ws: &mut Workspace) {
+        let (count, live) = (nodes.tau.len(), nodes.live.len());
+        let offset = ws.system.b_offset();
+        for i in 0..count {
+            let row = ws.system.row_mut(i);
+            for ((out, kernel), phi) in row.iter_mut().zip(&nodes.kernel[i * count..(i + 1) * count]).zip(&ws.phi) {
+                *out = -kernel * phi;
+            }
+            row[count..offset].fill(0.0);
+            row[i] += 1.0;
+            row[offset..offset + live].copy_from_slice(&nodes.free[i * live..(i + 1) * live]);
+            row[offset + live..].fill(0.0);
+        }
+    }
+
+    /// The piece's map from the solved N: the free map plus every mode's end correction.
+    #[inline(never)]
+    fn end_map(nodes: &PieceNodes<N>, ws: &mut Workspace) -> Propagation<N> {
+        let (count, live) = (nodes.tau.len(), nodes.live.len());
+        let r = nodes.end_vectors.len();
+        for m in 0..count {
+            for (x, n) in ws.system.x_row(m).iter().enumerate() {
+                ws.mesh[x * count + m] = *n;
+            }
+        }
+        for k in 0..r {
+            let (re, im) = (&ws.weights_re[k * count..(k + 1) * count], &ws.weights_im[k * count..(k + 1) * count]);
+            for x in 0..live {
+                let n = &ws.mesh[x * count..(x + 1) * count];
+                ws.z_re[k * live + x] = re.iter().zip(n).map(|(a, b)| a * b).sum();
+                ws.z_im[k * live + x] = im.iter().zip(n).map(|(a, b)| a * b).sum();
+            }
+        }
+        let mut map = nodes.free_map;
+        for (x, c) in nodes.live.iter().enumerate() {
+            let mut column = SVector::<f64, N>::zeros();
+            for (k, [v_re, v_im]) in nodes.end_vectors.iter().enumerate() {
+                column += v_re * ws.z_re[k * live + x] - v_im * ws.z_im[k * live + x];
+            }
+            if *c < N {
+                let mut target = map.phi.column_mut(*c);
+                target += column;
+            } else {
+                map.q += column;
+            }
+        }
+        map
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each degree integrates cos(w s) on [0, 1] to 1e-13 (absolute, at every node) for w up to its
+    /// [`MAX_PHASE`]: the resolution the piece lengths are chosen by.
+    #[test]
+    fn every_degree_resolves_its_phase() {
+        for (degree, w) in DEGREES.iter().zip(MAX_PHASE) {
+            let c = Lobatto::get(*degree);
+            for (i, s) in c.nodes.iter().enumerate() {
+                let v: f64 = c.nodes.iter().enumerate().map(|(m, x)| c.integration[(i, m)] * (w * x).cos()).sum();
+                assert!(
+                    (v - (w * s).sin() / w).abs() < 1e-13,
+                    "degree {degree}, w {w}: {:e}",
+                    (v - (w * s).sin() / w).abs()
+                );
+            }
+        }
+    }
+}
