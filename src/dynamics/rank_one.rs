@@ -32,7 +32,7 @@ use nalgebra::{Complex, SMatrix, SVector};
 pub use collocation::{MAX_PHASE, PIECE_DEGREE};
 
 use super::model::PeriodicModel;
-use crate::numerics::chebyshev::{clenshaw, Lobatto};
+use crate::numerics::chebyshev::{clenshaw, clenshaw_many, Lobatto};
 use crate::numerics::dense::eigen;
 
 type C64 = Complex<f64>;
@@ -106,6 +106,13 @@ impl ColumnInterpolant {
         let series =
             support.iter().map(|i| nodes.coefficients(&columns.iter().map(|c| c[*i]).collect::<Vec<_>>())).collect();
         ColumnInterpolant { support, series }
+    }
+
+    /// The support's entries of w at the points `s`: entry x at x · len + m.
+    fn at_points(&self, s: &[f64], out: &mut [f64]) {
+        for (c, out) in self.series.iter().zip(out.chunks_exact_mut(s.len())) {
+            clenshaw_many(c, s, out);
+        }
     }
 
     /// w(s).
@@ -225,8 +232,13 @@ impl<const N: usize> RankOneSegment<N> {
     fn sample<M: PeriodicModel<N> + ?Sized>(&self, model: &M, s: f64) -> Option<SVector<f64, N>> {
         let (a, b) = model.system(self.inside(self.start + s * (self.end - self.start)));
         let w = self.column(&a);
-        let rank_one =
-            ((a - self.a0).component_mul(&self.ratio) - w * self.row.transpose()).abs().max() <= 1e-10 * self.size;
+        let mut off = 0.0f64;
+        for j in 0..N {
+            for i in 0..N {
+                off = off.max(((a[(i, j)] - self.a0[(i, j)]) * self.ratio[(i, j)] - w[i] * self.row[j]).abs());
+            }
+        }
+        let rank_one = off <= 1e-10 * self.size;
         let forced = (b.component_div(&self.scale) - self.forcing).abs().max() <= 1e-12 * self.forcing.abs().max();
         (rank_one && forced).then_some(w)
     }
@@ -234,27 +246,25 @@ impl<const N: usize> RankOneSegment<N> {
     /// α from the largest of `columns` in the modes that drive the mesh; None unless every column
     /// is along it ([`RankOneSegment::check_direction`]).
     fn set_direction(&mut self, columns: &[SVector<f64, N>]) -> Option<()> {
-        let norm = |w: &SVector<f64, N>| self.driving_hats(w).iter().map(|c| c.norm_sqr()).sum::<f64>();
-        let largest = columns.iter().max_by(|a, b| norm(a).total_cmp(&norm(b)))?;
-        let alpha = self.driving_hats(largest);
-        self.alpha_norm = alpha.iter().map(|c| c.norm_sqr()).sum();
-        for (m, a) in self.modes.iter_mut().zip(alpha) {
-            m.alpha = a;
+        let hats: Vec<Vec<C64>> = columns.iter().map(|w| self.driving_hats(w)).collect();
+        let norm = |h: &Vec<C64>| h.iter().map(|c| c.norm_sqr()).sum::<f64>();
+        let largest = hats.iter().max_by(|a, b| norm(a).total_cmp(&norm(b)))?;
+        self.alpha_norm = norm(largest);
+        for (m, a) in self.modes.iter_mut().zip(largest) {
+            m.alpha = *a;
         }
-        self.check_direction(columns)
+        hats.iter().all(|h| self.along_direction(h)).then_some(())
     }
 
     /// Whether the modal columns that drive the mesh are α φ (to 1e-9 of |α|).
     fn check_direction(&self, columns: &[SVector<f64, N>]) -> Option<()> {
-        columns
-            .iter()
-            .all(|w| {
-                let hats = self.driving_hats(w);
-                let phi = self.direction_share(&hats);
-                let off: f64 = hats.iter().zip(&self.modes).map(|(h, m)| (h - m.alpha * phi).norm_sqr()).sum();
-                off <= 1e-18 * self.alpha_norm
-            })
-            .then_some(())
+        columns.iter().all(|w| self.along_direction(&self.driving_hats(w))).then_some(())
+    }
+
+    fn along_direction(&self, hats: &[C64]) -> bool {
+        let phi = self.direction_share(hats);
+        let off: f64 = hats.iter().zip(&self.modes).map(|(h, m)| (h - m.alpha * phi).norm_sqr()).sum();
+        off <= 1e-18 * self.alpha_norm
     }
 
     /// ŵ_j = (V⁻¹ w)_j of the modes that drive the mesh, 0 for the others.
@@ -285,9 +295,12 @@ impl<const N: usize> RankOneSegment<N> {
         self.modes.iter().zip(hats).map(|(m, h)| (m.alpha.conj() * h).re).sum::<f64>() / self.alpha_norm
     }
 
-    /// t moved just inside the segment: A and b at its ends are one-sided limits.
+    /// t moved just inside the segment: A and b at its ends are one-sided limits. The step is
+    /// 1e-14 of the segment (at least 8 rounding units of t): A varies by ~1e-14 of its change
+    /// over it, below what the interpolant of w is held to.
     fn inside(&self, t: f64) -> f64 {
-        let d = 1e-12 * (self.end - self.start);
+        let h = self.end - self.start;
+        let d = (1e-14 * h).max(8.0 * f64::EPSILON * self.start.abs().max(self.end.abs())).min(0.25 * h);
         t.clamp(self.start + d, self.end - d)
     }
 

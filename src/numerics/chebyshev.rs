@@ -112,6 +112,26 @@ pub fn clenshaw(coefficients: &[f64], s: f64) -> f64 {
     coefficients[0] + x * b1 - b2
 }
 
+/// [`clenshaw`] at many points at once, `out[m]` = the sum at `s[m]`: the recurrences of 16 points
+/// run side by side, so that neither waits on the other's last step.
+pub fn clenshaw_many(coefficients: &[f64], s: &[f64], out: &mut [f64]) {
+    const LANES: usize = 16;
+    for (points, out) in s.chunks(LANES).zip(out.chunks_mut(LANES)) {
+        let (mut x, mut b1, mut b2) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+        for (x, s) in x.iter_mut().zip(points) {
+            *x = 2.0 * s - 1.0;
+        }
+        for c in coefficients[1..].iter().rev() {
+            for l in 0..LANES {
+                (b1[l], b2[l]) = (c + 2.0 * x[l] * b1[l] - b2[l], b1[l]);
+            }
+        }
+        for (l, out) in out.iter_mut().enumerate() {
+            *out = coefficients[0] + x[l] * b1[l] - b2[l];
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -129,6 +149,9 @@ mod tests {
             let size = c.nodes.iter().fold(1.0f64, |acc, s| acc.max(p(*s).abs()));
             for s in [0.0, 0.013, 0.25, 0.5, 0.62, 0.999, 1.0] {
                 assert!((clenshaw(&a, s) - p(s)).abs() < 1e-13 * size, "M {m} s {s}");
+                let mut many = [0.0; 20];
+                clenshaw_many(&a, &[s; 20], &mut many);
+                assert!(many.iter().all(|v| *v == clenshaw(&a, s)), "M {m} s {s}: many");
                 if m >= 24 {
                     assert!((clenshaw(&b, s) - q(s)).abs() < 1e-13, "M {m} s {s}: sin");
                 }

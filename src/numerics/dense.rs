@@ -141,12 +141,12 @@ impl Augmented {
                 let (low, high) = self.data.split_at_mut(p * w);
                 low[k * w..(k + 1) * w].swap_with_slice(&mut high[..w]);
             }
-            let pivot = at(&self.data, k, k);
+            let inverse = 1.0 / at(&self.data, k, k);
             let first = (k + 1) / 4;
             let (top, bottom) = self.data.split_at_mut((k + 1) * w);
             let pivot_row = &top[k * w + first..(k + 1) * w];
             for row in bottom.chunks_exact_mut(w) {
-                let f = row[k / 4][k % 4] / pivot;
+                let f = row[k / 4][k % 4] * inverse;
                 if f != 0.0 {
                     update(&mut row[first..], pivot_row, f);
                 }

@@ -49,6 +49,9 @@ struct Workspace {
     weights_re: Vec<f64>,
     weights_im: Vec<f64>,
     mesh: Vec<f64>,
+    /// The nodes as fractions of the segment, and the interpolated entries of w there.
+    points: Vec<f64>,
+    columns: Vec<f64>,
     phi: Vec<f64>,
     /// Σ_m S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) N_c(τ_m): mode k, live column x at k · live + x.
     z_re: Vec<f64>,
@@ -67,6 +70,8 @@ impl<const N: usize> RankOneSegment<N> {
             weights_re: vec![0.0; count * r],
             weights_im: vec![0.0; count * r],
             mesh: vec![0.0; count * live],
+            points: vec![0.0; count],
+            columns: vec![0.0; count * self.interpolant.as_ref().map_or(0, |p| p.support.len())],
             phi: vec![0.0; count],
             z_re: vec![0.0; r * live],
             z_im: vec![0.0; r * live],
@@ -125,7 +130,12 @@ impl<const N: usize> RankOneSegment<N> {
             }
             for (x, k) in driving.iter().enumerate() {
                 let mode = &self.modes[*k];
-                let integral: C64 = (0..count).map(|m| back[m * r + k] * s[i * count + m]).sum();
+                let s_row = &s[i * count..(i + 1) * count];
+                let (re, im) = (&back_re[x * count..(x + 1) * count], &back_im[x * count..(x + 1) * count]);
+                let integral = C64::new(
+                    re.iter().zip(s_row).map(|(a, b)| a * b).sum(),
+                    im.iter().zip(s_row).map(|(a, b)| a * b).sum(),
+                );
                 for c in 0..N {
                     all[i * (N + 1) + c] += re_mul(p[i * nd + x], mode.dual[c]);
                 }
@@ -175,7 +185,6 @@ impl<const N: usize> RankOneSegment<N> {
     }
 
     /// φ and S_Mm e^{−λ_k τ_m} ŵ_k at the nodes of the piece from `a`.
-    #[inline(never)]
     fn variation_at_nodes<M: PeriodicModel<N> + ?Sized>(
         &self,
         model: &M,
@@ -184,9 +193,21 @@ impl<const N: usize> RankOneSegment<N> {
         ws: &mut Workspace,
     ) {
         let (count, r) = (nodes.tau.len(), self.modes.len());
+        if let Some(p) = &self.interpolant {
+            for (s, t) in ws.points.iter_mut().zip(&nodes.tau) {
+                *s = ((a + t - self.start) / (self.end - self.start)).clamp(0.0, 1.0);
+            }
+            p.at_points(&ws.points, &mut ws.columns);
+        }
         for (m, t) in nodes.tau.iter().enumerate() {
             let w = match &self.interpolant {
-                Some(p) => p.at(((a + t - self.start) / (self.end - self.start)).clamp(0.0, 1.0)),
+                Some(p) => {
+                    let mut w = SVector::<f64, N>::zeros();
+                    for (x, i) in p.support.iter().enumerate() {
+                        w[*i] = ws.columns[x * count + m];
+                    }
+                    w
+                }
                 None => self.column(&model.system(self.inside(a + t)).0),
             };
             let mut share = 0.0;
@@ -202,7 +223,6 @@ impl<const N: usize> RankOneSegment<N> {
     }
 
     /// [I − M diag φ | R].
-    #[inline(never)]
     fn assemble(nodes: &PieceNodes<N>, ws: &mut Workspace) {
         let (count, live) = (nodes.tau.len(), nodes.live.len());
         let offset = ws.system.b_offset();
@@ -219,7 +239,6 @@ impl<const N: usize> RankOneSegment<N> {
     }
 
     /// The piece's map from the solved N: the free map plus every mode's end correction.
-    #[inline(never)]
     fn end_map(nodes: &PieceNodes<N>, ws: &mut Workspace) -> Propagation<N> {
         let (count, live) = (nodes.tau.len(), nodes.live.len());
         let r = nodes.end_vectors.len();
