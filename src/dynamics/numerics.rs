@@ -104,7 +104,7 @@ pub fn reference<M: PeriodicModel<N> + ?Sized, const N: usize>(
     reference_by_method(sys, x0, times).0
 }
 
-/// [`reference`] and the method its period was propagated by.
+/// [`reference()`] and the method its period was propagated by.
 pub fn reference_by_method<M: PeriodicModel<N> + ?Sized, const N: usize>(
     sys: &M,
     x0: SVector<f64, N>,

@@ -20,6 +20,13 @@
 //! [`MAX_PHASE`] radians of that at degree [`PIECE_DEGREE`] (resolved to ~1e-14, measured and tested);
 //! a shorter span takes the lowest degree that resolves it.
 //!
+//! Three structures, checked at the segment's Chebyshev nodes when it is built, make a
+//! piece cheap: the mesh-driving part of ŵ keeps one modal direction, ŵ_j(t) = α_j φ(t), so that
+//! G = M diag φ(τ_m) with M_im = S_im Re Σ_j n̂_j α_j e^{λ_j (τ_i − τ_m)} and R the same for every
+//! piece of a segment; b is constant; and w(t) is a Chebyshev series of the segment where one
+//! reproduces it (else the model is evaluated at every node). The collocation systems are solved by
+//! [`crate::numerics::dense::Augmented`].
+//!
 //! Everything runs on the scaled state X / scale (displacements and velocities of one size) so that V
 //! is well conditioned; where A0's eigenvectors are not (cond V > [`MAX_CONDITION`], a defective or
 //! nearly defective A0), or A(t) is found not to vary along n alone, no segment is built and the
@@ -127,7 +134,7 @@ impl ColumnInterpolant {
 
 impl<const N: usize> RankOneSegment<N> {
     /// The segment [start, end] of `model`, whose A(t) varies along `row` only (in unscaled states).
-    /// None when A0 has no well-conditioned eigenbasis or [`RankOneSegment::checked`] fails.
+    /// None when A0 has no well-conditioned eigenbasis or the structures of the module docs fail.
     pub fn new<M: PeriodicModel<N> + ?Sized>(model: &M, start: f64, end: f64, row: SVector<f64, N>) -> Option<Self> {
         let scale = model.state_scale();
         let (a0, b0) = model.system(0.5 * (start + end));
