@@ -155,18 +155,9 @@ impl<const N: usize> RankOneSegment<N> {
             let n_hat = (0..N).map(|i| vector[i] * row_scaled[i]).sum();
             let weight = if lambda[j].im > 0.0 { 2.0 } else { 1.0 };
             let dual = SVector::<C64, N>::from_fn(|i, _| v_inv[(j, i)]);
-            let b_hat = modal(&dual, &forcing);
-            let zero = C64::default();
-            modes.push(Mode {
-                lambda: lambda[j],
-                weight,
-                vector,
-                dual,
-                n_hat,
-                drives_mesh: true,
-                forcing: b_hat,
-                alpha: zero,
-            });
+            let forcing = modal(&dual, &forcing);
+            let alpha = C64::default();
+            modes.push(Mode { lambda: lambda[j], weight, vector, dual, n_hat, drives_mesh: true, forcing, alpha });
             j += if weight == 2.0 { 2 } else { 1 };
         }
         let largest = modes.iter().map(|m| m.n_hat.norm() * m.dual.norm()).fold(0.0, f64::max);
@@ -175,7 +166,6 @@ impl<const N: usize> RankOneSegment<N> {
         }
         let fastest = lambda.iter().map(|l| l.norm()).fold(0.0, f64::max);
         let projector = row_scaled.component_mul(&scale) / row_scaled.norm_squared();
-        let interpolant = None;
         RankOneSegment {
             start,
             end,
@@ -189,7 +179,7 @@ impl<const N: usize> RankOneSegment<N> {
             modes,
             alpha_norm: 0.0,
             support: Vec::new(),
-            interpolant,
+            interpolant: None,
             fastest,
         }
         .checked(model)
