@@ -74,24 +74,6 @@ impl Augmented {
         4 * self.a_blocks
     }
 
-    /// A_ij.
-    pub fn a_mut(&mut self, i: usize, j: usize) -> &mut f64 {
-        &mut self.data[i * self.row_blocks + j / 4][j % 4]
-    }
-
-    /// B_ic before [`Augmented::solve`], X_ic after it.
-    pub fn b_mut(&mut self, i: usize, c: usize) -> &mut f64 {
-        let j = 4 * self.a_blocks + c;
-        &mut self.data[i * self.row_blocks + j / 4][j % 4]
-    }
-
-    /// X_ic (after [`Augmented::solve`]).
-    pub fn x(&self, i: usize, c: usize) -> f64 {
-        debug_assert!(c < self.cols);
-        let j = 4 * self.a_blocks + c;
-        self.data[i * self.row_blocks + j / 4][j % 4]
-    }
-
     /// The row X_i· (after [`Augmented::solve`]).
     pub fn x_row(&self, i: usize) -> &[f64] {
         let start = i * self.row_blocks + self.a_blocks;
@@ -203,19 +185,21 @@ mod tests {
             });
             let b = DMatrix::<f64>::from_fn(n, cols, |i, j| (i + 2 * j) as f64);
             let mut system = Augmented::zeros(n, cols);
+            let offset = system.b_offset();
             for i in 0..n {
+                let row = system.row_mut(i);
                 for j in 0..n {
-                    *system.a_mut(i, j) = a[(i, j)];
+                    row[j] = a[(i, j)];
                 }
                 for c in 0..cols {
-                    *system.b_mut(i, c) = b[(i, c)];
+                    row[offset + c] = b[(i, c)];
                 }
             }
             system.solve();
             let y = a.lu().solve(&b).expect("regular");
             for i in 0..n {
-                for c in 0..cols {
-                    assert!((system.x(i, c) - y[(i, c)]).abs() < 1e-13 * y.abs().max(), "n {n}: {i} {c}");
+                for (c, x) in system.x_row(i).iter().enumerate() {
+                    assert!((x - y[(i, c)]).abs() < 1e-13 * y.abs().max(), "n {n}: {i} {c}");
                 }
             }
         }
