@@ -104,6 +104,16 @@ pub trait PeriodicModel<const N: usize>: Sync {
     }
 }
 
+/// t moved just inside [start, end], so that A and b read at a segment's ends are its one-sided
+/// limits (k or μ jump at the switch times): by 1e-14 of the segment, at least 8 rounding units of t
+/// (so that the model's own zone test sees the inside) and at most a quarter of the segment. A
+/// smooth A varies by ~1e-14 of its change over the segment across that step.
+pub fn just_inside(start: f64, end: f64, t: f64) -> f64 {
+    let h = end - start;
+    let d = (1e-14 * h).max(8.0 * f64::EPSILON * start.abs().max(end.abs())).min(0.25 * h);
+    t.clamp(start + d, end - d)
+}
+
 /// X(end) = Φ X(start) + q.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Propagation<const N: usize> {

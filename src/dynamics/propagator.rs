@@ -20,8 +20,8 @@ use std::sync::Arc;
 use nalgebra::allocator::Allocator;
 use nalgebra::{DefaultAllocator, Dim, DimMin, Dyn, OMatrix, SMatrix, SVector, U3, U4};
 
-use super::model::PeriodicModel;
 pub use super::model::Propagation;
+use super::model::{just_inside, PeriodicModel};
 use super::rank_one::RankOneSegment;
 
 /// How a segment was propagated.
@@ -296,8 +296,7 @@ pub struct PeriodPropagation<const N: usize> {
 /// affine there: the exact propagator applies although the model cannot promise it (friction
 /// arms that cancel between two pairs on either side of the pitch point).
 fn constant_on<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M, start: f64, end: f64) -> bool {
-    let d = 1e-12 * (end - start);
-    let at = |s: f64| model.system((start + s * (end - start)).clamp(start + d, end - d));
+    let at = |s: f64| model.system(just_inside(start, end, start + s * (end - start)));
     let (a0, b0) = at(0.0);
     let (_, b1) = at(1.0);
     let size = a0.abs().max() + b0.abs().max() + b1.abs().max();

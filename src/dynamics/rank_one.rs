@@ -38,7 +38,7 @@ use nalgebra::{Complex, SMatrix, SVector};
 
 pub use collocation::{MAX_PHASE, PIECE_DEGREE};
 
-use super::model::PeriodicModel;
+use super::model::{just_inside, PeriodicModel};
 use crate::numerics::chebyshev::{clenshaw, clenshaw_many, Lobatto};
 use crate::numerics::dense::eigen;
 
@@ -88,7 +88,8 @@ pub struct RankOneSegment<const N: usize> {
     modes: Vec<Mode<N>>,
     /// Σ |α_j|² over the modes that drive the mesh.
     alpha_norm: f64,
-    /// The entries of w not zero at every check node (the accelerations w drives).
+    /// The entries of w not zero at every check node (the accelerations w drives): the only ones
+    /// interpolated and projected on the modes.
     support: Vec<usize>,
     /// w(t) on the segment, where a Chebyshev interpolant reproduces it (else the model is
     /// evaluated at every node).
@@ -98,21 +99,18 @@ pub struct RankOneSegment<const N: usize> {
 }
 
 /// w(s) on a segment (s ∈ [0, 1]) through its values at the Chebyshev–Lobatto nodes of a degree,
-/// as Chebyshev series of the entries that are not zero at every node.
+/// as one Chebyshev series per entry of the segment's support.
 #[derive(Debug, Clone)]
 struct ColumnInterpolant {
-    support: Vec<usize>,
-    /// One Chebyshev series per entry of the support.
     series: Vec<Vec<f64>>,
 }
 
 impl ColumnInterpolant {
-    fn new<const N: usize>(degree: usize, columns: &[SVector<f64, N>]) -> Self {
-        let support: Vec<usize> = (0..N).filter(|i| columns.iter().any(|c| c[*i] != 0.0)).collect();
+    fn new<const N: usize>(degree: usize, columns: &[SVector<f64, N>], support: &[usize]) -> Self {
         let nodes = Lobatto::get(degree);
         let series =
             support.iter().map(|i| nodes.coefficients(&columns.iter().map(|c| c[*i]).collect::<Vec<_>>())).collect();
-        ColumnInterpolant { support, series }
+        ColumnInterpolant { series }
     }
 
     /// The support's entries of w at the points `s`: entry x at x · len + m.
@@ -123,9 +121,9 @@ impl ColumnInterpolant {
     }
 
     /// w(s).
-    fn at<const N: usize>(&self, s: f64) -> SVector<f64, N> {
+    fn at<const N: usize>(&self, s: f64, support: &[usize]) -> SVector<f64, N> {
         let mut w = SVector::<f64, N>::zeros();
-        for (i, c) in self.support.iter().zip(&self.series) {
+        for (i, c) in support.iter().zip(&self.series) {
             w[*i] = clenshaw(c, s);
         }
         w
@@ -205,21 +203,20 @@ impl<const N: usize> RankOneSegment<N> {
     fn checked<M: PeriodicModel<N> + ?Sized>(mut self, model: &M) -> Option<Self> {
         let coarse: Vec<SVector<f64, N>> =
             Lobatto::get(16).nodes.iter().map(|s| self.sample(model, *s)).collect::<Option<_>>()?;
-        self.support = (0..N).filter(|i| coarse.iter().any(|c| c[*i] != 0.0)).collect();
+        self.support = support_of(&coarse);
         self.set_direction(&coarse)?;
         let even: Vec<_> = coarse.iter().step_by(2).copied().collect();
         let odd: Vec<_> = coarse.iter().skip(1).step_by(2).copied().collect();
         self.interpolant = if self.reproduces(8, &even, 16, &odd) {
-            Some(ColumnInterpolant::new(16, &coarse))
+            Some(ColumnInterpolant::new(16, &coarse, &self.support))
         } else {
             let fine = Lobatto::get(32);
             let between: Vec<_> =
                 fine.nodes.iter().skip(1).step_by(2).map(|s| self.sample(model, *s)).collect::<Option<_>>()?;
             self.check_direction(&between)?;
-            self.reproduces(16, &coarse, 32, &between).then(|| {
-                let all: Vec<_> = (0..=32).map(|j| if j % 2 == 0 { coarse[j / 2] } else { between[j / 2] }).collect();
-                ColumnInterpolant::new(32, &all)
-            })
+            let all: Vec<_> = (0..=32).map(|j| if j % 2 == 0 { coarse[j / 2] } else { between[j / 2] }).collect();
+            self.support = support_of(&all);
+            self.reproduces(16, &coarse, 32, &between).then(|| ColumnInterpolant::new(32, &all, &self.support))
         };
         Some(self)
     }
@@ -278,10 +275,12 @@ impl<const N: usize> RankOneSegment<N> {
         finer: usize,
         between: &[SVector<f64, N>],
     ) -> bool {
-        let interpolant = ColumnInterpolant::new(degree, columns);
+        let interpolant = ColumnInterpolant::new(degree, columns, &self.support);
         let size = self.size / self.row.norm();
         let nodes = Lobatto::get(finer).nodes.iter().skip(1).step_by(2);
-        nodes.zip(between).all(|(s, w)| (interpolant.at::<N>(*s) - w).abs().max() <= INTERPOLATION_TOLERANCE * size)
+        nodes
+            .zip(between)
+            .all(|(s, w)| (interpolant.at::<N>(*s, &self.support) - w).abs().max() <= INTERPOLATION_TOLERANCE * size)
     }
 
     /// φ = Re Σ_j conj(α_j) ŵ_j / Σ |α_j|² from the modal column ŵ of every mode.
@@ -292,19 +291,20 @@ impl<const N: usize> RankOneSegment<N> {
         self.modes.iter().zip(hats).map(|(m, h)| (m.alpha.conj() * h).re).sum::<f64>() / self.alpha_norm
     }
 
-    /// t moved just inside the segment: A and b at its ends are one-sided limits. The step is
-    /// 1e-14 of the segment (at least 8 rounding units of t): A varies by ~1e-14 of its change
-    /// over it, below what the interpolant of w is held to.
+    /// t moved just inside the segment ([`just_inside`]).
     fn inside(&self, t: f64) -> f64 {
-        let h = self.end - self.start;
-        let d = (1e-14 * h).max(8.0 * f64::EPSILON * self.start.abs().max(self.end.abs())).min(0.25 * h);
-        t.clamp(self.start + d, self.end - d)
+        just_inside(self.start, self.end, t)
     }
 
     /// The scaled w of A(t): D⁻¹ (A − A0) D² n / |D n|².
     fn column(&self, a: &SMatrix<f64, N, N>) -> SVector<f64, N> {
         ((a - self.a0) * self.projector).component_div(&self.scale)
     }
+}
+
+/// The entries not zero in any of `columns`.
+fn support_of<const N: usize>(columns: &[SVector<f64, N>]) -> Vec<usize> {
+    (0..N).filter(|i| columns.iter().any(|c| c[*i] != 0.0)).collect()
 }
 
 /// dual · w for a real w, skipping its zeros (w and b are sparse in the gear models: accelerations

@@ -60,8 +60,7 @@ struct Workspace {
 
 impl<const N: usize> RankOneSegment<N> {
     /// The propagation from `from` over `h` inside the segment, in equal pieces short enough for
-    /// their degree. (Run in parallel, the pieces gained ~5 %: waking the threads costs about what
-    /// a piece does.)
+    /// their degree.
     pub fn propagate<M: PeriodicModel<N> + ?Sized>(&self, model: &M, from: f64, h: f64) -> Propagation<N> {
         let plan = self.plan(from, h);
         let (count, r, live) = (plan.nodes.tau.len(), self.modes.len(), plan.nodes.live.len());
@@ -71,7 +70,7 @@ impl<const N: usize> RankOneSegment<N> {
             weights_im: vec![0.0; count * r],
             mesh: vec![0.0; count * live],
             points: vec![0.0; count],
-            columns: vec![0.0; count * self.interpolant.as_ref().map_or(0, |p| p.support.len())],
+            columns: vec![0.0; count * self.support.len()],
             phi: vec![0.0; count],
             z_re: vec![0.0; r * live],
             z_im: vec![0.0; r * live],
@@ -199,26 +198,25 @@ impl<const N: usize> RankOneSegment<N> {
             }
             p.at_points(&ws.points, &mut ws.columns);
         }
+        let mut hats = [C64::default(); N];
         for (m, t) in nodes.tau.iter().enumerate() {
             let w = match &self.interpolant {
-                Some(p) => {
+                Some(_) => {
                     let mut w = SVector::<f64, N>::zeros();
-                    for (x, i) in p.support.iter().enumerate() {
+                    for (x, i) in self.support.iter().enumerate() {
                         w[*i] = ws.columns[x * count + m];
                     }
                     w
                 }
                 None => self.column(&model.system(self.inside(a + t)).0),
             };
-            let mut share = 0.0;
-            for (k, mode) in self.modes.iter().enumerate() {
-                let hat: C64 = self.support.iter().map(|i| mode.dual[*i] * w[*i]).sum();
-                share += (mode.alpha.conj() * hat).re;
-                let weight = nodes.ends[m * r + k] * hat;
+            for (k, (mode, hat)) in self.modes.iter().zip(hats.iter_mut()).enumerate() {
+                *hat = self.support.iter().map(|i| mode.dual[*i] * w[*i]).sum();
+                let weight = nodes.ends[m * r + k] * *hat;
                 ws.weights_re[k * count + m] = weight.re;
                 ws.weights_im[k * count + m] = weight.im;
             }
-            ws.phi[m] = if self.alpha_norm == 0.0 { 0.0 } else { share / self.alpha_norm };
+            ws.phi[m] = self.direction_share(&hats[..r]);
         }
     }
 
