@@ -42,6 +42,9 @@ pub fn eigen<const N: usize>(a: &SMatrix<f64, N, N>) -> Option<(Vec<C64>, DMatri
     Some((lambda, DMatrix::from_columns(&columns)))
 }
 
+/// One block column of the rows below, top to bottom.
+type Column<'a> = std::iter::StepBy<std::slice::Iter<'a, [f64; 4]>>;
+
 /// A square system with several right-hand sides, A X = B, stored row-major as [A | B] in blocks
 /// of four (each part padded to whole blocks) so that the row operations of the elimination run
 /// on whole blocks: the collocation systems of the spectral propagator (n ≤ 65, a few right-hand
@@ -92,28 +95,46 @@ impl Augmented {
             unsafe { self.solve_avx() };
             return;
         }
-        self.eliminate_and_substitute(subtract_multiple);
+        self.eliminate_and_substitute(subtract_multiple, substitute_block);
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
     fn solve_avx(&mut self) {
-        self.eliminate_and_substitute(|x, y, f| {
-            use std::arch::x86_64::{_mm256_loadu_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_storeu_pd, _mm256_sub_pd};
-            let f = _mm256_set1_pd(f);
-            for (x, y) in x.iter_mut().zip(y) {
-                // SAFETY: both point to four f64 of a block ([f64; 4]); unaligned loads and stores.
-                unsafe {
-                    let product = _mm256_mul_pd(f, _mm256_loadu_pd(y.as_ptr()));
-                    _mm256_storeu_pd(x.as_mut_ptr(), _mm256_sub_pd(_mm256_loadu_pd(x.as_ptr()), product));
+        use std::arch::x86_64::{_mm256_loadu_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_storeu_pd, _mm256_sub_pd};
+        self.eliminate_and_substitute(
+            |x, y, f| {
+                let f = _mm256_set1_pd(f);
+                for (x, y) in x.iter_mut().zip(y) {
+                    // SAFETY: both point to four f64 of a block ([f64; 4]); unaligned loads and stores.
+                    unsafe {
+                        let product = _mm256_mul_pd(f, _mm256_loadu_pd(y.as_ptr()));
+                        _mm256_storeu_pd(x.as_mut_ptr(), _mm256_sub_pd(_mm256_loadu_pd(x.as_ptr()), product));
+                    }
                 }
-            }
-        });
+            },
+            |x, coefficients, solved, inverse| {
+                // SAFETY: x and every solved block are four f64 ([f64; 4]); unaligned loads and stores.
+                unsafe {
+                    let mut acc = _mm256_loadu_pd(x.as_ptr());
+                    for (f, y) in coefficients.iter().zip(solved) {
+                        acc = _mm256_sub_pd(acc, _mm256_mul_pd(_mm256_set1_pd(*f), _mm256_loadu_pd(y.as_ptr())));
+                    }
+                    _mm256_storeu_pd(x.as_mut_ptr(), _mm256_mul_pd(acc, _mm256_set1_pd(inverse)));
+                }
+            },
+        );
     }
 
-    /// The elimination and back substitution, with `update(x, y, f)`: x −= f y over whole blocks.
+    /// The elimination and back substitution, with `update(x, y, f)`: x −= f y over whole blocks,
+    /// and `substitute(x, f, y, inverse)`: x −= f_j y_j in order of j, then x ×= inverse (one
+    /// block of a row of X, kept in a register while the solved rows are subtracted).
     #[inline(always)]
-    fn eliminate_and_substitute(&mut self, update: impl Fn(&mut [[f64; 4]], &[[f64; 4]], f64)) {
+    fn eliminate_and_substitute(
+        &mut self,
+        update: impl Fn(&mut [[f64; 4]], &[[f64; 4]], f64),
+        substitute: impl Fn(&mut [f64; 4], &[f64], Column, f64),
+    ) {
         let (n, w, ab) = (self.n, self.row_blocks, self.a_blocks);
         let at = |data: &[[f64; 4]], i: usize, j: usize| data[i * w + j / 4][j % 4];
         for k in 0..n {
@@ -136,15 +157,23 @@ impl Augmented {
         }
         for k in (0..n).rev() {
             let (head, tail) = self.data.split_at_mut((k + 1) * w);
-            let row = &mut head[k * w..];
-            for (j, solved) in (k + 1..n).zip(tail.chunks_exact(w)) {
-                let akj = row[j / 4][j % 4];
-                update(&mut row[ab..], &solved[ab..], akj);
+            let (a, b) = head[k * w..].split_at_mut(ab);
+            let (coefficients, inverse) = (&a.as_flattened()[k + 1..n], 1.0 / a.as_flattened()[k]);
+            for (c, x) in b.iter_mut().enumerate() {
+                substitute(x, coefficients, tail.get(ab + c..).unwrap_or_default().iter().step_by(w), inverse);
             }
-            let inv = 1.0 / row[k / 4][k % 4];
-            row[ab..].iter_mut().for_each(|x| x.iter_mut().for_each(|v| *v *= inv));
         }
     }
+}
+
+/// x −= f_j y_j in order of j, then x ×= inverse.
+fn substitute_block(x: &mut [f64; 4], f: &[f64], y: Column, inverse: f64) {
+    for (f, y) in f.iter().zip(y) {
+        for l in 0..4 {
+            x[l] -= f * y[l];
+        }
+    }
+    x.iter_mut().for_each(|v| *v *= inverse);
 }
 
 /// x −= f y, block by block.

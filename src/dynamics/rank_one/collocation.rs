@@ -34,8 +34,13 @@ struct PieceNodes<const N: usize> {
     free: Vec<f64>,
     /// The columns (0..N initial states, N the forcing) that reach N.
     live: Vec<usize>,
-    /// S_Mm e^{−λ_k τ_m}: the end state's quadrature of e^{−λσ} ŵ N.
-    ends: Vec<C64>,
+    /// S_Mm e^{−λ_k τ_m}: the end state's quadrature of e^{−λσ} ŵ N, mode k at k count + m.
+    ends_re: Vec<f64>,
+    ends_im: Vec<f64>,
+    /// (V⁻¹)_ki of every mode k on the segment's support of w (entry x at k support + x), and
+    /// conj α_k: ŵ and φ = Re Σ_k conj α_k ŵ_k / Σ |α|² at the nodes from the support's entries of w.
+    duals: Vec<C64>,
+    shares: Vec<C64>,
     /// The piece's map without the variation (A0 and the forcing alone), scaled states.
     free_map: Propagation<N>,
     /// weight e^{λ_k h} v_k per mode, (Re, Im): turns the modes' end corrections into states.
@@ -45,14 +50,19 @@ struct PieceNodes<const N: usize> {
 /// The buffers one propagation's pieces share.
 struct Workspace {
     system: Augmented,
-    /// S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) at k count + m, and N at x count + m (live column x).
+    /// S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) at k count + m.
     weights_re: Vec<f64>,
     weights_im: Vec<f64>,
+    /// N at x count + m (live column x).
     mesh: Vec<f64>,
-    /// The nodes as fractions of the segment, and the interpolated entries of w there.
+    /// The nodes as fractions of the segment, and the support's entries of w there (entry x at
+    /// x count + m).
     points: Vec<f64>,
     columns: Vec<f64>,
     phi: Vec<f64>,
+    /// ŵ_k at the nodes, one mode at a time.
+    hat_re: Vec<f64>,
+    hat_im: Vec<f64>,
     /// Σ_m S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) N_c(τ_m): mode k, live column x at k · live + x.
     z_re: Vec<f64>,
     z_im: Vec<f64>,
@@ -72,6 +82,8 @@ impl<const N: usize> RankOneSegment<N> {
             points: vec![0.0; count],
             columns: vec![0.0; count * self.support.len()],
             phi: vec![0.0; count],
+            hat_re: vec![0.0; count],
+            hat_im: vec![0.0; count],
             z_re: vec![0.0; r * live],
             z_im: vec![0.0; r * live],
         };
@@ -149,12 +161,21 @@ impl<const N: usize> RankOneSegment<N> {
         let free =
             (0..count).flat_map(|i| live.iter().map(move |c| (i, *c))).map(|(i, c)| all[i * (N + 1) + c]).collect();
         let last = count - 1;
-        let ends: Vec<C64> = (0..count * r).map(|x| back[x] * s[last * count + x / r]).collect();
+        let (mut ends_re, mut ends_im) = (vec![0.0; r * count], vec![0.0; r * count]);
+        for m in 0..count {
+            for k in 0..r {
+                let end = back[m * r + k] * s[last * count + m];
+                (ends_re[k * count + m], ends_im[k * count + m]) = (end.re, end.im);
+            }
+        }
+        let duals = self.modes.iter().flat_map(|m| self.support.iter().map(|i| m.dual[*i])).collect();
+        let shares = self.modes.iter().map(|m| m.alpha.conj()).collect();
         let mut free_map = Propagation::<N> { phi: SMatrix::zeros(), q: SVector::zeros() };
         let mut end_vectors = Vec::with_capacity(r);
         for (k, mode) in self.modes.iter().enumerate() {
             let v = mode.vector * (e[last * r + k] * mode.weight);
-            let forced = mode.forcing * (0..count).map(|m| ends[m * r + k]).sum::<C64>();
+            let ends = |part: &[f64]| part[k * count..(k + 1) * count].iter().sum();
+            let forced = mode.forcing * C64::new(ends(&ends_re), ends(&ends_im));
             for i in 0..N {
                 for c in 0..N {
                     free_map.phi[(i, c)] += re_mul(v[i], mode.dual[c]);
@@ -163,7 +184,7 @@ impl<const N: usize> RankOneSegment<N> {
             }
             end_vectors.push([v.map(|x| x.re), v.map(|x| x.im)]);
         }
-        PieceNodes { tau, kernel, free, live, ends, free_map, end_vectors }
+        PieceNodes { tau, kernel, free, live, ends_re, ends_im, duals, shares, free_map, end_vectors }
     }
 
     /// One piece [a, a + h] (scaled states): φ at the nodes, the collocation system
@@ -183,7 +204,8 @@ impl<const N: usize> RankOneSegment<N> {
         Self::end_map(&plan.nodes, ws)
     }
 
-    /// φ and S_Mm e^{−λ_k τ_m} ŵ_k at the nodes of the piece from `a`.
+    /// φ and S_Mm e^{−λ_k τ_m} ŵ_k at the nodes of the piece from `a`: the support's entries of w
+    /// at every node (interpolated, or from the model), then mode by mode along the nodes.
     fn variation_at_nodes<M: PeriodicModel<N> + ?Sized>(
         &self,
         model: &M,
@@ -191,33 +213,45 @@ impl<const N: usize> RankOneSegment<N> {
         nodes: &PieceNodes<N>,
         ws: &mut Workspace,
     ) {
-        let (count, r) = (nodes.tau.len(), self.modes.len());
-        if let Some(p) = &self.interpolant {
-            for (s, t) in ws.points.iter_mut().zip(&nodes.tau) {
-                *s = ((a + t - self.start) / (self.end - self.start)).clamp(0.0, 1.0);
-            }
-            p.at_points(&ws.points, &mut ws.columns);
-        }
-        let mut hats = [C64::default(); N];
-        for (m, t) in nodes.tau.iter().enumerate() {
-            let w = match &self.interpolant {
-                Some(_) => {
-                    let mut w = SVector::<f64, N>::zeros();
-                    for (x, i) in self.support.iter().enumerate() {
-                        w[*i] = ws.columns[x * count + m];
-                    }
-                    w
+        let (count, support) = (nodes.tau.len(), self.support.len());
+        match &self.interpolant {
+            Some(p) => {
+                for (s, t) in ws.points.iter_mut().zip(&nodes.tau) {
+                    *s = ((a + t - self.start) / (self.end - self.start)).clamp(0.0, 1.0);
                 }
-                None => self.column(&model.system(self.inside(a + t)).0),
-            };
-            for (k, (mode, hat)) in self.modes.iter().zip(hats.iter_mut()).enumerate() {
-                *hat = self.support.iter().map(|i| mode.dual[*i] * w[*i]).sum();
-                let weight = nodes.ends[m * r + k] * *hat;
-                ws.weights_re[k * count + m] = weight.re;
-                ws.weights_im[k * count + m] = weight.im;
+                p.at_points(&ws.points, &mut ws.columns);
             }
-            ws.phi[m] = self.direction_share(&hats[..r]);
+            None => {
+                for (m, t) in nodes.tau.iter().enumerate() {
+                    let w = self.column(&model.system(self.inside(a + t)).0);
+                    for (x, i) in self.support.iter().enumerate() {
+                        ws.columns[x * count + m] = w[*i];
+                    }
+                }
+            }
         }
+        ws.phi.fill(0.0);
+        let (hat_re, hat_im) = (&mut ws.hat_re[..count], &mut ws.hat_im[..count]);
+        for (k, share) in nodes.shares.iter().enumerate() {
+            hat_re.fill(0.0);
+            hat_im.fill(0.0);
+            for (d, w) in nodes.duals[k * support..(k + 1) * support].iter().zip(ws.columns.chunks_exact(count)) {
+                for ((re, im), w) in hat_re.iter_mut().zip(hat_im.iter_mut()).zip(w) {
+                    *re += d.re * w;
+                    *im += d.im * w;
+                }
+            }
+            let (e_re, e_im) = (&nodes.ends_re[k * count..(k + 1) * count], &nodes.ends_im[k * count..(k + 1) * count]);
+            let (out_re, out_im) =
+                (&mut ws.weights_re[k * count..(k + 1) * count], &mut ws.weights_im[k * count..(k + 1) * count]);
+            for m in 0..count {
+                out_re[m] = e_re[m] * hat_re[m] - e_im[m] * hat_im[m];
+                out_im[m] = e_re[m] * hat_im[m] + e_im[m] * hat_re[m];
+                ws.phi[m] += share.re * hat_re[m] - share.im * hat_im[m];
+            }
+        }
+        let norm = self.alpha_norm;
+        ws.phi.iter_mut().for_each(|p| *p = if norm == 0.0 { 0.0 } else { *p / norm });
     }
 
     /// [I − M diag φ | R].
