@@ -32,6 +32,12 @@ pub struct Lobatto {
     pub nodes: Vec<f64>,
     /// S: (M + 1) × (M + 1).
     pub integration: DMatrix<f64>,
+    /// The values at the nodes between (the odd nodes of degree 2M) of the polynomial through
+    /// unit values at the nodes: (M + 1) × M, column j for the j-th node between (so that the
+    /// values there are betweenᵀ f), by the barycentric formula with the weights
+    /// (−1)^m, halved at both ends (Berrut & Trefethen, "Barycentric Lagrange interpolation",
+    /// SIAM Review 46 (2004) 501–517, eq 5.4).
+    pub between: DMatrix<f64>,
 }
 
 impl Lobatto {
@@ -45,8 +51,11 @@ impl Lobatto {
     fn new(m: usize) -> Self {
         let pi = std::f64::consts::PI;
         let nodes: Vec<f64> = (0..=m).map(|i| 0.5 * (1.0 - (pi * i as f64 / m as f64).cos())).collect();
-        // T_k(x_i) with x_i = −cos(π i/M) = cos(π − π i/M), for k up to M + 1.
-        let t = |k: usize, i: usize| (k as f64 * (pi - pi * i as f64 / m as f64)).cos();
+        // T_k(x_i) with x_i = −cos(π i/M) = cos(π − π i/M), for k up to M + 1 (tabulated once).
+        let table: Vec<f64> = (0..=m + 1)
+            .flat_map(|k| (0..=m).map(move |i| (k as f64 * (pi - pi * i as f64 / m as f64)).cos()))
+            .collect();
+        let t = |k: usize, i: usize| table[k * (m + 1) + i];
         let mut s = DMatrix::zeros(m + 1, m + 1);
         for col in 0..=m {
             // Coefficients of the polynomial through the unit vector e_col.
@@ -74,7 +83,13 @@ impl Lobatto {
                 s[(i, col)] = 0.5 * (value - at_minus_one);
             }
         }
-        Lobatto { degree: m, nodes, integration: s }
+        let weight = |l: usize| if l.is_multiple_of(2) { 1.0 } else { -1.0 } * if l == 0 || l == m { 0.5 } else { 1.0 };
+        let between = DMatrix::from_fn(m + 1, m, |l, j| {
+            let x = 0.5 * (1.0 - (pi * (2 * j + 1) as f64 / (2 * m) as f64).cos());
+            let sum: f64 = nodes.iter().enumerate().map(|(k, s)| weight(k) / (x - s)).sum();
+            weight(l) / (x - nodes[l]) / sum
+        });
+        Lobatto { degree: m, nodes, integration: s, between }
     }
 
     /// The Chebyshev coefficients c_k of the polynomial through the values f_j at the nodes,
@@ -155,6 +170,23 @@ mod tests {
                 if m >= 24 {
                     assert!((clenshaw(&b, s) - q(s)).abs() < 1e-13, "M {m} s {s}: sin");
                 }
+            }
+        }
+    }
+
+    /// The values between the nodes reproduce a polynomial of degree M at the odd nodes of degree
+    /// 2M (to 1e-13 of its largest value), and every row sums to 1 (to 1e-14).
+    #[test]
+    fn values_between_the_nodes() {
+        for m in [8, 16, 24, 32] {
+            let (c, fine) = (Lobatto::get(m), Lobatto::get(2 * m));
+            let p = |s: f64| (0..=m).map(|k| (0.3 * k as f64 - 1.0) * (2.0 * s - 1.0).powi(k as i32)).sum::<f64>();
+            let values: Vec<f64> = c.nodes.iter().map(|s| p(*s)).collect();
+            let size = values.iter().fold(1.0f64, |acc, v| acc.max(v.abs()));
+            for (j, s) in fine.nodes.iter().skip(1).step_by(2).enumerate() {
+                let v: f64 = values.iter().enumerate().map(|(l, f)| c.between[(l, j)] * f).sum();
+                assert!((v - p(*s)).abs() < 1e-13 * size, "M {m} node {j}: {:e}", (v - p(*s)).abs() / size);
+                assert!((c.between.column(j).sum() - 1.0).abs() < 1e-14, "M {m} node {j}: sum");
             }
         }
     }

@@ -4,14 +4,19 @@
 
 use nalgebra::{SMatrix, SVector};
 
+use super::quadrature::Quadrature;
 use super::{re_mul, RankOneSegment, C64};
 use crate::dynamics::model::{PeriodicModel, Propagation};
-use crate::numerics::chebyshev::{Lobatto, DEGREES};
+use crate::numerics::chebyshev::Lobatto;
 use crate::numerics::dense::Augmented;
 
-/// The largest phase 2 ω_max h (rad) a piece of each degree of [`DEGREES`] resolves to ~1e-14
-/// (measured: the integration of cos(w s) on [0, 1]).
-pub const MAX_PHASE: [f64; 6] = [0.6, 6.0, 13.0, 22.0, 42.0, 66.0];
+/// The degrees a piece may have (each with twice the degree in [`crate::numerics::chebyshev::DEGREES`]
+/// for its quadrature).
+pub const PIECE_DEGREES: [usize; 4] = [8, 16, 24, 32];
+/// The largest phase ω_max h (rad) over a piece of each degree of [`PIECE_DEGREES`] at which the
+/// polynomial through the nodes reproduces cos(w s + θ) on [0, 1] to 1e-13 (measured, and tested
+/// below): N oscillates with the modes, up to ω_max.
+pub const MAX_PHASE: [f64; 4] = [0.5, 4.5, 11.5, 20.5];
 /// The degree of a full piece: the cost of a piece grows as its degree cubed (the dense solve) and
 /// the pieces needed as 1 / [`MAX_PHASE`]; 24 is the cheapest measured.
 pub const PIECE_DEGREE: usize = 24;
@@ -96,12 +101,14 @@ impl<const N: usize> RankOneSegment<N> {
     }
 
     /// How [from, from + h] is cut: pieces of at most [`MAX_PHASE`] at [`PIECE_DEGREE`], a single
-    /// piece of the lowest degree that resolves it when shorter.
+    /// piece of the lowest degree that resolves it when shorter. Where w comes from the model at
+    /// every node (no series of the segment reproduces it), its own variation is not known: the
+    /// pieces are then kept half as long.
     fn plan(&self, from: f64, h: f64) -> PiecePlan<N> {
-        let phase = 2.0 * self.fastest * h;
-        let top = DEGREES.iter().position(|d| *d == PIECE_DEGREE).unwrap_or(DEGREES.len() - 1);
+        let phase = self.fastest * h * if self.interpolant.is_some() { 1.0 } else { 2.0 };
+        let top = PIECE_DEGREES.iter().position(|d| *d == PIECE_DEGREE).unwrap_or(PIECE_DEGREES.len() - 1);
         let pieces = (phase / MAX_PHASE[top]).ceil().max(1.0) as usize;
-        let degree = DEGREES[MAX_PHASE.iter().position(|p| phase / pieces as f64 <= *p).unwrap_or(top)];
+        let degree = PIECE_DEGREES[MAX_PHASE.iter().position(|p| phase / pieces as f64 <= *p).unwrap_or(top)];
         let dt = h / pieces as f64;
         PiecePlan { starts: (0..pieces).map(|k| from + k as f64 * dt).collect(), nodes: self.nodes(degree, dt) }
     }
@@ -111,46 +118,22 @@ impl<const N: usize> RankOneSegment<N> {
         let cheb = Lobatto::get(degree);
         let (count, r) = (degree + 1, self.modes.len());
         let tau: Vec<f64> = cheb.nodes.iter().map(|x| x * h).collect();
-        // S scaled to the piece, row-major (the transpose's column-major storage).
-        let s: Vec<f64> = cheb.integration.transpose().as_slice().iter().map(|x| x * h).collect();
-        let e: Vec<C64> = tau.iter().flat_map(|t| self.modes.iter().map(move |m| (m.lambda * *t).exp())).collect();
-        let back: Vec<C64> = e.iter().map(|x| x.inv()).collect();
+        let lambdas: Vec<C64> = self.modes.iter().map(|m| m.lambda).collect();
+        let quadrature = Quadrature::new(&lambdas, degree, h);
+        // e^{λ τ_i} at the piece's nodes (every other fine node): node i, mode k at i r + k.
+        let e: Vec<C64> =
+            (0..count).flat_map(|i| (0..r).map(move |k| (i, k))).map(|(i, k)| quadrature.decay(k, i).inv()).collect();
         let driving: Vec<usize> = (0..r).filter(|k| self.modes[*k].drives_mesh).collect();
-        // weight n̂ e^{λ τ_i} per node and driving mode: the mesh force's share of each mode.
-        let p: Vec<C64> = (0..count)
-            .flat_map(|i| driving.iter().map(move |k| (i, *k)))
-            .map(|(i, k)| self.modes[k].n_hat * self.modes[k].weight * e[i * r + k])
-            .collect();
-        let nd = driving.len();
-        // e^{−λ τ_m} of the driving modes, (Re, Im) along m.
-        let back_re: Vec<f64> = driving.iter().flat_map(|k| back.iter().skip(*k).step_by(r).map(|b| b.re)).collect();
-        let back_im: Vec<f64> = driving.iter().flat_map(|k| back.iter().skip(*k).step_by(r).map(|b| b.im)).collect();
-        let mut kernel = vec![0.0; count * count];
         let mut all = vec![0.0; count * (N + 1)];
         for i in 0..count {
-            let row = &mut kernel[i * count..(i + 1) * count];
-            for (x, k) in driving.iter().enumerate() {
-                let pa = p[i * nd + x] * self.modes[*k].alpha;
-                let (re, im) = (&back_re[x * count..(x + 1) * count], &back_im[x * count..(x + 1) * count]);
-                for ((out, br), bi) in row.iter_mut().zip(re).zip(im) {
-                    *out += pa.re * br - pa.im * bi;
-                }
-            }
-            for (out, s) in row.iter_mut().zip(&s[i * count..(i + 1) * count]) {
-                *out *= s;
-            }
-            for (x, k) in driving.iter().enumerate() {
+            for k in &driving {
                 let mode = &self.modes[*k];
-                let s_row = &s[i * count..(i + 1) * count];
-                let (re, im) = (&back_re[x * count..(x + 1) * count], &back_im[x * count..(x + 1) * count]);
-                let integral = C64::new(
-                    re.iter().zip(s_row).map(|(a, b)| a * b).sum(),
-                    im.iter().zip(s_row).map(|(a, b)| a * b).sum(),
-                );
+                // weight n̂ e^{λ τ_i}: the mesh force's share of the mode.
+                let p = mode.n_hat * mode.weight * e[i * r + k];
                 for c in 0..N {
-                    all[i * (N + 1) + c] += re_mul(p[i * nd + x], mode.dual[c]);
+                    all[i * (N + 1) + c] += re_mul(p, mode.dual[c]);
                 }
-                all[i * (N + 1) + N] += re_mul(p[i * nd + x] * mode.forcing, integral);
+                all[i * (N + 1) + N] += re_mul(p * mode.forcing, quadrature.integral(*k, i));
             }
         }
         // Initial states that do not reach N (the OLOA states of the gear models) leave it at 0:
@@ -160,22 +143,18 @@ impl<const N: usize> RankOneSegment<N> {
             (0..=N).filter(|c| (0..count).any(|i| all[i * (N + 1) + c].abs() > 1e-15 * size)).collect();
         let free =
             (0..count).flat_map(|i| live.iter().map(move |c| (i, *c))).map(|(i, c)| all[i * (N + 1) + c]).collect();
-        let last = count - 1;
-        let (mut ends_re, mut ends_im) = (vec![0.0; r * count], vec![0.0; r * count]);
-        for m in 0..count {
-            for k in 0..r {
-                let end = back[m * r + k] * s[last * count + m];
-                (ends_re[k * count + m], ends_im[k * count + m]) = (end.re, end.im);
-            }
-        }
+        let coefficients: Vec<(usize, C64)> =
+            driving.iter().map(|k| (*k, self.modes[*k].n_hat * self.modes[*k].weight * self.modes[*k].alpha)).collect();
+        let kernel = quadrature.kernel(cheb, &e, &coefficients);
+        let mut ends_re = quadrature.ends(cheb);
+        let ends_im = ends_re.split_off(r * count);
         let duals = self.modes.iter().flat_map(|m| self.support.iter().map(|i| m.dual[*i])).collect();
         let shares = self.modes.iter().map(|m| m.alpha.conj()).collect();
         let mut free_map = Propagation::<N> { phi: SMatrix::zeros(), q: SVector::zeros() };
         let mut end_vectors = Vec::with_capacity(r);
         for (k, mode) in self.modes.iter().enumerate() {
-            let v = mode.vector * (e[last * r + k] * mode.weight);
-            let ends = |part: &[f64]| part[k * count..(k + 1) * count].iter().sum();
-            let forced = mode.forcing * C64::new(ends(&ends_re), ends(&ends_im));
+            let v = mode.vector * (e[(count - 1) * r + k] * mode.weight);
+            let forced = mode.forcing * quadrature.integral(k, count - 1);
             for i in 0..N {
                 for c in 0..N {
                     free_map.phi[(i, c)] += re_mul(v[i], mode.dual[c]);
@@ -301,27 +280,5 @@ impl<const N: usize> RankOneSegment<N> {
             }
         }
         map
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Each degree integrates cos(w s) on [0, 1] to 1e-13 (absolute, at every node) for w up to its
-    /// [`MAX_PHASE`]: the resolution the piece lengths are chosen by.
-    #[test]
-    fn every_degree_resolves_its_phase() {
-        for (degree, w) in DEGREES.iter().zip(MAX_PHASE) {
-            let c = Lobatto::get(*degree);
-            for (i, s) in c.nodes.iter().enumerate() {
-                let v: f64 = c.nodes.iter().enumerate().map(|(m, x)| c.integration[(i, m)] * (w * x).cos()).sum();
-                assert!(
-                    (v - (w * s).sin() / w).abs() < 1e-13,
-                    "degree {degree}, w {w}: {:e}",
-                    (v - (w * s).sin() / w).abs()
-                );
-            }
-        }
     }
 }
