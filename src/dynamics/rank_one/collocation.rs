@@ -28,18 +28,19 @@ struct PiecePlan<const N: usize> {
 }
 
 /// What all pieces of one length share: the nodes, the collocation kernel, the free response and
-/// the quadrature weights of the end state (mode k at node m: index m r + k).
+/// the quadrature weights of the end state.
 struct PieceNodes<const N: usize> {
     tau: Vec<f64>,
-    /// M_im = S_im Re Σ_j weight n̂_j α_j e^{λ_j (τ_i − τ_m)} over the modes driving the mesh:
-    /// the system of a piece is I − M diag(φ).
+    /// M_im = Σ_q S′_{2i,q} Re Σ_j weight n̂_j α_j e^{λ_j (τ_i − σ_q)} P_qm over the modes driving
+    /// the mesh, row-major ([`Quadrature::kernel`]): the system of a piece is I − M diag(φ).
     kernel: Vec<f64>,
     /// The right-hand sides, count × live columns: Re Σ_j weight n̂_j e^{λ_j τ_i} (V⁻¹)_jc for the
     /// unit initial states that reach N, and the free response to the forcing (column N).
     free: Vec<f64>,
     /// The columns (0..N initial states, N the forcing) that reach N.
     live: Vec<usize>,
-    /// S_Mm e^{−λ_k τ_m}: the end state's quadrature of e^{−λσ} ŵ N, mode k at k count + m.
+    /// E_km = Σ_q S′_{last,q} e^{−λ_k σ_q} P_qm: the end state's quadrature of e^{−λσ} ŵ N from
+    /// the values of ŵ N at the nodes, mode k at k count + m ([`Quadrature::ends`]).
     ends_re: Vec<f64>,
     ends_im: Vec<f64>,
     /// (V⁻¹)_ki of every mode k on the segment's support of w (entry x at k support + x), and
@@ -55,7 +56,7 @@ struct PieceNodes<const N: usize> {
 /// The buffers one propagation's pieces share.
 struct Workspace {
     system: Augmented,
-    /// S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) at k count + m.
+    /// E_km ŵ_k(τ_m) at k count + m.
     weights_re: Vec<f64>,
     weights_im: Vec<f64>,
     /// N at x count + m (live column x).
@@ -68,7 +69,7 @@ struct Workspace {
     /// ŵ_k at the nodes, one mode at a time.
     hat_re: Vec<f64>,
     hat_im: Vec<f64>,
-    /// Σ_m S_Mm e^{−λ_k τ_m} ŵ_k(τ_m) N_c(τ_m): mode k, live column x at k · live + x.
+    /// Σ_m E_km ŵ_k(τ_m) N_c(τ_m): mode k, live column x at k · live + x.
     z_re: Vec<f64>,
     z_im: Vec<f64>,
 }
@@ -168,7 +169,7 @@ impl<const N: usize> RankOneSegment<N> {
 
     /// One piece [a, a + h] (scaled states): φ at the nodes, the collocation system
     /// (I − M diag φ) N = R, then every mode's end state
-    /// z(h) = e^{λh} (z(0) + b̂ Σ_m S_Mm e^{−λτ_m} + Σ_m S_Mm e^{−λτ_m} ŵ(τ_m) N(τ_m)):
+    /// z(h) = e^{λh} (z(0) + b̂ ∫₀^h e^{−λσ} dσ + Σ_m E_m ŵ(τ_m) N(τ_m)):
     /// the map of A0 and b alone ([`PieceNodes::free_map`]) plus the last sum's share.
     fn piece<M: PeriodicModel<N> + ?Sized>(
         &self,
@@ -183,7 +184,7 @@ impl<const N: usize> RankOneSegment<N> {
         Self::end_map(&plan.nodes, ws)
     }
 
-    /// φ and S_Mm e^{−λ_k τ_m} ŵ_k at the nodes of the piece from `a`: the support's entries of w
+    /// φ and E_km ŵ_k at the nodes of the piece from `a`: the support's entries of w
     /// at every node (interpolated, or from the model), then mode by mode along the nodes.
     fn variation_at_nodes<M: PeriodicModel<N> + ?Sized>(
         &self,
