@@ -68,9 +68,9 @@ impl Quadrature {
         let fine_count = 2 * degree + 1;
         let decays = self.decays.as_slice();
         let mut products = self.integration.clone();
+        let mut kernel = vec![0.0; fine_count];
         for (i, column) in products.as_mut_slice().chunks_exact_mut(fine_count).enumerate() {
-            let mut kernel = [0.0; 2 * 64 + 1];
-            let kernel = &mut kernel[..fine_count];
+            kernel.fill(0.0);
             for (k, c) in coefficients {
                 let a = c * e[i * r + k];
                 let re = &decays[k * fine_count..(k + 1) * fine_count];
