@@ -59,7 +59,7 @@ pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantRep
         nu_40: l.oil.as_ref().map(|o| Q::new(o.nu_40, "m^2/s")),
         nu_100: l.oil.as_ref().map(|o| Q::new(o.nu_100, "m^2/s")),
         density_15: l.oil.as_ref().map(|o| Q::new(o.density_15, "kg/m^3")),
-        viscosity_index: l.oil.as_ref().map(|o| Num(o.viscosity_index())),
+        viscosity_index: l.oil.as_ref().and_then(|o| o.viscosity_index()).map(Num),
         source,
     })
 }

@@ -12,7 +12,9 @@ use super::ast::*;
 use super::fields::{call_fields, positive, unknown_name, Fields};
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
-use crate::tribology::lubricant::{self, catalogue, BaseOil, OilData, ISO_VG_GRADES};
+use crate::tribology::lubricant::{
+    self, base_oil, catalogue, lowest_grade, BaseOil, NoNu100, NotInCatalogue, OilData, ISO_VG_GRADES,
+};
 
 pub(super) const LUBRICANT_KEYS: &[&str] = &[
     "dynamic_viscosity",
@@ -56,7 +58,7 @@ pub(super) fn lower_lubricant_value(
     if !f.has("grade") || !f.has("base") {
         errors.push(
             Diagnostic::new(DiagnosticKind::MissingKey, call.span, "`iso_vg` needs a grade and a base oil").hint(
-                "write `iso_vg(100, mineral)`: grade 32 to 680, base mineral, pao, pag_insoluble, pag_soluble or ester",
+                "write `iso_vg(100, mineral)`: an ISO VG grade from 7 to 1500, base mineral, pao, pag_insoluble, pag_soluble or ester",
             ),
         );
         return None;
@@ -185,17 +187,32 @@ fn catalogue_oil(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<OilData> {
         return None;
     }
     match catalogue(grade.value, base) {
-        Some(oil) => Some(oil),
-        None => {
+        Ok(oil) => Some(oil),
+        Err(why) => {
             let (key, _) = f.values.get("base").or_else(|| f.values.get("type")).copied()?;
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::OutOfRange,
+            let (span, reason, hint) = match why {
+                NotInCatalogue::NoNu100(NoNu100::BelowTable) => (
+                    grade.span,
+                    format!(
+                        "ISO VG {} {} has no ν100 in ASTM D2270's range: at the catalogue's VI {} for {} oils, ν100 would lie below 2 mm²/s, where the standard defines no viscosity index",
+                        grade.written,
+                        base.name(),
+                        base_oil(base).map_or(0.0, |b| b.viscosity_index),
+                        base.words(),
+                    ),
+                    format!(
+                        "the lowest {} grade the catalogue holds is ISO VG {}; for a thinner oil give `nu_40`, `nu_100` (≥ 2 mm²/s) and `density_15`",
+                        base.name(),
+                        lowest_grade(base).map_or("—".into(), |g| g.to_string())
+                    ),
+                ),
+                _ => (
                     key.span,
                     format!("the catalogue has no {} oils", base.words()),
-                )
-                .hint("the catalogue holds mineral, pao, pag_insoluble, pag_soluble and ester; for another oil give `nu_40`, `nu_100` and `density_15`"),
-            );
+                    "the catalogue holds mineral, pao, pag_insoluble, pag_soluble and ester; for another oil give `nu_40`, `nu_100` and `density_15`".to_string(),
+                ),
+            };
+            errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, span, reason).hint(hint));
             None
         }
     }

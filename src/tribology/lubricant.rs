@@ -211,52 +211,41 @@ pub fn walther_viscosity((a, b): (f64, f64), t: f64) -> f64 {
     10f64.powf(10f64.powf(a - b * t.log10())) - 0.7
 }
 
-/// ASTM D2270 L and H (mm²/s) at ν100 = y (mm²/s), by the quadratic fits of its Appendix X2
-/// (Table X2.1), which reproduce Table 1 within 0.05 % for 2 ≤ y ≤ 70 and extend it above.
-fn d2270_l_h(y: f64) -> (f64, f64) {
-    // (upper end of the range, a, b, c, d, e, f): L = a y² + b y + c, H = d y² + e y + f.
-    const FITS: [(f64, [f64; 6]); 16] = [
-        (3.8, [1.14673, 1.7576, -0.109, 0.84155, 1.5521, -0.077]),
-        (4.4, [3.38095, -15.4952, 33.196, 0.78571, 1.7929, -0.183]),
-        (5.0, [2.5, -7.2143, 13.812, 0.82143, 1.5679, 0.119]),
-        (6.4, [0.101, 16.635, -45.469, 0.04985, 9.1613, -18.557]),
-        (7.0, [3.35714, -23.5643, 78.466, 0.22619, 7.7369, -16.656]),
-        (7.7, [0.01191, 21.475, -72.87, 0.79762, -0.7321, 14.61]),
-        (9.0, [0.41858, 16.1558, -56.04, 0.05794, 10.5156, -28.24]),
-        (12.0, [0.88779, 7.5527, -16.6, 0.26665, 6.7015, -10.81]),
-        (15.0, [0.7672, 10.7972, -38.18, 0.20073, 8.4658, -22.49]),
-        (18.0, [0.97305, 5.3135, -2.2, 0.28889, 5.9741, -4.93]),
-        (22.0, [0.97256, 5.25, -0.98, 0.24504, 7.416, -16.73]),
-        (28.0, [0.91413, 7.4759, -21.82, 0.20323, 9.1267, -34.23]),
-        (40.0, [0.87031, 9.7157, -50.77, 0.18411, 10.1015, -46.75]),
-        (55.0, [0.84703, 12.6752, -133.31, 0.17029, 11.4866, -80.62]),
-        (70.0, [0.85921, 11.1009, -83.19, 0.1713, 11.368, -76.94]),
-        (f64::INFINITY, [0.83531, 14.6731, -216.246, 0.16841, 11.8493, -96.947]),
-    ];
-    let (_, [a, b, c, d, e, f]) = FITS.iter().find(|(hi, _)| y <= *hi).copied().unwrap_or(FITS[15]);
-    (a * y * y + b * y + c, d * y * y + e * y + f)
-}
-
-/// The viscosity index of an oil from ν40 = u and ν100 = y (mm²/s), ASTM D2270 §5 (VI ≤ 100:
-/// 100 (L − U)/(L − H); above: N = (log H − log U)/log Y, VI = (10^N − 1)/0.00715 + 100).
-pub fn viscosity_index(u: f64, y: f64) -> f64 {
-    let (l, h) = d2270_l_h(y);
-    if u >= h {
+/// The viscosity index of an oil from ν40 = u and ν100 = y (mm²/s), ASTM D2270 §5 with L and H of
+/// its Table 1 ([`super::d2270`]): VI ≤ 100: 100 (L − U)/(L − H); above: N = (log H − log U)/log Y,
+/// VI = (10^N − 1)/0.00715 + 100. `None` below ν100 = 2 mm²/s, where the standard defines none.
+pub fn viscosity_index(u: f64, y: f64) -> Option<f64> {
+    let (l, h) = super::d2270::l_and_h(y)?;
+    Some(if u >= h {
         100.0 * (l - u) / (l - h)
     } else {
         let n = (h.log10() - u.log10()) / y.log10();
         (10f64.powf(n) - 1.0) / 0.00715 + 100.0
-    }
+    })
+}
+
+/// Why [`nu_100_for_index`] finds no ν100.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum NoNu100 {
+    /// Even ν100 = 2 mm²/s, the lowest ASTM D2270 tabulates, gives a VI above the one asked for
+    /// (or ν40 itself is at most 2 mm²/s): the oil's ν100 would lie below the standard's range.
+    BelowTable,
+    /// ν100 = ν40 still gives a VI below the one asked for.
+    AboveNu40,
 }
 
 /// ν100 (mm²/s) of the oil with ν40 = u and viscosity index `vi`: the root of
 /// [`viscosity_index`](u, y) = vi, which rises with y (a flatter viscosity–temperature line), by
-/// bisection on [2, u].
-pub fn nu_100_for_index(u: f64, vi: f64) -> Option<f64> {
-    let f = |y: f64| viscosity_index(u, y) - vi;
-    let (mut lo, mut hi) = (2.0, u);
-    if f(lo) > 0.0 || f(hi) < 0.0 {
-        return None;
+/// bisection on [2, u] to 1e-12 relative.
+pub fn nu_100_for_index(u: f64, vi: f64) -> Result<f64, NoNu100> {
+    let lowest = super::d2270::LOWEST_NU_100;
+    let f = |y: f64| viscosity_index(u, y).map_or(f64::INFINITY, |x| x - vi);
+    let (mut lo, mut hi) = (lowest, u);
+    if f(lo) > 0.0 || u <= lowest {
+        return Err(NoNu100::BelowTable);
+    }
+    if f(hi) < 0.0 {
+        return Err(NoNu100::AboveNu40);
     }
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
@@ -269,23 +258,41 @@ pub fn nu_100_for_index(u: f64, vi: f64) -> Option<f64> {
             break;
         }
     }
-    Some(0.5 * (lo + hi))
+    Ok(0.5 * (lo + hi))
+}
+
+/// Why the catalogue holds no oil of a grade and base.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum NotInCatalogue {
+    /// Not an ISO 3448 grade.
+    NotAGrade,
+    /// The base oil is not in the catalogue (traction fluids, phosphate esters).
+    NoSuchBase,
+    /// The base oil's VI puts ν100 outside ASTM D2270's range (below 2 mm²/s, for the lowest grades).
+    NoNu100(NoNu100),
 }
 
 /// The catalogue oil of ISO VG `grade` on `base`: ν40 the grade (ISO 3448 midpoint), ν100 from the
 /// base oil's viscosity index (ASTM D2270), ρ15 of the base oil. `None` when the grade is not an
-/// ISO 3448 grade or the base oil is not in the catalogue.
-pub fn catalogue(grade: f64, base: BaseOil) -> Option<OilData> {
-    let b = base_oil(base)?;
-    ISO_VG_GRADES.iter().find(|g| (**g - grade).abs() < 1e-9)?;
-    let nu_100 = nu_100_for_index(grade, b.viscosity_index)?;
-    Some(OilData {
+/// ISO 3448 grade, the base oil is not in the catalogue, or no ν100 in ASTM D2270's range gives
+/// the base oil's VI at that grade.
+pub fn catalogue(grade: f64, base: BaseOil) -> Result<OilData, NotInCatalogue> {
+    let b = base_oil(base).ok_or(NotInCatalogue::NoSuchBase)?;
+    ISO_VG_GRADES.iter().find(|g| (**g - grade).abs() < 1e-9).ok_or(NotInCatalogue::NotAGrade)?;
+    let nu_100 = nu_100_for_index(grade, b.viscosity_index).map_err(NotInCatalogue::NoNu100)?;
+    Ok(OilData {
         base,
         nu_40: grade * 1e-6,
         nu_100: nu_100 * 1e-6,
         density_15: b.density_15,
         source: format!("ISO VG {grade} {}: {}", base.name(), b.source),
     })
+}
+
+/// The lowest ISO VG grade the catalogue holds on `base` (the grades below put ν100 under
+/// ASTM D2270's 2 mm²/s at the base oil's VI); `None` for a base not in the catalogue.
+pub fn lowest_grade(base: BaseOil) -> Option<f64> {
+    ISO_VG_GRADES.iter().copied().find(|&g| catalogue(g, base).is_ok())
 }
 
 impl OilData {
@@ -304,8 +311,8 @@ impl OilData {
         self.density_15 * (1.0 - THERMAL_EXPANSION * (t - CELSIUS_ZERO - 15.0))
     }
 
-    /// The viscosity index (ASTM D2270).
-    pub fn viscosity_index(&self) -> f64 {
+    /// The viscosity index (ASTM D2270); `None` for ν100 below 2 mm²/s.
+    pub fn viscosity_index(&self) -> Option<f64> {
         viscosity_index(self.nu_40 * 1e6, self.nu_100 * 1e6)
     }
 

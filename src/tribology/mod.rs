@@ -1,5 +1,6 @@
 //! Lubricant and surface inputs in SI, and EHL film thickness along the line of action.
 
+pub mod d2270;
 pub mod film;
 pub mod lubricant;
 
