@@ -337,7 +337,7 @@ pub const LOWEST_NU_100: f64 = 2.0;
 /// L and H (mm²/s) at ν100 = `y` (mm²/s): Table 1 with linear interpolation for 2 ≤ y ≤ 70, the
 /// standard's equations above; `None` below 2 mm²/s (or for a value that is not a number).
 pub fn l_and_h(y: f64) -> Option<(f64, f64)> {
-    if !(y >= LOWEST_NU_100) {
+    if y.is_nan() || y < LOWEST_NU_100 {
         return None;
     }
     if y > 70.0 {
