@@ -181,7 +181,8 @@ fn finish(
 /// One scene (at one oil temperature) run in memory: its report and files, the record files included.
 fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), true).map_err(RunError::io("records"))?;
+    let budget = evaluate::records::budget_columns(scene);
+    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), &budget, true).map_err(RunError::io("records"))?;
     let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
     let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, &Quiet)?;
     if has_records(scene) {
@@ -241,7 +242,8 @@ fn run_scene_into(
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     let mut files = Vec::new();
     let streamed = if has_records(scene) {
-        let mut sink = shard::record_files(folder, dir).map_err(RunError::io("the record files"))?;
+        let mut sink = shard::record_files(folder, dir, &evaluate::records::budget_columns(scene))
+            .map_err(RunError::io("the record files"))?;
         let streamed = stream(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
         sink.finish().map_err(RunError::io("the record files"))?;
         files.extend([path(report::sweep::RECORDS_CSV), path(report::sweep::RECORDS_JSONL)]);
@@ -301,7 +303,8 @@ pub fn run_into(
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
     let mut files = Vec::new();
     let streamed = if has_records(scene) {
-        let mut sink = shard::record_files(&folder, "").map_err(RunError::io("the record files"))?;
+        let mut sink = shard::record_files(&folder, "", &evaluate::records::budget_columns(scene))
+            .map_err(RunError::io("the record files"))?;
         let streamed = stream(scene, &plan, &mut sink, progress).map_err(RunError::io("the record files"))?;
         sink.finish().map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);

@@ -26,11 +26,12 @@ pub const FORMAT: &str = "gearloss-shard-1";
 pub fn record_files(
     folder: &ReportFolder,
     dir: &str,
+    budget: &[String],
 ) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
     let at = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     let csv = BufWriter::new(folder.create_file(&at(RECORDS_CSV))?);
     let jsonl = BufWriter::new(folder.create_file(&at(RECORDS_JSONL))?);
-    RecordWriter::new(csv, jsonl, true)
+    RecordWriter::new(csv, jsonl, budget, true)
 }
 
 /// What a shard folder says of itself.

@@ -136,11 +136,21 @@ pub const CSV_COLUMNS: [&str; 21] = [
     "dynamic_factor",
 ];
 
-/// The header line of `records.csv`.
-pub fn csv_header() -> String {
+/// The header line of `records.csv`: [`CSV_COLUMNS`], then the scene's budget columns
+/// ([`crate::losses::columns::names`]; none without a gearbox).
+pub fn csv_header(budget: &[String]) -> String {
     let mut s = CSV_COLUMNS.join(",");
+    for name in budget {
+        s.push(',');
+        s.push_str(name);
+    }
     s.push('\n');
     s
+}
+
+/// The budget columns of a scene (none without a gearbox).
+pub fn budget_columns(scene: &crate::model::Scene) -> Vec<String> {
+    scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default()
 }
 
 /// A number as the record files write it: the shortest text that reads back to the same f64
@@ -167,8 +177,9 @@ fn text(s: &str) -> String {
     }
 }
 
-/// One CSV line of a row.
-pub fn csv_line(row: &SummaryRow) -> String {
+/// One CSV line of a row, with `budget_columns` budget cells after the fixed ones (empty where the
+/// row has no budget: friction and dynamics rows).
+pub fn csv_line(row: &SummaryRow, budget_columns: usize) -> String {
     let kind = match row.kind {
         RowKind::Efficiency => "efficiency",
         RowKind::Friction => "friction",
@@ -187,6 +198,14 @@ pub fn csv_line(row: &SummaryRow) -> String {
         text(&row.formulation),
     ];
     cells.extend(n[2..].iter().map(|(_, v)| number(*v)));
+    match &row.budget {
+        Some(b) => {
+            let budget = crate::losses::columns::cells(b);
+            debug_assert_eq!(budget.len(), budget_columns, "the budget's cells match the scene's columns");
+            cells.extend(budget.iter().map(|(_, v)| number(*v)));
+        }
+        None => cells.extend(std::iter::repeat_n(String::new(), budget_columns)),
+    }
     let mut line = cells.join(",");
     line.push('\n');
     line
@@ -209,15 +228,17 @@ pub trait RecordSink {
 pub struct RecordWriter<C: Write, J: Write> {
     pub csv: C,
     pub jsonl: J,
+    /// How many budget columns follow the fixed ones.
+    pub budget_columns: usize,
 }
 
 impl<C: Write, J: Write> RecordWriter<C, J> {
-    /// Starts both files: the CSV header line (JSON Lines has none).
-    pub fn new(mut csv: C, jsonl: J, with_header: bool) -> std::io::Result<Self> {
+    /// Starts both files: the CSV header line with the scene's `budget` columns (JSON Lines has none).
+    pub fn new(mut csv: C, jsonl: J, budget: &[String], with_header: bool) -> std::io::Result<Self> {
         if with_header {
-            csv.write_all(csv_header().as_bytes())?;
+            csv.write_all(csv_header(budget).as_bytes())?;
         }
-        Ok(RecordWriter { csv, jsonl })
+        Ok(RecordWriter { csv, jsonl, budget_columns: budget.len() })
     }
 
     pub fn finish(mut self) -> std::io::Result<(C, J)> {
@@ -230,7 +251,7 @@ impl<C: Write, J: Write> RecordWriter<C, J> {
 impl<C: Write, J: Write> RecordSink for RecordWriter<C, J> {
     fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
         for row in rows {
-            self.csv.write_all(csv_line(row).as_bytes())?;
+            self.csv.write_all(csv_line(row, self.budget_columns).as_bytes())?;
             self.jsonl.write_all(jsonl_line(row).as_bytes())?;
         }
         Ok(())

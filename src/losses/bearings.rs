@@ -15,12 +15,13 @@
 //! | deep_groove_ball | 2.0 | 0.0007 (P_0/C_0)^0.5 | max(3F_a − 0.1F_r, F_r) |
 //! | angular_contact_ball | 2.0 | 0.001 (P_0/C_0)^0.33 | max(F_a − 0.1F_r, F_r) |
 //! | cylindrical_roller | 2.5 | 0.0003 | F_r |
-//! | tapered_roller | 4.5 | 0.0004 | max(2 Y F_a, F_r), Y = 1.6 |
+//! | tapered_roller | 4.5 | 0.0004 | max(2 Y F_a, F_r), Y = `y` or [`TAPERED_Y`] |
 //! | spherical_roller | 5.0 | 0.0005 (P_0/C_0)^0.33 | max(F_r + 2.5 F_a, F_r) |
 //!
 //! with P_0 = max(0.6 F_r + 0.5 F_a, F_r) the static equivalent load and C_0 the static load rating
 //! (needed by the ball and spherical roller types). `f0` and `f1` given on a bearing replace the
-//! table's.
+//! table's. The angular-contact (2.0) and tapered (4.5) f_0 could not be traced to a primary table
+//! here; README says so and points to `f0`.
 //!
 //! A bearing given with its SKF geometry constants is computed by the SKF model instead
 //! ([`super::skf_bearing`]): its rolling moment M_rr takes the place of M_0 and its sliding moment
@@ -30,13 +31,18 @@
 //! ```
 //! use gearloss::losses::{Bearing, BearingType};
 //! let b = Bearing { kind: BearingType::CylindricalRoller, mean_diameter: 0.060, count: 1,
-//!                   static_load_rating: None, f0: None, f1: None, position: None, skf: None };
+//!                   static_load_rating: None, f0: None, f1: None, y: None, position: None, skf: None };
 //! // ν = 14 mm²/s, n = 1500 rpm: ν n = 21 000 ≥ 2000, M_0 = 1e-7 · 2.5 · 21000^(2/3) · 60³ N·mm.
 //! let m0 = 1e-7 * 2.5 * 21000f64.powf(2.0 / 3.0) * 216000.0 * 1e-3;
 //! assert!((b.no_load_moment(14e-6, 1500.0 * std::f64::consts::PI / 30.0) - m0).abs() < 1e-12);
 //! // 5 kN radial: M_1 = 0.0003 · 5000 · 60 N·mm = 0.09 N·m.
 //! assert!((b.load_moment(5000.0, 0.0).unwrap() - 0.09).abs() < 1e-12);
 //! ```
+
+/// Y of a tapered roller bearing when the scene gives none: the axial load factor of the small
+/// single-row tapered roller bearings of the 302 and 303 series (e.g. 30206: e = 0.37, Y = 1.6, in
+/// SKF's and the other makers' catalogues). Give `y` for the bearing's own.
+pub const TAPERED_Y: f64 = 1.6;
 
 /// The bearing types of the table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -95,13 +101,13 @@ impl BearingType {
         })
     }
 
-    /// P_1 (N) at F_r, F_a.
-    pub fn p1(self, fr: f64, fa: f64) -> f64 {
+    /// P_1 (N) at F_r, F_a; `y` the tapered roller bearing's axial load factor.
+    pub fn p1(self, fr: f64, fa: f64, y: f64) -> f64 {
         match self {
             BearingType::DeepGrooveBall => (3.0 * fa - 0.1 * fr).max(fr),
             BearingType::AngularContactBall => (fa - 0.1 * fr).max(fr),
             BearingType::CylindricalRoller => fr,
-            BearingType::TaperedRoller => (2.0 * 1.6 * fa).max(fr),
+            BearingType::TaperedRoller => (2.0 * y * fa).max(fr),
             BearingType::SphericalRoller => (fr + 2.5 * fa).max(fr),
         }
     }
@@ -118,6 +124,9 @@ pub struct Bearing {
     pub static_load_rating: Option<f64>,
     pub f0: Option<f64>,
     pub f1: Option<f64>,
+    /// The axial load factor Y of a tapered roller bearing (its catalogue's Y for F_a/F_r > e), for
+    /// P_1 = max(2 Y F_a, F_r); [`TAPERED_Y`] when not given.
+    pub y: Option<f64>,
     /// Axial position along the shaft from the gear's mid-plane (m), for the lever rule.
     pub position: Option<f64>,
     /// The SKF model's constants with the bore d and outside diameter D (m) it needs.
@@ -125,6 +134,15 @@ pub struct Bearing {
 }
 
 impl Bearing {
+    /// The loss model: "skf" for a bearing given with SKF constants, else "palmgren".
+    pub fn model_name(&self) -> &'static str {
+        if self.skf.is_some() {
+            "skf"
+        } else {
+            "palmgren"
+        }
+    }
+
     /// M_0 (N·m) of one bearing at the oil's kinematic viscosity ν (m²/s) and shaft speed ω (rad/s).
     pub fn no_load_moment(&self, nu: f64, omega: f64) -> f64 {
         let f0 = self.f0.unwrap_or(self.kind.f0());
@@ -140,7 +158,7 @@ impl Bearing {
             Some(f) => f,
             None => self.kind.f1(fr, fa, self.static_load_rating)?,
         };
-        Some(f1 * self.kind.p1(fr, fa) * self.mean_diameter)
+        Some(f1 * self.kind.p1(fr, fa, self.y.unwrap_or(TAPERED_Y)) * self.mean_diameter)
     }
 
     /// The two moments (N·m) of one bearing under F_r, F_a (N) at ν (m²/s) and ω (rad/s): Palmgren's
@@ -184,6 +202,7 @@ mod tests {
             static_load_rating: c0,
             f0: None,
             f1: None,
+            y: None,
             position: None,
             skf: None,
         }
@@ -211,5 +230,16 @@ mod tests {
         assert!(ball(None).load_moment(2e3, 1e3).is_none());
         let given = Bearing { f1: Some(0.001), ..ball(None) };
         assert!((given.load_moment(2e3, 0.0).unwrap() - 0.001 * 2000.0 * 0.045).abs() < 1e-15);
+    }
+
+    /// Tapered roller: P_1 = max(2 Y F_a, F_r), Y = 1.6 by default or the bearing's `y`; at F_r = 3 kN,
+    /// F_a = 1.2 kN: 2 · 1.6 · 1.2 = 3.84 kN, with y = 1.0: F_r = 3 kN governs.
+    #[test]
+    fn tapered_axial_factor() {
+        let b = Bearing { kind: BearingType::TaperedRoller, ..ball(None) };
+        let m1 = b.load_moment(3e3, 1.2e3).unwrap();
+        assert!((m1 - 0.0004 * 3840.0 * 0.045).abs() < 1e-12, "{m1}");
+        let own = Bearing { y: Some(1.0), ..b };
+        assert!((own.load_moment(3e3, 1.2e3).unwrap() - 0.0004 * 3000.0 * 0.045).abs() < 1e-12);
     }
 }

@@ -16,17 +16,19 @@
 //! splash losses nearly independent of viscosity in the dip-lubricated range); beyond 60 m/s the
 //! report flags the value.
 //!
-//! Injection lubrication: the oil jet of flow Q and speed v_j, aimed into the mesh entry against
-//! the teeth, is brought to the pitch-line speed; the momentum flux ρ Q (v_t + v_j) taken at v_t
-//! costs P_VZ0 = ρ Q v_t (v_t + v_j) (the impulse loss of Ariura et al. 1973, as ISO/TR 14179-2's
-//! FZG method uses it for jets into the mesh). Each gear spinning in the housing's air–oil mist adds
+//! Injection lubrication: the oil jet of flow Q and speed v_j meets the teeth head-on (aimed against
+//! their motion) and is brought to the pitch-line speed v_t at the working pitch circle; the
+//! momentum flux ρ Q (v_t + v_j) taken at v_t costs P_VZ0 = ρ Q v_t (v_t + v_j) (the impulse loss of
+//! Ariura et al. 1973). A jet into the mesh entry, moving with the teeth, would cost the smaller
+//! ρ Q v_t (v_t − v_j); this reading takes the head-on, conservative one. Each gear spinning in the housing's air–oil mist adds
 //! its windage, by Anderson & Loewenthal (N. E. Anderson, S. H. Loewenthal, *Spur-gear-system
 //! efficiency at part and full load*, NASA TP-1622, 1980; and *Design of spur gears for improved
 //! efficiency*, ASME J. Mech. Des. 104 (1982) 767–774):
 //!
 //! P_W = 2.82·10⁻⁷ (1 + 2.3 b/R) n^2.8 R^4.6 (0.028 η + 0.019)^0.2  (kW),
 //!
-//! n the gear's speed (rpm), R its pitch radius (m), b the face width (m) and η the oil's dynamic
+//! n the gear's speed (rpm), R its pitch radius (m; their "pitch radius" read as the working pitch
+//! radius r_w, which differs from the reference m_t z/2 where x_1 + x_2 ≠ 0: by 2 % on FZG C14), b the face width (m) and η the oil's dynamic
 //! viscosity at the oil temperature (cP = mPa·s): 0.028 η + 0.019 is their viscosity of the mist,
 //! air's 0.019 cP plus a share of the oil's (their fit to NASA's jet-lubricated spur-gear tests).
 //! Dip lubrication does not add it: Mauz's measured torque contains the windage of the dipping

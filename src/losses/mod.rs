@@ -10,12 +10,13 @@
 
 pub mod bearings;
 pub mod budget;
+pub mod columns;
 pub mod gear_no_load;
 pub mod seals;
 pub mod skf_bearing;
 
 pub use bearings::{Bearing, BearingType};
-pub use budget::{loss_budget, BearingLoss, BudgetParts, LossBudget};
+pub use budget::{loss_budget, BearingLoads, BearingLoss, BudgetParts, LossBudget};
 pub use gear_no_load::Lubrication;
 pub use seals::Seal;
 

@@ -136,41 +136,46 @@ pub fn budget_section(r: &Report) -> String {
         out,
         "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gears without load: churning for dip lubrication; jet impulse and windage for injection) + P_VL (bearings: Palmgren's M_0 and M_1 in the no-load and load columns, or for a bearing given with SKF constants the SKF model's rolling M_rr and sliding M_sl) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
     );
-    header(
-        &mut out,
-        &[
-            "operating point",
-            "law",
-            "formulation",
-            "mesh W",
-            "gears no-load W",
-            "bearings no-load W",
-            "bearings load W",
-            "seals W",
-            "total W",
-            "mesh %",
-            "η total %",
-        ],
-    );
+    let helical = r.efficiency.iter().any(|e| e.ohlendorf.is_some());
+    if helical {
+        let _ = writeln!(
+            out,
+            "Helical pair: the mesh column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line (the sum of the budget uses it: it follows the load along the inclined lines the law is evaluated on). Beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two.\n"
+        );
+    }
+    let mut cols = vec!["operating point", "law", "formulation", "mesh W"];
+    if helical {
+        cols.extend(["ISO P_in μ̄ H_V W", "ratio"]);
+    }
+    cols.extend([
+        "gears no-load W",
+        "bearings no-load W",
+        "bearings load W",
+        "seals W",
+        "total W",
+        "mesh %",
+        "η total %",
+    ]);
+    header(&mut out, &cols);
     let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| fixed(q.si(), 2));
     for e in &r.efficiency {
         let Some(b) = &e.budget else { continue };
-        row(
-            &mut out,
-            &[
-                point_label(r, e),
-                law_words(&e.label),
-                e.formulation.name().to_string(),
-                fixed(e.power_loss.si(), 2),
-                w(b.gear_no_load),
-                w(b.bearings_no_load),
-                w(b.bearings_load),
-                w(b.seals),
-                fixed(b.total_loss.si(), 2),
-                fixed(100.0 * e.power_loss.si() / b.total_loss.si(), 1),
-                fixed(100.0 * b.total_efficiency.0, 3),
-            ],
-        );
+        let mut cells =
+            vec![point_label(r, e), law_words(&e.label), e.formulation.name().to_string(), fixed(e.power_loss.si(), 2)];
+        if helical {
+            cells.push(w(e.ohlendorf.map(|o| o.power_loss)));
+            cells.push(e.ohlendorf.map_or("—".into(), |o| fixed(o.line_integral_ratio.0, 4)));
+        }
+        cells.extend([
+            w(b.gear_no_load),
+            w(b.bearings_no_load),
+            w(b.bearings_load),
+            w(b.seals),
+            fixed(b.total_loss.si(), 2),
+            fixed(100.0 * e.power_loss.si() / b.total_loss.si(), 1),
+            fixed(100.0 * b.total_efficiency.0, 3),
+        ]);
+        row(&mut out, &cells);
     }
     out
 }
@@ -211,7 +216,7 @@ pub fn map_csv(m: &MapReport) -> String {
     );
     let num = |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::report::number::round_sig(x)));
     for c in &m.cells {
-        let b = c.budget;
+        let b = c.budget.as_ref();
         let _ = writeln!(
             out,
             "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{}",

@@ -1,6 +1,7 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
 pub mod markdown;
+pub mod markdown_bearings;
 pub mod markdown_dynamics;
 pub mod markdown_friction;
 pub mod markdown_helical;

@@ -141,9 +141,22 @@ pub struct EfficiencyRecord {
     pub error_estimate: Num,
     pub power_loss: Q,
     pub parameters: Parameters,
+    /// Helical pairs: ISO/TR 14179-2's own mesh loss P_VZP = P_in μ̄ H_V (Ohlendorf's H_V, μ̄ the
+    /// record's mean |μ|) beside `power_loss`, the contact-line integral.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ohlendorf: Option<OhlendorfLoss>,
     /// The loss budget at this point with this record's mesh loss, when the scene describes its gearbox.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub budget: Option<super::losses::BudgetRecord>,
+}
+
+/// ISO/TR 14179-2's mesh loss beside the contact-line integral.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct OhlendorfLoss {
+    /// P_in μ̄ H_V (W).
+    pub power_loss: Q,
+    /// The line integral's loss over it.
+    pub line_integral_ratio: Num,
 }
 
 /// `coulomb(mu = 0.04)`: the law as the user wrote it (defaults left out).
@@ -220,7 +233,8 @@ pub fn film_rows(pe: &PointEvaluation) -> Option<Vec<FilmRow>> {
 
 /// The efficiency records the report keeps (every point of a small sweep; the plotted ones of a
 /// large one), from the run's tally.
-pub fn efficiency_records(scene: &Scene, tally: &Tally) -> Vec<EfficiencyRecord> {
+pub fn efficiency_records(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<EfficiencyRecord> {
+    let helical = eval.geometry.helix_angle != 0.0;
     tally
         .kept
         .iter()
@@ -240,10 +254,18 @@ pub fn efficiency_records(scene: &Scene, tally: &Tally) -> Vec<EfficiencyRecord>
                 error_estimate: Num(r.mean_efficiency_error?),
                 power_loss: Q::new(r.power_loss?, "W"),
                 parameters: Parameters(r.parameters.clone()),
-                budget: r.budget.as_ref().map(super::losses::budget_record),
+                ohlendorf: ohlendorf_loss(helical, r, eval.ohlendorf_loss_factor),
+                budget: r.budget.as_ref().map(|b| super::losses::budget_record(b, scene.gearbox.as_ref())),
             })
         })
         .collect()
+}
+
+/// P_VZP = P_in μ̄ H_V (ISO/TR 14179-2 with Ohlendorf's H_V) of an efficiency row of a helical pair.
+fn ohlendorf_loss(helical: bool, r: &crate::evaluate::records::SummaryRow, h_v: f64) -> Option<OhlendorfLoss> {
+    let p = r.pinion_torque * r.pinion_speed * r.mean_abs_mu? * h_v;
+    let line_integral = r.power_loss?;
+    helical.then(|| OhlendorfLoss { power_loss: Q::new(p, "W"), line_integral_ratio: Num(line_integral / p) })
 }
 
 /// Findings about the laws: their notes, validity, divergence handling, over every point of the run.

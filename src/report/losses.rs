@@ -6,7 +6,7 @@ use super::number::{Num, Q};
 use super::{Finding, Severity};
 use crate::evaluate::map::{EfficiencyMap, MapCell};
 use crate::evaluate::Evaluation;
-use crate::losses::BudgetParts;
+use crate::losses::{Bearing, BudgetParts, Gearbox};
 use crate::model::{Formulation, Scene};
 
 /// What the laws, films and losses read from the oil, and where it came from.
@@ -65,7 +65,7 @@ pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantRep
 }
 
 /// The budget beside an efficiency record's mesh loss, in W; parts the scene does not describe are absent.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Serialize)]
 pub struct BudgetRecord {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gear_no_load: Option<Q>,
@@ -77,10 +77,58 @@ pub struct BudgetRecord {
     pub seals: Option<Q>,
     pub total_loss: Q,
     pub total_efficiency: Num,
+    /// Every bearing place in the scene's order (pinion shaft, then wheel shaft).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub bearings: Vec<BearingRecord>,
 }
 
-pub fn budget_record(p: &BudgetParts) -> BudgetRecord {
+/// One bearing place of the budget: what it is, where, what it carries and loses.
+#[derive(Debug, Clone, Serialize)]
+pub struct BearingRecord {
+    /// `pinion` or `wheel`.
+    pub shaft: &'static str,
+    #[serde(rename = "type")]
+    pub kind: &'static str,
+    /// `palmgren` or `skf`.
+    pub model: &'static str,
+    pub count: usize,
+    /// `at` along the shaft from the gear mid-plane, when given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub position: Option<Q>,
+    /// Loads of one bearing (N).
+    pub radial_load: Q,
+    pub axial_load: Q,
+    /// Losses of all `count` bearings (W).
+    pub no_load: Q,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load: Option<Q>,
+}
+
+/// The bearing places of a gearbox in the budget's order: (shaft name, bearing).
+pub fn bearing_places(g: &Gearbox) -> impl Iterator<Item = (&'static str, &Bearing)> {
+    g.bearings.iter().zip(["pinion", "wheel"]).flat_map(|(places, shaft)| places.iter().map(move |b| (shaft, b)))
+}
+
+pub fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord {
     let w = |x: Option<f64>| x.map(|x| Q::new(x, "W"));
+    let bearings = gearbox
+        .map(|g| {
+            bearing_places(g)
+                .zip(&p.bearings)
+                .map(|((shaft, b), l)| BearingRecord {
+                    shaft,
+                    kind: b.kind.name(),
+                    model: b.model_name(),
+                    count: b.count,
+                    position: b.position.map(|x| Q::new(x, "m")),
+                    radial_load: Q::new(l.radial_load, "N"),
+                    axial_load: Q::new(l.axial_load, "N"),
+                    no_load: Q::new(l.no_load, "W"),
+                    load: w(l.load),
+                })
+                .collect()
+        })
+        .unwrap_or_default();
     BudgetRecord {
         gear_no_load: w(p.gear_no_load),
         bearings_no_load: w(p.bearings_no_load),
@@ -88,6 +136,7 @@ pub fn budget_record(p: &BudgetParts) -> BudgetRecord {
         seals: w(p.seals),
         total_loss: Q::new(p.total_loss, "W"),
         total_efficiency: Num(p.total_efficiency),
+        bearings,
     }
 }
 
@@ -137,7 +186,7 @@ pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
                 continue;
             }
             let mesh = range(cells.iter().map(|c| c.mesh_efficiency));
-            let budgets: Option<Vec<BudgetParts>> = cells.iter().map(|c| c.budget).collect();
+            let budgets: Option<Vec<&BudgetParts>> = cells.iter().map(|c| c.budget.as_ref()).collect();
             ranges.push(MapRange {
                 label: label.clone(),
                 formulation: f,

@@ -132,7 +132,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         inputs: scene::inputs(scene),
         geometry: geometry::geometry_report(eval),
         operating_points: eval.points.iter().map(|p| points::operating_point_report(scene, eval, p)).collect(),
-        efficiency: friction::efficiency_records(scene, tally),
+        efficiency: friction::efficiency_records(scene, eval, tally),
         records: sweep::records_report(tally, plan),
         sweep: sweep::sweep_report(tally, plan),
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),

@@ -26,7 +26,7 @@ const SHAFTS: [&str; 2] = ["pinion_shaft", "wheel_shaft"];
 const DIP: &[&str] = &["pinion_immersion", "wheel_immersion", "axis_height", "housing_width"];
 const INJECTION: &[&str] = &["flow", "jet_speed"];
 const BEARING: &[&str] =
-    &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1", "model"];
+    &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1", "y", "model"];
 const SKF: &[&str] = &["r1", "r2", "s1", "s2", "y", "mu_bl", "mu_ehl"];
 const SEAL: &[&str] = &["diameter", "count"];
 
@@ -153,6 +153,7 @@ fn lower_bearing(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Bearing> {
         static_load_rating: c0.map(|c| c.value.value),
         f0: f.number("f0", 0.1, 100.0, errors).map(|g| g.value),
         f1: f.number("f1", 1e-6, 0.1, errors).map(|g| g.value),
+        y: tapered_y(&f, kind, errors).ok()?,
         position: metres(f.optional("at", errors)),
         skf,
     })
@@ -244,6 +245,28 @@ fn lower_seal(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Seal> {
     let d = metres(positive(f.required("diameter", "30 mm", errors), "diameter", errors));
     let count = f.number("count", 1.0, 64.0, errors).map_or(1, |c| c.value.round() as usize);
     Some(Seal { diameter: d?, count })
+}
+
+/// `y`, the axial load factor of a tapered roller bearing's Palmgren P_1 (refused on other types,
+/// and beside an SKF model, which takes its own `y`); `Err` after an error.
+fn tapered_y(f: &Fields, kind: BearingType, errors: &mut Vec<Diagnostic>) -> Result<Option<f64>, ()> {
+    let Some(y) = f.number("y", 0.3, 5.0, errors) else { return Ok(None) };
+    if kind != BearingType::TaperedRoller || f.has("model") {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                y.span,
+                format!(
+                    "`y` is the axial load factor of a tapered roller bearing's P_1; this is a {} bearing{}",
+                    kind.name(),
+                    if f.has("model") { " with a model of its own" } else { "" }
+                ),
+            )
+            .hint("leave `y` out, or give it inside `model = skf(...)` for the SKF model"),
+        );
+        return Err(());
+    }
+    Ok(Some(y.value))
 }
 
 /// Positions (`at`) on all or none of a shaft's bearing places, and then on exactly two.

@@ -178,6 +178,7 @@ fn lever_rule_and_axial_moment() {
         static_load_rating: None,
         f0: None,
         f1: None,
+        y: None,
         position: Some(at),
         skf: None,
     };
@@ -190,10 +191,72 @@ fn lever_rule_and_axial_moment() {
     let m = g.axial_force(t) * g.working_pitch_radius[0] / 0.1;
     let r1 = (0.6 * ft).hypot(0.6 * fr - m);
     let r2 = (0.4 * ft).hypot(0.4 * fr + m);
-    assert!((b.bearings[0].radial_load / r1 - 1.0).abs() < 1e-12, "{} vs {r1}", b.bearings[0].radial_load);
-    assert!((b.bearings[1].radial_load / r2 - 1.0).abs() < 1e-12);
-    assert!((b.bearings[0].axial_load - g.axial_force(t)).abs() < 1e-9 && b.bearings[1].axial_load == 0.0);
+    let [b0, b1] = [b.bearings[0].loads, b.bearings[1].loads];
+    assert!((b0.radial_load / r1 - 1.0).abs() < 1e-12, "{} vs {r1}", b0.radial_load);
+    assert!((b1.radial_load / r2 - 1.0).abs() < 1e-12);
+    assert!((b0.axial_load - g.axial_force(t)).abs() < 1e-9 && b1.axial_load == 0.0);
     assert!(b.gear_no_load.is_none() && b.seals.is_none());
+}
+
+/// Statics of both shafts of a helical pair (issue 26): with positions on both shafts, each shaft's
+/// reactions balance the gear force in x, y, z and the moments about x and y to 1e-12 of the
+/// force × span scale; the budget's loads are those reactions per bearing. The wheel takes the
+/// opposite axial pattern: its gear force is the pinion's reversed and its contact lies on the other
+/// side of its axis, so in its own frame only the axial force changes sign, and the moment F_a r_w2
+/// unloads its first place where the pinion's loads it (by hand: lever · F_r + F_a r_w2 / span).
+#[test]
+fn both_shafts_balance_forces_and_moments() {
+    use gearloss::losses::budget::{shaft_reactions, GearForce};
+    let scene = spec("metric_helical.gear");
+    let g = scene.gears.geometry().unwrap();
+    let place = |at: f64, count: usize| Bearing {
+        kind: BearingType::TaperedRoller,
+        mean_diameter: 0.05,
+        count,
+        static_load_rating: None,
+        f0: None,
+        f1: None,
+        y: None,
+        position: Some(at),
+        skf: None,
+    };
+    let gb = Gearbox {
+        lubrication: None,
+        bearings: [vec![place(-0.04, 1), place(0.06, 1)], vec![place(-0.05, 2), place(0.07, 1)]],
+        seals: [vec![], vec![]],
+    };
+    let t = 400.0;
+    let b = loss_budget(&gb, &g, t, rpm(1000.0), &OIL);
+    let f_bt = t / g.base_radius[0];
+    let (ft, fr, fa) =
+        (f_bt * g.operating_pressure_angle.cos(), f_bt * g.operating_pressure_angle.sin(), g.axial_force(t));
+    assert!(fa > 0.1 * ft, "a helical pair: F_a = {fa} N");
+    for (s, places, sign) in [(0, [-0.04, 0.06], 1.0), (1, [-0.05, 0.07], -1.0)] {
+        let r_w = g.working_pitch_radius[s];
+        let f = GearForce { tangential: ft, radial: fr, axial: sign * fa, radius: r_w };
+        let [r1, r2] = shaft_reactions(f, places);
+        let gear = [-fr, ft, sign * fa];
+        let scale = f_bt * 0.12;
+        for k in 0..3 {
+            assert!((r1[k] + r2[k] + gear[k]).abs() < 1e-12 * f_bt, "shaft {s} force {k}");
+        }
+        // Moments about the gear centre: bearings at (0, 0, p_i), the gear force at (r_w, 0, 0).
+        let m_x = -places[0] * r1[1] - places[1] * r2[1];
+        let m_y = places[0] * r1[0] + places[1] * r2[0] - r_w * gear[2];
+        assert!(m_x.abs() < 1e-12 * scale && m_y.abs() < 1e-12 * scale, "shaft {s}: {m_x} {m_y}");
+        // The budget's loads per bearing, in the scene's order.
+        let counts = [gb.bearings[s][0].count as f64, gb.bearings[s][1].count as f64];
+        let [l1, l2] = [b.bearings[2 * s].loads, b.bearings[2 * s + 1].loads];
+        assert_eq!(b.bearings[2 * s].shaft, ["pinion", "wheel"][s]);
+        assert!((l1.radial_load - r1[0].hypot(r1[1]) / counts[0]).abs() < 1e-12 * f_bt);
+        assert!((l2.radial_load - r2[0].hypot(r2[1]) / counts[1]).abs() < 1e-12 * f_bt);
+        assert!((l1.axial_load - fa / counts[0]).abs() < 1e-12 * fa && l2.axial_load == 0.0);
+        // By hand, the lever rule with the axial moment's sign of this shaft.
+        let span = places[1] - places[0];
+        let (lever1, m) = (places[1] / span, fa * r_w / span);
+        let by_hand = (lever1 * ft).hypot(lever1 * fr - sign * m) / counts[0];
+        assert!((l1.radial_load / by_hand - 1.0).abs() < 1e-12, "shaft {s}: {} vs {by_hand}", l1.radial_load);
+    }
 }
 
 /// Limits: no oil above the gears gives no churning; injection at zero flow leaves only the two

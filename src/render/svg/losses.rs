@@ -261,11 +261,15 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
         let name = super::super::table::law_words(label);
         let has_budget = m.cells.iter().any(|c| c.budget.is_some());
         if has_budget {
-            fields.push((format!("total η — {name}"), grid(&|c| c.budget.map(|b| 100.0 * b.total_efficiency)), "%"));
+            fields.push((
+                format!("total η — {name}"),
+                grid(&|c| c.budget.as_ref().map(|b| 100.0 * b.total_efficiency)),
+                "%",
+            ));
         }
         fields.push((format!("mesh η — {name}"), grid(&|c| Some(100.0 * c.mesh_efficiency)), "%"));
         if has_budget {
-            fields.push((format!("total loss — {name}"), grid(&|c| c.budget.map(|b| b.total_loss)), "W"));
+            fields.push((format!("total loss — {name}"), grid(&|c| c.budget.as_ref().map(|b| b.total_loss)), "W"));
         } else {
             fields.push((format!("mesh loss — {name}"), grid(&|c| Some(c.mesh_loss)), "W"));
         }

@@ -1,0 +1,161 @@
+//! The loss budget as record columns: the names a scene's gearbox gives (the parts it describes, the
+//! total, then four columns per bearing place in the scene's order, pinion shaft first), and
+//! [`BudgetParts`] read and written as those flat columns in `records.csv` and `records.jsonl`.
+//!
+//! ```
+//! use gearloss::losses::columns::names;
+//! use gearloss::losses::{Bearing, BearingType, Gearbox};
+//! let b = Bearing { kind: BearingType::CylindricalRoller, mean_diameter: 0.05, count: 1,
+//!                   static_load_rating: None, f0: None, f1: None, y: None, position: None, skf: None };
+//! let g = Gearbox { lubrication: None, bearings: [vec![b], vec![]], seals: [vec![], vec![]] };
+//! assert_eq!(names(&g), ["bearings_no_load_W", "bearings_load_W", "total_loss_W", "total_efficiency",
+//!     "bearing_1_radial_load_N", "bearing_1_axial_load_N", "bearing_1_no_load_W", "bearing_1_load_W"]);
+//! ```
+
+use serde::de::{Deserializer, MapAccess, Visitor};
+use serde::ser::{SerializeMap, Serializer};
+use serde::{Deserialize, Serialize};
+
+use super::budget::{BearingLoads, BudgetParts};
+use super::Gearbox;
+
+/// The four columns of bearing place `i` (1-based), after its prefix `bearing_{i}_`.
+const BEARING_FIELDS: [&str; 4] = ["radial_load_N", "axial_load_N", "no_load_W", "load_W"];
+
+/// The budget columns of a scene with this gearbox, in the order [`cells`] gives their values.
+pub fn names(g: &Gearbox) -> Vec<String> {
+    let has_bearings = g.bearings.iter().any(|b| !b.is_empty());
+    let parts = [
+        ("gear_no_load_W", g.lubrication.is_some()),
+        ("bearings_no_load_W", has_bearings),
+        ("bearings_load_W", has_bearings),
+        ("seals_W", g.seals.iter().any(|s| !s.is_empty())),
+        ("total_loss_W", true),
+        ("total_efficiency", true),
+    ];
+    let mut out: Vec<String> = parts.iter().filter(|(_, on)| *on).map(|(n, _)| n.to_string()).collect();
+    let places = g.bearings.iter().map(Vec::len).sum::<usize>();
+    for i in 1..=places {
+        out.extend(BEARING_FIELDS.iter().map(|f| format!("bearing_{i}_{f}")));
+    }
+    out
+}
+
+/// The budget's values by column name, in the order of [`names`] for the gearbox that gave them.
+pub fn cells(p: &BudgetParts) -> Vec<(String, Option<f64>)> {
+    let mut out: Vec<(String, Option<f64>)> = [
+        ("gear_no_load_W", p.gear_no_load),
+        ("bearings_no_load_W", p.bearings_no_load),
+        ("bearings_load_W", p.bearings_load),
+        ("seals_W", p.seals),
+    ]
+    .into_iter()
+    .filter(|(_, v)| v.is_some())
+    .map(|(n, v)| (n.to_string(), v))
+    .collect();
+    out.push(("total_loss_W".into(), Some(p.total_loss)));
+    out.push(("total_efficiency".into(), Some(p.total_efficiency)));
+    for (i, b) in p.bearings.iter().enumerate() {
+        let values = [Some(b.radial_load), Some(b.axial_load), Some(b.no_load), b.load];
+        out.extend(BEARING_FIELDS.iter().zip(values).map(|(f, v)| (format!("bearing_{}_{f}", i + 1), v)));
+    }
+    out
+}
+
+impl Serialize for BudgetParts {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let cells = cells(self);
+        let mut map = s.serialize_map(Some(cells.len()))?;
+        for (name, value) in &cells {
+            // A missing load-dependent bearing loss is left out, as the parts are.
+            if let Some(v) = value {
+                map.serialize_entry(name, v)?;
+            }
+        }
+        map.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for BudgetParts {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_map(PartsVisitor)
+    }
+}
+
+struct PartsVisitor;
+
+impl<'de> Visitor<'de> for PartsVisitor {
+    type Value = BudgetParts;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("the loss budget's columns")
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<BudgetParts, A::Error> {
+        let mut p = BudgetParts::default();
+        let (mut total, mut efficiency) = (None, None);
+        while let Some(key) = map.next_key::<String>()? {
+            // Other columns of the row (when flattened into it) are not the budget's.
+            let Ok(value) = map.next_value::<Option<f64>>() else { continue };
+            let value = value.unwrap_or(f64::NAN);
+            match key.as_str() {
+                "gear_no_load_W" => p.gear_no_load = Some(value),
+                "bearings_no_load_W" => p.bearings_no_load = Some(value),
+                "bearings_load_W" => p.bearings_load = Some(value),
+                "seals_W" => p.seals = Some(value),
+                "total_loss_W" => total = Some(value),
+                "total_efficiency" => efficiency = Some(value),
+                _ => {
+                    if let Some((i, field)) = bearing_column(&key) {
+                        if p.bearings.len() < i {
+                            let empty = BearingLoads { radial_load: 0.0, axial_load: 0.0, no_load: 0.0, load: None };
+                            p.bearings.resize(i, empty);
+                        }
+                        let b = &mut p.bearings[i - 1];
+                        match field {
+                            0 => b.radial_load = value,
+                            1 => b.axial_load = value,
+                            2 => b.no_load = value,
+                            _ => b.load = Some(value),
+                        }
+                    }
+                }
+            }
+        }
+        p.total_loss = total.ok_or_else(|| serde::de::Error::missing_field("total_loss_W"))?;
+        p.total_efficiency = efficiency.ok_or_else(|| serde::de::Error::missing_field("total_efficiency"))?;
+        Ok(p)
+    }
+}
+
+/// `bearing_{i}_{field}` → (i, the field's index in [`BEARING_FIELDS`]).
+fn bearing_column(key: &str) -> Option<(usize, usize)> {
+    let rest = key.strip_prefix("bearing_")?;
+    let (i, field) = rest.split_once('_')?;
+    let i: usize = i.parse().ok().filter(|&i| i >= 1)?;
+    Some((i, BEARING_FIELDS.iter().position(|f| *f == field)?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Written as columns and read back, a budget is the same, a missing load-dependent loss included.
+    #[test]
+    fn round_trip() {
+        let b = |x: f64, load| BearingLoads { radial_load: x, axial_load: 0.5 * x, no_load: 2.0, load };
+        let p = BudgetParts {
+            gear_no_load: Some(10.0),
+            bearings_no_load: Some(4.0),
+            bearings_load: Some(3.25),
+            seals: None,
+            total_loss: 120.5,
+            total_efficiency: 0.987,
+            bearings: vec![b(1000.0, Some(1.5)), b(1200.0, None), b(800.0, Some(1.75))],
+        };
+        let text = serde_json::to_string(&p).unwrap();
+        assert!(!text.contains("seals") && !text.contains("bearing_2_load_W"), "{text}");
+        assert_eq!(serde_json::from_str::<BudgetParts>(&text).unwrap(), p);
+        assert!(serde_json::from_str::<BudgetParts>(r#"{"gear_no_load_W": 1.0}"#).is_err());
+    }
+}

@@ -1,0 +1,75 @@
+//! report.md's bearing tables: every bearing place of the budget at each operating point (its
+//! shaft, type, model, position, the loads of one bearing and the losses of all of them), so that a
+//! bearing loss can be audited from the loads behind it. Loads do not depend on the law, so a point
+//! is shown once; a sweep of more than [`ALL_POINTS_UP_TO`] points shows its detail points only.
+
+use std::fmt::Write;
+
+use super::table::{fixed, header, row, sig};
+use crate::report::friction::EfficiencyRecord;
+use crate::report::Report;
+
+/// Sweeps up to this many points show the bearings at every point.
+pub const ALL_POINTS_UP_TO: usize = 100;
+
+/// The section, empty when no record has bearings.
+pub fn bearings_section(r: &Report) -> String {
+    let mut out = String::new();
+    let mut points: Vec<&EfficiencyRecord> = Vec::new();
+    for e in r.efficiency.iter().filter(|e| e.budget.as_ref().is_some_and(|b| !b.bearings.is_empty())) {
+        if !points.iter().any(|p| same_point(p, e)) {
+            points.push(e);
+        }
+    }
+    if points.is_empty() {
+        return out;
+    }
+    let all = points.len() <= ALL_POINTS_UP_TO;
+    if !all {
+        points.retain(|e| {
+            r.operating_points
+                .iter()
+                .any(|p| p.pinion_torque.si() == e.pinion_torque.si() && p.pinion_speed.si() == e.pinion_speed.si())
+        });
+    }
+    let _ = writeln!(out, "\n### Bearings\n");
+    let _ = writeln!(
+        out,
+        "Each bearing place in the scene's order (pinion shaft, then wheel shaft): the radial and axial load of one bearing from the mesh force (with positions `at`, by the statics of the shaft on its two places; without, F_bt shared equally), and the no-load and load-dependent losses of all `count` bearings of the place. {}\n",
+        if all { "Every operating point." } else { "The detail operating points only (the sweep has more than 100); records.csv has every point." }
+    );
+    for e in points {
+        let Some(b) = &e.budget else { continue };
+        let _ = writeln!(
+            out,
+            "{} N·m, {} {}:\n",
+            sig(e.pinion_torque.si()),
+            sig(r.speed_unit.value(&e.pinion_speed)),
+            r.speed_unit.name
+        );
+        header(&mut out, &["#", "shaft", "type", "model", "count", "at mm", "F_r N", "F_a N", "no-load W", "load W"]);
+        for (i, x) in b.bearings.iter().enumerate() {
+            row(
+                &mut out,
+                &[
+                    (i + 1).to_string(),
+                    x.shaft.to_string(),
+                    x.kind.to_string(),
+                    x.model.to_string(),
+                    x.count.to_string(),
+                    x.position.map_or("—".into(), |p| fixed(p.si() * 1e3, 1)),
+                    fixed(x.radial_load.si(), 1),
+                    fixed(x.axial_load.si(), 1),
+                    fixed(x.no_load.si(), 3),
+                    x.load.map_or("—".into(), |l| fixed(l.si(), 3)),
+                ],
+            );
+        }
+        let _ = writeln!(out);
+    }
+    out
+}
+
+fn same_point(a: &EfficiencyRecord, b: &EfficiencyRecord) -> bool {
+    a.pinion_torque.si() == b.pinion_torque.si() && a.pinion_speed.si() == b.pinion_speed.si()
+}
