@@ -136,6 +136,13 @@ pub fn budget_section(r: &Report) -> String {
         out,
         "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gears without load: churning for dip lubrication; jet impulse and windage for injection) + P_VL (bearings: Palmgren's M_0 and M_1 in the no-load and load columns, or for a bearing given with SKF constants the SKF model's rolling M_rr and sliding M_sl) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
     );
+    if !r.budget_readings.is_empty() {
+        let _ = writeln!(out, "Readings behind the parts:\n");
+        for x in &r.budget_readings {
+            let _ = writeln!(out, "- {x}");
+        }
+        let _ = writeln!(out);
+    }
     let helical = r.efficiency.iter().any(|e| e.ohlendorf.is_some());
     if helical {
         let _ = writeln!(

@@ -140,6 +140,33 @@ pub fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord
     }
 }
 
+/// The readings behind the budget's parts that this gearbox uses.
+pub fn budget_readings(g: &Gearbox) -> Vec<String> {
+    use crate::losses::Lubrication;
+    let mut out = Vec::new();
+    match g.lubrication {
+        Some(Lubrication::Dip { .. }) => out.push("churning (Mauz, ISO/TR 14179-2): T_H is the stage's hydraulic loss torque read at the pinion shaft, P = T_H ω_1, at the pitch-line speed v_t = ω_1 r_w1 of the working pitch circle; it contains the dipping gears' windage".to_string()),
+        Some(Lubrication::Injection { .. }) => {
+            out.push("jet impulse ρ Q v_t (v_t + v_j) (Ariura et al.): the jet meets the teeth head-on; a jet into the mesh entry moving with the teeth would lose the smaller ρ Q v_t (v_t − v_j)".to_string());
+            out.push("windage (Anderson & Loewenthal, NASA TP-1622): their pitch radius R read as the working pitch radius r_w of each gear".to_string());
+        }
+        None => {}
+    }
+    let places: Vec<&Bearing> = g.bearings.iter().flatten().collect();
+    if places.iter().any(|b| b.skf.is_none()) {
+        out.push("bearings (Palmgren): f_0, f_1, P_1 for oil-bath lubrication as SKF's General Catalogue 4000 E (1989) gives them and ISO/TR 14179-2 tabulates them; a tapered roller bearing's Y is its `y` (1.6 when not given)".to_string());
+    }
+    if places.iter().any(|b| b.skf.is_some()) {
+        out.push("bearings (SKF model, SKF Rolling bearings catalogue 2018): the series' constants R1, R2, S1, S2 as the scene gives them; K_rs = 3e-8 (low oil level, jet); no drag or seal moment".to_string());
+    }
+    if places.iter().any(|b| b.position.is_some()) {
+        out.push("bearing positions `at`: one common axial direction for both shafts from the gear mid-plane; the pinion's axial mesh force points to +at, the wheel's to −at; each shaft balanced by statics (3 forces, 2 moments)".to_string());
+    } else if !places.is_empty() {
+        out.push("bearing loads: no positions given, so each bearing of a shaft carries F_bt / (its number of bearings) and the axial moment is not taken up".to_string());
+    }
+    out
+}
+
 /// Extremes of one law and formulation over the map's grid points (the grid is what the map
 /// evaluates; these are its extremes, not the located extremes of a continuous function).
 #[derive(Debug, Clone, Serialize)]

@@ -52,6 +52,10 @@ pub struct Report {
     /// Whether the efficiency records carry a loss budget (the scene describes its gearbox).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub loss_budget: bool,
+    /// The readings the budget's models rest on, in words (which radius, which direction, which
+    /// constants), for the parts the scene describes.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub budget_readings: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub efficiency_map: Option<losses::MapReport>,
     pub findings: Vec<Finding>,
@@ -138,6 +142,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
         lubricant: losses::lubricant_report(scene, eval),
         loss_budget: scene.gearbox.is_some(),
+        budget_readings: scene.gearbox.as_ref().map(losses::budget_readings).unwrap_or_default(),
         efficiency_map: eval.efficiency_map.as_ref().map(|m| losses::map_report(scene, m)),
         findings,
         plots: vec![PlotRef {
