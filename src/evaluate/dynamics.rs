@@ -4,6 +4,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
+use super::cases::Case;
 use crate::dynamics::floquet::Verdict;
 use crate::dynamics::numerics::{study, Study};
 use crate::dynamics::propagator::Method;
@@ -11,7 +12,6 @@ use crate::dynamics::response::PeriodicResponse;
 use crate::dynamics::six_dof::SixDofSystem;
 use crate::dynamics::six_dof_response::{self, SixDofResponse};
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, PeriodicModel, SdofSystem, StiffnessModel};
-use crate::evaluate::Case;
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, PairGeometry};
 use crate::model::{DynamicModel, DynamicsSpec, Scene, Solver, StiffnessSpec};

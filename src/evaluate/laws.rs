@@ -3,7 +3,8 @@
 
 use serde::Serialize;
 
-use super::{cycle_times, Evaluation};
+use super::cases::cycle_times;
+use super::setup::Setup;
 use crate::efficiency::{self, EfficiencyResult};
 use crate::friction::catalog::LawId;
 use crate::friction::{FrictionLaw, LawContext, Parameter, Regime};
@@ -113,7 +114,7 @@ fn regime_bands(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<(f64, f64, Regim
 }
 
 pub(super) fn evaluate_law(
-    eval: &Evaluation,
+    eval: &Setup,
     spec: &crate::model::FrictionLawSpec,
     state: OperatingState,
     table: &[(Option<&'static str>, ContactPoint)],

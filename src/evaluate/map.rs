@@ -5,8 +5,9 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
+use super::cases::state_at;
 use super::laws::evaluate_law;
-use super::{contact_table, state_at, Evaluation};
+use super::setup::{contact_table, Setup};
 use crate::losses::BudgetParts;
 use crate::model::{Formulation, Operating, Scene};
 
@@ -38,7 +39,7 @@ pub struct EfficiencyMap {
 }
 
 /// Evaluates the scene's `efficiency_map`, if it asks for one.
-pub fn evaluate_map(scene: &Scene, eval: &Evaluation) -> Option<EfficiencyMap> {
+pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
     let (torques, speeds) = scene.analyses.efficiency_map.as_ref()?;
     let grid = Operating {
         pinion_torque: torques.clone(),

@@ -5,11 +5,13 @@
 
 use rayon::prelude::*;
 
+use super::cases::{case_at, state_at};
 use super::dynamics::{DynamicsPoint, DynamicsSetup};
 use super::laws::{evaluate_law, LawEvaluation};
+use super::plan::Plan;
 use super::records::{RecordSink, RowKind, SummaryRow};
+use super::setup::{contact_table, Setup};
 use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
-use super::{case_at, contact_table, state_at, Evaluation, Plan};
 use crate::efficiency::EfficiencyResult;
 use crate::model::Scene;
 
@@ -29,7 +31,7 @@ pub struct Streamed {
 /// `tick(n)` is called after each block with the number of points it held.
 pub fn evaluate_records(
     scene: &Scene,
-    eval: &Evaluation,
+    eval: &Setup,
     plan: &Plan,
     sink: &mut dyn RecordSink,
     tick: &(dyn Fn(usize) + Sync),
@@ -64,7 +66,7 @@ type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
 /// The rows and the tally of point `k`.
 fn point_summary(
     scene: &Scene,
-    eval: &Evaluation,
+    eval: &Setup,
     plan: &Plan,
     labels: &[String],
     dynamics: Option<&DynamicsSetup>,

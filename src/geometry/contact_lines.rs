@@ -14,10 +14,9 @@
 //! regions are the NASA-ART pair's case). For β = 0 a line is one spur contact (u = x_k over the
 //! whole face width) and everything reduces to the spur mesh cycle.
 
-use super::PairGeometry;
+use super::pair::PairGeometry;
+pub use super::pair::MAX_TOTAL_CONTACT_RATIO;
 
-/// Largest ε_γ supported: at most [`MAX_LINES`] lines in contact.
-pub const MAX_TOTAL_CONTACT_RATIO: f64 = 7.0;
 /// The most contact lines at once.
 pub const MAX_LINES: usize = 8;
 

@@ -8,7 +8,8 @@
 //! Efficiency, friction and dynamics all read the cycle from here.
 
 use super::contact::Sharing;
-use super::{ContactPoint, OperatingState, PairGeometry};
+use super::contact::{ContactPoint, OperatingState};
+use super::pair::PairGeometry;
 
 /// The most pairs that can be in contact at once (ε_α < 4).
 pub const MAX_CONTACTS: usize = 4;

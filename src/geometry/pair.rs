@@ -16,6 +16,9 @@ use serde::Serialize;
 
 pub use super::involute::{inverse_involute, involute};
 
+/// Largest ε_γ supported: at most [`super::contact_lines::MAX_LINES`] lines in contact.
+pub const MAX_TOTAL_CONTACT_RATIO: f64 = 7.0;
+
 /// What the geometry needs, in SI units (m, rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PairInput {
@@ -322,13 +325,13 @@ impl PairGeometry {
             return Err(problems);
         }
         let overlap = input.face_width * beta.sin() / (PI * m_n);
-        if eps + overlap > super::contact_lines::MAX_TOTAL_CONTACT_RATIO {
+        if eps + overlap > MAX_TOTAL_CONTACT_RATIO {
             problems.push(GeometryProblem {
                 part: PairPart::Pair,
                 reason: format!(
                     "total contact ratio ε_γ = {:.4} (ε_α {eps:.4} + ε_β {overlap:.4}) is above {}",
                     eps + overlap,
-                    super::contact_lines::MAX_TOTAL_CONTACT_RATIO
+                    MAX_TOTAL_CONTACT_RATIO
                 ),
                 hint: "reduce the face width or the helix angle: more than 7 contact lines at once are not supported"
                     .into(),

@@ -3,7 +3,7 @@
 
 use std::f64::consts::PI;
 
-use super::PairGeometry;
+use super::pair::PairGeometry;
 
 impl PairGeometry {
     /// The points of A–E where the number of pairs in contact changes, A + k p_b and E − k p_b (k ≥ 1)

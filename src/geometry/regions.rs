@@ -7,7 +7,7 @@
 
 use serde::Serialize;
 
-use super::PairGeometry;
+use super::pair::PairGeometry;
 
 /// Which boundary of the path of contact holds one end of a contact line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

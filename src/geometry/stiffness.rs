@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use super::PairGeometry;
+use super::pair::PairGeometry;
 
 /// Mesh stiffness over one mesh cycle.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -17,7 +17,10 @@
 
 use serde::Serialize;
 
-use super::{gear_no_load::GearsRunning, Gearbox, Oil};
+use super::bearings::Bearing;
+use super::gear_no_load::GearsRunning;
+use super::gearbox::Gearbox;
+use super::oil::Oil;
 use crate::geometry::PairGeometry;
 
 /// The loads and losses of one bearing place.
@@ -50,7 +53,7 @@ pub struct BearingLoads {
 
 /// Everything but the mesh at one operating point (W); parts the scene does not describe are `None`.
 /// (Where a model leaves its tested range the report says so once for the run:
-/// [`super::Lubrication::note`].)
+/// [`super::gear_no_load::Lubrication::note`].)
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct LossBudget {
     pub gear_no_load: Option<f64>,
@@ -132,7 +135,7 @@ pub fn shaft_reactions(f: GearForce, [p1, p2]: [f64; 2]) -> [[f64; 3]; 2] {
 }
 
 /// Radial and axial load of one bearing at each bearing place of one shaft (N).
-fn place_loads(places: &[super::Bearing], f: GearForce, f_bt: f64) -> Vec<(f64, f64)> {
+fn place_loads(places: &[Bearing], f: GearForce, f_bt: f64) -> Vec<(f64, f64)> {
     let count: usize = places.iter().map(|b| b.count).sum();
     let axial_at = |i: usize| if i == 0 { f.axial.abs() / places[0].count as f64 } else { 0.0 };
     match places {

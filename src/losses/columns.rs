@@ -17,7 +17,7 @@ use serde::ser::{SerializeMap, Serializer};
 use serde::{Deserialize, Serialize};
 
 use super::budget::{BearingLoads, BudgetParts};
-use super::Gearbox;
+use super::gearbox::Gearbox;
 
 /// The four columns of bearing place `i` (1-based), after its prefix `bearing_{i}_`.
 const BEARING_FIELDS: [&str; 4] = ["radial_load_N", "axial_load_N", "no_load_W", "load_W"];

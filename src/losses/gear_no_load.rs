@@ -91,7 +91,7 @@ pub struct GearsRunning {
 
 impl Lubrication {
     /// P_VZ0 (W) of the two gears in `oil`.
-    pub fn power_loss(&self, g: &GearsRunning, oil: &super::Oil) -> f64 {
+    pub fn power_loss(&self, g: &GearsRunning, oil: &super::oil::Oil) -> f64 {
         let v_t = g.omega[0] * g.pitch_radius[0];
         match *self {
             Lubrication::Dip { immersion, axis_height, housing_width } => {

@@ -39,7 +39,7 @@
 //! assert!(m_rr > 0.0);
 //! ```
 
-use super::BearingType;
+use super::bearing_type::BearingType;
 
 /// K_rs for a low oil bath level and for oil jet lubrication (SKF).
 pub const K_RS: f64 = 3e-8;

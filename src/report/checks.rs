@@ -1,6 +1,6 @@
 //! Findings about the scene as a whole: notes on how it was read and warnings about its inputs.
 
-use super::{Finding, Severity};
+use super::finding::{Finding, Severity};
 use crate::evaluate::Evaluation;
 use crate::geometry::TipSource;
 use crate::model::{LoadSharing, Scene};

@@ -139,7 +139,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
     let g = &eval.geometry;
     let tau_b = g.contact_ratio.fract();
     let tau_p = ((g.points.p - g.points.a) / g.base_pitch).fract();
-    let picked = super::pick(d.points.len());
+    let picked = crate::evaluate::pick(d.points.len());
     let mut curves = Vec::new();
     let points = d
         .points

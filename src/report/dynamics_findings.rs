@@ -2,7 +2,7 @@
 //! above one, a dynamic factor that only reflects a stiffness step, unstable ranges of the map.
 
 use super::dynamics::DynamicsReport;
-use super::{Finding, Severity};
+use super::finding::{Finding, Severity};
 use crate::dynamics::floquet::Verdict;
 
 /// Findings of the dynamics: instability, tooth separation, stiff ratios, Liouville.

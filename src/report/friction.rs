@@ -2,8 +2,8 @@
 
 use serde::Serialize;
 
+use super::finding::{Finding, Severity};
 use super::number::{m, Num, Q};
-use super::{Finding, Severity};
 use crate::evaluate::records::{ParameterValue, RowKind};
 use crate::evaluate::{Evaluation, LawEvaluation, PointEvaluation, Tally};
 use crate::friction::Regime;

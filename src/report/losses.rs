@@ -2,8 +2,8 @@
 
 use serde::Serialize;
 
+use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
-use super::{Finding, Severity};
 use crate::evaluate::map::{EfficiencyMap, MapCell};
 use crate::evaluate::Evaluation;
 use crate::losses::{Bearing, BudgetParts, Gearbox};

@@ -5,10 +5,11 @@
 
 use serde::Serialize;
 
+use super::finding::Severity;
 use super::friction::EfficiencyRecord;
 use super::losses::LubricantReport;
 use super::number::{Num, Q};
-use super::{Report, Severity};
+use super::scene_report::Report;
 use crate::efficiency::Formulation;
 use crate::friction::catalog::LawId;
 

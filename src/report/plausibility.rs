@@ -4,7 +4,7 @@
 //! and where it occurs, next to the result in the report. They are found at every point of the run
 //! ([`crate::evaluate::tally`]); the first [`LISTED_FINDINGS`] are listed, the rest counted.
 
-use super::{Finding, Severity};
+use super::finding::{Finding, Severity};
 pub use crate::evaluate::tally::HALF_WIDTH_LIMIT;
 use crate::evaluate::tally::{Implausible, Tally, LISTED_FINDINGS};
 

@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
+use super::friction;
 use super::number::{m, mps, pa, Num, Q};
-use super::{formulation_name, friction};
 use crate::evaluate::{Evaluation, PointEvaluation};
 use crate::geometry::ContactPoint;
 use crate::model::Scene;
@@ -160,7 +160,7 @@ pub(super) fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves>
             pc.mu.push((label.clone(), c.mu.clone()));
             pc.power_loss.push((label.clone(), c.power_loss.clone()));
             for (f, eta) in &c.efficiency {
-                pc.efficiency.push((format!("{label} {}", formulation_name(*f)), eta.clone()));
+                pc.efficiency.push((format!("{label} {}", f.name()), eta.clone()));
             }
             pc.regime_bands.extend(law.regime_bands.iter().map(|(a, b, r)| (*a, *b, format!("{r:?}"))));
         }

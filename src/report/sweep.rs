@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
+use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
-use super::{Finding, Severity};
 use crate::evaluate::tally::AtPoint;
 use crate::evaluate::{Plan, Tally};
 

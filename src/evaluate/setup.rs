@@ -1,0 +1,131 @@
+//! The setup of an evaluation: what every operating point reads.
+
+use super::cases::{Case, CURVE_SAMPLES};
+use crate::friction::LawContext;
+use crate::geometry::contact::Sharing;
+use crate::geometry::{ContactPoint, OperatingState, PairGeometry};
+use crate::model::{Formulation, LoadSharing, Scene};
+use crate::tribology::{FilmInputs, Tribology};
+
+/// What every operating point of a scene reads: geometry, materials, lubricant, the fixed sample
+/// positions and the detail cases ([`super::prepare`] builds it once). The laws, the stream of a
+/// sweep and the map take this, not the [`super::evaluation::Evaluation`] that holds their results.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// The operating points reported in full (the plan's detail points).
+    pub cases: Vec<Case>,
+    /// The contact-state table's positions (A..E in equal steps with B, P, D).
+    pub table_rows: Vec<(Option<&'static str>, f64)>,
+    /// [`Setup::curve_positions`], computed once.
+    pub positions: Vec<f64>,
+    /// Whether an analysis needs the friction laws.
+    pub wants_friction: bool,
+    pub geometry: PairGeometry,
+    /// E' (Pa).
+    pub reduced_modulus: f64,
+    pub sharing: LoadSharing,
+    pub tribology: Tribology,
+    /// Ohlendorf's gear loss factor H_V (geometry only).
+    pub ohlendorf_loss_factor: f64,
+    /// Formulations evaluated (empty when the scene asks for no efficiency).
+    pub formulations: Vec<Formulation>,
+    /// Film-thickness inputs when the film is computed (α known and asked for or needed).
+    pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
+}
+
+impl Setup {
+    pub fn sharing(&self) -> Sharing {
+        match self.sharing {
+            LoadSharing::Equal => Sharing::Equal,
+            LoadSharing::None => Sharing::Whole,
+        }
+    }
+
+    /// The friction-law context at an operating point.
+    pub fn law_context(&self, state: OperatingState) -> LawContext<'_> {
+        LawContext { geometry: &self.geometry, state, tribology: self.tribology, sharing: self.sharing() }
+    }
+
+    /// The loss budget beside the mesh at an operating point, when the scene describes its gearbox
+    /// (lowering has checked that it has a lubricant then).
+    pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
+        let gearbox = scene.gearbox.as_ref()?;
+        let t = &self.tribology;
+        let oil = crate::losses::Oil {
+            nu: t.kinematic_viscosity.unwrap_or(f64::NAN),
+            rho: t.density().unwrap_or(f64::NAN),
+            eta: t.dynamic_viscosity,
+            mineral: scene
+                .lubricant
+                .as_ref()
+                .and_then(|l| l.kind)
+                .is_none_or(|k| k == crate::model::LubricantType::Mineral),
+        };
+        Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, &oil))
+    }
+
+    /// The contact state at `u` for an operating point.
+    pub fn contact_at(&self, u: f64, state: &OperatingState) -> ContactPoint {
+        self.geometry.contact_at(u, state, self.reduced_modulus, self.sharing())
+    }
+
+    /// Evenly spaced positions from A to E for curves, with every point where the number of pairs
+    /// changes (B and D for ε_α < 2) taken from both sides so that the jumps of the load share are
+    /// drawn vertical.
+    pub fn curve_positions(&self) -> Vec<f64> {
+        let p = &self.geometry.points;
+        let eps = 1e-9 * (p.e - p.a);
+        let mut u: Vec<f64> =
+            (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
+        u.push(p.p);
+        let g = &self.geometry;
+        for (_, c) in g.pair_change_points() {
+            u.push(c);
+            // The side on which the number of pairs differs from the point itself (B: before, D: after).
+            u.extend([c - eps, c + eps].into_iter().filter(|v| g.pairs_in_contact(*v) != g.pairs_in_contact(c)));
+        }
+        u.sort_by(f64::total_cmp);
+        u
+    }
+}
+
+/// The lubricant and surface data in SI.
+pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
+    let g = &scene.gears;
+    let mean = |f: fn(&crate::model::Gear) -> Option<f64>| match (f(&g.pinion), f(&g.wheel)) {
+        (Some(a), Some(b)) => Some(0.5 * (a + b)),
+        _ => None,
+    };
+    let ra = mean(|g| g.roughness_ra.as_ref().map(|r| r.value.value));
+    let rq = mean(|g| g.roughness_rq.as_ref().map(|r| r.value.value));
+    let rz = mean(|g| g.roughness_rz.as_ref().map(|r| r.value.value));
+    let rq_composite = match (&g.pinion.roughness_rq, &g.wheel.roughness_rq) {
+        (Some(a), Some(b)) => Some(a.value.value.hypot(b.value.value)),
+        _ => None,
+    };
+    let l = scene.lubricant.as_ref();
+    let (x_l, family) = match l.and_then(|l| l.kind) {
+        None => (1.0, "mineral (default)"),
+        Some(base) => match crate::tribology::lubricant::iso_lubricant_factor(base) {
+            Some(x) => (x, base.words()),
+            None => (1.0, "synthetic ester (no ISO/TR 14179-2 X_L: 1.0)"),
+        },
+    };
+    Tribology {
+        dynamic_viscosity: l.map_or(0.0, |l| l.dynamic_viscosity.value.value),
+        kinematic_viscosity: l.and_then(|l| l.kinematic_viscosity_si()),
+        pressure_viscosity: l.and_then(|l| l.pressure_viscosity.as_ref().map(|a| a.value.value)),
+        ra_mean: ra,
+        rq_mean: rq,
+        rq_composite,
+        rz_mean: rz,
+        reduced_modulus,
+        lubricant_factor: x_l,
+        lubricant_family: family,
+    }
+}
+
+/// The contact-state table of one operating point.
+pub fn contact_table(eval: &Setup, state: &OperatingState) -> Vec<(Option<&'static str>, ContactPoint)> {
+    eval.table_rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, state))).collect()
+}

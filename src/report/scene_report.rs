@@ -1,0 +1,68 @@
+//! The report of one scene: the serde data every renderer reads.
+
+use serde::Serialize;
+
+use super::finding::Finding;
+use super::geometry::GeometryReport;
+use super::points::{Curves, OperatingPointReport};
+use super::scene::InputRow;
+use super::{dynamics, friction, losses, number, sweep};
+
+/// The report of one scene.
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    pub title: String,
+    /// Folder name: the title in lower case, words joined by `_`.
+    pub slug: String,
+    pub inputs: Vec<InputRow>,
+    pub geometry: GeometryReport,
+    /// The operating points reported in full: every point of a small sweep, a bounded set of a large one.
+    pub operating_points: Vec<OperatingPointReport>,
+    /// One record per (operating point, law, formulation) kept in the report (every point of a small
+    /// sweep, the plotted ones of a large one; records.csv has all); empty unless the scene asks for `efficiency`.
+    pub efficiency: Vec<friction::EfficiencyRecord>,
+    /// The record files: one row per operating point × law × formulation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub records: Option<sweep::RecordsReport>,
+    /// Extremes over every operating point of a sweep (more than one point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sweep: Option<sweep::SweepReport>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamics: Option<dynamics::DynamicsReport>,
+    /// The lubricant at the oil temperature, when the scene has one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lubricant: Option<losses::LubricantReport>,
+    /// Whether the efficiency records carry a loss budget (the scene describes its gearbox).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub loss_budget: bool,
+    /// The readings the budget's models rest on, in words (which radius, which direction, which
+    /// constants), for the parts the scene describes.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub budget_readings: Vec<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub efficiency_map: Option<losses::MapReport>,
+    pub findings: Vec<Finding>,
+    pub plots: Vec<PlotRef>,
+    /// Sampled curves for the plots (not in report.json: they repeat the tables at finer spacing).
+    #[serde(skip)]
+    pub curves: Curves,
+    /// The unit the scene wrote the pinion speed in, for tables and plot axes.
+    #[serde(skip)]
+    pub speed_unit: number::DisplayUnit,
+    /// The map plots' grid (torque and speed indices), when the sweep has a map.
+    #[serde(skip)]
+    pub map_grid: Option<(Vec<usize>, Vec<usize>)>,
+    /// The torque and speed indices the sweep plots draw a curve for.
+    #[serde(skip)]
+    pub sweep_curves: (Vec<usize>, Vec<usize>),
+    /// Mean |μ| of the composite law at the kept points: (torque index, torque N·m, speed rad/s, law
+    /// label, mean |μ|), in sweep order, one per point and law.
+    #[serde(skip)]
+    pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct PlotRef {
+    pub file: String,
+    pub title: String,
+}
