@@ -4,8 +4,9 @@
 
 use nalgebra::{SMatrix, SVector};
 
+use super::complex::{re_mul, C64};
 use super::quadrature::Quadrature;
-use super::{re_mul, RankOneSegment, C64};
+use super::segment::RankOneSegment;
 use crate::dynamics::model::{PeriodicModel, Propagation};
 use crate::numerics::chebyshev::Lobatto;
 use crate::numerics::dense::Augmented;

@@ -3,7 +3,7 @@
 
 use nalgebra::DMatrix;
 
-use super::C64;
+use super::complex::C64;
 use crate::numerics::chebyshev::Lobatto;
 
 /// The integrals of a piece on the Lobatto nodes of twice its degree: the products

@@ -1,6 +1,6 @@
 //! Plots along the line of action: the contact state, and μ, local power loss and η(t) at one operating point.
 
-use super::{figure, Panel};
+use super::panel::{figure, Panel};
 use crate::report::Report;
 
 fn mm(v: &[f64]) -> Vec<f64> {

@@ -1,7 +1,7 @@
 //! Dynamics plots: the periodic response at one operating point, the stability map and the
 //! work-precision diagram of the numerics study.
 
-use super::{figure, Panel};
+use super::panel::{figure, Panel};
 use crate::report::Report;
 
 /// dynamics_point_K.svg: DTE over the steady-state cycle, mesh force per pair, friction force, DTE spectrum.

@@ -6,7 +6,7 @@
 
 use plotters::prelude::*;
 
-use super::{draw_panel, plottable, Panel, PALETTE};
+use super::panel::{draw_panel, plottable, Panel, PALETTE};
 use crate::report::helical::HelicalReport;
 use crate::report::Report;
 
@@ -25,8 +25,8 @@ fn plane(
             let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |acc, v| (acc.0.min(v), acc.1.max(v)));
             format!(
                 "plane of action, μ of {label}: {} (dark) to {} (yellow); contact lines at τ = 0, ¼, ½, ¾",
-                super::super::table::sig(lo),
-                super::super::table::sig(hi)
+                crate::render::table::sig(lo),
+                crate::render::table::sig(hi)
             )
         }
         None => "plane of action: contact lines at τ = 0, ¼, ½, ¾".into(),

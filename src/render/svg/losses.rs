@@ -4,7 +4,7 @@
 use plotters::prelude::*;
 
 use super::maps::colour;
-use super::{plottable, PALETTE};
+use super::panel::{plottable, PALETTE};
 use crate::report::Report;
 
 /// The parts of a budget bar, bottom to top.
@@ -27,7 +27,7 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
                 x.pinion_torque.si(),
                 r.speed_unit.value(&x.pinion_speed),
                 r.speed_unit.name,
-                super::super::table::law_words(&x.label)
+                crate::render::table::law_words(&x.label)
             );
             Some((label, [x.power_loss.si(), w(b.gear_no_load), w(b.bearings_no_load), w(b.bearings_load), w(b.seals)]))
         })
@@ -184,8 +184,8 @@ fn draw_field(
         .y_desc("pinion torque (N·m)")
         .x_labels(6)
         .y_labels(6)
-        .x_label_formatter(&|x| super::super::table::sig(*x))
-        .y_label_formatter(&|y| super::super::table::sig(*y))
+        .x_label_formatter(&|x| crate::render::table::sig(*x))
+        .y_label_formatter(&|y| crate::render::table::sig(*y))
         .draw()
         .map_err(e)?;
     // Filled bands: each grid cell split 4 × 4, coloured by the band of its bilinear centre value;
@@ -232,7 +232,7 @@ fn draw_field(
         let segs = iso_segments(f, *l);
         chart.draw_series(segs.iter().map(|s| PathElement::new(vec![s[0], s[1]], BLACK.stroke_width(1)))).map_err(e)?;
         if let Some(s) = segs.get(segs.len() / 2) {
-            let label = super::super::table::sig(*l);
+            let label = crate::render::table::sig(*l);
             chart
                 .draw_series(std::iter::once(Text::new(label, s[0], ("sans-serif", 11).into_font().color(&BLACK))))
                 .map_err(e)?;
@@ -258,7 +258,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             }
             v
         };
-        let name = super::super::table::law_words(label);
+        let name = crate::render::table::law_words(label);
         let has_budget = m.cells.iter().any(|c| c.budget.is_some());
         if has_budget {
             fields.push((

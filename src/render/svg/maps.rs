@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::plottable;
+use super::panel::plottable;
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
@@ -49,7 +49,7 @@ fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map, spe
     let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| (a.0.min(v), a.1.max(v)));
     let span = if hi > lo { hi - lo } else { 1.0 };
     let caption = if lo.is_finite() {
-        format!("{}: {} (dark) to {} (yellow)", m.title, super::super::table::sig(lo), super::super::table::sig(hi))
+        format!("{}: {} (dark) to {} (yellow)", m.title, crate::render::table::sig(lo), crate::render::table::sig(hi))
     } else {
         format!("{}: no finite values", m.title)
     };

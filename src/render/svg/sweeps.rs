@@ -1,7 +1,7 @@
 //! Plots over the operating sweeps: mean efficiency and power loss against speed or torque, the
 //! composite law's mean |μ| against speed, and η̄ against a swept μ.
 
-use super::{figure, Panel};
+use super::panel::{figure, Panel};
 use crate::report::Report;
 
 /// Mean η and power loss against the swept variable, at each value of the other one.
