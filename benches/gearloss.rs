@@ -115,7 +115,10 @@ mod dynamics {
     use gearloss::friction::coulomb::Coulomb;
     use gearloss::geometry::OperatingState;
 
-    const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+    /// FZG type C rectangular stiffness (N/m).
+    fn rectangular() -> StiffnessModel {
+        StiffnessModel::pairs_in_contact(1.96e8, 3.92e8, 5.88e8)
+    }
 
     fn fzg() -> gearloss::Scene {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
@@ -128,7 +131,8 @@ mod dynamics {
         let law = Coulomb { mu: 0.08 };
         let ctx =
             eval.law_context(OperatingState { pinion_torque: 239.3, pinion_speed: rpm * std::f64::consts::PI / 30.0 });
-        let sys = SdofSystem::new(ctx, Some(&law), DynamicFormulation::External, K, [3.45e-4, 15.24e-4], 0.05);
+        let sys =
+            SdofSystem::new(ctx, Some(&law), DynamicFormulation::External, rectangular(), [3.45e-4, 15.24e-4], 0.05);
         f(&sys)
     }
 
@@ -238,7 +242,14 @@ mod dynamics {
                     pinion_torque: 239.3,
                     pinion_speed: rpm * std::f64::consts::PI / 30.0,
                 });
-                let sys = SdofSystem::new(ctx, Some(&law), DynamicFormulation::External, K, [3.45e-4, 15.24e-4], 0.05);
+                let sys = SdofSystem::new(
+                    ctx,
+                    Some(&law),
+                    DynamicFormulation::External,
+                    rectangular(),
+                    [3.45e-4, 15.24e-4],
+                    0.05,
+                );
                 max = max.max(Floquet::analyse(&sys).spectral_radius);
             }
             divan::black_box(max)
@@ -256,7 +267,10 @@ mod six_dof {
     use gearloss::friction::coulomb::Coulomb;
     use gearloss::geometry::OperatingState;
 
-    const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+    /// FZG type C rectangular stiffness (N/m).
+    fn rectangular() -> StiffnessModel {
+        StiffnessModel::pairs_in_contact(1.96e8, 3.92e8, 5.88e8)
+    }
 
     fn with_system<R>(rpm: f64, bearing: f64, f: impl FnOnce(&SixDofSystem) -> R) -> R {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
@@ -265,7 +279,8 @@ mod six_dof {
         let law = Coulomb { mu: 0.08 };
         let ctx =
             eval.law_context(OperatingState { pinion_torque: 239.3, pinion_speed: rpm * std::f64::consts::PI / 30.0 });
-        let mesh = SdofSystem::new(ctx, Some(&law), DynamicFormulation::Internal, K, [3.45e-4, 15.24e-4], 0.05);
+        let mesh =
+            SdofSystem::new(ctx, Some(&law), DynamicFormulation::Internal, rectangular(), [3.45e-4, 15.24e-4], 0.05);
         let b = Bearing { loa: bearing, oloa: bearing, damping_ratio: 0.02 };
         f(&SixDofSystem::new(mesh, [0.59, 1.21], [b, b]))
     }
@@ -284,7 +299,7 @@ mod six_dof {
         let eval = gearloss::evaluate(&scene);
         let ctx = eval
             .law_context(OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 });
-        let mesh = SdofSystem::new(ctx, None, DynamicFormulation::Base, K, [3.45e-4, 15.24e-4], 0.05);
+        let mesh = SdofSystem::new(ctx, None, DynamicFormulation::Base, rectangular(), [3.45e-4, 15.24e-4], 0.05);
         let b = Bearing { loa: 5e8, oloa: 5e8, damping_ratio: 0.02 };
         let sys = SixDofSystem::new(mesh, [0.59, 1.21], [b, b]);
         bencher.bench(|| divan::black_box(Floquet::analyse(&sys).periodic_state));
@@ -306,7 +321,14 @@ mod six_dof {
                     pinion_torque: 239.3,
                     pinion_speed: rpm * std::f64::consts::PI / 30.0,
                 });
-                let mesh = SdofSystem::new(ctx, Some(&law), DynamicFormulation::Internal, K, [3.45e-4, 15.24e-4], 0.05);
+                let mesh = SdofSystem::new(
+                    ctx,
+                    Some(&law),
+                    DynamicFormulation::Internal,
+                    rectangular(),
+                    [3.45e-4, 15.24e-4],
+                    0.05,
+                );
                 let sys = SixDofSystem::new(mesh, [0.59, 1.21], [b, b]);
                 max = max.max(Floquet::analyse(&sys).spectral_radius);
             }

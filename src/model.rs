@@ -8,6 +8,8 @@ use uom::si::{Quantity, ISQ, SI};
 use uom::typenum::{N1, N2, P1, P2, Z0};
 
 use crate::diagnostics::Span;
+use crate::geometry::stiffness::{StiffnessId, StiffnessModel};
+use crate::geometry::PairGeometry;
 
 pub use crate::efficiency::Formulation;
 pub use crate::friction::catalog::{FrictionLawSpec, LawId};
@@ -74,18 +76,46 @@ impl Scene {
     }
 }
 
-/// How the mesh stiffness k(t) is given.
+/// How the mesh stiffness k(t) is given: by values in a `mesh_stiffness { ... }` block, or by
+/// the name of a catalogue model computed from the geometry ([`crate::geometry::stiffness::MODELS`]).
 #[derive(Debug, Clone, PartialEq)]
 pub enum StiffnessSpec {
     /// Rectangular, with one, two (and three) pairs in contact (N/m); triple defaults to 3/2 double.
     Pairs { single: f64, double: f64, triple: Option<f64> },
-    /// The ISO 6336-1 estimate from c' (physics notes): k_n = n c' b.
-    Iso6336,
+    /// A model computed from the geometry alone (`mesh_stiffness = iso_6336`, the default).
+    Named(StiffnessId),
     /// Values over one mesh cycle (N/m), equally spaced, t = 0 when a pair enters at A.
     Table(Vec<f64>),
     /// Stiffness density k along the contact lines (N/m²), He & Singh's k: k(t) = k cos²β_b L(t)
     /// along the transverse line of action (k × face width per pair for a spur pair).
     PerLength(f64),
+}
+
+impl StiffnessSpec {
+    /// The model on the pair `g`.
+    pub fn build(&self, g: &PairGeometry) -> StiffnessModel {
+        match self {
+            StiffnessSpec::Pairs { single, double, triple } => {
+                StiffnessModel::pairs_in_contact(*single, *double, triple.unwrap_or(1.5 * double))
+            }
+            StiffnessSpec::Named(id) => {
+                (id.entry().from_geometry.expect("lowering names only models built from the geometry"))(g)
+            }
+            StiffnessSpec::Table(v) => StiffnessModel::table(v.clone()),
+            StiffnessSpec::PerLength(k) => StiffnessModel::per_length(*k, g),
+        }
+    }
+
+    /// Where the values come from, as the report says it (`given`, `table`, `per_length` or the
+    /// named model's name).
+    pub fn source(&self) -> &'static str {
+        match self {
+            StiffnessSpec::Pairs { .. } => "given",
+            StiffnessSpec::Named(id) => id.name(),
+            StiffnessSpec::Table(_) => "table",
+            StiffnessSpec::PerLength(_) => "per_length",
+        }
+    }
 }
 
 /// The solver of the periodic response.

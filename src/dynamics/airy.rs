@@ -45,11 +45,10 @@ fn fundamental(p: f64, q: f64, tau: f64) -> Option<Matrix2<f64>> {
 /// formulation (K_e = k cos²β_b L(t), piecewise linear) and the chord variant of the internal one
 /// (He & Singh eqs 25–35).
 pub fn linear_on_segments(sys: &SdofSystem) -> bool {
-    use crate::geometry::stiffness::StiffnessModel;
     sys.damping == 0.0
         && match sys.formulation {
             DynamicFormulation::Internal => sys.stiffness.is_piecewise_constant(),
-            DynamicFormulation::Base => matches!(sys.stiffness, StiffnessModel::PerLength { .. }),
+            DynamicFormulation::Base => sys.stiffness.follows_contact_length(),
             DynamicFormulation::InternalChord => true,
             DynamicFormulation::External => false,
         }

@@ -87,19 +87,7 @@ impl<'a> SdofSystem<'a> {
         let segments: Vec<Segment> =
             taus.windows(2).map(|w| Segment { start: w[0] * period, end: w[1] * period }).collect();
         // k̄ over the period (exact for the rectangular model, trapezoid on 4096 points for a table).
-        let mean_stiffness = match &stiffness {
-            StiffnessModel::PairsInContact { .. } => {
-                taus.windows(2)
-                    .zip(&segments)
-                    .map(|(w, s)| stiffness.at(0.0, ctx.geometry.pairs_at(0.5 * (w[0] + w[1]))) * (s.end - s.start))
-                    .sum::<f64>()
-                    / period
-            }
-            StiffnessModel::Table(k) => k.iter().sum::<f64>() / k.len() as f64,
-            StiffnessModel::PerLength { density, cos2_base_helix } => {
-                density * cos2_base_helix * ctx.geometry.mean_contact_length()
-            }
-        };
+        let mean_stiffness = stiffness.mean(ctx.geometry, &taus, period);
         SdofSystem {
             ctx,
             law,
@@ -120,7 +108,7 @@ impl<'a> SdofSystem<'a> {
     /// k(t) (N/m); t in seconds, periodic.
     pub fn stiffness_at(&self, t: f64) -> f64 {
         let tau = (t / self.period).rem_euclid(1.0);
-        self.stiffness.on_pair(self.ctx.geometry, tau)
+        self.stiffness.at(self.ctx.geometry, tau)
     }
 
     /// f(t), the friction term of the external and internal formulations.
@@ -236,7 +224,7 @@ impl<'a> SdofSystem<'a> {
         let (a, b) = self.matrices(tp);
         let acc = a[1][0] * x[0] + a[1][1] * x[1] + b[1];
         let tau = (tp / self.period).rem_euclid(1.0);
-        let k_rate = self.stiffness.slope_on_pair(self.ctx.geometry, tau) / self.period;
+        let k_rate = self.stiffness.slope(self.ctx.geometry, tau) / self.period;
         k_rate * (x[0] - e) + self.stiffness_at(tp) * (x[1] - de) + self.damping * (acc - dde)
     }
 
@@ -294,10 +282,7 @@ impl PeriodicModel<2> for SdofSystem<'_> {
 
     /// The nodes of a stiffness table, where k'(t) jumps.
     fn smooth_cuts(&self) -> Vec<f64> {
-        match &self.stiffness {
-            StiffnessModel::Table(k) => (1..k.len()).map(|i| i as f64 / k.len() as f64 * self.period).collect(),
-            _ => Vec::new(),
-        }
+        self.stiffness.smooth_cuts().into_iter().map(|x| x * self.period).collect()
     }
 
     /// ‖Φ‖ + ‖q‖ k̄/F0 (q in units of the static deflection).

@@ -101,7 +101,7 @@ impl SixDofResponse {
             let (d, v) = SixDofSystem::deflection(&x);
             let acc = dx[5] + dx[6] - dx[7];
             let tau = (tp / period).rem_euclid(1.0);
-            let k_rate = sys.mesh.stiffness.slope_on_pair(sys.mesh.ctx.geometry, tau) / period;
+            let k_rate = sys.mesh.stiffness.slope(sys.mesh.ctx.geometry, tau) / period;
             k_rate * d + sys.mesh.stiffness_at(tp) * v + sys.mesh.damping * acc
         };
         let n = tr.extrema(force, force_rate);

@@ -14,7 +14,7 @@ use crate::dynamics::six_dof_response::{self, SixDofResponse};
 use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, PeriodicModel, SdofSystem, StiffnessModel};
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{DynamicModel, DynamicsSpec, Scene, Solver, StiffnessSpec};
+use crate::model::{DynamicModel, DynamicsSpec, Scene, Solver};
 use crate::numerics::roots::brent;
 
 /// One formulation at one operating point.
@@ -51,7 +51,7 @@ pub struct StabilityPoint {
     pub dynamic_factor: Vec<Option<f64>>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone)]
 pub struct DynamicsEvaluation {
     /// The model that ran ([`crate::dynamics::PeriodicModel::name`]).
     pub model: &'static str,
@@ -80,15 +80,7 @@ pub struct DynamicsEvaluation {
 }
 
 fn stiffness_model(spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
-    match &spec.stiffness {
-        StiffnessSpec::Pairs { single, double, triple } => (
-            StiffnessModel::PairsInContact { single: *single, double: *double, triple: triple.unwrap_or(1.5 * double) },
-            "given",
-        ),
-        StiffnessSpec::Iso6336 => (StiffnessModel::iso_6336(g), "iso_6336"),
-        StiffnessSpec::Table(v) => (StiffnessModel::Table(v.clone()), "table"),
-        StiffnessSpec::PerLength(k) => (StiffnessModel::per_length(*k, g), "per_length"),
-    }
+    (spec.stiffness.build(g), spec.stiffness.source())
 }
 
 fn inertia(scene: &Scene) -> [f64; 2] {

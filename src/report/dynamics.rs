@@ -5,9 +5,10 @@ use serde::Serialize;
 
 use super::number::{m, DisplayUnit, Num, Q};
 pub use super::numerics::{NumericsReport, NumericsRow, Timings};
-use crate::dynamics::{DynamicFormulation, StiffnessModel};
+use crate::dynamics::DynamicFormulation;
 use crate::evaluate::dynamics::DynamicsEvaluation;
 use crate::evaluate::Evaluation;
+use crate::geometry::stiffness::StiffnessShape;
 use crate::model::Scene;
 
 use super::dynamics_records::{free_report, located, six_dof_fields};
@@ -124,14 +125,15 @@ fn finite(x: f64) -> Option<Num> {
 }
 
 pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
-    let stiffness = match &d.stiffness {
-        StiffnessModel::PairsInContact { single, double, triple } => StiffnessReport::Pairs {
+    let shape = d.stiffness.shape();
+    let stiffness = match &shape {
+        StiffnessShape::Pairs { single, double, triple } => StiffnessReport::Pairs {
             single: Q::new(*single, "N/m"),
             double: Q::new(*double, "N/m"),
             triple: Q::new(*triple, "N/m"),
         },
-        StiffnessModel::Table(v) => StiffnessReport::Table { table: v.iter().map(|k| Q::new(*k, "N/m")).collect() },
-        StiffnessModel::PerLength { density, cos2_base_helix } => StiffnessReport::PerLength {
+        StiffnessShape::Table(v) => StiffnessReport::Table { table: v.iter().map(|k| Q::new(*k, "N/m")).collect() },
+        StiffnessShape::PerLength { density, cos2_base_helix } => StiffnessReport::PerLength {
             per_length: Q::new(*density, "N/m^2"),
             cos2_base_helix_angle: Num(*cos2_base_helix),
         },
@@ -322,9 +324,9 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
     };
     DynamicsReport {
         model: d.model,
-        stiffness_step_ratio: match &d.stiffness {
-            StiffnessModel::PairsInContact { single, double, .. } => Some(double / single),
-            StiffnessModel::Table(_) | StiffnessModel::PerLength { .. } => None,
+        stiffness_step_ratio: match shape {
+            StiffnessShape::Pairs { single, double, .. } => Some(double / single),
+            StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } => None,
         },
         stiffness_source: d.stiffness_source,
         stiffness,

@@ -8,7 +8,8 @@ use super::lower_dynamics_blocks::{bearings, free_response, transmission_error};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::dynamics::DynamicFormulation;
-use crate::geometry::stiffness::StiffnessModel;
+use crate::geometry::stiffness::catalog::named_models;
+use crate::geometry::stiffness::StiffnessId;
 use crate::model::{AngularVelocity, DynamicModel, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
 use crate::scene::units::SiQuantity;
 
@@ -212,10 +213,14 @@ fn read_stiffness_csv(value: &Value, base_dir: Option<&Path>, errors: &mut Vec<D
 
 fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) -> Option<StiffnessSpec> {
     if f.has("mesh_stiffness") {
-        return f.name("mesh_stiffness", &["iso_6336"], errors).map(|_| StiffnessSpec::Iso6336);
+        let names: Vec<&str> = named_models().map(|m| m.name).collect();
+        return f
+            .name("mesh_stiffness", &names, errors)
+            .and_then(|n| named_models().find(|m| m.name == n.text))
+            .map(|m| StiffnessSpec::Named(m.id));
     }
     let Some(b) = f.blocks.iter().find(|b| b.kind.text == "mesh_stiffness") else {
-        return Some(StiffnessSpec::Iso6336);
+        return Some(StiffnessSpec::Named(StiffnessId::Iso6336));
     };
     let k = Fields::read("`mesh_stiffness`", b.span, &b.items, STIFFNESS_KEYS, &[], &[], errors);
     let get = |key: &str, errors: &mut Vec<Diagnostic>| -> Option<f64> {
@@ -329,22 +334,7 @@ pub(super) fn check_frequency_ratio(scene: &Scene, errors: &mut Vec<Diagnostic>)
     let Ok(g) = scene.gears.geometry() else { return };
     let j = |gear: &Gear| gear.inertia.as_ref().map(|j| j.value.value);
     let (Some(j1), Some(j2)) = (j(&scene.gears.pinion), j(&scene.gears.wheel)) else { return };
-    let k_max = match &spec.stiffness {
-        StiffnessSpec::Pairs { single, double, triple } => single.max(*double).max(triple.unwrap_or(1.5 * double)),
-        StiffnessSpec::Iso6336 => match StiffnessModel::iso_6336(&g) {
-            StiffnessModel::PairsInContact { single, double, triple } => single.max(double).max(triple),
-            StiffnessModel::Table(v) => v.iter().copied().fold(0.0, f64::max),
-            StiffnessModel::PerLength { density, cos2_base_helix } => {
-                density * cos2_base_helix * (g.contact_ratio.ceil() + g.overlap_ratio.ceil()) * g.face_width
-                    / g.base_helix_angle.cos()
-            }
-        },
-        StiffnessSpec::Table(v) => v.iter().copied().fold(0.0, f64::max),
-        // An upper bound of k cos²β_b L(t): L ≤ (⌈ε_α⌉ + ⌈ε_β⌉) b / cos β_b.
-        StiffnessSpec::PerLength(k) => {
-            k * g.base_helix_angle.cos() * (g.contact_ratio.ceil() + g.overlap_ratio.ceil()) * g.face_width
-        }
-    };
+    let k_max = spec.stiffness.build(&g).upper_bound(&g);
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
     let m_e = j1 * j2 / (j1 * rw * rw + j2 * rp * rp);
     let f_n = (k_max / m_e).sqrt() / (2.0 * std::f64::consts::PI);

@@ -14,7 +14,10 @@ use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
 use gearloss::geometry::{OperatingState, PairGeometry};
 
-const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+/// FZG type C rectangular stiffness (N/m).
+fn rectangular() -> StiffnessModel {
+    StiffnessModel::pairs_in_contact(1.96e8, 3.92e8, 5.88e8)
+}
 const J: [f64; 2] = [3.45e-4, 15.24e-4];
 
 fn fzg() -> (gearloss::Scene, PairGeometry) {
@@ -34,7 +37,7 @@ fn ctx<'a>(scene: &gearloss::Scene, g: &'a PairGeometry, rpm: f64, torque: f64) 
 
 fn system<'a>(c: LawContext<'a>, law: &'a dyn FrictionLaw, f: DynamicFormulation, zeta: f64) -> SdofSystem<'a> {
     let law = if f == DynamicFormulation::Base { None } else { Some(law) };
-    SdofSystem::new(c, law, f, K.clone(), J, zeta)
+    SdofSystem::new(c, law, f, rectangular(), J, zeta)
 }
 
 /// det Φ(T) equals exp(∫ tr A) (Liouville) to 1e-10 relative, for every formulation.
@@ -410,14 +413,8 @@ fn transmission_error_response_matches_the_closed_form() {
     let (scene, g) = fzg();
     let c = ctx(&scene, &g, 3000.0, 239.3);
     let k = 3.0e8;
-    let mut sys = SdofSystem::new(
-        c,
-        None,
-        DynamicFormulation::Base,
-        StiffnessModel::PairsInContact { single: k, double: k, triple: k },
-        J,
-        0.05,
-    );
+    let mut sys =
+        SdofSystem::new(c, None, DynamicFormulation::Base, StiffnessModel::pairs_in_contact(k, k, k), J, 0.05);
     let a = 2e-6;
     sys.transmission_error = vec![(a, 0.0)];
     assert!(!sys.exact_applies());

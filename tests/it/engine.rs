@@ -66,7 +66,7 @@ fn four_state_model_is_the_union_of_its_parts() {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     let g = scene.gears.geometry().unwrap();
     let law = Coulomb { mu: 0.08 };
-    let k = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+    let k = StiffnessModel::pairs_in_contact(1.96e8, 3.92e8, 5.88e8);
     let ctx = LawContext {
         geometry: &g,
         state: OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 },

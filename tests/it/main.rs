@@ -1,5 +1,6 @@
 //! The one integration test binary (each extra `tests/*.rs` would relink every dependency).
 
+mod catalogues;
 mod cli;
 mod dynamics;
 mod efficiency;

@@ -9,7 +9,10 @@ use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
 use gearloss::geometry::{OperatingState, PairGeometry};
 
-const K: StiffnessModel = StiffnessModel::PairsInContact { single: 1.96e8, double: 3.92e8, triple: 5.88e8 };
+/// FZG type C rectangular stiffness (N/m).
+fn rectangular() -> StiffnessModel {
+    StiffnessModel::pairs_in_contact(1.96e8, 3.92e8, 5.88e8)
+}
 const J: [f64; 2] = [3.45e-4, 15.24e-4];
 /// FZG type C gears as steel discs: m = ρ π b d² / 4 with b = 14 mm (spec comment of fzg_bearings.gear).
 const MASS: [f64; 2] = [0.59, 1.21];
@@ -35,7 +38,7 @@ fn bearings(k: f64) -> [Bearing; 2] {
 
 fn six<'a>(c: LawContext<'a>, law: Option<&'a dyn FrictionLaw>, k: f64) -> SixDofSystem<'a> {
     let f = if law.is_some() { DynamicFormulation::Internal } else { DynamicFormulation::Base };
-    SixDofSystem::new(SdofSystem::new(c, law, f, K.clone(), J, 0.05), MASS, bearings(k))
+    SixDofSystem::new(SdofSystem::new(c, law, f, rectangular(), J, 0.05), MASS, bearings(k))
 }
 
 /// Bearings → ∞: the torsional result tends to the SDOF internal formulation (base at μ = 0) with
@@ -48,7 +51,7 @@ fn stiff_bearings_give_the_sdof_model() {
     for l in [None, Some(&law as &dyn FrictionLaw)] {
         let c = ctx(&scene, &g, 1000.0);
         let f = if l.is_some() { DynamicFormulation::Internal } else { DynamicFormulation::Base };
-        let sdof = Floquet::analyse(&SdofSystem::new(c, l, f, K.clone(), J, 0.05));
+        let sdof = Floquet::analyse(&SdofSystem::new(c, l, f, rectangular(), J, 0.05));
         let x_ref = sdof.periodic_state.unwrap()[0];
         let errors: Vec<f64> = [1e11, 1e12, 1e13]
             .iter()

@@ -1,0 +1,21 @@
+//! The mesh stiffness of a pair over one mesh cycle, as a catalogue: each model is one file
+//! implementing [`MeshStiffness`] and one row of [`catalog::MODELS`].
+//!
+//! Today: rectangular (one value per number of pairs in contact, [`pairs_in_contact`]), a table
+//! over the cycle ([`table`]), a stiffness density along the contact lines ([`per_length`]) and
+//! the ISO 6336-1 estimate, which builds one of the first and third from the geometry
+//! ([`iso_6336`]). A model computed from the geometry alone is named in a scene by its catalogue
+//! name (`mesh_stiffness = iso_6336`): adding one is its file, its [`StiffnessId`] and its row.
+//! The dynamics read k(τ) through [`StiffnessModel`], a shared handle on the model.
+
+pub mod catalog;
+pub mod iso_6336;
+pub mod mesh_stiffness;
+pub mod pairs_in_contact;
+pub mod per_length;
+pub mod stiffness_id;
+pub mod table;
+
+pub use catalog::{StiffnessEntry, StiffnessId, MODELS};
+pub use iso_6336::iso_6336_single_stiffness;
+pub use mesh_stiffness::{MeshStiffness, StiffnessModel, StiffnessShape};

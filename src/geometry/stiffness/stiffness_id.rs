@@ -1,0 +1,10 @@
+//! The typed identity of each mesh stiffness model of the catalogue.
+
+/// The typed identity of a stiffness model of the catalogue.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StiffnessId {
+    PairsInContact,
+    Table,
+    PerLength,
+    Iso6336,
+}

@@ -1,0 +1,62 @@
+//! Every catalogue has one file per entry and one row per file (the pattern of clippy's
+//! `declared_lints.rs`): a file without a row, or a row without a file, fails here.
+
+use std::collections::BTreeSet;
+
+/// The `.rs` files of a folder of `src/`, without the folder's own machinery.
+fn entry_files(folder: &str, machinery: &[&str]) -> BTreeSet<String> {
+    std::fs::read_dir(crate::root().join("src").join(folder))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".rs") && !machinery.contains(&n.as_str()))
+        .collect()
+}
+
+/// Friction laws: `src/friction/<law name>.rs` for every row of `LAWS`, and no other law file.
+#[test]
+fn friction_laws_one_file_one_row() {
+    let files = entry_files("friction", &["mod.rs", "catalog.rs", "law_id.rs"]);
+    let rows: BTreeSet<String> =
+        gearloss::friction::catalog::LAWS.iter().map(|l| format!("{}.rs", l.id.name())).collect();
+    assert_eq!(files, rows, "files in src/friction/ and rows of LAWS differ");
+}
+
+/// Mesh stiffness models: each row names its file in `src/geometry/stiffness/`, each entry file
+/// has a row; every row sits at its identity's index and names a distinct model.
+#[test]
+fn stiffness_models_one_file_one_row() {
+    use gearloss::geometry::stiffness::MODELS;
+    let files = entry_files("geometry/stiffness", &["mod.rs", "catalog.rs", "mesh_stiffness.rs", "stiffness_id.rs"]);
+    let rows: BTreeSet<String> = MODELS.iter().map(|m| m.file.to_string()).collect();
+    assert_eq!(files, rows, "files in src/geometry/stiffness/ and rows of MODELS differ");
+    for (i, m) in MODELS.iter().enumerate() {
+        assert_eq!(m.id as usize, i, "{}", m.name);
+        assert_eq!(MODELS.iter().filter(|x| x.name == m.name).count(), 1, "{}", m.name);
+    }
+}
+
+/// Each stiffness model against a hand value on the FZG type C pair (ε_α ≈ 1.44): the rectangular
+/// mean is single + (double − single)(ε_α − 1) exactly; the table's mean is the mean of its values
+/// and it interpolates linearly; a spur pair's density gives n k b; ISO's builds the rectangular
+/// k_n = n c' b. Tolerances 1e-12 relative.
+#[test]
+fn stiffness_models_by_hand() {
+    use gearloss::geometry::stiffness::{StiffnessId, StiffnessModel};
+    let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
+    let g = scene.gears.geometry().unwrap();
+    let period = 1e-3;
+    let taus = g.cycle_break_times(&[]);
+    let eps = g.contact_ratio;
+    let rect = StiffnessModel::pairs_in_contact(2e8, 4e8, 6e8);
+    let mean = rect.mean(&g, &taus, period);
+    assert!((mean / (2e8 + 2e8 * (eps - 1.0)) - 1.0).abs() < 1e-12, "{mean} with ε_α = {eps}");
+    let table = StiffnessModel::table(vec![1e8, 3e8, 2e8, 2e8]);
+    assert_eq!(table.mean(&g, &taus, period), 2e8);
+    assert!((table.at(&g, 0.125) - 2e8).abs() < 1e-3 && table.slope(&g, 0.1) == 8e8);
+    let density = StiffnessModel::per_length(1.5e10, &g);
+    assert!((density.at(&g, 0.999 * (eps - 1.0)) / (2.0 * 1.5e10 * g.face_width) - 1.0).abs() < 1e-12);
+    let iso = StiffnessModel::iso_6336(&g);
+    assert_eq!(iso.id(), StiffnessId::PairsInContact);
+    let c = gearloss::geometry::stiffness::iso_6336_single_stiffness(&g) * g.face_width * 1e9;
+    assert!((iso.upper_bound(&g) / (3.0 * c) - 1.0).abs() < 1e-12);
+}
