@@ -70,7 +70,7 @@ fn parse_shard(text: &str) -> Result<gearloss::Shard, String> {
     Ok(gearloss::Shard { index: k, count: n })
 }
 
-pub fn main() -> ExitCode {
+pub(crate) fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Run { scene, out, shard } => run(&scene, &out, shard),

@@ -8,7 +8,7 @@ use crate::root;
 
 /// The NASA-ART pair (He & Singh §2) with `beta` as the reference helix angle (m_n = m_t cos β,
 /// tan α_n = tan α_t cos β, so that the transverse values stay those of the paper).
-pub fn nasa_art(beta_deg: f64) -> PairGeometry {
+pub(crate) fn nasa_art(beta_deg: f64) -> PairGeometry {
     let beta = beta_deg.to_radians();
     let m_t = 25.4e-3 / 8.0;
     PairGeometry::compute(&PairInput {
@@ -156,7 +156,7 @@ mod physics {
         SdofSystem::new(c, law, f, k, J, zeta)
     }
 
-    pub fn system_at<'a>(
+    pub(crate) fn system_at<'a>(
         g: &'a PairGeometry,
         speed_rpm: f64,
         law: Option<&'a dyn FrictionLaw>,

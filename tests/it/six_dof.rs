@@ -17,13 +17,13 @@ const J: [f64; 2] = [3.45e-4, 15.24e-4];
 /// FZG type C gears as steel discs: m = ρ π b d² / 4 with b = 14 mm (spec comment of fzg_bearings.gear).
 const MASS: [f64; 2] = [0.59, 1.21];
 
-pub fn fzg() -> (gearloss::Scene, PairGeometry) {
+pub(crate) fn fzg() -> (gearloss::Scene, PairGeometry) {
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     let g = scene.gears.geometry().unwrap();
     (scene, g)
 }
 
-pub fn ctx<'a>(scene: &gearloss::Scene, g: &'a PairGeometry, rpm: f64) -> LawContext<'a> {
+pub(crate) fn ctx<'a>(scene: &gearloss::Scene, g: &'a PairGeometry, rpm: f64) -> LawContext<'a> {
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: 239.3, pinion_speed: rpm * std::f64::consts::PI / 30.0 },

@@ -11,7 +11,7 @@ use crate::numerics::chebyshev::Lobatto;
 /// values at the piece's nodes (Lobatto's `between` gives g at the nodes between), oscillate up to
 /// 2 ω_max, which the finer nodes resolve where the piece's own would not. The fine nodes are kept
 /// in the order even (the piece's own nodes), then odd.
-pub struct Quadrature {
+pub(super) struct Quadrature {
     degree: usize,
     /// e^{−λ_k σ_q} at the fine nodes: Re in column k, Im in column r + k.
     decays: DMatrix<f64>,
@@ -24,7 +24,7 @@ pub struct Quadrature {
 impl Quadrature {
     /// e^{−λ σ_q} by the exponential on the first half of the nodes and
     /// e^{−λ (h − σ)} = e^{−λ h} / e^{−λ σ} on the second (the nodes are symmetric).
-    pub fn new(lambdas: &[C64], degree: usize, h: f64) -> Self {
+    pub(super) fn new(lambdas: &[C64], degree: usize, h: f64) -> Self {
         let fine = Lobatto::get(2 * degree);
         let (r, count) = (lambdas.len(), degree + 1);
         // Fine node q at row: even q first, then odd.
@@ -47,13 +47,13 @@ impl Quadrature {
     }
 
     /// e^{−λ_k τ_i} at the piece's node i.
-    pub fn decay(&self, k: usize, i: usize) -> C64 {
+    pub(super) fn decay(&self, k: usize, i: usize) -> C64 {
         let r = self.decays.ncols() / 2;
         C64::new(self.decays[(i, k)], self.decays[(i, r + k)])
     }
 
     /// ∫₀^{τ_i} e^{−λ_k σ} dσ.
-    pub fn integral(&self, k: usize, i: usize) -> C64 {
+    pub(super) fn integral(&self, k: usize, i: usize) -> C64 {
         let r = self.decays.ncols() / 2;
         C64::new(self.integrals[(i, k)], self.integrals[(i, r + k)])
     }
@@ -63,7 +63,7 @@ impl Quadrature {
     /// `coefficients`, P the values at the fine nodes of the polynomial through unit values at the
     /// piece's (the identity at the even ones, `between` at the odd); `e` holds e^{λ_k τ_i} at
     /// i r + k.
-    pub fn kernel(&self, cheb: &Lobatto, e: &[C64], coefficients: &[(usize, C64)]) -> Vec<f64> {
+    pub(super) fn kernel(&self, cheb: &Lobatto, e: &[C64], coefficients: &[(usize, C64)]) -> Vec<f64> {
         let (degree, r) = (self.degree, self.decays.ncols() / 2);
         let fine_count = 2 * degree + 1;
         let decays = self.decays.as_slice();
@@ -88,7 +88,7 @@ impl Quadrature {
 
     /// E_km = Σ_q S′_{last,q} e^{−λ_k σ_q} P_qm, column-major count × 2r: Re of mode k in column
     /// k, Im in r + k.
-    pub fn ends(&self, cheb: &Lobatto) -> Vec<f64> {
+    pub(super) fn ends(&self, cheb: &Lobatto) -> Vec<f64> {
         let mut weighted = self.decays.clone();
         let last = self.integration.column(self.degree);
         for mut column in weighted.column_iter_mut() {

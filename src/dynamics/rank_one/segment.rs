@@ -12,7 +12,7 @@ use crate::numerics::dense::eigen;
 pub const MAX_CONDITION: f64 = 1e6;
 /// How closely (relative to ‖A0‖, scaled) the interpolant of w must reproduce the model between
 /// its nodes to stand in for it.
-pub const INTERPOLATION_TOLERANCE: f64 = 1e-13;
+pub(super) const INTERPOLATION_TOLERANCE: f64 = 1e-13;
 
 /// One mode of A0 (for a conjugate pair, the member with Im λ > 0 stands for both).
 #[derive(Debug, Clone)]

@@ -8,7 +8,7 @@ use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
 /// Laws × formulations drawn as maps.
-pub const MAX_MAPS: usize = 3;
+pub(super) const MAX_MAPS: usize = 3;
 
 /// A colour from dark blue (0) through green to yellow (1), after viridis.
 pub(super) fn colour(t: f64) -> RGBColor {
