@@ -50,6 +50,10 @@ pub struct Segment {
 pub trait PeriodicModel<const N: usize>: Sync {
     /// The model's name, written into the report (`sdof`).
     fn name(&self) -> &'static str;
+    /// What the model is, in a paragraph the report prints (states, equations, sources).
+    fn description(&self) -> &'static str {
+        ""
+    }
     /// The period T (s).
     fn period(&self) -> f64;
     /// The segments of one period, in order, covering [0, T).

@@ -252,6 +252,10 @@ impl PeriodicModel<2> for SdofSystem<'_> {
         "sdof"
     }
 
+    fn description(&self) -> &'static str {
+        "SDOF torsional model along the line of action (Fernandes et al.); x = DTE = R_p θ_p − R_w θ_w. Periodic steady state from Floquet theory, (I − Φ(T)) X(0) = q(T); the exact propagator (matrix exponential) where the coefficients are constant on a segment, 4th-order Magnus elsewhere."
+    }
+
     fn period(&self) -> f64 {
         self.period
     }

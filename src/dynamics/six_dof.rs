@@ -167,6 +167,10 @@ impl PeriodicModel<STATES> for SixDofSystem<'_> {
         "six_dof"
     }
 
+    fn description(&self) -> &'static str {
+        "6-DOF model (He–Cho–Singh eqs 1–9): rotation, line-of-action (x) and off-line-of-action (y) translations of both gears on their bearings; DTE = r_b1 θ_p − r_b2 θ_g + x_p − x_g, mesh force N = k(t) δ + c δ̇ shared by the n pairs in contact, friction μ_i N_i along y (pinion +, wheel −) with moment arms T1C_i and T2C_i. The rigid-body rotation is removed: 10 vibratory states; ρ is theirs. Periodic steady state from Floquet theory; exact propagator where the coefficients are constant on a segment, 4th-order Magnus elsewhere."
+    }
+
     fn period(&self) -> f64 {
         self.mesh.period
     }

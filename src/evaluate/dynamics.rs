@@ -55,6 +55,8 @@ pub struct StabilityPoint {
 pub struct DynamicsEvaluation {
     /// The model that ran ([`crate::dynamics::PeriodicModel::name`]).
     pub model: &'static str,
+    /// The model's paragraph for the report ([`crate::dynamics::PeriodicModel::description`]).
+    pub description: &'static str,
     pub stiffness: StiffnessModel,
     /// "given", "iso_6336" or "table".
     pub stiffness_source: &'static str,
@@ -364,6 +366,7 @@ pub fn evaluate_dynamics(
     });
     Some(DynamicsEvaluation {
         model: six_probe.as_ref().map_or(probe.name(), |s| s.name()),
+        description: six_probe.as_ref().map_or(probe.description(), |s| s.description()),
         stiffness: stiffness.clone(),
         stiffness_source: source,
         damping_ratio: spec.damping_ratio,

@@ -18,17 +18,7 @@ fn sci(x: f64) -> String {
 pub fn dynamics(out: &mut String, r: &Report) {
     let Some(d) = &r.dynamics else { return };
     let _ = writeln!(out, "## Dynamics\n");
-    if d.model == "six_dof" {
-        let _ = writeln!(
-            out,
-            "6-DOF model (He–Cho–Singh eqs 1–9): rotation, line-of-action (x) and off-line-of-action (y) translations of both gears on their bearings; DTE = r_b1 θ_p − r_b2 θ_g + x_p − x_g, mesh force N = k(t) δ + c δ̇ shared by the n pairs in contact, friction μ_i N_i along y (pinion +, wheel −) with moment arms T1C_i and T2C_i. The rigid-body rotation is removed: 10 vibratory states; ρ is theirs. Periodic steady state from Floquet theory; exact propagator where the coefficients are constant on a segment, 4th-order Magnus elsewhere.\n"
-        );
-    } else {
-        let _ = writeln!(
-            out,
-            "SDOF torsional model along the line of action (Fernandes et al.); x = DTE = R_p θ_p − R_w θ_w. Periodic steady state from Floquet theory, (I − Φ(T)) X(0) = q(T); the exact propagator (matrix exponential) where the coefficients are constant on a segment, 4th-order Magnus elsewhere.\n"
-        );
-    }
+    let _ = writeln!(out, "{}\n", d.description);
     header(out, &["quantity", "value"]);
     let k = match &d.stiffness {
         StiffnessReport::Pairs { single, double, triple } => format!(

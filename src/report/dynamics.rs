@@ -90,6 +90,8 @@ pub struct DynamicsCurves {
 #[derive(Debug, Clone, Serialize)]
 pub struct DynamicsReport {
     pub model: &'static str,
+    /// What the model is, as the report prints it.
+    pub description: &'static str,
     /// k_double / k_single of a rectangular stiffness (None for a table).
     #[serde(skip)]
     pub stiffness_step_ratio: Option<f64>,
@@ -324,6 +326,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
     };
     DynamicsReport {
         model: d.model,
+        description: d.description,
         stiffness_step_ratio: match shape {
             StiffnessShape::Pairs { single, double, .. } => Some(double / single),
             StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } => None,

@@ -16,7 +16,15 @@ use crate::scene::units::SiQuantity;
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
 const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file", "per_length"];
-const MODELS: &[&str] = &["sdof", "six_dof"];
+/// The dynamic models a scene names (`model = six_dof`), with whether the model stands on bearings.
+const MODELS: &[(&str, OnBearings)] = &[("sdof", OnBearings::No), ("six_dof", OnBearings::Yes)];
+
+/// Whether a dynamic model puts the gears on bearings (takes a `bearings` block).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum OnBearings {
+    No,
+    Yes,
+}
 const SOLVERS: &[&str] = &["auto", "magnus"];
 const FORMULATIONS: &[&str] = &["base", "external", "internal", "internal_chord"];
 
@@ -30,7 +38,9 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         &[],
         errors,
     );
-    let six_dof = f.name("model", MODELS, errors).is_some_and(|n| n.text == "six_dof");
+    let names: Vec<&str> = MODELS.iter().map(|(n, _)| *n).collect();
+    let on_bearings = f.name("model", &names, errors).and_then(|n| MODELS.iter().find(|(m, _)| *m == n.text));
+    let six_dof = on_bearings.is_some_and(|(_, b)| *b == OnBearings::Yes);
     let formulations = match f.values.get("formulations") {
         None => vec![DynamicFormulation::Base, DynamicFormulation::External, DynamicFormulation::Internal],
         Some((_, v)) => formulations(v, errors)?,
