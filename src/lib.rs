@@ -31,10 +31,15 @@
 //!  efficiency                     η(t), η̄ and power loss of a law along the mesh cycle
 //!  friction/                      the law catalogue (typed LawId, one constructor each), one law a file
 //!  tribology/                     lubricant and surface data in SI, film thickness
-//!  geometry/ (spur, mesh,         the pair: involute geometry, the mesh cycle (contacts, switch
-//!             stiffness)          times), contact states, mesh stiffness
+//!  geometry/ (pair, mesh,         the pair: involute geometry, the mesh cycle (contacts, switch
+//!             stiffness/)         times), contact states, the mesh stiffness catalogue
 //!  numerics/ quantity diagnostics quadrature and roots; physical dimensions; spans and diagnostics
 //! ```
+//!
+//! Where a new model goes (README, "Where a new model goes"): a friction law is one file in
+//! `friction/` and one row of [`friction::catalog::LAWS`]; a mesh stiffness model one file in
+//! `geometry/stiffness/` and one row of [`geometry::stiffness::MODELS`]; a dynamic model a
+//! [`dynamics::PeriodicModel`] in `dynamics/` (and, today, its branch in `evaluate/dynamics.rs`).
 
 pub mod diagnostics;
 pub mod dynamics;
