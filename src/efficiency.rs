@@ -23,7 +23,7 @@ use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Inte
 use crate::numerics::roots::extrema;
 
 /// The formulations of the output torque (Fernandes §2.3–2.4).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Formulation {
     External,

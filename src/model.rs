@@ -161,7 +161,7 @@ pub struct DynamicsSpec {
     pub span: Span,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LoadSharing {
     /// Share 1 in single contact, 1/n where n pairs are in contact.

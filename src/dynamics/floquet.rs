@@ -26,7 +26,7 @@ impl Multiplier {
 }
 
 /// Stability verdict from the spectral radius ρ.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
     /// ρ < 1 − 1e-9: perturbations decay; the periodic response is the steady state.

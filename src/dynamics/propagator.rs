@@ -25,7 +25,7 @@ use super::model::{just_inside, PeriodicModel};
 use super::rank_one::RankOneSegment;
 
 /// How a segment was propagated.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Method {
     Exact,

@@ -22,7 +22,7 @@ use crate::friction::{FrictionLaw, LawContext};
 pub use crate::geometry::stiffness::StiffnessModel;
 
 /// Which equation of motion.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DynamicFormulation {
     Base,

@@ -71,7 +71,7 @@ impl LawContext<'_> {
 }
 
 /// A lubrication regime of the composite law (Model V).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Regime {
     /// Λ < 1: smoothed Coulomb (Model IV).

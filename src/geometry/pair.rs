@@ -36,7 +36,7 @@ pub struct PairInput {
     pub face_width: f64,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TipSource {
     /// Given in the scene.

@@ -10,7 +10,7 @@ use serde::Serialize;
 use super::pair::PairGeometry;
 
 /// Which boundary of the path of contact holds one end of a contact line.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LineEnd {
     /// The end lies on the wheel's tip line u = T1A (start of contact).
@@ -22,7 +22,7 @@ pub enum LineEnd {
 }
 
 /// Where a line lies relative to the pitch line u = T1P.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PitchSide {
     Approach,
@@ -31,7 +31,7 @@ pub enum PitchSide {
 }
 
 /// The state of line k in a region.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 pub struct LineState {
     pub index: usize,
     /// [end at smaller z, end at larger z].
@@ -40,7 +40,7 @@ pub struct LineState {
 }
 
 /// One region: an interval of the cycle (τ in mesh periods) and the lines in contact.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct Region {
     pub from: f64,
     pub to: f64,

@@ -156,7 +156,7 @@ pub fn render_markdown(r: &Report) -> String {
             row(
                 &mut out,
                 &[
-                    c.point.unwrap_or("").to_string(),
+                    c.point.clone().unwrap_or_default(),
                     scaled(&c.distance_from_t1, 1e3, 3),
                     scaled(&c.s, 1e3, 3),
                     scaled(&c.radius_of_curvature_pinion, 1e3, 3),

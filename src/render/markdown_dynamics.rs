@@ -201,7 +201,7 @@ fn bearing_lines(out: &mut String, formulations: &[FormulationReport]) {
                 out,
                 &[
                     f.formulation.name().into(),
-                    g.gear.into(),
+                    g.gear.clone(),
                     fixed(g.bearing_force_loa_peak_to_peak.si(), 2),
                     fixed(g.bearing_force_loa_mean.si(), 2),
                     fixed(g.bearing_force_oloa_peak_to_peak.si(), 3),

@@ -15,7 +15,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
             row(
                 out,
                 &[
-                    f.point.unwrap_or("").into(),
+                    f.point.clone().unwrap_or_default(),
                     fixed(f.distance_from_t1.si() * 1e3, 3),
                     fixed(f.central_film.si() * 1e6, 4),
                     fixed(f.minimum_film.si() * 1e6, 4),
@@ -33,7 +33,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
     cols.extend(op.friction.iter().map(|l| format!("`{}`", l.label)));
     header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for (i, r) in op.friction[0].mu_along_loa.iter().enumerate() {
-        let mut cells = vec![r.point.unwrap_or("").to_string(), fixed(r.distance_from_t1.si() * 1e3, 3)];
+        let mut cells = vec![r.point.clone().unwrap_or_default(), fixed(r.distance_from_t1.si() * 1e3, 3)];
         for law in &op.friction {
             let m = &law.mu_along_loa[i];
             let mut cell = match m.mu {

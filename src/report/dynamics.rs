@@ -1,7 +1,7 @@
 //! The dynamics part of the report (serde data). Run times of the numerics study are kept out of it
 //! (they go to `timing_numerics.json` only), so report.json stays deterministic.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::number::{m, DisplayUnit, Num, Q};
 pub use super::numerics::{NumericsReport, NumericsRow, Timings};
@@ -16,7 +16,7 @@ pub use super::dynamics_records::{
     FormulationReport, FreeLine, FreeResponseReport, GearDynamicsReport, Located, SpectrumLine,
 };
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum StiffnessReport {
     Pairs {
@@ -34,7 +34,7 @@ pub enum StiffnessReport {
     },
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DynamicsPointReport {
     pub label: String,
     pub pinion_torque: Q,
@@ -45,7 +45,7 @@ pub struct DynamicsPointReport {
     pub formulations: Vec<FormulationReport>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StabilityRow {
     pub pinion_speed: Q,
     pub spectral_radius: Vec<Num>,
@@ -53,7 +53,7 @@ pub struct StabilityRow {
     pub dynamic_factor: Vec<super::friction::MuValue>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StabilityMapReport {
     pub pinion_torque: Q,
     pub formulations: Vec<DynamicFormulation>,
@@ -79,7 +79,7 @@ pub struct DynamicsCurves {
     /// (formulation, amplitudes by order 1..)
     pub spectrum: Vec<(String, Vec<f64>)>,
     /// Zone boundary and pitch-point passage times (mesh periods).
-    pub marks: Vec<(&'static str, f64)>,
+    pub marks: Vec<(String, f64)>,
     /// 6-DOF: (label, [(τ, OLOA bearing force N)]) per gear and formulation.
     pub oloa: Vec<(String, Vec<(f64, f64)>)>,
     /// free_response_point_K.svg and its series (formulation, [(t in mesh periods, DTE m)]).
@@ -87,15 +87,15 @@ pub struct DynamicsCurves {
     pub free: Vec<(String, Vec<(f64, f64)>)>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DynamicsReport {
-    pub model: &'static str,
+    pub model: String,
     /// What the model is, as the report prints it.
-    pub description: &'static str,
+    pub description: String,
     /// k_double / k_single of a rectangular stiffness (None for a table).
     #[serde(skip)]
     pub stiffness_step_ratio: Option<f64>,
-    pub stiffness_source: &'static str,
+    pub stiffness_source: String,
     pub stiffness: StiffnessReport,
     pub damping_ratio: Num,
     pub equivalent_mass: Q,
@@ -156,7 +156,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                     file: format!("dynamics_point_{}.svg", k + 1),
                     free_file: format!("free_response_point_{}.svg", k + 1),
                     label: label.clone(),
-                    marks: vec![("B|E", tau_b), ("P", tau_p)],
+                    marks: vec![("B|E".into(), tau_b), ("P".into(), tau_p)],
                     ..Default::default()
                 };
                 for r in &p.results {
@@ -325,13 +325,13 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         ),
     };
     DynamicsReport {
-        model: d.model,
-        description: d.description,
+        model: d.model.into(),
+        description: d.description.into(),
         stiffness_step_ratio: match shape {
             StiffnessShape::Pairs { single, double, .. } => Some(double / single),
             StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } => None,
         },
-        stiffness_source: d.stiffness_source,
+        stiffness_source: d.stiffness_source.into(),
         stiffness,
         damping_ratio: Num(d.damping_ratio),
         equivalent_mass: Q::new(d.equivalent_mass, "kg"),

@@ -2,7 +2,7 @@
 //! periodic response, the 6-DOF model's gears (bearing forces and displacements) and the free
 //! response (peaks and Floquet-mode lines).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::number::{m, Num, Q};
 use crate::dynamics::floquet::Verdict;
@@ -10,7 +10,7 @@ use crate::dynamics::propagator::Method;
 use crate::dynamics::DynamicFormulation;
 
 /// A located extremum: value and time in mesh periods.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct Located {
     pub value: Q,
     pub tau: Num,
@@ -20,13 +20,13 @@ pub(super) fn located(e: crate::dynamics::trajectory::Extremum, unit: &'static s
     Located { value: Q::new(e.value, unit), tau: Num(e.time) }
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SpectrumLine {
     pub order: usize,
     pub amplitude: Q,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct FormulationReport {
     pub formulation: DynamicFormulation,
     pub method: Method,
@@ -93,9 +93,9 @@ pub struct FormulationReport {
 
 /// One gear of the 6-DOF model: bearing forces K x (LOA) and K y (OLOA) and displacements, located
 /// extremes, integrated means with error estimates, the OLOA bearing force spectrum in mesh orders.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct GearDynamicsReport {
-    pub gear: &'static str,
+    pub gear: String,
     pub bearing_force_loa_peak_to_peak: Q,
     pub bearing_force_loa_mean: Q,
     pub bearing_force_oloa_peak_to_peak: Q,
@@ -142,7 +142,7 @@ fn lines(amplitudes: &[f64], unit: &'static str) -> Vec<SpectrumLine> {
 fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::GearResponse) -> GearDynamicsReport {
     let n = |x: f64| Q::new(x, "N");
     GearDynamicsReport {
-        gear: name,
+        gear: name.into(),
         bearing_force_loa_peak_to_peak: n(g.bearing_force_loa.peak_to_peak()),
         bearing_force_loa_mean: n(g.bearing_force_loa.mean.value),
         bearing_force_oloa_peak_to_peak: n(g.bearing_force_oloa.peak_to_peak()),
@@ -158,7 +158,7 @@ fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::Gear
 }
 
 /// The free response X(t + nT) = Φ(t, 0) Φ(T)ⁿ X(0) and its Floquet-mode spectrum lines.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct FreeResponseReport {
     pub x0: Q,
     pub v0: Q,
@@ -172,7 +172,7 @@ pub struct FreeResponseReport {
     pub lines: Vec<FreeLine>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct FreeLine {
     pub order: Num,
     pub amplitude: Q,

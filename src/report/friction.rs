@@ -1,6 +1,6 @@
 //! The friction, film and efficiency parts of the report (serde data).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::finding::{Finding, Severity};
 use super::number::{m, Num, Q};
@@ -15,6 +15,29 @@ use crate::model::{Formulation, FrictionLawSpec, Scene};
 pub enum MuValue {
     Value(Num),
     Text(&'static str),
+}
+
+/// The words a [`MuValue`] may hold.
+const MU_WORDS: &[&str] = &["diverges", "unstable"];
+
+impl<'de> Deserialize<'de> for MuValue {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<MuValue, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Written {
+            Number(Option<f64>),
+            Word(String),
+        }
+        Ok(match Written::deserialize(d)? {
+            Written::Number(x) => MuValue::Value(Num(x.unwrap_or(f64::NAN))),
+            Written::Word(w) => MuValue::Text(
+                MU_WORDS
+                    .iter()
+                    .find(|m| **m == w)
+                    .ok_or_else(|| serde::de::Error::custom(format!("`{w}` is not a word for μ")))?,
+            ),
+        })
+    }
 }
 
 impl MuValue {
@@ -40,7 +63,7 @@ impl Parameters {
 impl Serialize for Parameters {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeMap;
-        #[derive(Serialize)]
+        #[derive(Serialize, Deserialize)]
         struct Dimensional<'a> {
             value: Num,
             unit: &'a str,
@@ -57,23 +80,54 @@ impl Serialize for Parameters {
     }
 }
 
-#[derive(Debug, Clone, Serialize)]
+impl<'de> Deserialize<'de> for Parameters {
+    /// `{name: number}` for a plain number, `{name: {value, unit}}` for a dimensional one, in order.
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Parameters, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Value {
+            Plain(Option<f64>),
+            Dimensional { value: Option<f64>, unit: String },
+        }
+        struct Visit;
+        impl<'de> serde::de::Visitor<'de> for Visit {
+            type Value = Parameters;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a law's parameters")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Parameters, A::Error> {
+                let mut out = Vec::new();
+                while let Some((name, v)) = map.next_entry::<String, Value>()? {
+                    let (value, unit) = match v {
+                        Value::Plain(x) => (x, "1".to_string()),
+                        Value::Dimensional { value, unit } => (value, unit),
+                    };
+                    out.push(ParameterValue { name, value: value.unwrap_or(f64::NAN), unit });
+                }
+                Ok(Parameters(out))
+            }
+        }
+        d.deserialize_map(Visit)
+    }
+}
+
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct MuRow {
-    pub point: Option<&'static str>,
+    pub point: Option<String>,
     pub distance_from_t1: Q,
     pub mu: MuValue,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub regime: Option<Regime>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ValidityInterval {
     pub from: Q,
     pub to: Q,
-    pub reason: &'static str,
+    pub reason: String,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ValidityReport {
     /// Points sampled evenly along A–E.
     pub samples: usize,
@@ -82,7 +136,7 @@ pub struct ValidityReport {
     pub intervals: Vec<ValidityInterval>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct EfficiencyReport {
     pub formulation: Formulation,
     pub mean_efficiency: Num,
@@ -93,12 +147,12 @@ pub struct EfficiencyReport {
 }
 
 /// One law at one operating point.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct LawReport {
     pub law: crate::friction::catalog::LawId,
     /// As written in the scene, e.g. `coulomb(mu = 0.04)`.
     pub label: String,
-    pub title: &'static str,
+    pub title: String,
     pub parameters: Parameters,
     pub diverges_at_pitch: bool,
     pub mu_along_loa: Vec<MuRow>,
@@ -112,9 +166,9 @@ pub struct LawReport {
     pub ohlendorf_efficiency: Num,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct FilmRow {
-    pub point: Option<&'static str>,
+    pub point: Option<String>,
     pub distance_from_t1: Q,
     pub central_film: Q,
     pub minimum_film: Q,
@@ -123,7 +177,7 @@ pub struct FilmRow {
 }
 
 /// One record per (operating point, law, formulation): the flat table of a sweep.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct EfficiencyRecord {
     /// The case (operating point) and its torque and speed indices in the sweeps, for grouping.
     #[serde(skip)]
@@ -151,7 +205,7 @@ pub struct EfficiencyRecord {
 }
 
 /// ISO/TR 14179-2's mesh loss beside the contact-line integral.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct OhlendorfLoss {
     /// P_in μ̄ H_V (W).
     pub power_loss: Q,
@@ -172,7 +226,7 @@ pub fn law_report(spec: &FrictionLawSpec, pe: &PointEvaluation, law: &LawEvaluat
     LawReport {
         law: law.id,
         label: law_label(spec),
-        title: law.title,
+        title: law.title.into(),
         parameters: parameters(law),
         diverges_at_pitch: law.diverges_at_pitch,
         mu_along_loa: pe
@@ -180,7 +234,7 @@ pub fn law_report(spec: &FrictionLawSpec, pe: &PointEvaluation, law: &LawEvaluat
             .iter()
             .enumerate()
             .map(|(i, (name, c))| MuRow {
-                point: *name,
+                point: name.map(String::from),
                 distance_from_t1: m(c.u),
                 mu: law.table[i].map_or(MuValue::Text("diverges"), |v| MuValue::Value(Num(v))),
                 regime: law.regimes.as_ref().map(|r| r[i]),
@@ -196,7 +250,7 @@ pub fn law_report(spec: &FrictionLawSpec, pe: &PointEvaluation, law: &LawEvaluat
                 .validity
                 .intervals
                 .iter()
-                .map(|(a, b, r)| ValidityInterval { from: m(*a), to: m(*b), reason: r })
+                .map(|(a, b, r)| ValidityInterval { from: m(*a), to: m(*b), reason: r.to_string() })
                 .collect(),
         },
         efficiency: law
@@ -221,7 +275,7 @@ pub fn film_rows(pe: &PointEvaluation) -> Option<Vec<FilmRow>> {
             .iter()
             .zip(films)
             .map(|((name, c), f)| FilmRow {
-                point: *name,
+                point: name.map(String::from),
                 distance_from_t1: m(c.u),
                 central_film: m(f.central),
                 minimum_film: m(f.minimum),

@@ -1,13 +1,13 @@
 //! The geometry section of the report: both gears, the pair, and the named points of the line of action.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::number::{m, pa, rad, Num, Q};
 use crate::evaluate::Evaluation;
 use crate::geometry::{PairGeometry, TipSource};
 use crate::model::LoadSharing;
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct GearReport {
     pub teeth: u32,
     pub profile_shift: Num,
@@ -22,7 +22,7 @@ pub struct GearReport {
 }
 
 /// Positions along the line of action, from T1.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[allow(non_snake_case)]
 pub struct PointsReport {
     pub A: Q,
@@ -39,13 +39,13 @@ pub struct PointsReport {
 }
 
 /// A named point of the line of action.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct NamedPoint {
-    pub name: &'static str,
+    pub name: String,
     pub distance_from_t1: Q,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct GeometryReport {
     /// Normal module (the module of a spur pair).
     pub module: Q,
@@ -55,7 +55,7 @@ pub struct GeometryReport {
     pub helix_angle: Q,
     pub gear_ratio: Num,
     pub center_distance: Q,
-    pub center_distance_source: &'static str,
+    pub center_distance_source: String,
     pub zero_backlash_center_distance: Q,
     pub operating_pressure_angle: Q,
     pub zero_backlash_pressure_angle: Q,
@@ -105,7 +105,7 @@ pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
         helix_angle: rad(g.helix_angle),
         gear_ratio: Num(g.gear_ratio),
         center_distance: m(g.center_distance),
-        center_distance_source: if g.center_distance_given { "given" } else { "zero_backlash" },
+        center_distance_source: if g.center_distance_given { "given" } else { "zero_backlash" }.into(),
         zero_backlash_center_distance: m(g.zero_backlash_center_distance),
         operating_pressure_angle: rad(g.operating_pressure_angle),
         zero_backlash_pressure_angle: rad(g.zero_backlash_pressure_angle),
@@ -125,7 +125,7 @@ pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
                 } else {
                     g.pair_change_points()
                         .into_iter()
-                        .map(|(name, u)| NamedPoint { name, distance_from_t1: m(u) })
+                        .map(|(name, u)| NamedPoint { name: name.into(), distance_from_t1: m(u) })
                         .collect()
                 },
             }

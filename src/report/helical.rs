@@ -2,14 +2,14 @@
 //! contact lines' total length L(t) (located extremes: L is piecewise linear, so they lie at break
 //! times), the regions of the mesh cycle with the state of each line, and the axial force.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::number::{m, rad, Num, Q};
 use crate::evaluate::Evaluation;
 use crate::geometry::regions::Region;
 
 /// A value of L(τ) and where in the cycle it occurs (τ in mesh periods).
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct LengthAt {
     pub value: Q,
     pub tau: Num,
@@ -19,13 +19,13 @@ pub struct LengthAt {
 pub type LineEnds = [(f64, f64); 2];
 
 /// The axial force at one reported operating point.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct AxialForce {
     pub operating_point: String,
     pub value: Q,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct HelicalReport {
     pub base_helix_angle: Q,
     pub transverse_module: Q,

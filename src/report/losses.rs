@@ -1,6 +1,6 @@
 //! The lubricant at temperature, the loss budget of each efficiency record, and the efficiency map.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
@@ -10,7 +10,7 @@ use crate::losses::{Bearing, BudgetParts, Gearbox};
 use crate::model::{Formulation, Scene};
 
 /// What the laws, films and losses read from the oil, and where it came from.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct LubricantReport {
     pub name: String,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -65,7 +65,7 @@ pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantRep
 }
 
 /// The budget beside an efficiency record's mesh loss, in W; parts the scene does not describe are absent.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct BudgetRecord {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gear_no_load: Option<Q>,
@@ -83,14 +83,14 @@ pub struct BudgetRecord {
 }
 
 /// One bearing place of the budget: what it is, where, what it carries and loses.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct BearingRecord {
     /// `pinion` or `wheel`.
-    pub shaft: &'static str,
+    pub shaft: String,
     #[serde(rename = "type")]
-    pub kind: &'static str,
+    pub kind: String,
     /// `palmgren` or `skf`.
-    pub model: &'static str,
+    pub model: String,
     pub count: usize,
     /// `at` along the shaft from the gear mid-plane, when given.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -116,9 +116,9 @@ pub fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord
             bearing_places(g)
                 .zip(&p.bearings)
                 .map(|((shaft, b), l)| BearingRecord {
-                    shaft,
-                    kind: b.kind.name(),
-                    model: b.model_name(),
+                    shaft: shaft.into(),
+                    kind: b.kind.name().into(),
+                    model: b.model_name().into(),
                     count: b.count,
                     position: b.position.map(|x| Q::new(x, "m")),
                     radial_load: Q::new(l.radial_load, "N"),
@@ -169,7 +169,7 @@ pub fn budget_readings(g: &Gearbox) -> Vec<String> {
 
 /// Extremes of one law and formulation over the map's grid points (the grid is what the map
 /// evaluates; these are its extremes, not the located extremes of a continuous function).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct MapRange {
     pub label: String,
     pub formulation: Formulation,
@@ -182,7 +182,7 @@ pub struct MapRange {
 }
 
 /// The efficiency map: its grid and ranges; the cells are in efficiency_map.csv.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct MapReport {
     /// Pinion torques (N·m) and speeds (rad/s) of the grid.
     pub pinion_torques: Vec<Num>,

@@ -1,7 +1,7 @@
 //! Numbers in reports: dimensional values as `{"value": SI, "unit": "SI unit"}`, all rounded to
 //! ten significant digits so that output does not change with the last bit of a libm call.
 
-use serde::{Serialize, Serializer};
+use serde::{Deserialize, Serialize, Serializer};
 
 /// Significant digits kept in report.json.
 pub const SIGNIFICANT_DIGITS: usize = 10;
@@ -28,11 +28,40 @@ impl Serialize for Num {
     }
 }
 
+impl<'de> Deserialize<'de> for Num {
+    /// A number, or `null` for one that was not finite (read back as NaN).
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Num, D::Error> {
+        Ok(Num(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN)))
+    }
+}
+
+/// Every SI unit a report writes (a [`Q`] read back takes its unit from here).
+pub const UNITS: &[&str] = &[
+    "1", "1/Pa", "1/s", "Hz", "J", "K", "N", "N*m", "N*s/m", "N/m", "N/m^2", "Pa", "Pa*s", "W", "kg", "kg*m^2",
+    "kg/m^3", "m", "m/s", "m/s^2", "m^2/s", "m^3/s", "rad", "rad/s", "s",
+];
+
 /// A dimensional value in SI with its unit.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Q {
     pub value: Num,
     pub unit: &'static str,
+}
+
+impl<'de> Deserialize<'de> for Q {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Q, D::Error> {
+        #[derive(Deserialize)]
+        struct Written {
+            value: Num,
+            unit: String,
+        }
+        let w = Written::deserialize(d)?;
+        let unit = UNITS
+            .iter()
+            .find(|u| **u == w.unit)
+            .ok_or_else(|| serde::de::Error::custom(format!("unit `{}` is not one a report writes", w.unit)))?;
+        Ok(Q { value: w.value, unit })
+    }
 }
 
 impl Q {

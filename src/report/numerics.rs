@@ -1,13 +1,13 @@
 //! The error-against-run-time study in the report: one row per method and tolerance (deterministic),
 //! and the run times apart (written to timing files only, never into snapshotted text).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::number::Num;
 use crate::dynamics::propagator::Method;
 use crate::dynamics::DynamicFormulation;
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct NumericsRow {
     pub method: String,
     pub rtol: Num,
@@ -22,7 +22,7 @@ pub struct NumericsRow {
     pub failure: Option<String>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct NumericsReport {
     pub formulation: DynamicFormulation,
     pub reference: Method,
@@ -31,7 +31,7 @@ pub struct NumericsReport {
 }
 
 /// Run times, for the timing files only.
-#[derive(Debug, Clone, Default, Serialize)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct Timings {
     pub reference_seconds: f64,
     /// (method, rtol, error, seconds)

@@ -3,7 +3,7 @@
 //! temperature changes — the lubricant's values, and per operating point, law and formulation the
 //! mean mesh efficiency, the mesh loss and (with a gearbox) the loss budget's total.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::finding::Severity;
 use super::friction::EfficiencyRecord;
@@ -14,7 +14,7 @@ use crate::efficiency::Formulation;
 use crate::friction::catalog::LawId;
 
 /// The comparison across oil temperatures.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct OilSweepReport {
     pub title: String,
     pub slug: String,
@@ -32,7 +32,7 @@ pub struct OilSweepReport {
 }
 
 /// One temperature's run.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct OilRun {
     /// As written (`90 degC`).
     pub label: String,
@@ -46,7 +46,7 @@ pub struct OilRun {
 }
 
 /// One operating point, law and formulation: its values at each temperature (in run order).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct OilSweepRow {
     pub law: LawId,
     pub label: String,

@@ -1,7 +1,7 @@
 //! The operating-point sections of the report (contact-state table, friction at the table rows) and
 //! the curves the plots draw.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::friction;
 use super::number::{m, mps, pa, Num, Q};
@@ -9,7 +9,7 @@ use crate::evaluate::{Evaluation, PointEvaluation};
 use crate::geometry::ContactPoint;
 use crate::model::Scene;
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct OperatingPointReport {
     /// The point's number in the sweep, 0-based (records.csv's `point` is this + 1).
     #[serde(skip)]
@@ -33,9 +33,9 @@ pub struct OperatingPointReport {
 }
 
 /// The contact state at one point of the line of action.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ContactRow {
-    pub point: Option<&'static str>,
+    pub point: Option<String>,
     pub distance_from_t1: Q,
     pub s: Q,
     pub radius_of_curvature_pinion: Q,
@@ -66,7 +66,7 @@ pub struct Curves {
     /// Load share of one contact along the line of action.
     pub load_share: Vec<f64>,
     /// A B P D E from T1 (m).
-    pub marks: Vec<(&'static str, f64)>,
+    pub marks: Vec<(String, f64)>,
     /// Per plotted operating point: μ, local power loss along the line of action, η over a cycle.
     pub points: Vec<PointCurves>,
     /// η(τ) sample times (mesh periods).
@@ -90,7 +90,7 @@ pub struct PointCurves {
 
 pub(super) fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> ContactRow {
     ContactRow {
-        point,
+        point: point.map(String::from),
         distance_from_t1: m(c.u),
         s: m(c.s),
         radius_of_curvature_pinion: m(c.radius_of_curvature[0]),
@@ -137,7 +137,7 @@ pub(super) fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
         slide_to_roll: c.slide_to_roll.clone(),
         hertz_pressure: c.hertz_pressure.clone(),
         load_share: c.load_share.clone(),
-        marks: eval.geometry.named_points(),
+        marks: eval.geometry.named_points().into_iter().map(|(n, u)| (n.to_string(), u)).collect(),
         points: point_curves(scene, eval),
         tau: crate::evaluate::cycle_times(),
     }

@@ -1,13 +1,13 @@
 //! The scene's inputs as the user wrote them and in SI, for the report's first table.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::number::{Num, Q};
 use crate::model::{Given, ModuleSource, Scene};
 use crate::scene::units::SiQuantity;
 
 /// One input of the scene, as written and in SI (a plain number when dimensionless).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct InputRow {
     pub key: String,
     pub written: String,
@@ -15,7 +15,7 @@ pub struct InputRow {
 }
 
 /// A dimensional value with its unit, or a plain number.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum SiValue {
     Plain(Num),

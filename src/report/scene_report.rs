@@ -1,6 +1,6 @@
 //! The report of one scene: the serde data every renderer reads.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::finding::Finding;
 use super::geometry::GeometryReport;
@@ -9,7 +9,7 @@ use super::scene::InputRow;
 use super::{dynamics, friction, losses, number, sweep};
 
 /// The report of one scene.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Report {
     pub title: String,
     /// Folder name: the title in lower case, words joined by `_`.
@@ -61,7 +61,7 @@ pub struct Report {
     pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
 }
 
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PlotRef {
     pub file: String,
     pub title: String,

@@ -1,7 +1,7 @@
 //! The sweep as a whole: where its record files are, its extremes over every operating point, and
 //! what the report leaves out of a large sweep (serde data).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
@@ -9,10 +9,10 @@ use crate::evaluate::tally::AtPoint;
 use crate::evaluate::{Plan, Tally};
 
 /// The record files of the run.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct RecordsReport {
-    pub csv: &'static str,
-    pub jsonl: &'static str,
+    pub csv: String,
+    pub jsonl: String,
     /// Rows in each file (the CSV has a header line more).
     pub rows: usize,
     pub operating_points: usize,
@@ -23,14 +23,14 @@ pub struct RecordsReport {
 }
 
 /// A value at an operating point (1-based, as in the record files).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ValueAt<V> {
     pub value: V,
     pub point: usize,
 }
 
 /// Extremes of one law and formulation over every operating point.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SweepExtremesReport {
     pub label: String,
     pub formulation: String,
@@ -40,7 +40,7 @@ pub struct SweepExtremesReport {
 }
 
 /// One dynamic formulation over every operating point.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SweepDynamicsReport {
     pub formulation: String,
     pub unstable_points: usize,
@@ -48,7 +48,7 @@ pub struct SweepDynamicsReport {
 }
 
 /// Over every operating point of a sweep: exact extremes over the evaluated points.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SweepReport {
     pub operating_points: usize,
     pub efficiency: Vec<SweepExtremesReport>,
@@ -62,8 +62,8 @@ pub const RECORDS_JSONL: &str = "records.jsonl";
 
 pub fn records_report(tally: &Tally, plan: &Plan) -> Option<RecordsReport> {
     (tally.rows > 0).then_some(RecordsReport {
-        csv: RECORDS_CSV,
-        jsonl: RECORDS_JSONL,
+        csv: RECORDS_CSV.into(),
+        jsonl: RECORDS_JSONL.into(),
         rows: tally.rows,
         operating_points: tally.points,
         reported_in_full: plan.detail.len(),

@@ -7,8 +7,8 @@ fn mm(v: &[f64]) -> Vec<f64> {
     v.iter().map(|u| u * 1e3).collect()
 }
 
-fn marks_mm(r: &Report) -> Vec<(&'static str, f64)> {
-    r.curves.marks.iter().map(|(n, u)| (*n, u * 1e3)).collect()
+fn marks_mm(r: &Report) -> Vec<(String, f64)> {
+    r.curves.marks.iter().map(|(n, u)| (n.clone(), u * 1e3)).collect()
 }
 
 /// contact_state.svg: v_s (per speed), SR and p_H (per torque) along the line of action.

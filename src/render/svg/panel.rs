@@ -30,7 +30,7 @@ pub struct Panel {
     /// Single points drawn as markers with a legend: (label, [(x, y)]).
     pub points: Vec<(String, Vec<(f64, f64)>)>,
     /// Vertical marks with a letter (A B P D E).
-    pub marks: Vec<(&'static str, f64)>,
+    pub marks: Vec<(String, f64)>,
     /// Shaded x-ranges with a label (regime bands).
     pub bands: Vec<(f64, f64, String)>,
     /// Values with |y| above this are drawn at the limit and marked with ▲/▼.
