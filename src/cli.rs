@@ -49,6 +49,8 @@ enum Command {
         #[arg(long, default_value = "reports")]
         out: PathBuf,
     },
+    /// Draw report.md and every plot of a report folder again from its report.json alone.
+    Render { folder: PathBuf },
     /// Parse and validate a scene only.
     Check { scene: PathBuf },
     /// List the unit table.
@@ -76,6 +78,7 @@ pub(crate) fn main() -> ExitCode {
         Command::Run { scene, out, shard } => run(&scene, &out, shard),
         Command::Merge { shards, out } => merge(&shards, &out),
         Command::Check { scene } => check(&scene),
+        Command::Render { folder } => finished(gearloss::rerender::render_into(&folder).map(|files| (folder, files))),
         Command::Units => {
             say!(out, "{}", units_table());
             ExitCode::SUCCESS

@@ -55,6 +55,8 @@ pub mod progress;
 pub mod quantity;
 pub mod render;
 pub mod report;
+pub mod rerender;
+pub mod run_error;
 pub mod scene;
 pub mod shard;
 pub mod tribology;
@@ -69,6 +71,7 @@ pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
+pub use run_error::RunError;
 pub use scene::ast::SceneAst;
 
 /// Stage 1: text → syntax tree.
@@ -149,7 +152,7 @@ pub fn report(scene: &Scene, evaluation: &Evaluation, tally: &Tally, plan: &Plan
 
 /// Stage 5: the files of the report folder (the record files are written as the sweep runs).
 pub fn render(report: &Report) -> Result<RenderedReport, String> {
-    render::render_report(report)
+    render::render_report(report, None)
 }
 
 /// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
@@ -178,8 +181,14 @@ fn finish(
     let eval = details(scene, plan, known, progress);
     progress.stage("report", 1);
     let report = report(scene, &eval, tally, plan);
+    let timings = eval.dynamics.as_ref().and_then(report::dynamics::timings);
     progress.stage("render", 1);
-    let rendered = render(&report).map_err(RunError::Render)?;
+    let (report, mut rendered) = rerender::render_as_written(&report, timings.as_ref())?;
+    // The map's cells are data of the run, as the record files are: written beside the report.
+    if let (Some(map), Some(m)) = (&eval.efficiency_map, &report.efficiency_map) {
+        let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
+        rendered.files.push((m.csv.clone(), map.csv(&labels)));
+    }
     Ok((report, rendered))
 }
 
@@ -349,23 +358,4 @@ pub fn merge_into(
     }
     let dir = folder.commit().map_err(RunError::io("the report folder"))?;
     Ok((dir, files))
-}
-
-/// Why a run failed.
-#[derive(Debug, thiserror::Error)]
-pub enum RunError {
-    #[error("{0}")]
-    Scene(SceneErrors),
-    #[error("rendering the report failed: {0}")]
-    Render(String),
-    #[error("cannot write {what}: {source}")]
-    Io { what: &'static str, source: std::io::Error },
-    #[error("{0}")]
-    Shards(String),
-}
-
-impl RunError {
-    fn io(what: &'static str) -> impl Fn(std::io::Error) -> RunError {
-        move |source| RunError::Io { what, source }
-    }
 }

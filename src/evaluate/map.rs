@@ -2,6 +2,8 @@
 //! grid of its own (not the scene's operating points), for every law and formulation; the cells go
 //! to efficiency_map.csv, the report keeps the grid and the ranges over it.
 
+use std::fmt::Write;
+
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -12,7 +14,7 @@ use crate::losses::BudgetParts;
 use crate::model::{Formulation, Operating, Scene};
 
 /// One grid point, one law, one formulation.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct MapCell {
     pub torque_index: usize,
     pub speed_index: usize,
@@ -81,4 +83,37 @@ pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
         speed_unit: speeds.unit.clone(),
         cells: cells.into_iter().flatten().collect(),
     })
+}
+
+impl EfficiencyMap {
+    /// efficiency_map.csv: one row per grid point, law and formulation (SI: N·m, rad/s, W).
+    pub fn csv(&self, labels: &[String]) -> String {
+        let m = self;
+        let mut out = String::from(
+            "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,gear_no_load_W,bearings_no_load_W,bearings_load_W,seals_W,total_loss_W,total_efficiency\n",
+        );
+        let num =
+            |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::numerics::rounding::round_sig(x)));
+        for c in &m.cells {
+            let b = c.budget.as_ref();
+            let _ = writeln!(
+                out,
+                "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{}",
+                num(Some(m.torques[c.torque_index])),
+                num(Some(m.speeds[c.speed_index])),
+                m.speeds_written[c.speed_index],
+                labels[c.law_index].replace('"', "\"\""),
+                c.formulation.name(),
+                num(Some(c.mesh_efficiency)),
+                num(Some(c.mesh_loss)),
+                num(b.and_then(|b| b.gear_no_load)),
+                num(b.and_then(|b| b.bearings_no_load)),
+                num(b.and_then(|b| b.bearings_load)),
+                num(b.and_then(|b| b.seals)),
+                num(b.map(|b| b.total_loss)),
+                num(b.map(|b| b.total_efficiency)),
+            );
+        }
+        out
+    }
 }

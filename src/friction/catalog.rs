@@ -208,3 +208,13 @@ pub const LAWS: &[LawEntry] = &[
 pub fn entry(name: &str) -> Option<&'static LawEntry> {
     LAWS.iter().find(|l| l.id.name() == name)
 }
+
+impl<'de> serde::Deserialize<'de> for LawId {
+    /// A law's scene name, read back through the catalogue.
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<LawId, D::Error> {
+        let name = String::deserialize(d)?;
+        entry(&name)
+            .map(|e| e.id)
+            .ok_or_else(|| serde::de::Error::custom(format!("`{name}` is not a law of the catalogue")))
+    }
+}

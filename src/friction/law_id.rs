@@ -48,13 +48,3 @@ impl Serialize for LawId {
         s.serialize_str(self.name())
     }
 }
-
-impl<'de> serde::Deserialize<'de> for LawId {
-    /// A law's scene name, read back through the catalogue.
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<LawId, D::Error> {
-        let name = String::deserialize(d)?;
-        super::catalog::entry(&name)
-            .map(|e| e.id)
-            .ok_or_else(|| serde::de::Error::custom(format!("`{name}` is not a law of the catalogue")))
-    }
-}

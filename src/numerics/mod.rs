@@ -5,3 +5,4 @@ pub mod chebyshev;
 pub mod dense;
 pub mod quadrature;
 pub mod roots;
+pub mod rounding;

@@ -1,10 +1,9 @@
 //! report.md's headline (the answer first), the lubricant at temperature, the loss budget and the
-//! efficiency map; and efficiency_map.csv.
+//! efficiency map.
 
 use std::fmt::Write;
 
 use super::table::{fixed, header, law_words, row, sig};
-use crate::report::losses::MapReport;
 use crate::report::{Report, Severity};
 
 /// Rows of the headline's table before it points to the details.
@@ -211,35 +210,6 @@ pub fn map_section(r: &Report) -> String {
                     .map_or("—".into(), |t| format!("{} – {}", fixed(100.0 * t[0].0, 3), fixed(100.0 * t[1].0, 3))),
                 x.total_loss.map_or("—".into(), |t| format!("{} – {}", fixed(t[0].si(), 1), fixed(t[1].si(), 1))),
             ],
-        );
-    }
-    out
-}
-
-/// efficiency_map.csv: one row per grid point, law and formulation (SI: N·m, rad/s, W).
-pub fn map_csv(m: &MapReport) -> String {
-    let mut out = String::from(
-        "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,gear_no_load_W,bearings_no_load_W,bearings_load_W,seals_W,total_loss_W,total_efficiency\n",
-    );
-    let num = |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::report::number::round_sig(x)));
-    for c in &m.cells {
-        let b = c.budget.as_ref();
-        let _ = writeln!(
-            out,
-            "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{}",
-            num(Some(m.pinion_torques[c.torque_index].0)),
-            num(Some(m.pinion_speeds[c.speed_index].0)),
-            m.speeds_written[c.speed_index],
-            m.labels[c.law_index].replace('"', "\"\""),
-            c.formulation.name(),
-            num(Some(c.mesh_efficiency)),
-            num(Some(c.mesh_loss)),
-            num(b.and_then(|b| b.gear_no_load)),
-            num(b.and_then(|b| b.bearings_no_load)),
-            num(b.and_then(|b| b.bearings_load)),
-            num(b.and_then(|b| b.seals)),
-            num(b.map(|b| b.total_loss)),
-            num(b.map(|b| b.total_efficiency)),
         );
     }
     out

@@ -11,11 +11,14 @@ pub mod oil_sweep;
 pub mod svg;
 pub mod table;
 
+use crate::report::numerics::Timings;
 use crate::report::Report;
 
 /// Files whose names start with this hold run times: machine-dependent, never snapshotted or
 /// compared with the committed reports.
 pub const TIMING_PREFIX: &str = "timing_";
+/// The numerics study's run times beside report.json.
+pub const TIMINGS_FILE: &str = "timing_numerics.json";
 
 /// The files of a report folder: (file name, content).
 #[derive(Debug, Clone)]
@@ -24,15 +27,62 @@ pub struct RenderedReport {
     pub files: Vec<(String, String)>,
 }
 
-/// report.json: the report's serde data, pretty-printed.
+/// report.json: the report's serde data, pretty-printed, each array of plain values (numbers,
+/// strings, `null`) on one line so that a plot's series stays readable.
 pub fn render_json(report: &Report) -> String {
-    let mut s = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
+    let pretty = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
+    let mut s = inline_plain_arrays(&pretty);
     s.push('\n');
     s
 }
 
-/// Renders every file of the report folder.
-pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
+/// Joins every array of serde_json's pretty output whose elements are all plain values onto the
+/// line that opens it: `[\n  1.0,\n  2.0\n]` → `[1.0, 2.0]`. Nested arrays and objects keep
+/// their lines.
+///
+/// ```
+/// let pretty = "{\n  \"x\": [\n    1.5,\n    null\n  ],\n  \"y\": [\n    [\n      1,\n      2\n    ]\n  ]\n}";
+/// let joined = gearloss::render::inline_plain_arrays(pretty);
+/// assert_eq!(joined, "{\n  \"x\": [1.5, null],\n  \"y\": [\n    [1, 2]\n  ]\n}");
+/// ```
+pub fn inline_plain_arrays(pretty: &str) -> String {
+    let lines: Vec<&str> = pretty.lines().collect();
+    let mut out: Vec<String> = Vec::with_capacity(lines.len());
+    let mut i = 0;
+    while i < lines.len() {
+        let line = lines[i];
+        if line.ends_with('[') {
+            // The elements up to the matching `]`, if each is a plain value on a line of its own.
+            let mut items = Vec::new();
+            let mut j = i + 1;
+            let closed = loop {
+                let Some(next) = lines.get(j) else { break None };
+                let t = next.trim_start();
+                if t == "]" || t == "]," {
+                    break Some(t);
+                }
+                let plain = !(t.ends_with('[') || t.ends_with('{') || t.starts_with(']') || t.starts_with('}'));
+                if !plain {
+                    break None;
+                }
+                items.push(t.trim_end_matches(','));
+                j += 1;
+            };
+            if let Some(close) = closed {
+                out.push(format!("{line}{}{}", items.join(", "), close));
+                i = j + 1;
+                continue;
+            }
+        }
+        out.push(line.to_string());
+        i += 1;
+    }
+    out.join("\n")
+}
+
+/// Renders every file of the report folder; `timings`, the numerics study's run times (not part of
+/// report.json: they change from run to run), add `timing_numerics.json` and the work-precision plot.
+pub fn render_report(report: &Report, timings: Option<&Timings>) -> Result<RenderedReport, String> {
     let mut files = vec![
         ("report.md".to_string(), markdown::render_markdown(report)),
         ("report.json".to_string(), render_json(report)),
@@ -50,13 +100,13 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
             "efficiency_map.svg" => svg::efficiency_contours(report)?,
             "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
             "stability_map.svg" => svg::stability_map(report)?,
-            "timing_work_precision.svg" => svg::work_precision(report)?,
+            "timing_work_precision.svg" => match timings {
+                Some(t) => svg::work_precision(report, t)?,
+                None => continue,
+            },
             other => return Err(format!("no renderer for plot {other}")),
         };
         files.push((plot.file.clone(), svg));
-    }
-    if let Some(m) = &report.efficiency_map {
-        files.push((m.csv.clone(), markdown_losses::map_csv(m)));
     }
     for (k, pc) in report.curves.points.iter().enumerate() {
         files.push((pc.file.clone(), svg::point_friction(report, k)?));
@@ -70,11 +120,11 @@ pub fn render_report(report: &Report) -> Result<RenderedReport, String> {
                 files.push((c.free_file.clone(), svg::free_response(report, k)?));
             }
         }
-        if let Some(t) = &d.timings {
-            let mut json = serde_json::to_string_pretty(t).expect("timings serialise");
-            json.push('\n');
-            files.push((TIMING_PREFIX.to_string() + "numerics.json", json));
-        }
+    }
+    if let Some(t) = timings {
+        let mut json = serde_json::to_string_pretty(t).expect("timings serialise");
+        json.push('\n');
+        files.push((TIMINGS_FILE.to_string(), json));
     }
     Ok(RenderedReport { slug: report.slug.clone(), files })
 }

@@ -61,29 +61,35 @@ pub struct StabilityMapReport {
     pub unstable_ranges: Vec<Vec<[Q; 2]>>,
     pub points: Vec<StabilityRow>,
     /// The unit the map's speeds were written in.
-    #[serde(skip)]
     pub speed_unit: DisplayUnit,
 }
 
 /// Curves of one operating point for plots.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct DynamicsCurves {
     pub file: String,
     pub label: String,
     /// (formulation, [(τ in mesh periods, DTE m)]): each on its own times (switch times twice, extrema).
+    #[serde(with = "super::floats")]
     pub dte: Vec<(String, Vec<(f64, f64)>)>,
     /// (pair label, [(τ, tooth force of the pair N)])
+    #[serde(with = "super::floats")]
     pub pair_force: Vec<(String, Vec<(f64, f64)>)>,
     /// (formulation, [(τ, applied friction force N)])
+    #[serde(with = "super::floats")]
     pub friction_force: Vec<(String, Vec<(f64, f64)>)>,
     /// (formulation, amplitudes by order 1..)
+    #[serde(with = "super::floats")]
     pub spectrum: Vec<(String, Vec<f64>)>,
     /// Zone boundary and pitch-point passage times (mesh periods).
+    #[serde(with = "super::floats")]
     pub marks: Vec<(String, f64)>,
     /// 6-DOF: (label, [(τ, OLOA bearing force N)]) per gear and formulation.
+    #[serde(with = "super::floats")]
     pub oloa: Vec<(String, Vec<(f64, f64)>)>,
     /// free_response_point_K.svg and its series (formulation, [(t in mesh periods, DTE m)]).
     pub free_file: String,
+    #[serde(with = "super::floats")]
     pub free: Vec<(String, Vec<(f64, f64)>)>,
 }
 
@@ -93,7 +99,7 @@ pub struct DynamicsReport {
     /// What the model is, as the report prints it.
     pub description: String,
     /// k_double / k_single of a rectangular stiffness (None for a table).
-    #[serde(skip)]
+    #[serde(with = "super::floats", skip_serializing_if = "Option::is_none", default)]
     pub stiffness_step_ratio: Option<f64>,
     pub stiffness_source: String,
     pub stiffness: StiffnessReport,
@@ -103,7 +109,7 @@ pub struct DynamicsReport {
     pub mean_stiffness: Q,
     pub natural_frequency: Q,
     /// 6-DOF: natural frequencies of the mean undamped system, ascending, and highest/lowest.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub natural_frequencies: Vec<Q>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stiffness_ratio: Option<Num>,
@@ -116,14 +122,21 @@ pub struct DynamicsReport {
     pub stability_map: Option<StabilityMapReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub numerics: Option<NumericsReport>,
-    #[serde(skip)]
     pub curves: Vec<DynamicsCurves>,
-    #[serde(skip)]
-    pub timings: Option<Timings>,
 }
 
 fn finite(x: f64) -> Option<Num> {
     x.is_finite().then_some(Num(x))
+}
+
+/// The run times of the numerics study (machine-dependent: never in report.json; `run` writes them
+/// to `timing_numerics.json` and the work-precision plot).
+pub fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
+    let (_, _, study) = d.numerics.as_ref()?;
+    Some(Timings {
+        reference_seconds: study.reference_seconds,
+        runs: study.runs.iter().map(|r| (r.method.clone(), r.rtol, r.error, r.seconds)).collect(),
+    })
 }
 
 pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
@@ -296,34 +309,25 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                 .collect(),
         }
     });
-    let (numerics, timings) = match &d.numerics {
-        None => (None, None),
-        Some((f, _, study)) => (
-            Some(NumericsReport {
-                formulation: *f,
-                reference: study.reference,
-                periods: study.periods,
-                runs: study
-                    .runs
-                    .iter()
-                    .map(|r| NumericsRow {
-                        method: r.method.clone(),
-                        rtol: Num(r.rtol),
-                        error: finite(r.error),
-                        final_state_error: finite(r.final_state_error),
-                        steps: r.counts.steps,
-                        rejected: r.counts.rejected,
-                        evaluations: r.counts.evaluations,
-                        failure: r.failure.clone(),
-                    })
-                    .collect(),
-            }),
-            Some(Timings {
-                reference_seconds: study.reference_seconds,
-                runs: study.runs.iter().map(|r| (r.method.clone(), r.rtol, r.error, r.seconds)).collect(),
-            }),
-        ),
-    };
+    let numerics = d.numerics.as_ref().map(|(f, _, study)| NumericsReport {
+        formulation: *f,
+        reference: study.reference,
+        periods: study.periods,
+        runs: study
+            .runs
+            .iter()
+            .map(|r| NumericsRow {
+                method: r.method.clone(),
+                rtol: Num(r.rtol),
+                error: finite(r.error),
+                final_state_error: finite(r.final_state_error),
+                steps: r.counts.steps,
+                rejected: r.counts.rejected,
+                evaluations: r.counts.evaluations,
+                failure: r.failure.clone(),
+            })
+            .collect(),
+    });
     DynamicsReport {
         model: d.model.into(),
         description: d.description.into(),
@@ -346,6 +350,5 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         stability_map,
         numerics,
         curves,
-        timings,
     }
 }

@@ -70,7 +70,7 @@ pub struct FormulationReport {
     /// |friction torque| on pinion and wheel over the cycle, located.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peak_applied_friction_force: Option<Located>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub peak_friction_torque: Vec<Located>,
     /// External formulation: peak |Σ μ_j w_j F| (μ × tooth force), which its equation does not apply.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -87,7 +87,7 @@ pub struct FormulationReport {
     /// 6-DOF: the largest friction force on one pair, max_i |μ_i N_i|, located.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pair_friction_force_max: Option<Located>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub gears: Vec<GearDynamicsReport>,
 }
 

@@ -158,7 +158,7 @@ pub struct LawReport {
     pub mu_along_loa: Vec<MuRow>,
     pub mean_abs_mu: Num,
     pub mean_abs_mu_error: Num,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub regime_switches_from_t1: Vec<Q>,
     pub validity: ValidityReport,
     pub efficiency: Vec<EfficiencyReport>,
@@ -180,11 +180,8 @@ pub struct FilmRow {
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct EfficiencyRecord {
     /// The case (operating point) and its torque and speed indices in the sweeps, for grouping.
-    #[serde(skip)]
     pub case: usize,
-    #[serde(skip)]
     pub torque_index: usize,
-    #[serde(skip)]
     pub speed_index: usize,
     pub law: crate::friction::catalog::LawId,
     pub label: String,

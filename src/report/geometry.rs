@@ -34,7 +34,7 @@ pub struct PointsReport {
     pub D: Option<Q>,
     pub E: Q,
     /// For ε_α ≥ 2: every point where the number of pairs changes (A + k p_b, E − k p_b), in order.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub pair_changes: Vec<NamedPoint>,
 }
 

@@ -43,12 +43,12 @@ pub struct HelicalReport {
     pub axial_force: Vec<AxialForce>,
     /// For the plot: the path of contact (T1A, T1P, T1E, b/2 in m) and the contact lines at a few
     /// instants, (τ, [(u, z) at both ends]).
-    #[serde(skip)]
+    #[serde(with = "super::floats")]
     pub path: [f64; 4],
-    #[serde(skip)]
+    #[serde(with = "super::floats")]
     pub lines_at: Vec<(f64, Vec<LineEnds>)>,
     /// For the plot: τ, L, L on the approach side, L on the recess side (m), over one cycle.
-    #[serde(skip)]
+    #[serde(with = "super::floats")]
     pub length_curve: [Vec<f64>; 4],
 }
 

@@ -78,7 +78,7 @@ pub struct BudgetRecord {
     pub total_loss: Q,
     pub total_efficiency: Num,
     /// Every bearing place in the scene's order (pinion shaft, then wheel shaft).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub bearings: Vec<BearingRecord>,
 }
 
@@ -189,14 +189,53 @@ pub struct MapReport {
     pub pinion_speeds: Vec<Num>,
     pub ranges: Vec<MapRange>,
     pub csv: String,
-    #[serde(skip)]
+    /// The grid's speeds in the unit the scene wrote.
     pub speeds_written: Vec<f64>,
-    #[serde(skip)]
     pub speed_unit: String,
-    #[serde(skip)]
-    pub labels: Vec<String>,
-    #[serde(skip)]
-    pub cells: Vec<MapCell>,
+    /// The formulation the map plot shows (the scene's first).
+    pub formulation: Option<Formulation>,
+    /// The map plot's fields: per law, total η, mesh η and the total (or mesh) loss over the grid,
+    /// [torque][speed] (NaN where a cell has no value).
+    pub fields: Vec<MapField>,
+}
+
+/// One field of the map plot.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct MapField {
+    pub title: String,
+    pub unit: String,
+    #[serde(with = "super::floats")]
+    pub values: Vec<Vec<f64>>,
+}
+
+/// The map plot's fields over the grid, for the first formulation of the map's cells.
+fn map_fields(map: &EfficiencyMap, labels: &[String]) -> (Option<Formulation>, Vec<MapField>) {
+    let first = map.cells.first().map(|c| c.formulation);
+    let has_budget = map.cells.iter().any(|c| c.budget.is_some());
+    let mut fields = Vec::new();
+    for (i, label) in labels.iter().enumerate() {
+        let grid = |get: &dyn Fn(&MapCell) -> Option<f64>| {
+            let mut v = vec![vec![f64::NAN; map.speeds.len()]; map.torques.len()];
+            for c in map.cells.iter().filter(|c| c.law_index == i && Some(c.formulation) == first) {
+                v[c.torque_index][c.speed_index] = get(c).unwrap_or(f64::NAN);
+            }
+            v
+        };
+        let name = super::law_words::law_words(label);
+        let field = |title: String, unit: &str, values| MapField { title, unit: unit.into(), values };
+        if has_budget {
+            let total = grid(&|c| c.budget.as_ref().map(|b| 100.0 * b.total_efficiency));
+            fields.push(field(format!("total η — {name}"), "%", total));
+        }
+        fields.push(field(format!("mesh η — {name}"), "%", grid(&|c| Some(100.0 * c.mesh_efficiency))));
+        if has_budget {
+            let loss = grid(&|c| c.budget.as_ref().map(|b| b.total_loss));
+            fields.push(field(format!("total loss — {name}"), "W", loss));
+        } else {
+            fields.push(field(format!("mesh loss — {name}"), "W", grid(&|c| Some(c.mesh_loss))));
+        }
+    }
+    (first, fields)
 }
 
 fn range(values: impl Iterator<Item = f64>) -> [f64; 2] {
@@ -223,6 +262,7 @@ pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
             });
         }
     }
+    let (formulation, fields) = map_fields(map, &labels);
     MapReport {
         pinion_torques: map.torques.iter().map(|t| Num(*t)).collect(),
         pinion_speeds: map.speeds.iter().map(|s| Num(*s)).collect(),
@@ -230,8 +270,8 @@ pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
         csv: "efficiency_map.csv".into(),
         speeds_written: map.speeds_written.clone(),
         speed_unit: map.speed_unit.clone(),
-        labels,
-        cells: map.cells.clone(),
+        formulation,
+        fields,
     }
 }
 

@@ -3,16 +3,7 @@
 
 use serde::{Deserialize, Serialize, Serializer};
 
-/// Significant digits kept in report.json.
-pub const SIGNIFICANT_DIGITS: usize = 10;
-
-/// Rounds to [`SIGNIFICANT_DIGITS`] significant digits (non-finite values pass through).
-pub fn round_sig(x: f64) -> f64 {
-    if !x.is_finite() || x == 0.0 {
-        return if x == 0.0 { 0.0 } else { x };
-    }
-    format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x).parse().unwrap_or(x)
-}
+pub use crate::numerics::rounding::{round_sig, SIGNIFICANT_DIGITS};
 
 /// A plain (dimensionless) number, rounded when serialised; non-finite becomes `null`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,9 +26,10 @@ impl<'de> Deserialize<'de> for Num {
     }
 }
 
-/// Every SI unit a report writes (a [`Q`] read back takes its unit from here).
+/// Every SI unit a report writes (a [`Q`] read back takes its unit from here; the round trip of every
+/// scene in `specs/` is a test).
 pub const UNITS: &[&str] = &[
-    "1", "1/Pa", "1/s", "Hz", "J", "K", "N", "N*m", "N*s/m", "N/m", "N/m^2", "Pa", "Pa*s", "W", "kg", "kg*m^2",
+    "1", "1/Pa", "1/m", "1/s", "Hz", "J", "K", "N", "N*m", "N*s/m", "N/m", "N/m^2", "Pa", "Pa*s", "W", "kg", "kg*m^2",
     "kg/m^3", "m", "m/s", "m/s^2", "m^2/s", "m^3/s", "rad", "rad/s", "s",
 ];
 
@@ -73,8 +65,9 @@ impl Q {
     }
 }
 
-/// A unit the user wrote, for display in tables and plots: the value in it is SI / factor.
-#[derive(Debug, Clone, PartialEq, Default)]
+/// A unit the user wrote, for display in tables and plots: the value in it is SI / factor (the
+/// factor in full precision, so that values shown in it read back the same).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct DisplayUnit {
     pub name: String,
     /// SI per unit.
@@ -87,9 +80,15 @@ impl DisplayUnit {
         DisplayUnit { name: sweep.unit.clone(), factor: sweep.factor }
     }
 
-    /// A value in this unit.
+    /// A value in this unit, to the ten significant digits report.json keeps (so that a speed
+    /// written as 500 rpm reads 500, not 500.0000000016, from its rounded SI value).
     pub fn value(&self, q: &Q) -> f64 {
-        q.si() / self.factor
+        self.of_si(q.si())
+    }
+
+    /// An SI value in this unit, to ten significant digits.
+    pub fn of_si(&self, si: f64) -> f64 {
+        round_sig(si / self.factor)
     }
 }
 

@@ -24,10 +24,9 @@ pub struct OilSweepReport {
     /// value per run in each column.
     pub efficiency: Vec<OilSweepRow>,
     /// Whether the rows carry the loss budget's total (the scene describes its gearbox).
-    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    #[serde(skip_serializing_if = "std::ops::Not::not", default)]
     pub loss_budget: bool,
     /// The unit the scene wrote the pinion speed in (for the tables).
-    #[serde(skip)]
     pub speed_unit: super::number::DisplayUnit,
 }
 

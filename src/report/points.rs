@@ -12,7 +12,6 @@ use crate::model::Scene;
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct OperatingPointReport {
     /// The point's number in the sweep, 0-based (records.csv's `point` is this + 1).
-    #[serde(skip)]
     pub index: usize,
     pub pinion_torque: Q,
     pub pinion_speed: Q,
@@ -25,7 +24,7 @@ pub struct OperatingPointReport {
     pub contact: Vec<ContactRow>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub film: Option<Vec<friction::FilmRow>>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub friction: Vec<friction::LawReport>,
     /// The plot of μ, η and local power loss at this point, when drawn.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -55,36 +54,47 @@ pub struct ContactRow {
 }
 
 /// Curves along the line of action, for plots: x in m from T1.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct Curves {
+    #[serde(with = "super::floats")]
     pub u: Vec<f64>,
     /// (label, v_s in m/s) for each plotted speed.
+    #[serde(with = "super::floats")]
     pub sliding_velocity: Vec<(String, Vec<f64>)>,
+    #[serde(with = "super::floats")]
     pub slide_to_roll: Vec<f64>,
     /// (label, p_H in Pa) for each plotted torque.
+    #[serde(with = "super::floats")]
     pub hertz_pressure: Vec<(String, Vec<f64>)>,
     /// Load share of one contact along the line of action.
+    #[serde(with = "super::floats")]
     pub load_share: Vec<f64>,
     /// A B P D E from T1 (m).
+    #[serde(with = "super::floats")]
     pub marks: Vec<(String, f64)>,
     /// Per plotted operating point: μ, local power loss along the line of action, η over a cycle.
     pub points: Vec<PointCurves>,
     /// η(τ) sample times (mesh periods).
+    #[serde(with = "super::floats")]
     pub tau: Vec<f64>,
 }
 
 /// Curves of one operating point.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct PointCurves {
     pub file: String,
     pub label: String,
     /// (law label, signed μ)
+    #[serde(with = "super::floats")]
     pub mu: Vec<(String, Vec<f64>)>,
     /// Composite regime bands along the line of action: (from, to, regime) in m.
+    #[serde(with = "super::floats")]
     pub regime_bands: Vec<(f64, f64, String)>,
     /// (law label, W)
+    #[serde(with = "super::floats")]
     pub power_loss: Vec<(String, Vec<f64>)>,
     /// (law label · formulation, η)
+    #[serde(with = "super::floats")]
     pub efficiency: Vec<(String, Vec<f64>)>,
 }
 

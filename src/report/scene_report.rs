@@ -33,31 +33,28 @@ pub struct Report {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lubricant: Option<losses::LubricantReport>,
     /// Whether the efficiency records carry a loss budget (the scene describes its gearbox).
-    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    #[serde(skip_serializing_if = "std::ops::Not::not", default)]
     pub loss_budget: bool,
     /// The readings the budget's models rest on, in words (which radius, which direction, which
     /// constants), for the parts the scene describes.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub budget_readings: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub efficiency_map: Option<losses::MapReport>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
-    /// Sampled curves for the plots (not in report.json: they repeat the tables at finer spacing).
-    #[serde(skip)]
+    /// Sampled curves for the plots (they repeat the tables at finer spacing).
     pub curves: Curves,
     /// The unit the scene wrote the pinion speed in, for tables and plot axes.
-    #[serde(skip)]
     pub speed_unit: number::DisplayUnit,
     /// The map plots' grid (torque and speed indices), when the sweep has a map.
-    #[serde(skip)]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub map_grid: Option<(Vec<usize>, Vec<usize>)>,
     /// The torque and speed indices the sweep plots draw a curve for.
-    #[serde(skip)]
     pub sweep_curves: (Vec<usize>, Vec<usize>),
     /// Mean |μ| of the composite law at the kept points: (torque index, torque N·m, speed rad/s, law
     /// label, mean |μ|), in sweep order, one per point and law.
-    #[serde(skip)]
+    #[serde(with = "super::floats")]
     pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
 }
 

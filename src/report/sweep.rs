@@ -52,7 +52,7 @@ pub struct SweepDynamicsReport {
 pub struct SweepReport {
     pub operating_points: usize,
     pub efficiency: Vec<SweepExtremesReport>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub dynamics: Vec<SweepDynamicsReport>,
 }
 

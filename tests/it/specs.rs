@@ -107,3 +107,34 @@ fn report_json_has_the_named_geometry_keys() {
     assert_eq!(row["hertz_pressure"]["unit"], "Pa");
     assert_eq!(row["point"], "A");
 }
+
+/// The report is data (issue 25): for every scene in specs/, its report folder written, then
+/// report.md and every SVG deleted, `render` gives back every file byte for byte from report.json
+/// alone (in each oil temperature's folder too).
+#[test]
+fn render_gives_back_every_file_from_report_json() {
+    let base = std::env::temp_dir().join(format!("gearloss-render-{}", std::process::id()));
+    for entry in std::fs::read_dir(crate::root().join("specs")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "gear") {
+            continue;
+        }
+        let r = render(&path);
+        let dir = base.join(&r.slug);
+        for (name, content) in &r.files {
+            let at = dir.join(name);
+            std::fs::create_dir_all(at.parent().unwrap()).unwrap();
+            if !(name.ends_with(".md") || name.ends_with(".svg")) {
+                std::fs::write(&at, content).unwrap();
+            }
+        }
+        let written = gearloss::rerender::render_into(&dir).unwrap_or_else(|e| panic!("{}: {e}", r.slug));
+        for (name, content) in &r.files {
+            let again = std::fs::read_to_string(dir.join(name)).unwrap_or_default();
+            assert!(again == *content, "{}/{name} differs after render", r.slug);
+        }
+        let drawn = r.files.iter().filter(|(n, _)| n.ends_with(".md") || n.ends_with(".svg")).count();
+        assert!(written.len() >= drawn, "{}: {} files drawn, {drawn} expected", r.slug, written.len());
+    }
+    let _ = std::fs::remove_dir_all(&base);
+}

@@ -101,8 +101,7 @@ pub fn stability_map(r: &Report) -> Result<String, String> {
 /// timing_work_precision.svg: log10 run time against log10 error, one full curve per method through
 /// every tolerance it ran (in ladder order), the exact/Magnus reference as a point at the error floor,
 /// failed runs marked at the worst error seen (machine-dependent: never snapshotted).
-pub fn work_precision(r: &Report) -> Result<String, String> {
-    let t = r.dynamics.as_ref().and_then(|d| d.timings.as_ref()).ok_or("no numerics")?;
+pub fn work_precision(r: &Report, t: &crate::report::numerics::Timings) -> Result<String, String> {
     let mut methods: Vec<String> = t.runs.iter().map(|x| x.0.clone()).collect();
     methods.dedup();
     let ok = |e: f64| e.is_finite() && e > 0.0;

@@ -248,33 +248,10 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
     // Speeds in the unit the scene wrote them in.
     let speeds = &m.speeds_written;
     let torques: Vec<f64> = m.pinion_torques.iter().map(|t| t.0).collect();
-    let first = m.cells.first().map(|c| c.formulation);
-    let mut fields = Vec::new();
-    for (i, label) in m.labels.iter().enumerate() {
-        let grid = |get: &dyn Fn(&crate::evaluate::map::MapCell) -> Option<f64>| {
-            let mut v = vec![vec![f64::NAN; speeds.len()]; torques.len()];
-            for c in m.cells.iter().filter(|c| c.law_index == i && Some(c.formulation) == first) {
-                v[c.torque_index][c.speed_index] = get(c).unwrap_or(f64::NAN);
-            }
-            v
-        };
-        let name = crate::render::table::law_words(label);
-        let has_budget = m.cells.iter().any(|c| c.budget.is_some());
-        if has_budget {
-            fields.push((
-                format!("total η — {name}"),
-                grid(&|c| c.budget.as_ref().map(|b| 100.0 * b.total_efficiency)),
-                "%",
-            ));
-        }
-        fields.push((format!("mesh η — {name}"), grid(&|c| Some(100.0 * c.mesh_efficiency)), "%"));
-        if has_budget {
-            fields.push((format!("total loss — {name}"), grid(&|c| c.budget.as_ref().map(|b| b.total_loss)), "W"));
-        } else {
-            fields.push((format!("mesh loss — {name}"), grid(&|c| Some(c.mesh_loss)), "W"));
-        }
-    }
-    let per_row = if fields.len() % 3 == 0 { 3 } else { 2 };
+    let first = m.formulation;
+    let fields: Vec<(String, Vec<Vec<f64>>, &str)> =
+        m.fields.iter().map(|f| (f.title.clone(), f.values.clone(), f.unit.as_str())).collect();
+    let per_row = if fields.len().is_multiple_of(3) { 3 } else { 2 };
     let rows = fields.len().div_ceil(per_row).max(1);
     let mut svg = String::new();
     {

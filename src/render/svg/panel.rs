@@ -84,6 +84,10 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
         return Ok(());
     }
     let Some((x0, x1)) = plottable(x0, x1) else { return Ok(()) };
+    // A hair wider than the data (1e-9 of the span): an end of the data at a round value keeps its
+    // tick, whatever the last bit of that value.
+    let hair = 1e-9 * (x1 - x0);
+    let (x0, x1) = (x0 - hair, x1 + hair);
     let clip = |y: f64| panel.clip.map_or(y, |c| y.clamp(-c, c));
     let (y0, y1) = bounds(all.iter().chain(&panel.points).flat_map(|(_, s)| s.iter().map(|p| clip(p.1))));
     let Some((y0, y1)) = plottable(y0, y1) else { return Ok(()) };

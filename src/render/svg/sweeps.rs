@@ -90,7 +90,7 @@ pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
         if curve_torques.binary_search(ti).is_err() {
             continue;
         }
-        let speed = *speed / r.speed_unit.factor;
+        let speed = r.speed_unit.of_si(*speed);
         let label = format!("{law} @ {torque:.1} N·m");
         match series.iter_mut().find(|(l, _)| *l == label) {
             Some((_, v)) => v.push((speed, *mu)),

@@ -1,0 +1,34 @@
+//! A law's label in the words of its catalogue title, for legends and tables.
+
+/// A law's label in words for legends: `coulomb(mu = 0.04)` → "Coulomb μ = 0.04",
+/// `iso_14179_2(x_l = 0.846)` → "ISO/TR 14179-2 X_L = 0.846".
+pub fn law_words(label: &str) -> String {
+    let (name, args) = match label.split_once('(') {
+        Some((n, a)) => (n, a.trim_end_matches(')')),
+        None => (label, ""),
+    };
+    let title = crate::friction::catalog::LAWS
+        .iter()
+        .find(|l| l.id.name() == name)
+        .map_or(name.to_string(), |l| l.title.split(" (").next().unwrap_or(l.title).to_string());
+    let args: Vec<String> = args
+        .split(", ")
+        .filter(|a| !a.is_empty())
+        .map(|a| {
+            let (k, v) = a.split_once(" = ").unwrap_or((a, ""));
+            let k = match k {
+                "mu" => "μ",
+                "x_l" => "X_L",
+                "mu_boundary" => "μ_bl",
+                "mu_ehl" => "μ_EHL",
+                other => other,
+            };
+            format!("{k} = {v}")
+        })
+        .collect();
+    if args.is_empty() {
+        title
+    } else {
+        format!("{title} {}", args.join(", "))
+    }
+}

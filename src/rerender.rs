@@ -1,0 +1,66 @@
+//! `gearloss render DIR`: a report folder's report.md and plots drawn again from its report.json
+//! alone (and its `timing_numerics.json`, when the run wrote one). `run` renders the same way: the
+//! report is written as report.json and read back before the other files are drawn, so the two
+//! give the same files byte for byte, and report.json is shown to hold everything the files show.
+
+use std::path::Path;
+
+use crate::render::{self, RenderedReport, TIMINGS_FILE};
+use crate::report::numerics::Timings;
+use crate::report::oil_sweep::OilSweepReport;
+use crate::report::Report;
+use crate::run_error::RunError;
+
+/// The report as report.json holds it: written, then read back.
+pub fn as_written(report: &Report) -> Result<Report, String> {
+    serde_json::from_str(&render::render_json(report)).map_err(|e| format!("report.json does not read back: {e}"))
+}
+
+/// Stage 5 as a run does it: the files drawn from the report as report.json holds it.
+pub fn render_as_written(report: &Report, timings: Option<&Timings>) -> Result<(Report, RenderedReport), RunError> {
+    let read = as_written(report).map_err(RunError::Render)?;
+    let rendered = render::render_report(&read, timings).map_err(RunError::Render)?;
+    Ok((read, rendered))
+}
+
+/// The files `render` draws for the report folder `dir` (a scene's, or a comparison of oil
+/// temperatures with one such folder per temperature), as (path inside `dir`, content).
+pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
+    let text = read(dir, "report.json")?;
+    if let Ok(report) = serde_json::from_str::<Report>(&text) {
+        let timings = match std::fs::read_to_string(dir.join(TIMINGS_FILE)) {
+            Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| bad(dir, TIMINGS_FILE, e))?),
+            Err(_) => None,
+        };
+        return Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::Render)?.files);
+    }
+    let sweep: OilSweepReport = serde_json::from_str(&text).map_err(|e| bad(dir, "report.json", e))?;
+    let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::Render)?;
+    for run in &sweep.runs {
+        let inner = render_folder(&dir.join(&run.folder))?;
+        files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
+    }
+    Ok(files)
+}
+
+/// `gearloss render DIR`: writes every file [`render_folder`] draws into `dir`, each to a
+/// temporary file renamed into place (a reader never sees half a file). Returns the files written.
+pub fn render_into(dir: &Path) -> Result<Vec<String>, RunError> {
+    let files = render_folder(dir)?;
+    let io = |what: &'static str| move |source| RunError::Io { what, source };
+    for (name, content) in &files {
+        let path = dir.join(name);
+        let temp = path.with_file_name(format!(".{}.rendering", name.rsplit('/').next().unwrap_or(name)));
+        std::fs::write(&temp, content).map_err(io("a rendered file"))?;
+        std::fs::rename(&temp, &path).map_err(io("a rendered file"))?;
+    }
+    Ok(files.into_iter().map(|(f, _)| f).collect())
+}
+
+fn read(dir: &Path, file: &str) -> Result<String, RunError> {
+    std::fs::read_to_string(dir.join(file)).map_err(|source| RunError::Io { what: "report.json", source })
+}
+
+fn bad(dir: &Path, file: &str, e: serde_json::Error) -> RunError {
+    RunError::Render(format!("{} is not a report gearloss wrote: {e}", dir.join(file).display()))
+}
