@@ -109,18 +109,18 @@ pub struct DynamicsReport {
     pub mean_stiffness: Q,
     pub natural_frequency: Q,
     /// 6-DOF: natural frequencies of the mean undamped system, ascending, and highest/lowest.
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub natural_frequencies: Vec<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stiffness_ratio: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction: Option<String>,
     /// The law diverges at the pitch point: its peak friction force and torques are infinite and not reported.
     pub friction_diverges_at_pitch: bool,
     pub points: Vec<DynamicsPointReport>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stability_map: Option<StabilityMapReport>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub numerics: Option<NumericsReport>,
     pub curves: Vec<DynamicsCurves>,
 }

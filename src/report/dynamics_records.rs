@@ -37,57 +37,57 @@ pub struct FormulationReport {
     pub monodromy_determinant: Num,
     /// exp(∫ tr A dt), which det Φ(T) must equal.
     pub liouville_determinant: Num,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dte_peak_to_peak: Option<Q>,
     /// Located extrema of the DTE (roots of ẋ = 0) with their times in mesh periods.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dte_min: Option<Located>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dte_max: Option<Located>,
     /// Time mean of the DTE (Gauss–Kronrod on the state) and its error estimate.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dte_mean: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dte_mean_error: Option<Q>,
     /// Located extrema of the tooth force F = c(ẋ − ε̇) + k(x − ε) (Fernandes eq 7).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tooth_force_min: Option<Located>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tooth_force_max: Option<Located>,
     /// max F / F0.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dynamic_factor: Option<Num>,
     /// Mesh-period fractions [from, to] where the tooth force is negative (teeth separate), located.
     pub tooth_separation: Vec<[Num; 2]>,
     pub spectrum: Vec<SpectrumLine>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mean_dynamic_efficiency: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mean_dynamic_efficiency_error: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub max_dynamic_efficiency: Option<Num>,
     /// Peak |friction force the model applies| (external: μ F0 shares; internal: μ F shares) and peak
     /// |friction torque| on pinion and wheel over the cycle, located.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub peak_applied_friction_force: Option<Located>,
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub peak_friction_torque: Vec<Located>,
     /// External formulation: peak |Σ μ_j w_j F| (μ × tooth force), which its equation does not apply.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub peak_mu_times_tooth_force: Option<Located>,
     /// The free (homogeneous) response from the scene's initial state, when asked for.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub free_response: Option<FreeResponseReport>,
     /// 6-DOF model: the largest force on one pair (N/n, located), the mean friction force Σ μ_i N_i
     /// and per gear [pinion, wheel] the bearing forces and displacements.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pair_force_max: Option<Located>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction_force_mean: Option<Q>,
     /// 6-DOF: the largest friction force on one pair, max_i |μ_i N_i|, located.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pair_friction_force_max: Option<Located>,
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub gears: Vec<GearDynamicsReport>,
 }
 

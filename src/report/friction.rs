@@ -116,7 +116,7 @@ pub struct MuRow {
     pub point: Option<String>,
     pub distance_from_t1: Q,
     pub mu: MuValue,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub regime: Option<Regime>,
 }
 
@@ -158,7 +158,7 @@ pub struct LawReport {
     pub mu_along_loa: Vec<MuRow>,
     pub mean_abs_mu: Num,
     pub mean_abs_mu_error: Num,
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub regime_switches_from_t1: Vec<Q>,
     pub validity: ValidityReport,
     pub efficiency: Vec<EfficiencyReport>,
@@ -172,7 +172,7 @@ pub struct FilmRow {
     pub distance_from_t1: Q,
     pub central_film: Q,
     pub minimum_film: Q,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lambda: Option<Num>,
 }
 
@@ -194,10 +194,10 @@ pub struct EfficiencyRecord {
     pub parameters: Parameters,
     /// Helical pairs: ISO/TR 14179-2's own mesh loss P_VZP = P_in μ̄ H_V (Ohlendorf's H_V, μ̄ the
     /// record's mean |μ|) beside `power_loss`, the contact-line integral.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ohlendorf: Option<OhlendorfLoss>,
     /// The loss budget at this point with this record's mesh loss, when the scene describes its gearbox.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub budget: Option<super::losses::BudgetRecord>,
 }
 

@@ -27,14 +27,14 @@ pub struct GearReport {
 pub struct PointsReport {
     pub A: Q,
     /// B = E − p_b and D = A + p_b, the limits of single contact: only for ε_α < 2.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub B: Option<Q>,
     pub P: Q,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub D: Option<Q>,
     pub E: Q,
     /// For ε_α ≥ 2: every point where the number of pairs changes (A + k p_b, E − k p_b), in order.
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub pair_changes: Vec<NamedPoint>,
 }
 
@@ -71,7 +71,7 @@ pub struct GeometryReport {
     /// ε_γ = ε_α + ε_β.
     pub total_contact_ratio: Num,
     /// Helical pairs: transverse values, contact lines and regions of the cycle.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub helical: Option<super::helical::HelicalReport>,
     /// Ohlendorf's gear loss factor H_V.
     pub ohlendorf_loss_factor: Num,

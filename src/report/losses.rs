@@ -13,27 +13,27 @@ use crate::model::{Formulation, Scene};
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct LubricantReport {
     pub name: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub base: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub temperature: Option<Q>,
     pub dynamic_viscosity: Q,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub kinematic_viscosity: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_viscosity: Option<Q>,
     /// X_L of ISO/TR 14179-2 by base oil (a law's `x_l` overrides it there).
     pub lubricant_factor: Num,
     /// ν40, ν100, ρ15 and the viscosity index when the oil was given by grade or measured values.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub nu_40: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub nu_100: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density_15: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub viscosity_index: Option<Num>,
     pub source: String,
 }
@@ -67,18 +67,18 @@ pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantRep
 /// The budget beside an efficiency record's mesh loss, in W; parts the scene does not describe are absent.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct BudgetRecord {
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gear_no_load: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bearings_no_load: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bearings_load: Option<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seals: Option<Q>,
     pub total_loss: Q,
     pub total_efficiency: Num,
     /// Every bearing place in the scene's order (pinion shaft, then wheel shaft).
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub bearings: Vec<BearingRecord>,
 }
 
@@ -93,14 +93,14 @@ pub struct BearingRecord {
     pub model: String,
     pub count: usize,
     /// `at` along the shaft from the gear mid-plane, when given.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub position: Option<Q>,
     /// Loads of one bearing (N).
     pub radial_load: Q,
     pub axial_load: Q,
     /// Losses of all `count` bearings (W).
     pub no_load: Q,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load: Option<Q>,
 }
 
@@ -175,9 +175,9 @@ pub struct MapRange {
     pub formulation: Formulation,
     /// [lowest, highest] over the grid.
     pub mesh_efficiency: [Num; 2],
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub total_efficiency: Option<[Num; 2]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub total_loss: Option<[Q; 2]>,
 }
 

@@ -11,14 +11,14 @@ use crate::dynamics::DynamicFormulation;
 pub struct NumericsRow {
     pub method: String,
     pub rtol: Num,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<Num>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub final_state_error: Option<Num>,
     pub steps: usize,
     pub rejected: usize,
     pub evaluations: usize,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub failure: Option<String>,
 }
 

@@ -24,7 +24,7 @@ pub struct OilSweepReport {
     /// value per run in each column.
     pub efficiency: Vec<OilSweepRow>,
     /// Whether the rows carry the loss budget's total (the scene describes its gearbox).
-    #[serde(skip_serializing_if = "std::ops::Not::not", default)]
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub loss_budget: bool,
     /// The unit the scene wrote the pinion speed in (for the tables).
     pub speed_unit: super::number::DisplayUnit,
@@ -38,7 +38,7 @@ pub struct OilRun {
     pub oil_temperature: Q,
     /// The folder of its full report, relative to this report.
     pub folder: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubricant: Option<LubricantReport>,
     pub warnings: usize,
     pub notes: usize,
@@ -54,9 +54,9 @@ pub struct OilSweepRow {
     pub pinion_speed: Q,
     pub mean_efficiency: Vec<Num>,
     pub power_loss: Vec<Q>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub total_loss: Option<Vec<Q>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub total_efficiency: Option<Vec<Num>>,
 }
 

@@ -22,12 +22,12 @@ pub struct OperatingPointReport {
     pub mesh_period: Q,
     pub pitch_line_velocity: Q,
     pub contact: Vec<ContactRow>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub film: Option<Vec<friction::FilmRow>>,
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub friction: Vec<friction::LawReport>,
     /// The plot of μ, η and local power loss at this point, when drawn.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<String>,
 }
 

@@ -22,24 +22,24 @@ pub struct Report {
     /// sweep, the plotted ones of a large one; records.csv has all); empty unless the scene asks for `efficiency`.
     pub efficiency: Vec<friction::EfficiencyRecord>,
     /// The record files: one row per operating point × law × formulation.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub records: Option<sweep::RecordsReport>,
     /// Extremes over every operating point of a sweep (more than one point).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sweep: Option<sweep::SweepReport>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<dynamics::DynamicsReport>,
     /// The lubricant at the oil temperature, when the scene has one.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubricant: Option<losses::LubricantReport>,
     /// Whether the efficiency records carry a loss budget (the scene describes its gearbox).
-    #[serde(skip_serializing_if = "std::ops::Not::not", default)]
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub loss_budget: bool,
     /// The readings the budget's models rest on, in words (which radius, which direction, which
     /// constants), for the parts the scene describes.
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub budget_readings: Vec<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub efficiency_map: Option<losses::MapReport>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
@@ -48,7 +48,7 @@ pub struct Report {
     /// The unit the scene wrote the pinion speed in, for tables and plot axes.
     pub speed_unit: number::DisplayUnit,
     /// The map plots' grid (torque and speed indices), when the sweep has a map.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub map_grid: Option<(Vec<usize>, Vec<usize>)>,
     /// The torque and speed indices the sweep plots draw a curve for.
     pub sweep_curves: (Vec<usize>, Vec<usize>),

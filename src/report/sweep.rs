@@ -52,7 +52,7 @@ pub struct SweepDynamicsReport {
 pub struct SweepReport {
     pub operating_points: usize,
     pub efficiency: Vec<SweepExtremesReport>,
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub dynamics: Vec<SweepDynamicsReport>,
 }
 
