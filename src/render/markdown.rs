@@ -125,7 +125,7 @@ pub fn render_markdown(r: &Report) -> String {
     }
 
     let _ = writeln!(out, "\n## Contact along the line of action\n");
-    for p in r.plots.iter().filter(|p| p.file == "contact_state.svg") {
+    for p in r.plots.iter().filter(|p| p.kind == crate::report::PlotKind::ContactState) {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
     }
     let _ = writeln!(

@@ -12,7 +12,7 @@ pub mod svg;
 pub mod table;
 
 use crate::report::numerics::Timings;
-use crate::report::Report;
+use crate::report::{PlotKind, Report};
 
 /// Files whose names start with this hold run times: machine-dependent, never snapshotted or
 /// compared with the committed reports.
@@ -88,23 +88,22 @@ pub fn render_report(report: &Report, timings: Option<&Timings>) -> Result<Rende
         ("report.json".to_string(), render_json(report)),
     ];
     for plot in &report.plots {
-        let svg = match plot.file.as_str() {
-            "contact_state.svg" => svg::contact_state(report)?,
-            "plane_of_action.svg" => svg::plane_of_action(report)?,
-            "sweep_speed.svg" => svg::sweep(report, true)?,
-            "sweep_torque.svg" => svg::sweep(report, false)?,
-            "sweep_mu.svg" => svg::sweep_mu(report)?,
-            "map_efficiency.svg" => svg::efficiency_map(report)?,
-            "loss_budget.svg" => svg::loss_budget(report)?,
-            "film.svg" => svg::film(report)?,
-            "efficiency_map.svg" => svg::efficiency_contours(report)?,
-            "composite_mu_vs_speed.svg" => svg::composite_mu_vs_speed(report)?,
-            "stability_map.svg" => svg::stability_map(report)?,
-            "timing_work_precision.svg" => match timings {
+        let svg = match plot.kind {
+            PlotKind::ContactState => svg::contact_state(report)?,
+            PlotKind::PlaneOfAction => svg::plane_of_action(report)?,
+            PlotKind::SweepSpeed => svg::sweep(report, true)?,
+            PlotKind::SweepTorque => svg::sweep(report, false)?,
+            PlotKind::SweepMu => svg::sweep_mu(report)?,
+            PlotKind::MapEfficiency => svg::efficiency_map(report)?,
+            PlotKind::LossBudget => svg::loss_budget(report)?,
+            PlotKind::Film => svg::film(report)?,
+            PlotKind::EfficiencyMap => svg::efficiency_contours(report)?,
+            PlotKind::CompositeMuVsSpeed => svg::composite_mu_vs_speed(report)?,
+            PlotKind::StabilityMap => svg::stability_map(report)?,
+            PlotKind::WorkPrecision => match timings {
                 Some(t) => svg::work_precision(report, t)?,
                 None => continue,
             },
-            other => return Err(format!("no renderer for plot {other}")),
         };
         files.push((plot.file.clone(), svg));
     }

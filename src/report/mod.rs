@@ -24,7 +24,7 @@ pub use finding::{Finding, Severity};
 pub use geometry::{GearReport, GeometryReport, NamedPoint, PointsReport};
 pub use points::{ContactRow, Curves, OperatingPointReport, PointCurves};
 pub use scene::{InputRow, SiValue};
-pub use scene_report::{PlotRef, Report};
+pub use scene_report::{PlotKind, PlotRef, Report};
 
 use crate::evaluate::{Evaluation, Plan, Tally};
 use crate::model::Scene;
@@ -77,10 +77,10 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         budget_readings: scene.gearbox.as_ref().map(losses::budget_readings).unwrap_or_default(),
         efficiency_map: eval.efficiency_map.as_ref().map(|m| losses::map_report(scene, m)),
         findings,
-        plots: vec![PlotRef {
-            file: "contact_state.svg".into(),
-            title: "Sliding velocity, slide-to-roll ratio and Hertzian pressure along the line of action".into(),
-        }],
+        plots: vec![PlotRef::new(
+            PlotKind::ContactState,
+            "Sliding velocity, slide-to-roll ratio and Hertzian pressure along the line of action",
+        )],
         curves: points::curves(scene, eval),
         speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
         sweep_curves: (plan.curve_indices().0.to_vec(), plan.curve_indices().1.to_vec()),
@@ -91,24 +91,24 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         }),
     };
     if report.geometry.helical.is_some() {
-        report.plots.push(PlotRef {
-            file: "plane_of_action.svg".into(),
-            title: "Plane of action: contact lines at four instants over μ(u), and the contact length L(t)".into(),
-        });
+        report.plots.push(PlotRef::new(
+            PlotKind::PlaneOfAction,
+            "Plane of action: contact lines at four instants over μ(u), and the contact length L(t)",
+        ));
     }
     if let Some(d) = &report.dynamics {
         report.findings.extend(dynamics_findings::dynamics_findings(d));
         if d.stability_map.is_some() {
-            report.plots.push(PlotRef {
-                file: "stability_map.svg".into(),
-                title: "Floquet spectral radius and dynamic factor against pinion speed".into(),
-            });
+            report.plots.push(PlotRef::new(
+                PlotKind::StabilityMap,
+                "Floquet spectral radius and dynamic factor against pinion speed",
+            ));
         }
         if d.numerics.is_some() {
-            report.plots.push(PlotRef {
-                file: "timing_work_precision.svg".into(),
-                title: "Work-precision: error against run time (machine-dependent)".into(),
-            });
+            report.plots.push(PlotRef::new(
+                PlotKind::WorkPrecision,
+                "Work-precision: error against run time (machine-dependent)",
+            ));
         }
     }
     for pc in &report.curves.points {
@@ -119,55 +119,50 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
     let sweeps = &scene.operating;
     if !report.efficiency.is_empty() {
         if sweeps.pinion_speed.values.len() > 1 {
-            report.plots.push(PlotRef {
-                file: "sweep_speed.svg".into(),
-                title: "Mean efficiency and power loss against pinion speed".into(),
-            });
+            report
+                .plots
+                .push(PlotRef::new(PlotKind::SweepSpeed, "Mean efficiency and power loss against pinion speed"));
         }
         if !friction::mu_swept_laws(&report.efficiency).is_empty() {
-            report.plots.push(PlotRef {
-                file: "sweep_mu.svg".into(),
-                title: "Mean efficiency and power loss against the coefficient of friction".into(),
-            });
+            report.plots.push(PlotRef::new(
+                PlotKind::SweepMu,
+                "Mean efficiency and power loss against the coefficient of friction",
+            ));
         }
         if sweeps.pinion_torque.values.len() > 1 {
-            report.plots.push(PlotRef {
-                file: "sweep_torque.svg".into(),
-                title: "Mean efficiency and power loss against pinion torque".into(),
-            });
+            report
+                .plots
+                .push(PlotRef::new(PlotKind::SweepTorque, "Mean efficiency and power loss against pinion torque"));
         }
     }
     if !report.efficiency.is_empty() && sweep::has_map(plan) {
-        report.plots.push(PlotRef {
-            file: "map_efficiency.svg".into(),
-            title: "Mean efficiency and power loss over the torque × speed map".into(),
-        });
+        report
+            .plots
+            .push(PlotRef::new(PlotKind::MapEfficiency, "Mean efficiency and power loss over the torque × speed map"));
     }
     if sweeps.pinion_speed.values.len() > 1
         && scene.friction.iter().any(|l| l.law == crate::friction::catalog::LawId::Composite)
         && eval.wants_friction
     {
-        report.plots.push(PlotRef {
-            file: "composite_mu_vs_speed.svg".into(),
-            title: "Composite law: mean |μ| against pinion speed (He–Cho–Singh Fig. 2b)".into(),
-        });
+        report.plots.push(PlotRef::new(
+            PlotKind::CompositeMuVsSpeed,
+            "Composite law: mean |μ| against pinion speed (He–Cho–Singh Fig. 2b)",
+        ));
     }
     if report.operating_points.iter().any(|o| o.film.is_some()) {
-        report
-            .plots
-            .push(PlotRef { file: "film.svg".into(), title: "Film thickness and Λ along the line of action".into() });
+        report.plots.push(PlotRef::new(PlotKind::Film, "Film thickness and Λ along the line of action"));
     }
     if report.loss_budget && !report.efficiency.is_empty() {
-        report.plots.push(PlotRef {
-            file: "loss_budget.svg".into(),
-            title: "Loss budget at each operating point: mesh, gears without load, bearings, seals".into(),
-        });
+        report.plots.push(PlotRef::new(
+            PlotKind::LossBudget,
+            "Loss budget at each operating point: mesh, gears without load, bearings, seals",
+        ));
     }
     if report.efficiency_map.is_some() {
-        report.plots.push(PlotRef {
-            file: "efficiency_map.svg".into(),
-            title: "Efficiency map: total and mesh efficiency and total loss over torque × speed".into(),
-        });
+        report.plots.push(PlotRef::new(
+            PlotKind::EfficiencyMap,
+            "Efficiency map: total and mesh efficiency and total loss over torque × speed",
+        ));
     }
     for path in non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });

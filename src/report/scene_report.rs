@@ -60,6 +60,52 @@ pub struct Report {
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PlotRef {
+    pub kind: PlotKind,
     pub file: String,
     pub title: String,
+}
+
+impl PlotRef {
+    /// The plot of `kind`, in its file.
+    pub fn new(kind: PlotKind, title: impl Into<String>) -> PlotRef {
+        PlotRef { kind, file: kind.file().into(), title: title.into() }
+    }
+}
+
+/// Which plot a [`PlotRef`] is: the renderer draws it by its kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlotKind {
+    ContactState,
+    PlaneOfAction,
+    StabilityMap,
+    WorkPrecision,
+    SweepSpeed,
+    SweepMu,
+    SweepTorque,
+    MapEfficiency,
+    CompositeMuVsSpeed,
+    Film,
+    LossBudget,
+    EfficiencyMap,
+}
+
+impl PlotKind {
+    /// The plot's file in the report folder.
+    pub fn file(self) -> &'static str {
+        match self {
+            PlotKind::ContactState => "contact_state.svg",
+            PlotKind::PlaneOfAction => "plane_of_action.svg",
+            PlotKind::StabilityMap => "stability_map.svg",
+            PlotKind::WorkPrecision => "timing_work_precision.svg",
+            PlotKind::SweepSpeed => "sweep_speed.svg",
+            PlotKind::SweepMu => "sweep_mu.svg",
+            PlotKind::SweepTorque => "sweep_torque.svg",
+            PlotKind::MapEfficiency => "map_efficiency.svg",
+            PlotKind::CompositeMuVsSpeed => "composite_mu_vs_speed.svg",
+            PlotKind::Film => "film.svg",
+            PlotKind::LossBudget => "loss_budget.svg",
+            PlotKind::EfficiencyMap => "efficiency_map.svg",
+        }
+    }
 }
