@@ -195,7 +195,7 @@ pub struct MapReport {
     /// The formulation the map plot shows (the scene's first).
     pub formulation: Option<Formulation>,
     /// The map plot's fields: per law, total η, mesh η and the total (or mesh) loss over the grid,
-    /// [torque][speed] (NaN where a cell has no value).
+    /// indexed `values[torque][speed]` (NaN where a cell has no value).
     pub fields: Vec<MapField>,
 }
 

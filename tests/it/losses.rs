@@ -13,6 +13,21 @@ fn spec(name: &str) -> gearloss::Scene {
     crate::scene(&crate::root().join("specs").join(name))
 }
 
+/// `count` bearings of `kind` with d_m = 50 mm at position `at` (m), Palmgren's table values.
+fn bearing_at(kind: BearingType, at: f64, count: usize) -> Bearing {
+    Bearing {
+        kind,
+        mean_diameter: 0.05,
+        count,
+        static_load_rating: None,
+        f0: None,
+        f1: None,
+        y: None,
+        position: Some(at),
+        skf: None,
+    }
+}
+
 fn rpm(n: f64) -> f64 {
     n * std::f64::consts::PI / 30.0
 }
@@ -171,17 +186,7 @@ fn injection_and_skf_budget_by_hand() {
 fn lever_rule_and_axial_moment() {
     let scene = spec("metric_helical.gear");
     let g = scene.gears.geometry().unwrap();
-    let place = |at: f64| Bearing {
-        kind: BearingType::CylindricalRoller,
-        mean_diameter: 0.05,
-        count: 1,
-        static_load_rating: None,
-        f0: None,
-        f1: None,
-        y: None,
-        position: Some(at),
-        skf: None,
-    };
+    let place = |at: f64| bearing_at(BearingType::CylindricalRoller, at, 1);
     let gb =
         Gearbox { lubrication: None, bearings: [vec![place(-0.04), place(0.06)], vec![]], seals: [vec![], vec![]] };
     let t = 200.0;
@@ -209,17 +214,7 @@ fn both_shafts_balance_forces_and_moments() {
     use gearloss::losses::budget::{shaft_reactions, GearForce};
     let scene = spec("metric_helical.gear");
     let g = scene.gears.geometry().unwrap();
-    let place = |at: f64, count: usize| Bearing {
-        kind: BearingType::TaperedRoller,
-        mean_diameter: 0.05,
-        count,
-        static_load_rating: None,
-        f0: None,
-        f1: None,
-        y: None,
-        position: Some(at),
-        skf: None,
-    };
+    let place = |at: f64, count: usize| bearing_at(BearingType::TaperedRoller, at, count);
     let gb = Gearbox {
         lubrication: None,
         bearings: [vec![place(-0.04, 1), place(0.06, 1)], vec![place(-0.05, 2), place(0.07, 1)]],
