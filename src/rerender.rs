@@ -58,7 +58,10 @@ pub fn render_into(dir: &Path) -> Result<Vec<String>, RunError> {
 }
 
 fn read(dir: &Path, file: &str) -> Result<String, RunError> {
-    std::fs::read_to_string(dir.join(file)).map_err(|source| RunError::Io { what: "report.json", source })
+    let path = dir.join(file);
+    std::fs::read_to_string(&path).map_err(|e| {
+        RunError::Render(format!("cannot read {}: {e} (give the folder `gearloss run` wrote)", path.display()))
+    })
 }
 
 fn bad(dir: &Path, file: &str, e: serde_json::Error) -> RunError {

@@ -35,6 +35,29 @@ fn run_writes_a_complete_report_folder() {
     std::fs::remove_dir_all(&out).unwrap();
 }
 
+/// `render` on a report folder draws its files again from report.json (exit 0, the same bytes);
+/// on a folder without a report it exits 3 and says which file it could not read.
+#[test]
+fn render_redraws_a_report_folder() {
+    let out = std::env::temp_dir().join(format!("gearloss-cli-render-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let run = gearloss().args(["run", "specs/fzg_type_c.gear", "--out"]).arg(&out).current_dir(crate::root()).output();
+    assert!(run.unwrap().status.success());
+    let dir = out.join("fzg_type_c");
+    let md = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    std::fs::remove_file(dir.join("report.md")).unwrap();
+    std::fs::remove_file(dir.join("contact_state.svg")).unwrap();
+    let o = gearloss().arg("render").arg(&dir).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read_to_string(dir.join("report.md")).unwrap(), md);
+    assert!(dir.join("contact_state.svg").is_file());
+    let o = gearloss().arg("render").arg(out.join("nothing")).output().unwrap();
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("cannot read") && err.contains("report.json"), "{err}");
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
 #[test]
 fn bad_scene_exits_1_with_file_line_column() {
     let o =
