@@ -193,8 +193,9 @@ pub struct EfficiencyRecord {
     pub power_loss: Q,
     pub parameters: Parameters,
     /// Helical pairs: ISO/TR 14179-2's own mesh loss P_VZP = P_in μ̄ H_V (Ohlendorf's H_V, μ̄ the
-    /// record's mean |μ|) beside `power_loss`, the contact-line integral.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// record's mean |μ|) beside `power_loss`, the contact-line integral (`ohlendorf_power_loss`
+    /// and `line_integral_ratio` in report.json).
+    #[serde(default, flatten)]
     pub ohlendorf: Option<OhlendorfLoss>,
     /// The loss budget at this point with this record's mesh loss, when the scene describes its gearbox.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -205,6 +206,7 @@ pub struct EfficiencyRecord {
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct OhlendorfLoss {
     /// P_in μ̄ H_V (W).
+    #[serde(rename = "ohlendorf_power_loss")]
     pub power_loss: Q,
     /// The line integral's loss over it.
     pub line_integral_ratio: Num,
