@@ -88,20 +88,19 @@ pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
 impl EfficiencyMap {
     /// efficiency_map.csv: one row per grid point, law and formulation (SI: N·m, rad/s, W).
     pub fn csv(&self, labels: &[String]) -> String {
-        let m = self;
         let mut out = String::from(
             "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,gear_no_load_W,bearings_no_load_W,bearings_load_W,seals_W,total_loss_W,total_efficiency\n",
         );
         let num =
             |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::numerics::rounding::round_sig(x)));
-        for c in &m.cells {
+        for c in &self.cells {
             let b = c.budget.as_ref();
             let _ = writeln!(
                 out,
                 "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{}",
-                num(Some(m.torques[c.torque_index])),
-                num(Some(m.speeds[c.speed_index])),
-                m.speeds_written[c.speed_index],
+                num(Some(self.torques[c.torque_index])),
+                num(Some(self.speeds[c.speed_index])),
+                self.speeds_written[c.speed_index],
                 labels[c.law_index].replace('"', "\"\""),
                 c.formulation.name(),
                 num(Some(c.mesh_efficiency)),
