@@ -200,9 +200,9 @@ pub fn csv_line(row: &SummaryRow, budget_columns: usize) -> String {
     cells.extend(n[2..].iter().map(|(_, v)| number(*v)));
     match &row.budget {
         Some(b) => {
-            let budget = crate::losses::columns::cells(b);
-            debug_assert_eq!(budget.len(), budget_columns, "the budget's cells match the scene's columns");
-            cells.extend(budget.iter().map(|(_, v)| number(*v)));
+            let before = cells.len();
+            cells.extend(crate::losses::columns::values(b).map(number));
+            debug_assert_eq!(cells.len() - before, budget_columns, "the budget's cells match the scene's columns");
         }
         None => cells.extend(std::iter::repeat_n(String::new(), budget_columns)),
     }

@@ -22,44 +22,41 @@ use super::gearbox::Gearbox;
 /// The four columns of bearing place `i` (1-based), after its prefix `bearing_{i}_`.
 const BEARING_FIELDS: [&str; 4] = ["radial_load_N", "axial_load_N", "no_load_W", "load_W"];
 
-/// The budget columns of a scene with this gearbox, in the order [`cells`] gives their values.
-pub fn names(g: &Gearbox) -> Vec<String> {
-    let has_bearings = g.bearings.iter().any(|b| !b.is_empty());
-    let parts = [
-        ("gear_no_load_W", g.lubrication.is_some()),
-        ("bearings_no_load_W", has_bearings),
-        ("bearings_load_W", has_bearings),
-        ("seals_W", g.seals.iter().any(|s| !s.is_empty())),
-        ("total_loss_W", true),
-        ("total_efficiency", true),
-    ];
-    let mut out: Vec<String> = parts.iter().filter(|(_, on)| *on).map(|(n, _)| n.to_string()).collect();
-    let places = g.bearings.iter().map(Vec::len).sum::<usize>();
+/// The budget's parts, in column order.
+const PARTS: [&str; 4] = ["gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"];
+
+/// The column names: the parts `present` (in [`PARTS`] order), the total, four per bearing place.
+fn column_names(present: [bool; 4], places: usize) -> Vec<String> {
+    let parts = PARTS.iter().zip(present).filter(|(_, on)| *on).map(|(n, _)| n.to_string());
+    let mut out: Vec<String> = parts.chain(["total_loss_W".into(), "total_efficiency".into()]).collect();
     for i in 1..=places {
         out.extend(BEARING_FIELDS.iter().map(|f| format!("bearing_{i}_{f}")));
     }
     out
 }
 
-/// The budget's values by column name, in the order of [`names`] for the gearbox that gave them.
+/// The budget columns of a scene with this gearbox, in the order [`values`] gives their values.
+pub fn names(g: &Gearbox) -> Vec<String> {
+    let bearings = g.bearings.iter().any(|b| !b.is_empty());
+    let present = [g.lubrication.is_some(), bearings, bearings, g.seals.iter().any(|s| !s.is_empty())];
+    column_names(present, g.bearings.iter().map(Vec::len).sum())
+}
+
+fn part_values(p: &BudgetParts) -> [Option<f64>; 4] {
+    [p.gear_no_load, p.bearings_no_load, p.bearings_load, p.seals]
+}
+
+/// The budget's values in the order of [`names`] for the gearbox that gave them (no names built:
+/// the record files write these for every row of a sweep).
+pub fn values(p: &BudgetParts) -> impl Iterator<Item = Option<f64>> + '_ {
+    let parts = part_values(p).into_iter().flatten().map(Some);
+    let bearings = p.bearings.iter().flat_map(|b| [Some(b.radial_load), Some(b.axial_load), Some(b.no_load), b.load]);
+    parts.chain([Some(p.total_loss), Some(p.total_efficiency)]).chain(bearings)
+}
+
+/// The budget's values with their column names.
 pub fn cells(p: &BudgetParts) -> Vec<(String, Option<f64>)> {
-    let mut out: Vec<(String, Option<f64>)> = [
-        ("gear_no_load_W", p.gear_no_load),
-        ("bearings_no_load_W", p.bearings_no_load),
-        ("bearings_load_W", p.bearings_load),
-        ("seals_W", p.seals),
-    ]
-    .into_iter()
-    .filter(|(_, v)| v.is_some())
-    .map(|(n, v)| (n.to_string(), v))
-    .collect();
-    out.push(("total_loss_W".into(), Some(p.total_loss)));
-    out.push(("total_efficiency".into(), Some(p.total_efficiency)));
-    for (i, b) in p.bearings.iter().enumerate() {
-        let values = [Some(b.radial_load), Some(b.axial_load), Some(b.no_load), b.load];
-        out.extend(BEARING_FIELDS.iter().zip(values).map(|(f, v)| (format!("bearing_{}_{f}", i + 1), v)));
-    }
-    out
+    column_names(part_values(p).map(|v| v.is_some()), p.bearings.len()).into_iter().zip(values(p)).collect()
 }
 
 impl Serialize for BudgetParts {
