@@ -59,6 +59,7 @@ pub mod rerender;
 pub mod run_error;
 pub mod scene;
 pub mod shard;
+pub mod thermal;
 pub mod tribology;
 
 use std::path::{Path, PathBuf};
