@@ -13,11 +13,12 @@
 //!
 //! ```
 //! use gearloss::thermal::{transient, Housing};
-//! // 300 W for 10 hours into 18 kJ/K: the sump ends at the balance of 300 W.
+//! // 300 W for 100 hours into 18 kJ/K (about 130 time constants C/(dP_Q/dθ) ≈ 2800 s): the sump
+//! // ends at the balance of 300 W.
 //! let h = Housing { heat_capacity: Some(18e3), ..Housing::still_air(0.42, 298.15) };
-//! let run = transient(|_, _| 300.0, &h, 18e3, &[36_000.0]).unwrap();
+//! let run = transient(|_, _| 300.0, &h, 18e3, &[360_000.0]).unwrap();
 //! let balance = gearloss::thermal::balance(|_| 300.0, &h).temperature.unwrap();
-//! assert!((run.steps[0].temperature - balance).abs() < 1e-6);
+//! assert!((run.steps[0].temperature - balance).abs() < 1e-8);
 //! ```
 
 use differential_equations::control::ControlFlag;
