@@ -5,7 +5,7 @@
 
 use uom::si::f64 as si;
 use uom::si::{Quantity, ISQ, SI};
-use uom::typenum::{N1, N2, P1, P2, Z0};
+use uom::typenum::{N1, N2, N3, P1, P2, Z0};
 
 use crate::diagnostics::Span;
 use crate::geometry::stiffness::{StiffnessId, StiffnessModel};
@@ -14,14 +14,17 @@ use crate::geometry::PairGeometry;
 pub use crate::efficiency::Formulation;
 pub use crate::friction::catalog::{FrictionLawSpec, LawId};
 pub use si::{
-    Angle, AngularVelocity, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Force, Length, Mass,
-    MassDensity, MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Torque, Velocity, VolumeRate,
+    Angle, AngularVelocity, Area, DiffusionCoefficient as KinematicViscosity, DynamicViscosity, Force, HeatCapacity,
+    Length, Mass, MassDensity, MomentOfInertia, Pressure, ReciprocalLength, ThermodynamicTemperature, Time, Torque,
+    Velocity, VolumeRate,
 };
 
 /// 1/Pa, the unit of the pressure–viscosity coefficient α (uom has no named quantity for it).
 pub type ReciprocalPressure = Quantity<ISQ<P1, N1, P2, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
 /// N/m, the unit of mesh stiffness.
 pub type Stiffness = Quantity<ISQ<Z0, P1, N2, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
+/// W/K, the unit of a thermal conductance (a foundation, an oil cooler).
+pub type ThermalConductance = Quantity<ISQ<P2, P1, N3, Z0, N1, Z0, Z0>, SI<f64>, f64>;
 
 /// A value as the user gave it: the checked value, the text written and where.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,6 +45,9 @@ pub struct Scene {
     pub dynamics: Option<DynamicsSpec>,
     /// Lubrication method, bearings and seals, for the loss budget beside the mesh.
     pub gearbox: Option<crate::losses::Gearbox>,
+    /// The housing as a thermal node (`gearbox { housing { ... } }`).
+    pub housing: Option<crate::thermal::Housing>,
+    pub duty_cycle: Option<crate::thermal::DutyCycle>,
     pub analyses: Analyses,
 }
 
@@ -50,11 +56,18 @@ impl Scene {
     /// that temperature (α too when it comes from the base oil), no sweep left. The scene itself
     /// when it has no sweep.
     pub fn at_oil_temperature(&self, i: usize) -> Scene {
-        let mut scene = self.clone();
-        let Some(sweep) = scene.operating.oil_temperatures.take() else {
-            return scene;
+        let Some(sweep) = &self.operating.oil_temperatures else {
+            return self.clone();
         };
         let theta = Given { value: sweep.values[i], written: sweep.label(i), span: sweep.span };
+        let mut scene = self.at_temperature(theta);
+        scene.operating.oil_temperatures = None;
+        scene
+    }
+
+    /// The scene with its lubricant moved to `theta` (α too when it comes from the base oil).
+    pub fn at_temperature(&self, theta: Given<ThermodynamicTemperature>) -> Scene {
+        let mut scene = self.clone();
         if let Some(l) = scene.lubricant.take() {
             let alpha = if l.alpha_from_oil { None } else { l.pressure_viscosity };
             let span = l.dynamic_viscosity.span;
@@ -341,6 +354,9 @@ pub struct Operating {
     pub oil_temperatures: Option<Sweep<ThermodynamicTemperature>>,
     /// Operating points the scene asks to see in full (0-based; written 1-based as `detail_points`).
     pub detail_points: Vec<usize>,
+    /// `oil_temperature = equilibrium`: where it was written (the efficiency records are then at each
+    /// point's thermal balance).
+    pub equilibrium: Option<Span>,
 }
 
 /// Most operating points a scene may ask for (the product of its sweeps).
@@ -371,4 +387,7 @@ pub struct Analyses {
     pub dynamics_span: Option<Span>,
     /// Where `efficiency` or `friction_along_loa` was asked for (they need friction laws).
     pub friction_span: Option<Span>,
+    /// `thermal_balance` and `duty_cycle`, with where they were asked for.
+    pub thermal_balance: Option<Span>,
+    pub duty_cycle: Option<Span>,
 }

@@ -45,6 +45,9 @@ impl Dimension {
     pub const FREQUENCY: Dimension = dim(0, 0, -1, 0, 0);
     pub const VOLUME: Dimension = dim(3, 0, 0, 0, 0);
     pub const VOLUME_RATE: Dimension = dim(3, 0, -1, 0, 0);
+    pub const AREA: Dimension = dim(2, 0, 0, 0, 0);
+    pub const HEAT_CAPACITY: Dimension = dim(2, 1, -2, -1, 0);
+    pub const THERMAL_CONDUCTANCE: Dimension = dim(2, 1, -3, -1, 0);
 
     /// This dimension to the power `e`; None when an exponent would leave ±[`MAX_EXPONENT`].
     pub fn checked_pow(self, e: i32) -> Option<Dimension> {
@@ -125,6 +128,9 @@ const NAMED: &[(Dimension, &str)] = &[
     (Dimension::POWER, "power"),
     (Dimension::VELOCITY, "velocity"),
     (Dimension::FREQUENCY, "frequency"),
+    (Dimension::AREA, "area"),
+    (Dimension::HEAT_CAPACITY, "heat capacity"),
+    (Dimension::THERMAL_CONDUCTANCE, "thermal conductance"),
 ];
 
 const SI_NAMES: &[(Dimension, &str)] = &[
@@ -146,4 +152,7 @@ const SI_NAMES: &[(Dimension, &str)] = &[
     (Dimension::VELOCITY, "m/s"),
     (Dimension::FREQUENCY, "Hz"),
     (Dimension::TEMPERATURE, "K"),
+    (Dimension::AREA, "m^2"),
+    (Dimension::HEAT_CAPACITY, "J/K"),
+    (Dimension::THERMAL_CONDUCTANCE, "W/K"),
 ];

@@ -21,6 +21,8 @@ pub struct Evaluation {
     pub dynamics: Option<DynamicsEvaluation>,
     /// The efficiency map, when the scene asks for one.
     pub efficiency_map: Option<EfficiencyMap>,
+    /// The heat-balance curve and the duty cycle, when the scene asks for them.
+    pub thermal: Option<super::thermal::ThermalDetails>,
 }
 
 impl std::ops::Deref for Evaluation {

@@ -49,6 +49,7 @@ pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
         oil_temperature: scene.operating.oil_temperature.clone(),
         oil_temperatures: None,
         detail_points: Vec::new(),
+        equilibrium: None,
     };
     let n = grid.count();
     let cells: Vec<Vec<MapCell>> = (0..n)

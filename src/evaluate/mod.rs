@@ -16,6 +16,7 @@ pub mod records;
 pub mod setup;
 pub mod stream;
 pub mod tally;
+pub mod thermal;
 
 use rayon::prelude::*;
 
@@ -88,6 +89,7 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
         contact_curves: ContactCurves::default(),
         dynamics: None,
         efficiency_map: None,
+        thermal: None,
     }
 }
 
@@ -125,4 +127,5 @@ pub fn evaluate_details(
     eval.contact_curves = contact_curves::contact_curves(scene, eval);
     eval.dynamics = dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), known);
     eval.efficiency_map = map::evaluate_map(scene, eval);
+    eval.thermal = thermal::thermal_details(scene, eval);
 }

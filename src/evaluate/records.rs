@@ -81,6 +81,9 @@ pub struct SummaryRow {
     /// The loss budget of an efficiency row, when the scene describes its gearbox (records.jsonl only).
     #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
     pub budget: Option<crate::losses::BudgetParts>,
+    /// The thermal balance of an efficiency row, when the scene asks for it.
+    #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
+    pub thermal: Option<super::thermal::ThermalRow>,
 }
 
 impl SummaryRow {
@@ -148,9 +151,14 @@ pub fn csv_header(budget: &[String]) -> String {
     s
 }
 
-/// The budget columns of a scene (none without a gearbox).
+/// The columns after the fixed ones: the scene's budget (none without a gearbox), then the thermal
+/// balance's when the scene asks for it.
 pub fn budget_columns(scene: &crate::model::Scene) -> Vec<String> {
-    scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default()
+    let mut names = scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default();
+    if scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some() {
+        names.extend(super::thermal::ThermalRow::COLUMNS.iter().map(|c| c.to_string()));
+    }
+    names
 }
 
 /// A number as the record files write it: the shortest text that reads back to the same f64
@@ -198,14 +206,18 @@ pub fn csv_line(row: &SummaryRow, budget_columns: usize) -> String {
         text(&row.formulation),
     ];
     cells.extend(n[2..].iter().map(|(_, v)| number(*v)));
-    match &row.budget {
-        Some(b) => {
-            let before = cells.len();
-            cells.extend(crate::losses::columns::values(b).map(number));
-            debug_assert_eq!(cells.len() - before, budget_columns, "the budget's cells match the scene's columns");
-        }
-        None => cells.extend(std::iter::repeat_n(String::new(), budget_columns)),
+    let before = cells.len();
+    if let Some(b) = &row.budget {
+        cells.extend(crate::losses::columns::values(b).map(number));
     }
+    if let Some(t) = &row.thermal {
+        cells.push(number(t.oil_temperature));
+        cells.push(t.thermal_status.name().to_string());
+        cells.extend(t.numbers().map(number));
+    }
+    // Rows without a budget (friction and dynamics rows) leave its cells empty.
+    debug_assert!(cells.len() - before <= budget_columns, "the budget's cells match the scene's columns");
+    cells.resize(before + budget_columns, String::new());
     let mut line = cells.join(",");
     line.push('\n');
     line

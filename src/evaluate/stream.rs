@@ -12,6 +12,7 @@ use super::plan::Plan;
 use super::records::{RecordSink, RowKind, SummaryRow};
 use super::setup::{contact_table, Setup};
 use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
+use super::thermal::{thermal_point, Losses, ThermalRow};
 use crate::efficiency::EfficiencyResult;
 use crate::model::Scene;
 
@@ -101,8 +102,12 @@ fn point_summary(
         dynamic_factor: None,
         parameters: Vec::new(),
         budget: None,
+        thermal: None,
     };
     let budget = eval.loss_budget(scene, &state);
+    let thermal = scene.housing.as_ref().zip(Losses::new(scene, eval)).filter(|_| {
+        scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some()
+    });
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
@@ -138,6 +143,25 @@ fn point_summary(
             for e in &law.efficiency {
                 let mut row = efficiency_row(&law_row, e);
                 row.budget = budget.as_ref().map(|b| b.with_mesh(e.power_loss, input));
+                let mut at_balance = None;
+                if let Some((housing, losses)) = &thermal {
+                    let point = thermal_point(losses, housing, spec, e.formulation, state);
+                    row.thermal = Some(ThermalRow::of(&point));
+                    if let (Some(t), Some(_)) = (point.balance.temperature, scene.operating.equilibrium) {
+                        // The record at the balance: the law read in the oil at θ*.
+                        let setup = losses.setup_at(t, &[e.formulation]);
+                        let law = evaluate_law(&setup, spec, state, &table, false, false);
+                        if let Some(e) = law.efficiency.first() {
+                            let thermal = row.thermal.take();
+                            let law_row = SummaryRow { mean_abs_mu: Some(law.mean_abs_mu.value), ..law_row.clone() };
+                            row = efficiency_row(&law_row, e);
+                            row.budget = point.losses.budget.as_ref().map(|b| b.with_mesh(e.power_loss, input));
+                            row.thermal = thermal;
+                            at_balance = Some(e.clone());
+                        }
+                    }
+                }
+                let e = at_balance.as_ref().unwrap_or(e);
                 rows.push(row);
                 let f = e.formulation.name().to_string();
                 let bad = |x: f64| !(0.0..=1.0).contains(&x);

@@ -7,6 +7,7 @@ pub mod markdown_friction;
 pub mod markdown_helical;
 pub mod markdown_losses;
 pub mod markdown_sweep;
+pub mod markdown_thermal;
 pub mod oil_sweep;
 pub mod svg;
 pub mod table;
@@ -100,6 +101,9 @@ pub fn render_report(report: &Report, timings: Option<&Timings>) -> Result<Rende
             PlotKind::EfficiencyMap => svg::efficiency_contours(report)?,
             PlotKind::CompositeMuVsSpeed => svg::composite_mu_vs_speed(report)?,
             PlotKind::StabilityMap => svg::stability_map(report)?,
+            PlotKind::HeatBalance => svg::heat_balance(report)?,
+            PlotKind::DutyCycleTemperature => svg::duty_cycle_temperature(report)?,
+            PlotKind::DutyCycleEnergy => svg::duty_cycle_energy(report)?,
             PlotKind::WorkPrecision => match timings {
                 Some(t) => svg::work_precision(report, t)?,
                 None => continue,

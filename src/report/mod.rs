@@ -19,6 +19,7 @@ pub mod points;
 pub mod scene;
 pub mod scene_report;
 pub mod sweep;
+pub mod thermal;
 
 pub use finding::{Finding, Severity};
 pub use geometry::{GearReport, GeometryReport, NamedPoint, PointsReport};
@@ -89,7 +90,33 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             let (t, s) = plan.map_grid();
             (t.to_vec(), s.to_vec())
         }),
+        housing: scene.housing.as_ref().map(thermal::housing_report),
+        thermal: thermal::thermal_records(scene, tally),
+        heat_balance: None,
+        duty_cycle: None,
     };
+    if let (Some(t), Some(h)) = (&eval.thermal, &scene.housing) {
+        report.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
+        report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h));
+        report.findings.extend(thermal::thermal_findings(
+            scene,
+            &report.thermal,
+            report.duty_cycle.as_ref(),
+            t.duty_cycle.as_ref(),
+        ));
+        if report.heat_balance.is_some() {
+            report.plots.push(PlotRef::new(
+                PlotKind::HeatBalance,
+                "Heat balance: the losses P_V and what the housing gives off P_Q against the oil temperature",
+            ));
+        }
+        if report.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
+            report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, "Sump temperature over the duty cycle"));
+        }
+        if report.duty_cycle.is_some() {
+            report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, "Energy lost in each step of the duty cycle"));
+        }
+    }
     if report.geometry.helical.is_some() {
         report.plots.push(PlotRef::new(
             PlotKind::PlaneOfAction,

@@ -56,6 +56,16 @@ pub struct Report {
     /// label, mean |μ|), in sweep order, one per point and law.
     #[serde(with = "super::floats")]
     pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
+    /// The housing as a thermal node, when the scene gives one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub housing: Option<super::thermal::HousingReport>,
+    /// One thermal balance per kept efficiency record, when the scene asks for it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub thermal: Vec<super::thermal::ThermalRecord>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heat_balance: Option<super::thermal::HeatBalanceReport>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub duty_cycle: Option<super::thermal::DutyCycleReport>,
 }
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -88,6 +98,9 @@ pub enum PlotKind {
     Film,
     LossBudget,
     EfficiencyMap,
+    HeatBalance,
+    DutyCycleTemperature,
+    DutyCycleEnergy,
 }
 
 impl PlotKind {
@@ -106,6 +119,9 @@ impl PlotKind {
             PlotKind::Film => "film.svg",
             PlotKind::LossBudget => "loss_budget.svg",
             PlotKind::EfficiencyMap => "efficiency_map.svg",
+            PlotKind::HeatBalance => "heat_balance.svg",
+            PlotKind::DutyCycleTemperature => "duty_cycle_temperature.svg",
+            PlotKind::DutyCycleEnergy => "duty_cycle_energy.svg",
         }
     }
 }

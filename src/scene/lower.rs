@@ -16,9 +16,19 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
 
 const SCENE_BLOCKS: &[&str] =
-    &["gears", "material", "lubricant", "operating", "friction", "dynamics", "gearbox", "analyses"];
-const ANALYSES: &[&str] =
-    &["efficiency", "efficiency_map", "friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics"];
+    &["gears", "material", "lubricant", "operating", "friction", "dynamics", "gearbox", "duty_cycle", "analyses"];
+const ANALYSES: &[&str] = &[
+    "efficiency",
+    "efficiency_map",
+    "friction_along_loa",
+    "film",
+    "contact",
+    "dynamics",
+    "stability_map",
+    "numerics",
+    "thermal_balance",
+    "duty_cycle",
+];
 const FORMULATIONS: &[&str] = &["external", "internal"];
 
 /// Lowers a parsed scene. On failure, every diagnostic found.
@@ -75,7 +85,25 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
 
     let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
-    let oil_temperature = operating.as_ref().and_then(|o| o.oil_temperature.as_ref());
+    let housing = singles.get("gearbox").and_then(|g| {
+        g.items.iter().find_map(|i| match i {
+            Item::Block(b) if b.kind.text == "housing" => Some(b),
+            _ => None,
+        })
+    });
+    let housing = housing.and_then(|b| super::lower_thermal::lower_housing(b, &mut errors));
+    let duty_cycle = singles.get("duty_cycle").and_then(|b| super::lower_thermal::lower_duty_cycle(b, &mut errors));
+    // At `oil_temperature = equilibrium` the lubricant is read at ambient until the run has found the
+    // balance (the report says the temperature it used).
+    let ambient = match (operating.as_ref().and_then(|o| o.equilibrium), &housing) {
+        (Some(span), Some(h)) => Some(Given {
+            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(h.ambient),
+            written: "equilibrium".to_string(),
+            span,
+        }),
+        _ => None,
+    };
+    let oil_temperature = operating.as_ref().and_then(|o| o.oil_temperature.as_ref()).or(ambient.as_ref());
     // An `oil_temperature` that failed to lower has its own error: the lubricant is not read at none.
     let temperature_failed = oil_temperature.is_none()
         && singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
@@ -173,10 +201,33 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
             );
         }
     }
+    let equilibrium = operating.as_ref().and_then(|o| o.equilibrium);
+    super::lower_thermal::check_thermal_needs(
+        &super::lower_thermal::ThermalInputs {
+            housing: housing.as_ref(),
+            housing_failed: singles.get("gearbox").is_some_and(|g| g.items.iter().any(|i| i.head().text == "housing")),
+            duty_block: singles.get("duty_cycle").map(|b| b.kind.span),
+            equilibrium,
+            moves_with_temperature: lubricant.as_ref().is_none_or(|l| l.oil.is_some()),
+            lubricant_failed,
+        },
+        &analyses,
+        &mut errors,
+    );
     match (gears, operating) {
         (Some(gears), Some(operating)) if errors.is_empty() => {
-            let scene =
-                Scene { title: ast.title.clone(), gears, lubricant, operating, friction, dynamics, gearbox, analyses };
+            let scene = Scene {
+                title: ast.title.clone(),
+                gears,
+                lubricant,
+                operating,
+                friction,
+                dynamics,
+                gearbox,
+                housing,
+                duty_cycle,
+                analyses,
+            };
             super::lower_dynamics::check_frequency_ratio(&scene, &mut errors);
             check_record_rows(&scene, &mut errors);
             if errors.is_empty() {
@@ -275,6 +326,8 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                         a.film = true;
                         a.film_span = Some(call.span);
                     }
+                    "thermal_balance" => a.thermal_balance = Some(call.span),
+                    "duty_cycle" => a.duty_cycle = Some(call.span),
                     _ => {}
                 }
             }

@@ -35,12 +35,14 @@ fn metres(g: Option<crate::model::Given<Length>>) -> Option<f64> {
 }
 
 pub(super) fn lower_gearbox(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Gearbox> {
-    let f = Fields::read("the `gearbox` block", block.span, &block.items, &["lubrication"], &SHAFTS, &[], errors);
+    let blocks = [SHAFTS[0], SHAFTS[1], "housing"];
+    let f = Fields::read("the `gearbox` block", block.span, &block.items, &["lubrication"], &blocks, &[], errors);
     let before = errors.len();
     let lubrication = f.values.get("lubrication").and_then(|(_, v)| lower_lubrication(v, errors));
     let mut bearings: [Vec<Bearing>; 2] = [Vec::new(), Vec::new()];
     let mut seals: [Vec<Seal>; 2] = [Vec::new(), Vec::new()];
-    for shaft in &f.blocks {
+    // (The housing is the thermal balance's: `super::lower_thermal`.)
+    for shaft in f.blocks.iter().filter(|b| b.kind.text != "housing") {
         let s = SHAFTS.iter().position(|n| *n == shaft.kind.text).unwrap_or(0);
         let what = format!("the `{}` block", SHAFTS[s]);
         let sf = Fields::read(&what, shaft.span, &shaft.items, &[], &[], &["bearing", "seal"], errors);

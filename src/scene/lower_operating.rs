@@ -51,8 +51,20 @@ pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Op
         return None;
     }
     let detail_points = detail_points(&f, count as usize, errors)?;
-    let (oil_temperature, oil_temperatures) = oil_temperatures(&f, errors);
-    Some(Operating { pinion_torque: torque, pinion_speed: speed, oil_temperature, oil_temperatures, detail_points })
+    let equilibrium = f.values.get("oil_temperature").and_then(|(_, v)| match &v.kind {
+        ValueKind::Call(c) if c.name.text == "equilibrium" && c.arguments.is_empty() => Some(v.span),
+        _ => None,
+    });
+    let (oil_temperature, oil_temperatures) =
+        if equilibrium.is_some() { (None, None) } else { oil_temperatures(&f, errors) };
+    Some(Operating {
+        pinion_torque: torque,
+        pinion_speed: speed,
+        oil_temperature,
+        oil_temperatures,
+        detail_points,
+        equilibrium,
+    })
 }
 
 /// Most summary rows a run may write (points × laws × formulations, and the dynamics rows): about

@@ -59,6 +59,7 @@ pub const UNITS: &[UnitDef] = &[
     c("µin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (micro sign)"),
     c("μin", INCH * 1e-6, Dimension::LENGTH, (1.0, "uin"), "microinch (Greek mu)"),
     c("ft", 12.0 * INCH, Dimension::LENGTH, (12.0, "in"), "foot"),
+    c("km", 1e3, Dimension::LENGTH, (1e3, "m"), "kilometre"),
     // mass
     c("l", 1e-3, Dimension::VOLUME, (1e-3, "m^3"), "litre"),
     u("kg", 1.0, Dimension::MASS, "kilogram"),
@@ -86,9 +87,19 @@ pub const UNITS: &[UnitDef] = &[
         composition: None,
         description: "degree Celsius (absolute temperature, only on its own)",
     },
+    UnitDef {
+        name: "°C",
+        factor: 1.0,
+        dimension: Dimension::TEMPERATURE,
+        offset: 273.15,
+        composition: None,
+        description: "degree Celsius (sign; the same as degC)",
+    },
     // force
     c("N", 1.0, Dimension::FORCE, (1.0, "kg*m/s^2"), "newton"),
+    c("mN", 1e-3, Dimension::FORCE, (1e-3, "N"), "millinewton"),
     c("kN", 1e3, Dimension::FORCE, (1e3, "N"), "kilonewton"),
+    c("MN", 1e6, Dimension::FORCE, (1e3, "kN"), "meganewton"),
     c("lbf", LBF, Dimension::FORCE, (STANDARD_GRAVITY, "lb*m/s^2"), "pound-force"),
     // pressure and modulus
     c("Pa", 1.0, Dimension::PRESSURE, (1.0, "N/m^2"), "pascal"),
@@ -107,8 +118,14 @@ pub const UNITS: &[UnitDef] = &[
     c("cSt", 1e-6, Dimension::KINEMATIC_VISCOSITY, (1.0, "mm^2/s"), "centistokes"),
     // power and energy
     c("J", 1.0, Dimension::TORQUE, (1.0, "N*m"), "joule"),
+    c("kJ", 1e3, Dimension::TORQUE, (1e3, "J"), "kilojoule"),
+    c("MJ", 1e6, Dimension::TORQUE, (1e3, "kJ"), "megajoule"),
     c("W", 1.0, Dimension::POWER, (1.0, "J/s"), "watt"),
+    c("mW", 1e-3, Dimension::POWER, (1e-3, "W"), "milliwatt"),
     c("kW", 1e3, Dimension::POWER, (1e3, "W"), "kilowatt"),
+    c("MW", 1e6, Dimension::POWER, (1e3, "kW"), "megawatt"),
+    c("Wh", 3600.0, Dimension::TORQUE, (3600.0, "J"), "watt-hour"),
+    c("kWh", 3.6e6, Dimension::TORQUE, (1e3, "Wh"), "kilowatt-hour"),
     c("hp", 550.0 * LBF * 12.0 * INCH, Dimension::POWER, (550.0, "lbf*ft/s"), "horsepower (mechanical)"),
 ];
 
@@ -275,3 +292,7 @@ si_quantity!(q::ThermodynamicTemperature, Dimension::TEMPERATURE);
 si_quantity!(q::Velocity, Dimension::VELOCITY);
 si_quantity!(q::Force, Dimension::FORCE);
 si_quantity!(q::VolumeRate, Dimension::VOLUME_RATE);
+si_quantity!(q::Area, Dimension::AREA);
+si_quantity!(q::HeatCapacity, Dimension::HEAT_CAPACITY);
+si_quantity!(q::ThermalConductance, Dimension::THERMAL_CONDUCTANCE);
+si_quantity!(q::Time, Dimension::TIME);

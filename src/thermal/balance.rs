@@ -48,6 +48,15 @@ pub enum BalanceStatus {
 }
 
 impl BalanceStatus {
+    /// The status as report.json and the record files write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            BalanceStatus::Ok => "ok",
+            BalanceStatus::AboveLimit => "above_limit",
+            BalanceStatus::NoEquilibrium => "no_equilibrium",
+        }
+    }
+
     /// The status in words, as report.md says it.
     pub fn words(self) -> &'static str {
         match self {

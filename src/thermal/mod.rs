@@ -7,9 +7,11 @@
 //! the box (the oil, the housing wall and the gears share θ), no solar or other heat input.
 
 pub mod balance;
+pub mod duty_cycle;
 pub mod housing;
 pub mod transient;
 
 pub use balance::{balance, rating_torque, Balance, BalanceStatus};
+pub use duty_cycle::{DutyCycle, DutyStep};
 pub use housing::{Cooler, Dissipation, Housing};
 pub use transient::{transient, StepEnd, Transient};

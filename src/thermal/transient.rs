@@ -71,7 +71,8 @@ pub fn transient(
 ) -> Result<Transient, String> {
     let (fine, steps_taken) = run(&p_v, housing, c, durations, TOLERANCE, true)?;
     let (coarse, _) = run(&p_v, housing, c, durations, 100.0 * TOLERANCE, false)?;
-    let error = fine.steps.iter().zip(&coarse.steps).map(|(a, b)| (a.temperature - b.temperature).abs()).fold(0.0, f64::max);
+    let error =
+        fine.steps.iter().zip(&coarse.steps).map(|(a, b)| (a.temperature - b.temperature).abs()).fold(0.0, f64::max);
     Ok(Transient { error, integrator_steps: steps_taken, ..fine })
 }
 

@@ -1,0 +1,333 @@
+//! The losses at an oil temperature, and the thermal balance, rating and duty cycle they give
+//! ([`crate::thermal`] holds the housing and the solvers; this file supplies P_V(θ)).
+//!
+//! P_V(θ) is the mesh loss of one law and formulation with the lubricant read at θ (ν by ASTM D341,
+//! ρ by thermal expansion, η = ρν, α from the base oil where the scene does not give it) plus the
+//! loss budget beside the mesh in that oil. At zero speed nothing turns and nothing is lost; at zero
+//! torque the mesh carries nothing and only the no-load losses remain (no law is read without a load).
+
+use super::setup::Setup;
+use crate::efficiency::{self, Formulation};
+use crate::friction::catalog::FrictionLawSpec;
+use crate::geometry::OperatingState;
+use crate::losses::{loss_budget, LossBudget, Oil};
+use crate::model::{LubricantType, Scene};
+use crate::thermal::{self, Balance, DutyCycle, Housing};
+use crate::tribology::lubricant::OilData;
+use crate::tribology::Tribology;
+
+/// The ISO/TR 14179-1 rating temperature (K): 95 °C.
+pub const RATING_TEMPERATURE: f64 = 368.15;
+
+/// The scene's losses as a function of the oil temperature.
+pub struct Losses<'a> {
+    scene: &'a Scene,
+    setup: &'a Setup,
+    oil: OilData,
+    /// α given in the scene (kept at every temperature), or `None` to take the base oil's.
+    alpha: Option<f64>,
+    mineral: bool,
+}
+
+/// The losses at one oil temperature (W).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LossesAt {
+    pub mesh: f64,
+    pub budget: Option<LossBudget>,
+}
+
+impl LossesAt {
+    pub fn total(&self) -> f64 {
+        self.mesh + self.budget.as_ref().map_or(0.0, LossBudget::beside_mesh)
+    }
+}
+
+impl<'a> Losses<'a> {
+    /// `None` when the lubricant cannot be read at other temperatures (lowering refuses the thermal
+    /// analyses then).
+    pub fn new(scene: &'a Scene, setup: &'a Setup) -> Option<Losses<'a>> {
+        let l = scene.lubricant.as_ref()?;
+        let oil = l.oil.clone()?;
+        let alpha = if l.alpha_from_oil { None } else { setup.tribology.pressure_viscosity };
+        let mineral = l.kind.is_none_or(|k| k == LubricantType::Mineral);
+        Some(Losses { scene, setup, oil, alpha, mineral })
+    }
+
+    /// The tribology of the setup with the oil at `t` (K).
+    pub fn tribology_at(&self, t: f64) -> Tribology {
+        let at = self.oil.at(t);
+        Tribology {
+            dynamic_viscosity: at.dynamic_viscosity,
+            kinematic_viscosity: Some(at.kinematic_viscosity),
+            pressure_viscosity: self.alpha.or(at.pressure_viscosity),
+            ..self.setup.tribology
+        }
+    }
+
+    /// The setup with the oil at `t` (K) and only `formulations` (for a law evaluated at its balance).
+    pub fn setup_at(&self, t: f64, formulations: &[Formulation]) -> Setup {
+        Setup { tribology: self.tribology_at(t), formulations: formulations.to_vec(), ..self.setup.clone() }
+    }
+
+    /// P_V at oil temperature `t` (K) of law `spec` and formulation `f` at `state`.
+    pub fn at(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> LossesAt {
+        if state.pinion_speed <= 0.0 {
+            return LossesAt { mesh: 0.0, budget: self.scene.gearbox.as_ref().map(|_| LossBudget::default()) };
+        }
+        let tribology = self.tribology_at(t);
+        let mesh = if state.pinion_torque > 0.0 {
+            let ctx = crate::friction::LawContext {
+                geometry: &self.setup.geometry,
+                state,
+                tribology,
+                sharing: self.setup.sharing(),
+            };
+            let law = spec.build(&ctx);
+            efficiency::evaluate_efficiencies(&ctx, law.as_ref(), &[f]).first().map_or(0.0, |e| e.power_loss)
+        } else {
+            0.0
+        };
+        let budget = self.scene.gearbox.as_ref().map(|g| {
+            let oil = Oil {
+                nu: tribology.kinematic_viscosity.unwrap_or(f64::NAN),
+                rho: tribology.density().unwrap_or(f64::NAN),
+                eta: tribology.dynamic_viscosity,
+                mineral: self.mineral,
+            };
+            loss_budget(g, &self.setup.geometry, state.pinion_torque, state.pinion_speed, &oil)
+        });
+        LossesAt { mesh, budget }
+    }
+}
+
+/// The balance of one operating point, law and formulation, with what it rests on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalPoint {
+    pub balance: Balance,
+    /// At θ* (or at the search's end without a balance).
+    pub dissipation: thermal::Dissipation,
+    pub heat_transfer_coefficient: f64,
+    /// The losses at θ*.
+    pub losses: LossesAt,
+    /// Pinion torque (N·m) at which θ* is the limit, and at which it is 95 °C.
+    pub rating: Option<f64>,
+    pub rating_95: Option<f64>,
+}
+
+/// The balance, the losses at it and the two ratings of law `spec`, formulation `f` at `state`.
+pub fn thermal_point(
+    losses: &Losses,
+    housing: &Housing,
+    spec: &FrictionLawSpec,
+    f: Formulation,
+    state: OperatingState,
+) -> ThermalPoint {
+    let p_v = |t: f64| losses.at(spec, f, state, t).total();
+    let balance = thermal::balance(p_v, housing);
+    let t = balance.temperature.unwrap_or(thermal::balance::SEARCH_LIMIT);
+    let at_torque = |torque: f64, t: f64| losses.at(spec, f, OperatingState { pinion_torque: torque, ..state }, t).total();
+    let guess = state.pinion_torque.max(1.0);
+    ThermalPoint {
+        balance,
+        dissipation: housing.dissipation(t),
+        heat_transfer_coefficient: housing.heat_transfer_coefficient(t),
+        losses: losses.at(spec, f, state, t),
+        rating: thermal::rating_torque(at_torque, housing, housing.max_oil_temperature, guess),
+        rating_95: (RATING_TEMPERATURE > housing.ambient)
+            .then(|| thermal::rating_torque(at_torque, housing, RATING_TEMPERATURE, guess))
+            .flatten(),
+    }
+}
+
+/// A duty cycle evaluated at the scene's fixed oil temperature and, with a heat capacity, as a
+/// transient from ambient.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DutyCycleResult {
+    /// The law (index in the scene's list) and formulation the losses are read with.
+    pub law_index: usize,
+    pub formulation: Formulation,
+    /// P_V of each step at the fixed temperature (W), when the scene has one.
+    pub fixed: Option<Vec<f64>>,
+    pub transient: Option<Result<thermal::Transient, String>>,
+}
+
+/// The scene's duty cycle with its first law and first formulation.
+pub fn duty_cycle(losses: &Losses, housing: &Housing, cycle: &DutyCycle, fixed: Option<f64>) -> DutyCycleResult {
+    let scene = losses.scene;
+    let spec = &scene.friction[0];
+    let f = losses.setup.formulations.first().copied().unwrap_or(Formulation::External);
+    let state = |k: usize| OperatingState {
+        pinion_torque: cycle.steps[k].pinion_torque,
+        pinion_speed: cycle.steps[k].pinion_speed,
+    };
+    let p_v = |k: usize, t: f64| losses.at(spec, f, state(k), t).total();
+    let durations: Vec<f64> = cycle.steps.iter().map(|s| s.duration).collect();
+    DutyCycleResult {
+        law_index: 0,
+        formulation: f,
+        fixed: fixed.map(|t| (0..cycle.steps.len()).map(|k| p_v(k, t)).collect()),
+        transient: housing.heat_capacity.map(|c| thermal::transient(p_v, housing, c, &durations)),
+    }
+}
+
+/// The balance of an efficiency record as the record files carry it (flat columns).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ThermalRow {
+    /// θ* (K), absent without a balance up to 200 °C.
+    #[serde(rename = "oil_temperature_K")]
+    pub oil_temperature: Option<f64>,
+    pub thermal_status: thermal::BalanceStatus,
+    /// P_V at θ* (W).
+    #[serde(rename = "loss_at_balance_W")]
+    pub loss_at_balance: f64,
+    #[serde(rename = "dissipation_convection_W")]
+    pub convection: f64,
+    #[serde(rename = "dissipation_radiation_W")]
+    pub radiation: f64,
+    #[serde(rename = "dissipation_foundation_W")]
+    pub foundation: f64,
+    #[serde(rename = "dissipation_cooler_W")]
+    pub cooler: f64,
+    #[serde(rename = "dissipation_W")]
+    pub dissipation: f64,
+    #[serde(rename = "heat_transfer_coefficient_W_m2_K")]
+    pub heat_transfer_coefficient: f64,
+    #[serde(rename = "thermal_rating_N_m")]
+    pub rating: Option<f64>,
+    #[serde(rename = "thermal_rating_95_N_m")]
+    pub rating_95: Option<f64>,
+}
+
+impl ThermalRow {
+    /// The record files' column names, in order.
+    pub const COLUMNS: [&'static str; 11] = [
+        "oil_temperature_K",
+        "thermal_status",
+        "loss_at_balance_W",
+        "dissipation_convection_W",
+        "dissipation_radiation_W",
+        "dissipation_foundation_W",
+        "dissipation_cooler_W",
+        "dissipation_W",
+        "heat_transfer_coefficient_W_m2_K",
+        "thermal_rating_N_m",
+        "thermal_rating_95_N_m",
+    ];
+
+    pub fn of(p: &ThermalPoint) -> ThermalRow {
+        let d = &p.dissipation;
+        ThermalRow {
+            oil_temperature: p.balance.temperature,
+            thermal_status: p.balance.status,
+            loss_at_balance: p.losses.total(),
+            convection: d.convection,
+            radiation: d.radiation,
+            foundation: d.foundation,
+            cooler: d.cooler,
+            dissipation: d.total,
+            heat_transfer_coefficient: p.heat_transfer_coefficient,
+            rating: p.rating,
+            rating_95: p.rating_95,
+        }
+    }
+
+    /// The numbers after the status, in [`Self::COLUMNS`] order.
+    pub fn numbers(&self) -> [Option<f64>; 9] {
+        [
+            Some(self.loss_at_balance),
+            Some(self.convection),
+            Some(self.radiation),
+            Some(self.foundation),
+            Some(self.cooler),
+            Some(self.dissipation),
+            Some(self.heat_transfer_coefficient),
+            self.rating,
+            self.rating_95,
+        ]
+    }
+}
+
+/// At `oil_temperature = equilibrium`: the scene with its lubricant at the balance of its first
+/// operating point (first law, first formulation), where its tables, curves, film and dynamics are
+/// read; the scene itself otherwise, or when that point finds no balance.
+pub fn at_first_balance(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
+    use std::borrow::Cow;
+    let (Some(span), Some(housing), Some(spec)) =
+        (scene.operating.equilibrium, scene.housing.as_ref(), scene.friction.first())
+    else {
+        return Cow::Borrowed(scene);
+    };
+    let plan = super::Plan::new(&scene.operating, None, &[]);
+    let eval = super::prepare(scene, &plan);
+    let Some(losses) = Losses::new(scene, &eval) else { return Cow::Borrowed(scene) };
+    let f = eval.formulations.first().copied().unwrap_or(Formulation::External);
+    let state = super::state_at(&scene.operating, 0);
+    let Some(t) = thermal::balance(|t| losses.at(spec, f, state, t).total(), housing).temperature else {
+        return Cow::Borrowed(scene);
+    };
+    let theta = crate::model::Given {
+        value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(t),
+        written: format!("{:.2} degC (equilibrium of point 1)", t - 273.15),
+        span,
+    };
+    Cow::Owned(scene.at_temperature(theta))
+}
+
+/// Temperatures of the heat-balance curve.
+pub const CURVE_POINTS: usize = 120;
+
+/// P_V(θ) and P_Q(θ) of one operating point, law and formulation from ambient to 200 °C, for the
+/// heat-balance plot (the balance itself is located, not read from these).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeatBalanceCurve {
+    pub case: usize,
+    pub law_index: usize,
+    pub formulation: Formulation,
+    pub temperatures: Vec<f64>,
+    pub losses: Vec<f64>,
+    pub dissipation: Vec<f64>,
+    pub balance: Balance,
+}
+
+/// The thermal results of the detail evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalDetails {
+    pub curve: Option<HeatBalanceCurve>,
+    pub duty_cycle: Option<DutyCycleResult>,
+}
+
+/// The heat-balance curve of the first detail point and the duty cycle, as the scene asks.
+pub fn thermal_details(scene: &Scene, setup: &Setup) -> Option<ThermalDetails> {
+    let housing = scene.housing.as_ref()?;
+    let losses = Losses::new(scene, setup)?;
+    let spec = scene.friction.first()?;
+    let f = setup.formulations.first().copied().unwrap_or(Formulation::External);
+    let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
+    let curve = setup.cases.first().filter(|_| wants_balance).map(|case| {
+        let top = thermal::balance::SEARCH_LIMIT;
+        let temperatures: Vec<f64> = (0..CURVE_POINTS)
+            .map(|i| housing.ambient + (top - housing.ambient) * i as f64 / (CURVE_POINTS - 1) as f64)
+            .collect();
+        let p_v = |t: f64| losses.at(spec, f, case.state, t).total();
+        HeatBalanceCurve {
+            case: case.index,
+            law_index: 0,
+            formulation: f,
+            losses: temperatures.iter().map(|t| p_v(*t)).collect(),
+            dissipation: temperatures.iter().map(|t| housing.dissipation(*t).total).collect(),
+            temperatures,
+            balance: thermal::balance(p_v, housing),
+        }
+    });
+    let fixed = if scene.operating.equilibrium.is_some() {
+        None
+    } else {
+        scene.operating.oil_temperature.as_ref().map(|t| t.value.value)
+    };
+    let duty = scene
+        .duty_cycle
+        .as_ref()
+        .filter(|_| scene.analyses.duty_cycle.is_some())
+        .map(|c| duty_cycle(&losses, housing, c, fixed));
+    Some(ThermalDetails { curve, duty_cycle: duty })
+}

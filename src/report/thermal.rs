@@ -1,0 +1,302 @@
+//! The thermal balance in the report: the housing as given, one record per kept efficiency record
+//! (θ*, status, what the housing gives off by path, the ratings), the heat-balance curve of the
+//! first point and the duty cycle. Temperatures in K, like every quantity of report.json.
+
+use serde::{Deserialize, Serialize};
+
+use super::finding::{Finding, Severity};
+use super::number::{Num, Q};
+use crate::evaluate::records::RowKind;
+use crate::evaluate::thermal::{DutyCycleResult, HeatBalanceCurve};
+use crate::evaluate::{Evaluation, Tally};
+use crate::model::{Formulation, Scene};
+use crate::thermal::{BalanceStatus, Housing};
+
+/// The housing as the scene gives it (defaults filled in), in SI.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct HousingReport {
+    pub surface_area: Q,
+    pub ambient_temperature: Q,
+    pub air_speed: Q,
+    pub emissivity: Num,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heat_capacity: Option<Q>,
+    pub foundation_conductance: Q,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub oil_cooler: Option<CoolerReport>,
+    pub max_oil_temperature: Q,
+}
+
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CoolerReport {
+    pub conductance: Q,
+    pub above: Q,
+}
+
+/// What the housing gives off at θ*, by path (W).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DissipationReport {
+    pub convection: Q,
+    pub radiation: Q,
+    pub foundation: Q,
+    pub cooler: Q,
+    pub total: Q,
+}
+
+/// A torque the box carries at a temperature, and its power T ω.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Rating {
+    pub torque: Q,
+    pub power: Q,
+}
+
+/// The balance of one (operating point, law, formulation).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ThermalRecord {
+    pub case: usize,
+    pub law: crate::friction::catalog::LawId,
+    pub label: String,
+    pub formulation: Formulation,
+    pub pinion_torque: Q,
+    pub pinion_speed: Q,
+    /// θ*, absent without a balance up to 200 °C.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub oil_temperature: Option<Q>,
+    pub status: BalanceStatus,
+    /// P_V at θ*.
+    pub power_loss: Q,
+    pub dissipation: DissipationReport,
+    pub heat_transfer_coefficient: Q,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_rating: Option<Rating>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_rating_95: Option<Rating>,
+}
+
+/// P_V(θ) and P_Q(θ) of one point for the heat-balance plot.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct HeatBalanceReport {
+    /// The operating point, law and formulation, in words.
+    pub label: String,
+    pub temperature: Vec<f64>,
+    pub power_loss: Vec<f64>,
+    pub dissipation: Vec<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub oil_temperature: Option<Q>,
+    pub max_oil_temperature: Q,
+    pub ambient_temperature: Q,
+}
+
+/// One step of a duty cycle.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DutyStepReport {
+    pub label: String,
+    pub duration: Q,
+    pub pinion_torque: Q,
+    pub pinion_speed: Q,
+    /// The transient's θ at the step's end and the energy lost in the step.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub oil_temperature_end: Option<Q>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_lost: Option<Q>,
+    /// The energy lost in the step at the scene's fixed oil temperature.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_lost_fixed: Option<Q>,
+}
+
+/// A cycle's energy at the fixed oil temperature.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct FixedTemperatureReport {
+    pub oil_temperature: Q,
+    pub energy_lost: Q,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub efficiency: Option<Num>,
+}
+
+/// The transient's time series.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Samples {
+    pub time: Vec<f64>,
+    pub oil_temperature: Vec<f64>,
+}
+
+/// A duty cycle: its steps, the transient's totals and the fixed-temperature energy.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DutyCycleReport {
+    pub name: String,
+    /// The law and formulation the losses are read with.
+    pub label: String,
+    pub formulation: Formulation,
+    pub steps: Vec<DutyStepReport>,
+    pub energy_in: Q,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub oil_temperature_max: Option<Q>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_lost: Option<Q>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_dissipated: Option<Q>,
+    /// (E_in − E_lost)/E_in of the transient; absent when nothing goes in.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub efficiency: Option<Num>,
+    /// The largest difference of a step-end θ between the integrator's two tolerances.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error_estimate: Option<Q>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fixed_temperature: Option<FixedTemperatureReport>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub samples: Option<Samples>,
+    pub max_oil_temperature: Q,
+    pub ambient_temperature: Q,
+}
+
+pub fn housing_report(h: &Housing) -> HousingReport {
+    HousingReport {
+        surface_area: Q::new(h.area, "m^2"),
+        ambient_temperature: Q::new(h.ambient, "K"),
+        air_speed: Q::new(h.air_speed, "m/s"),
+        emissivity: Num(h.emissivity),
+        heat_capacity: h.heat_capacity.map(|c| Q::new(c, "J/K")),
+        foundation_conductance: Q::new(h.foundation_conductance, "W/K"),
+        oil_cooler: h.cooler.map(|c| CoolerReport { conductance: Q::new(c.conductance, "W/K"), above: Q::new(c.above, "K") }),
+        max_oil_temperature: Q::new(h.max_oil_temperature, "K"),
+    }
+}
+
+/// The thermal records of the kept efficiency rows.
+pub fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord> {
+    let rating = |torque: Option<f64>, omega: f64| torque.map(|t| Rating { torque: Q::new(t, "N*m"), power: Q::new(t * omega, "W") });
+    tally
+        .kept
+        .iter()
+        .filter(|r| r.kind == RowKind::Efficiency)
+        .filter_map(|r| {
+            let t = r.thermal.as_ref()?;
+            Some(ThermalRecord {
+                case: r.point - 1,
+                law: scene.friction[r.law_index?].law,
+                label: r.label.clone(),
+                formulation: if r.formulation == "internal" { Formulation::Internal } else { Formulation::External },
+                pinion_torque: Q::new(r.pinion_torque, "N*m"),
+                pinion_speed: Q::new(r.pinion_speed, "rad/s"),
+                oil_temperature: t.oil_temperature.map(|x| Q::new(x, "K")),
+                status: t.thermal_status,
+                power_loss: Q::new(t.loss_at_balance, "W"),
+                dissipation: DissipationReport {
+                    convection: Q::new(t.convection, "W"),
+                    radiation: Q::new(t.radiation, "W"),
+                    foundation: Q::new(t.foundation, "W"),
+                    cooler: Q::new(t.cooler, "W"),
+                    total: Q::new(t.dissipation, "W"),
+                },
+                heat_transfer_coefficient: Q::new(t.heat_transfer_coefficient, "W/(m^2*K)"),
+                thermal_rating: rating(t.rating, r.pinion_speed),
+                thermal_rating_95: rating(t.rating_95, r.pinion_speed),
+            })
+        })
+        .collect()
+}
+
+fn law_words(scene: &Scene, law_index: usize, f: Formulation) -> String {
+    format!("{}, {}", scene.friction[law_index].label(), f.name())
+}
+
+pub fn heat_balance_report(scene: &Scene, eval: &Evaluation, c: &HeatBalanceCurve, h: &Housing) -> HeatBalanceReport {
+    let case = eval.cases.iter().find(|k| k.index == c.case).map_or_else(String::new, |k| k.label.clone());
+    HeatBalanceReport {
+        label: format!("{case}, {}", law_words(scene, c.law_index, c.formulation)),
+        temperature: c.temperatures.clone(),
+        power_loss: c.losses.clone(),
+        dissipation: c.dissipation.clone(),
+        oil_temperature: c.balance.temperature.map(|t| Q::new(t, "K")),
+        max_oil_temperature: Q::new(h.max_oil_temperature, "K"),
+        ambient_temperature: Q::new(h.ambient, "K"),
+    }
+}
+
+pub fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Option<DutyCycleReport> {
+    let cycle = scene.duty_cycle.as_ref()?;
+    let e_in = cycle.energy_in();
+    let efficiency = |lost: f64| (e_in > 0.0).then(|| Num((e_in - lost) / e_in));
+    let transient = d.transient.as_ref().and_then(|t| t.as_ref().ok());
+    let steps = cycle
+        .steps
+        .iter()
+        .enumerate()
+        .map(|(k, s)| DutyStepReport {
+            label: s.label.clone(),
+            duration: Q::new(s.duration, "s"),
+            pinion_torque: Q::new(s.pinion_torque, "N*m"),
+            pinion_speed: Q::new(s.pinion_speed, "rad/s"),
+            oil_temperature_end: transient.map(|t| Q::new(t.steps[k].temperature, "K")),
+            energy_lost: transient.map(|t| Q::new(t.steps[k].energy_lost, "J")),
+            energy_lost_fixed: d.fixed.as_ref().map(|p| Q::new(p[k] * s.duration, "J")),
+        })
+        .collect();
+    let lost = transient.map(|t| t.steps.iter().map(|s| s.energy_lost).sum::<f64>());
+    let fixed_lost = d.fixed.as_ref().map(|p| p.iter().zip(&cycle.steps).map(|(p, s)| p * s.duration).sum::<f64>());
+    Some(DutyCycleReport {
+        name: cycle.name.clone(),
+        label: law_words(scene, d.law_index, d.formulation),
+        formulation: d.formulation,
+        steps,
+        energy_in: Q::new(e_in, "J"),
+        oil_temperature_max: transient.map(|t| Q::new(t.max_temperature(h.ambient), "K")),
+        energy_lost: lost.map(|e| Q::new(e, "J")),
+        energy_dissipated: transient.map(|t| Q::new(t.steps.iter().map(|s| s.energy_dissipated).sum(), "J")),
+        efficiency: lost.and_then(efficiency),
+        error_estimate: transient.map(|t| Q::new(t.error, "K")),
+        fixed_temperature: fixed_lost.zip(scene.operating.oil_temperature.as_ref()).map(|(e, t)| FixedTemperatureReport {
+            oil_temperature: Q::new(t.value.value, "K"),
+            energy_lost: Q::new(e, "J"),
+            efficiency: efficiency(e),
+        }),
+        samples: transient.map(|t| Samples {
+            time: t.samples.iter().map(|s| s.0).collect(),
+            oil_temperature: t.samples.iter().map(|s| s.1).collect(),
+        }),
+        max_oil_temperature: Q::new(h.max_oil_temperature, "K"),
+        ambient_temperature: Q::new(h.ambient, "K"),
+    })
+}
+
+/// Warnings of the thermal balance: above the limit, no balance, a transient that crosses the
+/// limit (when, in which step), a duty cycle without a heat capacity, a transient that failed.
+pub fn thermal_findings(scene: &Scene, records: &[ThermalRecord], duty: Option<&DutyCycleReport>, d: Option<&DutyCycleResult>) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    let celsius = |q: &Q| q.si() - 273.15;
+    for r in records {
+        let at = format!("{} N·m, {:.0} rpm, {} ({})", r.pinion_torque.si(), r.pinion_speed.si() * 30.0 / std::f64::consts::PI, r.label, r.formulation.name());
+        match (r.status, &r.oil_temperature) {
+            (BalanceStatus::AboveLimit, Some(t)) => out.push(warn(format!("the sump settles at {:.1} °C, above the oil's limit, at {at}", celsius(t)))),
+            (BalanceStatus::NoEquilibrium, _) => out.push(warn(format!("no thermal balance up to 200 °C at {at}: the housing cannot give off the losses"))),
+            _ => {}
+        }
+    }
+    if let (Some(_), Some(h)) = (scene.duty_cycle.as_ref().filter(|_| scene.analyses.duty_cycle.is_some()), scene.housing.as_ref()) {
+        if h.heat_capacity.is_none() {
+            out.push(warn("the duty cycle's transient needs the housing's `heat_capacity`: only the energy at the fixed oil temperature is given".into()));
+        }
+    }
+    if let Some(Some(Err(e))) = d.map(|d| &d.transient) {
+        out.push(warn(format!("the duty cycle's transient failed: {e}")));
+    }
+    if let Some(duty) = duty {
+        let limit = duty.max_oil_temperature.si();
+        for (k, s) in duty.steps.iter().enumerate() {
+            if let Some(end) = &s.oil_temperature_end {
+                if end.si() > limit {
+                    out.push(warn(format!(
+                        "the sump passes the oil's limit ({:.1} °C) in step {} ({}) of the duty cycle and ends that step at {:.1} °C",
+                        limit - 273.15,
+                        k + 1,
+                        s.label,
+                        celsius(end)
+                    )));
+                    break;
+                }
+            }
+        }
+    }
+    out
+}
