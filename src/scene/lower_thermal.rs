@@ -76,10 +76,18 @@ pub(super) fn lower_housing(block: &Block, errors: &mut Vec<Diagnostic>) -> Opti
         }
         ok
     });
-    let emissivity = f.values.get("emissivity").and_then(|_| {
-        let e = f.number("emissivity", f64::MIN_POSITIVE, 1.0, errors)?;
-        Some(e.value)
+    let emissivity = f.number("emissivity", f64::NEG_INFINITY, f64::INFINITY, errors).filter(|e| {
+        let ok = e.value > 0.0 && e.value <= 1.0;
+        if !ok {
+            errors.push(out_of_range(
+                e.span,
+                format!("`emissivity` = {} is outside (0, 1]", e.written),
+                "a painted or cast housing has about 0.9, bare aluminium 0.1 to 0.2",
+            ));
+        }
+        ok
     });
+    let emissivity = emissivity.map(|e| e.value);
     let c: Option<Given<HeatCapacity>> = positive(f.optional("heat_capacity", errors), "heat_capacity", errors);
     let g: Option<Given<ThermalConductance>> = f.optional("foundation_conductance", errors);
     let limit: Option<Given<ThermodynamicTemperature>> = f.optional("max_oil_temperature", errors);

@@ -16,6 +16,7 @@ mod properties;
 mod six_dof;
 mod specs;
 mod sweeps;
+mod thermal;
 mod units;
 
 use std::path::{Path, PathBuf};

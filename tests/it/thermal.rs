@@ -1,0 +1,98 @@
+//! The thermal balance end to end: the duty cycle's books, the rating on the limit, the balance at
+//! `oil_temperature = equilibrium`, the zero-speed and zero-torque steps, the step limit.
+
+use gearloss::evaluate::thermal::{thermal_point, Losses};
+use gearloss::evaluate::{prepare, state_at, Plan};
+use gearloss::geometry::OperatingState;
+use gearloss::model::Formulation;
+
+fn thermal_scene() -> gearloss::Scene {
+    crate::scene(&crate::root().join("specs/fzg_c14_thermal.gear"))
+}
+
+/// The report's duty cycle keeps its books: C (θ_end − θ_0) = E_lost − E_dissipated to 1e-9 of
+/// E_lost, and the sum of the step energies is the cycle's. Its error estimate is below 1e-9 K.
+#[test]
+fn duty_cycle_energy_is_conserved() {
+    let scene = thermal_scene();
+    let report = gearloss::report_of(&scene);
+    let d = report.duty_cycle.as_ref().expect("the scene asks for its duty cycle");
+    let c = scene.housing.as_ref().unwrap().heat_capacity.unwrap();
+    let end = d.steps.last().unwrap().oil_temperature_end.unwrap().si();
+    let lost = d.energy_lost.unwrap().si();
+    let given = d.energy_dissipated.unwrap().si();
+    let start = d.ambient_temperature.si();
+    assert!((c * (end - start) - (lost - given)).abs() < 1e-9 * lost, "{} vs {}", c * (end - start), lost - given);
+    let steps: f64 = d.steps.iter().map(|s| s.energy_lost.unwrap().si()).sum();
+    assert!((steps - lost).abs() < 1e-9 * lost);
+    assert!(d.error_estimate.unwrap().si() < 1e-9, "{:?}", d.error_estimate);
+    // Standing still, the first step stays at ambient and loses nothing.
+    assert_eq!(d.steps[0].oil_temperature_end.unwrap().si(), start);
+    assert_eq!(d.steps[0].energy_lost.unwrap().si(), 0.0);
+}
+
+/// At the rating torque the balance is the limit (to 1e-6 K), and at the 95 °C rating it is 95 °C.
+#[test]
+fn rating_torque_puts_the_balance_on_the_limit() {
+    let scene = thermal_scene();
+    let plan = Plan::new(&scene.operating, None, &[]);
+    let eval = prepare(&scene, &plan);
+    let losses = Losses::new(&scene, &eval).unwrap();
+    let housing = scene.housing.as_ref().unwrap();
+    let spec = &scene.friction[0];
+    let state = state_at(&scene.operating, 1);
+    let point = thermal_point(&losses, housing, spec, Formulation::External, state);
+    for (rating, target) in [(point.rating.unwrap(), housing.max_oil_temperature), (point.rating_95.unwrap(), 368.15)] {
+        let at = OperatingState { pinion_torque: rating, ..state };
+        let b = thermal_point(&losses, housing, spec, Formulation::External, at).balance;
+        assert!((b.temperature.unwrap() - target).abs() < 1e-6, "{rating} N·m: {b:?}");
+    }
+}
+
+/// Zero speed loses nothing; zero torque loses only the no-load parts (the mesh carries nothing).
+#[test]
+fn standing_and_idling_steps() {
+    let scene = thermal_scene();
+    let plan = Plan::new(&scene.operating, None, &[]);
+    let eval = prepare(&scene, &plan);
+    let losses = Losses::new(&scene, &eval).unwrap();
+    let spec = &scene.friction[0];
+    let standing = losses.at(spec, Formulation::External, OperatingState { pinion_torque: 100.0, pinion_speed: 0.0 }, 350.0);
+    assert_eq!(standing.total(), 0.0);
+    let idling = losses.at(spec, Formulation::External, OperatingState { pinion_torque: 0.0, pinion_speed: 200.0 }, 350.0);
+    assert_eq!(idling.mesh, 0.0);
+    assert!(idling.total() > 0.0 && idling.total().is_finite());
+}
+
+/// At `oil_temperature = equilibrium` each efficiency record is read at its own balance: its total
+/// loss (mesh and budget) equals what the housing gives off at θ* (to 1e-6 relative), and the mesh
+/// loss is the law's at θ*.
+#[test]
+fn equilibrium_records_balance_the_heat() {
+    let path = crate::root().join("specs/fzg_c14_thermal.gear");
+    let text = std::fs::read_to_string(&path).unwrap().replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
+    let scene = gearloss::check("equilibrium.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let report = gearloss::report_of(&scene);
+    let housing = scene.housing.as_ref().unwrap();
+    assert!(!report.efficiency.is_empty());
+    for (e, t) in report.efficiency.iter().zip(&report.thermal) {
+        let Some(theta) = t.oil_temperature else { continue };
+        let total = e.budget.as_ref().unwrap().total_loss.si();
+        let q = housing.dissipation(theta.si()).total;
+        assert!((total - q).abs() < 1e-6 * q, "{total} vs {q} at {} K", theta.si());
+        assert!((t.power_loss.si() - total).abs() < 1e-9 * total);
+    }
+}
+
+/// A duty cycle of more than 10 000 steps is refused at its step 10 001.
+#[test]
+fn too_many_duty_steps() {
+    let path = crate::root().join("specs/fzg_c14_thermal.gear");
+    let steps = "        step(duration = 1 s, pinion_torque = 10 N*m, pinion_speed = 100 rpm)\n".repeat(10_001);
+    let text = std::fs::read_to_string(&path).unwrap().replace(
+        "    duty_cycle \"EV-like cycle\" {\n",
+        &format!("    duty_cycle \"EV-like cycle\" {{\n{steps}"),
+    );
+    let err = gearloss::check("steps.gear", &text).unwrap_err().render(false);
+    assert!(err.contains("above the limit of 10000"), "{err}");
+}
