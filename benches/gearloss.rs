@@ -356,3 +356,50 @@ mod six_dof {
         });
     }
 }
+
+/// The thermal balance (issue 27) on `specs/fzg_c14_thermal.gear`: P_V(θ) is its mesh loss and
+/// loss budget with the oil read at θ.
+mod thermal {
+    use gearloss::evaluate::thermal::{duty_cycle, Losses};
+    use gearloss::evaluate::{prepare, state_at, Plan};
+    use gearloss::model::Formulation;
+
+    fn scene() -> gearloss::Scene {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_c14_thermal.gear")).unwrap();
+        gearloss::check("thermal", &text).unwrap()
+    }
+
+    /// One P_V(θ): the budget's own cost, against which the balance is measured.
+    #[divan::bench]
+    fn losses_at_one_temperature(b: divan::Bencher) {
+        let scene = scene();
+        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
+        let losses = Losses::new(&scene, &eval).unwrap();
+        let state = state_at(&scene.operating, 0);
+        b.bench(|| losses.at(&scene.friction[0], Formulation::External, state, 350.0).total());
+    }
+
+    /// θ* of one operating point (scan and Brent). Target: < 50 µs beyond the budget's own cost.
+    #[divan::bench]
+    fn balance_of_one_point(b: divan::Bencher) {
+        let scene = scene();
+        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
+        let losses = Losses::new(&scene, &eval).unwrap();
+        let housing = scene.housing.clone().unwrap();
+        let state = state_at(&scene.operating, 0);
+        let spec = &scene.friction[0];
+        b.bench(|| gearloss::thermal::balance(|t| losses.at(spec, Formulation::External, state, t).total(), &housing));
+    }
+
+    /// The 51-minute, 9-step cycle's transient at two tolerances and its fixed-temperature energy.
+    /// Target < 5 ms.
+    #[divan::bench(sample_count = 10, sample_size = 1)]
+    fn duty_cycle_transient(b: divan::Bencher) {
+        let scene = scene();
+        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
+        let losses = Losses::new(&scene, &eval).unwrap();
+        let housing = scene.housing.clone().unwrap();
+        let cycle = scene.duty_cycle.clone().unwrap();
+        b.bench(|| duty_cycle(&losses, &housing, &cycle, Some(363.15)));
+    }
+}

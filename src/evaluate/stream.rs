@@ -105,9 +105,11 @@ fn point_summary(
         thermal: None,
     };
     let budget = eval.loss_budget(scene, &state);
-    let thermal = scene.housing.as_ref().zip(Losses::new(scene, eval)).filter(|_| {
-        scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some()
-    });
+    let thermal = scene
+        .housing
+        .as_ref()
+        .zip(Losses::new(scene, eval))
+        .filter(|_| scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some());
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();

@@ -125,7 +125,8 @@ pub fn thermal_point(
     let p_v = |t: f64| losses.at(spec, f, state, t).total();
     let balance = thermal::balance(p_v, housing);
     let t = balance.temperature.unwrap_or(thermal::balance::SEARCH_LIMIT);
-    let at_torque = |torque: f64, t: f64| losses.at(spec, f, OperatingState { pinion_torque: torque, ..state }, t).total();
+    let at_torque =
+        |torque: f64, t: f64| losses.at(spec, f, OperatingState { pinion_torque: torque, ..state }, t).total();
     let guess = state.pinion_torque.max(1.0);
     ThermalPoint {
         balance,

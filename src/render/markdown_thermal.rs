@@ -98,7 +98,10 @@ pub fn thermal_section(r: &Report) -> String {
             super::table::law_words(&d.label),
             d.error_estimate.as_ref().map_or("—".to_string(), |e| format!("{:.1e}", e.si()))
         );
-        header(&mut out, &["step", "duration, torque, speed", "θ at end °C", "energy lost kJ", "energy lost at fixed θ kJ"]);
+        header(
+            &mut out,
+            &["step", "duration, torque, speed", "θ at end °C", "energy lost kJ", "energy lost at fixed θ kJ"],
+        );
         for (k, s) in d.steps.iter().enumerate() {
             row(
                 &mut out,
@@ -111,7 +114,9 @@ pub fn thermal_section(r: &Report) -> String {
                 ],
             );
         }
-        let pct = |x: Option<crate::report::number::Num>| x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)));
+        let pct = |x: Option<crate::report::number::Num>| {
+            x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)))
+        };
         let _ = writeln!(out);
         let _ = writeln!(out, "- Energy in: {} kJ.", fixed(d.energy_in.si() / 1e3, 2));
         if let (Some(lost), Some(given)) = (&d.energy_lost, &d.energy_dissipated) {

@@ -29,8 +29,36 @@ impl<'de> Deserialize<'de> for Num {
 /// Every SI unit a report writes (a [`Q`] read back takes its unit from here; the round trip of every
 /// scene in `specs/` is a test).
 pub const UNITS: &[&str] = &[
-    "1", "1/Pa", "1/m", "1/s", "Hz", "J", "K", "N", "N*m", "N*s/m", "N/m", "N/m^2", "Pa", "Pa*s", "W", "kg", "kg*m^2",
-    "kg/m^3", "m", "m/s", "m/s^2", "m^2/s", "m^3/s", "rad", "rad/s", "s", "m^2", "J/K", "W/K", "W/(m^2*K)",
+    "1",
+    "1/Pa",
+    "1/m",
+    "1/s",
+    "Hz",
+    "J",
+    "K",
+    "N",
+    "N*m",
+    "N*s/m",
+    "N/m",
+    "N/m^2",
+    "Pa",
+    "Pa*s",
+    "W",
+    "kg",
+    "kg*m^2",
+    "kg/m^3",
+    "m",
+    "m/s",
+    "m/s^2",
+    "m^2/s",
+    "m^3/s",
+    "rad",
+    "rad/s",
+    "s",
+    "m^2",
+    "J/K",
+    "W/K",
+    "W/(m^2*K)",
 ];
 
 /// A dimensional value in SI with its unit.

@@ -157,14 +157,18 @@ pub fn housing_report(h: &Housing) -> HousingReport {
         emissivity: Num(h.emissivity),
         heat_capacity: h.heat_capacity.map(|c| Q::new(c, "J/K")),
         foundation_conductance: Q::new(h.foundation_conductance, "W/K"),
-        oil_cooler: h.cooler.map(|c| CoolerReport { conductance: Q::new(c.conductance, "W/K"), above: Q::new(c.above, "K") }),
+        oil_cooler: h
+            .cooler
+            .map(|c| CoolerReport { conductance: Q::new(c.conductance, "W/K"), above: Q::new(c.above, "K") }),
         max_oil_temperature: Q::new(h.max_oil_temperature, "K"),
     }
 }
 
 /// The thermal records of the kept efficiency rows.
 pub fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord> {
-    let rating = |torque: Option<f64>, omega: f64| torque.map(|t| Rating { torque: Q::new(t, "N*m"), power: Q::new(t * omega, "W") });
+    let rating = |torque: Option<f64>, omega: f64| {
+        torque.map(|t| Rating { torque: Q::new(t, "N*m"), power: Q::new(t * omega, "W") })
+    };
     tally
         .kept
         .iter()
@@ -245,10 +249,12 @@ pub fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Opt
         energy_dissipated: transient.map(|t| Q::new(t.steps.iter().map(|s| s.energy_dissipated).sum(), "J")),
         efficiency: lost.and_then(efficiency),
         error_estimate: transient.map(|t| Q::new(t.error, "K")),
-        fixed_temperature: fixed_lost.zip(scene.operating.oil_temperature.as_ref()).map(|(e, t)| FixedTemperatureReport {
-            oil_temperature: Q::new(t.value.value, "K"),
-            energy_lost: Q::new(e, "J"),
-            efficiency: efficiency(e),
+        fixed_temperature: fixed_lost.zip(scene.operating.oil_temperature.as_ref()).map(|(e, t)| {
+            FixedTemperatureReport {
+                oil_temperature: Q::new(t.value.value, "K"),
+                energy_lost: Q::new(e, "J"),
+                efficiency: efficiency(e),
+            }
         }),
         samples: transient.map(|t| Samples {
             time: t.samples.iter().map(|s| s.0).collect(),
@@ -261,19 +267,35 @@ pub fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Opt
 
 /// Warnings of the thermal balance: above the limit, no balance, a transient that crosses the
 /// limit (when, in which step), a duty cycle without a heat capacity, a transient that failed.
-pub fn thermal_findings(scene: &Scene, records: &[ThermalRecord], duty: Option<&DutyCycleReport>, d: Option<&DutyCycleResult>) -> Vec<Finding> {
+pub fn thermal_findings(
+    scene: &Scene,
+    records: &[ThermalRecord],
+    duty: Option<&DutyCycleReport>,
+    d: Option<&DutyCycleResult>,
+) -> Vec<Finding> {
     let mut out = Vec::new();
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     let celsius = |q: &Q| q.si() - 273.15;
     for r in records {
-        let at = format!("{} N·m, {:.0} rpm, {} ({})", r.pinion_torque.si(), r.pinion_speed.si() * 30.0 / std::f64::consts::PI, r.label, r.formulation.name());
+        let at = format!(
+            "{} N·m, {:.0} rpm, {} ({})",
+            r.pinion_torque.si(),
+            r.pinion_speed.si() * 30.0 / std::f64::consts::PI,
+            r.label,
+            r.formulation.name()
+        );
         match (r.status, &r.oil_temperature) {
-            (BalanceStatus::AboveLimit, Some(t)) => out.push(warn(format!("the sump settles at {:.1} °C, above the oil's limit, at {at}", celsius(t)))),
-            (BalanceStatus::NoEquilibrium, _) => out.push(warn(format!("no thermal balance up to 200 °C at {at}: the housing cannot give off the losses"))),
+            (BalanceStatus::AboveLimit, Some(t)) => {
+                out.push(warn(format!("the sump settles at {:.1} °C, above the oil's limit, at {at}", celsius(t))))
+            }
+            (BalanceStatus::NoEquilibrium, _) => out
+                .push(warn(format!("no thermal balance up to 200 °C at {at}: the housing cannot give off the losses"))),
             _ => {}
         }
     }
-    if let (Some(_), Some(h)) = (scene.duty_cycle.as_ref().filter(|_| scene.analyses.duty_cycle.is_some()), scene.housing.as_ref()) {
+    if let (Some(_), Some(h)) =
+        (scene.duty_cycle.as_ref().filter(|_| scene.analyses.duty_cycle.is_some()), scene.housing.as_ref())
+    {
         if h.heat_capacity.is_none() {
             out.push(warn("the duty cycle's transient needs the housing's `heat_capacity`: only the energy at the fixed oil temperature is given".into()));
         }

@@ -57,9 +57,11 @@ fn standing_and_idling_steps() {
     let eval = prepare(&scene, &plan);
     let losses = Losses::new(&scene, &eval).unwrap();
     let spec = &scene.friction[0];
-    let standing = losses.at(spec, Formulation::External, OperatingState { pinion_torque: 100.0, pinion_speed: 0.0 }, 350.0);
+    let standing =
+        losses.at(spec, Formulation::External, OperatingState { pinion_torque: 100.0, pinion_speed: 0.0 }, 350.0);
     assert_eq!(standing.total(), 0.0);
-    let idling = losses.at(spec, Formulation::External, OperatingState { pinion_torque: 0.0, pinion_speed: 200.0 }, 350.0);
+    let idling =
+        losses.at(spec, Formulation::External, OperatingState { pinion_torque: 0.0, pinion_speed: 200.0 }, 350.0);
     assert_eq!(idling.mesh, 0.0);
     assert!(idling.total() > 0.0 && idling.total().is_finite());
 }
@@ -70,7 +72,8 @@ fn standing_and_idling_steps() {
 #[test]
 fn equilibrium_records_balance_the_heat() {
     let path = crate::root().join("specs/fzg_c14_thermal.gear");
-    let text = std::fs::read_to_string(&path).unwrap().replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
+    let text =
+        std::fs::read_to_string(&path).unwrap().replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
     let scene = gearloss::check("equilibrium.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
     let report = gearloss::report_of(&scene);
     let housing = scene.housing.as_ref().unwrap();
@@ -89,10 +92,9 @@ fn equilibrium_records_balance_the_heat() {
 fn too_many_duty_steps() {
     let path = crate::root().join("specs/fzg_c14_thermal.gear");
     let steps = "        step(duration = 1 s, pinion_torque = 10 N*m, pinion_speed = 100 rpm)\n".repeat(10_001);
-    let text = std::fs::read_to_string(&path).unwrap().replace(
-        "    duty_cycle \"EV-like cycle\" {\n",
-        &format!("    duty_cycle \"EV-like cycle\" {{\n{steps}"),
-    );
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("    duty_cycle \"EV-like cycle\" {\n", &format!("    duty_cycle \"EV-like cycle\" {{\n{steps}"));
     let err = gearloss::check("steps.gear", &text).unwrap_err().render(false);
     assert!(err.contains("above the limit of 10000"), "{err}");
 }

@@ -52,7 +52,10 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], PALETTE[1].stroke_width(2)));
         if limit < x1 {
             chart
-                .draw_series(std::iter::once(PathElement::new([(limit, y0), (limit, y1)], BLACK.mix(0.6).stroke_width(2))))
+                .draw_series(std::iter::once(PathElement::new(
+                    [(limit, y0), (limit, y1)],
+                    BLACK.mix(0.6).stroke_width(2),
+                )))
                 .map_err(err)?
                 .label(format!("oil limit {limit:.0} °C"))
                 .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], BLACK.mix(0.6).stroke_width(2)));
@@ -119,12 +122,18 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
             start = stop;
         }
         chart
-            .draw_series(LineSeries::new(minutes.iter().copied().zip(theta.iter().copied()), PALETTE[0].stroke_width(2)))
+            .draw_series(LineSeries::new(
+                minutes.iter().copied().zip(theta.iter().copied()),
+                PALETTE[0].stroke_width(2),
+            ))
             .map_err(err)?
             .label("θ(t) (steps shaded alternately)")
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], PALETTE[0].stroke_width(2)));
         chart
-            .draw_series(std::iter::once(PathElement::new([(0.0, limit), (end, limit)], BLACK.mix(0.6).stroke_width(2))))
+            .draw_series(std::iter::once(PathElement::new(
+                [(0.0, limit), (end, limit)],
+                BLACK.mix(0.6).stroke_width(2),
+            )))
             .map_err(err)?
             .label(format!("oil limit {limit:.0} °C"))
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], BLACK.mix(0.6).stroke_width(2)));
