@@ -28,6 +28,8 @@
 //!  model                          the lowered scene (uom quantities, what the user wrote)
 //!  dynamics/                      the n-state periodic engine (PeriodicModel: propagators, Floquet,
 //!                                 trajectory, integrators, numerics study) and its models (SDOF)
+//!  thermal/                       the housing as one thermal node, the balance θ*, the rating, a duty
+//!                                 cycle's transient (the losses come in as a function of θ)
 //!  efficiency                     η(t), η̄ and power loss of a law along the mesh cycle
 //!  friction/                      the law catalogue (typed LawId, one constructor each), one law a file
 //!  tribology/                     lubricant and surface data in SI, film thickness
