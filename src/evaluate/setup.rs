@@ -50,17 +50,7 @@ impl Setup {
     /// (lowering has checked that it has a lubricant then).
     pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
         let gearbox = scene.gearbox.as_ref()?;
-        let t = &self.tribology;
-        let oil = crate::losses::Oil {
-            nu: t.kinematic_viscosity.unwrap_or(f64::NAN),
-            rho: t.density().unwrap_or(f64::NAN),
-            eta: t.dynamic_viscosity,
-            mineral: scene
-                .lubricant
-                .as_ref()
-                .and_then(|l| l.kind)
-                .is_none_or(|k| k == crate::model::LubricantType::Mineral),
-        };
+        let oil = budget_oil(scene, &self.tribology);
         Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, &oil))
     }
 
@@ -86,6 +76,21 @@ impl Setup {
         }
         u.sort_by(f64::total_cmp);
         u
+    }
+}
+
+/// The oil as the losses beside the mesh read it, from the tribology at the oil temperature
+/// (ρ = η/ν; a lubricant of unknown base counts as mineral).
+pub fn budget_oil(scene: &Scene, t: &Tribology) -> crate::losses::Oil {
+    crate::losses::Oil {
+        nu: t.kinematic_viscosity.unwrap_or(f64::NAN),
+        rho: t.density().unwrap_or(f64::NAN),
+        eta: t.dynamic_viscosity,
+        mineral: scene
+            .lubricant
+            .as_ref()
+            .and_then(|l| l.kind)
+            .is_none_or(|k| k == crate::model::LubricantType::Mineral),
     }
 }
 

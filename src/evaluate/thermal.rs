@@ -10,8 +10,8 @@ use super::setup::Setup;
 use crate::efficiency::{self, Formulation};
 use crate::friction::catalog::FrictionLawSpec;
 use crate::geometry::OperatingState;
-use crate::losses::{loss_budget, LossBudget, Oil};
-use crate::model::{LubricantType, Scene};
+use crate::losses::{loss_budget, LossBudget};
+use crate::model::Scene;
 use crate::thermal::{self, Balance, DutyCycle, Housing};
 use crate::tribology::lubricant::OilData;
 use crate::tribology::Tribology;
@@ -26,7 +26,6 @@ pub struct Losses<'a> {
     oil: OilData,
     /// α given in the scene (kept at every temperature), or `None` to take the base oil's.
     alpha: Option<f64>,
-    mineral: bool,
 }
 
 /// The losses at one oil temperature (W).
@@ -49,8 +48,7 @@ impl<'a> Losses<'a> {
         let l = scene.lubricant.as_ref()?;
         let oil = l.oil.clone()?;
         let alpha = if l.alpha_from_oil { None } else { setup.tribology.pressure_viscosity };
-        let mineral = l.kind.is_none_or(|k| k == LubricantType::Mineral);
-        Some(Losses { scene, setup, oil, alpha, mineral })
+        Some(Losses { scene, setup, oil, alpha })
     }
 
     /// The tribology of the setup with the oil at `t` (K).
@@ -88,12 +86,7 @@ impl<'a> Losses<'a> {
             0.0
         };
         let budget = self.scene.gearbox.as_ref().map(|g| {
-            let oil = Oil {
-                nu: tribology.kinematic_viscosity.unwrap_or(f64::NAN),
-                rho: tribology.density().unwrap_or(f64::NAN),
-                eta: tribology.dynamic_viscosity,
-                mineral: self.mineral,
-            };
+            let oil = super::setup::budget_oil(self.scene, &tribology);
             loss_budget(g, &self.setup.geometry, state.pinion_torque, state.pinion_speed, &oil)
         });
         LossesAt { mesh, budget }

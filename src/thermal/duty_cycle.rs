@@ -20,11 +20,6 @@ pub struct DutyCycle {
 }
 
 impl DutyCycle {
-    /// Σ Δt (s).
-    pub fn duration(&self) -> f64 {
-        self.steps.iter().map(|s| s.duration).sum()
-    }
-
     /// E_in = Σ T ω Δt (J).
     pub fn energy_in(&self) -> f64 {
         self.steps.iter().map(|s| s.pinion_torque * s.pinion_speed * s.duration).sum()
