@@ -10,6 +10,7 @@ pub mod pair;
 pub mod path;
 pub mod regions;
 pub mod stiffness;
+pub mod teeth;
 
 pub use contact::{ContactPoint, OperatingState};
 pub use involute::involute;

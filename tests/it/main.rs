@@ -15,6 +15,7 @@ mod oil_sweep;
 mod properties;
 mod six_dof;
 mod specs;
+mod stiffness;
 mod sweeps;
 mod thermal;
 mod units;

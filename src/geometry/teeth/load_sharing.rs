@@ -1,0 +1,225 @@
+//! Load sharing by compatibility of deflections, with tip relief, and the static transmission
+//! error (physics: README, "Mesh stiffness from the teeth").
+//!
+//! The pairs in contact all close the same gap δ along the line of action; pair j, whose teeth are
+//! relieved by e_j at its contact, carries F_j = k_j max(0, δ − e_j), and δ solves Σ F_j = F_bn,
+//! F_bn = T_p / r_b1 (along the transverse line of action). For a spur pair that sum is piecewise
+//! linear in δ and is solved exactly (the pairs taken in the order of their relief); without relief
+//! δ = F_bn/K and w_j = k_j/K. For a helical pair each line's load is the integral over its
+//! transverse positions q of k_w(q) max(0, δ − e(q)) dq / tan β_b, in closed form (e is a
+//! polynomial of degree ≤ 2 between the relief starts, cut where e = δ, against the series of
+//! ∫ q^p k_w), and δ is found by Brent's method to 1e-15 of its size. δ is
+//! the static transmission error (STE), positive when the wheel lags.
+//!
+//! Tip relief of one gear: amount C_a at its tip, length L_a along the line of action from where
+//! its tip circle meets the path (the pinion's at E, s = g_α; the wheel's at A, s = 0); at u from
+//! the start of the relief toward the tip, e = C_a u/L_a (linear) or C_a (u/L_a)² (parabolic).
+
+use serde::{Deserialize, Serialize};
+
+use super::pair_stiffness::PairStiffness;
+use crate::numerics::roots::brent;
+
+/// How the relief grows toward the tip.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReliefShape {
+    Linear,
+    Parabolic,
+}
+
+impl ReliefShape {
+    pub fn name(self) -> &'static str {
+        match self {
+            ReliefShape::Linear => "linear",
+            ReliefShape::Parabolic => "parabolic",
+        }
+    }
+}
+
+/// The tip relief of one gear (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TipRelief {
+    pub amount: f64,
+    pub length: f64,
+    pub shape: ReliefShape,
+}
+
+impl TipRelief {
+    /// e at u from the start of the relief toward the tip (0 before it).
+    pub fn at(&self, u: f64) -> f64 {
+        if u <= 0.0 {
+            return 0.0;
+        }
+        let t = (u / self.length).min(1.0);
+        match self.shape {
+            ReliefShape::Linear => self.amount * t,
+            ReliefShape::Parabolic => self.amount * t * t,
+        }
+    }
+
+    /// e as a polynomial in q, c₀ + c₁ q + c₂ q², where u = sign (q − start).
+    fn polynomial(&self, start: f64, sign: f64) -> [f64; 3] {
+        // u = sign q − sign start.
+        let (a, b) = (sign / self.length, -sign * start / self.length);
+        match self.shape {
+            ReliefShape::Linear => [self.amount * b, self.amount * a, 0.0],
+            ReliefShape::Parabolic => [self.amount * b * b, 2.0 * self.amount * a * b, self.amount * a * a],
+        }
+    }
+}
+
+/// The reliefs of both teeth of a pair: [pinion, wheel].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Reliefs(pub [Option<TipRelief>; 2]);
+
+impl Reliefs {
+    /// e(q) = e₁ + e₂ at position q from A on a path of length g_α.
+    pub fn at(&self, path: f64, q: f64) -> f64 {
+        let [p, w] = self.0;
+        p.map_or(0.0, |r| r.at(q - (path - r.length))) + w.map_or(0.0, |r| r.at(r.length - q))
+    }
+
+    /// Where a relief starts (positions from A).
+    pub fn starts(&self, path: f64) -> Vec<f64> {
+        let [p, w] = self.0;
+        p.map(|r| path - r.length).into_iter().chain(w.map(|r| r.length)).collect()
+    }
+
+    /// e(q) as c₀ + c₁ q + c₂ q² on a piece around q (no relief starts inside the piece).
+    fn polynomial_near(&self, path: f64, q: f64) -> [f64; 3] {
+        let [p, w] = self.0;
+        let mut c = [0.0; 3];
+        let mut add = |r: &TipRelief, start: f64, sign: f64| {
+            if sign * (q - start) > 0.0 {
+                let d = r.polynomial(start, sign);
+                (0..3).for_each(|i| c[i] += d[i]);
+            }
+        };
+        if let Some(r) = p {
+            add(&r, path - r.length, 1.0);
+        }
+        if let Some(r) = w {
+            add(&r, r.length, -1.0);
+        }
+        c
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.iter().all(Option::is_none)
+    }
+}
+
+/// The pairs' loads at one position of the cycle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shared {
+    /// δ, the static transmission error along the line of action (m).
+    pub deflection: f64,
+    /// (position, load F_j in N) of every pair in contact, the reference pair among them.
+    pub loads: Vec<(f64, f64)>,
+}
+
+impl Shared {
+    /// The load of the pair at `s` (0 when it is not in contact).
+    pub fn load_of(&self, s: f64) -> f64 {
+        self.loads.iter().find(|(q, _)| (q - s).abs() < 1e-12).map_or(0.0, |(_, f)| *f)
+    }
+}
+
+/// A pair's stiffness with its reliefs: the load sharing at any torque.
+#[derive(Debug, Clone)]
+pub struct LoadSharing {
+    pub stiffness: PairStiffness,
+    pub reliefs: Reliefs,
+}
+
+impl LoadSharing {
+    /// The sharing of the force `force` (N, along the line of action) when a pair is at `s`.
+    pub fn at(&self, s: f64, force: f64) -> Shared {
+        let k = &self.stiffness;
+        let positions = k.pairs_with(s);
+        if self.reliefs.is_empty() {
+            let total: f64 = positions.iter().map(|q| k.pair_at(*q)).sum();
+            let delta = force / total;
+            return Shared {
+                deflection: delta,
+                loads: positions.iter().map(|q| (*q, k.pair_at(*q) * delta)).collect(),
+            };
+        }
+        if !k.is_helical() {
+            return self.spur_with_relief(&positions, force);
+        }
+        let total: f64 = positions.iter().map(|q| k.pair_at(*q)).sum();
+        let e_max: f64 = self.reliefs.0.iter().flatten().map(|r| r.amount).sum();
+        let lo = force / total;
+        let sum = |d: f64| positions.iter().map(|q| self.line_load(*q, d)).sum::<f64>() - force;
+        let delta = brent(sum, lo, lo + e_max, 1e-15 * (lo + e_max));
+        Shared { deflection: delta, loads: positions.iter().map(|q| (*q, self.line_load(*q, delta))).collect() }
+    }
+
+    fn spur_with_relief(&self, positions: &[f64], force: f64) -> Shared {
+        let k = &self.stiffness;
+        let mut pairs: Vec<(f64, f64, f64)> =
+            positions.iter().map(|q| (*q, k.pair_at(*q), self.reliefs.at(k.path, *q))).collect();
+        pairs.sort_by(|a, b| a.2.total_cmp(&b.2));
+        let (mut sum_k, mut sum_ke) = (0.0, 0.0);
+        let mut delta = f64::NAN;
+        for (i, (_, kj, ej)) in pairs.iter().enumerate() {
+            sum_k += kj;
+            sum_ke += kj * ej;
+            let d = (force + sum_ke) / sum_k;
+            if pairs.get(i + 1).is_none_or(|next| d <= next.2) {
+                delta = d;
+                break;
+            }
+        }
+        let mut loads: Vec<(f64, f64)> = pairs.iter().map(|(q, kj, ej)| (*q, kj * (delta - ej).max(0.0))).collect();
+        loads.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Shared { deflection: delta, loads }
+    }
+
+    /// The load (N) of the helical line whose mid-face is at s, at a gap δ.
+    fn line_load(&self, s: f64, delta: f64) -> f64 {
+        let k = &self.stiffness;
+        let (lo, hi) = ((s - 0.5 * k.lead).max(0.0), (s + 0.5 * k.lead).min(k.path));
+        if hi <= lo {
+            return 0.0;
+        }
+        let mut breaks = vec![lo, hi];
+        breaks.extend(self.reliefs.starts(k.path).into_iter().filter(|b| *b > lo && *b < hi));
+        breaks.sort_by(f64::total_cmp);
+        let mut total = 0.0;
+        for w in breaks.windows(2) {
+            // On the piece δ − e(q) = d₀ − c₁ q − c₂ q²; integrate it against k_w where positive.
+            let [c0, c1, c2] = self.reliefs.polynomial_near(k.path, 0.5 * (w[0] + w[1]));
+            let mut cuts = vec![w[0], w[1]];
+            cuts.extend(quadratic_roots(c2, c1, c0 - delta).into_iter().filter(|r| *r > w[0] && *r < w[1]));
+            cuts.sort_by(f64::total_cmp);
+            for piece in cuts.windows(2) {
+                let m = 0.5 * (piece[0] + piece[1]);
+                if delta - (c0 + c1 * m + c2 * m * m) > 0.0 {
+                    let [i0, i1, i2] = k.weighted_integral(piece[0], piece[1]);
+                    total += (delta - c0) * i0 - c1 * i1 - c2 * i2;
+                }
+            }
+        }
+        k.face_width / k.lead * total
+    }
+}
+
+/// Real roots of a x² + b x + c (a linear or constant one when a or b vanish).
+fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+    if a == 0.0 {
+        return if b == 0.0 { Vec::new() } else { vec![-c / b] };
+    }
+    let d = b * b - 4.0 * a * c;
+    if d < 0.0 {
+        return Vec::new();
+    }
+    // The stable pair: q = −(b + sign(b)√d)/2, roots q/a and c/q.
+    let q = -0.5 * (b + b.signum() * d.sqrt());
+    if q == 0.0 {
+        return vec![0.0];
+    }
+    vec![q / a, c / q]
+}
