@@ -106,17 +106,22 @@ pub enum StiffnessSpec {
 
 impl StiffnessSpec {
     /// The model on the pair `g`.
-    pub fn build(&self, g: &PairGeometry) -> StiffnessModel {
+    pub fn build(&self, g: &PairGeometry, bodies: &crate::geometry::teeth::pair_stiffness::Bodies) -> StiffnessModel {
         match self {
             StiffnessSpec::Pairs { single, double, triple } => {
                 StiffnessModel::pairs_in_contact(*single, *double, triple.unwrap_or(1.5 * double))
             }
             StiffnessSpec::Named(id) => {
-                (id.entry().from_geometry.expect("lowering names only models built from the geometry"))(g)
+                (id.entry().from_geometry.expect("lowering names only models built from the geometry"))(g, bodies)
             }
             StiffnessSpec::Table(v) => StiffnessModel::table(v.clone()),
             StiffnessSpec::PerLength(k) => StiffnessModel::per_length(*k, g),
         }
+    }
+
+    /// Whether the stiffness is computed from the teeth (the scene's teeth must then be checked).
+    pub fn is_potential_energy(&self) -> bool {
+        matches!(self, StiffnessSpec::Named(StiffnessId::PotentialEnergy))
     }
 
     /// Where the values come from, as the report says it (`given`, `table`, `per_length` or the
@@ -229,6 +234,20 @@ pub struct Gear {
     pub roughness_ra: Option<Given<Length>>,
     pub roughness_rq: Option<Given<Length>>,
     pub roughness_rz: Option<Given<Length>>,
+    /// Root diameter d_f (default from the basic rack, h_fP = 1.25 m_n).
+    pub root_diameter: Option<Given<Length>>,
+    /// Bore diameter, the fillet foundation's inner boundary (default d_f/2).
+    pub bore_diameter: Option<Given<Length>>,
+    pub tip_relief: Option<TipReliefSpec>,
+    pub span: Span,
+}
+
+/// `tip_relief { amount = 10 um  length = 1.8 mm  shape = linear }`.
+#[derive(Debug, Clone)]
+pub struct TipReliefSpec {
+    pub amount: Given<Length>,
+    pub length: Given<Length>,
+    pub shape: crate::geometry::teeth::load_sharing::ReliefShape,
     pub span: Span,
 }
 
@@ -390,4 +409,6 @@ pub struct Analyses {
     /// `thermal_balance` and `duty_cycle`, with where they were asked for.
     pub thermal_balance: Option<Span>,
     pub duty_cycle: Option<Span>,
+    /// `transmission_error(pinion_torque = [...] N*m)`: the torques.
+    pub transmission_error: Option<Sweep<Torque>>,
 }

@@ -81,8 +81,8 @@ pub struct DynamicsEvaluation {
     pub numerics: Option<(DynamicFormulation, usize, Study)>,
 }
 
-fn stiffness_model(spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
-    (spec.stiffness.build(g), spec.stiffness.source())
+fn stiffness_model(scene: &Scene, spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
+    (spec.stiffness.build(g, &scene.gears.bodies()), spec.stiffness.source())
 }
 
 fn inertia(scene: &Scene) -> [f64; 2] {
@@ -181,7 +181,7 @@ impl<'a> DynamicsSetup<'a> {
     /// (its state is replaced by each operating point's).
     pub fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
         let spec = scene.dynamics.as_ref()?;
-        let (stiffness, source) = stiffness_model(spec, base.geometry);
+        let (stiffness, source) = stiffness_model(scene, spec, base.geometry);
         let six = match spec.model {
             DynamicModel::SixDof { bearings } => {
                 let m = |g: &crate::model::Gear| g.mass.as_ref().map_or(f64::NAN, |m| m.value.value);

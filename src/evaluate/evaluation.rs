@@ -23,6 +23,8 @@ pub struct Evaluation {
     pub efficiency_map: Option<EfficiencyMap>,
     /// The heat-balance curve and the duty cycle, when the scene asks for them.
     pub thermal: Option<super::thermal::ThermalDetails>,
+    /// The teeth's stiffness and transmission error, when the scene asks for them.
+    pub teeth: Option<super::teeth::TeethDetails>,
 }
 
 impl std::ops::Deref for Evaluation {

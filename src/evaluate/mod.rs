@@ -16,6 +16,7 @@ pub mod records;
 pub mod setup;
 pub mod stream;
 pub mod tally;
+pub mod teeth;
 pub mod thermal;
 
 use rayon::prelude::*;
@@ -90,6 +91,7 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
         dynamics: None,
         efficiency_map: None,
         thermal: None,
+        teeth: None,
     }
 }
 
@@ -128,4 +130,5 @@ pub fn evaluate_details(
     eval.dynamics = dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), known);
     eval.efficiency_map = map::evaluate_map(scene, eval);
     eval.thermal = thermal::thermal_details(scene, eval);
+    eval.teeth = teeth::teeth_details(scene, &eval.geometry);
 }

@@ -183,6 +183,7 @@ pub fn render_markdown(r: &Report) -> String {
     out.push_str(&super::markdown_bearings::bearings_section(r));
     out.push_str(&super::markdown_losses::map_section(r));
     out.push_str(&super::markdown_thermal::thermal_section(r));
+    out.push_str(&super::markdown_teeth::teeth_section(r));
     super::markdown_dynamics::dynamics(&mut out, r);
     super::markdown_sweep::sweep_summary(&mut out, r);
 

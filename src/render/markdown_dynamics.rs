@@ -35,6 +35,11 @@ pub fn dynamics(out: &mut String, r: &Report) {
             fixed(cos2_base_helix_angle.0, 6),
             d.stiffness_source.replace('_', " ")
         ),
+        StiffnessReport::Computed { mean_mesh_stiffness } => format!(
+            "from the teeth, mean {} N/µm over a mesh cycle ({}; the curve is in *Mesh stiffness from the teeth*)",
+            fixed(mean_mesh_stiffness.si() * 1e-6, 2),
+            d.stiffness_source.replace('_', " ")
+        ),
     };
     for (q, v) in [
         ("mesh stiffness", k),

@@ -7,6 +7,7 @@ pub mod markdown_friction;
 pub mod markdown_helical;
 pub mod markdown_losses;
 pub mod markdown_sweep;
+pub mod markdown_teeth;
 pub mod markdown_thermal;
 pub mod oil_sweep;
 pub mod svg;
@@ -104,6 +105,9 @@ pub fn render_report(report: &Report, timings: Option<&Timings>) -> Result<Rende
             PlotKind::HeatBalance => svg::heat_balance(report)?,
             PlotKind::DutyCycleTemperature => svg::duty_cycle_temperature(report)?,
             PlotKind::DutyCycleEnergy => svg::duty_cycle_energy(report)?,
+            PlotKind::MeshStiffness => svg::mesh_stiffness(report)?,
+            PlotKind::TransmissionError => svg::transmission_error(report)?,
+            PlotKind::LoadShare => svg::load_share(report)?,
             PlotKind::WorkPrecision => match timings {
                 Some(t) => svg::work_precision(report, t)?,
                 None => continue,

@@ -32,6 +32,10 @@ pub enum StiffnessReport {
         per_length: Q,
         cos2_base_helix_angle: Num,
     },
+    /// Computed from the teeth: the mean over a cycle (the curve is report.json's `stiffness`).
+    Computed {
+        mean_mesh_stiffness: Q,
+    },
 }
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -152,6 +156,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
             per_length: Q::new(*density, "N/m^2"),
             cos2_base_helix_angle: Num(*cos2_base_helix),
         },
+        StiffnessShape::Computed { mean } => StiffnessReport::Computed { mean_mesh_stiffness: Q::new(*mean, "N/m") },
     };
     let g = &eval.geometry;
     let tau_b = g.contact_ratio.fract();
@@ -333,7 +338,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         description: d.description.into(),
         stiffness_step_ratio: match shape {
             StiffnessShape::Pairs { single, double, .. } => Some(double / single),
-            StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } => None,
+            StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } | StiffnessShape::Computed { .. } => None,
         },
         stiffness_source: d.stiffness_source.into(),
         stiffness,

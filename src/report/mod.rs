@@ -19,6 +19,7 @@ pub mod points;
 pub mod scene;
 pub mod scene_report;
 pub mod sweep;
+pub mod teeth;
 pub mod thermal;
 
 pub use finding::{Finding, Severity};
@@ -94,7 +95,27 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         thermal: thermal::thermal_records(scene, tally),
         heat_balance: None,
         duty_cycle: None,
+        stiffness: None,
+        transmission_error: Vec::new(),
     };
+    if let Some(t) = &eval.teeth {
+        let s = teeth::stiffness_report(scene, t);
+        report.findings.extend(teeth::teeth_findings(scene, &s));
+        report.stiffness = Some(s);
+        report.transmission_error = teeth::transmission_error_reports(t);
+        report.plots.push(PlotRef::new(
+            PlotKind::MeshStiffness,
+            "Mesh stiffness from the teeth over two mesh cycles, one pair's stiffness, and ISO 6336-1's c_γα",
+        ));
+        if !report.transmission_error.is_empty() {
+            report
+                .plots
+                .push(PlotRef::new(PlotKind::TransmissionError, "Static transmission error over one mesh cycle"));
+            report
+                .plots
+                .push(PlotRef::new(PlotKind::LoadShare, "Load share of one tooth pair along the path of contact"));
+        }
+    }
     if let (Some(t), Some(h)) = (&eval.thermal, &scene.housing) {
         report.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
         report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h));

@@ -87,10 +87,16 @@ pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
             ("roughness_ra", &gear.roughness_ra),
             ("roughness_rq", &gear.roughness_rq),
             ("roughness_rz", &gear.roughness_rz),
+            ("root_diameter", &gear.root_diameter),
+            ("bore_diameter", &gear.bore_diameter),
         ] {
             if let Some(r) = r {
                 input(&mut rows, &format!("{name}.{key}"), r, "m");
             }
+        }
+        if let Some(t) = &gear.tip_relief {
+            input(&mut rows, &format!("{name}.tip_relief.amount"), &t.amount, "m");
+            input(&mut rows, &format!("{name}.tip_relief.length"), &t.length, "m");
         }
         input(
             &mut rows,

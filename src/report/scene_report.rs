@@ -66,6 +66,12 @@ pub struct Report {
     pub heat_balance: Option<super::thermal::HeatBalanceReport>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub duty_cycle: Option<super::thermal::DutyCycleReport>,
+    /// The mesh stiffness from the teeth, when the scene asks for it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness: Option<super::teeth::TeethStiffnessReport>,
+    /// One static transmission error per asked torque.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub transmission_error: Vec<super::teeth::TransmissionErrorReport>,
 }
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -101,6 +107,9 @@ pub enum PlotKind {
     HeatBalance,
     DutyCycleTemperature,
     DutyCycleEnergy,
+    MeshStiffness,
+    TransmissionError,
+    LoadShare,
 }
 
 impl PlotKind {
@@ -122,6 +131,9 @@ impl PlotKind {
             PlotKind::HeatBalance => "heat_balance.svg",
             PlotKind::DutyCycleTemperature => "duty_cycle_temperature.svg",
             PlotKind::DutyCycleEnergy => "duty_cycle_energy.svg",
+            PlotKind::MeshStiffness => "mesh_stiffness.svg",
+            PlotKind::TransmissionError => "transmission_error.svg",
+            PlotKind::LoadShare => "load_share.svg",
         }
     }
 }

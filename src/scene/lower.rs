@@ -28,6 +28,7 @@ const ANALYSES: &[&str] = &[
     "numerics",
     "thermal_balance",
     "duty_cycle",
+    "transmission_error",
 ];
 const FORMULATIONS: &[&str] = &["external", "internal"];
 
@@ -201,6 +202,15 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
             );
         }
     }
+    // The teeth as bodies: checked with the gears when the pair describes them, here when only an
+    // analysis or the dynamics' stiffness asks for them.
+    let wants_teeth =
+        analyses.transmission_error.is_some() || dynamics.as_ref().is_some_and(|d| d.stiffness.is_potential_energy());
+    if let (Some(g), true) = (&gears, wants_teeth) {
+        if !g.uses_teeth() {
+            super::lower_teeth::check_teeth(g, &mut errors);
+        }
+    }
     let equilibrium = operating.as_ref().and_then(|o| o.equilibrium);
     super::lower_thermal::check_thermal_needs(
         &super::lower_thermal::ThermalInputs {
@@ -301,6 +311,7 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                 a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
                 a.friction_span = a.friction_span.or(Some(call.span));
             }
+            "transmission_error" => a.transmission_error = super::lower_teeth::lower_transmission_error(call, errors),
             "stability_map" => {
                 a.stability_map = super::lower_dynamics::lower_stability_map(call, errors);
                 a.dynamics_span = Some(call.span);

@@ -344,7 +344,7 @@ pub(super) fn check_frequency_ratio(scene: &Scene, errors: &mut Vec<Diagnostic>)
     let Ok(g) = scene.gears.geometry() else { return };
     let j = |gear: &Gear| gear.inertia.as_ref().map(|j| j.value.value);
     let (Some(j1), Some(j2)) = (j(&scene.gears.pinion), j(&scene.gears.wheel)) else { return };
-    let k_max = spec.stiffness.build(&g).upper_bound(&g);
+    let k_max = spec.stiffness.build(&g, &scene.gears.bodies()).upper_bound(&g);
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
     let m_e = j1 * j2 / (j1 * rw * rw + j2 * rp * rp);
     let f_n = (k_max / m_e).sqrt() / (2.0 * std::f64::consts::PI);

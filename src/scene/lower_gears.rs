@@ -36,6 +36,8 @@ const GEAR_KEYS: &[&str] = &[
     "roughness_ra",
     "roughness_rq",
     "roughness_rz",
+    "root_diameter",
+    "bore_diameter",
 ];
 const MATERIAL_KEYS: &[&str] = &["youngs_modulus", "poisson_ratio"];
 
@@ -128,12 +130,16 @@ pub(super) fn lower_gears(
         }
     }
     check_geometry(&pair, errors)?;
+    if pair.uses_teeth() {
+        super::lower_teeth::check_teeth(&pair, errors)?;
+    }
     Some(pair)
 }
 
 fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut Vec<Diagnostic>) -> Option<Gear> {
     let name = block.kind.text.as_str();
-    let f = Fields::read(format!("the `{name}` block"), block.span, &block.items, GEAR_KEYS, &[], &[], errors);
+    let f =
+        Fields::read(format!("the `{name}` block"), block.span, &block.items, GEAR_KEYS, &["tip_relief"], &[], errors);
     let teeth = match f.values.get("teeth") {
         None => {
             errors.push(f.missing("teeth", "20"));
@@ -214,6 +220,9 @@ fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut 
         roughness_ra: ra,
         roughness_rq: rq,
         roughness_rz: rz,
+        root_diameter: positive(f.optional("root_diameter", errors), "root_diameter", errors),
+        bore_diameter: positive(f.optional("bore_diameter", errors), "bore_diameter", errors),
+        tip_relief: super::lower_teeth::lower_tip_relief(name, &f.blocks, errors),
         span: block.kind.span,
     })
 }

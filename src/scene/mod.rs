@@ -12,6 +12,7 @@ pub mod lower_gearbox;
 pub mod lower_gears;
 pub mod lower_lubricant;
 pub mod lower_operating;
+pub mod lower_teeth;
 pub mod lower_thermal;
 pub mod lower_tooth_system;
 pub mod parse;

@@ -5,9 +5,11 @@ use super::iso_6336;
 use super::mesh_stiffness::StiffnessModel;
 use super::pairs_in_contact::PairsInContact;
 use super::per_length::PerLength;
+use super::potential_energy;
 pub use super::stiffness_id::StiffnessId;
 use super::table::Table;
 use crate::geometry::pair::PairGeometry;
+use crate::geometry::teeth::pair_stiffness::Bodies;
 
 impl StiffnessId {
     /// The catalogue entry of this model.
@@ -30,7 +32,7 @@ pub struct StiffnessEntry {
     pub file: &'static str,
     pub title: &'static str,
     /// For a model computed from the geometry alone: its constructor (the scene names it).
-    pub from_geometry: Option<fn(&PairGeometry) -> StiffnessModel>,
+    pub from_geometry: Option<fn(&PairGeometry, &Bodies) -> StiffnessModel>,
 }
 
 /// Every stiffness model.
@@ -63,6 +65,13 @@ pub const MODELS: &[StiffnessEntry] = &[
         title: "ISO 6336-1 Method B estimate from c' and c_γα",
         from_geometry: Some(iso_6336::build),
     },
+    StiffnessEntry {
+        id: StiffnessId::PotentialEnergy,
+        name: "potential_energy",
+        file: "potential_energy.rs",
+        title: "potential-energy method from the teeth (bending, shear, axial, fillet foundation, Hertz)",
+        from_geometry: Some(potential_energy::build),
+    },
 ];
 
 /// The models a scene names by keyword (computed from the geometry alone).
@@ -89,6 +98,6 @@ impl StiffnessModel {
 
     /// The ISO 6336-1 estimate for the pair `g`.
     pub fn iso_6336(g: &PairGeometry) -> Self {
-        iso_6336::build(g)
+        iso_6336::iso_estimate(g)
     }
 }

@@ -12,6 +12,7 @@ use super::mesh_stiffness::StiffnessModel;
 use super::pairs_in_contact::PairsInContact;
 use super::per_length::PerLength;
 use crate::geometry::pair::PairGeometry;
+// (`build` takes the bodies only to share the catalogue's constructor type.)
 
 /// The ISO 6336-1 single-pair stiffness per face width c' (N/(mm·µm)).
 pub fn iso_6336_single_stiffness(g: &PairGeometry) -> f64 {
@@ -27,7 +28,12 @@ pub fn iso_6336_single_stiffness(g: &PairGeometry) -> f64 {
 }
 
 /// The ISO estimate for the pair `g`: rectangular (spur) or a stiffness density (helical).
-pub fn build(g: &PairGeometry) -> StiffnessModel {
+pub fn build(g: &PairGeometry, _: &crate::geometry::teeth::pair_stiffness::Bodies) -> StiffnessModel {
+    iso_estimate(g)
+}
+
+/// The ISO estimate for the pair `g` (materials do not enter it).
+pub fn iso_estimate(g: &PairGeometry) -> StiffnessModel {
     if g.is_helical() {
         let c_prime = iso_6336_single_stiffness(g) * g.helix_angle.cos() * 1e9; // N/m²
         let c_gamma = c_prime * (0.75 * g.contact_ratio + 0.25);

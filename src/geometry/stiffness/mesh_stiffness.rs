@@ -49,6 +49,9 @@ pub enum StiffnessShape {
     Table(Vec<f64>),
     /// A density along the contact lines (N/m²) and cos²β_b.
     PerLength { density: f64, cos2_base_helix: f64 },
+    /// Computed from the teeth: its mean over a cycle (N/m); the curve is in the report's
+    /// stiffness section.
+    Computed { mean: f64 },
 }
 
 /// A shared handle on a mesh stiffness model (cheap to clone).

@@ -13,6 +13,7 @@ pub mod iso_6336;
 pub mod mesh_stiffness;
 pub mod pairs_in_contact;
 pub mod per_length;
+pub mod potential_energy;
 pub mod stiffness_id;
 pub mod table;
 

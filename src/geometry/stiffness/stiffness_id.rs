@@ -7,4 +7,5 @@ pub enum StiffnessId {
     Table,
     PerLength,
     Iso6336,
+    PotentialEnergy,
 }

@@ -201,6 +201,11 @@ impl PairStiffness {
         self.relative_error = worst + self.teeth[0].relative_error + self.teeth[1].relative_error;
     }
 
+    /// An upper bound of k_w over the path: Σ|c_k| of its series (N/m²).
+    pub fn per_width_bound(&self) -> f64 {
+        self.series.iter().map(|c| c.abs()).sum()
+    }
+
     /// k_w(s) from the series (N/m²), s ∈ [0, g_α].
     pub fn per_width(&self, s: f64) -> f64 {
         clenshaw(&self.series, s / self.path)

@@ -8,6 +8,7 @@ mod losses;
 mod maps;
 mod panel;
 mod sweeps;
+mod teeth;
 mod thermal;
 
 pub use contact::{contact_state, film, point_friction};
@@ -17,4 +18,5 @@ pub use losses::{efficiency_map as efficiency_contours, loss_budget};
 pub use maps::efficiency_map;
 pub use panel::{figure, figure_with_legend, Panel};
 pub use sweeps::{composite_mu_vs_speed, sweep, sweep_mu};
+pub use teeth::{load_share, mesh_stiffness, transmission_error};
 pub use thermal::{duty_cycle_energy, duty_cycle_temperature, heat_balance};

@@ -1,0 +1,141 @@
+//! mesh_stiffness.svg (K(s) over two mesh cycles with the PEM mean and ISO 6336-1's c_γα b drawn,
+//! one pair's k(s) beside), transmission_error.svg (STE over one cycle, one curve per torque) and
+//! load_share.svg (one pair's share of F_bn along its path, one curve per torque). Positions in mm
+//! from A, stiffness in N/µm, STE in µm.
+
+use plotters::prelude::*;
+
+use super::panel::{plottable, PALETTE};
+use crate::report::Report;
+
+fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
+    e.to_string()
+}
+
+/// A labelled curve, a style index, and whether it is dashed (a reference line).
+struct Curve {
+    label: String,
+    points: Vec<(f64, f64)>,
+    colour: usize,
+}
+
+fn lines(title: &str, x_desc: &str, y_desc: &str, curves: &[Curve], y_from_zero: bool) -> Result<String, String> {
+    let all = || curves.iter().flat_map(|c| c.points.iter()).filter(|p| p.0.is_finite() && p.1.is_finite());
+    let (x0, x1) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let (y0, y1) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let Some((x0, x1)) = plottable(x0, x1) else { return Err("nothing to draw".into()) };
+    let y0 = if y_from_zero { 0.0 } else { y0 };
+    let pad = 0.08 * (y1 - y0).max(1e-12);
+    let Some((y0, y1)) = plottable(if y_from_zero { 0.0 } else { y0 - pad }, y1 + 2.5 * pad) else {
+        return Err("nothing to draw".into());
+    };
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 520)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 15))
+            .margin(14)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(err)?;
+        chart.configure_mesh().x_desc(x_desc).y_desc(y_desc).draw().map_err(err)?;
+        for c in curves {
+            let style = PALETTE[c.colour % PALETTE.len()].stroke_width(2);
+            chart
+                .draw_series(LineSeries::new(c.points.iter().copied(), style))
+                .map_err(err)?
+                .label(c.label.clone())
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], style));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK.mix(0.4))
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(svg)
+}
+
+/// mesh_stiffness.svg.
+pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
+    let s = r.stiffness.as_ref().ok_or("the report has no stiffness")?;
+    let pitch = s.mesh.position.values.last().copied().unwrap_or(0.0) - s.mesh.position.values[0];
+    let mesh: Vec<(f64, f64)> = [0.0, pitch]
+        .iter()
+        .flat_map(|o| {
+            s.mesh.position.values.iter().zip(&s.mesh.stiffness.values).map(move |(x, k)| ((x + o) * 1e3, k * 1e-6))
+        })
+        .collect();
+    let (a, b) = (mesh[0].0, mesh[mesh.len() - 1].0);
+    let width = s.mean.si() / s.mean_per_width.si();
+    let iso = s.iso_6336.c_gamma_alpha.si() * width * 1e-6;
+    let curves = [
+        Curve { label: "mesh K(s), potential-energy method".into(), points: mesh, colour: 0 },
+        Curve {
+            label: "one pair k(s)".into(),
+            points: s
+                .pair
+                .position
+                .values
+                .iter()
+                .zip(&s.pair.stiffness.values)
+                .map(|(x, k)| (x * 1e3, k * 1e-6))
+                .collect(),
+            colour: 1,
+        },
+        Curve {
+            label: format!("mean K̄ = {:.1} N/µm", s.mean.si() * 1e-6),
+            points: vec![(a, s.mean.si() * 1e-6), (b, s.mean.si() * 1e-6)],
+            colour: 2,
+        },
+        Curve { label: format!("ISO 6336-1 c_γα b = {iso:.1} N/µm"), points: vec![(a, iso), (b, iso)], colour: 3 },
+    ];
+    lines(
+        &format!("{}: mesh stiffness from the teeth", r.title),
+        "position s from A (mm)",
+        "stiffness (N/µm)",
+        &curves,
+        true,
+    )
+}
+
+/// transmission_error.svg.
+pub fn transmission_error(r: &Report) -> Result<String, String> {
+    let curves: Vec<Curve> = r
+        .transmission_error
+        .iter()
+        .enumerate()
+        .map(|(i, t)| Curve {
+            label: format!("{:.0} N·m (p-p {:.3} µm)", t.pinion_torque.si(), t.peak_to_peak.si() * 1e6),
+            points: t.mesh.position.values.iter().zip(&t.mesh.ste.values).map(|(x, d)| (x * 1e3, d * 1e6)).collect(),
+            colour: i,
+        })
+        .collect();
+    lines(
+        &format!("{}: static transmission error", r.title),
+        "position s from A (mm)",
+        "STE along the line of action (µm)",
+        &curves,
+        true,
+    )
+}
+
+/// load_share.svg.
+pub fn load_share(r: &Report) -> Result<String, String> {
+    let curves: Vec<Curve> = r
+        .transmission_error
+        .iter()
+        .enumerate()
+        .map(|(i, t)| Curve {
+            label: format!("{:.0} N·m", t.pinion_torque.si()),
+            points: t.pair.position.values.iter().zip(&t.pair.load_share.values).map(|(x, w)| (x * 1e3, *w)).collect(),
+            colour: i,
+        })
+        .collect();
+    lines(&format!("{}: load share of one pair", r.title), "position s from A (mm)", "share of F_bn", &curves, true)
+}
