@@ -34,7 +34,8 @@
 //!  friction/                      the law catalogue (typed LawId, one constructor each), one law a file
 //!  tribology/                     lubricant and surface data in SI, film thickness
 //!  geometry/ (pair, mesh,         the pair: involute geometry, the mesh cycle (contacts, switch
-//!             stiffness/)         times), contact states, the mesh stiffness catalogue
+//!             stiffness/, teeth/) times), contact states, the mesh stiffness catalogue, the teeth as
+//!                                 bodies (PEM stiffness, load sharing, relief, transmission error)
 //!  numerics/ quantity diagnostics quadrature and roots; physical dimensions; spans and diagnostics
 //! ```
 //!

@@ -67,15 +67,7 @@ impl Lobatto {
                 })
                 .collect();
             // Coefficients of its antiderivative (degree M + 1).
-            let mut d = vec![0.0; m + 2];
-            d[1] += c[0];
-            if m >= 1 {
-                d[2] += 0.25 * c[1];
-            }
-            for (k, ck) in c.iter().enumerate().skip(2) {
-                d[k + 1] += ck / (2.0 * (k + 1) as f64);
-                d[k - 1] -= ck / (2.0 * (k - 1) as f64);
-            }
+            let d = integrated_series(&c);
             let at_minus_one: f64 = d.iter().enumerate().map(|(k, dk)| if k % 2 == 0 { *dk } else { -dk }).sum();
             for i in 0..=m {
                 let value: f64 = d.iter().enumerate().map(|(k, dk)| dk * t(k, i)).sum();
@@ -114,6 +106,22 @@ impl Lobatto {
             })
             .collect()
     }
+}
+
+/// The coefficients (in x, up to a constant) of an antiderivative of Σ_k c_k T_k(x): ∫T_0 = T_1,
+/// ∫T_1 = T_2/4, ∫T_k = T_{k+1}/(2(k+1)) − T_{k−1}/(2(k−1)); one longer than `c`.
+pub fn integrated_series(c: &[f64]) -> Vec<f64> {
+    let m = c.len() - 1;
+    let mut d = vec![0.0; m + 2];
+    d[1] += c[0];
+    if m >= 1 {
+        d[2] += 0.25 * c[1];
+    }
+    for (k, ck) in c.iter().enumerate().skip(2) {
+        d[k + 1] += ck / (2.0 * (k + 1) as f64);
+        d[k - 1] -= ck / (2.0 * (k - 1) as f64);
+    }
+    d
 }
 
 /// Σ_k c_k T_k(2s − 1) by Clenshaw's recurrence b_k = c_k + 2x b_{k+1} − b_{k+2}, p = c_0 + x b_1 − b_2

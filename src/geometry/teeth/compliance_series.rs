@@ -4,16 +4,7 @@
 /// Coefficients of the antiderivative of Σ c_k T_k(2s − 1) over s ∈ [0, 1] scaled to a length
 /// `span`, zero at s = 0 (∫T_0 = T_1, ∫T_1 = T_2/4, ∫T_k = T_{k+1}/(2(k+1)) − T_{k−1}/(2(k−1))).
 pub fn antiderivative(c: &[f64], span: f64) -> Vec<f64> {
-    let m = c.len() - 1;
-    let mut d = vec![0.0; m + 2];
-    d[1] += c[0];
-    if m >= 1 {
-        d[2] += 0.25 * c[1];
-    }
-    for (k, ck) in c.iter().enumerate().skip(2) {
-        d[k + 1] += ck / (2.0 * (k + 1) as f64);
-        d[k - 1] -= ck / (2.0 * (k - 1) as f64);
-    }
+    let mut d = crate::numerics::chebyshev::integrated_series(c);
     // dℓ = span ds = span/2 dx; make the value at x = −1 zero.
     let at_minus_one: f64 = d.iter().enumerate().map(|(k, v)| if k % 2 == 0 { *v } else { -v }).sum();
     d[0] -= at_minus_one;
