@@ -18,26 +18,16 @@ pub struct TeethDetails {
     /// (k_w, s) of the stiffest single pair, located.
     pub max_single: (f64, f64),
     pub transmission_error: Vec<TransmissionError>,
-    /// [pinion, wheel] root and bore radius used (m).
-    pub radii: [(f64, f64); 2],
-}
-
-/// Whether the scene asks for the teeth.
-pub fn wants_teeth(scene: &Scene) -> bool {
-    scene.analyses.transmission_error.is_some()
-        || scene.gears.uses_teeth()
-        || scene.dynamics.as_ref().is_some_and(|d| d.stiffness.is_potential_energy())
 }
 
 /// The details, when the scene asks for them (lowering has checked that they can be computed).
 pub fn teeth_details(scene: &Scene, g: &PairGeometry) -> Option<TeethDetails> {
-    if !wants_teeth(scene) {
+    if !scene.gears.wants_teeth(&scene.analyses, scene.dynamics.as_ref()) {
         return None;
     }
     let stiffness = scene.gears.pair_stiffness()?;
-    let bodies = scene.gears.bodies();
-    let radii = [bodies.radii(g, 0), bodies.radii(g, 1)];
-    let iso = iso_6336_method_b(g, bodies.young, [radii[0].0, radii[1].0]);
+    let roots = stiffness.teeth.each_ref().map(|t| t.outline.input.root_radius);
+    let iso = iso_6336_method_b(g, stiffness.teeth.each_ref().map(|t| t.young), roots);
     let xtol = 1e-13 * stiffness.path;
     let scale = stiffness.per_width(0.5 * stiffness.path);
     let (_, (k, at)) = extrema(|s| stiffness.per_width(s) / scale, &[0.0, stiffness.path], 32, xtol);
@@ -45,5 +35,5 @@ pub fn teeth_details(scene: &Scene, g: &PairGeometry) -> Option<TeethDetails> {
     let torques = scene.analyses.transmission_error.as_ref().map_or(&[][..], |t| &t.values[..]);
     let transmission_error =
         torques.iter().map(|t| sharing.transmission_error(t.value, g.base_radius[0])).collect::<Vec<_>>();
-    Some(TeethDetails { sharing, iso, max_single: (k * scale, at), transmission_error, radii })
+    Some(TeethDetails { sharing, iso, max_single: (k * scale, at), transmission_error })
 }

@@ -124,12 +124,7 @@ fn located(value: f64, unit: &'static str, position: f64) -> Located {
 pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport {
     let k = &t.sharing.stiffness;
     let [lo, hi] = k.engagement();
-    let mut pair_breaks = vec![0.0, k.path];
-    if k.is_helical() {
-        pair_breaks.extend([0.5 * k.lead - 0.0, k.path - 0.5 * k.lead].map(|x| x.clamp(lo, hi)));
-        pair_breaks.extend([-0.5 * k.lead + k.lead, k.path + 0.5 * k.lead - k.lead]);
-    }
-    let pair_s = series_positions(lo, hi, &pair_breaks);
+    let pair_s = series_positions(lo, hi, &k.contact_ends());
     let s0 = k.position_at(0.0);
     let mesh_s = series_positions(s0, s0 + k.base_pitch, &k.contact_changes(s0));
     let gears = [&scene.gears.pinion, &scene.gears.wheel];
@@ -141,8 +136,8 @@ pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport
             let (h_f, theta_f) = tooth.foundation_parameters();
             ToothBodyReport {
                 gear: name.to_string(),
-                root_diameter: Q::new(2.0 * t.radii[i].0, "m"),
-                bore_diameter: Q::new(2.0 * t.radii[i].1, "m"),
+                root_diameter: Q::new(2.0 * tooth.outline.input.root_radius, "m"),
+                bore_diameter: Q::new(2.0 * tooth.bore_radius, "m"),
                 form_diameter: Q::new(2.0 * tooth.outline.form_radius, "m"),
                 foundation_ratio: Num(h_f),
                 root_angle: Num(theta_f),

@@ -202,14 +202,8 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
             );
         }
     }
-    // The teeth as bodies: checked with the gears when the pair describes them, here when only an
-    // analysis or the dynamics' stiffness asks for them.
-    let wants_teeth =
-        analyses.transmission_error.is_some() || dynamics.as_ref().is_some_and(|d| d.stiffness.is_potential_energy());
-    if let (Some(g), true) = (&gears, wants_teeth) {
-        if !g.uses_teeth() {
-            super::lower_teeth::check_teeth(g, &mut errors);
-        }
+    if let Some(g) = gears.as_ref().filter(|g| g.wants_teeth(&analyses, dynamics.as_ref())) {
+        super::lower_teeth::check_teeth(g, &mut errors);
     }
     let equilibrium = operating.as_ref().and_then(|o| o.equilibrium);
     super::lower_thermal::check_thermal_needs(

@@ -130,9 +130,6 @@ pub(super) fn lower_gears(
         }
     }
     check_geometry(&pair, errors)?;
-    if pair.uses_teeth() {
-        super::lower_teeth::check_teeth(&pair, errors)?;
-    }
     Some(pair)
 }
 

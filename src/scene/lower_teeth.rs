@@ -11,7 +11,7 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::geometry::teeth::load_sharing::{ReliefShape, Reliefs, TipRelief};
 use crate::geometry::teeth::outline::OutlineProblem;
 use crate::geometry::teeth::pair_stiffness::{Bodies, PairStiffness, StiffnessProblem};
-use crate::model::{GearPair, Given, Sweep, TipReliefSpec, Torque};
+use crate::model::{Analyses, DynamicsSpec, GearPair, Given, Sweep, TipReliefSpec, Torque};
 
 const RELIEF_KEYS: &[&str] = &["amount", "length", "shape"];
 const SHAPES: &[&str] = &["linear", "parabolic"];
@@ -93,11 +93,14 @@ pub(super) fn lower_transmission_error(call: &Call, errors: &mut Vec<Diagnostic>
 }
 
 impl GearPair {
-    /// Whether the pair describes its teeth as bodies (relief, root or bore given).
-    pub fn uses_teeth(&self) -> bool {
-        [&self.pinion, &self.wheel]
-            .iter()
-            .any(|g| g.tip_relief.is_some() || g.root_diameter.is_some() || g.bore_diameter.is_some())
+    /// Whether the scene needs the teeth as bodies: the pair describes them (relief, root or bore
+    /// given), an analysis asks for the transmission error, or the dynamics read their stiffness.
+    pub fn wants_teeth(&self, analyses: &Analyses, dynamics: Option<&DynamicsSpec>) -> bool {
+        analyses.transmission_error.is_some()
+            || dynamics.is_some_and(|d| d.stiffness.is_potential_energy())
+            || [&self.pinion, &self.wheel]
+                .iter()
+                .any(|g| g.tip_relief.is_some() || g.root_diameter.is_some() || g.bore_diameter.is_some())
     }
 
     /// The gear bodies in SI.
@@ -137,7 +140,7 @@ pub(crate) fn check_teeth(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Opti
     let names = ["pinion", "wheel"];
     let mm = |x: f64| format!("{:.4} mm", 2e3 * x);
     let before = errors.len();
-    if let Err(problems) = PairStiffness::new(&g, &pair.bodies()) {
+    if let Err(problems) = PairStiffness::outlines(&g, &pair.bodies()) {
         for p in problems {
             let d = match p {
                 StiffnessProblem::Outline { gear, problem } => {

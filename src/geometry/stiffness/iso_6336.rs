@@ -12,7 +12,6 @@ use super::mesh_stiffness::StiffnessModel;
 use super::pairs_in_contact::PairsInContact;
 use super::per_length::PerLength;
 use crate::geometry::pair::PairGeometry;
-// (`build` takes the bodies only to share the catalogue's constructor type.)
 
 /// The ISO 6336-1 single-pair stiffness per face width c' (N/(mm·µm)).
 pub fn iso_6336_single_stiffness(g: &PairGeometry) -> f64 {
@@ -27,7 +26,8 @@ pub fn iso_6336_single_stiffness(g: &PairGeometry) -> f64 {
     c_m * c_r * c_b / q
 }
 
-/// The ISO estimate for the pair `g`: rectangular (spur) or a stiffness density (helical).
+/// The ISO estimate for the pair `g`: rectangular (spur) or a stiffness density (helical). The
+/// catalogue's constructor: the bodies are not read (the estimate takes no material).
 pub fn build(g: &PairGeometry, _: &crate::geometry::teeth::pair_stiffness::Bodies) -> StiffnessModel {
     iso_estimate(g)
 }

@@ -96,10 +96,11 @@ pub struct PairStiffness {
 }
 
 impl PairStiffness {
-    /// The stiffness of the pair `g` with the bodies `b`, or why it cannot be computed.
-    pub fn new(g: &PairGeometry, b: &Bodies) -> Result<Self, Vec<StiffnessProblem>> {
+    /// Both teeth's outlines, or every reason the pair's stiffness cannot be computed: what
+    /// lowering checks (cheap: no quadrature).
+    pub fn outlines(g: &PairGeometry, b: &Bodies) -> Result<[ToothOutline; 2], Vec<StiffnessProblem>> {
         let mut problems = Vec::new();
-        let mut teeth = Vec::new();
+        let mut outlines = Vec::new();
         let sap = [g.points.a, g.line_of_action_length - g.points.e];
         for (i, sap) in sap.into_iter().enumerate() {
             let (root, bore) = b.radii(g, i);
@@ -117,23 +118,26 @@ impl PairStiffness {
             };
             match ToothOutline::new(input) {
                 Err(problem) => problems.push(StiffnessProblem::Outline { gear: i, problem }),
-                Ok(o) => {
-                    if sap < o.roll_of(o.form_radius) * (1.0 - 1e-12) {
-                        problems.push(StiffnessProblem::Interference {
-                            gear: i,
-                            start_of_active_profile: g.base_radius[i].hypot(sap),
-                            form_radius: o.form_radius,
-                        });
-                    } else if bore < root {
-                        teeth.push(ToothCompliance::new(o, b.young[i], b.poisson[i], bore));
-                    }
+                Ok(o) if sap < o.roll_of(o.form_radius) * (1.0 - 1e-12) => {
+                    problems.push(StiffnessProblem::Interference {
+                        gear: i,
+                        start_of_active_profile: g.base_radius[i].hypot(sap),
+                        form_radius: o.form_radius,
+                    });
                 }
+                Ok(o) => outlines.push(o),
             }
         }
-        if !problems.is_empty() {
-            return Err(problems);
+        match <[ToothOutline; 2]>::try_from(outlines) {
+            Ok(both) if problems.is_empty() => Ok(both),
+            _ => Err(problems),
         }
-        let teeth: [ToothCompliance; 2] = [teeth[0].clone(), teeth[1].clone()];
+    }
+
+    /// The stiffness of the pair `g` with the bodies `b`, or why it cannot be computed.
+    pub fn new(g: &PairGeometry, b: &Bodies) -> Result<Self, Vec<StiffnessProblem>> {
+        let outlines = Self::outlines(g, b)?;
+        let teeth = [0, 1].map(|i| ToothCompliance::new(outlines[i], b.young[i], b.poisson[i], b.radii(g, i).1));
         let e_r = reduced_modulus(b.young, b.poisson);
         let mut pair = PairStiffness {
             teeth,
@@ -304,14 +308,20 @@ impl PairStiffness {
         self.base_pitch * tau - 0.5 * self.lead
     }
 
-    /// The positions in one cycle [s0, s0 + p_b) where a pair (or a line end) enters or leaves.
-    pub fn contact_changes(&self, s0: f64) -> Vec<f64> {
-        let ends: Vec<f64> = if self.is_helical() {
+    /// The positions of a pair where it (or an end of its contact line) enters or leaves the
+    /// path: where its stiffness jumps (spur) or its slope does (helical).
+    pub fn contact_ends(&self) -> Vec<f64> {
+        if self.is_helical() {
             vec![-0.5 * self.lead, 0.5 * self.lead, self.path - 0.5 * self.lead, self.path + 0.5 * self.lead]
         } else {
             vec![0.0, self.path]
-        };
-        let mut out: Vec<f64> = ends
+        }
+    }
+
+    /// The positions in one cycle [s0, s0 + p_b) where a pair (or a line end) enters or leaves.
+    pub fn contact_changes(&self, s0: f64) -> Vec<f64> {
+        let mut out: Vec<f64> = self
+            .contact_ends()
             .iter()
             .map(|e| s0 + (e - s0).rem_euclid(self.base_pitch))
             .filter(|x| *x > s0 && *x < s0 + self.base_pitch)
