@@ -146,21 +146,15 @@ pub enum Solver {
     Magnus,
 }
 
-/// The free response asked for: X(0) = (x0, v0) followed over `periods` mesh periods.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FreeResponseSpec {
-    pub x0: f64,
-    pub v0: f64,
-    pub periods: usize,
-}
+pub use crate::dynamics::free::FreeResponseSpec;
 
-/// Which dynamic model.
+/// Which dynamic model, with the parameters its catalogue row asks for.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum DynamicModel {
-    /// The SDOF torsional model along the line of action.
-    Sdof,
-    /// θ, LOA and OLOA translations of both gears on their bearings, [pinion, wheel].
-    SixDof { bearings: [crate::dynamics::six_dof::Bearing; 2] },
+pub struct DynamicModel {
+    /// The catalogue row ([`crate::dynamics::models::MODELS`]).
+    pub id: crate::dynamics::models::DynamicModelId,
+    /// The gears' bearings, [pinion, wheel], for a model on bearings.
+    pub bearings: Option<[crate::dynamics::six_dof::Bearing; 2]>,
 }
 
 /// The `dynamics` block.

@@ -29,6 +29,14 @@ const TERMS: usize = 2 * MAX_ORDER + 1;
 /// Two modes × TERMS orders × (re, im).
 const N_INTEGRANDS: usize = 4 * TERMS;
 
+/// The free response asked for: X(0) = (x0, v0) followed over `periods` mesh periods.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FreeResponseSpec {
+    pub x0: f64,
+    pub v0: f64,
+    pub periods: usize,
+}
+
 /// One line of the free response's spectrum.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct SpectralLine {

@@ -14,10 +14,12 @@
 //! ```
 
 pub mod airy;
+pub mod analysis;
 pub mod floquet;
 pub mod free;
 pub mod integrators;
 pub mod model;
+pub mod models;
 pub mod numerics;
 pub mod propagator;
 pub mod rank_one;

@@ -10,6 +10,7 @@
 use nalgebra::SVector;
 use serde::Serialize;
 
+use super::analysis::{GearResponse, Range};
 use super::floquet::Floquet;
 use super::model::PeriodicModel;
 use super::six_dof::{SixDofSystem, STATES};
@@ -26,31 +27,6 @@ const PLOT_SAMPLES: usize = 256;
 /// mean and ORDERS cos/sin pairs.
 const QUANTITIES: usize = 6;
 const N_INTEGRANDS: usize = QUANTITIES * (1 + 2 * ORDERS);
-
-/// A located range of one quantity: minimum, maximum (times in mesh periods), mean, spectrum.
-#[derive(Debug, Clone, Serialize)]
-pub struct Range {
-    pub min: Extremum,
-    pub max: Extremum,
-    pub mean: Integral,
-    /// Amplitudes of mesh orders 1..=ORDERS.
-    pub spectrum: Vec<f64>,
-}
-
-impl Range {
-    pub fn peak_to_peak(&self) -> f64 {
-        self.max.value - self.min.value
-    }
-}
-
-/// Per gear: bearing forces (K x, K y) and displacements along (x) and off (y) the line of action.
-#[derive(Debug, Clone, Serialize)]
-pub struct GearResponse {
-    pub bearing_force_loa: Range,
-    pub bearing_force_oloa: Range,
-    pub displacement_loa: [Extremum; 2],
-    pub displacement_oloa: [Extremum; 2],
-}
 
 #[derive(Debug, Clone, Serialize)]
 pub struct SixDofResponse {

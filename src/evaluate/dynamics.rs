@@ -1,38 +1,19 @@
-//! Stage 3 for the `dynamics` block: the SDOF model at every operating point and formulation, the
+//! Stage 3 for the `dynamics` block: the scene's dynamic model (a catalogue row,
+//! [`crate::dynamics::models`]) at every operating point and formulation, the
 //! stability map and the numerics study — only what the scene's analyses ask for.
 
 use rayon::prelude::*;
 use serde::Serialize;
 
 use super::cases::Case;
-use crate::dynamics::floquet::Verdict;
-use crate::dynamics::numerics::{study, Study};
-use crate::dynamics::propagator::Method;
-use crate::dynamics::response::PeriodicResponse;
-use crate::dynamics::six_dof::SixDofSystem;
-use crate::dynamics::six_dof_response::{self, SixDofResponse};
-use crate::dynamics::{DynamicFormulation, Floquet, Multiplier, PeriodicModel, SdofSystem, StiffnessModel};
+pub use crate::dynamics::analysis::FormulationResult;
+use crate::dynamics::models::{GearDynamics, ModelInputs, Wants};
+use crate::dynamics::numerics::Study;
+use crate::dynamics::{DynamicFormulation, SdofSystem, StiffnessModel};
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{DynamicModel, DynamicsSpec, Scene, Solver};
+use crate::model::{DynamicsSpec, Scene, Solver};
 use crate::numerics::roots::brent;
-
-/// One formulation at one operating point.
-#[derive(Debug, Clone, Serialize)]
-pub struct FormulationResult {
-    pub formulation: DynamicFormulation,
-    pub method: Method,
-    pub multipliers: Vec<Multiplier>,
-    pub spectral_radius: f64,
-    pub verdict: Verdict,
-    pub determinant: f64,
-    pub liouville: f64,
-    pub response: Option<PeriodicResponse>,
-    /// The free response from the scene's initial state (detail points only).
-    pub free: Option<crate::dynamics::free::FreeResponse>,
-    /// The 6-DOF model's periodic response (`model = six_dof`; then `response` is None).
-    pub six_dof: Option<SixDofResponse>,
-}
 
 #[derive(Debug, Clone, Serialize)]
 pub struct DynamicsPoint {
@@ -107,33 +88,6 @@ fn system<'a>(
     sys
 }
 
-impl FormulationResult {
-    /// The Floquet numbers of a formulation, without any response.
-    fn of<const N: usize>(formulation: DynamicFormulation, fl: &Floquet<N>) -> FormulationResult {
-        FormulationResult {
-            formulation,
-            method: fl.method,
-            multipliers: fl.multipliers.clone(),
-            spectral_radius: fl.spectral_radius,
-            verdict: fl.verdict,
-            determinant: fl.determinant,
-            liouville: fl.liouville,
-            response: None,
-            free: None,
-            six_dof: None,
-        }
-    }
-}
-
-fn analyse(sys: &SdofSystem, with_response: bool, free: Option<crate::model::FreeResponseSpec>) -> FormulationResult {
-    let fl = Floquet::analyse(sys);
-    FormulationResult {
-        response: if with_response { PeriodicResponse::compute(sys, &fl) } else { None },
-        free: free.map(|fr| crate::dynamics::free::free_response(sys, &fl, [fr.x0, fr.v0], fr.periods)),
-        ..FormulationResult::of(sys.formulation, &fl)
-    }
-}
-
 /// ρ above 1 by more than this is unstable (the verdict's margin, [`Verdict`]).
 const UNSTABLE_MARGIN: f64 = 1e-9;
 
@@ -165,15 +119,15 @@ fn unstable_ranges(rows: impl Iterator<Item = (f64, f64)>, excess: impl Fn(f64) 
     out
 }
 
-/// The SDOF model's fixed inputs for a scene: built once, then analysed at any operating point.
+/// The dynamic model's fixed inputs for a scene: built once, then analysed at any operating point.
 pub struct DynamicsSetup<'a> {
     base: LawContext<'a>,
     spec: &'a DynamicsSpec,
     stiffness: StiffnessModel,
     source: &'static str,
     inertia: [f64; 2],
-    /// Masses and bearings for `model = six_dof`.
-    six: Option<([f64; 2], [crate::dynamics::six_dof::Bearing; 2])>,
+    /// The scene's model, from its catalogue row.
+    model: Box<dyn GearDynamics>,
 }
 
 impl<'a> DynamicsSetup<'a> {
@@ -182,17 +136,15 @@ impl<'a> DynamicsSetup<'a> {
     pub fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
         let spec = scene.dynamics.as_ref()?;
         let (stiffness, source) = stiffness_model(scene, spec, base.geometry);
-        let six = match spec.model {
-            DynamicModel::SixDof { bearings } => {
-                let m = |g: &crate::model::Gear| g.mass.as_ref().map_or(f64::NAN, |m| m.value.value);
-                Some(([m(&scene.gears.pinion), m(&scene.gears.wheel)], bearings))
-            }
-            DynamicModel::Sdof => None,
-        };
-        Some(DynamicsSetup { base, spec, stiffness, source, inertia: inertia(scene), six })
+        let mass = |g: &crate::model::Gear| g.mass.as_ref().map(|m| m.value.value);
+        let inputs =
+            ModelInputs { mass: [mass(&scene.gears.pinion), mass(&scene.gears.wheel)], bearings: spec.model.bearings };
+        let model = (spec.model.id.entry().build)(&inputs);
+        Some(DynamicsSetup { base, spec, stiffness, source, inertia: inertia(scene), model })
     }
 
-    fn sdof(&self, law: Option<&'a dyn FrictionLaw>, f: DynamicFormulation, state: OperatingState) -> SdofSystem<'a> {
+    /// The mesh at one state and formulation (no law for the base formulation).
+    fn mesh(&self, law: Option<&'a dyn FrictionLaw>, f: DynamicFormulation, state: OperatingState) -> SdofSystem<'a> {
         system(self.base, self.spec, &self.stiffness, law, f, state, self.inertia)
     }
 
@@ -205,16 +157,8 @@ impl<'a> DynamicsSetup<'a> {
         state: OperatingState,
         with_response: bool,
     ) -> FormulationResult {
-        let sys = self.sdof(law, f, state);
-        let Some((mass, bearings)) = self.six else {
-            return analyse(&sys, with_response, self.spec.free_response);
-        };
-        let six = SixDofSystem::new(sys, mass, bearings);
-        let fl = Floquet::analyse(&six);
-        FormulationResult {
-            six_dof: if with_response { SixDofResponse::compute(&six, &fl) } else { None },
-            ..FormulationResult::of(f, &fl)
-        }
+        let wants = Wants { response: with_response, free: self.spec.free_response };
+        self.model.analyse(self.mesh(law, f, state), wants)
     }
 
     /// The spectral radius and (when stable) the dynamic factor at one state, for stability maps.
@@ -224,18 +168,7 @@ impl<'a> DynamicsSetup<'a> {
         f: DynamicFormulation,
         state: OperatingState,
     ) -> (f64, Option<f64>) {
-        let sys = self.sdof(law, f, state);
-        match self.six {
-            None => {
-                let fl = Floquet::analyse(&sys);
-                (fl.spectral_radius, PeriodicResponse::dynamic_factor(&sys, &fl))
-            }
-            Some((mass, bearings)) => {
-                let six = SixDofSystem::new(sys, mass, bearings);
-                let fl = Floquet::analyse(&six);
-                (fl.spectral_radius, six_dof_response::dynamic_factor(&six, &fl))
-            }
-        }
+        self.model.stability(self.mesh(law, f, state))
     }
 
     fn law_for(&self, state: OperatingState) -> Option<Box<dyn FrictionLaw + 'a>> {
@@ -281,9 +214,8 @@ pub fn evaluate_dynamics(
         return None;
     }
     let spec = setup.spec;
-    let (stiffness, source, j) = (&setup.stiffness, setup.source, setup.inertia);
     let probe_state = cases[0].state;
-    let probe = system(base, spec, stiffness, None, DynamicFormulation::Base, probe_state, j);
+    let probe = setup.mesh(None, DynamicFormulation::Base, probe_state);
     let law_for = |state: OperatingState| setup.law_for(state);
     let points = if a.dynamics {
         cases
@@ -329,14 +261,7 @@ pub fn evaluate_dynamics(
                     let law = law_for(state);
                     let f = spec.formulations[i];
                     let law = if f == DynamicFormulation::Base { None } else { law.as_deref() };
-                    let rho = match setup.six {
-                        None => Floquet::analyse(&system(base, spec, stiffness, law, f, state, j)).spectral_radius,
-                        Some((mass, bearings)) => {
-                            let six =
-                                SixDofSystem::new(system(base, spec, stiffness, law, f, state, j), mass, bearings);
-                            Floquet::analyse(&six).spectral_radius
-                        }
-                    };
+                    let rho = setup.model.spectral_radius(setup.mesh(law, f, state));
                     rho - (1.0 + UNSTABLE_MARGIN)
                 };
                 unstable_ranges(rows.iter().map(|r| (r.pinion_speed, r.spectral_radius[i])), rho)
@@ -351,31 +276,21 @@ pub fn evaluate_dynamics(
         };
         let law = law_for(probe_state);
         let law = if f == DynamicFormulation::Base { None } else { law.as_deref() };
-        let sys = system(base, spec, stiffness, law, f, probe_state, j);
-        match setup.six {
-            None => (f, 0, study(&sys, sys.static_state())),
-            Some((mass, bearings)) => {
-                let six = SixDofSystem::new(sys, mass, bearings);
-                let x0 = six.static_state();
-                (f, 0, study(&six, x0))
-            }
-        }
+        (f, 0, setup.model.study(setup.mesh(law, f, probe_state)))
     });
-    let six_probe = setup.six.map(|(mass, bearings)| {
-        SixDofSystem::new(system(base, spec, stiffness, None, DynamicFormulation::Base, probe_state, j), mass, bearings)
-    });
+    let facts = setup.model.describe(setup.mesh(None, DynamicFormulation::Base, probe_state));
     Some(DynamicsEvaluation {
-        model: six_probe.as_ref().map_or(probe.name(), |s| s.name()),
-        description: six_probe.as_ref().map_or(probe.description(), |s| s.description()),
-        stiffness: stiffness.clone(),
-        stiffness_source: source,
+        model: facts.name,
+        description: facts.description,
+        stiffness: setup.stiffness.clone(),
+        stiffness_source: setup.source,
         damping_ratio: spec.damping_ratio,
         equivalent_mass: probe.equivalent_mass,
         damping: probe.damping,
         mean_stiffness: probe.mean_stiffness,
         natural_frequency: probe.natural_frequency(),
-        natural_frequencies: six_probe.as_ref().map_or_else(Vec::new, |s| s.frequencies.clone()),
-        stiffness_ratio: six_probe.as_ref().map(|s| s.stiffness_ratio()),
+        natural_frequencies: facts.natural_frequencies,
+        stiffness_ratio: facts.stiffness_ratio,
         formulations: spec.formulations.clone(),
         friction_diverges_at_pitch: law_for(probe_state).is_some_and(|l| l.diverges_at_pitch()),
         points,

@@ -194,15 +194,15 @@ fn point_summary(
         let law = scene.dynamics.as_ref().and_then(|d| d.friction.as_ref());
         for r in &point.results {
             let friction = law.filter(|_| r.formulation != crate::dynamics::DynamicFormulation::Base);
-            let resp = r.response.as_ref();
+            let resp = r.response.as_ref().filter(|x| x.gears.is_empty());
             rows.push(SummaryRow {
                 kind: RowKind::Dynamics,
                 law: friction.map_or(String::new(), |l| l.law.name().to_string()),
                 label: friction.map_or(String::new(), |l| l.label()),
                 formulation: r.formulation.name().to_string(),
                 spectral_radius: Some(r.spectral_radius),
-                dte_peak_to_peak: resp.map(|x| x.dte_peak_to_peak),
-                dte_mean: resp.map(|x| x.dte_mean.value),
+                dte_peak_to_peak: resp.map(|x| x.dte.peak_to_peak()),
+                dte_mean: resp.map(|x| x.dte.mean.value),
                 dynamic_factor: resp.map(|x| x.dynamic_factor),
                 ..blank.clone()
             });

@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::number::{m, DisplayUnit, Num, Q};
+use super::number::{DisplayUnit, Num, Q};
 pub use super::numerics::{NumericsReport, NumericsRow, Timings};
 use crate::dynamics::DynamicFormulation;
 use crate::evaluate::dynamics::DynamicsEvaluation;
@@ -11,7 +11,7 @@ use crate::evaluate::Evaluation;
 use crate::geometry::stiffness::StiffnessShape;
 use crate::model::Scene;
 
-use super::dynamics_records::{free_report, located, six_dof_fields};
+use super::dynamics_records::formulation_report;
 pub use super::dynamics_records::{
     FormulationReport, FreeLine, FreeResponseReport, GearDynamicsReport, Located, SpectrumLine,
 };
@@ -182,27 +182,21 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                         let pts = fr.series.0.iter().copied().zip(fr.series.1.iter().copied()).collect();
                         c.free.push((r.formulation.name().to_string(), pts));
                     }
-                    if let Some(x) = &r.six_dof {
-                        let name = r.formulation.name();
-                        let xy = |v: &[f64]| x.series[0].iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
-                        c.dte.push((name.to_string(), xy(&x.series[1])));
-                        c.oloa.push((format!("{name}: pinion"), xy(&x.series[2])));
-                        c.oloa.push((format!("{name}: wheel"), xy(&x.series[3])));
-                        if r.formulation != DynamicFormulation::Base {
-                            c.friction_force.push((name.to_string(), xy(&x.series[4])));
-                        }
-                        c.spectrum.push((name.to_string(), x.dte.spectrum.clone()));
-                    }
                     let Some(resp) = &r.response else { continue };
                     let name = r.formulation.name().to_string();
-                    let ser = &resp.series;
+                    let ser = &resp.curves;
                     let xy = |v: &[f64]| ser.tau.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
                     c.dte.push((name.clone(), xy(&ser.dte)));
+                    for (gear, v) in &ser.bearing_force_oloa {
+                        c.oloa.push((format!("{name}: {gear}"), xy(v)));
+                    }
                     if r.formulation != DynamicFormulation::Base {
                         c.friction_force.push((name.clone(), xy(&ser.friction_force)));
                     }
-                    c.spectrum.push((name.clone(), resp.spectrum.iter().map(|s| s.1).collect()));
-                    if c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base {
+                    c.spectrum.push((name.clone(), resp.dte.spectrum.clone()));
+                    if !ser.pair_force.is_empty()
+                        && (c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base)
+                    {
                         c.pair_force = ser
                             .pair_force
                             .iter()
@@ -222,66 +216,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
                 pinion_speed: Q::new(p.state.pinion_speed, "rad/s"),
                 mesh_frequency: Q::new(p.mesh_frequency, "Hz"),
                 frequency_ratio: Num(d.natural_frequency / p.mesh_frequency),
-                formulations: p
-                    .results
-                    .iter()
-                    .map(|r| {
-                        let mut f = FormulationReport {
-                            formulation: r.formulation,
-                            method: r.method,
-                            spectral_radius: Num(r.spectral_radius),
-                            floquet_multipliers: r.multipliers.iter().map(|m| [Num(m.re), Num(m.im)]).collect(),
-                            verdict: r.verdict,
-                            monodromy_determinant: Num(r.determinant),
-                            liouville_determinant: Num(r.liouville),
-                            dte_peak_to_peak: r.response.as_ref().map(|x| m(x.dte_peak_to_peak)),
-                            dte_min: r.response.as_ref().map(|x| located(x.dte_min, "m")),
-                            dte_max: r.response.as_ref().map(|x| located(x.dte_max, "m")),
-                            dte_mean: r.response.as_ref().map(|x| m(x.dte_mean.value)),
-                            dte_mean_error: r.response.as_ref().map(|x| m(x.dte_mean.error)),
-                            tooth_force_min: r.response.as_ref().map(|x| located(x.tooth_force_min, "N")),
-                            tooth_force_max: r.response.as_ref().map(|x| located(x.tooth_force_max, "N")),
-                            dynamic_factor: r.response.as_ref().map(|x| Num(x.dynamic_factor)),
-                            tooth_separation: r.response.as_ref().map_or_else(Vec::new, |x| {
-                                x.separation.iter().map(|(a, b)| [Num(*a), Num(*b)]).collect()
-                            }),
-                            spectrum: r.response.as_ref().map_or_else(Vec::new, |x| {
-                                x.spectrum.iter().map(|(o, a)| SpectrumLine { order: *o, amplitude: m(*a) }).collect()
-                            }),
-                            mean_dynamic_efficiency: r
-                                .response
-                                .as_ref()
-                                .and_then(|x| x.mean_dynamic_efficiency.map(|i| Num(i.value))),
-                            mean_dynamic_efficiency_error: r
-                                .response
-                                .as_ref()
-                                .and_then(|x| x.mean_dynamic_efficiency.map(|i| Num(i.error))),
-                            max_dynamic_efficiency: r.response.as_ref().and_then(|x| x.max_dynamic_efficiency.map(Num)),
-                            peak_applied_friction_force: r
-                                .response
-                                .as_ref()
-                                .and_then(|x| x.peak_friction_force.map(|e| located(e, "N"))),
-                            peak_friction_torque: r
-                                .response
-                                .as_ref()
-                                .and_then(|x| x.peak_friction_torque)
-                                .map_or_else(Vec::new, |t| t.iter().map(|e| located(*e, "N*m")).collect()),
-                            peak_mu_times_tooth_force: r
-                                .response
-                                .as_ref()
-                                .and_then(|x| x.peak_mu_times_tooth_force.map(|e| located(e, "N"))),
-                            free_response: r.free.as_ref().map(free_report),
-                            pair_force_max: None,
-                            friction_force_mean: None,
-                            pair_friction_force_max: None,
-                            gears: Vec::new(),
-                        };
-                        if let Some(x) = &r.six_dof {
-                            six_dof_fields(&mut f, x);
-                        }
-                        f
-                    })
-                    .collect(),
+                formulations: p.results.iter().map(formulation_report).collect(),
             }
         })
         .collect();

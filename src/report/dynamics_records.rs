@@ -1,12 +1,14 @@
 //! The dynamics record of one formulation at one operating point: Floquet numbers, the located
-//! periodic response, the 6-DOF model's gears (bearing forces and displacements) and the free
-//! response (peaks and Floquet-mode lines).
+//! periodic response of whichever model ran, the gears on bearings (forces and displacements) where
+//! the model has them, and the free response (peaks and Floquet-mode lines).
 
 use serde::{Deserialize, Serialize};
 
 use super::number::{m, Num, Q};
+use crate::dynamics::analysis::{FormulationResult, GearResponse, ModelResponse};
 use crate::dynamics::floquet::Verdict;
 use crate::dynamics::propagator::Method;
+use crate::dynamics::trajectory::Extremum;
 use crate::dynamics::DynamicFormulation;
 
 /// A located extremum: value and time in mesh periods.
@@ -16,7 +18,7 @@ pub struct Located {
     pub tau: Num,
 }
 
-pub(super) fn located(e: crate::dynamics::trajectory::Extremum, unit: &'static str) -> Located {
+fn located(e: crate::dynamics::trajectory::Extremum, unit: &'static str) -> Located {
     Located { value: Q::new(e.value, unit), tau: Num(e.time) }
 }
 
@@ -109,29 +111,43 @@ pub struct GearDynamicsReport {
     pub oloa_displacement_peak_to_peak: Q,
 }
 
-/// The 6-DOF response in the report's fields: the DTE, mesh force (as the tooth force), dynamic
-/// factor, friction force and the gears' bearings.
-pub(super) fn six_dof_fields(f: &mut FormulationReport, x: &crate::dynamics::six_dof_response::SixDofResponse) {
-    f.dte_peak_to_peak = Some(m(x.dte.peak_to_peak()));
-    f.dte_min = Some(located(x.dte.min, "m"));
-    f.dte_max = Some(located(x.dte.max, "m"));
-    f.dte_mean = Some(m(x.dte.mean.value));
-    f.dte_mean_error = Some(m(x.dte.mean.error));
-    f.tooth_force_min = Some(located(x.mesh_force[0], "N"));
-    f.tooth_force_max = Some(located(x.mesh_force[1], "N"));
-    f.dynamic_factor = Some(Num(x.dynamic_factor));
-    f.spectrum = lines(&x.dte.spectrum, "m");
-    let (lo, hi) = (x.friction_force.min, x.friction_force.max);
-    let peak = if hi.value.abs() >= lo.value.abs() {
-        hi
-    } else {
-        crate::dynamics::trajectory::Extremum { value: lo.value.abs(), time: lo.time }
-    };
-    f.peak_applied_friction_force = Some(located(peak, "N"));
-    f.pair_force_max = Some(located(x.pair_force_max, "N"));
-    f.pair_friction_force_max = Some(located(x.pair_friction_force_max, "N"));
-    f.friction_force_mean = Some(Q::new(x.friction_force.mean.value, "N"));
-    f.gears = vec![gear_dynamics("pinion", &x.gears[0]), gear_dynamics("wheel", &x.gears[1])];
+/// The report record of one formulation: the Floquet numbers and whatever the model's response has
+/// (a quantity the model does not compute is left out).
+pub(super) fn formulation_report(r: &FormulationResult) -> FormulationReport {
+    let x = r.response.as_ref();
+    let at = |f: fn(&ModelResponse) -> Option<Extremum>, unit: &'static str| x.and_then(f).map(|e| located(e, unit));
+    FormulationReport {
+        formulation: r.formulation,
+        method: r.method,
+        spectral_radius: Num(r.spectral_radius),
+        floquet_multipliers: r.multipliers.iter().map(|m| [Num(m.re), Num(m.im)]).collect(),
+        verdict: r.verdict,
+        monodromy_determinant: Num(r.determinant),
+        liouville_determinant: Num(r.liouville),
+        dte_peak_to_peak: x.map(|x| m(x.dte.peak_to_peak())),
+        dte_min: x.map(|x| located(x.dte.min, "m")),
+        dte_max: x.map(|x| located(x.dte.max, "m")),
+        dte_mean: x.map(|x| m(x.dte.mean.value)),
+        dte_mean_error: x.map(|x| m(x.dte.mean.error)),
+        tooth_force_min: x.map(|x| located(x.tooth_force[0], "N")),
+        tooth_force_max: x.map(|x| located(x.tooth_force[1], "N")),
+        dynamic_factor: x.map(|x| Num(x.dynamic_factor)),
+        tooth_separation: x.map_or_else(Vec::new, |x| x.separation.iter().map(|(a, b)| [Num(*a), Num(*b)]).collect()),
+        spectrum: x.map_or_else(Vec::new, |x| lines(&x.dte.spectrum, "m")),
+        mean_dynamic_efficiency: x.and_then(|x| x.mean_dynamic_efficiency.map(|i| Num(i.value))),
+        mean_dynamic_efficiency_error: x.and_then(|x| x.mean_dynamic_efficiency.map(|i| Num(i.error))),
+        max_dynamic_efficiency: x.and_then(|x| x.max_dynamic_efficiency.map(Num)),
+        peak_applied_friction_force: at(|x| x.peak_friction_force, "N"),
+        peak_friction_torque: x
+            .and_then(|x| x.peak_friction_torque)
+            .map_or_else(Vec::new, |t| t.iter().map(|e| located(*e, "N*m")).collect()),
+        peak_mu_times_tooth_force: at(|x| x.peak_mu_times_tooth_force, "N"),
+        free_response: r.free.as_ref().map(free_report),
+        pair_force_max: at(|x| x.pair_force_max, "N"),
+        friction_force_mean: x.and_then(|x| x.friction_force_mean).map(|v| Q::new(v, "N")),
+        pair_friction_force_max: at(|x| x.pair_friction_force_max, "N"),
+        gears: x.map_or_else(Vec::new, |x| x.gears.iter().map(|(name, g)| gear_dynamics(name, g)).collect()),
+    }
 }
 
 /// Amplitudes of mesh orders 1, 2, … as report lines.
@@ -139,7 +155,7 @@ fn lines(amplitudes: &[f64], unit: &'static str) -> Vec<SpectrumLine> {
     amplitudes.iter().enumerate().map(|(o, a)| SpectrumLine { order: o + 1, amplitude: Q::new(*a, unit) }).collect()
 }
 
-fn gear_dynamics(name: &'static str, g: &crate::dynamics::six_dof_response::GearResponse) -> GearDynamicsReport {
+fn gear_dynamics(name: &'static str, g: &GearResponse) -> GearDynamicsReport {
     let n = |x: f64| Q::new(x, "N");
     GearDynamicsReport {
         gear: name.into(),
@@ -180,7 +196,7 @@ pub struct FreeLine {
     pub growth_per_period: Num,
 }
 
-pub(super) fn free_report(f: &crate::dynamics::free::FreeResponse) -> FreeResponseReport {
+fn free_report(f: &crate::dynamics::free::FreeResponse) -> FreeResponseReport {
     FreeResponseReport {
         x0: m(f.initial[0]),
         v0: Q::new(f.initial[1], "m/s"),

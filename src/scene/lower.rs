@@ -152,14 +152,13 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
                         .hint(format!("add `inertia = 3.45e-4 kg*m^2` to `{name}`")),
                     );
                 }
-                let six_dof =
-                    dynamics.as_ref().is_some_and(|d| matches!(d.model, crate::model::DynamicModel::SixDof { .. }));
-                if six_dof && gear.mass.is_none() {
+                let on_bearings = dynamics.as_ref().map(|d| d.model.id.entry()).filter(|m| m.on_bearings);
+                if let Some(model) = on_bearings.filter(|_| gear.mass.is_none()) {
                     errors.push(
                         Diagnostic::new(
                             DiagnosticKind::MissingKey,
                             gear.span,
-                            format!("the six_dof model needs the {name}'s `mass`"),
+                            format!("the {} model needs the {name}'s `mass`", model.name),
                         )
                         .hint(format!("add `mass = 1.5 kg` to `{name}` (the gear with its share of the shaft)")),
                     );

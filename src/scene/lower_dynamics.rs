@@ -7,6 +7,7 @@ use super::fields::{scalar, sweep_values, unknown_name, Fields};
 use super::lower_dynamics_blocks::{bearings, free_response, transmission_error};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::dynamics::models::catalog::{entry, MODELS};
 use crate::dynamics::DynamicFormulation;
 use crate::geometry::stiffness::catalog::named_models;
 use crate::geometry::stiffness::StiffnessId;
@@ -16,15 +17,6 @@ use crate::scene::units::SiQuantity;
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
 const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file", "per_length"];
-/// The dynamic models a scene names (`model = six_dof`), with whether the model stands on bearings.
-const MODELS: &[(&str, OnBearings)] = &[("sdof", OnBearings::No), ("six_dof", OnBearings::Yes)];
-
-/// Whether a dynamic model puts the gears on bearings (takes a `bearings` block).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum OnBearings {
-    No,
-    Yes,
-}
 const SOLVERS: &[&str] = &["auto", "magnus"];
 const FORMULATIONS: &[&str] = &["base", "external", "internal", "internal_chord"];
 
@@ -38,9 +30,8 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         &[],
         errors,
     );
-    let names: Vec<&str> = MODELS.iter().map(|(n, _)| *n).collect();
-    let on_bearings = f.name("model", &names, errors).and_then(|n| MODELS.iter().find(|(m, _)| *m == n.text));
-    let six_dof = on_bearings.is_some_and(|(_, b)| *b == OnBearings::Yes);
+    let names: Vec<&str> = MODELS.iter().map(|m| m.name).collect();
+    let entry = f.name("model", &names, errors).and_then(|n| entry(&n.text)).unwrap_or(&MODELS[0]);
     let formulations = match f.values.get("formulations") {
         None => vec![DynamicFormulation::Base, DynamicFormulation::External, DynamicFormulation::Internal],
         Some((_, v)) => formulations(v, errors)?,
@@ -93,33 +84,46 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
     }
     let transmission_error = transmission_error(&f, errors)?;
     let free_response = free_response(&f, errors)?;
-    let model = if six_dof {
-        if let Some(bad) =
-            formulations.iter().find(|x| !matches!(x, DynamicFormulation::Base | DynamicFormulation::Internal))
-        {
+    if let Some(bad) = formulations.iter().find(|x| !entry.formulations.contains(x)) {
+        let allowed: Vec<String> = entry.formulations.iter().map(|x| format!("`{}`", x.name())).collect();
+        let names: Vec<&str> = entry.formulations.iter().map(|x| x.name()).collect();
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                f.values.get("formulations").map_or(block.kind.span, |(_, v)| v.span),
+                format!("the {} model takes the {} formulations, not `{}`", entry.name, and_list(&allowed), bad.name()),
+            )
+            .hint(format!(
+                "{} in the {} model: write `formulations = [{}]`",
+                entry.formulations_reason,
+                entry.label,
+                names.join(", ")
+            )),
+        );
+        return None;
+    }
+    let bearings = if entry.on_bearings {
+        Some(bearings(&f, block, entry.name, errors)?)
+    } else {
+        if let Some(b) = f.blocks.iter().find(|b| b.kind.text == "bearings") {
+            let owners: Vec<&str> = MODELS.iter().filter(|m| m.on_bearings).map(|m| m.name).collect();
             errors.push(
                 Diagnostic::new(
                     DiagnosticKind::OutOfRange,
-                    f.values.get("formulations").map_or(block.kind.span, |(_, v)| v.span),
-                    format!("the six_dof model takes the `base` and `internal` formulations, not `{}`", bad.name()),
+                    b.kind.span,
+                    format!("`bearings` belong to the {} model", owners.join(" and ")),
                 )
-                .hint(
-                    "friction acts through the mesh force in the 6-DOF model: write `formulations = [base, internal]`",
-                ),
+                .hint(format!(
+                    "write `model = {}` to use them, or leave them out for the {} model",
+                    owners.join("` or `model = "),
+                    entry.label
+                )),
             );
             return None;
         }
-        DynamicModel::SixDof { bearings: bearings(&f, block, errors)? }
-    } else {
-        if let Some(b) = f.blocks.iter().find(|b| b.kind.text == "bearings") {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::OutOfRange, b.kind.span, "`bearings` belong to the six_dof model")
-                    .hint("write `model = six_dof` to use them, or leave them out for the SDOF model"),
-            );
-            return None;
-        }
-        DynamicModel::Sdof
+        None
     };
+    let model = DynamicModel { id: entry.id, bearings };
     let stiffness = stiffness(&f, base_dir, errors)?;
     Some(DynamicsSpec {
         model,
@@ -132,6 +136,15 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         free_response,
         span: block.kind.span,
     })
+}
+
+/// "`a`", "`a` and `b`", "`a`, `b` and `c`".
+fn and_list(items: &[String]) -> String {
+    match items.split_last() {
+        None => String::new(),
+        Some((last, [])) => last.clone(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+    }
 }
 
 fn formulations(v: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<DynamicFormulation>> {

@@ -12,10 +12,10 @@ const STE_KEYS: &[&str] = &["amplitudes", "phases"];
 const BEARING_KEYS: &[&str] = &["loa", "oloa", "damping_ratio"];
 
 /// `bearings { pinion { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }  wheel { ... } }`.
-pub(super) fn bearings(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -> Option<[Bearing; 2]> {
+pub(super) fn bearings(f: &Fields, block: &Block, model: &str, errors: &mut Vec<Diagnostic>) -> Option<[Bearing; 2]> {
     let Some(b) = f.blocks.iter().find(|b| b.kind.text == "bearings") else {
         errors.push(
-            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "the six_dof model needs `bearings`")
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, format!("the {model} model needs `bearings`"))
                 .hint("add `bearings { pinion { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 }  wheel { loa = 5e8 N/m  oloa = 5e8 N/m  damping_ratio = 0.02 } }`"),
         );
         return None;

@@ -60,3 +60,21 @@ fn stiffness_models_by_hand() {
     let c = gearloss::geometry::stiffness::iso_6336_single_stiffness(&g) * g.face_width * 1e9;
     assert!((iso.upper_bound(&g) / (3.0 * c) - 1.0).abs() < 1e-12);
 }
+
+/// Dynamic models: each row names its file in `src/dynamics/models/`, each entry file has a row;
+/// every row sits at its identity's index, names a distinct model, takes the base formulation and
+/// builds a model that answers to its own identity.
+#[test]
+fn dynamic_models_one_file_one_row() {
+    use gearloss::dynamics::models::{ModelInputs, MODELS};
+    let files = entry_files("dynamics/models", &["mod.rs", "catalog.rs", "gear_dynamics.rs", "model_id.rs"]);
+    let rows: BTreeSet<String> = MODELS.iter().map(|m| m.file.to_string()).collect();
+    assert_eq!(files, rows, "files in src/dynamics/models/ and rows of MODELS differ");
+    let inputs = ModelInputs { mass: [Some(1.0), Some(4.0)], bearings: None };
+    for (i, m) in MODELS.iter().enumerate() {
+        assert_eq!(m.id as usize, i, "{}", m.name);
+        assert_eq!(MODELS.iter().filter(|x| x.name == m.name).count(), 1, "{}", m.name);
+        assert!(m.formulations.contains(&gearloss::dynamics::DynamicFormulation::Base), "{}", m.name);
+        assert_eq!((m.build)(&inputs).id(), m.id, "{}", m.name);
+    }
+}
