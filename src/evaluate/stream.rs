@@ -194,7 +194,7 @@ fn point_summary(
         let law = scene.dynamics.as_ref().and_then(|d| d.friction.as_ref());
         for r in &point.results {
             let friction = law.filter(|_| r.formulation != crate::dynamics::DynamicFormulation::Base);
-            let resp = r.response.as_ref().filter(|x| x.gears.is_empty());
+            let resp = r.response.as_ref();
             rows.push(SummaryRow {
                 kind: RowKind::Dynamics,
                 law: friction.map_or(String::new(), |l| l.law.name().to_string()),
