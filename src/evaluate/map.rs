@@ -10,6 +10,7 @@ use serde::Serialize;
 use super::cases::state_at;
 use super::laws::evaluate_law;
 use super::setup::{contact_table, Setup};
+use crate::losses::parts::COLUMNS;
 use crate::losses::BudgetParts;
 use crate::model::{Formulation, Operating, Scene};
 
@@ -89,8 +90,10 @@ pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
 impl EfficiencyMap {
     /// efficiency_map.csv: one row per grid point, law and formulation (SI: N·m, rad/s, W).
     pub fn csv(&self, labels: &[String]) -> String {
-        let mut out = String::from(
-            "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,gear_no_load_W,bearings_no_load_W,bearings_load_W,seals_W,total_loss_W,total_efficiency\n",
+        let parts: Vec<String> = COLUMNS.iter().map(|c| format!("{}_W", c.key)).collect();
+        let mut out = format!(
+            "pinion_torque_N_m,pinion_speed_rad_s,pinion_speed_written,law,formulation,mesh_efficiency,mesh_loss_W,{},total_loss_W,total_efficiency\n",
+            parts.join(",")
         );
         let num =
             |x: Option<f64>| x.map_or(String::new(), |x| format!("{:e}", crate::numerics::rounding::round_sig(x)));
@@ -98,7 +101,7 @@ impl EfficiencyMap {
             let b = c.budget.as_ref();
             let _ = writeln!(
                 out,
-                "{},{},{},\"{}\",{},{},{},{},{},{},{},{},{}",
+                "{},{},{},\"{}\",{},{},{},{},{},{}",
                 num(Some(self.torques[c.torque_index])),
                 num(Some(self.speeds[c.speed_index])),
                 self.speeds_written[c.speed_index],
@@ -106,10 +109,7 @@ impl EfficiencyMap {
                 c.formulation.name(),
                 num(Some(c.mesh_efficiency)),
                 num(Some(c.mesh_loss)),
-                num(b.and_then(|b| b.gear_no_load)),
-                num(b.and_then(|b| b.bearings_no_load)),
-                num(b.and_then(|b| b.bearings_load)),
-                num(b.and_then(|b| b.seals)),
+                COLUMNS.iter().map(|col| num(b.and_then(|b| b.part(col.column)))).collect::<Vec<_>>().join(","),
                 num(b.map(|b| b.total_loss)),
                 num(b.map(|b| b.total_efficiency)),
             );

@@ -18,16 +18,15 @@ use serde::{Deserialize, Serialize};
 
 use super::budget::{BearingLoads, BudgetParts};
 use super::gearbox::Gearbox;
+use super::parts::catalog::columns_of;
+use super::parts::LossColumn;
 
 /// The four columns of bearing place `i` (1-based), after its prefix `bearing_{i}_`.
 const BEARING_FIELDS: [&str; 4] = ["radial_load_N", "axial_load_N", "no_load_W", "load_W"];
 
-/// The budget's parts, in column order.
-const PARTS: [&str; 4] = ["gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"];
-
-/// The column names: the parts `present` (in [`PARTS`] order), the total, four per bearing place.
-fn column_names(present: [bool; 4], places: usize) -> Vec<String> {
-    let parts = PARTS.iter().zip(present).filter(|(_, on)| *on).map(|(n, _)| n.to_string());
+/// The column names: the parts `present` (in column order), the total, four per bearing place.
+fn column_names(present: impl Iterator<Item = LossColumn>, places: usize) -> Vec<String> {
+    let parts = present.map(|c| format!("{}_W", c.key()));
     let mut out: Vec<String> = parts.chain(["total_loss_W".into(), "total_efficiency".into()]).collect();
     for i in 1..=places {
         out.extend(BEARING_FIELDS.iter().map(|f| format!("bearing_{i}_{f}")));
@@ -37,26 +36,20 @@ fn column_names(present: [bool; 4], places: usize) -> Vec<String> {
 
 /// The budget columns of a scene with this gearbox, in the order [`values`] gives their values.
 pub fn names(g: &Gearbox) -> Vec<String> {
-    let bearings = g.bearings.iter().any(|b| !b.is_empty());
-    let present = [g.lubrication.is_some(), bearings, bearings, g.seals.iter().any(|s| !s.is_empty())];
-    column_names(present, g.bearings.iter().map(Vec::len).sum())
-}
-
-fn part_values(p: &BudgetParts) -> [Option<f64>; 4] {
-    [p.gear_no_load, p.bearings_no_load, p.bearings_load, p.seals]
+    column_names(columns_of(g).into_iter(), g.bearings.iter().map(Vec::len).sum())
 }
 
 /// The budget's values in the order of [`names`] for the gearbox that gave them (no names built:
 /// the record files write these for every row of a sweep).
 pub fn values(p: &BudgetParts) -> impl Iterator<Item = Option<f64>> + '_ {
-    let parts = part_values(p).into_iter().flatten().map(Some);
+    let parts = p.parts.iter().map(|(_, v)| Some(*v));
     let bearings = p.bearings.iter().flat_map(|b| [Some(b.radial_load), Some(b.axial_load), Some(b.no_load), b.load]);
     parts.chain([Some(p.total_loss), Some(p.total_efficiency)]).chain(bearings)
 }
 
 /// The budget's values with their column names.
 pub fn cells(p: &BudgetParts) -> Vec<(String, Option<f64>)> {
-    column_names(part_values(p).map(|v| v.is_some()), p.bearings.len()).into_iter().zip(values(p)).collect()
+    column_names(p.parts.iter().map(|(c, _)| *c), p.bearings.len()).into_iter().zip(values(p)).collect()
 }
 
 impl Serialize for BudgetParts {
@@ -96,10 +89,9 @@ impl<'de> Visitor<'de> for PartsVisitor {
             let Ok(value) = map.next_value::<Option<f64>>() else { continue };
             let value = value.unwrap_or(f64::NAN);
             match key.as_str() {
-                "gear_no_load_W" => p.gear_no_load = Some(value),
-                "bearings_no_load_W" => p.bearings_no_load = Some(value),
-                "bearings_load_W" => p.bearings_load = Some(value),
-                "seals_W" => p.seals = Some(value),
+                _ if LossColumn::of_record(&key).is_some() => {
+                    p.parts.extend(LossColumn::of_record(&key).map(|c| (c, value)));
+                }
                 "total_loss_W" => total = Some(value),
                 "total_efficiency" => efficiency = Some(value),
                 _ => {
@@ -119,6 +111,7 @@ impl<'de> Visitor<'de> for PartsVisitor {
                 }
             }
         }
+        p.parts.sort_by_key(|(c, _)| *c);
         p.total_loss = total.ok_or_else(|| serde::de::Error::missing_field("total_loss_W"))?;
         p.total_efficiency = efficiency.ok_or_else(|| serde::de::Error::missing_field("total_efficiency"))?;
         Ok(p)
@@ -142,10 +135,11 @@ mod tests {
     fn round_trip() {
         let b = |x: f64, load| BearingLoads { radial_load: x, axial_load: 0.5 * x, no_load: 2.0, load };
         let p = BudgetParts {
-            gear_no_load: Some(10.0),
-            bearings_no_load: Some(4.0),
-            bearings_load: Some(3.25),
-            seals: None,
+            parts: vec![
+                (LossColumn::GearNoLoad, 10.0),
+                (LossColumn::BearingsNoLoad, 4.0),
+                (LossColumn::BearingsLoad, 3.25),
+            ],
             total_loss: 120.5,
             total_efficiency: 0.987,
             bearings: vec![b(1000.0, Some(1.5)), b(1200.0, None), b(800.0, Some(1.75))],

@@ -1,8 +1,9 @@
 //! The gearbox loss budget beside the mesh: load-independent gear losses (churning for dip
 //! lubrication, the jet's impulse and the gears' windage for injection), rolling-bearing losses
 //! (Palmgren, or the SKF model where its constants are given) and radial shaft-seal
-//! losses, each a small function with its source, and [`budget::LossBudget`] which adds them up
-//! with the mesh's load-dependent loss at an operating point.
+//! losses, each a small function with its source; [`parts`], the catalogue that makes each of them a
+//! part of the budget (one file and one row per part), and [`budget::LossBudget`] which adds the
+//! parts up beside the mesh's load-dependent loss at an operating point.
 //!
 //! The method is ISO/TR 14179-2:2001 (Gears — Thermal capacity — Part 2), the FZG method of
 //! Niemann & Winter: P_V = P_VZP + P_VZ0 + P_VL + P_VD (mesh under load, gears without load,
@@ -15,6 +16,7 @@ pub mod columns;
 pub mod gear_no_load;
 pub mod gearbox;
 pub mod oil;
+pub mod parts;
 pub mod seals;
 pub mod skf_bearing;
 

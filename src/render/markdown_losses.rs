@@ -4,6 +4,7 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, law_words, row, sig};
+use crate::losses::parts::COLUMNS;
 use crate::report::{Report, Severity};
 
 /// Rows of the headline's table before it points to the details.
@@ -153,15 +154,8 @@ pub fn budget_section(r: &Report) -> String {
     if helical {
         cols.extend(["ISO P_in μ̄ H_V W", "ratio"]);
     }
-    cols.extend([
-        "gears no-load W",
-        "bearings no-load W",
-        "bearings load W",
-        "seals W",
-        "total W",
-        "mesh %",
-        "η total %",
-    ]);
+    cols.extend(COLUMNS.iter().map(|c| c.heading));
+    cols.extend(["total W", "mesh %", "η total %"]);
     header(&mut out, &cols);
     let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| fixed(q.si(), 2));
     for e in &r.efficiency {
@@ -172,11 +166,8 @@ pub fn budget_section(r: &Report) -> String {
             cells.push(w(e.ohlendorf.map(|o| o.power_loss)));
             cells.push(e.ohlendorf.map_or("—".into(), |o| fixed(o.line_integral_ratio.0, 4)));
         }
+        cells.extend(COLUMNS.iter().map(|c| w(b.part(c.column))));
         cells.extend([
-            w(b.gear_no_load),
-            w(b.bearings_no_load),
-            w(b.bearings_load),
-            w(b.seals),
             fixed(b.total_loss.si(), 2),
             fixed(100.0 * e.power_loss.si() / b.total_loss.si(), 1),
             fixed(100.0 * b.total_efficiency.0, 3),

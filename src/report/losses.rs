@@ -6,6 +6,7 @@ use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
 use crate::evaluate::map::{EfficiencyMap, MapCell};
 use crate::evaluate::Evaluation;
+use crate::losses::parts::LossColumn;
 use crate::losses::{Bearing, BudgetParts, Gearbox};
 use crate::model::{Formulation, Scene};
 
@@ -67,19 +68,62 @@ pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantRep
 /// The budget beside an efficiency record's mesh loss, in W; parts the scene does not describe are absent.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct BudgetRecord {
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub gear_no_load: Option<Q>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bearings_no_load: Option<Q>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bearings_load: Option<Q>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub seals: Option<Q>,
+    /// Each column the gearbox fills, written under its key ([`LossColumn::key`]).
+    #[serde(flatten)]
+    pub parts: PartPowers,
     pub total_loss: Q,
     pub total_efficiency: Num,
     /// Every bearing place in the scene's order (pinion shaft, then wheel shaft).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub bearings: Vec<BearingRecord>,
+}
+
+impl BudgetRecord {
+    /// One column's power, when the gearbox fills it.
+    pub fn part(&self, column: LossColumn) -> Option<Q> {
+        self.parts.0.iter().find(|(c, _)| *c == column).map(|(_, q)| *q)
+    }
+}
+
+/// The budget's column powers, in column order; written as one key per column.
+#[derive(Debug, Clone, Default)]
+pub struct PartPowers(pub Vec<(LossColumn, Q)>);
+
+impl Serialize for PartPowers {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (c, q) in &self.0 {
+            map.serialize_entry(c.key(), q)?;
+        }
+        map.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for PartPowers {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Columns;
+        impl<'de> serde::de::Visitor<'de> for Columns {
+            type Value = PartPowers;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("the loss budget's columns")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<PartPowers, A::Error> {
+                let mut parts = Vec::new();
+                while let Some(key) = map.next_key::<String>()? {
+                    match LossColumn::of_key(&key) {
+                        Some(c) => parts.push((c, map.next_value::<Q>()?)),
+                        None => {
+                            map.next_value::<serde::de::IgnoredAny>()?;
+                        }
+                    }
+                }
+                parts.sort_by_key(|(c, _): &(LossColumn, Q)| *c);
+                Ok(PartPowers(parts))
+            }
+        }
+        d.deserialize_map(Columns)
+    }
 }
 
 /// One bearing place of the budget: what it is, where, what it carries and loses.
@@ -130,10 +174,7 @@ pub fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord
         })
         .unwrap_or_default();
     BudgetRecord {
-        gear_no_load: w(p.gear_no_load),
-        bearings_no_load: w(p.bearings_no_load),
-        bearings_load: w(p.bearings_load),
-        seals: w(p.seals),
+        parts: PartPowers(p.parts.iter().map(|(c, v)| (*c, Q::new(*v, "W"))).collect()),
         total_loss: Q::new(p.total_loss, "W"),
         total_efficiency: Num(p.total_efficiency),
         bearings,

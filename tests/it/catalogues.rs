@@ -78,3 +78,22 @@ fn dynamic_models_one_file_one_row() {
         assert_eq!((m.build)(&inputs).id(), m.id, "{}", m.name);
     }
 }
+
+/// Loss parts: each row names its file in `src/losses/parts/`, each entry file has a row; every row
+/// sits at its identity's index; every budget column is filled by exactly one part, and the
+/// columns sit at their identities' indices with distinct keys.
+#[test]
+fn loss_parts_one_file_one_row() {
+    use gearloss::losses::parts::{COLUMNS, PARTS};
+    let files = entry_files("losses/parts", &["mod.rs", "catalog.rs", "loss_column.rs", "loss_part.rs"]);
+    let rows: BTreeSet<String> = PARTS.iter().map(|p| p.file.to_string()).collect();
+    assert_eq!(files, rows, "files in src/losses/parts/ and rows of PARTS differ");
+    for (i, p) in PARTS.iter().enumerate() {
+        assert_eq!(p.id as usize, i, "{}", p.name);
+    }
+    for (i, c) in COLUMNS.iter().enumerate() {
+        assert_eq!(c.column as usize, i, "{}", c.key);
+        assert_eq!(PARTS.iter().filter(|p| p.columns.contains(&c.column)).count(), 1, "{}", c.key);
+        assert_eq!(COLUMNS.iter().filter(|x| x.key == c.key).count(), 1, "{}", c.key);
+    }
+}

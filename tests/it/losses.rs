@@ -4,6 +4,7 @@
 use gearloss::evaluate::evaluate_scene;
 use gearloss::geometry::OperatingState;
 use gearloss::losses::gear_no_load::{windage_loss, GearsRunning};
+use gearloss::losses::parts::LossColumn;
 use gearloss::losses::{loss_budget, Bearing, BearingType, Gearbox, Lubrication, Oil, Seal};
 
 /// A mineral oil of 50 mm²/s and 870 kg/m³.
@@ -110,7 +111,7 @@ fn budget_by_hand() {
     let c1 = 0.063 * (e1 + e2) / 10.0 + 0.0128 * (width / 10.0f64).powi(3);
     let c2 = (e1 + e2) / 800.0 + 0.2;
     let churning = c_sp * c1 * (c2 * v_t / 10.0).exp() * w1;
-    assert!((b.gear_no_load.unwrap() / churning - 1.0).abs() < 1e-9);
+    assert!((b.part(LossColumn::GearNoLoad).unwrap() / churning - 1.0).abs() < 1e-9);
 
     let dm = 60.0;
     let m0 = |w: f64| {
@@ -118,12 +119,12 @@ fn budget_by_hand() {
         1e-7 * 2.5 * nn.powf(2.0 / 3.0) * dm * dm * dm * 1e-3
     };
     let no_load = 2.0 * (m0(w1) * w1 + m0(w2) * w2);
-    assert!((b.bearings_no_load.unwrap() / no_load - 1.0).abs() < 1e-9);
+    assert!((b.part(LossColumn::BearingsNoLoad).unwrap() / no_load - 1.0).abs() < 1e-9);
     let fr = t / g.base_radius[0] / 2.0;
     let load = 2.0 * 0.0003 * fr * dm * 1e-3 * (w1 + w2);
-    assert!((b.bearings_load.unwrap() / load - 1.0).abs() < 1e-9);
+    assert!((b.part(LossColumn::BearingsLoad).unwrap() / load - 1.0).abs() < 1e-9);
     let seals = 7.69e-6 * 900.0 * (1500.0 + 1000.0);
-    assert!((b.seals.unwrap() / seals - 1.0).abs() < 1e-9);
+    assert!((b.part(LossColumn::Seals).unwrap() / seals - 1.0).abs() < 1e-9);
 
     let parts = b.with_mesh(100.0, t * w1);
     assert!((parts.total_loss - (100.0 + churning + no_load + load + seals)).abs() < 1e-9 * parts.total_loss);
@@ -159,7 +160,7 @@ fn injection_and_skf_budget_by_hand() {
                 * 1e3
         })
         .sum();
-    assert!((b.gear_no_load.unwrap() / (impulse + windage) - 1.0).abs() < 1e-9);
+    assert!((b.part(LossColumn::GearNoLoad).unwrap() / (impulse + windage) - 1.0).abs() < 1e-9);
     assert!(windage > 1.0 && windage < impulse, "windage {windage} W, impulse {impulse} W");
 
     let (d, big_d) = (30.0, 55.0);
@@ -176,8 +177,8 @@ fn injection_and_skf_budget_by_hand() {
         rolling += 2.0 * m_rr * 1e-3 * w;
         sliding += 2.0 * m_sl * 1e-3 * w;
     }
-    assert!((b.bearings_no_load.unwrap() / rolling - 1.0).abs() < 1e-9, "{:?} vs {rolling}", b.bearings_no_load);
-    assert!((b.bearings_load.unwrap() / sliding - 1.0).abs() < 1e-9, "{:?} vs {sliding}", b.bearings_load);
+    assert!((b.part(LossColumn::BearingsNoLoad).unwrap() / rolling - 1.0).abs() < 1e-9, "{:?} vs {rolling}", b.parts);
+    assert!((b.part(LossColumn::BearingsLoad).unwrap() / sliding - 1.0).abs() < 1e-9, "{:?} vs {sliding}", b.parts);
 }
 
 /// The lever rule: bearings at −40 and +60 mm carry 60 % and 40 % of F_bt; a helical pair's axial
@@ -200,7 +201,7 @@ fn lever_rule_and_axial_moment() {
     assert!((b0.radial_load / r1 - 1.0).abs() < 1e-12, "{} vs {r1}", b0.radial_load);
     assert!((b1.radial_load / r2 - 1.0).abs() < 1e-12);
     assert!((b0.axial_load - g.axial_force(t)).abs() < 1e-9 && b1.axial_load == 0.0);
-    assert!(b.gear_no_load.is_none() && b.seals.is_none());
+    assert!(b.part(LossColumn::GearNoLoad).is_none() && b.part(LossColumn::Seals).is_none());
 }
 
 /// Statics of both shafts of a helical pair (issue 26): with positions on both shafts, each shaft's
@@ -211,7 +212,7 @@ fn lever_rule_and_axial_moment() {
 /// unloads its first place where the pinion's loads it (by hand: lever · F_r + F_a r_w2 / span).
 #[test]
 fn both_shafts_balance_forces_and_moments() {
-    use gearloss::losses::budget::{shaft_reactions, GearForce};
+    use gearloss::losses::parts::bearings::{shaft_reactions, GearForce};
     let scene = spec("metric_helical.gear");
     let g = scene.gears.geometry().unwrap();
     let place = |at: f64, count: usize| bearing_at(BearingType::TaperedRoller, at, count);

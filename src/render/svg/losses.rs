@@ -5,17 +5,20 @@ use plotters::prelude::*;
 
 use super::maps::colour;
 use super::panel::{plottable, PALETTE};
+use crate::losses::parts::COLUMNS;
 use crate::report::Report;
 
-/// The parts of a budget bar, bottom to top.
-const PARTS: [&str; 5] = ["mesh (load-dependent)", "gears no-load", "bearings, no-load", "bearings, load", "seals"];
+/// The parts of a budget bar, bottom to top: the mesh, then the budget's columns.
+fn parts() -> Vec<&'static str> {
+    std::iter::once("mesh (load-dependent)").chain(COLUMNS.iter().map(|c| c.bar)).collect()
+}
 
 /// loss_budget.svg: one bar per operating point and law (the first formulation of each law),
 /// stacked by part; the legend stands beside the plot area.
 pub fn loss_budget(r: &Report) -> Result<String, String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let first = r.efficiency.first().map(|x| x.formulation);
-    let bars: Vec<(String, [f64; 5])> = r
+    let bars: Vec<(String, Vec<f64>)> = r
         .efficiency
         .iter()
         .filter(|x| Some(x.formulation) == first)
@@ -29,7 +32,8 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
                 r.speed_unit.name,
                 crate::render::table::law_words(&x.label)
             );
-            Some((label, [x.power_loss.si(), w(b.gear_no_load), w(b.bearings_no_load), w(b.bearings_load), w(b.seals)]))
+            let powers = std::iter::once(x.power_loss.si()).chain(COLUMNS.iter().map(|c| w(b.part(c.column))));
+            Some((label, powers.collect::<Vec<f64>>()))
         })
         .collect();
     let top = bars.iter().map(|(_, p)| p.iter().sum::<f64>()).fold(0.0, f64::max);
@@ -74,7 +78,7 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
             }
         }
         let style = ("sans-serif", 13).into_font();
-        for (k, name) in PARTS.iter().enumerate() {
+        for (k, name) in parts().iter().enumerate() {
             let y = 40 + 20 * k as i32;
             legend.draw(&Rectangle::new([(10, y), (24, y + 12)], PALETTE[k].filled())).map_err(e)?;
             legend.draw(&Text::new(name.to_string(), (30, y), style.clone())).map_err(e)?;

@@ -1,0 +1,18 @@
+//! The loss parts of the budget beside the mesh, as a catalogue: each part is one file
+//! implementing [`LossPart`] and one row of [`catalog::PARTS`] naming the columns it fills
+//! ([`LossColumn`], one row of [`loss_column::COLUMNS`] each). The budget, the record files, the
+//! report and the plots iterate the catalogue, so a new loss model adds rows, not fields.
+//!
+//! Today: the gears without load (churning, or jet impulse and windage: [`gear_no_load`]), the
+//! rolling bearings with the loads they carry ([`bearings`]) and the shaft seals ([`seals`]).
+
+pub mod bearings;
+pub mod catalog;
+pub mod gear_no_load;
+pub mod loss_column;
+pub mod loss_part;
+pub mod seals;
+
+pub use catalog::{LossPartEntry, LossPartId, PARTS};
+pub use loss_column::{ColumnEntry, LossColumn, COLUMNS};
+pub use loss_part::{LossPart, PartLosses, PartState};
