@@ -27,6 +27,7 @@ pub mod response;
 pub mod sdof;
 pub mod six_dof;
 pub mod six_dof_response;
+pub mod spec;
 pub mod trajectory;
 
 pub use floquet::{Floquet, Multiplier};

@@ -14,6 +14,7 @@ pub mod map;
 pub mod plan;
 pub mod records;
 pub mod setup;
+pub mod stages;
 pub mod stream;
 pub mod tally;
 pub mod teeth;

@@ -1,6 +1,7 @@
 //! The `.gear` language: grammar, syntax tree, units, diagnostics and lowering.
 
 pub mod ast;
+pub mod check;
 pub mod fields;
 pub mod grammar;
 pub mod limits;

@@ -16,9 +16,9 @@
 //! reaction) towards decreasing `at`. For a pair of the other hand, or turning the other way, the
 //! axial forces reverse: mirror the positions (write each `at` with the opposite sign).
 
-use super::catalog::LossPartId;
 use super::loss_column::LossColumn;
 use super::loss_part::{LossPart, PartLosses, PartState};
+use super::part_id::LossPartId;
 use crate::losses::bearings::Bearing;
 use crate::losses::budget::{BearingLoads, BearingLoss};
 use crate::losses::gearbox::Gearbox;

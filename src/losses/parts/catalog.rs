@@ -3,16 +3,9 @@
 
 use super::loss_column::LossColumn;
 use super::loss_part::LossPart;
+pub use super::part_id::LossPartId;
 use super::{bearings, gear_no_load, seals};
 use crate::losses::gearbox::Gearbox;
-
-/// The typed identity of a loss part (its index in [`PARTS`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum LossPartId {
-    GearNoLoad,
-    Bearings,
-    Seals,
-}
 
 impl LossPartId {
     pub fn entry(self) -> &'static LossPartEntry {

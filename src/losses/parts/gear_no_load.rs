@@ -2,9 +2,9 @@
 //! lubrication, the jet's impulse and the gears' windage for injection (ISO/TR 14179-2:2001; the
 //! models and their sources are in [`crate::losses::gear_no_load`]).
 
-use super::catalog::LossPartId;
 use super::loss_column::LossColumn;
 use super::loss_part::{LossPart, PartLosses, PartState};
+use super::part_id::LossPartId;
 use crate::losses::gear_no_load::{GearsRunning, Lubrication};
 use crate::losses::gearbox::Gearbox;
 use crate::losses::oil::Oil;

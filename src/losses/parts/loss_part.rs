@@ -29,8 +29,8 @@
 //! assert!((out.power(LossColumn::Seals).unwrap() - (5.0 + 7.69e-6 * 900.0 * n)).abs() < 1e-9);
 //! ```
 
-use super::catalog::LossPartId;
 use super::loss_column::LossColumn;
+use super::part_id::LossPartId;
 use crate::losses::budget::BearingLoss;
 use crate::losses::oil::Oil;
 

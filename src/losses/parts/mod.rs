@@ -11,6 +11,7 @@ pub mod catalog;
 pub mod gear_no_load;
 pub mod loss_column;
 pub mod loss_part;
+pub mod part_id;
 pub mod seals;
 
 pub use catalog::{LossPartEntry, LossPartId, PARTS};

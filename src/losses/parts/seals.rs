@@ -1,9 +1,9 @@
 //! The shaft seals' loss P_VD as a part of the budget (ISO/TR 14179-2:2001 after Linke; the model
 //! is [`crate::losses::seals`]): every seal of both shafts at its shaft's speed.
 
-use super::catalog::LossPartId;
 use super::loss_column::LossColumn;
 use super::loss_part::{LossPart, PartLosses, PartState};
+use super::part_id::LossPartId;
 use crate::losses::gearbox::Gearbox;
 use crate::losses::oil::Oil;
 use crate::losses::seals::Seal;

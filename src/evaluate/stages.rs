@@ -1,0 +1,31 @@
+//! Stage 3 as the pipeline calls it: the plan's points streamed into a record sink, and the
+//! detail points in full, each announcing itself to a [`Progress`].
+
+use super::dynamics::DynamicsPoint;
+use super::evaluation::Evaluation;
+use super::plan::Plan;
+use super::records::RecordSink;
+use super::stream::{evaluate_records, Streamed};
+use crate::model::Scene;
+use crate::progress::Progress;
+
+/// The plan's points streamed: summary rows to `sink` in sweep order, the tally and the detail
+/// points' dynamics returned.
+pub fn stream(
+    scene: &Scene,
+    plan: &Plan,
+    sink: &mut dyn RecordSink,
+    progress: &dyn Progress,
+) -> std::io::Result<Streamed> {
+    let eval = super::prepare(scene, plan);
+    progress.stage("evaluate", plan.range.len() as u64);
+    evaluate_records(scene, &eval, plan, sink, &|n| progress.advance(n as u64))
+}
+
+/// The plan's detail points in full, reusing the dynamics `known` by point number.
+pub fn details(scene: &Scene, plan: &Plan, known: &[(usize, DynamicsPoint)], progress: &dyn Progress) -> Evaluation {
+    let mut eval = super::prepare(scene, plan);
+    progress.stage("details", plan.detail.len() as u64);
+    super::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));
+    eval
+}

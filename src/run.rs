@@ -1,0 +1,227 @@
+//! The whole run, built from the stages: a scene (at each of its oil temperatures) streamed into
+//! its record files, its details evaluated, reported and rendered into a report folder written
+//! whole ([`run_into`]); the same in memory ([`run_to_files`], [`report_of`]); a shard's part and
+//! the merge of shards ([`merge_into`]).
+
+use std::path::{Path, PathBuf};
+
+use crate::evaluate::records::RecordWriter;
+use crate::evaluate::stages::{details, stream};
+use crate::evaluate::stream::Streamed;
+use crate::evaluate::{self, Plan, Shard, Tally};
+use crate::folder::ReportFolder;
+use crate::model::Scene;
+use crate::progress::{Progress, Quiet};
+use crate::render::RenderedReport;
+use crate::report::{self, Report};
+use crate::run_error::RunError;
+use crate::scene::check::check;
+use crate::{render, rerender, shard};
+
+/// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
+pub fn report_of(scene: &Scene) -> Report {
+    let scene = &*evaluate::thermal::at_first_balance(scene);
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
+        .expect("records that go nowhere cannot fail to be written");
+    let eval = details(scene, &plan, &streamed.detail_dynamics, &Quiet);
+    report::build_report(scene, &eval, &streamed.tally, &plan)
+}
+
+/// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
+pub fn has_records(scene: &Scene) -> bool {
+    let a = &scene.analyses;
+    a.friction_along_loa || a.efficiency.is_some() || (a.dynamics && scene.dynamics.is_some())
+}
+
+/// Stages 3 to 5 after the sweep: details (reusing the dynamics the stream computed), report, render.
+fn finish(
+    scene: &Scene,
+    plan: &Plan,
+    tally: &Tally,
+    known: &[(usize, evaluate::dynamics::DynamicsPoint)],
+    progress: &dyn Progress,
+) -> Result<(Report, RenderedReport), RunError> {
+    let eval = details(scene, plan, known, progress);
+    progress.stage("report", 1);
+    let report = report::build_report(scene, &eval, tally, plan);
+    let timings = eval.dynamics.as_ref().and_then(report::dynamics::timings);
+    progress.stage("render", 1);
+    let (report, mut rendered) = rerender::render_as_written(&report, timings.as_ref())?;
+    // The map's cells are data of the run, as the record files are: written beside the report.
+    if let (Some(map), Some(m)) = (&eval.efficiency_map, &report.efficiency_map) {
+        let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
+        rendered.files.push((m.csv.clone(), map.csv(&labels)));
+    }
+    Ok((report, rendered))
+}
+
+/// One scene (at one oil temperature) run in memory: its report and files, the record files included.
+fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
+    let scene = &*evaluate::thermal::at_first_balance(scene);
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let budget = evaluate::records::budget_columns(scene);
+    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), &budget, true).map_err(RunError::io("records"))?;
+    let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
+    let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, &Quiet)?;
+    if has_records(scene) {
+        let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
+        let text = |b: Vec<u8>| String::from_utf8(b).expect("records are UTF-8");
+        rendered.files.push((report::sweep::RECORDS_CSV.into(), text(csv)));
+        rendered.files.push((report::sweep::RECORDS_JSONL.into(), text(jsonl)));
+    }
+    Ok((report, rendered.files))
+}
+
+/// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
+/// render; the record files are among the files returned. A scene with several oil temperatures
+/// gives one report per temperature in its folder (`oil_temperature_90degC/report.md`) and their
+/// comparison at the top ([`report::oil_sweep`]).
+pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
+    let scene = check(source_name, source).map_err(RunError::Scene)?;
+    let slug = report::slug(&scene.title);
+    if scene.operating.oil_temperatures.is_none() {
+        let (_, files) = run_scene_to_files(&scene)?;
+        return Ok(RenderedReport { slug, files });
+    }
+    let mut files = Vec::new();
+    let top = each_oil_temperature(&scene, |at, dir| {
+        let (report, run_files) = run_scene_to_files(at)?;
+        files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
+        Ok(report)
+    })?;
+    Ok(RenderedReport { slug, files: top.into_iter().chain(files).collect() })
+}
+
+/// Runs a scene at each of its oil temperatures by `run_one(scene at θ, its folder)` and renders
+/// the comparison of the runs: the files at the top of the report folder.
+fn each_oil_temperature(
+    scene: &Scene,
+    mut run_one: impl FnMut(&Scene, &str) -> Result<Report, RunError>,
+) -> Result<Vec<(String, String)>, RunError> {
+    let mut runs = Vec::new();
+    for (i, label) in scene.oil_temperature_labels().into_iter().enumerate() {
+        let at = scene.at_oil_temperature(i);
+        let report = run_one(&at, &report::oil_sweep::run_folder(&label))?;
+        let kelvin = at.operating.oil_temperature.as_ref().map_or(f64::NAN, |t| t.value.value);
+        runs.push((label, kelvin, report));
+    }
+    render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::Render)
+}
+
+/// The plan's points streamed into the record files of `folder` under `dir` (`""`: the top), when
+/// the scene writes records; returns the stream and the record files written.
+fn stream_into(
+    scene: &Scene,
+    plan: &Plan,
+    folder: &ReportFolder,
+    dir: &str,
+    progress: &dyn Progress,
+) -> Result<(Streamed, Vec<String>), RunError> {
+    let io = RunError::io("the record files");
+    if !has_records(scene) {
+        return Ok((stream(scene, plan, &mut evaluate::records::NoRecords, progress).map_err(io)?, Vec::new()));
+    }
+    let mut sink = shard::record_files(folder, dir, &evaluate::records::budget_columns(scene)).map_err(&io)?;
+    let streamed = stream(scene, plan, &mut sink, progress).map_err(&io)?;
+    sink.finish().map_err(&io)?;
+    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    Ok((streamed, vec![path(report::sweep::RECORDS_CSV), path(report::sweep::RECORDS_JSONL)]))
+}
+
+/// One scene (at one oil temperature) into `folder`, its files under `dir` (`""`: the top): the
+/// record files as the sweep runs, then the report. Returns the report and the files written.
+fn run_scene_into(
+    scene: &Scene,
+    folder: &ReportFolder,
+    dir: &str,
+    progress: &dyn Progress,
+) -> Result<(Report, Vec<String>), RunError> {
+    let scene = &*evaluate::thermal::at_first_balance(scene);
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let (streamed, mut files) = stream_into(scene, &plan, folder, dir, progress)?;
+    let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, progress)?;
+    progress.stage("write", rendered.files.len() as u64);
+    for (file, content) in &rendered.files {
+        folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(path(file));
+        progress.advance(1);
+    }
+    Ok((report, files))
+}
+
+/// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
+/// `out_dir/<slug>.shard-K-of-N/` with the shard's records and tally for `gearloss merge`),
+/// written into a temporary folder and renamed into place. Returns the folder and its files.
+pub fn run_into(
+    source_name: &str,
+    source: &str,
+    scene: &Scene,
+    out_dir: &Path,
+    shard: Option<Shard>,
+    progress: &dyn Progress,
+) -> Result<(PathBuf, Vec<String>), RunError> {
+    let slug = report::slug(&scene.title);
+    let labels = scene.oil_temperature_labels();
+    let Some(shard) = shard else {
+        let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
+        if labels.is_empty() {
+            let (_, files) = run_scene_into(scene, &folder, "", progress)?;
+            return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
+        }
+        let mut files = Vec::new();
+        let top = each_oil_temperature(scene, |at, dir| {
+            let (report, written) = run_scene_into(at, &folder, dir, progress)?;
+            files.extend(written);
+            Ok(report)
+        })?;
+        for (k, (file, content)) in top.into_iter().enumerate() {
+            folder.write(&file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+            files.insert(k, file);
+        }
+        return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
+    };
+    if !labels.is_empty() {
+        return Err(RunError::Shards(format!(
+            "the scene runs at {} oil temperatures: run it whole, or shard one scene per temperature",
+            labels.len()
+        )));
+    }
+    let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
+    let name = format!("{slug}.shard-{}-of-{}", shard.index, shard.count);
+    let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
+    let (streamed, mut files) = stream_into(scene, &plan, &folder, "", progress)?;
+    let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
+    folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
+    files.push(shard::MANIFEST.into());
+    let dir = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok((dir, files))
+}
+
+/// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
+/// (record files concatenated in shard order, tallies folded in shard order).
+pub fn merge_into(
+    shards: &[PathBuf],
+    out_dir: &Path,
+    progress: &dyn Progress,
+) -> Result<(PathBuf, Vec<String>), RunError> {
+    let set = shard::ShardSet::read(shards).map_err(RunError::Shards)?;
+    let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    let mut files = Vec::new();
+    if has_records(&scene) {
+        progress.stage("merge", set.folders.len() as u64);
+        set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
+        files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
+    }
+    let (_, rendered) = finish(&scene, &plan, &set.tally, &[], progress)?;
+    for (file, content) in &rendered.files {
+        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(file.clone());
+    }
+    let dir = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok((dir, files))
+}
