@@ -7,6 +7,8 @@ pub mod contact_lines;
 pub mod involute;
 pub mod mesh;
 pub mod pair;
+pub mod pair_checks;
+pub mod pair_input;
 pub mod path;
 pub mod regions;
 pub mod stiffness;

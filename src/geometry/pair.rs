@@ -15,26 +15,8 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 pub use super::involute::{inverse_involute, involute};
-
-/// Largest ε_γ supported: at most [`super::contact_lines::MAX_LINES`] lines in contact.
-pub const MAX_TOTAL_CONTACT_RATIO: f64 = 7.0;
-
-/// What the geometry needs, in SI units (m, rad).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PairInput {
-    /// Normal module m_n (the module of a spur pair).
-    pub module: f64,
-    /// Normal pressure angle α_n.
-    pub pressure_angle: f64,
-    /// Helix angle β at the reference circle (0 for a spur pair).
-    pub helix_angle: f64,
-    /// [pinion, wheel]
-    pub teeth: [u32; 2],
-    pub profile_shift: [f64; 2],
-    pub tip_diameter: [Option<f64>; 2],
-    pub center_distance: Option<f64>,
-    pub face_width: f64,
-}
+use super::pair_checks::{centre_distance, contact_ratios, interference, too_few_teeth, tooth_shapes, TeethShape};
+pub use super::pair_input::{GeometryProblem, PairInput, PairPart, MAX_TOTAL_CONTACT_RATIO};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -43,24 +25,6 @@ pub enum TipSource {
     Given,
     /// d_a = m_t z + 2 m_n (1 + x) (spur: m (z + 2 + 2x)).
     AddendumRule,
-}
-
-/// Which gear or quantity a geometry problem is about.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PairPart {
-    Teeth(usize),
-    ProfileShift(usize),
-    TipDiameter(usize),
-    CenterDistance,
-    Pair,
-}
-
-/// A pair that cannot mesh as specified.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GeometryProblem {
-    pub part: PairPart,
-    pub reason: String,
-    pub hint: String,
 }
 
 /// The geometry of an external spur pair. Index 0 is the pinion (driving), 1 the wheel.
@@ -150,15 +114,7 @@ impl PairGeometry {
         let beta_b = (beta.tan() * alpha.cos()).atan();
         let z = [input.teeth[0] as f64, input.teeth[1] as f64];
         let x = input.profile_shift;
-        for i in 0..2 {
-            if input.teeth[i] < 5 {
-                problems.push(GeometryProblem {
-                    part: PairPart::Teeth(i),
-                    reason: format!("{} teeth are too few for an involute gear", input.teeth[i]),
-                    hint: "a spur gear needs at least 5 teeth".into(),
-                });
-            }
-        }
+        problems.extend(too_few_teeth(input));
         if !problems.is_empty() {
             return Err(problems);
         }
@@ -182,42 +138,8 @@ impl PairGeometry {
         let inv_w0 = involute(alpha) + 2.0 * alpha_n.tan() * (x[0] + x[1]) / (z[0] + z[1]);
         let alpha_w0 = inverse_involute(inv_w0);
         let a0 = (rb[0] + rb[1]) / alpha_w0.cos();
-        let (a, alpha_w) = match input.center_distance {
-            Some(a) => {
-                let c = (rb[0] + rb[1]) / a;
-                if c >= 1.0 {
-                    problems.push(GeometryProblem {
-                        part: PairPart::CenterDistance,
-                        reason: format!(
-                            "centre distance {:.4} mm is not larger than the sum of the base radii {:.4} mm",
-                            a * 1e3,
-                            (rb[0] + rb[1]) * 1e3
-                        ),
-                        hint: format!("the zero-backlash centre distance of this pair is {:.4} mm", a0 * 1e3),
-                    });
-                    return Err(problems);
-                }
-                // Below the zero-backlash centre distance the teeth collide: not a pair that can be
-                // assembled. Allowed: 1e-3 m of rounding in the given value (FZG C: 91.5 against 91.5001 mm).
-                if a < a0 - 1e-3 * m_n {
-                    problems.push(GeometryProblem {
-                        part: PairPart::CenterDistance,
-                        reason: format!(
-                            "centre distance {:.4} mm is {:.4} mm below the zero-backlash centre distance {:.4} mm (α_w = {:.4}°): the teeth would collide",
-                            a * 1e3,
-                            (a0 - a) * 1e3,
-                            a0 * 1e3,
-                            alpha_w0.to_degrees()
-                        ),
-                        hint: format!(
-                            "give a centre distance of at least {:.4} mm, leave it out for zero backlash, or raise the profile shifts' sum",
-                            a0 * 1e3
-                        ),
-                    });
-                }
-                (a, c.acos())
-            }
-            None => (a0, alpha_w0),
+        let Some((a, alpha_w)) = centre_distance(input, rb, (a0, alpha_w0), &mut problems) else {
+            return Err(problems);
         };
         // Rack addendum 1·m_n; in the transverse section x_min = 1 − z sin²α_t / (2 cos β).
         let undercut_limit =
@@ -226,53 +148,8 @@ impl PairGeometry {
             r[0] * alpha.sin() - (1.0 - x[0]) * m_n / alpha.sin(),
             r[1] * alpha.sin() - (1.0 - x[1]) * m_n / alpha.sin(),
         ];
-        let mut tip_thickness = [0.0; 2];
-        for i in 0..2 {
-            if x[i] < undercut_limit[i] - 1e-9 {
-                problems.push(GeometryProblem {
-                    part: PairPart::ProfileShift(i),
-                    reason: format!(
-                        "profile shift x = {} undercuts the {}: z = {} needs x ≥ {:.4}",
-                        x[i],
-                        gear_name(i),
-                        input.teeth[i],
-                        undercut_limit[i]
-                    ),
-                    hint: format!("raise the profile shift to at least {:.4}", undercut_limit[i]),
-                });
-            }
-            if ra[i] <= rb[i] {
-                problems.push(GeometryProblem {
-                    part: PairPart::TipDiameter(i),
-                    reason: format!(
-                        "{} tip diameter {:.4} mm is inside its base circle ({:.4} mm)",
-                        gear_name(i),
-                        2e3 * ra[i],
-                        2e3 * rb[i]
-                    ),
-                    hint: "the tip diameter must exceed the base diameter d_b = m z cos α".into(),
-                });
-                continue;
-            }
-            let alpha_a = (rb[i] / ra[i]).acos();
-            tip_thickness[i] =
-                2.0 * ra[i] * ((PI / 2.0 + 2.0 * x[i] * alpha_n.tan()) / z[i] + involute(alpha) - involute(alpha_a));
-            if tip_thickness[i] <= 0.0 {
-                problems.push(GeometryProblem {
-                    part: if input.tip_diameter[i].is_some() {
-                        PairPart::TipDiameter(i)
-                    } else {
-                        PairPart::ProfileShift(i)
-                    },
-                    reason: format!(
-                        "the {} tooth is pointed: tip thickness s_a = {:.4} mm",
-                        gear_name(i),
-                        tip_thickness[i] * 1e3
-                    ),
-                    hint: "reduce the profile shift or the tip diameter".into(),
-                });
-            }
-        }
+        let shape = TeethShape { transverse_pressure_angle: alpha, base_radius: rb, tip_radius: ra };
+        let tip_thickness = tooth_shapes(input, &shape, undercut_limit, &mut problems);
         if !problems.is_empty() {
             return Err(problems);
         }
@@ -282,60 +159,14 @@ impl PairGeometry {
         let t1a = t1t2 - t2a;
         let t1p = rb[0] * alpha_w.tan();
         let pb = PI * m * alpha.cos();
-        if t1a <= 0.0 {
-            problems.push(GeometryProblem {
-                part: PairPart::TipDiameter(1),
-                reason: format!(
-                    "the wheel tip circle reaches {:.4} mm beyond the pinion's interference point T1",
-                    -t1a * 1e3
-                ),
-                hint: format!(
-                    "reduce the wheel tip diameter below {:.4} mm",
-                    2e3 * (t1t2 * t1t2 + rb[1] * rb[1]).sqrt()
-                ),
-            });
-        }
-        if t1e >= t1t2 {
-            problems.push(GeometryProblem {
-                part: PairPart::TipDiameter(0),
-                reason: format!(
-                    "the pinion tip circle reaches {:.4} mm beyond the wheel's interference point T2",
-                    (t1e - t1t2) * 1e3
-                ),
-                hint: format!(
-                    "reduce the pinion tip diameter below {:.4} mm",
-                    2e3 * (t1t2 * t1t2 + rb[0] * rb[0]).sqrt()
-                ),
-            });
-        }
+        problems.extend(interference(t1a, t1e, t1t2, rb));
         if !problems.is_empty() {
             return Err(problems);
         }
         let eps = (t1e - t1a) / pb;
-        if eps <= 1.0 || eps >= 3.0 {
-            problems.push(GeometryProblem {
-                part: PairPart::Pair,
-                reason: format!("transverse contact ratio ε_α = {eps:.4} is outside (1, 3)"),
-                hint: if eps <= 1.0 {
-                    "with ε_α ≤ 1 the mesh loses contact between pairs; increase the tip diameters or the number of teeth".into()
-                } else {
-                    "contact ratios of 3 and above (four pairs in contact) are not supported".into()
-                },
-            });
-            return Err(problems);
-        }
         let overlap = input.face_width * beta.sin() / (PI * m_n);
-        if eps + overlap > MAX_TOTAL_CONTACT_RATIO {
-            problems.push(GeometryProblem {
-                part: PairPart::Pair,
-                reason: format!(
-                    "total contact ratio ε_γ = {:.4} (ε_α {eps:.4} + ε_β {overlap:.4}) is above {}",
-                    eps + overlap,
-                    MAX_TOTAL_CONTACT_RATIO
-                ),
-                hint: "reduce the face width or the helix angle: more than 7 contact lines at once are not supported"
-                    .into(),
-            });
+        problems.extend(contact_ratios(eps, overlap));
+        if !problems.is_empty() {
             return Err(problems);
         }
         Ok(PairGeometry {
@@ -370,13 +201,5 @@ impl PairGeometry {
             undercut_limit,
             involute_start,
         })
-    }
-}
-
-pub(crate) fn gear_name(i: usize) -> &'static str {
-    if i == 0 {
-        "pinion"
-    } else {
-        "wheel"
     }
 }

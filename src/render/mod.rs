@@ -4,6 +4,7 @@ pub mod markdown;
 pub mod markdown_bearings;
 pub mod markdown_dynamics;
 pub mod markdown_friction;
+pub mod markdown_geometry;
 pub mod markdown_helical;
 pub mod markdown_losses;
 pub mod markdown_sweep;

@@ -145,19 +145,7 @@ pub fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
 
 pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
     let shape = d.stiffness.shape();
-    let stiffness = match &shape {
-        StiffnessShape::Pairs { single, double, triple } => StiffnessReport::Pairs {
-            single: Q::new(*single, "N/m"),
-            double: Q::new(*double, "N/m"),
-            triple: Q::new(*triple, "N/m"),
-        },
-        StiffnessShape::Table(v) => StiffnessReport::Table { table: v.iter().map(|k| Q::new(*k, "N/m")).collect() },
-        StiffnessShape::PerLength { density, cos2_base_helix } => StiffnessReport::PerLength {
-            per_length: Q::new(*density, "N/m^2"),
-            cos2_base_helix_angle: Num(*cos2_base_helix),
-        },
-        StiffnessShape::Computed { mean } => StiffnessReport::Computed { mean_mesh_stiffness: Q::new(*mean, "N/m") },
-    };
+    let stiffness = stiffness_report(&shape);
     let g = &eval.geometry;
     let tau_b = g.contact_ratio.fract();
     let tau_p = ((g.points.p - g.points.a) / g.base_pitch).fract();
@@ -170,45 +158,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         .map(|(k, p)| {
             let label = eval.cases[p.case].label.clone();
             if picked.contains(&k) {
-                let mut c = DynamicsCurves {
-                    file: format!("dynamics_point_{}.svg", k + 1),
-                    free_file: format!("free_response_point_{}.svg", k + 1),
-                    label: label.clone(),
-                    marks: vec![("B|E".into(), tau_b), ("P".into(), tau_p)],
-                    ..Default::default()
-                };
-                for r in &p.results {
-                    if let Some(fr) = &r.free {
-                        let pts = fr.series.0.iter().copied().zip(fr.series.1.iter().copied()).collect();
-                        c.free.push((r.formulation.name().to_string(), pts));
-                    }
-                    let Some(resp) = &r.response else { continue };
-                    let name = r.formulation.name().to_string();
-                    let ser = &resp.curves;
-                    let xy = |v: &[f64]| ser.tau.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
-                    c.dte.push((name.clone(), xy(&ser.dte)));
-                    for (gear, v) in &ser.bearing_force_oloa {
-                        c.oloa.push((format!("{name}: {gear}"), xy(v)));
-                    }
-                    if r.formulation != DynamicFormulation::Base {
-                        c.friction_force.push((name.clone(), xy(&ser.friction_force)));
-                    }
-                    c.spectrum.push((name.clone(), resp.dte.spectrum.clone()));
-                    if !ser.pair_force.is_empty()
-                        && (c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base)
-                    {
-                        c.pair_force = ser
-                            .pair_force
-                            .iter()
-                            .enumerate()
-                            .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
-                            .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), xy(f)))
-                            .collect();
-                    }
-                }
-                if !c.dte.is_empty() || !c.free.is_empty() {
-                    curves.push(c);
-                }
+                curves.extend(point_curves(k, p, &label, [tau_b, tau_p]));
             }
             DynamicsPointReport {
                 label,
@@ -290,5 +240,68 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         stability_map,
         numerics,
         curves,
+    }
+}
+
+/// The curves of picked point `k` (0-based): DTE, bearing forces, friction force, spectrum and pair
+/// forces of each formulation's periodic response, and its free response; None when it has none.
+/// `marks` are the mesh-period fractions of B|E and P.
+fn point_curves(
+    k: usize,
+    p: &crate::evaluate::dynamics::DynamicsPoint,
+    label: &str,
+    [tau_b, tau_p]: [f64; 2],
+) -> Option<DynamicsCurves> {
+    let mut c = DynamicsCurves {
+        file: format!("dynamics_point_{}.svg", k + 1),
+        free_file: format!("free_response_point_{}.svg", k + 1),
+        label: label.to_string(),
+        marks: vec![("B|E".into(), tau_b), ("P".into(), tau_p)],
+        ..Default::default()
+    };
+    for r in &p.results {
+        if let Some(fr) = &r.free {
+            let pts = fr.series.0.iter().copied().zip(fr.series.1.iter().copied()).collect();
+            c.free.push((r.formulation.name().to_string(), pts));
+        }
+        let Some(resp) = &r.response else { continue };
+        let name = r.formulation.name().to_string();
+        let ser = &resp.curves;
+        let xy = |v: &[f64]| ser.tau.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
+        c.dte.push((name.clone(), xy(&ser.dte)));
+        for (gear, v) in &ser.bearing_force_oloa {
+            c.oloa.push((format!("{name}: {gear}"), xy(v)));
+        }
+        if r.formulation != DynamicFormulation::Base {
+            c.friction_force.push((name.clone(), xy(&ser.friction_force)));
+        }
+        c.spectrum.push((name.clone(), resp.dte.spectrum.clone()));
+        if !ser.pair_force.is_empty() && (c.pair_force.is_empty() || r.formulation != DynamicFormulation::Base) {
+            c.pair_force = ser
+                .pair_force
+                .iter()
+                .enumerate()
+                .filter(|(_, f)| f.iter().any(|x| x.is_finite()))
+                .map(|(slot, f)| (format!("{name}: pair entered {slot} period(s) ago"), xy(f)))
+                .collect();
+        }
+    }
+    (!c.dte.is_empty() || !c.free.is_empty()).then_some(c)
+}
+
+/// The stiffness as the report writes it.
+fn stiffness_report(shape: &StiffnessShape) -> StiffnessReport {
+    match shape {
+        StiffnessShape::Pairs { single, double, triple } => StiffnessReport::Pairs {
+            single: Q::new(*single, "N/m"),
+            double: Q::new(*double, "N/m"),
+            triple: Q::new(*triple, "N/m"),
+        },
+        StiffnessShape::Table(v) => StiffnessReport::Table { table: v.iter().map(|k| Q::new(*k, "N/m")).collect() },
+        StiffnessShape::PerLength { density, cos2_base_helix } => StiffnessReport::PerLength {
+            per_length: Q::new(*density, "N/m^2"),
+            cos2_base_helix_angle: Num(*cos2_base_helix),
+        },
+        StiffnessShape::Computed { mean } => StiffnessReport::Computed { mean_mesh_stiffness: Q::new(*mean, "N/m") },
     }
 }

@@ -42,47 +42,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     let mut errors = Vec::new();
     let top = Fields::read("the scene", ast.title_span, &ast.items, &["lubricant"], SCENE_BLOCKS, &[], &mut errors);
 
-    let mut materials: BTreeMap<&str, Material> = BTreeMap::new();
-    let mut singles: BTreeMap<&str, &Block> = BTreeMap::new();
-    for block in &top.blocks {
-        let kind = block.kind.text.as_str();
-        if kind == "material" {
-            if let Some(m) = lower_material(block, &mut errors) {
-                if materials.contains_key(m.name.as_str()) {
-                    errors.push(
-                        Diagnostic::new(
-                            DiagnosticKind::DuplicateKey,
-                            block.label.as_ref().map_or(block.kind.span, |l| l.span),
-                            format!("material `{}` is defined twice", m.name),
-                        )
-                        .hint("give each material a name of its own"),
-                    );
-                } else {
-                    materials.insert(block_label(block), m);
-                }
-            }
-        } else if singles.insert(kind, block).is_some() {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::DuplicateKey,
-                    block.kind.span,
-                    format!("the scene has two `{kind}` blocks"),
-                )
-                .hint(format!("merge them into one `{kind}` block")),
-            );
-        }
-    }
-    for (name, example) in [
-        ("gears", "gears { module = 4.5 mm ... }"),
-        ("operating", "operating { pinion_torque = 100 N*m  pinion_speed = 1000 rpm }"),
-    ] {
-        if !singles.contains_key(name) {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::MissingKey, ast.title_span, format!("the scene has no `{name}` block"))
-                    .hint(format!("add `{example}`")),
-            );
-        }
-    }
+    let (materials, singles) = scene_blocks(ast, &top, &mut errors);
 
     let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
@@ -134,37 +94,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     let dynamics =
         singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));
     if let Some(span) = analyses.dynamics_span {
-        if !singles.contains_key("dynamics") {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::MissingKey, span, "the dynamics analyses need a `dynamics` block")
-                    .hint("add `dynamics { mesh_stiffness { single = 1.96e8 N/m  double = 3.92e8 N/m }  damping_ratio = 0.05  friction = coulomb(mu = 0.08) }`"),
-            );
-        }
-        if let Some(g) = &gears {
-            for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
-                if gear.inertia.is_none() {
-                    errors.push(
-                        Diagnostic::new(
-                            DiagnosticKind::MissingKey,
-                            gear.span,
-                            format!("the dynamics need the {name}'s `inertia`"),
-                        )
-                        .hint(format!("add `inertia = 3.45e-4 kg*m^2` to `{name}`")),
-                    );
-                }
-                let on_bearings = dynamics.as_ref().map(|d| d.model.id.entry()).filter(|m| m.on_bearings);
-                if let Some(model) = on_bearings.filter(|_| gear.mass.is_none()) {
-                    errors.push(
-                        Diagnostic::new(
-                            DiagnosticKind::MissingKey,
-                            gear.span,
-                            format!("the {} model needs the {name}'s `mass`", model.name),
-                        )
-                        .hint(format!("add `mass = 1.5 kg` to `{name}` (the gear with its share of the shaft)")),
-                    );
-                }
-            }
-        }
+        check_dynamics_needs(span, singles.contains_key("dynamics"), gears.as_ref(), dynamics.as_ref(), &mut errors);
     }
 
     // (A law that failed to lower has its own error; this one is for a scene that lists none.)
@@ -240,6 +170,99 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
             }
         }
         _ => Err(errors),
+    }
+}
+
+/// The scene's blocks: its materials by name (each defined once) and every other block by kind (at
+/// most one of each); the `gears` and `operating` blocks must be there.
+fn scene_blocks<'a>(
+    ast: &'a SceneAst,
+    top: &Fields<'a>,
+    errors: &mut Vec<Diagnostic>,
+) -> (BTreeMap<&'a str, Material>, BTreeMap<&'a str, &'a Block>) {
+    let mut materials: BTreeMap<&str, Material> = BTreeMap::new();
+    let mut singles: BTreeMap<&str, &Block> = BTreeMap::new();
+    for block in &top.blocks {
+        let kind = block.kind.text.as_str();
+        if kind == "material" {
+            if let Some(m) = lower_material(block, errors) {
+                if materials.contains_key(m.name.as_str()) {
+                    errors.push(
+                        Diagnostic::new(
+                            DiagnosticKind::DuplicateKey,
+                            block.label.as_ref().map_or(block.kind.span, |l| l.span),
+                            format!("material `{}` is defined twice", m.name),
+                        )
+                        .hint("give each material a name of its own"),
+                    );
+                } else {
+                    materials.insert(block_label(block), m);
+                }
+            }
+        } else if singles.insert(kind, block).is_some() {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    block.kind.span,
+                    format!("the scene has two `{kind}` blocks"),
+                )
+                .hint(format!("merge them into one `{kind}` block")),
+            );
+        }
+    }
+    for (name, example) in [
+        ("gears", "gears { module = 4.5 mm ... }"),
+        ("operating", "operating { pinion_torque = 100 N*m  pinion_speed = 1000 rpm }"),
+    ] {
+        if !singles.contains_key(name) {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::MissingKey, ast.title_span, format!("the scene has no `{name}` block"))
+                    .hint(format!("add `{example}`")),
+            );
+        }
+    }
+    (materials, singles)
+}
+
+/// What the dynamics analyses need: a `dynamics` block, both gears' inertias, and their masses for a
+/// model on bearings.
+fn check_dynamics_needs(
+    span: Span,
+    has_block: bool,
+    gears: Option<&GearPair>,
+    dynamics: Option<&DynamicsSpec>,
+    errors: &mut Vec<Diagnostic>,
+) {
+    if !has_block {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, span, "the dynamics analyses need a `dynamics` block")
+                .hint("add `dynamics { mesh_stiffness { single = 1.96e8 N/m  double = 3.92e8 N/m }  damping_ratio = 0.05  friction = coulomb(mu = 0.08) }`"),
+        );
+    }
+    if let Some(g) = gears {
+        for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+            if gear.inertia.is_none() {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        gear.span,
+                        format!("the dynamics need the {name}'s `inertia`"),
+                    )
+                    .hint(format!("add `inertia = 3.45e-4 kg*m^2` to `{name}`")),
+                );
+            }
+            let on_bearings = dynamics.map(|d| d.model.id.entry()).filter(|m| m.on_bearings);
+            if let Some(model) = on_bearings.filter(|_| gear.mass.is_none()) {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        gear.span,
+                        format!("the {} model needs the {name}'s `mass`", model.name),
+                    )
+                    .hint(format!("add `mass = 1.5 kg` to `{name}` (the gear with its share of the shaft)")),
+                );
+            }
+        }
     }
 }
 

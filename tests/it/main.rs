@@ -3,13 +3,16 @@
 mod catalogues;
 mod cli;
 mod dynamics;
+mod dynamics_closed_forms;
 mod efficiency;
 mod engine;
 mod friction;
 mod fuzz;
 mod fuzz_campaign;
+mod fuzz_mutations;
 mod geometry;
 mod helical;
+mod helical_physics;
 mod losses;
 mod oil_sweep;
 mod properties;

@@ -1,0 +1,108 @@
+//! report.md's geometry section: the pair's quantities (normal and transverse for a helical pair),
+//! the characteristic points on the line of action in order, each gear's diameters and tooth checks.
+
+use std::fmt::Write;
+
+use super::table::{fixed, header, row, scaled};
+use crate::report::Report;
+
+/// The geometry section.
+pub(super) fn geometry_section(out: &mut String, r: &Report) {
+    let g = &r.geometry;
+    let _ = writeln!(out, "\n## Geometry\n");
+    header(out, &["quantity", "symbol", "value"]);
+    let deg = 180.0 / std::f64::consts::PI;
+    let mm = |q: &crate::report::number::Q| format!("{} mm", scaled(q, 1e3, 4));
+    let pts = &g.points_from_t1;
+    let mut contact_rows: Vec<(f64, String, String, String)> =
+        vec![(pts.A.si(), "start of contact".into(), "T1A".into(), mm(&pts.A))];
+    if let Some(b) = &pts.B {
+        contact_rows.push((b.si(), "lowest point of single contact".into(), "T1B".into(), mm(b)));
+    }
+    contact_rows.push((pts.P.si(), "pitch point".into(), "T1P".into(), mm(&pts.P)));
+    if let Some(d) = &pts.D {
+        contact_rows.push((d.si(), "highest point of single contact".into(), "T1D".into(), mm(d)));
+    }
+    for c in &pts.pair_changes {
+        let u = &c.distance_from_t1;
+        contact_rows.push((u.si(), "number of pairs changes (3 ↔ 2)".into(), format!("T1({})", c.name), mm(u)));
+    }
+    contact_rows.push((pts.E.si(), "end of contact".into(), "T1E".into(), mm(&pts.E)));
+    contact_rows.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let rows: Vec<(&str, &str, String)> = vec![
+        ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
+        ("pressure angle", "α", format!("{}°", scaled(&g.pressure_angle, deg, 4))),
+        ("gear ratio", "u = z2/z1", fixed(g.gear_ratio.0, 4)),
+        (
+            "centre distance",
+            "a",
+            format!("{} mm ({})", scaled(&g.center_distance, 1e3, 4), g.center_distance_source.replace('_', " ")),
+        ),
+        ("zero-backlash centre distance", "a_0", format!("{} mm", scaled(&g.zero_backlash_center_distance, 1e3, 4))),
+        ("operating pressure angle", "α_w", format!("{}°", scaled(&g.operating_pressure_angle, deg, 4))),
+        ("zero-backlash pressure angle", "α_w0", format!("{}°", scaled(&g.zero_backlash_pressure_angle, deg, 4))),
+        ("face width", "b", format!("{} mm", scaled(&g.face_width, 1e3, 3))),
+        ("base pitch", "p_b", format!("{} mm", scaled(&g.base_pitch, 1e3, 4))),
+        ("line of action", "T1T2", format!("{} mm", scaled(&g.line_of_action_length, 1e3, 4))),
+        ("transverse contact ratio", "ε_α", fixed(g.contact_ratio.0, 4)),
+        ("Ohlendorf gear loss factor", "H_V", fixed(g.ohlendorf_loss_factor.0, 5)),
+        ("reduced modulus", "E'", format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3))),
+        ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
+    ];
+    let mut rows = rows;
+    if let Some(h) = &g.helical {
+        let at = rows.iter().position(|r| r.1 == "α").map_or(0, |i| i + 1);
+        let helical_rows: Vec<(&str, &str, String)> = vec![
+            ("helix angle (reference circle)", "β", format!("{}°", scaled(&g.helix_angle, deg, 4))),
+            ("base helix angle", "β_b", format!("{}°", scaled(&h.base_helix_angle, deg, 4))),
+            ("transverse module", "m_t", format!("{} mm", scaled(&h.transverse_module, 1e3, 4))),
+            ("transverse pressure angle", "α_t", format!("{}°", scaled(&h.transverse_pressure_angle, deg, 4))),
+        ];
+        rows.splice(at..at, helical_rows);
+        rows[0].0 = "normal module";
+        rows[0].1 = "m_n";
+        rows[at - 1].0 = "normal pressure angle";
+        rows[at - 1].1 = "α_n";
+        let at = rows.iter().position(|r| r.1 == "ε_α").map_or(rows.len(), |i| i + 1);
+        let more: Vec<(&str, &str, String)> = vec![
+            ("overlap ratio", "ε_β", fixed(g.overlap_ratio.0, 4)),
+            ("total contact ratio", "ε_γ", fixed(g.total_contact_ratio.0, 4)),
+        ];
+        rows.splice(at..at, more);
+    }
+    let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
+    for (q, s, v) in before {
+        row(out, &[q.to_string(), s.to_string(), v.clone()]);
+    }
+    for (_, q, s, v) in contact_rows {
+        row(out, &[q, s, v]);
+    }
+    for (q, s, v) in after {
+        row(out, &[q.to_string(), s.to_string(), v.clone()]);
+    }
+    let _ = writeln!(out);
+    header(out, &["gear", "z", "x", "d mm", "d_b mm", "d_a mm", "d_a from", "d_w mm", "ε_i", "s_a mm", "x_min"]);
+    for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+        row(
+            out,
+            &[
+                name.into(),
+                gr.teeth.to_string(),
+                fixed(gr.profile_shift.0, 4),
+                scaled(&gr.pitch_diameter, 1e3, 4),
+                scaled(&gr.base_diameter, 1e3, 4),
+                scaled(&gr.tip_diameter, 1e3, 4),
+                format!("{:?}", gr.tip_diameter_source)
+                    .replace("AddendumRule", "addendum rule")
+                    .replace("Given", "given"),
+                scaled(&gr.working_pitch_diameter, 1e3, 4),
+                fixed(gr.addendum_contact_ratio.0, 4),
+                scaled(&gr.tip_thickness, 1e3, 4),
+                fixed(gr.undercut_limit.0, 4),
+            ],
+        );
+    }
+    if let Some(h) = &g.helical {
+        super::markdown_helical::plane_of_action(out, h, &r.plots);
+    }
+}
