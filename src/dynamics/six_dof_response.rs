@@ -94,7 +94,6 @@ impl SixDofResponse {
         let k = [sys.bearings[0].loa, sys.bearings[1].loa, sys.bearings[0].oloa, sys.bearings[1].oloa];
         // Bearing forces K q on the gear's bearing (q = x_p, x_g, y_p, y_g: states 1..=4).
         let bearing: Vec<(Extremum, Extremum)> = (0..4).map(|j| located(j + 1, k[j])).collect();
-        let w = 2.0 * std::f64::consts::PI / period;
         let values = |p: usize, t: f64| -> [f64; QUANTITIES] {
             let x = state(p, t);
             [SixDofSystem::deflection(&x).0, k[0] * x[1], k[1] * x[2], k[2] * x[3], k[3] * x[4], friction(p, t)]
@@ -108,31 +107,7 @@ impl SixDofResponse {
             lo.abs().max(hi.abs()).max(f64::MIN_POSITIVE)
         };
         let scales: Vec<f64> = (0..QUANTITIES).map(scale).collect();
-        let mut tol = [0.0; N_INTEGRANDS];
-        for (q, s) in scales.iter().enumerate() {
-            for j in 0..=2 * ORDERS {
-                tol[q * (1 + 2 * ORDERS) + j] = MEAN_TOLERANCE * s * period;
-            }
-        }
-        let integrals = integrate_pieces_n(
-            |t| {
-                let p = tr.piece_of(t);
-                let v = values(p, t);
-                let mut out = [0.0; N_INTEGRANDS];
-                for (q, x) in v.iter().enumerate() {
-                    let base = q * (1 + 2 * ORDERS);
-                    out[base] = *x;
-                    for o in 1..=ORDERS {
-                        let arg = w * o as f64 * t;
-                        out[base + 2 * o - 1] = x * arg.cos();
-                        out[base + 2 * o] = x * arg.sin();
-                    }
-                }
-                out
-            },
-            &tr.cell_breaks(),
-            tol,
-        );
+        let integrals = harmonic_integrals(period, &scales, &tr.cell_breaks(), |t| values(tr.piece_of(t), t));
         let range = |q: usize, min: Extremum, max: Extremum| {
             let base = q * (1 + 2 * ORDERS);
             let i = integrals[base];
@@ -159,17 +134,7 @@ impl SixDofResponse {
                 displacement_oloa: [dy0, dy1],
             }
         };
-        let mut series: [Vec<f64>; 5] = Default::default();
-        for i in 0..=PLOT_SAMPLES {
-            let t = i as f64 / PLOT_SAMPLES as f64 * period;
-            let p = tr.piece_of(t.min(period * (1.0 - 1e-12)));
-            let v = values(p, t);
-            series[0].push(t / period);
-            series[1].push(v[0]);
-            series[2].push(v[3]);
-            series[3].push(v[4]);
-            series[4].push(v[5]);
-        }
+        let series = plot_series(period, |t| values(tr.piece_of(t.min(period * (1.0 - 1e-12))), t));
         Some(SixDofResponse {
             dte: range(0, in_periods(dte.min, period), in_periods(dte.max, period)),
             mesh_force: [in_periods(n.min, period), in_periods(n.max, period)],
@@ -191,4 +156,56 @@ pub fn dynamic_factor(sys: &SixDofSystem, floquet: &Floquet<STATES>) -> Option<f
     let h = 1e-7 * period;
     let e = tr.extrema(force, |p, t| (force(p, t + h) - force(p, t - h)) / (2.0 * h));
     Some(e.max.value / sys.mesh.static_force)
+}
+
+/// ∫ over one period of each quantity q and of q cos(2π o t/T), q sin(2π o t/T) for the orders
+/// o = 1..=ORDERS, cell by cell (`breaks`) with Gauss–Kronrod, each to MEAN_TOLERANCE × its
+/// quantity's scale × T.
+fn harmonic_integrals(
+    period: f64,
+    scales: &[f64],
+    breaks: &[f64],
+    values: impl Fn(f64) -> [f64; QUANTITIES] + Sync,
+) -> [Integral; N_INTEGRANDS] {
+    let w = 2.0 * std::f64::consts::PI / period;
+    let mut tol = [0.0; N_INTEGRANDS];
+    for (q, s) in scales.iter().enumerate() {
+        for j in 0..=2 * ORDERS {
+            tol[q * (1 + 2 * ORDERS) + j] = MEAN_TOLERANCE * s * period;
+        }
+    }
+    integrate_pieces_n(
+        |t| {
+            let v = values(t);
+            let mut out = [0.0; N_INTEGRANDS];
+            for (q, x) in v.iter().enumerate() {
+                let base = q * (1 + 2 * ORDERS);
+                out[base] = *x;
+                for o in 1..=ORDERS {
+                    let arg = w * o as f64 * t;
+                    out[base + 2 * o - 1] = x * arg.cos();
+                    out[base + 2 * o] = x * arg.sin();
+                }
+            }
+            out
+        },
+        breaks,
+        tol,
+    )
+}
+
+/// The plot series at PLOT_SAMPLES + 1 uniform times over one period: τ, DTE, OLOA bearing force of
+/// pinion and wheel, friction force (`values` at t as in [`harmonic_integrals`]).
+fn plot_series(period: f64, values: impl Fn(f64) -> [f64; QUANTITIES]) -> [Vec<f64>; 5] {
+    let mut series: [Vec<f64>; 5] = Default::default();
+    for i in 0..=PLOT_SAMPLES {
+        let t = i as f64 / PLOT_SAMPLES as f64 * period;
+        let v = values(t);
+        series[0].push(t / period);
+        series[1].push(v[0]);
+        series[2].push(v[3]);
+        series[3].push(v[4]);
+        series[4].push(v[5]);
+    }
+    series
 }

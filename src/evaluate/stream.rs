@@ -14,6 +14,7 @@ use super::setup::{contact_table, Setup};
 use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
 use super::thermal::{thermal_point, Losses, ThermalRow};
 use crate::efficiency::EfficiencyResult;
+use crate::geometry::{ContactPoint, OperatingState};
 use crate::model::Scene;
 
 /// Points evaluated together before their rows are written.
@@ -77,33 +78,7 @@ fn point_summary(
     let state = state_at(op, k);
     let (ti, si) = (k / plan.speeds, k % plan.speeds);
     let table = contact_table(eval, &state);
-    let blank = SummaryRow {
-        point: k + 1,
-        torque_index: ti,
-        speed_index: si,
-        pinion_torque: state.pinion_torque,
-        pinion_speed: state.pinion_speed,
-        kind: RowKind::Friction,
-        law_index: None,
-        law: String::new(),
-        label: String::new(),
-        formulation: String::new(),
-        mean_abs_mu: None,
-        mean_efficiency: None,
-        mean_efficiency_error: None,
-        min_efficiency: None,
-        max_efficiency: None,
-        power_loss: None,
-        validity_samples: None,
-        validity_outside: None,
-        spectral_radius: None,
-        dte_peak_to_peak: None,
-        dte_mean: None,
-        dynamic_factor: None,
-        parameters: Vec::new(),
-        budget: None,
-        thermal: None,
-    };
+    let blank = blank_row(k, (ti, si), state);
     let budget = eval.loss_budget(scene, &state);
     let thermal = scene
         .housing
@@ -113,18 +88,7 @@ fn point_summary(
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
-    if let Some((name, c)) =
-        table.iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
-            (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
-        })
-    {
-        implausible.push(Implausible::HalfWidth {
-            half_width: c.hertz_half_width,
-            limit: HALF_WIDTH_LIMIT * c.reduced_radius,
-            u: c.u,
-            named: name.map(str::to_string),
-        });
-    }
+    implausible.extend(half_width_beyond_limit(&table));
     if eval.wants_friction {
         let input = state.pinion_torque * state.pinion_speed;
         for (i, spec) in scene.friction.iter().enumerate() {
@@ -165,25 +129,7 @@ fn point_summary(
                 }
                 let e = at_balance.as_ref().unwrap_or(e);
                 rows.push(row);
-                let f = e.formulation.name().to_string();
-                let bad = |x: f64| !(0.0..=1.0).contains(&x);
-                if bad(e.mean.value) || bad(e.min) || bad(e.max) {
-                    implausible.push(Implausible::Efficiency {
-                        law: law.id.name().into(),
-                        formulation: f.clone(),
-                        mean: e.mean.value,
-                        min: e.min,
-                        max: e.max,
-                    });
-                }
-                if e.power_loss > input {
-                    implausible.push(Implausible::PowerLoss {
-                        law: law.id.name().into(),
-                        formulation: f,
-                        loss: e.power_loss,
-                        input,
-                    });
-                }
+                implausible.extend(implausible_efficiency(law.id.name(), e, input));
             }
             laws.push(law_tally(k, &law));
         }
@@ -213,6 +159,72 @@ fn point_summary(
         implausible.into_iter().map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what }).collect();
     let tally = Tally::of_point(k, &rows, plan.kept(k), laws, implausible);
     (rows, tally, dynamics_point)
+}
+
+/// A summary row of point `k` with nothing computed yet.
+fn blank_row(k: usize, (torque_index, speed_index): (usize, usize), state: OperatingState) -> SummaryRow {
+    SummaryRow {
+        point: k + 1,
+        torque_index,
+        speed_index,
+        pinion_torque: state.pinion_torque,
+        pinion_speed: state.pinion_speed,
+        kind: RowKind::Friction,
+        law_index: None,
+        law: String::new(),
+        label: String::new(),
+        formulation: String::new(),
+        mean_abs_mu: None,
+        mean_efficiency: None,
+        mean_efficiency_error: None,
+        min_efficiency: None,
+        max_efficiency: None,
+        power_loss: None,
+        validity_samples: None,
+        validity_outside: None,
+        spectral_radius: None,
+        dte_peak_to_peak: None,
+        dte_mean: None,
+        dynamic_factor: None,
+        parameters: Vec::new(),
+        budget: None,
+        thermal: None,
+    }
+}
+
+/// The contact whose Hertzian half-width is furthest beyond its limit (a fraction of the reduced
+/// radius), if any is beyond it.
+fn half_width_beyond_limit(table: &[(Option<&str>, ContactPoint)]) -> Option<Implausible> {
+    let (name, c) =
+        table.iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
+            (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
+        })?;
+    Some(Implausible::HalfWidth {
+        half_width: c.hertz_half_width,
+        limit: HALF_WIDTH_LIMIT * c.reduced_radius,
+        u: c.u,
+        named: name.map(str::to_string),
+    })
+}
+
+/// An efficiency outside [0, 1] or a power loss above the input power.
+fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
+    let mut out = Vec::new();
+    let f = e.formulation.name().to_string();
+    let bad = |x: f64| !(0.0..=1.0).contains(&x);
+    if bad(e.mean.value) || bad(e.min) || bad(e.max) {
+        out.push(Implausible::Efficiency {
+            law: law.into(),
+            formulation: f.clone(),
+            mean: e.mean.value,
+            min: e.min,
+            max: e.max,
+        });
+    }
+    if e.power_loss > input {
+        out.push(Implausible::PowerLoss { law: law.into(), formulation: f, loss: e.power_loss, input });
+    }
+    out
 }
 
 fn efficiency_row(law_row: &SummaryRow, e: &EfficiencyResult) -> SummaryRow {

@@ -120,21 +120,7 @@ impl PairGeometry {
         }
         let r = [m * z[0] / 2.0, m * z[1] / 2.0];
         let rb = [r[0] * alpha.cos(), r[1] * alpha.cos()];
-        let mut tip_source = [TipSource::Given; 2];
-        let mut ra = [0.0; 2];
-        for i in 0..2 {
-            ra[i] = match input.tip_diameter[i] {
-                Some(d) => d / 2.0,
-                None => {
-                    tip_source[i] = TipSource::AddendumRule;
-                    if beta == 0.0 {
-                        m * (z[i] + 2.0 + 2.0 * x[i]) / 2.0
-                    } else {
-                        m * z[i] / 2.0 + m_n * (1.0 + x[i])
-                    }
-                }
-            };
-        }
+        let (ra, tip_source) = tip_radii(input, m, z);
         let inv_w0 = involute(alpha) + 2.0 * alpha_n.tan() * (x[0] + x[1]) / (z[0] + z[1]);
         let alpha_w0 = inverse_involute(inv_w0);
         let a0 = (rb[0] + rb[1]) / alpha_w0.cos();
@@ -202,4 +188,26 @@ impl PairGeometry {
             involute_start,
         })
     }
+}
+
+/// The tip radii, given or by the addendum rule d_a = m_t z + 2 m_n (1 + x) (spur: m (z + 2 + 2x)),
+/// and where each came from; `m` is the transverse module.
+fn tip_radii(input: &PairInput, m: f64, z: [f64; 2]) -> ([f64; 2], [TipSource; 2]) {
+    let (beta, x) = (input.helix_angle, input.profile_shift);
+    let mut tip_source = [TipSource::Given; 2];
+    let mut ra = [0.0; 2];
+    for i in 0..2 {
+        ra[i] = match input.tip_diameter[i] {
+            Some(d) => d / 2.0,
+            None => {
+                tip_source[i] = TipSource::AddendumRule;
+                if beta == 0.0 {
+                    m * (z[i] + 2.0 + 2.0 * x[i]) / 2.0
+                } else {
+                    m * z[i] / 2.0 + input.module * (1.0 + x[i])
+                }
+            }
+        };
+    }
+    (ra, tip_source)
 }

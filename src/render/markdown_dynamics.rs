@@ -3,7 +3,9 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
-use crate::report::dynamics::{DynamicsReport, FormulationReport, Located, StiffnessReport};
+use crate::report::dynamics::{
+    DynamicsPointReport, DynamicsReport, FormulationReport, Located, StabilityMapReport, StiffnessReport,
+};
 use crate::report::friction::MuValue;
 use crate::report::Report;
 
@@ -19,6 +21,18 @@ pub fn dynamics(out: &mut String, r: &Report) {
     let Some(d) = &r.dynamics else { return };
     let _ = writeln!(out, "## Dynamics\n");
     let _ = writeln!(out, "{}\n", d.description);
+    model_table(out, d);
+    for p in &d.points {
+        point_section(out, d, p);
+    }
+    if let Some(map) = &d.stability_map {
+        stability_map_section(out, map);
+    }
+    numerics(out, d);
+}
+
+/// The model's quantities: stiffness, mean stiffness, mass, damping, natural frequencies, law.
+fn model_table(out: &mut String, d: &DynamicsReport) {
     header(out, &["quantity", "value"]);
     let k = match &d.stiffness {
         StiffnessReport::Pairs { single, double, triple } => format!(
@@ -59,123 +73,124 @@ pub fn dynamics(out: &mut String, r: &Report) {
         }
     }
     let _ = writeln!(out);
-    for p in &d.points {
-        let _ = writeln!(
-            out,
-            "### Dynamics at {}\n\nf_mesh = {} Hz, f_n/f_mesh = {}\n",
-            p.label,
-            fixed(p.mesh_frequency.si(), 2),
-            fixed(p.frequency_ratio.0, 3)
-        );
-        header(
+}
+
+/// One operating point: every formulation's Floquet numbers and response, then its located lines,
+/// bearings, free response and plots.
+fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport) {
+    let _ = writeln!(
+        out,
+        "### Dynamics at {}\n\nf_mesh = {} Hz, f_n/f_mesh = {}\n",
+        p.label,
+        fixed(p.mesh_frequency.si(), 2),
+        fixed(p.frequency_ratio.0, 3)
+    );
+    header(
+        out,
+        &[
+            "formulation",
+            "propagator",
+            "ρ",
+            "multipliers",
+            "verdict",
+            "det Φ(T)",
+            "Liouville",
+            "DTE p-p µm",
+            "K_v",
+            "η_dyn %",
+            "max applied friction N / T_p N·m / T_w N·m",
+            "separation",
+        ],
+    );
+    for f in &p.formulations {
+        let mults: Vec<String> = f
+            .floquet_multipliers
+            .iter()
+            .map(|[re, im]| {
+                let sign = if fixed(im.0, 6).starts_with('-') { '-' } else { '+' };
+                format!("{}{sign}{}i", fixed(re.0, 6), fixed(im.0.abs(), 6))
+            })
+            .collect();
+        row(
             out,
             &[
-                "formulation",
-                "propagator",
-                "ρ",
-                "multipliers",
-                "verdict",
-                "det Φ(T)",
-                "Liouville",
-                "DTE p-p µm",
-                "K_v",
-                "η_dyn %",
-                "max applied friction N / T_p N·m / T_w N·m",
-                "separation",
+                f.formulation.name().to_string(),
+                format!("{:?}", f.method).to_lowercase(),
+                fixed(f.spectral_radius.0, 6),
+                mults.join(", "),
+                format!("{:?}", f.verdict).to_lowercase(),
+                sci(f.monodromy_determinant.0),
+                sci(f.liouville_determinant.0),
+                f.dte_peak_to_peak.map_or("—".into(), |q| fixed(q.si() * 1e6, 4)),
+                f.dynamic_factor.map_or("—".into(), |k| fixed(k.0, 4)),
+                f.mean_dynamic_efficiency.map_or("—".into(), |e| fixed(100.0 * e.0, 4)),
+                match (&f.peak_applied_friction_force, f.peak_friction_torque.as_slice()) {
+                    (Some(ff), [tp, tw]) => format!(
+                        "{} / {} / {}",
+                        fixed(ff.value.si(), 1),
+                        fixed(tp.value.si(), 3),
+                        fixed(tw.value.si(), 3)
+                    ),
+                    _ if f.formulation != crate::dynamics::DynamicFormulation::Base && d.friction_diverges_at_pitch => {
+                        "diverges at P".into()
+                    }
+                    _ => "—".into(),
+                },
+                if f.tooth_separation.is_empty() { "none".into() } else { "**yes**".into() },
             ],
         );
-        for f in &p.formulations {
-            let mults: Vec<String> = f
-                .floquet_multipliers
-                .iter()
-                .map(|[re, im]| {
-                    let sign = if fixed(im.0, 6).starts_with('-') { '-' } else { '+' };
-                    format!("{}{sign}{}i", fixed(re.0, 6), fixed(im.0.abs(), 6))
-                })
-                .collect();
-            row(
-                out,
-                &[
-                    f.formulation.name().to_string(),
-                    format!("{:?}", f.method).to_lowercase(),
-                    fixed(f.spectral_radius.0, 6),
-                    mults.join(", "),
-                    format!("{:?}", f.verdict).to_lowercase(),
-                    sci(f.monodromy_determinant.0),
-                    sci(f.liouville_determinant.0),
-                    f.dte_peak_to_peak.map_or("—".into(), |q| fixed(q.si() * 1e6, 4)),
-                    f.dynamic_factor.map_or("—".into(), |k| fixed(k.0, 4)),
-                    f.mean_dynamic_efficiency.map_or("—".into(), |e| fixed(100.0 * e.0, 4)),
-                    match (&f.peak_applied_friction_force, f.peak_friction_torque.as_slice()) {
-                        (Some(ff), [tp, tw]) => format!(
-                            "{} / {} / {}",
-                            fixed(ff.value.si(), 1),
-                            fixed(tp.value.si(), 3),
-                            fixed(tw.value.si(), 3)
-                        ),
-                        _ if f.formulation != crate::dynamics::DynamicFormulation::Base
-                            && d.friction_diverges_at_pitch =>
-                        {
-                            "diverges at P".into()
-                        }
-                        _ => "—".into(),
-                    },
-                    if f.tooth_separation.is_empty() { "none".into() } else { "**yes**".into() },
-                ],
-            );
+    }
+    let _ = writeln!(out);
+    located_lines(out, &p.formulations);
+    bearing_lines(out, &p.formulations);
+    free_lines(out, &p.formulations);
+    if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
+        if !c.dte.is_empty() {
+            let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
         }
-        let _ = writeln!(out);
-        located_lines(out, &p.formulations);
-        bearing_lines(out, &p.formulations);
-        free_lines(out, &p.formulations);
-        if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
-            if !c.dte.is_empty() {
-                let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
-            }
-            if !c.free.is_empty() {
-                let _ = writeln!(out, "![free response from the initial state]({})\n", c.free_file);
-            }
+        if !c.free.is_empty() {
+            let _ = writeln!(out, "![free response from the initial state]({})\n", c.free_file);
         }
     }
-    if let Some(map) = &d.stability_map {
-        let _ = writeln!(
+}
+
+/// The stability map's table: per formulation the largest ρ and K_v over the map's speeds and the
+/// located unstable ranges.
+fn stability_map_section(out: &mut String, map: &StabilityMapReport) {
+    let _ = writeln!(
+        out,
+        "### Stability map\n\nPinion torque {} N·m, {} speeds.\n",
+        fixed(map.pinion_torque.si(), 2),
+        map.points.len()
+    );
+    let unit = &map.speed_unit;
+    let at_unit = format!("at {}", unit.name);
+    header(out, &["formulation", "max ρ", &at_unit, "max K_v (stable)", "unstable ranges"]);
+    for (i, f) in map.formulations.iter().enumerate() {
+        let (mut rho, mut at, mut kv) = (0.0f64, 0.0, 0.0f64);
+        for p in &map.points {
+            if p.spectral_radius[i].0 > rho {
+                rho = p.spectral_radius[i].0;
+                at = unit.value(&p.pinion_speed);
+            }
+            if let MuValue::Value(v) = p.dynamic_factor[i] {
+                kv = kv.max(v.0);
+            }
+        }
+        let ranges: Vec<String> =
+            map.unstable_ranges[i].iter().map(|[a, b]| format!("{:.0}–{:.0}", unit.value(a), unit.value(b))).collect();
+        row(
             out,
-            "### Stability map\n\nPinion torque {} N·m, {} speeds.\n",
-            fixed(map.pinion_torque.si(), 2),
-            map.points.len()
+            &[
+                f.name().to_string(),
+                fixed(rho, 6),
+                fixed(at, 0),
+                fixed(kv, 4),
+                if ranges.is_empty() { "none".into() } else { format!("{} {}", ranges.join(", "), unit.name) },
+            ],
         );
-        let unit = &map.speed_unit;
-        let at_unit = format!("at {}", unit.name);
-        header(out, &["formulation", "max ρ", &at_unit, "max K_v (stable)", "unstable ranges"]);
-        for (i, f) in map.formulations.iter().enumerate() {
-            let (mut rho, mut at, mut kv) = (0.0f64, 0.0, 0.0f64);
-            for p in &map.points {
-                if p.spectral_radius[i].0 > rho {
-                    rho = p.spectral_radius[i].0;
-                    at = unit.value(&p.pinion_speed);
-                }
-                if let MuValue::Value(v) = p.dynamic_factor[i] {
-                    kv = kv.max(v.0);
-                }
-            }
-            let ranges: Vec<String> = map.unstable_ranges[i]
-                .iter()
-                .map(|[a, b]| format!("{:.0}–{:.0}", unit.value(a), unit.value(b)))
-                .collect();
-            row(
-                out,
-                &[
-                    f.name().to_string(),
-                    fixed(rho, 6),
-                    fixed(at, 0),
-                    fixed(kv, 4),
-                    if ranges.is_empty() { "none".into() } else { format!("{} {}", ranges.join(", "), unit.name) },
-                ],
-            );
-        }
-        let _ = writeln!(out, "\n![stability map](stability_map.svg)\n");
     }
-    numerics(out, d);
+    let _ = writeln!(out, "\n![stability map](stability_map.svg)\n");
 }
 
 /// The located extrema (value at τ in mesh periods), means with their error estimates, separation.

@@ -9,21 +9,7 @@ use crate::report::{formulation_name, OperatingPointReport, Report};
 /// Film, μ along the line of action, and efficiency at one operating point.
 pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
     if let Some(film) = &op.film {
-        let _ = writeln!(out, "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and Λ:\n");
-        header(out, &["point", "T1C mm", "h_c µm", "h_min µm", "Λ"]);
-        for f in film {
-            row(
-                out,
-                &[
-                    f.point.clone().unwrap_or_default(),
-                    fixed(f.distance_from_t1.si() * 1e3, 3),
-                    fixed(f.central_film.si() * 1e6, 4),
-                    fixed(f.minimum_film.si() * 1e6, 4),
-                    f.lambda.map_or("—".into(), |l| fixed(l.0, 3)),
-                ],
-            );
-        }
-        let _ = writeln!(out);
+        film_lines(out, film);
     }
     if op.friction.is_empty() {
         return;
@@ -111,6 +97,25 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
 
 /// Why 1 − μ̄ H_V differs from the helical mean (physics notes, "Helical pairs").
 pub const HELICAL_NOTE: &str = "Helical pair: μ is integrated along every contact line, each point a spur-like contact at its own u with the load per unit length w = F_bn / L(t) (constant stiffness density, He & Singh). The efficiency uses the normal-force arms r_b cos β_b (He & Singh eq 8). The last column, 1 − μ̄ H_V with Ohlendorf's H_V (ISO/TR 14179-2), is NOT the mean of this model: H_V is the mean loss of a slice model, in which each transverse slice of the face shares its load equally between its own pairs in contact. Constant stiffness density puts more load where more line length is, which weights the ends of the path of contact (where sliding is fastest): at β = 15° the loss is about 1.1–1.2 × μ H_V. The two agree as β → 0; when ε_β is an integer L(t) is constant and the loss is the uniform-load value μ (1/r_b1 + 1/r_b2)/cos β_b · (AP² + PE²)/(2 AE). The column μ along the line of action is evaluated under the mean load per unit length F_bn / L̄.";
+
+/// The film thickness and Λ at the characteristic points.
+fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow]) {
+    let _ = writeln!(out, "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and Λ:\n");
+    header(out, &["point", "T1C mm", "h_c µm", "h_min µm", "Λ"]);
+    for f in film {
+        row(
+            out,
+            &[
+                f.point.clone().unwrap_or_default(),
+                fixed(f.distance_from_t1.si() * 1e3, 3),
+                fixed(f.central_film.si() * 1e6, 4),
+                fixed(f.minimum_film.si() * 1e6, 4),
+                f.lambda.map_or("—".into(), |l| fixed(l.0, 3)),
+            ],
+        );
+    }
+    let _ = writeln!(out);
+}
 
 /// The sweep table and plots.
 pub fn sweep(out: &mut String, r: &Report) {

@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
-use crate::report::Report;
+use crate::report::{PlotKind, Report};
 
 /// The section, empty when the scene does not ask for the teeth.
 pub fn teeth_section(r: &Report) -> String {
@@ -69,46 +69,41 @@ pub fn teeth_section(r: &Report) -> String {
         "\nISO's figures include its factor C_M = 0.8 (theory to measured teeth); the method's are theoretical. Mean mesh stiffness K̄ = {} N/µm.",
         fixed(s.mean.si() * 1e-6, 2)
     );
-    use crate::report::PlotKind;
     for p in r.plots.iter().filter(|p| p.kind == PlotKind::MeshStiffness) {
         let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
     }
-    if !r.transmission_error.is_empty() {
-        let _ = writeln!(out, "\n### Static transmission error\n");
-        let _ = writeln!(
-            out,
-            "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.\n"
-        );
-        header(
-            &mut out,
-            &[
-                "pinion torque N·m",
-                "F_bn N",
-                "min µm (at s mm)",
-                "max µm (at s mm)",
-                "peak-to-peak µm",
-                "mean µm",
-                "± µm",
-            ],
-        );
-        for t in &r.transmission_error {
-            row(
-                &mut out,
-                &[
-                    fixed(t.pinion_torque.si(), 2),
-                    fixed(t.normal_force.si(), 1),
-                    format!("{} ({})", fixed(t.min.value.si() * 1e6, 4), fixed(t.min.position.si() * 1e3, 4)),
-                    format!("{} ({})", fixed(t.max.value.si() * 1e6, 4), fixed(t.max.position.si() * 1e3, 4)),
-                    fixed(t.peak_to_peak.si() * 1e6, 4),
-                    fixed(t.mean.si() * 1e6, 4),
-                    format!("{:.1e}", t.mean_error.si() * 1e6),
-                ],
-            );
-        }
-        for p in r.plots.iter().filter(|p| matches!(p.kind, PlotKind::TransmissionError | PlotKind::LoadShare)) {
-            let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
-        }
-    }
+    transmission_error_lines(&mut out, r);
     out.push('\n');
     out
+}
+
+/// The static transmission error at each torque: located extremes, peak-to-peak, integrated mean.
+fn transmission_error_lines(out: &mut String, r: &Report) {
+    if r.transmission_error.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "\n### Static transmission error\n");
+    let _ =
+        writeln!(out, "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.\n");
+    header(
+        out,
+        &["pinion torque N·m", "F_bn N", "min µm (at s mm)", "max µm (at s mm)", "peak-to-peak µm", "mean µm", "± µm"],
+    );
+    for t in &r.transmission_error {
+        row(
+            out,
+            &[
+                fixed(t.pinion_torque.si(), 2),
+                fixed(t.normal_force.si(), 1),
+                format!("{} ({})", fixed(t.min.value.si() * 1e6, 4), fixed(t.min.position.si() * 1e3, 4)),
+                format!("{} ({})", fixed(t.max.value.si() * 1e6, 4), fixed(t.max.position.si() * 1e3, 4)),
+                fixed(t.peak_to_peak.si() * 1e6, 4),
+                fixed(t.mean.si() * 1e6, 4),
+                format!("{:.1e}", t.mean_error.si() * 1e6),
+            ],
+        );
+    }
+    for p in r.plots.iter().filter(|p| matches!(p.kind, PlotKind::TransmissionError | PlotKind::LoadShare)) {
+        let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
+    }
 }

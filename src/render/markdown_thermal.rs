@@ -41,104 +41,112 @@ pub fn thermal_section(r: &Report) -> String {
     ] {
         row(&mut out, &[name.to_string(), value]);
     }
-    if !r.thermal.is_empty() {
-        let _ = writeln!(out);
-        header(
-            &mut out,
-            &[
-                "operating point",
-                "law",
-                "formulation",
-                "θ* °C",
-                "status",
-                "P_V at θ* W",
-                "convection W",
-                "radiation W",
-                "foundation W",
-                "cooler W",
-                "h_c W/(m² K)",
-                "rating N·m (kW)",
-                "rating at 95 °C N·m (kW)",
-            ],
-        );
-        let rating = |x: Option<&crate::report::thermal::Rating>| {
-            x.map_or_else(|| "—".into(), |x| format!("{} ({})", fixed(x.torque.si(), 1), fixed(x.power.si() / 1e3, 2)))
-        };
-        for t in &r.thermal {
-            row(
-                &mut out,
-                &[
-                    format!(
-                        "{} N·m, {} {}",
-                        fixed(t.pinion_torque.si(), 1),
-                        fixed(r.speed_unit.value(&t.pinion_speed), 0),
-                        r.speed_unit.name
-                    ),
-                    super::table::law_words(&t.label),
-                    t.formulation.name().to_string(),
-                    opt(t.oil_temperature.as_ref(), celsius),
-                    t.status.words().to_string(),
-                    fixed(t.power_loss.si(), 1),
-                    fixed(t.dissipation.convection.si(), 1),
-                    fixed(t.dissipation.radiation.si(), 1),
-                    fixed(t.dissipation.foundation.si(), 1),
-                    fixed(t.dissipation.cooler.si(), 1),
-                    fixed(t.heat_transfer_coefficient.si(), 2),
-                    rating(t.thermal_rating.as_ref()),
-                    rating(t.thermal_rating_95.as_ref()),
-                ],
-            );
-        }
-    }
+    balance_table(&mut out, r);
     if let Some(d) = &r.duty_cycle {
-        let _ = writeln!(out, "\n### Duty cycle \"{}\"\n", d.name);
-        let _ = writeln!(
-            out,
-            "The losses of {} at each step; the transient C dθ/dt = P_V(θ) − P_Q(θ) from ambient, θ continuous across the steps (DOP853, error estimate {} K from two tolerances).\n",
-            super::table::law_words(&d.label),
-            d.error_estimate.as_ref().map_or("—".to_string(), |e| format!("{:.1e}", e.si()))
-        );
-        header(
-            &mut out,
-            &["step", "duration, torque, speed", "θ at end °C", "energy lost kJ", "energy lost at fixed θ kJ"],
-        );
-        for (k, s) in d.steps.iter().enumerate() {
-            row(
-                &mut out,
-                &[
-                    (k + 1).to_string(),
-                    s.label.clone(),
-                    opt(s.oil_temperature_end.as_ref(), celsius),
-                    opt(s.energy_lost.as_ref(), |e| fixed(e.si() / 1e3, 2)),
-                    opt(s.energy_lost_fixed.as_ref(), |e| fixed(e.si() / 1e3, 2)),
-                ],
-            );
-        }
-        let pct = |x: Option<crate::report::number::Num>| {
-            x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)))
-        };
-        let _ = writeln!(out);
-        let _ = writeln!(out, "- Energy in: {} kJ.", fixed(d.energy_in.si() / 1e3, 2));
-        if let (Some(lost), Some(given)) = (&d.energy_lost, &d.energy_dissipated) {
-            let _ = writeln!(
-                out,
-                "- Transient: θ_max {} °C, energy lost {} kJ, given off {} kJ, cycle efficiency {}.",
-                opt(d.oil_temperature_max.as_ref(), celsius),
-                fixed(lost.si() / 1e3, 2),
-                fixed(given.si() / 1e3, 2),
-                pct(d.efficiency)
-            );
-        }
-        if let Some(f) = &d.fixed_temperature {
-            let _ = writeln!(
-                out,
-                "- At the fixed oil temperature {} °C: energy lost {} kJ, cycle efficiency {}.",
-                celsius(&f.oil_temperature),
-                fixed(f.energy_lost.si() / 1e3, 2),
-                pct(f.efficiency)
-            );
-        }
+        duty_cycle_lines(&mut out, d);
     }
     out.push('\n');
     out
+}
+
+/// Per operating point, law and formulation: the balance θ*, what the housing gives off there and
+/// the thermal ratings.
+fn balance_table(out: &mut String, r: &Report) {
+    if r.thermal.is_empty() {
+        return;
+    }
+    let _ = writeln!(out);
+    header(
+        out,
+        &[
+            "operating point",
+            "law",
+            "formulation",
+            "θ* °C",
+            "status",
+            "P_V at θ* W",
+            "convection W",
+            "radiation W",
+            "foundation W",
+            "cooler W",
+            "h_c W/(m² K)",
+            "rating N·m (kW)",
+            "rating at 95 °C N·m (kW)",
+        ],
+    );
+    let rating = |x: Option<&crate::report::thermal::Rating>| {
+        x.map_or_else(|| "—".into(), |x| format!("{} ({})", fixed(x.torque.si(), 1), fixed(x.power.si() / 1e3, 2)))
+    };
+    for t in &r.thermal {
+        row(
+            out,
+            &[
+                format!(
+                    "{} N·m, {} {}",
+                    fixed(t.pinion_torque.si(), 1),
+                    fixed(r.speed_unit.value(&t.pinion_speed), 0),
+                    r.speed_unit.name
+                ),
+                super::table::law_words(&t.label),
+                t.formulation.name().to_string(),
+                opt(t.oil_temperature.as_ref(), celsius),
+                t.status.words().to_string(),
+                fixed(t.power_loss.si(), 1),
+                fixed(t.dissipation.convection.si(), 1),
+                fixed(t.dissipation.radiation.si(), 1),
+                fixed(t.dissipation.foundation.si(), 1),
+                fixed(t.dissipation.cooler.si(), 1),
+                fixed(t.heat_transfer_coefficient.si(), 2),
+                rating(t.thermal_rating.as_ref()),
+                rating(t.thermal_rating_95.as_ref()),
+            ],
+        );
+    }
+}
+
+/// The duty cycle's steps, energies and efficiency, transient and at the fixed oil temperature.
+fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleReport) {
+    let _ = writeln!(out, "\n### Duty cycle \"{}\"\n", d.name);
+    let _ = writeln!(
+        out,
+        "The losses of {} at each step; the transient C dθ/dt = P_V(θ) − P_Q(θ) from ambient, θ continuous across the steps (DOP853, error estimate {} K from two tolerances).\n",
+        super::table::law_words(&d.label),
+        d.error_estimate.as_ref().map_or("—".to_string(), |e| format!("{:.1e}", e.si()))
+    );
+    header(out, &["step", "duration, torque, speed", "θ at end °C", "energy lost kJ", "energy lost at fixed θ kJ"]);
+    for (k, s) in d.steps.iter().enumerate() {
+        row(
+            out,
+            &[
+                (k + 1).to_string(),
+                s.label.clone(),
+                opt(s.oil_temperature_end.as_ref(), celsius),
+                opt(s.energy_lost.as_ref(), |e| fixed(e.si() / 1e3, 2)),
+                opt(s.energy_lost_fixed.as_ref(), |e| fixed(e.si() / 1e3, 2)),
+            ],
+        );
+    }
+    let pct =
+        |x: Option<crate::report::number::Num>| x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)));
+    let _ = writeln!(out);
+    let _ = writeln!(out, "- Energy in: {} kJ.", fixed(d.energy_in.si() / 1e3, 2));
+    if let (Some(lost), Some(given)) = (&d.energy_lost, &d.energy_dissipated) {
+        let _ = writeln!(
+            out,
+            "- Transient: θ_max {} °C, energy lost {} kJ, given off {} kJ, cycle efficiency {}.",
+            opt(d.oil_temperature_max.as_ref(), celsius),
+            fixed(lost.si() / 1e3, 2),
+            fixed(given.si() / 1e3, 2),
+            pct(d.efficiency)
+        );
+    }
+    if let Some(f) = &d.fixed_temperature {
+        let _ = writeln!(
+            out,
+            "- At the fixed oil temperature {} °C: energy lost {} kJ, cycle efficiency {}.",
+            celsius(&f.oil_temperature),
+            fixed(f.energy_lost.si() / 1e3, 2),
+            pct(f.efficiency)
+        );
+    }
 }

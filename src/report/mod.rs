@@ -99,44 +99,10 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         transmission_error: Vec::new(),
     };
     if let Some(t) = &eval.teeth {
-        let s = teeth::stiffness_report(scene, t);
-        report.findings.extend(teeth::teeth_findings(scene, &s));
-        report.stiffness = Some(s);
-        report.transmission_error = teeth::transmission_error_reports(t);
-        report.plots.push(PlotRef::new(
-            PlotKind::MeshStiffness,
-            "Mesh stiffness from the teeth over two mesh cycles, one pair's stiffness, and ISO 6336-1's c_γα",
-        ));
-        if !report.transmission_error.is_empty() {
-            report
-                .plots
-                .push(PlotRef::new(PlotKind::TransmissionError, "Static transmission error over one mesh cycle"));
-            report
-                .plots
-                .push(PlotRef::new(PlotKind::LoadShare, "Load share of one tooth pair along the path of contact"));
-        }
+        with_teeth(&mut report, scene, t);
     }
     if let (Some(t), Some(h)) = (&eval.thermal, &scene.housing) {
-        report.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
-        report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h));
-        report.findings.extend(thermal::thermal_findings(
-            scene,
-            &report.thermal,
-            report.duty_cycle.as_ref(),
-            t.duty_cycle.as_ref(),
-        ));
-        if report.heat_balance.is_some() {
-            report.plots.push(PlotRef::new(
-                PlotKind::HeatBalance,
-                "Heat balance: the losses P_V and what the housing gives off P_Q against the oil temperature",
-            ));
-        }
-        if report.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
-            report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, "Sump temperature over the duty cycle"));
-        }
-        if report.duty_cycle.is_some() {
-            report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, "Energy lost in each step of the duty cycle"));
-        }
+        with_thermal(&mut report, scene, eval, t, h);
     }
     if report.geometry.helical.is_some() {
         report.plots.push(PlotRef::new(
@@ -164,6 +130,62 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             op.plot = Some(pc.file.clone());
         }
     }
+    sweep_plots(&mut report, scene, eval, plan);
+    for path in non_finite_paths(&report) {
+        report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
+    }
+    report
+}
+
+/// The mesh stiffness from the teeth and the transmission error: their records, findings and plots.
+fn with_teeth(report: &mut Report, scene: &Scene, t: &crate::evaluate::teeth::TeethDetails) {
+    let s = teeth::stiffness_report(scene, t);
+    report.findings.extend(teeth::teeth_findings(scene, &s));
+    report.stiffness = Some(s);
+    report.transmission_error = teeth::transmission_error_reports(t);
+    report.plots.push(PlotRef::new(
+        PlotKind::MeshStiffness,
+        "Mesh stiffness from the teeth over two mesh cycles, one pair's stiffness, and ISO 6336-1's c_γα",
+    ));
+    if !report.transmission_error.is_empty() {
+        report.plots.push(PlotRef::new(PlotKind::TransmissionError, "Static transmission error over one mesh cycle"));
+        report.plots.push(PlotRef::new(PlotKind::LoadShare, "Load share of one tooth pair along the path of contact"));
+    }
+}
+
+/// The heat balance and the duty cycle: their records, findings and plots.
+fn with_thermal(
+    report: &mut Report,
+    scene: &Scene,
+    eval: &Evaluation,
+    t: &crate::evaluate::thermal::ThermalDetails,
+    h: &crate::thermal::Housing,
+) {
+    report.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
+    report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h));
+    report.findings.extend(thermal::thermal_findings(
+        scene,
+        &report.thermal,
+        report.duty_cycle.as_ref(),
+        t.duty_cycle.as_ref(),
+    ));
+    if report.heat_balance.is_some() {
+        report.plots.push(PlotRef::new(
+            PlotKind::HeatBalance,
+            "Heat balance: the losses P_V and what the housing gives off P_Q against the oil temperature",
+        ));
+    }
+    if report.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
+        report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, "Sump temperature over the duty cycle"));
+    }
+    if report.duty_cycle.is_some() {
+        report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, "Energy lost in each step of the duty cycle"));
+    }
+}
+
+/// The plots of the sweeps, the map, the composite law, the film and the loss budget, as the
+/// report's records call for them.
+fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Plan) {
     let sweeps = &scene.operating;
     if !report.efficiency.is_empty() {
         if sweeps.pinion_speed.values.len() > 1 {
@@ -212,10 +234,6 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             "Efficiency map: total and mesh efficiency and total loss over torque × speed",
         ));
     }
-    for path in non_finite_paths(&report) {
-        report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
-    }
-    report
 }
 
 /// Paths of every value in the report that is not a finite number (serialised as `null`).

@@ -54,37 +54,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     });
     let housing = housing.and_then(|b| super::lower_thermal::lower_housing(b, &mut errors));
     let duty_cycle = singles.get("duty_cycle").and_then(|b| super::lower_thermal::lower_duty_cycle(b, &mut errors));
-    // At `oil_temperature = equilibrium` the lubricant is read at ambient until the run has found the
-    // balance (the report says the temperature it used).
-    let ambient = match (operating.as_ref().and_then(|o| o.equilibrium), &housing) {
-        (Some(span), Some(h)) => Some(Given {
-            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(h.ambient),
-            written: "equilibrium".to_string(),
-            span,
-        }),
-        _ => None,
-    };
-    let oil_temperature = operating.as_ref().and_then(|o| o.oil_temperature.as_ref()).or(ambient.as_ref());
-    // An `oil_temperature` that failed to lower has its own error: the lubricant is not read at none.
-    let temperature_failed = oil_temperature.is_none()
-        && singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
-    let lubricant = match (singles.get("lubricant"), top.values.get("lubricant")) {
-        _ if temperature_failed => None,
-        (Some(_), Some((key, _))) => {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::DuplicateKey,
-                    key.span,
-                    "the scene has a `lubricant` block and `lubricant = ...`",
-                )
-                .hint("keep one of them"),
-            );
-            None
-        }
-        (Some(b), None) => lower_lubricant(b, oil_temperature, &mut errors),
-        (None, Some((_, v))) => lower_lubricant_value(v, oil_temperature, &mut errors),
-        (None, None) => None,
-    };
+    let lubricant = scene_lubricant(&singles, &top, operating.as_ref(), housing.as_ref(), &mut errors);
     if let Some(op) = &operating {
         check_oil_sweep(op, lubricant.as_ref(), &mut errors);
     }
@@ -119,18 +89,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     if let (Some(gb), Some(block), false) = (&gearbox, singles.get("gearbox"), lubricant_failed) {
         super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
     }
-    if let Some(span) = analyses.film_span {
-        if lubricant.as_ref().is_none_or(|l| l.pressure_viscosity.is_none()) {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::MissingKey,
-                    span,
-                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
-                )
-                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
-            );
-        }
-    }
+    check_film_needs(&analyses, lubricant.as_ref(), &mut errors);
     if let Some(g) = gears.as_ref().filter(|g| g.wants_teeth(&analyses, dynamics.as_ref())) {
         super::lower_teeth::check_teeth(g, &mut errors);
     }
@@ -262,6 +221,64 @@ fn check_dynamics_needs(
                     .hint(format!("add `mass = 1.5 kg` to `{name}` (the gear with its share of the shaft)")),
                 );
             }
+        }
+    }
+}
+
+/// The lubricant, from a `lubricant` block or `lubricant = ...`, read at the oil temperature (at
+/// ambient when the scene asks for the equilibrium, until the run has found it).
+fn scene_lubricant(
+    singles: &BTreeMap<&str, &Block>,
+    top: &Fields,
+    operating: Option<&Operating>,
+    housing: Option<&crate::thermal::Housing>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Lubricant> {
+    // At `oil_temperature = equilibrium` the lubricant is read at ambient until the run has found the
+    // balance (the report says the temperature it used).
+    let ambient = match (operating.and_then(|o| o.equilibrium), housing) {
+        (Some(span), Some(h)) => Some(Given {
+            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(h.ambient),
+            written: "equilibrium".to_string(),
+            span,
+        }),
+        _ => None,
+    };
+    let oil_temperature = operating.and_then(|o| o.oil_temperature.as_ref()).or(ambient.as_ref());
+    // An `oil_temperature` that failed to lower has its own error: the lubricant is not read at none.
+    let temperature_failed = oil_temperature.is_none()
+        && singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
+    match (singles.get("lubricant"), top.values.get("lubricant")) {
+        _ if temperature_failed => None,
+        (Some(_), Some((key, _))) => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    key.span,
+                    "the scene has a `lubricant` block and `lubricant = ...`",
+                )
+                .hint("keep one of them"),
+            );
+            None
+        }
+        (Some(b), None) => lower_lubricant(b, oil_temperature, errors),
+        (None, Some((_, v))) => lower_lubricant_value(v, oil_temperature, errors),
+        (None, None) => None,
+    }
+}
+
+/// `film` needs the lubricant's pressure-viscosity coefficient.
+fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: &mut Vec<Diagnostic>) {
+    if let Some(span) = analyses.film_span {
+        if lubricant.is_none_or(|l| l.pressure_viscosity.is_none()) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    span,
+                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
+                )
+                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
+            );
         }
     }
 }

@@ -41,40 +41,7 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         Some("magnus") => Solver::Magnus,
         _ => Solver::Auto,
     };
-    let friction = match f.values.get("friction") {
-        None => None,
-        Some((_, v)) => match &v.kind {
-            ValueKind::Call(c) => match crate::friction::catalog::entry(&c.name.text) {
-                Some(_) => {
-                    let mut laws = super::lower_friction::lower_law(c, errors);
-                    if laws.len() > 1 {
-                        errors.push(
-                            Diagnostic::new(
-                                DiagnosticKind::OutOfRange,
-                                v.span,
-                                "the dynamics take one friction law, not a sweep",
-                            )
-                            .hint("give one value, e.g. `friction = coulomb(mu = 0.08)`"),
-                        );
-                        return None;
-                    }
-                    laws.pop()
-                }
-                None => {
-                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.id.name()).collect();
-                    errors.push(unknown_name("law for `friction`", &c.name, &ids));
-                    return None;
-                }
-            },
-            _ => {
-                errors.push(
-                    Diagnostic::new(DiagnosticKind::WrongDimension, v.span, "`friction` expects a law")
-                        .hint("write `friction = coulomb(mu = 0.08)`"),
-                );
-                return None;
-            }
-        },
-    };
+    let friction = dynamics_friction(&f, errors)?;
     if friction.is_none() && formulations.iter().any(|f| *f != DynamicFormulation::Base) {
         errors.push(
             f.missing("friction", "coulomb(mu = 0.08)")
@@ -135,6 +102,45 @@ pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<D
         transmission_error,
         free_response,
         span: block.kind.span,
+    })
+}
+
+/// The one friction law of the dynamics (`friction = coulomb(mu = 0.08)`), if given; None when it
+/// fails to lower.
+fn dynamics_friction(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Option<crate::model::FrictionLawSpec>> {
+    Some(match f.values.get("friction") {
+        None => None,
+        Some((_, v)) => match &v.kind {
+            ValueKind::Call(c) => match crate::friction::catalog::entry(&c.name.text) {
+                Some(_) => {
+                    let mut laws = super::lower_friction::lower_law(c, errors);
+                    if laws.len() > 1 {
+                        errors.push(
+                            Diagnostic::new(
+                                DiagnosticKind::OutOfRange,
+                                v.span,
+                                "the dynamics take one friction law, not a sweep",
+                            )
+                            .hint("give one value, e.g. `friction = coulomb(mu = 0.08)`"),
+                        );
+                        return None;
+                    }
+                    laws.pop()
+                }
+                None => {
+                    let ids: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.id.name()).collect();
+                    errors.push(unknown_name("law for `friction`", &c.name, &ids));
+                    return None;
+                }
+            },
+            _ => {
+                errors.push(
+                    Diagnostic::new(DiagnosticKind::WrongDimension, v.span, "`friction` expects a law")
+                        .hint("write `friction = coulomb(mu = 0.08)`"),
+                );
+                return None;
+            }
+        },
     })
 }
 

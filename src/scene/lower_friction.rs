@@ -58,45 +58,10 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
             ok = false;
             continue;
         }
-        let values: Option<Vec<(f64, String)>> = match &value.kind {
-            ValueKind::List { .. } | ValueKind::Range { .. } => {
-                if swept.is_some() {
-                    errors.push(
-                        Diagnostic::new(
-                            DiagnosticKind::OutOfRange,
-                            value.span,
-                            format!("`{}` sweeps a second argument", entry.id.name()),
-                        )
-                        .hint("a law may sweep one argument; write a second law for another sweep"),
-                    );
-                    ok = false;
-                    continue;
-                }
-                super::fields::sweep_values(spec.name, value, spec.dimension, errors).map(|(si, unit, written, _)| {
-                    si.into_iter()
-                        .zip(written)
-                        .map(|(x, w)| (x, format!("{} {unit}", format_number(w)).trim_end().to_string()))
-                        .collect()
-                })
-            }
-            _ => super::fields::scalar(spec.name, value, spec.dimension, errors).map(|v| vec![v]),
-        };
-        let Some(values) = values else {
+        let Some(values) = argument_values(entry, spec, value, swept.is_some(), errors) else {
             ok = false;
             continue;
         };
-        if let Some((x, _)) = values.iter().find(|(x, _)| !(x.is_finite() && *x >= 0.0)) {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::OutOfRange,
-                    value.span,
-                    format!("`{}` = {x} must not be negative", spec.name),
-                )
-                .hint(format!("{} is a magnitude; the sign follows the sliding direction", spec.what)),
-            );
-            ok = false;
-            continue;
-        }
         if values.len() > 1 || matches!(value.kind, ValueKind::List { .. } | ValueKind::Range { .. }) {
             swept = Some((spec.name.to_string(), values));
         } else {
@@ -137,6 +102,52 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
             })
             .collect(),
     }
+}
+
+/// The value or values (a sweep) of one argument of a law, in SI with what was written; none
+/// negative, at most one argument swept.
+fn argument_values(
+    entry: &catalog::LawEntry,
+    spec: &catalog::LawArgument,
+    value: &Value,
+    already_swept: bool,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Vec<(f64, String)>> {
+    let values: Option<Vec<(f64, String)>> = match &value.kind {
+        ValueKind::List { .. } | ValueKind::Range { .. } => {
+            if already_swept {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        value.span,
+                        format!("`{}` sweeps a second argument", entry.id.name()),
+                    )
+                    .hint("a law may sweep one argument; write a second law for another sweep"),
+                );
+                return None;
+            }
+            super::fields::sweep_values(spec.name, value, spec.dimension, errors).map(|(si, unit, written, _)| {
+                si.into_iter()
+                    .zip(written)
+                    .map(|(x, w)| (x, format!("{} {unit}", format_number(w)).trim_end().to_string()))
+                    .collect()
+            })
+        }
+        _ => super::fields::scalar(spec.name, value, spec.dimension, errors).map(|v| vec![v]),
+    };
+    let values = values?;
+    if let Some((x, _)) = values.iter().find(|(x, _)| !(x.is_finite() && *x >= 0.0)) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                value.span,
+                format!("`{}` = {x} must not be negative", spec.name),
+            )
+            .hint(format!("{} is a magnitude; the sign follows the sliding direction", spec.what)),
+        );
+        return None;
+    }
+    Some(values)
 }
 
 pub(super) fn check_friction_needs(

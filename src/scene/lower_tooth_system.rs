@@ -25,8 +25,29 @@ pub(super) struct ToothSystem {
 }
 
 pub(super) fn lower_tooth_system(f: &Fields, errors: &mut Vec<Diagnostic>) -> ToothSystem {
+    let helix_angle = lower_helix_angle(f, errors);
+    let hand = f.name("hand", &["left", "right"], errors).map(|n| n.text.clone());
+    let cos_beta = helix_angle.as_ref().map_or(1.0, |b| b.value.value.cos());
+    let beta_written = helix_angle.as_ref().map_or(String::new(), |b| b.written.clone());
+    let (module, module_source) = lower_module(f, cos_beta, &beta_written, errors);
+    if helix_angle.is_none() {
+        for key in ["transverse_module", "transverse_diametral_pitch", "transverse_pressure_angle"] {
+            if let Some((k, _)) = f.values.get(key) {
+                errors.push(
+                    Diagnostic::new(DiagnosticKind::MissingKey, k.span, format!("`{key}` needs a `helix_angle`"))
+                        .hint("transverse values belong to a helical pair: add `helix_angle = 15 deg`, or give the normal value (for a spur pair they are the same)"),
+                );
+            }
+        }
+    }
+    let (pressure_angle, transverse_pressure_angle) = lower_pressure_angle(f, cos_beta, &beta_written, errors);
+    ToothSystem { helix_angle, hand, module, module_source, pressure_angle, transverse_pressure_angle }
+}
+
+/// `helix_angle`, within 0° to 45°.
+fn lower_helix_angle(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Given<Angle>> {
     let helix_angle: Option<Given<Angle>> = f.optional("helix_angle", errors);
-    let helix_angle = helix_angle.and_then(|b| {
+    helix_angle.and_then(|b| {
         let deg = b.value.value.to_degrees();
         if (0.0..=45.0).contains(&deg) {
             Some(b)
@@ -45,12 +66,20 @@ pub(super) fn lower_tooth_system(f: &Fields, errors: &mut Vec<Diagnostic>) -> To
             );
             None
         }
-    });
-    let hand = f.name("hand", &["left", "right"], errors).map(|n| n.text.clone());
-    let cos_beta = helix_angle.as_ref().map_or(1.0, |b| b.value.value.cos());
-    let beta_written = helix_angle.as_ref().map_or(String::new(), |b| b.written.clone());
+    })
+}
+
+/// The normal module from exactly one of `module`, `diametral_pitch` (normal values),
+/// `transverse_module` or `transverse_diametral_pitch` (m_n = m_t cos β, m_n = cos β / P_dt), with
+/// how it was given.
+fn lower_module(
+    f: &Fields,
+    cos_beta: f64,
+    beta_written: &str,
+    errors: &mut Vec<Diagnostic>,
+) -> (Option<Given<Length>>, ModuleSource) {
     let given: Vec<&str> = MODULE_KEYS.iter().copied().filter(|k| f.has(k)).collect();
-    let (module, module_source) = match given.as_slice() {
+    match given.as_slice() {
         [] => (positive(f.required("module", "4.5 mm", errors), "module", errors), ModuleSource::Module),
         [_, second, ..] => {
             let (key, _) = f.values[*second];
@@ -105,17 +134,17 @@ pub(super) fn lower_tooth_system(f: &Fields, errors: &mut Vec<Diagnostic>) -> To
                 None => (None, ModuleSource::Module),
             }
         }
-    };
-    if helix_angle.is_none() {
-        for key in ["transverse_module", "transverse_diametral_pitch", "transverse_pressure_angle"] {
-            if let Some((k, _)) = f.values.get(key) {
-                errors.push(
-                    Diagnostic::new(DiagnosticKind::MissingKey, k.span, format!("`{key}` needs a `helix_angle`"))
-                        .hint("transverse values belong to a helical pair: add `helix_angle = 15 deg`, or give the normal value (for a spur pair they are the same)"),
-                );
-            }
-        }
     }
+}
+
+/// The normal pressure angle, from `pressure_angle` or `transverse_pressure_angle`
+/// (tan α_n = tan α_t cos β), within 10° to 35°; and the transverse one when that was given.
+fn lower_pressure_angle(
+    f: &Fields,
+    cos_beta: f64,
+    beta_written: &str,
+    errors: &mut Vec<Diagnostic>,
+) -> (Option<Given<Angle>>, Option<Given<Angle>>) {
     let (pressure_angle, transverse_pressure_angle) =
         match (f.has("pressure_angle"), f.has("transverse_pressure_angle")) {
             (true, true) => {
@@ -157,5 +186,5 @@ pub(super) fn lower_tooth_system(f: &Fields, errors: &mut Vec<Diagnostic>) -> To
             None
         }
     });
-    ToothSystem { helix_angle, hand, module, module_source, pressure_angle, transverse_pressure_angle }
+    (pressure_angle, transverse_pressure_angle)
 }
