@@ -51,10 +51,22 @@ enum Command {
     },
     /// Draw report.md and every plot of a report folder again from its report.json alone.
     Render { folder: PathBuf },
-    /// Parse and validate a scene only.
+    /// Parse and validate a scene, and say what `run` would compute.
     Check { scene: PathBuf },
     /// List the unit table.
     Units,
+    /// List the friction laws with their arguments, needs and sources.
+    Laws,
+    /// List the oil catalogue (ISO VG grades, base oils and their data).
+    Oils,
+    /// List the bearing types, their loss factors, and the keys of bearings and seals.
+    Bearings,
+    /// Write a commented template scene to start from.
+    New {
+        /// The file to write (it must not exist yet).
+        #[arg(default_value = "scene.gear")]
+        scene: PathBuf,
+    },
 }
 
 const EXIT_SCENE: u8 = 1;
@@ -79,9 +91,31 @@ pub(crate) fn main() -> ExitCode {
         Command::Merge { shards, out } => merge(&shards, &out),
         Command::Check { scene } => check(&scene),
         Command::Render { folder } => finished(gearloss::rerender::render_into(&folder).map(|files| (folder, files))),
-        Command::Units => {
-            say!(out, "{}", units_table());
+        Command::Units => listing(&units_table()),
+        Command::Laws => listing(&gearloss::listing::laws()),
+        Command::Oils => listing(&gearloss::listing::oils()),
+        Command::Bearings => listing(&gearloss::listing::bearings()),
+        Command::New { scene } => new_scene(&scene),
+    }
+}
+
+fn listing(text: &str) -> ExitCode {
+    say!(out, "{text}");
+    ExitCode::SUCCESS
+}
+
+/// `gearloss new`: the template, never over an existing file.
+fn new_scene(path: &Path) -> ExitCode {
+    let file = std::fs::OpenOptions::new().write(true).create_new(true).open(path);
+    let written = file.and_then(|mut f| std::io::Write::write_all(&mut f, gearloss::listing::TEMPLATE.as_bytes()));
+    match written {
+        Ok(()) => {
+            outln!("wrote {}: edit it, then `gearloss check {0}` and `gearloss run {0}`", path.display());
             ExitCode::SUCCESS
+        }
+        Err(e) => {
+            errln!("error: cannot write {}: {e} (gearloss new never overwrites a file)", path.display());
+            ExitCode::from(EXIT_IO)
         }
     }
 }
@@ -113,6 +147,18 @@ fn check(path: &Path) -> ExitCode {
                 n,
                 if n == 1 { "" } else { "s" }
             );
+            let runs = gearloss::scene::summary::would_run(&scene);
+            if runs.is_empty() {
+                outln!("it asks for no analysis: add an `analyses {{ ... }}` block (README lists them)");
+            } else {
+                outln!("`gearloss run` would compute:");
+                for r in runs {
+                    outln!("  - {r}");
+                }
+            }
+            for w in gearloss::scene::summary::unused_blocks(&scene) {
+                outln!("warning: {w}");
+            }
             ExitCode::SUCCESS
         }
         Err(e) => report_errors(&e),
@@ -178,6 +224,20 @@ fn finished(result: Result<(PathBuf, Vec<String>), gearloss::RunError>) -> ExitC
     }
 }
 
+/// After `run` or `merge`: each report's headline and first warnings, then the folder.
+fn written(result: Result<gearloss::Written, gearloss::RunError>) -> ExitCode {
+    match result {
+        Ok(w) => {
+            for (label, report) in &w.reports {
+                say!(out, "{}\n", gearloss::render::terminal::run_summary(report, label));
+            }
+            outln!("wrote {} ({} files: report.md is the report)", w.folder.display(), w.files.len());
+            ExitCode::SUCCESS
+        }
+        Err(e) => finished(Err(e)),
+    }
+}
+
 fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>) -> ExitCode {
     let source = match read(path) {
         Ok(s) => s,
@@ -191,14 +251,14 @@ fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>) -> ExitCode {
     let bar = Bar::new();
     let result = gearloss::run_into(&name, &source, &scene, out, shard, &bar);
     drop(bar);
-    finished(result)
+    written(result)
 }
 
 fn merge(shards: &[PathBuf], out: &Path) -> ExitCode {
     let bar = Bar::new();
     let result = gearloss::merge_into(shards, out, &bar);
     drop(bar);
-    finished(result)
+    written(result)
 }
 
 fn units_table() -> String {
@@ -209,7 +269,11 @@ fn units_table() -> String {
             Some((k, expr)) => format!("{k} {expr}"),
             None => String::new(),
         };
-        let si = if u.offset != 0.0 { format!("x + {}", u.offset) } else { format!("{:e}", u.factor) };
+        let si = match (u.offset != 0.0, u.factor == 1.0) {
+            (true, true) => format!("x + {}", u.offset),
+            (true, false) => format!("{:.6} x + {:.4}", u.factor, u.offset),
+            (false, _) => format!("{:e}", u.factor),
+        };
         out.push_str(&format!(
             "{:<6} {:<24} {:>24} {:<16} {}\n",
             u.name,

@@ -59,6 +59,7 @@ pub mod evaluate;
 pub mod folder;
 pub mod friction;
 pub mod geometry;
+pub mod listing;
 pub mod losses;
 pub mod model;
 pub mod numerics;
@@ -81,7 +82,7 @@ pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
-pub use run::{has_records, merge_into, report_of, run_into, run_to_files};
+pub use run::{has_records, merge_into, report_of, run_into, run_to_files, Written};
 pub use run_error::RunError;
 pub use scene::ast::SceneAst;
 

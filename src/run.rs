@@ -151,9 +151,18 @@ fn run_scene_into(
     Ok((report, files))
 }
 
+/// What a run wrote: the report folder, its files, and the report of each run it holds (one; one
+/// per oil temperature, labelled; none for a shard's part).
+#[derive(Debug)]
+pub struct Written {
+    pub folder: PathBuf,
+    pub files: Vec<String>,
+    pub reports: Vec<(String, Report)>,
+}
+
 /// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
 /// `out_dir/<slug>.shard-K-of-N/` with the shard's records and tally for `gearloss merge`),
-/// written into a temporary folder and renamed into place. Returns the folder and its files.
+/// written into a temporary folder and renamed into place.
 pub fn run_into(
     source_name: &str,
     source: &str,
@@ -161,26 +170,30 @@ pub fn run_into(
     out_dir: &Path,
     shard: Option<Shard>,
     progress: &dyn Progress,
-) -> Result<(PathBuf, Vec<String>), RunError> {
+) -> Result<Written, RunError> {
     let slug = report::slug(&scene.title);
     let labels = scene.oil_temperature_labels();
     let Some(shard) = shard else {
         let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
         if labels.is_empty() {
-            let (_, files) = run_scene_into(scene, &folder, "", progress)?;
-            return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
+            let (report, files) = run_scene_into(scene, &folder, "", progress)?;
+            let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+            return Ok(Written { folder, files, reports: vec![(String::new(), report)] });
         }
         let mut files = Vec::new();
+        let mut reports = Vec::new();
         let top = each_oil_temperature(scene, |at, dir| {
             let (report, written) = run_scene_into(at, &folder, dir, progress)?;
             files.extend(written);
+            reports.push((dir.to_string(), report.clone()));
             Ok(report)
         })?;
         for (k, (file, content)) in top.into_iter().enumerate() {
             folder.write(&file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
             files.insert(k, file);
         }
-        return Ok((folder.commit().map_err(RunError::io("the report folder"))?, files));
+        let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+        return Ok(Written { folder, files, reports });
     };
     if !labels.is_empty() {
         return Err(RunError::Shards(format!(
@@ -195,17 +208,13 @@ pub fn run_into(
     let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
-    let dir = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok((dir, files))
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(Written { folder, files, reports: Vec::new() })
 }
 
 /// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
 /// (record files concatenated in shard order, tallies folded in shard order).
-pub fn merge_into(
-    shards: &[PathBuf],
-    out_dir: &Path,
-    progress: &dyn Progress,
-) -> Result<(PathBuf, Vec<String>), RunError> {
+pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -> Result<Written, RunError> {
     let set = shard::ShardSet::read(shards).map_err(RunError::Shards)?;
     let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
@@ -217,11 +226,11 @@ pub fn merge_into(
         set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
     }
-    let (_, rendered) = finish(&scene, &plan, &set.tally, &[], progress)?;
+    let (report, rendered) = finish(&scene, &plan, &set.tally, &[], progress)?;
     for (file, content) in &rendered.files {
         folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
         files.push(file.clone());
     }
-    let dir = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok((dir, files))
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(Written { folder, files, reports: vec![(String::new(), report)] })
 }

@@ -207,11 +207,16 @@ fn half_width_beyond_limit(table: &[(Option<&str>, ContactPoint)]) -> Option<Imp
     })
 }
 
-/// An efficiency outside [0, 1] or a power loss above the input power.
-fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
+/// How far past [0, 1] an efficiency may lie and still be rounding: 4 units in the last place of
+/// 1 (8.9e-16). η = 1 − P/P_in is computed from integrals whose last bits are rounding; one step
+/// above 1 is not a law giving negative friction.
+pub const EFFICIENCY_ULPS: f64 = 4.0 * f64::EPSILON;
+
+/// An efficiency outside [0, 1] (beyond [`EFFICIENCY_ULPS`]) or a power loss above the input power.
+pub fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
     let mut out = Vec::new();
     let f = e.formulation.name().to_string();
-    let bad = |x: f64| !(0.0..=1.0).contains(&x);
+    let bad = |x: f64| !(-EFFICIENCY_ULPS..=1.0 + EFFICIENCY_ULPS).contains(&x);
     if bad(e.mean.value) || bad(e.min) || bad(e.max) {
         out.push(Implausible::Efficiency {
             law: law.into(),

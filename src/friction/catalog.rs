@@ -98,6 +98,8 @@ pub struct LawEntry {
     pub title: &'static str,
     pub arguments: &'static [LawArgument],
     pub needs: &'static [Needs],
+    /// Where the formula comes from (the equation or table it implements).
+    pub source: &'static str,
     /// Builds the law at one operating point from the lowered arguments.
     pub build: fn(&FrictionLawSpec, &LawContext) -> Box<dyn FrictionLaw>,
 }
@@ -115,6 +117,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "Coulomb (Model I)",
         arguments: &[arg("mu", Dimension::NONE, None, "coefficient of friction")],
         needs: &[],
+        source: "He, Cho & Singh (2008) eq 10; Fernandes et al. §2.1",
         build: |s, _| Box::new(super::coulomb::Coulomb { mu: s.arg("mu") }),
     },
     LawEntry {
@@ -122,6 +125,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "Benedict–Kelley (He–Cho–Singh eq 14)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
+        source: "Benedict & Kelley (1961) as He, Cho & Singh (2008) eq 14 write it",
         build: |_, ctx| Box::new(super::benedict_kelley::BenedictKelley::new(&ctx.tribology)),
     },
     LawEntry {
@@ -129,6 +133,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "Benedict–Kelley (Bernard Table 1)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRq],
+        source: "Benedict & Kelley (1961) as Bernard et al. (2016) Table 1 write it",
         build: |_, ctx| Box::new(super::benedict_kelley_bernard::BenedictKelleyBernard::new(&ctx.tribology)),
     },
     LawEntry {
@@ -136,6 +141,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "Xu et al. (Model III)",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
+        source: "Xu et al. (2007) as He, Cho & Singh (2008) eq 18 write it",
         build: |_, ctx| Box::new(super::xu::Xu::new(&ctx.tribology)),
     },
     LawEntry {
@@ -146,6 +152,7 @@ pub const LAWS: &[LawEntry] = &[
             arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "smoothing factor Φ"),
         ],
         needs: &[],
+        source: "Duan & Singh, as He, Cho & Singh (2008) eq 19 write it",
         build: |s, _| Box::new(super::smoothed_coulomb::SmoothedCoulomb { mu: s.arg("mu"), phi: s.arg("phi") }),
     },
     LawEntry {
@@ -157,6 +164,7 @@ pub const LAWS: &[LawEntry] = &[
             arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "Model IV smoothing factor Φ"),
         ],
         needs: &[Lubricant, RoughnessRa, RoughnessRq, PressureViscosity],
+        source: "He, Cho & Singh (2008) eqs 20–21 (Λ picks Models IV, II, III)",
         build: |s, ctx| {
             Box::new(super::composite::Composite::new(ctx, s.arg("filter_cutoff"), s.arg("mu"), s.arg("phi")))
         },
@@ -166,6 +174,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "Misharin",
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
+        source: "Misharin, as Bernard et al. (2016) Table 1 write it",
         build: |_, ctx| Box::new(super::misharin::Misharin::new(&ctx.tribology)),
     },
     LawEntry {
@@ -173,6 +182,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "O'Donoghue–Cameron",
         arguments: &[],
         needs: &[Lubricant, RoughnessRa, KinematicViscosity],
+        source: "O'Donoghue & Cameron, as Bernard et al. (2016) Table 1 write it",
         build: |_, ctx| Box::new(super::odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology)),
     },
     LawEntry {
@@ -180,6 +190,7 @@ pub const LAWS: &[LawEntry] = &[
         title: "Drozdov–Gavrikov (low confidence)",
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
+        source: "Drozdov & Gavrikov, as Bernard et al. (2016) Table 1 print it (garbled there; one reading)",
         build: |_, ctx| Box::new(super::drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology)),
     },
     LawEntry {
@@ -188,6 +199,7 @@ pub const LAWS: &[LawEntry] = &[
         // x_l = 0 (the default) reads X_L from the lubricant's base oil.
         arguments: &[arg("x_l", Dimension::NONE, Some(0.0), "lubricant factor X_L (default: the lubricant's)")],
         needs: &[Lubricant, RoughnessRa],
+        source: "ISO/TR 14179-2:2001 (Niemann & Schlenk mean μ_mZ)",
         build: |s, ctx| Box::new(super::iso_14179_2::Iso14179_2::new(ctx, s.arg("x_l"))),
     },
     LawEntry {
@@ -198,6 +210,7 @@ pub const LAWS: &[LawEntry] = &[
             arg("mu_ehl", Dimension::NONE, Some(0.02), "full-film friction coefficient"),
         ],
         needs: &[Lubricant, RoughnessRz, PressureViscosity],
+        source: "Matsumoto mixed-regime blend ξ = 0.5 log10(Rz/h_min) with Dowson–Higginson h_min",
         build: |s, ctx| {
             Box::new(super::matsumoto::Matsumoto::new(&ctx.tribology, s.arg("mu_boundary"), s.arg("mu_ehl")))
         },

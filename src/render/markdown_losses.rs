@@ -3,21 +3,25 @@
 
 use std::fmt::Write;
 
-use super::table::{fixed, header, law_words, row, sig};
+use super::table::{fixed, header, law_words, row};
 use crate::losses::parts::COLUMNS;
 use crate::report::{Report, Severity};
 
-/// Rows of the headline's table before it points to the details.
-const HEADLINE_ROWS: usize = 12;
-
-/// `239.3 N·m, 1500 rpm`: a record's operating point in the units the scene wrote.
-fn point_label(r: &Report, e: &crate::report::friction::EfficiencyRecord) -> String {
-    format!("{} N·m, {} {}", sig(e.pinion_torque.si()), sig(r.speed_unit.value(&e.pinion_speed)), r.speed_unit.name)
-}
+use super::headline::point_label;
 
 /// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
 /// budget's total where given), the map's range, and the count of warnings and notes.
 pub fn headline(r: &Report) -> String {
+    let mut out = String::from("## Headline\n\n");
+    out.push_str(&headline_body(r));
+    let warnings = r.findings.iter().filter(|f| f.severity == Severity::Warning).count();
+    let notes = r.findings.len() - warnings;
+    let _ = writeln!(out, "Findings: {warnings} warning(s), {notes} note(s) (listed at the end).\n");
+    out
+}
+
+/// The headline without its heading and findings count (the terminal prints it after `run`).
+pub fn headline_body(r: &Report) -> String {
     let mut out = String::new();
     let g = &r.geometry;
     let kind = if g.helix_angle.si() > 0.0 {
@@ -29,7 +33,6 @@ pub fn headline(r: &Report) -> String {
         Some(t) => format!(", {} at {:.0} °C", l.name, t.si() - 273.15),
         None => format!(", {}", l.name),
     });
-    let _ = writeln!(out, "## Headline\n");
     let _ = writeln!(
         out,
         "{kind}, z = {}/{}, m = {} mm, b = {} mm{oil}; {} operating point(s).\n",
@@ -39,30 +42,7 @@ pub fn headline(r: &Report) -> String {
         fixed(g.face_width.si() * 1e3, 2),
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
     );
-    if !r.efficiency.is_empty() {
-        let mut cols = vec!["operating point", "law", "formulation", "η̄ mesh %", "P mesh W"];
-        if r.loss_budget {
-            cols.extend(["P total W", "η total %"]);
-        }
-        header(&mut out, &cols);
-        for e in r.efficiency.iter().take(HEADLINE_ROWS) {
-            let mut cells = vec![
-                point_label(r, e),
-                law_words(&e.label),
-                e.formulation.name().to_string(),
-                fixed(100.0 * e.mean_efficiency.0, 3),
-                fixed(e.power_loss.si(), 2),
-            ];
-            if let Some(b) = &e.budget {
-                cells.extend([fixed(b.total_loss.si(), 2), fixed(100.0 * b.total_efficiency.0, 3)]);
-            }
-            row(&mut out, &cells);
-        }
-        if r.efficiency.len() > HEADLINE_ROWS {
-            let _ = writeln!(out, "\n… and {} more rows under Efficiency below.", r.efficiency.len() - HEADLINE_ROWS);
-        }
-        let _ = writeln!(out);
-    }
+    super::headline::efficiency(&mut out, r);
     if let Some(m) = &r.efficiency_map {
         for x in &m.ranges {
             let total = x.total_efficiency.map_or(String::new(), |t| {
@@ -84,9 +64,9 @@ pub fn headline(r: &Report) -> String {
     if !r.loss_budget && !r.efficiency.is_empty() {
         let _ = writeln!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
     }
-    let warnings = r.findings.iter().filter(|f| f.severity == Severity::Warning).count();
-    let notes = r.findings.len() - warnings;
-    let _ = writeln!(out, "Findings: {warnings} warning(s), {notes} note(s) (listed at the end).\n");
+    if let Some(d) = &r.dynamics {
+        super::headline::dynamics(&mut out, d);
+    }
     out
 }
 

@@ -1,5 +1,6 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
+pub mod headline;
 pub mod markdown;
 pub mod markdown_bearings;
 pub mod markdown_dynamics;
@@ -13,6 +14,7 @@ pub mod markdown_thermal;
 pub mod oil_sweep;
 pub mod svg;
 pub mod table;
+pub mod terminal;
 
 use crate::report::numerics::Timings;
 use crate::report::{PlotKind, Report};

@@ -10,6 +10,7 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let mut out = Vec::new();
     let note = |m: String| Finding { severity: Severity::Note, message: m };
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    out.extend(crate::scene::summary::unused_blocks(scene).into_iter().map(warn));
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),

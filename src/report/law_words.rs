@@ -1,16 +1,25 @@
 //! A law's label in the words of its catalogue title, for legends and tables.
 
 /// A law's label in words for legends: `coulomb(mu = 0.04)` → "Coulomb μ = 0.04",
-/// `iso_14179_2(x_l = 0.846)` → "ISO/TR 14179-2 X_L = 0.846".
+/// `iso_14179_2(x_l = 0.846)` → "ISO/TR 14179-2 X_L = 0.846"; `benedict_kelley` and
+/// `benedict_kelley_bernard` keep their parentheses ("Benedict–Kelley (Bernard Table 1)").
 pub fn law_words(label: &str) -> String {
     let (name, args) = match label.split_once('(') {
         Some((n, a)) => (n, a.trim_end_matches(')')),
         None => (label, ""),
     };
-    let title = crate::friction::catalog::LAWS
-        .iter()
-        .find(|l| l.id.name() == name)
-        .map_or(name.to_string(), |l| l.title.split(" (").next().unwrap_or(l.title).to_string());
+    let short = |t: &'static str| t.split(" (").next().unwrap_or(t);
+    let laws = crate::friction::catalog::LAWS;
+    // The title without its parenthesis, unless another law shares that short title (the two
+    // Benedict–Kelley forms): then the whole title, so that distinct laws read differently.
+    let title = laws.iter().find(|l| l.id.name() == name).map_or(name.to_string(), |l| {
+        let twin = laws.iter().any(|o| o.id != l.id && short(o.title) == short(l.title));
+        if twin {
+            l.title.to_string()
+        } else {
+            short(l.title).to_string()
+        }
+    });
     let args: Vec<String> = args
         .split(", ")
         .filter(|a| !a.is_empty())

@@ -24,7 +24,7 @@ pub fn plausibility_findings(tally: &Tally) -> Vec<Finding> {
                     named.as_ref().map_or(String::new(), |n| format!(" (point {n})"))
                 ),
                 Implausible::Efficiency { law, formulation, mean, min, max } => format!(
-                    "operating point {k} ({label}), {law} ({formulation}): efficiency outside [0, 1] (η̄ = {mean:.6}, η from {min:.6} to {max:.6}): the law gives friction no gear mesh can have here"
+                    "operating point {k} ({label}), {law} ({formulation}): efficiency outside [0, 1] by more than rounding (4 ulps) (η̄ = {mean:.6}, η from {min:.6} to {max:.6}): the law gives friction no gear mesh can have here"
                 ),
                 Implausible::PowerLoss { law, formulation, loss, input } => format!(
                     "operating point {k} ({label}), {law} ({formulation}): power loss {loss:.3} W above the input power {input:.3} W"

@@ -25,10 +25,10 @@ use crate::model::{Force, Length, Velocity, VolumeRate};
 const SHAFTS: [&str; 2] = ["pinion_shaft", "wheel_shaft"];
 const DIP: &[&str] = &["pinion_immersion", "wheel_immersion", "axis_height", "housing_width"];
 const INJECTION: &[&str] = &["flow", "jet_speed"];
-const BEARING: &[&str] =
+pub(crate) const BEARING: &[&str] =
     &["type", "bore", "outside", "mean_diameter", "count", "at", "static_load_rating", "f0", "f1", "y", "model"];
-const SKF: &[&str] = &["r1", "r2", "s1", "s2", "y", "mu_bl", "mu_ehl"];
-const SEAL: &[&str] = &["diameter", "count"];
+pub(crate) const SKF: &[&str] = &["r1", "r2", "s1", "s2", "y", "mu_bl", "mu_ehl"];
+pub(crate) const SEAL: &[&str] = &["diameter", "count"];
 
 fn metres(g: Option<crate::model::Given<Length>>) -> Option<f64> {
     g.map(|g| g.value.value)

@@ -58,7 +58,7 @@ pub(super) fn lower_lubricant_value(
     if !f.has("grade") || !f.has("base") {
         errors.push(
             Diagnostic::new(DiagnosticKind::MissingKey, call.span, "`iso_vg` needs a grade and a base oil").hint(
-                "write `iso_vg(100, mineral)`: an ISO VG grade from 7 to 1500, base mineral, pao, pag_insoluble, pag_soluble or ester",
+                "write `iso_vg(100, mineral)`: an ISO VG grade from 2 to 1500, base mineral, pao, pag_insoluble, pag_soluble or ester",
             ),
         );
         return None;

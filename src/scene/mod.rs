@@ -19,6 +19,7 @@ pub mod lower_tooth_system;
 pub mod parse;
 pub mod screen;
 pub mod source;
+pub mod summary;
 pub mod sweeps;
 pub mod syntax_errors;
 pub mod units;

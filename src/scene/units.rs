@@ -95,6 +95,22 @@ pub const UNITS: &[UnitDef] = &[
         composition: None,
         description: "degree Celsius (sign; the same as degC)",
     },
+    UnitDef {
+        name: "degF",
+        factor: 5.0 / 9.0,
+        dimension: Dimension::TEMPERATURE,
+        offset: 459.67 * 5.0 / 9.0,
+        composition: None,
+        description: "degree Fahrenheit (absolute temperature, only on its own): K = (°F + 459.67) · 5/9",
+    },
+    UnitDef {
+        name: "°F",
+        factor: 5.0 / 9.0,
+        dimension: Dimension::TEMPERATURE,
+        offset: 459.67 * 5.0 / 9.0,
+        composition: None,
+        description: "degree Fahrenheit (sign; the same as degF)",
+    },
     // force
     c("N", 1.0, Dimension::FORCE, (1.0, "kg*m/s^2"), "newton"),
     c("mN", 1e-3, Dimension::FORCE, (1e-3, "N"), "millinewton"),
@@ -226,8 +242,36 @@ pub fn evaluate<'a>(factors: impl IntoIterator<Item = (&'a str, i32)>) -> Result
     Ok(scale)
 }
 
-/// The nearest unit name, for "did you mean" hints.
+/// What people write for a unit the table spells otherwise: the unit they mean.
+const WRITTEN_FOR: &[(&str, &str)] = &[
+    ("Nm", "N*m"),
+    ("Nmm", "N*mm"),
+    ("kNm", "kN*m"),
+    ("lbfin", "lbf*in"),
+    ("lbft", "lbf*ft"),
+    ("ftlb", "lbf*ft"),
+    ("C", "degC"),
+    ("F", "degF"),
+    ("celsius", "degC"),
+    ("fahrenheit", "degF"),
+    ("Celsius", "degC"),
+    ("Fahrenheit", "degF"),
+    ("degc", "degC"),
+    ("degf", "degF"),
+    ("kgm2", "kg*m^2"),
+    ("RPM", "rpm"),
+    ("cps", "cP"),
+    ("cst", "cSt"),
+    ("CST", "cSt"),
+];
+
+/// The nearest unit name, for "did you mean" hints: what the name usually stands for when it is a
+/// common way of writing a unit ([`WRITTEN_FOR`]: `Nm` → `N*m`, `C` → `degC`), else the table's
+/// closest name by Jaro–Winkler similarity.
 pub fn suggest(name: &str) -> Option<&'static str> {
+    if let Some((_, meant)) = WRITTEN_FOR.iter().find(|(w, _)| *w == name) {
+        return Some(meant);
+    }
     let lower = name.to_ascii_lowercase();
     UNITS
         .iter()

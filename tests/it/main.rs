@@ -6,6 +6,7 @@ mod dynamics;
 mod dynamics_closed_forms;
 mod efficiency;
 mod engine;
+mod first_hour;
 mod friction;
 mod fuzz;
 mod fuzz_campaign;

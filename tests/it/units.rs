@@ -147,3 +147,28 @@ fn unknown_units_get_a_suggestion() {
     let err = units::evaluate([("mmm", 1)]).unwrap_err();
     assert!(matches!(err, units::UnitError::Unknown { suggestion: Some("mm"), .. }), "{err:?}");
 }
+
+/// °F and degF are absolute: K = (°F + 459.67) · 5/9 (212 °F = 373.15 K, 32 °F = 273.15 K,
+/// within 1e-12 K); °C equals degC.
+#[test]
+fn fahrenheit_and_the_degree_signs_are_absolute_temperatures() {
+    for name in ["degF", "°F"] {
+        let s = scale(name);
+        assert!((s.to_si(212.0) - 373.15).abs() < 1e-12 && (s.to_si(32.0) - 273.15).abs() < 1e-12, "{name}");
+        assert!(units::evaluate([(name, 1), ("s", 1)]).is_err(), "{name} in a compound");
+    }
+    assert_eq!(scale("°C").to_si(90.0), scale("degC").to_si(90.0));
+}
+
+/// The hint names the unit a common spelling stands for: `Nm` → `N*m` (not `N`), `C` → `degC`,
+/// `F` → `degF`, `Nmm` → `N*mm`.
+#[test]
+fn common_spellings_get_the_unit_they_mean() {
+    for (written, meant) in [("Nm", "N*m"), ("C", "degC"), ("F", "degF"), ("Nmm", "N*mm"), ("celsius", "degC")] {
+        let err = units::evaluate([(written, 1)]).unwrap_err();
+        assert!(
+            matches!(err, units::UnitError::Unknown { suggestion: Some(s), .. } if s == meant),
+            "{written}: {err:?}"
+        );
+    }
+}

@@ -1,0 +1,200 @@
+//! The headline: the answer first, in report.md and on the terminal after `run`. Per analysis:
+//! efficiency and the loss budget (input power, load-dependent and no-load losses, total and η per
+//! operating point, or the sweep's corners and ranges when it has many points), the efficiency
+//! map's ranges, and the dynamics (per formulation: stability verdict at the operating points,
+//! unstable speed ranges of the map, peak dynamic factor and where, DTE peak-to-peak).
+
+use std::fmt::Write;
+
+use super::table::{fixed, header, law_words, row, sig};
+use crate::losses::parts::COLUMNS;
+use crate::report::dynamics::{DynamicsReport, FormulationReport};
+use crate::report::friction::EfficiencyRecord;
+use crate::report::Report;
+
+/// Rows of the efficiency table before the headline shows the sweep's corners and ranges instead.
+pub const HEADLINE_ROWS: usize = 12;
+
+/// `239.3 N·m, 1500 rpm`: a record's operating point in the units the scene wrote.
+pub fn point_label(r: &Report, e: &EfficiencyRecord) -> String {
+    format!("{} N·m, {} {}", sig(e.pinion_torque.si()), sig(r.speed_unit.value(&e.pinion_speed)), r.speed_unit.name)
+}
+
+/// Efficiency and budget: a row per operating point and law (the first formulation), or when there
+/// are more than [`HEADLINE_ROWS`] the sweep's four corners per law and each law's range.
+pub fn efficiency(out: &mut String, r: &Report) {
+    let Some(first) = r.efficiency.first().map(|e| e.formulation) else { return };
+    let recs: Vec<&EfficiencyRecord> = r.efficiency.iter().filter(|e| e.formulation == first).collect();
+    let formulations = r.efficiency.iter().filter(|e| e.case == recs[0].case && e.label == recs[0].label).count();
+    let shown: Vec<&EfficiencyRecord> = if recs.len() <= HEADLINE_ROWS { recs.clone() } else { corners(&recs) };
+    let mut cols = vec!["operating point", "P_in kW", "law", "η̄ mesh %", "P mesh W"];
+    if r.loss_budget {
+        cols.extend(["P no-load W", "P load-dependent W", "P total W", "η total %"]);
+    }
+    let _ = writeln!(
+        out,
+        "Efficiency, {} formulation{}{}:\n",
+        first.name(),
+        if formulations > 1 { " (the others under Efficiency)" } else { "" },
+        if shown.len() < recs.len() { "; the sweep's corners, then each law's range" } else { "" }
+    );
+    header(out, &cols);
+    for e in &shown {
+        let mut cells = vec![
+            point_label(r, e),
+            fixed(e.pinion_torque.si() * e.pinion_speed.si() / 1e3, 3),
+            law_words(&e.label),
+            fixed(100.0 * e.mean_efficiency.0, 3),
+            fixed(e.power_loss.si(), 2),
+        ];
+        if let Some(b) = &e.budget {
+            let sum = |load: bool| -> f64 {
+                COLUMNS
+                    .iter()
+                    .filter(|c| c.load_dependent == load)
+                    .filter_map(|c| b.part(c.column))
+                    .map(|q| q.si())
+                    .sum()
+            };
+            cells.extend([
+                fixed(sum(false), 2),
+                fixed(e.power_loss.si() + sum(true), 2),
+                fixed(b.total_loss.si(), 2),
+                fixed(100.0 * b.total_efficiency.0, 3),
+            ]);
+        }
+        row(out, &cells);
+    }
+    let _ = writeln!(out);
+    if shown.len() < recs.len() {
+        ranges(out, r, &recs);
+    }
+}
+
+/// Per law, the records at the lowest and highest torque and speed of the sweep.
+fn corners<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a EfficiencyRecord> {
+    let (t0, t1) = (recs.iter().map(|e| e.torque_index).min(), recs.iter().map(|e| e.torque_index).max());
+    let (s0, s1) = (recs.iter().map(|e| e.speed_index).min(), recs.iter().map(|e| e.speed_index).max());
+    let mut out: Vec<&EfficiencyRecord> = Vec::new();
+    let mut labels: Vec<&str> = Vec::new();
+    for e in recs {
+        if !labels.contains(&e.label.as_str()) {
+            labels.push(&e.label);
+        }
+    }
+    for label in labels {
+        for (t, s) in [(t0, s0), (t0, s1), (t1, s0), (t1, s1)] {
+            let hit = recs.iter().find(|e| e.label == label && Some(e.torque_index) == t && Some(e.speed_index) == s);
+            if let Some(e) = hit.filter(|e| !out.iter().any(|o| std::ptr::eq(*o, **e))) {
+                out.push(e);
+            }
+        }
+    }
+    out
+}
+
+/// Per law over every record: the lowest and highest total (or mesh) efficiency with their points.
+fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
+    let eta = |e: &EfficiencyRecord| e.budget.as_ref().map_or(e.mean_efficiency.0, |b| b.total_efficiency.0);
+    let what = if r.loss_budget { "η total" } else { "η̄ mesh" };
+    let mut labels: Vec<&str> = Vec::new();
+    for e in recs {
+        if !labels.contains(&e.label.as_str()) {
+            labels.push(&e.label);
+        }
+    }
+    for label in labels {
+        let of: Vec<&&EfficiencyRecord> = recs.iter().filter(|e| e.label == label).collect();
+        let lo = of.iter().min_by(|a, b| eta(a).total_cmp(&eta(b)));
+        let hi = of.iter().max_by(|a, b| eta(a).total_cmp(&eta(b)));
+        if let (Some(lo), Some(hi)) = (lo, hi) {
+            let _ = writeln!(
+                out,
+                "- {}: {what} from {} % ({}) to {} % ({}) over {} operating points.",
+                law_words(label),
+                fixed(100.0 * eta(lo), 3),
+                point_label(r, lo),
+                fixed(100.0 * eta(hi), 3),
+                point_label(r, hi),
+                of.len()
+            );
+        }
+    }
+    let _ = writeln!(out);
+}
+
+/// Dynamics: per formulation the verdict at the operating points, the map's unstable ranges, the
+/// peak dynamic factor with its point and the DTE peak-to-peak range.
+pub fn dynamics(out: &mut String, d: &DynamicsReport) {
+    let Some(first) = d.points.first() else {
+        if let Some(map) = &d.stability_map {
+            map_ranges(out, d, map);
+        }
+        return;
+    };
+    let _ = writeln!(out, "Dynamics ({} model, {} operating point(s)):\n", d.model, d.points.len());
+    for (i, f) in first.formulations.iter().enumerate() {
+        fn nth(p: &crate::report::dynamics::DynamicsPointReport, i: usize) -> Option<&FormulationReport> {
+            p.formulations.get(i)
+        }
+        let at = |p| nth(p, i);
+        let rho = d.points.iter().filter_map(at).map(|x| x.spectral_radius.0).fold(0.0, f64::max);
+        let unstable: Vec<&str> = d
+            .points
+            .iter()
+            .filter(|p| at(p).is_some_and(|x| x.verdict == crate::dynamics::floquet::Verdict::Unstable))
+            .map(|p| p.label.as_str())
+            .collect();
+        let verdict = if unstable.is_empty() {
+            format!("stable at every operating point (largest ρ {})", fixed(rho, 4))
+        } else {
+            format!("**unstable** at {} (largest ρ {})", unstable.join("; "), fixed(rho, 4))
+        };
+        let kv = d
+            .points
+            .iter()
+            .filter_map(|p| at(p).and_then(|x| x.dynamic_factor).map(|k| (k.0, p.label.as_str())))
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        let dte: Vec<f64> =
+            d.points.iter().filter_map(|p| at(p).and_then(|x| x.dte_peak_to_peak)).map(|q| q.si() * 1e6).collect();
+        let mut line = format!("- {}: {verdict}", f.formulation.name());
+        if let Some((k, label)) = kv {
+            let _ = write!(line, "; peak K_v {} at {label}", fixed(k, 3));
+        }
+        if let (Some(lo), Some(hi)) = (dte.iter().copied().reduce(f64::min), dte.iter().copied().reduce(f64::max)) {
+            let _ = write!(line, "; DTE peak-to-peak {}–{} µm", fixed(lo, 3), fixed(hi, 3));
+        }
+        let _ = writeln!(out, "{line}.");
+    }
+    let _ = writeln!(out);
+    if let Some(map) = &d.stability_map {
+        map_ranges(out, d, map);
+    }
+}
+
+/// The stability map's located unstable speed ranges, per formulation.
+fn map_ranges(out: &mut String, _d: &DynamicsReport, map: &crate::report::dynamics::StabilityMapReport) {
+    let unit = &map.speed_unit;
+    let end = map.points.last().map(|p| p.pinion_speed.si());
+    for (f, ranges) in map.formulations.iter().zip(&map.unstable_ranges) {
+        let list: Vec<String> = ranges
+            .iter()
+            .map(|[a, b]| {
+                let open = if Some(b.si()) == end { " (to the map's end)" } else { "" };
+                format!("{:.0}–{:.0} {}{open}", unit.value(a), unit.value(b), unit.name)
+            })
+            .collect();
+        let _ = writeln!(
+            out,
+            "- Stability map, {} at {} N·m: {}.",
+            f.name(),
+            sig(map.pinion_torque.si()),
+            if list.is_empty() {
+                "stable over the whole map".to_string()
+            } else {
+                format!("unstable at {}", list.join(", "))
+            }
+        );
+    }
+    let _ = writeln!(out);
+}

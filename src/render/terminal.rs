@@ -1,0 +1,31 @@
+//! What `gearloss run` prints when it is done: the answer (the report's headline), how many
+//! warnings and notes the report has with the first warnings, and where the report is.
+
+use crate::report::{Report, Severity};
+
+/// Warnings printed in full; the rest are counted.
+pub const FIRST_WARNINGS: usize = 3;
+
+/// The terminal summary of one report (`label`: its oil temperature folder, or empty).
+pub fn run_summary(report: &Report, label: &str) -> String {
+    let mut out = String::new();
+    let at = if label.is_empty() { String::new() } else { format!(" ({label})") };
+    out.push_str(&format!("{}{at}\n\n", report.title));
+    out.push_str(&super::markdown_losses::headline_body(report));
+    let warnings: Vec<&str> =
+        report.findings.iter().filter(|f| f.severity == Severity::Warning).map(|f| f.message.as_str()).collect();
+    let notes = report.findings.len() - warnings.len();
+    out.push_str(&format!("{} warning(s), {notes} note(s)", warnings.len()));
+    if warnings.is_empty() {
+        out.push_str(".\n");
+        return out;
+    }
+    out.push_str(":\n");
+    for w in warnings.iter().take(FIRST_WARNINGS) {
+        out.push_str(&format!("  - {w}\n"));
+    }
+    if warnings.len() > FIRST_WARNINGS {
+        out.push_str(&format!("  … and {} more in report.md, \"Findings\".\n", warnings.len() - FIRST_WARNINGS));
+    }
+    out
+}

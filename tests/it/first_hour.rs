@@ -1,0 +1,117 @@
+//! What a new user meets first: the list commands, `new`, what `check` says would run and which
+//! blocks nothing reads, and what `run` prints when it is done.
+
+use std::process::Command;
+
+fn gearloss() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_gearloss"))
+}
+
+fn stdout(args: &[&str]) -> String {
+    let o = gearloss().args(args).current_dir(crate::root()).output().unwrap();
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8(o.stdout).unwrap()
+}
+
+/// `gearloss laws`, `oils` and `bearings` list what the language accepts, from the catalogues the
+/// lowering checks names against (every law, base oil and bearing type appears).
+#[test]
+fn list_commands() {
+    let laws = stdout(&["laws"]);
+    for l in gearloss::friction::catalog::LAWS {
+        assert!(laws.contains(&format!("\n{}  —", l.id.name())), "{} missing", l.id.name());
+    }
+    insta::assert_snapshot!("laws", laws);
+    let oils = stdout(&["oils"]);
+    for b in gearloss::tribology::lubricant::BaseOil::NAMES {
+        assert!(oils.contains(&format!("\n{b} ")), "{b} missing");
+    }
+    insta::assert_snapshot!("oils", oils);
+    let bearings = stdout(&["bearings"]);
+    for b in gearloss::losses::BearingType::NAMES {
+        assert!(bearings.contains(&format!("\n{b} ")), "{b} missing");
+    }
+    insta::assert_snapshot!("bearings", bearings);
+}
+
+/// `gearloss new` writes a template that checks and runs, and never overwrites a file (exit 3).
+#[test]
+fn new_writes_a_template_that_runs() {
+    let dir = std::env::temp_dir().join(format!("gearloss-new-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("scene.gear");
+    let o = gearloss().arg("new").arg(&file).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let scene = gearloss::check("scene.gear", &std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert!(scene.analyses.efficiency.is_some() && scene.gearbox.is_some());
+    assert!(gearloss::scene::summary::unused_blocks(&scene).is_empty());
+    let again = gearloss().arg("new").arg(&file).output().unwrap();
+    assert_eq!(again.status.code(), Some(3));
+    assert!(String::from_utf8_lossy(&again.stderr).contains("never overwrites"));
+    let run = gearloss().arg("run").arg(&file).arg("--out").arg(dir.join("out")).output().unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `check` says what `run` would compute, and warns about a `dynamics` block no analysis reads
+/// (the report says it too).
+#[test]
+fn check_says_what_would_run_and_what_is_unused() {
+    let text = std::fs::read_to_string(crate::root().join("tests/specs/ok/dynamics_iso6336.gear")).unwrap();
+    let unused =
+        text.replace("analyses { dynamics }", "analyses { friction_along_loa }\n    friction { coulomb(mu = 0.05) }");
+    let dir = std::env::temp_dir().join(format!("gearloss-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("unused.gear");
+    std::fs::write(&file, &unused).unwrap();
+    let out = stdout(&["check", file.to_str().unwrap()]);
+    let out = out.replace(file.to_str().unwrap(), "unused.gear");
+    insta::assert_snapshot!("check_unused_dynamics", out);
+    assert!(out.contains("warning: the `dynamics` block is not used"), "{out}");
+    let report = gearloss::report_of(&gearloss::check("unused.gear", &unused).unwrap());
+    assert!(report.findings.iter().any(|f| f.message.starts_with("the `dynamics` block is not used")));
+    let used = stdout(&["check", "tests/specs/ok/dynamics_iso6336.gear"]);
+    assert!(!used.contains("warning:") && used.contains("dynamics: sdof model, 3 formulation(s)"), "{used}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `run` prints the answer: the headline (efficiency and budget per operating point, the dynamics
+/// verdicts), the count of warnings with the first ones, and the folder.
+#[test]
+fn run_prints_the_headline_and_the_warnings() {
+    let out = std::env::temp_dir().join(format!("gearloss-headline-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let o = gearloss()
+        .args(["run", "specs/fzg_bearings.gear", "--out"])
+        .arg(&out)
+        .current_dir(crate::root())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8(o.stdout).unwrap().replace(out.to_str().unwrap(), "OUT");
+    insta::assert_snapshot!("run_fzg_bearings", text);
+    assert!(text.contains("stable at every operating point") && text.contains("wrote OUT/"), "{text}");
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// An efficiency one rounding step above 1 is rounding, not a finding; 1e-12 above 1 is one
+/// (tolerance: 4 ulps of 1, 8.9e-16).
+#[test]
+fn efficiency_within_ulps_of_one_is_no_finding() {
+    use gearloss::efficiency::EfficiencyResult;
+    use gearloss::evaluate::stream::implausible_efficiency;
+    use gearloss::numerics::quadrature::Integral;
+    let e = |max: f64| EfficiencyResult {
+        formulation: gearloss::model::Formulation::Internal,
+        mean: Integral { value: 0.99, error: 1e-12, evaluations: 1 },
+        power_loss: 1.0,
+        min: 0.98,
+        max,
+    };
+    assert!(implausible_efficiency("xu", &e(1.0 + f64::EPSILON), 100.0).is_empty());
+    assert!(implausible_efficiency("xu", &e(1.0), 100.0).is_empty());
+    assert_eq!(implausible_efficiency("xu", &e(1.0 + 1e-12), 100.0).len(), 1);
+    let us = gearloss::report_of(&crate::scene(&crate::root().join("specs/us_spur_inch.gear")));
+    assert!(!us.findings.iter().any(|f| f.message.contains("efficiency outside")), "{:?}", us.findings);
+}
