@@ -11,7 +11,7 @@ use super::laws::{evaluate_law, LawEvaluation};
 use super::plan::Plan;
 use super::records::{RecordSink, RowKind, SummaryRow};
 use super::setup::{contact_table, Setup};
-use super::tally::{Implausible, ImplausibleAt, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
+use super::tally::{Implausible, ImplausibleAt, LawNote, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
 use super::thermal::{thermal_point, Losses, ThermalRow};
 use crate::efficiency::EfficiencyResult;
 use crate::geometry::{ContactPoint, OperatingState};
@@ -248,7 +248,7 @@ fn efficiency_row(law_row: &SummaryRow, e: &EfficiencyResult) -> SummaryRow {
 fn law_tally(k: usize, law: &LawEvaluation) -> LawTally {
     LawTally {
         points: 1,
-        notes: law.notes.clone(),
+        notes: law.notes.iter().map(|t| LawNote { text: t.clone(), points: vec![k], count: 1 }).collect(),
         diverges_at_pitch: law.diverges_at_pitch,
         capped_points: usize::from(law.internal_cap_band.is_some()),
         widest_cap: law.internal_cap_band.map(|(a, b)| (k, a, b)),

@@ -44,12 +44,24 @@ pub struct WorstValidity {
     pub intervals: Vec<(f64, f64, String)>,
 }
 
+/// Operating points listed with a note before only their count is given.
+pub const NOTE_POINTS: usize = 8;
+
+/// A law's note and the operating points (0-based) it was made at: the first [`NOTE_POINTS`] of
+/// them, and how many in all.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LawNote {
+    pub text: String,
+    pub points: Vec<usize>,
+    pub count: usize,
+}
+
 /// One law over the points.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct LawTally {
     pub points: usize,
-    /// Distinct notes in order of appearance, at most [`KEPT_NOTES`].
-    pub notes: Vec<String>,
+    /// Distinct notes in order of appearance, at most [`KEPT_NOTES`], each with its points.
+    pub notes: Vec<LawNote>,
     pub diverges_at_pitch: bool,
     /// Points where the internal formulation caps |μ|, and the widest band (point, from, to).
     pub capped_points: usize,
@@ -63,7 +75,11 @@ impl LawTally {
     fn absorb(&mut self, o: LawTally) {
         self.points += o.points;
         for n in o.notes {
-            if self.notes.len() < KEPT_NOTES && !self.notes.contains(&n) {
+            if let Some(m) = self.notes.iter_mut().find(|m| m.text == n.text) {
+                m.count += n.count;
+                let room = NOTE_POINTS.saturating_sub(m.points.len());
+                m.points.extend(n.points.into_iter().take(room));
+            } else if self.notes.len() < KEPT_NOTES {
                 self.notes.push(n);
             }
         }

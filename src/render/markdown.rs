@@ -3,7 +3,7 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row, scaled, sig};
-use crate::report::{Report, Severity};
+use crate::report::{PlotKind, Report, Severity};
 
 pub fn render_markdown(r: &Report) -> String {
     let mut out = String::new();
@@ -37,6 +37,7 @@ pub fn render_markdown(r: &Report) -> String {
     super::markdown_dynamics::dynamics(&mut out, r);
     super::markdown_sweep::sweep_summary(&mut out, r);
 
+    unlinked_plots(&mut out, r);
     let _ = writeln!(out, "## Findings\n");
     for f in &r.findings {
         let tag = match f.severity {
@@ -52,7 +53,7 @@ pub fn render_markdown(r: &Report) -> String {
 /// characteristic points and the friction there.
 fn contact_section(out: &mut String, r: &Report) {
     let _ = writeln!(out, "\n## Contact along the line of action\n");
-    for p in r.plots.iter().filter(|p| p.kind == crate::report::PlotKind::ContactState) {
+    for p in r.plots.iter().filter(|p| matches!(p.kind, PlotKind::ContactState | PlotKind::Film)) {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
     }
     let _ = writeln!(
@@ -104,5 +105,18 @@ fn contact_section(out: &mut String, r: &Report) {
         }
         let _ = writeln!(out);
         super::markdown_friction::point(out, op, r.geometry.helical.is_some());
+    }
+}
+
+/// Every plot of the report that no section above links, so that report.md links every plot the
+/// folder holds.
+fn unlinked_plots(out: &mut String, r: &Report) {
+    let missing: Vec<_> = r.plots.iter().filter(|p| !out.contains(&format!("]({})", p.file))).collect();
+    if missing.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "## More plots\n");
+    for p in missing {
+        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
     }
 }

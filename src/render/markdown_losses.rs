@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use super::table::{fixed, header, law_words, row};
 use crate::losses::parts::COLUMNS;
-use crate::report::{Report, Severity};
+use crate::report::{PlotKind, Report, Severity};
 
 use super::headline::point_label;
 
@@ -154,6 +154,7 @@ pub fn budget_section(r: &Report) -> String {
         ]);
         row(&mut out, &cells);
     }
+    plots_of(&mut out, r, PlotKind::LossBudget);
     out
 }
 
@@ -183,5 +184,13 @@ pub fn map_section(r: &Report) -> String {
             ],
         );
     }
+    plots_of(&mut out, r, PlotKind::EfficiencyMap);
     out
+}
+
+/// Links to the report's plots of `kind`.
+pub fn plots_of(out: &mut String, r: &Report, kind: PlotKind) {
+    for p in r.plots.iter().filter(|p| p.kind == kind) {
+        let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
+    }
 }

@@ -3,6 +3,9 @@
 
 use std::fmt::Write;
 
+use super::markdown_losses::plots_of;
+use crate::report::PlotKind;
+
 use super::table::{fixed, header, row};
 use crate::report::number::Q;
 use crate::report::Report;
@@ -42,8 +45,11 @@ pub fn thermal_section(r: &Report) -> String {
         row(&mut out, &[name.to_string(), value]);
     }
     balance_table(&mut out, r);
+    plots_of(&mut out, r, PlotKind::HeatBalance);
     if let Some(d) = &r.duty_cycle {
         duty_cycle_lines(&mut out, d);
+        plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
+        plots_of(&mut out, r, PlotKind::DutyCycleEnergy);
     }
     out.push('\n');
     out

@@ -11,6 +11,7 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let note = |m: String| Finding { severity: Severity::Note, message: m };
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     out.extend(crate::scene::summary::unused_blocks(scene).into_iter().map(warn));
+    out.extend(oil_temperature_finding(scene).map(warn));
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),
@@ -93,4 +94,19 @@ fn helical_findings(g: &crate::geometry::PairGeometry) -> Vec<Finding> {
         });
     }
     out
+}
+
+/// A warning when the oil temperature is above its base oil's typical service limit
+/// ([`crate::tribology::lubricant::service_limit_celsius`]).
+fn oil_temperature_finding(scene: &Scene) -> Option<String> {
+    let l = scene.lubricant.as_ref()?;
+    let base = l.oil.as_ref()?.base;
+    let theta = scene.operating.oil_temperature.as_ref()?.value.value - 273.15;
+    let limit = crate::tribology::lubricant::service_limit_celsius(base)?;
+    (theta > limit).then(|| {
+        format!(
+            "oil temperature {theta:.0} °C is above the {limit:.0} °C a {} gear oil is typically run at continuously: it ages fast there (its life roughly halves for every 10 K above); check the oil's data sheet or the cooling",
+            base.words()
+        )
+    })
 }

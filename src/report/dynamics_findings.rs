@@ -9,6 +9,8 @@ use crate::dynamics::floquet::Verdict;
 pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
     let mut out = Vec::new();
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    // (point label, formulation, K_v, f_n/f_mesh) where K_v is the stiffness step: one note for all.
+    let mut step: Vec<(String, String, f64, f64)> = Vec::new();
     for p in &r.points {
         for f in &p.formulations {
             let name = f.formulation.name().to_string();
@@ -38,13 +40,7 @@ pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
             let step_kv = r.stiffness_step_ratio.filter(|_| p.frequency_ratio.0 > 10.0);
             if let (Some(ratio), Some(kv)) = (step_kv, &f.dynamic_factor) {
                 if (kv.0 - ratio).abs() < 0.05 * ratio {
-                    out.push(Finding {
-                        severity: Severity::Note,
-                        message: format!(
-                            "dynamics at {} ({name}): K_v = {:.4} ≈ k_double/k_single = {:.4} comes from the stiffness step, not from dynamics: x is continuous where a pair enters, so F = k_double x jumps there (f_n/f_mesh = {:.1}, quasi-static). A stiffness table with ramps (`mesh_stiffness {{ table = [...] }}` or a CSV file) gives the dynamic factor of a real mesh",
-                            p.label, kv.0, ratio, p.frequency_ratio.0
-                        ),
-                    });
+                    step.push((p.label.clone(), name.clone(), kv.0, p.frequency_ratio.0));
                 }
             }
             let rel = ((f.monodromy_determinant.0 - f.liouville_determinant.0) / f.liouville_determinant.0).abs();
@@ -55,6 +51,27 @@ pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
                 )));
             }
         }
+    }
+    if let (Some(ratio), false) = (r.stiffness_step_ratio, step.is_empty()) {
+        let mut at: Vec<String> = Vec::new();
+        for (label, name, kv, _) in &step {
+            let entry = format!("{name} {kv:.4}");
+            match at.iter_mut().find(|a| a.starts_with(&format!("{label} ("))) {
+                Some(a) => {
+                    a.pop();
+                    a.push_str(&format!(", {entry})"));
+                }
+                None => at.push(format!("{label} ({entry})")),
+            }
+        }
+        let lowest = step.iter().map(|s| s.3).fold(f64::INFINITY, f64::min);
+        out.push(Finding {
+            severity: Severity::Note,
+            message: format!(
+                "dynamics: K_v ≈ k_double/k_single = {ratio:.4} at {}: it comes from the stiffness step, not from dynamics: x is continuous where a pair enters, so F = k_double x jumps there (f_n/f_mesh ≥ {lowest:.1}, quasi-static). A stiffness table with ramps (`mesh_stiffness {{ table = [...] }}` or a CSV file) gives the dynamic factor of a real mesh",
+                at.join("; ")
+            ),
+        });
     }
     if let Some(map) = &r.stability_map {
         for (i, ranges) in map.unstable_ranges.iter().enumerate() {

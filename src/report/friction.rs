@@ -321,6 +321,21 @@ fn ohlendorf_loss(helical: bool, r: &crate::evaluate::records::SummaryRow, h_v: 
     helical.then(|| OhlendorfLoss { power_loss: Q::new(p, "W"), line_integral_ratio: Num(line_integral / p) })
 }
 
+/// A law's note, with the operating points (1-based) it holds at unless it holds at all of them.
+fn note_at_points(note: &crate::evaluate::tally::LawNote, points: usize) -> String {
+    if note.count >= points {
+        return note.text.clone();
+    }
+    let listed: Vec<String> = note.points.iter().map(|p| (p + 1).to_string()).collect();
+    let more = if note.count > note.points.len() {
+        format!(" and {} more", note.count - note.points.len())
+    } else {
+        String::new()
+    };
+    let s = if note.count == 1 { "" } else { "s" };
+    format!("{} (at operating point{s} {}{more})", note.text, listed.join(", "))
+}
+
 /// Findings about the laws: their notes, validity, divergence handling, over every point of the run.
 pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Finding> {
     let mut out: Vec<Finding> = Vec::new();
@@ -330,20 +345,18 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Find
         }
     };
     if !eval.wants_friction {
-        if !scene.friction.is_empty() {
-            push(&mut out, Severity::Note, "friction laws are listed but no analysis asks for them (add `friction_along_loa` or `efficiency` to `analyses`)".into());
-        }
+        // Laws no analysis reads are a scene check's warning (`crate::scene::summary::unused_blocks`).
         return out;
     }
     for (spec, law) in scene.friction.iter().zip(&tally.laws) {
         let label = law_label(spec);
         for note in &law.notes {
-            let severity = if note.contains("LOW CONFIDENCE") || note.contains("underestimated") {
+            let severity = if note.text.contains("LOW CONFIDENCE") || note.text.contains("underestimated") {
                 Severity::Warning
             } else {
                 Severity::Note
             };
-            push(&mut out, severity, note.clone());
+            push(&mut out, severity, note_at_points(note, law.points));
         }
         if law.diverges_at_pitch {
             push(&mut out, Severity::Note, format!(

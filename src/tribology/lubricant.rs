@@ -155,6 +155,18 @@ pub const BASE_OILS: &[BaseOilData] = &[
     },
 ];
 
+/// The oil temperature (°C) above which a base oil ages fast in service: a typical upper limit for
+/// continuous operation of gear oils (mineral 100 °C; PAO, PAG and synthetic esters 130 °C; the
+/// fluids not in the catalogue none). Oxidation roughly doubles per 10 K (Arrhenius' rule), so the
+/// oil's life halves for every 10 K above it.
+pub fn service_limit_celsius(base: BaseOil) -> Option<f64> {
+    match base {
+        BaseOil::Mineral => Some(100.0),
+        BaseOil::Pao | BaseOil::PagInsoluble | BaseOil::PagSoluble | BaseOil::Ester => Some(130.0),
+        BaseOil::Traction | BaseOil::PhosphateEster => None,
+    }
+}
+
 /// The catalogue's data of a base oil (traction fluids and phosphate esters are not in it).
 pub fn base_oil(base: BaseOil) -> Option<&'static BaseOilData> {
     BASE_OILS.iter().find(|b| b.base == base)

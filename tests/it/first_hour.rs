@@ -115,3 +115,23 @@ fn efficiency_within_ulps_of_one_is_no_finding() {
     let us = gearloss::report_of(&crate::scene(&crate::root().join("specs/us_spur_inch.gear")));
     assert!(!us.findings.iter().any(|f| f.message.contains("efficiency outside")), "{:?}", us.findings);
 }
+
+/// Findings a reader can act on: one K_v-from-the-stiffness-step note for all the points it holds
+/// at; a law note that holds at some points names them; an oil above its base oil's service
+/// temperature is a warning (190 °C mineral), at 90 °C none.
+#[test]
+fn findings_are_grouped_and_name_their_points() {
+    let dynamics = gearloss::report_of(&crate::scene(&crate::root().join("specs/fzg_dynamics.gear")));
+    let kv: Vec<&str> = dynamics.findings.iter().map(|f| f.message.as_str()).filter(|m| m.contains("K_v ≈")).collect();
+    assert_eq!(kv.len(), 1, "{kv:?}");
+    assert!(kv[0].contains("239.3 N*m, 100 rpm (base 2.0000, external"), "{}", kv[0]);
+    let composite = gearloss::report_of(&crate::scene(&crate::root().join("specs/composite_speed_sweep.gear")));
+    let magnitudes: Vec<&str> =
+        composite.findings.iter().map(|f| f.message.as_str()).filter(|m| m.contains("Model IV magnitude")).collect();
+    assert!(!magnitudes.is_empty() && magnitudes.iter().all(|m| m.contains("(at operating point")), "{magnitudes:?}");
+    let text = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
+    let hot = gearloss::report_of(&gearloss::check("hot.gear", &text.replace("90 degC", "190 degC")).unwrap());
+    assert!(hot.findings.iter().any(|f| f.message.starts_with("oil temperature 190 °C is above the 100 °C")));
+    let warm = gearloss::report_of(&gearloss::check("warm.gear", &text).unwrap());
+    assert!(!warm.findings.iter().any(|f| f.message.starts_with("oil temperature")));
+}

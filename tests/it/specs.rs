@@ -22,6 +22,13 @@ fn file<'a>(r: &'a gearloss::RenderedReport, name: &str) -> &'a str {
 fn example_scenes_render() {
     insta::glob!("../../specs", "*.gear", |path| {
         let r = render(path);
+        // report.md links every plot the folder holds (each report.md its own folder's).
+        for (name, _) in r.files.iter().filter(|(n, _)| n.ends_with(".svg")) {
+            let (dir, svg) = name.rsplit_once('/').map_or(("", name.as_str()), |(d, f)| (d, f));
+            let md = if dir.is_empty() { "report.md".to_string() } else { format!("{dir}/report.md") };
+            let text = &r.files.iter().find(|(n, _)| *n == md).expect("a report.md beside the plot").1;
+            assert!(text.contains(&format!("]({svg})")), "{md} does not link {svg}");
+        }
         insta::assert_snapshot!("md", file(&r, "report.md"));
         insta::assert_snapshot!("json", file(&r, "report.json"));
         if let Some((_, csv)) = r.files.iter().find(|(n, _)| n == "records.csv") {
