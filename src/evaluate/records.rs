@@ -114,14 +114,17 @@ impl SummaryRow {
     }
 }
 
-/// The columns of `records.csv`, in order.
-pub const CSV_COLUMNS: [&str; 21] = [
+/// The columns of `records.csv`, in order: the keys records.jsonl writes (a row leaves out there
+/// what it has not, and the CSV leaves that cell empty); `parameters` is one cell
+/// `name=value unit; …`.
+pub const CSV_COLUMNS: [&str; 23] = [
     "point",
     "torque_index",
     "speed_index",
     "pinion_torque_N_m",
     "pinion_speed_rad_s",
     "kind",
+    "law_index",
     "law",
     "label",
     "formulation",
@@ -137,6 +140,7 @@ pub const CSV_COLUMNS: [&str; 21] = [
     "dte_peak_to_peak_m",
     "dte_mean_m",
     "dynamic_factor",
+    "parameters",
 ];
 
 /// The header line of `records.csv`: [`CSV_COLUMNS`], then the scene's budget columns
@@ -201,11 +205,21 @@ pub fn csv_line(row: &SummaryRow, budget_columns: usize) -> String {
         number(n[0].1),
         number(n[1].1),
         kind.to_string(),
+        row.law_index.map_or(String::new(), |i| i.to_string()),
         text(&row.law),
         text(&row.label),
         text(&row.formulation),
     ];
     cells.extend(n[2..].iter().map(|(_, v)| number(*v)));
+    let parameters: Vec<String> = row
+        .parameters
+        .iter()
+        .map(|p| {
+            let unit = if p.unit == "1" { "" } else { p.unit.as_str() };
+            format!("{}={} {unit}", p.name, number(Some(p.value))).trim_end().to_string()
+        })
+        .collect();
+    cells.push(text(&parameters.join("; ")));
     let before = cells.len();
     if let Some(b) = &row.budget {
         cells.extend(crate::losses::columns::values(b).map(number));

@@ -11,3 +11,28 @@ pub fn round_sig(x: f64) -> f64 {
     }
     format!("{:.*e}", SIGNIFICANT_DIGITS - 1, x).parse().unwrap_or(x)
 }
+
+/// Six significant digits, for the inputs table (as written and SI columns).
+pub fn sig(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{x:.5e}");
+    let v: f64 = s.parse().unwrap_or(x);
+    if (1e-3..1e6).contains(&v.abs()) {
+        let decimals = (5 - v.abs().log10().floor() as i32).max(0) as usize;
+        let t = format!("{v:.decimals$}");
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    } else {
+        match s.split_once('e') {
+            Some((mantissa, exp)) if mantissa.contains('.') => {
+                format!("{}e{exp}", mantissa.trim_end_matches('0').trim_end_matches('.'))
+            }
+            _ => s,
+        }
+    }
+}

@@ -32,29 +32,6 @@ pub fn header(out: &mut String, cells: &[&str]) {
     let _ = writeln!(out, "|{}|", cells.iter().map(|_| "---").collect::<Vec<_>>().join("|"));
 }
 
-/// Six significant digits, for the SI column of the inputs.
-pub fn sig(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    let s = format!("{x:.5e}");
-    let v: f64 = s.parse().unwrap_or(x);
-    if (1e-3..1e6).contains(&v.abs()) {
-        let decimals = (5 - v.abs().log10().floor() as i32).max(0) as usize;
-        let t = format!("{v:.decimals$}");
-        if t.contains('.') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        }
-    } else {
-        match s.split_once('e') {
-            Some((mantissa, exp)) if mantissa.contains('.') => {
-                format!("{}e{exp}", mantissa.trim_end_matches('0').trim_end_matches('.'))
-            }
-            _ => s,
-        }
-    }
-}
+pub use crate::numerics::rounding::sig;
 
 pub use crate::report::law_words::law_words;

@@ -125,5 +125,11 @@ pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
             input(&mut rows, "lubricant.temperature", t, "K");
         }
     }
+    if let Some(g) = &scene.gearbox {
+        super::gearbox_inputs::gearbox_inputs(&mut rows, g);
+    }
+    if let Some(h) = &scene.housing {
+        super::gearbox_inputs::housing_inputs(&mut rows, h);
+    }
     rows
 }

@@ -135,3 +135,56 @@ fn findings_are_grouped_and_name_their_points() {
     let warm = gearloss::report_of(&gearloss::check("warm.gear", &text).unwrap());
     assert!(!warm.findings.iter().any(|f| f.message.starts_with("oil temperature")));
 }
+
+/// records.csv and records.jsonl carry the same columns: every key a JSON line writes is a CSV
+/// column, and every CSV column that holds a value in some row is a key of the JSON lines (the CSV
+/// keeps its fixed columns, empty where the scene has no such rows). The gearbox's inputs are
+/// echoed in the report (md and json).
+#[test]
+fn records_agree_and_the_gearbox_is_echoed() {
+    for spec in ["specs/fzg_c14_gearbox.gear", "specs/fzg_bearings.gear", "specs/fzg_c14_thermal.gear"] {
+        let text = std::fs::read_to_string(crate::root().join(spec)).unwrap();
+        let r = gearloss::run_to_files(spec, &text).unwrap();
+        let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap().1;
+        let csv = file("records.csv");
+        let names: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+        let filled: std::collections::BTreeSet<&str> = csv
+            .lines()
+            .skip(1)
+            .flat_map(|l| {
+                // No quoted commas in these scenes' rows except the parameters cell, which is last
+                // before the budget: split on commas outside quotes.
+                let mut cells = Vec::new();
+                let (mut quoted, mut start) = (false, 0);
+                for (i, c) in l.char_indices() {
+                    match c {
+                        '"' => quoted = !quoted,
+                        ',' if !quoted => {
+                            cells.push(&l[start..i]);
+                            start = i + 1;
+                        }
+                        _ => {}
+                    }
+                }
+                cells.push(&l[start..]);
+                cells.into_iter().zip(names.iter().copied()).filter(|(c, _)| !c.is_empty()).map(|(_, n)| n)
+            })
+            .collect();
+        let header: std::collections::BTreeSet<&str> = names.iter().copied().collect();
+        let mut keys = std::collections::BTreeSet::new();
+        for line in file("records.jsonl").lines() {
+            let v: serde_json::Value = serde_json::from_str(line).unwrap();
+            keys.extend(v.as_object().unwrap().keys().cloned());
+        }
+        let keys: std::collections::BTreeSet<&str> = keys.iter().map(String::as_str).collect();
+        assert!(keys.is_subset(&header), "{spec}: {:?} not in the CSV", keys.difference(&header));
+        assert_eq!(filled, keys, "{spec}");
+    }
+    let text = std::fs::read_to_string(crate::root().join("specs/fzg_c14_thermal.gear")).unwrap();
+    let report = gearloss::report_of(&gearloss::check("t.gear", &text).unwrap());
+    for key in ["gearbox.lubrication (dip).wheel_immersion", "pinion_shaft.seal 1.diameter", "gearbox.housing.area"] {
+        assert!(report.inputs.iter().any(|i| i.key == key), "{key} not echoed");
+    }
+    let immersion = report.inputs.iter().find(|i| i.key.ends_with("wheel_immersion")).unwrap();
+    assert_eq!((immersion.written.as_str(), immersion.si.si()), ("59.2 mm", 0.0592));
+}
