@@ -43,7 +43,7 @@
 //!  numerics/ quantity diagnostics quadrature and roots; physical dimensions; spans and diagnostics
 //! ```
 //!
-//! Where a new model goes (README, "Where a new model goes"): a friction law is one file in
+//! Where a new model goes (ARCHITECTURE.md, "Where a new model goes"): a friction law is one file in
 //! `friction/` and one row of [`friction::catalog::LAWS`]; a mesh stiffness model one file in
 //! `geometry/stiffness/` and one row of [`geometry::stiffness::MODELS`]; a dynamic model one file in
 //! `dynamics/models/` (a [`dynamics::models::GearDynamics`], usually over a

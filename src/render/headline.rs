@@ -162,7 +162,11 @@ pub fn dynamics(out: &mut String, d: &DynamicsReport) {
             let _ = write!(line, "; peak K_v {} at {label}", fixed(k, 3));
         }
         if let (Some(lo), Some(hi)) = (dte.iter().copied().reduce(f64::min), dte.iter().copied().reduce(f64::max)) {
-            let _ = write!(line, "; DTE peak-to-peak {}–{} µm", fixed(lo, 3), fixed(hi, 3));
+            if fixed(lo, 3) == fixed(hi, 3) {
+                let _ = write!(line, "; DTE peak-to-peak {} µm", fixed(lo, 3));
+            } else {
+                let _ = write!(line, "; DTE peak-to-peak {}–{} µm", fixed(lo, 3), fixed(hi, 3));
+            }
         }
         let _ = writeln!(out, "{line}.");
     }
@@ -197,4 +201,49 @@ fn map_ranges(out: &mut String, _d: &DynamicsReport, map: &crate::report::dynami
         );
     }
     let _ = writeln!(out);
+}
+
+/// The thermal balance: per law and formulation, the range of θ* over the operating points and
+/// those that settle above the oil's limit or find no balance.
+pub fn thermal(out: &mut String, r: &Report) {
+    let mut keys: Vec<(&str, &str)> = Vec::new();
+    for t in &r.thermal {
+        let k = (t.label.as_str(), t.formulation.name());
+        if !keys.contains(&k) {
+            keys.push(k);
+        }
+    }
+    for (label, formulation) in keys {
+        let of: Vec<_> = r.thermal.iter().filter(|t| t.label == label && t.formulation.name() == formulation).collect();
+        let theta: Vec<f64> = of.iter().filter_map(|t| t.oil_temperature.map(|q| q.si() - 273.15)).collect();
+        let (lo, hi) = (theta.iter().copied().reduce(f64::min), theta.iter().copied().reduce(f64::max));
+        let range = match (lo, hi) {
+            (Some(lo), Some(hi)) => format!("θ* {}–{} °C", fixed(lo, 1), fixed(hi, 1)),
+            _ => "no balance".to_string(),
+        };
+        let bad: Vec<String> = of
+            .iter()
+            .filter(|t| t.status != crate::thermal::BalanceStatus::Ok)
+            .map(|t| {
+                format!(
+                    "{} N·m, {} {}: {}",
+                    sig(t.pinion_torque.si()),
+                    sig(r.speed_unit.value(&t.pinion_speed)),
+                    r.speed_unit.name,
+                    t.status.words()
+                )
+            })
+            .collect();
+        let verdict =
+            if bad.is_empty() { "every point settles below the oil's limit".to_string() } else { bad.join("; ") };
+        let _ = writeln!(
+            out,
+            "- Thermal balance, {} ({formulation}): {range} over {} operating point(s); {verdict}.",
+            law_words(label),
+            of.len()
+        );
+    }
+    if !r.thermal.is_empty() {
+        let _ = writeln!(out);
+    }
 }

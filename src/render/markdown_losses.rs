@@ -64,6 +64,7 @@ pub fn headline_body(r: &Report) -> String {
     if !r.loss_budget && !r.efficiency.is_empty() {
         let _ = writeln!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
     }
+    super::headline::thermal(&mut out, r);
     if let Some(d) = &r.dynamics {
         super::headline::dynamics(&mut out, d);
     }

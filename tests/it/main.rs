@@ -17,6 +17,7 @@ mod helical_physics;
 mod losses;
 mod oil_sweep;
 mod properties;
+mod readme;
 mod six_dof;
 mod specs;
 mod stiffness;
