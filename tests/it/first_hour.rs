@@ -188,3 +188,23 @@ fn records_agree_and_the_gearbox_is_echoed() {
     let immersion = report.inputs.iter().find(|i| i.key.ends_with("wheel_immersion")).unwrap();
     assert_eq!((immersion.written.as_str(), immersion.si.si()), ("59.2 mm", 0.0592));
 }
+
+/// Plots that read: a sweep panel of more than eight curves labels its laws once each and colours
+/// the curves by the other swept value with a colour bar (no per-curve legend entries); a panel of
+/// eight or fewer keeps one entry per curve; legends are wide enough for their labels.
+#[test]
+fn many_curves_get_a_colour_scale() {
+    let text = std::fs::read_to_string(crate::root().join("tests/specs/ok/large_sweep.gear")).unwrap();
+    let r = gearloss::run_to_files("large_sweep.gear", &text).unwrap();
+    let svg = &r.files.iter().find(|(f, _)| f == "sweep_speed.svg").unwrap().1;
+    assert!(svg.contains("pinion torque (N·m)"), "colour bar label missing");
+    assert!(!svg.contains("external @ 20.0 N·m"), "per-curve legend entries where a colour scale belongs");
+    assert!(svg.contains("Benedict–Kelley (He–Cho–Singh eq 14) external"));
+    let few = gearloss::run_to_files(
+        "fzg_type_c.gear",
+        &std::fs::read_to_string(crate::root().join("specs/fzg_type_c.gear")).unwrap(),
+    )
+    .unwrap();
+    let svg = &few.files.iter().find(|(f, _)| f == "sweep_speed.svg").unwrap().1;
+    assert!(svg.contains("Coulomb μ = 0.04 external @ 239.3 N·m"), "eight curves keep their labels");
+}

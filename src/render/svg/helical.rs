@@ -6,12 +6,13 @@
 
 use plotters::prelude::*;
 
-use super::panel::{draw_panel, plottable, Panel, PALETTE};
+use super::panel::{draw_legend, draw_panel, plottable, Panel, PALETTE};
 use crate::report::helical::HelicalReport;
 use crate::report::Report;
 
 fn plane(
     area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+    legend: &DrawingArea<SVGBackend, plotters::coord::Shift>,
     h: &HelicalReport,
     mu: Option<(&str, &[f64], &[f64])>,
 ) -> Result<(), String> {
@@ -65,24 +66,20 @@ fn plane(
             .draw_series(std::iter::once(Text::new(name, (x, half * 1.05), ("sans-serif", 13).into_font())))
             .map_err(e)?;
     }
-    for (i, (tau, lines)) in h.lines_at.iter().enumerate() {
+    for (i, (_, lines)) in h.lines_at.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
-        for (k, l) in lines.iter().enumerate() {
+        for l in lines {
             let pts = vec![(l[0].0 * 1e3, l[0].1 * 1e3), (l[1].0 * 1e3, l[1].1 * 1e3)];
-            let s = chart.draw_series(LineSeries::new(pts, colour.stroke_width(3))).map_err(e)?;
-            if k == 0 {
-                s.label(format!("τ = {tau}"))
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], colour.stroke_width(3)));
-            }
+            chart.draw_series(LineSeries::new(pts, colour.stroke_width(3))).map_err(e)?;
         }
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.3))
-        .position(SeriesLabelPosition::LowerRight)
-        .draw()
-        .map_err(e)?;
+    // The legend stands beside the plane, never over a contact line.
+    for (i, (tau, _)) in h.lines_at.iter().enumerate() {
+        let colour = PALETTE[i % PALETTE.len()];
+        let y = 40 + 18 * i as i32;
+        legend.draw(&PathElement::new(vec![(4, y), (24, y)], colour.stroke_width(3))).map_err(e)?;
+        legend.draw(&Text::new(format!("τ = {tau}"), (30, y - 6), ("sans-serif", 12).into_font())).map_err(e)?;
+    }
     Ok(())
 }
 
@@ -110,14 +107,17 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
     };
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (900, 620)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (1040, 620)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let root = root
             .titled(&format!("{}: contact lines and their length", r.title), ("sans-serif", 18))
             .map_err(|e| e.to_string())?;
         let (top, bottom) = root.split_vertically(340);
-        plane(&top, h, mu)?;
+        let (top, top_legend) = top.split_horizontally(880);
+        plane(&top, &top_legend, h, mu)?;
+        let (bottom, bottom_legend) = bottom.split_horizontally(880);
         draw_panel(&bottom, &panel)?;
+        draw_legend(&bottom_legend, &panel)?;
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)

@@ -3,24 +3,13 @@
 
 use plotters::prelude::*;
 
+pub(super) use super::panel::colour;
 use super::panel::plottable;
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
 /// Laws × formulations drawn as maps.
 pub(super) const MAX_MAPS: usize = 3;
-
-/// A colour from dark blue (0) through green to yellow (1), after viridis.
-pub(super) fn colour(t: f64) -> RGBColor {
-    const STOPS: [(f64, f64, f64); 5] =
-        [(68.0, 1.0, 84.0), (59.0, 82.0, 139.0), (33.0, 145.0, 140.0), (94.0, 201.0, 98.0), (253.0, 231.0, 37.0)];
-    let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.0 } * (STOPS.len() - 1) as f64;
-    let i = (t.floor() as usize).min(STOPS.len() - 2);
-    let f = t - i as f64;
-    let (a, b) = (STOPS[i], STOPS[i + 1]);
-    let mix = |x: f64, y: f64| (x + f * (y - x)).round() as u8;
-    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
-}
 
 /// Cell edges around sorted centres: midpoints, the outer ones mirrored.
 fn edges(c: &[f64]) -> Vec<f64> {

@@ -14,8 +14,84 @@ pub(super) const PALETTE: [RGBColor; 8] = [
     RGBColor(127, 127, 127),
 ];
 
+/// Twenty categorical colours (the "tab20" set: each hue dark, then light), for panels of more than
+/// eight labelled curves, so that no two curves share a colour up to twenty.
+const WIDE_PALETTE: [RGBColor; 20] = [
+    RGBColor(31, 119, 180),
+    RGBColor(174, 199, 232),
+    RGBColor(255, 127, 14),
+    RGBColor(255, 187, 120),
+    RGBColor(44, 160, 44),
+    RGBColor(152, 223, 138),
+    RGBColor(214, 39, 40),
+    RGBColor(255, 152, 150),
+    RGBColor(148, 103, 189),
+    RGBColor(197, 176, 213),
+    RGBColor(140, 86, 75),
+    RGBColor(196, 156, 148),
+    RGBColor(227, 119, 194),
+    RGBColor(247, 182, 210),
+    RGBColor(127, 127, 127),
+    RGBColor(199, 199, 199),
+    RGBColor(188, 189, 34),
+    RGBColor(219, 219, 141),
+    RGBColor(23, 190, 207),
+    RGBColor(158, 218, 229),
+];
+
+/// The colour of curve `i` of `n` labelled ones.
+fn categorical(i: usize, n: usize) -> RGBColor {
+    if n > PALETTE.len() {
+        WIDE_PALETTE[i % WIDE_PALETTE.len()]
+    } else {
+        PALETTE[i % PALETTE.len()]
+    }
+}
+
 /// Series of fewer points than this get a marker at every point.
 const MARKERS_BELOW: usize = 20;
+
+/// Curves a panel labels one by one; beyond this a panel with a [`Shading`] colours its curves by
+/// a value on a colour scale (with a colour bar) and tells groups apart by their markers.
+pub(super) const MAX_LABELLED: usize = 8;
+
+/// How a panel with many curves draws them: curve i belongs to group `group[i]` (its marker and
+/// legend entry) and is coloured by `value[i]` on the viridis scale, explained by a colour bar
+/// labelled `value_label`.
+#[derive(Default, Clone)]
+pub struct Shading {
+    pub group: Vec<usize>,
+    pub value: Vec<f64>,
+    pub group_labels: Vec<String>,
+    pub value_label: String,
+}
+
+impl Shading {
+    fn range(&self) -> (f64, f64) {
+        let lo = self.value.iter().copied().filter(|v| v.is_finite()).fold(f64::INFINITY, f64::min);
+        let hi = self.value.iter().copied().filter(|v| v.is_finite()).fold(f64::NEG_INFINITY, f64::max);
+        (lo, hi)
+    }
+
+    /// The colour of curve i.
+    fn colour(&self, i: usize) -> RGBColor {
+        let (lo, hi) = self.range();
+        let t = if hi > lo { (self.value.get(i).copied().unwrap_or(lo) - lo) / (hi - lo) } else { 0.5 };
+        colour(t)
+    }
+}
+
+/// The viridis scale at t in [0, 1].
+pub(super) fn colour(t: f64) -> RGBColor {
+    const STOPS: [(f64, f64, f64); 5] =
+        [(68.0, 1.0, 84.0), (59.0, 82.0, 139.0), (33.0, 145.0, 140.0), (94.0, 201.0, 98.0), (253.0, 231.0, 37.0)];
+    let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.0 } * (STOPS.len() - 1) as f64;
+    let i = (t.floor() as usize).min(STOPS.len() - 2);
+    let f = t - i as f64;
+    let (a, b) = (STOPS[i], STOPS[i + 1]);
+    let mix = |x: f64, y: f64| (x + f * (y - x)).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
 
 /// One panel of a figure.
 #[derive(Default)]
@@ -35,6 +111,15 @@ pub struct Panel {
     pub bands: Vec<(f64, f64, String)>,
     /// Values with |y| above this are drawn at the limit and marked with ▲/▼.
     pub clip: Option<f64>,
+    /// How to draw more than [`MAX_LABELLED`] curves of `series` (None: a palette and a legend entry each).
+    pub shading: Option<Shading>,
+}
+
+impl Panel {
+    /// The shading in force: given, and more curves than can be labelled one by one.
+    fn shaded(&self) -> Option<&Shading> {
+        self.shading.as_ref().filter(|_| self.series.len() > MAX_LABELLED)
+    }
 }
 
 /// A range plotters can draw ticks for: finite, increasing, with a finite width not lost in the
@@ -127,8 +212,12 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
             )))
             .map_err(e)?;
     }
+    let shaded = panel.shaded();
     for (i, (_, pts)) in all.iter().enumerate() {
-        let color = PALETTE[i % PALETTE.len()];
+        let color = match shaded {
+            Some(sh) if i < panel.series.len() => sh.colour(i),
+            _ => categorical(i, all.len() + panel.points.len()),
+        };
         // Split at non-finite values so that gaps stay gaps.
         let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
         let mut clipped = Vec::new();
@@ -146,8 +235,27 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
         // A sweep of few points gets a marker at each point (the line alone hides where they are).
         let few = pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()).count() < MARKERS_BELOW;
         for run in runs.into_iter().filter(|r| !r.is_empty()) {
-            if few {
-                chart.draw_series(run.iter().map(|p| Circle::new(*p, 3, color.filled()))).map_err(e)?;
+            match shaded.filter(|_| i < panel.series.len()) {
+                // Shaded curves carry their group's marker (every tenth point of a long curve).
+                Some(sh) => {
+                    let g = sh.group.get(i).copied().unwrap_or(0);
+                    let step = if few { 1 } else { (run.len() / 10).max(1) };
+                    let at: Vec<(f64, f64)> = run.iter().step_by(step).copied().collect();
+                    match g % 4 {
+                        0 => chart.draw_series(at.iter().map(|p| Circle::new(*p, 3, color.filled()))),
+                        1 => chart.draw_series(at.iter().map(|p| TriangleMarker::new(*p, 4, color.filled()))),
+                        2 => chart.draw_series(
+                            at.iter()
+                                .map(|p| EmptyElement::at(*p) + Rectangle::new([(-3, -3), (3, 3)], color.filled())),
+                        ),
+                        _ => chart.draw_series(at.iter().map(|p| Cross::new(*p, 4, color.stroke_width(2)))),
+                    }
+                    .map_err(e)?;
+                }
+                None if few => {
+                    chart.draw_series(run.iter().map(|p| Circle::new(*p, 3, color.filled()))).map_err(e)?;
+                }
+                None => {}
             }
             chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
         }
@@ -159,7 +267,7 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
         }
     }
     for (i, (_, pts)) in panel.points.iter().enumerate() {
-        let color = PALETTE[(all.len() + i) % PALETTE.len()];
+        let color = categorical(all.len() + i, all.len() + panel.points.len());
         let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
         chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
     }
@@ -167,9 +275,10 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
 }
 
 /// Stacked panels; returns the SVG text. Legends stand in a column right of the plot areas, so
-/// that they never hide a curve.
+/// that they never hide a curve, wide enough for their longest label (260 to 560 px).
 pub fn figure(title: &str, panels: &[Panel]) -> Result<String, String> {
-    figure_with_legend(title, panels, 260)
+    let longest = panels.iter().flat_map(legend_entries).map(|(l, _, _)| l.chars().count()).max().unwrap_or(0);
+    figure_with_legend(title, panels, (40 + 7 * longest as u32).clamp(260, 560))
 }
 
 /// [`figure`] with a legend column `legend_width` pixels wide, for long legend labels.
@@ -199,13 +308,18 @@ pub fn figure_with_legend(title: &str, panels: &[Panel], legend_width: u32) -> R
 
 /// (label in words, colour, drawn as a cross) of every labelled series of a panel, in drawing order.
 fn legend_entries(panel: &Panel) -> Vec<(String, RGBColor, bool)> {
+    if let Some(sh) = panel.shaded() {
+        let mut out: Vec<(String, RGBColor, bool)> =
+            sh.group_labels.iter().map(|l| (legend_words(l), RGBColor(60, 60, 60), false)).collect();
+        out.push((sh.value_label.clone(), RGBColor(60, 60, 60), false));
+        return out;
+    }
     let lines = panel.series.iter().map(|(l, _)| l).chain(panel.xy.iter().map(|(l, _)| l));
     let n = panel.series.len() + panel.xy.len();
+    let total = n + panel.points.len();
     let mut out: Vec<(String, RGBColor, bool)> =
-        lines.enumerate().map(|(i, l)| (legend_words(l), PALETTE[i % PALETTE.len()], false)).collect();
-    out.extend(
-        panel.points.iter().enumerate().map(|(i, (l, _))| (legend_words(l), PALETTE[(n + i) % PALETTE.len()], true)),
-    );
+        lines.enumerate().map(|(i, l)| (legend_words(l), categorical(i, total), false)).collect();
+    out.extend(panel.points.iter().enumerate().map(|(i, (l, _))| (legend_words(l), categorical(n + i, total), true)));
     out
 }
 
@@ -231,9 +345,40 @@ pub(crate) fn legend_words(label: &str) -> String {
     label.to_string()
 }
 
-fn draw_legend(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<(), String> {
+pub(super) fn draw_legend(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let font = ("sans-serif", 12).into_font();
+    if let Some(sh) = panel.shaded() {
+        // One entry per group with its marker, then the colour bar of the value.
+        let grey = RGBColor(60, 60, 60);
+        for (k, label) in sh.group_labels.iter().enumerate() {
+            let y = 24 + 18 * k as i32;
+            area.draw(&PathElement::new(vec![(4, y), (24, y)], grey.stroke_width(2))).map_err(e)?;
+            match k % 4 {
+                0 => area.draw(&Circle::new((14, y), 3, grey.filled())),
+                1 => area.draw(&TriangleMarker::new((14, y), 4, grey.filled())),
+                2 => area.draw(&(EmptyElement::at((14, y)) + Rectangle::new([(-3, -3), (3, 3)], grey.filled()))),
+                _ => area.draw(&Cross::new((14, y), 4, grey.stroke_width(2))),
+            }
+            .map_err(e)?;
+            area.draw(&Text::new(legend_words(label), (30, y - 6), font.clone())).map_err(e)?;
+        }
+        let top = 24 + 18 * sh.group_labels.len() as i32 + 10;
+        area.draw(&Text::new(sh.value_label.clone(), (4, top), font.clone())).map_err(e)?;
+        let (lo, hi) = sh.range();
+        const STEPS: i32 = 40;
+        for k in 0..STEPS {
+            let c = colour(k as f64 / (STEPS - 1) as f64);
+            let x = 4 + 5 * k;
+            area.draw(&Rectangle::new([(x, top + 18), (x + 5, top + 32)], c.filled())).map_err(e)?;
+        }
+        let number = |v: f64| crate::render::table::sig(v);
+        area.draw(&Text::new(number(lo), (4, top + 36), font.clone())).map_err(e)?;
+        let hi_text = number(hi);
+        let right = 4 + 5 * STEPS - 7 * hi_text.chars().count() as i32;
+        area.draw(&Text::new(hi_text, (right.max(60), top + 36), font.clone())).map_err(e)?;
+        return Ok(());
+    }
     for (k, (label, color, cross)) in legend_entries(panel).into_iter().filter(|(l, _, _)| !l.is_empty()).enumerate() {
         let y = 24 + 18 * k as i32;
         if cross {

@@ -1,7 +1,7 @@
 //! Plots over the operating sweeps: mean efficiency and power loss against speed or torque, the
 //! composite law's mean |μ| against speed, and η̄ against a swept μ.
 
-use super::panel::{figure, Panel};
+use super::panel::{figure, Panel, Shading};
 use crate::report::Report;
 
 /// Mean η and power loss against the swept variable, at each value of the other one.
@@ -44,10 +44,30 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     columns.sort_by(|a, b| a.1.total_cmp(&b.1));
     let xs: Vec<f64> = columns.iter().map(|c| c.1).collect();
     let mut labels: Vec<String> = Vec::new();
+    // Per curve: its group (law and formulation) and the other variable's value, for the colour
+    // scale when there are too many curves to label one by one.
+    let mut shading = Shading {
+        value_label: if by_speed {
+            "pinion torque (N·m)".into()
+        } else {
+            format!("pinion speed ({})", r.speed_unit.name)
+        },
+        ..Default::default()
+    };
     for rec in &records {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
         if !labels.contains(&l) {
             labels.push(l);
+            let group = format!("{} {}", rec.label, crate::report::formulation_name(rec.formulation));
+            let g = match shading.group_labels.iter().position(|x| *x == group) {
+                Some(g) => g,
+                None => {
+                    shading.group_labels.push(group);
+                    shading.group_labels.len() - 1
+                }
+            };
+            shading.group.push(g);
+            shading.value.push(if by_speed { rec.pinion_torque.si() } else { r.speed_unit.value(&rec.pinion_speed) });
         }
     }
     let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
@@ -67,6 +87,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
             x_label: x_label.clone(),
             x: xs.clone(),
             series: eta,
+            shading: Some(shading.clone()),
             ..Default::default()
         },
         Panel {
@@ -74,6 +95,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
             x_label,
             x: xs,
             series: loss,
+            shading: Some(shading),
             ..Default::default()
         },
     ];
