@@ -176,7 +176,7 @@ fn draw_field(
     let mut chart = ChartBuilder::on(area)
         .caption(format!("{} ({})", f.title, f.unit), ("sans-serif", 14))
         .margin(14)
-        .margin_right(30)
+        .margin_right(78)
         .x_label_area_size(38)
         .y_label_area_size(62)
         .build_cartesian_2d(x0..x1, y0..y1)
@@ -241,6 +241,30 @@ fn draw_field(
                 .draw_series(std::iter::once(Text::new(label, s[0], ("sans-serif", 11).into_font().color(&BLACK))))
                 .map_err(e)?;
         }
+    }
+    colour_bar(area, &lv)
+}
+
+/// The bands' colour bar at the right of a map panel: one box per band, bottom (lowest) to top,
+/// with the iso-level between two boxes written beside it.
+fn colour_bar(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, lv: &[f64]) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    let (w, h) = area.dim_in_pixel();
+    let bands = lv.len() + 1;
+    let (top, bottom) = (40_i32, h as i32 - 60);
+    let step = (bottom - top) as f64 / bands as f64;
+    let x = w as i32 - 66;
+    for b in 0..bands {
+        let y1 = bottom - (b as f64 * step).round() as i32;
+        let y0 = bottom - ((b + 1) as f64 * step).round() as i32;
+        let fill = colour(b as f64 / lv.len().max(1) as f64).filled();
+        area.draw(&Rectangle::new([(x, y0), (x + 14, y1)], fill)).map_err(e)?;
+        area.draw(&Rectangle::new([(x, y0), (x + 14, y1)], BLACK.stroke_width(1))).map_err(e)?;
+    }
+    for (i, l) in lv.iter().enumerate() {
+        let y = bottom - ((i + 1) as f64 * step).round() as i32;
+        let label = crate::render::table::sig(*l);
+        area.draw(&Text::new(label, (x + 18, y - 6), ("sans-serif", 11).into_font())).map_err(e)?;
     }
     Ok(())
 }
