@@ -71,18 +71,23 @@ pub fn efficiency(out: &mut String, r: &Report) {
     }
 }
 
-/// Per law, the records at the lowest and highest torque and speed of the sweep.
-fn corners<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a EfficiencyRecord> {
-    let (t0, t1) = (recs.iter().map(|e| e.torque_index).min(), recs.iter().map(|e| e.torque_index).max());
-    let (s0, s1) = (recs.iter().map(|e| e.speed_index).min(), recs.iter().map(|e| e.speed_index).max());
-    let mut out: Vec<&EfficiencyRecord> = Vec::new();
+/// The records' law labels, each once, in the order they first appear.
+fn laws_in_order<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a str> {
     let mut labels: Vec<&str> = Vec::new();
     for e in recs {
         if !labels.contains(&e.label.as_str()) {
             labels.push(&e.label);
         }
     }
-    for label in labels {
+    labels
+}
+
+/// Per law, the records at the lowest and highest torque and speed of the sweep.
+fn corners<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a EfficiencyRecord> {
+    let (t0, t1) = (recs.iter().map(|e| e.torque_index).min(), recs.iter().map(|e| e.torque_index).max());
+    let (s0, s1) = (recs.iter().map(|e| e.speed_index).min(), recs.iter().map(|e| e.speed_index).max());
+    let mut out: Vec<&EfficiencyRecord> = Vec::new();
+    for label in laws_in_order(recs) {
         for (t, s) in [(t0, s0), (t0, s1), (t1, s0), (t1, s1)] {
             let hit = recs.iter().find(|e| e.label == label && Some(e.torque_index) == t && Some(e.speed_index) == s);
             if let Some(e) = hit.filter(|e| !out.iter().any(|o| std::ptr::eq(*o, **e))) {
@@ -97,13 +102,7 @@ fn corners<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a EfficiencyRecord> {
 fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
     let eta = |e: &EfficiencyRecord| e.budget.as_ref().map_or(e.mean_efficiency.0, |b| b.total_efficiency.0);
     let what = if r.loss_budget { "η total" } else { "η̄ mesh" };
-    let mut labels: Vec<&str> = Vec::new();
-    for e in recs {
-        if !labels.contains(&e.label.as_str()) {
-            labels.push(&e.label);
-        }
-    }
-    for label in labels {
+    for label in laws_in_order(recs) {
         let of: Vec<&&EfficiencyRecord> = recs.iter().filter(|e| e.label == label).collect();
         let lo = of.iter().min_by(|a, b| eta(a).total_cmp(&eta(b)));
         let hi = of.iter().max_by(|a, b| eta(a).total_cmp(&eta(b)));
