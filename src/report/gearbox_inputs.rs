@@ -2,8 +2,8 @@
 //! both shafts, the housing. The lowered gearbox keeps SI values only, so "as written" shows each
 //! value in the unit it is usually written in (mm, kN, °C).
 
+use super::input_row::{InputRow, SiValue};
 use super::number::{Num, Q};
-use super::scene::{InputRow, SiValue};
 use crate::losses::{Gearbox, Lubrication};
 use crate::thermal::Housing;
 

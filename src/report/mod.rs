@@ -10,6 +10,7 @@ pub mod friction;
 pub mod gearbox_inputs;
 pub mod geometry;
 pub mod helical;
+pub mod input_row;
 pub mod law_words;
 pub mod losses;
 pub mod number;

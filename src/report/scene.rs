@@ -1,41 +1,9 @@
 //! The scene's inputs as the user wrote them and in SI, for the report's first table.
 
-use serde::{Deserialize, Serialize};
-
+pub use super::input_row::{InputRow, SiValue};
 use super::number::{Num, Q};
 use crate::model::{Given, ModuleSource, Scene};
 use crate::scene::units::SiQuantity;
-
-/// One input of the scene, as written and in SI (a plain number when dimensionless).
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct InputRow {
-    pub key: String,
-    pub written: String,
-    pub si: SiValue,
-}
-
-/// A dimensional value with its unit, or a plain number.
-#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
-#[serde(untagged)]
-pub enum SiValue {
-    Plain(Num),
-    Dimensional(Q),
-}
-
-impl SiValue {
-    pub fn si(&self) -> f64 {
-        match self {
-            SiValue::Plain(n) => n.0,
-            SiValue::Dimensional(q) => q.si(),
-        }
-    }
-    pub fn unit(&self) -> &'static str {
-        match self {
-            SiValue::Plain(_) => "",
-            SiValue::Dimensional(q) => q.unit,
-        }
-    }
-}
 
 pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Given<T>, unit: &'static str) {
     rows.push(InputRow {
