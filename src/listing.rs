@@ -2,7 +2,7 @@
 //! `gearloss bearings`) and the commented scene `gearloss new` writes. Each list is read from the
 //! catalogue the lowering checks names against, so it cannot drift from what a scene may write.
 
-use crate::friction::catalog::LAWS;
+use crate::friction::catalog::{ArgumentDefault, LAWS};
 use crate::losses::BearingType;
 use crate::scene::lower_gearbox::{BEARING, SEAL, SKF};
 use crate::tribology::lubricant::{base_oil, iso_lubricant_factor, lowest_grade, BaseOil, ISO_VG_GRADES};
@@ -24,9 +24,9 @@ pub fn laws() -> String {
                 let unit = a.dimension.si_unit();
                 let unit = if unit.is_empty() || unit == "1" { String::new() } else { format!(" {unit}") };
                 match a.default {
-                    None => format!("{} = …{unit} ({}, required)", a.name, a.what),
-                    Some(d) if d.is_nan() => format!("{} ({}, optional)", a.name, a.what),
-                    Some(d) => format!("{} = {d}{unit} ({}, default)", a.name, a.what),
+                    ArgumentDefault::Required => format!("{} = …{unit} ({}, required)", a.name, a.what),
+                    ArgumentDefault::Derived => format!("{} ({}, optional)", a.name, a.what),
+                    ArgumentDefault::Value(d) => format!("{} = {d}{unit} ({}, default)", a.name, a.what),
                 }
             })
             .collect();

@@ -11,6 +11,7 @@
 //! assert!(mu < 0.0 && mu > -0.1, "{mu}");
 //! ```
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
@@ -32,11 +33,11 @@ pub struct BenedictKelley {
 }
 
 impl BenedictKelley {
-    pub fn new(t: &Tribology) -> Self {
-        BenedictKelley {
+    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+        Ok(BenedictKelley {
             viscosity_cp: t.dynamic_viscosity * units::CP_PER_PA_S,
-            roughness_um: t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
-        }
+            roughness_um: Needs::RoughnessRa.of(t.ra_mean)? * units::UM_PER_M,
+        })
     }
 
     /// The log argument, 29700 w / (η v_s v_Σ²).

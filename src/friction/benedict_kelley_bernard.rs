@@ -4,6 +4,7 @@
 //! 50/(50 − S_rms) ≤ 3. Not equivalent to He–Cho–Singh's eq 14 (it runs ≈ 0.08 higher), so both
 //! are kept, named apart. Diverges (logarithmically) at P.
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
@@ -16,12 +17,12 @@ pub struct BenedictKelleyBernard {
 }
 
 impl BenedictKelleyBernard {
-    pub fn new(t: &Tribology) -> Self {
-        BenedictKelleyBernard {
+    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+        Ok(BenedictKelleyBernard {
             viscosity_cp: t.dynamic_viscosity * units::CP_PER_PA_S,
-            roughness_rms_um: t.rq_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
+            roughness_rms_um: Needs::RoughnessRq.of(t.rq_mean)? * units::UM_PER_M,
             reduced_modulus: t.reduced_modulus,
-        }
+        })
     }
 
     fn argument(&self, c: &ContactPoint) -> f64 {

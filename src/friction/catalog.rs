@@ -41,14 +41,36 @@ impl FrictionLawSpec {
         self.arguments.iter().find(|(n, _, _)| n == name).map(|(_, v, _)| *v)
     }
 
-    /// The argument in SI; lowering has filled in every default and checked every required one.
-    fn arg(&self, name: &str) -> f64 {
-        self.argument(name).unwrap_or(f64::NAN)
+    /// The argument in SI: lowering fills in every default and checks every required one, so an
+    /// absent argument here is an input the law cannot do without.
+    fn arg(&self, name: &str) -> Result<f64, MissingInput> {
+        self.argument(name).ok_or_else(|| MissingInput { law: self.law, key: name.to_string() })
     }
 
-    /// Builds the law for one operating point, by the constructor of its catalogue entry.
-    pub fn build(&self, ctx: &LawContext) -> Box<dyn FrictionLaw> {
+    /// Names the law in a need its constructor found unmet.
+    fn missing(&self) -> impl Fn(Needs) -> MissingInput + '_ {
+        |n| MissingInput { law: self.law, key: n.key().to_string() }
+    }
+
+    /// Builds the law for one operating point, by the constructor of its catalogue entry; an input
+    /// the law needs and the scene lacks (lowering reports it first, with its span) is a [`MissingInput`].
+    pub fn build(&self, ctx: &LawContext) -> BuiltLaw {
         (self.law.entry().build)(self, ctx)
+    }
+}
+
+/// An input a law needs that the scene does not give: an argument or one of its [`Needs`].
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("`{}` needs `{key}`, which the scene does not give", law.name())]
+pub struct MissingInput {
+    pub law: LawId,
+    pub key: String,
+}
+
+impl MissingInput {
+    /// What to write to give it.
+    pub fn hint(&self) -> String {
+        format!("give `{}` in the scene, or leave `{}` out of the friction block", self.key, self.law.name())
     }
 }
 
@@ -70,6 +92,11 @@ pub enum Needs {
 }
 
 impl Needs {
+    /// The value a scene gives for this need (from [`crate::tribology::Tribology`]), or the need.
+    pub fn of(self, given: Option<f64>) -> Result<f64, Needs> {
+        given.ok_or(self)
+    }
+
     pub fn key(self) -> &'static str {
         match self {
             Needs::RoughnessRa => "roughness_ra",
@@ -82,12 +109,26 @@ impl Needs {
     }
 }
 
-/// One argument of a law: name, dimension, default in SI (None: required).
+/// What a law does when a scene leaves an argument out.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ArgumentDefault {
+    /// The scene must give it.
+    Required,
+    /// This value, in SI.
+    Value(f64),
+    /// The law derives it from the scene (its docs say how); absent from the law's arguments.
+    Derived,
+}
+
+/// A law built for one operating point, or the input it lacks.
+pub type BuiltLaw = Result<Box<dyn FrictionLaw>, MissingInput>;
+
+/// One argument of a law: name, dimension, what it takes when left out.
 #[derive(Debug, Clone, Copy)]
 pub struct LawArgument {
     pub name: &'static str,
     pub dimension: Dimension,
-    pub default: Option<f64>,
+    pub default: ArgumentDefault,
     pub what: &'static str,
 }
 
@@ -101,13 +142,14 @@ pub struct LawEntry {
     /// Where the formula comes from (the equation or table it implements).
     pub source: &'static str,
     /// Builds the law at one operating point from the lowered arguments.
-    pub build: fn(&FrictionLawSpec, &LawContext) -> Box<dyn FrictionLaw>,
+    pub build: fn(&FrictionLawSpec, &LawContext) -> BuiltLaw,
 }
 
-const fn arg(name: &'static str, dimension: Dimension, default: Option<f64>, what: &'static str) -> LawArgument {
+const fn arg(name: &'static str, dimension: Dimension, default: ArgumentDefault, what: &'static str) -> LawArgument {
     LawArgument { name, dimension, default, what }
 }
 
+use ArgumentDefault::{Derived, Required, Value};
 use Needs::*;
 
 /// Every law a `.gear` file can name.
@@ -115,10 +157,10 @@ pub const LAWS: &[LawEntry] = &[
     LawEntry {
         id: LawId::Coulomb,
         title: "Coulomb (Model I)",
-        arguments: &[arg("mu", Dimension::NONE, None, "coefficient of friction")],
+        arguments: &[arg("mu", Dimension::NONE, Required, "coefficient of friction")],
         needs: &[],
         source: "He, Cho & Singh (2008) eq 10; Fernandes et al. §2.1",
-        build: |s, _| Box::new(super::coulomb::Coulomb { mu: s.arg("mu") }),
+        build: |s, _| Ok(Box::new(super::coulomb::Coulomb { mu: s.arg("mu")? })),
     },
     LawEntry {
         id: LawId::BenedictKelley,
@@ -126,7 +168,7 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
         source: "Benedict & Kelley (1961) as He, Cho & Singh (2008) eq 14 write it",
-        build: |_, ctx| Box::new(super::benedict_kelley::BenedictKelley::new(&ctx.tribology)),
+        build: |s, ctx| Ok(Box::new(super::benedict_kelley::BenedictKelley::new(&ctx.tribology).map_err(s.missing())?)),
     },
     LawEntry {
         id: LawId::BenedictKelleyBernard,
@@ -134,7 +176,11 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, RoughnessRq],
         source: "Benedict & Kelley (1961) as Bernard et al. (2016) Table 1 write it",
-        build: |_, ctx| Box::new(super::benedict_kelley_bernard::BenedictKelleyBernard::new(&ctx.tribology)),
+        build: |s, ctx| {
+            Ok(Box::new(
+                super::benedict_kelley_bernard::BenedictKelleyBernard::new(&ctx.tribology).map_err(s.missing())?,
+            ))
+        },
     },
     LawEntry {
         id: LawId::Xu,
@@ -142,31 +188,32 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, RoughnessRa],
         source: "Xu et al. (2007) as He, Cho & Singh (2008) eq 18 write it",
-        build: |_, ctx| Box::new(super::xu::Xu::new(&ctx.tribology)),
+        build: |s, ctx| Ok(Box::new(super::xu::Xu::new(&ctx.tribology).map_err(s.missing())?)),
     },
     LawEntry {
         id: LawId::SmoothedCoulomb,
         title: "smoothed Coulomb (Model IV)",
         arguments: &[
-            arg("mu", Dimension::NONE, None, "coefficient of friction"),
-            arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "smoothing factor Φ"),
+            arg("mu", Dimension::NONE, Required, "coefficient of friction"),
+            arg("phi", Dimension::RECIPROCAL_LENGTH, Value(50e3), "smoothing factor Φ"),
         ],
         needs: &[],
         source: "Duan & Singh, as He, Cho & Singh (2008) eq 19 write it",
-        build: |s, _| Box::new(super::smoothed_coulomb::SmoothedCoulomb { mu: s.arg("mu"), phi: s.arg("phi") }),
+        build: |s, _| Ok(Box::new(super::smoothed_coulomb::SmoothedCoulomb { mu: s.arg("mu")?, phi: s.arg("phi")? })),
     },
     LawEntry {
         id: LawId::Composite,
         title: "composite (Model V)",
         arguments: &[
-            arg("filter_cutoff", Dimension::LENGTH, Some(0.8e-3), "roughness filter cut-off L_x"),
-            arg("mu", Dimension::NONE, Some(f64::NAN), "Model IV magnitude (default: mean |μ_BK| over A–E)"),
-            arg("phi", Dimension::RECIPROCAL_LENGTH, Some(50e3), "Model IV smoothing factor Φ"),
+            arg("filter_cutoff", Dimension::LENGTH, Value(0.8e-3), "roughness filter cut-off L_x"),
+            arg("mu", Dimension::NONE, Derived, "Model IV magnitude (default: mean |μ_BK| over A–E)"),
+            arg("phi", Dimension::RECIPROCAL_LENGTH, Value(50e3), "Model IV smoothing factor Φ"),
         ],
         needs: &[Lubricant, RoughnessRa, RoughnessRq, PressureViscosity],
         source: "He, Cho & Singh (2008) eqs 20–21 (Λ picks Models IV, II, III)",
         build: |s, ctx| {
-            Box::new(super::composite::Composite::new(ctx, s.arg("filter_cutoff"), s.arg("mu"), s.arg("phi")))
+            let law = super::composite::Composite::new(ctx, s.arg("filter_cutoff")?, s.argument("mu"), s.arg("phi")?);
+            Ok(Box::new(law.map_err(s.missing())?))
         },
     },
     LawEntry {
@@ -175,7 +222,7 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
         source: "Misharin, as Bernard et al. (2016) Table 1 write it",
-        build: |_, ctx| Box::new(super::misharin::Misharin::new(&ctx.tribology)),
+        build: |s, ctx| Ok(Box::new(super::misharin::Misharin::new(&ctx.tribology).map_err(s.missing())?)),
     },
     LawEntry {
         id: LawId::ODonoghueCameron,
@@ -183,7 +230,9 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, RoughnessRa, KinematicViscosity],
         source: "O'Donoghue & Cameron, as Bernard et al. (2016) Table 1 write it",
-        build: |_, ctx| Box::new(super::odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology)),
+        build: |s, ctx| {
+            Ok(Box::new(super::odonoghue_cameron::ODonoghueCameron::new(&ctx.tribology).map_err(s.missing())?))
+        },
     },
     LawEntry {
         id: LawId::DrozdovGavrikov,
@@ -191,28 +240,31 @@ pub const LAWS: &[LawEntry] = &[
         arguments: &[],
         needs: &[Lubricant, KinematicViscosity],
         source: "Drozdov & Gavrikov, as Bernard et al. (2016) Table 1 print it (garbled there; one reading)",
-        build: |_, ctx| Box::new(super::drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology)),
+        build: |s, ctx| {
+            Ok(Box::new(super::drozdov_gavrikov::DrozdovGavrikov::new(&ctx.tribology).map_err(s.missing())?))
+        },
     },
     LawEntry {
         id: LawId::Iso14179_2,
         title: "ISO/TR 14179-2 (Niemann–Schlenk)",
-        // x_l = 0 (the default) reads X_L from the lubricant's base oil.
-        arguments: &[arg("x_l", Dimension::NONE, Some(0.0), "lubricant factor X_L (default: the lubricant's)")],
+        // Left out, X_L is read from the lubricant's base oil.
+        arguments: &[arg("x_l", Dimension::NONE, Derived, "lubricant factor X_L (default: the lubricant's)")],
         needs: &[Lubricant, RoughnessRa],
         source: "ISO/TR 14179-2:2001 (Niemann & Schlenk mean μ_mZ)",
-        build: |s, ctx| Box::new(super::iso_14179_2::Iso14179_2::new(ctx, s.arg("x_l"))),
+        build: |s, ctx| Ok(Box::new(super::iso_14179_2::Iso14179_2::new(ctx, s.argument("x_l")).map_err(s.missing())?)),
     },
     LawEntry {
         id: LawId::Matsumoto,
         title: "Matsumoto (mixed regime)",
         arguments: &[
-            arg("mu_boundary", Dimension::NONE, Some(0.1), "boundary friction coefficient"),
-            arg("mu_ehl", Dimension::NONE, Some(0.02), "full-film friction coefficient"),
+            arg("mu_boundary", Dimension::NONE, Value(0.1), "boundary friction coefficient"),
+            arg("mu_ehl", Dimension::NONE, Value(0.02), "full-film friction coefficient"),
         ],
         needs: &[Lubricant, RoughnessRz, PressureViscosity],
         source: "Matsumoto mixed-regime blend ξ = 0.5 log10(Rz/h_min) with Dowson–Higginson h_min",
         build: |s, ctx| {
-            Box::new(super::matsumoto::Matsumoto::new(&ctx.tribology, s.arg("mu_boundary"), s.arg("mu_ehl")))
+            let law = super::matsumoto::Matsumoto::new(&ctx.tribology, s.arg("mu_boundary")?, s.arg("mu_ehl")?);
+            Ok(Box::new(law.map_err(s.missing())?))
         },
     },
 ];

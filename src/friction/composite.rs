@@ -5,6 +5,7 @@
 //! over A–E at the operating point unless `mu` is given (He–Cho–Singh §3.5, their ref \[4\]).
 
 use super::benedict_kelley::BenedictKelley;
+use super::catalog::Needs;
 use super::smoothed_coulomb::SmoothedCoulomb;
 use super::xu::Xu;
 use super::{FrictionLaw, LawContext, Parameter, Regime};
@@ -33,11 +34,11 @@ pub struct Composite {
 }
 
 impl Composite {
-    pub fn new(ctx: &LawContext, filter_cutoff: f64, mu: f64, phi: f64) -> Self {
+    pub fn new(ctx: &LawContext, filter_cutoff: f64, mu: Option<f64>, phi: f64) -> Result<Self, Needs> {
         let t = &ctx.tribology;
-        let mixed = BenedictKelley::new(t);
+        let mixed = BenedictKelley::new(t)?;
         let p = ctx.geometry.points;
-        let (mu, derived) = if mu.is_finite() {
+        let (mu, derived) = if let Some(mu) = mu {
             (mu, false)
         } else {
             let mean = integrate_singular(
@@ -56,17 +57,17 @@ impl Composite {
         };
         let mut law = Composite {
             filter_cutoff,
-            rq_composite: t.rq_composite.unwrap_or(f64::NAN),
+            rq_composite: Needs::RoughnessRq.of(t.rq_composite)?,
             film: FilmInputs {
                 dynamic_viscosity: t.dynamic_viscosity,
-                pressure_viscosity: t.pressure_viscosity.unwrap_or(f64::NAN),
+                pressure_viscosity: Needs::PressureViscosity.of(t.pressure_viscosity)?,
                 reduced_modulus: t.reduced_modulus,
             },
             boundary: SmoothedCoulomb { mu, phi },
             mixed,
             full_film: Xu::from_units(
                 t.dynamic_viscosity * crate::tribology::units::CP_PER_PA_S,
-                t.ra_mean.unwrap_or(f64::NAN) * crate::tribology::units::UM_PER_M,
+                Needs::RoughnessRa.of(t.ra_mean)? * crate::tribology::units::UM_PER_M,
             ),
             mu_from_benedict_kelley: derived,
             switches: Vec::new(),
@@ -74,7 +75,7 @@ impl Composite {
         };
         law.switches = law.find_switches(ctx);
         law.mixed_at_pitch = Self::regime_of(law.lambda(&ctx.contact_at(p.p))) == Regime::Mixed;
-        law
+        Ok(law)
     }
 
     /// Λ at a contact.

@@ -8,6 +8,7 @@
 //! is 0.39–1.96 GPa in those units). With these readings μ ≈ 0.02–0.1 on Bernard's Table 2 data.
 //! It diverges at P as V_s^−1/2 (integrable). Never used inside Model V.
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
@@ -21,8 +22,10 @@ pub struct DrozdovGavrikov {
 }
 
 impl DrozdovGavrikov {
-    pub fn new(t: &Tribology) -> Self {
-        DrozdovGavrikov { kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN) * units::CST_PER_M2_S }
+    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+        Ok(DrozdovGavrikov {
+            kinematic_viscosity_cst: Needs::KinematicViscosity.of(t.kinematic_viscosity)? * units::CST_PER_M2_S,
+        })
     }
 
     pub fn magnitude(&self, c: &ContactPoint) -> f64 {

@@ -9,6 +9,7 @@
 //! 1 m/s μ is underestimated, which is flagged. X_L is the lubricant's (ISO/TR 14179-2's table by
 //! base oil) unless the law is given `x_l`.
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, LawContext, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::units;
@@ -24,8 +25,8 @@ pub struct Iso14179_2 {
 }
 
 impl Iso14179_2 {
-    /// `x_l` overrides the lubricant's X_L when above zero.
-    pub fn new(ctx: &LawContext, x_l: f64) -> Self {
+    /// `x_l`, when given, overrides the lubricant's X_L.
+    pub fn new(ctx: &LawContext, x_l: Option<f64>) -> Result<Self, Needs> {
         let g = ctx.geometry;
         let t = &ctx.tribology;
         let u = g.gear_ratio;
@@ -38,7 +39,7 @@ impl Iso14179_2 {
         // ρ_redC = u/(1+u)² · a sin α_wt / cos β_b (helical pairs; cos β_b = 1 for spur).
         let rho = if g.is_helical() { rho / g.base_helix_angle.cos() } else { rho };
         let eta = t.dynamic_viscosity * units::CP_PER_PA_S;
-        let ra = t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M;
+        let ra = Needs::RoughnessRa.of(t.ra_mean)? * units::UM_PER_M;
         let mut notes = Vec::new();
         let load = if fbt_per_b < 150.0 {
             notes.push(format!("iso_14179_2: F_bt/b = {fbt_per_b:.1} N/mm is below 150 N/mm; evaluated at 150 N/mm"));
@@ -55,20 +56,19 @@ impl Iso14179_2 {
             }
             v_sum
         };
-        let x_l_given = x_l > 0.0;
-        let lubricant_factor = if x_l_given { x_l } else { t.lubricant_factor };
-        if !x_l_given && t.lubricant_family == "mineral (default)" {
+        let lubricant_factor = x_l.unwrap_or(t.lubricant_factor);
+        if x_l.is_none() && t.lubricant_family == "mineral (default)" {
             notes.push("iso_14179_2: no lubricant `type` given; X_L = 1.0 (mineral oil)".into());
         }
         let mu_mz = 0.048 * (load / (v * rho)).powf(0.2) * eta.powf(-0.05) * ra.powf(0.25) * lubricant_factor;
-        Iso14179_2 {
+        Ok(Iso14179_2 {
             mu_mz,
             load_per_width_n_per_mm: load,
             sum_velocity: v,
             reduced_radius_mm: rho,
             lubricant_factor,
             notes,
-        }
+        })
     }
 }
 

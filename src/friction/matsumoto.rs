@@ -2,6 +2,7 @@
 //! μ = ξ μ_bl + (1 − ξ) μ_EHL, ξ = 0.5 log10(Rz_comp / h_min) clamped to [0, 1], Rz_comp the mean
 //! Rz, h_min by Dowson–Higginson. Defaults μ_bl = 0.1, μ_EHL = 0.02. Signed with the sliding direction.
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{FilmInputs, Tribology};
@@ -15,17 +16,17 @@ pub struct Matsumoto {
 }
 
 impl Matsumoto {
-    pub fn new(t: &Tribology, mu_boundary: f64, mu_ehl: f64) -> Self {
-        Matsumoto {
+    pub fn new(t: &Tribology, mu_boundary: f64, mu_ehl: f64) -> Result<Self, Needs> {
+        Ok(Matsumoto {
             mu_boundary,
             mu_ehl,
-            rz_mean: t.rz_mean.unwrap_or(f64::NAN),
+            rz_mean: Needs::RoughnessRz.of(t.rz_mean)?,
             film: FilmInputs {
                 dynamic_viscosity: t.dynamic_viscosity,
-                pressure_viscosity: t.pressure_viscosity.unwrap_or(f64::NAN),
+                pressure_viscosity: Needs::PressureViscosity.of(t.pressure_viscosity)?,
                 reduced_modulus: t.reduced_modulus,
             },
-        }
+        })
     }
 
     /// ξ before clamping.

@@ -1,6 +1,7 @@
 //! Misharin (Bernard et al., Table 1): μ = 0.3865 (ν_k U² SR)^−1/4, ν_k in cSt, U in m/s.
 //! Valid for SR ∈ [0.4, 1.3]; diverges at P as SR^−1/4 (integrable).
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
@@ -11,8 +12,10 @@ pub struct Misharin {
 }
 
 impl Misharin {
-    pub fn new(t: &Tribology) -> Self {
-        Misharin { kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN) * units::CST_PER_M2_S }
+    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+        Ok(Misharin {
+            kinematic_viscosity_cst: Needs::KinematicViscosity.of(t.kinematic_viscosity)? * units::CST_PER_M2_S,
+        })
     }
     pub fn magnitude(&self, c: &ContactPoint) -> f64 {
         0.3865 * (self.kinematic_viscosity_cst * c.entrainment_velocity.powi(2) * c.slide_to_roll).powf(-0.25)

@@ -4,6 +4,7 @@
 //! μ ≈ 1–4 (implausible), R in millimetres 0.03–0.1, so **R is taken in mm** and every report says so.
 //! Diverges at P as SR^−1/3 (integrable).
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
@@ -15,11 +16,11 @@ pub struct ODonoghueCameron {
 }
 
 impl ODonoghueCameron {
-    pub fn new(t: &Tribology) -> Self {
-        ODonoghueCameron {
-            roughness_um: t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M,
-            kinematic_viscosity_cst: t.kinematic_viscosity.unwrap_or(f64::NAN) * units::CST_PER_M2_S,
-        }
+    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+        Ok(ODonoghueCameron {
+            roughness_um: Needs::RoughnessRa.of(t.ra_mean)? * units::UM_PER_M,
+            kinematic_viscosity_cst: Needs::KinematicViscosity.of(t.kinematic_viscosity)? * units::CST_PER_M2_S,
+        })
     }
 
     /// |μ| with R in the given unit (1e3 for mm, 1 for m).

@@ -12,6 +12,7 @@
 //! assert_eq!(law.magnitude(&c), 0.0);
 //! ```
 
+use super::catalog::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, FilmInputs, Tribology};
@@ -33,9 +34,11 @@ pub struct Xu {
 }
 
 impl Xu {
-    pub fn new(t: &Tribology) -> Self {
-        let mut law =
-            Xu::from_units(t.dynamic_viscosity * units::CP_PER_PA_S, t.ra_mean.unwrap_or(f64::NAN) * units::UM_PER_M);
+    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+        let mut law = Xu::from_units(
+            t.dynamic_viscosity * units::CP_PER_PA_S,
+            Needs::RoughnessRa.of(t.ra_mean)? * units::UM_PER_M,
+        );
         if let (Some(alpha), Some(sigma)) = (t.pressure_viscosity, t.rq_composite) {
             let inputs = FilmInputs {
                 dynamic_viscosity: t.dynamic_viscosity,
@@ -44,7 +47,7 @@ impl Xu {
             };
             law.film = Some((inputs, sigma));
         }
-        law
+        Ok(law)
     }
 
     /// From η in cP and S (mean Ra) in µm.

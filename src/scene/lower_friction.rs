@@ -74,8 +74,9 @@ pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSp
             continue;
         }
         match spec.default {
-            Some(d) => arguments.push((spec.name.to_string(), d, "default".into())),
-            None => {
+            catalog::ArgumentDefault::Value(d) => arguments.push((spec.name.to_string(), d, "default".into())),
+            catalog::ArgumentDefault::Derived => {}
+            catalog::ArgumentDefault::Required => {
                 errors.push(
                     Diagnostic::new(
                         DiagnosticKind::MissingKey,

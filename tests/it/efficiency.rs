@@ -124,7 +124,7 @@ fn efficiency_range_is_located() {
     let eval = gearloss::evaluate(&scene);
     let ctx = eval.law_context(eval.points[0].state);
     let k = scene.friction.iter().position(|l| l.law.name() == "benedict_kelley").unwrap();
-    let law = scene.friction[k].build(&ctx);
+    let law = scene.friction[k].build(&ctx).unwrap();
     let scan =
         (0..100_000).map(|i| efficiency_at(&ctx, law.as_ref(), External, i as f64 / 1e5)).fold(f64::INFINITY, f64::min);
     let located = eval.points[0].laws[k].efficiency[0].min;

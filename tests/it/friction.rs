@@ -2,6 +2,7 @@
 
 use gearloss::evaluate::evaluate_scene;
 use gearloss::friction::benedict_kelley::{BenedictKelley, CONSTANT, CONSTANT_FROM_IMPERIAL};
+use gearloss::friction::catalog::ArgumentDefault;
 use gearloss::friction::composite::Composite;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::misharin::Misharin;
@@ -26,18 +27,83 @@ fn catalogue_entries_build_the_law_they_name() {
     use gearloss::friction::catalog::LAWS;
     let scene = spec("fzg_type_c.gear");
     let eval = evaluate_scene(&scene);
-    let ctx = eval.law_context(eval.points[0].state);
+    let mut ctx = eval.law_context(eval.points[0].state);
+    ctx.tribology.rz_mean = Some(2.0e-6); // FZG C gives Ra and Rq; Rz as a scene would give it
     for (i, entry) in LAWS.iter().enumerate() {
         assert_eq!(entry.id as usize, i, "{}", entry.id.name());
         assert_eq!(entry.id.name(), entry.id.name());
         assert_eq!(LAWS.iter().filter(|e| e.id.name() == entry.id.name()).count(), 1);
-        let arguments = entry.arguments.iter().map(|a| (a.name.to_string(), a.default.unwrap_or(0.05), String::new()));
+        let arguments = entry.arguments.iter().filter_map(|a| match a.default {
+            ArgumentDefault::Required => Some((a.name.to_string(), 0.05, String::new())),
+            ArgumentDefault::Value(d) => Some((a.name.to_string(), d, String::new())),
+            ArgumentDefault::Derived => None,
+        });
         let spec = gearloss::model::FrictionLawSpec {
             law: entry.id,
             arguments: arguments.collect(),
             span: Default::default(),
         };
-        assert_eq!(spec.build(&ctx).id(), entry.id);
+        assert_eq!(spec.build(&ctx).unwrap().id(), entry.id);
+    }
+}
+
+/// A law's constructor and its catalogue row agree on what it needs: with one input of the scene
+/// taken away, the law builds when the row does not name the input and fails naming it when the row
+/// does; a required argument left out fails naming the argument. (Lowering checks the rows with
+/// spans; evaluation builds the laws and would stop, never report NaN, if the two disagreed.)
+#[test]
+fn laws_name_the_input_they_miss() {
+    use gearloss::friction::catalog::{FrictionLawSpec, Needs, LAWS};
+    use gearloss::friction::LawContext;
+    let scene = spec("fzg_type_c.gear");
+    let eval = evaluate_scene(&scene);
+    let mut full = eval.law_context(eval.points[0].state);
+    let t = &mut full.tribology;
+    t.rz_mean = t.rz_mean.or(Some(2.0e-6)); // FZG C gives Ra and Rq; Rz as a scene would give it
+    assert!(t
+        .ra_mean
+        .and(t.rq_mean)
+        .and(t.rq_composite)
+        .and(t.kinematic_viscosity)
+        .and(t.pressure_viscosity)
+        .is_some());
+    type TakeAway = fn(&mut gearloss::tribology::Tribology);
+    let inputs: [(Needs, TakeAway); 5] = [
+        (Needs::RoughnessRa, |t| t.ra_mean = None),
+        (Needs::RoughnessRq, |t| (t.rq_mean, t.rq_composite) = (None, None)),
+        (Needs::RoughnessRz, |t| t.rz_mean = None),
+        (Needs::KinematicViscosity, |t| t.kinematic_viscosity = None),
+        (Needs::PressureViscosity, |t| t.pressure_viscosity = None),
+    ];
+    for entry in LAWS {
+        let given: Vec<_> = entry
+            .arguments
+            .iter()
+            .filter_map(|a| match a.default {
+                ArgumentDefault::Required => Some((a.name.to_string(), 0.05, String::new())),
+                ArgumentDefault::Value(d) => Some((a.name.to_string(), d, String::new())),
+                ArgumentDefault::Derived => None,
+            })
+            .collect();
+        let spec = FrictionLawSpec { law: entry.id, arguments: given.clone(), span: Default::default() };
+        for (need, take_away) in inputs {
+            let mut tribology = full.tribology;
+            take_away(&mut tribology);
+            let ctx = LawContext { tribology, ..full };
+            match spec.build(&ctx) {
+                Ok(_) => assert!(!entry.needs.contains(&need), "{} built without {}", entry.id.name(), need.key()),
+                Err(m) => {
+                    assert!(entry.needs.contains(&need), "{} asks for {} its row omits", entry.id.name(), need.key());
+                    assert_eq!((m.law, m.key.as_str()), (entry.id, need.key()));
+                }
+            }
+        }
+        for required in entry.arguments.iter().filter(|a| a.default == ArgumentDefault::Required) {
+            let arguments = given.iter().filter(|(n, _, _)| n != required.name).cloned().collect();
+            let spec = FrictionLawSpec { law: entry.id, arguments, span: Default::default() };
+            let m = spec.build(&full).err().expect("a required argument left out");
+            assert_eq!(m.key, required.name);
+        }
     }
 }
 
@@ -95,7 +161,7 @@ fn bernard_table_4_xu_lowest_at_the_pitch_point() {
 fn odonoghue_cameron_radius_unit() {
     let scene = spec("bernard_table4.gear");
     let eval = evaluate_scene(&scene);
-    let law = ODonoghueCameron::new(&eval.tribology);
+    let law = ODonoghueCameron::new(&eval.tribology).unwrap();
     let pe = &eval.points[0];
     let a = &pe.table[0].1; // point A: SR ≈ 1
     let in_m = law.magnitude_with_radius_scale(a, 1.0);
@@ -174,13 +240,13 @@ fn composite_switches_regime_where_lambda_crosses_1_and_4() {
             seen.insert(format!("{r:?}"));
         }
         let ctx = eval.law_context(pe.state);
-        let built = scene.friction[k].build(&ctx);
+        let built = scene.friction[k].build(&ctx).unwrap();
         let g = &eval.geometry.points;
         for u in &law.switch_points {
             let inside_zone = (u - g.b).abs() > 1e-7 && (u - g.d).abs() > 1e-7;
             if inside_zone {
                 let c = ctx.contact_at(*u);
-                let composite = Composite::new(&ctx, 0.8e-3, f64::NAN, 50e3);
+                let composite = Composite::new(&ctx, 0.8e-3, None, 50e3).unwrap();
                 let lambda = composite.lambda(&c);
                 assert!((lambda - 1.0).abs() < 1e-6 || (lambda - 4.0).abs() < 1e-6, "Λ = {lambda} at a switch");
             }
@@ -214,7 +280,7 @@ fn iso_14179_2_hand_value() {
     let eval = evaluate_scene(&scene);
     let state =
         gearloss::geometry::OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 };
-    let law = Iso14179_2::new(&eval.law_context(state), 0.0);
+    let law = Iso14179_2::new(&eval.law_context(state), None).unwrap();
     let aw = g.operating_pressure_angle;
     let fbt_b = 239.3 / g.base_radius[0] / 14.0;
     let vt = state.pinion_speed * g.working_pitch_radius[0];
@@ -261,7 +327,7 @@ fn divergent_means_converge() {
     let scene = spec("bernard_table4.gear");
     let eval = evaluate_scene(&scene);
     let ctx = eval.law_context(eval.points[0].state);
-    let law = BenedictKelley::new(&eval.tribology);
+    let law = BenedictKelley::new(&eval.tribology).unwrap();
     let p = eval.geometry.points;
     let f = |u: f64| law.mu(&ctx.contact_at(u)).abs();
     let coarse = integrate(f, &[p.a, p.b, p.p, p.d, p.e], 1e-6).value;
@@ -279,7 +345,7 @@ fn composite_switches_match_a_dense_scan() {
     let g = eval.geometry.points;
     for pe in &eval.points {
         let ctx = eval.law_context(pe.state);
-        let law = Composite::new(&ctx, 0.8e-3, f64::NAN, 50e3);
+        let law = Composite::new(&ctx, 0.8e-3, None, 50e3).unwrap();
         let n = 100_000;
         let step = (g.e - g.a) / n as f64;
         let mut scanned = Vec::new();

@@ -61,10 +61,10 @@ fn c14_mu_matches_the_peer() {
     let scene = spec("fzg_c14_gearbox.gear");
     let eval = evaluate_scene(&scene);
     let state = OperatingState { pinion_torque: 239.3, pinion_speed: rpm(1500.0) };
-    let mu = Iso14179_2::new(&eval.law_context(state), 0.846).mu_mz;
+    let mu = Iso14179_2::new(&eval.law_context(state), Some(0.846)).unwrap().mu_mz;
     assert!((mu / 0.04487 - 1.0).abs() < 5e-3, "μ_mZ = {mu}");
     // X_L of the lubricant (mineral: 1.0) when the law has no `x_l`.
-    let default = Iso14179_2::new(&eval.law_context(state), 0.0).mu_mz;
+    let default = Iso14179_2::new(&eval.law_context(state), None).unwrap().mu_mz;
     assert!((default / mu - 1.0 / 0.846).abs() < 1e-12);
 }
 
@@ -84,7 +84,7 @@ fn c14_mesh_loss_matches_the_peer_with_the_load_at_the_wheel() {
     let input = state.pinion_torque * state.pinion_speed;
     assert!((input - 239.3 * rpm(1500.0)).abs() < 1e-9 * input);
     let ctx = eval.law_context(state);
-    let law = Iso14179_2::new(&ctx, 0.846);
+    let law = Iso14179_2::new(&ctx, Some(0.846)).unwrap();
     let peer_mu = 0.04487 * (1.0f64 / 2.25).powf(0.2);
     assert!((law.mu_mz / peer_mu - 1.0).abs() < 5e-3, "μ_mZ = {} vs {peer_mu}", law.mu_mz);
     assert!((input * 0.1950 * peer_mu - 279.65).abs() < 0.01, "the peer's arithmetic");

@@ -175,9 +175,16 @@ mod response {
             let arguments = l
                 .arguments
                 .iter()
-                .map(|a| (a.name.to_string(), a.default.unwrap_or(f64::NAN), "default".to_string()))
+                .filter_map(|a| match a.default {
+                    gearloss::friction::catalog::ArgumentDefault::Value(d) => {
+                        Some((a.name.to_string(), d, "default".to_string()))
+                    }
+                    _ => None,
+                })
                 .collect();
-            gearloss::friction::catalog::FrictionLawSpec { law: l.id, arguments, span: Default::default() }.build(&c)
+            gearloss::friction::catalog::FrictionLawSpec { law: l.id, arguments, span: Default::default() }
+                .build(&c)
+                .unwrap()
         };
         let laws: Vec<(String, Box<dyn FrictionLaw>)> = vec![
             ("coulomb".into(), Box::new(Coulomb { mu: 0.08 })),
