@@ -191,7 +191,7 @@ pub fn break_positions(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
 pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
     let p = ctx.geometry.points;
     let singular = [p.p];
-    let contact = |u: f64, d: f64| if d.is_finite() { ctx.contact_at_offset(d) } else { ctx.contact_at(u) };
+    let contact = |u: f64, d: Option<f64>| d.map_or_else(|| ctx.contact_at(u), |d| ctx.contact_at_offset(d));
     let i =
         integrate_singular(|u, d| law.mu(&contact(u, d)).abs(), &break_positions(ctx, law), &singular, MEAN_TOLERANCE);
     Integral { value: i.value / (p.e - p.a), error: i.error / (p.e - p.a), evaluations: i.evaluations }

@@ -27,9 +27,9 @@ pub const EVALUATION_BUDGET: usize = 2_000_000;
 pub struct Run {
     pub method: String,
     pub rtol: f64,
-    /// max |x − x_ref| over the last period / peak-to-peak DTE.
-    pub error: f64,
-    pub final_state_error: f64,
+    /// max |x − x_ref| over the last period / peak-to-peak DTE (none for a failed run).
+    pub error: Option<f64>,
+    pub final_state_error: Option<f64>,
     pub seconds: f64,
     pub counts: Counts,
     pub failure: Option<String>,
@@ -195,8 +195,8 @@ pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<
                     Run {
                         method: integrator.name().into(),
                         rtol,
-                        error: err,
-                        final_state_error: fse,
+                        error: Some(err),
+                        final_state_error: Some(fse),
                         seconds,
                         counts,
                         failure: None,
@@ -205,8 +205,8 @@ pub fn study<M: PeriodicModel<N> + ?Sized, const N: usize>(sys: &M, x0: SVector<
                 Err(e) => Run {
                     method: integrator.name().into(),
                     rtol,
-                    error: f64::NAN,
-                    final_state_error: f64::NAN,
+                    error: None,
+                    final_state_error: None,
                     seconds,
                     counts: Counts::default(),
                     failure: Some(e),

@@ -62,9 +62,9 @@ impl<'a> SixDofSystem<'a> {
 
     /// Ratio of the highest to the lowest natural frequency of the mean system: how stiff the
     /// system is for an integrator.
-    pub fn stiffness_ratio(&self) -> f64 {
-        let lo = self.frequencies.iter().copied().find(|f| *f > 0.0).unwrap_or(f64::NAN);
-        self.frequencies.last().copied().unwrap_or(f64::NAN) / lo
+    pub fn stiffness_ratio(&self) -> Option<f64> {
+        let lo = self.frequencies.iter().copied().find(|f| *f > 0.0)?;
+        Some(self.frequencies.last()? / lo)
     }
 
     /// Bearing damping 2ζ_B sqrt(K m) for gear `i`, [along x, along y] (N·s/m).

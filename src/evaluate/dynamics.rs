@@ -66,9 +66,9 @@ fn stiffness_model(scene: &Scene, spec: &DynamicsSpec, g: &PairGeometry) -> (Sti
     (spec.stiffness.build(g, &scene.gears.bodies()), spec.stiffness.source())
 }
 
-fn inertia(scene: &Scene) -> [f64; 2] {
-    let j = |g: &crate::model::Gear| g.inertia.as_ref().map_or(f64::NAN, |j| j.value.value);
-    [j(&scene.gears.pinion), j(&scene.gears.wheel)]
+fn inertia(scene: &Scene) -> Option<[f64; 2]> {
+    let j = |g: &crate::model::Gear| g.inertia.as_ref().map(|j| j.value.value);
+    Some([j(&scene.gears.pinion)?, j(&scene.gears.wheel)?])
 }
 
 fn system<'a>(
@@ -131,16 +131,19 @@ pub struct DynamicsSetup<'a> {
 }
 
 impl<'a> DynamicsSetup<'a> {
-    /// The setup when the scene has a `dynamics` block; `base` is the law context of the scene's pair
-    /// (its state is replaced by each operating point's).
+    /// The setup when the scene has a `dynamics` block and the inputs its model needs (the gears'
+    /// inertias, and masses and bearings on bearings: lowering refuses a scene that asks for dynamics
+    /// without them); `base` is the law context of the scene's pair (its state is replaced by each
+    /// operating point's).
     pub fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
         let spec = scene.dynamics.as_ref()?;
-        let (stiffness, source) = stiffness_model(scene, spec, base.geometry);
+        let inertia = inertia(scene)?;
         let mass = |g: &crate::model::Gear| g.mass.as_ref().map(|m| m.value.value);
         let inputs =
             ModelInputs { mass: [mass(&scene.gears.pinion), mass(&scene.gears.wheel)], bearings: spec.model.bearings };
-        let model = (spec.model.id.entry().build)(&inputs);
-        Some(DynamicsSetup { base, spec, stiffness, source, inertia: inertia(scene), model })
+        let model = (spec.model.id.entry().build)(&inputs)?;
+        let (stiffness, source) = stiffness_model(scene, spec, base.geometry);
+        Some(DynamicsSetup { base, spec, stiffness, source, inertia, model })
     }
 
     /// The mesh at one state and formulation (no law for the base formulation).

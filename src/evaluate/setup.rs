@@ -83,8 +83,8 @@ impl Setup {
 /// (ρ = η/ν; a lubricant of unknown base counts as mineral).
 pub fn budget_oil(scene: &Scene, t: &Tribology) -> crate::losses::Oil {
     crate::losses::Oil {
-        nu: t.kinematic_viscosity.unwrap_or(f64::NAN),
-        rho: t.density().unwrap_or(f64::NAN),
+        nu: t.kinematic_viscosity,
+        rho: t.density(),
         eta: t.dynamic_viscosity,
         mineral: scene
             .lubricant

@@ -42,9 +42,7 @@ impl Composite {
             (mu, false)
         } else {
             let mean = integrate_singular(
-                |u, d| {
-                    mixed.magnitude(&if d.is_finite() { ctx.contact_at_offset(d) } else { ctx.contact_at(u) }).max(0.0)
-                },
+                |u, d| mixed.magnitude(&d.map_or_else(|| ctx.contact_at(u), |d| ctx.contact_at_offset(d))).max(0.0),
                 &[
                     [p.a, p.p, p.e].as_slice(),
                     &ctx.geometry.pair_change_points().iter().map(|(_, u)| *u).collect::<Vec<_>>(),

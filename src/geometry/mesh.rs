@@ -165,12 +165,12 @@ impl Mesh<'_> {
     /// The contacts at time τ of the mesh cycle (τ in [0, 1)). Each carries its force share 1/n of
     /// the pairs found at τ, so that the shares always add up to one.
     pub fn contacts_at(&self, tau: f64) -> Contacts {
-        self.contacts_near_pitch(tau, f64::NAN)
+        self.contacts_near_pitch(tau, None)
     }
 
     /// As [`Mesh::contacts_at`], with `d` = τ − τ_P known exactly for the pair nearest the pitch
-    /// point (NaN when not known): that pair's s = p_b d.
-    pub fn contacts_near_pitch(&self, tau: f64, d: f64) -> Contacts {
+    /// point (when known): that pair's s = p_b d.
+    pub fn contacts_near_pitch(&self, tau: f64, d: Option<f64>) -> Contacts {
         let g = self.pair;
         if g.is_helical() {
             return self.line_contacts(tau, LINE_NODES);
@@ -184,11 +184,11 @@ impl Mesh<'_> {
                 n += 1;
             }
         }
-        let exact = g.base_pitch * d;
+        let exact = d.map(|d| g.base_pitch * d);
         let mut items = [ContactPoint::default(); MAX_CONTACTS];
         for (slot, u) in items.iter_mut().zip(&positions[..n]) {
             let s = u - g.points.p;
-            let s = if exact.is_finite() && (s - exact).abs() < 1e-6 * g.base_pitch { exact } else { s };
+            let s = exact.filter(|e| (s - e).abs() < 1e-6 * g.base_pitch).unwrap_or(s);
             *slot = g.contact_exact(*u, s, &self.state, self.reduced_modulus, self.sharing, n);
         }
         Contacts::Pairs(items, n)

@@ -90,12 +90,13 @@ pub struct GearsRunning {
 }
 
 impl Lubrication {
-    /// P_VZ0 (W) of the two gears in `oil`.
-    pub fn power_loss(&self, g: &GearsRunning, oil: &super::oil::Oil) -> f64 {
+    /// P_VZ0 (W) of the two gears in `oil`; `None` for injection lubrication of an oil without a
+    /// density (lowering refuses that scene).
+    pub fn power_loss(&self, g: &GearsRunning, oil: &super::oil::Oil) -> Option<f64> {
         let v_t = g.omega[0] * g.pitch_radius[0];
         match *self {
             Lubrication::Dip { immersion, axis_height, housing_width } => {
-                mauz_dip_torque(immersion, axis_height, housing_width, g.face_width, v_t) * g.omega[0]
+                Some(mauz_dip_torque(immersion, axis_height, housing_width, g.face_width, v_t) * g.omega[0])
             }
             Lubrication::Injection { flow, jet_speed } => {
                 let windage: f64 = (0..2)
@@ -103,7 +104,7 @@ impl Lubrication {
                         windage_loss(g.omega[i] * 30.0 / std::f64::consts::PI, g.pitch_radius[i], g.face_width, oil.eta)
                     })
                     .sum();
-                injection_impulse_loss(oil.rho, flow, v_t, jet_speed) + windage
+                Some(injection_impulse_loss(oil.rho?, flow, v_t, jet_speed) + windage)
             }
         }
     }
@@ -147,12 +148,14 @@ mod tests {
     /// plus both gears' windage (pinion R = 0.1 m at 100 rad/s, wheel R = 0.2 m at 50 rad/s).
     #[test]
     fn injection_by_hand() {
-        let oil = crate::losses::Oil { nu: 1e-5, rho: 870.0, eta: 8.7e-3, mineral: true };
+        let oil = crate::losses::Oil { nu: Some(1e-5), rho: Some(870.0), eta: 8.7e-3, mineral: true };
         let g = GearsRunning { omega: [100.0, 50.0], pitch_radius: [0.1, 0.2], face_width: 0.02 };
-        let p = Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss(&g, &oil);
+        let p = Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss(&g, &oil).unwrap();
         let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
         let w = windage_loss(rpm(100.0), 0.1, 0.02, 8.7e-3) + windage_loss(rpm(50.0), 0.2, 0.02, 8.7e-3);
         assert!((p - 8.7 - w).abs() < 1e-12, "{p}");
+        let no_density = crate::losses::Oil { rho: None, ..oil };
+        assert_eq!(Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss(&g, &no_density), None);
     }
 
     /// Anderson–Loewenthal by hand (values from Python): n = 3000 rpm, R = 0.1 m, b = 0.02 m,

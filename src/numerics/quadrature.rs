@@ -104,8 +104,13 @@ pub fn integrate(f: impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integr
 ///
 /// `f(x, d)` also receives d = x − (the singular point of its piece), computed exactly from the
 /// map (x itself cannot resolve a point 1e-20 away from a singular point at 0.01); d is NaN on
-/// pieces that touch no singular point.
-pub fn integrate_singular(f: impl Fn(f64, f64) -> f64, breaks: &[f64], singular: &[f64], rel_tol: f64) -> Integral {
+/// pieces that touch no singular point it is `None`.
+pub fn integrate_singular(
+    f: impl Fn(f64, Option<f64>) -> f64,
+    breaks: &[f64],
+    singular: &[f64],
+    rel_tol: f64,
+) -> Integral {
     let [r] = integrate_singular_n(|x, d| [f(x, d)], breaks, singular, rel_tol);
     r
 }
@@ -113,7 +118,7 @@ pub fn integrate_singular(f: impl Fn(f64, f64) -> f64, breaks: &[f64], singular:
 /// As [`integrate_singular`] for N integrands that share their (expensive) evaluation points; each
 /// meets the tolerance, the pieces are refined where any of them needs it.
 pub fn integrate_singular_n<const N: usize>(
-    f: impl Fn(f64, f64) -> [f64; N],
+    f: impl Fn(f64, Option<f64>) -> [f64; N],
     breaks: &[f64],
     singular: &[f64],
     rel_tol: f64,
@@ -140,11 +145,11 @@ pub fn integrate_singular_n<const N: usize>(
     for (a, b, kind) in split {
         let scale = |v: [f64; N], w: f64| v.map(|x| x * w);
         let (values, errors, evaluations) = match kind {
-            0 => adaptive(&|x: f64| f(x, f64::NAN), a, b, rel_tol),
+            0 => adaptive(&|x: f64| f(x, None), a, b, rel_tol),
             1 => adaptive(
                 &|t: f64| {
                     let d = (b - a) * t.powi(4);
-                    scale(f(a + d, d), 4.0 * (b - a) * t.powi(3))
+                    scale(f(a + d, Some(d)), 4.0 * (b - a) * t.powi(3))
                 },
                 0.0,
                 1.0,
@@ -153,7 +158,7 @@ pub fn integrate_singular_n<const N: usize>(
             _ => adaptive(
                 &|t: f64| {
                     let d = (b - a) * t.powi(4);
-                    scale(f(b - d, -d), 4.0 * (b - a) * t.powi(3))
+                    scale(f(b - d, Some(-d)), 4.0 * (b - a) * t.powi(3))
                 },
                 0.0,
                 1.0,

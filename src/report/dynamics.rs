@@ -209,8 +209,8 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
             .map(|r| NumericsRow {
                 method: r.method.clone(),
                 rtol: Num(r.rtol),
-                error: finite(r.error),
-                final_state_error: finite(r.final_state_error),
+                error: r.error.and_then(finite),
+                final_state_error: r.final_state_error.and_then(finite),
                 steps: r.counts.steps,
                 rejected: r.counts.rejected,
                 evaluations: r.counts.evaluations,

@@ -63,8 +63,9 @@ pub(super) fn helical_report(eval: &Evaluation) -> Option<HelicalReport> {
     let breaks = g.cycle_break_times(&[]);
     // L is continuous and linear between breaks: its extremes are at the breaks.
     let at: Vec<(f64, f64)> = breaks.iter().map(|t| (*t, g.contact_length(t.min(1.0 - 1e-15)))).collect();
-    let min = at.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1)).unwrap_or((0.0, f64::NAN));
-    let max = at.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap_or((0.0, f64::NAN));
+    // (The breaks hold τ = 0 at least.)
+    let min = at.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1))?;
+    let max = at.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1))?;
     let regions = g.cycle_regions();
     let lines_at = PLOTTED_INSTANTS
         .iter()

@@ -34,6 +34,6 @@ pub struct NumericsReport {
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct Timings {
     pub reference_seconds: f64,
-    /// (method, rtol, error, seconds)
-    pub runs: Vec<(String, f64, f64, f64)>,
+    /// (method, rtol, error (none for a failed run), seconds)
+    pub runs: Vec<(String, f64, Option<f64>, f64)>,
 }

@@ -70,12 +70,16 @@ fn dynamic_models_one_file_one_row() {
     let files = entry_files("dynamics/models", &["mod.rs", "catalog.rs", "gear_dynamics.rs", "model_id.rs"]);
     let rows: BTreeSet<String> = MODELS.iter().map(|m| m.file.to_string()).collect();
     assert_eq!(files, rows, "files in src/dynamics/models/ and rows of MODELS differ");
-    let inputs = ModelInputs { mass: [Some(1.0), Some(4.0)], bearings: None };
+    let bearing = gearloss::dynamics::six_dof::Bearing { loa: 1e8, oloa: 1e8, damping_ratio: 0.02 };
+    let inputs = ModelInputs { mass: [Some(1.0), Some(4.0)], bearings: Some([bearing; 2]) };
+    let bare = ModelInputs { mass: [None, None], bearings: None };
     for (i, m) in MODELS.iter().enumerate() {
         assert_eq!(m.id as usize, i, "{}", m.name);
         assert_eq!(MODELS.iter().filter(|x| x.name == m.name).count(), 1, "{}", m.name);
         assert!(m.formulations.contains(&gearloss::dynamics::DynamicFormulation::Base), "{}", m.name);
-        assert_eq!((m.build)(&inputs).id(), m.id, "{}", m.name);
+        assert_eq!((m.build)(&inputs).map(|b| b.id()), Some(m.id), "{}", m.name);
+        // A model on bearings is not built without its masses and bearings; one off them needs neither.
+        assert_eq!((m.build)(&bare).is_some(), !m.on_bearings, "{}", m.name);
     }
 }
 

@@ -8,7 +8,7 @@ use gearloss::losses::parts::LossColumn;
 use gearloss::losses::{loss_budget, Bearing, BearingType, Gearbox, Lubrication, Oil, Seal};
 
 /// A mineral oil of 50 mm²/s and 870 kg/m³.
-const OIL: Oil = Oil { nu: 50e-6, rho: 870.0, eta: 50e-6 * 870.0, mineral: true };
+const OIL: Oil = Oil { nu: Some(50e-6), rho: Some(870.0), eta: 50e-6 * 870.0, mineral: true };
 
 fn spec(name: &str) -> gearloss::Scene {
     crate::scene(&crate::root().join("specs").join(name))
@@ -262,11 +262,11 @@ fn loss_limits() {
     let g = spec("fzg_c14_gearbox.gear").gears.geometry().unwrap();
     let gears = GearsRunning { omega: [100.0, 50.0], pitch_radius: [0.05, 0.1], face_width: 0.014 };
     let dry = Lubrication::Dip { immersion: [0.0, 0.0], axis_height: 0.1, housing_width: 0.2 };
-    assert_eq!(dry.power_loss(&gears, &OIL), 0.0);
+    assert_eq!(dry.power_loss(&gears, &OIL), Some(0.0));
     let jet = Lubrication::Injection { flow: 0.0, jet_speed: 10.0 };
     let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
     let windage = windage_loss(rpm(100.0), 0.05, 0.014, OIL.eta) + windage_loss(rpm(50.0), 0.1, 0.014, OIL.eta);
-    assert_eq!(jet.power_loss(&gears, &OIL), windage);
+    assert_eq!(jet.power_loss(&gears, &OIL), Some(windage));
     let empty = Gearbox {
         lubrication: None,
         bearings: [vec![], vec![]],

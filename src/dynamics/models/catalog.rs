@@ -33,8 +33,9 @@ pub struct DynamicModelEntry {
     /// The formulations it takes, and why when not all of them.
     pub formulations: &'static [DynamicFormulation],
     pub formulations_reason: &'static str,
-    /// Its constructor.
-    pub build: fn(&ModelInputs) -> Box<dyn GearDynamics>,
+    /// Its constructor; `None` when the scene lacks an input the model needs (lowering refuses a
+    /// scene that asks for dynamics without them, naming the key).
+    pub build: fn(&ModelInputs) -> Option<Box<dyn GearDynamics>>,
 }
 
 /// Every dynamic model.

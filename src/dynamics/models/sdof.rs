@@ -16,8 +16,8 @@ use crate::dynamics::{Floquet, PeriodicModel, SdofSystem};
 pub struct Sdof;
 
 /// The catalogue's constructor.
-pub fn build(_: &ModelInputs) -> Box<dyn GearDynamics> {
-    Box::new(Sdof)
+pub fn build(_: &ModelInputs) -> Option<Box<dyn GearDynamics>> {
+    Some(Box::new(Sdof))
 }
 
 impl GearDynamics for Sdof {

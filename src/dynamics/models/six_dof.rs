@@ -20,14 +20,11 @@ pub struct SixDof {
     pub bearings: [Bearing; 2],
 }
 
-/// The catalogue's constructor. Lowering has checked that the scene gives both masses and the
-/// bearings of a model on bearings; a missing one would read as NaN and show in the report.
-pub fn build(inputs: &ModelInputs) -> Box<dyn GearDynamics> {
-    let bearing = Bearing { loa: f64::NAN, oloa: f64::NAN, damping_ratio: f64::NAN };
-    Box::new(SixDof {
-        mass: inputs.mass.map(|m| m.unwrap_or(f64::NAN)),
-        bearings: inputs.bearings.unwrap_or([bearing; 2]),
-    })
+/// The catalogue's constructor: `None` without both masses and the bearings (lowering names the
+/// missing key of a scene that asks for dynamics).
+pub fn build(inputs: &ModelInputs) -> Option<Box<dyn GearDynamics>> {
+    let [Some(pinion), Some(wheel)] = inputs.mass else { return None };
+    Some(Box::new(SixDof { mass: [pinion, wheel], bearings: inputs.bearings? }))
 }
 
 impl SixDof {
@@ -47,7 +44,7 @@ impl GearDynamics for SixDof {
             name: six.name(),
             description: six.description(),
             natural_frequencies: six.frequencies.clone(),
-            stiffness_ratio: Some(six.stiffness_ratio()),
+            stiffness_ratio: six.stiffness_ratio(),
         }
     }
 

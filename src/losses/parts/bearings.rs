@@ -47,11 +47,13 @@ impl LossPart for Bearings<'_> {
             axial: if s == 0 { at.axial_force } else { -at.axial_force },
             radius: at.pitch_radius[s],
         };
+        // Lowering refuses bearings in an oil without ν; no ν, no bearing columns.
+        let Some(nu) = oil.nu else { return };
         for (s, places) in self.0.iter().enumerate().filter(|(_, p)| !p.is_empty()) {
             let loads = place_loads(places, force(s), f_bt);
             for (b, (fr, fa)) in places.iter().zip(loads) {
                 let n = b.count as f64;
-                let (m0, m1) = b.moments(fr, fa, oil.nu, at.omega[s], oil.mineral);
+                let (m0, m1) = b.moments(fr, fa, nu, at.omega[s], oil.mineral);
                 let p0 = m0 * at.omega[s] * n;
                 let p1 = m1.map(|m| m * at.omega[s] * n);
                 out.add(LossColumn::BearingsNoLoad, p0);

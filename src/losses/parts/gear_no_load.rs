@@ -24,6 +24,9 @@ impl LossPart for GearNoLoad<'_> {
 
     fn losses(&self, at: &PartState, oil: &Oil, out: &mut PartLosses) {
         let gears = GearsRunning { omega: at.omega, pitch_radius: at.pitch_radius, face_width: at.face_width };
-        out.add(LossColumn::GearNoLoad, self.0.power_loss(&gears, oil));
+        // Lowering refuses jets in an oil without a density; no density, no column.
+        if let Some(p) = self.0.power_loss(&gears, oil) {
+            out.add(LossColumn::GearNoLoad, p);
+        }
     }
 }

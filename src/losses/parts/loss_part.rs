@@ -16,7 +16,7 @@
 //!     }
 //! }
 //!
-//! let oil = Oil { nu: 3.0e-5, rho: 870.0, eta: 0.026, mineral: true };
+//! let oil = Oil { nu: Some(3.0e-5), rho: Some(870.0), eta: 0.026, mineral: true };
 //! let at = PartState { pinion_torque: 100.0, omega: [150.0, 100.0], pitch_radius: [0.04, 0.06],
 //!                      face_width: 0.02, transverse_force: 2660.0, pressure_angle: 0.35,
 //!                      axial_force: 0.0 };

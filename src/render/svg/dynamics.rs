@@ -131,17 +131,18 @@ pub fn stability_map(r: &Report) -> Result<String, String> {
 pub fn work_precision(r: &Report, t: &crate::report::numerics::Timings) -> Result<String, String> {
     let mut methods: Vec<String> = t.runs.iter().map(|x| x.0.clone()).collect();
     methods.dedup();
-    let ok = |e: f64| e.is_finite() && e > 0.0;
-    let floor = t.runs.iter().filter(|x| ok(x.2)).map(|x| x.2).fold(f64::INFINITY, f64::min);
-    let worst = t.runs.iter().filter(|x| ok(x.2)).map(|x| x.2).fold(0.0f64, f64::max);
+    let ok = |e: Option<f64>| e.is_some_and(|e| e.is_finite() && e > 0.0);
+    let errors = || t.runs.iter().filter(|x| ok(x.2)).filter_map(|x| x.2);
+    let floor = errors().fold(f64::INFINITY, f64::min);
+    let worst = errors().fold(0.0f64, f64::max);
     let xy = methods
         .iter()
         .map(|m| {
             let pts = t
                 .runs
                 .iter()
-                .filter(|r| r.0 == *m && ok(r.2) && r.3 > 0.0)
-                .map(|r| (r.2.log10(), r.3.log10()))
+                .filter(|r| r.0 == *m && r.3 > 0.0)
+                .filter_map(|r| r.2.filter(|e| ok(Some(*e))).map(|e| (e.log10(), r.3.log10())))
                 .collect();
             (m.clone(), pts)
         })
