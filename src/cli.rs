@@ -213,13 +213,13 @@ fn finished(result: Result<(PathBuf, Vec<String>), gearloss::RunError>) -> ExitC
             ExitCode::SUCCESS
         }
         Err(gearloss::RunError::Scene(e)) => report_errors(&e),
-        Err(e @ gearloss::RunError::Shards(_)) => {
-            errln!("error: {e}");
-            ExitCode::from(EXIT_SCENE)
-        }
         Err(e) => {
             errln!("error: {e}");
-            ExitCode::from(EXIT_IO)
+            for hint in e.failure().map_or(&[][..], |f| &f.hints[..]) {
+                errln!("  help: {hint}");
+            }
+            // Shard folders that do not form one set are the user's input, as a scene is (README).
+            ExitCode::from(if matches!(e, gearloss::RunError::Shards(_)) { EXIT_SCENE } else { EXIT_IO })
         }
     }
 }

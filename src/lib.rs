@@ -83,7 +83,7 @@ pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
 pub use run::{has_records, merge_into, report_of, run_into, run_to_files, Written};
-pub use run_error::RunError;
+pub use run_error::{Failure, FailureKind, RunError};
 pub use scene::ast::SceneAst;
 
 /// Stage 1: text → syntax tree.

@@ -9,7 +9,7 @@ use crate::render::{self, RenderedReport, TIMINGS_FILE};
 use crate::report::numerics::Timings;
 use crate::report::oil_sweep::OilSweepReport;
 use crate::report::Report;
-use crate::run_error::RunError;
+use crate::run_error::{Failure, FailureKind, RunError};
 
 /// The report as report.json holds it: written, then read back.
 pub fn as_written(report: &Report) -> Result<Report, String> {
@@ -18,8 +18,8 @@ pub fn as_written(report: &Report) -> Result<Report, String> {
 
 /// Stage 5 as a run does it: the files drawn from the report as report.json holds it.
 pub fn render_as_written(report: &Report, timings: Option<&Timings>) -> Result<(Report, RenderedReport), RunError> {
-    let read = as_written(report).map_err(RunError::Render)?;
-    let rendered = render::render_report(&read, timings).map_err(RunError::Render)?;
+    let read = as_written(report).map_err(RunError::read_back)?;
+    let rendered = render::render_report(&read, timings).map_err(RunError::drawing)?;
     Ok((read, rendered))
 }
 
@@ -32,10 +32,10 @@ pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
             Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| bad(dir, TIMINGS_FILE, e))?),
             Err(_) => None,
         };
-        return Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::Render)?.files);
+        return Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files);
     }
     let sweep: OilSweepReport = serde_json::from_str(&text).map_err(|e| bad(dir, "report.json", e))?;
-    let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::Render)?;
+    let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
     for run in &sweep.runs {
         let inner = render_folder(&dir.join(&run.folder))?;
         files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
@@ -60,10 +60,19 @@ pub fn render_into(dir: &Path) -> Result<Vec<String>, RunError> {
 fn read(dir: &Path, file: &str) -> Result<String, RunError> {
     let path = dir.join(file);
     std::fs::read_to_string(&path).map_err(|e| {
-        RunError::Render(format!("cannot read {}: {e} (give the folder `gearloss run` wrote)", path.display()))
+        RunError::Render(
+            Failure::new(FailureKind::NotAReport, format!("cannot read {}: {e}", path.display()))
+                .hint("give the folder `gearloss run` wrote (it holds report.json)"),
+        )
     })
 }
 
 fn bad(dir: &Path, file: &str, e: serde_json::Error) -> RunError {
-    RunError::Render(format!("{} is not a report gearloss wrote: {e}", dir.join(file).display()))
+    RunError::Render(
+        Failure::new(
+            FailureKind::NotAReport,
+            format!("{} is not a report gearloss wrote: {e}", dir.join(file).display()),
+        )
+        .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
+    )
 }

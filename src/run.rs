@@ -14,7 +14,7 @@ use crate::model::Scene;
 use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
 use crate::report::{self, Report};
-use crate::run_error::RunError;
+use crate::run_error::{Failure, FailureKind, RunError};
 use crate::scene::check::check;
 use crate::{render, rerender, shard};
 
@@ -106,7 +106,7 @@ fn each_oil_temperature(
         let kelvin = at.operating.oil_temperature.as_ref().map_or(f64::NAN, |t| t.value.value);
         runs.push((label, kelvin, report));
     }
-    render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::Render)
+    render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::drawing)
 }
 
 /// The plan's points streamed into the record files of `folder` under `dir` (`""`: the top), when
@@ -196,10 +196,13 @@ pub fn run_into(
         return Ok(Written { folder, files, reports });
     };
     if !labels.is_empty() {
-        return Err(RunError::Shards(format!(
-            "the scene runs at {} oil temperatures: run it whole, or shard one scene per temperature",
-            labels.len()
-        )));
+        return Err(RunError::Shards(
+            Failure::new(
+                FailureKind::ShardedOilSweep,
+                format!("the scene runs at {} oil temperatures, and a shard holds one scene's points", labels.len()),
+            )
+            .hint("run it whole, or write one scene per oil temperature and shard each"),
+        ));
     }
     let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
     let name = format!("{slug}.shard-{}-of-{}", shard.index, shard.count);

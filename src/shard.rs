@@ -16,6 +16,7 @@ use crate::evaluate::{Plan, Shard, Tally};
 use crate::folder::ReportFolder;
 use crate::progress::Progress;
 use crate::report::sweep::{RECORDS_CSV, RECORDS_JSONL};
+use crate::run_error::{Failure, FailureKind};
 
 /// The manifest of a shard folder.
 pub const MANIFEST: &str = "shard.json";
@@ -82,33 +83,41 @@ pub struct ShardSet {
 impl ShardSet {
     /// Reads and checks the manifests: one scene, one shard count, every shard exactly once; the
     /// error says which folder is wrong and why.
-    pub fn read(folders: &[PathBuf]) -> Result<ShardSet, String> {
+    pub fn read(folders: &[PathBuf]) -> Result<ShardSet, Failure> {
+        let not_a_shard = |reason: String| {
+            Failure::new(FailureKind::NotAShard, reason)
+                .hint("give the folders `gearloss run --shard K/N` wrote, named <scene>.shard-K-of-N")
+        };
+        let mismatch = |reason: String| Failure::new(FailureKind::ShardsDoNotMatch, reason);
         let mut manifests = Vec::new();
         for dir in folders {
             let path = dir.join(MANIFEST);
-            let text = std::fs::read_to_string(&path).map_err(|e| {
-                format!(
-                    "{}: cannot read the shard manifest: {e} (is this a folder written by `gearloss run --shard K/N`?)",
-                    path.display()
-                )
-            })?;
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| not_a_shard(format!("{}: cannot read the shard manifest: {e}", path.display())))?;
             let m: Manifest = serde_json::from_str(&text)
-                .map_err(|e| format!("{}: not a gearloss shard manifest: {e}", path.display()))?;
+                .map_err(|e| not_a_shard(format!("{}: not a gearloss shard manifest: {e}", path.display())))?;
             if m.format != FORMAT {
-                return Err(format!("{}: shard format {} is not {FORMAT}", path.display(), m.format));
+                return Err(not_a_shard(format!("{}: shard format {} is not {FORMAT}", path.display(), m.format))
+                    .hint("shard and merge with the same version of gearloss"));
             }
             manifests.push((dir.clone(), m));
         }
         let Some((_, first)) = manifests.first() else {
-            return Err("no shard folders given".to_string());
+            return Err(not_a_shard("no shard folders given".to_string()));
         };
         let (count, source, source_name) = (first.shard.count, first.source.clone(), first.source_name.clone());
         for (dir, m) in &manifests {
             if m.source != source || m.source_name != source_name {
-                return Err(format!("{} holds a shard of another scene than {source_name}", dir.display()));
+                return Err(mismatch(format!("{} holds a shard of another scene than {source_name}", dir.display()))
+                    .hint("merge the shards of one scene (same text) together"));
             }
             if m.shard.count != count {
-                return Err(format!("{} is a shard of {}, the others of {count}", dir.display(), m.shard.count));
+                return Err(mismatch(format!(
+                    "{} is a shard of {}, the others of {count}",
+                    dir.display(),
+                    m.shard.count
+                ))
+                .hint("merge shards cut with one count N (`--shard K/N`)"));
             }
         }
         manifests.sort_by_key(|(_, m)| m.shard.index);
@@ -116,11 +125,16 @@ impl ShardSet {
         if have != (1..=count).collect::<Vec<_>>() {
             let missing: Vec<String> =
                 (1..=count).filter(|k| !have.contains(k)).map(|k| format!("{k}/{count}")).collect();
-            return Err(format!(
+            let got = mismatch(format!(
                 "merge needs each of the {count} shards exactly once; got {:?}{}",
                 have,
                 if missing.is_empty() { String::new() } else { format!(", missing {}", missing.join(", ")) }
             ));
+            return Err(if missing.is_empty() {
+                got.hint("give each shard folder once")
+            } else {
+                got.hint(format!("run `gearloss run --shard {}` and give its folder too", missing[0]))
+            });
         }
         let mut tally = Tally::default();
         let mut dirs = Vec::new();

@@ -55,6 +55,7 @@ fn render_redraws_a_report_folder() {
     assert_eq!(o.status.code(), Some(3));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("cannot read") && err.contains("report.json"), "{err}");
+    assert!(err.contains("help: give the folder `gearloss run` wrote"), "{err}");
     std::fs::remove_dir_all(&out).unwrap();
 }
 

@@ -129,7 +129,8 @@ fn four_shards_merged_equal_one_run() {
     // A missing shard is an error that names it.
     let o = gearloss().arg("merge").args(&shards[1..]).arg("--out").arg(out.join("bad")).output().unwrap();
     assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("missing 4/4"), "{}", String::from_utf8_lossy(&o.stderr));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("missing 4/4") && err.contains("help: run `gearloss run --shard 4/4`"), "{err}");
     std::fs::remove_dir_all(&out).unwrap();
 }
 
