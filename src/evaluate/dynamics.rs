@@ -175,7 +175,7 @@ impl<'a> DynamicsSetup<'a> {
     }
 
     fn law_for(&self, state: OperatingState) -> Option<Box<dyn FrictionLaw + 'a>> {
-        self.spec.friction.as_ref().map(|l| super::laws::law_at(l, &LawContext { state, ..self.base }))
+        self.spec.friction.as_ref().map(|l| super::setup::law_at(l, &LawContext { state, ..self.base }))
     }
 
     /// Every formulation at operating point `case` (its index in the caller's list) with its periodic

@@ -113,14 +113,6 @@ fn regime_bands(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<(f64, f64, Regim
     edges.windows(2).filter_map(|w| law.regime(&ctx.contact_at(0.5 * (w[0] + w[1]))).map(|r| (w[0], w[1], r))).collect()
 }
 
-/// The law of `spec` at `ctx`. Lowering refuses a scene that lacks an input a law needs (the
-/// catalogue's `needs`, checked with the law's span), and whether a scene gives an input does not
-/// change between operating points: a [`crate::friction::catalog::MissingInput`] here is a defect
-/// of gearloss, not of the scene, and stops the run loudly rather than putting NaN in a report.
-pub(crate) fn law_at(spec: &crate::model::FrictionLawSpec, ctx: &LawContext) -> Box<dyn FrictionLaw> {
-    spec.build(ctx).unwrap_or_else(|missing| panic!("lowering let a law through without its input: {missing}"))
-}
-
 pub(super) fn evaluate_law(
     eval: &Setup,
     spec: &crate::model::FrictionLawSpec,
@@ -130,7 +122,7 @@ pub(super) fn evaluate_law(
     curves: bool,
 ) -> LawEvaluation {
     let ctx = eval.law_context(state);
-    let law = law_at(spec, &ctx);
+    let law = super::setup::law_at(spec, &ctx);
     let law = law.as_ref();
     let diverges = law.diverges_at_pitch();
     let value_at = |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };

@@ -134,3 +134,11 @@ pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
 pub fn contact_table(eval: &Setup, state: &OperatingState) -> Vec<(Option<&'static str>, ContactPoint)> {
     eval.table_rows.iter().map(|(name, u)| (*name, eval.contact_at(*u, state))).collect()
 }
+
+/// The law of `spec` at `ctx`. Lowering refuses a scene that lacks an input a law needs (the
+/// catalogue's `needs`, checked with the law's span), and whether a scene gives an input does not
+/// change between operating points: a [`crate::friction::catalog::MissingInput`] here is a defect
+/// of gearloss, not of the scene, and stops the run loudly rather than putting NaN in a report.
+pub(crate) fn law_at(spec: &crate::model::FrictionLawSpec, ctx: &LawContext) -> Box<dyn crate::friction::FrictionLaw> {
+    spec.build(ctx).unwrap_or_else(|missing| panic!("lowering let a law through without its input: {missing}"))
+}

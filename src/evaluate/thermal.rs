@@ -80,7 +80,7 @@ impl<'a> Losses<'a> {
                 tribology,
                 sharing: self.setup.sharing(),
             };
-            let law = super::laws::law_at(spec, &ctx);
+            let law = super::setup::law_at(spec, &ctx);
             efficiency::evaluate_efficiencies(&ctx, law.as_ref(), &[f]).first().map_or(0.0, |e| e.power_loss)
         } else {
             0.0

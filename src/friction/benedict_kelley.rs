@@ -11,7 +11,7 @@
 //! assert!(mu < 0.0 && mu > -0.1, "{mu}");
 //! ```
 
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};

@@ -4,7 +4,7 @@
 //! 50/(50 − S_rms) ≤ 3. Not equivalent to He–Cho–Singh's eq 14 (it runs ≈ 0.08 higher), so both
 //! are kept, named apart. Diverges (logarithmically) at P.
 
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};

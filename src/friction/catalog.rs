@@ -5,6 +5,7 @@
 //! builds a law for an operating point with [`FrictionLawSpec::build`]. The laws live one per file.
 
 pub use super::law_id::LawId;
+pub use super::needs::{MissingInput, Needs};
 use super::{FrictionLaw, LawContext};
 use crate::diagnostics::Span;
 use crate::quantity::Dimension;
@@ -56,56 +57,6 @@ impl FrictionLawSpec {
     /// the law needs and the scene lacks (lowering reports it first, with its span) is a [`MissingInput`].
     pub fn build(&self, ctx: &LawContext) -> BuiltLaw {
         (self.law.entry().build)(self, ctx)
-    }
-}
-
-/// An input a law needs that the scene does not give: an argument or one of its [`Needs`].
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("`{}` needs `{key}`, which the scene does not give", law.name())]
-pub struct MissingInput {
-    pub law: LawId,
-    pub key: String,
-}
-
-impl MissingInput {
-    /// What to write to give it.
-    pub fn hint(&self) -> String {
-        format!("give `{}` in the scene, or leave `{}` out of the friction block", self.key, self.law.name())
-    }
-}
-
-/// Something a law reads from the scene, named by the key the user writes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Needs {
-    /// `roughness_ra` on both gears.
-    RoughnessRa,
-    /// `roughness_rq` on both gears.
-    RoughnessRq,
-    /// `roughness_rz` on both gears.
-    RoughnessRz,
-    /// `density` or `kinematic_viscosity` on the lubricant.
-    KinematicViscosity,
-    /// `pressure_viscosity` on the lubricant.
-    PressureViscosity,
-    /// A `lubricant` block at all.
-    Lubricant,
-}
-
-impl Needs {
-    /// The value a scene gives for this need (from [`crate::tribology::Tribology`]), or the need.
-    pub fn of(self, given: Option<f64>) -> Result<f64, Needs> {
-        given.ok_or(self)
-    }
-
-    pub fn key(self) -> &'static str {
-        match self {
-            Needs::RoughnessRa => "roughness_ra",
-            Needs::RoughnessRq => "roughness_rq",
-            Needs::RoughnessRz => "roughness_rz",
-            Needs::KinematicViscosity => "kinematic_viscosity",
-            Needs::PressureViscosity => "pressure_viscosity",
-            Needs::Lubricant => "lubricant",
-        }
     }
 }
 

@@ -5,7 +5,7 @@
 //! over A–E at the operating point unless `mu` is given (He–Cho–Singh §3.5, their ref \[4\]).
 
 use super::benedict_kelley::BenedictKelley;
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::smoothed_coulomb::SmoothedCoulomb;
 use super::xu::Xu;
 use super::{FrictionLaw, LawContext, Parameter, Regime};

@@ -8,7 +8,7 @@
 //! is 0.39–1.96 GPa in those units). With these readings μ ≈ 0.02–0.1 on Bernard's Table 2 data.
 //! It diverges at P as V_s^−1/2 (integrable). Never used inside Model V.
 
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};

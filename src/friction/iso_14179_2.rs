@@ -9,7 +9,7 @@
 //! 1 m/s μ is underestimated, which is flagged. X_L is the lubricant's (ISO/TR 14179-2's table by
 //! base oil) unless the law is given `x_l`.
 
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::{signed, FrictionLaw, LawContext, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::units;

@@ -27,6 +27,7 @@ pub mod iso_14179_2;
 pub mod law_id;
 pub mod matsumoto;
 pub mod misharin;
+pub mod needs;
 pub mod odonoghue_cameron;
 pub mod smoothed_coulomb;
 pub mod xu;

@@ -4,7 +4,7 @@
 //! μ ≈ 1–4 (implausible), R in millimetres 0.03–0.1, so **R is taken in mm** and every report says so.
 //! Diverges at P as SR^−1/3 (integrable).
 
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};

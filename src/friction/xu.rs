@@ -12,7 +12,7 @@
 //! assert_eq!(law.magnitude(&c), 0.0);
 //! ```
 
-use super::catalog::Needs;
+use super::needs::Needs;
 use super::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, FilmInputs, Tribology};
