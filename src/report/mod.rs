@@ -7,6 +7,7 @@ pub mod dynamics_records;
 pub mod finding;
 pub mod floats;
 pub mod friction;
+pub mod law_values;
 pub mod gearbox_inputs;
 pub mod geometry;
 pub mod helical;
