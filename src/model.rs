@@ -96,6 +96,9 @@ pub enum LoadSharing {
     Equal,
     /// Every contact carries the whole load (He–Cho–Singh).
     None,
+    /// By the compatibility of the teeth's deflections: pair j carries k_j max(0, δ − e_j) of the
+    /// potential-energy stiffness k_j and tip relief e_j (README, "Mesh stiffness from the teeth").
+    Stiffness,
 }
 
 /// How the module was given. For a helical pair `module` and `diametral_pitch` are normal values

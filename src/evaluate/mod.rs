@@ -77,6 +77,14 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
         geometry,
         reduced_modulus: e_r,
         sharing: scene.gears.load_sharing,
+        stiffness_sharing: (scene.gears.load_sharing == crate::model::LoadSharing::Stiffness)
+            .then(|| {
+                scene.gears.pair_stiffness().map(|stiffness| crate::geometry::teeth::load_sharing::LoadSharing {
+                    stiffness,
+                    reliefs: scene.gears.reliefs(),
+                })
+            })
+            .flatten(),
         tribology,
         formulations: analyses.efficiency.clone().unwrap_or_default(),
         film_inputs,

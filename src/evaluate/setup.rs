@@ -24,6 +24,8 @@ pub struct Setup {
     /// E' (Pa).
     pub reduced_modulus: f64,
     pub sharing: LoadSharing,
+    /// The pair's stiffness and reliefs, for `load_sharing = stiffness` (built once per geometry).
+    pub stiffness_sharing: Option<crate::geometry::teeth::load_sharing::LoadSharing>,
     pub tribology: Tribology,
     /// Ohlendorf's gear loss factor H_V (geometry only).
     pub ohlendorf_loss_factor: f64,
@@ -34,10 +36,12 @@ pub struct Setup {
 }
 
 impl Setup {
-    pub fn sharing(&self) -> Sharing {
-        match self.sharing {
-            LoadSharing::Equal => Sharing::Equal,
-            LoadSharing::None => Sharing::Whole,
+    pub fn sharing(&self) -> Sharing<'_> {
+        match (self.sharing, &self.stiffness_sharing) {
+            (LoadSharing::None, _) => Sharing::Whole,
+            (LoadSharing::Stiffness, Some(model)) => Sharing::Stiffness(model),
+            // (Lowering has checked that the teeth can be built when the scene shares by stiffness.)
+            (LoadSharing::Equal | LoadSharing::Stiffness, _) => Sharing::Equal,
         }
     }
 

@@ -46,7 +46,7 @@ pub struct LawContext<'a> {
     pub geometry: &'a PairGeometry,
     pub state: OperatingState,
     pub tribology: Tribology,
-    pub sharing: Sharing,
+    pub sharing: Sharing<'a>,
 }
 
 impl LawContext<'_> {

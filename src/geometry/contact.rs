@@ -4,27 +4,15 @@
 
 use serde::Serialize;
 
+pub use super::elastic::reduced_modulus;
 use super::pair::PairGeometry;
+pub use super::sharing::Sharing;
 
 /// One operating point in SI: pinion torque (N·m) and pinion speed (rad/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct OperatingState {
     pub pinion_torque: f64,
     pub pinion_speed: f64,
-}
-
-/// How the normal load is shared between pairs in contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Sharing {
-    /// 1/n of the load on each of n pairs in contact.
-    Equal,
-    /// Every contact carries the whole load.
-    Whole,
-}
-
-/// E' = 2 / [(1 − ν1²)/E1 + (1 − ν2²)/E2] (physics notes; He–Cho–Singh print a misplaced parenthesis).
-pub fn reduced_modulus(e: [f64; 2], nu: [f64; 2]) -> f64 {
-    2.0 / ((1.0 - nu[0] * nu[0]) / e[0] + (1.0 - nu[1] * nu[1]) / e[1])
 }
 
 /// The contact state at one point; SI units throughout.
@@ -74,11 +62,22 @@ impl PairGeometry {
         op.pinion_speed / self.gear_ratio
     }
 
-    /// Load share of one of `n` pairs in contact under the given sharing rule.
-    pub fn load_share(n: usize, sharing: Sharing) -> f64 {
+    /// [load share the law sees, force share in the balance] of the pair at `s` (from P) when `n`
+    /// pairs are in contact: 1/n and 1/n (`equal`); 1 and 1/n (`none`); by stiffness, the pair's
+    /// own F_j/F_bn for both, F_j from the compatibility of the deflections at this torque.
+    pub fn shares(&self, s: f64, n: usize, op: &OperatingState, sharing: Sharing) -> [f64; 2] {
+        let equal = if n > 0 { 1.0 / n as f64 } else { 0.0 };
         match sharing {
-            Sharing::Equal => 1.0 / n as f64,
-            Sharing::Whole => 1.0,
+            Sharing::Equal => [equal, equal],
+            Sharing::Whole => [1.0, equal],
+            Sharing::Stiffness(model) => {
+                // Positions from A along the path; the transverse force T_p / r_b1 (F_bn of a spur pair).
+                let q = s + (self.points.p - self.points.a);
+                let force = op.pinion_torque / self.base_radius[0];
+                let share =
+                    if force > 0.0 { model.at(q, force).load_of(q) / force } else { model.at(q, 1.0).load_of(q) };
+                [share, share]
+            }
         }
     }
 
@@ -111,9 +110,9 @@ impl PairGeometry {
         sharing: Sharing,
         n: usize,
     ) -> ContactPoint {
-        let share = Self::load_share(n, sharing);
-        let w = share * self.normal_load(op) / self.face_width;
-        self.contact_with_load(u, s, op, reduced_modulus, w, [share, if n > 0 { 1.0 / n as f64 } else { 0.0 }], n)
+        let shares = self.shares(s, n, op, sharing);
+        let w = shares[0] * self.normal_load(op) / self.face_width;
+        self.contact_with_load(u, s, op, reduced_modulus, w, shares, n)
     }
 
     /// The contact state at `u` (s = u − T1P, exact) under a load per unit contact length `w`

@@ -74,7 +74,7 @@ pub struct Mesh<'a> {
     pub state: OperatingState,
     /// E' (Pa).
     pub reduced_modulus: f64,
-    pub sharing: Sharing,
+    pub sharing: Sharing<'a>,
 }
 
 /// Gauss–Legendre nodes per piece of a contact line in [`Mesh::contacts_at`] (each piece between
@@ -147,9 +147,28 @@ impl Mesh<'_> {
     fn mean_line_contact(&self, u: f64, s: f64) -> ContactPoint {
         let g = self.pair;
         let length = g.mean_contact_length();
-        let w = g.normal_load(&self.state) / length;
-        let share = g.face_width / length;
+        let (w, share) = match self.sharing {
+            // The mean mesh's line load at u (LoadSharing::mean_deflection).
+            Sharing::Stiffness(model) => {
+                let force = self.transverse_force();
+                let w = model.line_density(u - g.points.a, model.mean_deflection(force));
+                let f_bn = g.normal_load(&self.state);
+                (w, if f_bn > 0.0 { w * g.face_width / f_bn } else { 0.0 })
+            }
+            _ => (g.normal_load(&self.state) / length, g.face_width / length),
+        };
         g.contact_with_load(u, s, &self.state, self.reduced_modulus, w, [share, share], 0)
+    }
+
+    /// The transverse force along the line of action, T_p / r_b1 (N); 1 N at zero torque, where the
+    /// shares by stiffness are read at a vanishing load.
+    fn transverse_force(&self) -> f64 {
+        let f = self.state.pinion_torque / self.pair.base_radius[0];
+        if f > 0.0 {
+            f
+        } else {
+            1.0
+        }
     }
 
     /// The contact state at distance `s` from the pitch point, with `s` exact (for integrands near P).
@@ -210,30 +229,45 @@ impl Mesh<'_> {
         let pitch = g.points.p;
         let per_u = 1.0 / g.base_helix_angle.sin() / length;
         let mut out = Vec::with_capacity(lines.len() * 2 * nodes);
+        // The equal line load at the force the shares are read at (w, or its value at 1 N at zero torque).
+        let w_ref = self.transverse_force() / (g.base_helix_angle.cos() * length);
+        // By stiffness: the gap δ of this instant, from any line's mid-face position (u at z = 0).
+        let stiffness = match self.sharing {
+            Sharing::Stiffness(model) => lines.iter().next().map(|l| {
+                let mid = l.u[0] - l.z[0] * g.base_helix_angle.tan() - g.points.a;
+                (model, model.at(mid, self.transverse_force()).deflection)
+            }),
+            _ => None,
+        };
         for line in lines.iter() {
             let (lo, hi) = (line.u[0].min(line.u[1]), line.u[0].max(line.u[1]));
             let mut push = |s: f64, dl: f64| {
+                // By stiffness the line load at s relative to the equal one, w_s/w.
+                let r =
+                    stiffness.map_or(1.0, |(model, delta)| model.line_density(pitch + s - g.points.a, delta) / w_ref);
                 let c = g.contact_with_load(
                     pitch + s,
                     s,
                     &self.state,
                     self.reduced_modulus,
-                    w,
-                    [load_share, dl],
+                    r * w,
+                    [r * load_share, r * dl],
                     lines.len(),
                 );
                 out.push(c);
             };
+            // Pieces cut at P (and, by stiffness, where the relief bends the line load), each graded
+            // towards its end nearer P: s = s_near + (s_far − s_near) v³, ds = 3 |h| v² dv.
+            let mut cuts = vec![lo, hi];
             if line_pieces(lo, hi, pitch) == 2 {
-                // Two pieces graded towards P: s = h v³, ds = 3 h v² dv.
-                for h in [lo - pitch, hi - pitch] {
-                    for (v, wv) in x.iter().zip(wt) {
-                        push(h * v * v * v, 3.0 * h.abs() * v * v * wv * per_u);
-                    }
-                }
-            } else {
-                // One side of P: graded towards the end nearer P, s = s_near + (s_far − s_near) v³.
-                let (near, far) = if lo >= pitch { (lo, hi) } else { (hi, lo) };
+                cuts.push(pitch);
+            }
+            if let Some((model, delta)) = stiffness {
+                cuts.extend(model.kinks(delta).into_iter().map(|q| q + g.points.a).filter(|u| *u > lo && *u < hi));
+            }
+            cuts.sort_by(f64::total_cmp);
+            for piece in cuts.windows(2) {
+                let (near, far) = if piece[0] >= pitch { (piece[0], piece[1]) } else { (piece[1], piece[0]) };
                 let h = far - near;
                 for (v, wv) in x.iter().zip(wt) {
                     push(near - pitch + h * v * v * v, 3.0 * h.abs() * v * v * wv * per_u);

@@ -4,6 +4,7 @@
 
 pub mod contact;
 pub mod contact_lines;
+pub mod elastic;
 pub mod involute;
 pub mod mesh;
 pub mod pair;
@@ -11,6 +12,7 @@ pub mod pair_checks;
 pub mod pair_input;
 pub mod path;
 pub mod regions;
+pub mod sharing;
 pub mod stiffness;
 pub mod teeth;
 

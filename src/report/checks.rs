@@ -62,6 +62,7 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     out.push(note(match scene.gears.load_sharing {
         LoadSharing::Equal => "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into(),
         LoadSharing::None => "load sharing: none (every contact carries the whole normal load)".into(),
+        LoadSharing::Stiffness => "load sharing: by stiffness (pair j carries k_j max(0, δ − e_j) of the potential-energy stiffness and tip relief, δ closing the balance at each torque)".into(),
     }));
     out
 }

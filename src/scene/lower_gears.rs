@@ -74,8 +74,9 @@ pub(super) fn lower_gears(
         super::lower_tooth_system::lower_tooth_system(&f, errors);
     let center_distance = positive(f.optional("center_distance", errors), "center_distance", errors);
     let face_width = positive(f.required("face_width", "14 mm", errors), "face_width", errors);
-    let load_sharing = match f.name("load_sharing", &["equal", "none"], errors).map(|n| n.text.as_str()) {
+    let load_sharing = match f.name("load_sharing", &["equal", "none", "stiffness"], errors).map(|n| n.text.as_str()) {
         Some("none") => LoadSharing::None,
+        Some("stiffness") => LoadSharing::Stiffness,
         _ => LoadSharing::Equal,
     };
     let mut gear = |name: &str| -> Option<Gear> {

@@ -97,6 +97,7 @@ impl GearPair {
     /// given), an analysis asks for the transmission error, or the dynamics read their stiffness.
     pub fn wants_teeth(&self, analyses: &Analyses, dynamics: Option<&DynamicsSpec>) -> bool {
         analyses.transmission_error.is_some()
+            || self.load_sharing == crate::model::LoadSharing::Stiffness
             || dynamics.is_some_and(|d| d.stiffness.is_potential_energy())
             || [&self.pinion, &self.wheel]
                 .iter()

@@ -14,6 +14,7 @@ mod fuzz_mutations;
 mod geometry;
 mod helical;
 mod helical_physics;
+mod load_sharing;
 mod losses;
 mod oil_sweep;
 mod properties;

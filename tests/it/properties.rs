@@ -32,7 +32,7 @@ fn pair() -> impl Strategy<Value = PairGeometry> {
     )
 }
 
-fn context(g: &PairGeometry, torque: f64, rpm: f64, sharing: Sharing) -> LawContext<'_> {
+fn context<'a>(g: &'a PairGeometry, torque: f64, rpm: f64, sharing: Sharing<'a>) -> LawContext<'a> {
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: torque, pinion_speed: rpm * std::f64::consts::PI / 30.0 },

@@ -182,6 +182,54 @@ impl LoadSharing {
     fn line_load(&self, s: f64, delta: f64) -> f64 {
         let k = &self.stiffness;
         let (lo, hi) = ((s - 0.5 * k.lead).max(0.0), (s + 0.5 * k.lead).min(k.path));
+        k.face_width / k.lead * self.path_load(lo, hi, delta)
+    }
+
+    /// The transverse load per unit face width at q (from A) under a gap δ: k_w(q) max(0, δ − e(q))
+    /// (N/m; zero off the path). Along a helical contact line it is also the normal load per unit
+    /// length of the line (the 1/cos β_b of each cancels).
+    pub fn line_density(&self, q: f64, delta: f64) -> f64 {
+        let k = &self.stiffness;
+        if !(0.0..=k.path).contains(&q) {
+            return 0.0;
+        }
+        k.per_width(q) * (delta - self.reliefs.at(k.path, q)).max(0.0)
+    }
+
+    /// The gap δ̄ of the mean mesh: (b/p_b) ∫₀^g_α k_w max(0, δ̄ − e) dq = `force` (N). Without relief
+    /// δ̄ = F/K̄. A helical pair's mean contact at a position (the mean |μ| along the path) carries
+    /// [`LoadSharing::line_density`] at δ̄, as equal sharing's carries F_bn/L̄.
+    pub fn mean_deflection(&self, force: f64) -> f64 {
+        let k = &self.stiffness;
+        let load = |d: f64| k.face_width / k.base_pitch * self.path_load(0.0, k.path, d);
+        // Without relief the load is δ K̄: the root, and a lower bound of it with relief.
+        let lo = force / (k.face_width / k.base_pitch * k.weighted_integral(0.0, k.path)[0]);
+        if self.reliefs.is_empty() {
+            return lo;
+        }
+        let e_max: f64 = self.reliefs.0.iter().flatten().map(|r| r.amount).sum();
+        brent(|d| load(d) - force, lo, lo + e_max, 1e-15 * (lo + e_max))
+    }
+
+    /// Where the line load k_w max(0, δ − e) has a kink under a gap δ (positions from A, inside the
+    /// path): the starts of the reliefs and where a relief reaches δ (the load lifts off there).
+    pub fn kinks(&self, delta: f64) -> Vec<f64> {
+        let path = self.stiffness.path;
+        let mut edges = vec![0.0, path];
+        edges.extend(self.reliefs.starts(path).into_iter().filter(|q| *q > 0.0 && *q < path));
+        edges.sort_by(f64::total_cmp);
+        let mut out: Vec<f64> = edges[1..edges.len() - 1].to_vec();
+        for w in edges.windows(2) {
+            let [c0, c1, c2] = self.reliefs.polynomial_near(path, 0.5 * (w[0] + w[1]));
+            out.extend(quadratic_roots(c2, c1, c0 - delta).into_iter().filter(|r| *r > w[0] && *r < w[1]));
+        }
+        out.sort_by(f64::total_cmp);
+        out
+    }
+
+    /// ∫ k_w(q) max(0, δ − e(q)) dq over [lo, hi] ⊂ [0, g_α], in closed form (N/m · m).
+    fn path_load(&self, lo: f64, hi: f64, delta: f64) -> f64 {
+        let k = &self.stiffness;
         if hi <= lo {
             return 0.0;
         }
@@ -203,7 +251,7 @@ impl LoadSharing {
                 }
             }
         }
-        k.face_width / k.lead * total
+        total
     }
 }
 

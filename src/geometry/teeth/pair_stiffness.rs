@@ -17,7 +17,7 @@
 
 use super::compliance::ToothCompliance;
 use super::outline::{OutlineProblem, ToothInput, ToothOutline};
-use crate::geometry::contact::reduced_modulus;
+use crate::geometry::elastic::reduced_modulus;
 use crate::geometry::pair::PairGeometry;
 use crate::numerics::chebyshev::{clenshaw, Lobatto, DEGREES};
 

@@ -1,0 +1,135 @@
+//! `load_sharing = stiffness`: the contacts the friction laws and the efficiency read carry each
+//! pair's own share of the load, from the potential-energy stiffness and the tip relief, checked
+//! against the stiffness directly, the balance of forces and an independent integral of the loss.
+
+use gearloss::efficiency::{mean_efficiency, Formulation};
+use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::LawContext;
+use gearloss::geometry::contact::Sharing;
+use gearloss::geometry::mesh::{Mesh, LINE_NODES};
+use gearloss::geometry::teeth::load_sharing::{LoadSharing, ReliefShape, Reliefs, TipRelief};
+use gearloss::geometry::teeth::pair_stiffness::{Bodies, PairStiffness};
+use gearloss::geometry::{OperatingState, PairGeometry};
+use gearloss::numerics::quadrature::integrate;
+
+fn steel() -> Bodies {
+    Bodies { young: [206e9; 2], poisson: [0.3; 2], root_radius: [None; 2], bore_radius: [None; 2] }
+}
+
+fn geometry(path: &str) -> PairGeometry {
+    crate::scene(&crate::root().join(path)).gears.geometry().unwrap()
+}
+
+fn model(g: &PairGeometry, relief: Option<f64>) -> LoadSharing {
+    let r = relief.map(|amount| TipRelief { amount, length: 1.8e-3, shape: ReliefShape::Linear });
+    LoadSharing { stiffness: PairStiffness::new(g, &steel()).unwrap(), reliefs: Reliefs([r, r]) }
+}
+
+const STATE: OperatingState = OperatingState { pinion_torque: 135.0, pinion_speed: 100.0 };
+
+fn mesh<'a>(g: &'a PairGeometry, sharing: Sharing<'a>) -> Mesh<'a> {
+    Mesh { pair: g, state: STATE, reduced_modulus: 226.4e9, sharing }
+}
+
+/// Spur pair without relief: at every instant each contact's share (law and balance alike) is
+/// k_j / Σ k of the pairs in contact, read from the stiffness directly, and the shares add to one
+/// (1e-12).
+#[test]
+fn spur_shares_follow_the_stiffness() {
+    let g = geometry("specs/fzg_type_c.gear");
+    let m = model(&g, None);
+    let k = &m.stiffness;
+    for i in 0..200 {
+        let tau = (i as f64 + 0.37) / 200.0;
+        let contacts = mesh(&g, Sharing::Stiffness(&m)).contacts_at(tau);
+        let q: Vec<f64> = contacts.iter().map(|c| c.u - g.points.a).collect();
+        let total: f64 = q.iter().map(|q| k.pair_at(*q)).sum();
+        for (c, q) in contacts.iter().zip(&q) {
+            let expected = k.pair_at(*q) / total;
+            assert!((c.force_share - expected).abs() < 1e-12, "τ = {tau}: {} vs {expected}", c.force_share);
+            assert_eq!(c.load_share, c.force_share);
+        }
+        let sum: f64 = contacts.iter().map(|c| c.force_share).sum();
+        assert!((sum - 1.0).abs() < 1e-12, "τ = {tau}: Σ = {sum}");
+    }
+}
+
+/// With 20 µm × 1.8 mm linear relief on both gears: the shares still add to one (1e-12); a pair
+/// entering at A or leaving at E carries less than the equal half (it enters relieved) and the
+/// single pair at the pitch point carries everything.
+#[test]
+fn relief_unloads_the_pairs_at_the_ends_of_the_path() {
+    let g = geometry("specs/fzg_type_c.gear");
+    let m = model(&g, Some(20e-6));
+    for i in 0..200 {
+        let tau = (i as f64 + 0.37) / 200.0;
+        let sum: f64 = mesh(&g, Sharing::Stiffness(&m)).contacts_at(tau).iter().map(|c| c.force_share).sum();
+        assert!((sum - 1.0).abs() < 1e-12, "τ = {tau}: Σ = {sum}");
+    }
+    let at = |u: f64| mesh(&g, Sharing::Stiffness(&m)).contact_at(u);
+    let entering = at(g.points.a + 1e-9);
+    let leaving = at(g.points.e - 1e-9);
+    assert_eq!((entering.pairs_in_contact, leaving.pairs_in_contact), (2, 2));
+    assert!(entering.load_share < 0.1 && leaving.load_share < 0.1, "{} {}", entering.load_share, leaving.load_share);
+    assert!(entering.load_share >= 0.0 && leaving.load_share >= 0.0);
+    let pitch = at(g.points.p);
+    assert_eq!(pitch.pairs_in_contact, 1);
+    assert!((pitch.load_share - 1.0).abs() < 1e-12);
+}
+
+/// Coulomb friction, spur pair, no relief: the external formulation's loss 1 − η̄ equals
+/// μ (1/r_b1 + 1/r_b2) ∫₀¹ Σ_j w_j |s_j| dτ with w_j = k(q_j)/Σk, integrated here from the
+/// stiffness alone (pairs at q_j = (τ + j) p_b, breaks where a pair enters, leaves or passes P):
+/// 1e-9 relative. The shares by stiffness put more load near P, where sliding is slow, so the
+/// loss is below equal sharing's.
+#[test]
+fn coulomb_loss_with_stiffness_sharing_matches_an_independent_integral() {
+    let g = geometry("specs/fzg_type_c.gear");
+    let m = model(&g, None);
+    let k = &m.stiffness;
+    let (pb, path, to_p) = (g.base_pitch, g.points.e - g.points.a, g.points.p - g.points.a);
+    let pairs = |tau: f64| (0..4).map(move |j| (tau + j as f64) * pb).filter(move |q| *q < path);
+    let integrand = |tau: f64| {
+        let total: f64 = pairs(tau).map(|q| k.pair_at(q)).sum();
+        pairs(tau).map(|q| k.pair_at(q) / total * (q - to_p).abs()).sum::<f64>()
+    };
+    let mut breaks = vec![0.0, 1.0];
+    for x in [path, to_p] {
+        breaks.extend((0..4).map(|j| x / pb - j as f64).filter(|t| *t > 0.0 && *t < 1.0));
+    }
+    breaks.sort_by(f64::total_cmp);
+    let mu = 0.04;
+    let expected = mu * (1.0 / g.base_radius[0] + 1.0 / g.base_radius[1]) * integrate(integrand, &breaks, 1e-13).value;
+    let law = Coulomb { mu };
+    let ctx = |sharing| LawContext { geometry: &g, state: STATE, tribology: Default::default(), sharing };
+    let stiff = 1.0 - mean_efficiency(&ctx(Sharing::Stiffness(&m)), &law, Formulation::External).value;
+    assert!((stiff / expected - 1.0).abs() < 1e-9, "{stiff} vs {expected}");
+    let equal = 1.0 - mean_efficiency(&ctx(Sharing::Equal), &law, Formulation::External).value;
+    assert!(stiff < equal, "{stiff} vs equal {equal}");
+}
+
+/// Helical pairs (with and without relief): the nodes of the contact lines carry line loads that
+/// add up to the normal load, Σ w dl / F_bn = Σ force shares = 1: 1e-6 with the rule the efficiency
+/// uses and 1e-10 with the doubled rule its error estimate compares against (the lines are cut where
+/// the relief bends the load, so each Gauss rule meets smooth pieces; equal sharing's is exact).
+#[test]
+fn helical_line_loads_carry_the_normal_load() {
+    for p in ["specs/metric_helical.gear", "specs/nasa_art_helical.gear"] {
+        let g = geometry(p);
+        for relief in [None, Some(10e-6)] {
+            let mut m = model(&g, None);
+            if let Some(amount) = relief {
+                let r = TipRelief { amount, length: 0.3 * m.stiffness.path, shape: ReliefShape::Parabolic };
+                m.reliefs = Reliefs([Some(r), Some(r)]);
+            }
+            for i in 0..50 {
+                let tau = (i as f64 + 0.37) / 50.0;
+                for (nodes, tol) in [(LINE_NODES, 1e-6), (2 * LINE_NODES, 1e-10)] {
+                    let stiff = mesh(&g, Sharing::Stiffness(&m)).line_contacts(tau, nodes);
+                    let sum: f64 = stiff.iter().map(|c| c.force_share).sum();
+                    assert!((sum - 1.0).abs() < tol, "{p} {relief:?} τ = {tau}, {nodes} nodes: Σ w dl / F_bn = {sum}");
+                }
+            }
+        }
+    }
+}
