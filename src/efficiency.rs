@@ -17,6 +17,7 @@
 use serde::Serialize;
 
 use crate::friction::{FrictionLaw, LawContext};
+use crate::geometry::contact::Sharing;
 use crate::geometry::mesh::LINE_NODES;
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
@@ -124,8 +125,17 @@ pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[Cont
 }
 
 /// Times in (0, 1) where the integrand changes form: zone boundaries, pitch passages, law switches.
+/// With `load_sharing = stiffness` and tip relief, also where a spur pair's load bends
+/// ([`crate::geometry::teeth::load_sharing::LoadSharing::spur_kink_times`]).
 pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
-    ctx.geometry.cycle_break_times(&law.switch_points())
+    let mut times = ctx.geometry.cycle_break_times(&law.switch_points());
+    if let Sharing::Stiffness(model) = ctx.sharing {
+        let force = ctx.state.pinion_torque / ctx.geometry.base_radius[0];
+        times.extend(model.spur_kink_times(if force > 0.0 { force } else { 1.0 }));
+        times.sort_by(f64::total_cmp);
+        times.dedup();
+    }
+    times
 }
 
 /// η̄ over one mesh cycle, with its error estimate.

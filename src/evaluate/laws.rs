@@ -8,6 +8,7 @@ use super::setup::Setup;
 use crate::efficiency::{self, EfficiencyResult};
 use crate::friction::catalog::LawId;
 use crate::friction::{FrictionLaw, LawContext, Parameter, Regime};
+use crate::geometry::contact::Sharing;
 use crate::geometry::{ContactPoint, OperatingState};
 use crate::model::Formulation;
 use crate::numerics::quadrature::Integral;
@@ -64,6 +65,8 @@ pub struct LawCurves {
     pub mu: Vec<f64>,
     /// Local friction power loss at the same positions (W).
     pub power_loss: Vec<f64>,
+    /// With `load_sharing = stiffness`: the same under equal sharing, to set beside it.
+    pub power_loss_equal: Option<Vec<f64>>,
     /// η(τ) at `cycle_times` for each formulation.
     pub efficiency: Vec<(Formulation, Vec<f64>)>,
 }
@@ -158,6 +161,14 @@ pub(super) fn evaluate_law(
                 .iter()
                 .map(|c| if diverges && c.s == 0.0 { 0.0 } else { efficiency::local_power_loss(&ctx, law, c) })
                 .collect(),
+            power_loss_equal: matches!(ctx.sharing, Sharing::Stiffness(_)).then(|| {
+                let equal = LawContext { sharing: Sharing::Equal, ..ctx };
+                eval.positions
+                    .iter()
+                    .map(|u| equal.contact_at(*u))
+                    .map(|c| if diverges && c.s == 0.0 { 0.0 } else { efficiency::local_power_loss(&equal, law, &c) })
+                    .collect()
+            }),
             efficiency: eval
                 .formulations
                 .iter()

@@ -74,8 +74,7 @@ impl PairGeometry {
                 // Positions from A along the path; the transverse force T_p / r_b1 (F_bn of a spur pair).
                 let q = s + (self.points.p - self.points.a);
                 let force = op.pinion_torque / self.base_radius[0];
-                let share =
-                    if force > 0.0 { model.at(q, force).load_of(q) / force } else { model.at(q, 1.0).load_of(q) };
+                let share = model.spur_share(q, if force > 0.0 { force } else { 1.0 });
                 [share, share]
             }
         }

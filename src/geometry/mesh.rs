@@ -205,10 +205,24 @@ impl Mesh<'_> {
         }
         let exact = d.map(|d| g.base_pitch * d);
         let mut items = [ContactPoint::default(); MAX_CONTACTS];
-        for (slot, u) in items.iter_mut().zip(&positions[..n]) {
+        // By stiffness, the pairs' shares solved once for the instant.
+        let mut shares = [0.0; MAX_CONTACTS];
+        if let Sharing::Stiffness(model) = self.sharing {
+            let force = self.transverse_force();
+            let q = positions.map(|u| u - g.points.a);
+            model.spur_loads(&q[..n], force, &mut shares);
+            shares.iter_mut().for_each(|f| *f /= force);
+        }
+        for (j, (slot, u)) in items.iter_mut().zip(&positions[..n]).enumerate() {
             let s = u - g.points.p;
             let s = exact.filter(|e| (s - e).abs() < 1e-6 * g.base_pitch).unwrap_or(s);
-            *slot = g.contact_exact(*u, s, &self.state, self.reduced_modulus, self.sharing, n);
+            *slot = match self.sharing {
+                Sharing::Stiffness(_) => {
+                    let w = shares[j] * g.normal_load(&self.state) / g.face_width;
+                    g.contact_with_load(*u, s, &self.state, self.reduced_modulus, w, [shares[j]; 2], n)
+                }
+                _ => g.contact_exact(*u, s, &self.state, self.reduced_modulus, self.sharing, n),
+            };
         }
         Contacts::Pairs(items, n)
     }

@@ -168,7 +168,13 @@ pub(super) fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves>
             let Some(c) = &law.curves else { continue };
             let label = friction::law_label(spec);
             pc.mu.push((label.clone(), c.mu.clone()));
-            pc.power_loss.push((label.clone(), c.power_loss.clone()));
+            match &c.power_loss_equal {
+                Some(equal) => {
+                    pc.power_loss.push((format!("{label}, shared by stiffness"), c.power_loss.clone()));
+                    pc.power_loss.push((format!("{label}, shared equally"), equal.clone()));
+                }
+                None => pc.power_loss.push((label.clone(), c.power_loss.clone())),
+            }
             for (f, eta) in &c.efficiency {
                 pc.efficiency.push((format!("{label} {}", f.name()), eta.clone()));
             }

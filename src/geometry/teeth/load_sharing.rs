@@ -18,7 +18,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::pair_stiffness::PairStiffness;
-use crate::numerics::roots::brent;
+use crate::numerics::roots::{bracketed_roots, brent};
 
 /// How the relief grows toward the tip.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -126,6 +126,9 @@ impl Shared {
     }
 }
 
+/// The most spur pairs in contact at once that [`LoadSharing::spur_loads`] takes (ε_α < 8).
+pub const MAX_PAIRS: usize = 8;
+
 /// A pair's stiffness with its reliefs: the load sharing at any torque.
 #[derive(Debug, Clone)]
 pub struct LoadSharing {
@@ -158,24 +161,65 @@ impl LoadSharing {
     }
 
     fn spur_with_relief(&self, positions: &[f64], force: f64) -> Shared {
+        let mut loads = [0.0; MAX_PAIRS];
+        let deflection = self.spur_loads(positions, force, &mut loads);
+        Shared { deflection, loads: positions.iter().zip(loads).map(|(q, f)| (*q, f)).collect() }
+    }
+
+    /// The share F_j/F of the spur pair at `q` (from A) under `force` (N), with the pairs in
+    /// contact beside it at q ± k p_b; allocation-free, as [`LoadSharing::spur_loads`].
+    pub fn spur_share(&self, q: f64, force: f64) -> f64 {
         let k = &self.stiffness;
-        let mut pairs: Vec<(f64, f64, f64)> =
-            positions.iter().map(|q| (*q, k.pair_at(*q), self.reliefs.at(k.path, *q))).collect();
-        pairs.sort_by(|a, b| a.2.total_cmp(&b.2));
-        let (mut sum_k, mut sum_ke) = (0.0, 0.0);
-        let mut delta = f64::NAN;
-        for (i, (_, kj, ej)) in pairs.iter().enumerate() {
-            sum_k += kj;
-            sum_ke += kj * ej;
-            let d = (force + sum_ke) / sum_k;
-            if pairs.get(i + 1).is_none_or(|next| d <= next.2) {
-                delta = d;
+        let (pb, path) = (k.base_pitch, k.path);
+        let first = q - (q / pb).floor() * pb;
+        let (mut positions, mut n, mut at) = ([0.0; MAX_PAIRS], 0, None);
+        for j in 0..MAX_PAIRS {
+            let x = first + j as f64 * pb;
+            if x >= path {
+                break;
+            }
+            // The pair at q itself, exactly (first + j p_b may differ from q in the last bit).
+            let x = if (x - q).abs() < 1e-9 * pb { q } else { x };
+            if x == q {
+                at = Some(n);
+            }
+            positions[n] = x;
+            n += 1;
+        }
+        let Some(at) = at else { return 0.0 };
+        let mut loads = [0.0; MAX_PAIRS];
+        self.spur_loads(&positions[..n], force, &mut loads);
+        loads[at] / force
+    }
+
+    /// The loads F_j (N) of the spur pairs at `positions` (from A: every pair in contact at one
+    /// instant, at most [`MAX_PAIRS`]) under `force`, written into `loads`; returns δ. Σ F_j is
+    /// piecewise linear in δ: the pairs taken in the order of their relief, δ = (F + Σ k e)/Σ k over
+    /// the pairs loaded so far until it stays below the next pair's relief. Allocation-free: the
+    /// efficiency's integrands call it at every quadrature node.
+    pub fn spur_loads(&self, positions: &[f64], force: f64, loads: &mut [f64]) -> f64 {
+        let k = &self.stiffness;
+        let n = positions.len().min(MAX_PAIRS);
+        let (mut kj, mut ej, mut order) = ([0.0; MAX_PAIRS], [0.0; MAX_PAIRS], [0usize; MAX_PAIRS]);
+        for i in 0..n {
+            kj[i] = k.pair_at(positions[i]);
+            ej[i] = self.reliefs.at(k.path, positions[i]);
+            order[i] = i;
+        }
+        order[..n].sort_by(|a, b| ej[*a].total_cmp(&ej[*b]));
+        let (mut sum_k, mut sum_ke, mut delta) = (0.0, 0.0, 0.0);
+        for (rank, &i) in order[..n].iter().enumerate() {
+            sum_k += kj[i];
+            sum_ke += kj[i] * ej[i];
+            delta = (force + sum_ke) / sum_k;
+            if order[..n].get(rank + 1).is_none_or(|next| delta <= ej[*next]) {
                 break;
             }
         }
-        let mut loads: Vec<(f64, f64)> = pairs.iter().map(|(q, kj, ej)| (*q, kj * (delta - ej).max(0.0))).collect();
-        loads.sort_by(|a, b| a.0.total_cmp(&b.0));
-        Shared { deflection: delta, loads }
+        for i in 0..n {
+            loads[i] = kj[i] * (delta - ej[i]).max(0.0);
+        }
+        delta
     }
 
     /// The load (N) of the helical line whose mid-face is at s, at a gap δ.
@@ -209,6 +253,41 @@ impl LoadSharing {
         }
         let e_max: f64 = self.reliefs.0.iter().flatten().map(|r| r.amount).sum();
         brent(|d| load(d) - force, lo, lo + e_max, 1e-15 * (lo + e_max))
+    }
+
+    /// The instants τ ∈ (0, 1) of a spur pair's mesh cycle (τ = 0: a pair enters at A) where a
+    /// pair's load bends under `force` (N): it crosses the start of a relief, or lifts off (touches
+    /// down) where δ(τ) = e_j. The crossings are exact; the lift-offs are located by Brent's method
+    /// on (δ − e_j)/e_max between 64 samples of the pair's time in contact, to 1e-13 of the cycle.
+    /// The efficiency integrates between them, as between the cycle's other breaks.
+    pub fn spur_kink_times(&self, force: f64) -> Vec<f64> {
+        let k = &self.stiffness;
+        let e_max: f64 = self.reliefs.0.iter().flatten().map(|r| r.amount).sum();
+        if self.reliefs.is_empty() || k.is_helical() {
+            return Vec::new();
+        }
+        let (pb, path) = (k.base_pitch, k.path);
+        let mut out = Vec::new();
+        for start in self.reliefs.starts(path) {
+            out.extend((0..MAX_PAIRS).map(|j| start / pb - j as f64).filter(|t| *t > 0.0 && *t < 1.0));
+        }
+        let deflection = |tau: f64| {
+            let mut q = [0.0; MAX_PAIRS];
+            let n = (0..MAX_PAIRS).map(|j| (tau + j as f64) * pb).take_while(|x| *x < path).count();
+            (0..n).for_each(|j| q[j] = (tau + j as f64) * pb);
+            self.spur_loads(&q[..n], force, &mut [0.0; MAX_PAIRS])
+        };
+        for j in 0..MAX_PAIRS {
+            let end = (path / pb - j as f64).min(1.0);
+            if end <= 0.0 {
+                break;
+            }
+            let nodes: Vec<f64> = (0..=64).map(|i| end * i as f64 / 64.0 * (1.0 - 1e-12)).collect();
+            let gap = |tau: f64| (deflection(tau) - self.reliefs.at(path, (tau + j as f64) * pb)) / e_max;
+            out.extend(bracketed_roots(gap, &nodes, 1e-13).into_iter().filter(|t| *t > 0.0 && *t < 1.0));
+        }
+        out.sort_by(f64::total_cmp);
+        out
     }
 
     /// Where the line load k_w max(0, δ − e) has a kink under a gap δ (positions from A, inside the
