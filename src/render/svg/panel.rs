@@ -334,7 +334,7 @@ pub(crate) fn legend_words(label: &str) -> String {
                     Some(i) => (&rest[..=i], &rest[i + 1..]),
                     None => (rest, ""),
                 }
-            } else if rest.is_empty() || rest.starts_with(' ') {
+            } else if rest.is_empty() || rest.starts_with(' ') || rest.starts_with(',') {
                 ("", rest)
             } else {
                 continue;
