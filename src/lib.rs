@@ -64,6 +64,8 @@ pub mod losses;
 pub mod model;
 pub mod numerics;
 pub mod progress;
+#[cfg(feature = "python")]
+mod python;
 pub mod quantity;
 pub mod render;
 pub mod report;

@@ -1,0 +1,205 @@
+"""gearloss from Python: write, vary and run a scene, read every result as data.
+
+The same library as the ``gearloss`` command runs underneath (the computation releases the GIL):
+
+>>> import gearloss
+>>> scene = gearloss.Scene.from_file("specs/fzg_type_c.gear")
+>>> scene.title
+'FZG type C'
+>>> report = gearloss.run(scene.replace(pinion_speed="[1000, 2000] rpm"))
+>>> sorted(report.efficiency["pinion_speed_rad_s"].round(3).unique().tolist())
+[104.72, 209.44]
+>>> report.data["title"]
+'FZG type C'
+
+A scene that does not lower raises :class:`SceneError` with the CLI's diagnostics:
+
+>>> try:
+...     gearloss.Scene('scene "x" { gears { module = 4.5 kg } }', name="bad.gear")
+... except gearloss.SceneError as e:
+...     [(d["line"], d["column"], d["message"]) for d in e.diagnostics if d["kind"] == "WrongDimension"]
+[(1, 34, '`module` expects a length, but `kg` is a mass')]
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import pathlib
+import tempfile
+from typing import Dict, Iterable, Optional, Tuple, Union
+
+from . import _native
+from ._native import RunError, SceneError
+
+__all__ = ["Scene", "Report", "run", "merge", "SceneError", "RunError"]
+
+
+class Scene:
+    """A checked scene: its text, the name errors and relative paths refer to, its title.
+
+    ``Scene(text, name=...)`` checks the text (a bad scene raises :class:`SceneError`);
+    files the scene names (stiffness tables) are read relative to the folder of ``name``.
+
+    >>> Scene.from_file("specs/fzg_type_c.gear").name
+    'specs/fzg_type_c.gear'
+    """
+
+    def __init__(self, text: str, name: str = "scene.gear") -> None:
+        self.title: str = _native.check(name, text)
+        self.text = text
+        self.name = name
+
+    @classmethod
+    def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
+        """Reads and checks a ``.gear`` file."""
+        p = os.fspath(path)
+        # Bytes, decoded: text mode would turn \r\n into \n and move every column the CLI reports.
+        return cls(pathlib.Path(p).read_bytes().decode("utf-8"), name=p)
+
+    def replace(self, **values: str) -> "Scene":
+        """A new scene with values of its ``operating`` block replaced (or added), written as in a
+        scene, units and all, and checked like the text:
+
+        >>> s = Scene.from_file("specs/fzg_type_c.gear")
+        >>> s.replace(pinion_torque="300 N*m", pinion_speed="100..3000 rpm count 30").title
+        'FZG type C'
+        """
+        pairs = [(key, str(value)) for key, value in values.items()]
+        return Scene(_native.replace(self.name, self.text, pairs), name=self.name)
+
+    def __repr__(self) -> str:
+        return f"Scene({self.title!r}, name={self.name!r})"
+
+
+def _shard(shard: Union[None, str, Tuple[int, int]]) -> Optional[Tuple[int, int]]:
+    if shard is None or isinstance(shard, tuple):
+        return shard
+    k, n = str(shard).split("/")
+    return int(k), int(n)
+
+
+def run(scene: Scene, shard: Union[None, str, Tuple[int, int]] = None) -> "Report":
+    """Runs the scene as ``gearloss run`` does (``shard="K/N"`` or ``(K, N)``: that share of its
+    operating points, as ``gearloss run --shard K/N``) and returns the report folder's contents."""
+    name, files = _native.run(scene.name, scene.text, _shard(shard))
+    return Report(name, files)
+
+
+def merge(folders: Iterable[Union[str, os.PathLike]]) -> "Report":
+    """Merges shard folders as ``gearloss merge`` does."""
+    name, files = _native.merge([os.fspath(f) for f in folders])
+    return Report(name, files)
+
+
+class Report:
+    """A report folder in memory: ``report.json`` as ``data``, the records as pandas tables, the
+    plots as SVG text, ``report.md``; ``write`` puts the folder on disk as ``gearloss run`` does.
+
+    The tables keep the column names of ``records.csv``, whose units are SI and part of the name
+    (``pinion_torque_N_m``, ``power_loss_W``).
+    """
+
+    def __init__(self, name: str, files: Iterable[Tuple[str, bytes]]) -> None:
+        self.name = name
+        self._files: Dict[str, bytes] = dict(files)
+
+    @classmethod
+    def from_folder(cls, path: Union[str, os.PathLike]) -> "Report":
+        """Reads a report folder that ``gearloss run`` (or ``write``) wrote."""
+        root = pathlib.Path(path)
+        files = [(p.relative_to(root).as_posix(), p.read_bytes()) for p in sorted(root.rglob("*")) if p.is_file()]
+        return cls(root.name, files)
+
+    @property
+    def files(self) -> list:
+        """The files of the folder, by path inside it."""
+        return sorted(self._files)
+
+    @property
+    def data(self) -> dict:
+        """``report.json``, parsed."""
+        return json.loads(self._files["report.json"])
+
+    @property
+    def runs(self) -> Dict[str, "Report"]:
+        """A scene at several oil temperatures: the report of each, by its folder's name."""
+        names = sorted({f.split("/")[0] for f in self._files if "/" in f})
+        return {
+            n: Report(n, [(f[len(n) + 1 :], b) for f, b in self._files.items() if f.startswith(n + "/")])
+            for n in names
+        }
+
+    @property
+    def records(self):
+        """``records.csv`` as a pandas DataFrame (every operating point, every law and formulation)."""
+        import pandas
+
+        if "records.csv" not in self._files:
+            return pandas.DataFrame()
+        return pandas.read_csv(io.BytesIO(self._files["records.csv"]))
+
+    def _kind(self, kind: str):
+        r = self.records
+        if r.empty:
+            return r
+        return r[r["kind"] == kind].dropna(axis=1, how="all").reset_index(drop=True)
+
+    @property
+    def efficiency(self):
+        """The efficiency rows: per point, law and formulation the mean efficiency, its error, the
+        power loss, and the loss budget's columns when the scene describes its gearbox."""
+        return self._kind("efficiency")
+
+    @property
+    def budget(self):
+        """The loss budget per point (W): gears without load, bearings, seals, total, and each
+        bearing's loads and losses; empty without a gearbox."""
+        e = self.efficiency
+        keep = [c for c in e.columns if c in ("point", "pinion_torque_N_m", "pinion_speed_rad_s")]
+        parts = [c for c in e.columns if c.endswith("_W") and c != "power_loss_W" or c.endswith("_N")]
+        if not any(c.startswith("total_loss") for c in parts):
+            return e.iloc[0:0, 0:0]
+        return e[keep + parts + ["total_efficiency"]].drop_duplicates("point").reset_index(drop=True)
+
+    @property
+    def dynamics(self):
+        """The dynamics rows: per point and formulation ρ, DTE and the dynamic factor."""
+        return self._kind("dynamics")
+
+    def svg(self, name: str) -> str:
+        """A plot's SVG text (``report.svg("contact_state")`` or ``"contact_state.svg"``)."""
+        return self._files[name if name.endswith(".svg") else name + ".svg"].decode("utf-8")
+
+    def markdown(self) -> str:
+        """``report.md``."""
+        return self._files["report.md"].decode("utf-8")
+
+    def write(self, folder: Union[str, os.PathLike]) -> pathlib.Path:
+        """Writes the report folder into ``folder`` (as ``gearloss run --out folder``): into a
+        temporary folder first, renamed into place, so it is never half-written."""
+        out = pathlib.Path(folder)
+        out.mkdir(parents=True, exist_ok=True)
+        target = out / self.name
+        temp = pathlib.Path(tempfile.mkdtemp(prefix=f".{self.name}.", dir=out))
+        for path, content in self._files.items():
+            p = temp / path
+            p.parent.mkdir(parents=True, exist_ok=True)
+            p.write_bytes(content)
+        if target.exists():
+            old = pathlib.Path(tempfile.mkdtemp(prefix=f".{self.name}.old.", dir=out))
+            target.rename(old / "r")
+            temp.rename(target)
+            import shutil
+
+            shutil.rmtree(old)
+        else:
+            temp.rename(target)
+        return target
+
+    def _repr_markdown_(self) -> str:
+        return self.markdown() if "report.md" in self._files else f"report {self.name}"
+
+    def __repr__(self) -> str:
+        return f"Report({self.name!r}, {len(self._files)} files)"

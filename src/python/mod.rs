@@ -1,0 +1,146 @@
+//! The Python module `gearloss._native` (cargo feature `python`; built by maturin from
+//! `pyproject.toml`). The package `gearloss` (`src/python/gearloss/`) wraps it: `Scene`, `run`,
+//! `Report` with pandas tables, and `gearloss.dask`. Every function here runs the same pipeline as
+//! the CLI, and every run releases the GIL. Errors become Python exceptions in one place,
+//! [`error`].
+
+// pyo3 0.22's #[pyfunction] expands to a `.into()` of PyErr into PyErr.
+#![allow(clippy::useless_conversion)]
+
+mod error;
+
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use pyo3::prelude::*;
+
+use crate::scene::ast::Item;
+use crate::{Quiet, Shard};
+use error::{to_py, Error, GearlossRunError, SceneError};
+
+/// A report folder in memory: its name and its files (path inside it, bytes), sorted by path.
+type Folder = (String, Vec<(String, Vec<u8>)>);
+
+/// The folder as Python receives it: the files' contents as `bytes`.
+type PyFolder = (String, Vec<(String, Cow<'static, [u8]>)>);
+
+fn to_python((name, files): Folder) -> PyFolder {
+    (name, files.into_iter().map(|(path, bytes)| (path, Cow::Owned(bytes))).collect())
+}
+
+/// Checks a scene; returns its title.
+#[pyfunction]
+fn check(py: Python<'_>, name: &str, text: &str) -> PyResult<String> {
+    to_py(py, crate::check(name, text).map(|s| s.title).map_err(Error::from))
+}
+
+/// Runs a scene (or one shard `(K, N)` of it) as `gearloss run` does: the report folder in memory.
+#[pyfunction]
+#[pyo3(signature = (name, text, shard=None))]
+fn run(py: Python<'_>, name: String, text: String, shard: Option<(usize, usize)>) -> PyResult<PyFolder> {
+    let result = py.allow_threads(|| in_temporary_folder(|out| run_into(&name, &text, shard, out)));
+    to_py(py, result).map(to_python)
+}
+
+/// Merges shard folders as `gearloss merge` does: the merged report folder in memory.
+#[pyfunction]
+fn merge(py: Python<'_>, folders: Vec<PathBuf>) -> PyResult<PyFolder> {
+    let result = py.allow_threads(|| in_temporary_folder(|out| Ok(crate::merge_into(&folders, out, &Quiet)?.folder)));
+    to_py(py, result).map(to_python)
+}
+
+/// The scene text with operating values replaced (`pinion_speed = "100..3000 rpm count 30"`), checked.
+#[pyfunction]
+fn replace(py: Python<'_>, name: &str, text: &str, values: Vec<(String, String)>) -> PyResult<String> {
+    to_py(py, replaced(name, text, &values))
+}
+
+fn run_into(name: &str, text: &str, shard: Option<(usize, usize)>, out: &Path) -> Result<PathBuf, Error> {
+    let scene = crate::check(name, text)?;
+    let shard = shard.map(|(index, count)| Shard { index, count });
+    Ok(crate::run_into(name, text, &scene, out, shard, &Quiet)?.folder)
+}
+
+/// Runs `write` into a fresh temporary folder, reads back the folder it wrote, removes it.
+fn in_temporary_folder(write: impl FnOnce(&Path) -> Result<PathBuf, Error>) -> Result<Folder, Error> {
+    static COUNT: AtomicUsize = AtomicUsize::new(0);
+    let n = COUNT.fetch_add(1, Ordering::Relaxed);
+    let out = std::env::temp_dir().join(format!("gearloss-python-{}-{n}", std::process::id()));
+    let io = |e: std::io::Error| Error::from(crate::RunError::Io { what: "a temporary report folder", source: e });
+    std::fs::create_dir_all(&out).map_err(io)?;
+    let result = write(&out).and_then(|folder| {
+        let mut files = Vec::new();
+        read_tree(&folder, "", &mut files).map_err(io)?;
+        files.sort();
+        let name = folder.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        Ok((name, files))
+    });
+    let _ = std::fs::remove_dir_all(&out);
+    result
+}
+
+fn read_tree(dir: &Path, prefix: &str, out: &mut Vec<(String, Vec<u8>)>) -> std::io::Result<()> {
+    for entry in std::fs::read_dir(dir)? {
+        let entry = entry?;
+        let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
+        if entry.file_type()?.is_dir() {
+            read_tree(&entry.path(), &format!("{name}/"), out)?;
+        } else {
+            out.push((name, std::fs::read(entry.path())?));
+        }
+    }
+    Ok(())
+}
+
+/// Replaces (or adds) `key = value` in the scene's `operating` block, then checks the new text.
+fn replaced(name: &str, text: &str, values: &[(String, String)]) -> Result<String, Error> {
+    let ast = crate::parse(name, text)?;
+    let operating = ast.items.iter().find_map(|i| match i {
+        Item::Block(b) if b.kind.text == "operating" => Some(b),
+        _ => None,
+    });
+    let Some(block) = operating else {
+        let span = crate::diagnostics::Span::new(ast.title_span.start, ast.title_span.end);
+        let d = crate::diagnostics::Diagnostic::new(
+            crate::diagnostics::DiagnosticKind::MissingKey,
+            span,
+            "the scene has no `operating` block whose values could be replaced",
+        )
+        .hint("add `operating { pinion_torque = ...  pinion_speed = ... }`");
+        return Err(crate::SceneErrors { source_name: name.into(), source: text.into(), diagnostics: vec![d] }.into());
+    };
+    let mut edits: Vec<(usize, usize, String)> = Vec::new();
+    for (key, value) in values {
+        let found = block.items.iter().find_map(|i| match i {
+            Item::Assignment { key: k, value: v } if k.text == *key => Some(v.span),
+            _ => None,
+        });
+        match found {
+            Some(span) => edits.push((span.start, span.end, value.clone())),
+            None => {
+                let end = block.span.end.saturating_sub(1);
+                edits.push((end, end, format!("    {key} = {value}\n")));
+            }
+        }
+    }
+    edits.sort_by_key(|e| std::cmp::Reverse(e.0));
+    let mut out = text.to_string();
+    for (start, end, new) in edits {
+        out.replace_range(start..end, &new);
+    }
+    crate::check(name, &out)?;
+    Ok(out)
+}
+
+/// The native module.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(merge, m)?)?;
+    m.add_function(wrap_pyfunction!(replace, m)?)?;
+    m.add("SceneError", m.py().get_type_bound::<SceneError>())?;
+    m.add("RunError", m.py().get_type_bound::<GearlossRunError>())?;
+    Ok(())
+}
