@@ -8,6 +8,7 @@ Run from the repository root (``tests/python/run`` does): the scenes are read by
 import json
 import pathlib
 import threading
+import time
 
 import pandas
 import pandas.testing
@@ -142,16 +143,44 @@ def test_run_errors_map_to_run_error(tmp_path):
 
 
 def test_runs_release_the_gil():
-    """Two runs in two threads both finish, and each gives the single-threaded report."""
-    s = scene(ROOT / "specs/fzg_type_c.gear")
+    """While runs compute in two threads, Python keeps running in the main thread (a run holds no
+    GIL): it wakes from 1 ms sleeps dozens of times during them (a run that held the GIL would
+    keep it from waking until it returned). The two runs overlap in time and each gives the
+    single-threaded report."""
+    s = scene(ROOT / "specs/composite_speed_sweep.gear").replace(pinion_speed="100..3000 rpm count 400")
     expected = gearloss.run(s).data
-    results = []
-    threads = [threading.Thread(target=lambda: results.append(gearloss.run(s).data)) for _ in range(2)]
+    spans, results = [], []
+
+    def one():
+        t0 = time.perf_counter()
+        results.append(gearloss.run(s).data)
+        spans.append((t0, time.perf_counter()))
+
+    threads = [threading.Thread(target=one) for _ in range(2)]
     for t in threads:
         t.start()
+    turns = 0
+    while any(t.is_alive() for t in threads):
+        time.sleep(0.001)
+        turns += 1
     for t in threads:
         t.join()
     assert results == [expected, expected]
+    (a0, a1), (b0, b1) = spans
+    assert max(a0, b0) < min(a1, b1), f"the runs did not overlap: {spans}"
+    assert turns > 20, f"the main thread woke {turns} times during runs of {a1 - a0:.3f} s and {b1 - b0:.3f} s"
+
+
+def test_dask_on_a_local_cluster_of_two_worker_processes():
+    """Four shards on a distributed LocalCluster of 2 worker processes: the single run's report."""
+    distributed = pytest.importorskip("distributed")
+    s = scene(ROOT / "specs/composite_speed_sweep.gear")
+    whole = gearloss.run(s)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            merged = gearloss.dask.run(s, shards=4, client=client)
+    assert merged.data == whole.data
+    pandas.testing.assert_frame_equal(merged.records, whole.records)
 
 
 def readme_python_blocks():
