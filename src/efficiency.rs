@@ -151,12 +151,17 @@ pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: For
 /// [`MEAN_TOLERANCE`]. Every law is treated as singular at P: the t⁴ map is exact for the
 /// polynomial pieces of the Coulomb laws and removes the |s|^q kinks of the others.
 pub fn mean_efficiencies(ctx: &LawContext, law: &dyn FrictionLaw) -> [Integral; 2] {
+    mean_efficiencies_between(ctx, law, &break_times(ctx, law))
+}
+
+/// As [`mean_efficiencies`], with the cycle's break times known ([`break_times`]).
+fn mean_efficiencies_between(ctx: &LawContext, law: &dyn FrictionLaw, breaks: &[f64]) -> [Integral; 2] {
     if ctx.geometry.is_helical() {
         return mean_efficiencies_along_lines(ctx, law);
     }
     integrate_singular_n(
         |tau, d| efficiencies_of(ctx, law, &ctx.mesh().contacts_near_pitch(tau, d)),
-        &break_times(ctx, law),
+        breaks,
         &ctx.geometry.pitch_times(),
         MEAN_TOLERANCE,
     )
@@ -250,8 +255,16 @@ pub fn evaluate_efficiencies(
     if formulations.is_empty() {
         return Vec::new();
     }
-    let means = mean_efficiencies(ctx, law);
     let breaks = break_times(ctx, law);
+    let means = mean_efficiencies_between(ctx, law, &breaks);
+    // Both formulations' extremes sample η(τ) at the same instants: each instant's contacts once.
+    let seen: std::cell::RefCell<std::collections::HashMap<u64, [f64; 2]>> = Default::default();
+    let eta = |tau: f64| {
+        *seen
+            .borrow_mut()
+            .entry(tau.to_bits())
+            .or_insert_with(|| efficiencies_of(ctx, law, &ctx.mesh().contacts_at(tau)))
+    };
     formulations
         .iter()
         .map(|f| {
@@ -259,8 +272,7 @@ pub fn evaluate_efficiencies(
                 Formulation::External => 0,
                 Formulation::Internal => 1,
             };
-            let ((min, _), (max, _)) =
-                extrema(|tau| efficiencies_of(ctx, law, &ctx.mesh().contacts_at(tau))[k], &breaks, 32, 1e-12);
+            let ((min, _), (max, _)) = extrema(|tau| eta(tau)[k], &breaks, 32, 1e-12);
             EfficiencyResult {
                 formulation: *f,
                 power_loss: (1.0 - means[k].value) * ctx.state.pinion_torque * ctx.state.pinion_speed,

@@ -68,8 +68,8 @@ impl Bodies {
 
 /// The pieces of the path k_w is re-expanded on, and their degree: k_w's series (degree ≤ 64) on an
 /// eighth of the path has coefficients that fall by 8⁻ᵏ, below 1e-16 of k_w past degree 16.
-const PIECES: usize = 8;
-const PIECE_DEGREE: usize = 16;
+const PIECES: usize = 32;
+const PIECE_DEGREE: usize = 8;
 
 /// The pair's stiffness (spur or helical) over the path of contact.
 #[derive(Debug, Clone)]
