@@ -130,8 +130,7 @@ pub fn efficiencies_of(ctx: &LawContext, law: &dyn FrictionLaw, contacts: &[Cont
 pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
     let mut times = ctx.geometry.cycle_break_times(&law.switch_points());
     if let Sharing::Stiffness(model) = ctx.sharing {
-        let force = ctx.state.pinion_torque / ctx.geometry.base_radius[0];
-        times.extend(model.spur_kink_times(if force > 0.0 { force } else { 1.0 }));
+        times.extend(model.spur_kink_times(ctx.geometry.sharing_force(&ctx.state)));
         times.sort_by(f64::total_cmp);
         times.dedup();
     }

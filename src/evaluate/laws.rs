@@ -130,6 +130,11 @@ pub(super) fn evaluate_law(
     let diverges = law.diverges_at_pitch();
     let value_at = |c: &ContactPoint| -> Option<f64> { (!(diverges && c.s == 0.0)).then(|| law.mu(c)) };
     let contacts: Vec<ContactPoint> = eval.positions.iter().map(|u| ctx.contact_at(*u)).collect();
+    // The local friction power at each contact (0 where the law diverges, at P).
+    let power_along = |ctx: &LawContext, contacts: &[ContactPoint]| -> Vec<f64> {
+        let power = |c: &ContactPoint| efficiency::local_power_loss(ctx, law, c);
+        contacts.iter().map(|c| if diverges && c.s == 0.0 { 0.0 } else { power(c) }).collect()
+    };
     let taus = cycle_times();
     let efficiency = efficiency::evaluate_efficiencies(&ctx, law, &eval.formulations);
     let mean_abs_mu = efficiency::mean_abs_mu(&ctx, law);
@@ -157,17 +162,10 @@ pub(super) fn evaluate_law(
         efficiency,
         curves: (detail && curves).then(|| LawCurves {
             mu: contacts.iter().map(|c| value_at(c).unwrap_or(f64::NAN)).collect(),
-            power_loss: contacts
-                .iter()
-                .map(|c| if diverges && c.s == 0.0 { 0.0 } else { efficiency::local_power_loss(&ctx, law, c) })
-                .collect(),
+            power_loss: power_along(&ctx, &contacts),
             power_loss_equal: matches!(ctx.sharing, Sharing::Stiffness(_)).then(|| {
                 let equal = LawContext { sharing: Sharing::Equal, ..ctx };
-                eval.positions
-                    .iter()
-                    .map(|u| equal.contact_at(*u))
-                    .map(|c| if diverges && c.s == 0.0 { 0.0 } else { efficiency::local_power_loss(&equal, law, &c) })
-                    .collect()
+                power_along(&equal, &eval.positions.iter().map(|u| equal.contact_at(*u)).collect::<Vec<_>>())
             }),
             efficiency: eval
                 .formulations

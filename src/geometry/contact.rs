@@ -57,6 +57,17 @@ impl PairGeometry {
         op.pinion_torque / self.normal_force_arm(0)
     }
 
+    /// The transverse force along the line of action the shares by stiffness are read at,
+    /// T_p / r_b1 (N); 1 N at zero torque, where they are read at a vanishing load.
+    pub fn sharing_force(&self, op: &OperatingState) -> f64 {
+        let f = op.pinion_torque / self.base_radius[0];
+        if f > 0.0 {
+            f
+        } else {
+            1.0
+        }
+    }
+
     /// Wheel speed ω2 = ω1 z1/z2 (rad/s).
     pub fn wheel_speed(&self, op: &OperatingState) -> f64 {
         op.pinion_speed / self.gear_ratio
@@ -71,10 +82,8 @@ impl PairGeometry {
             Sharing::Equal => [equal, equal],
             Sharing::Whole => [1.0, equal],
             Sharing::Stiffness(model) => {
-                // Positions from A along the path; the transverse force T_p / r_b1 (F_bn of a spur pair).
-                let q = s + (self.points.p - self.points.a);
-                let force = op.pinion_torque / self.base_radius[0];
-                let share = model.spur_share(q, if force > 0.0 { force } else { 1.0 });
+                // Positions from A along the path.
+                let share = model.spur_share(s + (self.points.p - self.points.a), self.sharing_force(op));
                 [share, share]
             }
         }

@@ -160,15 +160,8 @@ impl Mesh<'_> {
         g.contact_with_load(u, s, &self.state, self.reduced_modulus, w, [share, share], 0)
     }
 
-    /// The transverse force along the line of action, T_p / r_b1 (N); 1 N at zero torque, where the
-    /// shares by stiffness are read at a vanishing load.
     fn transverse_force(&self) -> f64 {
-        let f = self.state.pinion_torque / self.pair.base_radius[0];
-        if f > 0.0 {
-            f
-        } else {
-            1.0
-        }
+        self.pair.sharing_force(&self.state)
     }
 
     /// The contact state at distance `s` from the pitch point, with `s` exact (for integrands near P).
