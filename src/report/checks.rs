@@ -55,8 +55,15 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             g.center_distance * 1e3
         )));
     }
+    let by_stiffness = scene.gears.load_sharing == LoadSharing::Stiffness;
+    if by_stiffness && eval.stiffness_sharing.is_none() {
+        out.push(warn(
+            "`load_sharing = stiffness`: the teeth's stiffness could not be computed, so the load is shared equally"
+                .into(),
+        ));
+    }
     if g.is_helical() {
-        out.extend(helical_findings(g));
+        out.extend(helical_findings(g, by_stiffness && eval.stiffness_sharing.is_some()));
         return out;
     }
     out.push(note(match scene.gears.load_sharing {
@@ -68,14 +75,16 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
 }
 
 /// Helical pairs: how the load is shared, and the checks on the overlap ratio and the helix angle.
-fn helical_findings(g: &crate::geometry::PairGeometry) -> Vec<Finding> {
-    let mut out = vec![Finding {
-        severity: Severity::Note,
-        message: format!(
+fn helical_findings(g: &crate::geometry::PairGeometry, by_stiffness: bool) -> Vec<Finding> {
+    let message = if by_stiffness {
+        "load sharing: by stiffness along the contact lines: at q each line carries k_w(q) max(0, δ − e(q)) per unit length, k_w the potential-energy stiffness per unit width, e the tip relief, δ closing the balance at each instant".to_string()
+    } else {
+        format!(
             "load sharing: constant stiffness density along the contact lines (He & Singh): w = F_bn / L(t), L̄ = ε_α b / cos β_b = {:.4} mm",
             g.mean_contact_length() * 1e3
-        ),
-    }];
+        )
+    };
+    let mut out = vec![Finding { severity: Severity::Note, message }];
     if g.overlap_ratio < 1.0 {
         out.push(Finding {
             severity: Severity::Warning,

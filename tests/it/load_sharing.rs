@@ -133,3 +133,21 @@ fn helical_line_loads_carry_the_normal_load() {
         }
     }
 }
+
+/// A helical scene with `load_sharing = stiffness` runs end to end: its report says how the load is
+/// shared (not He & Singh's constant density, which the same scene states under equal sharing) and
+/// its mean efficiency differs from equal sharing's.
+#[test]
+fn helical_scene_shares_by_stiffness_end_to_end() {
+    let text = std::fs::read_to_string(crate::root().join("specs/metric_helical.gear")).unwrap();
+    let stiff = text.replace("face_width      = 30 mm", "face_width      = 30 mm\n        load_sharing    = stiffness");
+    assert_ne!(stiff, text);
+    let report = |t: &str| gearloss::report_of(&gearloss::check("specs/metric_helical.gear", t).unwrap());
+    let (equal, by_stiffness) = (report(&text), report(&stiff));
+    let says = |r: &gearloss::Report, words: &str| r.findings.iter().any(|f| f.message.contains(words));
+    assert!(says(&by_stiffness, "by stiffness along the contact lines") && !says(&by_stiffness, "He & Singh"));
+    assert!(says(&equal, "constant stiffness density") && !says(&equal, "by stiffness"));
+    let eta = |r: &gearloss::Report| serde_json::to_value(r).unwrap()["efficiency"][0]["mean_efficiency"].as_f64();
+    let (a, b) = (eta(&equal), eta(&by_stiffness));
+    assert!(a.is_some() && b.is_some() && a != b, "{a:?} vs {b:?}");
+}
