@@ -20,7 +20,7 @@ use crate::{render, rerender, shard};
 
 /// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
 pub fn report_of(scene: &Scene) -> Report {
-    let scene = &*evaluate::thermal::at_first_balance(scene);
+    let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
         .expect("records that go nowhere cannot fail to be written");
@@ -58,7 +58,7 @@ fn finish(
 
 /// One scene (at one oil temperature) run in memory: its report and files, the record files included.
 fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
-    let scene = &*evaluate::thermal::at_first_balance(scene);
+    let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let budget = evaluate::records::budget_columns(scene);
     let mut sink = RecordWriter::new(Vec::new(), Vec::new(), &budget, true).map_err(RunError::io("records"))?;
@@ -137,7 +137,7 @@ fn run_scene_into(
     dir: &str,
     progress: &dyn Progress,
 ) -> Result<(Report, Vec<String>), RunError> {
-    let scene = &*evaluate::thermal::at_first_balance(scene);
+    let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     let (streamed, mut files) = stream_into(scene, &plan, folder, dir, progress)?;

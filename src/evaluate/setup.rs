@@ -8,7 +8,7 @@ use crate::model::{Formulation, LoadSharing, Scene};
 use crate::tribology::{FilmInputs, Tribology};
 
 /// What every operating point of a scene reads: geometry, materials, lubricant, the fixed sample
-/// positions and the detail cases ([`super::prepare`] builds it once). The laws, the stream of a
+/// positions and the detail cases ([`super::prepare::prepare`] builds it once). The laws, the stream of a
 /// sweep and the map take this, not the [`super::evaluation::Evaluation`] that holds their results.
 #[derive(Debug, Clone)]
 pub struct Setup {

@@ -17,15 +17,15 @@ pub fn stream(
     sink: &mut dyn RecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<Streamed> {
-    let eval = super::prepare(scene, plan);
+    let eval = super::prepare::prepare(scene, plan);
     progress.stage("evaluate", plan.range.len() as u64);
     evaluate_records(scene, &eval, plan, sink, &|n| progress.advance(n as u64))
 }
 
 /// The plan's detail points in full, reusing the dynamics `known` by point number.
 pub fn details(scene: &Scene, plan: &Plan, known: &[(usize, DynamicsPoint)], progress: &dyn Progress) -> Evaluation {
-    let mut eval = super::prepare(scene, plan);
+    let mut eval = super::prepare::prepare(scene, plan);
     progress.stage("details", plan.detail.len() as u64);
-    super::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));
+    super::details::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));
     eval
 }

@@ -141,7 +141,7 @@ pub struct Tally {
     /// Record values that are not finite numbers (empty CSV cells, `null` in JSON Lines), and the first.
     pub non_finite: usize,
     pub first_non_finite: Option<(usize, String)>,
-    /// The rows of the points the report tabulates and plots ([`super::Plan::kept`]).
+    /// The rows of the points the report tabulates and plots ([`super::plan::Plan::kept`]).
     pub kept: Vec<SummaryRow>,
     pub laws: Vec<LawTally>,
     pub implausible_count: usize,

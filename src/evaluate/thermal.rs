@@ -241,32 +241,6 @@ impl ThermalRow {
     }
 }
 
-/// At `oil_temperature = equilibrium`: the scene with its lubricant at the balance of its first
-/// operating point (first law, first formulation), where its tables, curves, film and dynamics are
-/// read; the scene itself otherwise, or when that point finds no balance.
-pub fn at_first_balance(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
-    use std::borrow::Cow;
-    let (Some(span), Some(housing), Some(spec)) =
-        (scene.operating.equilibrium, scene.housing.as_ref(), scene.friction.first())
-    else {
-        return Cow::Borrowed(scene);
-    };
-    let plan = super::Plan::new(&scene.operating, None, &[]);
-    let eval = super::prepare(scene, &plan);
-    let Some(losses) = Losses::new(scene, &eval) else { return Cow::Borrowed(scene) };
-    let f = eval.formulations.first().copied().unwrap_or(Formulation::External);
-    let state = super::state_at(&scene.operating, 0);
-    let Some(t) = thermal::balance(|t| losses.at(spec, f, state, t).total(), housing).temperature else {
-        return Cow::Borrowed(scene);
-    };
-    let theta = crate::model::Given {
-        value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(t),
-        written: format!("{:.2} degC (equilibrium of point 1)", t - 273.15),
-        span,
-    };
-    Cow::Owned(scene.at_temperature(theta))
-}
-
 /// Temperatures of the heat-balance curve.
 pub const CURVE_POINTS: usize = 120;
 

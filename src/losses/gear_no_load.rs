@@ -148,13 +148,13 @@ mod tests {
     /// plus both gears' windage (pinion R = 0.1 m at 100 rad/s, wheel R = 0.2 m at 50 rad/s).
     #[test]
     fn injection_by_hand() {
-        let oil = crate::losses::Oil { nu: Some(1e-5), rho: Some(870.0), eta: 8.7e-3, mineral: true };
+        let oil = crate::losses::oil::Oil { nu: Some(1e-5), rho: Some(870.0), eta: 8.7e-3, mineral: true };
         let g = GearsRunning { omega: [100.0, 50.0], pitch_radius: [0.1, 0.2], face_width: 0.02 };
         let p = Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss(&g, &oil).unwrap();
         let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
         let w = windage_loss(rpm(100.0), 0.1, 0.02, 8.7e-3) + windage_loss(rpm(50.0), 0.2, 0.02, 8.7e-3);
         assert!((p - 8.7 - w).abs() < 1e-12, "{p}");
-        let no_density = crate::losses::Oil { rho: None, ..oil };
+        let no_density = crate::losses::oil::Oil { rho: None, ..oil };
         assert_eq!(Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss(&g, &no_density), None);
     }
 
