@@ -5,38 +5,11 @@
 
 use serde::Serialize;
 
+pub use super::bearing_loss::{BearingLoads, BearingLoss};
 use super::gearbox::Gearbox;
 use super::oil::Oil;
 use super::parts::{LossColumn, PartLosses, PartState, PARTS};
 use crate::geometry::PairGeometry;
-
-/// The loads and losses of one bearing place.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BearingLoss {
-    /// "pinion" or "wheel".
-    pub shaft: &'static str,
-    pub kind: &'static str,
-    /// "palmgren" or "skf".
-    pub model: &'static str,
-    pub count: usize,
-    /// Axial position `at` (m), when the scene gives one.
-    pub position: Option<f64>,
-    /// The numbers: loads of one bearing, losses of all `count`.
-    pub loads: BearingLoads,
-}
-
-/// What one bearing place carries and loses at an operating point.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct BearingLoads {
-    /// Radial and axial load of one bearing (N).
-    pub radial_load: f64,
-    pub axial_load: f64,
-    /// Power loss of all `count` bearings (W): no-load and load-dependent.
-    pub no_load: f64,
-    /// `None` when the bearing's f_1 needs a static load rating it lacks (lowering refuses such a
-    /// scene; a bearing built in code without one adds no load-dependent loss).
-    pub load: Option<f64>,
-}
 
 /// Everything but the mesh at one operating point (W); parts the scene does not describe are `None`.
 /// (Where a model leaves its tested range the report says so once for the run:

@@ -9,6 +9,7 @@
 //! Niemann & Winter: P_V = P_VZP + P_VZ0 + P_VL + P_VD (mesh under load, gears without load,
 //! bearings, seals).
 
+pub mod bearing_loss;
 pub mod bearing_type;
 pub mod bearings;
 pub mod budget;

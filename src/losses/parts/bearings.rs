@@ -19,8 +19,8 @@
 use super::loss_column::LossColumn;
 use super::loss_part::{LossPart, PartLosses, PartState};
 use super::part_id::LossPartId;
+use crate::losses::bearing_loss::{BearingLoads, BearingLoss};
 use crate::losses::bearings::Bearing;
-use crate::losses::budget::{BearingLoads, BearingLoss};
 use crate::losses::gearbox::Gearbox;
 use crate::losses::oil::Oil;
 

@@ -31,7 +31,7 @@
 
 use super::loss_column::LossColumn;
 use super::part_id::LossPartId;
-use crate::losses::budget::BearingLoss;
+use crate::losses::bearing_loss::BearingLoss;
 use crate::losses::oil::Oil;
 
 /// The operating state as the parts read it (SI).
