@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::contact::Sharing;
-use crate::geometry::mesh::LINE_NODES;
+use crate::geometry::mesh::{LINE_NODES, MAX_CONTACTS};
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
 use crate::numerics::roots::extrema;
@@ -158,8 +158,14 @@ fn mean_efficiencies_between(ctx: &LawContext, law: &dyn FrictionLaw, breaks: &[
     if ctx.geometry.is_helical() {
         return mean_efficiencies_along_lines(ctx, law);
     }
+    let mesh = ctx.mesh();
+    let buffer = std::cell::RefCell::new([ContactPoint::default(); MAX_CONTACTS]);
     integrate_singular_n(
-        |tau, d| efficiencies_of(ctx, law, &ctx.mesh().contacts_near_pitch(tau, d)),
+        |tau, d| {
+            let items = &mut *buffer.borrow_mut();
+            let n = mesh.fill_pair_contacts(tau, d, items);
+            efficiencies_of(ctx, law, &items[..n])
+        },
         breaks,
         &ctx.geometry.pitch_times(),
         MEAN_TOLERANCE,
@@ -229,6 +235,13 @@ pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
 pub fn local_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, c: &ContactPoint) -> f64 {
     let force = c.force_share * ctx.geometry.normal_load(&ctx.state);
     law.mu(c).abs() * force * c.sliding_velocity
+}
+
+/// The mean friction power loss P = (1 − η̄) T_p ω_p (W) of one formulation, without the range of
+/// η(τ) that [`evaluate_efficiencies`] also locates: what the thermal balance reads at every
+/// temperature it tries. The same quadrature as [`mean_efficiencies`], so the same number.
+pub fn mean_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation) -> f64 {
+    (1.0 - mean_efficiency(ctx, law, formulation).value) * ctx.state.pinion_torque * ctx.state.pinion_speed
 }
 
 /// Mean efficiency result of one law and formulation at one operating point.

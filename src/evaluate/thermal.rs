@@ -81,7 +81,7 @@ impl<'a> Losses<'a> {
                 sharing: self.setup.sharing(),
             };
             let law = super::setup::law_at(spec, &ctx);
-            efficiency::evaluate_efficiencies(&ctx, law.as_ref(), &[f]).first().map_or(0.0, |e| e.power_loss)
+            efficiency::mean_power_loss(&ctx, law.as_ref(), f)
         } else {
             0.0
         };
