@@ -379,7 +379,7 @@ mod thermal {
         b.bench(|| losses.at(&scene.friction[0], Formulation::External, state, 350.0).total());
     }
 
-    /// θ* of one operating point (scan and Brent). Target: < 50 µs beyond the budget's own cost.
+    /// θ* of one operating point (the P_Q-led secant, about eight P_V). Target: < 50 µs beyond the budget's own cost.
     #[divan::bench]
     fn balance_of_one_point(b: divan::Bencher) {
         let scene = scene();

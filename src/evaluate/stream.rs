@@ -12,7 +12,7 @@ use super::plan::Plan;
 use super::records::{RecordSink, RowKind, SummaryRow};
 use super::setup::{contact_table, Setup};
 use super::tally::{Implausible, ImplausibleAt, LawNote, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
-use super::thermal::{thermal_point, Losses, ThermalRow};
+use super::thermal::{thermal_point, Losses, RatingTable, ThermalRow};
 use crate::efficiency::EfficiencyResult;
 use crate::geometry::{ContactPoint, OperatingState};
 use crate::model::Scene;
@@ -41,13 +41,14 @@ pub fn evaluate_records(
     let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
     let dynamics =
         DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
+    let ratings = RatingTable::new(scene);
     let mut out = Streamed::default();
     let mut start = plan.range.start;
     while start < plan.range.end {
         let end = (start + BLOCK).min(plan.range.end);
         let block: Vec<Summary> = (start..end)
             .into_par_iter()
-            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), k))
+            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), &ratings, k))
             .collect();
         for (k, (rows, t, d)) in (start..end).zip(block) {
             sink.write_rows(&rows)?;
@@ -72,6 +73,7 @@ fn point_summary(
     plan: &Plan,
     labels: &[String],
     dynamics: Option<&DynamicsSetup>,
+    ratings: &RatingTable,
     k: usize,
 ) -> Summary {
     let op = &scene.operating;
@@ -111,7 +113,8 @@ fn point_summary(
                 row.budget = budget.as_ref().map(|b| b.with_mesh(e.power_loss, input));
                 let mut at_balance = None;
                 if let Some((housing, losses)) = &thermal {
-                    let point = thermal_point(losses, housing, spec, e.formulation, state);
+                    let rating = ratings.get(losses, housing, i, e.formulation, si);
+                    let point = thermal_point(losses, housing, spec, e.formulation, state, rating);
                     row.thermal = Some(ThermalRow::of(&point));
                     if let (Some(t), Some(_)) = (point.balance.temperature, scene.operating.equilibrium) {
                         // The record at the balance: the law read in the oil at θ*.

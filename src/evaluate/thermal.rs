@@ -107,29 +107,86 @@ pub struct ThermalPoint {
     pub rating_95: Option<f64>,
 }
 
-/// The balance, the losses at it and the two ratings of law `spec`, formulation `f` at `state`.
+/// The balance and the losses at it of law `spec`, formulation `f` at `state`, with the two ratings
+/// of its speed ([`ratings`]).
 pub fn thermal_point(
     losses: &Losses,
     housing: &Housing,
     spec: &FrictionLawSpec,
     f: Formulation,
     state: OperatingState,
+    ratings: Ratings,
 ) -> ThermalPoint {
-    let p_v = |t: f64| losses.at(spec, f, state, t).total();
-    let balance = thermal::balance(p_v, housing);
+    let balance = thermal::balance(|t: f64| losses.at(spec, f, state, t).total(), housing);
     let t = balance.temperature.unwrap_or(thermal::balance::SEARCH_LIMIT);
-    let at_torque =
-        |torque: f64, t: f64| losses.at(spec, f, OperatingState { pinion_torque: torque, ..state }, t).total();
-    let guess = state.pinion_torque.max(1.0);
     ThermalPoint {
         balance,
         dissipation: housing.dissipation(t),
         heat_transfer_coefficient: housing.heat_transfer_coefficient(t),
         losses: losses.at(spec, f, state, t),
-        rating: thermal::rating_torque(at_torque, housing, housing.max_oil_temperature, guess),
-        rating_95: (RATING_TEMPERATURE > housing.ambient)
+        rating: ratings.at_limit,
+        rating_95: ratings.at_95,
+    }
+}
+
+/// The pinion torques (N·m) at which θ* is the oil's limit and 95 °C, at one speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ratings {
+    pub at_limit: Option<f64>,
+    pub at_95: Option<f64>,
+}
+
+/// The ratings of law `spec`, formulation `f` at pinion speed `speed` (rad/s): they depend on the
+/// speed alone, not on the operating point's torque. `guess` (N·m) starts the bracket; a sweep gives
+/// every point the same (its largest torque), so that a speed's ratings are one number whichever
+/// point asks first ([`RatingTable`]).
+pub fn ratings(
+    losses: &Losses,
+    housing: &Housing,
+    spec: &FrictionLawSpec,
+    f: Formulation,
+    speed: f64,
+    guess: f64,
+) -> Ratings {
+    let at_torque = |torque: f64, t: f64| {
+        losses.at(spec, f, OperatingState { pinion_torque: torque, pinion_speed: speed }, t).total()
+    };
+    let guess = guess.max(1.0);
+    Ratings {
+        at_limit: thermal::rating_torque(at_torque, housing, housing.max_oil_temperature, guess),
+        at_95: (RATING_TEMPERATURE > housing.ambient)
             .then(|| thermal::rating_torque(at_torque, housing, RATING_TEMPERATURE, guess))
             .flatten(),
+    }
+}
+
+/// Each speed's ratings of a sweep, computed by the first point that asks (a 200 × 200 sweep
+/// locates 200 speeds' ratings, not 40 000 points'). Keyed by law, formulation and speed index.
+pub struct RatingTable {
+    slots: Vec<std::sync::OnceLock<Ratings>>,
+    speeds: usize,
+    /// The bracket's start for every speed: the sweep's largest torque.
+    guess: f64,
+}
+
+impl RatingTable {
+    pub fn new(scene: &Scene) -> RatingTable {
+        let speeds = scene.operating.pinion_speed.values.len();
+        let guess = scene.operating.pinion_torque.values.iter().map(|v| v.value).fold(1.0, f64::max);
+        let slots = (0..scene.friction.len() * 2 * speeds).map(|_| std::sync::OnceLock::new()).collect();
+        RatingTable { slots, speeds, guess }
+    }
+
+    /// The ratings of law `law` (index in the scene), formulation `f` at speed index `speed_index`.
+    pub fn get(&self, losses: &Losses, housing: &Housing, law: usize, f: Formulation, speed_index: usize) -> Ratings {
+        let fi = match f {
+            Formulation::External => 0,
+            Formulation::Internal => 1,
+        };
+        let speed = losses.scene.operating.pinion_speed.values[speed_index].value;
+        let spec = &losses.scene.friction[law];
+        *self.slots[(law * 2 + fi) * self.speeds + speed_index]
+            .get_or_init(|| ratings(losses, housing, spec, f, speed, self.guess))
     }
 }
 

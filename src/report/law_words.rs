@@ -3,7 +3,16 @@
 /// A law's label in words for legends: `coulomb(mu = 0.04)` → "Coulomb μ = 0.04",
 /// `iso_14179_2(x_l = 0.846)` → "ISO/TR 14179-2 X_L = 0.846"; `benedict_kelley` and
 /// `benedict_kelley_bernard` keep their parentheses ("Benedict–Kelley (Bernard Table 1)").
+/// Whatever follows the closing parenthesis (`iso_14179_2(x_l = 0.846), external`) is kept as it is.
 pub fn law_words(label: &str) -> String {
+    let (law, rest) = match label.rfind(')') {
+        Some(end) => label.split_at(end + 1),
+        None => label.split_once(", ").map_or((label, ""), |(l, _)| (l, &label[l.len()..])),
+    };
+    format!("{}{rest}", law_words_of(law))
+}
+
+fn law_words_of(label: &str) -> String {
     let (name, args) = match label.split_once('(') {
         Some((n, a)) => (n, a.trim_end_matches(')')),
         None => (label, ""),
@@ -39,5 +48,19 @@ pub fn law_words(label: &str) -> String {
         title
     } else {
         format!("{title} {}", args.join(", "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::law_words;
+
+    /// Arguments in words, and what follows the law (a formulation) kept: the duty cycle's label
+    /// once read "X_L = 0.846), external = ".
+    #[test]
+    fn labels_in_words() {
+        assert_eq!(law_words("coulomb(mu = 0.04)"), "Coulomb μ = 0.04");
+        assert_eq!(law_words("iso_14179_2(x_l = 0.846), external"), "ISO/TR 14179-2 X_L = 0.846, external");
+        assert_eq!(law_words("coulomb, internal"), "Coulomb, internal");
     }
 }

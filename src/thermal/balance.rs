@@ -3,10 +3,20 @@
 //! The balance θ* is the lowest root above ambient of P_V(θ) − P_Q(θ), the losses at oil
 //! temperature θ less what the housing gives off ([`super::Housing::dissipation`]): the temperature a
 //! gearbox started cold reaches. At ambient P_Q = 0 and P_V ≥ 0, so the difference starts at or above
-//! zero; it is scanned in steps of [`SCAN_STEP`] up to [`SEARCH_LIMIT`] (200 °C) for its first sign
-//! change, which Brent's method then locates to [`TEMPERATURE_TOLERANCE`]. A box with no losses
-//! (standing still) stays at ambient. (Two roots closer together than the scan step would be missed:
-//! P_V falls and P_Q rises with θ, so the difference has one root in every scene we know.)
+//! zero. A box with no losses (standing still) stays at ambient.
+//!
+//! P_Q is cheap and strongly non-linear (θ^(4/3) convection, θ⁴ radiation); P_V is costly (a mesh
+//! integral and the budget per temperature) and varies slowly. So the bracket is found from P_Q
+//! alone: g₀ = P_Q⁻¹(P_V(θ_a)), the temperature at which the housing gives off the losses at
+//! ambient ([`super::Housing::temperature_giving_off`]). If the surplus at g₀ is not positive the
+//! losses did not rise from θ_a to g₀ and the root lies in [θ_a, g₀]. Within a bracket, P_V is
+//! replaced by its secant through the two latest points and P_Q kept exact; the root of that model
+//! is the next point (safeguarded by the bracket), to [`TEMPERATURE_TOLERANCE`]. When P_V falls
+//! with θ (thinner oil: the usual case) the surplus falls strictly and this root is the only one. If instead the losses rose, the surplus is
+//! scanned upward from g₀ in steps of [`SCAN_STEP`] up to [`SEARCH_LIMIT`] (200 °C) for its first sign
+//! change; below g₀ the surplus cannot change sign when P_V rises (P_V(θ) ≥ P_V(θ_a) = P_Q(g₀) >
+//! P_Q(θ) for θ < g₀). Two roots closer together than the scan step would be missed there. The
+//! whole costs about eight P_V evaluations (the benchmark `thermal::balance_of_one_point`).
 //!
 //! The thermal rating at a speed (the idea of ISO/TR 14179-1) is the pinion torque T at which the
 //! balance is the limit: P_V(θ_lim; T) = P_Q(θ_lim), a root in T (the losses grow with torque),
@@ -77,29 +87,75 @@ pub struct Balance {
 
 /// The balance of losses `p_v(T)` (W at oil temperature T in K) against `housing`.
 pub fn balance(p_v: impl Fn(f64) -> f64, housing: &Housing) -> Balance {
-    let surplus = |t: f64| p_v(t) - housing.dissipation(t).total;
-    let start = housing.ambient;
-    let mut temperature = None;
-    if surplus(start) <= 0.0 {
-        temperature = Some(start);
-    } else {
-        let steps = ((SEARCH_LIMIT - start) / SCAN_STEP).ceil().max(1.0) as usize;
-        let mut lo = start;
-        for i in 1..=steps {
-            let hi = (start + i as f64 * SCAN_STEP).min(SEARCH_LIMIT);
-            if surplus(hi) <= 0.0 {
-                temperature = Some(brent(surplus, lo, hi, TEMPERATURE_TOLERANCE));
-                break;
-            }
-            lo = hi;
-        }
-    }
+    let temperature = lowest_root(p_v, housing);
     let status = match temperature {
         None => BalanceStatus::NoEquilibrium,
         Some(t) if t > housing.max_oil_temperature => BalanceStatus::AboveLimit,
         Some(_) => BalanceStatus::Ok,
     };
     Balance { temperature, status }
+}
+
+/// θ* as the module's documentation describes, `None` without a root up to [`SEARCH_LIMIT`].
+fn lowest_root(p_v: impl Fn(f64) -> f64, housing: &Housing) -> Option<f64> {
+    let q = |t: f64| housing.dissipation(t).total;
+    let start = housing.ambient;
+    let at_start = p_v(start);
+    if at_start - q(start) <= 0.0 {
+        return Some(start);
+    }
+    let g0 = housing.temperature_giving_off(at_start, SEARCH_LIMIT);
+    let at_g0 = p_v(g0);
+    if at_g0 - q(g0) <= 0.0 {
+        return Some(locate(&p_v, housing, (start, at_start), (g0, at_g0)));
+    }
+    let steps = ((SEARCH_LIMIT - g0) / SCAN_STEP).ceil().max(1.0) as usize;
+    let mut lo = (g0, at_g0);
+    for i in 1..=steps {
+        let t = (g0 + i as f64 * SCAN_STEP).min(SEARCH_LIMIT);
+        let hi = (t, p_v(t));
+        if hi.1 - q(t) <= 0.0 {
+            return Some(locate(&p_v, housing, lo, hi));
+        }
+        lo = hi;
+    }
+    None
+}
+
+/// The root of P_V − P_Q between `lo` (surplus > 0) and `hi` (surplus ≤ 0), each given with its
+/// P_V: P_V is replaced by the secant through the two latest points and P_Q kept exact, the model's
+/// root (in P_Q alone, [`crate::numerics::roots::brent`]) is the next point; the bracket is kept,
+/// and a model root outside it is replaced by the bracket's midpoint. Only P_V's curvature is
+/// left to the secant, so it converges in a few P_V evaluations; it stops when the Newton step
+/// |surplus / (dP_Q/dθ − secant slope)| from the latest point is below [`TEMPERATURE_TOLERANCE`],
+/// or the bracket is.
+fn locate(p_v: impl Fn(f64) -> f64, housing: &Housing, lo: (f64, f64), hi: (f64, f64)) -> f64 {
+    let q = |t: f64| housing.dissipation(t).total;
+    let (mut lo_t, mut hi_t) = (lo.0, hi.0);
+    let (mut older, mut newer) = (lo, hi);
+    for _ in 0..100 {
+        let slope = (newer.1 - older.1) / (newer.0 - older.0);
+        let model = |t: f64| q(t) - (newer.1 + slope * (t - newer.0));
+        let next = if model(lo_t) < 0.0 && model(hi_t) > 0.0 {
+            brent(model, lo_t, hi_t, 1e-3 * TEMPERATURE_TOLERANCE)
+        } else {
+            0.5 * (lo_t + hi_t)
+        };
+        let at = p_v(next);
+        let surplus = at - q(next);
+        if surplus > 0.0 {
+            lo_t = next;
+        } else {
+            hi_t = next;
+        }
+        let dq = (q(next + 1e-3) - q(next - 1e-3)) / 2e-3;
+        let newton_step = (surplus / (dq - slope)).abs();
+        (older, newer) = (newer, (next, at));
+        if surplus == 0.0 || newton_step < TEMPERATURE_TOLERANCE || hi_t - lo_t < TEMPERATURE_TOLERANCE {
+            return next;
+        }
+    }
+    brent(|t| p_v(t) - q(t), lo_t, hi_t, TEMPERATURE_TOLERANCE)
 }
 
 /// The pinion torque (N·m) at which the balance is `limit` (K), for losses `p_v(torque, T)` at one
@@ -137,6 +193,29 @@ mod tests {
         assert_eq!(balance(|t| p_v(0.99 * rating, t), &h).status, BalanceStatus::Ok);
         let hot = Housing { max_oil_temperature: limit, ..h.clone() };
         assert_eq!(balance(|t| p_v(1.01 * rating, t), &hot).status, BalanceStatus::AboveLimit);
+    }
+
+    /// Losses rising with temperature (the scan branch) and losses falling steeply (the bracket
+    /// branch): θ* is a root to 1e-6 W of surplus, the surplus is positive 1e-6 K below it, and the
+    /// falling case (900 W falling 2.7-fold every 40 K) costs at most 10 P_V evaluations (9 when
+    /// written).
+    #[test]
+    fn rising_and_falling_losses() {
+        let h = Housing::still_air(0.42, 298.15);
+        let calls = std::cell::Cell::new(0);
+        let rising = |t: f64| 150.0 + 2.5 * (t - 298.15);
+        let falling = |t: f64| {
+            calls.set(calls.get() + 1);
+            900.0 * (-(t - 298.15) / 40.0).exp() + 60.0
+        };
+        for p_v in [&rising as &dyn Fn(f64) -> f64, &falling] {
+            let t = balance(p_v, &h).temperature.unwrap();
+            let surplus = |t: f64| p_v(t) - h.dissipation(t).total;
+            assert!(surplus(t).abs() < 1e-6 && surplus(t - 1e-6) > 0.0, "{t}");
+        }
+        calls.set(0);
+        balance(falling, &h);
+        assert!(calls.get() <= 10, "{} evaluations", calls.get());
     }
 
     /// No-load losses above what the housing gives off at the limit: a rating of zero; losses above

@@ -95,6 +95,28 @@ impl Housing {
         let cooler = self.cooler.map_or(0.0, |c| c.conductance * (t - c.above).max(0.0));
         Dissipation { convection, radiation, foundation, cooler, total: convection + radiation + foundation + cooler }
     }
+
+    /// The oil temperature (K) at which the housing gives off `p` (W), between ambient and `top`:
+    /// P_Q rises with θ (every path grows with θ − θ_a), so this is a root of P_Q(θ) − p, located by
+    /// Brent's method to 1e-12 K (P_Q costs nanoseconds). Ambient for `p` ≤ P_Q(θ_a), `top` for
+    /// `p` ≥ P_Q(top).
+    ///
+    /// ```
+    /// use gearloss::thermal::Housing;
+    /// let h = Housing::still_air(0.42, 298.15);
+    /// let t = h.temperature_giving_off(300.0, 473.15);
+    /// assert!((h.dissipation(t).total - 300.0).abs() < 1e-9);
+    /// ```
+    pub fn temperature_giving_off(&self, p: f64, top: f64) -> f64 {
+        let gap = |t: f64| self.dissipation(t).total - p;
+        if gap(self.ambient) >= 0.0 {
+            self.ambient
+        } else if gap(top) <= 0.0 {
+            top
+        } else {
+            crate::numerics::roots::brent(gap, self.ambient, top, 1e-12)
+        }
+    }
 }
 
 #[cfg(test)]

@@ -94,13 +94,15 @@ struct Samples {
     keep: bool,
     at: Vec<(f64, f64)>,
     last: (f64, [f64; 3]),
+    /// The longest accepted step (s): the next cycle step starts with it.
+    longest: f64,
 }
 
 impl Solout<f64, [f64; 3]> for Samples {
     fn solout<I>(
         &mut self,
         t_curr: f64,
-        _t_prev: f64,
+        t_prev: f64,
         y_curr: &[f64; 3],
         _y_prev: &[f64; 3],
         _interpolator: &mut I,
@@ -110,6 +112,7 @@ impl Solout<f64, [f64; 3]> for Samples {
         I: Interpolation<f64, [f64; 3]> + ?Sized,
     {
         self.last = (t_curr, *y_curr);
+        self.longest = self.longest.max(t_curr - t_prev);
         if self.keep {
             self.at.push((t_curr, y_curr[0]));
         }
@@ -128,14 +131,19 @@ fn run<F: Fn(usize, f64) -> f64>(
     let mut y = [housing.ambient, 0.0, 0.0];
     let mut t0 = 0.0;
     let mut out = Transient { steps: Vec::new(), samples: vec![(0.0, y[0])], error: 0.0 };
+    let mut h0: f64 = 0.0;
     for (step, &dt) in durations.iter().enumerate() {
         let ode = Cycle { p_v, housing, c, step };
         let start = y;
-        let mut samples = Samples { keep, at: Vec::new(), last: (t0, start) };
+        let mut samples = Samples { keep, at: Vec::new(), last: (t0, start), longest: 0.0 };
         let mut m = ExplicitRungeKutta::dop853().rtol(tol).atol(tol).max_steps(1_000_000);
+        if h0 > 0.0 {
+            m = m.h0(h0.min(dt));
+        }
         solve_ode(&mut m, &ode, t0, t0 + dt, &start, &mut samples)
             .map_err(|e| format!("the duty cycle's transient failed in step {}: {e:?}", step + 1))?;
         let (t_end, end) = samples.last;
+        h0 = samples.longest;
         if (t_end - (t0 + dt)).abs() > 1e-9 * (t0 + dt) {
             return Err(format!("the duty cycle's transient stopped at {t_end} s in step {}", step + 1));
         }

@@ -1,7 +1,7 @@
 //! The thermal balance end to end: the duty cycle's books, the rating on the limit, the balance at
 //! `oil_temperature = equilibrium`, the zero-speed and zero-torque steps, the step limit.
 
-use gearloss::evaluate::thermal::{thermal_point, Losses};
+use gearloss::evaluate::thermal::{ratings, Losses};
 use gearloss::evaluate::{prepare, state_at, Plan};
 use gearloss::geometry::OperatingState;
 use gearloss::model::Formulation;
@@ -32,6 +32,7 @@ fn duty_cycle_energy_is_conserved() {
 }
 
 /// At the rating torque the balance is the limit (to 1e-6 K), and at the 95 °C rating it is 95 °C.
+/// A rating is the speed's: the report gives every torque at one speed the same two ratings.
 #[test]
 fn rating_torque_puts_the_balance_on_the_limit() {
     let scene = thermal_scene();
@@ -41,12 +42,27 @@ fn rating_torque_puts_the_balance_on_the_limit() {
     let housing = scene.housing.as_ref().unwrap();
     let spec = &scene.friction[0];
     let state = state_at(&scene.operating, 1);
-    let point = thermal_point(&losses, housing, spec, Formulation::External, state);
-    for (rating, target) in [(point.rating.unwrap(), housing.max_oil_temperature), (point.rating_95.unwrap(), 368.15)] {
+    let r = ratings(&losses, housing, spec, Formulation::External, state.pinion_speed, state.pinion_torque);
+    for (rating, target) in [(r.at_limit.unwrap(), housing.max_oil_temperature), (r.at_95.unwrap(), 368.15)] {
         let at = OperatingState { pinion_torque: rating, ..state };
-        let b = thermal_point(&losses, housing, spec, Formulation::External, at).balance;
+        let b = gearloss::thermal::balance(|t| losses.at(spec, Formulation::External, at, t).total(), housing);
         assert!((b.temperature.unwrap() - target).abs() < 1e-6, "{rating} N·m: {b:?}");
     }
+    let report = gearloss::report_of(&scene);
+    let by_speed = |speed: f64| {
+        let mut at: Vec<_> = report
+            .thermal
+            .iter()
+            .filter(|t| t.pinion_speed.si() == speed)
+            .map(|t| {
+                (t.thermal_rating.as_ref().map(|r| r.torque.si()), t.thermal_rating_95.as_ref().map(|r| r.torque.si()))
+            })
+            .collect();
+        assert!(at.len() >= 2, "{speed}: {at:?}");
+        at.dedup();
+        at.len()
+    };
+    assert_eq!(by_speed(state.pinion_speed), 1);
 }
 
 /// Zero speed loses nothing; zero torque loses only the no-load parts (the mesh carries nothing).
