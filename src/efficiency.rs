@@ -199,11 +199,20 @@ pub fn mean_efficiencies_along_lines(ctx: &LawContext, law: &dyn FrictionLaw) ->
 }
 
 /// Positions along the line of action where a law's integrand changes form (for means over A–E).
+/// With `load_sharing = stiffness` and tip relief, also where a pair's load bends: the positions a
+/// pair holds at the cycle's kink times ([`crate::geometry::teeth::load_sharing::LoadSharing::spur_kink_times`]).
 pub fn break_positions(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
-    let p = ctx.geometry.points;
+    let g = ctx.geometry;
+    let p = g.points;
     let mut v = vec![p.a, p.p, p.e];
-    v.extend(ctx.geometry.pair_change_points().iter().map(|(_, u)| *u));
+    v.extend(g.pair_change_points().iter().map(|(_, u)| *u));
     v.extend(law.switch_points());
+    if let Sharing::Stiffness(model) = ctx.sharing {
+        for tau in model.spur_kink_times(g.sharing_force(&ctx.state)) {
+            let along = (0..MAX_CONTACTS).map(|j| p.a + g.base_pitch * (tau + j as f64));
+            v.extend(along.filter(|u| *u > p.a && *u < p.e));
+        }
+    }
     v
 }
 
