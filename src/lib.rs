@@ -123,7 +123,7 @@ pub fn evaluate_sweep(
 
 /// Stage 3, the details: the plan's detail points in full, the contact curves and the dynamics.
 pub fn evaluate_details(scene: &Scene, plan: &Plan, progress: &dyn Progress) -> Evaluation {
-    evaluate::stages::details(scene, plan, &[], progress)
+    evaluate::stages::details(scene, plan, &Default::default(), progress)
 }
 
 /// Stage 4: the serde report data, from the detail points and the tally of every point.

@@ -24,7 +24,7 @@ pub fn report_of(scene: &Scene) -> Report {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
         .expect("records that go nowhere cannot fail to be written");
-    let eval = details(scene, &plan, &streamed.detail_dynamics, &Quiet);
+    let eval = details(scene, &plan, &streamed, &Quiet);
     report::build_report(scene, &eval, &streamed.tally, &plan)
 }
 
@@ -39,7 +39,7 @@ fn finish(
     scene: &Scene,
     plan: &Plan,
     tally: &Tally,
-    known: &[(usize, evaluate::dynamics::DynamicsPoint)],
+    known: &evaluate::stream::Streamed,
     progress: &dyn Progress,
 ) -> Result<(Report, RenderedReport), RunError> {
     let eval = details(scene, plan, known, progress);
@@ -60,10 +60,10 @@ fn finish(
 fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
     let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let budget = evaluate::records::budget_columns(scene);
-    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), &budget, true).map_err(RunError::io("records"))?;
+    let extra = evaluate::records::ExtraColumns::of(scene);
+    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), &extra, true).map_err(RunError::io("records"))?;
     let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
-    let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, &Quiet)?;
+    let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed, &Quiet)?;
     if has_records(scene) {
         let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
         let text = |b: Vec<u8>| String::from_utf8(b).expect("records are UTF-8");
@@ -122,7 +122,7 @@ fn stream_into(
     if !has_records(scene) {
         return Ok((stream(scene, plan, &mut evaluate::records::NoRecords, progress).map_err(io)?, Vec::new()));
     }
-    let mut sink = shard::record_files(folder, dir, &evaluate::records::budget_columns(scene)).map_err(&io)?;
+    let mut sink = shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(scene)).map_err(&io)?;
     let streamed = stream(scene, plan, &mut sink, progress).map_err(&io)?;
     sink.finish().map_err(&io)?;
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
@@ -141,7 +141,7 @@ fn run_scene_into(
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     let (streamed, mut files) = stream_into(scene, &plan, folder, dir, progress)?;
-    let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed.detail_dynamics, progress)?;
+    let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed, progress)?;
     progress.stage("write", rendered.files.len() as u64);
     for (file, content) in &rendered.files {
         folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
@@ -229,7 +229,7 @@ pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -
         set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
         files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
     }
-    let (report, rendered) = finish(&scene, &plan, &set.tally, &[], progress)?;
+    let (report, rendered) = finish(&scene, &plan, &set.tally, &Default::default(), progress)?;
     for (file, content) in &rendered.files {
         folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
         files.push(file.clone());

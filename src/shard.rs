@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
-use crate::evaluate::records::RecordWriter;
+use crate::evaluate::records::{ExtraColumns, RecordWriter};
 use crate::evaluate::{Plan, Shard, Tally};
 use crate::folder::ReportFolder;
 use crate::progress::Progress;
@@ -27,12 +27,12 @@ pub const FORMAT: &str = "gearloss-shard-1";
 pub fn record_files(
     folder: &ReportFolder,
     dir: &str,
-    budget: &[String],
+    extra: &ExtraColumns,
 ) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
     let at = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     let csv = BufWriter::new(folder.create_file(&at(RECORDS_CSV))?);
     let jsonl = BufWriter::new(folder.create_file(&at(RECORDS_JSONL))?);
-    RecordWriter::new(csv, jsonl, budget, true)
+    RecordWriter::new(csv, jsonl, extra, true)
 }
 
 /// What a shard folder says of itself.

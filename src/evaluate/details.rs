@@ -11,12 +11,13 @@ use crate::model::Scene;
 
 /// The detail points of the plan in full (tables, film, laws, curves), the contact curves and the
 /// dynamics; `tick` is called once per detail point.
-/// `known` are dynamics the sweep's stream already computed (by point number), reused as they are.
+/// `known` is what the sweep's stream already computed (dynamics by point number, the teeth),
+/// reused as it is.
 pub fn evaluate_details(
     scene: &Scene,
     eval: &mut Evaluation,
     plan: &Plan,
-    known: &[(usize, dynamics::DynamicsPoint)],
+    known: &super::stream::Streamed,
     tick: &(dyn Fn() + Sync),
 ) {
     let points: Vec<PointEvaluation> = eval
@@ -41,8 +42,9 @@ pub fn evaluate_details(
         .collect();
     eval.points = points;
     eval.contact_curves = contact_curves::contact_curves(scene, eval);
-    eval.dynamics = dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), known);
+    eval.dynamics =
+        dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), &known.detail_dynamics);
     eval.efficiency_map = map::evaluate_map(scene, eval);
     eval.thermal = thermal::thermal_details(scene, eval);
-    eval.teeth = teeth::teeth_details(scene, &eval.geometry);
+    eval.teeth = known.teeth.clone().or_else(|| teeth::teeth_details(scene, &eval.geometry));
 }

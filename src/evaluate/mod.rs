@@ -43,6 +43,6 @@ pub use tally::Tally;
 pub fn evaluate_scene(scene: &Scene) -> Evaluation {
     let plan = Plan::new(&scene.operating, None, &[]);
     let mut eval = prepare(scene, &plan);
-    evaluate_details(scene, &mut eval, &plan, &[], &|| {});
+    evaluate_details(scene, &mut eval, &plan, &Default::default(), &|| {});
     eval
 }

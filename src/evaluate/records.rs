@@ -143,26 +143,48 @@ pub const CSV_COLUMNS: [&str; 23] = [
     "parameters",
 ];
 
-/// The header line of `records.csv`: [`CSV_COLUMNS`], then the scene's budget columns
-/// ([`crate::losses::columns::names`]; none without a gearbox).
-pub fn csv_header(budget: &[String]) -> String {
+/// The columns of `records.csv` after [`CSV_COLUMNS`], in groups each present as the scene asks:
+/// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
+/// balance's ([`super::thermal::ThermalRow::COLUMNS`]). A row fills the groups it has and leaves
+/// the others' cells empty.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ExtraColumns {
+    pub budget: Vec<String>,
+    pub thermal: Vec<String>,
+}
+
+impl ExtraColumns {
+    /// The scene's groups.
+    pub fn of(scene: &crate::model::Scene) -> ExtraColumns {
+        let budget = scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default();
+        let thermal = if scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some() {
+            super::thermal::ThermalRow::COLUMNS.iter().map(|c| c.to_string()).collect()
+        } else {
+            Vec::new()
+        };
+        ExtraColumns { budget, thermal }
+    }
+
+    /// The names in the order the CSV writes them.
+    pub fn names(&self) -> impl Iterator<Item = &String> {
+        self.budget.iter().chain(&self.thermal)
+    }
+
+    /// How many cells each group holds.
+    pub fn widths(&self) -> [usize; 2] {
+        [self.budget.len(), self.thermal.len()]
+    }
+}
+
+/// The header line of `records.csv`: [`CSV_COLUMNS`], then the scene's [`ExtraColumns`].
+pub fn csv_header(extra: &ExtraColumns) -> String {
     let mut s = CSV_COLUMNS.join(",");
-    for name in budget {
+    for name in extra.names() {
         s.push(',');
         s.push_str(name);
     }
     s.push('\n');
     s
-}
-
-/// The columns after the fixed ones: the scene's budget (none without a gearbox), then the thermal
-/// balance's when the scene asks for it.
-pub fn budget_columns(scene: &crate::model::Scene) -> Vec<String> {
-    let mut names = scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default();
-    if scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some() {
-        names.extend(super::thermal::ThermalRow::COLUMNS.iter().map(|c| c.to_string()));
-    }
-    names
 }
 
 /// A number as the record files write it: the shortest text that reads back to the same f64
@@ -189,9 +211,10 @@ fn text(s: &str) -> String {
     }
 }
 
-/// One CSV line of a row, with `budget_columns` budget cells after the fixed ones (empty where the
-/// row has no budget: friction and dynamics rows).
-pub fn csv_line(row: &SummaryRow, budget_columns: usize) -> String {
+/// One CSV line of a row, with the cells of each group of [`ExtraColumns`] after the fixed ones
+/// (`widths` of them; empty where the row has not that group: friction and dynamics rows have no
+/// budget).
+pub fn csv_line(row: &SummaryRow, widths: [usize; 2]) -> String {
     let kind = match row.kind {
         RowKind::Efficiency => "efficiency",
         RowKind::Friction => "friction",
@@ -220,18 +243,22 @@ pub fn csv_line(row: &SummaryRow, budget_columns: usize) -> String {
         })
         .collect();
     cells.push(text(&parameters.join("; ")));
-    let before = cells.len();
-    if let Some(b) = &row.budget {
-        cells.extend(crate::losses::columns::values(b).map(number));
-    }
-    if let Some(t) = &row.thermal {
-        cells.push(number(t.oil_temperature));
-        cells.push(t.thermal_status.name().to_string());
-        cells.extend(t.numbers().map(number));
-    }
-    // Rows without a budget (friction and dynamics rows) leave its cells empty.
-    debug_assert!(cells.len() - before <= budget_columns, "the budget's cells match the scene's columns");
-    cells.resize(before + budget_columns, String::new());
+    let mut group = |values: Vec<String>, width: usize| {
+        debug_assert!(values.len() <= width, "a row's cells match the scene's columns");
+        let start = cells.len();
+        cells.extend(values);
+        cells.resize(start + width, String::new());
+    };
+    group(
+        row.budget.as_ref().map_or_else(Vec::new, |b| crate::losses::columns::values(b).map(number).collect()),
+        widths[0],
+    );
+    let thermal = row.thermal.as_ref().map_or_else(Vec::new, |t| {
+        let mut v = vec![number(t.oil_temperature), t.thermal_status.name().to_string()];
+        v.extend(t.numbers().map(number));
+        v
+    });
+    group(thermal, widths[1]);
     let mut line = cells.join(",");
     line.push('\n');
     line
@@ -254,17 +281,17 @@ pub trait RecordSink {
 pub struct RecordWriter<C: Write, J: Write> {
     pub csv: C,
     pub jsonl: J,
-    /// How many budget columns follow the fixed ones.
-    pub budget_columns: usize,
+    /// How many cells each group of [`ExtraColumns`] holds.
+    pub widths: [usize; 2],
 }
 
 impl<C: Write, J: Write> RecordWriter<C, J> {
-    /// Starts both files: the CSV header line with the scene's `budget` columns (JSON Lines has none).
-    pub fn new(mut csv: C, jsonl: J, budget: &[String], with_header: bool) -> std::io::Result<Self> {
+    /// Starts both files: the CSV header line with the scene's `extra` columns (JSON Lines has none).
+    pub fn new(mut csv: C, jsonl: J, extra: &ExtraColumns, with_header: bool) -> std::io::Result<Self> {
         if with_header {
-            csv.write_all(csv_header(budget).as_bytes())?;
+            csv.write_all(csv_header(extra).as_bytes())?;
         }
-        Ok(RecordWriter { csv, jsonl, budget_columns: budget.len() })
+        Ok(RecordWriter { csv, jsonl, widths: extra.widths() })
     }
 
     pub fn finish(mut self) -> std::io::Result<(C, J)> {
@@ -277,7 +304,7 @@ impl<C: Write, J: Write> RecordWriter<C, J> {
 impl<C: Write, J: Write> RecordSink for RecordWriter<C, J> {
     fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
         for row in rows {
-            self.csv.write_all(csv_line(row, self.budget_columns).as_bytes())?;
+            self.csv.write_all(csv_line(row, self.widths).as_bytes())?;
             self.jsonl.write_all(jsonl_line(row).as_bytes())?;
         }
         Ok(())

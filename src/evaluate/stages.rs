@@ -1,7 +1,6 @@
 //! Stage 3 as the pipeline calls it: the plan's points streamed into a record sink, and the
 //! detail points in full, each announcing itself to a [`Progress`].
 
-use super::dynamics::DynamicsPoint;
 use super::evaluation::Evaluation;
 use super::plan::Plan;
 use super::records::RecordSink;
@@ -22,8 +21,8 @@ pub fn stream(
     evaluate_records(scene, &eval, plan, sink, &|n| progress.advance(n as u64))
 }
 
-/// The plan's detail points in full, reusing the dynamics `known` by point number.
-pub fn details(scene: &Scene, plan: &Plan, known: &[(usize, DynamicsPoint)], progress: &dyn Progress) -> Evaluation {
+/// The plan's detail points in full, reusing what the stream computed (`known`).
+pub fn details(scene: &Scene, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
     let mut eval = super::prepare::prepare(scene, plan);
     progress.stage("details", plan.detail.len() as u64);
     super::details::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));

@@ -20,13 +20,16 @@ use crate::model::Scene;
 /// Points evaluated together before their rows are written.
 pub const BLOCK: usize = 1024;
 
-/// What the stream computed beyond the tally: the dynamics of the detail points in its range, so
-/// that the details of a single run do not compute them twice.
+/// What the stream computed beyond the tally: the dynamics of the detail points in its range, and
+/// the teeth when its first point wrote their rows, so that the details of a single run do not
+/// compute them twice.
 #[derive(Debug, Default)]
 pub struct Streamed {
     pub tally: Tally,
     /// (point, its dynamics), for the plan's detail points.
     pub detail_dynamics: Vec<(usize, DynamicsPoint)>,
+    /// The pair's stiffness and transmission error, when the stream computed them.
+    pub teeth: Option<super::teeth::TeethDetails>,
 }
 
 /// Evaluates the plan's range of points, writes their rows to `sink` and returns their tally;
