@@ -31,7 +31,10 @@ pub fn report_of(scene: &Scene) -> Report {
 /// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
 pub fn has_records(scene: &Scene) -> bool {
     let a = &scene.analyses;
-    a.friction_along_loa || a.efficiency.is_some() || (a.dynamics && scene.dynamics.is_some())
+    a.friction_along_loa
+        || a.efficiency.is_some()
+        || (a.dynamics && scene.dynamics.is_some())
+        || a.transmission_error.is_some()
 }
 
 /// Stages 3 to 5 after the sweep: details (reusing the dynamics the stream computed), report, render.

@@ -11,6 +11,8 @@ use std::io::Write;
 
 use serde::{Deserialize, Serialize};
 
+use crate::geometry::OperatingState;
+
 /// One parameter of a law at the point (SI value and unit; `1` for a plain number).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ParameterValue {
@@ -29,6 +31,9 @@ pub enum RowKind {
     Friction,
     /// The dynamics summary of one dynamic formulation.
     Dynamics,
+    /// The static transmission error at one torque of the `transmission_error` analysis (point 0:
+    /// not an operating point of the sweep; speed 0, the error is static).
+    TransmissionError,
 }
 
 /// One summary record.
@@ -84,9 +89,44 @@ pub struct SummaryRow {
     /// The thermal balance of an efficiency row, when the scene asks for it.
     #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
     pub thermal: Option<super::thermal::ThermalRow>,
+    /// The static transmission error of a `transmission_error` row.
+    #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
+    pub ste: Option<super::teeth::SteRow>,
 }
 
 impl SummaryRow {
+    /// A row of `point` (1-based; 0 for rows of no operating point) with nothing computed yet.
+    pub fn blank(point: usize, (torque_index, speed_index): (usize, usize), state: OperatingState) -> SummaryRow {
+        SummaryRow {
+            point,
+            torque_index,
+            speed_index,
+            pinion_torque: state.pinion_torque,
+            pinion_speed: state.pinion_speed,
+            kind: RowKind::Friction,
+            law_index: None,
+            law: String::new(),
+            label: String::new(),
+            formulation: String::new(),
+            mean_abs_mu: None,
+            mean_efficiency: None,
+            mean_efficiency_error: None,
+            min_efficiency: None,
+            max_efficiency: None,
+            power_loss: None,
+            validity_samples: None,
+            validity_outside: None,
+            spectral_radius: None,
+            dte_peak_to_peak: None,
+            dte_mean: None,
+            dynamic_factor: None,
+            parameters: Vec::new(),
+            budget: None,
+            thermal: None,
+            ste: None,
+        }
+    }
+
     /// The row's numbers by CSV column name, in [`CSV_COLUMNS`] order after the text columns.
     fn numbers(&self) -> [(&'static str, Option<f64>); 14] {
         let count = |n: Option<usize>| n.map(|n| n as f64);
@@ -110,7 +150,8 @@ impl SummaryRow {
 
     /// Names of the columns whose value is present but not a finite number.
     pub fn non_finite(&self) -> impl Iterator<Item = &'static str> + '_ {
-        self.numbers().into_iter().filter(|(_, v)| v.is_some_and(|x| !x.is_finite())).map(|(n, _)| n)
+        let ste = self.ste.iter().flat_map(|s| super::teeth::SteRow::COLUMNS.into_iter().zip(s.numbers().map(Some)));
+        self.numbers().into_iter().chain(ste).filter(|(_, v)| v.is_some_and(|x| !x.is_finite())).map(|(n, _)| n)
     }
 }
 
@@ -145,12 +186,14 @@ pub const CSV_COLUMNS: [&str; 23] = [
 
 /// The columns of `records.csv` after [`CSV_COLUMNS`], in groups each present as the scene asks:
 /// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
-/// balance's ([`super::thermal::ThermalRow::COLUMNS`]). A row fills the groups it has and leaves
-/// the others' cells empty.
+/// balance's ([`super::thermal::ThermalRow::COLUMNS`]), then the static transmission error's
+/// ([`super::teeth::SteRow::COLUMNS`]). A row fills the groups it has and leaves the others' cells
+/// empty.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ExtraColumns {
     pub budget: Vec<String>,
     pub thermal: Vec<String>,
+    pub ste: Vec<String>,
 }
 
 impl ExtraColumns {
@@ -162,17 +205,22 @@ impl ExtraColumns {
         } else {
             Vec::new()
         };
-        ExtraColumns { budget, thermal }
+        let ste = if scene.analyses.transmission_error.is_some() {
+            super::teeth::SteRow::COLUMNS.iter().map(|c| c.to_string()).collect()
+        } else {
+            Vec::new()
+        };
+        ExtraColumns { budget, thermal, ste }
     }
 
     /// The names in the order the CSV writes them.
     pub fn names(&self) -> impl Iterator<Item = &String> {
-        self.budget.iter().chain(&self.thermal)
+        self.budget.iter().chain(&self.thermal).chain(&self.ste)
     }
 
     /// How many cells each group holds.
-    pub fn widths(&self) -> [usize; 2] {
-        [self.budget.len(), self.thermal.len()]
+    pub fn widths(&self) -> [usize; 3] {
+        [self.budget.len(), self.thermal.len(), self.ste.len()]
     }
 }
 
@@ -214,11 +262,12 @@ fn text(s: &str) -> String {
 /// One CSV line of a row, with the cells of each group of [`ExtraColumns`] after the fixed ones
 /// (`widths` of them; empty where the row has not that group: friction and dynamics rows have no
 /// budget).
-pub fn csv_line(row: &SummaryRow, widths: [usize; 2]) -> String {
+pub fn csv_line(row: &SummaryRow, widths: [usize; 3]) -> String {
     let kind = match row.kind {
         RowKind::Efficiency => "efficiency",
         RowKind::Friction => "friction",
         RowKind::Dynamics => "dynamics",
+        RowKind::TransmissionError => "transmission_error",
     };
     let n = row.numbers();
     let mut cells = vec![
@@ -259,6 +308,7 @@ pub fn csv_line(row: &SummaryRow, widths: [usize; 2]) -> String {
         v
     });
     group(thermal, widths[1]);
+    group(row.ste.as_ref().map_or_else(Vec::new, |s| s.numbers().map(|x| number(Some(x))).to_vec()), widths[2]);
     let mut line = cells.join(",");
     line.push('\n');
     line
@@ -282,7 +332,7 @@ pub struct RecordWriter<C: Write, J: Write> {
     pub csv: C,
     pub jsonl: J,
     /// How many cells each group of [`ExtraColumns`] holds.
-    pub widths: [usize; 2],
+    pub widths: [usize; 3],
 }
 
 impl<C: Write, J: Write> RecordWriter<C, J> {

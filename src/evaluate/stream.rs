@@ -14,7 +14,7 @@ use super::setup::{contact_table, Setup};
 use super::tally::{Implausible, ImplausibleAt, LawNote, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
 use super::thermal::{thermal_point, Losses, RatingTable, ThermalRow};
 use crate::efficiency::EfficiencyResult;
-use crate::geometry::{ContactPoint, OperatingState};
+use crate::geometry::ContactPoint;
 use crate::model::Scene;
 
 /// Points evaluated together before their rows are written.
@@ -46,6 +46,13 @@ pub fn evaluate_records(
         DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
     let ratings = RatingTable::new(scene);
     let mut out = Streamed::default();
+    // The transmission error's rows come first, from the run (or shard) that holds point 1.
+    if plan.range.start == 0 && scene.analyses.transmission_error.is_some() {
+        out.teeth = super::teeth::teeth_details(scene, &eval.geometry);
+        if let Some(teeth) = &out.teeth {
+            sink.write_rows(&super::teeth::transmission_error_rows(teeth))?;
+        }
+    }
     let mut start = plan.range.start;
     while start < plan.range.end {
         let end = (start + BLOCK).min(plan.range.end);
@@ -83,7 +90,7 @@ fn point_summary(
     let state = state_at(op, k);
     let (ti, si) = (k / plan.speeds, k % plan.speeds);
     let table = contact_table(eval, &state);
-    let blank = blank_row(k, (ti, si), state);
+    let blank = SummaryRow::blank(k + 1, (ti, si), state);
     let budget = eval.loss_budget(scene, &state);
     let thermal = scene
         .housing
@@ -165,37 +172,6 @@ fn point_summary(
         implausible.into_iter().map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what }).collect();
     let tally = Tally::of_point(k, &rows, plan.kept(k), laws, implausible);
     (rows, tally, dynamics_point)
-}
-
-/// A summary row of point `k` with nothing computed yet.
-fn blank_row(k: usize, (torque_index, speed_index): (usize, usize), state: OperatingState) -> SummaryRow {
-    SummaryRow {
-        point: k + 1,
-        torque_index,
-        speed_index,
-        pinion_torque: state.pinion_torque,
-        pinion_speed: state.pinion_speed,
-        kind: RowKind::Friction,
-        law_index: None,
-        law: String::new(),
-        label: String::new(),
-        formulation: String::new(),
-        mean_abs_mu: None,
-        mean_efficiency: None,
-        mean_efficiency_error: None,
-        min_efficiency: None,
-        max_efficiency: None,
-        power_loss: None,
-        validity_samples: None,
-        validity_outside: None,
-        spectral_radius: None,
-        dte_peak_to_peak: None,
-        dte_mean: None,
-        dynamic_factor: None,
-        parameters: Vec::new(),
-        budget: None,
-        thermal: None,
-    }
 }
 
 /// The contact whose Hertzian half-width is furthest beyond its limit (a fraction of the reduced

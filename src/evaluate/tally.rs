@@ -223,7 +223,7 @@ impl Tally {
                     unstable_points: usize::from(row.spectral_radius.is_some_and(|r| r > 1.0 + 1e-9)),
                     max_spectral_radius: at(row.spectral_radius),
                 }),
-                RowKind::Friction => {}
+                RowKind::Friction | RowKind::TransmissionError => {}
             }
         }
         if keep {

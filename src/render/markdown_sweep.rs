@@ -21,6 +21,14 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
         points(rec.operating_points),
         if rec.reported_in_full >= rec.operating_points { "Every point is".to_string() } else { format!("{} of them are", rec.reported_in_full) }
     );
+    let te = r.transmission_error.len();
+    if te > 0 {
+        let _ = writeln!(
+            out,
+            "Before them, one `transmission_error` row per torque of the static transmission error ({te} row{}: point 0, speed 0; `ste_peak_to_peak_m`, `ste_mean_m`, `ste_mean_error_m`).\n",
+            if te == 1 { "" } else { "s" }
+        );
+    }
     let Some(s) = &r.sweep else { return };
     if !s.efficiency.is_empty() {
         let _ = writeln!(

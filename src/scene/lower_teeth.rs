@@ -11,7 +11,7 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::geometry::teeth::load_sharing::{ReliefShape, Reliefs, TipRelief};
 use crate::geometry::teeth::outline::OutlineProblem;
 use crate::geometry::teeth::pair_stiffness::{Bodies, PairStiffness, StiffnessProblem};
-use crate::model::{Analyses, DynamicsSpec, GearPair, Given, Sweep, TipReliefSpec, Torque};
+use crate::model::{Analyses, DynamicsSpec, Gear, GearPair, Given, Sweep, TipReliefSpec, Torque};
 
 const RELIEF_KEYS: &[&str] = &["amount", "length", "shape"];
 const SHAPES: &[&str] = &["linear", "parabolic"];
@@ -212,5 +212,52 @@ pub(crate) fn check_teeth(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Opti
             );
         }
     }
+    if errors.len() == before {
+        errors.extend(contact_ratio_under_relief(&g, gears));
+    }
     (errors.len() == before).then_some(())
+}
+
+/// The contact ratio under relief: the path of contact less both reliefs (the wheel's from A, the
+/// pinion's up to E) is where teeth meet unrelieved; shorter than a base pitch (for a helical pair,
+/// its ratio and the overlap ratio together below 1) and there are instants when every pair in
+/// contact is inside a relief, where no pair carries until the relief closes: the static
+/// transmission error is not defined there. Said with where.
+fn contact_ratio_under_relief(g: &crate::geometry::PairGeometry, gears: [&Gear; 2]) -> Option<Diagnostic> {
+    let length = |gear: &Gear| gear.tip_relief.as_ref().map_or(0.0, |r| r.length.value.get::<meter>());
+    let (pinion, wheel) = (length(gears[0]), length(gears[1]));
+    let path = g.points.e - g.points.a;
+    let unrelieved = path - pinion - wheel;
+    let ratio = unrelieved / g.base_pitch;
+    let overlap = if g.is_helical() { g.overlap_ratio } else { 0.0 };
+    if ratio + overlap >= 1.0 {
+        return None;
+    }
+    let spec = gears
+        .iter()
+        .filter_map(|gear| gear.tip_relief.as_ref())
+        .max_by(|a, b| a.length.value.get::<meter>().total_cmp(&b.length.value.get::<meter>()))?;
+    let mm = |x: f64| format!("{:.4} mm", x * 1e3);
+    Some(
+        Diagnostic::new(
+            DiagnosticKind::Geometry,
+            spec.length.span,
+            format!(
+                "the reliefs leave {} of the path of contact g_α = {} unrelieved, less than a base pitch p_b = {} (contact ratio under relief {:.3}{}): while a pair runs from s = {} to {} from A, every pair in contact is inside a relief and none carries until its relief closes, so the transmission error is not defined there",
+                mm(unrelieved.max(0.0)),
+                mm(path),
+                mm(g.base_pitch),
+                ratio,
+                if g.is_helical() { format!(" + overlap {:.3}", overlap) } else { String::new() },
+                mm(path - pinion),
+                mm((wheel + g.base_pitch).min(path)),
+            ),
+        )
+        .hint(format!(
+            "shorten the reliefs: together at most g_α − p_b = {} (pinion {} + wheel {} now)",
+            mm(path - g.base_pitch),
+            mm(pinion),
+            mm(wheel)
+        )),
+    )
 }

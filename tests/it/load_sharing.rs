@@ -151,3 +151,57 @@ fn helical_scene_shares_by_stiffness_end_to_end() {
     let (a, b) = (eta(&equal), eta(&by_stiffness));
     assert!(a.is_some() && b.is_some() && a != b, "{a:?} vs {b:?}");
 }
+
+/// records.csv and records.jsonl carry the static transmission error: one `transmission_error` row
+/// per torque of the analysis, before the operating points, with the report's peak-to-peak and
+/// mean (report.json rounds to 10 digits: 1e-9 relative). Run as two shards and merged, the record
+/// files equal a single run's byte for byte (the rows come from the shard holding point 1).
+#[test]
+fn transmission_error_rows_in_the_records() {
+    let path = crate::root().join("specs/fzg_c_tip_relief.gear");
+    let source = std::fs::read_to_string(&path).unwrap();
+    let scene = crate::scene(&path);
+    let out = std::env::temp_dir().join(format!("gearloss-te-records-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    let single = gearloss::run_into("tip.gear", &source, &scene, &out.join("single"), None, &gearloss::Quiet).unwrap();
+    let csv = std::fs::read_to_string(single.folder.join("records.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(single.folder.join("report.json")).unwrap()).unwrap();
+    let te = report["transmission_error"].as_array().unwrap();
+    assert_eq!(te.len(), 3);
+    for (i, t) in te.iter().enumerate() {
+        let r = &rows[i];
+        assert_eq!(
+            (r[col("kind")], r[col("point")], r[col("torque_index")]),
+            ("transmission_error", "0", &*i.to_string())
+        );
+        let close = |cell: &str, v: &serde_json::Value| {
+            let (a, b) = (cell.parse::<f64>().unwrap(), v["value"].as_f64().unwrap());
+            assert!((a - b).abs() <= 1e-9 * b.abs(), "{a} vs {b}");
+        };
+        close(r[col("pinion_torque_N_m")], &t["pinion_torque"]);
+        close(r[col("ste_peak_to_peak_m")], &t["peak_to_peak"]);
+        close(r[col("ste_mean_m")], &t["mean"]);
+    }
+    assert!(rows[3..].iter().all(|r| r[col("kind")] != "transmission_error" && r[col("ste_mean_m")].is_empty()));
+    let jsonl = std::fs::read_to_string(single.folder.join("records.jsonl")).unwrap();
+    assert_eq!(jsonl.lines().count(), rows.len());
+    assert!(jsonl.lines().next().unwrap().contains("\"kind\":\"transmission_error\",\"law\":\"\""));
+    let mut shards = Vec::new();
+    for index in 1..=2 {
+        let shard = Some(gearloss::Shard { index, count: 2 });
+        shards.push(
+            gearloss::run_into("tip.gear", &source, &scene, &out.join("shards"), shard, &gearloss::Quiet)
+                .unwrap()
+                .folder,
+        );
+    }
+    let merged = gearloss::merge_into(&shards, &out.join("merged"), &gearloss::Quiet).unwrap();
+    for f in ["records.csv", "records.jsonl"] {
+        assert!(std::fs::read(single.folder.join(f)).unwrap() == std::fs::read(merged.folder.join(f)).unwrap(), "{f}");
+    }
+    std::fs::remove_dir_all(&out).unwrap();
+}
