@@ -22,6 +22,7 @@ fn relief(amount: f64, length: f64, shape: ReliefShape) -> Option<TipRelief> {
 
 /// The series of k_w reproduces the direct evaluation (two quadratures, series and tooth, each to
 /// 1e-12 or better) at points that are no nodes: 1e-11 relative; the error estimate is below 1e-11.
+/// The pieces the hot loops read (k_w and its weighted integrals) re-expand the series.
 #[test]
 fn pair_stiffness_series_converged() {
     for p in SCENES {
@@ -35,6 +36,16 @@ fn pair_stiffness_series_converged() {
             // The pieces the hot loops read re-expand the whole series to 1e-13 (the series itself: 1e-12).
             let whole = k.per_width_series(s);
             assert!((a - whole).abs() < 1e-13 * whole, "{p} at {s}: pieces {a} vs series {whole}");
+            // So do ∫ q^p k_w over a stretch, p = 0, 1, 2 (the helical line loads under relief), to
+            // 1e-13 of the same integral over the whole path.
+            let (pieces, series) = (k.weighted_integral(0.2 * s, s), k.weighted_integral_series(0.2 * s, s));
+            let full = k.weighted_integral_series(0.0, k.path);
+            for p_ in 0..3 {
+                assert!(
+                    (pieces[p_] - series[p_]).abs() < 1e-13 * full[p_],
+                    "{p} at {s}, q^{p_}: {pieces:?} vs {series:?}"
+                );
+            }
         }
     }
 }

@@ -98,6 +98,9 @@ pub struct PairStiffness {
     /// integrate k_w against the relief's polynomial in closed form).
     integral: Vec<f64>,
     moments: [Vec<f64>; 2],
+    /// ∫₀^s k_w, ∫₀^s q k_w, ∫₀^s q² k_w on the [`PIECES`] pieces, as `pieces` holds k_w (the
+    /// helical line loads under relief read them at every step of their gap's solve).
+    integral_pieces: [Vec<Vec<f64>>; 3],
     pub degree: usize,
     /// Relative error estimate of k_w: the teeth's quadratures and the series' fit.
     pub relative_error: f64,
@@ -161,6 +164,7 @@ impl PairStiffness {
             derivative: Vec::new(),
             integral: Vec::new(),
             moments: [Vec::new(), Vec::new()],
+            integral_pieces: [Vec::new(), Vec::new(), Vec::new()],
             degree: 0,
             relative_error: 0.0,
         };
@@ -209,13 +213,18 @@ impl PairStiffness {
             let values: Vec<f64> = top.nodes.iter().map(|s| (g * s).powi(p) * clenshaw(&c, *s)).collect();
             super::compliance_series::antiderivative(&top.coefficients(&values), g)
         });
-        self.pieces = (0..PIECES)
-            .map(|i| {
-                let l = Lobatto::get(PIECE_DEGREE);
-                let values: Vec<f64> = l.nodes.iter().map(|t| clenshaw(&c, (i as f64 + t) / PIECES as f64)).collect();
-                l.coefficients(&values)
-            })
-            .collect();
+        let pieces_of = |series: &[f64]| -> Vec<Vec<f64>> {
+            let l = Lobatto::get(PIECE_DEGREE);
+            (0..PIECES)
+                .map(|i| {
+                    let values: Vec<f64> =
+                        l.nodes.iter().map(|t| clenshaw(series, (i as f64 + t) / PIECES as f64)).collect();
+                    l.coefficients(&values)
+                })
+                .collect()
+        };
+        self.pieces = pieces_of(&c);
+        self.integral_pieces = [&self.integral, &self.moments[0], &self.moments[1]].map(|series| pieces_of(series));
         self.series = c;
         self.degree = degree;
         self.relative_error = worst + self.teeth[0].relative_error + self.teeth[1].relative_error;
@@ -228,9 +237,14 @@ impl PairStiffness {
 
     /// k_w(s) from the series (N/m²), s ∈ [0, g_α]: on its piece.
     pub fn per_width(&self, s: f64) -> f64 {
+        self.on_pieces(&self.pieces, s)
+    }
+
+    /// A function re-expanded on the [`PIECES`] pieces, at s ∈ [0, g_α] (clamped).
+    fn on_pieces(&self, pieces: &[Vec<f64>], s: f64) -> f64 {
         let x = (s / self.path * PIECES as f64).clamp(0.0, PIECES as f64);
         let i = (x as usize).min(PIECES - 1);
-        clenshaw(&self.pieces[i], x - i as f64)
+        clenshaw(&pieces[i], x - i as f64)
     }
 
     /// k_w(s) from the whole series (what the pieces re-expand).
@@ -239,17 +253,18 @@ impl PairStiffness {
     }
 
     fn integral_to(&self, s: f64) -> f64 {
-        clenshaw(&self.integral, (s / self.path).clamp(0.0, 1.0))
+        self.on_pieces(&self.integral_pieces[0], s)
     }
 
-    /// ∫ₐᵇ q^p k_w(q) dq for p = 0, 1, 2 (a, b in [0, g_α]).
+    /// ∫ₐᵇ q^p k_w(q) dq for p = 0, 1, 2 (a, b in [0, g_α]), read on the pieces.
     pub fn weighted_integral(&self, a: f64, b: f64) -> [f64; 3] {
+        [0, 1, 2].map(|p| self.on_pieces(&self.integral_pieces[p], b) - self.on_pieces(&self.integral_pieces[p], a))
+    }
+
+    /// [`Self::weighted_integral`] from the whole series (what the pieces re-expand).
+    pub fn weighted_integral_series(&self, a: f64, b: f64) -> [f64; 3] {
         let at = |c: &[f64], q: f64| clenshaw(c, (q / self.path).clamp(0.0, 1.0));
-        [
-            at(&self.integral, b) - at(&self.integral, a),
-            at(&self.moments[0], b) - at(&self.moments[0], a),
-            at(&self.moments[1], b) - at(&self.moments[1], a),
-        ]
+        [&self.integral, &self.moments[0], &self.moments[1]].map(|c| at(c, b) - at(c, a))
     }
 
     pub fn is_helical(&self) -> bool {
