@@ -200,7 +200,8 @@ pub fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionErrorRepo
         .collect()
 }
 
-/// A relief above a tenth of the module; a dynamic model that reads the unrelieved teeth.
+/// A relief above a tenth of the module; a body outside the range of Sainsot's fit; a dynamic
+/// model that reads the unrelieved teeth.
 pub fn teeth_findings(scene: &Scene, s: &TeethStiffnessReport) -> Vec<Finding> {
     let mut out = Vec::new();
     let m_n = scene.gears.module.value.value;
@@ -217,6 +218,29 @@ pub fn teeth_findings(scene: &Scene, s: &TeethStiffnessReport) -> Vec<Finding> {
                     ),
                 });
             }
+        }
+    }
+    for b in &s.bodies {
+        let (h_f, theta_f) = (b.foundation_ratio.0, b.root_angle.0);
+        let coefficients = crate::geometry::teeth::compliance::sainsot_coefficients(h_f, theta_f);
+        let outside: Vec<String> = ["L*", "M*", "P*", "Q*"]
+            .iter()
+            .zip(coefficients)
+            .zip(crate::geometry::teeth::compliance::SAINSOT_RANGES)
+            .filter(|((_, v), (lo, hi))| !(lo..=hi).contains(&v))
+            .map(|((name, v), (lo, hi))| format!("{name} = {v:.4} (fitted {lo}–{hi})"))
+            .collect();
+        if !outside.is_empty() {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: format!(
+                    "the {} body lies outside the range of Sainsot's fillet-foundation fit: h_f = r_f/r_int = {:.4} and θ_f = {:.5} rad give {}; the foundation term is extrapolated (a bore closer to the root, h_f near 1, is the usual cause)",
+                    b.gear,
+                    h_f,
+                    theta_f,
+                    outside.join(", ")
+                ),
+            });
         }
     }
     let relieved = s.bodies.iter().any(|b| b.tip_relief.is_some());

@@ -34,6 +34,27 @@ const SAINSOT: [[f64; 6]; 4] = [
     [-6.2042e-5, 9.0889e-3, -4.0964e-4, 7.8297e-3, -0.1472, 0.6904],
 ];
 
+/// The range each of L*, M*, P*, Q* takes over the cases Sainsot et al. fitted: where a tooth's
+/// h_f and θ_f give a coefficient outside it, the foundation term is extrapolated and the report
+/// says so. The ranges are those the ROSS rotordynamics package checks (petrobras/ross,
+/// `ross/gear_element.py`, `poly_limits`); the paper itself was not at hand to read them from.
+pub const SAINSOT_RANGES: [(f64, f64); 4] = [(6.82, 6.94), (1.08, 3.29), (2.56, 13.47), (0.141, 0.62)];
+
+/// Sainsot et al.'s L*, M*, P*, Q* for h_f = r_f/r_int and θ_f (rad): each
+/// A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F with the coefficients of their Table 1.
+///
+/// ```
+/// use gearloss::geometry::teeth::compliance::{sainsot_coefficients, SAINSOT_RANGES};
+/// // FZG type C's pinion (h_f = 2.0795, θ_f = 0.18830 rad): inside every range.
+/// let c = sainsot_coefficients(2.07951, 0.1883006749);
+/// assert!(c.iter().zip(SAINSOT_RANGES).all(|(v, (lo, hi))| (lo..=hi).contains(v)));
+/// ```
+pub fn sainsot_coefficients(h_f: f64, theta_f: f64) -> [f64; 4] {
+    SAINSOT.map(|[a, b, c, d, e, f]| {
+        a / (theta_f * theta_f) + b * h_f * h_f + c * h_f / theta_f + d / theta_f + e * h_f + f
+    })
+}
+
 /// Tolerance of the quadratures behind a tooth's compliance.
 const QUADRATURE_TOLERANCE: f64 = 1e-13;
 /// Agreement asked of the Chebyshev series with the quadrature.
@@ -132,9 +153,7 @@ impl ToothCompliance {
         let fillet_error = fillet.iter().map(|f| f.error / f.value.abs()).fold(0.0, f64::max);
         let theta_f = outline.root_angle();
         let h_f = outline.input.root_radius / bore_radius;
-        let foundation = SAINSOT.map(|[a, b, c, d, e, f]| {
-            a / (theta_f * theta_f) + b * h_f * h_f + c * h_f / theta_f + d / theta_f + e * h_f + f
-        });
+        let foundation = sainsot_coefficients(h_f, theta_f);
         ToothCompliance {
             outline,
             young,
