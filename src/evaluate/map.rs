@@ -39,6 +39,8 @@ pub struct EfficiencyMap {
     pub speed_unit: String,
     /// Torque-major, then law, then formulation.
     pub cells: Vec<MapCell>,
+    /// The best point of every law and formulation, located ([`super::map_best`]).
+    pub best: Vec<super::map_best::MapBest>,
 }
 
 /// Evaluates the scene's `efficiency_map`, if it asks for one.
@@ -78,12 +80,32 @@ pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
             out
         })
         .collect();
+    let cells: Vec<MapCell> = cells.into_iter().flatten().collect();
+    let (t, s) = (
+        torques.values.iter().map(|t| t.value).collect::<Vec<_>>(),
+        speeds.values.iter().map(|s| s.value).collect::<Vec<_>>(),
+    );
+    let mut fields = Vec::new();
+    for law in 0..scene.friction.len() {
+        for f in eval.formulations.iter().copied() {
+            let mut values = vec![vec![f64::NEG_INFINITY; s.len()]; t.len()];
+            let mut total = false;
+            for c in cells.iter().filter(|c| c.law_index == law && c.formulation == f) {
+                total = c.budget.is_some();
+                values[c.torque_index][c.speed_index] =
+                    c.budget.as_ref().map_or(c.mesh_efficiency, |b| b.total_efficiency);
+            }
+            fields.push((law, f, total, values));
+        }
+    }
+    let best = super::map_best::best_points(scene, eval, &t, &s, &fields);
     Some(EfficiencyMap {
-        torques: torques.values.iter().map(|t| t.value).collect(),
-        speeds: speeds.values.iter().map(|s| s.value).collect(),
+        torques: t,
+        speeds: s,
         speeds_written: speeds.written_values.clone(),
         speed_unit: speeds.unit.clone(),
-        cells: cells.into_iter().flatten().collect(),
+        cells,
+        best,
     })
 }
 

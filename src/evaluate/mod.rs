@@ -13,6 +13,7 @@ pub mod evaluation;
 pub mod first_balance;
 pub mod laws;
 pub mod map;
+pub mod map_best;
 pub mod plan;
 pub mod prepare;
 pub mod records;

@@ -59,6 +59,9 @@ pub fn headline_body(r: &Report) -> String {
                 m.pinion_speeds.len()
             );
         }
+        for b in &m.best {
+            let _ = writeln!(out, "- Map, {}: {}", law_words(&b.label), best_words(r, b));
+        }
         let _ = writeln!(out);
     }
     if !r.loss_budget && !r.efficiency.is_empty() {
@@ -159,6 +162,23 @@ pub fn budget_section(r: &Report) -> String {
     out
 }
 
+/// `best total η 98.912 % at 372.6 N·m, 3000 rpm (located; best grid point 98.901 % at …)`.
+pub fn best_words(r: &Report, b: &crate::report::losses::MapBestReport) -> String {
+    let at = |t: &crate::report::number::Q, n: &crate::report::number::Q| {
+        format!("{} N·m, {} {}", super::table::sig(t.si()), super::table::sig(r.speed_unit.value(n)), r.speed_unit.name)
+    };
+    format!(
+        "best {} η {} % at {} ({}; located from the best grid point, {} % at {}, in {} evaluations)",
+        b.efficiency_of,
+        fixed(100.0 * b.efficiency.0, 3),
+        at(&b.pinion_torque, &b.pinion_speed),
+        b.formulation.name(),
+        fixed(100.0 * b.grid_efficiency.0, 3),
+        at(&b.grid_pinion_torque, &b.grid_pinion_speed),
+        b.evaluations
+    )
+}
+
 /// The map's section: what it is, its ranges, its files.
 pub fn map_section(r: &Report) -> String {
     let mut out = String::new();
@@ -184,6 +204,10 @@ pub fn map_section(r: &Report) -> String {
                 x.total_loss.map_or("—".into(), |t| format!("{} – {}", fixed(t[0].si(), 1), fixed(t[1].si(), 1))),
             ],
         );
+    }
+    let _ = writeln!(out);
+    for b in &m.best {
+        let _ = writeln!(out, "- {}: {}.", law_words(&b.label), best_words(r, b));
     }
     plots_of(&mut out, r, PlotKind::EfficiencyMap);
     out

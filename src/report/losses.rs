@@ -238,6 +238,28 @@ pub struct MapReport {
     /// The map plot's fields: per law, total η, mesh η and the total (or mesh) loss over the grid,
     /// indexed `values[torque][speed]` (NaN where a cell has no value).
     pub fields: Vec<MapField>,
+    /// The best point of every law and formulation, located beside the grid's best cell.
+    #[serde(default)]
+    pub best: Vec<MapBestReport>,
+}
+
+/// The map's best operating point of one law and formulation.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct MapBestReport {
+    pub label: String,
+    pub formulation: Formulation,
+    /// `total` (with the gearbox's budget) or `mesh`.
+    pub efficiency_of: String,
+    /// The located point and its efficiency.
+    pub pinion_torque: Q,
+    pub pinion_speed: Q,
+    pub efficiency: Num,
+    /// The grid's best cell.
+    pub grid_pinion_torque: Q,
+    pub grid_pinion_speed: Q,
+    pub grid_efficiency: Num,
+    /// Efficiency evaluations of the search.
+    pub evaluations: usize,
 }
 
 /// One field of the map plot.
@@ -313,6 +335,22 @@ pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
         speed_unit: map.speed_unit.clone(),
         formulation,
         fields,
+        best: map
+            .best
+            .iter()
+            .map(|b| MapBestReport {
+                label: labels[b.law_index].clone(),
+                formulation: b.formulation,
+                efficiency_of: if b.total { "total" } else { "mesh" }.into(),
+                pinion_torque: Q::new(b.located.0, "N*m"),
+                pinion_speed: Q::new(b.located.1, "rad/s"),
+                efficiency: Num(b.located.2),
+                grid_pinion_torque: Q::new(map.torques[b.grid.0], "N*m"),
+                grid_pinion_speed: Q::new(map.speeds[b.grid.1], "rad/s"),
+                grid_efficiency: Num(b.grid.2),
+                evaluations: b.evaluations,
+            })
+            .collect(),
     }
 }
 

@@ -3,6 +3,7 @@
 
 use plotters::prelude::*;
 
+use super::contours::{bilinear, iso_lines, levels, Field};
 use super::maps::colour;
 use super::panel::{plottable, PALETTE};
 use crate::losses::parts::COLUMNS;
@@ -94,68 +95,11 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
     Ok(svg)
 }
 
-/// One contour panel: values[t][s] over speeds (x) and torques (y).
-struct Field<'a> {
-    title: String,
-    speeds: &'a [f64],
-    torques: &'a [f64],
-    values: Vec<Vec<f64>>,
-    unit: &'a str,
-}
-
-/// "Nice" iso-levels spanning [lo, hi]: about `n` of them on a 1-2-5 step.
-fn levels(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-        return vec![lo];
-    }
-    let raw = (hi - lo) / n as f64;
-    let mag = 10f64.powf(raw.log10().floor());
-    let step = [1.0, 2.0, 5.0, 10.0].iter().map(|m| m * mag).find(|s| *s >= raw).unwrap_or(10.0 * mag);
-    let first = (lo / step).ceil() * step;
-    (0..).map(|i| first + i as f64 * step).take_while(|v| *v <= hi + 1e-12 * step).collect()
-}
-
-/// Marching squares: the segments of the iso-line `level` on the grid, in (speed, torque).
-fn iso_segments(f: &Field, level: f64) -> Vec<[(f64, f64); 2]> {
-    let mut out = Vec::new();
-    let (xs, ys, v) = (f.speeds, f.torques, &f.values);
-    for t in 0..ys.len() - 1 {
-        for s in 0..xs.len() - 1 {
-            let corners = [(s, t), (s + 1, t), (s + 1, t + 1), (s, t + 1)];
-            let mut cuts = Vec::new();
-            for k in 0..4 {
-                let (a, b) = (corners[k], corners[(k + 1) % 4]);
-                let (va, vb) = (v[a.1][a.0], v[b.1][b.0]);
-                if !(va.is_finite() && vb.is_finite()) || (va - level) * (vb - level) > 0.0 || va == vb {
-                    continue;
-                }
-                let w = (level - va) / (vb - va);
-                cuts.push((xs[a.0] + w * (xs[b.0] - xs[a.0]), ys[a.1] + w * (ys[b.1] - ys[a.1])));
-            }
-            if cuts.len() >= 2 {
-                out.push([cuts[0], cuts[1]]);
-            }
-            if cuts.len() == 4 {
-                out.push([cuts[2], cuts[3]]);
-            }
-        }
-    }
-    out
-}
-
-/// Bilinear value at fractional grid position (s, t).
-fn bilinear(v: &[Vec<f64>], s: f64, t: f64) -> f64 {
-    let (s0, t0) = ((s.floor() as usize).min(v[0].len() - 2), (t.floor() as usize).min(v.len() - 2));
-    let (fs, ft) = (s - s0 as f64, t - t0 as f64);
-    let a = v[t0][s0] * (1.0 - fs) + v[t0][s0 + 1] * fs;
-    let b = v[t0 + 1][s0] * (1.0 - fs) + v[t0 + 1][s0 + 1] * fs;
-    a * (1.0 - ft) + b * ft
-}
-
 fn draw_field(
     area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
     f: &Field,
     speed_unit: &str,
+    best: Option<(f64, f64)>,
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let finite: Vec<f64> = f.values.iter().flatten().copied().filter(|v| v.is_finite()).collect();
@@ -192,55 +136,85 @@ fn draw_field(
         .y_label_formatter(&|y| crate::render::table::sig(*y))
         .draw()
         .map_err(e)?;
-    // Filled bands: each grid cell split 4 × 4, coloured by the band of its bilinear centre value;
-    // along each row of sub-cells, neighbours in the same band are drawn as one rectangle (the
-    // picture is the same, the file a fraction of the size).
-    const SUB: usize = 4;
+    // Filled bands: each grid cell split SUB × SUB, coloured by the band of its bilinear centre
+    // value; along each row of sub-cells, neighbours in the same band are drawn as one rectangle
+    // (the picture is the same, the file a fraction of the size). A sub-cell is kept at 3 pixels or
+    // more (SUB from 4 down to 1 as the grid gets finer): finer than that the picture cannot show.
     let (ns, nt) = (f.speeds.len(), f.torques.len());
+    let (w, h) = area.dim_in_pixel();
+    let cell_px = ((w as f64 - 170.0) / (ns - 1).max(1) as f64).min((h as f64 - 90.0) / (nt - 1).max(1) as f64);
+    let sub = (cell_px / 3.0).floor().clamp(1.0, 4.0) as usize;
     let band = |v: f64| lv.iter().filter(|l| v >= **l).count();
     let x_at = |k: usize| {
-        let (s, i) = (k / SUB, k % SUB);
+        let (s, i) = (k / sub, k % sub);
         if s + 1 >= ns {
             f.speeds[ns - 1]
         } else {
-            f.speeds[s] + i as f64 / SUB as f64 * (f.speeds[s + 1] - f.speeds[s])
+            f.speeds[s] + i as f64 / sub as f64 * (f.speeds[s + 1] - f.speeds[s])
         }
     };
+    // Runs (first sub-column, end sub-column, band) of each row of sub-cells; a run the next row
+    // repeats exactly grows downward instead of starting a rectangle of its own.
+    let mut open: Vec<((usize, usize, usize), f64, f64)> = Vec::new();
     let mut cells = Vec::new();
+    let flush = |run: &((usize, usize, usize), f64, f64), cells: &mut Vec<_>| {
+        let ((k0, k1, b), y0, y1) = *run;
+        let fill = colour(b as f64 / lv.len().max(1) as f64).filled();
+        cells.push(Rectangle::new([(x_at(k0), y0), (x_at(k1), y1)], fill));
+    };
     for t in 0..nt - 1 {
-        for j in 0..SUB {
-            let (ft0, ft1) = (j as f64 / SUB as f64, (j + 1) as f64 / SUB as f64);
+        for j in 0..sub {
+            let (ft0, ft1) = (j as f64 / sub as f64, (j + 1) as f64 / sub as f64);
             let y = |fr: f64| f.torques[t] + fr * (f.torques[t + 1] - f.torques[t]);
+            let mut runs = Vec::new();
             // (first sub-column, band) of the run being built.
             let mut run: Option<(usize, usize)> = None;
-            for k in 0..=(ns - 1) * SUB {
-                let here = (k < (ns - 1) * SUB)
+            for k in 0..=(ns - 1) * sub {
+                let here = (k < (ns - 1) * sub)
                     .then(|| {
-                        let (s, i) = (k / SUB, k % SUB);
-                        bilinear(&f.values, s as f64 + (i as f64 + 0.5) / SUB as f64, t as f64 + 0.5 * (ft0 + ft1))
+                        let (s, i) = (k / sub, k % sub);
+                        bilinear(&f.values, s as f64 + (i as f64 + 0.5) / sub as f64, t as f64 + 0.5 * (ft0 + ft1))
                     })
                     .filter(|v| v.is_finite())
                     .map(band);
                 if run.map(|r| r.1) != here {
                     if let Some((k0, b)) = run {
-                        let fill = colour(b as f64 / lv.len().max(1) as f64).filled();
-                        cells.push(Rectangle::new([(x_at(k0), y(ft0)), (x_at(k), y(ft1))], fill));
+                        runs.push((k0, k, b));
                     }
                     run = here.map(|b| (k, b));
                 }
             }
+            let mut next = Vec::with_capacity(runs.len());
+            for r in runs {
+                match open.iter().position(|(o, _, _)| *o == r) {
+                    Some(i) => next.push((r, open.swap_remove(i).1, y(ft1))),
+                    None => next.push((r, y(ft0), y(ft1))),
+                }
+            }
+            open.iter().for_each(|o| flush(o, &mut cells));
+            open = next;
         }
     }
+    open.iter().for_each(|o| flush(o, &mut cells));
     chart.draw_series(cells).map_err(e)?;
     for l in &lv {
-        let segs = iso_segments(f, *l);
-        chart.draw_series(segs.iter().map(|s| PathElement::new(vec![s[0], s[1]], BLACK.stroke_width(1)))).map_err(e)?;
-        if let Some(s) = segs.get(segs.len() / 2) {
+        let lines = iso_lines(f, *l);
+        chart.draw_series(lines.iter().map(|p| PathElement::new(p.clone(), BLACK.stroke_width(1)))).map_err(e)?;
+        if let Some(p) = lines.iter().max_by_key(|p| p.len()) {
             let label = crate::render::table::sig(*l);
             chart
-                .draw_series(std::iter::once(Text::new(label, s[0], ("sans-serif", 11).into_font().color(&BLACK))))
+                .draw_series(std::iter::once(Text::new(
+                    label,
+                    p[p.len() / 2],
+                    ("sans-serif", 11).into_font().color(&BLACK),
+                )))
                 .map_err(e)?;
         }
+    }
+    // The located best point (report.md gives its value), marked where its panel shows it.
+    if let Some(p) = best {
+        chart.draw_series(std::iter::once(Circle::new(p, 5, WHITE.filled()))).map_err(e)?;
+        chart.draw_series(std::iter::once(Circle::new(p, 5, BLACK.stroke_width(2)))).map_err(e)?;
     }
     colour_bar(area, &lv)
 }
@@ -294,34 +268,16 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         let areas = root.split_evenly((rows, per_row));
         for (area, (title, values, unit)) in areas.iter().zip(fields) {
+            let best = m
+                .best
+                .iter()
+                .filter(|b| Some(b.formulation) == first)
+                .find(|b| title == format!("{} η — {}", b.efficiency_of, crate::report::law_words::law_words(&b.label)))
+                .map(|b| (r.speed_unit.value(&b.pinion_speed), b.pinion_torque.si()));
             let f = Field { title, speeds, torques: &torques, values, unit };
-            draw_field(area, &f, &m.speed_unit)?;
+            draw_field(area, &f, &m.speed_unit, best)?;
         }
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The iso-line of a plane v = x + y at level 1 on the unit square crosses at (1, 0) and (0, 1).
-    #[test]
-    fn marching_squares_on_a_plane() {
-        let f = Field {
-            title: String::new(),
-            speeds: &[0.0, 1.0],
-            torques: &[0.0, 1.0],
-            values: vec![vec![0.0, 1.0], vec![1.0, 2.0]],
-            unit: "",
-        };
-        let s = iso_segments(&f, 0.5);
-        assert_eq!(s.len(), 1);
-        let mut ends = s[0].to_vec();
-        ends.sort_by(|a, b| a.0.total_cmp(&b.0));
-        assert!((ends[0].0 - 0.0).abs() < 1e-12 && (ends[0].1 - 0.5).abs() < 1e-12);
-        assert!((ends[1].0 - 0.5).abs() < 1e-12 && (ends[1].1 - 0.0).abs() < 1e-12);
-        assert_eq!(levels(0.0, 1.0, 5), vec![0.0, 0.2, 0.4, 0.6000000000000001, 0.8, 1.0]);
-    }
 }

@@ -2,6 +2,7 @@
 //! Every plot reads the report only.
 
 mod contact;
+mod contours;
 mod dynamics;
 mod helical;
 mod losses;

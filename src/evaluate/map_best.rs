@@ -1,0 +1,121 @@
+//! The efficiency map's best operating point, located: where the total efficiency (the mesh's η̄
+//! without a gearbox) peaks over the map's torque × speed rectangle, per law and formulation.
+//!
+//! The grid's best cell starts the search; the box of its neighbouring cells (clipped to the map) is
+//! searched by coordinate ascent: a golden-section maximisation along torque at the current speed,
+//! then along speed at the current torque, the box's ends included (the best point of a gearbox is
+//! often at the map's highest torque), until a sweep moves the point by less than
+//! [`POINT_TOLERANCE`] of the box in both directions. Each evaluation is the mean efficiency (to
+//! its 1e-10) and the budget at that point, computed afresh: the located point is a point of the
+//! model, not of the grid. A local maximum next to the grid's best cell: with another peak between
+//! grid points elsewhere, the grid must be finer to see it.
+
+use super::setup::{law_at, Setup};
+use crate::efficiency::{mean_efficiency, Formulation};
+use crate::geometry::OperatingState;
+use crate::model::Scene;
+
+/// The search stops when a sweep moves the point by less than this fraction of the box.
+pub const POINT_TOLERANCE: f64 = 1e-7;
+/// The golden-section search along one direction stops at this fraction of its interval.
+const LINE_TOLERANCE: f64 = 1e-8;
+
+/// The best point of one law and formulation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapBest {
+    pub law_index: usize,
+    pub formulation: Formulation,
+    /// Whether the efficiency is the total (with the gearbox's budget) or the mesh's.
+    pub total: bool,
+    /// The located point: pinion torque (N·m), speed (rad/s), efficiency.
+    pub located: (f64, f64, f64),
+    /// The grid's best cell: torque index, speed index, efficiency.
+    pub grid: (usize, usize, f64),
+    /// Efficiency evaluations the search used.
+    pub evaluations: usize,
+}
+
+/// The efficiency of law `law_index` and formulation `f` at `state`: total with a gearbox.
+fn efficiency_at(scene: &Scene, eval: &Setup, law_index: usize, f: Formulation, state: OperatingState) -> f64 {
+    let ctx = eval.law_context(state);
+    let law = law_at(&scene.friction[law_index], &ctx);
+    let mesh = mean_efficiency(&ctx, law.as_ref(), f).value;
+    let input = state.pinion_torque * state.pinion_speed;
+    match eval.loss_budget(scene, &state) {
+        Some(b) => b.with_mesh((1.0 - mesh) * input, input).total_efficiency,
+        None => mesh,
+    }
+}
+
+/// The maximum (x, f(x)) of `f` on [a, b] by golden sections, the ends included.
+fn golden_max(f: impl Fn(f64) -> f64, a: f64, b: f64, count: &mut usize) -> (f64, f64) {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = (a, b);
+    let mut best =
+        [(a, f(a)), (b, f(b))].into_iter().fold((a, f64::NEG_INFINITY), |m, p| if p.1 > m.1 { p } else { m });
+    *count += 2;
+    let (mut x1, mut x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    *count += 2;
+    while hi - lo > LINE_TOLERANCE * (b - a) {
+        if f1 >= f2 {
+            (hi, x2, f2) = (x2, x1, f1);
+            x1 = hi - r * (hi - lo);
+            f1 = f(x1);
+        } else {
+            (lo, x1, f1) = (x1, x2, f2);
+            x2 = lo + r * (hi - lo);
+            f2 = f(x2);
+        }
+        *count += 1;
+        for p in [(x1, f1), (x2, f2)] {
+            if p.1 > best.1 {
+                best = p;
+            }
+        }
+    }
+    best
+}
+
+/// The best point of every law and formulation of a map whose cells' efficiencies are `cells`
+/// ((law, formulation) → values[torque][speed]) over `torques` × `speeds`.
+pub fn best_points(
+    scene: &Scene,
+    eval: &Setup,
+    torques: &[f64],
+    speeds: &[f64],
+    fields: &[(usize, Formulation, bool, Vec<Vec<f64>>)],
+) -> Vec<MapBest> {
+    fields
+        .iter()
+        .map(|(law_index, f, total, values)| {
+            let mut grid = (0, 0, f64::NEG_INFINITY);
+            for (i, row) in values.iter().enumerate() {
+                for (j, v) in row.iter().enumerate() {
+                    if *v > grid.2 {
+                        grid = (i, j, *v);
+                    }
+                }
+            }
+            let around = |v: &[f64], i: usize| (v[i.saturating_sub(1)], v[(i + 1).min(v.len() - 1)]);
+            let ((t0, t1), (n0, n1)) = (around(torques, grid.0), around(speeds, grid.1));
+            let eta = |t: f64, n: f64| {
+                efficiency_at(scene, eval, *law_index, *f, OperatingState { pinion_torque: t, pinion_speed: n })
+            };
+            let mut count = 0;
+            let (mut t, mut n) = (torques[grid.0], speeds[grid.1]);
+            for _ in 0..50 {
+                let t_new = if t1 > t0 { golden_max(|x| eta(x, n), t0, t1, &mut count).0 } else { t };
+                let n_new = if n1 > n0 { golden_max(|x| eta(t_new, x), n0, n1, &mut count).0 } else { n };
+                let moved =
+                    (t_new - t).abs() > POINT_TOLERANCE * (t1 - t0) || (n_new - n).abs() > POINT_TOLERANCE * (n1 - n0);
+                (t, n) = (t_new, n_new);
+                if !moved {
+                    break;
+                }
+            }
+            let located = (t, n, eta(t, n));
+            MapBest { law_index: *law_index, formulation: *f, total: *total, located, grid, evaluations: count + 1 }
+        })
+        .collect()
+}
