@@ -19,6 +19,7 @@ pub mod prepare;
 pub mod records;
 pub mod setup;
 pub mod stages;
+pub mod ste_row;
 pub mod stream;
 pub mod tally;
 pub mod teeth;

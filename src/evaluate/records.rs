@@ -91,7 +91,7 @@ pub struct SummaryRow {
     pub thermal: Option<super::thermal::ThermalRow>,
     /// The static transmission error of a `transmission_error` row.
     #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
-    pub ste: Option<super::teeth::SteRow>,
+    pub ste: Option<super::ste_row::SteRow>,
 }
 
 impl SummaryRow {
@@ -150,7 +150,7 @@ impl SummaryRow {
 
     /// Names of the columns whose value is present but not a finite number.
     pub fn non_finite(&self) -> impl Iterator<Item = &'static str> + '_ {
-        let ste = self.ste.iter().flat_map(|s| super::teeth::SteRow::COLUMNS.into_iter().zip(s.numbers().map(Some)));
+        let ste = self.ste.iter().flat_map(|s| super::ste_row::SteRow::COLUMNS.into_iter().zip(s.numbers().map(Some)));
         self.numbers().into_iter().chain(ste).filter(|(_, v)| v.is_some_and(|x| !x.is_finite())).map(|(n, _)| n)
     }
 }
@@ -187,7 +187,7 @@ pub const CSV_COLUMNS: [&str; 23] = [
 /// The columns of `records.csv` after [`CSV_COLUMNS`], in groups each present as the scene asks:
 /// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
 /// balance's ([`super::thermal::ThermalRow::COLUMNS`]), then the static transmission error's
-/// ([`super::teeth::SteRow::COLUMNS`]). A row fills the groups it has and leaves the others' cells
+/// ([`super::ste_row::SteRow::COLUMNS`]). A row fills the groups it has and leaves the others' cells
 /// empty.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ExtraColumns {
@@ -206,7 +206,7 @@ impl ExtraColumns {
             Vec::new()
         };
         let ste = if scene.analyses.transmission_error.is_some() {
-            super::teeth::SteRow::COLUMNS.iter().map(|c| c.to_string()).collect()
+            super::ste_row::SteRow::COLUMNS.iter().map(|c| c.to_string()).collect()
         } else {
             Vec::new()
         };

@@ -50,7 +50,7 @@ pub fn evaluate_records(
     if plan.range.start == 0 && scene.analyses.transmission_error.is_some() {
         out.teeth = super::teeth::teeth_details(scene, &eval.geometry);
         if let Some(teeth) = &out.teeth {
-            sink.write_rows(&super::teeth::transmission_error_rows(teeth))?;
+            sink.write_rows(&transmission_error_rows(teeth))?;
         }
     }
     let mut start = plan.range.start;
@@ -242,4 +242,23 @@ fn law_tally(k: usize, law: &LawEvaluation) -> LawTally {
             intervals: law.validity.intervals.iter().map(|(a, b, r)| (*a, *b, r.to_string())).collect(),
         }),
     }
+}
+
+/// One `transmission_error` record per torque of the analysis, in its order: point 0 (not an
+/// operating point), the torque's index in the analysis, speed 0 (the error is static).
+fn transmission_error_rows(details: &super::teeth::TeethDetails) -> Vec<SummaryRow> {
+    details
+        .transmission_error
+        .iter()
+        .enumerate()
+        .map(|(i, te)| SummaryRow {
+            kind: RowKind::TransmissionError,
+            ste: Some(super::ste_row::SteRow::of(te)),
+            ..SummaryRow::blank(
+                0,
+                (i, 0),
+                crate::geometry::OperatingState { pinion_torque: te.pinion_torque, pinion_speed: 0.0 },
+            )
+        })
+        .collect()
 }

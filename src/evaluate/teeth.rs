@@ -3,13 +3,10 @@
 //! Method B beside it, the largest single-pair stiffness located, and the transmission error at
 //! each asked torque.
 
-use serde::{Deserialize, Serialize};
-
-use super::records::{RowKind, SummaryRow};
 use crate::geometry::teeth::iso_6336_method_b::{iso_6336_method_b, IsoStiffness};
 use crate::geometry::teeth::load_sharing::LoadSharing;
 use crate::geometry::teeth::transmission_error::TransmissionError;
-use crate::geometry::{OperatingState, PairGeometry};
+use crate::geometry::PairGeometry;
 use crate::model::Scene;
 use crate::numerics::roots::extrema;
 
@@ -39,46 +36,4 @@ pub fn teeth_details(scene: &Scene, g: &PairGeometry) -> Option<TeethDetails> {
     let transmission_error =
         torques.iter().map(|t| sharing.transmission_error(t.value, g.base_radius[0])).collect::<Vec<_>>();
     Some(TeethDetails { sharing, iso, max_single: (k * scale, at), transmission_error })
-}
-
-/// The static transmission error at one torque as the record files carry it.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct SteRow {
-    /// Peak-to-peak of δ over a mesh cycle (m), from the located extremes.
-    #[serde(rename = "ste_peak_to_peak_m")]
-    pub peak_to_peak: f64,
-    /// Mean of δ over a mesh cycle (m), integrated, and its error estimate.
-    #[serde(rename = "ste_mean_m")]
-    pub mean: f64,
-    #[serde(rename = "ste_mean_error_m")]
-    pub mean_error: f64,
-}
-
-impl SteRow {
-    /// The record files' column names, in order.
-    pub const COLUMNS: [&'static str; 3] = ["ste_peak_to_peak_m", "ste_mean_m", "ste_mean_error_m"];
-
-    pub fn of(te: &TransmissionError) -> SteRow {
-        SteRow { peak_to_peak: te.peak_to_peak(), mean: te.mean, mean_error: te.mean_error }
-    }
-
-    /// The numbers in [`Self::COLUMNS`] order.
-    pub fn numbers(&self) -> [f64; 3] {
-        [self.peak_to_peak, self.mean, self.mean_error]
-    }
-}
-
-/// One `transmission_error` record per torque of the analysis, in its order: point 0 (not an
-/// operating point), the torque's index in the analysis, speed 0 (the error is static).
-pub fn transmission_error_rows(details: &TeethDetails) -> Vec<SummaryRow> {
-    details
-        .transmission_error
-        .iter()
-        .enumerate()
-        .map(|(i, te)| SummaryRow {
-            kind: RowKind::TransmissionError,
-            ste: Some(SteRow::of(te)),
-            ..SummaryRow::blank(0, (i, 0), OperatingState { pinion_torque: te.pinion_torque, pinion_speed: 0.0 })
-        })
-        .collect()
 }

@@ -17,7 +17,13 @@ pub const HEADLINE_ROWS: usize = 12;
 
 /// `239.3 N·m, 1500 rpm`: a record's operating point in the units the scene wrote.
 pub fn point_label(r: &Report, e: &EfficiencyRecord) -> String {
-    format!("{} N·m, {} {}", sig(e.pinion_torque.si()), sig(r.speed_unit.value(&e.pinion_speed)), r.speed_unit.name)
+    point_at(r, &e.pinion_torque, &e.pinion_speed)
+}
+
+/// `1500 lbf·in, 1800 rpm`: a torque and a speed (SI) in the units the scene wrote them in.
+pub fn point_at(r: &Report, torque: &crate::report::number::Q, speed: &crate::report::number::Q) -> String {
+    let (t, n) = (&r.torque_unit, &r.speed_unit);
+    format!("{} {}, {} {}", sig(t.value(torque)), t.shown(), sig(n.value(speed)), n.shown())
 }
 
 /// Efficiency and budget: a row per operating point and law (the first formulation), or when there
@@ -223,15 +229,7 @@ pub fn thermal(out: &mut String, r: &Report) {
         let bad: Vec<String> = of
             .iter()
             .filter(|t| t.status != crate::thermal::BalanceStatus::Ok)
-            .map(|t| {
-                format!(
-                    "{} N·m, {} {}: {}",
-                    sig(t.pinion_torque.si()),
-                    sig(r.speed_unit.value(&t.pinion_speed)),
-                    r.speed_unit.name,
-                    t.status.words()
-                )
-            })
+            .map(|t| format!("{}: {}", point_at(r, &t.pinion_torque, &t.pinion_speed), t.status.words()))
             .collect();
         let verdict =
             if bad.is_empty() { "every point settles below the oil's limit".to_string() } else { bad.join("; ") };

@@ -5,7 +5,7 @@
 
 use std::fmt::Write;
 
-use super::table::{fixed, header, row, sig};
+use super::table::{fixed, header, row};
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
@@ -40,13 +40,7 @@ pub fn bearings_section(r: &Report) -> String {
     );
     for e in points {
         let Some(b) = &e.budget else { continue };
-        let _ = writeln!(
-            out,
-            "{} N·m, {} {}:\n",
-            sig(e.pinion_torque.si()),
-            sig(r.speed_unit.value(&e.pinion_speed)),
-            r.speed_unit.name
-        );
+        let _ = writeln!(out, "{}:\n", super::headline::point_at(r, &e.pinion_torque, &e.pinion_speed));
         header(&mut out, &["#", "shaft", "type", "model", "count", "at mm", "F_r N", "F_a N", "no-load W", "load W"]);
         for (i, x) in b.bearings.iter().enumerate() {
             row(

@@ -33,9 +33,24 @@ pub fn headline_body(r: &Report) -> String {
         Some(t) => format!(", {} at {:.0} °C", l.name, t.si() - 273.15),
         None => format!(", {}", l.name),
     });
+    // A pair sized in other units than millimetres is named as written too (8 1/in, 1.25 in).
+    let size_keys = ["gears.diametral_pitch", "gears.transverse_diametral_pitch", "gears.module", "gears.face_width"];
+    let written: Vec<&crate::report::input_row::InputRow> =
+        r.inputs.iter().filter(|i| size_keys.contains(&i.key.as_str())).collect();
+    let pitch = written.iter().any(|i| i.key.contains("diametral_pitch"));
+    let as_written = if written.iter().all(|i| i.written.ends_with(" mm")) {
+        String::new()
+    } else {
+        let shown: Vec<String> = written
+            .iter()
+            .filter(|i| !(pitch && i.key == "gears.module"))
+            .map(|i| format!("{} = {}", i.key.trim_start_matches("gears."), i.written))
+            .collect();
+        format!(" (as written: {})", shown.join(", "))
+    };
     let _ = writeln!(
         out,
-        "{kind}, z = {}/{}, m = {} mm, b = {} mm{oil}; {} operating point(s).\n",
+        "{kind}, z = {}/{}, m = {} mm, b = {} mm{as_written}{oil}; {} operating point(s).\n",
         r.geometry.pinion.teeth,
         r.geometry.wheel.teeth,
         fixed(g.module.si() * 1e3, 3),
@@ -164,9 +179,7 @@ pub fn budget_section(r: &Report) -> String {
 
 /// `best total η 98.912 % at 372.6 N·m, 3000 rpm (located; best grid point 98.901 % at …)`.
 pub fn best_words(r: &Report, b: &crate::report::losses::MapBestReport) -> String {
-    let at = |t: &crate::report::number::Q, n: &crate::report::number::Q| {
-        format!("{} N·m, {} {}", super::table::sig(t.si()), super::table::sig(r.speed_unit.value(n)), r.speed_unit.name)
-    };
+    let at = |t, n| super::headline::point_at(r, t, n);
     format!(
         "best {} η {} % at {} ({}; located from the best grid point, {} % at {}, in {} evaluations)",
         b.efficiency_of,

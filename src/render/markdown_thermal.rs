@@ -87,12 +87,7 @@ fn balance_table(out: &mut String, r: &Report) {
         row(
             out,
             &[
-                format!(
-                    "{} N·m, {} {}",
-                    fixed(t.pinion_torque.si(), 1),
-                    fixed(r.speed_unit.value(&t.pinion_speed), 0),
-                    r.speed_unit.name
-                ),
+                super::headline::point_at(r, &t.pinion_torque, &t.pinion_speed),
                 super::table::law_words(&t.label),
                 t.formulation.name().to_string(),
                 opt(t.oil_temperature.as_ref(), celsius),

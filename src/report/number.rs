@@ -103,6 +103,16 @@ pub struct DisplayUnit {
 }
 
 impl DisplayUnit {
+    /// N·m, the torque unit of reports written before torques were shown as written.
+    pub fn newton_metre() -> DisplayUnit {
+        DisplayUnit { name: "N*m".into(), factor: 1.0 }
+    }
+
+    /// The name as tables print it: `lbf*in` → `lbf·in`.
+    pub fn shown(&self) -> String {
+        self.name.replace('*', "·")
+    }
+
     /// The unit a sweep was written in.
     pub fn of<T>(sweep: &crate::model::Sweep<T>) -> DisplayUnit {
         DisplayUnit { name: sweep.unit.clone(), factor: sweep.factor }

@@ -47,6 +47,9 @@ pub struct Report {
     pub curves: Curves,
     /// The unit the scene wrote the pinion speed in, for tables and plot axes.
     pub speed_unit: number::DisplayUnit,
+    /// The unit the scene wrote the pinion torque in: operating points are named in it.
+    #[serde(default = "number::DisplayUnit::newton_metre")]
+    pub torque_unit: number::DisplayUnit,
     /// The map plots' grid (torque and speed indices), when the sweep has a map.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub map_grid: Option<(Vec<usize>, Vec<usize>)>,
