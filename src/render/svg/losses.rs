@@ -27,10 +27,8 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
             let b = x.budget.as_ref()?;
             let w = |q: Option<crate::report::number::Q>| q.map_or(0.0, |q| q.si());
             let label = format!(
-                "{:.0} N·m, {:.0} {}: {}",
-                x.pinion_torque.si(),
-                r.speed_unit.value(&x.pinion_speed),
-                r.speed_unit.name,
+                "{}: {}",
+                crate::render::headline::point_at(r, &x.pinion_torque, &x.pinion_speed),
                 crate::render::table::law_words(&x.label)
             );
             let powers = std::iter::once(x.power_loss.si()).chain(COLUMNS.iter().map(|c| w(b.part(c.column))));

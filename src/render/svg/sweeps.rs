@@ -14,12 +14,12 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
         if by_speed {
             r.speed_unit.value(&rec.pinion_speed)
         } else {
-            rec.pinion_torque.si()
+            r.torque_unit.value(&rec.pinion_torque)
         }
     };
     let other = |rec: &EfficiencyRecord| {
         if by_speed {
-            format!("{:.1} N·m", rec.pinion_torque.si())
+            format!("{} {}", crate::render::table::sig(r.torque_unit.value(&rec.pinion_torque)), r.torque_unit.shown())
         } else {
             format!("{:.0} {}", r.speed_unit.value(&rec.pinion_speed), r.speed_unit.name)
         }
@@ -48,7 +48,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     // scale when there are too many curves to label one by one.
     let mut shading = Shading {
         value_label: if by_speed {
-            "pinion torque (N·m)".into()
+            format!("pinion torque ({})", r.torque_unit.shown())
         } else {
             format!("pinion speed ({})", r.speed_unit.name)
         },
@@ -67,7 +67,11 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
                 }
             };
             shading.group.push(g);
-            shading.value.push(if by_speed { rec.pinion_torque.si() } else { r.speed_unit.value(&rec.pinion_speed) });
+            shading.value.push(if by_speed {
+                r.torque_unit.value(&rec.pinion_torque)
+            } else {
+                r.speed_unit.value(&rec.pinion_speed)
+            });
         }
     }
     let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
@@ -79,8 +83,11 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
         eta[i].1[j] = 100.0 * rec.mean_efficiency.0;
         loss[i].1[j] = rec.power_loss.si();
     }
-    let x_label =
-        if by_speed { format!("pinion speed ({})", r.speed_unit.name) } else { "pinion torque (N·m)".to_string() };
+    let x_label = if by_speed {
+        format!("pinion speed ({})", r.speed_unit.name)
+    } else {
+        format!("pinion torque ({})", r.torque_unit.shown())
+    };
     let panels = [
         Panel {
             y_label: "mean mesh efficiency η̄ (%)".into(),
@@ -113,7 +120,8 @@ pub fn composite_mu_vs_speed(r: &Report) -> Result<String, String> {
             continue;
         }
         let speed = r.speed_unit.of_si(*speed);
-        let label = format!("{law} @ {torque:.1} N·m");
+        let label =
+            format!("{law} @ {} {}", crate::render::table::sig(r.torque_unit.of_si(*torque)), r.torque_unit.shown());
         match series.iter_mut().find(|(l, _)| *l == label) {
             Some((_, v)) => v.push((speed, *mu)),
             None => series.push((label, vec![(speed, *mu)])),
