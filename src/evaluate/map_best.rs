@@ -77,8 +77,8 @@ fn golden_max(f: impl Fn(f64) -> f64, a: f64, b: f64, count: &mut usize) -> (f64
     best
 }
 
-/// The best point of every law and formulation of a map whose cells' efficiencies are `cells`
-/// ((law, formulation) → values[torque][speed]) over `torques` × `speeds`.
+/// The best point of every entry of `fields` — (law index, formulation, whether the values are
+/// total efficiencies, values[torque][speed]) — over the grid `torques` × `speeds` (SI).
 pub fn best_points(
     scene: &Scene,
     eval: &Setup,

@@ -243,19 +243,24 @@ fn contact_ratio_under_relief(g: &crate::geometry::PairGeometry, gears: [&Gear; 
             DiagnosticKind::Geometry,
             spec.length.span,
             format!(
-                "the reliefs leave {} of the path of contact g_α = {} unrelieved, less than a base pitch p_b = {} (contact ratio under relief {:.3}{}): while a pair runs from s = {} to {} from A, every pair in contact is inside a relief and none carries until its relief closes, so the transmission error is not defined there",
+                "the reliefs leave {} of the path of contact g_α = {} unrelieved, less than {} = {} (contact ratio under relief {:.3}{}): while a pair{} runs from s = {} to {} from A, every pair in contact is inside a relief and none carries until its relief closes, so the transmission error is not defined there",
                 mm(unrelieved.max(0.0)),
                 mm(path),
-                mm(g.base_pitch),
-                ratio,
+                if g.is_helical() { "(1 − ε_β) p_b" } else { "a base pitch p_b" },
+                mm((1.0 - overlap) * g.base_pitch),
+                ratio.max(0.0),
                 if g.is_helical() { format!(" + overlap {:.3}", overlap) } else { String::new() },
-                mm(path - pinion),
-                mm((wheel + g.base_pitch).min(path)),
+                if g.is_helical() { "'s mid-face section" } else { "" },
+                // No line meets the unrelieved stretch [L_w, g_α − L_p] while the reference pair's
+                // line (extent ε_β p_b, 0 for spur) has left it and the next one has not reached it.
+                mm(path - pinion + 0.5 * overlap * g.base_pitch),
+                mm(wheel + g.base_pitch - 0.5 * overlap * g.base_pitch),
             ),
         )
         .hint(format!(
-            "shorten the reliefs: together at most g_α − p_b = {} (pinion {} + wheel {} now)",
-            mm(path - g.base_pitch),
+            "shorten the reliefs: together at most {} = {} (pinion {} + wheel {} now)",
+            if g.is_helical() { "g_α − (1 − ε_β) p_b" } else { "g_α − p_b" },
+            mm(path - (1.0 - overlap) * g.base_pitch),
             mm(pinion),
             mm(wheel)
         )),
