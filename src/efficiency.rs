@@ -39,6 +39,14 @@ impl Formulation {
             Formulation::Internal => "internal",
         }
     }
+
+    /// Its place in [external, internal], the order [`mean_efficiencies`] returns both in.
+    pub fn index(self) -> usize {
+        match self {
+            Formulation::External => 0,
+            Formulation::Internal => 1,
+        }
+    }
 }
 
 /// Relative tolerance of every mean.
@@ -98,11 +106,7 @@ pub fn efficiency_of(
     formulation: Formulation,
     contacts: &[ContactPoint],
 ) -> f64 {
-    let [external, internal] = efficiencies_of(ctx, law, contacts);
-    match formulation {
-        Formulation::External => external,
-        Formulation::Internal => internal,
-    }
+    efficiencies_of(ctx, law, contacts)[formulation.index()]
 }
 
 /// Both formulations for a given set of contacts, with one evaluation of μ per contact:
@@ -139,11 +143,7 @@ pub fn break_times(ctx: &LawContext, law: &dyn FrictionLaw) -> Vec<f64> {
 
 /// η̄ over one mesh cycle, with its error estimate.
 pub fn mean_efficiency(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation) -> Integral {
-    let [external, internal] = mean_efficiencies(ctx, law);
-    match formulation {
-        Formulation::External => external,
-        Formulation::Internal => internal,
-    }
+    mean_efficiencies(ctx, law)[formulation.index()]
 }
 
 /// η̄ of both formulations in one pass over shared quadrature nodes: [external, internal], each to
@@ -250,7 +250,12 @@ pub fn local_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, c: &ContactPoin
 /// η(τ) that [`evaluate_efficiencies`] also locates: what the thermal balance reads at every
 /// temperature it tries. The same quadrature as [`mean_efficiencies`], so the same number.
 pub fn mean_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation) -> f64 {
-    (1.0 - mean_efficiency(ctx, law, formulation).value) * ctx.state.pinion_torque * ctx.state.pinion_speed
+    power_loss(ctx, mean_efficiency(ctx, law, formulation).value)
+}
+
+/// P = (1 − η̄) T_p ω_p (W) at the context's operating point.
+fn power_loss(ctx: &LawContext, mean_efficiency: f64) -> f64 {
+    (1.0 - mean_efficiency) * ctx.state.pinion_torque * ctx.state.pinion_speed
 }
 
 /// Mean efficiency result of one law and formulation at one operating point.
@@ -289,18 +294,9 @@ pub fn evaluate_efficiencies(
     formulations
         .iter()
         .map(|f| {
-            let k = match f {
-                Formulation::External => 0,
-                Formulation::Internal => 1,
-            };
+            let k = f.index();
             let ((min, _), (max, _)) = extrema(|tau| eta(tau)[k], &breaks, 32, 1e-12);
-            EfficiencyResult {
-                formulation: *f,
-                power_loss: (1.0 - means[k].value) * ctx.state.pinion_torque * ctx.state.pinion_speed,
-                mean: means[k],
-                min,
-                max,
-            }
+            EfficiencyResult { formulation: *f, power_loss: power_loss(ctx, means[k].value), mean: means[k], min, max }
         })
         .collect()
 }

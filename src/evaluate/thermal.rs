@@ -179,13 +179,9 @@ impl RatingTable {
 
     /// The ratings of law `law` (index in the scene), formulation `f` at speed index `speed_index`.
     pub fn get(&self, losses: &Losses, housing: &Housing, law: usize, f: Formulation, speed_index: usize) -> Ratings {
-        let fi = match f {
-            Formulation::External => 0,
-            Formulation::Internal => 1,
-        };
         let speed = losses.scene.operating.pinion_speed.values[speed_index].value;
         let spec = &losses.scene.friction[law];
-        *self.slots[(law * 2 + fi) * self.speeds + speed_index]
+        *self.slots[(law * 2 + f.index()) * self.speeds + speed_index]
             .get_or_init(|| ratings(losses, housing, spec, f, speed, self.guess))
     }
 }
