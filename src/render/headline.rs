@@ -33,10 +33,14 @@ pub fn efficiency(out: &mut String, r: &Report) {
     let recs: Vec<&EfficiencyRecord> = r.efficiency.iter().filter(|e| e.formulation == first).collect();
     let formulations = r.efficiency.iter().filter(|e| e.case == recs[0].case && e.label == recs[0].label).count();
     let shown: Vec<&EfficiencyRecord> = if recs.len() <= HEADLINE_ROWS { recs.clone() } else { corners(&recs) };
-    let mut cols = vec!["operating point", "P_in kW", "law", "η̄ mesh %", "P mesh W"];
+    let u = super::units::Units::of(r);
+    let (kw, w) = (u.kilowatt(), u.power());
+    let mut cols =
+        vec!["operating point".to_string(), kw.heading("P_in"), "law".into(), "η̄ mesh %".into(), w.heading("P mesh")];
     if r.loss_budget {
-        cols.extend(["P no-load W", "P load-dependent W", "P total W", "η total %"]);
+        cols.extend([w.heading("P no-load"), w.heading("P load-dependent"), w.heading("P total"), "η total %".into()]);
     }
+    let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
     let _ = writeln!(
         out,
         "Efficiency, {} formulation{}{}:\n",
@@ -48,10 +52,10 @@ pub fn efficiency(out: &mut String, r: &Report) {
     for e in &shown {
         let mut cells = vec![
             point_label(r, e),
-            fixed(e.pinion_torque.si() * e.pinion_speed.si() / 1e3, 3),
+            kw.cell(e.pinion_torque.si() * e.pinion_speed.si(), 3),
             law_words(&e.label),
             fixed(100.0 * e.mean_efficiency.0, 3),
-            fixed(e.power_loss.si(), 2),
+            w.q(&e.power_loss, 2),
         ];
         if let Some(b) = &e.budget {
             let sum = |load: bool| -> f64 {
@@ -63,9 +67,9 @@ pub fn efficiency(out: &mut String, r: &Report) {
                     .sum()
             };
             cells.extend([
-                fixed(sum(false), 2),
-                fixed(e.power_loss.si() + sum(true), 2),
-                fixed(b.total_loss.si(), 2),
+                w.cell(sum(false), 2),
+                w.cell(e.power_loss.si() + sum(true), 2),
+                w.q(&b.total_loss, 2),
                 fixed(100.0 * b.total_efficiency.0, 3),
             ]);
         }
@@ -130,10 +134,10 @@ fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
 
 /// Dynamics: per formulation the verdict at the operating points, the map's unstable ranges, the
 /// peak dynamic factor with its point and the DTE peak-to-peak range.
-pub fn dynamics(out: &mut String, d: &DynamicsReport) {
+pub fn dynamics(out: &mut String, d: &DynamicsReport, u: super::units::Units) {
     let Some(first) = d.points.first() else {
         if let Some(map) = &d.stability_map {
-            map_ranges(out, d, map);
+            map_ranges(out, d, map, u);
         }
         return;
     };
@@ -160,29 +164,39 @@ pub fn dynamics(out: &mut String, d: &DynamicsReport) {
             .iter()
             .filter_map(|p| at(p).and_then(|x| x.dynamic_factor).map(|k| (k.0, p.label.as_str())))
             .max_by(|a, b| a.0.total_cmp(&b.0));
-        let dte: Vec<f64> =
-            d.points.iter().filter_map(|p| at(p).and_then(|x| x.dte_peak_to_peak)).map(|q| q.si() * 1e6).collect();
+        let dte: Vec<f64> = d
+            .points
+            .iter()
+            .filter_map(|p| at(p).and_then(|x| x.dte_peak_to_peak))
+            .map(|q| u.micro().value(q.si()))
+            .collect();
         let mut line = format!("- {}: {verdict}", f.formulation.name());
         if let Some((k, label)) = kv {
             let _ = write!(line, "; peak K_v {} at {label}", fixed(k, 3));
         }
         if let (Some(lo), Some(hi)) = (dte.iter().copied().reduce(f64::min), dte.iter().copied().reduce(f64::max)) {
-            if fixed(lo, 3) == fixed(hi, 3) {
-                let _ = write!(line, "; DTE peak-to-peak {} µm", fixed(lo, 3));
+            let (unit, d) = (u.micro().unit, u.micro().decimals(3));
+            if fixed(lo, d) == fixed(hi, d) {
+                let _ = write!(line, "; DTE peak-to-peak {} {unit}", fixed(lo, d));
             } else {
-                let _ = write!(line, "; DTE peak-to-peak {}–{} µm", fixed(lo, 3), fixed(hi, 3));
+                let _ = write!(line, "; DTE peak-to-peak {}–{} {unit}", fixed(lo, d), fixed(hi, d));
             }
         }
         let _ = writeln!(out, "{line}.");
     }
     let _ = writeln!(out);
     if let Some(map) = &d.stability_map {
-        map_ranges(out, d, map);
+        map_ranges(out, d, map, u);
     }
 }
 
 /// The stability map's located unstable speed ranges, per formulation.
-fn map_ranges(out: &mut String, _d: &DynamicsReport, map: &crate::report::dynamics::StabilityMapReport) {
+fn map_ranges(
+    out: &mut String,
+    _d: &DynamicsReport,
+    map: &crate::report::dynamics::StabilityMapReport,
+    u: super::units::Units,
+) {
     let unit = &map.speed_unit;
     let end = map.points.last().map(|p| p.pinion_speed.si());
     for (f, ranges) in map.formulations.iter().zip(&map.unstable_ranges) {
@@ -195,9 +209,10 @@ fn map_ranges(out: &mut String, _d: &DynamicsReport, map: &crate::report::dynami
             .collect();
         let _ = writeln!(
             out,
-            "- Stability map, {} at {} N·m: {}.",
+            "- Stability map, {} at {} {}: {}.",
             f.name(),
-            sig(map.pinion_torque.si()),
+            sig(u.torque().value(map.pinion_torque.si())),
+            u.torque().unit,
             if list.is_empty() {
                 "stable over the whole map".to_string()
             } else {
@@ -220,10 +235,11 @@ pub fn thermal(out: &mut String, r: &Report) {
     }
     for (label, formulation) in keys {
         let of: Vec<_> = r.thermal.iter().filter(|t| t.label == label && t.formulation.name() == formulation).collect();
-        let theta: Vec<f64> = of.iter().filter_map(|t| t.oil_temperature.map(|q| q.si() - 273.15)).collect();
+        let deg = super::units::Units::of(r).temperature();
+        let theta: Vec<f64> = of.iter().filter_map(|t| t.oil_temperature.map(|q| deg.value(q.si()))).collect();
         let (lo, hi) = (theta.iter().copied().reduce(f64::min), theta.iter().copied().reduce(f64::max));
         let range = match (lo, hi) {
-            (Some(lo), Some(hi)) => format!("θ* {}–{} °C", fixed(lo, 1), fixed(hi, 1)),
+            (Some(lo), Some(hi)) => format!("θ* {}–{} {}", fixed(lo, 1), fixed(hi, 1), deg.unit),
             _ => "no balance".to_string(),
         };
         let bad: Vec<String> = of

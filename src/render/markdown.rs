@@ -2,7 +2,7 @@
 
 use std::fmt::Write;
 
-use super::table::{fixed, header, row, scaled, sig};
+use super::table::{fixed, header, row, sig};
 use crate::report::{PlotKind, Report, Severity};
 
 pub fn render_markdown(r: &Report) -> String {
@@ -60,51 +60,65 @@ fn contact_section(out: &mut String, r: &Report) {
         out,
         "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.\n"
     );
+    let u = super::units::Units::of(r);
+    let (len, vel) = (u.length(), u.velocity());
     for op in &r.operating_points {
         let _ = writeln!(
             out,
-            "### Operating point {}: {}\n\nT_p = {} N·m, n_p = {} {}, F_bn = {} N, T_mesh = {} ms, v_t = {} m/s\n",
+            "### Operating point {}: {}\n\nT_p = {}, n_p = {} {}, F_bn = {}, T_mesh = {} ms, v_t = {}\n",
             op.index + 1,
             op.label,
-            fixed(op.pinion_torque.si(), 2),
+            u.torque().with(op.pinion_torque.si(), 2),
             fixed(r.speed_unit.value(&op.pinion_speed), 1),
             r.speed_unit.name,
-            fixed(op.normal_load.si(), 1),
+            u.force().with(op.normal_load.si(), 1),
             fixed(op.mesh_period.si() * 1e3, 5),
-            fixed(op.pitch_line_velocity.si(), 3)
+            vel.with(op.pitch_line_velocity.si(), 3)
         );
-        header(
-            out,
-            &[
-                "point", "T1C mm", "s mm", "ρ1 mm", "ρ2 mm", "R mm", "v1 m/s", "v2 m/s", "v_s m/s", "v_Σ m/s", "SR",
-                "pairs", "share", "w N/mm", "p_H MPa", "b_H µm",
-            ],
-        );
+        let cols = [
+            "point".to_string(),
+            len.heading("T1C"),
+            len.heading("s"),
+            len.heading("ρ1"),
+            len.heading("ρ2"),
+            len.heading("R"),
+            vel.heading("v1"),
+            vel.heading("v2"),
+            vel.heading("v_s"),
+            vel.heading("v_Σ"),
+            "SR".into(),
+            "pairs".into(),
+            "share".into(),
+            u.force_per_width().heading("w"),
+            u.pressure().heading("p_H"),
+            u.micro().heading("b_H"),
+        ];
+        header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
         for c in &op.contact {
             row(
                 out,
                 &[
                     c.point.clone().unwrap_or_default(),
-                    scaled(&c.distance_from_t1, 1e3, 3),
-                    scaled(&c.s, 1e3, 3),
-                    scaled(&c.radius_of_curvature_pinion, 1e3, 3),
-                    scaled(&c.radius_of_curvature_wheel, 1e3, 3),
-                    scaled(&c.reduced_radius, 1e3, 3),
-                    scaled(&c.velocity_pinion, 1.0, 3),
-                    scaled(&c.velocity_wheel, 1.0, 3),
-                    scaled(&c.sliding_velocity, 1.0, 3),
-                    scaled(&c.sum_velocity, 1.0, 3),
+                    len.q(&c.distance_from_t1, 3),
+                    len.q(&c.s, 3),
+                    len.q(&c.radius_of_curvature_pinion, 3),
+                    len.q(&c.radius_of_curvature_wheel, 3),
+                    len.q(&c.reduced_radius, 3),
+                    vel.q(&c.velocity_pinion, 3),
+                    vel.q(&c.velocity_wheel, 3),
+                    vel.q(&c.sliding_velocity, 3),
+                    vel.q(&c.sum_velocity, 3),
                     fixed(c.slide_to_roll.0, 3),
                     c.pairs_in_contact.to_string(),
                     fixed(c.load_share.0, 3),
-                    scaled(&c.load_per_width, 1e-3, 1),
-                    scaled(&c.hertz_pressure, 1e-6, 1),
-                    scaled(&c.hertz_half_width, 1e6, 1),
+                    u.force_per_width().q(&c.load_per_width, 1),
+                    u.pressure().q(&c.hertz_pressure, 1),
+                    u.micro().q(&c.hertz_half_width, 1),
                 ],
             );
         }
         let _ = writeln!(out);
-        super::markdown_friction::point(out, op, r.geometry.helical.is_some());
+        super::markdown_friction::point(out, op, r.geometry.helical.is_some(), u);
     }
 }
 

@@ -5,7 +5,7 @@
 
 use std::fmt::Write;
 
-use super::table::{fixed, header, row};
+use super::table::{header, row};
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
@@ -32,6 +32,7 @@ pub fn bearings_section(r: &Report) -> String {
                 .any(|p| p.pinion_torque.si() == e.pinion_torque.si() && p.pinion_speed.si() == e.pinion_speed.si())
         });
     }
+    let u = super::units::Units::of(r);
     let _ = writeln!(out, "\n### Bearings\n");
     let _ = writeln!(
         out,
@@ -41,7 +42,19 @@ pub fn bearings_section(r: &Report) -> String {
     for e in points {
         let Some(b) = &e.budget else { continue };
         let _ = writeln!(out, "{}:\n", super::headline::point_at(r, &e.pinion_torque, &e.pinion_speed));
-        header(&mut out, &["#", "shaft", "type", "model", "count", "at mm", "F_r N", "F_a N", "no-load W", "load W"]);
+        let cols = [
+            "#".to_string(),
+            "shaft".into(),
+            "type".into(),
+            "model".into(),
+            "count".into(),
+            u.length().heading("at"),
+            u.force().heading("F_r"),
+            u.force().heading("F_a"),
+            u.power().heading("no-load"),
+            u.power().heading("load"),
+        ];
+        header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
         for (i, x) in b.bearings.iter().enumerate() {
             row(
                 &mut out,
@@ -51,11 +64,11 @@ pub fn bearings_section(r: &Report) -> String {
                     x.kind.to_string(),
                     x.model.to_string(),
                     x.count.to_string(),
-                    x.position.map_or("—".into(), |p| fixed(p.si() * 1e3, 1)),
-                    fixed(x.radial_load.si(), 1),
-                    fixed(x.axial_load.si(), 1),
-                    fixed(x.no_load.si(), 3),
-                    x.load.map_or("—".into(), |l| fixed(l.si(), 3)),
+                    x.position.map_or("—".into(), |p| u.length().q(&p, 1)),
+                    u.force().q(&x.radial_load, 1),
+                    u.force().q(&x.axial_load, 1),
+                    u.power().q(&x.no_load, 3),
+                    x.load.map_or("—".into(), |l| u.power().q(&l, 3)),
                 ],
             );
         }

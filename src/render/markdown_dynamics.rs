@@ -3,6 +3,7 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
+use super::units::Units;
 use crate::report::dynamics::{
     DynamicsPointReport, DynamicsReport, FormulationReport, Located, StabilityMapReport, StiffnessReport,
 };
@@ -21,45 +22,50 @@ pub fn dynamics(out: &mut String, r: &Report) {
     let Some(d) = &r.dynamics else { return };
     let _ = writeln!(out, "## Dynamics\n");
     let _ = writeln!(out, "{}\n", d.description);
-    model_table(out, d);
+    let u = Units::of(r);
+    model_table(out, d, u);
     for p in &d.points {
-        point_section(out, d, p);
+        point_section(out, d, p, u);
     }
     if let Some(map) = &d.stability_map {
-        stability_map_section(out, map);
+        stability_map_section(out, map, u);
     }
     numerics(out, d);
 }
 
 /// The model's quantities: stiffness, mean stiffness, mass, damping, natural frequencies, law.
-fn model_table(out: &mut String, d: &DynamicsReport) {
+fn model_table(out: &mut String, d: &DynamicsReport, u: Units) {
     header(out, &["quantity", "value"]);
+    let k_unit = u.stiffness();
     let k = match &d.stiffness {
         StiffnessReport::Pairs { single, double, triple } => format!(
-            "single {} / double {} / triple {} N/µm ({})",
-            fixed(single.si() * 1e-6, 2),
-            fixed(double.si() * 1e-6, 2),
-            fixed(triple.si() * 1e-6, 2),
+            "single {} / double {} / triple {} ({})",
+            k_unit.cell(single.si(), 2),
+            k_unit.cell(double.si(), 2),
+            k_unit.with(triple.si(), 2),
             d.stiffness_source.replace('_', " ")
         ),
         StiffnessReport::Table { table } => format!("table of {} values over one mesh cycle", table.len()),
         StiffnessReport::PerLength { per_length, cos2_base_helix_angle } => format!(
-            "density k = {} N/(mm·µm) along the contact lines; k(t) = k cos²β_b L(t), cos²β_b = {} ({})",
-            fixed(per_length.si() * 1e-9, 4),
+            "density k = {} along the contact lines; k(t) = k cos²β_b L(t), cos²β_b = {} ({})",
+            u.stiffness_per_width().with(per_length.si(), 4),
             fixed(cos2_base_helix_angle.0, 6),
             d.stiffness_source.replace('_', " ")
         ),
         StiffnessReport::Computed { mean_mesh_stiffness } => format!(
-            "from the teeth, mean {} N/µm over a mesh cycle ({}; the curve is in *Mesh stiffness from the teeth*)",
-            fixed(mean_mesh_stiffness.si() * 1e-6, 2),
+            "from the teeth, mean {} over a mesh cycle ({}; the curve is in *Mesh stiffness from the teeth*)",
+            k_unit.with(mean_mesh_stiffness.si(), 2),
             d.stiffness_source.replace('_', " ")
         ),
     };
     for (q, v) in [
         ("mesh stiffness", k),
-        ("mean stiffness k̄", format!("{} N/µm", fixed(d.mean_stiffness.si() * 1e-6, 3))),
-        ("equivalent mass m_e", format!("{} kg", fixed(d.equivalent_mass.si(), 5))),
-        ("damping ratio ζ, damping c", format!("{}, {} N·s/m", fixed(d.damping_ratio.0, 4), fixed(d.damping.si(), 2))),
+        ("mean stiffness k̄", k_unit.with(d.mean_stiffness.si(), 3)),
+        ("equivalent mass m_e", u.mass().with(d.equivalent_mass.si(), 5)),
+        (
+            "damping ratio ζ, damping c",
+            format!("{}, {}", fixed(d.damping_ratio.0, 4), u.damping().with(d.damping.si(), 2)),
+        ),
         ("natural frequency f_n", format!("{} Hz", fixed(d.natural_frequency.si(), 1))),
         ("friction law", d.friction.clone().unwrap_or_else(|| "none (base model only)".into())),
     ] {
@@ -77,7 +83,8 @@ fn model_table(out: &mut String, d: &DynamicsReport) {
 
 /// One operating point: every formulation's Floquet numbers and response, then its located lines,
 /// bearings, free response and plots.
-fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport) {
+fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport, u: Units) {
+    let (micro, force, torque) = (u.micro(), u.force(), u.torque());
     let _ = writeln!(
         out,
         "### Dynamics at {}\n\nf_mesh = {} Hz, f_n/f_mesh = {}\n",
@@ -85,23 +92,21 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport) 
         fixed(p.mesh_frequency.si(), 2),
         fixed(p.frequency_ratio.0, 3)
     );
-    header(
-        out,
-        &[
-            "formulation",
-            "propagator",
-            "ρ",
-            "multipliers",
-            "verdict",
-            "det Φ(T)",
-            "Liouville",
-            "DTE p-p µm",
-            "K_v",
-            "η_dyn %",
-            "max applied friction N / T_p N·m / T_w N·m",
-            "separation",
-        ],
-    );
+    let cols = [
+        "formulation".to_string(),
+        "propagator".into(),
+        "ρ".into(),
+        "multipliers".into(),
+        "verdict".into(),
+        "det Φ(T)".into(),
+        "Liouville".into(),
+        micro.heading("DTE p-p"),
+        "K_v".into(),
+        "η_dyn %".into(),
+        format!("max applied friction {} / T_p {} / T_w {}", force.unit, torque.unit, torque.unit),
+        "separation".into(),
+    ];
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for f in &p.formulations {
         let mults: Vec<String> = f
             .floquet_multipliers
@@ -121,16 +126,13 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport) 
                 format!("{:?}", f.verdict).to_lowercase(),
                 sci(f.monodromy_determinant.0),
                 sci(f.liouville_determinant.0),
-                f.dte_peak_to_peak.map_or("—".into(), |q| fixed(q.si() * 1e6, 4)),
+                f.dte_peak_to_peak.map_or("—".into(), |q| micro.q(&q, 4)),
                 f.dynamic_factor.map_or("—".into(), |k| fixed(k.0, 4)),
                 f.mean_dynamic_efficiency.map_or("—".into(), |e| fixed(100.0 * e.0, 4)),
                 match (&f.peak_applied_friction_force, f.peak_friction_torque.as_slice()) {
-                    (Some(ff), [tp, tw]) => format!(
-                        "{} / {} / {}",
-                        fixed(ff.value.si(), 1),
-                        fixed(tp.value.si(), 3),
-                        fixed(tw.value.si(), 3)
-                    ),
+                    (Some(ff), [tp, tw]) => {
+                        format!("{} / {} / {}", force.q(&ff.value, 1), torque.q(&tp.value, 3), torque.q(&tw.value, 3))
+                    }
                     _ if f.formulation != crate::dynamics::DynamicFormulation::Base && d.friction_diverges_at_pitch => {
                         "diverges at P".into()
                     }
@@ -141,9 +143,9 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport) 
         );
     }
     let _ = writeln!(out);
-    located_lines(out, &p.formulations);
-    bearing_lines(out, &p.formulations);
-    free_lines(out, &p.formulations);
+    located_lines(out, &p.formulations, u);
+    bearing_lines(out, &p.formulations, u);
+    free_lines(out, &p.formulations, u);
     if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
         if !c.dte.is_empty() {
             let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
@@ -156,11 +158,11 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport) 
 
 /// The stability map's table: per formulation the largest ρ and K_v over the map's speeds and the
 /// located unstable ranges.
-fn stability_map_section(out: &mut String, map: &StabilityMapReport) {
+fn stability_map_section(out: &mut String, map: &StabilityMapReport, u: Units) {
     let _ = writeln!(
         out,
-        "### Stability map\n\nPinion torque {} N·m, {} speeds.\n",
-        fixed(map.pinion_torque.si(), 2),
+        "### Stability map\n\nPinion torque {}, {} speeds.\n",
+        u.torque().with(map.pinion_torque.si(), 2),
         map.points.len()
     );
     let unit = &map.speed_unit;
@@ -195,40 +197,39 @@ fn stability_map_section(out: &mut String, map: &StabilityMapReport) {
 
 /// The located extrema (value at τ in mesh periods), means with their error estimates, separation.
 /// 6-DOF: the bearing forces and displacements of both gears, per formulation.
-fn bearing_lines(out: &mut String, formulations: &[FormulationReport]) {
+fn bearing_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
     if formulations.iter().all(|f| f.gears.is_empty()) {
         return;
     }
-    header(
-        out,
-        &[
-            "formulation",
-            "gear",
-            "LOA bearing force p-p N",
-            "LOA mean N",
-            "OLOA bearing force p-p N",
-            "OLOA mean N",
-            "OLOA orders 1 / 2 N",
-            "y p-p µm",
-            "x p-p µm",
-        ],
-    );
+    let (force, micro) = (u.force(), u.micro());
+    let cols = [
+        "formulation".to_string(),
+        "gear".into(),
+        force.heading("LOA bearing force p-p"),
+        force.heading("LOA mean"),
+        force.heading("OLOA bearing force p-p"),
+        force.heading("OLOA mean"),
+        force.heading("OLOA orders 1 / 2"),
+        micro.heading("y p-p"),
+        micro.heading("x p-p"),
+    ];
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for f in formulations {
         for g in &f.gears {
             let order =
-                |k: usize| g.bearing_force_oloa_spectrum.get(k).map_or("—".into(), |l| fixed(l.amplitude.si(), 3));
+                |k: usize| g.bearing_force_oloa_spectrum.get(k).map_or("—".into(), |l| force.q(&l.amplitude, 3));
             row(
                 out,
                 &[
                     f.formulation.name().into(),
                     g.gear.clone(),
-                    fixed(g.bearing_force_loa_peak_to_peak.si(), 2),
-                    fixed(g.bearing_force_loa_mean.si(), 2),
-                    fixed(g.bearing_force_oloa_peak_to_peak.si(), 3),
-                    fixed(g.bearing_force_oloa_mean.si(), 3),
+                    force.q(&g.bearing_force_loa_peak_to_peak, 2),
+                    force.q(&g.bearing_force_loa_mean, 2),
+                    force.q(&g.bearing_force_oloa_peak_to_peak, 3),
+                    force.q(&g.bearing_force_oloa_mean, 3),
                     format!("{} / {}", order(0), order(1)),
-                    fixed(g.oloa_displacement_peak_to_peak.si() * 1e6, 5),
-                    fixed(g.loa_displacement_peak_to_peak.si() * 1e6, 5),
+                    micro.q(&g.oloa_displacement_peak_to_peak, 5),
+                    micro.q(&g.loa_displacement_peak_to_peak, 5),
                 ],
             );
         }
@@ -237,29 +238,36 @@ fn bearing_lines(out: &mut String, formulations: &[FormulationReport]) {
 }
 
 /// The free responses: peak, growth and the Floquet-mode spectrum lines.
-fn free_lines(out: &mut String, formulations: &[FormulationReport]) {
+fn free_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
+    let (micro, vel) = (u.micro(), u.velocity());
     for f in formulations {
         let Some(fr) = &f.free_response else { continue };
         let _ = writeln!(
             out,
-            "Free response, {}: x0 = {} µm, v0 = {} m/s over {} mesh periods; peak |x| {} µm at t = {} T; largest |x| in the first period {} µm, in the last {} µm. Lines (Floquet modes, f = arg λ/(2πT) + k f_mesh):\n",
+            "Free response, {}: x0 = {}, v0 = {} over {} mesh periods; peak |x| {} at t = {} T; largest |x| in the first period {}, in the last {}. Lines (Floquet modes, f = arg λ/(2πT) + k f_mesh):\n",
             f.formulation.name(),
-            fixed(fr.x0.si() * 1e6, 5),
-            fixed(fr.v0.si(), 5),
+            micro.with(fr.x0.si(), 5),
+            vel.with(fr.v0.si(), 5),
             fr.periods,
-            fixed(fr.peak.value.si() * 1e6, 5),
+            micro.with(fr.peak.value.si(), 5),
             fixed(fr.peak.tau.0, 4),
-            fixed(fr.first_period_peak.si() * 1e6, 5),
-            fixed(fr.last_period_peak.si() * 1e6, 5)
+            micro.with(fr.first_period_peak.si(), 5),
+            micro.with(fr.last_period_peak.si(), 5)
         );
-        header(out, &["f / f_mesh", "amplitude µm", "error est. µm", "growth per period |λ|"]);
+        let cols = [
+            "f / f_mesh".to_string(),
+            micro.heading("amplitude"),
+            micro.heading("error est."),
+            "growth per period |λ|".into(),
+        ];
+        header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
         for l in &fr.lines {
             row(
                 out,
                 &[
                     fixed(l.order.0, 4),
-                    fixed(l.amplitude.si() * 1e6, 6),
-                    format!("{:.1e}", l.amplitude_error.si() * 1e6),
+                    micro.q(&l.amplitude, 6),
+                    format!("{:.1e}", micro.value(l.amplitude_error.si())),
                     fixed(l.growth_per_period.0, 6),
                 ],
             );
@@ -268,10 +276,11 @@ fn free_lines(out: &mut String, formulations: &[FormulationReport]) {
     }
 }
 
-fn located_lines(out: &mut String, formulations: &[FormulationReport]) {
-    let at = |l: &Located, scale: f64, digits: usize, unit: &str| {
-        format!("{} {unit} at τ = {}", fixed(l.value.si() * scale, digits), fixed(l.tau.0, 6))
+fn located_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
+    let at = |l: &Located, shown: super::units::Shown, digits: usize| {
+        format!("{} at τ = {}", shown.with(l.value.si(), digits), fixed(l.tau.0, 6))
     };
+    let (micro, force) = (u.micro(), u.force());
     for f in formulations {
         let (Some(lo), Some(hi), Some(fmax), Some(fmin)) =
             (&f.dte_min, &f.dte_max, &f.tooth_force_max, &f.tooth_force_min)
@@ -279,20 +288,20 @@ fn located_lines(out: &mut String, formulations: &[FormulationReport]) {
             continue;
         };
         let mut parts = vec![
-            format!("DTE min {}, max {}", at(lo, 1e6, 4, "µm"), at(hi, 1e6, 4, "µm")),
-            format!("tooth force F min {}, max {}", at(fmin, 1.0, 1, "N"), at(fmax, 1.0, 1, "N")),
+            format!("DTE min {}, max {}", at(lo, micro, 4), at(hi, micro, 4)),
+            format!("tooth force F min {}, max {}", at(fmin, force, 1), at(fmax, force, 1)),
         ];
         if let (Some(m), Some(e)) = (&f.dte_mean, &f.dte_mean_error) {
-            parts.push(format!("mean DTE {} µm (± {:.1e})", fixed(m.si() * 1e6, 4), e.si() * 1e6));
+            parts.push(format!("mean DTE {} (± {:.1e})", micro.with(m.si(), 4), micro.value(e.si())));
         }
         if let (Some(m), Some(e)) = (&f.mean_dynamic_efficiency, &f.mean_dynamic_efficiency_error) {
             parts.push(format!("mean η_dyn {} % (± {:.1e})", fixed(100.0 * m.0, 4), 100.0 * e.0));
         }
         if let Some(ff) = &f.peak_applied_friction_force {
-            parts.push(format!("max applied friction force {}", at(ff, 1.0, 1, "N")));
+            parts.push(format!("max applied friction force {}", at(ff, force, 1)));
         }
         if let Some(mf) = &f.peak_mu_times_tooth_force {
-            parts.push(format!("max μ × tooth force {} (not applied by this equation)", at(mf, 1.0, 1, "N")));
+            parts.push(format!("max μ × tooth force {} (not applied by this equation)", at(mf, force, 1)));
         }
         if !f.tooth_separation.is_empty() {
             let spans: Vec<String> =

@@ -3,23 +3,24 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
+use super::units::Units;
 use crate::report::friction::MuValue;
 use crate::report::{formulation_name, OperatingPointReport, Report};
 
 /// Film, μ along the line of action, and efficiency at one operating point.
-pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
+pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, u: Units) {
     if let Some(film) = &op.film {
-        film_lines(out, film);
+        film_lines(out, film, u);
     }
     if op.friction.is_empty() {
         return;
     }
     let _ = writeln!(out, "Signed coefficient of friction along the line of action (negative in approach):\n");
-    let mut cols = vec!["point".to_string(), "T1C mm".to_string()];
+    let mut cols = vec!["point".to_string(), u.length().heading("T1C")];
     cols.extend(op.friction.iter().map(|l| format!("`{}`", l.label)));
     header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for (i, r) in op.friction[0].mu_along_loa.iter().enumerate() {
-        let mut cells = vec![r.point.clone().unwrap_or_default(), fixed(r.distance_from_t1.si() * 1e3, 3)];
+        let mut cells = vec![r.point.clone().unwrap_or_default(), u.length().q(&r.distance_from_t1, 3)];
         for law in &op.friction {
             let m = &law.mu_along_loa[i];
             let mut cell = match m.mu {
@@ -34,6 +35,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
         row(out, &cells);
     }
     let _ = writeln!(out);
+    let p_loss = u.power().heading("P_loss");
     header(
         out,
         &[
@@ -43,7 +45,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
             "formulation",
             "η̄ %",
             "error est.",
-            "P_loss W",
+            &p_loss,
             "η min %",
             "η max %",
             "1 − μ̄ H_V %",
@@ -78,7 +80,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
                     formulation_name(e.formulation).into(),
                     fixed(100.0 * e.mean_efficiency.0, 4),
                     format!("{:.1e}", e.error_estimate.0),
-                    fixed(e.power_loss.si(), 2),
+                    u.power().q(&e.power_loss, 2),
                     fixed(100.0 * e.min_efficiency.0, 4),
                     fixed(100.0 * e.max_efficiency.0, 4),
                     fixed(100.0 * law.ohlendorf_efficiency.0, 4),
@@ -99,17 +101,18 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool) {
 pub const HELICAL_NOTE: &str = "Helical pair: μ is integrated along every contact line, each point a spur-like contact at its own u with the load per unit length w = F_bn / L(t) (constant stiffness density, He & Singh). The efficiency uses the normal-force arms r_b cos β_b (He & Singh eq 8). The last column, 1 − μ̄ H_V with Ohlendorf's H_V (ISO/TR 14179-2), is NOT the mean of this model: H_V is the mean loss of a slice model, in which each transverse slice of the face shares its load equally between its own pairs in contact. Constant stiffness density puts more load where more line length is, which weights the ends of the path of contact (where sliding is fastest): at β = 15° the loss is about 1.1–1.2 × μ H_V. The two agree as β → 0; when ε_β is an integer L(t) is constant and the loss is the uniform-load value μ (1/r_b1 + 1/r_b2)/cos β_b · (AP² + PE²)/(2 AE). The column μ along the line of action is evaluated under the mean load per unit length F_bn / L̄.";
 
 /// The film thickness and Λ at the characteristic points.
-fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow]) {
+fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow], u: Units) {
     let _ = writeln!(out, "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and Λ:\n");
-    header(out, &["point", "T1C mm", "h_c µm", "h_min µm", "Λ"]);
+    let (len, micro) = (u.length(), u.micro());
+    header(out, &["point", &len.heading("T1C"), &micro.heading("h_c"), &micro.heading("h_min"), "Λ"]);
     for f in film {
         row(
             out,
             &[
                 f.point.clone().unwrap_or_default(),
-                fixed(f.distance_from_t1.si() * 1e3, 3),
-                fixed(f.central_film.si() * 1e6, 4),
-                fixed(f.minimum_film.si() * 1e6, 4),
+                len.q(&f.distance_from_t1, 3),
+                micro.q(&f.central_film, 4),
+                micro.q(&f.minimum_film, 4),
                 f.lambda.map_or("—".into(), |l| fixed(l.0, 3)),
             ],
         );
@@ -137,18 +140,19 @@ pub fn sweep(out: &mut String, r: &Report) {
 "
         );
     }
-    header(out, &["T_p N·m", &speed, "law", "formulation", "η̄ %", "P_loss W"]);
+    let u = Units::of(r);
+    header(out, &[&u.torque().heading("T_p"), &speed, "law", "formulation", "η̄ %", &u.power().heading("P_loss")]);
     let shown = |case: usize| full || r.operating_points.iter().any(|o| o.index == case);
     for rec in r.efficiency.iter().filter(|x| shown(x.case)) {
         row(
             out,
             &[
-                fixed(rec.pinion_torque.si(), 2),
+                u.torque().q(&rec.pinion_torque, 2),
                 fixed(r.speed_unit.value(&rec.pinion_speed), 1),
                 format!("`{}`", rec.label),
                 formulation_name(rec.formulation).into(),
                 fixed(100.0 * rec.mean_efficiency.0, 4),
-                fixed(rec.power_loss.si(), 2),
+                u.power().q(&rec.power_loss, 2),
             ],
         );
     }

@@ -12,7 +12,9 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
     let _ = writeln!(out, "\n## Geometry\n");
     header(out, &["quantity", "symbol", "value"]);
     let deg = 180.0 / std::f64::consts::PI;
-    let mm = |q: &crate::report::number::Q| format!("{} mm", scaled(q, 1e3, 4));
+    let u = super::units::Units::of(r);
+    let len = u.length();
+    let mm = |q: &crate::report::number::Q| len.with(q.si(), 4);
     let pts = &g.points_from_t1;
     let mut contact_rows: Vec<(f64, String, String, String)> =
         vec![(pts.A.si(), "start of contact".into(), "T1A".into(), mm(&pts.A))];
@@ -36,17 +38,17 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         (
             "centre distance",
             "a",
-            format!("{} mm ({})", scaled(&g.center_distance, 1e3, 4), g.center_distance_source.replace('_', " ")),
+            format!("{} ({})", len.with(g.center_distance.si(), 4), g.center_distance_source.replace('_', " ")),
         ),
-        ("zero-backlash centre distance", "a_0", format!("{} mm", scaled(&g.zero_backlash_center_distance, 1e3, 4))),
+        ("zero-backlash centre distance", "a_0", len.with(g.zero_backlash_center_distance.si(), 4)),
         ("operating pressure angle", "α_w", format!("{}°", scaled(&g.operating_pressure_angle, deg, 4))),
         ("zero-backlash pressure angle", "α_w0", format!("{}°", scaled(&g.zero_backlash_pressure_angle, deg, 4))),
-        ("face width", "b", format!("{} mm", scaled(&g.face_width, 1e3, 3))),
-        ("base pitch", "p_b", format!("{} mm", scaled(&g.base_pitch, 1e3, 4))),
-        ("line of action", "T1T2", format!("{} mm", scaled(&g.line_of_action_length, 1e3, 4))),
+        ("face width", "b", len.with(g.face_width.si(), 3)),
+        ("base pitch", "p_b", len.with(g.base_pitch.si(), 4)),
+        ("line of action", "T1T2", len.with(g.line_of_action_length.si(), 4)),
         ("transverse contact ratio", "ε_α", fixed(g.contact_ratio.0, 4)),
         ("Ohlendorf gear loss factor", "H_V", fixed(g.ohlendorf_loss_factor.0, 5)),
-        ("reduced modulus", "E'", format!("{} GPa", scaled(&g.reduced_modulus, 1e-9, 3))),
+        ("reduced modulus", "E'", u.modulus().with(g.reduced_modulus.si(), 3)),
         ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
     ];
     let mut rows = rows;
@@ -81,7 +83,20 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         row(out, &[q.to_string(), s.to_string(), v.clone()]);
     }
     let _ = writeln!(out);
-    header(out, &["gear", "z", "x", "d mm", "d_b mm", "d_a mm", "d_a from", "d_w mm", "ε_i", "s_a mm", "x_min"]);
+    let cols = [
+        "gear".to_string(),
+        "z".into(),
+        "x".into(),
+        len.heading("d"),
+        len.heading("d_b"),
+        len.heading("d_a"),
+        "d_a from".into(),
+        len.heading("d_w"),
+        "ε_i".into(),
+        len.heading("s_a"),
+        "x_min".into(),
+    ];
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
         row(
             out,
@@ -89,20 +104,20 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
                 name.into(),
                 gr.teeth.to_string(),
                 fixed(gr.profile_shift.0, 4),
-                scaled(&gr.pitch_diameter, 1e3, 4),
-                scaled(&gr.base_diameter, 1e3, 4),
-                scaled(&gr.tip_diameter, 1e3, 4),
+                len.q(&gr.pitch_diameter, 4),
+                len.q(&gr.base_diameter, 4),
+                len.q(&gr.tip_diameter, 4),
                 format!("{:?}", gr.tip_diameter_source)
                     .replace("AddendumRule", "addendum rule")
                     .replace("Given", "given"),
-                scaled(&gr.working_pitch_diameter, 1e3, 4),
+                len.q(&gr.working_pitch_diameter, 4),
                 fixed(gr.addendum_contact_ratio.0, 4),
-                scaled(&gr.tip_thickness, 1e3, 4),
+                len.q(&gr.tip_thickness, 4),
                 fixed(gr.undercut_limit.0, 4),
             ],
         );
     }
     if let Some(h) = &g.helical {
-        super::markdown_helical::plane_of_action(out, h, &r.plots);
+        super::markdown_helical::plane_of_action(out, h, &r.plots, u);
     }
 }

@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::table::{fixed, header, row, scaled};
+use super::table::{fixed, header, row};
 use crate::geometry::regions::{LineEnd, PitchSide};
 use crate::report::helical::HelicalReport;
 use crate::report::PlotRef;
@@ -24,7 +24,7 @@ fn side(s: PitchSide) -> &'static str {
     }
 }
 
-pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[PlotRef]) {
+pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[PlotRef], u: super::units::Units) {
     let _ = writeln!(out, "\n### Plane of action (helical pair)\n");
     for p in plots.iter().filter(|p| p.kind == crate::report::PlotKind::PlaneOfAction) {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
@@ -34,7 +34,7 @@ pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[Plot
         "Contact lines are straight, inclined by β_b, one transverse base pitch apart; line k has its z = +b/2 end at T1A + (τ + k) p_bt (He & Singh eq 11). Constant stiffness density: every line carries the load w = F_bn / L(t) per unit length.\n"
     );
     header(out, &["quantity", "value"]);
-    let mm = |q: &crate::report::number::Q| format!("{} mm", scaled(q, 1e3, 4));
+    let mm = |q: &crate::report::number::Q| u.length().with(q.si(), 4);
     for (q, v) in [
         ("line lead b tan β_b", mm(&h.line_lead)),
         ("mean contact length L̄ = ε_α b / cos β_b", mm(&h.mean_contact_length)),
@@ -51,7 +51,7 @@ pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[Plot
         row(out, &[q.into(), v]);
     }
     for a in &h.axial_force {
-        row(out, &[format!("axial force F_a at {}", a.operating_point), format!("{} N", fixed(a.value.si(), 2))]);
+        row(out, &[format!("axial force F_a at {}", a.operating_point), u.force().with(a.value.si(), 2)]);
     }
     let _ = writeln!(
         out,

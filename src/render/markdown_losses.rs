@@ -8,6 +8,7 @@ use crate::losses::parts::COLUMNS;
 use crate::report::{PlotKind, Report, Severity};
 
 use super::headline::point_label;
+use super::units::Units;
 
 /// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
 /// budget's total where given), the map's range, and the count of warnings and notes.
@@ -29,8 +30,9 @@ pub fn headline_body(r: &Report) -> String {
     } else {
         "spur pair".to_string()
     };
+    let u = Units::of(r);
     let oil = r.lubricant.as_ref().map_or(String::new(), |l| match &l.temperature {
-        Some(t) => format!(", {} at {:.0} °C", l.name, t.si() - 273.15),
+        Some(t) => format!(", {} at {:.0} {}", l.name, u.temperature().value(t.si()), u.temperature().unit),
         None => format!(", {}", l.name),
     });
     // A pair sized in other units than millimetres is named as written too (8 1/in, 1.25 in).
@@ -50,11 +52,11 @@ pub fn headline_body(r: &Report) -> String {
     };
     let _ = writeln!(
         out,
-        "{kind}, z = {}/{}, m = {} mm, b = {} mm{as_written}{oil}; {} operating point(s).\n",
+        "{kind}, z = {}/{}, m = {} mm, b = {}{as_written}{oil}; {} operating point(s).\n",
         r.geometry.pinion.teeth,
         r.geometry.wheel.teeth,
         fixed(g.module.si() * 1e3, 3),
-        fixed(g.face_width.si() * 1e3, 2),
+        u.length().with(g.face_width.si(), 2),
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
     );
     super::headline::efficiency(&mut out, r);
@@ -84,7 +86,7 @@ pub fn headline_body(r: &Report) -> String {
     }
     super::headline::thermal(&mut out, r);
     if let Some(d) = &r.dynamics {
-        super::headline::dynamics(&mut out, d);
+        super::headline::dynamics(&mut out, d, super::units::Units::of(r));
     }
     out
 }
@@ -93,6 +95,7 @@ pub fn headline_body(r: &Report) -> String {
 pub fn lubricant_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(l) = &r.lubricant else { return out };
+    let u = Units::of(r);
     let _ = writeln!(out, "\n## Lubricant\n");
     header(&mut out, &["quantity", "value"]);
     row(&mut out, &["name".into(), l.name.clone()]);
@@ -100,22 +103,23 @@ pub fn lubricant_section(r: &Report) -> String {
         row(&mut out, &["base oil".into(), b.clone()]);
     }
     if let Some(t) = &l.temperature {
-        row(&mut out, &["oil temperature".into(), format!("{} °C", fixed(t.si() - 273.15, 1))]);
+        row(&mut out, &["oil temperature".into(), u.temperature().with(t.si(), 1)]);
     }
+    let nu = u.kinematic_viscosity();
     if let Some(n) = &l.kinematic_viscosity {
-        row(&mut out, &["kinematic viscosity ν".into(), format!("{} mm²/s", fixed(n.si() * 1e6, 3))]);
+        row(&mut out, &["kinematic viscosity ν".into(), nu.with(n.si(), 3)]);
     }
-    row(&mut out, &["dynamic viscosity η".into(), format!("{} mPa·s", fixed(l.dynamic_viscosity.si() * 1e3, 3))]);
+    row(&mut out, &["dynamic viscosity η".into(), u.dynamic_viscosity().with(l.dynamic_viscosity.si(), 3)]);
     if let Some(d) = &l.density {
-        row(&mut out, &["density ρ".into(), format!("{} kg/m³", fixed(d.si(), 1))]);
+        row(&mut out, &["density ρ".into(), u.density().with(d.si(), 1)]);
     }
     if let Some(a) = &l.pressure_viscosity {
-        row(&mut out, &["pressure–viscosity coefficient α".into(), format!("{} 1/GPa", fixed(a.si() * 1e9, 3))]);
+        row(&mut out, &["pressure–viscosity coefficient α".into(), u.pressure_viscosity().with(a.si(), 3)]);
     }
     row(&mut out, &["lubricant factor X_L (ISO/TR 14179-2)".into(), fixed(l.lubricant_factor.0, 3)]);
     if let (Some(a), Some(b), Some(d)) = (&l.nu_40, &l.nu_100, &l.density_15) {
-        row(&mut out, &["ν40 / ν100".into(), format!("{} / {} mm²/s", fixed(a.si() * 1e6, 2), fixed(b.si() * 1e6, 3))]);
-        row(&mut out, &["density at 15 °C".into(), format!("{} kg/m³", fixed(d.si(), 1))]);
+        row(&mut out, &["ν40 / ν100".into(), format!("{} / {}", nu.cell(a.si(), 2), nu.with(b.si(), 3))]);
+        row(&mut out, &["density at 15 °C".into(), u.density().with(d.si(), 1)]);
     }
     if let Some(vi) = &l.viscosity_index {
         row(&mut out, &["viscosity index (ASTM D2270)".into(), fixed(vi.0, 1)]);
@@ -149,25 +153,28 @@ pub fn budget_section(r: &Report) -> String {
             "Helical pair: the mesh column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line (the sum of the budget uses it: it follows the load along the inclined lines the law is evaluated on). Beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two.\n"
         );
     }
-    let mut cols = vec!["operating point", "law", "formulation", "mesh W"];
+    let power = Units::of(r).power();
+    // The parts' headings name W; shown in another unit, the heading says so.
+    let in_unit = |h: &str| h.strip_suffix(" W").map_or(h.to_string(), |n| power.heading(n));
+    let mut cols = vec!["operating point".to_string(), "law".into(), "formulation".into(), power.heading("mesh")];
     if helical {
-        cols.extend(["ISO P_in μ̄ H_V W", "ratio"]);
+        cols.extend([power.heading("ISO P_in μ̄ H_V"), "ratio".into()]);
     }
-    cols.extend(COLUMNS.iter().map(|c| c.heading));
-    cols.extend(["total W", "mesh %", "η total %"]);
-    header(&mut out, &cols);
-    let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| fixed(q.si(), 2));
+    cols.extend(COLUMNS.iter().map(|c| in_unit(c.heading)));
+    cols.extend([power.heading("total"), "mesh %".into(), "η total %".into()]);
+    header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| power.q(&q, 2));
     for e in &r.efficiency {
         let Some(b) = &e.budget else { continue };
         let mut cells =
-            vec![point_label(r, e), law_words(&e.label), e.formulation.name().to_string(), fixed(e.power_loss.si(), 2)];
+            vec![point_label(r, e), law_words(&e.label), e.formulation.name().to_string(), power.q(&e.power_loss, 2)];
         if helical {
             cells.push(w(e.ohlendorf.map(|o| o.power_loss)));
             cells.push(e.ohlendorf.map_or("—".into(), |o| fixed(o.line_integral_ratio.0, 4)));
         }
         cells.extend(COLUMNS.iter().map(|c| w(b.part(c.column))));
         cells.extend([
-            fixed(b.total_loss.si(), 2),
+            power.q(&b.total_loss, 2),
             fixed(100.0 * e.power_loss.si() / b.total_loss.si(), 1),
             fixed(100.0 * b.total_efficiency.0, 3),
         ]);
@@ -204,7 +211,8 @@ pub fn map_section(r: &Report) -> String {
         m.pinion_speeds.len(),
         m.csv
     );
-    header(&mut out, &["law", "formulation", "mesh η̄ %", "total η %", "total loss W"]);
+    let power = Units::of(r).power();
+    header(&mut out, &["law", "formulation", "mesh η̄ %", "total η %", &power.heading("total loss")]);
     for x in &m.ranges {
         row(
             &mut out,
@@ -214,7 +222,7 @@ pub fn map_section(r: &Report) -> String {
                 format!("{} – {}", fixed(100.0 * x.mesh_efficiency[0].0, 3), fixed(100.0 * x.mesh_efficiency[1].0, 3)),
                 x.total_efficiency
                     .map_or("—".into(), |t| format!("{} – {}", fixed(100.0 * t[0].0, 3), fixed(100.0 * t[1].0, 3))),
-                x.total_loss.map_or("—".into(), |t| format!("{} – {}", fixed(t[0].si(), 1), fixed(t[1].si(), 1))),
+                x.total_loss.map_or("—".into(), |t| format!("{} – {}", power.q(&t[0], 1), power.q(&t[1], 1))),
             ],
         );
     }

@@ -36,7 +36,9 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
             "Extremes of the mean efficiency and the power loss over all {} operating points (point numbers as in the records):\n",
             s.operating_points
         );
-        header(out, &["law", "formulation", "min η̄ %", "at point", "max η̄ %", "at point", "max P_loss W", "at point"]);
+        let w = super::units::Units::of(r).power();
+        let p_loss = w.heading("max P_loss");
+        header(out, &["law", "formulation", "min η̄ %", "at point", "max η̄ %", "at point", &p_loss, "at point"]);
         let point = |p: Option<usize>| p.map_or("—".to_string(), |p| p.to_string());
         for e in &s.efficiency {
             row(
@@ -48,7 +50,7 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
                     point(e.min_efficiency.as_ref().map(|v| v.point)),
                     e.max_efficiency.as_ref().map_or("—".into(), |v| fixed(100.0 * v.value.0, 4)),
                     point(e.max_efficiency.as_ref().map(|v| v.point)),
-                    e.max_power_loss.as_ref().map_or("—".into(), |v| fixed(v.value.si(), 2)),
+                    e.max_power_loss.as_ref().map_or("—".into(), |v| w.q(&v.value, 2)),
                     point(e.max_power_loss.as_ref().map(|v| v.point)),
                 ],
             );

@@ -4,6 +4,7 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
+use super::units::Units;
 use crate::report::{PlotKind, Report};
 
 /// The section, empty when the scene does not ask for the teeth.
@@ -19,22 +20,30 @@ pub fn teeth_section(r: &Report) -> String {
         s.relative_error.0,
         s.series_degree
     );
-    header(
-        &mut out,
-        &["gear", "root d_f mm", "bore mm", "form circle d_Ff mm", "h_f = r_f/r_int", "θ_f rad", "tip relief"],
-    );
+    let u = Units::of(r);
+    let (len, micro) = (u.length(), u.micro());
+    let cols = [
+        "gear".to_string(),
+        len.heading("root d_f"),
+        len.heading("bore"),
+        len.heading("form circle d_Ff"),
+        "h_f = r_f/r_int".into(),
+        "θ_f rad".into(),
+        "tip relief".into(),
+    ];
+    header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for b in &s.bodies {
         let relief = b.tip_relief.as_ref().map_or_else(
             || "none".to_string(),
-            |t| format!("{} µm over {} mm, {}", fixed(t.amount.si() * 1e6, 2), fixed(t.length.si() * 1e3, 3), t.shape),
+            |t| format!("{} over {}, {}", micro.with(t.amount.si(), 2), len.with(t.length.si(), 3), t.shape),
         );
         row(
             &mut out,
             &[
                 b.gear.clone(),
-                fixed(b.root_diameter.si() * 1e3, 4),
-                fixed(b.bore_diameter.si() * 1e3, 4),
-                fixed(b.form_diameter.si() * 1e3, 4),
+                len.q(&b.root_diameter, 4),
+                len.q(&b.bore_diameter, 4),
+                len.q(&b.form_diameter, 4),
                 fixed(b.foundation_ratio.0, 4),
                 fixed(b.root_angle.0, 5),
                 relief,
@@ -43,15 +52,16 @@ pub fn teeth_section(r: &Report) -> String {
     }
     let _ = writeln!(out);
     header(&mut out, &["per unit face width", "potential energy", "ISO 6336-1 Method B"]);
-    let per = |x: f64| fixed(x * 1e-9, 3);
+    let kw = u.stiffness_per_width();
+    let per = |x: f64| kw.cell(x, 3);
     row(
         &mut out,
         &[
-            "single pair N/(mm·µm)".into(),
+            kw.heading("single pair"),
             format!(
-                "{} (largest, at s = {} mm)",
+                "{} (largest, at s = {})",
                 per(s.max_single_per_width.value.si()),
-                fixed(s.max_single_per_width.position.si() * 1e3, 4)
+                len.with(s.max_single_per_width.position.si(), 4)
             ),
             format!("c' = {}", per(s.iso_6336.c_single.si())),
         ],
@@ -59,15 +69,15 @@ pub fn teeth_section(r: &Report) -> String {
     row(
         &mut out,
         &[
-            "mesh N/(mm·µm)".into(),
+            kw.heading("mesh"),
             format!("{} (mean K̄/b)", per(s.mean_per_width.si())),
             format!("c_γα = {}", per(s.iso_6336.c_gamma_alpha.si())),
         ],
     );
     let _ = writeln!(
         out,
-        "\nISO's figures include its factor C_M = 0.8 (theory to measured teeth); the method's are theoretical. Mean mesh stiffness K̄ = {} N/µm.",
-        fixed(s.mean.si() * 1e-6, 2)
+        "\nISO's figures include its factor C_M = 0.8 (theory to measured teeth); the method's are theoretical. Mean mesh stiffness K̄ = {}.",
+        u.stiffness().with(s.mean.si(), 2)
     );
     for p in r.plots.iter().filter(|p| p.kind == PlotKind::MeshStiffness) {
         let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
@@ -85,21 +95,30 @@ fn transmission_error_lines(out: &mut String, r: &Report) {
     let _ = writeln!(out, "\n### Static transmission error\n");
     let _ =
         writeln!(out, "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.\n");
-    header(
-        out,
-        &["pinion torque N·m", "F_bn N", "min µm (at s mm)", "max µm (at s mm)", "peak-to-peak µm", "mean µm", "± µm"],
-    );
+    let u = Units::of(r);
+    let (len, micro) = (u.length(), u.micro());
+    let extreme = |what: &str| format!("{what} {} (at s {})", micro.unit, len.unit);
+    let cols = [
+        u.torque().heading("pinion torque"),
+        u.force().heading("F_bn"),
+        extreme("min"),
+        extreme("max"),
+        micro.heading("peak-to-peak"),
+        micro.heading("mean"),
+        micro.heading("±"),
+    ];
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for t in &r.transmission_error {
         row(
             out,
             &[
-                fixed(t.pinion_torque.si(), 2),
-                fixed(t.normal_force.si(), 1),
-                format!("{} ({})", fixed(t.min.value.si() * 1e6, 4), fixed(t.min.position.si() * 1e3, 4)),
-                format!("{} ({})", fixed(t.max.value.si() * 1e6, 4), fixed(t.max.position.si() * 1e3, 4)),
-                fixed(t.peak_to_peak.si() * 1e6, 4),
-                fixed(t.mean.si() * 1e6, 4),
-                format!("{:.1e}", t.mean_error.si() * 1e6),
+                u.torque().q(&t.pinion_torque, 2),
+                u.force().q(&t.normal_force, 1),
+                format!("{} ({})", micro.q(&t.min.value, 4), len.q(&t.min.position, 4)),
+                format!("{} ({})", micro.q(&t.max.value, 4), len.q(&t.max.position, 4)),
+                micro.q(&t.peak_to_peak, 4),
+                micro.q(&t.mean, 4),
+                format!("{:.1e}", micro.value(t.mean_error.si())),
             ],
         );
     }

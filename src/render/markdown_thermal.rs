@@ -7,12 +7,9 @@ use super::markdown_losses::plots_of;
 use crate::report::PlotKind;
 
 use super::table::{fixed, header, row};
+use super::units::Units;
 use crate::report::number::Q;
 use crate::report::Report;
-
-fn celsius(q: &Q) -> String {
-    fixed(q.si() - 273.15, 1)
-}
 
 fn opt(q: Option<&Q>, f: impl Fn(&Q) -> String) -> String {
     q.map_or_else(|| "—".to_string(), f)
@@ -28,26 +25,28 @@ pub fn thermal_section(r: &Report) -> String {
         "One thermal node: the housing wall at the oil temperature θ gives off P_Q(θ) = h_c A Δθ + ε σ A (T⁴ − T_a⁴) + G_f Δθ + G_c max(0, θ − θ_set), h_c = √(h_n² + h_f²) with h_n = 1.31 |Δθ|^(1/3) and h_f = 3.26 v^0.89 W/(m² K) (the DOE-2 exterior convection model). The balance θ* is the lowest oil temperature above ambient where the losses P_V(θ) (mesh and budget, the oil read at θ) equal P_Q(θ). The thermal rating is the pinion torque at this speed whose balance is the oil's limit; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n"
     );
     header(&mut out, &["housing", "value"]);
+    let u = Units::of(r);
+    let (deg, g) = (u.temperature(), u.conductance());
     let cooler = h.oil_cooler.as_ref().map_or_else(
         || "none".to_string(),
-        |c| format!("{} W/K above {} °C", fixed(c.conductance.si(), 1), celsius(&c.above)),
+        |c| format!("{} above {}", g.with(c.conductance.si(), 1), deg.with(c.above.si(), 1)),
     );
     for (name, value) in [
-        ("surface area A", format!("{} m²", fixed(h.surface_area.si(), 3))),
-        ("ambient θ_a", format!("{} °C", celsius(&h.ambient_temperature))),
-        ("air speed v", format!("{} m/s", fixed(h.air_speed.si(), 2))),
+        ("surface area A", u.area().with(h.surface_area.si(), 3)),
+        ("ambient θ_a", deg.with(h.ambient_temperature.si(), 1)),
+        ("air speed v", u.velocity().with(h.air_speed.si(), 2)),
         ("emissivity ε", fixed(h.emissivity.0, 2)),
-        ("heat capacity C", opt(h.heat_capacity.as_ref(), |c| format!("{} kJ/K", fixed(c.si() / 1e3, 2)))),
-        ("foundation G_f", format!("{} W/K", fixed(h.foundation_conductance.si(), 2))),
+        ("heat capacity C", opt(h.heat_capacity.as_ref(), |c| u.heat_capacity().with(c.si(), 2))),
+        ("foundation G_f", g.with(h.foundation_conductance.si(), 2)),
         ("oil cooler", cooler),
-        ("oil limit", format!("{} °C", celsius(&h.max_oil_temperature))),
+        ("oil limit", deg.with(h.max_oil_temperature.si(), 1)),
     ] {
         row(&mut out, &[name.to_string(), value]);
     }
     balance_table(&mut out, r);
     plots_of(&mut out, r, PlotKind::HeatBalance);
     if let Some(d) = &r.duty_cycle {
-        duty_cycle_lines(&mut out, d);
+        duty_cycle_lines(&mut out, d, u);
         plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
         plots_of(&mut out, r, PlotKind::DutyCycleEnergy);
     }
@@ -62,26 +61,27 @@ fn balance_table(out: &mut String, r: &Report) {
         return;
     }
     let _ = writeln!(out);
-    header(
-        out,
-        &[
-            "operating point",
-            "law",
-            "formulation",
-            "θ* °C",
-            "status",
-            "P_V at θ* W",
-            "convection W",
-            "radiation W",
-            "foundation W",
-            "cooler W",
-            "h_c W/(m² K)",
-            "rating N·m (kW)",
-            "rating at 95 °C N·m (kW)",
-        ],
-    );
+    let u = Units::of(r);
+    let (deg, w, torque, kw) = (u.temperature(), u.power(), u.torque(), u.kilowatt());
+    let rating_heading = |what: &str| format!("{what} {} ({})", torque.unit, kw.unit);
+    let cols = [
+        "operating point".to_string(),
+        "law".into(),
+        "formulation".into(),
+        deg.heading("θ*"),
+        "status".into(),
+        w.heading("P_V at θ*"),
+        w.heading("convection"),
+        w.heading("radiation"),
+        w.heading("foundation"),
+        w.heading("cooler"),
+        u.heat_transfer().heading("h_c"),
+        rating_heading("rating"),
+        rating_heading(&format!("rating at {}", deg.with(368.15, 0))),
+    ];
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     let rating = |x: Option<&crate::report::thermal::Rating>| {
-        x.map_or_else(|| "—".into(), |x| format!("{} ({})", fixed(x.torque.si(), 1), fixed(x.power.si() / 1e3, 2)))
+        x.map_or_else(|| "—".into(), |x| format!("{} ({})", torque.q(&x.torque, 1), kw.q(&x.power, 2)))
     };
     for t in &r.thermal {
         row(
@@ -90,14 +90,14 @@ fn balance_table(out: &mut String, r: &Report) {
                 super::headline::point_at(r, &t.pinion_torque, &t.pinion_speed),
                 super::table::law_words(&t.label),
                 t.formulation.name().to_string(),
-                opt(t.oil_temperature.as_ref(), celsius),
+                opt(t.oil_temperature.as_ref(), |q| deg.q(q, 1)),
                 t.status.words().to_string(),
-                fixed(t.power_loss.si(), 1),
-                fixed(t.dissipation.convection.si(), 1),
-                fixed(t.dissipation.radiation.si(), 1),
-                fixed(t.dissipation.foundation.si(), 1),
-                fixed(t.dissipation.cooler.si(), 1),
-                fixed(t.heat_transfer_coefficient.si(), 2),
+                w.q(&t.power_loss, 1),
+                w.q(&t.dissipation.convection, 1),
+                w.q(&t.dissipation.radiation, 1),
+                w.q(&t.dissipation.foundation, 1),
+                w.q(&t.dissipation.cooler, 1),
+                u.heat_transfer().q(&t.heat_transfer_coefficient, 2),
                 rating(t.thermal_rating.as_ref()),
                 rating(t.thermal_rating_95.as_ref()),
             ],
@@ -106,7 +106,9 @@ fn balance_table(out: &mut String, r: &Report) {
 }
 
 /// The duty cycle's steps, energies and efficiency, transient and at the fixed oil temperature.
-fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleReport) {
+fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleReport, u: Units) {
+    let (deg, kj) = (u.temperature(), u.energy());
+    let celsius = |q: &Q| deg.q(q, 1);
     let _ = writeln!(out, "\n### Duty cycle \"{}\"\n", d.name);
     let _ = writeln!(
         out,
@@ -114,7 +116,14 @@ fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleRepor
         super::table::law_words(&d.label),
         d.error_estimate.as_ref().map_or("—".to_string(), |e| format!("{:.1e}", e.si()))
     );
-    header(out, &["step", "duration, torque, speed", "θ at end °C", "energy lost kJ", "energy lost at fixed θ kJ"]);
+    let cols = [
+        "step".to_string(),
+        "duration, torque, speed".into(),
+        deg.heading("θ at end"),
+        kj.heading("energy lost"),
+        kj.heading("energy lost at fixed θ"),
+    ];
+    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
     for (k, s) in d.steps.iter().enumerate() {
         row(
             out,
@@ -122,31 +131,31 @@ fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleRepor
                 (k + 1).to_string(),
                 s.label.clone(),
                 opt(s.oil_temperature_end.as_ref(), celsius),
-                opt(s.energy_lost.as_ref(), |e| fixed(e.si() / 1e3, 2)),
-                opt(s.energy_lost_fixed.as_ref(), |e| fixed(e.si() / 1e3, 2)),
+                opt(s.energy_lost.as_ref(), |e| kj.q(e, 2)),
+                opt(s.energy_lost_fixed.as_ref(), |e| kj.q(e, 2)),
             ],
         );
     }
     let pct =
         |x: Option<crate::report::number::Num>| x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)));
     let _ = writeln!(out);
-    let _ = writeln!(out, "- Energy in: {} kJ.", fixed(d.energy_in.si() / 1e3, 2));
+    let _ = writeln!(out, "- Energy in: {}.", kj.with(d.energy_in.si(), 2));
     if let (Some(lost), Some(given)) = (&d.energy_lost, &d.energy_dissipated) {
         let _ = writeln!(
             out,
-            "- Transient: θ_max {} °C, energy lost {} kJ, given off {} kJ, cycle efficiency {}.",
-            opt(d.oil_temperature_max.as_ref(), celsius),
-            fixed(lost.si() / 1e3, 2),
-            fixed(given.si() / 1e3, 2),
+            "- Transient: θ_max {}, energy lost {}, given off {}, cycle efficiency {}.",
+            opt(d.oil_temperature_max.as_ref(), |q| deg.with(q.si(), 1)),
+            kj.with(lost.si(), 2),
+            kj.with(given.si(), 2),
             pct(d.efficiency)
         );
     }
     if let Some(f) = &d.fixed_temperature {
         let _ = writeln!(
             out,
-            "- At the fixed oil temperature {} °C: energy lost {} kJ, cycle efficiency {}.",
-            celsius(&f.oil_temperature),
-            fixed(f.energy_lost.si() / 1e3, 2),
+            "- At the fixed oil temperature {}: energy lost {}, cycle efficiency {}.",
+            deg.with(f.oil_temperature.si(), 1),
+            kj.with(f.energy_lost.si(), 2),
             pct(f.efficiency)
         );
     }

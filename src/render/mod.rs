@@ -15,6 +15,7 @@ pub mod oil_sweep;
 pub mod svg;
 pub mod table;
 pub mod terminal;
+pub mod units;
 
 use crate::report::numerics::Timings;
 use crate::report::{PlotKind, Report};

@@ -6,6 +6,7 @@ use std::fmt::Write;
 
 use super::svg::{figure_with_legend, Panel};
 use super::table::{fixed, header, law_words, row, sig};
+use super::units::{Shown, Units};
 use crate::evaluate::plan::evenly;
 use crate::report::oil_sweep::{OilSweepReport, OilSweepRow};
 
@@ -39,6 +40,7 @@ fn celsius(r: &OilSweepReport, i: usize) -> f64 {
 
 fn markdown(r: &OilSweepReport) -> String {
     let mut out = String::new();
+    let u = Units::of_system(r.unit_system);
     let n = r.runs.len();
     let _ = writeln!(out, "# {}\n", r.title);
     let _ = writeln!(out, "## Headline\n");
@@ -55,18 +57,23 @@ fn markdown(r: &OilSweepReport) -> String {
     }
     if r.runs.iter().any(|x| x.lubricant.is_some()) {
         let _ = writeln!(out, "\n## Lubricant at each temperature\n");
-        header(&mut out, &["oil temperature", "ν mm²/s", "η mPa·s", "ρ kg/m³", "α 1/GPa"]);
+        let (nu, eta, rho, alpha) =
+            (u.kinematic_viscosity(), u.dynamic_viscosity(), u.density(), u.pressure_viscosity());
+        let cols =
+            ["oil temperature".to_string(), nu.heading("ν"), eta.heading("η"), rho.heading("ρ"), alpha.heading("α")];
+        header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
         for x in &r.runs {
             let Some(l) = &x.lubricant else { continue };
-            let opt = |q: Option<f64>, f: f64, d: usize| q.map_or("—".to_string(), |v| fixed(v * f, d));
+            let opt =
+                |q: Option<crate::report::number::Q>, s: Shown, d: usize| q.map_or("—".to_string(), |q| s.q(&q, d));
             row(
                 &mut out,
                 &[
                     x.label.clone(),
-                    opt(l.kinematic_viscosity.map(|q| q.si()), 1e6, 3),
-                    fixed(l.dynamic_viscosity.si() * 1e3, 3),
-                    opt(l.density.map(|q| q.si()), 1.0, 1),
-                    opt(l.pressure_viscosity.map(|q| q.si()), 1e9, 3),
+                    opt(l.kinematic_viscosity, nu, 3),
+                    eta.q(&l.dynamic_viscosity, 3),
+                    opt(l.density, rho, 1),
+                    opt(l.pressure_viscosity, alpha, 3),
                 ],
             );
         }
@@ -76,11 +83,19 @@ fn markdown(r: &OilSweepReport) -> String {
     }
     if !r.efficiency.is_empty() {
         let _ = writeln!(out, "\n## Efficiency against oil temperature\n");
-        let mut cols = vec!["operating point", "law", "formulation", "oil temperature", "η̄ mesh %", "P mesh W"];
+        let w = u.power();
+        let mut cols = vec![
+            "operating point".to_string(),
+            "law".into(),
+            "formulation".into(),
+            "oil temperature".into(),
+            "η̄ mesh %".into(),
+            w.heading("P mesh"),
+        ];
         if r.loss_budget {
-            cols.extend(["P total W", "η total %"]);
+            cols.extend([w.heading("P total"), "η total %".into()]);
         }
-        header(&mut out, &cols);
+        header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
         let mut rows = 0;
         'rows: for e in &r.efficiency {
             for (i, x) in r.runs.iter().enumerate() {
@@ -93,10 +108,10 @@ fn markdown(r: &OilSweepReport) -> String {
                     e.formulation.name().to_string(),
                     x.label.clone(),
                     fixed(100.0 * e.mean_efficiency[i].0, 3),
-                    fixed(e.power_loss[i].si(), 2),
+                    w.q(&e.power_loss[i], 2),
                 ];
                 if let (Some(t), Some(eta)) = (&e.total_loss, &e.total_efficiency) {
-                    cells.extend([fixed(t[i].si(), 2), fixed(100.0 * eta[i].0, 3)]);
+                    cells.extend([w.q(&t[i], 2), fixed(100.0 * eta[i].0, 3)]);
                 }
                 row(&mut out, &cells);
                 rows += 1;

@@ -89,6 +89,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         curves: points::curves(scene, eval),
         speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
         torque_unit: number::DisplayUnit::of(&scene.operating.pinion_torque),
+        unit_system: number::UnitSystem::Si,
         sweep_curves: (plan.curve_indices().0.to_vec(), plan.curve_indices().1.to_vec()),
         composite_mu: sweep::composite_mu(scene, tally),
         map_grid: sweep::has_map(plan).then(|| {

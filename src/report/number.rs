@@ -143,3 +143,19 @@ pub fn pa(x: f64) -> Q {
 pub fn mps(x: f64) -> Q {
     Q::new(x, "m/s")
 }
+
+/// The unit system report.md shows results in (report.json stays SI): inch–pound when the scene
+/// sizes its pair in inch units, SI otherwise.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum UnitSystem {
+    #[default]
+    Si,
+    Inch,
+}
+
+impl UnitSystem {
+    pub fn is_si(&self) -> bool {
+        *self == UnitSystem::Si
+    }
+}

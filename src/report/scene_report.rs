@@ -50,6 +50,10 @@ pub struct Report {
     /// The unit the scene wrote the pinion torque in: operating points are named in it.
     #[serde(default = "number::DisplayUnit::newton_metre")]
     pub torque_unit: number::DisplayUnit,
+    /// The unit system report.md shows results in: `inch` when the scene sizes its pair in inch
+    /// units (absent: SI). Every value in this file is SI.
+    #[serde(default, skip_serializing_if = "number::UnitSystem::is_si")]
+    pub unit_system: number::UnitSystem,
     /// The map plots' grid (torque and speed indices), when the sweep has a map.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub map_grid: Option<(Vec<usize>, Vec<usize>)>,

@@ -1,33 +1,52 @@
 //! Plots along the line of action: the contact state, and μ, local power loss and η(t) at one operating point.
 
 use super::panel::{figure, Panel};
+use crate::render::units::Units;
 use crate::report::Report;
 
-fn mm(v: &[f64]) -> Vec<f64> {
-    v.iter().map(|u| u * 1e3).collect()
+/// Positions along the line of action in the report's length unit (mm or in).
+fn mm(r: &Report, v: &[f64]) -> Vec<f64> {
+    let len = Units::of(r).length();
+    v.iter().map(|u| len.value(*u)).collect()
 }
 
 fn marks_mm(r: &Report) -> Vec<(String, f64)> {
-    r.curves.marks.iter().map(|(n, u)| (n.clone(), u * 1e3)).collect()
+    let len = Units::of(r).length();
+    r.curves.marks.iter().map(|(n, u)| (n.clone(), len.value(*u))).collect()
+}
+
+/// `distance from T1 (mm)`.
+fn along_label(r: &Report) -> String {
+    format!("distance from T1 ({})", Units::of(r).length().unit)
 }
 
 /// contact_state.svg: v_s (per speed), SR and p_H (per torque) along the line of action.
 pub fn contact_state(r: &Report) -> Result<String, String> {
     let c = &r.curves;
+    let u = Units::of(r);
     let along = |y: &str, series: Vec<(String, Vec<f64>)>| Panel {
         y_label: y.into(),
-        x_label: "distance from T1 (mm)".into(),
-        x: mm(&c.u),
+        x_label: along_label(r),
+        x: mm(r, &c.u),
         series,
         marks: marks_mm(r),
         ..Default::default()
     };
     let panels = [
-        along("sliding velocity v_s (m/s)", c.sliding_velocity.clone()),
+        along(
+            &format!("sliding velocity v_s ({})", u.velocity().unit),
+            c.sliding_velocity
+                .iter()
+                .map(|(l, v)| (l.clone(), v.iter().map(|x| u.velocity().value(*x)).collect()))
+                .collect(),
+        ),
         along("slide-to-roll ratio SR", vec![(String::new(), c.slide_to_roll.clone())]),
         along(
-            "Hertzian pressure p_H per contact (MPa)",
-            c.hertz_pressure.iter().map(|(l, v)| (l.clone(), v.iter().map(|p| p * 1e-6).collect())).collect(),
+            &format!("Hertzian pressure p_H per contact ({})", u.pressure().unit),
+            c.hertz_pressure
+                .iter()
+                .map(|(l, v)| (l.clone(), v.iter().map(|p| u.pressure().value(*p)).collect()))
+                .collect(),
         ),
         along("load share of one contact", vec![(String::new(), c.load_share.clone())]),
     ];
@@ -55,26 +74,33 @@ fn mu_clip(x_mm: &[f64], series: &[(String, Vec<f64>)], p_mm: f64, half_width_mm
 pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
     let c = &r.curves;
     let pc = &c.points[k];
-    let x = mm(&c.u);
-    let p_mm = r.geometry.points_from_t1.P.si() * 1e3;
+    let x = mm(r, &c.u);
+    let u = Units::of(r);
+    let p_mm = u.length().value(r.geometry.points_from_t1.P.si());
     let span = (x[x.len() - 1] - x[0]) * 0.06;
+    let power: Vec<(String, Vec<f64>)> =
+        pc.power_loss.iter().map(|(l, v)| (l.clone(), v.iter().map(|p| u.power().value(*p)).collect())).collect();
     let panels = [
         Panel {
             y_label: "coefficient of friction μ (signed)".into(),
-            x_label: "distance from T1 (mm)".into(),
+            x_label: along_label(r),
             clip: Some(mu_clip(&x, &pc.mu, p_mm, span)),
             x: x.clone(),
             series: pc.mu.clone(),
             marks: marks_mm(r),
-            bands: pc.regime_bands.iter().map(|(a, b, l)| (a * 1e3, b * 1e3, l.clone())).collect(),
+            bands: pc
+                .regime_bands
+                .iter()
+                .map(|(a, b, l)| (u.length().value(*a), u.length().value(*b), l.clone()))
+                .collect(),
             ..Default::default()
         },
         Panel {
-            y_label: "friction power loss per unit path, one contact (W)".into(),
-            x_label: "distance from T1 (mm)".into(),
-            clip: Some(mu_clip(&x, &pc.power_loss, p_mm, span)),
+            y_label: format!("friction power loss per unit path, one contact ({})", u.power().unit),
+            x_label: along_label(r),
+            clip: Some(mu_clip(&x, &power, p_mm, span)),
             x,
-            series: pc.power_loss.clone(),
+            series: power,
             marks: marks_mm(r),
             ..Default::default()
         },
@@ -96,28 +122,29 @@ pub fn film(r: &Report) -> Result<String, String> {
         r.operating_points.iter().filter(|o| o.film.is_some()).collect();
     let picked: Vec<&crate::report::OperatingPointReport> =
         crate::report::pick(with_film.len()).into_iter().map(|i| with_film[i]).collect();
+    let (len, micro) = (Units::of(r).length(), Units::of(r).micro());
     let xy = |get: &dyn Fn(&crate::report::friction::FilmRow) -> Option<f64>| -> Vec<(String, Vec<(f64, f64)>)> {
         picked
             .iter()
             .map(|o| {
                 let rows = o.film.as_deref().unwrap_or(&[]);
-                let pts = rows.iter().filter_map(|f| Some((f.distance_from_t1.si() * 1e3, get(f)?))).collect();
+                let pts = rows.iter().filter_map(|f| Some((len.value(f.distance_from_t1.si()), get(f)?))).collect();
                 (o.label.clone(), pts)
             })
             .collect()
     };
     let mut panels = vec![
         Panel {
-            y_label: "central film h_c (µm)".into(),
-            x_label: "distance from T1 (mm)".into(),
-            xy: xy(&|f| Some(f.central_film.si() * 1e6)),
+            y_label: format!("central film h_c ({})", micro.unit),
+            x_label: along_label(r),
+            xy: xy(&|f| Some(micro.value(f.central_film.si()))),
             marks: marks_mm(r),
             ..Default::default()
         },
         Panel {
-            y_label: "minimum film h_min (µm)".into(),
-            x_label: "distance from T1 (mm)".into(),
-            xy: xy(&|f| Some(f.minimum_film.si() * 1e6)),
+            y_label: format!("minimum film h_min ({})", micro.unit),
+            x_label: along_label(r),
+            xy: xy(&|f| Some(micro.value(f.minimum_film.si()))),
             marks: marks_mm(r),
             ..Default::default()
         },
@@ -126,7 +153,7 @@ pub fn film(r: &Report) -> Result<String, String> {
     if lambda.iter().any(|(_, p)| !p.is_empty()) {
         panels.push(Panel {
             y_label: "film parameter Λ".into(),
-            x_label: "distance from T1 (mm)".into(),
+            x_label: along_label(r),
             xy: lambda,
             marks: marks_mm(r),
             ..Default::default()

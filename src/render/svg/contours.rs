@@ -8,6 +8,8 @@ pub(super) struct Field<'a> {
     pub(super) torques: &'a [f64],
     pub(super) values: Vec<Vec<f64>>,
     pub(super) unit: &'a str,
+    /// The torque axis' unit (the scene's, as written).
+    pub(super) torque_unit: &'a str,
 }
 
 /// "Nice" iso-levels spanning [lo, hi]: about `n` of them on a 1-2-5 step.
@@ -113,6 +115,7 @@ mod tests {
             torques: &[0.0, 1.0],
             values: vec![vec![0.0, 1.0], vec![1.0, 2.0]],
             unit: "",
+            torque_unit: "N·m",
         };
         let s = iso_segments(&f, 0.5);
         assert_eq!(s.len(), 1);

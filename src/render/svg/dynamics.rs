@@ -2,7 +2,13 @@
 //! work-precision diagram of the numerics study.
 
 use super::panel::{figure, Panel};
+use crate::render::units::Units;
 use crate::report::Report;
+
+/// Curves `(label, [(τ, SI value)])` in a shown unit.
+fn shown(curves: &[(String, Vec<(f64, f64)>)], unit: crate::render::units::Shown) -> Vec<(String, Vec<(f64, f64)>)> {
+    curves.iter().map(|(l, v)| (l.clone(), v.iter().map(|(t, x)| (*t, unit.value(*x))).collect())).collect()
+}
 
 /// dynamics_point_K.svg: DTE over the steady-state cycle, mesh force per pair, friction force, DTE spectrum.
 pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
@@ -16,23 +22,22 @@ pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
         ..Default::default()
     };
     let orders: Vec<f64> = (1..=c.spectrum.first().map_or(0, |s| s.1.len())).map(|o| o as f64).collect();
+    let u = Units::of(r);
+    let (micro, force) = (u.micro(), u.force());
     let second = if c.oloa.is_empty() {
-        tau_panel("tooth force per pair (N)", c.pair_force.clone())
+        tau_panel(&format!("tooth force per pair ({})", force.unit), shown(&c.pair_force, force))
     } else {
-        tau_panel("OLOA bearing force K_y y (N)", c.oloa.clone())
+        tau_panel(&format!("OLOA bearing force K_y y ({})", force.unit), shown(&c.oloa, force))
     };
     let panels = [
-        tau_panel(
-            "DTE x (µm)",
-            c.dte.iter().map(|(l, v)| (l.clone(), v.iter().map(|(t, x)| (*t, x * 1e6)).collect())).collect(),
-        ),
+        tau_panel(&format!("DTE x ({})", micro.unit), shown(&c.dte, micro)),
         second,
-        tau_panel("applied friction force Σ μ w N (N)", c.friction_force.clone()),
+        tau_panel(&format!("applied friction force Σ μ w N ({})", force.unit), shown(&c.friction_force, force)),
         Panel {
-            y_label: "DTE harmonic amplitude (µm)".into(),
+            y_label: format!("DTE harmonic amplitude ({})", micro.unit),
             x_label: "mesh order".into(),
             x: orders,
-            series: c.spectrum.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| x * 1e6).collect())).collect(),
+            series: c.spectrum.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| micro.value(*x)).collect())).collect(),
             ..Default::default()
         },
     ];
@@ -47,10 +52,11 @@ pub fn free_response(r: &Report, k: usize) -> Result<String, String> {
     let d = r.dynamics.as_ref().ok_or("no dynamics in the report")?;
     let c = &d.curves[k];
     const SHOWN: f64 = 3.0;
+    let micro = Units::of(r).micro();
     let first = c
         .free
         .iter()
-        .map(|(l, v)| (l.clone(), v.iter().filter(|(t, _)| *t <= SHOWN).map(|(t, x)| (*t, x * 1e6)).collect()))
+        .map(|(l, v)| (l.clone(), v.iter().filter(|(t, _)| *t <= SHOWN).map(|(t, x)| (*t, micro.value(*x))).collect()))
         .collect();
     let envelope = c
         .free
@@ -60,8 +66,8 @@ pub fn free_response(r: &Report, k: usize) -> Result<String, String> {
             for (t, x) in v {
                 let period = t.floor().max(0.0);
                 match peaks.last_mut() {
-                    Some(p) if p.0 == period + 0.5 => p.1 = p.1.max(x.abs() * 1e6),
-                    _ => peaks.push((period + 0.5, x.abs() * 1e6)),
+                    Some(p) if p.0 == period + 0.5 => p.1 = p.1.max(micro.value(x.abs())),
+                    _ => peaks.push((period + 0.5, micro.value(x.abs()))),
                 }
             }
             (l.clone(), peaks)
@@ -69,13 +75,13 @@ pub fn free_response(r: &Report, k: usize) -> Result<String, String> {
         .collect();
     let panels = [
         Panel {
-            y_label: "free DTE (µm)".into(),
+            y_label: format!("free DTE ({})", micro.unit),
             x_label: format!("time in mesh periods (the first {SHOWN})"),
             xy: first,
             ..Default::default()
         },
         Panel {
-            y_label: "largest |DTE| in the period (µm)".into(),
+            y_label: format!("largest |DTE| in the period ({})", micro.unit),
             x_label: "mesh period (its middle)".into(),
             xy: envelope,
             ..Default::default()

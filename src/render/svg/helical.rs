@@ -15,9 +15,10 @@ fn plane(
     legend: &DrawingArea<SVGBackend, plotters::coord::Shift>,
     h: &HelicalReport,
     mu: Option<(&str, &[f64], &[f64])>,
+    len: crate::render::units::Shown,
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
-    let [a, p, end, half] = h.path.map(|x| x * 1e3);
+    let [a, p, end, half] = h.path.map(|x| len.value(x));
     let (Some((x0, x1)), Some((y0, y1))) = (plottable(a, end), plottable(-half, half)) else { return Ok(()) };
     let pad = 0.04 * (x1 - x0);
     let caption = match mu {
@@ -42,8 +43,8 @@ fn plane(
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_desc("u from T1 (mm)")
-        .y_desc("z across the face (mm)")
+        .x_desc(format!("u from T1 ({})", len.unit))
+        .y_desc(format!("z across the face ({})", len.unit))
         .draw()
         .map_err(e)?;
     if let Some((_, u, values)) = mu {
@@ -54,7 +55,7 @@ fn plane(
         chart
             .draw_series(cells.map(|(x, v)| {
                 let c = super::maps::colour((0.5 * (v[0] + v[1]) - lo) / span);
-                Rectangle::new([(x[0] * 1e3, -half), (x[1] * 1e3, half)], c.filled())
+                Rectangle::new([(len.value(x[0]), -half), (len.value(x[1]), half)], c.filled())
             }))
             .map_err(e)?;
     }
@@ -69,7 +70,7 @@ fn plane(
     for (i, (_, lines)) in h.lines_at.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
         for l in lines {
-            let pts = vec![(l[0].0 * 1e3, l[0].1 * 1e3), (l[1].0 * 1e3, l[1].1 * 1e3)];
+            let pts = vec![(len.value(l[0].0), len.value(l[0].1)), (len.value(l[1].0), len.value(l[1].1))];
             chart.draw_series(LineSeries::new(pts, colour.stroke_width(3))).map_err(e)?;
         }
     }
@@ -93,9 +94,10 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
         .and_then(|p| p.mu.first())
         .map(|(l, v)| (l.as_str(), r.curves.u.as_slice(), v.as_slice()));
     let [tau, total, approach, recess] = &h.length_curve;
-    let mm = |v: &Vec<f64>| v.iter().map(|x| x * 1e3).collect::<Vec<_>>();
+    let len = crate::render::units::Units::of(r).length();
+    let mm = |v: &Vec<f64>| v.iter().map(|x| len.value(*x)).collect::<Vec<_>>();
     let panel = Panel {
-        y_label: "contact length (mm)".into(),
+        y_label: format!("contact length ({})", len.unit),
         x_label: "τ (mesh periods)".into(),
         x: tau.clone(),
         series: vec![
@@ -114,7 +116,7 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         let (top, bottom) = root.split_vertically(340);
         let (top, top_legend) = top.split_horizontally(880);
-        plane(&top, &top_legend, h, mu)?;
+        plane(&top, &top_legend, h, mu, len)?;
         let (bottom, bottom_legend) = bottom.split_horizontally(880);
         draw_panel(&bottom, &panel)?;
         draw_legend(&bottom_legend, &panel)?;

@@ -19,19 +19,21 @@ fn parts() -> Vec<&'static str> {
 pub fn loss_budget(r: &Report) -> Result<String, String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let first = r.efficiency.first().map(|x| x.formulation);
+    let power = crate::render::units::Units::of(r).power();
     let bars: Vec<(String, Vec<f64>)> = r
         .efficiency
         .iter()
         .filter(|x| Some(x.formulation) == first)
         .filter_map(|x| {
             let b = x.budget.as_ref()?;
-            let w = |q: Option<crate::report::number::Q>| q.map_or(0.0, |q| q.si());
+            let w = |q: Option<crate::report::number::Q>| q.map_or(0.0, |q| power.value(q.si()));
             let label = format!(
                 "{}: {}",
                 crate::render::headline::point_at(r, &x.pinion_torque, &x.pinion_speed),
                 crate::render::table::law_words(&x.label)
             );
-            let powers = std::iter::once(x.power_loss.si()).chain(COLUMNS.iter().map(|c| w(b.part(c.column))));
+            let powers =
+                std::iter::once(power.value(x.power_loss.si())).chain(COLUMNS.iter().map(|c| w(b.part(c.column))));
             Some((label, powers.collect::<Vec<f64>>()))
         })
         .collect();
@@ -60,7 +62,7 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
             .x_labels(bars.len().max(1))
             .x_label_formatter(&|x| format!("{}", x.round() as i64 + 1))
             .x_desc("bar (operating point and law, listed at right)")
-            .y_desc("total power loss of the gearbox (W)")
+            .y_desc(format!("total power loss of the gearbox ({})", power.unit))
             .draw()
             .map_err(e)?;
         for (i, (_, parts)) in bars.iter().enumerate() {
@@ -127,7 +129,7 @@ fn draw_field(
         .configure_mesh()
         .disable_mesh()
         .x_desc(format!("pinion speed ({speed_unit})"))
-        .y_desc("pinion torque (N·m)")
+        .y_desc(format!("pinion torque ({})", f.torque_unit))
         .x_labels(6)
         .y_labels(6)
         .x_label_formatter(&|x| crate::render::table::sig(*x))
@@ -247,10 +249,22 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
     let Some(m) = &r.efficiency_map else { return Err("the report has no efficiency map".into()) };
     // Speeds in the unit the scene wrote them in.
     let speeds = &m.speeds_written;
-    let torques: Vec<f64> = m.pinion_torques.iter().map(|t| t.0).collect();
+    // Torques in the unit the scene wrote them in, losses in the report's power unit.
+    let torque_unit = r.torque_unit.shown();
+    let torques: Vec<f64> = m.pinion_torques.iter().map(|t| t.0 / r.torque_unit.factor).collect();
     let first = m.formulation;
-    let fields: Vec<(String, Vec<Vec<f64>>, &str)> =
-        m.fields.iter().map(|f| (f.title.clone(), f.values.clone(), f.unit.as_str())).collect();
+    let power = crate::render::units::Units::of(r).power();
+    let fields: Vec<(String, Vec<Vec<f64>>, &str)> = m
+        .fields
+        .iter()
+        .map(|f| match f.unit.as_str() {
+            "W" => {
+                let values = f.values.iter().map(|row| row.iter().map(|v| power.value(*v)).collect()).collect();
+                (f.title.clone(), values, power.unit)
+            }
+            unit => (f.title.clone(), f.values.clone(), unit),
+        })
+        .collect();
     let per_row = if fields.len().is_multiple_of(3) { 3 } else { 2 };
     let rows = fields.len().div_ceil(per_row).max(1);
     let mut svg = String::new();
@@ -271,8 +285,8 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
                 .iter()
                 .filter(|b| Some(b.formulation) == first)
                 .find(|b| title == format!("{} η — {}", b.efficiency_of, crate::report::law_words::law_words(&b.label)))
-                .map(|b| (r.speed_unit.value(&b.pinion_speed), b.pinion_torque.si()));
-            let f = Field { title, speeds, torques: &torques, values, unit };
+                .map(|b| (r.speed_unit.value(&b.pinion_speed), b.pinion_torque.si() / r.torque_unit.factor));
+            let f = Field { title, speeds, torques: &torques, values, unit, torque_unit: &torque_unit };
             draw_field(area, &f, &m.speed_unit, best)?;
         }
         root.present().map_err(|e| e.to_string())?;

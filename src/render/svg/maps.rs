@@ -27,7 +27,12 @@ struct Map<'a> {
     values: Vec<Vec<f64>>,
 }
 
-fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map, speed_unit: &str) -> Result<(), String> {
+fn draw_map(
+    area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+    m: &Map,
+    speed_unit: &str,
+    torque_unit: &str,
+) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let (xe, ye) = (edges(m.speeds), edges(m.torques));
     let (Some((x0, x1)), Some((y0, y1))) = (plottable(xe[0], xe[xe.len() - 1]), plottable(ye[0], ye[ye.len() - 1]))
@@ -53,7 +58,7 @@ fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map, spe
         .configure_mesh()
         .disable_mesh()
         .x_desc(format!("pinion speed ({speed_unit})"))
-        .y_desc("pinion torque (N·m)")
+        .y_desc(format!("pinion torque ({})", torque_unit))
         .x_labels(8)
         .y_labels(6)
         .draw()
@@ -89,12 +94,13 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
         let (t, s) =
             (ti.binary_search(&rec.torque_index).unwrap_or(0), si.binary_search(&rec.speed_index).unwrap_or(0));
         speeds[s] = r.speed_unit.value(&rec.pinion_speed);
-        torques[t] = rec.pinion_torque.si();
+        torques[t] = rec.pinion_torque.si() / r.torque_unit.factor;
     }
     if speeds.iter().chain(&torques).any(|x| !x.is_finite()) || speeds.len() < 2 || torques.len() < 2 {
         return Err("the map grid is incomplete".into());
     }
     let mut maps = Vec::new();
+    let power = crate::render::units::Units::of(r).power();
     for (label, f) in &combos {
         let mut eta = vec![vec![f64::NAN; si.len()]; ti.len()];
         let mut loss = eta.clone();
@@ -102,11 +108,16 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             let (t, s) =
                 (ti.binary_search(&rec.torque_index).unwrap_or(0), si.binary_search(&rec.speed_index).unwrap_or(0));
             eta[t][s] = 100.0 * rec.mean_efficiency.0;
-            loss[t][s] = rec.power_loss.si();
+            loss[t][s] = power.value(rec.power_loss.si());
         }
         let name = format!("{label} {}", f.name());
         maps.push(Map { title: format!("η̄ % — {name}"), speeds: &speeds, torques: &torques, values: eta });
-        maps.push(Map { title: format!("P_loss W — {name}"), speeds: &speeds, torques: &torques, values: loss });
+        maps.push(Map {
+            title: format!("P_loss {} — {name}", power.unit),
+            speeds: &speeds,
+            torques: &torques,
+            values: loss,
+        });
     }
     let mut svg = String::new();
     {
@@ -118,7 +129,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         let areas = root.split_evenly((rows, 2));
         for (area, map) in areas.iter().zip(&maps) {
-            draw_map(area, map, &r.speed_unit.name)?;
+            draw_map(area, map, &r.speed_unit.name, &r.torque_unit.shown())?;
         }
         root.present().map_err(|e| e.to_string())?;
     }

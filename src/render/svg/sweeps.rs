@@ -76,12 +76,13 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     }
     let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
     let mut loss = eta.clone();
+    let power = crate::render::units::Units::of(r).power();
     for rec in &records {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
         let i = labels.iter().position(|x| *x == l).expect("label collected above");
         let j = columns.iter().position(|c| c.0 == x_index(rec)).expect("column collected above");
         eta[i].1[j] = 100.0 * rec.mean_efficiency.0;
-        loss[i].1[j] = rec.power_loss.si();
+        loss[i].1[j] = power.value(rec.power_loss.si());
     }
     let x_label = if by_speed {
         format!("pinion speed ({})", r.speed_unit.name)
@@ -98,7 +99,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
             ..Default::default()
         },
         Panel {
-            y_label: "mesh friction power loss, all contacts (W)".into(),
+            y_label: format!("mesh friction power loss, all contacts ({})", power.unit),
             x_label,
             x: xs,
             series: loss,
@@ -160,6 +161,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
     // (legend, [(μ, η̄ %, P_loss W)])
     type Curve = (String, Vec<(f64, f64, f64)>);
     let mut curves: Vec<Curve> = Vec::new();
+    let power = crate::render::units::Units::of(r).power();
     for rec in r.efficiency.iter().filter(|x| laws.contains(&x.law)) {
         let Some(k) = ops.iter().position(|&k| r.operating_points[k].index == rec.case) else {
             continue;
@@ -172,7 +174,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
             r.operating_points[ops[k]].label
         );
         xs.push(mu);
-        let point = (mu, 100.0 * rec.mean_efficiency.0, rec.power_loss.si());
+        let point = (mu, 100.0 * rec.mean_efficiency.0, power.value(rec.power_loss.si()));
         match curves.iter_mut().find(|(l, _)| *l == label) {
             Some((_, v)) => v.push(point),
             None => curves.push((label, vec![point])),
@@ -201,7 +203,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
             ..Default::default()
         },
         Panel {
-            y_label: "friction power loss (W)".into(),
+            y_label: format!("friction power loss ({})", power.unit),
             x_label: "coefficient of friction μ".into(),
             x: xs.clone(),
             series: pick(2),

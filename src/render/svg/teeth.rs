@@ -1,11 +1,12 @@
 //! mesh_stiffness.svg (K(s) over two mesh cycles with the PEM mean and ISO 6336-1's c_γα b drawn,
 //! one pair's k(s) beside), transmission_error.svg (STE over one cycle, one curve per torque) and
-//! load_share.svg (one pair's share of F_bn along its path, one curve per torque). Positions in mm
-//! from A, stiffness in N/µm, STE in µm.
+//! load_share.svg (one pair's share of F_bn along its path, one curve per torque). Positions from A
+//! in mm, stiffness in N/µm, STE in µm (in, lbf/µin and µin for a scene written in inches).
 
 use plotters::prelude::*;
 
 use super::panel::{plottable, PALETTE};
+use crate::render::units::Units;
 use crate::report::Report;
 
 fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
@@ -61,19 +62,32 @@ fn lines(title: &str, x_desc: &str, y_desc: &str, curves: &[Curve], y_from_zero:
     Ok(svg)
 }
 
+/// `position s from A (mm)`.
+fn position_label(u: Units) -> String {
+    format!("position s from A ({})", u.length().unit)
+}
+
 /// mesh_stiffness.svg.
 pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
     let s = r.stiffness.as_ref().ok_or("the report has no stiffness")?;
+    let u = Units::of(r);
+    let (len, k_unit) = (u.length(), u.stiffness());
     let pitch = s.mesh.position.values.last().copied().unwrap_or(0.0) - s.mesh.position.values[0];
     let mesh: Vec<(f64, f64)> = [0.0, pitch]
         .iter()
         .flat_map(|o| {
-            s.mesh.position.values.iter().zip(&s.mesh.stiffness.values).map(move |(x, k)| ((x + o) * 1e3, k * 1e-6))
+            s.mesh
+                .position
+                .values
+                .iter()
+                .zip(&s.mesh.stiffness.values)
+                .map(move |(x, k)| (len.value(x + o), k_unit.value(*k)))
         })
         .collect();
     let (a, b) = (mesh[0].0, mesh[mesh.len() - 1].0);
     let width = s.mean.si() / s.mean_per_width.si();
-    let iso = s.iso_6336.c_gamma_alpha.si() * width * 1e-6;
+    let iso = k_unit.value(s.iso_6336.c_gamma_alpha.si() * width);
+    let mean = k_unit.value(s.mean.si());
     let curves = [
         Curve { label: "mesh K(s), potential-energy method".into(), points: mesh, colour: 0 },
         Curve {
@@ -84,21 +98,21 @@ pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
                 .values
                 .iter()
                 .zip(&s.pair.stiffness.values)
-                .map(|(x, k)| (x * 1e3, k * 1e-6))
+                .map(|(x, k)| (len.value(*x), k_unit.value(*k)))
                 .collect(),
             colour: 1,
         },
+        Curve { label: format!("mean K̄ = {mean:.1} {}", k_unit.unit), points: vec![(a, mean), (b, mean)], colour: 2 },
         Curve {
-            label: format!("mean K̄ = {:.1} N/µm", s.mean.si() * 1e-6),
-            points: vec![(a, s.mean.si() * 1e-6), (b, s.mean.si() * 1e-6)],
-            colour: 2,
+            label: format!("ISO 6336-1 c_γα b = {iso:.1} {}", k_unit.unit),
+            points: vec![(a, iso), (b, iso)],
+            colour: 3,
         },
-        Curve { label: format!("ISO 6336-1 c_γα b = {iso:.1} N/µm"), points: vec![(a, iso), (b, iso)], colour: 3 },
     ];
     lines(
         &format!("{}: mesh stiffness from the teeth", r.title),
-        "position s from A (mm)",
-        "stiffness (N/µm)",
+        &position_label(u),
+        &format!("stiffness ({})", k_unit.unit),
         &curves,
         true,
     )
@@ -106,20 +120,34 @@ pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
 
 /// transmission_error.svg.
 pub fn transmission_error(r: &Report) -> Result<String, String> {
+    let u = Units::of(r);
+    let (len, micro, torque) = (u.length(), u.micro(), u.torque());
     let curves: Vec<Curve> = r
         .transmission_error
         .iter()
         .enumerate()
         .map(|(i, t)| Curve {
-            label: format!("{:.0} N·m (p-p {:.3} µm)", t.pinion_torque.si(), t.peak_to_peak.si() * 1e6),
-            points: t.mesh.position.values.iter().zip(&t.mesh.ste.values).map(|(x, d)| (x * 1e3, d * 1e6)).collect(),
+            label: format!(
+                "{:.0} {} (p-p {})",
+                torque.value(t.pinion_torque.si()),
+                torque.unit,
+                micro.with(t.peak_to_peak.si(), 3)
+            ),
+            points: t
+                .mesh
+                .position
+                .values
+                .iter()
+                .zip(&t.mesh.ste.values)
+                .map(|(x, d)| (len.value(*x), micro.value(*d)))
+                .collect(),
             colour: i,
         })
         .collect();
     lines(
         &format!("{}: static transmission error", r.title),
-        "position s from A (mm)",
-        "STE along the line of action (µm)",
+        &position_label(u),
+        &format!("STE along the line of action ({})", micro.unit),
         &curves,
         true,
     )
@@ -127,15 +155,24 @@ pub fn transmission_error(r: &Report) -> Result<String, String> {
 
 /// load_share.svg.
 pub fn load_share(r: &Report) -> Result<String, String> {
+    let u = Units::of(r);
+    let (len, torque) = (u.length(), u.torque());
     let curves: Vec<Curve> = r
         .transmission_error
         .iter()
         .enumerate()
         .map(|(i, t)| Curve {
-            label: format!("{:.0} N·m", t.pinion_torque.si()),
-            points: t.pair.position.values.iter().zip(&t.pair.load_share.values).map(|(x, w)| (x * 1e3, *w)).collect(),
+            label: format!("{:.0} {}", torque.value(t.pinion_torque.si()), torque.unit),
+            points: t
+                .pair
+                .position
+                .values
+                .iter()
+                .zip(&t.pair.load_share.values)
+                .map(|(x, w)| (len.value(*x), *w))
+                .collect(),
             colour: i,
         })
         .collect();
-    lines(&format!("{}: load share of one pair", r.title), "position s from A (mm)", "share of F_bn", &curves, true)
+    lines(&format!("{}: load share of one pair", r.title), &position_label(u), "share of F_bn", &curves, true)
 }

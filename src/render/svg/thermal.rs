@@ -1,14 +1,13 @@
 //! heat_balance.svg (P_V and P_Q against the oil temperature, the balance and the limit marked),
 //! duty_cycle_temperature.svg (the sump over the cycle, steps shaded, the limit drawn) and
 //! duty_cycle_energy.svg (energy lost per step, transient and fixed temperature side by side).
-//! Temperatures are drawn in °C (report.json holds K).
+//! Temperatures are drawn in °C (°F for a scene written in inches; report.json holds K).
 
 use plotters::prelude::*;
 
 use super::panel::{plottable, PALETTE};
+use crate::render::units::Units;
 use crate::report::Report;
-
-const C: f64 = 273.15;
 
 fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
     e.to_string()
@@ -19,11 +18,14 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
     let h = r.heat_balance.as_ref().ok_or("the report has no heat balance")?;
     // Drawn up to 30 K beyond the limit or the balance, whichever is higher (the curve in report.json
     // runs to 200 °C).
-    let limit = h.max_oil_temperature.si() - C;
-    let right = limit.max(h.oil_temperature.as_ref().map_or(limit, |b| b.si() - C)) + 30.0;
-    let keep = h.temperature.iter().take_while(|x| **x - C <= right).count().max(2);
-    let t: Vec<f64> = h.temperature[..keep].iter().map(|x| x - C).collect();
-    let (p_v, p_q) = (&h.power_loss[..keep], &h.dissipation[..keep]);
+    let u = Units::of(r);
+    let (deg, w) = (u.temperature(), u.power());
+    let limit = deg.value(h.max_oil_temperature.si());
+    let right = limit.max(h.oil_temperature.as_ref().map_or(limit, |b| deg.value(b.si()))) + 30.0 * deg.per_kelvin();
+    let keep = h.temperature.iter().take_while(|x| deg.value(**x) <= right).count().max(2);
+    let t: Vec<f64> = h.temperature[..keep].iter().map(|x| deg.value(*x)).collect();
+    let in_unit = |v: &[f64]| v[..keep].iter().map(|x| w.value(*x)).collect::<Vec<f64>>();
+    let (p_v, p_q) = (&in_unit(&h.power_loss)[..], &in_unit(&h.dissipation)[..]);
     let top = p_v.iter().chain(p_q).copied().filter(|x| x.is_finite()).fold(0.0, f64::max);
     let Some((y0, y1)) = plottable(0.0, 1.05 * top.max(1e-9)) else { return Err("no finite power to draw".into()) };
     let (x0, x1) = (t[0], *t.last().unwrap_or(&200.0));
@@ -38,7 +40,12 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
             .y_label_area_size(70)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(err)?;
-        chart.configure_mesh().x_desc("oil temperature θ (°C)").y_desc("power (W)").draw().map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc(format!("oil temperature θ ({})", deg.unit))
+            .y_desc(format!("power ({})", w.unit))
+            .draw()
+            .map_err(err)?;
         let line = |v: &[f64]| t.iter().copied().zip(v.iter().copied()).filter(|p| p.1.is_finite()).collect::<Vec<_>>();
         chart
             .draw_series(LineSeries::new(line(p_v), PALETTE[0].stroke_width(2)))
@@ -57,16 +64,16 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
                     BLACK.mix(0.6).stroke_width(2),
                 )))
                 .map_err(err)?
-                .label(format!("oil limit {limit:.0} °C"))
+                .label(format!("oil limit {limit:.0} {}", deg.unit))
                 .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], BLACK.mix(0.6).stroke_width(2)));
         }
         if let Some(b) = &h.oil_temperature {
-            let theta = b.si() - C;
-            let q = interpolate(&t, &h.dissipation, theta);
+            let theta = deg.value(b.si());
+            let q = interpolate(&t, p_q, theta);
             chart
                 .draw_series(std::iter::once(Circle::new((theta, q), 6, BLACK.filled())))
                 .map_err(err)?
-                .label(format!("balance θ* = {theta:.1} °C"))
+                .label(format!("balance θ* = {theta:.1} {}", deg.unit))
                 .legend(|(x, y)| Circle::new((x + 9, y), 4, BLACK.filled()));
         }
         chart
@@ -93,11 +100,14 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
     let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
     let s = d.samples.as_ref().ok_or("the duty cycle has no transient")?;
     let minutes: Vec<f64> = s.time.iter().map(|t| t / 60.0).collect();
-    let theta: Vec<f64> = s.oil_temperature.iter().map(|t| t - C).collect();
-    let limit = d.max_oil_temperature.si() - C;
-    let lo = theta.iter().copied().fold(d.ambient_temperature.si() - C, f64::min);
+    let deg = Units::of(r).temperature();
+    let theta: Vec<f64> = s.oil_temperature.iter().map(|t| deg.value(*t)).collect();
+    let limit = deg.value(d.max_oil_temperature.si());
+    let lo = theta.iter().copied().fold(deg.value(d.ambient_temperature.si()), f64::min);
     let hi = theta.iter().copied().fold(limit, f64::max);
-    let Some((y0, y1)) = plottable(lo - 2.0, hi + 5.0) else { return Err("no finite temperature to draw".into()) };
+    let Some((y0, y1)) = plottable(lo - 2.0 * deg.per_kelvin(), hi + 5.0 * deg.per_kelvin()) else {
+        return Err("no finite temperature to draw".into());
+    };
     let end = d.steps.iter().map(|s| s.duration.si()).sum::<f64>() / 60.0;
     let mut svg = String::new();
     {
@@ -110,7 +120,12 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
             .y_label_area_size(60)
             .build_cartesian_2d(0.0..end.max(1e-9), y0..y1)
             .map_err(err)?;
-        chart.configure_mesh().x_desc("time (min)").y_desc("oil temperature θ (°C)").draw().map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("time (min)")
+            .y_desc(format!("oil temperature θ ({})", deg.unit))
+            .draw()
+            .map_err(err)?;
         let mut start = 0.0;
         for (k, step) in d.steps.iter().enumerate() {
             let stop = start + step.duration.si() / 60.0;
@@ -135,7 +150,7 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
                 BLACK.mix(0.6).stroke_width(2),
             )))
             .map_err(err)?
-            .label(format!("oil limit {limit:.0} °C"))
+            .label(format!("oil limit {limit:.0} {}", deg.unit))
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], BLACK.mix(0.6).stroke_width(2)));
         chart
             .configure_series_labels()
@@ -152,7 +167,8 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
 /// duty_cycle_energy.svg.
 pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
     let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
-    let kj = |q: &Option<crate::report::number::Q>| q.as_ref().map(|q| q.si() / 1e3);
+    let energy = Units::of(r).energy();
+    let kj = |q: &Option<crate::report::number::Q>| q.as_ref().map(|q| energy.value(q.si()));
     let bars: Vec<(Option<f64>, Option<f64>)> =
         d.steps.iter().map(|s| (kj(&s.energy_lost), kj(&s.energy_lost_fixed))).collect();
     let top = bars.iter().flat_map(|(a, b)| [*a, *b]).flatten().fold(0.0, f64::max);
@@ -175,7 +191,7 @@ pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
             .x_labels(bars.len().min(30))
             .x_label_formatter(&|x| format!("{}", x.round() as i64))
             .x_desc("step")
-            .y_desc("energy lost (kJ)")
+            .y_desc(format!("energy lost ({})", energy.unit))
             .draw()
             .map_err(err)?;
         let series = [(0, -0.2, "transient from ambient"), (1, 0.2, "at the fixed oil temperature")];
