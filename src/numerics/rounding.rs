@@ -36,3 +36,17 @@ pub fn sig(x: f64) -> String {
         }
     }
 }
+
+/// Writes `x` with `d` decimals; non-finite values are written as `—` (and listed in the findings).
+pub fn fixed(x: f64, d: usize) -> String {
+    if x.is_finite() {
+        let s = format!("{x:.d$}");
+        if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+            s[1..].to_string()
+        } else {
+            s
+        }
+    } else {
+        "—".into()
+    }
+}

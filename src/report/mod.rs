@@ -24,6 +24,7 @@ pub mod scene_report;
 pub mod sweep;
 pub mod teeth;
 pub mod thermal;
+pub mod units;
 
 pub use finding::{Finding, Severity};
 pub use geometry::{GearReport, GeometryReport, NamedPoint, PointsReport};

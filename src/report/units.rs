@@ -1,4 +1,4 @@
-//! The units report.md shows results in: SI engineering units (mm, µm, N, MPa, W, °C), or for a
+//! The units report.md, the plots and the findings show results in: SI engineering units (mm, µm, N, MPa, W, °C), or for a
 //! scene whose pair is sized in inch units (a diametral pitch, a module or face width in `in`) the
 //! inch–pound units a US gear engineer reads (in, µin, lbf, ksi, hp, °F). report.json, the record
 //! files and the scene table's SI column stay in SI.
@@ -10,16 +10,16 @@
 //! the language's unit table.
 //!
 //! ```
-//! use gearloss::render::units::Units;
+//! use gearloss::report::units::Units;
 //! let us = Units::inch_pound();
 //! assert_eq!(us.length().with(0.03175, 3), "1.2500 in");
 //! assert_eq!(Units::si().length().with(0.03175, 3), "31.750 mm");
 //! assert_eq!(us.temperature().with(273.15 + 100.0, 1), "212.0 °F");
 //! ```
 
-use super::table::fixed;
-use crate::report::number::{UnitSystem, Q};
-use crate::report::Report;
+use super::number::{UnitSystem, Q};
+use super::Report;
+use crate::numerics::rounding::fixed;
 
 /// 1 in in m.
 pub const INCH: f64 = 0.0254;
