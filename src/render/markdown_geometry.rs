@@ -72,6 +72,12 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         ];
         rows.splice(at..at, more);
     }
+    if !u.is_si() {
+        // An inch pair is known by its diametral pitch P = 1/m (normal, for a helical pair).
+        let name = if g.helical.is_some() { "normal diametral pitch" } else { "diametral pitch" };
+        let pitch = format!("{} 1/in", fixed(super::units::INCH / g.module.si(), 4));
+        rows.insert(1, (name, "P = 1/m", pitch));
+    }
     let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
     for (q, s, v) in before {
         row(out, &[q.to_string(), s.to_string(), v.clone()]);

@@ -52,10 +52,14 @@ pub fn headline_body(r: &Report) -> String {
     };
     let _ = writeln!(
         out,
-        "{kind}, z = {}/{}, m = {} mm, b = {}{as_written}{oil}; {} operating point(s).\n",
+        "{kind}, z = {}/{}, {}, b = {}{as_written}{oil}; {} operating point(s).\n",
         r.geometry.pinion.teeth,
         r.geometry.wheel.teeth,
-        fixed(g.module.si() * 1e3, 3),
+        if u.is_si() {
+            format!("m = {} mm", fixed(g.module.si() * 1e3, 3))
+        } else {
+            format!("P = {} 1/in", fixed(super::units::INCH / g.module.si(), 3))
+        },
         u.length().with(g.face_width.si(), 2),
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
     );

@@ -29,9 +29,16 @@ pub fn render_oil_sweep(r: &OilSweepReport) -> Result<Vec<(String, String)>, Str
     Ok(files)
 }
 
-/// `239.3 N·m, 1500 rpm`.
+/// `239.3 N·m, 1500 rpm`: in the units the scene wrote them in.
 fn point(r: &OilSweepReport, e: &OilSweepRow) -> String {
-    format!("{} N·m, {} {}", sig(e.pinion_torque.si()), sig(r.speed_unit.value(&e.pinion_speed)), r.speed_unit.name)
+    let t = &r.torque_unit;
+    format!(
+        "{} {}, {} {}",
+        sig(t.value(&e.pinion_torque)),
+        t.shown(),
+        sig(r.speed_unit.value(&e.pinion_speed)),
+        r.speed_unit.name
+    )
 }
 
 fn celsius(r: &OilSweepReport, i: usize) -> f64 {

@@ -7,28 +7,30 @@ use crate::model::{LoadSharing, Scene};
 
 pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let g = &eval.geometry;
+    let len = super::scene::units(scene).length();
     let mut out = Vec::new();
     let note = |m: String| Finding { severity: Severity::Note, message: m };
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     out.extend(crate::scene::summary::unused_blocks(scene).into_iter().map(warn));
-    out.extend(oil_temperature_finding(scene).map(warn));
+    out.extend(oil_temperature_finding(scene, super::scene::units(scene)).map(warn));
+    out.extend(implied_density_finding(scene, eval, super::scene::units(scene)).map(warn));
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
-            TipSource::Given => format!("{name} tip diameter as given: {:.4} mm", 2e3 * g.tip_radius[i]),
+            TipSource::Given => format!("{name} tip diameter as given: {}", len.with(2.0 * g.tip_radius[i], 4)),
             TipSource::AddendumRule if g.is_helical() => format!(
-                "{name} tip diameter from the addendum rule d_a = m_t z + 2 m_n (1 + x): {:.4} mm",
-                2e3 * g.tip_radius[i]
+                "{name} tip diameter from the addendum rule d_a = m_t z + 2 m_n (1 + x): {}",
+                len.with(2.0 * g.tip_radius[i], 4)
             ),
             TipSource::AddendumRule => format!(
-                "{name} tip diameter from the addendum rule d_a = m (z + 2 + 2x): {:.4} mm",
-                2e3 * g.tip_radius[i]
+                "{name} tip diameter from the addendum rule d_a = m (z + 2 + 2x): {}",
+                len.with(2.0 * g.tip_radius[i], 4)
             ),
         }));
         if g.tip_thickness[i] < 0.2 * g.module {
             out.push(warn(format!(
-                "{name} tip thickness s_a = {:.4} mm is below 0.2 m = {:.4} mm: risk of a brittle tip",
-                g.tip_thickness[i] * 1e3,
-                0.2e3 * g.module
+                "{name} tip thickness s_a = {} is below 0.2 m = {}: risk of a brittle tip",
+                len.with(g.tip_thickness[i], 4),
+                len.with(0.2 * g.module, 4)
             )));
         }
         let start = g.involute_start_from_t1(i);
@@ -36,23 +38,23 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             if i == 0 { (g.points.a, g.points.a < start) } else { (g.points.e, g.points.e > start) };
         if beyond {
             out.push(warn(format!(
-                "contact at {:.4} mm from T1 lies below the {name}'s generated involute, which starts at {:.4} mm (root interference with a rack-cut flank)",
-                contact_start * 1e3,
-                start * 1e3
+                "contact at {} from T1 lies below the {name}'s generated involute, which starts at {} (root interference with a rack-cut flank)",
+                len.with(contact_start, 4),
+                len.with(start, 4)
             )));
         }
     }
     if g.center_distance_given {
         out.push(note(format!(
-            "operating pressure angle from the given centre distance {:.4} mm; the zero-backlash centre distance is {:.4} mm (α_w = {:.4}°)",
-            g.center_distance * 1e3,
-            g.zero_backlash_center_distance * 1e3,
+            "operating pressure angle from the given centre distance {}; the zero-backlash centre distance is {} (α_w = {:.4}°)",
+            len.with(g.center_distance, 4),
+            len.with(g.zero_backlash_center_distance, 4),
             g.zero_backlash_pressure_angle.to_degrees()
         )));
     } else {
         out.push(note(format!(
-            "centre distance from the involute function (zero backlash): {:.4} mm",
-            g.center_distance * 1e3
+            "centre distance from the involute function (zero backlash): {}",
+            len.with(g.center_distance, 4)
         )));
     }
     let by_stiffness = scene.gears.load_sharing == LoadSharing::Stiffness;
@@ -63,7 +65,7 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
         ));
     }
     if g.is_helical() {
-        out.extend(helical_findings(g, by_stiffness && eval.stiffness_sharing.is_some()));
+        out.extend(helical_findings(g, by_stiffness && eval.stiffness_sharing.is_some(), len));
         return out;
     }
     out.push(note(match scene.gears.load_sharing {
@@ -75,13 +77,13 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
 }
 
 /// Helical pairs: how the load is shared, and the checks on the overlap ratio and the helix angle.
-fn helical_findings(g: &crate::geometry::PairGeometry, by_stiffness: bool) -> Vec<Finding> {
+fn helical_findings(g: &crate::geometry::PairGeometry, by_stiffness: bool, len: super::units::Shown) -> Vec<Finding> {
     let message = if by_stiffness {
         "load sharing: by stiffness along the contact lines: at q each line carries k_w(q) max(0, δ − e(q)) per unit length, k_w the potential-energy stiffness per unit width, e the tip relief, δ closing the balance at each instant".to_string()
     } else {
         format!(
-            "load sharing: constant stiffness density along the contact lines (He & Singh): w = F_bn / L(t), L̄ = ε_α b / cos β_b = {:.4} mm",
-            g.mean_contact_length() * 1e3
+            "load sharing: constant stiffness density along the contact lines (He & Singh): w = F_bn / L(t), L̄ = ε_α b / cos β_b = {}",
+            len.with(g.mean_contact_length(), 4)
         )
     };
     let mut out = vec![Finding { severity: Severity::Note, message }];
@@ -108,15 +110,45 @@ fn helical_findings(g: &crate::geometry::PairGeometry, by_stiffness: bool) -> Ve
 
 /// A warning when the oil temperature is above its base oil's typical service limit
 /// ([`crate::tribology::lubricant::service_limit_celsius`]).
-fn oil_temperature_finding(scene: &Scene) -> Option<String> {
+fn oil_temperature_finding(scene: &Scene, u: super::units::Units) -> Option<String> {
     let l = scene.lubricant.as_ref()?;
     let base = l.oil.as_ref()?.base;
-    let theta = scene.operating.oil_temperature.as_ref()?.value.value - 273.15;
+    let kelvin = scene.operating.oil_temperature.as_ref()?.value.value;
     let limit = crate::tribology::lubricant::service_limit_celsius(base)?;
-    (theta > limit).then(|| {
+    let deg = u.temperature();
+    (kelvin - 273.15 > limit).then(|| {
         format!(
-            "oil temperature {theta:.0} °C is above the {limit:.0} °C a {} gear oil is typically run at continuously: it ages fast there (its life roughly halves for every 10 K above); check the oil's data sheet or the cooling",
+            "oil temperature {:.0} {} is above the {:.0} {} a {} gear oil is typically run at continuously: it ages fast there (its life roughly halves for every 10 K above); check the oil's data sheet or the cooling",
+            deg.value(kelvin),
+            deg.unit,
+            deg.from_celsius(limit),
+            deg.unit,
             base.words()
+        )
+    })
+}
+
+/// Densities of oils (kg/m³): gear oils are 800–1100 (mineral ≈ 885, PAO ≈ 850, PAG ≈ 1000–1060 at
+/// 15 °C); outside this band the η and ν a scene gives cannot both be one oil's at one temperature.
+pub const OIL_DENSITY_RANGE: [f64; 2] = [700.0, 1200.0];
+
+/// A warning when the density a given lubricant's η and ν imply (ρ = η/ν) is not an oil's: the
+/// two viscosities are then most likely at different temperatures or one is in a mistaken unit,
+/// and every film thickness and law that reads η is off by that factor.
+fn implied_density_finding(scene: &Scene, eval: &Evaluation, u: super::units::Units) -> Option<String> {
+    let l = scene.lubricant.as_ref()?;
+    if l.oil.is_some() {
+        return None;
+    }
+    let rho = eval.tribology.density()?;
+    let [lo, hi] = OIL_DENSITY_RANGE;
+    let d = u.density();
+    (!(lo..=hi).contains(&rho)).then(|| {
+        format!(
+            "the lubricant's dynamic and kinematic viscosity imply a density ρ = η/ν = {}, outside the {}–{} of any gear oil: η and ν are not one oil's at one temperature (or one is in a mistaken unit); every film thickness and law that reads η uses the dynamic viscosity as given",
+            d.with(rho, 1),
+            d.cell(lo, 0),
+            d.with(hi, 0)
         )
     })
 }

@@ -247,6 +247,7 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Find
         // Laws no analysis reads are a scene check's warning (`crate::scene::summary::unused_blocks`).
         return out;
     }
+    let len = super::scene::units(scene).length();
     for (spec, law) in scene.friction.iter().zip(&tally.laws) {
         let label = law_label(spec);
         for note in &law.notes {
@@ -267,10 +268,10 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Find
                 &mut out,
                 Severity::Warning,
                 format!(
-                    "{label}: |μ| exceeds {} near the pitch point; the internal formulation caps it there (else R_p + Σ μ w T1C would vanish: self-locking). Widest band: {:.6}–{:.6} mm from T1 at operating point {} ({} of {} points affected)",
+                    "{label}: |μ| exceeds {} near the pitch point; the internal formulation caps it there (else R_p + Σ μ w T1C would vanish: self-locking). Widest band: {}–{} from T1 at operating point {} ({} of {} points affected)",
                     crate::efficiency::INTERNAL_MU_CAP,
-                    a * 1e3,
-                    b * 1e3,
+                    len.cell(a, 6),
+                    len.with(b, 6),
                     k + 1,
                     law.capped_points,
                     law.points
@@ -278,8 +279,11 @@ pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Find
             );
         }
         if let Some(worst) = &law.worst {
-            let where_: Vec<String> =
-                worst.intervals.iter().map(|(a, b, r)| format!("{:.3}–{:.3} mm ({r})", a * 1e3, b * 1e3)).collect();
+            let where_: Vec<String> = worst
+                .intervals
+                .iter()
+                .map(|(a, b, r)| format!("{}–{} ({r})", len.cell(*a, 3), len.with(*b, 3)))
+                .collect();
             push(&mut out, Severity::Warning, format!(
                 "{label}: outside its validity range at {} of {} operating points; worst at operating point {}: {} of {} samples along A–E, at {}",
                 law.flagged_points,

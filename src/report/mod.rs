@@ -65,7 +65,7 @@ pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
 pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
     let mut findings = checks::findings(scene, eval);
     findings.extend(friction::law_findings(scene, eval, tally));
-    findings.extend(plausibility::plausibility_findings(tally));
+    findings.extend(plausibility::plausibility_findings(tally, scene::units(scene)));
     findings.extend(sweep::sweep_findings(tally, plan));
     findings.extend(losses::loss_findings(scene, eval));
     let mut report = Report {
@@ -90,7 +90,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         curves: points::curves(scene, eval),
         speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
         torque_unit: number::DisplayUnit::of(&scene.operating.pinion_torque),
-        unit_system: number::UnitSystem::Si,
+        unit_system: scene::unit_system(scene),
         sweep_curves: (plan.curve_indices().0.to_vec(), plan.curve_indices().1.to_vec()),
         composite_mu: sweep::composite_mu(scene, tally),
         map_grid: sweep::has_map(plan).then(|| {

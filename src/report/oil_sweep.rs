@@ -28,6 +28,9 @@ pub struct OilSweepReport {
     pub loss_budget: bool,
     /// The unit the scene wrote the pinion speed in (for the tables).
     pub speed_unit: super::number::DisplayUnit,
+    /// The unit the scene wrote the pinion torque in: operating points are named in it.
+    #[serde(default = "super::number::DisplayUnit::newton_metre")]
+    pub torque_unit: super::number::DisplayUnit,
     /// The unit system the Markdown shows results in (as each temperature's report).
     #[serde(default, skip_serializing_if = "super::number::UnitSystem::is_si")]
     pub unit_system: super::number::UnitSystem,
@@ -118,6 +121,7 @@ pub fn build_oil_sweep(runs: &[(String, f64, Report)]) -> OilSweepReport {
         efficiency,
         loss_budget: first.loss_budget,
         speed_unit: first.speed_unit.clone(),
+        torque_unit: first.torque_unit.clone(),
         unit_system: first.unit_system,
     }
 }

@@ -8,7 +8,8 @@ use super::finding::{Finding, Severity};
 pub use crate::evaluate::tally::HALF_WIDTH_LIMIT;
 use crate::evaluate::tally::{Implausible, Tally, LISTED_FINDINGS};
 
-pub fn plausibility_findings(tally: &Tally) -> Vec<Finding> {
+pub fn plausibility_findings(tally: &Tally, u: super::units::Units) -> Vec<Finding> {
+    let (len, w) = (u.length(), u.power());
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     let mut out: Vec<Finding> = tally
         .implausible
@@ -17,17 +18,19 @@ pub fn plausibility_findings(tally: &Tally) -> Vec<Finding> {
             let (k, label) = (at.point + 1, &at.label);
             warn(match &at.what {
                 Implausible::HalfWidth { half_width, limit, u, named } => format!(
-                    "operating point {k} ({label}): Hertz half-width b_H = {:.4} mm exceeds R/10 = {:.4} mm at {:.3} mm from T1{}: the line-contact formulas (pressure, film, every law that reads them) no longer hold",
-                    half_width * 1e3,
-                    limit * 1e3,
-                    u * 1e3,
+                    "operating point {k} ({label}): Hertz half-width b_H = {} exceeds R/10 = {} at {} from T1{}: the line-contact formulas (pressure, film, every law that reads them) no longer hold",
+                    len.with(*half_width, 4),
+                    len.with(*limit, 4),
+                    len.with(*u, 3),
                     named.as_ref().map_or(String::new(), |n| format!(" (point {n})"))
                 ),
                 Implausible::Efficiency { law, formulation, mean, min, max } => format!(
                     "operating point {k} ({label}), {law} ({formulation}): efficiency outside [0, 1] by more than rounding (4 ulps) (η̄ = {mean:.6}, η from {min:.6} to {max:.6}): the law gives friction no gear mesh can have here"
                 ),
                 Implausible::PowerLoss { law, formulation, loss, input } => format!(
-                    "operating point {k} ({label}), {law} ({formulation}): power loss {loss:.3} W above the input power {input:.3} W"
+                    "operating point {k} ({label}), {law} ({formulation}): power loss {} above the input power {}",
+                    w.with(*loss, 3),
+                    w.with(*input, 3)
                 ),
             })
         })

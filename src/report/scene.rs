@@ -13,6 +13,29 @@ pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Give
     });
 }
 
+/// The unit system report.md shows results in: inch–pound when the pair is sized in inches (a
+/// diametral pitch, or the module, transverse module or face width written in an inch length).
+pub(super) fn unit_system(scene: &Scene) -> super::number::UnitSystem {
+    use crate::scene::units::written_in_inches;
+    let g = &scene.gears;
+    let sized_in_inches = match &g.module_source {
+        ModuleSource::DiametralPitch(_) | ModuleSource::TransverseDiametralPitch(_) => true,
+        ModuleSource::TransverseModule(m) => written_in_inches(&m.written),
+        ModuleSource::Module => false,
+    } || written_in_inches(&g.module.written)
+        || written_in_inches(&g.face_width.written);
+    if sized_in_inches {
+        super::number::UnitSystem::Inch
+    } else {
+        super::number::UnitSystem::Si
+    }
+}
+
+/// The units findings and tables show this scene's results in.
+pub(super) fn units(scene: &Scene) -> super::units::Units {
+    super::units::Units::of_system(unit_system(scene))
+}
+
 pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
     let mut rows = Vec::new();
     let g = &scene.gears;

@@ -205,16 +205,17 @@ pub fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionErrorRepo
 pub fn teeth_findings(scene: &Scene, s: &TeethStiffnessReport) -> Vec<Finding> {
     let mut out = Vec::new();
     let m_n = scene.gears.module.value.value;
+    let micro = super::scene::units(scene).micro();
     for b in &s.bodies {
         if let Some(r) = &b.tip_relief {
             if r.amount.si() > 0.1 * m_n {
                 out.push(Finding {
                     severity: Severity::Warning,
                     message: format!(
-                        "the {} tip relief of {:.1} µm is more than a tenth of the module ({:.1} µm): no real relief reaches that",
+                        "the {} tip relief of {} is more than a tenth of the module ({}): no real relief reaches that",
                         b.gear,
-                        r.amount.si() * 1e6,
-                        0.1 * m_n * 1e6
+                        micro.with(r.amount.si(), 1),
+                        micro.with(0.1 * m_n, 1)
                     ),
                 });
             }

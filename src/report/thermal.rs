@@ -275,21 +275,31 @@ pub fn thermal_findings(
 ) -> Vec<Finding> {
     let mut out = Vec::new();
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
-    let celsius = |q: &Q| q.si() - 273.15;
+    let deg = super::scene::units(scene).temperature();
+    let celsius = |q: &Q| deg.with(q.si(), 1);
+    let (torque, speed) = (
+        super::number::DisplayUnit::of(&scene.operating.pinion_torque),
+        super::number::DisplayUnit::of(&scene.operating.pinion_speed),
+    );
+    let sig = crate::numerics::rounding::sig;
     for r in records {
         let at = format!(
-            "{} N·m, {:.0} rpm, {} ({})",
-            r.pinion_torque.si(),
-            r.pinion_speed.si() * 30.0 / std::f64::consts::PI,
+            "{} {}, {} {}, {} ({})",
+            sig(torque.value(&r.pinion_torque)),
+            torque.shown(),
+            sig(speed.value(&r.pinion_speed)),
+            speed.shown(),
             r.label,
             r.formulation.name()
         );
         match (r.status, &r.oil_temperature) {
             (BalanceStatus::AboveLimit, Some(t)) => {
-                out.push(warn(format!("the sump settles at {:.1} °C, above the oil's limit, at {at}", celsius(t))))
+                out.push(warn(format!("the sump settles at {}, above the oil's limit, at {at}", celsius(t))))
             }
-            (BalanceStatus::NoEquilibrium, _) => out
-                .push(warn(format!("no thermal balance up to 200 °C at {at}: the housing cannot give off the losses"))),
+            (BalanceStatus::NoEquilibrium, _) => out.push(warn(format!(
+                "no thermal balance up to {} at {at}: the housing cannot give off the losses",
+                deg.with(crate::thermal::balance::SEARCH_LIMIT, 0)
+            ))),
             _ => {}
         }
     }
@@ -309,8 +319,8 @@ pub fn thermal_findings(
             if let Some(end) = &s.oil_temperature_end {
                 if end.si() > limit {
                     out.push(warn(format!(
-                        "the sump passes the oil's limit ({:.1} °C) in step {} ({}) of the duty cycle and ends that step at {:.1} °C",
-                        limit - 273.15,
+                        "the sump passes the oil's limit ({}) in step {} ({}) of the duty cycle and ends that step at {}",
+                        deg.with(limit, 1),
                         k + 1,
                         s.label,
                         celsius(end)

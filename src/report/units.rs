@@ -66,6 +66,15 @@ impl Shown {
         }
     }
 
+    /// A temperature in °C in this unit (°C stays as it is).
+    pub fn from_celsius(&self, celsius: f64) -> f64 {
+        if self.op == Op::Fahrenheit {
+            celsius * 1.8 + 32.0
+        } else {
+            celsius
+        }
+    }
+
     /// Shown degrees per kelvin of a temperature difference (1.8 in °F, else 1).
     pub fn per_kelvin(&self) -> f64 {
         if self.op == Op::Fahrenheit {

@@ -155,6 +155,21 @@ pub fn example_units(dimension: Dimension) -> String {
     }
 }
 
+/// The inch system's lengths: a pair sized in them (`face_width = 1.25 in`, a diametral pitch in
+/// `1/in`) has its results shown in inch–pound units.
+pub const INCH_LENGTHS: &[&str] = &["in", "uin", "µin", "μin", "ft"];
+
+/// Whether a value as written (`1.25 in`, `8 1/in`, `1/(8 1/in)`) names one of [`INCH_LENGTHS`].
+///
+/// ```
+/// use gearloss::scene::units::written_in_inches;
+/// assert!(written_in_inches("1.25 in") && written_in_inches("8 1/in"));
+/// assert!(!written_in_inches("20 mm") && !written_in_inches("0.5 min"));
+/// ```
+pub fn written_in_inches(written: &str) -> bool {
+    written.split(|c: char| !c.is_alphanumeric()).any(|token| INCH_LENGTHS.contains(&token))
+}
+
 /// Looks a unit name up in the table.
 pub fn lookup(name: &str) -> Option<&'static UnitDef> {
     UNITS.iter().find(|u| u.name == name)

@@ -208,3 +208,76 @@ fn many_curves_get_a_colour_scale() {
     let svg = &few.files.iter().find(|(f, _)| f == "sweep_speed.svg").unwrap().1;
     assert!(svg.contains("Coulomb μ = 0.04 external @ 239.3 N·m"), "eight curves keep their labels");
 }
+
+/// A scene that sizes its pair in inches is shown in inch–pound units (report.md and the plots:
+/// in, µin, lbf, ksi, ft/min, hp), report.json stays SI and says `unit_system: inch`; each shown
+/// number is the SI value converted (to the cell's decimals). What decides is the pair's size:
+/// the same pair in mm with its torques in lbf·in stays SI; a face width in inches alone is inch.
+#[test]
+fn inch_scenes_are_reported_in_inch_units() {
+    use gearloss::report::number::UnitSystem;
+    let path = crate::root().join("specs/us_spur_inch.gear");
+    let r = gearloss::report_of(&crate::scene(&path));
+    assert_eq!(r.unit_system, UnitSystem::Inch);
+    let json = serde_json::to_value(&r).unwrap();
+    assert_eq!(json["unit_system"], "inch");
+    assert_eq!(json["geometry"]["face_width"]["unit"], "m");
+    assert!((r.geometry.face_width.si() - 0.03175).abs() < 1e-15);
+    let md = gearloss::render::markdown::render_markdown(&r);
+    for cell in
+        ["| face width | b | 1.2500 in |", "| diametral pitch | P = 1/m | 8.0000 1/in |", "| module | m | 3.1750 mm |"]
+    {
+        assert!(md.contains(cell), "{cell} missing");
+    }
+    // The first contact table: T1C in inches, w in lbf/in, p_H in ksi, each the SI value converted.
+    let rows: Vec<Vec<&str>> = md
+        .lines()
+        .skip_while(|l| !l.starts_with("| point | T1C in | s in |"))
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| l.trim_matches('|').split('|').map(str::trim).collect())
+        .collect();
+    let contact = &r.operating_points[0].contact;
+    assert_eq!(rows.len(), contact.len());
+    let (inch, psi) = (0.0254, 4.448_221_615_260_5 / (0.0254 * 0.0254));
+    for (row, c) in rows.iter().zip(contact) {
+        let close = |cell: &str, value: f64, decimals: i32| {
+            let shown: f64 = cell.parse().unwrap();
+            assert!((shown - value).abs() <= 0.5 * 10f64.powi(-decimals) + 1e-12, "{cell} vs {value}");
+        };
+        close(row[1], c.distance_from_t1.si() / inch, 4);
+        close(row[13], c.load_per_width.si() * inch / 4.448_221_615_260_5, 1);
+        close(row[14], c.hertz_pressure.si() / (1e3 * psi), 2);
+    }
+    assert!(md.contains("F_bn = 1277.01 lbf") && md.contains("v_t = 1183.4 ft/min"), "{md}");
+    let si_cells =
+        md.lines().filter(|l| !l.starts_with("| module |")).filter(|l| l.contains(" mm") || l.contains("N/mm"));
+    assert_eq!(si_cells.count(), 0, "SI cells left in an inch report (the module is a millimetre measure)");
+    // The same pair sized in millimetres (torques still in lbf·in) is reported in SI.
+    let text = std::fs::read_to_string(&path).unwrap();
+    let metric = text.replace("diametral_pitch = 8 1/in", "module = 3.175 mm").replace("1.25 in", "31.75 mm");
+    let si = gearloss::report_of(&gearloss::check("metric.gear", &metric).unwrap());
+    assert_eq!(si.unit_system, UnitSystem::Si);
+    assert!(serde_json::to_value(&si).unwrap().get("unit_system").is_none());
+    assert!(gearloss::render::markdown::render_markdown(&si).contains("| point | T1C mm | s mm |"));
+    let face_only = text.replace("diametral_pitch = 8 1/in", "module = 3.175 mm");
+    let face = gearloss::report_of(&gearloss::check("face.gear", &face_only).unwrap());
+    assert_eq!(face.unit_system, UnitSystem::Inch);
+}
+
+/// A given lubricant whose η and ν imply a density no oil has (ρ = η/ν outside 700–1200 kg/m³:
+/// the two at different temperatures, here the grade's 220 cSt at 40 °C beside the sump's 20 cP)
+/// is a warning naming the density, in the scene's units; the consistent spec scene has none.
+#[test]
+fn viscosities_that_imply_no_oil_are_a_warning() {
+    let path = crate::root().join("specs/us_spur_inch.gear");
+    let density = |r: &gearloss::report::Report| -> Vec<String> {
+        r.findings.iter().filter(|f| f.message.contains("imply a density")).map(|f| f.message.clone()).collect()
+    };
+    assert!(density(&gearloss::report_of(&crate::scene(&path))).is_empty());
+    let text = std::fs::read_to_string(&path).unwrap().replace("= 23 cSt", "= 220 cSt");
+    let found = density(&gearloss::report_of(&gearloss::check("mixed.gear", &text).unwrap()));
+    assert_eq!(found.len(), 1, "{found:?}");
+    // ρ = 2.9e-6 reyn / 220 cSt = 90.88 kg/m³ = 5.67 lb/ft³.
+    assert!(found[0].contains("ρ = η/ν = 5.67 lb/ft³, outside the 43.7–74.9 lb/ft³"), "{}", found[0]);
+}
