@@ -18,14 +18,17 @@ fn plain(rows: &mut Vec<InputRow>, key: String, x: f64) {
 }
 
 /// The gearbox's rows: `gearbox.lubrication.*`, `pinion_shaft.bearing 1 (type).*`, `….seal 1.*`.
-pub(super) fn gearbox_inputs(rows: &mut Vec<InputRow>, g: &Gearbox) {
+///
+/// Lengths read in mm, or in inches (`in`) for a scene whose pair is sized in inches.
+pub(super) fn gearbox_inputs(rows: &mut Vec<InputRow>, g: &Gearbox, inch: bool) {
+    let (per_m, mm) = if inch { (1.0 / 0.0254, "in") } else { (1e3, "mm") };
     match &g.lubrication {
         Some(Lubrication::Dip { immersion, axis_height, housing_width }) => {
             let k = |n: &str| format!("gearbox.lubrication (dip).{n}");
-            q(rows, k("pinion_immersion"), immersion[0], "m", 1e3, "mm");
-            q(rows, k("wheel_immersion"), immersion[1], "m", 1e3, "mm");
-            q(rows, k("axis_height"), *axis_height, "m", 1e3, "mm");
-            q(rows, k("housing_width"), *housing_width, "m", 1e3, "mm");
+            q(rows, k("pinion_immersion"), immersion[0], "m", per_m, mm);
+            q(rows, k("wheel_immersion"), immersion[1], "m", per_m, mm);
+            q(rows, k("axis_height"), *axis_height, "m", per_m, mm);
+            q(rows, k("housing_width"), *housing_width, "m", per_m, mm);
         }
         Some(Lubrication::Injection { flow, jet_speed }) => {
             let k = |n: &str| format!("gearbox.lubrication (injection).{n}");
@@ -40,10 +43,10 @@ pub(super) fn gearbox_inputs(rows: &mut Vec<InputRow>, g: &Gearbox) {
         for (i, b) in places.iter().enumerate() {
             let model = if b.skf.is_some() { "skf" } else { "palmgren" };
             let k = |n: &str| format!("{shaft}.bearing {} ({}, {model}).{n}", i + 1, b.kind.name());
-            q(rows, k("mean_diameter"), b.mean_diameter, "m", 1e3, "mm");
+            q(rows, k("mean_diameter"), b.mean_diameter, "m", per_m, mm);
             plain(rows, k("count"), b.count as f64);
             if let Some(p) = b.position {
-                q(rows, k("at"), p, "m", 1e3, "mm");
+                q(rows, k("at"), p, "m", per_m, mm);
             }
             if let Some(c0) = b.static_load_rating {
                 q(rows, k("static_load_rating"), c0, "N", 1e-3, "kN");
@@ -54,8 +57,8 @@ pub(super) fn gearbox_inputs(rows: &mut Vec<InputRow>, g: &Gearbox) {
                 }
             }
             if let Some((c, [bore, outside])) = &b.skf {
-                q(rows, k("bore"), *bore, "m", 1e3, "mm");
-                q(rows, k("outside"), *outside, "m", 1e3, "mm");
+                q(rows, k("bore"), *bore, "m", per_m, mm);
+                q(rows, k("outside"), *outside, "m", per_m, mm);
                 for (name, v) in [("r1", c.r1), ("r2", c.r2), ("s1", c.s1), ("s2", c.s2), ("mu_bl", c.mu_bl)] {
                     plain(rows, k(name), v);
                 }
@@ -66,7 +69,7 @@ pub(super) fn gearbox_inputs(rows: &mut Vec<InputRow>, g: &Gearbox) {
         }
         for (i, s) in seals.iter().enumerate() {
             let k = |n: &str| format!("{shaft}.seal {}.{n}", i + 1);
-            q(rows, k("diameter"), s.diameter, "m", 1e3, "mm");
+            q(rows, k("diameter"), s.diameter, "m", per_m, mm);
             plain(rows, k("count"), s.count as f64);
         }
     }

@@ -117,7 +117,7 @@ pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
         }
     }
     if let Some(g) = &scene.gearbox {
-        super::gearbox_inputs::gearbox_inputs(&mut rows, g);
+        super::gearbox_inputs::gearbox_inputs(&mut rows, g, !unit_system(scene).is_si());
     }
     if let Some(h) = &scene.housing {
         super::gearbox_inputs::housing_inputs(&mut rows, h);

@@ -263,6 +263,14 @@ fn inch_scenes_are_reported_in_inch_units() {
     let face_only = text.replace("diametral_pitch = 8 1/in", "module = 3.175 mm");
     let face = gearloss::report_of(&gearloss::check("face.gear", &face_only).unwrap());
     assert_eq!(face.unit_system, UnitSystem::Inch);
+    // A gearbox sized in inches: its budget, bearings, housing and balance in inch–pound units too.
+    let thermal = std::fs::read_to_string(crate::root().join("specs/fzg_c14_thermal.gear")).unwrap();
+    let gearbox = gearloss::report_of(&gearloss::check("box.gear", &thermal.replace("14 mm", "0.5906 in")).unwrap());
+    let md = gearloss::render::markdown::render_markdown(&gearbox);
+    for cell in ["| at in | F_r lbf | F_a lbf | no-load hp | load hp |", "| oil limit | 248.0 °F |", "| θ* °F |"] {
+        assert!(md.contains(cell), "{cell} missing");
+    }
+    assert!(md.contains("| `gearbox.lubrication (dip).axis_height` | 3.93701 in | 0.1 m |"));
 }
 
 /// A given lubricant whose η and ν imply a density no oil has (ρ = η/ν outside 700–1200 kg/m³:
