@@ -245,7 +245,10 @@ pub fn thermal(out: &mut String, r: &Report) {
         let bad: Vec<String> = of
             .iter()
             .filter(|t| t.status != crate::thermal::BalanceStatus::Ok)
-            .map(|t| format!("{}: {}", point_at(r, &t.pinion_torque, &t.pinion_speed), t.status.words()))
+            .map(|t| {
+                let words = super::units::balance_words(t.status, super::units::Units::of(r));
+                format!("{}: {words}", point_at(r, &t.pinion_torque, &t.pinion_speed))
+            })
             .collect();
         let verdict =
             if bad.is_empty() { "every point settles below the oil's limit".to_string() } else { bad.join("; ") };

@@ -91,7 +91,7 @@ fn balance_table(out: &mut String, r: &Report) {
                 super::table::law_words(&t.label),
                 t.formulation.name().to_string(),
                 opt(t.oil_temperature.as_ref(), |q| deg.q(q, 1)),
-                t.status.words().to_string(),
+                super::units::balance_words(t.status, u),
                 w.q(&t.power_loss, 1),
                 w.q(&t.dissipation.convection, 1),
                 w.q(&t.dissipation.radiation, 1),

@@ -210,6 +210,16 @@ impl Units {
     }
 }
 
+/// A thermal balance's status in words, its temperatures in `u` (`finds no balance up to 392 °F`).
+pub fn balance_words(status: crate::thermal::BalanceStatus, u: Units) -> String {
+    match status {
+        crate::thermal::BalanceStatus::NoEquilibrium => {
+            format!("finds no balance up to {}", u.temperature().with(crate::thermal::balance::SEARCH_LIMIT, 0))
+        }
+        other => other.words().to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -251,5 +261,14 @@ mod tests {
         one(us.damping(), POUND_FORCE / INCH);
         assert_eq!(us.temperature().cell(273.15, 2), "32.00");
         assert_eq!(us.temperature().cell(373.15, 2), "212.00");
+    }
+
+    /// No balance up to the search's 200 °C, said in each system's temperature.
+    #[test]
+    fn balance_words_follow_the_units() {
+        use crate::thermal::BalanceStatus;
+        assert_eq!(balance_words(BalanceStatus::NoEquilibrium, Units::si()), "finds no balance up to 200 °C");
+        assert_eq!(balance_words(BalanceStatus::NoEquilibrium, Units::inch_pound()), "finds no balance up to 392 °F");
+        assert_eq!(balance_words(BalanceStatus::Ok, Units::inch_pound()), BalanceStatus::Ok.words());
     }
 }
