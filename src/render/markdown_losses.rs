@@ -58,7 +58,8 @@ pub fn headline_body(r: &Report) -> String {
         if u.is_si() {
             format!("m = {} mm", fixed(g.module.si() * 1e3, 3))
         } else {
-            format!("P = {} 1/in", fixed(super::units::INCH / g.module.si(), 3))
+            let p = if g.helix_angle.si() > 0.0 { "P_n" } else { "P" };
+            format!("{p} = {} 1/in", fixed(super::units::INCH / g.module.si(), 3))
         },
         u.length().with(g.face_width.si(), 2),
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
