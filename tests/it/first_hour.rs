@@ -229,7 +229,7 @@ fn inch_scenes_are_reported_in_inch_units() {
     {
         assert!(md.contains(cell), "{cell} missing");
     }
-    // The first contact table: T1C in inches, w in lbf/in, p_H in ksi, each the SI value converted.
+    // The first contact table: every dimensional column (in, ft/min, lbf/in, ksi, µin) is the SI value converted.
     let rows: Vec<Vec<&str>> = md
         .lines()
         .skip_while(|l| !l.starts_with("| point | T1C in | s in |"))
@@ -245,9 +245,17 @@ fn inch_scenes_are_reported_in_inch_units() {
             let shown: f64 = cell.parse().unwrap();
             assert!((shown - value).abs() <= 0.5 * 10f64.powi(-decimals) + 1e-12, "{cell} vs {value}");
         };
-        close(row[1], c.distance_from_t1.si() / inch, 4);
+        let lengths = [&c.distance_from_t1, &c.s, &c.radius_of_curvature_pinion, &c.radius_of_curvature_wheel];
+        for (k, q) in lengths.into_iter().chain([&c.reduced_radius]).enumerate() {
+            close(row[1 + k], q.si() / inch, 4);
+        }
+        let speeds = [&c.velocity_pinion, &c.velocity_wheel, &c.sliding_velocity, &c.sum_velocity];
+        for (k, q) in speeds.into_iter().enumerate() {
+            close(row[6 + k], q.si() * 60.0 / (12.0 * inch), 1);
+        }
         close(row[13], c.load_per_width.si() * inch / 4.448_221_615_260_5, 1);
         close(row[14], c.hertz_pressure.si() / (1e3 * psi), 2);
+        close(row[15], c.hertz_half_width.si() / (inch * 1e-6), 0);
     }
     assert!(md.contains("F_bn = 1277.01 lbf") && md.contains("v_t = 1183.4 ft/min"), "{md}");
     let si_cells =
