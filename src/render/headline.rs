@@ -22,8 +22,7 @@ pub fn point_label(r: &Report, e: &EfficiencyRecord) -> String {
 
 /// `1500 lbf·in, 1800 rpm`: a torque and a speed (SI) in the units the scene wrote them in.
 pub fn point_at(r: &Report, torque: &crate::report::number::Q, speed: &crate::report::number::Q) -> String {
-    let (t, n) = (&r.torque_unit, &r.speed_unit);
-    format!("{} {}, {} {}", sig(t.value(torque)), t.shown(), sig(n.value(speed)), n.shown())
+    crate::report::number::operating_point_words(&r.torque_unit, &r.speed_unit, torque, speed)
 }
 
 /// Efficiency and budget: a row per operating point and law (the first formulation), or when there

@@ -5,7 +5,7 @@
 use std::fmt::Write;
 
 use super::svg::{figure_with_legend, Panel};
-use super::table::{fixed, header, law_words, row, sig};
+use super::table::{fixed, header, law_words, row};
 use super::units::{Shown, Units};
 use crate::evaluate::plan::evenly;
 use crate::report::oil_sweep::{OilSweepReport, OilSweepRow};
@@ -31,14 +31,7 @@ pub fn render_oil_sweep(r: &OilSweepReport) -> Result<Vec<(String, String)>, Str
 
 /// `239.3 N·m, 1500 rpm`: in the units the scene wrote them in.
 fn point(r: &OilSweepReport, e: &OilSweepRow) -> String {
-    let t = &r.torque_unit;
-    format!(
-        "{} {}, {} {}",
-        sig(t.value(&e.pinion_torque)),
-        t.shown(),
-        sig(r.speed_unit.value(&e.pinion_speed)),
-        r.speed_unit.name
-    )
+    crate::report::number::operating_point_words(&r.torque_unit, &r.speed_unit, &e.pinion_torque, &e.pinion_speed)
 }
 
 fn celsius(r: &OilSweepReport, i: usize) -> f64 {

@@ -7,13 +7,14 @@ use crate::model::{LoadSharing, Scene};
 
 pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let g = &eval.geometry;
-    let len = super::scene::units(scene).length();
+    let units = super::scene::units(scene);
+    let len = units.length();
     let mut out = Vec::new();
     let note = |m: String| Finding { severity: Severity::Note, message: m };
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     out.extend(crate::scene::summary::unused_blocks(scene).into_iter().map(warn));
-    out.extend(oil_temperature_finding(scene, super::scene::units(scene)).map(warn));
-    out.extend(implied_density_finding(scene, eval, super::scene::units(scene)).map(warn));
+    out.extend(oil_temperature_finding(scene, units).map(warn));
+    out.extend(implied_density_finding(scene, eval, units).map(warn));
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {}", len.with(2.0 * g.tip_radius[i], 4)),

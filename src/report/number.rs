@@ -130,6 +130,14 @@ impl DisplayUnit {
     }
 }
 
+/// `1500 lbf·in, 1800 rpm`: a torque and a speed (SI) in the units the scene wrote them in, each to
+/// the significant digits tables use.
+pub fn operating_point_words(torque_unit: &DisplayUnit, speed_unit: &DisplayUnit, torque: &Q, speed: &Q) -> String {
+    use crate::numerics::rounding::sig;
+    let (t, n) = (torque_unit, speed_unit);
+    format!("{} {}, {} {}", sig(t.value(torque)), t.shown(), sig(n.value(speed)), n.shown())
+}
+
 /// Shorthands for the SI units used in reports.
 pub fn m(x: f64) -> Q {
     Q::new(x, "m")

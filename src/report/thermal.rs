@@ -281,14 +281,10 @@ pub fn thermal_findings(
         super::number::DisplayUnit::of(&scene.operating.pinion_torque),
         super::number::DisplayUnit::of(&scene.operating.pinion_speed),
     );
-    let sig = crate::numerics::rounding::sig;
     for r in records {
         let at = format!(
-            "{} {}, {} {}, {} ({})",
-            sig(torque.value(&r.pinion_torque)),
-            torque.shown(),
-            sig(speed.value(&r.pinion_speed)),
-            speed.shown(),
+            "{}, {} ({})",
+            super::number::operating_point_words(&torque, &speed, &r.pinion_torque, &r.pinion_speed),
             r.label,
             r.formulation.name()
         );
