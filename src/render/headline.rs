@@ -32,7 +32,7 @@ pub fn efficiency(out: &mut String, r: &Report) {
     let recs: Vec<&EfficiencyRecord> = r.efficiency.iter().filter(|e| e.formulation == first).collect();
     let formulations = r.efficiency.iter().filter(|e| e.case == recs[0].case && e.label == recs[0].label).count();
     let shown: Vec<&EfficiencyRecord> = if recs.len() <= HEADLINE_ROWS { recs.clone() } else { corners(&recs) };
-    let u = super::units::Units::of(r);
+    let u = r.units();
     let (kw, w) = (u.kilowatt(), u.power());
     let mut cols =
         vec!["operating point".to_string(), kw.heading("P_in"), "law".into(), "η̄ mesh %".into(), w.heading("P mesh")];
@@ -133,7 +133,7 @@ fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
 
 /// Dynamics: per formulation the verdict at the operating points, the map's unstable ranges, the
 /// peak dynamic factor with its point and the DTE peak-to-peak range.
-pub fn dynamics(out: &mut String, d: &DynamicsReport, u: super::units::Units) {
+pub fn dynamics(out: &mut String, d: &DynamicsReport, u: crate::report::units::Units) {
     let Some(first) = d.points.first() else {
         if let Some(map) = &d.stability_map {
             map_ranges(out, d, map, u);
@@ -194,7 +194,7 @@ fn map_ranges(
     out: &mut String,
     _d: &DynamicsReport,
     map: &crate::report::dynamics::StabilityMapReport,
-    u: super::units::Units,
+    u: crate::report::units::Units,
 ) {
     let unit = &map.speed_unit;
     let end = map.points.last().map(|p| p.pinion_speed.si());
@@ -234,7 +234,7 @@ pub fn thermal(out: &mut String, r: &Report) {
     }
     for (label, formulation) in keys {
         let of: Vec<_> = r.thermal.iter().filter(|t| t.label == label && t.formulation.name() == formulation).collect();
-        let deg = super::units::Units::of(r).temperature();
+        let deg = r.units().temperature();
         let theta: Vec<f64> = of.iter().filter_map(|t| t.oil_temperature.map(|q| deg.value(q.si()))).collect();
         let (lo, hi) = (theta.iter().copied().reduce(f64::min), theta.iter().copied().reduce(f64::max));
         let range = match (lo, hi) {
@@ -245,7 +245,7 @@ pub fn thermal(out: &mut String, r: &Report) {
             .iter()
             .filter(|t| t.status != crate::thermal::BalanceStatus::Ok)
             .map(|t| {
-                let words = super::units::balance_words(t.status, super::units::Units::of(r));
+                let words = crate::report::units::balance_words(t.status, r.units());
                 format!("{}: {words}", point_at(r, &t.pinion_torque, &t.pinion_speed))
             })
             .collect();

@@ -60,7 +60,7 @@ fn contact_section(out: &mut String, r: &Report) {
         out,
         "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.\n"
     );
-    let u = super::units::Units::of(r);
+    let u = r.units();
     let (len, vel) = (u.length(), u.velocity());
     for op in &r.operating_points {
         let _ = writeln!(

@@ -32,7 +32,7 @@ pub fn bearings_section(r: &Report) -> String {
                 .any(|p| p.pinion_torque.si() == e.pinion_torque.si() && p.pinion_speed.si() == e.pinion_speed.si())
         });
     }
-    let u = super::units::Units::of(r);
+    let u = r.units();
     let _ = writeln!(out, "\n### Bearings\n");
     let _ = writeln!(
         out,

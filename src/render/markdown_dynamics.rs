@@ -3,11 +3,11 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
-use super::units::Units;
 use crate::report::dynamics::{
     DynamicsPointReport, DynamicsReport, FormulationReport, Located, StabilityMapReport, StiffnessReport,
 };
 use crate::report::friction::MuValue;
+use crate::report::units::Units;
 use crate::report::Report;
 
 fn sci(x: f64) -> String {
@@ -22,7 +22,7 @@ pub fn dynamics(out: &mut String, r: &Report) {
     let Some(d) = &r.dynamics else { return };
     let _ = writeln!(out, "## Dynamics\n");
     let _ = writeln!(out, "{}\n", d.description);
-    let u = Units::of(r);
+    let u = r.units();
     model_table(out, d, u);
     for p in &d.points {
         point_section(out, d, p, u);
@@ -277,7 +277,7 @@ fn free_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
 }
 
 fn located_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
-    let at = |l: &Located, shown: super::units::Shown, digits: usize| {
+    let at = |l: &Located, shown: crate::report::units::Shown, digits: usize| {
         format!("{} at τ = {}", shown.with(l.value.si(), digits), fixed(l.tau.0, 6))
     };
     let (micro, force) = (u.micro(), u.force());

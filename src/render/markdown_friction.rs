@@ -3,8 +3,8 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
-use super::units::Units;
 use crate::report::friction::MuValue;
+use crate::report::units::Units;
 use crate::report::{formulation_name, OperatingPointReport, Report};
 
 /// Film, μ along the line of action, and efficiency at one operating point.
@@ -140,7 +140,7 @@ pub fn sweep(out: &mut String, r: &Report) {
 "
         );
     }
-    let u = Units::of(r);
+    let u = r.units();
     header(out, &[&u.torque().heading("T_p"), &speed, "law", "formulation", "η̄ %", &u.power().heading("P_loss")]);
     let shown = |case: usize| full || r.operating_points.iter().any(|o| o.index == case);
     for rec in r.efficiency.iter().filter(|x| shown(x.case)) {

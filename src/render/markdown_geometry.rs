@@ -12,7 +12,7 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
     let _ = writeln!(out, "\n## Geometry\n");
     header(out, &["quantity", "symbol", "value"]);
     let deg = 180.0 / std::f64::consts::PI;
-    let u = super::units::Units::of(r);
+    let u = r.units();
     let len = u.length();
     let mm = |q: &crate::report::number::Q| len.with(q.si(), 4);
     let pts = &g.points_from_t1;
@@ -75,7 +75,7 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
     if !u.is_si() {
         // An inch pair is known by its diametral pitch P = 1/m (normal, for a helical pair).
         let name = if g.helical.is_some() { "normal diametral pitch" } else { "diametral pitch" };
-        let pitch = format!("{} 1/in", fixed(super::units::INCH / g.module.si(), 4));
+        let pitch = format!("{} 1/in", fixed(crate::report::units::INCH / g.module.si(), 4));
         rows.insert(1, (name, "P = 1/m", pitch));
     }
     let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));

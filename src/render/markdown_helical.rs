@@ -24,7 +24,7 @@ fn side(s: PitchSide) -> &'static str {
     }
 }
 
-pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[PlotRef], u: super::units::Units) {
+pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[PlotRef], u: crate::report::units::Units) {
     let _ = writeln!(out, "\n### Plane of action (helical pair)\n");
     for p in plots.iter().filter(|p| p.kind == crate::report::PlotKind::PlaneOfAction) {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);

@@ -8,7 +8,6 @@ use crate::losses::parts::COLUMNS;
 use crate::report::{PlotKind, Report, Severity};
 
 use super::headline::point_label;
-use super::units::Units;
 
 /// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
 /// budget's total where given), the map's range, and the count of warnings and notes.
@@ -30,7 +29,7 @@ pub fn headline_body(r: &Report) -> String {
     } else {
         "spur pair".to_string()
     };
-    let u = Units::of(r);
+    let u = r.units();
     let oil = r.lubricant.as_ref().map_or(String::new(), |l| match &l.temperature {
         Some(t) => format!(", {} at {:.0} {}", l.name, u.temperature().value(t.si()), u.temperature().unit),
         None => format!(", {}", l.name),
@@ -59,7 +58,7 @@ pub fn headline_body(r: &Report) -> String {
             format!("m = {} mm", fixed(g.module.si() * 1e3, 3))
         } else {
             let p = if g.helix_angle.si() > 0.0 { "P_n" } else { "P" };
-            format!("{p} = {} 1/in", fixed(super::units::INCH / g.module.si(), 3))
+            format!("{p} = {} 1/in", fixed(crate::report::units::INCH / g.module.si(), 3))
         },
         u.length().with(g.face_width.si(), 2),
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
@@ -91,7 +90,7 @@ pub fn headline_body(r: &Report) -> String {
     }
     super::headline::thermal(&mut out, r);
     if let Some(d) = &r.dynamics {
-        super::headline::dynamics(&mut out, d, super::units::Units::of(r));
+        super::headline::dynamics(&mut out, d, r.units());
     }
     out
 }
@@ -100,7 +99,7 @@ pub fn headline_body(r: &Report) -> String {
 pub fn lubricant_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(l) = &r.lubricant else { return out };
-    let u = Units::of(r);
+    let u = r.units();
     let _ = writeln!(out, "\n## Lubricant\n");
     header(&mut out, &["quantity", "value"]);
     row(&mut out, &["name".into(), l.name.clone()]);
@@ -158,7 +157,7 @@ pub fn budget_section(r: &Report) -> String {
             "Helical pair: the mesh column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line (the sum of the budget uses it: it follows the load along the inclined lines the law is evaluated on). Beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two.\n"
         );
     }
-    let power = Units::of(r).power();
+    let power = r.units().power();
     // The parts' headings name W; shown in another unit, the heading says so.
     let in_unit = |h: &str| h.strip_suffix(" W").map_or(h.to_string(), |n| power.heading(n));
     let mut cols = vec!["operating point".to_string(), "law".into(), "formulation".into(), power.heading("mesh")];
@@ -216,7 +215,7 @@ pub fn map_section(r: &Report) -> String {
         m.pinion_speeds.len(),
         m.csv
     );
-    let power = Units::of(r).power();
+    let power = r.units().power();
     header(&mut out, &["law", "formulation", "mesh η̄ %", "total η %", &power.heading("total loss")]);
     for x in &m.ranges {
         row(

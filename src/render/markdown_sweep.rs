@@ -36,7 +36,7 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
             "Extremes of the mean efficiency and the power loss over all {} operating points (point numbers as in the records):\n",
             s.operating_points
         );
-        let w = super::units::Units::of(r).power();
+        let w = r.units().power();
         let p_loss = w.heading("max P_loss");
         header(out, &["law", "formulation", "min η̄ %", "at point", "max η̄ %", "at point", &p_loss, "at point"]);
         let point = |p: Option<usize>| p.map_or("—".to_string(), |p| p.to_string());

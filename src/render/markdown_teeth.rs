@@ -4,7 +4,6 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
-use super::units::Units;
 use crate::report::{PlotKind, Report};
 
 /// The section, empty when the scene does not ask for the teeth.
@@ -20,7 +19,7 @@ pub fn teeth_section(r: &Report) -> String {
         s.relative_error.0,
         s.series_degree
     );
-    let u = Units::of(r);
+    let u = r.units();
     let (len, micro) = (u.length(), u.micro());
     let cols = [
         "gear".to_string(),
@@ -95,7 +94,7 @@ fn transmission_error_lines(out: &mut String, r: &Report) {
     let _ = writeln!(out, "\n### Static transmission error\n");
     let _ =
         writeln!(out, "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.\n");
-    let u = Units::of(r);
+    let u = r.units();
     let (len, micro) = (u.length(), u.micro());
     let extreme = |what: &str| format!("{what} {} (at s {})", micro.unit, len.unit);
     let cols = [

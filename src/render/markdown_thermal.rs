@@ -7,8 +7,8 @@ use super::markdown_losses::plots_of;
 use crate::report::PlotKind;
 
 use super::table::{fixed, header, row};
-use super::units::Units;
 use crate::report::number::Q;
+use crate::report::units::Units;
 use crate::report::Report;
 
 fn opt(q: Option<&Q>, f: impl Fn(&Q) -> String) -> String {
@@ -25,7 +25,7 @@ pub fn thermal_section(r: &Report) -> String {
         "One thermal node: the housing wall at the oil temperature θ gives off P_Q(θ) = h_c A Δθ + ε σ A (T⁴ − T_a⁴) + G_f Δθ + G_c max(0, θ − θ_set), h_c = √(h_n² + h_f²) with h_n = 1.31 |Δθ|^(1/3) and h_f = 3.26 v^0.89 W/(m² K) (the DOE-2 exterior convection model). The balance θ* is the lowest oil temperature above ambient where the losses P_V(θ) (mesh and budget, the oil read at θ) equal P_Q(θ). The thermal rating is the pinion torque at this speed whose balance is the oil's limit; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n"
     );
     header(&mut out, &["housing", "value"]);
-    let u = Units::of(r);
+    let u = r.units();
     let (deg, g) = (u.temperature(), u.conductance());
     let cooler = h.oil_cooler.as_ref().map_or_else(
         || "none".to_string(),
@@ -61,7 +61,7 @@ fn balance_table(out: &mut String, r: &Report) {
         return;
     }
     let _ = writeln!(out);
-    let u = Units::of(r);
+    let u = r.units();
     let (deg, w, torque, kw) = (u.temperature(), u.power(), u.torque(), u.kilowatt());
     let rating_heading = |what: &str| format!("{what} {} ({})", torque.unit, kw.unit);
     let cols = [
@@ -91,7 +91,7 @@ fn balance_table(out: &mut String, r: &Report) {
                 super::table::law_words(&t.label),
                 t.formulation.name().to_string(),
                 opt(t.oil_temperature.as_ref(), |q| deg.q(q, 1)),
-                super::units::balance_words(t.status, u),
+                crate::report::units::balance_words(t.status, u),
                 w.q(&t.power_loss, 1),
                 w.q(&t.dissipation.convection, 1),
                 w.q(&t.dissipation.radiation, 1),

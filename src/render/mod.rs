@@ -15,8 +15,6 @@ pub mod oil_sweep;
 pub mod svg;
 pub mod table;
 pub mod terminal;
-/// The units tables and plots show results in (they live with the report: findings use them too).
-pub use crate::report::units;
 
 use crate::report::numerics::Timings;
 use crate::report::{PlotKind, Report};

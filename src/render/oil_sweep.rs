@@ -6,9 +6,9 @@ use std::fmt::Write;
 
 use super::svg::{figure_with_legend, Panel};
 use super::table::{fixed, header, law_words, row};
-use super::units::{Shown, Units};
 use crate::evaluate::plan::evenly;
 use crate::report::oil_sweep::{OilSweepReport, OilSweepRow};
+use crate::report::units::{Shown, Units};
 
 /// The plot of the efficiency against the oil temperature.
 pub const OIL_SWEEP_PLOT: &str = "efficiency_vs_oil_temperature.svg";

@@ -81,6 +81,14 @@ pub struct Report {
     pub transmission_error: Vec<super::teeth::TransmissionErrorReport>,
 }
 
+impl Report {
+    /// The units report.md and the plots show this report's results in: inch–pound when its scene
+    /// is written in inches ([`super::number::UnitSystem`]).
+    pub fn units(&self) -> super::units::Units {
+        super::units::Units::of_system(self.unit_system)
+    }
+}
+
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PlotRef {
     pub kind: PlotKind,

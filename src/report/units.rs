@@ -18,7 +18,6 @@
 //! ```
 
 use super::number::{UnitSystem, Q};
-use super::Report;
 use crate::numerics::rounding::fixed;
 
 /// 1 in in m.
@@ -187,11 +186,6 @@ kinds! {
 }
 
 impl Units {
-    /// The units of `r`: inch–pound when the report says its scene is written in inches.
-    pub fn of(r: &Report) -> Units {
-        Units { system: r.unit_system }
-    }
-
     /// The units of a unit system.
     pub fn of_system(system: UnitSystem) -> Units {
         Units { system }

@@ -1,29 +1,28 @@
 //! Plots along the line of action: the contact state, and μ, local power loss and η(t) at one operating point.
 
 use super::panel::{figure, Panel};
-use crate::render::units::Units;
 use crate::report::Report;
 
 /// Positions along the line of action in the report's length unit (mm or in).
 fn mm(r: &Report, v: &[f64]) -> Vec<f64> {
-    let len = Units::of(r).length();
+    let len = r.units().length();
     v.iter().map(|u| len.value(*u)).collect()
 }
 
 fn marks_mm(r: &Report) -> Vec<(String, f64)> {
-    let len = Units::of(r).length();
+    let len = r.units().length();
     r.curves.marks.iter().map(|(n, u)| (n.clone(), len.value(*u))).collect()
 }
 
 /// `distance from T1 (mm)`.
 fn along_label(r: &Report) -> String {
-    format!("distance from T1 ({})", Units::of(r).length().unit)
+    format!("distance from T1 ({})", r.units().length().unit)
 }
 
 /// contact_state.svg: v_s (per speed), SR and p_H (per torque) along the line of action.
 pub fn contact_state(r: &Report) -> Result<String, String> {
     let c = &r.curves;
-    let u = Units::of(r);
+    let u = r.units();
     let along = |y: &str, series: Vec<(String, Vec<f64>)>| Panel {
         y_label: y.into(),
         x_label: along_label(r),
@@ -75,7 +74,7 @@ pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
     let c = &r.curves;
     let pc = &c.points[k];
     let x = mm(r, &c.u);
-    let u = Units::of(r);
+    let u = r.units();
     let p_mm = u.length().value(r.geometry.points_from_t1.P.si());
     let span = (x[x.len() - 1] - x[0]) * 0.06;
     let power: Vec<(String, Vec<f64>)> =
@@ -122,7 +121,7 @@ pub fn film(r: &Report) -> Result<String, String> {
         r.operating_points.iter().filter(|o| o.film.is_some()).collect();
     let picked: Vec<&crate::report::OperatingPointReport> =
         crate::report::pick(with_film.len()).into_iter().map(|i| with_film[i]).collect();
-    let (len, micro) = (Units::of(r).length(), Units::of(r).micro());
+    let (len, micro) = (r.units().length(), r.units().micro());
     let xy = |get: &dyn Fn(&crate::report::friction::FilmRow) -> Option<f64>| -> Vec<(String, Vec<(f64, f64)>)> {
         picked
             .iter()

@@ -2,11 +2,10 @@
 //! work-precision diagram of the numerics study.
 
 use super::panel::{figure, Panel};
-use crate::render::units::Units;
 use crate::report::Report;
 
 /// Curves `(label, [(τ, SI value)])` in a shown unit.
-fn shown(curves: &[(String, Vec<(f64, f64)>)], unit: crate::render::units::Shown) -> Vec<(String, Vec<(f64, f64)>)> {
+fn shown(curves: &[(String, Vec<(f64, f64)>)], unit: crate::report::units::Shown) -> Vec<(String, Vec<(f64, f64)>)> {
     curves.iter().map(|(l, v)| (l.clone(), v.iter().map(|(t, x)| (*t, unit.value(*x))).collect())).collect()
 }
 
@@ -22,7 +21,7 @@ pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
         ..Default::default()
     };
     let orders: Vec<f64> = (1..=c.spectrum.first().map_or(0, |s| s.1.len())).map(|o| o as f64).collect();
-    let u = Units::of(r);
+    let u = r.units();
     let (micro, force) = (u.micro(), u.force());
     let second = if c.oloa.is_empty() {
         tau_panel(&format!("tooth force per pair ({})", force.unit), shown(&c.pair_force, force))
@@ -52,7 +51,7 @@ pub fn free_response(r: &Report, k: usize) -> Result<String, String> {
     let d = r.dynamics.as_ref().ok_or("no dynamics in the report")?;
     let c = &d.curves[k];
     const SHOWN: f64 = 3.0;
-    let micro = Units::of(r).micro();
+    let micro = r.units().micro();
     let first = c
         .free
         .iter()

@@ -15,7 +15,7 @@ fn plane(
     legend: &DrawingArea<SVGBackend, plotters::coord::Shift>,
     h: &HelicalReport,
     mu: Option<(&str, &[f64], &[f64])>,
-    len: crate::render::units::Shown,
+    len: crate::report::units::Shown,
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let [a, p, end, half] = h.path.map(|x| len.value(x));
@@ -94,7 +94,7 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
         .and_then(|p| p.mu.first())
         .map(|(l, v)| (l.as_str(), r.curves.u.as_slice(), v.as_slice()));
     let [tau, total, approach, recess] = &h.length_curve;
-    let len = crate::render::units::Units::of(r).length();
+    let len = r.units().length();
     let mm = |v: &Vec<f64>| v.iter().map(|x| len.value(*x)).collect::<Vec<_>>();
     let panel = Panel {
         y_label: format!("contact length ({})", len.unit),

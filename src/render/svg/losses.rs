@@ -19,7 +19,7 @@ fn parts() -> Vec<&'static str> {
 pub fn loss_budget(r: &Report) -> Result<String, String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let first = r.efficiency.first().map(|x| x.formulation);
-    let power = crate::render::units::Units::of(r).power();
+    let power = r.units().power();
     let bars: Vec<(String, Vec<f64>)> = r
         .efficiency
         .iter()
@@ -253,7 +253,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
     let torque_unit = r.torque_unit.shown();
     let torques: Vec<f64> = m.pinion_torques.iter().map(|t| t.0 / r.torque_unit.factor).collect();
     let first = m.formulation;
-    let power = crate::render::units::Units::of(r).power();
+    let power = r.units().power();
     let fields: Vec<(String, Vec<Vec<f64>>, &str)> = m
         .fields
         .iter()

@@ -100,7 +100,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
         return Err("the map grid is incomplete".into());
     }
     let mut maps = Vec::new();
-    let power = crate::render::units::Units::of(r).power();
+    let power = r.units().power();
     for (label, f) in &combos {
         let mut eta = vec![vec![f64::NAN; si.len()]; ti.len()];
         let mut loss = eta.clone();

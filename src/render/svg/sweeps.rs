@@ -76,7 +76,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     }
     let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
     let mut loss = eta.clone();
-    let power = crate::render::units::Units::of(r).power();
+    let power = r.units().power();
     for rec in &records {
         let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
         let i = labels.iter().position(|x| *x == l).expect("label collected above");
@@ -161,7 +161,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
     // (legend, [(μ, η̄ %, P_loss W)])
     type Curve = (String, Vec<(f64, f64, f64)>);
     let mut curves: Vec<Curve> = Vec::new();
-    let power = crate::render::units::Units::of(r).power();
+    let power = r.units().power();
     for rec in r.efficiency.iter().filter(|x| laws.contains(&x.law)) {
         let Some(k) = ops.iter().position(|&k| r.operating_points[k].index == rec.case) else {
             continue;

@@ -6,7 +6,7 @@
 use plotters::prelude::*;
 
 use super::panel::{plottable, PALETTE};
-use crate::render::units::Units;
+use crate::report::units::Units;
 use crate::report::Report;
 
 fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
@@ -70,7 +70,7 @@ fn position_label(u: Units) -> String {
 /// mesh_stiffness.svg.
 pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
     let s = r.stiffness.as_ref().ok_or("the report has no stiffness")?;
-    let u = Units::of(r);
+    let u = r.units();
     let (len, k_unit) = (u.length(), u.stiffness());
     let pitch = s.mesh.position.values.last().copied().unwrap_or(0.0) - s.mesh.position.values[0];
     let mesh: Vec<(f64, f64)> = [0.0, pitch]
@@ -120,7 +120,7 @@ pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
 
 /// transmission_error.svg.
 pub fn transmission_error(r: &Report) -> Result<String, String> {
-    let u = Units::of(r);
+    let u = r.units();
     let (len, micro, torque) = (u.length(), u.micro(), u.torque());
     let curves: Vec<Curve> = r
         .transmission_error
@@ -155,7 +155,7 @@ pub fn transmission_error(r: &Report) -> Result<String, String> {
 
 /// load_share.svg.
 pub fn load_share(r: &Report) -> Result<String, String> {
-    let u = Units::of(r);
+    let u = r.units();
     let (len, torque) = (u.length(), u.torque());
     let curves: Vec<Curve> = r
         .transmission_error

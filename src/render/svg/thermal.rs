@@ -6,7 +6,6 @@
 use plotters::prelude::*;
 
 use super::panel::{plottable, PALETTE};
-use crate::render::units::Units;
 use crate::report::Report;
 
 fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
@@ -18,7 +17,7 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
     let h = r.heat_balance.as_ref().ok_or("the report has no heat balance")?;
     // Drawn up to 30 K beyond the limit or the balance, whichever is higher (the curve in report.json
     // runs to 200 °C).
-    let u = Units::of(r);
+    let u = r.units();
     let (deg, w) = (u.temperature(), u.power());
     let limit = deg.value(h.max_oil_temperature.si());
     let right = limit.max(h.oil_temperature.as_ref().map_or(limit, |b| deg.value(b.si()))) + 30.0 * deg.per_kelvin();
@@ -100,7 +99,7 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
     let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
     let s = d.samples.as_ref().ok_or("the duty cycle has no transient")?;
     let minutes: Vec<f64> = s.time.iter().map(|t| t / 60.0).collect();
-    let deg = Units::of(r).temperature();
+    let deg = r.units().temperature();
     let theta: Vec<f64> = s.oil_temperature.iter().map(|t| deg.value(*t)).collect();
     let limit = deg.value(d.max_oil_temperature.si());
     let lo = theta.iter().copied().fold(deg.value(d.ambient_temperature.si()), f64::min);
@@ -167,7 +166,7 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
 /// duty_cycle_energy.svg.
 pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
     let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
-    let energy = Units::of(r).energy();
+    let energy = r.units().energy();
     let kj = |q: &Option<crate::report::number::Q>| q.as_ref().map(|q| energy.value(q.si()));
     let bars: Vec<(Option<f64>, Option<f64>)> =
         d.steps.iter().map(|s| (kj(&s.energy_lost), kj(&s.energy_lost_fixed))).collect();
