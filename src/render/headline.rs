@@ -39,7 +39,6 @@ pub fn efficiency(out: &mut String, r: &Report) {
     if r.loss_budget {
         cols.extend([w.heading("P no-load"), w.heading("P load-dependent"), w.heading("P total"), "η total %".into()]);
     }
-    let cols: Vec<&str> = cols.iter().map(String::as_str).collect();
     let _ = writeln!(
         out,
         "Efficiency, {} formulation{}{}:\n",

@@ -93,7 +93,7 @@ fn contact_section(out: &mut String, r: &Report) {
             u.pressure().heading("p_H"),
             u.micro().heading("b_H"),
         ];
-        header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+        header(out, &cols);
         for c in &op.contact {
             row(
                 out,

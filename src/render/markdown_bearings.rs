@@ -54,7 +54,7 @@ pub fn bearings_section(r: &Report) -> String {
             u.power().heading("no-load"),
             u.power().heading("load"),
         ];
-        header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+        header(&mut out, &cols);
         for (i, x) in b.bearings.iter().enumerate() {
             row(
                 &mut out,

@@ -106,7 +106,7 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport, 
         format!("max applied friction {} / T_p {} / T_w {}", force.unit, torque.unit, torque.unit),
         "separation".into(),
     ];
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     for f in &p.formulations {
         let mults: Vec<String> = f
             .floquet_multipliers
@@ -213,7 +213,7 @@ fn bearing_lines(out: &mut String, formulations: &[FormulationReport], u: Units)
         micro.heading("y p-p"),
         micro.heading("x p-p"),
     ];
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     for f in formulations {
         for g in &f.gears {
             let order =
@@ -260,7 +260,7 @@ fn free_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
             micro.heading("error est."),
             "growth per period |λ|".into(),
         ];
-        header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+        header(out, &cols);
         for l in &fr.lines {
             row(
                 out,

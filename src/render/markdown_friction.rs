@@ -18,7 +18,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, u: Unit
     let _ = writeln!(out, "Signed coefficient of friction along the line of action (negative in approach):\n");
     let mut cols = vec!["point".to_string(), u.length().heading("T1C")];
     cols.extend(op.friction.iter().map(|l| format!("`{}`", l.label)));
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     for (i, r) in op.friction[0].mu_along_loa.iter().enumerate() {
         let mut cells = vec![r.point.clone().unwrap_or_default(), u.length().q(&r.distance_from_t1, 3)];
         for law in &op.friction {

@@ -102,7 +102,7 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         len.heading("s_a"),
         "x_min".into(),
     ];
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
         row(
             out,

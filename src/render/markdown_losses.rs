@@ -166,7 +166,7 @@ pub fn budget_section(r: &Report) -> String {
     }
     cols.extend(COLUMNS.iter().map(|c| in_unit(c.heading)));
     cols.extend([power.heading("total"), "mesh %".into(), "η total %".into()]);
-    header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(&mut out, &cols);
     let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| power.q(&q, 2));
     for e in &r.efficiency {
         let Some(b) = &e.budget else { continue };

@@ -30,7 +30,7 @@ pub fn teeth_section(r: &Report) -> String {
         "θ_f rad".into(),
         "tip relief".into(),
     ];
-    header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(&mut out, &cols);
     for b in &s.bodies {
         let relief = b.tip_relief.as_ref().map_or_else(
             || "none".to_string(),
@@ -106,7 +106,7 @@ fn transmission_error_lines(out: &mut String, r: &Report) {
         micro.heading("mean"),
         micro.heading("±"),
     ];
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     for t in &r.transmission_error {
         row(
             out,

@@ -79,7 +79,7 @@ fn balance_table(out: &mut String, r: &Report) {
         rating_heading("rating"),
         rating_heading(&format!("rating at {}", deg.with(368.15, 0))),
     ];
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     let rating = |x: Option<&crate::report::thermal::Rating>| {
         x.map_or_else(|| "—".into(), |x| format!("{} ({})", torque.q(&x.torque, 1), kw.q(&x.power, 2)))
     };
@@ -123,7 +123,7 @@ fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleRepor
         kj.heading("energy lost"),
         kj.heading("energy lost at fixed θ"),
     ];
-    header(out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+    header(out, &cols);
     for (k, s) in d.steps.iter().enumerate() {
         row(
             out,

@@ -61,7 +61,7 @@ fn markdown(r: &OilSweepReport) -> String {
             (u.kinematic_viscosity(), u.dynamic_viscosity(), u.density(), u.pressure_viscosity());
         let cols =
             ["oil temperature".to_string(), nu.heading("ν"), eta.heading("η"), rho.heading("ρ"), alpha.heading("α")];
-        header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+        header(&mut out, &cols);
         for x in &r.runs {
             let Some(l) = &x.lubricant else { continue };
             let opt =
@@ -95,7 +95,7 @@ fn markdown(r: &OilSweepReport) -> String {
         if r.loss_budget {
             cols.extend([w.heading("P total"), "η total %".into()]);
         }
-        header(&mut out, &cols.iter().map(String::as_str).collect::<Vec<_>>());
+        header(&mut out, &cols);
         let mut rows = 0;
         'rows: for e in &r.efficiency {
             for (i, x) in r.runs.iter().enumerate() {

@@ -13,7 +13,9 @@ pub fn row(out: &mut String, cells: &[String]) {
     let _ = writeln!(out, "| {} |", cells.join(" | "));
 }
 
-pub fn header(out: &mut String, cells: &[&str]) {
+/// A pipe table's header row and rule; the cells are `&str` or `String` headings.
+pub fn header<S: AsRef<str>>(out: &mut String, cells: &[S]) {
+    let cells: Vec<&str> = cells.iter().map(AsRef::as_ref).collect();
     let _ = writeln!(out, "| {} |", cells.join(" | "));
     let _ = writeln!(out, "|{}|", cells.iter().map(|_| "---").collect::<Vec<_>>().join("|"));
 }
