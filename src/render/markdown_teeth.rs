@@ -13,7 +13,8 @@ pub fn teeth_section(r: &Report) -> String {
     let _ = writeln!(out, "\n## Mesh stiffness from the teeth\n");
     let _ = writeln!(
         out,
-        "Potential-energy method: per unit face width 1/k_w(s) = 1/k_h + Σ over both teeth (1/k_b + 1/k_s + 1/k_a + 1/k_f), bending, shear and axial compression of each tooth over its involute and trochoid fillet, Sainsot's fillet foundation and linearised Hertz k_h = π E′/4; the mesh stiffness K(s) sums the pairs in contact{}. Positions s from A along the line of action{}. Relative error estimate of k(s): {:.1e} (Chebyshev degree {}).\n",
+        "Potential-energy method: per unit face width 1/k_w(s) = 1/k_h + Σ over both teeth (1/k_b + 1/k_s + 1/k_a + 1/k_f), bending, shear and axial compression of each tooth over its involute and the trochoid fillet its generating rack cuts (dedendum h_fP, tip radius ρ_fP below: the rounding tangent to the flank at h_aP, or the full round tip where the rack is too narrow for it{}), Sainsot's fillet foundation and linearised Hertz k_h = π E′/4; the mesh stiffness K(s) sums the pairs in contact{}. Positions s from A along the line of action{}. Relative error estimate of k(s): {:.1e} (Chebyshev degree {}).\n",
+        if s.helical_lines.is_some() { "; a helical pair's teeth are those the rack of its transverse section cuts" } else { "" },
         if s.helical_lines.is_some() { ", each helical contact line integrated exactly over its transverse sections" } else { "" },
         if s.helical_lines.is_some() { " (of the mid-face section)" } else { "" },
         s.relative_error.0,
@@ -24,6 +25,8 @@ pub fn teeth_section(r: &Report) -> String {
     let cols = [
         "gear".to_string(),
         len.heading("root d_f"),
+        len.heading("rack h_fP"),
+        len.heading("rack tip ρ_fP"),
         len.heading("bore"),
         len.heading("form circle d_Ff"),
         "h_f = r_f/r_int".into(),
@@ -41,6 +44,8 @@ pub fn teeth_section(r: &Report) -> String {
             &[
                 b.gear.clone(),
                 len.q(&b.root_diameter, 4),
+                len.q(&b.rack_dedendum, 4),
+                len.q(&b.rack_tip_radius, 4),
                 len.q(&b.bore_diameter, 4),
                 len.q(&b.form_diameter, 4),
                 fixed(b.foundation_ratio.0, 4),
@@ -92,14 +97,22 @@ fn transmission_error_lines(out: &mut String, r: &Report) {
         return;
     }
     let _ = writeln!(out, "\n### Static transmission error\n");
-    let _ =
-        writeln!(out, "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.\n");
+    let helical = r.stiffness.as_ref().is_some_and(|s| s.helical_lines.is_some());
+    let _ = writeln!(
+        out,
+        "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.{}\n",
+        if helical {
+            " In the transverse plane: F_bt = T_p/r_b1 is the transverse force the teeth share (the normal force F_bn = F_bt/cos β_b)."
+        } else {
+            ""
+        }
+    );
     let u = r.units();
     let (len, micro) = (u.length(), u.micro());
     let extreme = |what: &str| format!("{what} {} (at s {})", micro.unit, len.unit);
     let cols = [
         u.torque().heading("pinion torque"),
-        u.force().heading("F_bn"),
+        u.force().heading(if helical { "F_bt" } else { "F_bn" }),
         extreme("min"),
         extreme("max"),
         micro.heading("peak-to-peak"),

@@ -50,6 +50,9 @@ pub struct IsoReport {
 pub struct ToothBodyReport {
     pub gear: String,
     pub root_diameter: Q,
+    /// The generating rack's dedendum h_fP = r − r_f + x m_n and tip radius ρ_fP that cut the fillet.
+    pub rack_dedendum: Q,
+    pub rack_tip_radius: Q,
     pub bore_diameter: Q,
     pub form_diameter: Q,
     /// Sainsot's h_f = r_f / r_int and θ_f (rad).
@@ -137,6 +140,8 @@ pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport
             ToothBodyReport {
                 gear: name.to_string(),
                 root_diameter: Q::new(2.0 * tooth.outline.input.root_radius, "m"),
+                rack_dedendum: Q::new(tooth.outline.rack_dedendum, "m"),
+                rack_tip_radius: Q::new(tooth.outline.tip_rounding, "m"),
                 bore_diameter: Q::new(2.0 * tooth.bore_radius, "m"),
                 form_diameter: Q::new(2.0 * tooth.outline.form_radius, "m"),
                 foundation_ratio: Num(h_f),

@@ -159,6 +159,12 @@ pub(crate) fn check_teeth(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Opti
                             format!("the {} root diameter leaves a rack dedendum of {:.4} mm, not more than its addendum {:.4} mm: the cutter has no tip rounding", names[gear], dedendum * 1e3, addendum * 1e3),
                         )
                         .hint(format!("lower the root diameter; the basic rack gives d_f = {}", mm(Bodies::default_root_radius(&g, gear)))),
+                        OutlineProblem::PointedRack { dedendum, limit } => Diagnostic::new(
+                            DiagnosticKind::Geometry,
+                            at,
+                            format!("the {} root diameter asks for a rack dedendum of {:.4} mm, at or past {:.4} mm where the rack's flanks meet: no rack cuts so deep a space", names[gear], dedendum * 1e3, limit * 1e3),
+                        )
+                        .hint(format!("raise the root diameter; the basic rack gives d_f = {}", mm(Bodies::default_root_radius(&g, gear)))),
                         OutlineProblem::Undercut => Diagnostic::new(
                             DiagnosticKind::Geometry,
                             gears[gear].profile_shift.span,

@@ -38,10 +38,12 @@ fn stiffness_models_one_file_one_row() {
 /// Each stiffness model against a hand value on the FZG type C pair (ε_α ≈ 1.44): the rectangular
 /// mean is single + (double − single)(ε_α − 1) exactly; the table's mean is the mean of its values
 /// and it interpolates linearly; a spur pair's density gives n k b; ISO's builds the rectangular
-/// k_n = n c' b. Tolerances 1e-12 relative.
+/// k_n = n c' b and a helical pair a density whose mean per face width is c_γα (1e-9: the mean
+/// is integrated). Tolerances 1e-12 relative.
 #[test]
 fn stiffness_models_by_hand() {
     use gearloss::geometry::stiffness::{StiffnessId, StiffnessModel};
+    use gearloss::geometry::teeth::iso_6336_method_b::iso_6336_method_b;
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     let g = scene.gears.geometry().unwrap();
     let period = 1e-3;
@@ -55,10 +57,21 @@ fn stiffness_models_by_hand() {
     assert!((table.at(&g, 0.125) - 2e8).abs() < 1e-3 && table.slope(&g, 0.1) == 8e8);
     let density = StiffnessModel::per_length(1.5e10, &g);
     assert!((density.at(&g, 0.999 * (eps - 1.0)) / (2.0 * 1.5e10 * g.face_width) - 1.0).abs() < 1e-12);
-    let iso = StiffnessModel::iso_6336(&g);
+    let bodies = scene.gears.bodies();
+    let iso = StiffnessModel::iso_6336(&g, &bodies);
     assert_eq!(iso.id(), StiffnessId::PairsInContact);
-    let c = gearloss::geometry::stiffness::iso_6336_single_stiffness(&g) * g.face_width * 1e9;
+    let roots = [0, 1].map(|i| bodies.radii(&g, i).0);
+    let c = iso_6336_method_b(&g, bodies.young, roots).c_single * g.face_width * 1e9;
     assert!((iso.upper_bound(&g) / (3.0 * c) - 1.0).abs() < 1e-12);
+    // A helical pair's density: its mean transverse mesh stiffness per face width is ISO's c_γα.
+    let scene = crate::scene(&crate::root().join("specs/metric_helical.gear"));
+    let (g, bodies) = (scene.gears.geometry().unwrap(), scene.gears.bodies());
+    let iso = StiffnessModel::iso_6336(&g, &bodies);
+    assert_eq!(iso.id(), StiffnessId::PerLength);
+    let roots = [0, 1].map(|i| bodies.radii(&g, i).0);
+    let c_gamma = iso_6336_method_b(&g, bodies.young, roots).c_gamma_alpha * 1e9;
+    let mean = iso.mean(&g, &g.cycle_break_times(&[]), period) / g.face_width;
+    assert!((mean / c_gamma - 1.0).abs() < 1e-9, "{mean} vs c_γα {c_gamma}");
 }
 
 /// Dynamic models: each row names its file in `src/dynamics/models/`, each entry file has a row;

@@ -239,3 +239,36 @@ fn sainsot_fit_range_is_checked() {
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].contains("pinion") && found[0].contains("P* = "), "{}", found[0]);
 }
+
+/// The worked example of ISO/TR 6336-30:2017 (calculation example 1: z 17/103, m_n 8 mm, β 15.8°,
+/// x 0.145/0, b 100 mm, a_w 500 mm, ISO 53 rack D, steel), as `specs/iso_tr_6336_30_example_1.gear`
+/// states it. The TR's figures, as transcribed in the public gfsReboucas/Drivetrain repository's
+/// `ISO_6336.m` (`example_01`): z_n 18.905/114.543, c′_th 17.85584, c′ 12.37047, c_γα 17.46485
+/// N/(mm·µm). Method B reproduces z_n to 1e-3 (the TR's digits) and c′_th and c′ to 1e-6
+/// relative (the TR's 7 digits); c_γα to 2e-4, because it rests on ε_α: the TR's, read back as
+/// (c_γα/c′ − 0.25)/0.75 = 1.54909, against this scene's 1.54934 with tips by the addendum rule
+/// (the TR's tip diameters are not in that source). C_B = 0.9 from rack D's h_fP = 1.4 m_n.
+/// The potential-energy method on the same teeth then lies where the spur pairs' comparison puts
+/// it: its largest single-pair stiffness within 10 % of c′/C_M, its mean within 25 % of c_γα/C_M.
+#[test]
+fn iso_tr_6336_30_example_1() {
+    use gearloss::geometry::teeth::iso_6336_method_b::{virtual_teeth, C_M};
+    let scene = crate::scene(&crate::root().join("specs/iso_tr_6336_30_example_1.gear"));
+    let (g, bodies) = (scene.gears.geometry().unwrap(), scene.gears.bodies());
+    let zn = [0, 1].map(|i| virtual_teeth(g.teeth[i], g.helix_angle, g.base_helix_angle));
+    assert!((zn[0] - 18.905).abs() < 1e-3 && (zn[1] - 114.543).abs() < 1e-3, "{zn:?}");
+    let roots = [0, 1].map(|i| bodies.radii(&g, i).0);
+    let iso = iso_6336_method_b(&g, bodies.young, roots);
+    let c_th = iso.c_single / (C_M * 0.9 * g.helix_angle.cos());
+    assert!((c_th / 17.85584 - 1.0).abs() < 1e-6, "c′_th {c_th}");
+    assert!((iso.c_single / 12.37047 - 1.0).abs() < 1e-6, "c′ {}", iso.c_single);
+    assert!((g.contact_ratio - 1.54934).abs() < 1e-5, "ε_α {}", g.contact_ratio);
+    assert!((iso.c_gamma_alpha / 17.46485 - 1.0).abs() < 2e-4, "c_γα {}", iso.c_gamma_alpha);
+    let k = PairStiffness::new(&g, &bodies).unwrap();
+    let ((_, _), (k_max, _)) =
+        gearloss::numerics::roots::extrema(|s| k.per_width(s), &[0.0, k.path], 32, 1e-12 * k.path);
+    let ratio = k_max * 1e-9 / (iso.c_single / C_M);
+    assert!((0.9..1.1).contains(&ratio), "PEM {} vs ISO c′/C_M {}", k_max * 1e-9, iso.c_single / C_M);
+    let ratio = k.mean() / g.face_width * 1e-9 / (iso.c_gamma_alpha / C_M);
+    assert!((0.75..1.25).contains(&ratio), "PEM mean vs c_γα/C_M: {ratio}");
+}

@@ -96,8 +96,8 @@ impl StiffnessModel {
         Self::new(PerLength::on(density, g))
     }
 
-    /// The ISO 6336-1 estimate for the pair `g`.
-    pub fn iso_6336(g: &PairGeometry) -> Self {
-        iso_6336::iso_estimate(g)
+    /// The ISO 6336-1 estimate for the pair `g` with the gear bodies `bodies`.
+    pub fn iso_6336(g: &PairGeometry, bodies: &Bodies) -> Self {
+        iso_6336::build(g, bodies)
     }
 }

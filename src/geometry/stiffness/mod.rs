@@ -18,5 +18,4 @@ pub mod stiffness_id;
 pub mod table;
 
 pub use catalog::{StiffnessEntry, StiffnessId, MODELS};
-pub use iso_6336::iso_6336_single_stiffness;
 pub use mesh_stiffness::{MeshStiffness, StiffnessModel, StiffnessShape};

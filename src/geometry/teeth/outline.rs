@@ -38,6 +38,8 @@ pub enum OutlineProblem {
     Undercut,
     /// The rack dedendum is below its addendum: no tip rounding (h_fP ≤ h_aP).
     NoClearance { dedendum: f64, addendum: f64 },
+    /// The rack dedendum reaches where its flanks meet (h_fP ≥ π m/(4 tan α)): no rack cuts it.
+    PointedRack { dedendum: f64, limit: f64 },
 }
 
 /// One tooth's outline (SI).
@@ -48,7 +50,8 @@ pub struct ToothOutline {
     pub base_radius: f64,
     /// The rack's dedendum h_fP = r − r_f + x m.
     pub rack_dedendum: f64,
-    /// The rack's tip rounding radius ρ = (h_fP − h_aP)/(1 − sin α).
+    /// The rack's tip rounding radius ρ = (h_fP − h_aP)/(1 − sin α), at most the full round tip's
+    /// (π m/4 − h_fP tan α) cos α/(1 − sin α).
     pub tip_rounding: f64,
     /// a1 = h_fP − x m − ρ: the rounding centre's distance inside the pitch circle.
     pub a1: f64,
@@ -79,7 +82,18 @@ impl ToothOutline {
         if h_fp <= h_ap {
             return Err(OutlineProblem::NoClearance { dedendum: h_fp, addendum: h_ap });
         }
-        let rho = (h_fp - h_ap) / (1.0 - alpha.sin());
+        // The rack tooth's half-width at its tip line, from its centreline: π m/4 − h_fP tan α.
+        let half_tip = std::f64::consts::PI * m / 4.0 - h_fp * alpha.tan();
+        if half_tip <= 0.0 {
+            return Err(OutlineProblem::PointedRack {
+                dedendum: h_fp,
+                limit: std::f64::consts::PI * m / (4.0 * alpha.tan()),
+            });
+        }
+        // The rounding tangent to the flank at the depth h_aP and to the tip line, unless the rack's
+        // tip is too narrow for it: then the full round tip, the two roundings meeting on the rack
+        // tooth's centreline (ISO 53's largest ρ_fP; 0.39 m for type D's h_fP = 1.4 m).
+        let rho = ((h_fp - h_ap) / (1.0 - alpha.sin())).min(half_tip * alpha.cos() / (1.0 - alpha.sin()));
         let a1 = h_fp - shift - rho;
         let b1 = std::f64::consts::PI * m / 4.0 + h_fp * alpha.tan() + rho * (1.0 - alpha.sin()) / alpha.cos();
         // The rack's straight flank ends h_fP − x m − ρ(1 − sin α) inside the pitch circle.
@@ -208,6 +222,37 @@ mod tests {
             let fd = (t.involute_point(l + dd).y - t.involute_point(l - dd).y) / (2.0 * dd);
             assert!((t.involute_point(l).dy - fd).abs() < 1e-6 * fd.abs(), "ℓ {l}");
         }
+    }
+
+    /// The rack's tip radius against ISO 53: h_fP = 1.25 m gives type A's ρ_fP = 0.38 m (0.25/(1 −
+    /// sin 20°) = 0.37995 m); type D's h_fP = 1.4 m leaves too narrow a tip for 0.4/(1 − sin 20°), so
+    /// the tip is full round, ρ_fP = (π/4 − 1.4 tan 20°) cos 20°/(1 − sin 20°) m = 0.39394 m (ISO 53
+    /// prints 0.39), and its root point lies mid-space, θ_f = π/z (1e-12; z = 20, x = 0.145); the outline stays
+    /// continuous. A dedendum past π m/(4 tan α) is refused.
+    #[test]
+    fn rack_tip_radius_of_iso_53_types_a_and_d() {
+        let m = 8e-3;
+        let tooth = |h_fp: f64| {
+            let r = m * 20.0 / 2.0;
+            ToothOutline::new(ToothInput {
+                teeth: 20,
+                transverse_module: m,
+                normal_module: m,
+                pressure_angle: 20f64.to_radians(),
+                shift: 0.145 * m,
+                tip_radius: r + 1.145 * m,
+                root_radius: r - (h_fp - 0.145) * m,
+            })
+        };
+        let a = tooth(1.25).unwrap();
+        assert!((a.tip_rounding / m - 0.25 / (1.0 - 20f64.to_radians().sin())).abs() < 1e-12);
+        assert!((a.tip_rounding / m - 0.37995).abs() < 1e-5);
+        let d = tooth(1.4).unwrap();
+        assert!((d.tip_rounding / m - 0.39394).abs() < 1e-5, "{}", d.tip_rounding / m);
+        assert!((d.root_angle() - std::f64::consts::PI / 20.0).abs() < 1e-12);
+        let (f, i) = (d.fillet_point(d.input.pressure_angle), d.involute_point(d.involute_rolls()[0]));
+        assert!((f.y - i.y).abs() < 1e-12 && (f.h - i.h).abs() < 1e-12);
+        assert!(matches!(tooth(2.2), Err(OutlineProblem::PointedRack { .. })));
     }
 
     /// The tip half-thickness equals the pair geometry's s_a/2 (ISO 21771) to 1e-12 m.
