@@ -11,8 +11,10 @@ use crate::dynamics::models::{GearDynamics, ModelInputs, Wants};
 use crate::dynamics::numerics::Study;
 use crate::dynamics::{DynamicFormulation, SdofSystem, StiffnessModel};
 use crate::friction::{FrictionLaw, LawContext};
+use crate::geometry::stiffness::{iso_6336, StiffnessId};
+use crate::geometry::teeth::iso_6336_method_b::IsoStiffness;
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{DynamicsSpec, Scene, Solver};
+use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
 use crate::numerics::roots::brent;
 
 #[derive(Debug, Clone, Serialize)]
@@ -41,6 +43,8 @@ pub struct DynamicsEvaluation {
     pub stiffness: StiffnessModel,
     /// "given", "iso_6336" or "table".
     pub stiffness_source: &'static str,
+    /// With `mesh_stiffness = iso_6336`: ISO 6336-1 Method B's figures and readings it is built from.
+    pub iso_6336: Option<IsoStiffness>,
     pub damping_ratio: f64,
     pub equivalent_mass: f64,
     pub damping: f64,
@@ -287,6 +291,8 @@ pub fn evaluate_dynamics(
         description: facts.description,
         stiffness: setup.stiffness.clone(),
         stiffness_source: setup.source,
+        iso_6336: matches!(spec.stiffness, StiffnessSpec::Named(StiffnessId::Iso6336))
+            .then(|| iso_6336::method_b(setup.base.geometry, &scene.gears.bodies())),
         damping_ratio: spec.damping_ratio,
         equivalent_mass: probe.equivalent_mass,
         damping: probe.damping,

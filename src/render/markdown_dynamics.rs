@@ -79,6 +79,9 @@ fn model_table(out: &mut String, d: &DynamicsReport, u: Units) {
         }
     }
     let _ = writeln!(out);
+    if let Some(iso) = &d.iso_6336 {
+        let _ = writeln!(out, "{}\n", super::markdown_teeth::iso_readings(iso, u));
+    }
 }
 
 /// One operating point: every formulation's Floquet numbers and response, then its located lines,

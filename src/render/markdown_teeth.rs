@@ -4,6 +4,8 @@
 use std::fmt::Write;
 
 use super::table::{fixed, header, row};
+use crate::report::teeth::IsoReport;
+use crate::report::units::Units;
 use crate::report::{PlotKind, Report};
 
 /// The section, empty when the scene does not ask for the teeth.
@@ -78,17 +80,37 @@ pub fn teeth_section(r: &Report) -> String {
             format!("c_γα = {}", per(s.iso_6336.c_gamma_alpha.si())),
         ],
     );
+    let iso = &s.iso_6336;
     let _ = writeln!(
         out,
-        "\nISO's figures include its factor C_M = 0.8 (theory to measured teeth); the method's are theoretical. Mean mesh stiffness K̄ = {}.",
+        "\nISO's figures include its factor C_M = {:.1} (theory to measured teeth); the method's are theoretical. Mean mesh stiffness K̄ = {}.",
+        iso.c_m.0,
         u.stiffness().with(s.mean.si(), 2)
     );
+    let _ = writeln!(out, "\n{}", iso_readings(iso, u));
     for p in r.plots.iter().filter(|p| p.kind == PlotKind::MeshStiffness) {
         let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
     }
     transmission_error_lines(&mut out, r);
     out.push('\n');
     out
+}
+
+/// ISO 6336-1 Method B's readings behind c′ and c_γα, in one sentence.
+pub fn iso_readings(iso: &IsoReport, u: Units) -> String {
+    format!(
+        "ISO 6336-1 Method B's readings: z_n = z/(cos²β_b cos β) = {} / {}, c′_th = 1/q′ = {}, c′ = c′_th C_M C_R C_B cos β (E/E_st) = {} with C_M = {:.1}, C_R = 1, C_B = {}, cos β = {}, E/E_st = {}; c_γα = c′ (0.75 ε_α + 0.25) = {} with ε_α = {}.",
+        fixed(iso.virtual_teeth[0].0, 3),
+        fixed(iso.virtual_teeth[1].0, 3),
+        u.stiffness_per_width().with(iso.c_theoretical.si(), 5),
+        u.stiffness_per_width().with(iso.c_single.si(), 5),
+        iso.c_m.0,
+        fixed(iso.basic_rack_factor.0, 4),
+        fixed(iso.cos_helix.0, 5),
+        fixed(iso.modulus_ratio.0, 4),
+        u.stiffness_per_width().with(iso.c_gamma_alpha.si(), 5),
+        fixed(iso.contact_ratio.0, 5)
+    )
 }
 
 /// The static transmission error at each torque: located extremes, peak-to-peak, integrated mean.

@@ -107,6 +107,9 @@ pub struct DynamicsReport {
     pub stiffness_step_ratio: Option<f64>,
     pub stiffness_source: String,
     pub stiffness: StiffnessReport,
+    /// With `mesh_stiffness = iso_6336`: ISO 6336-1 Method B's figures and readings.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub iso_6336: Option<super::teeth::IsoReport>,
     pub damping_ratio: Num,
     pub equivalent_mass: Q,
     pub damping: Q,
@@ -227,6 +230,7 @@ pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation)
         },
         stiffness_source: d.stiffness_source.into(),
         stiffness,
+        iso_6336: d.iso_6336.as_ref().map(super::teeth::IsoReport::from),
         damping_ratio: Num(d.damping_ratio),
         equivalent_mass: Q::new(d.equivalent_mass, "kg"),
         damping: Q::new(d.damping, "N*s/m"),

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
 use crate::evaluate::teeth::TeethDetails;
+use crate::geometry::teeth::iso_6336_method_b::{IsoStiffness, C_M};
 use crate::geometry::teeth::transmission_error::series_positions;
 use crate::model::Scene;
 
@@ -43,6 +44,14 @@ pub struct IsoReport {
     /// c' and c_γα (N/m², 1 N/(mm·µm) = 1e9 N/m²).
     pub c_single: Q,
     pub c_gamma_alpha: Q,
+    /// The readings: z_n of both gears, c′_th = 1/q′ (N/m²), C_B, E/E_st, and C_M, cos β, ε_α.
+    pub virtual_teeth: [Num; 2],
+    pub c_theoretical: Q,
+    pub basic_rack_factor: Num,
+    pub modulus_ratio: Num,
+    pub c_m: Num,
+    pub cos_helix: Num,
+    pub contact_ratio: Num,
 }
 
 /// One gear's body as the method read it.
@@ -119,6 +128,22 @@ pub struct TransmissionErrorReport {
     pub mean_error: Q,
 }
 
+impl From<&IsoStiffness> for IsoReport {
+    fn from(iso: &IsoStiffness) -> Self {
+        IsoReport {
+            c_single: Q::new(iso.c_single * 1e9, "N/m^2"),
+            c_gamma_alpha: Q::new(iso.c_gamma_alpha * 1e9, "N/m^2"),
+            virtual_teeth: iso.virtual_teeth.map(Num),
+            c_theoretical: Q::new(iso.c_theoretical * 1e9, "N/m^2"),
+            basic_rack_factor: Num(iso.basic_rack_factor),
+            modulus_ratio: Num(iso.modulus_ratio),
+            c_m: Num(C_M),
+            cos_helix: Num(iso.cos_helix),
+            contact_ratio: Num(iso.contact_ratio),
+        }
+    }
+}
+
 fn located(value: f64, unit: &'static str, position: f64) -> Located {
     Located { value: Q::new(value, unit), position: Q::new(position, "m") }
 }
@@ -168,10 +193,7 @@ pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport
         mean: Q::new(k.mean(), "N/m"),
         mean_per_width: Q::new(k.mean() / k.face_width, "N/m^2"),
         max_single_per_width: located(t.max_single.0, "N/m^2", t.max_single.1),
-        iso_6336: IsoReport {
-            c_single: Q::new(t.iso.c_single * 1e9, "N/m^2"),
-            c_gamma_alpha: Q::new(t.iso.c_gamma_alpha * 1e9, "N/m^2"),
-        },
+        iso_6336: IsoReport::from(&t.iso),
         relative_error: Num(k.relative_error),
         series_degree: k.degree,
         helical_lines: k.is_helical().then(|| {

@@ -32,11 +32,22 @@ pub const C_M: f64 = 0.8;
 /// E_st: the modulus of the standard's steel (Pa).
 const E_STEEL: f64 = 206e9;
 
-/// c' and c_γα in N/(mm·µm).
+/// c' and c_γα in N/(mm·µm), with the readings they rest on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IsoStiffness {
     pub c_single: f64,
     pub c_gamma_alpha: f64,
+    /// z_n of pinion and wheel.
+    pub virtual_teeth: [f64; 2],
+    /// c′_th = 1/q′ (N/(mm·µm)).
+    pub c_theoretical: f64,
+    /// C_B, the mean of both gears' basic-rack factors.
+    pub basic_rack_factor: f64,
+    /// E/E_st with E = 2E₁E₂/(E₁ + E₂).
+    pub modulus_ratio: f64,
+    /// cos β and ε_α of the pair.
+    pub cos_helix: f64,
+    pub contact_ratio: f64,
 }
 
 /// The virtual number of teeth z_n = z/(cos²β_b cos β) (ISO 21771).
@@ -66,7 +77,17 @@ pub fn iso_6336_method_b(g: &PairGeometry, young: [f64; 2], root_radius: [f64; 2
         let h_fp = g.pitch_radius[i] - root_radius[i] + g.profile_shift[i] * g.module;
         (1.0 + 0.5 * (1.2 - h_fp / g.module)) * (1.0 - 0.02 * (20.0 - g.pressure_angle.to_degrees()))
     };
-    let e = 2.0 * young[0] * young[1] / (young[0] + young[1]);
-    let c_single = C_M * 0.5 * (c_b(0) + c_b(1)) * g.helix_angle.cos() * (e / E_STEEL) / q;
-    IsoStiffness { c_single, c_gamma_alpha: c_single * (0.75 * g.contact_ratio + 0.25) }
+    let modulus_ratio = 2.0 * young[0] * young[1] / (young[0] + young[1]) / E_STEEL;
+    let basic_rack_factor = 0.5 * (c_b(0) + c_b(1));
+    let c_single = C_M * basic_rack_factor * g.helix_angle.cos() * modulus_ratio / q;
+    IsoStiffness {
+        c_single,
+        c_gamma_alpha: c_single * (0.75 * g.contact_ratio + 0.25),
+        virtual_teeth: zn,
+        c_theoretical: 1.0 / q,
+        basic_rack_factor,
+        modulus_ratio,
+        cos_helix: g.helix_angle.cos(),
+        contact_ratio: g.contact_ratio,
+    }
 }
