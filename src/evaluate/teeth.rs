@@ -3,7 +3,8 @@
 //! Method B beside it, the largest single-pair stiffness located, and the transmission error at
 //! each asked torque.
 
-use crate::geometry::teeth::iso_6336_method_b::{iso_6336_method_b, IsoStiffness};
+use crate::geometry::stiffness::iso_6336;
+use crate::geometry::teeth::iso_6336_method_b::IsoStiffness;
 use crate::geometry::teeth::load_sharing::LoadSharing;
 use crate::geometry::teeth::transmission_error::TransmissionError;
 use crate::geometry::PairGeometry;
@@ -26,8 +27,7 @@ pub fn teeth_details(scene: &Scene, g: &PairGeometry) -> Option<TeethDetails> {
         return None;
     }
     let stiffness = scene.gears.pair_stiffness()?;
-    let roots = stiffness.teeth.each_ref().map(|t| t.outline.input.root_radius);
-    let iso = iso_6336_method_b(g, stiffness.teeth.each_ref().map(|t| t.young), roots);
+    let iso = iso_6336::method_b(g, &scene.gears.bodies());
     let xtol = 1e-13 * stiffness.path;
     let scale = stiffness.per_width(0.5 * stiffness.path);
     let (_, (k, at)) = extrema(|s| stiffness.per_width(s) / scale, &[0.0, stiffness.path], 32, xtol);
