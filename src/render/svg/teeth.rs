@@ -6,6 +6,7 @@
 use plotters::prelude::*;
 
 use super::panel::{plottable, PALETTE};
+use crate::report::teeth::Series;
 use crate::report::units::Units;
 use crate::report::Report;
 
@@ -62,6 +63,11 @@ fn lines(title: &str, x_desc: &str, y_desc: &str, curves: &[Curve], y_from_zero:
     Ok(svg)
 }
 
+/// The plotted points of a series `y` over positions `x`, each converted for the plot.
+fn points(x: &Series, y: &Series, fx: impl Fn(f64) -> f64, fy: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    x.values.iter().zip(&y.values).map(|(x, y)| (fx(*x), fy(*y))).collect()
+}
+
 /// `position s from A (mm)`.
 fn position_label(u: Units) -> String {
     format!("position s from A ({})", u.length().unit)
@@ -75,14 +81,7 @@ pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
     let pitch = s.mesh.position.values.last().copied().unwrap_or(0.0) - s.mesh.position.values[0];
     let mesh: Vec<(f64, f64)> = [0.0, pitch]
         .iter()
-        .flat_map(|o| {
-            s.mesh
-                .position
-                .values
-                .iter()
-                .zip(&s.mesh.stiffness.values)
-                .map(move |(x, k)| (len.value(x + o), k_unit.value(*k)))
-        })
+        .flat_map(|o| points(&s.mesh.position, &s.mesh.stiffness, |x| len.value(x + o), |k| k_unit.value(k)))
         .collect();
     let (a, b) = (mesh[0].0, mesh[mesh.len() - 1].0);
     let width = s.mean.si() / s.mean_per_width.si();
@@ -92,14 +91,7 @@ pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
         Curve { label: "mesh K(s), potential-energy method".into(), points: mesh, colour: 0 },
         Curve {
             label: "one pair k(s)".into(),
-            points: s
-                .pair
-                .position
-                .values
-                .iter()
-                .zip(&s.pair.stiffness.values)
-                .map(|(x, k)| (len.value(*x), k_unit.value(*k)))
-                .collect(),
+            points: points(&s.pair.position, &s.pair.stiffness, |x| len.value(x), |k| k_unit.value(k)),
             colour: 1,
         },
         Curve { label: format!("mean K̄ = {mean:.1} {}", k_unit.unit), points: vec![(a, mean), (b, mean)], colour: 2 },
@@ -133,14 +125,7 @@ pub fn transmission_error(r: &Report) -> Result<String, String> {
                 torque.unit,
                 micro.with(t.peak_to_peak.si(), 3)
             ),
-            points: t
-                .mesh
-                .position
-                .values
-                .iter()
-                .zip(&t.mesh.ste.values)
-                .map(|(x, d)| (len.value(*x), micro.value(*d)))
-                .collect(),
+            points: points(&t.mesh.position, &t.mesh.ste, |x| len.value(x), |d| micro.value(d)),
             colour: i,
         })
         .collect();
@@ -163,14 +148,7 @@ pub fn load_share(r: &Report) -> Result<String, String> {
         .enumerate()
         .map(|(i, t)| Curve {
             label: format!("{:.0} {}", torque.value(t.pinion_torque.si()), torque.unit),
-            points: t
-                .pair
-                .position
-                .values
-                .iter()
-                .zip(&t.pair.load_share.values)
-                .map(|(x, w)| (len.value(*x), *w))
-                .collect(),
+            points: points(&t.pair.position, &t.pair.load_share, |x| len.value(x), |w| w),
             colour: i,
         })
         .collect();
