@@ -277,7 +277,7 @@ fn units_table() -> String {
         out.push_str(&format!(
             "{:<6} {:<24} {:>24} {:<16} {}\n",
             u.name,
-            u.dimension.name(),
+            u.quantity(),
             si,
             u.dimension.si_unit(),
             equals

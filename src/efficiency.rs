@@ -253,6 +253,34 @@ pub fn mean_power_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: For
     power_loss(ctx, mean_efficiency(ctx, law, formulation).value)
 }
 
+/// Whether a gearbox budget, the thermal balance and the efficiency map charge ISO/TR 14179-2's own
+/// mesh loss P_VZP = P_in μ_mZ H_V (ISO/TR 14179-2:2001 §6.2, with Ohlendorf's loss factor H_V) rather
+/// than the law's line integral: for the law `iso_14179_2` on a helical pair. The standard's μ_mZ was
+/// fitted together with H_V, which is the mean loss of a slice model (each transverse slice shares its
+/// load equally between its own pairs); the contact-line integral with a constant stiffness density
+/// weights the ends of the path and reads 10–20 % higher at β = 15°. A spur pair under equal sharing
+/// gives the same number both ways (H_V is that integral), so its reports keep the line integral.
+pub fn charges_iso_mesh_loss(law: crate::friction::LawId, g: &crate::geometry::PairGeometry) -> bool {
+    law == crate::friction::LawId::Iso14179_2 && g.is_helical()
+}
+
+/// ISO/TR 14179-2's P_VZP = P_in μ_mZ H_V (W), μ_mZ the law's mean |μ| (constant along the path).
+pub fn iso_mesh_loss(input: f64, mean_abs_mu: f64, h_v: f64) -> f64 {
+    input * mean_abs_mu * h_v
+}
+
+/// The mesh loss the budget charges at the context's point (W): [`iso_mesh_loss`] where
+/// [`charges_iso_mesh_loss`] says so (μ_mZ read at the end of contact, the law's |μ| being the same
+/// at every contact off the pitch point), else the law's line integral [`mean_power_loss`].
+pub fn charged_mesh_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation, h_v: f64) -> f64 {
+    if charges_iso_mesh_loss(law.id(), ctx.geometry) {
+        let mu = law.mu(&ctx.contact_at(ctx.geometry.points.e)).abs();
+        iso_mesh_loss(ctx.state.pinion_torque * ctx.state.pinion_speed, mu, h_v)
+    } else {
+        mean_power_loss(ctx, law, formulation)
+    }
+}
+
 /// P = (1 − η̄) T_p ω_p (W) at the context's operating point.
 fn power_loss(ctx: &LawContext, mean_efficiency: f64) -> f64 {
     (1.0 - mean_efficiency) * ctx.state.pinion_torque * ctx.state.pinion_speed

@@ -39,8 +39,13 @@ pub struct MapBest {
 fn efficiency_at(scene: &Scene, eval: &Setup, law_index: usize, f: Formulation, state: OperatingState) -> f64 {
     let ctx = eval.law_context(state);
     let law = law_at(&scene.friction[law_index], &ctx);
-    let mesh = mean_efficiency(&ctx, law.as_ref(), f).value;
     let input = state.pinion_torque * state.pinion_speed;
+    // The mesh loss the budget charges (ISO/TR 14179-2's own for iso_14179_2 on a helical pair).
+    let mesh = if crate::efficiency::charges_iso_mesh_loss(law.id(), &eval.geometry) {
+        1.0 - crate::efficiency::charged_mesh_loss(&ctx, law.as_ref(), f, eval.ohlendorf_loss_factor) / input
+    } else {
+        mean_efficiency(&ctx, law.as_ref(), f).value
+    };
     match eval.loss_budget(scene, &state) {
         Some(b) => b.with_mesh((1.0 - mesh) * input, input).total_efficiency,
         None => mesh,

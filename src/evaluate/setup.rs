@@ -58,9 +58,12 @@ impl Setup {
         Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, &oil))
     }
 
-    /// The contact state at `u` for an operating point.
+    /// The contact state at `u` for an operating point, as the friction laws and the efficiency read
+    /// it ([`crate::geometry::Mesh::contact_at`]): a spur pair's pairs in contact with their shares; a
+    /// helical pair's contact under the mean load per unit line length F_bn / L̄ (the tables and plots
+    /// of the contact show what μ is read at).
     pub fn contact_at(&self, u: f64, state: &OperatingState) -> ContactPoint {
-        self.geometry.contact_at(u, state, self.reduced_modulus, self.sharing())
+        self.law_context(*state).contact_at(u)
     }
 
     /// Evenly spaced positions from A to E for curves, with every point where the number of pairs

@@ -120,7 +120,7 @@ fn point_summary(
             }
             for e in &law.efficiency {
                 let mut row = efficiency_row(&law_row, e);
-                row.budget = budget.as_ref().map(|b| b.with_mesh(e.power_loss, input));
+                row.budget = budget.as_ref().map(|b| b.with_mesh(law.charged_mesh_loss(e, eval, input), input));
                 let mut at_balance = None;
                 if let Some((housing, losses)) = &thermal {
                     let rating = ratings.get(losses, housing, i, e.formulation, si);
@@ -134,7 +134,8 @@ fn point_summary(
                             let thermal = row.thermal.take();
                             let law_row = SummaryRow { mean_abs_mu: Some(law.mean_abs_mu.value), ..law_row.clone() };
                             row = efficiency_row(&law_row, e);
-                            row.budget = point.losses.budget.as_ref().map(|b| b.with_mesh(e.power_loss, input));
+                            let mesh = law.charged_mesh_loss(e, &setup, input);
+                            row.budget = point.losses.budget.as_ref().map(|b| b.with_mesh(mesh, input));
                             row.thermal = thermal;
                             at_balance = Some(e.clone());
                         }

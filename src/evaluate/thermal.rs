@@ -81,7 +81,7 @@ impl<'a> Losses<'a> {
                 sharing: self.setup.sharing(),
             };
             let law = super::setup::law_at(spec, &ctx);
-            efficiency::mean_power_loss(&ctx, law.as_ref(), f)
+            efficiency::charged_mesh_loss(&ctx, law.as_ref(), f, self.setup.ohlendorf_loss_factor)
         } else {
             0.0
         };

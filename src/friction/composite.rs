@@ -182,7 +182,7 @@ impl FrictionLaw for Composite {
     }
     fn notes(&self) -> Vec<String> {
         let mut v = vec![format!(
-            "composite: regimes by Λ (Dowson–Toyoda central film, L_x = {:.3} mm): Λ < 1 smoothed Coulomb, 1 ≤ Λ < 4 Benedict–Kelley eq 14, Λ ≥ 4 Xu",
+            "composite: regimes by He–Cho–Singh's Λ_HCS (Dowson–Toyoda central film, L_x = {:.3} mm; film table): Λ_HCS < 1 smoothed Coulomb, 1 ≤ Λ_HCS < 4 Benedict–Kelley eq 14, Λ_HCS ≥ 4 Xu",
             self.filter_cutoff * 1e3
         )];
         if self.mu_from_benedict_kelley {

@@ -96,7 +96,7 @@ impl FrictionLaw for Xu {
         } else if !(0.5..=25.0).contains(&c.entrainment_velocity) {
             Err("entrainment velocity outside 0.5–25 m/s")
         } else if self.film.is_some_and(|(f, sigma)| f.minimum(c) / sigma < 1.0) {
-            Err("h_min/σ < 1: a full-film fit used in boundary lubrication")
+            Err("specific film λ = h_min/σ < 1: a full-film fit used in boundary lubrication")
         } else {
             Ok(())
         }

@@ -48,12 +48,19 @@ pub fn efficiency(out: &mut String, r: &Report) {
     );
     header(out, &cols);
     for e in &shown {
+        // The mesh loss the total charges (ISO/TR 14179-2's own for iso_14179_2 on a helical pair).
+        let mesh = e.budget_mesh_loss();
+        let eta = if e.budget_charges_iso_mesh_loss {
+            1.0 - mesh.si() / (e.pinion_torque.si() * e.pinion_speed.si())
+        } else {
+            e.mean_efficiency.0
+        };
         let mut cells = vec![
             point_label(r, e),
             kw.cell(e.pinion_torque.si() * e.pinion_speed.si(), 3),
             law_words(&e.label),
-            fixed(100.0 * e.mean_efficiency.0, 3),
-            w.q(&e.power_loss, 2),
+            fixed(100.0 * eta, 3),
+            w.q(&mesh, 2),
         ];
         if let Some(b) = &e.budget {
             let sum = |load: bool| -> f64 {
@@ -66,7 +73,7 @@ pub fn efficiency(out: &mut String, r: &Report) {
             };
             cells.extend([
                 w.cell(sum(false), 2),
-                w.cell(e.power_loss.si() + sum(true), 2),
+                w.cell(mesh.si() + sum(true), 2),
                 w.q(&b.total_loss, 2),
                 fixed(100.0 * b.total_efficiency.0, 3),
             ]);
@@ -74,6 +81,14 @@ pub fn efficiency(out: &mut String, r: &Report) {
         row(out, &cells);
     }
     let _ = writeln!(out);
+    if let Some(e) = shown.iter().find(|e| e.budget_charges_iso_mesh_loss) {
+        let ratio = e.ohlendorf.map_or(1.0, |o| o.line_integral_ratio.0);
+        let _ = writeln!(
+            out,
+            "ISO/TR 14179-2 on a helical pair: η̄ mesh, P mesh and the total are the standard's own P_VZP = P_in μ_mZ H_V (Ohlendorf's H_V); the contact-line integral with a constant stiffness density reads {} × that (both under Loss budget, the line integral's η̄ under Efficiency).\n",
+            fixed(ratio, 4)
+        );
+    }
     if shown.len() < recs.len() {
         ranges(out, r, &recs);
     }

@@ -56,9 +56,11 @@ fn contact_section(out: &mut String, r: &Report) {
     for p in r.plots.iter().filter(|p| matches!(p.kind, PlotKind::ContactState | PlotKind::Film)) {
         let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
     }
+    let helical = r.geometry.helical.is_some();
     let _ = writeln!(
         out,
-        "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.\n"
+        "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.{}\n",
+        if helical { HELICAL_CONTACT } else { "" }
     );
     let u = r.units();
     let (len, vel) = (u.length(), u.velocity());
@@ -93,11 +95,15 @@ fn contact_section(out: &mut String, r: &Report) {
             u.pressure().heading("p_H"),
             u.micro().heading("b_H"),
         ];
-        header(out, &cols);
+        // A helical pair's contact is one line's point under the mean line load: no count of pairs.
+        let keep = |cells: Vec<String>| -> Vec<String> {
+            cells.into_iter().enumerate().filter(|(i, _)| !helical || *i != PAIRS_COLUMN).map(|(_, c)| c).collect()
+        };
+        header(out, &keep(cols.to_vec()));
         for c in &op.contact {
             row(
                 out,
-                &[
+                &keep(vec![
                     c.point.clone().unwrap_or_default(),
                     len.q(&c.distance_from_t1, 3),
                     len.q(&c.s, 3),
@@ -114,13 +120,20 @@ fn contact_section(out: &mut String, r: &Report) {
                     u.force_per_width().q(&c.load_per_width, 1),
                     u.pressure().q(&c.hertz_pressure, 1),
                     u.micro().q(&c.hertz_half_width, 1),
-                ],
+                ]),
             );
         }
         let _ = writeln!(out);
-        super::markdown_friction::point(out, op, r.geometry.helical.is_some(), u);
+        // The helical note once, under the first operating point's efficiency table.
+        super::markdown_friction::point(out, op, helical, op.index == r.operating_points[0].index, u);
     }
 }
+
+/// The contact table's column of pairs in contact (left out for a helical pair).
+const PAIRS_COLUMN: usize = 11;
+
+/// How a helical pair's contact table reads (the state μ along the line of action is read at).
+const HELICAL_CONTACT: &str = " Helical pair: each row is a point of a contact line under the mean load per unit line length w = F_bn / L̄ (L̄ = ε_α b / cos β_b, the mean total contact length), the state μ along the line of action below is read at; share = w b / F_bn = b / L̄. The efficiency integrates along the contact lines with w = F_bn / L(t) (Plane of action, above).";
 
 /// Every plot of the report that no section above links, so that report.md links every plot the
 /// folder holds.

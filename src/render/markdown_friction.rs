@@ -7,10 +7,11 @@ use crate::report::friction::MuValue;
 use crate::report::units::Units;
 use crate::report::{formulation_name, OperatingPointReport, Report};
 
-/// Film, μ along the line of action, and efficiency at one operating point.
-pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, u: Units) {
+/// Film, μ along the line of action, and efficiency at one operating point; the notes that define
+/// what the tables read (film parameters, the helical model) under the first operating point only.
+pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, first: bool, u: Units) {
     if let Some(film) = &op.film {
-        film_lines(out, film, u);
+        film_lines(out, film, first, u);
     }
     if op.friction.is_empty() {
         return;
@@ -89,7 +90,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, u: Unit
         }
     }
     let _ = writeln!(out);
-    if helical {
+    if helical && first {
         let _ = writeln!(out, "{HELICAL_NOTE}\n");
     }
     if let Some(plot) = &op.plot {
@@ -100,11 +101,17 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, u: Unit
 /// Why 1 − μ̄ H_V differs from the helical mean (physics notes, "Helical pairs").
 pub const HELICAL_NOTE: &str = "Helical pair: μ is integrated along every contact line, each point a spur-like contact at its own u with the load per unit length w = F_bn / L(t) (constant stiffness density, He & Singh). The efficiency uses the normal-force arms r_b cos β_b (He & Singh eq 8). The last column, 1 − μ̄ H_V with Ohlendorf's H_V (ISO/TR 14179-2), is NOT the mean of this model: H_V is the mean loss of a slice model, in which each transverse slice of the face shares its load equally between its own pairs in contact. Constant stiffness density puts more load where more line length is, which weights the ends of the path of contact (where sliding is fastest): at β = 15° the loss is about 1.1–1.2 × μ H_V. The two agree as β → 0; when ε_β is an integer L(t) is constant and the loss is the uniform-load value μ (1/r_b1 + 1/r_b2)/cos β_b · (AP² + PE²)/(2 AE). The column μ along the line of action is evaluated under the mean load per unit length F_bn / L̄.";
 
-/// The film thickness and Λ at the characteristic points.
-fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow], u: Units) {
-    let _ = writeln!(out, "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and Λ:\n");
+/// What the film table's two parameters are and which law reads which.
+pub const FILM_PARAMETERS: &str = "Λ_HCS = h_c / R_q,comp · √(L_x / 2b_H) is He–Cho–Singh's film parameter (eq 21a): the central film over the composite roughness R_q,comp = √(Rq1² + Rq2²) filtered at the cut-off L_x; the composite law picks its regime by it (boundary below 1, mixed to 4, full film above). λ = h_min / σ, σ = √(Rq1² + Rq2²), is the specific film thickness: the minimum film over the unfiltered composite roughness; Xu's validity reads it (a full-film fit, flagged where λ < 1). Neither is the other: Λ_HCS / λ = (h_c / h_min) · √(L_x / 2b_H), typically 2–4 at gear contact widths.";
+
+/// The film thickness and both film parameters at the characteristic points.
+fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow], first: bool, u: Units) {
+    let _ = writeln!(
+        out,
+        "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and two film parameters:\n"
+    );
     let (len, micro) = (u.length(), u.micro());
-    header(out, &["point", &len.heading("T1C"), &micro.heading("h_c"), &micro.heading("h_min"), "Λ"]);
+    header(out, &["point", &len.heading("T1C"), &micro.heading("h_c"), &micro.heading("h_min"), "Λ_HCS", "λ"]);
     for f in film {
         row(
             out,
@@ -114,10 +121,14 @@ fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow], u: Un
                 micro.q(&f.central_film, 4),
                 micro.q(&f.minimum_film, 4),
                 f.lambda.map_or("—".into(), |l| fixed(l.0, 3)),
+                f.specific_film.map_or("—".into(), |l| fixed(l.0, 3)),
             ],
         );
     }
     let _ = writeln!(out);
+    if first {
+        let _ = writeln!(out, "{FILM_PARAMETERS}\n");
+    }
 }
 
 /// The sweep table and plots.

@@ -154,7 +154,7 @@ pub fn budget_section(r: &Report) -> String {
     if helical {
         let _ = writeln!(
             out,
-            "Helical pair: the mesh column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line (the sum of the budget uses it: it follows the load along the inclined lines the law is evaluated on). Beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two.\n"
+            "Helical pair: the line-integral column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line; beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two. The total charges the standard's own for the law `iso_14179_2`, whose μ_mZ was fitted with H_V (its slice model: each transverse slice shares its load equally between its own pairs), and the line integral for every other law (marked * in the mesh column).\n"
         );
     }
     let power = r.units().power();
@@ -162,7 +162,7 @@ pub fn budget_section(r: &Report) -> String {
     let in_unit = |h: &str| h.strip_suffix(" W").map_or(h.to_string(), |n| power.heading(n));
     let mut cols = vec!["operating point".to_string(), "law".into(), "formulation".into(), power.heading("mesh")];
     if helical {
-        cols.extend([power.heading("ISO P_in μ̄ H_V"), "ratio".into()]);
+        cols.extend([power.heading("line integral"), power.heading("ISO P_in μ̄ H_V"), "ratio".into()]);
     }
     cols.extend(COLUMNS.iter().map(|c| in_unit(c.heading)));
     cols.extend([power.heading("total"), "mesh %".into(), "η total %".into()]);
@@ -170,16 +170,19 @@ pub fn budget_section(r: &Report) -> String {
     let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| power.q(&q, 2));
     for e in &r.efficiency {
         let Some(b) = &e.budget else { continue };
+        let mesh = e.budget_mesh_loss();
+        let mark = if helical && !e.budget_charges_iso_mesh_loss { "*" } else { "" };
         let mut cells =
-            vec![point_label(r, e), law_words(&e.label), e.formulation.name().to_string(), power.q(&e.power_loss, 2)];
+            vec![point_label(r, e), law_words(&e.label), e.formulation.name().to_string(), power.q(&mesh, 2) + mark];
         if helical {
+            cells.push(power.q(&e.power_loss, 2));
             cells.push(w(e.ohlendorf.map(|o| o.power_loss)));
             cells.push(e.ohlendorf.map_or("—".into(), |o| fixed(o.line_integral_ratio.0, 4)));
         }
         cells.extend(COLUMNS.iter().map(|c| w(b.part(c.column))));
         cells.extend([
             power.q(&b.total_loss, 2),
-            fixed(100.0 * e.power_loss.si() / b.total_loss.si(), 1),
+            fixed(100.0 * mesh.si() / b.total_loss.si(), 1),
             fixed(100.0 * b.total_efficiency.0, 3),
         ]);
         row(&mut out, &cells);

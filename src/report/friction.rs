@@ -71,8 +71,12 @@ pub struct FilmRow {
     pub distance_from_t1: Q,
     pub central_film: Q,
     pub minimum_film: Q,
+    /// He–Cho–Singh's film parameter Λ_HCS = h_c / R_comp · sqrt(L_x / (2 b_H)).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lambda: Option<Num>,
+    /// The specific film thickness λ = h_min / σ, σ = sqrt(Rq1² + Rq2²).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub specific_film: Option<Num>,
 }
 
 /// One record per (operating point, law, formulation): the flat table of a sweep.
@@ -99,6 +103,22 @@ pub struct EfficiencyRecord {
     /// The loss budget at this point with this record's mesh loss, when the scene describes its gearbox.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub budget: Option<super::losses::BudgetRecord>,
+    /// True when the budget charges ISO/TR 14179-2's own P_in μ̄ H_V (`ohlendorf_power_loss`) as the
+    /// mesh loss instead of `power_loss`, the line integral: the law `iso_14179_2` on a helical pair
+    /// with a gearbox ([`crate::efficiency::charges_iso_mesh_loss`]).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub budget_charges_iso_mesh_loss: bool,
+}
+
+impl EfficiencyRecord {
+    /// The mesh loss the budget's total charges: ISO/TR 14179-2's own where
+    /// [`EfficiencyRecord::budget_charges_iso_mesh_loss`], else the law's line integral.
+    pub fn budget_mesh_loss(&self) -> Q {
+        match self.ohlendorf {
+            Some(o) if self.budget_charges_iso_mesh_loss => o.power_loss,
+            _ => self.power_loss,
+        }
+    }
 }
 
 /// ISO/TR 14179-2's mesh loss beside the contact-line integral.
@@ -178,6 +198,7 @@ pub fn film_rows(pe: &PointEvaluation) -> Option<Vec<FilmRow>> {
                 central_film: m(f.central),
                 minimum_film: m(f.minimum),
                 lambda: f.lambda.map(Num),
+                specific_film: f.specific.map(Num),
             })
             .collect()
     })
@@ -208,6 +229,8 @@ pub fn efficiency_records(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Ve
                 parameters: Parameters(r.parameters.clone()),
                 ohlendorf: ohlendorf_loss(helical, r, eval.ohlendorf_loss_factor),
                 budget: r.budget.as_ref().map(|b| super::losses::budget_record(b, scene.gearbox.as_ref())),
+                budget_charges_iso_mesh_loss: r.budget.is_some()
+                    && crate::efficiency::charges_iso_mesh_loss(spec.law, &eval.geometry),
             })
         })
         .collect()

@@ -226,7 +226,7 @@ fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Pla
         ));
     }
     if report.operating_points.iter().any(|o| o.film.is_some()) {
-        report.plots.push(PlotRef::new(PlotKind::Film, "Film thickness and Λ along the line of action"));
+        report.plots.push(PlotRef::new(PlotKind::Film, "Film thickness and Λ_HCS along the line of action"));
     }
     if report.loss_budget && !report.efficiency.is_empty() {
         report.plots.push(PlotRef::new(

@@ -89,7 +89,9 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     if let (Some(gb), Some(block), false) = (&gearbox, singles.get("gearbox"), lubricant_failed) {
         super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
     }
-    check_film_needs(&analyses, lubricant.as_ref(), &mut errors);
+    if !lubricant_failed {
+        check_film_needs(&analyses, lubricant.as_ref(), &mut errors);
+    }
     if let Some(g) = gears.as_ref().filter(|g| g.wants_teeth(&analyses, dynamics.as_ref())) {
         super::lower_teeth::check_teeth(g, &mut errors);
     }

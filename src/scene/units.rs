@@ -24,10 +24,30 @@ pub struct UnitDef {
     /// What this unit must equal, as `(multiplier, unit expression)`; tested.
     pub composition: Option<(f64, &'static str)>,
     pub description: &'static str,
+    /// An energy (J, kWh): SI-equal to a torque (N·m) but not one. A torque is a force times a
+    /// length; a key that expects a torque refuses an energy unit ([`UnitDef::quantity`]).
+    pub energy: bool,
+}
+
+impl UnitDef {
+    /// The quantity this unit measures, as `gearloss units` lists it: its dimension's name, or
+    /// "energy" for the energy units that share the torque's SI dimension.
+    pub fn quantity(&self) -> &'static str {
+        if self.energy {
+            "energy"
+        } else {
+            self.dimension.name()
+        }
+    }
+}
+
+/// An energy unit (dimension N·m, [`UnitDef::energy`]).
+const fn e(name: &'static str, factor: f64, composition: (f64, &'static str), description: &'static str) -> UnitDef {
+    UnitDef { energy: true, ..c(name, factor, Dimension::TORQUE, composition, description) }
 }
 
 const fn u(name: &'static str, factor: f64, dimension: Dimension, description: &'static str) -> UnitDef {
-    UnitDef { name, factor, dimension, offset: 0.0, composition: None, description }
+    UnitDef { name, factor, dimension, offset: 0.0, composition: None, description, energy: false }
 }
 
 const fn c(
@@ -37,7 +57,7 @@ const fn c(
     composition: (f64, &'static str),
     description: &'static str,
 ) -> UnitDef {
-    UnitDef { name, factor, dimension, offset: 0.0, composition: Some(composition), description }
+    UnitDef { name, factor, dimension, offset: 0.0, composition: Some(composition), description, energy: false }
 }
 
 const INCH: f64 = 0.0254;
@@ -85,6 +105,7 @@ pub const UNITS: &[UnitDef] = &[
         dimension: Dimension::TEMPERATURE,
         offset: 273.15,
         composition: None,
+        energy: false,
         description: "degree Celsius (absolute temperature, only on its own)",
     },
     UnitDef {
@@ -93,6 +114,7 @@ pub const UNITS: &[UnitDef] = &[
         dimension: Dimension::TEMPERATURE,
         offset: 273.15,
         composition: None,
+        energy: false,
         description: "degree Celsius (sign; the same as degC)",
     },
     UnitDef {
@@ -101,6 +123,7 @@ pub const UNITS: &[UnitDef] = &[
         dimension: Dimension::TEMPERATURE,
         offset: 459.67 * 5.0 / 9.0,
         composition: None,
+        energy: false,
         description: "degree Fahrenheit (absolute temperature, only on its own): K = (°F + 459.67) · 5/9",
     },
     UnitDef {
@@ -109,6 +132,7 @@ pub const UNITS: &[UnitDef] = &[
         dimension: Dimension::TEMPERATURE,
         offset: 459.67 * 5.0 / 9.0,
         composition: None,
+        energy: false,
         description: "degree Fahrenheit (sign; the same as degF)",
     },
     // force
@@ -133,21 +157,27 @@ pub const UNITS: &[UnitDef] = &[
     c("St", 1e-4, Dimension::KINEMATIC_VISCOSITY, (1.0, "cm^2/s"), "stokes"),
     c("cSt", 1e-6, Dimension::KINEMATIC_VISCOSITY, (1.0, "mm^2/s"), "centistokes"),
     // power and energy
-    c("J", 1.0, Dimension::TORQUE, (1.0, "N*m"), "joule"),
-    c("kJ", 1e3, Dimension::TORQUE, (1e3, "J"), "kilojoule"),
-    c("MJ", 1e6, Dimension::TORQUE, (1e3, "kJ"), "megajoule"),
+    e("J", 1.0, (1.0, "N*m"), "joule"),
+    e("kJ", 1e3, (1e3, "J"), "kilojoule"),
+    e("MJ", 1e6, (1e3, "kJ"), "megajoule"),
     c("W", 1.0, Dimension::POWER, (1.0, "J/s"), "watt"),
     c("mW", 1e-3, Dimension::POWER, (1e-3, "W"), "milliwatt"),
     c("kW", 1e3, Dimension::POWER, (1e3, "W"), "kilowatt"),
     c("MW", 1e6, Dimension::POWER, (1e3, "kW"), "megawatt"),
-    c("Wh", 3600.0, Dimension::TORQUE, (3600.0, "J"), "watt-hour"),
-    c("kWh", 3.6e6, Dimension::TORQUE, (1e3, "Wh"), "kilowatt-hour"),
+    e("Wh", 3600.0, (3600.0, "J"), "watt-hour"),
+    e("kWh", 3.6e6, (1e3, "Wh"), "kilowatt-hour"),
     c("hp", 550.0 * LBF * 12.0 * INCH, Dimension::POWER, (550.0, "lbf*ft/s"), "horsepower (mechanical)"),
 ];
 
 /// Example units of a dimension from the table, for hints.
 pub fn example_units(dimension: Dimension) -> String {
-    let names: Vec<&str> = UNITS.iter().filter(|u| u.dimension == dimension).map(|u| u.name).take(6).collect();
+    // A torque has no named unit of its own: the compound units people write. (Energies share
+    // its SI dimension but are never an example of a torque.)
+    if dimension == Dimension::TORQUE {
+        return "N*m, N*mm, kN*m, lbf*in, lbf*ft".into();
+    }
+    let names: Vec<&str> =
+        UNITS.iter().filter(|u| u.dimension == dimension && !u.energy).map(|u| u.name).take(6).collect();
     if names.is_empty() {
         dimension.si_unit()
     } else {

@@ -65,6 +65,23 @@ pub fn checked_scale(
         errors.push(Diagnostic::new(DiagnosticKind::WrongDimension, span, reason).hint(hint));
         return None;
     }
+    if let Some(u) = unit.filter(|_| expected == Dimension::TORQUE) {
+        // J, kWh: the torque's SI dimension, but an energy (a torque is a force times a length).
+        if let Some((name, span, _)) = u.factors.iter().find(|(n, _, _)| units::lookup(n).is_some_and(|d| d.energy)) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::WrongDimension,
+                    *span,
+                    format!("`{key}` expects a torque, but `{name}` is an energy"),
+                )
+                .hint(format!(
+                    "a torque is a force times a length: use {}",
+                    super::units::example_units(Dimension::TORQUE)
+                )),
+            );
+            return None;
+        }
+    }
     Some(scale)
 }
 

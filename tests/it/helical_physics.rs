@@ -226,3 +226,77 @@ fn external_mean_equals_an_independent_double_integral() {
     let independent = 1.0 - loss / (c.state.pinion_torque * c.state.pinion_speed);
     assert!((eta - independent).abs() < 1e-9, "{eta} vs {independent}");
 }
+
+/// Issue 46: a helical pair's contact table is the efficiency's own contact model. At every row of
+/// every operating point of specs/metric_helical.gear, the table's w, p_H and b_H equal the state
+/// the laws read ([`LawContext::contact_at`]: the mean load per unit line length F_bn / L̄, built
+/// here from the scene, not from the report), to 1e-12 relative, and each law's μ in the friction
+/// table is that law's μ at that state (1e-12). Spur loads (1/n of F_bn/b, jumps at B and D) would
+/// miss by 30 % or more.
+#[test]
+fn helical_contact_table_is_the_efficiency_contact_model() {
+    use gearloss::report::friction::MuValue;
+    let scene = crate::scene(&crate::root().join("specs/metric_helical.gear"));
+    let report = gearloss::report_of(&scene);
+    let g = scene.gears.geometry().unwrap();
+    let (p, w) = (&scene.gears.pinion.material, &scene.gears.wheel.material);
+    let e_r = reduced_modulus(
+        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
+        [p.poisson_ratio.value, w.poisson_ratio.value],
+    );
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1e-300);
+    let l_bar = g.mean_contact_length();
+    assert!(!report.operating_points.is_empty());
+    for op in &report.operating_points {
+        let state = OperatingState { pinion_torque: op.pinion_torque.si(), pinion_speed: op.pinion_speed.si() };
+        let ctx = LawContext { geometry: &g, state, tribology: tribology(&scene, e_r), sharing: Sharing::Equal };
+        let f_bn = g.normal_load(&state);
+        for (i, row) in op.contact.iter().enumerate() {
+            let c = ctx.contact_at(row.distance_from_t1.si());
+            assert!(close(row.load_per_width.si(), c.load_per_width), "w at row {i}");
+            assert!(close(row.load_per_width.si(), f_bn / l_bar), "w = F_bn/L̄ at row {i}");
+            assert!(close(row.hertz_pressure.si(), c.hertz_pressure), "p_H at row {i}");
+            assert!(close(row.hertz_half_width.si(), c.hertz_half_width), "b_H at row {i}");
+            for (law, spec) in op.friction.iter().zip(&scene.friction) {
+                let built = spec.build(&ctx).unwrap();
+                if let MuValue::Value(mu) = law.mu_along_loa[i].mu {
+                    assert!(close(mu.0, built.mu(&c)), "μ of {} at row {i}: {} vs {}", law.label, mu.0, built.mu(&c));
+                }
+            }
+        }
+    }
+}
+
+/// Issue 46: with the law `iso_14179_2` on a helical pair, the budget's total is the standard's own:
+/// P_V = P_in μ_mZ H_V + the parts beside the mesh (specs/helical_gearbox.gear, every record, 1e-12
+/// relative), μ_mZ read from the law built here at the record's point and H_V from Ohlendorf's
+/// formula; the line integral (constant stiffness density) stays in the record, 10–25 % higher.
+#[test]
+fn iso_total_of_a_helical_pair_is_the_standards_own() {
+    let scene = crate::scene(&crate::root().join("specs/helical_gearbox.gear"));
+    let report = gearloss::report_of(&scene);
+    let g = scene.gears.geometry().unwrap();
+    let (p, w) = (&scene.gears.pinion.material, &scene.gears.wheel.material);
+    let e_r = reduced_modulus(
+        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
+        [p.poisson_ratio.value, w.poisson_ratio.value],
+    );
+    assert!(!report.efficiency.is_empty());
+    for e in &report.efficiency {
+        assert_eq!(e.law, gearloss::friction::LawId::Iso14179_2);
+        let state = OperatingState { pinion_torque: e.pinion_torque.si(), pinion_speed: e.pinion_speed.si() };
+        let ctx = LawContext { geometry: &g, state, tribology: tribology(&scene, e_r), sharing: Sharing::Equal };
+        let law = scene.friction[0].build(&ctx).unwrap();
+        let mu = law.mu(&ctx.contact_at(g.points.e)).abs();
+        let input = state.pinion_torque * state.pinion_speed;
+        let iso = input * mu * ohlendorf_loss_factor(&ctx);
+        let b = e.budget.as_ref().unwrap();
+        let beside: f64 = b.parts.0.iter().map(|(_, q)| q.si()).sum();
+        let total = b.total_loss.si();
+        assert!(((iso + beside) - total).abs() <= 1e-12 * total, "total {total} vs {iso} + {beside}");
+        assert!(e.budget_charges_iso_mesh_loss);
+        let ratio = e.power_loss.si() / iso;
+        assert!((1.1..1.25).contains(&ratio), "line integral / ISO = {ratio}");
+        assert!((b.total_efficiency.0 - (1.0 - total / input)).abs() < 1e-15);
+    }
+}

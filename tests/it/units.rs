@@ -172,3 +172,26 @@ fn common_spellings_get_the_unit_they_mean() {
         );
     }
 }
+
+/// Issue 46: the energies (J, kJ, MJ, Wh, kWh) share the torque's SI dimension but are not torques:
+/// a key that expects a torque refuses them with a hint of torque units only, `gearloss units`
+/// lists them as energies, and they still compose (`kJ/K` is a heat capacity, `kWh` = 3.6e6 N·m).
+#[test]
+fn energies_are_not_torques() {
+    let energies: Vec<&str> = UNITS.iter().filter(|u| u.energy).map(|u| u.name).collect();
+    assert_eq!(energies, ["J", "kJ", "MJ", "Wh", "kWh"]);
+    for name in &energies {
+        let def = units::lookup(name).unwrap();
+        assert_eq!(def.dimension, Dimension::TORQUE);
+        assert_eq!(def.quantity(), "energy");
+        let errors = unit_scale(name, Dimension::TORQUE).unwrap_err();
+        assert!(errors[0].reason.contains("is an energy"), "{}", errors[0].reason);
+        let hint = errors[0].hints.join(" ");
+        assert!(hint.contains("lbf*in") && !energies.iter().any(|e| hint.contains(&format!(" {e},"))), "{hint}");
+    }
+    assert_eq!(unit_scale("kJ/K", Dimension::HEAT_CAPACITY).unwrap(), 1e3);
+    assert!(close(scale("kWh").factor, 3.6e6));
+    assert!(close(unit_scale("N*mm", Dimension::TORQUE).unwrap(), 1e-3));
+    assert!(!units::example_units(Dimension::TORQUE).contains('J'));
+    assert_eq!(units::lookup("N").unwrap().quantity(), "force");
+}

@@ -120,8 +120,15 @@ def test_write_gives_the_cli_folder(tmp_path):
 def test_tidy_tables():
     gearbox = gearloss.run(scene(ROOT / "specs/fzg_c14_gearbox.gear"))
     budget = gearbox.budget
-    assert {"total_loss_W", "bearings_load_W", "seals_W"} <= set(budget.columns)
-    assert len(budget) == gearbox.efficiency["point"].nunique()
+    assert {"total_loss_W", "bearings_load_W", "seals_W", "label", "formulation"} <= set(budget.columns)
+    # Every law and formulation (issue 46: it used to keep the first of each point only).
+    assert len(budget) == len(gearbox.efficiency)
+    keyed = budget.set_index(["point", "label", "formulation"])
+    assert keyed.index.is_unique
+    assert budget["label"].nunique() == 2 and budget["formulation"].nunique() == 2
+    for _, row in budget.iterrows():
+        parts = row["gear_no_load_W"] + row["bearings_no_load_W"] + row["bearings_load_W"] + row["seals_W"]
+        assert abs(row["power_loss_W"] + parts - row["total_loss_W"]) <= 1e-9 * row["total_loss_W"]
     dynamics = gearloss.run(scene(ROOT / "specs/fzg_dynamics.gear")).dynamics
     assert {"spectral_radius", "pinion_speed_rad_s"} <= set(dynamics.columns) and len(dynamics) > 0
     assert gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).budget.empty

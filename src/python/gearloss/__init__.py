@@ -154,14 +154,18 @@ class Report:
 
     @property
     def budget(self):
-        """The loss budget per point (W): gears without load, bearings, seals, total, and each
-        bearing's loads and losses; empty without a gearbox."""
+        """The loss budget (W) of every point, law and formulation: a row each, keyed by ``point``,
+        ``law``, ``label`` and ``formulation``, with the mesh loss the budget was given
+        (``power_loss_W``), gears without load, bearings, seals, total and η total, and each
+        bearing's loads and losses; empty without a gearbox. (The mesh loss and the total differ
+        between laws and formulations; the parts beside the mesh do not.)"""
         e = self.efficiency
-        keep = [c for c in e.columns if c in ("point", "pinion_torque_N_m", "pinion_speed_rad_s")]
-        parts = [c for c in e.columns if c.endswith("_W") and c != "power_loss_W" or c.endswith("_N")]
+        keys = ("point", "pinion_torque_N_m", "pinion_speed_rad_s", "law", "label", "formulation")
+        keep = [c for c in keys if c in e.columns]
+        parts = [c for c in e.columns if c.endswith("_W") or c.endswith("_N")]
         if not any(c.startswith("total_loss") for c in parts):
             return e.iloc[0:0, 0:0]
-        return e[keep + parts + ["total_efficiency"]].drop_duplicates("point").reset_index(drop=True)
+        return e[keep + parts + ["total_efficiency"]].reset_index(drop=True)
 
     @property
     def dynamics(self):

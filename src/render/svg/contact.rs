@@ -151,12 +151,12 @@ pub fn film(r: &Report) -> Result<String, String> {
     let lambda = xy(&|f| f.lambda.map(|l| l.0));
     if lambda.iter().any(|(_, p)| !p.is_empty()) {
         panels.push(Panel {
-            y_label: "film parameter Λ".into(),
+            y_label: "film parameter Λ_HCS (He–Cho–Singh)".into(),
             x_label: along_label(r),
             xy: lambda,
             marks: marks_mm(r),
             ..Default::default()
         });
     }
-    figure(&format!("{}: film thickness and Λ along the line of action", r.title), &panels)
+    figure(&format!("{}: film thickness and Λ_HCS along the line of action", r.title), &panels)
 }

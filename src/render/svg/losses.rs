@@ -32,8 +32,8 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
                 crate::render::headline::point_at(r, &x.pinion_torque, &x.pinion_speed),
                 crate::render::table::law_words(&x.label)
             );
-            let powers =
-                std::iter::once(power.value(x.power_loss.si())).chain(COLUMNS.iter().map(|c| w(b.part(c.column))));
+            let powers = std::iter::once(power.value(x.budget_mesh_loss().si()))
+                .chain(COLUMNS.iter().map(|c| w(b.part(c.column))));
             Some((label, powers.collect::<Vec<f64>>()))
         })
         .collect();
