@@ -2,7 +2,8 @@
 //!
 //! - one operating point, every law, both formulations, means to a relative tolerance of 1e-10 (target < 200 µs);
 //! - a 10 000-point torque × speed sweep with three laws, the whole evaluation stage (target < 2 s on 2 cores);
-//! - a whole run of the binary over a 200 × 200 map with one law (target < 20 s on 2 cores).
+//! - a whole run of the binary over a 200 × 200 map with one law (target < 20 s on 2 cores);
+//! - the plain sweep's per-point cost and a whole run in memory (issue 47: `plain_sweep`).
 
 use gearloss::efficiency::{mean_abs_mu, mean_efficiencies};
 
@@ -105,6 +106,46 @@ fn whole_run_200x200(bencher: divan::Bencher) {
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     });
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 47's guard: the plain sweep (a spur pair, one Coulomb law, both formulations, efficiency
+/// only, no gearbox) that got 1.2× slower and 1.3× bigger in one round of work without anyone
+/// asking for more. README "Sweeps at scale" has the whole-run figure; DEVELOPING.md "Speed" says
+/// how to compare a change against the previous release.
+mod plain_sweep {
+    fn plain(torques: &str, speeds: &str) -> gearloss::Scene {
+        let text = super::ALL_LAWS
+            .replace("OP_TORQUE", torques)
+            .replace("OP_SPEED", speeds)
+            .replace("LAWS", "coulomb(mu = 0.05)")
+            .replace("efficiency  friction_along_loa", "efficiency(formulations = [external, internal])");
+        gearloss::check("plain.gear", &text).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// The per-point cost: 400 points streamed (η̄ of both formulations to 1e-10, η(τ)'s range
+    /// located, the summary rows built and the tally folded; the rows go nowhere), as items.
+    #[divan::bench(sample_count = 10, sample_size = 1)]
+    fn per_point_coulomb_both_formulations(bencher: divan::Bencher) {
+        let scene = plain("50..400 N*m count 20", "100..3000 rpm count 20");
+        let plan = gearloss::Plan::new(&scene.operating, None, &[]);
+        bencher.counter(divan::counter::ItemsCount::new(400usize)).bench(|| {
+            let tally =
+                gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::records::NoRecords, &gearloss::Quiet);
+            divan::black_box(tally.expect("no writes").points)
+        });
+    }
+
+    /// The whole run in memory on 40 × 40 points: the sweep, the records, the report (its 3 000
+    /// kept rows), report.json written and read back, report.md and the plots.
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn whole_run_in_memory_1600_points(bencher: divan::Bencher) {
+        let scene = super::ALL_LAWS
+            .replace("OP_TORQUE", "50..400 N*m count 40")
+            .replace("OP_SPEED", "100..3000 rpm count 40")
+            .replace("LAWS", "coulomb(mu = 0.05)")
+            .replace("efficiency  friction_along_loa", "efficiency(formulations = [external, internal])");
+        bencher.bench(|| divan::black_box(gearloss::run_to_files("plain.gear", &scene).expect("runs").files.len()));
+    }
 }
 
 mod dynamics {
@@ -400,6 +441,19 @@ mod thermal {
         let losses = Losses::new(&scene, &eval).unwrap();
         let housing = scene.housing.clone().unwrap();
         let cycle = scene.duty_cycle.clone().unwrap();
+        b.bench(|| duty_cycle(&losses, &housing, &cycle, Some(363.15)));
+    }
+
+    /// Issue 40: one step of 10⁶ h (120 N·m, 2500 rpm) with the scene's own P_V(θ): the step settles
+    /// within hours and its rest is closed form (84 s before, marching to the end). Target < 10 ms.
+    #[divan::bench(sample_count = 10, sample_size = 1)]
+    fn duty_cycle_settled_million_hours(b: divan::Bencher) {
+        let scene = scene();
+        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
+        let losses = Losses::new(&scene, &eval).unwrap();
+        let housing = scene.housing.clone().unwrap();
+        let mut cycle = scene.duty_cycle.clone().unwrap();
+        cycle.steps = vec![gearloss::thermal::DutyStep { duration: 3.6e9, ..cycle.steps[1].clone() }];
         b.bench(|| duty_cycle(&losses, &housing, &cycle, Some(363.15)));
     }
 }

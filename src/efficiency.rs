@@ -21,7 +21,7 @@ use crate::geometry::contact::Sharing;
 use crate::geometry::mesh::{LINE_NODES, MAX_CONTACTS};
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::{integrate_singular, integrate_singular_n, Integral};
-use crate::numerics::roots::extrema;
+use crate::numerics::roots::{extrema, extrema_each};
 
 /// The formulations of the output torque (Fernandes §2.3–2.4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -311,19 +311,33 @@ pub fn evaluate_efficiencies(
     }
     let breaks = break_times(ctx, law);
     let means = mean_efficiencies_between(ctx, law, &breaks);
-    // Both formulations' extremes sample η(τ) at the same instants: each instant's contacts once.
-    let seen: std::cell::RefCell<std::collections::HashMap<u64, [f64; 2]>> = Default::default();
+    // η(τ) of both formulations at an instant from one set of contacts: a spur pair's pairs written
+    // into one buffer (not a `Contacts` built, zeroed and moved each time), a helical pair's lines.
+    let mesh = ctx.mesh();
+    let items = std::cell::RefCell::new([ContactPoint::default(); MAX_CONTACTS]);
     let eta = |tau: f64| {
-        *seen
-            .borrow_mut()
-            .entry(tau.to_bits())
-            .or_insert_with(|| efficiencies_of(ctx, law, &ctx.mesh().contacts_at(tau)))
+        if ctx.geometry.is_helical() {
+            return efficiencies_of(ctx, law, &mesh.contacts_at(tau));
+        }
+        let items = &mut *items.borrow_mut();
+        let n = mesh.fill_pair_contacts(tau, None, items);
+        efficiencies_of(ctx, law, &items[..n])
+    };
+    // Both formulations' extremes read the same instants on the same grid: located together.
+    let ranges = match formulations {
+        [one] => {
+            let k = one.index();
+            let mut r = [((f64::NAN, f64::NAN), (f64::NAN, f64::NAN)); 2];
+            r[k] = extrema(|tau| eta(tau)[k], &breaks, 32, 1e-12);
+            r
+        }
+        _ => extrema_each(eta, &breaks, 32, 1e-12),
     };
     formulations
         .iter()
         .map(|f| {
             let k = f.index();
-            let ((min, _), (max, _)) = extrema(|tau| eta(tau)[k], &breaks, 32, 1e-12);
+            let ((min, _), (max, _)) = ranges[k];
             EfficiencyResult { formulation: *f, power_loss: power_loss(ctx, means[k].value), mean: means[k], min, max }
         })
         .collect()

@@ -109,6 +109,11 @@ pub struct SweepExtremes {
     pub min_efficiency: Option<AtPoint>,
     pub max_efficiency: Option<AtPoint>,
     pub max_power_loss: Option<AtPoint>,
+    /// The total efficiency's (with a gearbox: mesh and the parts beside it).
+    #[serde(default)]
+    pub min_total_efficiency: Option<AtPoint>,
+    #[serde(default)]
+    pub max_total_efficiency: Option<AtPoint>,
 }
 
 fn lower(a: &mut Option<AtPoint>, b: Option<AtPoint>, below: bool) {
@@ -176,6 +181,8 @@ impl Tally {
                     lower(&mut x.min_efficiency, e.min_efficiency, true);
                     lower(&mut x.max_efficiency, e.max_efficiency, false);
                     lower(&mut x.max_power_loss, e.max_power_loss, false);
+                    lower(&mut x.min_total_efficiency, e.min_total_efficiency, true);
+                    lower(&mut x.max_total_efficiency, e.max_total_efficiency, false);
                 }
                 None => self.extremes.push(e),
             }
@@ -216,6 +223,8 @@ impl Tally {
                     min_efficiency: at(row.mean_efficiency),
                     max_efficiency: at(row.mean_efficiency),
                     max_power_loss: at(row.power_loss),
+                    min_total_efficiency: at(row.budget.as_ref().map(|b| b.total_efficiency)),
+                    max_total_efficiency: at(row.budget.as_ref().map(|b| b.total_efficiency)),
                 }),
                 RowKind::Dynamics => t.dynamics.push(DynamicsTally {
                     formulation: row.formulation.clone(),

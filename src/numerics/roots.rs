@@ -30,6 +30,9 @@ pub fn brent(f: impl Fn(f64) -> f64, a: f64, b: f64, xtol: f64) -> f64 {
     })
 }
 
+/// ((minimum, where), (maximum, where)) of a function over an interval.
+pub type Extremes = ((f64, f64), (f64, f64));
+
 /// Minimum and maximum (value, x) of `f` over `[breaks[0], breaks[last]]`, where `f` is smooth between
 /// consecutive breaks and may jump at them. Located, not sampled: on each piece the sign changes of a
 /// central-difference f' are bracketed on `nodes` equal steps and refined by [`brent`] to `xtol`; the
@@ -42,15 +45,37 @@ pub fn brent(f: impl Fn(f64) -> f64, a: f64, b: f64, xtol: f64) -> f64 {
 /// assert!((hi - 1.0).abs() < 1e-15 && (at_hi - std::f64::consts::FRAC_PI_2).abs() < 1e-7);
 /// assert!((lo + 1.0).abs() < 1e-15 && (at_lo - 3.0 * std::f64::consts::FRAC_PI_2).abs() < 1e-7);
 /// ```
-pub fn extrema(f: impl Fn(f64) -> f64, breaks: &[f64], nodes: usize, xtol: f64) -> ((f64, f64), (f64, f64)) {
-    let mut lo = (f64::INFINITY, f64::NAN);
-    let mut hi = (f64::NEG_INFINITY, f64::NAN);
-    let mut consider = |x: f64, v: f64| {
-        if v < lo.0 {
-            lo = (v, x);
-        }
-        if v > hi.0 {
-            hi = (v, x);
+pub fn extrema(f: impl Fn(f64) -> f64, breaks: &[f64], nodes: usize, xtol: f64) -> Extremes {
+    extrema_each(|x| [f(x)], breaks, nodes, xtol)[0]
+}
+
+/// [`extrema`] of each of the `N` components of `f` at once: the pieces' ends and the grid on which
+/// the slopes are bracketed are read once for all components (two mesh efficiencies share every
+/// contact state), each component's slope roots refined on their own. Each component's result is
+/// exactly [`extrema`] of that component alone.
+///
+/// ```
+/// use gearloss::numerics::roots::{extrema, extrema_each};
+/// let breaks = [0.0, 1.0, 6.283185307179586];
+/// let both = extrema_each(|x| [x.sin(), x.cos()], &breaks, 8, 1e-13);
+/// assert_eq!(both[0], extrema(f64::sin, &breaks, 8, 1e-13));
+/// assert_eq!(both[1], extrema(f64::cos, &breaks, 8, 1e-13));
+/// ```
+pub fn extrema_each<const N: usize>(
+    f: impl Fn(f64) -> [f64; N],
+    breaks: &[f64],
+    nodes: usize,
+    xtol: f64,
+) -> [Extremes; N] {
+    let mut out: [Extremes; N] = [((f64::INFINITY, f64::NAN), (f64::NEG_INFINITY, f64::NAN)); N];
+    let consider = |out: &mut [Extremes; N], x: f64, v: [f64; N]| {
+        for (o, v) in out.iter_mut().zip(v) {
+            if v < o.0 .0 {
+                o.0 = (v, x);
+            }
+            if v > o.1 .0 {
+                o.1 = (v, x);
+            }
         }
     };
     for w in breaks.windows(2) {
@@ -59,15 +84,42 @@ pub fn extrema(f: impl Fn(f64) -> f64, breaks: &[f64], nodes: usize, xtol: f64) 
             continue;
         }
         let h = 1e-6 * (b - a) / nodes as f64;
-        let slope = |x: f64| f((x + h).min(b)) - f((x - h).max(a));
-        consider(a, f(a));
-        consider(b, f(b));
-        let grid: Vec<f64> = (0..=nodes).map(|i| a + (b - a) * i as f64 / nodes as f64).collect();
-        for r in bracketed_roots(slope, &grid, xtol) {
-            consider(r, f(r));
+        let slope = |x: f64| {
+            let (up, down) = (f((x + h).min(b)), f((x - h).max(a)));
+            std::array::from_fn::<f64, N, _>(|k| up[k] - down[k])
+        };
+        consider(&mut out, a, f(a));
+        consider(&mut out, b, f(b));
+        let grid: Vec<(f64, [f64; N])> =
+            (0..=nodes).map(|i| a + (b - a) * i as f64 / nodes as f64).map(|x| (x, slope(x))).collect();
+        for k in 0..N {
+            let last = grid[grid.len() - 1].0;
+            let mut prev = (grid[0].0, grid[0].1[k]);
+            for &(x, d) in &grid[1..] {
+                let d = d[k];
+                // As [`bracketed_roots`]: an exact zero at a node, or a sign change refined by Brent.
+                let root = if d == 0.0 && x < last {
+                    Some(x)
+                } else if prev.1 != 0.0 && (d > 0.0) != (prev.1 > 0.0) {
+                    Some(brent(|t| slope(t)[k], prev.0, x, xtol))
+                } else {
+                    None
+                };
+                if let Some(r) = root {
+                    let v = f(r);
+                    let o = &mut out[k];
+                    if v[k] < o.0 .0 {
+                        o.0 = (v[k], r);
+                    }
+                    if v[k] > o.1 .0 {
+                        o.1 = (v[k], r);
+                    }
+                }
+                prev = (x, d);
+            }
         }
     }
-    (lo, hi)
+    out
 }
 
 /// The roots of `f` between the first and last of `nodes` (sorted): every sign change between two

@@ -121,24 +121,39 @@ fn corners<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a EfficiencyRecord> {
     out
 }
 
-/// Per law over every record: the lowest and highest total (or mesh) efficiency with their points.
+/// Per law the lowest and highest total (or mesh) efficiency with their points: over every
+/// operating point of the sweep (its extremes, located as the points were computed), else over the
+/// records the report keeps.
 fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
     let eta = |e: &EfficiencyRecord| e.budget.as_ref().map_or(e.mean_efficiency.0, |b| b.total_efficiency.0);
     let what = if r.loss_budget { "η total" } else { "η̄ mesh" };
+    let formulation = recs.first().map(|e| e.formulation.name()).unwrap_or_default();
     for label in laws_in_order(recs) {
-        let of: Vec<&&EfficiencyRecord> = recs.iter().filter(|e| e.label == label).collect();
-        let lo = of.iter().min_by(|a, b| eta(a).total_cmp(&eta(b)));
-        let hi = of.iter().max_by(|a, b| eta(a).total_cmp(&eta(b)));
-        if let (Some(lo), Some(hi)) = (lo, hi) {
+        let swept = r.sweep.as_ref().and_then(|s| {
+            let x = s.efficiency.iter().find(|x| x.label == label && x.formulation == formulation)?;
+            let (lo, hi) = if r.loss_budget {
+                (x.min_total_efficiency.as_ref()?, x.max_total_efficiency.as_ref()?)
+            } else {
+                (x.min_efficiency.as_ref()?, x.max_efficiency.as_ref()?)
+            };
+            let at = |v: &crate::report::sweep::ValueAt<crate::report::number::Num>| {
+                Some((v.value.0, point_at(r, v.pinion_torque.as_ref()?, v.pinion_speed.as_ref()?)))
+            };
+            Some((at(lo)?, at(hi)?, s.operating_points))
+        });
+        let kept = || {
+            let of: Vec<&&EfficiencyRecord> = recs.iter().filter(|e| e.label == label).collect();
+            let lo = of.iter().min_by(|a, b| eta(a).total_cmp(&eta(b)))?;
+            let hi = of.iter().max_by(|a, b| eta(a).total_cmp(&eta(b)))?;
+            Some(((eta(lo), point_label(r, lo)), (eta(hi), point_label(r, hi)), of.len()))
+        };
+        if let Some(((lo, lo_at), (hi, hi_at), count)) = swept.or_else(kept) {
             let _ = writeln!(
                 out,
-                "- {}: {what} from {} % ({}) to {} % ({}) over {} operating points.",
+                "- {}: {what} from {} % ({lo_at}) to {} % ({hi_at}) over {count} operating points.",
                 law_words(label),
-                fixed(100.0 * eta(lo), 3),
-                point_label(r, lo),
-                fixed(100.0 * eta(hi), 3),
-                point_label(r, hi),
-                of.len()
+                fixed(100.0 * lo, 3),
+                fixed(100.0 * hi, 3),
             );
         }
     }

@@ -51,14 +51,17 @@ pub fn render_json(report: &Report) -> String {
 /// assert_eq!(joined, "{\n  \"x\": [1.5, null],\n  \"y\": [\n    [1, 2]\n  ]\n}");
 /// ```
 pub fn inline_plain_arrays(pretty: &str) -> String {
+    // Written into one string as it goes: no line or joined array is allocated on its own.
     let lines: Vec<&str> = pretty.lines().collect();
-    let mut out: Vec<String> = Vec::with_capacity(lines.len());
+    let mut out = String::with_capacity(pretty.len());
     let mut i = 0;
     while i < lines.len() {
+        if i > 0 {
+            out.push('\n');
+        }
         let line = lines[i];
         if line.ends_with('[') {
             // The elements up to the matching `]`, if each is a plain value on a line of its own.
-            let mut items = Vec::new();
             let mut j = i + 1;
             let closed = loop {
                 let Some(next) = lines.get(j) else { break None };
@@ -70,28 +73,43 @@ pub fn inline_plain_arrays(pretty: &str) -> String {
                 if !plain {
                     break None;
                 }
-                items.push(t.trim_end_matches(','));
                 j += 1;
             };
             if let Some(close) = closed {
-                out.push(format!("{line}{}{}", items.join(", "), close));
+                out.push_str(line);
+                for (k, item) in lines[i + 1..j].iter().enumerate() {
+                    if k > 0 {
+                        out.push_str(", ");
+                    }
+                    out.push_str(item.trim_start().trim_end_matches(','));
+                }
+                out.push_str(close);
                 i = j + 1;
                 continue;
             }
         }
-        out.push(line.to_string());
+        out.push_str(line);
         i += 1;
     }
-    out.join("\n")
+    out
 }
 
 /// Renders every file of the report folder; `timings`, the numerics study's run times (not part of
 /// report.json: they change from run to run), add `timing_numerics.json` and the work-precision plot.
 pub fn render_report(report: &Report, timings: Option<&Timings>) -> Result<RenderedReport, String> {
-    let mut files = vec![
-        ("report.md".to_string(), markdown::render_markdown(report)),
-        ("report.json".to_string(), render_json(report)),
-    ];
+    render_report_with_json(report, render_json(report), timings)
+}
+
+/// [`render_report`] with report.json already written (`json` = [`render_json`] of `report`, as a
+/// run has it from reading the report back: serialising a large sweep's report twice cost a
+/// tenth of the run).
+pub fn render_report_with_json(
+    report: &Report,
+    json: String,
+    timings: Option<&Timings>,
+) -> Result<RenderedReport, String> {
+    let mut files =
+        vec![("report.md".to_string(), markdown::render_markdown(report)), ("report.json".to_string(), json)];
     for plot in &report.plots {
         let svg = match plot.kind {
             PlotKind::ContactState => svg::contact_state(report)?,

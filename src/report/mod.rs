@@ -10,10 +10,12 @@ pub mod friction;
 pub mod gearbox_inputs;
 pub mod geometry;
 pub mod helical;
+mod housing_checks;
 pub mod input_row;
 pub mod law_values;
 pub mod law_words;
 pub mod losses;
+mod non_finite;
 pub mod number;
 pub mod numerics;
 pub mod oil_sweep;
@@ -23,6 +25,7 @@ pub mod scene;
 pub mod scene_report;
 pub mod sweep;
 pub mod teeth;
+mod teeth_validity;
 pub mod thermal;
 pub mod units;
 
@@ -76,7 +79,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         operating_points: eval.points.iter().map(|p| points::operating_point_report(scene, eval, p)).collect(),
         efficiency: friction::efficiency_records(scene, eval, tally),
         records: sweep::records_report(tally, plan),
-        sweep: sweep::sweep_report(tally, plan),
+        sweep: sweep::sweep_report(tally, plan, &scene.operating),
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
         lubricant: losses::lubricant_report(scene, eval),
         loss_budget: scene.gearbox.is_some(),
@@ -149,6 +152,7 @@ fn with_teeth(report: &mut Report, scene: &Scene, t: &crate::evaluate::teeth::Te
     report.findings.extend(teeth::teeth_findings(scene, &s));
     report.stiffness = Some(s);
     report.transmission_error = teeth::transmission_error_reports(t);
+    report.findings.extend(teeth_validity::linear_range_findings(scene, &report.transmission_error));
     report.plots.push(PlotRef::new(
         PlotKind::MeshStiffness,
         "Mesh stiffness from the teeth over two mesh cycles, one pair's stiffness, and ISO 6336-1's c_γα",
@@ -175,6 +179,7 @@ fn with_thermal(
         report.duty_cycle.as_ref(),
         t.duty_cycle.as_ref(),
     ));
+    report.findings.extend(housing_checks::housing_findings(scene));
     if report.heat_balance.is_some() {
         report.plots.push(PlotRef::new(
             PlotKind::HeatBalance,
@@ -242,32 +247,4 @@ fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Pla
     }
 }
 
-/// Paths of every value in the report that is not a finite number (serialised as `null`).
-pub fn non_finite_paths(report: &Report) -> Vec<String> {
-    fn walk(v: &serde_json::Value, path: String, out: &mut Vec<String>) {
-        match v {
-            serde_json::Value::Object(map) => {
-                for (k, x) in map {
-                    // `point` is an optional label, not a number; a plot's curves leave a gap (null)
-                    // where a law diverges, by design.
-                    if k == "point" || k == "curves" {
-                        continue;
-                    }
-                    walk(x, format!("{path}.{k}"), out);
-                }
-            }
-            serde_json::Value::Array(items) => {
-                for (i, x) in items.iter().enumerate() {
-                    walk(x, format!("{path}[{i}]"), out);
-                }
-            }
-            serde_json::Value::Null => out.push(path),
-            _ => {}
-        }
-    }
-    let mut out = Vec::new();
-    if let Ok(v) = serde_json::to_value(report) {
-        walk(&v, String::new(), &mut out);
-    }
-    out
-}
+pub use non_finite::non_finite_paths;

@@ -22,11 +22,16 @@ pub struct RecordsReport {
     pub non_finite_values: usize,
 }
 
-/// A value at an operating point (1-based, as in the record files).
+/// A value at an operating point (1-based, as in the record files), with the point's torque and
+/// speed where a headline names it.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ValueAt<V> {
     pub value: V,
     pub point: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pinion_torque: Option<Q>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pinion_speed: Option<Q>,
 }
 
 /// Extremes of one law and formulation over every operating point.
@@ -37,6 +42,11 @@ pub struct SweepExtremesReport {
     pub min_efficiency: Option<ValueAt<Num>>,
     pub max_efficiency: Option<ValueAt<Num>>,
     pub max_power_loss: Option<ValueAt<Q>>,
+    /// With a gearbox: the total efficiency's extremes over every point.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_total_efficiency: Option<ValueAt<Num>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_total_efficiency: Option<ValueAt<Num>>,
 }
 
 /// One dynamic formulation over every operating point.
@@ -72,10 +82,23 @@ pub fn records_report(tally: &Tally, plan: &Plan) -> Option<RecordsReport> {
 }
 
 fn num(a: Option<AtPoint>) -> Option<ValueAt<Num>> {
-    a.map(|(v, k)| ValueAt { value: Num(v), point: k + 1 })
+    a.map(|(v, k)| ValueAt { value: Num(v), point: k + 1, pinion_torque: None, pinion_speed: None })
 }
 
-pub fn sweep_report(tally: &Tally, plan: &Plan) -> Option<SweepReport> {
+/// An efficiency extreme with its point's torque and speed (the headline names them).
+fn efficiency_at(op: &crate::model::Operating, a: Option<AtPoint>) -> Option<ValueAt<Num>> {
+    a.map(|(v, k)| {
+        let s = crate::evaluate::state_at(op, k);
+        ValueAt {
+            value: Num(v),
+            point: k + 1,
+            pinion_torque: Some(Q::new(s.pinion_torque, "N*m")),
+            pinion_speed: Some(Q::new(s.pinion_speed, "rad/s")),
+        }
+    })
+}
+
+pub fn sweep_report(tally: &Tally, plan: &Plan, op: &crate::model::Operating) -> Option<SweepReport> {
     (plan.count() > 1 && tally.rows > 0).then(|| SweepReport {
         operating_points: tally.points,
         efficiency: tally
@@ -84,9 +107,16 @@ pub fn sweep_report(tally: &Tally, plan: &Plan) -> Option<SweepReport> {
             .map(|e| SweepExtremesReport {
                 label: e.label.clone(),
                 formulation: e.formulation.clone(),
-                min_efficiency: num(e.min_efficiency),
-                max_efficiency: num(e.max_efficiency),
-                max_power_loss: e.max_power_loss.map(|(v, k)| ValueAt { value: Q::new(v, "W"), point: k + 1 }),
+                min_efficiency: efficiency_at(op, e.min_efficiency),
+                max_efficiency: efficiency_at(op, e.max_efficiency),
+                max_power_loss: e.max_power_loss.map(|(v, k)| ValueAt {
+                    value: Q::new(v, "W"),
+                    point: k + 1,
+                    pinion_torque: None,
+                    pinion_speed: None,
+                }),
+                min_total_efficiency: efficiency_at(op, e.min_total_efficiency),
+                max_total_efficiency: efficiency_at(op, e.max_total_efficiency),
             })
             .collect(),
         dynamics: tally

@@ -184,7 +184,8 @@ pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport
         bodies,
         pair: PairCurve {
             position: Series::new(pair_s.iter().copied(), "m"),
-            stiffness: Series::new(pair_s.iter().map(|s| k.pair_at(*s)), "N/m"),
+            // At E the left limit (the pair is still in contact there).
+            stiffness: Series::new(pair_s.iter().map(|s| k.pair_at(k.inside_end(*s))), "N/m"),
         },
         mesh: PairCurve {
             position: Series::new(mesh_s.iter().copied(), "m"),

@@ -67,6 +67,11 @@ fn shown(x: f64, unit: &str) -> String {
 }
 
 /// Checks an SI value of `key` against its plausible range; false (with a diagnostic) outside it.
+/// Whether `key` is a quantity that is never negative (its plausible range starts above zero).
+pub fn positive(key: &str) -> bool {
+    LIMITS.iter().find(|l| l.key == key).is_some_and(|l| l.lo > 0.0)
+}
+
 pub fn plausible(key: &str, si: f64, span: Span, errors: &mut Vec<Diagnostic>) -> bool {
     let Some(l) = LIMITS.iter().find(|l| l.key == key) else { return true };
     // Zero and negative values of positive quantities get the sign checks' own messages.

@@ -67,6 +67,26 @@ pub(crate) fn sweep_values(
             return None;
         }
     };
+    // What is wrong with a number shows before its missing unit: NaN and infinities, and a sign
+    // no unit could mend (`pinion_torque = -80` said only "no unit").
+    for (x, span) in &numbers {
+        finite(key, *x, *span, errors)?;
+    }
+    if unit.is_none() && expected != Dimension::NONE && super::limits::positive(key) {
+        if let Some((x, span)) = numbers.iter().find(|(x, _)| *x < 0.0) {
+            let example = super::units::example_units(expected);
+            let unit = example.split(',').next().unwrap_or_default();
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    *span,
+                    format!("`{key}` = {} is negative, and has no unit", super::values::format_number(*x)),
+                )
+                .hint(format!("`{key}` is zero or more, written with its unit, e.g. `{key} = 100 {unit}`")),
+            );
+            return None;
+        }
+    }
     let scale = checked_scale(key, unit.as_ref(), expected, value.span, errors)?;
     let mut si = Vec::with_capacity(numbers.len());
     let mut written = Vec::with_capacity(numbers.len());

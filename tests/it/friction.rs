@@ -31,7 +31,12 @@ fn catalogue_entries_build_the_law_they_name() {
     ctx.tribology.rz_mean = Some(2.0e-6); // FZG C gives Ra and Rq; Rz as a scene would give it
     for (i, entry) in LAWS.iter().enumerate() {
         assert_eq!(entry.id as usize, i, "{}", entry.id.name());
-        assert_eq!(entry.id.name(), entry.id.name());
+        // The row's name is the law's file and what a scene writes: the file exists, the scene name
+        // finds this row, and the id's entry is this row.
+        let file = crate::root().join("src/friction").join(format!("{}.rs", entry.id.name()));
+        assert!(file.is_file(), "no file {} for the row {}", file.display(), entry.id.name());
+        assert_eq!(gearloss::friction::catalog::entry(entry.id.name()).map(|e| e.id), Some(entry.id));
+        assert_eq!(entry.id.entry().title, entry.title, "{}", entry.id.name());
         assert_eq!(LAWS.iter().filter(|e| e.id.name() == entry.id.name()).count(), 1);
         let arguments = entry.arguments.iter().filter_map(|a| match a.default {
             ArgumentDefault::Required => Some((a.name.to_string(), 0.05, String::new())),

@@ -31,6 +31,13 @@ fn example_scenes_render() {
         }
         insta::assert_snapshot!("md", file(&r, "report.md"));
         insta::assert_snapshot!("json", file(&r, "report.json"));
+        // report.json is a fixed point of reading back and writing again (a run writes the text it
+        // read back from; `render` writes it from the file): the same bytes both ways.
+        let json = file(&r, "report.json");
+        // (An oil sweep's report.json is the comparison, with a report per temperature beside it.)
+        if let Ok(read) = serde_json::from_str::<gearloss::Report>(json) {
+            assert_eq!(gearloss::render::render_json(&read), json, "report.json does not write back the same");
+        }
         if let Some((_, csv)) = r.files.iter().find(|(n, _)| n == "records.csv") {
             insta::assert_snapshot!("csv", csv);
         }

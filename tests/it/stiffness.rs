@@ -272,3 +272,38 @@ fn iso_tr_6336_30_example_1() {
     let ratio = k.mean() / g.face_width * 1e-9 / (iso.c_gamma_alpha / C_M);
     assert!((0.75..1.25).contains(&ratio), "PEM mean vs c_γα/C_M: {ratio}");
 }
+
+/// Issue 40: the pair is still in contact at E. The pair series of the report end at s = g_α with
+/// the left limits there: k(g_α⁻) = b k_w(g_α) (the stiffness polynomial at the end, 1e-12
+/// relative; ≈ 1.47e8 N/m for FZG C) and, with relief, each torque's load share at E equals the
+/// share read just inside the path (g_α − 1e-9 p_b: the same to 1e-6 relative, since the share is
+/// smooth there), not 0. A helical pair's line leaves continuously: its series ends at 0.
+#[test]
+fn pair_series_end_with_the_left_limit_at_e() {
+    let scene = crate::scene(&crate::root().join("specs/fzg_c_tip_relief.gear"));
+    let report = gearloss::report_of(&scene);
+    let s = report.stiffness.as_ref().unwrap();
+    let g = scene.gears.geometry().unwrap();
+    let details = gearloss::evaluate::teeth::teeth_details(&scene, &g).unwrap();
+    let k = &details.sharing.stiffness;
+    let (pos, stiff) = (&s.pair.position.values, &s.pair.stiffness.values);
+    let end = *pos.last().unwrap();
+    assert!((end - k.path).abs() < 1e-15, "series ends at {end}, g_α = {}", k.path);
+    let left = k.face_width * k.per_width(k.path);
+    assert!((stiff.last().unwrap() / left - 1.0).abs() < 1e-9, "k at E {} vs {left}", stiff.last().unwrap());
+    assert!((1.4e8..1.6e8).contains(&left), "k(g_α⁻) = {left}");
+    for te in &report.transmission_error {
+        let share = *te.pair.load_share.values.last().unwrap();
+        let force = te.pinion_torque.si() / g.base_radius[0];
+        let inside = k.path - 1e-9 * k.base_pitch;
+        let expected = details.sharing.at(inside, force).load_of(inside) / force;
+        assert!((share - expected).abs() <= 1e-6 * expected.max(1e-3), "share at E {share} vs {expected}");
+    }
+    let at_300 = report.transmission_error.iter().find(|t| t.pinion_torque.si() == 300.0).unwrap();
+    assert!(*at_300.pair.load_share.values.last().unwrap() > 0.2);
+    // Helical: the engagement's end is where the line has left; the series reads 0 there.
+    let helical = crate::scene(&crate::root().join("specs/iso_tr_6336_30_example_1.gear"));
+    let r = gearloss::report_of(&helical);
+    let last = *r.stiffness.as_ref().unwrap().pair.stiffness.values.last().unwrap();
+    assert!(last.abs() < 1e-6 * r.stiffness.as_ref().unwrap().mean.si(), "helical pair at its end: {last}");
+}

@@ -204,3 +204,35 @@ fn plots_of_extreme_values_finish() {
         }
     }
 }
+
+/// Issue 40: the headline's range of a large sweep is the sweep's, not the kept rows': on a 50 × 50
+/// map (2 500 points, a few hundred rows kept for the report) each law's line says "over 2500
+/// operating points" and its lowest and highest η̄ are the records' minimum and maximum over every
+/// point, at their points' torque and speed (to the headline's three decimals).
+#[test]
+fn the_headline_range_covers_every_point() {
+    let source = std::fs::read_to_string(crate::root().join("tests/specs/ok/large_sweep.gear"))
+        .unwrap()
+        .replace("count 12", "count 50")
+        .replace("detail_points = [17, 100]", "");
+    let r = gearloss::run_to_files("large_sweep.gear", &source).unwrap();
+    let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap().1;
+    let report: serde_json::Value = serde_json::from_str(file("report.json")).unwrap();
+    let kept = report["efficiency"].as_array().unwrap().len();
+    assert!(kept < 2 * 2500 * 2, "the report keeps a bounded set ({kept} rows)");
+    let rows: Vec<serde_json::Value> =
+        file("records.jsonl").lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let md = file("report.md");
+    for (law, words) in [("benedict_kelley", "Benedict–Kelley"), ("coulomb", "Coulomb")] {
+        let of: Vec<&serde_json::Value> =
+            rows.iter().filter(|x| x["law"] == law && x["formulation"] == "external").collect();
+        assert_eq!(of.len(), 2500);
+        let eta = |x: &&serde_json::Value| x["mean_efficiency"].as_f64().unwrap();
+        let lo = of.iter().map(eta).fold(f64::INFINITY, f64::min);
+        let hi = of.iter().map(eta).fold(f64::NEG_INFINITY, f64::max);
+        let line = md.lines().find(|l| l.starts_with(&format!("- {words}"))).unwrap();
+        assert!(line.ends_with("over 2500 operating points."), "{line}");
+        let expected = format!("from {:.3} % (", 100.0 * lo);
+        assert!(line.contains(&expected) && line.contains(&format!("to {:.3} % (", 100.0 * hi)), "{line}: {lo} {hi}");
+    }
+}

@@ -276,6 +276,20 @@ impl PairStiffness {
         [-0.5 * self.lead, self.path + 0.5 * self.lead]
     }
 
+    /// Where a series over one pair's engagement reads its last value: the end itself for a helical
+    /// pair (its line leaves the path continuously, k → 0), and for a spur pair the left limit at E,
+    /// read at the largest double below g_α (the pair is still in contact at E; [`Self::pair_at`]
+    /// is read on the half-open [0, g_α), so at g_α itself it gives the 0 of the next instant).
+    /// Piecewise polynomial in s, the value there is the left limit to a unit in the last place.
+    pub fn inside_end(&self, s: f64) -> f64 {
+        let [_, hi] = self.engagement();
+        if self.is_helical() || s < hi || hi <= 0.0 {
+            s
+        } else {
+            f64::from_bits(hi.to_bits() - 1)
+        }
+    }
+
     /// The stiffness of one tooth pair (N/m) whose position (mid-face section) is s; 0 out of contact.
     pub fn pair_at(&self, s: f64) -> f64 {
         if !self.is_helical() {

@@ -102,7 +102,9 @@ impl LoadSharing {
         let pair = series_positions(lo, hi, &self.pair_breaks())
             .into_iter()
             .map(|s| {
-                let f = self.at(s, force).load_of(s);
+                // At E the left limit: the pair carries its share up to the end of its path.
+                let inside = k.inside_end(s);
+                let f = self.at(inside, force).load_of(inside);
                 (s, f / force, f)
             })
             .collect();
