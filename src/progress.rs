@@ -6,6 +6,11 @@ pub trait Progress: Sync {
     fn stage(&self, _label: &'static str, _total: u64) {}
     /// `n` steps of the stage are done.
     fn advance(&self, _n: u64) {}
+    /// Whether the run should stop: asked between blocks of a sweep (a Python caller's Ctrl-C);
+    /// a run that stops fails with an `Interrupted` I/O error and writes nothing.
+    fn cancelled(&self) -> bool {
+        false
+    }
 }
 
 /// No progress reported.

@@ -18,7 +18,10 @@ pub fn stream(
 ) -> std::io::Result<Streamed> {
     let eval = super::prepare::prepare(scene, plan);
     progress.stage("evaluate", plan.range.len() as u64);
-    evaluate_records(scene, &eval, plan, sink, &|n| progress.advance(n as u64))
+    evaluate_records(scene, &eval, plan, sink, &|n| {
+        progress.advance(n as u64);
+        !progress.cancelled()
+    })
 }
 
 /// The plan's detail points in full, reusing what the stream computed (`known`).

@@ -33,13 +33,14 @@ pub struct Streamed {
 }
 
 /// Evaluates the plan's range of points, writes their rows to `sink` and returns their tally;
-/// `tick(n)` is called after each block with the number of points it held.
+/// `tick(n)` is called after each block with the number of points it held; when it answers false
+/// the run stops there with an `Interrupted` error.
 pub fn evaluate_records(
     scene: &Scene,
     eval: &Setup,
     plan: &Plan,
     sink: &mut dyn RecordSink,
-    tick: &(dyn Fn(usize) + Sync),
+    tick: &(dyn Fn(usize) -> bool + Sync),
 ) -> std::io::Result<Streamed> {
     let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
     let dynamics =
@@ -67,7 +68,9 @@ pub fn evaluate_records(
                 out.detail_dynamics.push((k, d));
             }
         }
-        tick(end - start);
+        if !tick(end - start) {
+            return Err(std::io::Error::new(std::io::ErrorKind::Interrupted, "the run was interrupted"));
+        }
         start = end;
     }
     Ok(out)

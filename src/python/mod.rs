@@ -16,7 +16,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use pyo3::prelude::*;
 
 use crate::scene::ast::Item;
-use crate::{Quiet, Shard};
+use crate::Shard;
 use error::{to_py, Error, GearlossRunError, SceneError};
 
 /// A report folder in memory: its name and its files (path inside it, bytes), sorted by path.
@@ -35,18 +35,69 @@ fn check(py: Python<'_>, name: &str, text: &str) -> PyResult<String> {
     to_py(py, crate::check(name, text).map(|s| s.title).map_err(Error::from))
 }
 
+/// The number of operating points of a scene (the product of its sweeps).
+#[pyfunction]
+fn operating_points(py: Python<'_>, name: &str, text: &str) -> PyResult<usize> {
+    to_py(py, crate::check(name, text).map(|s| s.operating.count()).map_err(Error::from))
+}
+
+/// A scene file's text, read as the CLI reads it: a regular file of at most 16 MiB (`/dev/zero`
+/// and pipes refused before reading), UTF-8 with the first bad byte located.
+#[pyfunction]
+fn read_scene(py: Python<'_>, path: PathBuf) -> PyResult<String> {
+    let text = py.allow_threads(|| crate::scene::source::read_text(&path, crate::scene::source::MAX_SCENE_BYTES));
+    text.map_err(|e| pyo3::exceptions::PyOSError::new_err(format!("cannot read {}: {e}", path.display())))
+}
+
+/// Writes a report folder `name` with `files` into `out` as `gearloss run` does: a hidden
+/// temporary folder renamed into place (concurrent writers all succeed, nothing left behind).
+#[pyfunction]
+fn write_folder(py: Python<'_>, out: PathBuf, name: String, files: Vec<(String, Vec<u8>)>) -> PyResult<PathBuf> {
+    let written = py.allow_threads(|| {
+        let folder = crate::folder::ReportFolder::create(&out, &name)?;
+        for (path, bytes) in &files {
+            folder.write(path, bytes)?;
+        }
+        folder.commit()
+    });
+    written.map_err(|e| pyo3::exceptions::PyOSError::new_err(format!("cannot write the report folder: {e}")))
+}
+
 /// Runs a scene (or one shard `(K, N)` of it) as `gearloss run` does: the report folder in memory.
+/// Between blocks of points the run asks Python for signals: Ctrl-C stops it within about a block
+/// (a second or less) and raises `KeyboardInterrupt`.
 #[pyfunction]
 #[pyo3(signature = (name, text, shard=None))]
 fn run(py: Python<'_>, name: String, text: String, shard: Option<(usize, usize)>) -> PyResult<PyFolder> {
-    let result = py.allow_threads(|| in_temporary_folder(|out| run_into(&name, &text, shard, out)));
+    let signals = Signals::default();
+    let result = py.allow_threads(|| in_temporary_folder(|out| run_into(&name, &text, shard, out, &signals)));
+    if let Some(interrupt) = signals.pending.into_inner().ok().flatten() {
+        return Err(interrupt);
+    }
     to_py(py, result).map(to_python)
+}
+
+/// A run's progress that asks Python for pending signals (Ctrl-C) and keeps the exception the
+/// signal's handler raised.
+#[derive(Default)]
+struct Signals {
+    pending: std::sync::Mutex<Option<PyErr>>,
+}
+
+impl crate::Progress for Signals {
+    fn cancelled(&self) -> bool {
+        let Ok(mut pending) = self.pending.lock() else { return true };
+        if pending.is_none() {
+            *pending = Python::with_gil(|py| py.check_signals().err());
+        }
+        pending.is_some()
+    }
 }
 
 /// Merges shard folders as `gearloss merge` does: the merged report folder in memory.
 #[pyfunction]
 fn merge(py: Python<'_>, folders: Vec<PathBuf>) -> PyResult<PyFolder> {
-    let result = py.allow_threads(|| in_temporary_folder(|out| Ok(crate::merge_into(&folders, out, &Quiet)?.folder)));
+    let result = py.allow_threads(|| in_temporary_folder(|out| Ok(crate::merge_into(&folders, out, &crate::Quiet)?.folder)));
     to_py(py, result).map(to_python)
 }
 
@@ -56,10 +107,16 @@ fn replace(py: Python<'_>, name: &str, text: &str, values: Vec<(String, String)>
     to_py(py, replaced(name, text, &values))
 }
 
-fn run_into(name: &str, text: &str, shard: Option<(usize, usize)>, out: &Path) -> Result<PathBuf, Error> {
+fn run_into(
+    name: &str,
+    text: &str,
+    shard: Option<(usize, usize)>,
+    out: &Path,
+    progress: &dyn crate::Progress,
+) -> Result<PathBuf, Error> {
     let scene = crate::check(name, text)?;
     let shard = shard.map(|(index, count)| Shard { index, count });
-    Ok(crate::run_into(name, text, &scene, out, shard, &Quiet)?.folder)
+    Ok(crate::run_into(name, text, &scene, out, shard, progress)?.folder)
 }
 
 /// Runs `write` into a fresh temporary folder, reads back the folder it wrote, removes it.
@@ -129,7 +186,10 @@ fn replaced(name: &str, text: &str, values: &[(String, String)]) -> Result<Strin
     for (start, end, new) in edits {
         out.replace_range(start..end, &new);
     }
-    crate::check(name, &out)?;
+    // Errors are located in the edited text, so they name it: the file's name with the keys replaced
+    // (the folder stays the file's, for the tables a scene names).
+    let keys: Vec<&str> = values.iter().map(|(k, _)| k.as_str()).collect();
+    crate::check(&format!("{name} (with {} replaced)", keys.join(", ")), &out)?;
     Ok(out)
 }
 
@@ -140,6 +200,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(merge, m)?)?;
     m.add_function(wrap_pyfunction!(replace, m)?)?;
+    m.add_function(wrap_pyfunction!(operating_points, m)?)?;
+    m.add_function(wrap_pyfunction!(read_scene, m)?)?;
+    m.add_function(wrap_pyfunction!(write_folder, m)?)?;
     m.add("SceneError", m.py().get_type_bound::<SceneError>())?;
     m.add("RunError", m.py().get_type_bound::<GearlossRunError>())?;
     Ok(())

@@ -201,3 +201,125 @@ def test_readme_python_examples_run(block):
     """Every ```python block of README runs as written, from the repository root."""
     assert readme_python_blocks(), "README has Python examples"
     exec(compile(block, "README.md", "exec"), {})
+
+
+# Issue 40: the hostile calls of a held-out catalogue, each answered as the CLI would.
+
+
+def test_from_file_refuses_what_is_not_a_regular_file(tmp_path):
+    """/dev/zero and a FIFO are refused before anything is read (no memory run out, no block)."""
+    import os
+
+    fifo = tmp_path / "pipe.gear"
+    os.mkfifo(fifo)
+    for path in ("/dev/zero", fifo, tmp_path):
+        started = time.monotonic()
+        with pytest.raises(OSError, match="not a regular file"):
+            gearloss.Scene.from_file(path)
+        assert time.monotonic() - started < 1.0
+    big = tmp_path / "big.gear"
+    big.write_bytes(b"#" * (16 * 2**20 + 1))
+    with pytest.raises(OSError, match="larger than the limit"):
+        gearloss.Scene.from_file(big)
+
+
+def test_dask_shards_are_capped_at_the_point_count():
+    """10⁷ shards of a 6-point scene are 6 tasks: the same report as one run."""
+    s = scene(ROOT / "specs/fzg_type_c.gear")
+    assert gearloss.dask.run(s, shards=10**7).data == gearloss.run(s).data
+    with pytest.raises(ValueError, match="at least 1"):
+        gearloss.dask.run(s, shards=0)
+
+
+def test_ctrl_c_stops_a_long_run_within_a_second():
+    """Ctrl-C (SIGINT, here simulated 0.5 s in) during a 90 000-point run raises KeyboardInterrupt
+    within about a second, not when the run (tens of seconds) ends."""
+    import _thread
+
+    s = scene(ROOT / "specs/fzg_type_c.gear").replace(
+        pinion_torque="50..400 N*m count 300", pinion_speed="100..3000 rpm count 300"
+    )
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    started = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        gearloss.run(s)
+    assert time.monotonic() - started < 2.5
+    timer.cancel()
+
+
+def test_replace_errors_name_the_edited_text():
+    """An error in a replaced value is located in the edited text, and the file name says so."""
+    s = scene(ROOT / "specs/fzg_type_c.gear")
+    with pytest.raises(gearloss.SceneError) as e:
+        s.replace(pinion_torque="300 kg")
+    d = [d for d in e.value.diagnostics if d["kind"] == "WrongDimension"][0]
+    assert d["file"] == "specs/fzg_type_c.gear (with pinion_torque replaced)"
+    edited = s.text.replace("[239.3, 372.6] N*m", "300 kg")
+    line = edited.splitlines()[d["line"] - 1]
+    assert line[d["column"] - 1 :].startswith("kg"), (line, d)
+
+
+def test_concurrent_writes_from_processes_all_succeed(tmp_path):
+    """Two processes writing the same folder 100 times each: every write succeeds, one folder and
+    nothing else is left (the CLI's writer)."""
+    import concurrent.futures
+
+    report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    with concurrent.futures.ProcessPoolExecutor(max_workers=2) as pool:
+        failures = sum(pool.map(_write_many, [(report.name, report._files, str(tmp_path))] * 2))
+    assert failures == 0
+    assert [p.name for p in tmp_path.iterdir()] == ["fzg_type_c"]
+    assert gearloss.Report.from_folder(tmp_path / "fzg_type_c").data == report.data
+
+
+def _write_many(args):
+    name, files, out = args
+    report, failures = gearloss.Report(name, files.items()), 0
+    for _ in range(100):
+        try:
+            report.write(out)
+        except OSError:
+            failures += 1
+    return failures
+
+
+def test_a_failing_dask_shard_is_named_and_nothing_writes_after(tmp_path, monkeypatch):
+    """Shard 2 of 3 fails: the error names it, and the other shards have finished writing before
+    the temporary folder is removed (the work folder is empty afterwards)."""
+    real = gearloss._native.run
+
+    def flaky(name, text, shard):
+        if shard[0] == 2:
+            raise gearloss.RunError("the disk is full")
+        time.sleep(0.3)
+        return real(name, text, shard)
+
+    monkeypatch.setattr(gearloss.dask._native, "run", flaky)
+    s = scene(ROOT / "specs/fzg_type_c.gear")
+    with pytest.raises(gearloss.RunError, match="shard 2 of 3 failed: the disk is full") as e:
+        gearloss.dask.run(s, shards=3, workdir=tmp_path)
+    assert e.value.shard == 2
+    time.sleep(0.5)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_svg_of_a_missing_plot_lists_the_plots():
+    report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    with pytest.raises(KeyError, match="contact_state.svg") as e:
+        report.svg("nope.svg")
+    assert "no plot 'nope.svg'" in str(e.value)
+    assert "contact_state.svg" in report.plots
+
+
+@pytest.mark.parametrize(
+    "value, said",
+    [(float("nan"), "is NaN: not a number"), (float("inf"), "is infinite"), (-80.0, "is negative")],
+)
+def test_replace_with_a_bad_number_says_what_is_wrong(value, said):
+    s = scene(ROOT / "specs/fzg_type_c.gear")
+    with pytest.raises(gearloss.SceneError) as e:
+        s.replace(pinion_torque=value)
+    messages = [d["message"] for d in e.value.diagnostics]
+    assert any(said in m for m in messages), messages
+    assert not any(m.endswith("but the value has no unit") for m in messages), messages

@@ -27,7 +27,6 @@ import io
 import json
 import os
 import pathlib
-import tempfile
 from typing import Dict, Iterable, Optional, Tuple, Union
 
 from . import _native
@@ -53,10 +52,11 @@ class Scene:
 
     @classmethod
     def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
-        """Reads and checks a ``.gear`` file."""
+        """Reads and checks a ``.gear`` file, as the CLI reads it: a regular file of at most 16 MiB
+        (``/dev/zero``, a pipe or a folder raise ``OSError`` before anything is read), UTF-8 (the
+        first bad byte located), line ends kept so that every column is the CLI's."""
         p = os.fspath(path)
-        # Bytes, decoded: text mode would turn \r\n into \n and move every column the CLI reports.
-        return cls(pathlib.Path(p).read_bytes().decode("utf-8"), name=p)
+        return cls(_native.read_scene(p), name=p)
 
     def replace(self, **values: str) -> "Scene":
         """A new scene with values of its ``operating`` block replaced (or added), written as in a
@@ -66,11 +66,26 @@ class Scene:
         >>> s.replace(pinion_torque="300 N*m", pinion_speed="100..3000 rpm count 30").title
         'FZG type C'
         """
-        pairs = [(key, str(value)) for key, value in values.items()]
+        pairs = [(key, _value_text(key, value)) for key, value in values.items()]
         return Scene(_native.replace(self.name, self.text, pairs), name=self.name)
 
     def __repr__(self) -> str:
         return f"Scene({self.title!r}, name={self.name!r})"
+
+
+def _value_text(key: str, value) -> str:
+    """A replaced value as scene text. A bare number is written as the scene would read it (NaN,
+    infinities and signs are then said by the check, before the missing unit); anything else must
+    be text, units and all."""
+    if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+        raise TypeError(f"{key}: give the value as scene text, units and all, e.g. {key}=\"300 N*m\" (got {value!r})")
+    if isinstance(value, float):
+        if value != value:
+            return "NaN"
+        if value in (float("inf"), float("-inf")):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    return str(value)
 
 
 def _shard(shard: Union[None, str, Tuple[int, int]]) -> Optional[Tuple[int, int]]:
@@ -172,35 +187,30 @@ class Report:
         """The dynamics rows: per point and formulation ρ, DTE and the dynamic factor."""
         return self._kind("dynamics")
 
+    @property
+    def plots(self) -> list:
+        """The names of the report's plots (``svg(name)`` reads one)."""
+        return sorted(f for f in self._files if f.endswith(".svg"))
+
     def svg(self, name: str) -> str:
-        """A plot's SVG text (``report.svg("contact_state")`` or ``"contact_state.svg"``)."""
-        return self._files[name if name.endswith(".svg") else name + ".svg"].decode("utf-8")
+        """A plot's SVG text (``report.svg("contact_state")`` or ``"contact_state.svg"``); a name
+        the report has no plot of raises ``KeyError`` listing the plots it has."""
+        file = name if name.endswith(".svg") else name + ".svg"
+        if file not in self._files:
+            raise KeyError(f"no plot {file!r} in this report; its plots: {', '.join(self.plots) or 'none'}")
+        return self._files[file].decode("utf-8")
 
     def markdown(self) -> str:
         """``report.md``."""
         return self._files["report.md"].decode("utf-8")
 
     def write(self, folder: Union[str, os.PathLike]) -> pathlib.Path:
-        """Writes the report folder into ``folder`` (as ``gearloss run --out folder``): into a
-        temporary folder first, renamed into place, so it is never half-written."""
-        out = pathlib.Path(folder)
-        out.mkdir(parents=True, exist_ok=True)
-        target = out / self.name
-        temp = pathlib.Path(tempfile.mkdtemp(prefix=f".{self.name}.", dir=out))
-        for path, content in self._files.items():
-            p = temp / path
-            p.parent.mkdir(parents=True, exist_ok=True)
-            p.write_bytes(content)
-        if target.exists():
-            old = pathlib.Path(tempfile.mkdtemp(prefix=f".{self.name}.old.", dir=out))
-            target.rename(old / "r")
-            temp.rename(target)
-            import shutil
-
-            shutil.rmtree(old)
-        else:
-            temp.rename(target)
-        return target
+        """Writes the report folder into ``folder`` as ``gearloss run --out folder`` does (the same
+        writer): into a hidden temporary folder first, renamed into place, so it is never
+        half-written; processes writing the same folder at once all succeed, the last one wins,
+        and nothing else is left behind."""
+        files = [(path, bytes(content)) for path, content in self._files.items()]
+        return pathlib.Path(_native.write_folder(os.fspath(folder), self.name, files))
 
     def _repr_markdown_(self) -> str:
         return self.markdown() if "report.md" in self._files else f"report {self.name}"

@@ -11,7 +11,10 @@ True
 With ``client=None`` the tasks run on Dask's default scheduler (threads in this process: the
 computation releases the GIL); give a ``distributed.Client`` to run them on its cluster. The shard
 folders go to a temporary folder the workers and this process share (``workdir``: give a shared
-file system's path on a cluster).
+file system's path on a cluster). More shards than operating points are not made: ``shards`` is
+capped at the scene's point count. A shard that fails raises :class:`gearloss.RunError` naming it
+(``.shard``, ``.kind``, ``.hints``), once every other shard has finished: none writes after the
+temporary folder is gone.
 """
 
 from __future__ import annotations
@@ -22,24 +25,37 @@ from typing import Optional, Union
 
 import dask
 
-from . import Report, Scene, _native
+from . import Report, RunError, Scene, _native
 
 
-def _run_shard(name: str, text: str, k: int, n: int, workdir: str) -> str:
-    folder, files = _native.run(name, text, (k, n))
-    return os.fspath(Report(folder, files).write(workdir))
+def _run_shard(name: str, text: str, k: int, n: int, workdir: str):
+    """One shard's folder written into ``workdir``: ``("ok", path)``, or ``("failed", error)`` so
+    that every task finishes before the folder is removed."""
+    try:
+        folder, files = _native.run(name, text, (k, n))
+        return ("ok", os.fspath(Report(folder, files).write(workdir)))
+    except Exception as e:  # noqa: BLE001 - handed back and raised, naming the shard
+        return ("failed", e)
 
 
 def run(scene: Scene, shards: int, client=None, workdir: Optional[Union[str, os.PathLike]] = None) -> Report:
-    """Runs ``scene`` in ``shards`` Dask tasks (``client``'s cluster, or Dask's default scheduler)
-    and merges their folders into one :class:`~gearloss.Report`."""
-    if shards < 1:
-        raise ValueError("shards must be at least 1")
+    """Runs ``scene`` in ``shards`` Dask tasks (``client``'s cluster, or Dask's default scheduler;
+    at most one a point) and merges their folders into one :class:`~gearloss.Report`."""
+    if isinstance(shards, bool) or not isinstance(shards, int) or shards < 1:
+        raise ValueError(f"shards must be a whole number, at least 1 (got {shards!r})")
+    shards = min(shards, _native.operating_points(scene.name, scene.text))
     with tempfile.TemporaryDirectory(prefix="gearloss-dask-", dir=workdir) as tmp:
         tasks = [dask.delayed(_run_shard)(scene.name, scene.text, k, shards, tmp) for k in range(1, shards + 1)]
         if client is not None:
-            folders = client.gather(client.compute(tasks))
+            results = client.gather(client.compute(tasks))
         else:
-            folders = list(dask.compute(*tasks))
-        name, files = _native.merge(folders)
+            results = list(dask.compute(*tasks))
+        for k, (status, value) in enumerate(results, start=1):
+            if status == "failed":
+                err = RunError(f"shard {k} of {shards} failed: {value}")
+                err.shard = k
+                err.kind = getattr(value, "kind", "")
+                err.hints = list(getattr(value, "hints", []))
+                raise err from value
+        name, files = _native.merge([value for _, value in results])
         return Report(name, files)
