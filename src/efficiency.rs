@@ -324,20 +324,20 @@ pub fn evaluate_efficiencies(
         efficiencies_of(ctx, law, &items[..n])
     };
     // Both formulations' extremes read the same instants on the same grid: located together.
-    let ranges = match formulations {
+    let ranges: [Option<crate::numerics::roots::Extremes>; 2] = match formulations {
         [one] => {
             let k = one.index();
-            let mut r = [((f64::NAN, f64::NAN), (f64::NAN, f64::NAN)); 2];
-            r[k] = extrema(|tau| eta(tau)[k], &breaks, 32, 1e-12);
+            let mut r = [None; 2];
+            r[k] = Some(extrema(|tau| eta(tau)[k], &breaks, 32, 1e-12));
             r
         }
-        _ => extrema_each(eta, &breaks, 32, 1e-12),
+        _ => extrema_each(eta, &breaks, 32, 1e-12).map(Some),
     };
     formulations
         .iter()
         .map(|f| {
             let k = f.index();
-            let ((min, _), (max, _)) = ranges[k];
+            let ((min, _), (max, _)) = ranges[k].unwrap_or_else(|| unreachable!("every asked formulation is located"));
             EfficiencyResult { formulation: *f, power_loss: power_loss(ctx, means[k].value), mean: means[k], min, max }
         })
         .collect()

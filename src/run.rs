@@ -103,10 +103,11 @@ fn each_oil_temperature(
     mut run_one: impl FnMut(&Scene, &str) -> Result<Report, RunError>,
 ) -> Result<Vec<(String, String)>, RunError> {
     let mut runs = Vec::new();
-    for (i, label) in scene.oil_temperature_labels().into_iter().enumerate() {
+    // The sweep's own temperatures (K): each run is at one of them.
+    let kelvin: Vec<f64> = scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
+    for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
         let at = scene.at_oil_temperature(i);
         let report = run_one(&at, &report::oil_sweep::run_folder(&label))?;
-        let kelvin = at.operating.oil_temperature.as_ref().map_or(f64::NAN, |t| t.value.value);
         runs.push((label, kelvin, report));
     }
     render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs)).map_err(RunError::drawing)

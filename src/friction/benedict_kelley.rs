@@ -12,7 +12,7 @@
 //! ```
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
@@ -53,8 +53,8 @@ impl BenedictKelley {
 }
 
 impl FrictionLaw for BenedictKelley {
-    fn id(&self) -> super::LawId {
-        super::LawId::BenedictKelley
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::BenedictKelley
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c).max(0.0), c.s)
@@ -63,7 +63,7 @@ impl FrictionLaw for BenedictKelley {
         if self.roughness_um >= 1.13 {
             Err("S_avg ≥ 1.13 µm makes the roughness factor 1.13/(1.13 − S) infinite or negative")
         } else {
-            super::log_argument_validity(c, self.argument(c))
+            super::friction_law::log_argument_validity(c, self.argument(c))
         }
     }
     fn diverges_at_pitch(&self) -> bool {

@@ -5,7 +5,7 @@
 //! are kept, named apart. Diverges (logarithmically) at P.
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
@@ -36,8 +36,8 @@ impl BenedictKelleyBernard {
 }
 
 impl FrictionLaw for BenedictKelleyBernard {
-    fn id(&self) -> super::LawId {
-        super::LawId::BenedictKelleyBernard
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::BenedictKelleyBernard
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c).max(0.0), c.s)
@@ -49,7 +49,7 @@ impl FrictionLaw for BenedictKelleyBernard {
         } else if self.magnitude(c) > 0.1 {
             Err("μ above 0.1, which Bernard say the law approaches")
         } else {
-            super::log_argument_validity(c, self.argument(c))
+            super::friction_law::log_argument_validity(c, self.argument(c))
         }
     }
     fn diverges_at_pitch(&self) -> bool {

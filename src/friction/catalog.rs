@@ -6,7 +6,8 @@
 
 pub use super::law_id::LawId;
 pub use super::needs::{MissingInput, Needs};
-use super::{FrictionLaw, LawContext};
+use super::friction_law::FrictionLaw;
+use super::law_context::LawContext;
 use crate::diagnostics::Span;
 use crate::quantity::Dimension;
 

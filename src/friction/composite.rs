@@ -8,7 +8,8 @@ use super::benedict_kelley::BenedictKelley;
 use super::needs::Needs;
 use super::smoothed_coulomb::SmoothedCoulomb;
 use super::xu::Xu;
-use super::{FrictionLaw, LawContext, Parameter, Regime};
+use super::friction_law::{FrictionLaw, Parameter, Regime};
+use super::law_context::LawContext;
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::integrate_singular;
 use crate::numerics::roots::{bracketed_roots, brent};
@@ -145,8 +146,8 @@ impl Composite {
 }
 
 impl FrictionLaw for Composite {
-    fn id(&self) -> super::LawId {
-        super::LawId::Composite
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::Composite
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         match Self::regime_of(self.lambda(c)) {

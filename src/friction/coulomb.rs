@@ -1,6 +1,6 @@
 //! Coulomb friction, Model I: μ = μ_avg sgn(s) (He–Cho–Singh eq 10; Fernandes §2.1).
 
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 
 /// Constant magnitude, sign of the sliding direction.
@@ -13,8 +13,8 @@ impl FrictionLaw for Coulomb {
     fn constant_magnitude(&self) -> bool {
         true
     }
-    fn id(&self) -> super::LawId {
-        super::LawId::Coulomb
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::Coulomb
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.mu, c.s)

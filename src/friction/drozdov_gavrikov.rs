@@ -9,7 +9,7 @@
 //! It diverges at P as V_s^−1/2 (integrable). Never used inside Model V.
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
@@ -38,8 +38,8 @@ impl DrozdovGavrikov {
 }
 
 impl FrictionLaw for DrozdovGavrikov {
-    fn id(&self) -> super::LawId {
-        super::LawId::DrozdovGavrikov
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::DrozdovGavrikov
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

@@ -10,7 +10,8 @@
 //! base oil) unless the law is given `x_l`.
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, LawContext, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::law_context::LawContext;
 use crate::geometry::ContactPoint;
 use crate::tribology::units;
 
@@ -76,8 +77,8 @@ impl FrictionLaw for Iso14179_2 {
     fn constant_magnitude(&self) -> bool {
         true
     }
-    fn id(&self) -> super::LawId {
-        super::LawId::Iso14179_2
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::Iso14179_2
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.mu_mz, c.s)

@@ -3,7 +3,7 @@
 //! Rz, h_min by Dowson–Higginson. Defaults μ_bl = 0.1, μ_EHL = 0.02. Signed with the sliding direction.
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{FilmInputs, Tribology};
 
@@ -41,8 +41,8 @@ impl Matsumoto {
 }
 
 impl FrictionLaw for Matsumoto {
-    fn id(&self) -> super::LawId {
-        super::LawId::Matsumoto
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::Matsumoto
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

@@ -2,7 +2,7 @@
 //! Valid for SR ∈ [0.4, 1.3]; diverges at P as SR^−1/4 (integrable).
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
@@ -23,8 +23,8 @@ impl Misharin {
 }
 
 impl FrictionLaw for Misharin {
-    fn id(&self) -> super::LawId {
-        super::LawId::Misharin
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::Misharin
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

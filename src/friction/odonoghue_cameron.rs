@@ -5,7 +5,7 @@
 //! Diverges at P as SR^−1/3 (integrable).
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
@@ -34,8 +34,8 @@ impl ODonoghueCameron {
 }
 
 impl FrictionLaw for ODonoghueCameron {
-    fn id(&self) -> super::LawId {
-        super::LawId::ODonoghueCameron
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::ODonoghueCameron
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude_with_radius_scale(c, units::MM_PER_M), c.s)

@@ -14,7 +14,7 @@
 
 use std::f64::consts::PI;
 
-use super::{FrictionLaw, Parameter};
+use super::friction_law::{FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 
 #[derive(Debug, Clone, Copy)]
@@ -33,8 +33,8 @@ impl SmoothedCoulomb {
 }
 
 impl FrictionLaw for SmoothedCoulomb {
-    fn id(&self) -> super::LawId {
-        super::LawId::SmoothedCoulomb
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::SmoothedCoulomb
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         self.at(c.s)

@@ -13,7 +13,7 @@
 //! ```
 
 use super::needs::Needs;
-use super::{signed, FrictionLaw, Parameter};
+use super::friction_law::{signed, FrictionLaw, Parameter};
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, FilmInputs, Tribology};
 
@@ -81,8 +81,8 @@ impl Xu {
 }
 
 impl FrictionLaw for Xu {
-    fn id(&self) -> super::LawId {
-        super::LawId::Xu
+    fn id(&self) -> super::law_id::LawId {
+        super::law_id::LawId::Xu
     }
     fn mu(&self, c: &ContactPoint) -> f64 {
         signed(self.magnitude(c), c.s)

@@ -223,15 +223,16 @@ fn parse_value(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Value {
 }
 
 fn parse_quantity(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> ValueKind {
-    let mut number = f64::NAN;
+    let mut number = None;
     let mut unit = None;
     for p in pair.into_inner() {
         match p.as_rule() {
-            Rule::number => number = parse_number(p),
+            Rule::number => number = Some(parse_number(p)),
             Rule::unit => unit = Some(parse_unit(p, errors)),
             rule => unreachable!("quantity: {rule:?}"),
         }
     }
+    let number = number.unwrap_or_else(|| unreachable!("the grammar gives every quantity its number"));
     ValueKind::Quantity { number, unit }
 }
 
@@ -283,15 +284,16 @@ fn parse_range(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> ValueKind {
 
 fn parse_range_step(pair: Pair<Rule>) -> RangeStep {
     let mut is_count = false;
-    let mut value = (f64::NAN, Span::default());
+    let mut value = None;
     for p in pair.into_inner() {
         match p.as_rule() {
             Rule::kw_step => is_count = false,
             Rule::kw_count => is_count = true,
-            Rule::number => value = (p.as_str().parse().unwrap_or(f64::NAN), p.as_span().into()),
+            Rule::number => value = Some((parse_number(p.clone()), p.as_span().into())),
             rule => unreachable!("range_step: {rule:?}"),
         }
     }
+    let value: (f64, Span) = value.unwrap_or_else(|| unreachable!("the grammar gives every step its number"));
     if is_count {
         RangeStep::Count(value.0, value.1)
     } else {
@@ -352,9 +354,10 @@ fn parse_ident(pair: Pair<Rule>) -> Name {
 }
 
 fn parse_number(pair: Pair<Rule>) -> f64 {
-    // The grammar admits only decimal numbers, which `f64::from_str` always accepts; an
-    // overflow gives ±inf, which lowering reports as non-finite.
-    pair.as_str().parse().unwrap_or(f64::NAN)
+    // The grammar admits only decimal numbers and the words NaN, inf and infinity, which
+    // `f64::from_str` always accepts (an overflow gives ±inf, which lowering reports as non-finite).
+    let text = pair.as_str();
+    text.parse().unwrap_or_else(|_| unreachable!("the grammar admits `{text}` as a number"))
 }
 
 fn parse_string(pair: Pair<Rule>) -> String {

@@ -15,7 +15,8 @@ fn entry_files(folder: &str, machinery: &[&str]) -> BTreeSet<String> {
 /// Friction laws: `src/friction/<law name>.rs` for every row of `LAWS`, and no other law file.
 #[test]
 fn friction_laws_one_file_one_row() {
-    let files = entry_files("friction", &["mod.rs", "catalog.rs", "law_id.rs", "needs.rs"]);
+    let machinery = ["mod.rs", "catalog.rs", "law_id.rs", "needs.rs", "friction_law.rs", "law_context.rs", "testing.rs"];
+    let files = entry_files("friction", &machinery);
     let rows: BTreeSet<String> =
         gearloss::friction::catalog::LAWS.iter().map(|l| format!("{}.rs", l.id.name())).collect();
     assert_eq!(files, rows, "files in src/friction/ and rows of LAWS differ");
@@ -113,4 +114,57 @@ fn loss_parts_one_file_one_row() {
         assert_eq!(PARTS.iter().filter(|p| p.columns.contains(&c.column)).count(), 1, "{}", c.key);
         assert_eq!(COLUMNS.iter().filter(|x| x.key == c.key).count(), 1, "{}", c.key);
     }
+}
+
+/// ARCHITECTURE.md's rule, held for every folder of `src/`: a file reaches its siblings through
+/// `super::<sibling>`, never what its folder's `mod.rs` declares or re-exports (`super::{Trait}`):
+/// the trait of a catalogue lives in a file of its own. Comments and test modules are not code of
+/// the file's layer and are not read.
+#[test]
+fn no_file_imports_its_folders_mod_rs() {
+    fn walk(dir: &std::path::Path, out: &mut Vec<String>) {
+        let entries: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+        let siblings: BTreeSet<String> = entries
+            .iter()
+            .filter_map(|p| {
+                let name = p.file_name()?.to_str()?;
+                Some(name.strip_suffix(".rs").unwrap_or(name).to_string())
+            })
+            .collect();
+        for path in &entries {
+            if path.is_dir() {
+                walk(path, out);
+                continue;
+            }
+            let name = path.file_name().unwrap().to_str().unwrap();
+            if !name.ends_with(".rs") || ["mod.rs", "lib.rs", "main.rs"].contains(&name) {
+                continue;
+            }
+            let text = std::fs::read_to_string(path).unwrap();
+            let code = text.split("#[cfg(test)]").next().unwrap();
+            for line in code.lines().filter(|l| !l.trim_start().starts_with("//")) {
+                let mut rest = line;
+                while let Some(at) = rest.find("super::") {
+                    let before = rest[..at].chars().last();
+                    rest = &rest[at + "super::".len()..];
+                    if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
+                        continue;
+                    }
+                    let names: Vec<&str> = match rest.strip_prefix('{') {
+                        Some(group) => group.split('}').next().unwrap().split(',').collect(),
+                        None => vec![rest],
+                    };
+                    for n in names {
+                        let n: String = n.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+                        if !n.is_empty() && n != "super" && n != "self" && !siblings.contains(&n) {
+                            out.push(format!("{}: super::{n}", path.display()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&crate::root().join("src"), &mut out);
+    assert!(out.is_empty(), "files that reach into their folder's mod.rs:\n{}", out.join("\n"));
 }
