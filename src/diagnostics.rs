@@ -88,7 +88,7 @@ impl Diagnostic {
 
 /// A message on one line: line ends and other control characters (from the scene's text quoted in
 /// a message) are written as escapes, so that a message never breaks a terminal line or a log.
-pub fn one_line(s: String) -> String {
+pub(crate) fn one_line(s: String) -> String {
     if !s.chars().any(char::is_control) {
         return s;
     }

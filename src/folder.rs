@@ -18,7 +18,7 @@ fn unique(dir: &Path, name: &str, what: &str) -> PathBuf {
 
 /// A report folder being written.
 #[derive(Debug)]
-pub struct ReportFolder {
+pub(crate) struct ReportFolder {
     dir: PathBuf,
     name: String,
     tmp: PathBuf,
@@ -27,7 +27,7 @@ pub struct ReportFolder {
 
 impl ReportFolder {
     /// Starts `out_dir/name/`, creating `out_dir` if needed. `out_dir` naming a file is an error.
-    pub fn create(out_dir: &Path, name: &str) -> std::io::Result<ReportFolder> {
+    pub(crate) fn create(out_dir: &Path, name: &str) -> std::io::Result<ReportFolder> {
         if out_dir.exists() && !out_dir.is_dir() {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::AlreadyExists,
@@ -45,12 +45,12 @@ impl ReportFolder {
     }
 
     /// The path of a file inside the folder being written.
-    pub fn path(&self, file: &str) -> PathBuf {
+    pub(crate) fn path(&self, file: &str) -> PathBuf {
         self.tmp.join(file)
     }
 
     /// Creates one file of the folder for writing (`dir/file` in a subfolder, created as needed).
-    pub fn create_file(&self, file: &str) -> std::io::Result<std::fs::File> {
+    pub(crate) fn create_file(&self, file: &str) -> std::io::Result<std::fs::File> {
         let path = self.path(file);
         if let Some(parent) = path.parent() {
             std::fs::create_dir_all(parent)?;
@@ -59,7 +59,7 @@ impl ReportFolder {
     }
 
     /// Writes one file of the folder ([`ReportFolder::create_file`]).
-    pub fn write(&self, file: &str, content: &[u8]) -> std::io::Result<()> {
+    pub(crate) fn write(&self, file: &str, content: &[u8]) -> std::io::Result<()> {
         use std::io::Write;
         self.create_file(file)?.write_all(content)
     }
@@ -67,7 +67,7 @@ impl ReportFolder {
     /// Renames the finished folder into place, replacing a folder of the same name. Another run may
     /// put its folder there at the same time: the displaced folder is moved aside under a unique
     /// name and removed, and the rename is tried again.
-    pub fn commit(mut self) -> std::io::Result<PathBuf> {
+    pub(crate) fn commit(mut self) -> std::io::Result<PathBuf> {
         let target = self.dir.join(&self.name);
         let mut last = None;
         for _ in 0..256 {

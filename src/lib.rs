@@ -52,28 +52,28 @@
 //! [`losses::parts::COLUMNS`]). A model with parameters a scene must give adds their keys to the
 //! lowering of its block.
 
-pub mod diagnostics;
+pub(crate) mod diagnostics;
 pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;
-pub mod folder;
+pub(crate) mod folder;
 pub mod friction;
 pub mod geometry;
 pub mod listing;
 pub mod losses;
 pub mod model;
 pub mod numerics;
-pub mod progress;
+pub(crate) mod progress;
 #[cfg(feature = "python")]
 mod python;
-pub mod quantity;
+pub(crate) mod quantity;
 pub mod render;
 pub mod report;
 pub mod rerender;
 pub mod run;
-pub mod run_error;
+pub(crate) mod run_error;
 pub mod scene;
-pub mod shard;
+pub(crate) mod shard;
 pub mod thermal;
 pub mod tribology;
 

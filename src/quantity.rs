@@ -16,7 +16,7 @@ pub struct Dimension {
 
 /// Largest power of a base dimension a unit may carry (m^12 is far beyond any physical quantity;
 /// the bound keeps every exponent exact, never saturated).
-pub const MAX_EXPONENT: i32 = 24;
+pub(crate) const MAX_EXPONENT: i32 = 24;
 
 const fn dim(length: i8, mass: i8, time: i8, temperature: i8, angle: i8) -> Dimension {
     Dimension { length, mass, time, temperature, angle }
@@ -49,13 +49,13 @@ impl Dimension {
     pub const HEAT_CAPACITY: Dimension = dim(2, 1, -2, -1, 0);
     pub const THERMAL_CONDUCTANCE: Dimension = dim(2, 1, -3, -1, 0);
 
-    /// This dimension to the power `e`; None when an exponent would leave ±[`MAX_EXPONENT`].
+    /// This dimension to the power `e`; None when an exponent would leave ±`MAX_EXPONENT`.
     pub fn checked_pow(self, e: i32) -> Option<Dimension> {
         let p = |x: i8| i32::from(x).checked_mul(e).filter(|v| v.abs() <= MAX_EXPONENT).map(|v| v as i8);
         Some(dim(p(self.length)?, p(self.mass)?, p(self.time)?, p(self.temperature)?, p(self.angle)?))
     }
 
-    /// The product of two dimensions; None when an exponent would leave ±[`MAX_EXPONENT`].
+    /// The product of two dimensions; None when an exponent would leave ±`MAX_EXPONENT`.
     pub fn checked_times(self, o: Dimension) -> Option<Dimension> {
         let a = |x: i8, y: i8| Some(x + y).filter(|v| v.abs() <= MAX_EXPONENT as i8);
         Some(dim(

@@ -79,7 +79,7 @@ fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), 
 /// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
 /// render; the record files are among the files returned. A scene with several oil temperatures
 /// gives one report per temperature in its folder (`oil_temperature_90degC/report.md`) and their
-/// comparison at the top ([`report::oil_sweep`]).
+/// comparison at the top (`report::oil_sweep`).
 pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let slug = report::slug(&scene.title);
@@ -104,7 +104,8 @@ fn each_oil_temperature(
 ) -> Result<Vec<(String, String)>, RunError> {
     let mut runs = Vec::new();
     // The sweep's own temperatures (K): each run is at one of them.
-    let kelvin: Vec<f64> = scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
+    let kelvin: Vec<f64> =
+        scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
     for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
         let at = scene.at_oil_temperature(i);
         let report = run_one(&at, &report::oil_sweep::run_folder(&label))?;

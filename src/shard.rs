@@ -19,12 +19,12 @@ use crate::report::sweep::{RECORDS_CSV, RECORDS_JSONL};
 use crate::run_error::{Failure, FailureKind};
 
 /// The manifest of a shard folder.
-pub const MANIFEST: &str = "shard.json";
+pub(crate) const MANIFEST: &str = "shard.json";
 /// The manifest's format, checked by `merge`.
-pub const FORMAT: &str = "gearloss-shard-1";
+pub(crate) const FORMAT: &str = "gearloss-shard-1";
 
 /// Opens the record files of a folder being written.
-pub fn record_files(
+pub(crate) fn record_files(
     folder: &ReportFolder,
     dir: &str,
     extra: &ExtraColumns,
@@ -37,7 +37,7 @@ pub fn record_files(
 
 /// What a shard folder says of itself.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct Manifest {
+pub(crate) struct Manifest {
     pub format: String,
     pub gearloss_version: String,
     /// The scene as given to `run`, its path (files it names are read relative to it) and text.
@@ -51,7 +51,7 @@ pub struct Manifest {
 }
 
 impl Manifest {
-    pub fn new(source_name: &str, source: &str, shard: Shard, plan: &Plan, tally: Tally) -> Manifest {
+    pub(crate) fn new(source_name: &str, source: &str, shard: Shard, plan: &Plan, tally: Tally) -> Manifest {
         Manifest {
             format: FORMAT.into(),
             gearloss_version: env!("CARGO_PKG_VERSION").into(),
@@ -64,7 +64,7 @@ impl Manifest {
         }
     }
 
-    pub fn to_json(&self) -> Vec<u8> {
+    pub(crate) fn to_json(&self) -> Vec<u8> {
         let mut v = serde_json::to_vec_pretty(self).expect("a manifest serialises");
         v.push(b'\n');
         v
@@ -73,7 +73,7 @@ impl Manifest {
 
 /// The N shards of one scene, in shard order, with their tallies folded.
 #[derive(Debug)]
-pub struct ShardSet {
+pub(crate) struct ShardSet {
     pub source_name: String,
     pub source: String,
     pub folders: Vec<PathBuf>,
@@ -83,7 +83,7 @@ pub struct ShardSet {
 impl ShardSet {
     /// Reads and checks the manifests: one scene, one shard count, every shard exactly once; the
     /// error says which folder is wrong and why.
-    pub fn read(folders: &[PathBuf]) -> Result<ShardSet, Failure> {
+    pub(crate) fn read(folders: &[PathBuf]) -> Result<ShardSet, Failure> {
         let not_a_shard = |reason: String| {
             Failure::new(FailureKind::NotAShard, reason)
                 .hint("give the folders `gearloss run --shard K/N` wrote, named <scene>.shard-K-of-N")
@@ -147,7 +147,7 @@ impl ShardSet {
 
     /// Writes the merged record files into `folder`: each file of each shard in shard order, the CSV
     /// header once.
-    pub fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<()> {
+    pub(crate) fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<()> {
         for (file, header) in [(RECORDS_CSV, true), (RECORDS_JSONL, false)] {
             let mut out = BufWriter::new(folder.create_file(file)?);
             for (k, dir) in self.folders.iter().enumerate() {

@@ -22,12 +22,12 @@ pub mod model;
 pub mod models;
 pub mod numerics;
 pub mod propagator;
-pub mod rank_one;
+pub(crate) mod rank_one;
 pub mod response;
-pub mod sdof;
+pub(crate) mod sdof;
 pub mod six_dof;
 pub mod six_dof_response;
-pub mod spec;
+pub(crate) mod spec;
 pub mod trajectory;
 
 pub use floquet::{Floquet, Multiplier};

@@ -10,7 +10,7 @@
 //!
 //! - **Spectral (rank one)**: where A(t) varies along one row only (A0 + w(t) nᵀ, the 6-DOF model
 //!   with friction), Chebyshev collocation of the scalar Volterra equation for nᵀX in A0's modal
-//!   form ([`super::rank_one`]), whose cost does not grow with the fast modes as Magnus' does.
+//!   form (`super::rank_one`), whose cost does not grow with the fast modes as Magnus' does.
 //!
 //! The augmented matrices are static (4×4, 3×3) for the 2-state models and dynamic otherwise, so the
 //! SDOF path allocates nothing.

@@ -43,5 +43,4 @@ mod complex;
 mod quadrature;
 mod segment;
 
-pub use collocation::{MAX_PHASE, PIECE_DEGREE, PIECE_DEGREES};
-pub use segment::{RankOneSegment, MAX_CONDITION};
+pub(crate) use segment::RankOneSegment;

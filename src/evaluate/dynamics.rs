@@ -6,7 +6,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::cases::Case;
-pub use crate::dynamics::analysis::FormulationResult;
+pub(crate) use crate::dynamics::analysis::FormulationResult;
 use crate::dynamics::models::{GearDynamics, ModelInputs, Wants};
 use crate::dynamics::numerics::Study;
 use crate::dynamics::{DynamicFormulation, SdofSystem, StiffnessModel};
@@ -124,7 +124,7 @@ fn unstable_ranges(rows: impl Iterator<Item = (f64, f64)>, excess: impl Fn(f64) 
 }
 
 /// The dynamic model's fixed inputs for a scene: built once, then analysed at any operating point.
-pub struct DynamicsSetup<'a> {
+pub(crate) struct DynamicsSetup<'a> {
     base: LawContext<'a>,
     spec: &'a DynamicsSpec,
     stiffness: StiffnessModel,
@@ -139,7 +139,7 @@ impl<'a> DynamicsSetup<'a> {
     /// inertias, and masses and bearings on bearings: lowering refuses a scene that asks for dynamics
     /// without them); `base` is the law context of the scene's pair (its state is replaced by each
     /// operating point's).
-    pub fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
+    pub(crate) fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
         let spec = scene.dynamics.as_ref()?;
         let inertia = inertia(scene)?;
         let mass = |g: &crate::model::Gear| g.mass.as_ref().map(|m| m.value.value);
@@ -184,7 +184,7 @@ impl<'a> DynamicsSetup<'a> {
 
     /// Every formulation at operating point `case` (its index in the caller's list) with its periodic
     /// response (located extrema, spectrum, series).
-    pub fn point(&self, case: usize, state: OperatingState) -> DynamicsPoint {
+    pub(crate) fn point(&self, case: usize, state: OperatingState) -> DynamicsPoint {
         let law = self.law_for(state);
         let results = self
             .spec
@@ -209,7 +209,7 @@ impl<'a> DynamicsSetup<'a> {
 /// `base` is the law context of the scene's pair (its state is replaced by each operating point's).
 /// `known` holds dynamics already computed by the sweep's stream, by point number (0-based); the
 /// cases among them are not computed again.
-pub fn evaluate_dynamics(
+pub(crate) fn evaluate_dynamics(
     scene: &Scene,
     cases: &[Case],
     base: LawContext,

@@ -7,7 +7,7 @@ use crate::model::Scene;
 /// At `oil_temperature = equilibrium`: the scene with its lubricant at the balance of its first
 /// operating point (first law, first formulation), where its tables, curves, film and dynamics are
 /// read; the scene itself otherwise, or when that point finds no balance.
-pub fn at_first_balance(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
+pub(crate) fn at_first_balance(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
     use std::borrow::Cow;
     let (Some(span), Some(housing), Some(spec)) =
         (scene.operating.equilibrium, scene.housing.as_ref(), scene.friction.first())

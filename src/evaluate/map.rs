@@ -44,7 +44,7 @@ pub struct EfficiencyMap {
 }
 
 /// Evaluates the scene's `efficiency_map`, if it asks for one.
-pub fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
+pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
     let (torques, speeds) = scene.analyses.efficiency_map.as_ref()?;
     let grid = Operating {
         pinion_torque: torques.clone(),

@@ -16,7 +16,7 @@ use crate::geometry::OperatingState;
 use crate::model::Scene;
 
 /// The search stops when a sweep moves the point by less than this fraction of the box.
-pub const POINT_TOLERANCE: f64 = 1e-7;
+pub(crate) const POINT_TOLERANCE: f64 = 1e-7;
 /// The golden-section search along one direction stops at this fraction of its interval.
 const LINE_TOLERANCE: f64 = 1e-8;
 
@@ -84,7 +84,7 @@ fn golden_max(f: impl Fn(f64) -> f64, a: f64, b: f64, count: &mut usize) -> (f64
 
 /// The best point of every entry of `fields` — (law index, formulation, whether the values are
 /// total efficiencies, values[torque][speed]) — over the grid `torques` × `speeds` (SI).
-pub fn best_points(
+pub(crate) fn best_points(
     scene: &Scene,
     eval: &Setup,
     torques: &[f64],

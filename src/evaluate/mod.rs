@@ -1,27 +1,27 @@
 //! Stage 3, evaluate: computes only what the scene asks for, in plain SI `f64`.
 //!
-//! The operating points reported in full become [`Case`]s ([`cases`]); at each case the contact state along the
+//! The operating points reported in full become [`Case`]s (`cases`); at each case the contact state along the
 //! line of action is always computed, friction, efficiency and film thickness only when the scene's
-//! `analyses` name them ([`laws`]), and the dynamics only when it has a `dynamics` block and asks for
-//! them ([`dynamics`]). Report and render read the evaluation; they never recompute physics.
+//! `analyses` name them (`laws`), and the dynamics only when it has a `dynamics` block and asks for
+//! them (`dynamics`). Report and render read the evaluation; they never recompute physics.
 
-pub mod cases;
-pub mod contact_curves;
-pub mod details;
-pub mod dynamics;
-pub mod evaluation;
-pub mod first_balance;
-pub mod laws;
-pub mod map;
-pub mod map_best;
+pub(crate) mod cases;
+pub(crate) mod contact_curves;
+pub(crate) mod details;
+pub(crate) mod dynamics;
+pub(crate) mod evaluation;
+pub(crate) mod first_balance;
+pub(crate) mod laws;
+pub(crate) mod map;
+pub(crate) mod map_best;
 pub mod plan;
-pub mod prepare;
+pub(crate) mod prepare;
 pub mod records;
-pub mod setup;
-pub mod stages;
-pub mod ste_row;
+pub(crate) mod setup;
+pub(crate) mod stages;
+pub(crate) mod ste_row;
 pub mod stream;
-pub mod tally;
+pub(crate) mod tally;
 pub mod teeth;
 pub mod thermal;
 

@@ -187,7 +187,7 @@ pub const CSV_COLUMNS: [&str; 23] = [
 /// The columns of `records.csv` after [`CSV_COLUMNS`], in groups each present as the scene asks:
 /// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
 /// balance's ([`super::thermal::ThermalRow::COLUMNS`]), then the static transmission error's
-/// ([`super::ste_row::SteRow::COLUMNS`]). A row fills the groups it has and leaves the others' cells
+/// (`super::ste_row::SteRow::COLUMNS`). A row fills the groups it has and leaves the others' cells
 /// empty.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ExtraColumns {

@@ -88,7 +88,7 @@ impl Setup {
 
 /// The oil as the losses beside the mesh read it, from the tribology at the oil temperature
 /// (ρ = η/ν; a lubricant of unknown base counts as mineral).
-pub fn budget_oil(scene: &Scene, t: &Tribology) -> crate::losses::Oil {
+pub(crate) fn budget_oil(scene: &Scene, t: &Tribology) -> crate::losses::Oil {
     crate::losses::Oil {
         nu: t.kinematic_viscosity,
         rho: t.density(),

@@ -10,7 +10,7 @@ use crate::progress::Progress;
 
 /// The plan's points streamed: summary rows to `sink` in sweep order, the tally and the detail
 /// points' dynamics returned.
-pub fn stream(
+pub(crate) fn stream(
     scene: &Scene,
     plan: &Plan,
     sink: &mut dyn RecordSink,
@@ -25,7 +25,7 @@ pub fn stream(
 }
 
 /// The plan's detail points in full, reusing what the stream computed (`known`).
-pub fn details(scene: &Scene, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
+pub(crate) fn details(scene: &Scene, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
     let mut eval = super::prepare::prepare(scene, plan);
     progress.stage("details", plan.detail.len() as u64);
     super::details::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));

@@ -8,12 +8,12 @@ use serde::{Deserialize, Serialize};
 use super::records::{RowKind, SummaryRow};
 
 /// b_H / R above which the half-space (line-contact) assumption of Hertz's formulas fails.
-pub const HALF_WIDTH_LIMIT: f64 = 0.1;
+pub(crate) const HALF_WIDTH_LIMIT: f64 = 0.1;
 
 /// Findings of one kind listed one by one before only their count is given.
-pub const LISTED_FINDINGS: usize = 20;
+pub(crate) const LISTED_FINDINGS: usize = 20;
 /// Distinct notes kept per law.
-pub const KEPT_NOTES: usize = 32;
+pub(crate) const KEPT_NOTES: usize = 32;
 
 /// A result outside what the formulas allow, at one operating point.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -45,7 +45,7 @@ pub struct WorstValidity {
 }
 
 /// Operating points listed with a note before only their count is given.
-pub const NOTE_POINTS: usize = 8;
+pub(crate) const NOTE_POINTS: usize = 8;
 
 /// A law's note and the operating points (0-based) it was made at: the first [`NOTE_POINTS`] of
 /// them, and how many in all.
@@ -99,7 +99,7 @@ impl LawTally {
 }
 
 /// A located value over the sweep's points: the value and its point (0-based).
-pub type AtPoint = (f64, usize);
+pub(crate) type AtPoint = (f64, usize);
 
 /// Extremes of one law and formulation over the sweep's points (exact over the evaluated points).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -150,7 +150,7 @@ pub struct Tally {
     pub kept: Vec<SummaryRow>,
     pub laws: Vec<LawTally>,
     pub implausible_count: usize,
-    /// The first [`LISTED_FINDINGS`] implausible results.
+    /// The first `LISTED_FINDINGS` implausible results.
     pub implausible: Vec<ImplausibleAt>,
     pub extremes: Vec<SweepExtremes>,
     pub dynamics: Vec<DynamicsTally>,

@@ -11,8 +11,8 @@
 //! assert!(mu < 0.0 && mu > -0.1, "{mu}");
 //! ```
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 

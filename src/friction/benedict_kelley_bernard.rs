@@ -4,20 +4,20 @@
 //! 50/(50 − S_rms) ≤ 3. Not equivalent to He–Cho–Singh's eq 14 (it runs ≈ 0.08 higher), so both
 //! are kept, named apart. Diverges (logarithmically) at P.
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
 #[derive(Debug, Clone, Copy)]
-pub struct BenedictKelleyBernard {
+pub(crate) struct BenedictKelleyBernard {
     pub viscosity_cp: f64,
     pub roughness_rms_um: f64,
     pub reduced_modulus: f64,
 }
 
 impl BenedictKelleyBernard {
-    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+    pub(crate) fn new(t: &Tribology) -> Result<Self, Needs> {
         Ok(BenedictKelleyBernard {
             viscosity_cp: t.dynamic_viscosity * units::CP_PER_PA_S,
             roughness_rms_um: Needs::RoughnessRq.of(t.rq_mean)? * units::UM_PER_M,
@@ -30,7 +30,7 @@ impl BenedictKelleyBernard {
             / (self.viscosity_cp * c.slide_to_roll * c.entrainment_velocity.powi(3) * self.reduced_modulus)
     }
 
-    pub fn magnitude(&self, c: &ContactPoint) -> f64 {
+    pub(crate) fn magnitude(&self, c: &ContactPoint) -> f64 {
         0.0127 * 50.0 / (50.0 - self.roughness_rms_um) * self.argument(c).log10()
     }
 }

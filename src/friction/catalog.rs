@@ -4,10 +4,10 @@
 //! Lowering checks `friction { ... }` against this table and produces [`FrictionLawSpec`]s; evaluation
 //! builds a law for an operating point with [`FrictionLawSpec::build`]. The laws live one per file.
 
-pub use super::law_id::LawId;
-pub use super::needs::{MissingInput, Needs};
 use super::friction_law::FrictionLaw;
 use super::law_context::LawContext;
+pub use super::law_id::LawId;
+pub use super::needs::{MissingInput, Needs};
 use crate::diagnostics::Span;
 use crate::quantity::Dimension;
 

@@ -1,15 +1,15 @@
 //! Composite friction, Model V (He–Cho–Singh eq 20–21): the regime follows the film parameter Λ at
 //! each contact — Λ < 1 boundary → smoothed Coulomb (Model IV), 1 ≤ Λ < 4 mixed → Benedict–Kelley
 //! eq 14 (Model II), Λ ≥ 4 full film → Xu (Model III). Λ = h_c/R_comp · sqrt(L_x/(2 b_H)) with the
-//! Dowson–Toyoda central film ([`crate::tribology::film`]). Model IV's magnitude is the mean |μ_BK|
+//! Dowson–Toyoda central film (`crate::tribology::film`). Model IV's magnitude is the mean |μ_BK|
 //! over A–E at the operating point unless `mu` is given (He–Cho–Singh §3.5, their ref \[4\]).
 
 use super::benedict_kelley::BenedictKelley;
+use super::friction_law::{FrictionLaw, Parameter, Regime};
+use super::law_context::LawContext;
 use super::needs::Needs;
 use super::smoothed_coulomb::SmoothedCoulomb;
 use super::xu::Xu;
-use super::friction_law::{FrictionLaw, Parameter, Regime};
-use super::law_context::LawContext;
 use crate::geometry::ContactPoint;
 use crate::numerics::quadrature::integrate_singular;
 use crate::numerics::roots::{bracketed_roots, brent};

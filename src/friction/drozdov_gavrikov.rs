@@ -8,8 +8,8 @@
 //! is 0.39–1.96 GPa in those units). With these readings μ ≈ 0.02–0.1 on Bernard's Table 2 data.
 //! It diverges at P as V_s^−1/2 (integrable). Never used inside Model V.
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 
@@ -17,18 +17,18 @@ use crate::tribology::{units, Tribology};
 const KGF_PER_CM2_PER_PA: f64 = 1.0 / 98_066.5;
 
 #[derive(Debug, Clone, Copy)]
-pub struct DrozdovGavrikov {
+pub(crate) struct DrozdovGavrikov {
     pub kinematic_viscosity_cst: f64,
 }
 
 impl DrozdovGavrikov {
-    pub fn new(t: &Tribology) -> Result<Self, Needs> {
+    pub(crate) fn new(t: &Tribology) -> Result<Self, Needs> {
         Ok(DrozdovGavrikov {
             kinematic_viscosity_cst: Needs::KinematicViscosity.of(t.kinematic_viscosity)? * units::CST_PER_M2_S,
         })
     }
 
-    pub fn magnitude(&self, c: &ContactPoint) -> f64 {
+    pub(crate) fn magnitude(&self, c: &ContactPoint) -> f64 {
         let nu = self.kinematic_viscosity_cst;
         let p = c.hertz_pressure * KGF_PER_CM2_PER_PA;
         let phi = 0.47 - 0.13e-4 * p - 0.4e-4 * nu;

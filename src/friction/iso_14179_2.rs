@@ -9,9 +9,9 @@
 //! 1 m/s μ is underestimated, which is flagged. X_L is the lubricant's (ISO/TR 14179-2's table by
 //! base oil) unless the law is given `x_l`.
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
 use super::law_context::LawContext;
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::units;
 

@@ -2,8 +2,8 @@
 //! μ = ξ μ_bl + (1 − ξ) μ_EHL, ξ = 0.5 log10(Rz_comp / h_min) clamped to [0, 1], Rz_comp the mean
 //! Rz, h_min by Dowson–Higginson. Defaults μ_bl = 0.1, μ_EHL = 0.02. Signed with the sliding direction.
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{FilmInputs, Tribology};
 

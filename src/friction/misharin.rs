@@ -1,8 +1,8 @@
 //! Misharin (Bernard et al., Table 1): μ = 0.3865 (ν_k U² SR)^−1/4, ν_k in cSt, U in m/s.
 //! Valid for SR ∈ [0.4, 1.3]; diverges at P as SR^−1/4 (integrable).
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 

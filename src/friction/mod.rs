@@ -18,18 +18,18 @@
 //! ```
 
 pub mod benedict_kelley;
-pub mod benedict_kelley_bernard;
+pub(crate) mod benedict_kelley_bernard;
 pub mod catalog;
-mod friction_law;
-mod law_context;
 pub mod composite;
 pub mod coulomb;
-pub mod drozdov_gavrikov;
+pub(crate) mod drozdov_gavrikov;
+mod friction_law;
 pub mod iso_14179_2;
-pub mod law_id;
+mod law_context;
+pub(crate) mod law_id;
 pub mod matsumoto;
 pub mod misharin;
-pub mod needs;
+pub(crate) mod needs;
 pub mod odonoghue_cameron;
 pub mod smoothed_coulomb;
 #[doc(hidden)]

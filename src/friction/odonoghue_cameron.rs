@@ -4,8 +4,8 @@
 //! μ ≈ 1–4 (implausible), R in millimetres 0.03–0.1, so **R is taken in mm** and every report says so.
 //! Diverges at P as SR^−1/3 (integrable).
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, Tribology};
 

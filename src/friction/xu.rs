@@ -12,8 +12,8 @@
 //! assert_eq!(law.magnitude(&c), 0.0);
 //! ```
 
-use super::needs::Needs;
 use super::friction_law::{signed, FrictionLaw, Parameter};
+use super::needs::Needs;
 use crate::geometry::ContactPoint;
 use crate::tribology::{units, FilmInputs, Tribology};
 

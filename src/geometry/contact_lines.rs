@@ -15,10 +15,9 @@
 //! whole face width) and everything reduces to the spur mesh cycle.
 
 use super::pair::PairGeometry;
-pub use super::pair::MAX_TOTAL_CONTACT_RATIO;
 
 /// The most contact lines at once.
-pub const MAX_LINES: usize = 8;
+pub(crate) const MAX_LINES: usize = 8;
 
 /// The loaded part of one contact line at an instant.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]

@@ -8,7 +8,7 @@ pub fn involute(alpha: f64) -> f64 {
 }
 
 /// Inverse of the involute function on [0, π/2), by Newton's method from Cheng's start value.
-pub fn inverse_involute(inv: f64) -> f64 {
+pub(crate) fn inverse_involute(inv: f64) -> f64 {
     if inv <= 0.0 {
         return 0.0;
     }

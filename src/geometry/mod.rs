@@ -3,16 +3,16 @@
 //! Knows nothing of scenes, friction or reports: it takes a [`pair::PairInput`] and gives numbers.
 
 pub mod contact;
-pub mod contact_lines;
-pub mod elastic;
-pub mod involute;
+pub(crate) mod contact_lines;
+pub(crate) mod elastic;
+pub(crate) mod involute;
 pub mod mesh;
-pub mod pair;
-pub mod pair_checks;
-pub mod pair_input;
-pub mod path;
+pub(crate) mod pair;
+pub(crate) mod pair_checks;
+pub(crate) mod pair_input;
+pub(crate) mod path;
 pub mod regions;
-pub mod sharing;
+pub(crate) mod sharing;
 pub mod stiffness;
 pub mod teeth;
 

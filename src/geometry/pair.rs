@@ -14,9 +14,10 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-pub use super::involute::{inverse_involute, involute};
+pub(crate) use super::involute::inverse_involute;
+pub(crate) use super::involute::involute;
 use super::pair_checks::{centre_distance, contact_ratios, interference, too_few_teeth, tooth_shapes, TeethShape};
-pub use super::pair_input::{GeometryProblem, PairInput, PairPart, MAX_TOTAL_CONTACT_RATIO};
+pub use super::pair_input::{GeometryProblem, PairInput, PairPart};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]

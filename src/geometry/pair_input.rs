@@ -1,7 +1,7 @@
 //! What the pair geometry is computed from (SI), and the problems that stop a pair from meshing.
 
 /// Largest ε_γ supported: at most [`super::contact_lines::MAX_LINES`] lines in contact.
-pub const MAX_TOTAL_CONTACT_RATIO: f64 = 7.0;
+pub(crate) const MAX_TOTAL_CONTACT_RATIO: f64 = 7.0;
 
 /// What the geometry needs, in SI units (m, rad).
 #[derive(Debug, Clone, Copy, PartialEq)]

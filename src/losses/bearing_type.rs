@@ -4,7 +4,7 @@
 /// Y of a tapered roller bearing when the scene gives none: the axial load factor of the small
 /// single-row tapered roller bearings of the 302 and 303 series (e.g. 30206: e = 0.37, Y = 1.6, in
 /// SKF's and the other makers' catalogues). Give `y` for the bearing's own.
-pub const TAPERED_Y: f64 = 1.6;
+pub(crate) const TAPERED_Y: f64 = 1.6;
 
 /// The bearing types of the table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]

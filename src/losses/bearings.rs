@@ -39,7 +39,8 @@
 //! assert!((b.load_moment(5000.0, 0.0).unwrap() - 0.09).abs() < 1e-12);
 //! ```
 
-pub use super::bearing_type::{BearingType, TAPERED_Y};
+pub use super::bearing_type::BearingType;
+pub(crate) use super::bearing_type::TAPERED_Y;
 
 /// One bearing position on a shaft (`count` equal bearings there), in SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -53,7 +54,7 @@ pub struct Bearing {
     pub f0: Option<f64>,
     pub f1: Option<f64>,
     /// The axial load factor Y of a tapered roller bearing (its catalogue's Y for F_a/F_r > e), for
-    /// P_1 = max(2 Y F_a, F_r); [`TAPERED_Y`] when not given.
+    /// P_1 = max(2 Y F_a, F_r); `TAPERED_Y` when not given.
     pub y: Option<f64>,
     /// Axial position along the shaft from the gear's mid-plane (m), for the lever rule.
     pub position: Option<f64>,

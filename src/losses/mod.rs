@@ -9,16 +9,16 @@
 //! Niemann & Winter: P_V = P_VZP + P_VZ0 + P_VL + P_VD (mesh under load, gears without load,
 //! bearings, seals).
 
-pub mod bearing_loss;
-pub mod bearing_type;
-pub mod bearings;
-pub mod budget;
+pub(crate) mod bearing_loss;
+pub(crate) mod bearing_type;
+pub(crate) mod bearings;
+pub(crate) mod budget;
 pub mod columns;
 pub mod gear_no_load;
-pub mod gearbox;
-pub mod oil;
+pub(crate) mod gearbox;
+pub(crate) mod oil;
 pub mod parts;
-pub mod seals;
+pub(crate) mod seals;
 pub mod skf_bearing;
 
 pub use bearings::{Bearing, BearingType};

@@ -9,7 +9,7 @@ type C64 = Complex<f64>;
 /// Eigenvalues and unit eigenvectors of a real matrix: the values from the real Schur form, each
 /// vector by two steps of inverse iteration; a conjugate pair's vectors are conjugates, the member
 /// with Im λ > 0 first. None when the values do not pair up or an iteration fails.
-pub fn eigen<const N: usize>(a: &SMatrix<f64, N, N>) -> Option<(Vec<C64>, DMatrix<C64>)> {
+pub(crate) fn eigen<const N: usize>(a: &SMatrix<f64, N, N>) -> Option<(Vec<C64>, DMatrix<C64>)> {
     let values = DMatrix::from_fn(N, N, |i, j| a[(i, j)]).complex_eigenvalues();
     let ac = DMatrix::<C64>::from_fn(N, N, |i, j| C64::new(a[(i, j)], 0.0));
     let mut lambda = Vec::with_capacity(N);
@@ -50,7 +50,7 @@ type Column<'a> = std::iter::StepBy<std::slice::Iter<'a, [f64; 4]>>;
 /// on whole blocks: the collocation systems of the spectral propagator (n ≤ 65, a few right-hand
 /// sides), where a general LU's set-up and column-wise solves cost more than the arithmetic.
 #[derive(Debug, Clone)]
-pub struct Augmented {
+pub(crate) struct Augmented {
     n: usize,
     cols: usize,
     /// Blocks per row of A and of the whole row.
@@ -61,24 +61,24 @@ pub struct Augmented {
 
 impl Augmented {
     /// n equations, `cols` right-hand sides, all zero.
-    pub fn zeros(n: usize, cols: usize) -> Self {
+    pub(crate) fn zeros(n: usize, cols: usize) -> Self {
         let a_blocks = n.div_ceil(4);
         let row_blocks = a_blocks + cols.div_ceil(4);
         Augmented { n, cols, a_blocks, row_blocks, data: vec![[0.0; 4]; n * row_blocks] }
     }
 
     /// Row i of [A | B] as one slice, padding included: A_ij at j, B_ic at [`Augmented::b_offset`] + c.
-    pub fn row_mut(&mut self, i: usize) -> &mut [f64] {
+    pub(crate) fn row_mut(&mut self, i: usize) -> &mut [f64] {
         self.data[i * self.row_blocks..(i + 1) * self.row_blocks].as_flattened_mut()
     }
 
     /// Where B starts in a row of [`Augmented::row_mut`].
-    pub fn b_offset(&self) -> usize {
+    pub(crate) fn b_offset(&self) -> usize {
         4 * self.a_blocks
     }
 
     /// The row X_i· (after [`Augmented::solve`]).
-    pub fn x_row(&self, i: usize) -> &[f64] {
+    pub(crate) fn x_row(&self, i: usize) -> &[f64] {
         let start = i * self.row_blocks + self.a_blocks;
         &self.data[start..(i + 1) * self.row_blocks].as_flattened()[..self.cols]
     }
@@ -88,7 +88,7 @@ impl Augmented {
     /// are updated too; they are never read again.) Where the processor has AVX the same
     /// operations run four to an instruction: separate multiplies and subtractions, no fused
     /// ones, so that both give the same bits.
-    pub fn solve(&mut self) {
+    pub(crate) fn solve(&mut self) {
         #[cfg(target_arch = "x86_64")]
         if std::is_x86_feature_detected!("avx") {
             // SAFETY: the processor has AVX (detected just above).

@@ -2,7 +2,7 @@
 //! Chebyshev–Lobatto spectral integration and the small dense linear algebra of the propagators.
 
 pub mod chebyshev;
-pub mod dense;
+pub(crate) mod dense;
 pub mod quadrature;
 pub mod roots;
-pub mod rounding;
+pub(crate) mod rounding;

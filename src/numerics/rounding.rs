@@ -38,7 +38,7 @@ impl std::fmt::Write for StackText {
 }
 
 /// Six significant digits, for the inputs table (as written and SI columns).
-pub fn sig(x: f64) -> String {
+pub(crate) fn sig(x: f64) -> String {
     if x == 0.0 {
         return "0".into();
     }
@@ -63,7 +63,7 @@ pub fn sig(x: f64) -> String {
 }
 
 /// Writes `x` with `d` decimals; non-finite values are written as `—` (and listed in the findings).
-pub fn fixed(x: f64, d: usize) -> String {
+pub(crate) fn fixed(x: f64, d: usize) -> String {
     if x.is_finite() {
         let s = format!("{x:.d$}");
         if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {

@@ -97,7 +97,8 @@ impl crate::Progress for Signals {
 /// Merges shard folders as `gearloss merge` does: the merged report folder in memory.
 #[pyfunction]
 fn merge(py: Python<'_>, folders: Vec<PathBuf>) -> PyResult<PyFolder> {
-    let result = py.allow_threads(|| in_temporary_folder(|out| Ok(crate::merge_into(&folders, out, &crate::Quiet)?.folder)));
+    let result =
+        py.allow_threads(|| in_temporary_folder(|out| Ok(crate::merge_into(&folders, out, &crate::Quiet)?.folder)));
     to_py(py, result).map(to_python)
 }
 

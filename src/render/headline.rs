@@ -4,7 +4,7 @@
 //! map's ranges, and the dynamics (per formulation: stability verdict at the operating points,
 //! unstable speed ranges of the map, peak dynamic factor and where, DTE peak-to-peak).
 
-use std::fmt::Write;
+use super::markup::{md, put};
 
 use super::table::{fixed, header, law_words, row, sig};
 use crate::losses::parts::COLUMNS;
@@ -13,21 +13,21 @@ use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
 /// Rows of the efficiency table before the headline shows the sweep's corners and ranges instead.
-pub const HEADLINE_ROWS: usize = 12;
+pub(crate) const HEADLINE_ROWS: usize = 12;
 
 /// `239.3 N·m, 1500 rpm`: a record's operating point in the units the scene wrote.
-pub fn point_label(r: &Report, e: &EfficiencyRecord) -> String {
+pub(crate) fn point_label(r: &Report, e: &EfficiencyRecord) -> String {
     point_at(r, &e.pinion_torque, &e.pinion_speed)
 }
 
 /// `1500 lbf·in, 1800 rpm`: a torque and a speed (SI) in the units the scene wrote them in.
-pub fn point_at(r: &Report, torque: &crate::report::number::Q, speed: &crate::report::number::Q) -> String {
+pub(crate) fn point_at(r: &Report, torque: &crate::report::number::Q, speed: &crate::report::number::Q) -> String {
     crate::report::number::operating_point_words(&r.torque_unit, &r.speed_unit, torque, speed)
 }
 
 /// Efficiency and budget: a row per operating point and law (the first formulation), or when there
 /// are more than [`HEADLINE_ROWS`] the sweep's four corners per law and each law's range.
-pub fn efficiency(out: &mut String, r: &Report) {
+pub(crate) fn efficiency(out: &mut String, r: &Report) {
     let Some(first) = r.efficiency.first().map(|e| e.formulation) else { return };
     let recs: Vec<&EfficiencyRecord> = r.efficiency.iter().filter(|e| e.formulation == first).collect();
     let formulations = r.efficiency.iter().filter(|e| e.case == recs[0].case && e.label == recs[0].label).count();
@@ -39,7 +39,7 @@ pub fn efficiency(out: &mut String, r: &Report) {
     if r.loss_budget {
         cols.extend([w.heading("P no-load"), w.heading("P load-dependent"), w.heading("P total"), "η total %".into()]);
     }
-    let _ = writeln!(
+    md!(
         out,
         "Efficiency, {} formulation{}{}:\n",
         first.name(),
@@ -80,10 +80,10 @@ pub fn efficiency(out: &mut String, r: &Report) {
         }
         row(out, &cells);
     }
-    let _ = writeln!(out);
+    md!(out);
     if let Some(e) = shown.iter().find(|e| e.budget_charges_iso_mesh_loss) {
         let ratio = e.ohlendorf.map_or(1.0, |o| o.line_integral_ratio.0);
-        let _ = writeln!(
+        md!(
             out,
             "ISO/TR 14179-2 on a helical pair: η̄ mesh, P mesh and the total are the standard's own P_VZP = P_in μ_mZ H_V (Ohlendorf's H_V); the contact-line integral with a constant stiffness density reads {} × that (both under Loss budget, the line integral's η̄ under Efficiency).\n",
             fixed(ratio, 4)
@@ -148,7 +148,7 @@ fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
             Some(((eta(lo), point_label(r, lo)), (eta(hi), point_label(r, hi)), of.len()))
         };
         if let Some(((lo, lo_at), (hi, hi_at), count)) = swept.or_else(kept) {
-            let _ = writeln!(
+            md!(
                 out,
                 "- {}: {what} from {} % ({lo_at}) to {} % ({hi_at}) over {count} operating points.",
                 law_words(label),
@@ -157,19 +157,19 @@ fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
             );
         }
     }
-    let _ = writeln!(out);
+    md!(out);
 }
 
 /// Dynamics: per formulation the verdict at the operating points, the map's unstable ranges, the
 /// peak dynamic factor with its point and the DTE peak-to-peak range.
-pub fn dynamics(out: &mut String, d: &DynamicsReport, u: crate::report::units::Units) {
+pub(crate) fn dynamics(out: &mut String, d: &DynamicsReport, u: crate::report::units::Units) {
     let Some(first) = d.points.first() else {
         if let Some(map) = &d.stability_map {
             map_ranges(out, d, map, u);
         }
         return;
     };
-    let _ = writeln!(out, "Dynamics ({} model, {} operating point(s)):\n", d.model, d.points.len());
+    md!(out, "Dynamics ({} model, {} operating point(s)):\n", d.model, d.points.len());
     for (i, f) in first.formulations.iter().enumerate() {
         fn nth(p: &crate::report::dynamics::DynamicsPointReport, i: usize) -> Option<&FormulationReport> {
             p.formulations.get(i)
@@ -200,19 +200,19 @@ pub fn dynamics(out: &mut String, d: &DynamicsReport, u: crate::report::units::U
             .collect();
         let mut line = format!("- {}: {verdict}", f.formulation.name());
         if let Some((k, label)) = kv {
-            let _ = write!(line, "; peak K_v {} at {label}", fixed(k, 3));
+            put!(line, "; peak K_v {} at {label}", fixed(k, 3));
         }
         if let (Some(lo), Some(hi)) = (dte.iter().copied().reduce(f64::min), dte.iter().copied().reduce(f64::max)) {
             let (unit, d) = (u.micro().unit, u.micro().decimals(3));
             if fixed(lo, d) == fixed(hi, d) {
-                let _ = write!(line, "; DTE peak-to-peak {} {unit}", fixed(lo, d));
+                put!(line, "; DTE peak-to-peak {} {unit}", fixed(lo, d));
             } else {
-                let _ = write!(line, "; DTE peak-to-peak {}–{} {unit}", fixed(lo, d), fixed(hi, d));
+                put!(line, "; DTE peak-to-peak {}–{} {unit}", fixed(lo, d), fixed(hi, d));
             }
         }
-        let _ = writeln!(out, "{line}.");
+        md!(out, "{line}.");
     }
-    let _ = writeln!(out);
+    md!(out);
     if let Some(map) = &d.stability_map {
         map_ranges(out, d, map, u);
     }
@@ -235,7 +235,7 @@ fn map_ranges(
                 format!("{:.0}–{:.0} {}{open}", unit.value(a), unit.value(b), unit.name)
             })
             .collect();
-        let _ = writeln!(
+        md!(
             out,
             "- Stability map, {} at {} {}: {}.",
             f.name(),
@@ -248,12 +248,12 @@ fn map_ranges(
             }
         );
     }
-    let _ = writeln!(out);
+    md!(out);
 }
 
 /// The thermal balance: per law and formulation, the range of θ* over the operating points and
 /// those that settle above the oil's limit or find no balance.
-pub fn thermal(out: &mut String, r: &Report) {
+pub(crate) fn thermal(out: &mut String, r: &Report) {
     let mut keys: Vec<(&str, &str)> = Vec::new();
     for t in &r.thermal {
         let k = (t.label.as_str(), t.formulation.name());
@@ -280,7 +280,7 @@ pub fn thermal(out: &mut String, r: &Report) {
             .collect();
         let verdict =
             if bad.is_empty() { "every point settles below the oil's limit".to_string() } else { bad.join("; ") };
-        let _ = writeln!(
+        md!(
             out,
             "- Thermal balance, {} ({formulation}): {range} over {} operating point(s); {verdict}.",
             law_words(label),
@@ -288,6 +288,6 @@ pub fn thermal(out: &mut String, r: &Report) {
         );
     }
     if !r.thermal.is_empty() {
-        let _ = writeln!(out);
+        md!(out);
     }
 }

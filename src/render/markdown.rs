@@ -1,17 +1,17 @@
 //! report.md: the report for a reader, in engineering units (mm, m/s, MPa, µm), fixed decimals.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row, sig};
 use crate::report::{PlotKind, Report, Severity};
 
 pub fn render_markdown(r: &Report) -> String {
     let mut out = String::new();
-    let _ = writeln!(out, "# {}\n", r.title);
-    let _ = writeln!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
+    md!(out, "# {}\n", r.title);
+    md!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
     out.push_str(&super::markdown_losses::headline(r));
 
-    let _ = writeln!(out, "## Scene\n");
+    md!(out, "## Scene\n");
     header(&mut out, &["input", "as written", "SI"]);
     for i in &r.inputs {
         row(
@@ -38,13 +38,13 @@ pub fn render_markdown(r: &Report) -> String {
     super::markdown_sweep::sweep_summary(&mut out, r);
 
     unlinked_plots(&mut out, r);
-    let _ = writeln!(out, "## Findings\n");
+    md!(out, "## Findings\n");
     for f in &r.findings {
         let tag = match f.severity {
             Severity::Note => "note",
             Severity::Warning => "**warning**",
         };
-        let _ = writeln!(out, "- {tag}: {}", f.message);
+        md!(out, "- {tag}: {}", f.message);
     }
     out
 }
@@ -52,12 +52,12 @@ pub fn render_markdown(r: &Report) -> String {
 /// The contact along the line of action: its plots, then per operating point the state at the
 /// characteristic points and the friction there.
 fn contact_section(out: &mut String, r: &Report) {
-    let _ = writeln!(out, "\n## Contact along the line of action\n");
+    md!(out, "\n## Contact along the line of action\n");
     for p in r.plots.iter().filter(|p| matches!(p.kind, PlotKind::ContactState | PlotKind::Film)) {
-        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
+        md!(out, "![{}]({})\n", p.title, p.file);
     }
     let helical = r.geometry.helical.is_some();
-    let _ = writeln!(
+    md!(
         out,
         "Positions are distances from T1 on the pinion base circle; s < 0 in approach, s > 0 in recess; w is the load per unit face width of the contact.{}\n",
         if helical { HELICAL_CONTACT } else { "" }
@@ -65,7 +65,7 @@ fn contact_section(out: &mut String, r: &Report) {
     let u = r.units();
     let (len, vel) = (u.length(), u.velocity());
     for op in &r.operating_points {
-        let _ = writeln!(
+        md!(
             out,
             "### Operating point {}: {}\n\nT_p = {}, n_p = {} {}, F_bn = {}, T_mesh = {} ms, v_t = {}\n",
             op.index + 1,
@@ -123,7 +123,7 @@ fn contact_section(out: &mut String, r: &Report) {
                 ]),
             );
         }
-        let _ = writeln!(out);
+        md!(out);
         // The helical note once, under the first operating point's efficiency table.
         super::markdown_friction::point(out, op, helical, op.index == r.operating_points[0].index, u);
     }
@@ -142,8 +142,8 @@ fn unlinked_plots(out: &mut String, r: &Report) {
     if missing.is_empty() {
         return;
     }
-    let _ = writeln!(out, "## More plots\n");
+    md!(out, "## More plots\n");
     for p in missing {
-        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
+        md!(out, "![{}]({})\n", p.title, p.file);
     }
 }

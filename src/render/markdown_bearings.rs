@@ -3,17 +3,17 @@
 //! bearing loss can be audited from the loads behind it. Loads do not depend on the law, so a point
 //! is shown once; a sweep of more than [`ALL_POINTS_UP_TO`] points shows its detail points only.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{header, row};
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
 /// Sweeps up to this many points show the bearings at every point.
-pub const ALL_POINTS_UP_TO: usize = 100;
+pub(crate) const ALL_POINTS_UP_TO: usize = 100;
 
 /// The section, empty when no record has bearings.
-pub fn bearings_section(r: &Report) -> String {
+pub(crate) fn bearings_section(r: &Report) -> String {
     let mut out = String::new();
     let mut points: Vec<&EfficiencyRecord> = Vec::new();
     for e in r.efficiency.iter().filter(|e| e.budget.as_ref().is_some_and(|b| !b.bearings.is_empty())) {
@@ -33,15 +33,15 @@ pub fn bearings_section(r: &Report) -> String {
         });
     }
     let u = r.units();
-    let _ = writeln!(out, "\n### Bearings\n");
-    let _ = writeln!(
+    md!(out, "\n### Bearings\n");
+    md!(
         out,
         "Each bearing place in the scene's order (pinion shaft, then wheel shaft): the radial and axial load of one bearing from the mesh force (with positions `at`, by the statics of the shaft on its two places; without, F_bt shared equally), and the no-load and load-dependent losses of all `count` bearings of the place. {}\n",
         if all { "Every operating point." } else { "The detail operating points only (the sweep has more than 100); records.csv has every point." }
     );
     for e in points {
         let Some(b) = &e.budget else { continue };
-        let _ = writeln!(out, "{}:\n", super::headline::point_at(r, &e.pinion_torque, &e.pinion_speed));
+        md!(out, "{}:\n", super::headline::point_at(r, &e.pinion_torque, &e.pinion_speed));
         let cols = [
             "#".to_string(),
             "shaft".into(),
@@ -72,7 +72,7 @@ pub fn bearings_section(r: &Report) -> String {
                 ],
             );
         }
-        let _ = writeln!(out);
+        md!(out);
     }
     out
 }

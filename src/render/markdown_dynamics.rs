@@ -1,6 +1,6 @@
 //! report.md: the dynamics section (no run times: those live in the timing files).
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row};
 use crate::report::dynamics::{
@@ -18,10 +18,10 @@ fn sci(x: f64) -> String {
     }
 }
 
-pub fn dynamics(out: &mut String, r: &Report) {
+pub(crate) fn dynamics(out: &mut String, r: &Report) {
     let Some(d) = &r.dynamics else { return };
-    let _ = writeln!(out, "## Dynamics\n");
-    let _ = writeln!(out, "{}\n", d.description);
+    md!(out, "## Dynamics\n");
+    md!(out, "{}\n", d.description);
     let u = r.units();
     model_table(out, d, u);
     for p in &d.points {
@@ -78,9 +78,9 @@ fn model_table(out: &mut String, d: &DynamicsReport, u: Units) {
             row(out, &["highest / lowest natural frequency".into(), fixed(r.0, 2)]);
         }
     }
-    let _ = writeln!(out);
+    md!(out);
     if let Some(iso) = &d.iso_6336 {
-        let _ = writeln!(out, "{}\n", super::markdown_teeth::iso_readings(iso, u));
+        md!(out, "{}\n", super::markdown_teeth::iso_readings(iso, u));
     }
 }
 
@@ -88,7 +88,7 @@ fn model_table(out: &mut String, d: &DynamicsReport, u: Units) {
 /// bearings, free response and plots.
 fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport, u: Units) {
     let (micro, force, torque) = (u.micro(), u.force(), u.torque());
-    let _ = writeln!(
+    md!(
         out,
         "### Dynamics at {}\n\nf_mesh = {} Hz, f_n/f_mesh = {}\n",
         p.label,
@@ -145,16 +145,16 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport, 
             ],
         );
     }
-    let _ = writeln!(out);
+    md!(out);
     located_lines(out, &p.formulations, u);
     bearing_lines(out, &p.formulations, u);
     free_lines(out, &p.formulations, u);
     if let Some(c) = d.curves.iter().find(|c| c.label == p.label) {
         if !c.dte.is_empty() {
-            let _ = writeln!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
+            md!(out, "![DTE, mesh and friction forces, DTE spectrum]({})\n", c.file);
         }
         if !c.free.is_empty() {
-            let _ = writeln!(out, "![free response from the initial state]({})\n", c.free_file);
+            md!(out, "![free response from the initial state]({})\n", c.free_file);
         }
     }
 }
@@ -162,7 +162,7 @@ fn point_section(out: &mut String, d: &DynamicsReport, p: &DynamicsPointReport, 
 /// The stability map's table: per formulation the largest ρ and K_v over the map's speeds and the
 /// located unstable ranges.
 fn stability_map_section(out: &mut String, map: &StabilityMapReport, u: Units) {
-    let _ = writeln!(
+    md!(
         out,
         "### Stability map\n\nPinion torque {}, {} speeds.\n",
         u.torque().with(map.pinion_torque.si(), 2),
@@ -195,7 +195,7 @@ fn stability_map_section(out: &mut String, map: &StabilityMapReport, u: Units) {
             ],
         );
     }
-    let _ = writeln!(out, "\n![stability map](stability_map.svg)\n");
+    md!(out, "\n![stability map](stability_map.svg)\n");
 }
 
 /// The located extrema (value at τ in mesh periods), means with their error estimates, separation.
@@ -237,7 +237,7 @@ fn bearing_lines(out: &mut String, formulations: &[FormulationReport], u: Units)
             );
         }
     }
-    let _ = writeln!(out);
+    md!(out);
 }
 
 /// The free responses: peak, growth and the Floquet-mode spectrum lines.
@@ -245,7 +245,7 @@ fn free_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
     let (micro, vel) = (u.micro(), u.velocity());
     for f in formulations {
         let Some(fr) = &f.free_response else { continue };
-        let _ = writeln!(
+        md!(
             out,
             "Free response, {}: x0 = {}, v0 = {} over {} mesh periods; peak |x| {} at t = {} T; largest |x| in the first period {}, in the last {}. Lines (Floquet modes, f = arg λ/(2πT) + k f_mesh):\n",
             f.formulation.name(),
@@ -275,7 +275,7 @@ fn free_lines(out: &mut String, formulations: &[FormulationReport], u: Units) {
                 ],
             );
         }
-        let _ = writeln!(out);
+        md!(out);
     }
 }
 
@@ -311,14 +311,14 @@ fn located_lines(out: &mut String, formulations: &[FormulationReport], u: Units)
                 f.tooth_separation.iter().map(|[a, b]| format!("τ = {}–{}", fixed(a.0, 6), fixed(b.0, 6))).collect();
             parts.push(format!("teeth separate at {}", spans.join(", ")));
         }
-        let _ = writeln!(out, "- {}: {}", f.formulation.name(), parts.join("; "));
+        md!(out, "- {}: {}", f.formulation.name(), parts.join("; "));
     }
-    let _ = writeln!(out);
+    md!(out);
 }
 
 fn numerics(out: &mut String, d: &DynamicsReport) {
     let Some(n) = &d.numerics else { return };
-    let _ = writeln!(
+    md!(
         out,
         "### Numerical error of the integrators\n\n{:?} formulation at the first operating point, {} mesh periods from the static deflection, every integration restarted at every switch time. Error: max |x − x_ref| over the last period / peak-to-peak DTE, against the {:?} reference; final-state error in the scaled state norm. Run times are machine-dependent and kept in `timing_numerics.json` and `timing_work_precision.svg`.\n",
         n.formulation, n.periods, n.reference
@@ -339,5 +339,5 @@ fn numerics(out: &mut String, d: &DynamicsReport) {
             ],
         );
     }
-    let _ = writeln!(out, "\n![work-precision](timing_work_precision.svg)\n");
+    md!(out, "\n![work-precision](timing_work_precision.svg)\n");
 }

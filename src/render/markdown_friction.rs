@@ -1,6 +1,6 @@
 //! report.md: the friction, film and efficiency sections.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row};
 use crate::report::friction::MuValue;
@@ -9,14 +9,14 @@ use crate::report::{formulation_name, OperatingPointReport, Report};
 
 /// Film, μ along the line of action, and efficiency at one operating point; the notes that define
 /// what the tables read (film parameters, the helical model) under the first operating point only.
-pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, first: bool, u: Units) {
+pub(crate) fn point(out: &mut String, op: &OperatingPointReport, helical: bool, first: bool, u: Units) {
     if let Some(film) = &op.film {
         film_lines(out, film, first, u);
     }
     if op.friction.is_empty() {
         return;
     }
-    let _ = writeln!(out, "Signed coefficient of friction along the line of action (negative in approach):\n");
+    md!(out, "Signed coefficient of friction along the line of action (negative in approach):\n");
     let mut cols = vec!["point".to_string(), u.length().heading("T1C")];
     cols.extend(op.friction.iter().map(|l| format!("`{}`", l.label)));
     header(out, &cols);
@@ -35,7 +35,7 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, first: 
         }
         row(out, &cells);
     }
-    let _ = writeln!(out);
+    md!(out);
     let p_loss = u.power().heading("P_loss");
     header(
         out,
@@ -89,27 +89,24 @@ pub fn point(out: &mut String, op: &OperatingPointReport, helical: bool, first: 
             );
         }
     }
-    let _ = writeln!(out);
+    md!(out);
     if helical && first {
-        let _ = writeln!(out, "{HELICAL_NOTE}\n");
+        md!(out, "{HELICAL_NOTE}\n");
     }
     if let Some(plot) = &op.plot {
-        let _ = writeln!(out, "![μ, local power loss and η over one mesh cycle]({plot})\n");
+        md!(out, "![μ, local power loss and η over one mesh cycle]({plot})\n");
     }
 }
 
 /// Why 1 − μ̄ H_V differs from the helical mean (physics notes, "Helical pairs").
-pub const HELICAL_NOTE: &str = "Helical pair: μ is integrated along every contact line, each point a spur-like contact at its own u with the load per unit length w = F_bn / L(t) (constant stiffness density, He & Singh). The efficiency uses the normal-force arms r_b cos β_b (He & Singh eq 8). The last column, 1 − μ̄ H_V with Ohlendorf's H_V (ISO/TR 14179-2), is NOT the mean of this model: H_V is the mean loss of a slice model, in which each transverse slice of the face shares its load equally between its own pairs in contact. Constant stiffness density puts more load where more line length is, which weights the ends of the path of contact (where sliding is fastest): at β = 15° the loss is about 1.1–1.2 × μ H_V. The two agree as β → 0; when ε_β is an integer L(t) is constant and the loss is the uniform-load value μ (1/r_b1 + 1/r_b2)/cos β_b · (AP² + PE²)/(2 AE). The column μ along the line of action is evaluated under the mean load per unit length F_bn / L̄.";
+pub(crate) const HELICAL_NOTE: &str = "Helical pair: μ is integrated along every contact line, each point a spur-like contact at its own u with the load per unit length w = F_bn / L(t) (constant stiffness density, He & Singh). The efficiency uses the normal-force arms r_b cos β_b (He & Singh eq 8). The last column, 1 − μ̄ H_V with Ohlendorf's H_V (ISO/TR 14179-2), is NOT the mean of this model: H_V is the mean loss of a slice model, in which each transverse slice of the face shares its load equally between its own pairs in contact. Constant stiffness density puts more load where more line length is, which weights the ends of the path of contact (where sliding is fastest): at β = 15° the loss is about 1.1–1.2 × μ H_V. The two agree as β → 0; when ε_β is an integer L(t) is constant and the loss is the uniform-load value μ (1/r_b1 + 1/r_b2)/cos β_b · (AP² + PE²)/(2 AE). The column μ along the line of action is evaluated under the mean load per unit length F_bn / L̄.";
 
 /// What the film table's two parameters are and which law reads which.
-pub const FILM_PARAMETERS: &str = "Λ_HCS = h_c / R_q,comp · √(L_x / 2b_H) is He–Cho–Singh's film parameter (eq 21a): the central film over the composite roughness R_q,comp = √(Rq1² + Rq2²) filtered at the cut-off L_x; the composite law picks its regime by it (boundary below 1, mixed to 4, full film above). λ = h_min / σ, σ = √(Rq1² + Rq2²), is the specific film thickness: the minimum film over the unfiltered composite roughness; Xu's validity reads it (a full-film fit, flagged where λ < 1). Neither is the other: Λ_HCS / λ = (h_c / h_min) · √(L_x / 2b_H), typically 2–4 at gear contact widths.";
+pub(crate) const FILM_PARAMETERS: &str = "Λ_HCS = h_c / R_q,comp · √(L_x / 2b_H) is He–Cho–Singh's film parameter (eq 21a): the central film over the composite roughness R_q,comp = √(Rq1² + Rq2²) filtered at the cut-off L_x; the composite law picks its regime by it (boundary below 1, mixed to 4, full film above). λ = h_min / σ, σ = √(Rq1² + Rq2²), is the specific film thickness: the minimum film over the unfiltered composite roughness; Xu's validity reads it (a full-film fit, flagged where λ < 1). Neither is the other: Λ_HCS / λ = (h_c / h_min) · √(L_x / 2b_H), typically 2–4 at gear contact widths.";
 
 /// The film thickness and both film parameters at the characteristic points.
 fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow], first: bool, u: Units) {
-    let _ = writeln!(
-        out,
-        "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and two film parameters:\n"
-    );
+    md!(out, "Film thickness (Dowson–Toyoda central h_c, Dowson–Higginson minimum h_min) and two film parameters:\n");
     let (len, micro) = (u.length(), u.micro());
     header(out, &["point", &len.heading("T1C"), &micro.heading("h_c"), &micro.heading("h_min"), "Λ_HCS", "λ"]);
     for f in film {
@@ -125,19 +122,19 @@ fn film_lines(out: &mut String, film: &[crate::report::friction::FilmRow], first
             ],
         );
     }
-    let _ = writeln!(out);
+    md!(out);
     if first {
-        let _ = writeln!(out, "{FILM_PARAMETERS}\n");
+        md!(out, "{FILM_PARAMETERS}\n");
     }
 }
 
 /// The sweep table and plots.
-pub fn sweep(out: &mut String, r: &Report) {
+pub(crate) fn sweep(out: &mut String, r: &Report) {
     if r.efficiency.is_empty() {
         return;
     }
-    let _ = writeln!(out, "## Efficiency over the sweep\n");
-    let _ = writeln!(
+    md!(out, "## Efficiency over the sweep\n");
+    md!(
         out,
         "Mean efficiency over one mesh cycle (time mean, adaptive Gauss–Kronrod to a relative tolerance of 1e-10, split at every zone boundary, pitch-point passage and regime switch) and friction power loss P = (1 − η̄) T_p ω_p.\n"
     );
@@ -145,7 +142,7 @@ pub fn sweep(out: &mut String, r: &Report) {
     // A large sweep lists the points reported in full; the record files have every point.
     let full = r.records.as_ref().is_none_or(|x| x.reported_in_full >= x.operating_points);
     if !full {
-        let _ = writeln!(
+        md!(
             out,
             "At the operating points reported in full (every point: `records.csv`):
 "
@@ -167,8 +164,8 @@ pub fn sweep(out: &mut String, r: &Report) {
             ],
         );
     }
-    let _ = writeln!(out);
+    md!(out);
     for p in r.plots.iter().filter(|p| p.file.starts_with("sweep_") || p.file.starts_with("composite_")) {
-        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
+        md!(out, "![{}]({})\n", p.title, p.file);
     }
 }

@@ -1,37 +1,74 @@
 //! report.md's geometry section: the pair's quantities (normal and transverse for a helical pair),
 //! the characteristic points on the line of action in order, each gear's diameters and tooth checks.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row, scaled};
 use crate::report::Report;
 
 /// The geometry section.
 pub(super) fn geometry_section(out: &mut String, r: &Report) {
-    let g = &r.geometry;
-    let _ = writeln!(out, "\n## Geometry\n");
+    md!(out, "\n## Geometry\n");
+    pair_table(out, r);
+    md!(out);
+    gears_table(out, r);
+    if let Some(h) = &r.geometry.helical {
+        super::markdown_helical::plane_of_action(out, h, &r.plots, r.units());
+    }
+}
+
+/// A row of the pair's table: quantity, symbol, value.
+type PairRow = (&'static str, &'static str, String);
+
+/// The pair's quantities, with the points of the path of contact in their order from T1 after the
+/// line of action.
+fn pair_table(out: &mut String, r: &Report) {
     header(out, &["quantity", "symbol", "value"]);
-    let deg = 180.0 / std::f64::consts::PI;
-    let u = r.units();
-    let len = u.length();
+    let rows = pair_rows(r);
+    let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
+    for (q, s, v) in before {
+        row(out, &[q.to_string(), s.to_string(), v.clone()]);
+    }
+    for (_, q, s, v) in contact_points(r) {
+        row(out, &[q, s, v]);
+    }
+    for (q, s, v) in after {
+        row(out, &[q.to_string(), s.to_string(), v.clone()]);
+    }
+}
+
+/// The points of the path of contact (A, B, P, D, E and where 3 ↔ 2 pairs change), sorted from T1:
+/// (distance, quantity, symbol, value).
+fn contact_points(r: &Report) -> Vec<(f64, String, String, String)> {
+    let len = r.units().length();
     let mm = |q: &crate::report::number::Q| len.with(q.si(), 4);
-    let pts = &g.points_from_t1;
-    let mut contact_rows: Vec<(f64, String, String, String)> =
+    let pts = &r.geometry.points_from_t1;
+    let mut rows: Vec<(f64, String, String, String)> =
         vec![(pts.A.si(), "start of contact".into(), "T1A".into(), mm(&pts.A))];
     if let Some(b) = &pts.B {
-        contact_rows.push((b.si(), "lowest point of single contact".into(), "T1B".into(), mm(b)));
+        rows.push((b.si(), "lowest point of single contact".into(), "T1B".into(), mm(b)));
     }
-    contact_rows.push((pts.P.si(), "pitch point".into(), "T1P".into(), mm(&pts.P)));
+    rows.push((pts.P.si(), "pitch point".into(), "T1P".into(), mm(&pts.P)));
     if let Some(d) = &pts.D {
-        contact_rows.push((d.si(), "highest point of single contact".into(), "T1D".into(), mm(d)));
+        rows.push((d.si(), "highest point of single contact".into(), "T1D".into(), mm(d)));
     }
     for c in &pts.pair_changes {
         let u = &c.distance_from_t1;
-        contact_rows.push((u.si(), "number of pairs changes (3 ↔ 2)".into(), format!("T1({})", c.name), mm(u)));
+        rows.push((u.si(), "number of pairs changes (3 ↔ 2)".into(), format!("T1({})", c.name), mm(u)));
     }
-    contact_rows.push((pts.E.si(), "end of contact".into(), "T1E".into(), mm(&pts.E)));
-    contact_rows.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let rows: Vec<(&str, &str, String)> = vec![
+    rows.push((pts.E.si(), "end of contact".into(), "T1E".into(), mm(&pts.E)));
+    rows.sort_by(|x, y| x.0.total_cmp(&y.0));
+    rows
+}
+
+/// The pair's quantities: a spur pair's, a helical pair's normal and transverse values in their
+/// place, the diametral pitch of an inch pair.
+fn pair_rows(r: &Report) -> Vec<PairRow> {
+    let g = &r.geometry;
+    let deg = 180.0 / std::f64::consts::PI;
+    let u = r.units();
+    let len = u.length();
+    let mut rows: Vec<PairRow> = vec![
         ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
         ("pressure angle", "α", format!("{}°", scaled(&g.pressure_angle, deg, 4))),
         ("gear ratio", "u = z2/z1", fixed(g.gear_ratio.0, 4)),
@@ -51,10 +88,9 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         ("reduced modulus", "E'", u.modulus().with(g.reduced_modulus.si(), 3)),
         ("load sharing", "", format!("{:?}", g.load_sharing).to_lowercase()),
     ];
-    let mut rows = rows;
     if let Some(h) = &g.helical {
         let at = rows.iter().position(|r| r.1 == "α").map_or(0, |i| i + 1);
-        let helical_rows: Vec<(&str, &str, String)> = vec![
+        let helical_rows: Vec<PairRow> = vec![
             ("helix angle (reference circle)", "β", format!("{}°", scaled(&g.helix_angle, deg, 4))),
             ("base helix angle", "β_b", format!("{}°", scaled(&h.base_helix_angle, deg, 4))),
             ("transverse module", "m_t", format!("{} mm", scaled(&h.transverse_module, 1e3, 4))),
@@ -66,7 +102,7 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         rows[at - 1].0 = "normal pressure angle";
         rows[at - 1].1 = "α_n";
         let at = rows.iter().position(|r| r.1 == "ε_α").map_or(rows.len(), |i| i + 1);
-        let more: Vec<(&str, &str, String)> = vec![
+        let more: Vec<PairRow> = vec![
             ("overlap ratio", "ε_β", fixed(g.overlap_ratio.0, 4)),
             ("total contact ratio", "ε_γ", fixed(g.total_contact_ratio.0, 4)),
         ];
@@ -78,17 +114,13 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
         let pitch = format!("{} 1/in", fixed(crate::report::units::INCH / g.module.si(), 4));
         rows.insert(1, (name, "P = 1/m", pitch));
     }
-    let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
-    for (q, s, v) in before {
-        row(out, &[q.to_string(), s.to_string(), v.clone()]);
-    }
-    for (_, q, s, v) in contact_rows {
-        row(out, &[q, s, v]);
-    }
-    for (q, s, v) in after {
-        row(out, &[q.to_string(), s.to_string(), v.clone()]);
-    }
-    let _ = writeln!(out);
+    rows
+}
+
+/// Each gear's numbers, diameters and tip.
+fn gears_table(out: &mut String, r: &Report) {
+    let g = &r.geometry;
+    let len = r.units().length();
     let cols = [
         "gear".to_string(),
         "z".into(),
@@ -122,8 +154,5 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
                 fixed(gr.undercut_limit.0, 4),
             ],
         );
-    }
-    if let Some(h) = &g.helical {
-        super::markdown_helical::plane_of_action(out, h, &r.plots, u);
     }
 }

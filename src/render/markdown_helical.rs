@@ -1,7 +1,7 @@
 //! The plane-of-action section of a helical pair's report: contact lines, L(t), the regions of the
 //! mesh cycle and the axial force.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row};
 use crate::geometry::regions::{LineEnd, PitchSide};
@@ -25,11 +25,11 @@ fn side(s: PitchSide) -> &'static str {
 }
 
 pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[PlotRef], u: crate::report::units::Units) {
-    let _ = writeln!(out, "\n### Plane of action (helical pair)\n");
+    md!(out, "\n### Plane of action (helical pair)\n");
     for p in plots.iter().filter(|p| p.kind == crate::report::PlotKind::PlaneOfAction) {
-        let _ = writeln!(out, "![{}]({})\n", p.title, p.file);
+        md!(out, "![{}]({})\n", p.title, p.file);
     }
-    let _ = writeln!(
+    md!(
         out,
         "Contact lines are straight, inclined by β_b, one transverse base pitch apart; line k has its z = +b/2 end at T1A + (τ + k) p_bt (He & Singh eq 11). Constant stiffness density: every line carries the load w = F_bn / L(t) per unit length.\n"
     );
@@ -53,7 +53,7 @@ pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[Plot
     for a in &h.axial_force {
         row(out, &[format!("axial force F_a at {}", a.operating_point), u.force().with(a.value.si(), 2)]);
     }
-    let _ = writeln!(
+    md!(
         out,
         "\nRegions of one mesh cycle (τ in mesh periods), found from the geometry: in each, every line in contact with the boundaries holding its two ends (A: the start-of-contact line u = T1A, E: the end-of-contact line u = T1E, face: a face edge z = ±b/2) and its side of the pitch line.\n"
     );

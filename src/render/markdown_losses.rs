@@ -1,7 +1,7 @@
 //! report.md's headline (the answer first), the lubricant at temperature, the loss budget and the
 //! efficiency map.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, law_words, row};
 use crate::losses::parts::COLUMNS;
@@ -11,17 +11,17 @@ use super::headline::point_label;
 
 /// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
 /// budget's total where given), the map's range, and the count of warnings and notes.
-pub fn headline(r: &Report) -> String {
+pub(crate) fn headline(r: &Report) -> String {
     let mut out = String::from("## Headline\n\n");
     out.push_str(&headline_body(r));
     let warnings = r.findings.iter().filter(|f| f.severity == Severity::Warning).count();
     let notes = r.findings.len() - warnings;
-    let _ = writeln!(out, "Findings: {warnings} warning(s), {notes} note(s) (listed at the end).\n");
+    md!(out, "Findings: {warnings} warning(s), {notes} note(s) (listed at the end).\n");
     out
 }
 
 /// The headline without its heading and findings count (the terminal prints it after `run`).
-pub fn headline_body(r: &Report) -> String {
+pub(crate) fn headline_body(r: &Report) -> String {
     let mut out = String::new();
     let g = &r.geometry;
     let kind = if g.helix_angle.si() > 0.0 {
@@ -49,7 +49,7 @@ pub fn headline_body(r: &Report) -> String {
             .collect();
         format!(" (as written: {})", shown.join(", "))
     };
-    let _ = writeln!(
+    md!(
         out,
         "{kind}, z = {}/{}, {}, b = {}{as_written}{oil}; {} operating point(s).\n",
         r.geometry.pinion.teeth,
@@ -69,7 +69,7 @@ pub fn headline_body(r: &Report) -> String {
             let total = x.total_efficiency.map_or(String::new(), |t| {
                 format!("; total η {}–{} %", fixed(100.0 * t[0].0, 2), fixed(100.0 * t[1].0, 2))
             });
-            let _ = writeln!(
+            md!(
                 out,
                 "- Map, {} ({}): mesh η̄ {}–{} %{total} over its {} × {} grid points.",
                 law_words(&x.label),
@@ -81,12 +81,12 @@ pub fn headline_body(r: &Report) -> String {
             );
         }
         for b in &m.best {
-            let _ = writeln!(out, "- Map, {}: {}", law_words(&b.label), best_words(r, b));
+            md!(out, "- Map, {}: {}", law_words(&b.label), best_words(r, b));
         }
-        let _ = writeln!(out);
+        md!(out);
     }
     if !r.loss_budget && !r.efficiency.is_empty() {
-        let _ = writeln!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
+        md!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
     }
     super::headline::thermal(&mut out, r);
     if let Some(d) = &r.dynamics {
@@ -96,11 +96,11 @@ pub fn headline_body(r: &Report) -> String {
 }
 
 /// The lubricant at the oil temperature and where its values come from.
-pub fn lubricant_section(r: &Report) -> String {
+pub(crate) fn lubricant_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(l) = &r.lubricant else { return out };
     let u = r.units();
-    let _ = writeln!(out, "\n## Lubricant\n");
+    md!(out, "\n## Lubricant\n");
     header(&mut out, &["quantity", "value"]);
     row(&mut out, &["name".into(), l.name.clone()]);
     if let Some(b) = &l.base {
@@ -128,31 +128,31 @@ pub fn lubricant_section(r: &Report) -> String {
     if let Some(vi) = &l.viscosity_index {
         row(&mut out, &["viscosity index (ASTM D2270)".into(), fixed(vi.0, 1)]);
     }
-    let _ = writeln!(out, "\nSource: {}.", l.source);
+    md!(out, "\nSource: {}.", l.source);
     out
 }
 
 /// The loss budget of every efficiency record, in W and as shares of the total.
-pub fn budget_section(r: &Report) -> String {
+pub(crate) fn budget_section(r: &Report) -> String {
     let mut out = String::new();
     if !r.loss_budget || r.efficiency.is_empty() {
         return out;
     }
-    let _ = writeln!(out, "\n## Loss budget\n");
-    let _ = writeln!(
+    md!(out, "\n## Loss budget\n");
+    md!(
         out,
         "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gears without load: churning for dip lubrication; jet impulse and windage for injection) + P_VL (bearings: Palmgren's M_0 and M_1 in the no-load and load columns, or for a bearing given with SKF constants the SKF model's rolling M_rr and sliding M_sl) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
     );
     if !r.budget_readings.is_empty() {
-        let _ = writeln!(out, "Readings behind the parts:\n");
+        md!(out, "Readings behind the parts:\n");
         for x in &r.budget_readings {
-            let _ = writeln!(out, "- {x}");
+            md!(out, "- {x}");
         }
-        let _ = writeln!(out);
+        md!(out);
     }
     let helical = r.efficiency.iter().any(|e| e.ohlendorf.is_some());
     if helical {
-        let _ = writeln!(
+        md!(
             out,
             "Helical pair: the line-integral column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line; beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two. The total charges the standard's own for the law `iso_14179_2`, whose μ_mZ was fitted with H_V (its slice model: each transverse slice shares its load equally between its own pairs), and the line integral for every other law (marked * in the mesh column).\n"
         );
@@ -192,7 +192,7 @@ pub fn budget_section(r: &Report) -> String {
 }
 
 /// `best total η 98.912 % at 372.6 N·m, 3000 rpm (located; best grid point 98.901 % at …)`.
-pub fn best_words(r: &Report, b: &crate::report::losses::MapBestReport) -> String {
+pub(crate) fn best_words(r: &Report, b: &crate::report::losses::MapBestReport) -> String {
     let at = |t, n| super::headline::point_at(r, t, n);
     format!(
         "best {} η {} % at {} ({}; located from the best grid point, {} % at {}, in {} evaluations)",
@@ -207,11 +207,11 @@ pub fn best_words(r: &Report, b: &crate::report::losses::MapBestReport) -> Strin
 }
 
 /// The map's section: what it is, its ranges, its files.
-pub fn map_section(r: &Report) -> String {
+pub(crate) fn map_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(m) = &r.efficiency_map else { return out };
-    let _ = writeln!(out, "\n## Efficiency map\n");
-    let _ = writeln!(
+    md!(out, "\n## Efficiency map\n");
+    md!(
         out,
         "{} torques × {} speeds, every law and formulation; every cell is in `{}` (one row per grid point, law and formulation). Ranges over the grid points:\n",
         m.pinion_torques.len(),
@@ -233,17 +233,17 @@ pub fn map_section(r: &Report) -> String {
             ],
         );
     }
-    let _ = writeln!(out);
+    md!(out);
     for b in &m.best {
-        let _ = writeln!(out, "- {}: {}.", law_words(&b.label), best_words(r, b));
+        md!(out, "- {}: {}.", law_words(&b.label), best_words(r, b));
     }
     plots_of(&mut out, r, PlotKind::EfficiencyMap);
     out
 }
 
 /// Links to the report's plots of `kind`.
-pub fn plots_of(out: &mut String, r: &Report, kind: PlotKind) {
+pub(crate) fn plots_of(out: &mut String, r: &Report, kind: PlotKind) {
     for p in r.plots.iter().filter(|p| p.kind == kind) {
-        let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
+        md!(out, "\n![{}]({})", p.title, p.file);
     }
 }

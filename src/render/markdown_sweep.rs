@@ -1,17 +1,17 @@
 //! report.md: the sweep as a whole — where the record files are and the extremes over every
 //! operating point.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row, sig};
 use crate::report::Report;
 
 /// The "Records and extremes over the sweep" section (nothing for a run without records).
-pub fn sweep_summary(out: &mut String, r: &Report) {
+pub(crate) fn sweep_summary(out: &mut String, r: &Report) {
     let Some(rec) = &r.records else { return };
-    let _ = writeln!(out, "## Records and extremes over the sweep\n");
+    md!(out, "## Records and extremes over the sweep\n");
     let points = |n: usize| format!("{n} operating point{}", if n == 1 { "" } else { "s" });
-    let _ = writeln!(
+    md!(
         out,
         "Every operating point × law × formulation has one row in `{}` and `{}`: {} row{} over {}, SI units named in the column headers. {} reported in full above.\n",
         rec.csv,
@@ -23,7 +23,7 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
     );
     let te = r.transmission_error.len();
     if te > 0 {
-        let _ = writeln!(
+        md!(
             out,
             "Before them, one `transmission_error` row per torque of the static transmission error ({te} row{}: point 0, speed 0; `ste_peak_to_peak_m`, `ste_mean_m`, `ste_mean_error_m`).\n",
             if te == 1 { "" } else { "s" }
@@ -31,7 +31,7 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
     }
     let Some(s) = &r.sweep else { return };
     if !s.efficiency.is_empty() {
-        let _ = writeln!(
+        md!(
             out,
             "Extremes of the mean efficiency and the power loss over all {} operating points (point numbers as in the records):\n",
             s.operating_points
@@ -55,7 +55,7 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
                 ],
             );
         }
-        let _ = writeln!(out);
+        md!(out);
     }
     if !s.dynamics.is_empty() {
         header(out, &["dynamic formulation", "unstable points (ρ > 1)", "max spectral radius ρ", "at point"]);
@@ -70,6 +70,6 @@ pub fn sweep_summary(out: &mut String, r: &Report) {
                 ],
             );
         }
-        let _ = writeln!(out);
+        md!(out);
     }
 }

@@ -1,7 +1,7 @@
 //! report.md's section on the teeth: the bodies the potential-energy method read, its stiffness
 //! figures beside ISO 6336-1 Method B, and the static transmission error per torque.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::table::{fixed, header, row};
 use crate::report::teeth::IsoReport;
@@ -9,11 +9,11 @@ use crate::report::units::Units;
 use crate::report::{PlotKind, Report};
 
 /// The section, empty when the scene does not ask for the teeth.
-pub fn teeth_section(r: &Report) -> String {
+pub(crate) fn teeth_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(s) = &r.stiffness else { return out };
-    let _ = writeln!(out, "\n## Mesh stiffness from the teeth\n");
-    let _ = writeln!(
+    md!(out, "\n## Mesh stiffness from the teeth\n");
+    md!(
         out,
         "Potential-energy method: per unit face width 1/k_w(s) = 1/k_h + Σ over both teeth (1/k_b + 1/k_s + 1/k_a + 1/k_f), bending, shear and axial compression of each tooth over its involute and the trochoid fillet its generating rack cuts (dedendum h_fP, tip radius ρ_fP below: the rounding tangent to the flank at h_aP, or the full round tip where the rack is too narrow for it{}), Sainsot's fillet foundation and linearised Hertz k_h = π E′/4; the mesh stiffness K(s) sums the pairs in contact{}. Positions s from A along the line of action{}. Relative error estimate of k(s): {:.1e} (Chebyshev degree {}).\n",
         if s.helical_lines.is_some() { "; a helical pair's teeth are those the rack of its transverse section cuts" } else { "" },
@@ -56,7 +56,7 @@ pub fn teeth_section(r: &Report) -> String {
             ],
         );
     }
-    let _ = writeln!(out);
+    md!(out);
     header(&mut out, &["per unit face width", "potential energy", "ISO 6336-1 Method B"]);
     let kw = u.stiffness_per_width();
     let per = |x: f64| kw.cell(x, 3);
@@ -81,15 +81,15 @@ pub fn teeth_section(r: &Report) -> String {
         ],
     );
     let iso = &s.iso_6336;
-    let _ = writeln!(
+    md!(
         out,
         "\nISO's figures include its factor C_M = {:.1} (theory to measured teeth); the method's are theoretical. Mean mesh stiffness K̄ = {}.",
         iso.c_m.0,
         u.stiffness().with(s.mean.si(), 2)
     );
-    let _ = writeln!(out, "\n{}", iso_readings(iso, u));
+    md!(out, "\n{}", iso_readings(iso, u));
     for p in r.plots.iter().filter(|p| p.kind == PlotKind::MeshStiffness) {
-        let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
+        md!(out, "\n![{}]({})", p.title, p.file);
     }
     transmission_error_lines(&mut out, r);
     out.push('\n');
@@ -97,7 +97,7 @@ pub fn teeth_section(r: &Report) -> String {
 }
 
 /// ISO 6336-1 Method B's readings behind c′ and c_γα, in one sentence.
-pub fn iso_readings(iso: &IsoReport, u: Units) -> String {
+pub(crate) fn iso_readings(iso: &IsoReport, u: Units) -> String {
     format!(
         "ISO 6336-1 Method B's readings: z_n = z/(cos²β_b cos β) = {} / {}, c′_th = 1/q′ = {}, c′ = c′_th C_M C_R C_B cos β (E/E_st) = {} with C_M = {:.1}, C_R = 1, C_B = {}, cos β = {}, E/E_st = {}; c_γα = c′ (0.75 ε_α + 0.25) = {} with ε_α = {}.",
         fixed(iso.virtual_teeth[0].0, 3),
@@ -118,9 +118,9 @@ fn transmission_error_lines(out: &mut String, r: &Report) {
     if r.transmission_error.is_empty() {
         return;
     }
-    let _ = writeln!(out, "\n### Static transmission error\n");
+    md!(out, "\n### Static transmission error\n");
     let helical = r.stiffness.as_ref().is_some_and(|s| s.helical_lines.is_some());
-    let _ = writeln!(
+    md!(
         out,
         "δ along the line of action, positive when the wheel lags; extremes located, mean integrated.{}\n",
         if helical {
@@ -157,6 +157,6 @@ fn transmission_error_lines(out: &mut String, r: &Report) {
         );
     }
     for p in r.plots.iter().filter(|p| matches!(p.kind, PlotKind::TransmissionError | PlotKind::LoadShare)) {
-        let _ = writeln!(out, "\n![{}]({})", p.title, p.file);
+        md!(out, "\n![{}]({})", p.title, p.file);
     }
 }

@@ -1,7 +1,7 @@
 //! report.md's thermal section: the housing, the balance of each kept record (θ*, status in words,
 //! what the housing gives off, the ratings) and the duty cycle's table.
 
-use std::fmt::Write;
+use super::markup::md;
 
 use super::markdown_losses::plots_of;
 use crate::report::PlotKind;
@@ -16,11 +16,11 @@ fn opt(q: Option<&Q>, f: impl Fn(&Q) -> String) -> String {
 }
 
 /// The section, empty without a housing.
-pub fn thermal_section(r: &Report) -> String {
+pub(crate) fn thermal_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(h) = &r.housing else { return out };
-    let _ = writeln!(out, "\n## Thermal balance\n");
-    let _ = writeln!(
+    md!(out, "\n## Thermal balance\n");
+    md!(
         out,
         "One thermal node: the housing wall at the oil temperature θ gives off P_Q(θ) = h_c A Δθ + ε σ A (T⁴ − T_a⁴) + G_f Δθ + G_c max(0, θ − θ_set), h_c = √(h_n² + h_f²) with h_n = 1.31 |Δθ|^(1/3) and h_f = 3.26 v^0.89 W/(m² K) (the DOE-2 exterior convection model). The balance θ* is the lowest oil temperature above ambient where the losses P_V(θ) (mesh and budget, the oil read at θ) equal P_Q(θ). The thermal rating is the pinion torque at this speed whose balance is the oil's limit; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n"
     );
@@ -60,7 +60,7 @@ fn balance_table(out: &mut String, r: &Report) {
     if r.thermal.is_empty() {
         return;
     }
-    let _ = writeln!(out);
+    md!(out);
     let u = r.units();
     let (deg, w, torque, kw) = (u.temperature(), u.power(), u.torque(), u.kilowatt());
     let rating_heading = |what: &str| format!("{what} {} ({})", torque.unit, kw.unit);
@@ -109,8 +109,8 @@ fn balance_table(out: &mut String, r: &Report) {
 fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleReport, u: Units) {
     let (deg, kj) = (u.temperature(), u.energy());
     let celsius = |q: &Q| deg.q(q, 1);
-    let _ = writeln!(out, "\n### Duty cycle \"{}\"\n", d.name);
-    let _ = writeln!(
+    md!(out, "\n### Duty cycle \"{}\"\n", d.name);
+    md!(
         out,
         "The losses of {} at each step; the transient C dθ/dt = P_V(θ) − P_Q(θ) from ambient, θ continuous across the steps (DOP853, error estimate {} K from two tolerances).\n",
         super::table::law_words(&d.label),
@@ -138,10 +138,10 @@ fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleRepor
     }
     let pct =
         |x: Option<crate::report::number::Num>| x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)));
-    let _ = writeln!(out);
-    let _ = writeln!(out, "- Energy in: {}.", kj.with(d.energy_in.si(), 2));
+    md!(out);
+    md!(out, "- Energy in: {}.", kj.with(d.energy_in.si(), 2));
     if let (Some(lost), Some(given)) = (&d.energy_lost, &d.energy_dissipated) {
-        let _ = writeln!(
+        md!(
             out,
             "- Transient: θ_max {}, energy lost {}, given off {}, cycle efficiency {}.",
             opt(d.oil_temperature_max.as_ref(), |q| deg.with(q.si(), 1)),
@@ -151,7 +151,7 @@ fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleRepor
         );
     }
     if let Some(f) = &d.fixed_temperature {
-        let _ = writeln!(
+        md!(
             out,
             "- At the fixed oil temperature {}: energy lost {}, cycle efficiency {}.",
             deg.with(f.oil_temperature.si(), 1),

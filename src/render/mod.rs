@@ -1,19 +1,20 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
-pub mod headline;
+pub(crate) mod headline;
 pub mod markdown;
-pub mod markdown_bearings;
-pub mod markdown_dynamics;
-pub mod markdown_friction;
-pub mod markdown_geometry;
-pub mod markdown_helical;
-pub mod markdown_losses;
-pub mod markdown_sweep;
-pub mod markdown_teeth;
-pub mod markdown_thermal;
-pub mod oil_sweep;
+pub(crate) mod markdown_bearings;
+pub(crate) mod markdown_dynamics;
+pub(crate) mod markdown_friction;
+pub(crate) mod markdown_geometry;
+pub(crate) mod markdown_helical;
+pub(crate) mod markdown_losses;
+pub(crate) mod markdown_sweep;
+pub(crate) mod markdown_teeth;
+pub(crate) mod markdown_thermal;
+pub(crate) mod markup;
+pub(crate) mod oil_sweep;
 pub mod svg;
-pub mod table;
+pub(crate) mod table;
 pub mod terminal;
 
 use crate::report::numerics::Timings;

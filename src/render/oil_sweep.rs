@@ -2,6 +2,7 @@
 //! temperature's report is where, the lubricant at each temperature, efficiency and losses against
 //! the temperature), report.json and efficiency_vs_oil_temperature.svg.
 
+use super::markup::md;
 use std::fmt::Write;
 
 use super::svg::{figure_with_legend, Panel};
@@ -11,7 +12,7 @@ use crate::report::oil_sweep::{OilSweepReport, OilSweepRow};
 use crate::report::units::{Shown, Units};
 
 /// The plot of the efficiency against the oil temperature.
-pub const OIL_SWEEP_PLOT: &str = "efficiency_vs_oil_temperature.svg";
+pub(crate) const OIL_SWEEP_PLOT: &str = "efficiency_vs_oil_temperature.svg";
 /// Rows of report.md's table (each row one point, law, formulation and temperature); report.json
 /// holds every row.
 const TABLE_ROWS: usize = 96;
@@ -19,7 +20,7 @@ const TABLE_ROWS: usize = 96;
 const PLOTTED_ROWS: usize = 8;
 
 /// report.md, report.json and the plot.
-pub fn render_oil_sweep(r: &OilSweepReport) -> Result<Vec<(String, String)>, String> {
+pub(crate) fn render_oil_sweep(r: &OilSweepReport) -> Result<Vec<(String, String)>, String> {
     let mut json = serde_json::to_string_pretty(r).map_err(|e| e.to_string())?;
     json.push('\n');
     let mut files = vec![("report.md".to_string(), markdown(r)), ("report.json".to_string(), json)];
@@ -42,10 +43,10 @@ fn markdown(r: &OilSweepReport) -> String {
     let mut out = String::new();
     let u = Units::of_system(r.unit_system);
     let n = r.runs.len();
-    let _ = writeln!(out, "# {}\n", r.title);
-    let _ = writeln!(out, "## Headline\n");
+    md!(out, "# {}\n", r.title);
+    md!(out, "## Headline\n");
     let labels: Vec<&str> = r.runs.iter().map(|x| x.label.as_str()).collect();
-    let _ = writeln!(
+    md!(
         out,
         "The scene run at {n} oil temperatures ({}): the lubricant's values, every law, film and loss \
          follow the temperature. Each temperature's full report is in its own folder:\n",
@@ -56,7 +57,7 @@ fn markdown(r: &OilSweepReport) -> String {
             writeln!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", x.label, x.folder, x.warnings, x.notes);
     }
     if r.runs.iter().any(|x| x.lubricant.is_some()) {
-        let _ = writeln!(out, "\n## Lubricant at each temperature\n");
+        md!(out, "\n## Lubricant at each temperature\n");
         let (nu, eta, rho, alpha) =
             (u.kinematic_viscosity(), u.dynamic_viscosity(), u.density(), u.pressure_viscosity());
         let cols =
@@ -78,11 +79,11 @@ fn markdown(r: &OilSweepReport) -> String {
             );
         }
         if let Some(l) = r.runs[0].lubricant.as_ref() {
-            let _ = writeln!(out, "\nSource: {}.", l.source);
+            md!(out, "\nSource: {}.", l.source);
         }
     }
     if !r.efficiency.is_empty() {
-        let _ = writeln!(out, "\n## Efficiency against oil temperature\n");
+        md!(out, "\n## Efficiency against oil temperature\n");
         let w = u.power();
         let mut cols = vec![
             "operating point".to_string(),
@@ -119,9 +120,9 @@ fn markdown(r: &OilSweepReport) -> String {
         }
         let all = r.efficiency.len() * n;
         if all > rows {
-            let _ = writeln!(out, "\n… {} more rows in report.json.", all - rows);
+            md!(out, "\n… {} more rows in report.json.", all - rows);
         }
-        let _ = writeln!(out, "\n![efficiency against oil temperature]({OIL_SWEEP_PLOT})");
+        md!(out, "\n![efficiency against oil temperature]({OIL_SWEEP_PLOT})");
     }
     out
 }

@@ -131,7 +131,7 @@ fn oil_temperature_finding(scene: &Scene, u: super::units::Units) -> Option<Stri
 
 /// Densities of oils (kg/m³): gear oils are 800–1100 (mineral ≈ 885, PAO ≈ 850, PAG ≈ 1000–1060 at
 /// 15 °C); outside this band the η and ν a scene gives cannot both be one oil's at one temperature.
-pub const OIL_DENSITY_RANGE: [f64; 2] = [700.0, 1200.0];
+pub(crate) const OIL_DENSITY_RANGE: [f64; 2] = [700.0, 1200.0];
 
 /// A warning when the density a given lubricant's η and ν imply (ρ = η/ν) is not an oil's: the
 /// two viscosities are then most likely at different temperatures or one is in a mistaken unit,

@@ -4,7 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::number::{DisplayUnit, Num, Q};
-pub use super::numerics::{NumericsReport, NumericsRow, Timings};
+pub(crate) use super::numerics::{NumericsReport, NumericsRow, Timings};
 use crate::dynamics::DynamicFormulation;
 use crate::evaluate::dynamics::DynamicsEvaluation;
 use crate::evaluate::Evaluation;
@@ -12,9 +12,7 @@ use crate::geometry::stiffness::StiffnessShape;
 use crate::model::Scene;
 
 use super::dynamics_records::formulation_report;
-pub use super::dynamics_records::{
-    FormulationReport, FreeLine, FreeResponseReport, GearDynamicsReport, Located, SpectrumLine,
-};
+pub(crate) use super::dynamics_records::{FormulationReport, Located};
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(untagged)]
@@ -138,7 +136,7 @@ fn finite(x: f64) -> Option<Num> {
 
 /// The run times of the numerics study (machine-dependent: never in report.json; `run` writes them
 /// to `timing_numerics.json` and the work-precision plot).
-pub fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
+pub(crate) fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
     let (_, _, study) = d.numerics.as_ref()?;
     Some(Timings {
         reference_seconds: study.reference_seconds,
@@ -146,7 +144,7 @@ pub fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
     })
 }
 
-pub fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
+pub(crate) fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
     let shape = d.stiffness.shape();
     let stiffness = stiffness_report(&shape);
     let g = &eval.geometry;

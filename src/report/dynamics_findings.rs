@@ -6,7 +6,7 @@ use super::finding::{Finding, Severity};
 use crate::dynamics::floquet::Verdict;
 
 /// Findings of the dynamics: instability, tooth separation, stiff ratios, Liouville.
-pub fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
+pub(crate) fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
     let mut out = Vec::new();
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     // (point label, formulation, K_v, f_n/f_mesh) where K_v is the stiffness step: one note for all.

@@ -16,7 +16,7 @@ pub struct LengthAt {
 }
 
 /// The two ends (u, z) of a contact line (m).
-pub type LineEnds = [(f64, f64); 2];
+pub(crate) type LineEnds = [(f64, f64); 2];
 
 /// The axial force at one reported operating point.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -53,7 +53,7 @@ pub struct HelicalReport {
 }
 
 /// Instants at which the plot draws the contact lines.
-pub const PLOTTED_INSTANTS: [f64; 4] = [0.0, 0.25, 0.5, 0.75];
+pub(crate) const PLOTTED_INSTANTS: [f64; 4] = [0.0, 0.25, 0.5, 0.75];
 
 pub(super) fn helical_report(eval: &Evaluation) -> Option<HelicalReport> {
     let g = &eval.geometry;

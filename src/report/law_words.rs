@@ -4,7 +4,7 @@
 /// `iso_14179_2(x_l = 0.846)` → "ISO/TR 14179-2 X_L = 0.846"; `benedict_kelley` and
 /// `benedict_kelley_bernard` keep their parentheses ("Benedict–Kelley (Bernard Table 1)").
 /// Whatever follows the closing parenthesis (`iso_14179_2(x_l = 0.846), external`) is kept as it is.
-pub fn law_words(label: &str) -> String {
+pub(crate) fn law_words(label: &str) -> String {
     let (law, rest) = match label.rfind(')') {
         Some(end) => label.split_at(end + 1),
         None => label.split_once(", ").map_or((label, ""), |(l, _)| (l, &label[l.len()..])),

@@ -39,7 +39,7 @@ pub struct LubricantReport {
     pub source: String,
 }
 
-pub fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantReport> {
+pub(crate) fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantReport> {
     let l = scene.lubricant.as_ref()?;
     let t = &eval.tribology;
     let source = match &l.oil {
@@ -149,11 +149,11 @@ pub struct BearingRecord {
 }
 
 /// The bearing places of a gearbox in the budget's order: (shaft name, bearing).
-pub fn bearing_places(g: &Gearbox) -> impl Iterator<Item = (&'static str, &Bearing)> {
+pub(crate) fn bearing_places(g: &Gearbox) -> impl Iterator<Item = (&'static str, &Bearing)> {
     g.bearings.iter().zip(["pinion", "wheel"]).flat_map(|(places, shaft)| places.iter().map(move |b| (shaft, b)))
 }
 
-pub fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord {
+pub(crate) fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord {
     let w = |x: Option<f64>| x.map(|x| Q::new(x, "W"));
     let bearings = gearbox
         .map(|g| {
@@ -182,7 +182,7 @@ pub fn budget_record(p: &BudgetParts, gearbox: Option<&Gearbox>) -> BudgetRecord
 }
 
 /// The readings behind the budget's parts that this gearbox uses.
-pub fn budget_readings(g: &Gearbox) -> Vec<String> {
+pub(crate) fn budget_readings(g: &Gearbox) -> Vec<String> {
     use crate::losses::Lubrication;
     let mut out = Vec::new();
     match g.lubrication {
@@ -305,7 +305,7 @@ fn range(values: impl Iterator<Item = f64>) -> [f64; 2] {
     values.fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], v| [lo.min(v), hi.max(v)])
 }
 
-pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
+pub(crate) fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
     let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
     let mut ranges = Vec::new();
     for (i, label) in labels.iter().enumerate() {
@@ -356,7 +356,7 @@ pub fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
 
 /// A warning where the scene's fastest operating point or map speed takes a loss model beyond its
 /// tested range (Mauz's dip churning above 60 m/s pitch-line speed).
-pub fn loss_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
+pub(crate) fn loss_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     let Some(l) = scene.gearbox.as_ref().and_then(|g| g.lubrication.as_ref()) else { return Vec::new() };
     let map_speeds = scene.analyses.efficiency_map.iter().flat_map(|(_, s)| s.values.iter());
     let fastest = scene.operating.pinion_speed.values.iter().chain(map_speeds).map(|w| w.value).fold(0.0, f64::max);

@@ -15,7 +15,7 @@ use crate::friction::catalog::LawId;
 
 /// The comparison across oil temperatures.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct OilSweepReport {
+pub(crate) struct OilSweepReport {
     pub title: String,
     pub slug: String,
     /// One run per temperature, in the order the scene wrote them.
@@ -38,7 +38,7 @@ pub struct OilSweepReport {
 
 /// One temperature's run.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct OilRun {
+pub(crate) struct OilRun {
     /// As written (`90 degC`).
     pub label: String,
     pub oil_temperature: Q,
@@ -52,7 +52,7 @@ pub struct OilRun {
 
 /// One operating point, law and formulation: its values at each temperature (in run order).
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct OilSweepRow {
+pub(crate) struct OilSweepRow {
     pub law: LawId,
     pub label: String,
     pub formulation: Formulation,
@@ -68,7 +68,7 @@ pub struct OilSweepRow {
 
 /// The folder of one temperature's report: `oil_temperature_90degC` (characters other than
 /// letters, digits, `.` and `-` left out).
-pub fn run_folder(label: &str) -> String {
+pub(crate) fn run_folder(label: &str) -> String {
     let kept: String = label.chars().filter(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-')).collect();
     format!("oil_temperature_{kept}")
 }
@@ -77,7 +77,7 @@ pub fn run_folder(label: &str) -> String {
 /// scene's order.
 /// Every run evaluates the same operating points, laws and formulations, so their records match
 /// one to one.
-pub fn build_oil_sweep(runs: &[(String, f64, Report)]) -> OilSweepReport {
+pub(crate) fn build_oil_sweep(runs: &[(String, f64, Report)]) -> OilSweepReport {
     let (_, _, first) = &runs[0];
     let efficiency = first
         .efficiency

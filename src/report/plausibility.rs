@@ -5,10 +5,9 @@
 //! ([`crate::evaluate::tally`]); the first [`LISTED_FINDINGS`] are listed, the rest counted.
 
 use super::finding::{Finding, Severity};
-pub use crate::evaluate::tally::HALF_WIDTH_LIMIT;
 use crate::evaluate::tally::{Implausible, Tally, LISTED_FINDINGS};
 
-pub fn plausibility_findings(tally: &Tally, u: super::units::Units) -> Vec<Finding> {
+pub(crate) fn plausibility_findings(tally: &Tally, u: super::units::Units) -> Vec<Finding> {
     let (len, w) = (u.length(), u.power());
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     let mut out: Vec<Finding> = tally

@@ -67,10 +67,10 @@ pub struct SweepReport {
 }
 
 /// The record files: `records.csv` and `records.jsonl`.
-pub const RECORDS_CSV: &str = "records.csv";
-pub const RECORDS_JSONL: &str = "records.jsonl";
+pub(crate) const RECORDS_CSV: &str = "records.csv";
+pub(crate) const RECORDS_JSONL: &str = "records.jsonl";
 
-pub fn records_report(tally: &Tally, plan: &Plan) -> Option<RecordsReport> {
+pub(crate) fn records_report(tally: &Tally, plan: &Plan) -> Option<RecordsReport> {
     (tally.rows > 0).then_some(RecordsReport {
         csv: RECORDS_CSV.into(),
         jsonl: RECORDS_JSONL.into(),
@@ -98,7 +98,7 @@ fn efficiency_at(op: &crate::model::Operating, a: Option<AtPoint>) -> Option<Val
     })
 }
 
-pub fn sweep_report(tally: &Tally, plan: &Plan, op: &crate::model::Operating) -> Option<SweepReport> {
+pub(crate) fn sweep_report(tally: &Tally, plan: &Plan, op: &crate::model::Operating) -> Option<SweepReport> {
     (plan.count() > 1 && tally.rows > 0).then(|| SweepReport {
         operating_points: tally.points,
         efficiency: tally
@@ -132,15 +132,15 @@ pub fn sweep_report(tally: &Tally, plan: &Plan, op: &crate::model::Operating) ->
 }
 
 /// Whether the sweep gets map plots: at least this many values of both torque and speed.
-pub const MAP_MIN_VALUES: usize = 4;
+pub(crate) const MAP_MIN_VALUES: usize = 4;
 
-pub fn has_map(plan: &Plan) -> bool {
+pub(crate) fn has_map(plan: &Plan) -> bool {
     plan.torques >= MAP_MIN_VALUES && plan.speeds >= MAP_MIN_VALUES
 }
 
 /// What the reader must know about the sweep as a whole: values that are not numbers, and what a
 /// large sweep's report leaves to the record files.
-pub fn sweep_findings(tally: &Tally, plan: &Plan) -> Vec<Finding> {
+pub(crate) fn sweep_findings(tally: &Tally, plan: &Plan) -> Vec<Finding> {
     let mut out = Vec::new();
     if let Some((k, column)) = &tally.first_non_finite {
         out.push(Finding {
@@ -167,7 +167,7 @@ pub fn sweep_findings(tally: &Tally, plan: &Plan) -> Vec<Finding> {
 
 /// Mean |μ| of every composite law at the kept points, one per point and law (the efficiency rows of
 /// one law repeat it per formulation), for the composite plot.
-pub fn composite_mu(scene: &crate::model::Scene, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
+pub(crate) fn composite_mu(scene: &crate::model::Scene, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
     let mut out: Vec<(usize, f64, f64, String, f64)> = Vec::new();
     let mut last: Option<(usize, usize)> = None;
     for r in &tally.kept {

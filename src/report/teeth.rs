@@ -149,7 +149,7 @@ fn located(value: f64, unit: &'static str, position: f64) -> Located {
 }
 
 /// The stiffness section.
-pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport {
+pub(crate) fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport {
     let k = &t.sharing.stiffness;
     let [lo, hi] = k.engagement();
     let pair_s = series_positions(lo, hi, &k.contact_ends());
@@ -204,7 +204,7 @@ pub fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport
 }
 
 /// One report per asked torque.
-pub fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionErrorReport> {
+pub(crate) fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionErrorReport> {
     t.transmission_error
         .iter()
         .map(|te| TransmissionErrorReport {
@@ -230,7 +230,7 @@ pub fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionErrorRepo
 
 /// A relief above a tenth of the module; a body outside the range of Sainsot's fit; a dynamic
 /// model that reads the unrelieved teeth.
-pub fn teeth_findings(scene: &Scene, s: &TeethStiffnessReport) -> Vec<Finding> {
+pub(crate) fn teeth_findings(scene: &Scene, s: &TeethStiffnessReport) -> Vec<Finding> {
     let mut out = Vec::new();
     let m_n = scene.gears.module.value.value;
     let micro = super::scene::units(scene).micro();

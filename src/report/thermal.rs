@@ -149,7 +149,7 @@ pub struct DutyCycleReport {
     pub ambient_temperature: Q,
 }
 
-pub fn housing_report(h: &Housing) -> HousingReport {
+pub(crate) fn housing_report(h: &Housing) -> HousingReport {
     HousingReport {
         surface_area: Q::new(h.area, "m^2"),
         ambient_temperature: Q::new(h.ambient, "K"),
@@ -165,7 +165,7 @@ pub fn housing_report(h: &Housing) -> HousingReport {
 }
 
 /// The thermal records of the kept efficiency rows.
-pub fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord> {
+pub(crate) fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord> {
     let rating = |torque: Option<f64>, omega: f64| {
         torque.map(|t| Rating { torque: Q::new(t, "N*m"), power: Q::new(t * omega, "W") })
     };
@@ -204,7 +204,12 @@ fn law_words(scene: &Scene, law_index: usize, f: Formulation) -> String {
     format!("{}, {}", scene.friction[law_index].label(), f.name())
 }
 
-pub fn heat_balance_report(scene: &Scene, eval: &Evaluation, c: &HeatBalanceCurve, h: &Housing) -> HeatBalanceReport {
+pub(crate) fn heat_balance_report(
+    scene: &Scene,
+    eval: &Evaluation,
+    c: &HeatBalanceCurve,
+    h: &Housing,
+) -> HeatBalanceReport {
     let case = eval.cases.iter().find(|k| k.index == c.case).map_or_else(String::new, |k| k.label.clone());
     HeatBalanceReport {
         label: format!("{case}, {}", law_words(scene, c.law_index, c.formulation)),
@@ -217,7 +222,7 @@ pub fn heat_balance_report(scene: &Scene, eval: &Evaluation, c: &HeatBalanceCurv
     }
 }
 
-pub fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Option<DutyCycleReport> {
+pub(crate) fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Option<DutyCycleReport> {
     let cycle = scene.duty_cycle.as_ref()?;
     let e_in = cycle.energy_in();
     let efficiency = |lost: f64| (e_in > 0.0).then(|| Num((e_in - lost) / e_in));
@@ -267,7 +272,7 @@ pub fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Opt
 
 /// Warnings of the thermal balance: above the limit, no balance, a transient that crosses the
 /// limit (when, in which step), a duty cycle without a heat capacity, a transient that failed.
-pub fn thermal_findings(
+pub(crate) fn thermal_findings(
     scene: &Scene,
     records: &[ThermalRecord],
     duty: Option<&DutyCycleReport>,

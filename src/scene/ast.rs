@@ -1,6 +1,6 @@
 //! The syntax tree of a `.gear` file: what was written, with spans, before any name or unit is checked.
 
-pub use crate::diagnostics::Span;
+pub(crate) use crate::diagnostics::Span;
 
 impl From<pest::Span<'_>> for Span {
     fn from(s: pest::Span<'_>) -> Self {

@@ -8,7 +8,7 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind, SceneErrors, Span};
 use crate::model::Scene;
 
 /// Stage 1: text → syntax tree.
-pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {
+pub(crate) fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {
     super::parse::parse_scene_text(source).map_err(|diagnostics| SceneErrors {
         source_name: source_name.into(),
         source: source.into(),
@@ -18,7 +18,7 @@ pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {
 
 /// Stage 2: syntax tree → checked scene (units, names, ranges, geometry).
 /// Files the scene names are read relative to the folder of `source_name`.
-pub fn lower(source_name: &str, source: &str, ast: &SceneAst) -> Result<Scene, SceneErrors> {
+pub(crate) fn lower(source_name: &str, source: &str, ast: &SceneAst) -> Result<Scene, SceneErrors> {
     let base = Path::new(source_name).parent();
     super::lower::lower_scene_in(ast, base).map_err(|diagnostics| SceneErrors {
         source_name: source_name.into(),
@@ -30,7 +30,7 @@ pub fn lower(source_name: &str, source: &str, ast: &SceneAst) -> Result<Scene, S
 /// The diagnostics without those a misspelling caused: "… has no `module`" when the same block
 /// (or, for a missing block, the scene) has an unknown name answered by "did you mean `module`?".
 /// The misspelling's own diagnostic says what to write; the missing key would only repeat it.
-pub fn without_cascades(diagnostics: Vec<Diagnostic>) -> Vec<Diagnostic> {
+pub(crate) fn without_cascades(diagnostics: Vec<Diagnostic>) -> Vec<Diagnostic> {
     let misspelt: Vec<(Span, String)> = diagnostics
         .iter()
         .filter(|d| d.kind == DiagnosticKind::UnknownName)
@@ -59,7 +59,7 @@ fn missing_name(reason: &str) -> Option<&str> {
 }
 
 /// Stages 1 and 2.
-pub fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
+pub(crate) fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
     let ast = parse(source_name, source)?;
     lower(source_name, source, &ast)
 }

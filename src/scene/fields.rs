@@ -9,10 +9,10 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::{Given, Sweep};
 
 pub(crate) use super::sweeps::sweep_values;
-pub use super::values::{a, checked_scale, format_number, scalar, MAX_SWEEP_LENGTH};
+pub(crate) use super::values::{checked_scale, format_number, scalar};
 
 /// The nearest of `candidates` to `name`, for "did you mean" hints.
-pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub(crate) fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     candidates
         .into_iter()
         .map(|c| (strsim::jaro_winkler(name, c), c))
@@ -22,7 +22,7 @@ pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
 }
 
 /// `what` is e.g. "key in the `gears` block": the name is put after its noun.
-pub fn unknown_name(what: &str, name: &Name, allowed: &[&str]) -> Diagnostic {
+pub(crate) fn unknown_name(what: &str, name: &Name, allowed: &[&str]) -> Diagnostic {
     let reason = match what.split_once(' ') {
         Some((noun, place)) => format!("unknown {noun} `{}` {place}", name.text),
         None => format!("unknown {what} `{}`", name.text),
@@ -39,7 +39,7 @@ pub fn unknown_name(what: &str, name: &Name, allowed: &[&str]) -> Diagnostic {
 }
 
 /// The entries of one block, sorted by kind, with every name checked against what is allowed.
-pub struct Fields<'a> {
+pub(crate) struct Fields<'a> {
     pub what: String,
     pub span: Span,
     pub values: BTreeMap<&'a str, (&'a Name, &'a Value)>,
@@ -49,7 +49,7 @@ pub struct Fields<'a> {
 
 impl<'a> Fields<'a> {
     /// Sorts `items`; unknown keys, blocks and calls and duplicate keys become diagnostics.
-    pub fn read(
+    pub(crate) fn read(
         what: impl Into<String>,
         span: Span,
         items: &'a [Item],
@@ -95,17 +95,22 @@ impl<'a> Fields<'a> {
         f
     }
 
-    pub fn has(&self, key: &str) -> bool {
+    pub(crate) fn has(&self, key: &str) -> bool {
         self.values.contains_key(key)
     }
 
-    pub fn missing(&self, key: &str, example: &str) -> Diagnostic {
+    pub(crate) fn missing(&self, key: &str, example: &str) -> Diagnostic {
         Diagnostic::new(DiagnosticKind::MissingKey, self.span, format!("{} has no `{key}`", self.what))
             .hint(format!("add `{key} = {example}`"))
     }
 
     /// A required quantity.
-    pub fn required<Q: SiQuantity>(&self, key: &str, example: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
+    pub(crate) fn required<Q: SiQuantity>(
+        &self,
+        key: &str,
+        example: &str,
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<Given<Q>> {
         if !self.has(key) {
             errors.push(self.missing(key, example));
             return None;
@@ -114,14 +119,14 @@ impl<'a> Fields<'a> {
     }
 
     /// An optional quantity.
-    pub fn optional<Q: SiQuantity>(&self, key: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
+    pub(crate) fn optional<Q: SiQuantity>(&self, key: &str, errors: &mut Vec<Diagnostic>) -> Option<Given<Q>> {
         let (_, value) = self.values.get(key)?;
         let (si, written) = scalar(key, value, Q::DIMENSION, errors)?;
         Some(Given { value: Q::from_si(si), written, span: value.span })
     }
 
     /// An optional dimensionless number within `[lo, hi]`.
-    pub fn number(&self, key: &str, lo: f64, hi: f64, errors: &mut Vec<Diagnostic>) -> Option<Given<f64>> {
+    pub(crate) fn number(&self, key: &str, lo: f64, hi: f64, errors: &mut Vec<Diagnostic>) -> Option<Given<f64>> {
         let (_, value) = self.values.get(key)?;
         let (x, written) = scalar(key, value, Dimension::NONE, errors)?;
         if !(lo..=hi).contains(&x) {
@@ -139,7 +144,7 @@ impl<'a> Fields<'a> {
     }
 
     /// An optional name value (`load_sharing = equal`), checked against `allowed`.
-    pub fn name(&self, key: &str, allowed: &[&str], errors: &mut Vec<Diagnostic>) -> Option<&'a Name> {
+    pub(crate) fn name(&self, key: &str, allowed: &[&str], errors: &mut Vec<Diagnostic>) -> Option<&'a Name> {
         let (_, value) = self.values.get(key)?;
         match &value.kind {
             ValueKind::Call(c) if c.arguments.is_empty() => {
@@ -165,7 +170,12 @@ impl<'a> Fields<'a> {
     }
 
     /// A quantity that may be swept: a single value, a list or a range.
-    pub fn sweep<Q: SiQuantity>(&self, key: &str, example: &str, errors: &mut Vec<Diagnostic>) -> Option<Sweep<Q>> {
+    pub(crate) fn sweep<Q: SiQuantity>(
+        &self,
+        key: &str,
+        example: &str,
+        errors: &mut Vec<Diagnostic>,
+    ) -> Option<Sweep<Q>> {
         if !self.has(key) {
             errors.push(self.missing(key, example));
             return None;

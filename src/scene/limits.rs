@@ -6,7 +6,7 @@
 use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
 
 /// A key's plausible range in SI, and how the range reads in the message.
-pub struct Limit {
+pub(crate) struct Limit {
     pub key: &'static str,
     /// The SI unit of the value in the message (empty for a plain number).
     pub si_unit: &'static str,
@@ -20,7 +20,7 @@ const fn limit(key: &'static str, si_unit: &'static str, lo: f64, hi: f64, shown
 }
 
 /// Every quantity with a plausible range (keys as the scene writes them).
-pub const LIMITS: &[Limit] = &[
+pub(crate) const LIMITS: &[Limit] = &[
     limit("module", "m", 1e-5, 0.2, "0.01 mm to 200 mm"),
     limit("diametral_pitch", "1/m", 5.0, 1e5, "0.127 to 2540 1/in"),
     limit("face_width", "m", 1e-4, 5.0, "0.1 mm to 5 m"),
@@ -68,11 +68,11 @@ fn shown(x: f64, unit: &str) -> String {
 
 /// Checks an SI value of `key` against its plausible range; false (with a diagnostic) outside it.
 /// Whether `key` is a quantity that is never negative (its plausible range starts above zero).
-pub fn positive(key: &str) -> bool {
+pub(crate) fn positive(key: &str) -> bool {
     LIMITS.iter().find(|l| l.key == key).is_some_and(|l| l.lo > 0.0)
 }
 
-pub fn plausible(key: &str, si: f64, span: Span, errors: &mut Vec<Diagnostic>) -> bool {
+pub(crate) fn plausible(key: &str, si: f64, span: Span, errors: &mut Vec<Diagnostic>) -> bool {
     let Some(l) = LIMITS.iter().find(|l| l.key == key) else { return true };
     // Zero and negative values of positive quantities get the sign checks' own messages.
     if (l.lo..=l.hi).contains(&si) || (si <= 0.0 && l.lo > 0.0) {

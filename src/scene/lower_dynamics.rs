@@ -20,7 +20,11 @@ const STIFFNESS_KEYS: &[&str] = &["single", "double", "triple", "table", "file",
 const SOLVERS: &[&str] = &["auto", "magnus"];
 const FORMULATIONS: &[&str] = &["base", "external", "internal", "internal_chord"];
 
-pub fn lower_dynamics(block: &Block, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) -> Option<DynamicsSpec> {
+pub(crate) fn lower_dynamics(
+    block: &Block,
+    base_dir: Option<&Path>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<DynamicsSpec> {
     let f = Fields::read(
         "the `dynamics` block",
         block.span,
@@ -316,7 +320,7 @@ fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) 
 }
 
 /// `stability_map(pinion_speed = 1000..60000 rpm step 100)`.
-pub fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Sweep<AngularVelocity>> {
+pub(crate) fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Sweep<AngularVelocity>> {
     let mut out = None;
     for (name, value) in &call.arguments {
         if name.text != "pinion_speed" {
@@ -351,7 +355,7 @@ pub fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<
 /// Most natural periods per mesh period the dynamics are computed for. The work per mesh period
 /// grows with f_n/f_mesh (the trajectory follows every oscillation to locate the extrema); far
 /// below the resonances the response is quasi-static, and at 5 000 periods a run still takes seconds.
-pub const MAX_FREQUENCY_RATIO: f64 = 5_000.0;
+pub(crate) const MAX_FREQUENCY_RATIO: f64 = 5_000.0;
 
 /// Refuses dynamics at speeds so low that f_n/f_mesh exceeds [`MAX_FREQUENCY_RATIO`] (f_n from the
 /// stiffest mesh state, an upper bound), naming the lowest speed allowed.

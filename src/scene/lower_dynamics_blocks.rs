@@ -61,7 +61,7 @@ pub(super) fn bearings(f: &Fields, block: &Block, model: &str, errors: &mut Vec<
 }
 
 /// Most mesh periods of a free response.
-pub const MAX_FREE_PERIODS: usize = 2000;
+pub(crate) const MAX_FREE_PERIODS: usize = 2000;
 
 /// `free_response { x0 = 2e-6 in  v0 = 20 in/s  periods = 20 }` (He & Singh Figs 8–9).
 pub(super) fn free_response(f: &Fields, errors: &mut Vec<Diagnostic>) -> Option<Option<FreeResponseSpec>> {

@@ -9,7 +9,7 @@ use crate::model::*;
 
 /// Most laws a scene may compare, a swept argument's values counted one by one (each is a column of
 /// every table and a curve of every plot of an operating point).
-pub const MAX_LAW_VARIANTS: usize = 256;
+pub(crate) const MAX_LAW_VARIANTS: usize = 256;
 
 pub(super) fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
     let ids: Vec<&str> = catalog::LAWS.iter().map(|l| l.id.name()).collect();
@@ -36,7 +36,7 @@ pub(super) fn lower_friction(block: &Block, errors: &mut Vec<Diagnostic>) -> Vec
 /// A law call checked against the catalogue: arguments known, with the right dimension, defaults
 /// filled in. One argument may be a sweep (`coulomb(mu = [0.02, 0.04, 0.08])`): the law is then
 /// evaluated once per value.
-pub fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
+pub(crate) fn lower_law(call: &Call, errors: &mut Vec<Diagnostic>) -> Vec<FrictionLawSpec> {
     let Some(entry) = catalog::entry(&call.name.text) else { return Vec::new() };
     let names: Vec<&str> = entry.arguments.iter().map(|a| a.name).collect();
     let mut arguments: Vec<(String, f64, String)> = Vec::new();
@@ -200,7 +200,7 @@ pub(super) fn check_friction_needs(
 
 /// Largest mean roughness S (µm) Xu et al.'s fit is evaluated at: its factor exp(b9 e^S) is 2·10⁵ at
 /// 3 µm and overflows (μ not a number) near 7 µm; the fit was made on surfaces far smoother.
-pub const XU_MAX_ROUGHNESS_UM: f64 = 5.0;
+pub(crate) const XU_MAX_ROUGHNESS_UM: f64 = 5.0;
 
 fn check_xu_roughness(law: &FrictionLawSpec, gears: &GearPair, errors: &mut Vec<Diagnostic>) {
     let ra = |g: &Gear| g.roughness_ra.as_ref().map(|r| r.value.value);

@@ -313,7 +313,7 @@ pub(super) fn check_gearbox_needs(
 }
 
 /// Most values along each axis of an efficiency map.
-pub const MAX_MAP_VALUES: usize = 200;
+pub(crate) const MAX_MAP_VALUES: usize = 200;
 
 /// `efficiency_map(pinion_torque = 10..400 N*m count 40, pinion_speed = 100..6000 rpm count 40)`.
 pub(super) fn lower_efficiency_map(

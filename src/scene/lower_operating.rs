@@ -11,7 +11,7 @@ const OPERATING_KEYS: &[&str] = &["pinion_torque", "pinion_speed", "oil_temperat
 /// Most operating points a scene may name in `detail_points`.
 pub const MAX_DETAIL_POINTS: usize = 20;
 /// Most oil temperatures a scene may run at (each is a whole run of the scene).
-pub const MAX_OIL_TEMPERATURES: usize = 25;
+pub(crate) const MAX_OIL_TEMPERATURES: usize = 25;
 
 pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Operating> {
     let f = Fields::read("the `operating` block", block.span, &block.items, OPERATING_KEYS, &[], &[], errors);

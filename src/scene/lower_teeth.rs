@@ -16,7 +16,7 @@ use crate::model::{Analyses, DynamicsSpec, Gear, GearPair, Given, Sweep, TipReli
 const RELIEF_KEYS: &[&str] = &["amount", "length", "shape"];
 const SHAPES: &[&str] = &["linear", "parabolic"];
 /// Most torques of one `transmission_error(...)`.
-pub const MAX_STE_TORQUES: usize = 16;
+pub(crate) const MAX_STE_TORQUES: usize = 16;
 
 /// `tip_relief { amount = 10 um  length = 1.8 mm  shape = linear }` inside a gear block.
 pub(super) fn lower_tip_relief(gear: &str, blocks: &[&Block], errors: &mut Vec<Diagnostic>) -> Option<TipReliefSpec> {
@@ -127,7 +127,7 @@ impl GearPair {
         }))
     }
 
-    /// The potential-energy stiffness of the pair (after [`check_teeth`] passed).
+    /// The potential-energy stiffness of the pair (after `check_teeth` passed).
     pub fn pair_stiffness(&self) -> Option<PairStiffness> {
         PairStiffness::new(&self.geometry().ok()?, &self.bodies()).ok()
     }

@@ -39,7 +39,7 @@ const HOUSING: &[&str] = &[
 const COOLER: &[&str] = &["conductance", "above"];
 const STEP: &[&str] = &["duration", "pinion_torque", "pinion_speed"];
 /// Most steps a duty cycle may have.
-pub const MAX_DUTY_STEPS: usize = 10_000;
+pub(crate) const MAX_DUTY_STEPS: usize = 10_000;
 /// The ambient temperatures a housing may stand in (K): −60 °C to 80 °C.
 const AMBIENT: (f64, f64) = (213.15, 353.15);
 

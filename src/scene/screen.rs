@@ -7,7 +7,7 @@
 use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
 
 /// Deepest nesting of `{`, `[` and `(` a scene may have (a real scene needs 4).
-pub const MAX_NESTING: usize = 32;
+pub(crate) const MAX_NESTING: usize = 32;
 /// Characters flagged before the screen stops looking.
 const MAX_FLAGGED: usize = 10;
 
@@ -63,7 +63,7 @@ fn flag(c: char, at: usize) -> Diagnostic {
 }
 
 /// Problems the parser must not see; empty when the text may be parsed.
-pub fn screen(source: &str) -> Vec<Diagnostic> {
+pub(crate) fn screen(source: &str) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     let (mut in_comment, mut in_string) = (false, false);
     let mut openers: Vec<usize> = Vec::new();

@@ -239,7 +239,7 @@ pub enum UnitError {
         index: usize,
         name: String,
     },
-    /// An exponent of a base dimension leaves ±[`crate::quantity::MAX_EXPONENT`] at this factor.
+    /// An exponent of a base dimension leaves ±`crate::quantity::MAX_EXPONENT` at this factor.
     ExponentOverflow {
         index: usize,
     },
@@ -311,7 +311,7 @@ const WRITTEN_FOR: &[(&str, &str)] = &[
 ];
 
 /// The nearest unit name, for "did you mean" hints: what the name usually stands for when it is a
-/// common way of writing a unit ([`WRITTEN_FOR`]: `Nm` → `N*m`, `C` → `degC`), else the table's
+/// common way of writing a unit (`WRITTEN_FOR`: `Nm` → `N*m`, `C` → `degC`), else the table's
 /// closest name by Jaro–Winkler similarity.
 pub fn suggest(name: &str) -> Option<&'static str> {
     if let Some((_, meant)) = WRITTEN_FOR.iter().find(|(w, _)| *w == name) {

@@ -6,10 +6,10 @@ use super::units::{self, Dimension, Scale, UnitError};
 use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
 
 /// Sweeps longer than this are refused (a typo in a step, not a study).
-pub const MAX_SWEEP_LENGTH: usize = 100_000;
+pub(crate) const MAX_SWEEP_LENGTH: usize = 100_000;
 
 /// Evaluates a unit (None: dimensionless) and checks it against the expected dimension.
-pub fn checked_scale(
+pub(crate) fn checked_scale(
     key: &str,
     unit: Option<&UnitExpr>,
     expected: Dimension,
@@ -85,7 +85,7 @@ pub fn checked_scale(
     Some(scale)
 }
 
-pub fn finite(key: &str, x: f64, span: Span, errors: &mut Vec<Diagnostic>) -> Option<f64> {
+pub(crate) fn finite(key: &str, x: f64, span: Span, errors: &mut Vec<Diagnostic>) -> Option<f64> {
     if x.is_finite() {
         Some(x)
     } else {
@@ -103,7 +103,12 @@ pub fn finite(key: &str, x: f64, span: Span, errors: &mut Vec<Diagnostic>) -> Op
 }
 
 /// A single value in SI, and the text as written.
-pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Diagnostic>) -> Option<(f64, String)> {
+pub(crate) fn scalar(
+    key: &str,
+    value: &Value,
+    expected: Dimension,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(f64, String)> {
     match &value.kind {
         ValueKind::Quantity { number, unit } => {
             let n = finite(key, *number, value.span, errors)?;
@@ -133,7 +138,7 @@ pub fn scalar(key: &str, value: &Value, expected: Dimension, errors: &mut Vec<Di
 }
 
 /// "a length", "an angle".
-pub fn a(noun: &str) -> String {
+pub(crate) fn a(noun: &str) -> String {
     match noun.chars().next() {
         Some('a' | 'e' | 'i' | 'o' | 'u') => format!("an {noun}"),
         _ => format!("a {noun}"),
@@ -141,7 +146,7 @@ pub fn a(noun: &str) -> String {
 }
 
 /// A number as a user would write it back: shortest round-trip form.
-pub fn format_number(x: f64) -> String {
+pub(crate) fn format_number(x: f64) -> String {
     if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e7) {
         format!("{x:e}")
     } else {

@@ -23,7 +23,7 @@
 use serde::{Deserialize, Serialize};
 
 /// The Stefan–Boltzmann constant σ (W/(m² K⁴)), CODATA 2018 (exact in the 2019 SI).
-pub const STEFAN_BOLTZMANN: f64 = 5.670374419e-8;
+pub(crate) const STEFAN_BOLTZMANN: f64 = 5.670374419e-8;
 
 /// An oil cooler that takes G_c (θ − θ_set) above its set temperature.
 #[derive(Debug, Clone, Copy, PartialEq)]

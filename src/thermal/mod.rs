@@ -1,5 +1,5 @@
-//! The thermal balance of a gearbox: the housing as one thermal node ([`housing`]), the oil
-//! temperature it settles at and its thermal rating ([`balance`]), and a duty cycle's transient
+//! The thermal balance of a gearbox: the housing as one thermal node (`housing`), the oil
+//! temperature it settles at and its thermal rating ([`balance()`]), and a duty cycle's transient
 //! ([`transient`]). Each takes the losses as a function of the oil temperature; the evaluation
 //! (`evaluate/thermal.rs`) supplies the loss budget at that temperature.
 //!
@@ -7,9 +7,9 @@
 //! the box (the oil, the housing wall and the gears share θ), no solar or other heat input.
 
 pub mod balance;
-pub mod duty_cycle;
-pub mod housing;
-pub mod transient;
+pub(crate) mod duty_cycle;
+pub(crate) mod housing;
+pub(crate) mod transient;
 
 pub use balance::{balance, rating_torque, Balance, BalanceStatus};
 pub use duty_cycle::{DutyCycle, DutyStep};

@@ -38,7 +38,7 @@ use differential_equations::solout::Solout;
 use super::housing::Housing;
 
 /// The integrator's relative and absolute tolerance on the scaled states (K).
-pub const TOLERANCE: f64 = 1e-12;
+pub(crate) const TOLERANCE: f64 = 1e-12;
 
 /// The state at the end of one step of the cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -80,7 +80,7 @@ pub fn transient(
 
 /// [`transient`], with `settle` false integrating every step to its end even where θ has long sat
 /// at the balance (the reference the closed form is tested against).
-pub fn transient_settling(
+pub(crate) fn transient_settling(
     p_v: impl Fn(usize, f64) -> f64,
     housing: &Housing,
     c: f64,

@@ -1,7 +1,7 @@
 //! Lubricant and surface inputs in SI, and EHL film thickness along the line of action.
 
 pub mod d2270;
-pub mod film;
+pub(crate) mod film;
 pub mod lubricant;
 
 pub use film::{Film, FilmInputs};

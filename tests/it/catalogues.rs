@@ -15,7 +15,8 @@ fn entry_files(folder: &str, machinery: &[&str]) -> BTreeSet<String> {
 /// Friction laws: `src/friction/<law name>.rs` for every row of `LAWS`, and no other law file.
 #[test]
 fn friction_laws_one_file_one_row() {
-    let machinery = ["mod.rs", "catalog.rs", "law_id.rs", "needs.rs", "friction_law.rs", "law_context.rs", "testing.rs"];
+    let machinery =
+        ["mod.rs", "catalog.rs", "law_id.rs", "needs.rs", "friction_law.rs", "law_context.rs", "testing.rs"];
     let files = entry_files("friction", &machinery);
     let rows: BTreeSet<String> =
         gearloss::friction::catalog::LAWS.iter().map(|l| format!("{}.rs", l.id.name())).collect();

@@ -2,7 +2,7 @@
 //! (`model = six_dof`) and the report prints, its file and a one-line title.
 
 use super::gear_dynamics::{GearDynamics, ModelInputs};
-pub use super::model_id::DynamicModelId;
+pub(crate) use super::model_id::DynamicModelId;
 use super::{sdof, six_dof};
 use crate::dynamics::DynamicFormulation;
 
@@ -70,6 +70,6 @@ pub const MODELS: &[DynamicModelEntry] = &[
 ];
 
 /// The entry a scene names, if any.
-pub fn entry(name: &str) -> Option<&'static DynamicModelEntry> {
+pub(crate) fn entry(name: &str) -> Option<&'static DynamicModelEntry> {
     MODELS.iter().find(|m| m.name == name)
 }

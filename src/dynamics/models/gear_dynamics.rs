@@ -55,7 +55,7 @@ use crate::dynamics::numerics::Study;
 use crate::dynamics::sdof::SdofSystem;
 use crate::dynamics::six_dof::Bearing;
 
-pub use super::model_id::DynamicModelId;
+pub(crate) use super::model_id::DynamicModelId;
 
 /// What a model's constructor is given beyond the mesh.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -15,14 +15,14 @@ use crate::dynamics::{Floquet, PeriodicModel, SdofSystem};
 
 /// The 6-DOF model: the gears' masses [pinion, wheel] (kg) and bearings.
 #[derive(Debug, Clone, Copy)]
-pub struct SixDof {
+pub(crate) struct SixDof {
     pub mass: [f64; 2],
     pub bearings: [Bearing; 2],
 }
 
 /// The catalogue's constructor: `None` without both masses and the bearings (lowering names the
 /// missing key of a scene that asks for dynamics).
-pub fn build(inputs: &ModelInputs) -> Option<Box<dyn GearDynamics>> {
+pub(crate) fn build(inputs: &ModelInputs) -> Option<Box<dyn GearDynamics>> {
     let [Some(pinion), Some(wheel)] = inputs.mass else { return None };
     Some(Box::new(SixDof { mass: [pinion, wheel], bearings: inputs.bearings? }))
 }

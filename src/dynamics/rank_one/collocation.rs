@@ -13,14 +13,14 @@ use crate::numerics::dense::Augmented;
 
 /// The degrees a piece may have (each with twice the degree in [`crate::numerics::chebyshev::DEGREES`]
 /// for its quadrature).
-pub const PIECE_DEGREES: [usize; 4] = [8, 16, 24, 32];
+pub(crate) const PIECE_DEGREES: [usize; 4] = [8, 16, 24, 32];
 /// The largest phase ω_max h (rad) over a piece of each degree of [`PIECE_DEGREES`] at which the
 /// polynomial through the nodes reproduces cos(w s + θ) on [0, 1] to 1e-13 (measured, and tested
 /// below): N oscillates with the modes, up to ω_max.
-pub const MAX_PHASE: [f64; 4] = [0.5, 4.5, 11.5, 20.5];
+pub(crate) const MAX_PHASE: [f64; 4] = [0.5, 4.5, 11.5, 20.5];
 /// The degree of a full piece: the cost of a piece grows as its degree cubed (the dense solve) and
 /// the pieces needed as 1 / [`MAX_PHASE`]; 24 is the cheapest measured.
-pub const PIECE_DEGREE: usize = 24;
+pub(crate) const PIECE_DEGREE: usize = 24;
 
 /// The equal pieces of a propagation: their starts and their common nodes.
 struct PiecePlan<const N: usize> {

@@ -110,7 +110,7 @@ fn with_between(fine: &DMatrix<f64>, cheb: &Lobatto) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dynamics::rank_one::{MAX_PHASE, PIECE_DEGREE, PIECE_DEGREES};
+    use crate::dynamics::rank_one::collocation::{MAX_PHASE, PIECE_DEGREE, PIECE_DEGREES};
 
     /// The polynomial through cos(w s + θ) at the nodes of each degree of [`PIECE_DEGREES`]
     /// reproduces it at the nodes between to 1e-13 for w up to the degree's [`MAX_PHASE`]: the

@@ -9,7 +9,7 @@ use crate::numerics::chebyshev::{clenshaw, clenshaw_many, Lobatto};
 use crate::numerics::dense::eigen;
 
 /// The largest condition number ‖V‖ ‖V⁻¹‖ (Frobenius) of A0's eigenvectors accepted.
-pub const MAX_CONDITION: f64 = 1e6;
+pub(crate) const MAX_CONDITION: f64 = 1e6;
 /// How closely (relative to ‖A0‖, scaled) the interpolant of w must reproduce the model between
 /// its nodes to stand in for it.
 pub(super) const INTERPOLATION_TOLERANCE: f64 = 1e-13;

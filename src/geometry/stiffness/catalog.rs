@@ -75,7 +75,7 @@ pub const MODELS: &[StiffnessEntry] = &[
 ];
 
 /// The models a scene names by keyword (computed from the geometry alone).
-pub fn named_models() -> impl Iterator<Item = &'static StiffnessEntry> {
+pub(crate) fn named_models() -> impl Iterator<Item = &'static StiffnessEntry> {
     MODELS.iter().filter(|m| m.from_geometry.is_some())
 }
 

@@ -17,7 +17,7 @@ use crate::geometry::teeth::pair_stiffness::Bodies;
 /// The ISO estimate for the pair `g` with the gear bodies `bodies` (their moduli and root
 /// diameters, given or the basic rack's): rectangular (spur) or a stiffness density (helical).
 /// The catalogue's constructor.
-pub fn build(g: &PairGeometry, bodies: &Bodies) -> StiffnessModel {
+pub(crate) fn build(g: &PairGeometry, bodies: &Bodies) -> StiffnessModel {
     let iso = method_b(g, bodies);
     // N/(mm·µm) = 1e9 N/m².
     if g.is_helical() {
@@ -30,6 +30,6 @@ pub fn build(g: &PairGeometry, bodies: &Bodies) -> StiffnessModel {
 
 /// ISO 6336-1 Method B for the pair `g` with the gear bodies' moduli and root radii (given, or the
 /// basic rack's): the figures this model is built from, with their readings.
-pub fn method_b(g: &PairGeometry, bodies: &Bodies) -> IsoStiffness {
+pub(crate) fn method_b(g: &PairGeometry, bodies: &Bodies) -> IsoStiffness {
     iso_6336_method_b(g, bodies.young, [0, 1].map(|i| bodies.radii(g, i).0))
 }

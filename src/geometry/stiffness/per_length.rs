@@ -8,14 +8,14 @@ use crate::geometry::pair::PairGeometry;
 
 /// A stiffness density and the pair's cos²β_b (1 for a spur pair).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PerLength {
+pub(crate) struct PerLength {
     pub density: f64,
     pub cos2_base_helix: f64,
 }
 
 impl PerLength {
     /// The density k (N/m²) on the pair `g`.
-    pub fn on(density: f64, g: &PairGeometry) -> Self {
+    pub(crate) fn on(density: f64, g: &PairGeometry) -> Self {
         let c = if g.is_helical() { g.base_helix_angle.cos().powi(2) } else { 1.0 };
         PerLength { density, cos2_base_helix: c }
     }

@@ -12,11 +12,11 @@ use crate::geometry::teeth::pair_stiffness::{Bodies, PairStiffness};
 
 /// The pair's potential-energy stiffness over the mesh cycle.
 #[derive(Debug, Clone)]
-pub struct PotentialEnergy(pub PairStiffness);
+pub(crate) struct PotentialEnergy(pub PairStiffness);
 
 /// The model for the pair `g` with its bodies (lowering has checked that the teeth can be cut and
 /// mesh without interference, `check_teeth`).
-pub fn build(g: &PairGeometry, bodies: &Bodies) -> StiffnessModel {
+pub(crate) fn build(g: &PairGeometry, bodies: &Bodies) -> StiffnessModel {
     let pair = PairStiffness::new(g, bodies).expect("lowering checks the teeth before the stiffness is built");
     StiffnessModel::new(PotentialEnergy(pair))
 }

@@ -8,7 +8,7 @@ use crate::geometry::pair::PairGeometry;
 
 /// k at n equally spaced times over one cycle (N/m).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Table(pub Vec<f64>);
+pub(crate) struct Table(pub Vec<f64>);
 
 impl MeshStiffness for Table {
     fn id(&self) -> StiffnessId {

@@ -4,9 +4,9 @@
 //! static transmission error.
 
 pub mod compliance;
-pub mod compliance_series;
+pub(crate) mod compliance_series;
 pub mod iso_6336_method_b;
 pub mod load_sharing;
-pub mod outline;
+pub(crate) mod outline;
 pub mod pair_stiffness;
 pub mod transmission_error;

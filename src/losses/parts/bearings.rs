@@ -1,5 +1,5 @@
 //! The rolling bearings' loss P_VL as a part of the budget, bearing place by bearing place with the
-//! loads each carries (the moments are [`crate::losses::bearings`] and
+//! loads each carries (the moments are `crate::losses::bearings` and
 //! [`crate::losses::skf_bearing`]).
 //!
 //! Bearing loads come from the mesh force at the gear's mid-plane: the transverse force

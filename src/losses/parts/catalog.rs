@@ -56,7 +56,7 @@ pub const PARTS: &[LossPartEntry] = &[
 ];
 
 /// The columns a gearbox fills, in order.
-pub fn columns_of(gearbox: &Gearbox) -> Vec<LossColumn> {
+pub(crate) fn columns_of(gearbox: &Gearbox) -> Vec<LossColumn> {
     let mut out: Vec<LossColumn> =
         PARTS.iter().filter(|p| (p.of)(gearbox).is_some()).flat_map(|p| p.columns.iter().copied()).collect();
     out.sort();

@@ -10,10 +10,10 @@ use crate::losses::gearbox::Gearbox;
 use crate::losses::oil::Oil;
 
 /// The scene's lubrication.
-pub struct GearNoLoad<'a>(pub &'a Lubrication);
+pub(crate) struct GearNoLoad<'a>(pub &'a Lubrication);
 
 /// The part of `gearbox`, when it says how the gears are lubricated.
-pub fn of(gearbox: &Gearbox) -> Option<Box<dyn LossPart + '_>> {
+pub(crate) fn of(gearbox: &Gearbox) -> Option<Box<dyn LossPart + '_>> {
     gearbox.lubrication.as_ref().map(|l| Box::new(GearNoLoad(l)) as Box<dyn LossPart>)
 }
 

@@ -3,15 +3,15 @@
 //! ([`LossColumn`], one row of [`loss_column::COLUMNS`] each). The budget, the record files, the
 //! report and the plots iterate the catalogue, so a new loss model adds rows, not fields.
 //!
-//! Today: the gears without load (churning, or jet impulse and windage: [`gear_no_load`]), the
+//! Today: the gears without load (churning, or jet impulse and windage: `gear_no_load`), the
 //! rolling bearings with the loads they carry ([`bearings`]) and the shaft seals ([`seals`]).
 
 pub mod bearings;
-pub mod catalog;
-pub mod gear_no_load;
-pub mod loss_column;
-pub mod loss_part;
-pub mod part_id;
+pub(crate) mod catalog;
+pub(crate) mod gear_no_load;
+pub(crate) mod loss_column;
+pub(crate) mod loss_part;
+pub(crate) mod part_id;
 pub mod seals;
 
 pub use catalog::{LossPartEntry, LossPartId, PARTS};

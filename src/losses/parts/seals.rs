@@ -1,5 +1,5 @@
 //! The shaft seals' loss P_VD as a part of the budget (ISO/TR 14179-2:2001 after Linke; the model
-//! is [`crate::losses::seals`]): every seal of both shafts at its shaft's speed.
+//! is `crate::losses::seals`): every seal of both shafts at its shaft's speed.
 
 use super::loss_column::LossColumn;
 use super::loss_part::{LossPart, PartLosses, PartState};

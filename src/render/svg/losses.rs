@@ -144,6 +144,38 @@ fn draw_field(
     let (w, h) = area.dim_in_pixel();
     let cell_px = ((w as f64 - 170.0) / (ns - 1).max(1) as f64).min((h as f64 - 90.0) / (nt - 1).max(1) as f64);
     let sub = (cell_px / 3.0).floor().clamp(1.0, 4.0) as usize;
+    let cells = band_rectangles(f, &lv, sub)
+        .into_iter()
+        .map(|(corners, b)| Rectangle::new(corners, colour(b as f64 / lv.len().max(1) as f64).filled()));
+    chart.draw_series(cells).map_err(e)?;
+    for l in &lv {
+        let lines = iso_lines(f, *l);
+        chart.draw_series(lines.iter().map(|p| PathElement::new(p.clone(), BLACK.stroke_width(1)))).map_err(e)?;
+        if let Some(p) = lines.iter().max_by_key(|p| p.len()) {
+            let label = crate::render::table::sig(*l);
+            chart
+                .draw_series(std::iter::once(Text::new(
+                    label,
+                    p[p.len() / 2],
+                    ("sans-serif", 11).into_font().color(&BLACK),
+                )))
+                .map_err(e)?;
+        }
+    }
+    // The located best point (report.md gives its value), marked where its panel shows it.
+    if let Some(p) = best {
+        chart.draw_series(std::iter::once(Circle::new(p, 5, WHITE.filled()))).map_err(e)?;
+        chart.draw_series(std::iter::once(Circle::new(p, 5, BLACK.stroke_width(2)))).map_err(e)?;
+    }
+    colour_bar(area, &lv)
+}
+
+/// The filled bands of a field: each grid cell split `sub` × `sub`, each sub-cell in the band of
+/// its bilinear centre value; along each row of sub-cells, neighbours in the same band make one
+/// rectangle, and a run the next row repeats exactly grows downward instead of starting its own.
+/// Returns (corners in speed × torque, band) in drawing order.
+fn band_rectangles(f: &Field, lv: &[f64], sub: usize) -> Vec<([(f64, f64); 2], usize)> {
+    let (ns, nt) = (f.speeds.len(), f.torques.len());
     let band = |v: f64| lv.iter().filter(|l| v >= **l).count();
     let x_at = |k: usize| {
         let (s, i) = (k / sub, k % sub);
@@ -153,14 +185,12 @@ fn draw_field(
             f.speeds[s] + i as f64 / sub as f64 * (f.speeds[s + 1] - f.speeds[s])
         }
     };
-    // Runs (first sub-column, end sub-column, band) of each row of sub-cells; a run the next row
-    // repeats exactly grows downward instead of starting a rectangle of its own.
+    // Runs (first sub-column, end sub-column, band) of each row of sub-cells, open downward.
     let mut open: Vec<((usize, usize, usize), f64, f64)> = Vec::new();
     let mut cells = Vec::new();
     let flush = |run: &((usize, usize, usize), f64, f64), cells: &mut Vec<_>| {
         let ((k0, k1, b), y0, y1) = *run;
-        let fill = colour(b as f64 / lv.len().max(1) as f64).filled();
-        cells.push(Rectangle::new([(x_at(k0), y0), (x_at(k1), y1)], fill));
+        cells.push(([(x_at(k0), y0), (x_at(k1), y1)], b));
     };
     for t in 0..nt - 1 {
         for j in 0..sub {
@@ -196,27 +226,7 @@ fn draw_field(
         }
     }
     open.iter().for_each(|o| flush(o, &mut cells));
-    chart.draw_series(cells).map_err(e)?;
-    for l in &lv {
-        let lines = iso_lines(f, *l);
-        chart.draw_series(lines.iter().map(|p| PathElement::new(p.clone(), BLACK.stroke_width(1)))).map_err(e)?;
-        if let Some(p) = lines.iter().max_by_key(|p| p.len()) {
-            let label = crate::render::table::sig(*l);
-            chart
-                .draw_series(std::iter::once(Text::new(
-                    label,
-                    p[p.len() / 2],
-                    ("sans-serif", 11).into_font().color(&BLACK),
-                )))
-                .map_err(e)?;
-        }
-    }
-    // The located best point (report.md gives its value), marked where its panel shows it.
-    if let Some(p) = best {
-        chart.draw_series(std::iter::once(Circle::new(p, 5, WHITE.filled()))).map_err(e)?;
-        chart.draw_series(std::iter::once(Circle::new(p, 5, BLACK.stroke_width(2)))).map_err(e)?;
-    }
-    colour_bar(area, &lv)
+    cells
 }
 
 /// The bands' colour bar at the right of a map panel: one box per band, bottom (lowest) to top,

@@ -111,7 +111,7 @@ pub struct Panel {
     pub bands: Vec<(f64, f64, String)>,
     /// Values with |y| above this are drawn at the limit and marked with ▲/▼.
     pub clip: Option<f64>,
-    /// How to draw more than [`MAX_LABELLED`] curves of `series` (None: a palette and a legend entry each).
+    /// How to draw more than `MAX_LABELLED` curves of `series` (None: a palette and a legend entry each).
     pub shading: Option<Shading>,
 }
 
@@ -191,6 +191,35 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(e)?;
+    draw_bands_and_marks(&mut chart, panel, y0, y1)?;
+    let shaded = panel.shaded();
+    for (i, (_, pts)) in all.iter().enumerate() {
+        let color = match shaded {
+            Some(sh) if i < panel.series.len() => sh.colour(i),
+            _ => categorical(i, all.len() + panel.points.len()),
+        };
+        // Shaded curves carry their group's marker.
+        let group = shaded.filter(|_| i < panel.series.len()).map(|sh| sh.group.get(i).copied().unwrap_or(0));
+        draw_curve(&mut chart, pts, color, group, &clip)?;
+    }
+    for (i, (_, pts)) in panel.points.iter().enumerate() {
+        let color = categorical(all.len() + i, all.len() + panel.points.len());
+        let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+        chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
+    }
+    Ok(())
+}
+
+/// A chart of one panel: f64 on both axes, drawn as SVG.
+type Chart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// The shaded x bands (a law's regimes) with their labels, and the vertical marks (A B P D E).
+fn draw_bands_and_marks(chart: &mut Chart, panel: &Panel, y0: f64, y1: f64) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     for (i, (a, b, label)) in panel.bands.iter().enumerate() {
         let shade = PALETTE[(i + 5) % PALETTE.len()].mix(0.10);
         chart.draw_series(std::iter::once(Rectangle::new([(*a, y0), (*b, y1)], shade.filled()))).map_err(e)?;
@@ -212,64 +241,62 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
             )))
             .map_err(e)?;
     }
-    let shaded = panel.shaded();
-    for (i, (_, pts)) in all.iter().enumerate() {
-        let color = match shaded {
-            Some(sh) if i < panel.series.len() => sh.colour(i),
-            _ => categorical(i, all.len() + panel.points.len()),
-        };
-        // Split at non-finite values so that gaps stay gaps.
-        let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-        let mut clipped = Vec::new();
-        for &(x, y) in pts {
-            if y.is_finite() && x.is_finite() {
-                let c = clip(y);
-                if c != y {
-                    clipped.push((x, c));
-                }
-                runs.last_mut().expect("one run").push((x, c));
-            } else if !runs.last().expect("one run").is_empty() {
-                runs.push(Vec::new());
+    Ok(())
+}
+
+/// One curve: split at non-finite values so that gaps stay gaps, values beyond the panel's clip
+/// drawn at the clip and the first of them marked, markers at every point of a short curve (and,
+/// for a curve of a shaded `group`, its group's marker at every tenth point of a long one).
+fn draw_curve(
+    chart: &mut Chart,
+    pts: &[(f64, f64)],
+    color: RGBColor,
+    group: Option<usize>,
+    clip: &dyn Fn(f64) -> f64,
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+    let mut clipped = Vec::new();
+    for &(x, y) in pts {
+        if y.is_finite() && x.is_finite() {
+            let c = clip(y);
+            if c != y {
+                clipped.push((x, c));
             }
-        }
-        // A sweep of few points gets a marker at each point (the line alone hides where they are).
-        let few = pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()).count() < MARKERS_BELOW;
-        for run in runs.into_iter().filter(|r| !r.is_empty()) {
-            match shaded.filter(|_| i < panel.series.len()) {
-                // Shaded curves carry their group's marker (every tenth point of a long curve).
-                Some(sh) => {
-                    let g = sh.group.get(i).copied().unwrap_or(0);
-                    let step = if few { 1 } else { (run.len() / 10).max(1) };
-                    let at: Vec<(f64, f64)> = run.iter().step_by(step).copied().collect();
-                    match g % 4 {
-                        0 => chart.draw_series(at.iter().map(|p| Circle::new(*p, 3, color.filled()))),
-                        1 => chart.draw_series(at.iter().map(|p| TriangleMarker::new(*p, 4, color.filled()))),
-                        2 => chart.draw_series(
-                            at.iter()
-                                .map(|p| EmptyElement::at(*p) + Rectangle::new([(-3, -3), (3, 3)], color.filled())),
-                        ),
-                        _ => chart.draw_series(at.iter().map(|p| Cross::new(*p, 4, color.stroke_width(2)))),
-                    }
-                    .map_err(e)?;
-                }
-                None if few => {
-                    chart.draw_series(run.iter().map(|p| Circle::new(*p, 3, color.filled()))).map_err(e)?;
-                }
-                None => {}
-            }
-            chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
-        }
-        if let Some(&(cx, cy)) = clipped.iter().min_by(|a, b| a.0.total_cmp(&b.0)) {
-            let mark = if cy > 0.0 { "▲ clipped" } else { "▼ clipped" };
-            chart
-                .draw_series(std::iter::once(Text::new(mark, (cx, cy), ("sans-serif", 11).into_font().color(&color))))
-                .map_err(e)?;
+            runs.last_mut().expect("one run").push((x, c));
+        } else if !runs.last().expect("one run").is_empty() {
+            runs.push(Vec::new());
         }
     }
-    for (i, (_, pts)) in panel.points.iter().enumerate() {
-        let color = categorical(all.len() + i, all.len() + panel.points.len());
-        let finite: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
-        chart.draw_series(finite.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?;
+    // A sweep of few points gets a marker at each point (the line alone hides where they are).
+    let few = pts.iter().filter(|p| p.0.is_finite() && p.1.is_finite()).count() < MARKERS_BELOW;
+    for run in runs.into_iter().filter(|r| !r.is_empty()) {
+        match group {
+            Some(g) => {
+                let step = if few { 1 } else { (run.len() / 10).max(1) };
+                let at: Vec<(f64, f64)> = run.iter().step_by(step).copied().collect();
+                match g % 4 {
+                    0 => chart.draw_series(at.iter().map(|p| Circle::new(*p, 3, color.filled()))),
+                    1 => chart.draw_series(at.iter().map(|p| TriangleMarker::new(*p, 4, color.filled()))),
+                    2 => chart.draw_series(
+                        at.iter().map(|p| EmptyElement::at(*p) + Rectangle::new([(-3, -3), (3, 3)], color.filled())),
+                    ),
+                    _ => chart.draw_series(at.iter().map(|p| Cross::new(*p, 4, color.stroke_width(2)))),
+                }
+                .map_err(e)?;
+            }
+            None if few => {
+                chart.draw_series(run.iter().map(|p| Circle::new(*p, 3, color.filled()))).map_err(e)?;
+            }
+            None => {}
+        }
+        chart.draw_series(LineSeries::new(run, color.stroke_width(2))).map_err(e)?;
+    }
+    if let Some(&(cx, cy)) = clipped.iter().min_by(|a, b| a.0.total_cmp(&b.0)) {
+        let mark = if cy > 0.0 { "▲ clipped" } else { "▼ clipped" };
+        chart
+            .draw_series(std::iter::once(Text::new(mark, (cx, cy), ("sans-serif", 11).into_font().color(&color))))
+            .map_err(e)?;
     }
     Ok(())
 }
