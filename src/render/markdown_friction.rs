@@ -16,6 +16,19 @@ pub(crate) fn point(out: &mut String, op: &OperatingPointReport, helical: bool, 
     if op.friction.is_empty() {
         return;
     }
+    mu_table(out, op, u);
+    efficiency_table(out, op, u);
+    md!(out);
+    if helical && first {
+        md!(out, "{HELICAL_NOTE}\n");
+    }
+    if let Some(plot) = &op.plot {
+        md!(out, "![μ, local power loss and η over one mesh cycle]({plot})\n");
+    }
+}
+
+/// μ of every law at the contact table's positions (regimes named for the composite law).
+fn mu_table(out: &mut String, op: &OperatingPointReport, u: Units) {
     md!(out, "Signed coefficient of friction along the line of action (negative in approach):\n");
     let mut cols = vec!["point".to_string(), u.length().heading("T1C")];
     cols.extend(op.friction.iter().map(|l| format!("`{}`", l.label)));
@@ -36,6 +49,10 @@ pub(crate) fn point(out: &mut String, op: &OperatingPointReport, helical: bool, 
         row(out, &cells);
     }
     md!(out);
+}
+
+/// Per law and formulation: mean |μ|, validity, η̄ with its error, the loss, η's range, 1 − μ̄ H_V.
+fn efficiency_table(out: &mut String, op: &OperatingPointReport, u: Units) {
     let p_loss = u.power().heading("P_loss");
     header(
         out,
@@ -88,13 +105,6 @@ pub(crate) fn point(out: &mut String, op: &OperatingPointReport, helical: bool, 
                 ],
             );
         }
-    }
-    md!(out);
-    if helical && first {
-        md!(out, "{HELICAL_NOTE}\n");
-    }
-    if let Some(plot) = &op.plot {
-        md!(out, "![μ, local power loss and η over one mesh cycle]({plot})\n");
     }
 }
 

@@ -171,7 +171,37 @@ pub(crate) fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEval
             }
         })
         .collect();
-    let stability_map = d.stability_map.as_ref().map(|rows| {
+    let stability_map = stability_map_report(scene, d);
+    let numerics = numerics_report(d);
+    DynamicsReport {
+        model: d.model.into(),
+        description: d.description.into(),
+        stiffness_step_ratio: match shape {
+            StiffnessShape::Pairs { single, double, .. } => Some(double / single),
+            StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } | StiffnessShape::Computed { .. } => None,
+        },
+        stiffness_source: d.stiffness_source.into(),
+        stiffness,
+        iso_6336: d.iso_6336.as_ref().map(super::teeth::IsoReport::from),
+        damping_ratio: Num(d.damping_ratio),
+        equivalent_mass: Q::new(d.equivalent_mass, "kg"),
+        damping: Q::new(d.damping, "N*s/m"),
+        mean_stiffness: Q::new(d.mean_stiffness, "N/m"),
+        natural_frequency: Q::new(d.natural_frequency, "Hz"),
+        natural_frequencies: d.natural_frequencies.iter().map(|f| Q::new(*f, "Hz")).collect(),
+        stiffness_ratio: d.stiffness_ratio.map(Num),
+        friction: scene.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
+        friction_diverges_at_pitch: d.friction_diverges_at_pitch,
+        points,
+        stability_map,
+        numerics,
+        curves,
+    }
+}
+
+/// The stability map over speed at the first torque: ρ and K_v per formulation, the unstable ranges.
+fn stability_map_report(scene: &Scene, d: &DynamicsEvaluation) -> Option<StabilityMapReport> {
+    d.stability_map.as_ref().map(|rows| {
         let unstable_ranges = d
             .unstable_ranges
             .iter()
@@ -199,8 +229,12 @@ pub(crate) fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEval
                 })
                 .collect(),
         }
-    });
-    let numerics = d.numerics.as_ref().map(|(f, _, study)| NumericsReport {
+    })
+}
+
+/// The numerics study: each integrator's error and work at each tolerance.
+fn numerics_report(d: &DynamicsEvaluation) -> Option<NumericsReport> {
+    d.numerics.as_ref().map(|(f, _, study)| NumericsReport {
         formulation: *f,
         reference: study.reference,
         periods: study.periods,
@@ -218,31 +252,7 @@ pub(crate) fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEval
                 failure: r.failure.clone(),
             })
             .collect(),
-    });
-    DynamicsReport {
-        model: d.model.into(),
-        description: d.description.into(),
-        stiffness_step_ratio: match shape {
-            StiffnessShape::Pairs { single, double, .. } => Some(double / single),
-            StiffnessShape::Table(_) | StiffnessShape::PerLength { .. } | StiffnessShape::Computed { .. } => None,
-        },
-        stiffness_source: d.stiffness_source.into(),
-        stiffness,
-        iso_6336: d.iso_6336.as_ref().map(super::teeth::IsoReport::from),
-        damping_ratio: Num(d.damping_ratio),
-        equivalent_mass: Q::new(d.equivalent_mass, "kg"),
-        damping: Q::new(d.damping, "N*s/m"),
-        mean_stiffness: Q::new(d.mean_stiffness, "N/m"),
-        natural_frequency: Q::new(d.natural_frequency, "Hz"),
-        natural_frequencies: d.natural_frequencies.iter().map(|f| Q::new(*f, "Hz")).collect(),
-        stiffness_ratio: d.stiffness_ratio.map(Num),
-        friction: scene.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
-        friction_diverges_at_pitch: d.friction_diverges_at_pitch,
-        points,
-        stability_map,
-        numerics,
-        curves,
-    }
+    })
 }
 
 /// The curves of picked point `k` (0-based): DTE, bearing forces, friction force, spectrum and pair

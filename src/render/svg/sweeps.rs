@@ -43,37 +43,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     }
     columns.sort_by(|a, b| a.1.total_cmp(&b.1));
     let xs: Vec<f64> = columns.iter().map(|c| c.1).collect();
-    let mut labels: Vec<String> = Vec::new();
-    // Per curve: its group (law and formulation) and the other variable's value, for the colour
-    // scale when there are too many curves to label one by one.
-    let mut shading = Shading {
-        value_label: if by_speed {
-            format!("pinion torque ({})", r.torque_unit.shown())
-        } else {
-            format!("pinion speed ({})", r.speed_unit.name)
-        },
-        ..Default::default()
-    };
-    for rec in &records {
-        let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
-        if !labels.contains(&l) {
-            labels.push(l);
-            let group = format!("{} {}", rec.label, crate::report::formulation_name(rec.formulation));
-            let g = match shading.group_labels.iter().position(|x| *x == group) {
-                Some(g) => g,
-                None => {
-                    shading.group_labels.push(group);
-                    shading.group_labels.len() - 1
-                }
-            };
-            shading.group.push(g);
-            shading.value.push(if by_speed {
-                r.torque_unit.value(&rec.pinion_torque)
-            } else {
-                r.speed_unit.value(&rec.pinion_speed)
-            });
-        }
-    }
+    let (labels, shading) = curves(r, &records, by_speed, &other);
     let mut eta: Vec<(String, Vec<f64>)> = labels.iter().map(|l| (l.clone(), vec![f64::NAN; xs.len()])).collect();
     let mut loss = eta.clone();
     let power = r.units().power();
@@ -109,6 +79,47 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
     ];
     let what = if by_speed { "speed" } else { "torque" };
     figure(&format!("{}: mean efficiency and power loss against {what}", r.title), &panels)
+}
+
+/// The sweep plot's curves: one per law, formulation and value of the other variable, labelled
+/// in order of first appearance, with their group (law and formulation) and the other variable's
+/// value for the colour scale when there are too many curves to label one by one.
+fn curves(
+    r: &Report,
+    records: &[&crate::report::friction::EfficiencyRecord],
+    by_speed: bool,
+    other: &dyn Fn(&crate::report::friction::EfficiencyRecord) -> String,
+) -> (Vec<String>, Shading) {
+    let mut labels: Vec<String> = Vec::new();
+    let mut shading = Shading {
+        value_label: if by_speed {
+            format!("pinion torque ({})", r.torque_unit.shown())
+        } else {
+            format!("pinion speed ({})", r.speed_unit.name)
+        },
+        ..Default::default()
+    };
+    for rec in records {
+        let l = format!("{} {} @ {}", rec.label, crate::report::formulation_name(rec.formulation), other(rec));
+        if !labels.contains(&l) {
+            labels.push(l);
+            let group = format!("{} {}", rec.label, crate::report::formulation_name(rec.formulation));
+            let g = match shading.group_labels.iter().position(|x| *x == group) {
+                Some(g) => g,
+                None => {
+                    shading.group_labels.push(group);
+                    shading.group_labels.len() - 1
+                }
+            };
+            shading.group.push(g);
+            shading.value.push(if by_speed {
+                r.torque_unit.value(&rec.pinion_torque)
+            } else {
+                r.speed_unit.value(&rec.pinion_speed)
+            });
+        }
+    }
+    (labels, shading)
 }
 
 /// composite_mu_vs_speed.svg: mean |μ| of the composite law against speed, per torque (He–Cho–Singh Fig. 2b).
