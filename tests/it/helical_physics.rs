@@ -227,6 +227,15 @@ fn external_mean_equals_an_independent_double_integral() {
     assert!((eta - independent).abs() < 1e-9, "{eta} vs {independent}");
 }
 
+/// E' of a scene's two materials.
+fn scene_modulus(scene: &gearloss::Scene) -> f64 {
+    let (p, w) = (&scene.gears.pinion.material, &scene.gears.wheel.material);
+    reduced_modulus(
+        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
+        [p.poisson_ratio.value, w.poisson_ratio.value],
+    )
+}
+
 /// Issue 46: a helical pair's contact table is the efficiency's own contact model. At every row of
 /// every operating point of specs/metric_helical.gear, the table's w, p_H and b_H equal the state
 /// the laws read ([`LawContext::contact_at`]: the mean load per unit line length F_bn / L̄, built
@@ -239,11 +248,7 @@ fn helical_contact_table_is_the_efficiency_contact_model() {
     let scene = crate::scene(&crate::root().join("specs/metric_helical.gear"));
     let report = gearloss::report_of(&scene);
     let g = scene.gears.geometry().unwrap();
-    let (p, w) = (&scene.gears.pinion.material, &scene.gears.wheel.material);
-    let e_r = reduced_modulus(
-        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
-        [p.poisson_ratio.value, w.poisson_ratio.value],
-    );
+    let e_r = scene_modulus(&scene);
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1e-300);
     let l_bar = g.mean_contact_length();
     assert!(!report.operating_points.is_empty());
@@ -276,11 +281,7 @@ fn iso_total_of_a_helical_pair_is_the_standards_own() {
     let scene = crate::scene(&crate::root().join("specs/helical_gearbox.gear"));
     let report = gearloss::report_of(&scene);
     let g = scene.gears.geometry().unwrap();
-    let (p, w) = (&scene.gears.pinion.material, &scene.gears.wheel.material);
-    let e_r = reduced_modulus(
-        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
-        [p.poisson_ratio.value, w.poisson_ratio.value],
-    );
+    let e_r = scene_modulus(&scene);
     assert!(!report.efficiency.is_empty());
     for e in &report.efficiency {
         assert_eq!(e.law, gearloss::friction::LawId::Iso14179_2);
