@@ -348,7 +348,7 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
             }
             "transmission_error" => a.transmission_error = super::lower_teeth::lower_transmission_error(call, errors),
             "stability_map" => {
-                a.stability_map = super::lower_dynamics::lower_stability_map(call, errors);
+                a.stability_map = super::lower_dynamics_blocks::lower_stability_map(call, errors);
                 a.dynamics_span = Some(call.span);
             }
             other => {

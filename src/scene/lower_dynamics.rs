@@ -11,8 +11,7 @@ use crate::dynamics::models::catalog::{entry, MODELS};
 use crate::dynamics::DynamicFormulation;
 use crate::geometry::stiffness::catalog::named_models;
 use crate::geometry::stiffness::StiffnessId;
-use crate::model::{AngularVelocity, DynamicModel, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec, Sweep};
-use crate::scene::units::SiQuantity;
+use crate::model::{DynamicModel, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec};
 
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
@@ -317,39 +316,6 @@ fn stiffness(f: &Fields, base_dir: Option<&Path>, errors: &mut Vec<Diagnostic>) 
             None
         }
     }
-}
-
-/// `stability_map(pinion_speed = 1000..60000 rpm step 100)`.
-pub(crate) fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Sweep<AngularVelocity>> {
-    let mut out = None;
-    for (name, value) in &call.arguments {
-        if name.text != "pinion_speed" {
-            errors.push(unknown_name("argument of `stability_map`", name, &["pinion_speed"]));
-            continue;
-        }
-        let (si, unit, written, factor) = sweep_values("pinion_speed", value, Dimension::ANGULAR_VELOCITY, errors)?;
-        if si.iter().any(|x| *x <= 0.0) {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::OutOfRange, value.span, "stability map speeds must be positive")
-                    .hint("write e.g. `1000..60000 rpm step 100`"),
-            );
-            return None;
-        }
-        out = Some(Sweep {
-            values: si.into_iter().map(AngularVelocity::from_si).collect(),
-            unit,
-            factor,
-            written_values: written,
-            span: value.span,
-        });
-    }
-    if out.is_none() {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::MissingKey, call.span, "`stability_map` needs `pinion_speed`")
-                .hint("write `stability_map(pinion_speed = 1000..60000 rpm step 100)`"),
-        );
-    }
-    out
 }
 
 /// Most natural periods per mesh period the dynamics are computed for. The work per mesh period

@@ -2,11 +2,12 @@
 //! and the static transmission error.
 
 use super::ast::*;
-use super::fields::{scalar, sweep_values, Fields};
+use super::fields::{scalar, sweep_values, unknown_name, Fields};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::dynamics::six_dof::Bearing;
-use crate::model::FreeResponseSpec;
+use crate::model::{AngularVelocity, FreeResponseSpec, Sweep};
+use crate::scene::units::SiQuantity;
 
 const STE_KEYS: &[&str] = &["amplitudes", "phases"];
 const BEARING_KEYS: &[&str] = &["loa", "oloa", "damping_ratio"];
@@ -115,4 +116,37 @@ pub(super) fn transmission_error(f: &Fields, errors: &mut Vec<Diagnostic>) -> Op
         }
     };
     Some(amps.into_iter().zip(phases).collect())
+}
+
+/// `stability_map(pinion_speed = 1000..60000 rpm step 100)`.
+pub(crate) fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Sweep<AngularVelocity>> {
+    let mut out = None;
+    for (name, value) in &call.arguments {
+        if name.text != "pinion_speed" {
+            errors.push(unknown_name("argument of `stability_map`", name, &["pinion_speed"]));
+            continue;
+        }
+        let (si, unit, written, factor) = sweep_values("pinion_speed", value, Dimension::ANGULAR_VELOCITY, errors)?;
+        if si.iter().any(|x| *x <= 0.0) {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, value.span, "stability map speeds must be positive")
+                    .hint("write e.g. `1000..60000 rpm step 100`"),
+            );
+            return None;
+        }
+        out = Some(Sweep {
+            values: si.into_iter().map(AngularVelocity::from_si).collect(),
+            unit,
+            factor,
+            written_values: written,
+            span: value.span,
+        });
+    }
+    if out.is_none() {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, call.span, "`stability_map` needs `pinion_speed`")
+                .hint("write `stability_map(pinion_speed = 1000..60000 rpm step 100)`"),
+        );
+    }
+    out
 }

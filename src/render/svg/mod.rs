@@ -3,6 +3,7 @@
 
 mod contact;
 mod contours;
+mod curve;
 mod dynamics;
 mod helical;
 mod losses;
