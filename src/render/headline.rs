@@ -50,11 +50,7 @@ pub(crate) fn efficiency(out: &mut String, r: &Report) {
     for e in &shown {
         // The mesh loss the total charges (ISO/TR 14179-2's own for iso_14179_2 on a helical pair).
         let mesh = e.budget_mesh_loss();
-        let eta = if e.budget_charges_iso_mesh_loss {
-            1.0 - mesh.si() / (e.pinion_torque.si() * e.pinion_speed.si())
-        } else {
-            e.mean_efficiency.0
-        };
+        let eta = e.budget_mesh_efficiency();
         let mut cells = vec![
             point_label(r, e),
             kw.cell(e.pinion_torque.si() * e.pinion_speed.si(), 3),

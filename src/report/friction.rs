@@ -119,6 +119,16 @@ impl EfficiencyRecord {
             _ => self.power_loss,
         }
     }
+
+    /// The mesh efficiency the budget's total rests on: 1 − [`Self::budget_mesh_loss`]/P_in where it
+    /// charges ISO/TR 14179-2's own, else the law's η̄.
+    pub fn budget_mesh_efficiency(&self) -> f64 {
+        if self.budget_charges_iso_mesh_loss {
+            1.0 - self.budget_mesh_loss().si() / (self.pinion_torque.si() * self.pinion_speed.si())
+        } else {
+            self.mean_efficiency.0
+        }
+    }
 }
 
 /// ISO/TR 14179-2's mesh loss beside the contact-line integral.

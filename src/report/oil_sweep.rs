@@ -58,6 +58,8 @@ pub(crate) struct OilSweepRow {
     pub formulation: Formulation,
     pub pinion_torque: Q,
     pub pinion_speed: Q,
+    /// The mesh efficiency and loss at each temperature, as the budget charges them (ISO/TR
+    /// 14179-2's own for `iso_14179_2` on a helical pair, else the law's line integral).
     pub mean_efficiency: Vec<Num>,
     pub power_loss: Vec<Q>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -92,8 +94,8 @@ pub(crate) fn build_oil_sweep(runs: &[(String, f64, Report)]) -> OilSweepReport 
                 formulation: e.formulation,
                 pinion_torque: e.pinion_torque,
                 pinion_speed: e.pinion_speed,
-                mean_efficiency: at.iter().map(|r| r.mean_efficiency).collect(),
-                power_loss: at.iter().map(|r| r.power_loss).collect(),
+                mean_efficiency: at.iter().map(|r| Num(r.budget_mesh_efficiency())).collect(),
+                power_loss: at.iter().map(|r| r.budget_mesh_loss()).collect(),
                 // Every run has the same gearbox: each record has its budget or none has.
                 total_loss: budget.then(|| at.iter().filter_map(|r| r.budget.as_ref().map(|b| b.total_loss)).collect()),
                 total_efficiency: budget
