@@ -3,6 +3,7 @@
 use super::markup::md;
 
 use super::table::{fixed, header, row, sig};
+use crate::report::units::Units;
 use crate::report::{PlotKind, Report, Severity};
 
 pub fn render_markdown(r: &Report) -> String {
@@ -63,7 +64,6 @@ fn contact_section(out: &mut String, r: &Report) {
         if helical { HELICAL_CONTACT } else { "" }
     );
     let u = r.units();
-    let (len, vel) = (u.length(), u.velocity());
     for op in &r.operating_points {
         md!(
             out,
@@ -75,58 +75,64 @@ fn contact_section(out: &mut String, r: &Report) {
             r.speed_unit.name,
             u.force().with(op.normal_load.si(), 1),
             fixed(op.mesh_period.si() * 1e3, 5),
-            vel.with(op.pitch_line_velocity.si(), 3)
+            u.velocity().with(op.pitch_line_velocity.si(), 3)
         );
-        let cols = [
-            "point".to_string(),
-            len.heading("T1C"),
-            len.heading("s"),
-            len.heading("ρ1"),
-            len.heading("ρ2"),
-            len.heading("R"),
-            vel.heading("v1"),
-            vel.heading("v2"),
-            vel.heading("v_s"),
-            vel.heading("v_Σ"),
-            "SR".into(),
-            "pairs".into(),
-            "share".into(),
-            u.force_per_width().heading("w"),
-            u.pressure().heading("p_H"),
-            u.micro().heading("b_H"),
-        ];
-        // A helical pair's contact is one line's point under the mean line load: no count of pairs.
-        let keep = |cells: Vec<String>| -> Vec<String> {
-            cells.into_iter().enumerate().filter(|(i, _)| !helical || *i != PAIRS_COLUMN).map(|(_, c)| c).collect()
-        };
-        header(out, &keep(cols.to_vec()));
-        for c in &op.contact {
-            row(
-                out,
-                &keep(vec![
-                    c.point.clone().unwrap_or_default(),
-                    len.q(&c.distance_from_t1, 3),
-                    len.q(&c.s, 3),
-                    len.q(&c.radius_of_curvature_pinion, 3),
-                    len.q(&c.radius_of_curvature_wheel, 3),
-                    len.q(&c.reduced_radius, 3),
-                    vel.q(&c.velocity_pinion, 3),
-                    vel.q(&c.velocity_wheel, 3),
-                    vel.q(&c.sliding_velocity, 3),
-                    vel.q(&c.sum_velocity, 3),
-                    fixed(c.slide_to_roll.0, 3),
-                    c.pairs_in_contact.to_string(),
-                    fixed(c.load_share.0, 3),
-                    u.force_per_width().q(&c.load_per_width, 1),
-                    u.pressure().q(&c.hertz_pressure, 1),
-                    u.micro().q(&c.hertz_half_width, 1),
-                ]),
-            );
-        }
-        md!(out);
+        contact_table(out, op, helical, u);
         // The helical note once, under the first operating point's efficiency table.
         super::markdown_friction::point(out, op, helical, op.index == r.operating_points[0].index, u);
     }
+}
+
+/// The contact state at the table's positions of one operating point.
+fn contact_table(out: &mut String, op: &crate::report::OperatingPointReport, helical: bool, u: Units) {
+    let (len, vel) = (u.length(), u.velocity());
+    let cols = [
+        "point".to_string(),
+        len.heading("T1C"),
+        len.heading("s"),
+        len.heading("ρ1"),
+        len.heading("ρ2"),
+        len.heading("R"),
+        vel.heading("v1"),
+        vel.heading("v2"),
+        vel.heading("v_s"),
+        vel.heading("v_Σ"),
+        "SR".into(),
+        "pairs".into(),
+        "share".into(),
+        u.force_per_width().heading("w"),
+        u.pressure().heading("p_H"),
+        u.micro().heading("b_H"),
+    ];
+    // A helical pair's contact is one line's point under the mean line load: no count of pairs.
+    let keep = |cells: Vec<String>| -> Vec<String> {
+        cells.into_iter().enumerate().filter(|(i, _)| !helical || *i != PAIRS_COLUMN).map(|(_, c)| c).collect()
+    };
+    header(out, &keep(cols.to_vec()));
+    for c in &op.contact {
+        row(
+            out,
+            &keep(vec![
+                c.point.clone().unwrap_or_default(),
+                len.q(&c.distance_from_t1, 3),
+                len.q(&c.s, 3),
+                len.q(&c.radius_of_curvature_pinion, 3),
+                len.q(&c.radius_of_curvature_wheel, 3),
+                len.q(&c.reduced_radius, 3),
+                vel.q(&c.velocity_pinion, 3),
+                vel.q(&c.velocity_wheel, 3),
+                vel.q(&c.sliding_velocity, 3),
+                vel.q(&c.sum_velocity, 3),
+                fixed(c.slide_to_roll.0, 3),
+                c.pairs_in_contact.to_string(),
+                fixed(c.load_share.0, 3),
+                u.force_per_width().q(&c.load_per_width, 1),
+                u.pressure().q(&c.hertz_pressure, 1),
+                u.micro().q(&c.hertz_half_width, 1),
+            ]),
+        );
+    }
+    md!(out);
 }
 
 /// The contact table's column of pairs in contact (left out for a helical pair).
