@@ -23,39 +23,8 @@ pub(crate) fn teeth_section(r: &Report) -> String {
         s.series_degree
     );
     let u = r.units();
-    let (len, micro) = (u.length(), u.micro());
-    let cols = [
-        "gear".to_string(),
-        len.heading("root d_f"),
-        len.heading("rack h_fP"),
-        len.heading("rack tip ρ_fP"),
-        len.heading("bore"),
-        len.heading("form circle d_Ff"),
-        "h_f = r_f/r_int".into(),
-        "θ_f rad".into(),
-        "tip relief".into(),
-    ];
-    header(&mut out, &cols);
-    for b in &s.bodies {
-        let relief = b.tip_relief.as_ref().map_or_else(
-            || "none".to_string(),
-            |t| format!("{} over {}, {}", micro.with(t.amount.si(), 2), len.with(t.length.si(), 3), t.shape),
-        );
-        row(
-            &mut out,
-            &[
-                b.gear.clone(),
-                len.q(&b.root_diameter, 4),
-                len.q(&b.rack_dedendum, 4),
-                len.q(&b.rack_tip_radius, 4),
-                len.q(&b.bore_diameter, 4),
-                len.q(&b.form_diameter, 4),
-                fixed(b.foundation_ratio.0, 4),
-                fixed(b.root_angle.0, 5),
-                relief,
-            ],
-        );
-    }
+    let len = u.length();
+    bodies_table(&mut out, s, u);
     md!(out);
     header(&mut out, &["per unit face width", "potential energy", "ISO 6336-1 Method B"]);
     let kw = u.stiffness_per_width();
@@ -94,6 +63,43 @@ pub(crate) fn teeth_section(r: &Report) -> String {
     transmission_error_lines(&mut out, r);
     out.push('\n');
     out
+}
+
+/// Each gear as an elastic body: root, rack, bore, form circle, Sainsot's h_f and θ_f, its relief.
+fn bodies_table(out: &mut String, s: &crate::report::teeth::TeethStiffnessReport, u: Units) {
+    let (len, micro) = (u.length(), u.micro());
+    let cols = [
+        "gear".to_string(),
+        len.heading("root d_f"),
+        len.heading("rack h_fP"),
+        len.heading("rack tip ρ_fP"),
+        len.heading("bore"),
+        len.heading("form circle d_Ff"),
+        "h_f = r_f/r_int".into(),
+        "θ_f rad".into(),
+        "tip relief".into(),
+    ];
+    header(out, &cols);
+    for b in &s.bodies {
+        let relief = b.tip_relief.as_ref().map_or_else(
+            || "none".to_string(),
+            |t| format!("{} over {}, {}", micro.with(t.amount.si(), 2), len.with(t.length.si(), 3), t.shape),
+        );
+        row(
+            out,
+            &[
+                b.gear.clone(),
+                len.q(&b.root_diameter, 4),
+                len.q(&b.rack_dedendum, 4),
+                len.q(&b.rack_tip_radius, 4),
+                len.q(&b.bore_diameter, 4),
+                len.q(&b.form_diameter, 4),
+                fixed(b.foundation_ratio.0, 4),
+                fixed(b.root_angle.0, 5),
+                relief,
+            ],
+        );
+    }
 }
 
 /// ISO 6336-1 Method B's readings behind c′ and c_γα, in one sentence.
