@@ -3,7 +3,6 @@
 //! the temperature), report.json and efficiency_vs_oil_temperature.svg.
 
 use super::markup::md;
-use std::fmt::Write;
 
 use super::svg::{figure_with_legend, Panel};
 use super::table::{fixed, header, law_words, row};
@@ -53,22 +52,28 @@ fn markdown(r: &OilSweepReport) -> String {
         labels.join(", ")
     );
     for x in &r.runs {
-        let _ =
-            writeln!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", x.label, x.folder, x.warnings, x.notes);
+        md!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", x.label, x.folder, x.warnings, x.notes);
     }
+    lubricant_table(&mut out, r, u);
+    efficiency_table(&mut out, r, u);
+    out
+}
+
+/// The lubricant's values at each temperature.
+fn lubricant_table(out: &mut String, r: &OilSweepReport, u: Units) {
     if r.runs.iter().any(|x| x.lubricant.is_some()) {
         md!(out, "\n## Lubricant at each temperature\n");
         let (nu, eta, rho, alpha) =
             (u.kinematic_viscosity(), u.dynamic_viscosity(), u.density(), u.pressure_viscosity());
         let cols =
             ["oil temperature".to_string(), nu.heading("ν"), eta.heading("η"), rho.heading("ρ"), alpha.heading("α")];
-        header(&mut out, &cols);
+        header(out, &cols);
         for x in &r.runs {
             let Some(l) = &x.lubricant else { continue };
             let opt =
                 |q: Option<crate::report::number::Q>, s: Shown, d: usize| q.map_or("—".to_string(), |q| s.q(&q, d));
             row(
-                &mut out,
+                out,
                 &[
                     x.label.clone(),
                     opt(l.kinematic_viscosity, nu, 3),
@@ -82,6 +87,11 @@ fn markdown(r: &OilSweepReport) -> String {
             md!(out, "\nSource: {}.", l.source);
         }
     }
+}
+
+/// The efficiency of every record at each temperature (at most [`TABLE_ROWS`] rows).
+fn efficiency_table(out: &mut String, r: &OilSweepReport, u: Units) {
+    let n = r.runs.len();
     if !r.efficiency.is_empty() {
         md!(out, "\n## Efficiency against oil temperature\n");
         let w = u.power();
@@ -96,7 +106,7 @@ fn markdown(r: &OilSweepReport) -> String {
         if r.loss_budget {
             cols.extend([w.heading("P total"), "η total %".into()]);
         }
-        header(&mut out, &cols);
+        header(out, &cols);
         let mut rows = 0;
         'rows: for e in &r.efficiency {
             for (i, x) in r.runs.iter().enumerate() {
@@ -114,7 +124,7 @@ fn markdown(r: &OilSweepReport) -> String {
                 if let (Some(t), Some(eta)) = (&e.total_loss, &e.total_efficiency) {
                     cells.extend([w.q(&t[i], 2), fixed(100.0 * eta[i].0, 3)]);
                 }
-                row(&mut out, &cells);
+                row(out, &cells);
                 rows += 1;
             }
         }
@@ -124,7 +134,6 @@ fn markdown(r: &OilSweepReport) -> String {
         }
         md!(out, "\n![efficiency against oil temperature]({OIL_SWEEP_PLOT})");
     }
-    out
 }
 
 /// η̄ mesh (and total η with a gearbox) and the mesh loss against the oil temperature, one curve
