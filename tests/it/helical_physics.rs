@@ -301,3 +301,44 @@ fn iso_total_of_a_helical_pair_is_the_standards_own() {
         assert!((b.total_efficiency.0 - (1.0 - total / input)).abs() < 1e-15);
     }
 }
+
+/// Issue 46: the efficiency map of a helical gearbox with `iso_14179_2` charges the standard's mesh
+/// loss too: every cell of `efficiency_map.csv` has mesh loss = P_in μ_mZ H_V (μ_mZ from the law
+/// built here at the cell's point) and total = mesh + parts, both to the CSV's ten digits (1e-9).
+#[test]
+fn helical_iso_map_charges_the_standards_mesh_loss() {
+    let path = crate::root().join("specs/helical_gearbox.gear");
+    let text = std::fs::read_to_string(&path).unwrap().replace(
+        "efficiency(formulations = [external])",
+        "efficiency(formulations = [external])\n        efficiency_map(pinion_torque = 50..400 N*m count 4, pinion_speed = 500..3000 rpm count 4)",
+    );
+    let scene = gearloss::check("specs/helical_gearbox.gear", &text).unwrap();
+    let files = gearloss::run_to_files("specs/helical_gearbox.gear", &text).unwrap().files;
+    let csv = &files.iter().find(|(n, _)| n == "efficiency_map.csv").expect("a map").1;
+    let g = scene.gears.geometry().unwrap();
+    let e_r = scene_modulus(&scene);
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (t_at, n_at, mesh_at, total_at) =
+        (col("pinion_torque_N_m"), col("pinion_speed_rad_s"), col("mesh_loss_W"), col("total_loss_W"));
+    let parts: Vec<usize> = ["gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"]
+        .iter()
+        .filter_map(|p| header.iter().position(|h| h == p))
+        .collect();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+    let mut cells = 0;
+    for line in csv.lines().skip(1) {
+        // The law's label is quoted and holds no comma here.
+        let v: Vec<&str> = line.split(',').collect();
+        let x = |i: usize| v[i].parse::<f64>().unwrap_or(0.0);
+        let state = OperatingState { pinion_torque: x(t_at), pinion_speed: x(n_at) };
+        let ctx = LawContext { geometry: &g, state, tribology: tribology(&scene, e_r), sharing: Sharing::Equal };
+        let mu = scene.friction[0].build(&ctx).unwrap().mu(&ctx.contact_at(g.points.e)).abs();
+        let iso = state.pinion_torque * state.pinion_speed * mu * ohlendorf_loss_factor(&ctx);
+        assert!(close(x(mesh_at), iso), "mesh {} vs ISO {iso}", x(mesh_at));
+        let sum: f64 = x(mesh_at) + parts.iter().map(|i| x(*i)).sum::<f64>();
+        assert!(close(x(total_at), sum), "total {} vs {sum}", x(total_at));
+        cells += 1;
+    }
+    assert_eq!(cells, 16);
+}
