@@ -52,27 +52,40 @@ pub(crate) fn dynamics_findings(r: &DynamicsReport) -> Vec<Finding> {
             }
         }
     }
-    if let (Some(ratio), false) = (r.stiffness_step_ratio, step.is_empty()) {
-        let mut at: Vec<String> = Vec::new();
-        for (label, name, kv, _) in &step {
-            let entry = format!("{name} {kv:.4}");
-            match at.iter_mut().find(|a| a.starts_with(&format!("{label} ("))) {
-                Some(a) => {
-                    a.pop();
-                    a.push_str(&format!(", {entry})"));
-                }
-                None => at.push(format!("{label} ({entry})")),
+    out.extend(stiffness_step_note(r, &step));
+    out.extend(unstable_map_ranges(r));
+    out
+}
+
+/// One note for every point whose K_v is the stiffness step k_double/k_single (quasi-static):
+/// (point label, formulation, K_v, f_n/f_mesh) in `step`.
+fn stiffness_step_note(r: &DynamicsReport, step: &[(String, String, f64, f64)]) -> Option<Finding> {
+    let ratio = r.stiffness_step_ratio.filter(|_| !step.is_empty())?;
+    let mut at: Vec<String> = Vec::new();
+    for (label, name, kv, _) in step {
+        let entry = format!("{name} {kv:.4}");
+        match at.iter_mut().find(|a| a.starts_with(&format!("{label} ("))) {
+            Some(a) => {
+                a.pop();
+                a.push_str(&format!(", {entry})"));
             }
+            None => at.push(format!("{label} ({entry})")),
         }
-        let lowest = step.iter().map(|s| s.3).fold(f64::INFINITY, f64::min);
-        out.push(Finding {
-            severity: Severity::Note,
-            message: format!(
-                "dynamics: K_v ≈ k_double/k_single = {ratio:.4} at {}: it comes from the stiffness step, not from dynamics: x is continuous where a pair enters, so F = k_double x jumps there (f_n/f_mesh ≥ {lowest:.1}, quasi-static). A stiffness table with ramps (`mesh_stiffness {{ table = [...] }}` or a CSV file) gives the dynamic factor of a real mesh",
-                at.join("; ")
-            ),
-        });
     }
+    let lowest = step.iter().map(|s| s.3).fold(f64::INFINITY, f64::min);
+    Some(Finding {
+        severity: Severity::Note,
+        message: format!(
+            "dynamics: K_v ≈ k_double/k_single = {ratio:.4} at {}: it comes from the stiffness step, not from dynamics: x is continuous where a pair enters, so F = k_double x jumps there (f_n/f_mesh ≥ {lowest:.1}, quasi-static). A stiffness table with ramps (`mesh_stiffness {{ table = [...] }}` or a CSV file) gives the dynamic factor of a real mesh",
+            at.join("; ")
+        ),
+    })
+}
+
+/// A warning per formulation with unstable speed ranges in the stability map.
+fn unstable_map_ranges(r: &DynamicsReport) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     if let Some(map) = &r.stability_map {
         for (i, ranges) in map.unstable_ranges.iter().enumerate() {
             if !ranges.is_empty() {
