@@ -58,63 +58,10 @@ pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
     }
     input(&mut rows, "gears.face_width", &g.face_width, "m");
     for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
-        rows.push(InputRow {
-            key: format!("{name}.teeth"),
-            written: gear.teeth.written.clone(),
-            si: SiValue::Plain(Num(gear.teeth.value as f64)),
-        });
-        rows.push(InputRow {
-            key: format!("{name}.profile_shift"),
-            written: gear.profile_shift.written.clone(),
-            si: SiValue::Plain(Num(gear.profile_shift.value)),
-        });
-        if let Some(d) = &gear.tip_diameter {
-            input(&mut rows, &format!("{name}.tip_diameter"), d, "m");
-        }
-        if let Some(j) = &gear.inertia {
-            input(&mut rows, &format!("{name}.inertia"), j, "kg*m^2");
-        }
-        for (key, r) in [
-            ("roughness_ra", &gear.roughness_ra),
-            ("roughness_rq", &gear.roughness_rq),
-            ("roughness_rz", &gear.roughness_rz),
-            ("root_diameter", &gear.root_diameter),
-            ("bore_diameter", &gear.bore_diameter),
-        ] {
-            if let Some(r) = r {
-                input(&mut rows, &format!("{name}.{key}"), r, "m");
-            }
-        }
-        if let Some(t) = &gear.tip_relief {
-            input(&mut rows, &format!("{name}.tip_relief.amount"), &t.amount, "m");
-            input(&mut rows, &format!("{name}.tip_relief.length"), &t.length, "m");
-        }
-        input(
-            &mut rows,
-            &format!("{name}.material ({}).youngs_modulus", gear.material.name),
-            &gear.material.youngs_modulus,
-            "Pa",
-        );
-        rows.push(InputRow {
-            key: format!("{name}.material ({}).poisson_ratio", gear.material.name),
-            written: gear.material.poisson_ratio.written.clone(),
-            si: SiValue::Plain(Num(gear.material.poisson_ratio.value)),
-        });
+        gear_inputs(&mut rows, name, gear);
     }
     if let Some(l) = &scene.lubricant {
-        input(&mut rows, "lubricant.dynamic_viscosity", &l.dynamic_viscosity, "Pa*s");
-        if let Some(d) = &l.density {
-            input(&mut rows, "lubricant.density", d, "kg/m^3");
-        }
-        if let Some(n) = &l.kinematic_viscosity {
-            input(&mut rows, "lubricant.kinematic_viscosity", n, "m^2/s");
-        }
-        if let Some(a) = &l.pressure_viscosity {
-            input(&mut rows, "lubricant.pressure_viscosity", a, "1/Pa");
-        }
-        if let Some(t) = &l.temperature {
-            input(&mut rows, "lubricant.temperature", t, "K");
-        }
+        lubricant_inputs(&mut rows, l);
     }
     if let Some(g) = &scene.gearbox {
         super::gearbox_inputs::gearbox_inputs(&mut rows, g, !unit_system(scene).is_si());
@@ -123,4 +70,67 @@ pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
         super::gearbox_inputs::housing_inputs(&mut rows, h);
     }
     rows
+}
+
+/// One gear's inputs: teeth, shift, tip, inertia, roughness, root and bore, relief, material.
+fn gear_inputs(rows: &mut Vec<InputRow>, name: &str, gear: &crate::model::Gear) {
+    rows.push(InputRow {
+        key: format!("{name}.teeth"),
+        written: gear.teeth.written.clone(),
+        si: SiValue::Plain(Num(gear.teeth.value as f64)),
+    });
+    rows.push(InputRow {
+        key: format!("{name}.profile_shift"),
+        written: gear.profile_shift.written.clone(),
+        si: SiValue::Plain(Num(gear.profile_shift.value)),
+    });
+    if let Some(d) = &gear.tip_diameter {
+        input(rows, &format!("{name}.tip_diameter"), d, "m");
+    }
+    if let Some(j) = &gear.inertia {
+        input(rows, &format!("{name}.inertia"), j, "kg*m^2");
+    }
+    for (key, r) in [
+        ("roughness_ra", &gear.roughness_ra),
+        ("roughness_rq", &gear.roughness_rq),
+        ("roughness_rz", &gear.roughness_rz),
+        ("root_diameter", &gear.root_diameter),
+        ("bore_diameter", &gear.bore_diameter),
+    ] {
+        if let Some(r) = r {
+            input(rows, &format!("{name}.{key}"), r, "m");
+        }
+    }
+    if let Some(t) = &gear.tip_relief {
+        input(rows, &format!("{name}.tip_relief.amount"), &t.amount, "m");
+        input(rows, &format!("{name}.tip_relief.length"), &t.length, "m");
+    }
+    input(
+        rows,
+        &format!("{name}.material ({}).youngs_modulus", gear.material.name),
+        &gear.material.youngs_modulus,
+        "Pa",
+    );
+    rows.push(InputRow {
+        key: format!("{name}.material ({}).poisson_ratio", gear.material.name),
+        written: gear.material.poisson_ratio.written.clone(),
+        si: SiValue::Plain(Num(gear.material.poisson_ratio.value)),
+    });
+}
+
+/// The lubricant's inputs as the scene gave them (or as the catalogue read them at temperature).
+fn lubricant_inputs(rows: &mut Vec<InputRow>, l: &crate::model::Lubricant) {
+    input(rows, "lubricant.dynamic_viscosity", &l.dynamic_viscosity, "Pa*s");
+    if let Some(d) = &l.density {
+        input(rows, "lubricant.density", d, "kg/m^3");
+    }
+    if let Some(n) = &l.kinematic_viscosity {
+        input(rows, "lubricant.kinematic_viscosity", n, "m^2/s");
+    }
+    if let Some(a) = &l.pressure_viscosity {
+        input(rows, "lubricant.pressure_viscosity", a, "1/Pa");
+    }
+    if let Some(t) = &l.temperature {
+        input(rows, "lubricant.temperature", t, "K");
+    }
 }
