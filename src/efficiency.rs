@@ -269,13 +269,18 @@ pub fn iso_mesh_loss(input: f64, mean_abs_mu: f64, h_v: f64) -> f64 {
     input * mean_abs_mu * h_v
 }
 
-/// The mesh loss the budget charges at the context's point (W): [`iso_mesh_loss`] where
-/// [`charges_iso_mesh_loss`] says so (μ_mZ read at the end of contact, the law's |μ| being the same
-/// at every contact off the pitch point), else the law's line integral [`mean_power_loss`].
+/// [`iso_mesh_loss`] at the context's point, μ_mZ read at the end of contact (the law's |μ| is the
+/// same at every contact off the pitch point).
+pub fn iso_mesh_loss_at(ctx: &LawContext, law: &dyn FrictionLaw, h_v: f64) -> f64 {
+    let mu = law.mu(&ctx.contact_at(ctx.geometry.points.e)).abs();
+    iso_mesh_loss(ctx.state.pinion_torque * ctx.state.pinion_speed, mu, h_v)
+}
+
+/// The mesh loss the budget charges at the context's point (W): [`iso_mesh_loss_at`] where
+/// [`charges_iso_mesh_loss`] says so, else the law's line integral [`mean_power_loss`].
 pub fn charged_mesh_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation, h_v: f64) -> f64 {
     if charges_iso_mesh_loss(law.id(), ctx.geometry) {
-        let mu = law.mu(&ctx.contact_at(ctx.geometry.points.e)).abs();
-        iso_mesh_loss(ctx.state.pinion_torque * ctx.state.pinion_speed, mu, h_v)
+        iso_mesh_loss_at(ctx, law, h_v)
     } else {
         mean_power_loss(ctx, law, formulation)
     }

@@ -57,14 +57,15 @@ impl LawEvaluation {
             .collect()
     }
 
-    /// The mesh loss a gearbox budget charges for efficiency result `e` at input power `input` (W):
-    /// ISO/TR 14179-2's P_in μ_mZ H_V for `iso_14179_2` on a helical pair
-    /// ([`crate::efficiency::charges_iso_mesh_loss`]), else the result's line integral.
-    pub fn charged_mesh_loss(&self, e: &crate::efficiency::EfficiencyResult, eval: &Setup, input: f64) -> f64 {
+    /// The mesh loss (W) and efficiency a gearbox budget charges for efficiency result `e` at input
+    /// power `input`: ISO/TR 14179-2's P_in μ_mZ H_V for `iso_14179_2` on a helical pair
+    /// ([`crate::efficiency::charges_iso_mesh_loss`]), else the result's line integral and η̄.
+    pub fn charged_mesh(&self, e: &crate::efficiency::EfficiencyResult, eval: &Setup, input: f64) -> (f64, f64) {
         if crate::efficiency::charges_iso_mesh_loss(self.id, &eval.geometry) {
-            crate::efficiency::iso_mesh_loss(input, self.mean_abs_mu.value, eval.ohlendorf_loss_factor)
+            let loss = crate::efficiency::iso_mesh_loss(input, self.mean_abs_mu.value, eval.ohlendorf_loss_factor);
+            (loss, 1.0 - loss / input)
         } else {
-            e.power_loss
+            (e.power_loss, e.mean.value)
         }
     }
 }

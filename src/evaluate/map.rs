@@ -66,14 +66,13 @@ pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap>
             for (i, spec) in scene.friction.iter().enumerate() {
                 let law = evaluate_law(eval, spec, state, &table, false, false);
                 for e in &law.efficiency {
-                    // The mesh loss the budget charges, and the mesh efficiency it implies.
-                    let mesh = law.charged_mesh_loss(e, eval, input);
+                    let (mesh, mesh_efficiency) = law.charged_mesh(e, eval, input);
                     out.push(MapCell {
                         torque_index: k / speeds.values.len(),
                         speed_index: k % speeds.values.len(),
                         law_index: i,
                         formulation: e.formulation,
-                        mesh_efficiency: if mesh == e.power_loss { e.mean.value } else { 1.0 - mesh / input },
+                        mesh_efficiency,
                         mesh_loss: mesh,
                         budget: budget.as_ref().map(|b| b.with_mesh(mesh, input)),
                     });

@@ -40,15 +40,18 @@ fn efficiency_at(scene: &Scene, eval: &Setup, law_index: usize, f: Formulation, 
     let ctx = eval.law_context(state);
     let law = law_at(&scene.friction[law_index], &ctx);
     let input = state.pinion_torque * state.pinion_speed;
-    // The mesh loss the budget charges (ISO/TR 14179-2's own for iso_14179_2 on a helical pair).
-    let mesh = if crate::efficiency::charges_iso_mesh_loss(law.id(), &eval.geometry) {
-        1.0 - crate::efficiency::charged_mesh_loss(&ctx, law.as_ref(), f, eval.ohlendorf_loss_factor) / input
+    // The mesh efficiency and loss the budget charges (ISO/TR 14179-2's own for iso_14179_2 on a
+    // helical pair).
+    let (mesh_efficiency, mesh_loss) = if crate::efficiency::charges_iso_mesh_loss(law.id(), &eval.geometry) {
+        let loss = crate::efficiency::iso_mesh_loss_at(&ctx, law.as_ref(), eval.ohlendorf_loss_factor);
+        (1.0 - loss / input, loss)
     } else {
-        mean_efficiency(&ctx, law.as_ref(), f).value
+        let eta = mean_efficiency(&ctx, law.as_ref(), f).value;
+        (eta, (1.0 - eta) * input)
     };
     match eval.loss_budget(scene, &state) {
-        Some(b) => b.with_mesh((1.0 - mesh) * input, input).total_efficiency,
-        None => mesh,
+        Some(b) => b.with_mesh(mesh_loss, input).total_efficiency,
+        None => mesh_efficiency,
     }
 }
 

@@ -123,7 +123,7 @@ fn point_summary(
             }
             for e in &law.efficiency {
                 let mut row = efficiency_row(&law_row, e);
-                row.budget = budget.as_ref().map(|b| b.with_mesh(law.charged_mesh_loss(e, eval, input), input));
+                row.budget = budget.as_ref().map(|b| b.with_mesh(law.charged_mesh(e, eval, input).0, input));
                 let mut at_balance = None;
                 if let Some((housing, losses)) = &thermal {
                     let rating = ratings.get(losses, housing, i, e.formulation, si);
@@ -137,7 +137,7 @@ fn point_summary(
                             let thermal = row.thermal.take();
                             let law_row = SummaryRow { mean_abs_mu: Some(law.mean_abs_mu.value), ..law_row.clone() };
                             row = efficiency_row(&law_row, e);
-                            let mesh = law.charged_mesh_loss(e, &setup, input);
+                            let (mesh, _) = law.charged_mesh(e, &setup, input);
                             row.budget = point.losses.budget.as_ref().map(|b| b.with_mesh(mesh, input));
                             row.thermal = thermal;
                             at_balance = Some(e.clone());

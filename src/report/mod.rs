@@ -108,7 +108,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         transmission_error: Vec::new(),
     };
     if let Some(t) = &eval.teeth {
-        with_teeth(&mut report, scene, t);
+        with_teeth(&mut report, scene, eval, t);
     }
     if let (Some(t), Some(h)) = (&eval.thermal, &scene.housing) {
         with_thermal(&mut report, scene, eval, t, h);
@@ -147,12 +147,12 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
 }
 
 /// The mesh stiffness from the teeth and the transmission error: their records, findings and plots.
-fn with_teeth(report: &mut Report, scene: &Scene, t: &crate::evaluate::teeth::TeethDetails) {
+fn with_teeth(report: &mut Report, scene: &Scene, eval: &Evaluation, t: &crate::evaluate::teeth::TeethDetails) {
     let s = teeth::stiffness_report(scene, t);
     report.findings.extend(teeth::teeth_findings(scene, &s));
     report.stiffness = Some(s);
     report.transmission_error = teeth::transmission_error_reports(t);
-    report.findings.extend(teeth_validity::linear_range_findings(scene, &report.transmission_error));
+    report.findings.extend(teeth_validity::linear_range_findings(scene, eval, &report.transmission_error));
     report.plots.push(PlotRef::new(
         PlotKind::MeshStiffness,
         "Mesh stiffness from the teeth over two mesh cycles, one pair's stiffness, and ISO 6336-1's c_γα",

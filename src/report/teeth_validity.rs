@@ -5,7 +5,8 @@
 use super::finding::{Finding, Severity};
 use super::scene::units;
 use super::teeth::TransmissionErrorReport;
-use crate::geometry::contact::{reduced_modulus, Sharing};
+use crate::evaluate::Evaluation;
+use crate::geometry::contact::Sharing;
 use crate::geometry::OperatingState;
 use crate::model::Scene;
 
@@ -25,13 +26,12 @@ pub(crate) const MAX_HERTZ_PRESSURE: f64 = 2.0e9;
 
 /// The warnings for every asked torque whose STE peak or single-pair Hertzian pressure at the
 /// pitch point (the whole normal load on one pair: F_bn / b) leaves the linear range.
-pub(super) fn linear_range_findings(scene: &Scene, reports: &[TransmissionErrorReport]) -> Vec<Finding> {
-    let Ok(g) = scene.gears.geometry() else { return Vec::new() };
-    let (p, w) = (&scene.gears.pinion.material, &scene.gears.wheel.material);
-    let e_r = reduced_modulus(
-        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
-        [p.poisson_ratio.value, w.poisson_ratio.value],
-    );
+pub(super) fn linear_range_findings(
+    scene: &Scene,
+    eval: &Evaluation,
+    reports: &[TransmissionErrorReport],
+) -> Vec<Finding> {
+    let (g, e_r) = (&eval.geometry, eval.reduced_modulus);
     let u = units(scene);
     let m_n = scene.gears.module.value.value;
     let mut out = Vec::new();
