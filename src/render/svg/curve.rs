@@ -3,7 +3,10 @@
 
 use plotters::prelude::*;
 
-use super::panel::{Panel, MARKERS_BELOW, PALETTE};
+use super::palette::PALETTE;
+
+/// Series of fewer points than this get a marker at every point.
+const MARKERS_BELOW: usize = 20;
 
 /// A chart of one panel: f64 on both axes, drawn as SVG.
 type Chart<'a, 'b> = ChartContext<
@@ -13,9 +16,15 @@ type Chart<'a, 'b> = ChartContext<
 >;
 
 /// The shaded x bands (a law's regimes) with their labels, and the vertical marks (A B P D E).
-pub(super) fn draw_bands_and_marks(chart: &mut Chart, panel: &Panel, y0: f64, y1: f64) -> Result<(), String> {
+pub(super) fn draw_bands_and_marks(
+    chart: &mut Chart,
+    bands: &[(f64, f64, String)],
+    marks: &[(String, f64)],
+    y0: f64,
+    y1: f64,
+) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
-    for (i, (a, b, label)) in panel.bands.iter().enumerate() {
+    for (i, (a, b, label)) in bands.iter().enumerate() {
         let shade = PALETTE[(i + 5) % PALETTE.len()].mix(0.10);
         chart.draw_series(std::iter::once(Rectangle::new([(*a, y0), (*b, y1)], shade.filled()))).map_err(e)?;
         chart
@@ -26,7 +35,7 @@ pub(super) fn draw_bands_and_marks(chart: &mut Chart, panel: &Panel, y0: f64, y1
             )))
             .map_err(e)?;
     }
-    for (name, u) in &panel.marks {
+    for (name, u) in marks {
         chart.draw_series(LineSeries::new(vec![(*u, y0), (*u, y1)], BLACK.mix(0.35).stroke_width(1))).map_err(e)?;
         chart
             .draw_series(std::iter::once(Text::new(

@@ -8,6 +8,7 @@ mod dynamics;
 mod helical;
 mod losses;
 mod maps;
+mod palette;
 mod panel;
 mod sweeps;
 mod teeth;

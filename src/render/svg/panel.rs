@@ -4,17 +4,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::curve::{draw_bands_and_marks, draw_curve};
-
-pub(super) const PALETTE: [RGBColor; 8] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(23, 190, 207),
-    RGBColor(140, 86, 75),
-    RGBColor(127, 127, 127),
-];
+pub(super) use super::palette::PALETTE;
 
 /// Twenty categorical colours (the "tab20" set: each hue dark, then light), for panels of more than
 /// eight labelled curves, so that no two curves share a colour up to twenty.
@@ -49,9 +39,6 @@ fn categorical(i: usize, n: usize) -> RGBColor {
         PALETTE[i % PALETTE.len()]
     }
 }
-
-/// Series of fewer points than this get a marker at every point.
-pub(super) const MARKERS_BELOW: usize = 20;
 
 /// Curves a panel labels one by one; beyond this a panel with a [`Shading`] colours its curves by
 /// a value on a colour scale (with a colour bar) and tells groups apart by their markers.
@@ -193,7 +180,7 @@ pub(super) fn draw_panel(area: &DrawingArea<SVGBackend, Shift>, panel: &Panel) -
         .light_line_style(WHITE.mix(0.0))
         .draw()
         .map_err(e)?;
-    draw_bands_and_marks(&mut chart, panel, y0, y1)?;
+    draw_bands_and_marks(&mut chart, &panel.bands, &panel.marks, y0, y1)?;
     let shaded = panel.shaded();
     for (i, (_, pts)) in all.iter().enumerate() {
         let color = match shaded {
