@@ -53,6 +53,7 @@
 //! lowering of its block.
 
 pub(crate) mod diagnostics;
+pub mod drive;
 pub mod dynamics;
 pub mod efficiency;
 pub mod evaluate;

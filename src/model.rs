@@ -47,6 +47,24 @@ pub struct Scene {
     pub housing: Option<crate::thermal::Housing>,
     pub duty_cycle: Option<crate::thermal::DutyCycle>,
     pub analyses: Analyses,
+    /// A scene written with `stage` blocks: its drive (then `gears` is the first stage's pair and
+    /// `operating` holds the sweeps at the ends the drive names). None for a scene of one pair.
+    pub drive: Option<SceneDrive>,
+}
+
+/// A drive of several stages as the scene gives it: the checked layout and each stage's pair, in
+/// stage order.
+#[derive(Debug, Clone)]
+pub struct SceneDrive {
+    pub layout: crate::drive::Drive,
+    pub pairs: Vec<GearPair>,
+}
+
+impl SceneDrive {
+    /// Stage `k`'s pair in `lubricant`: the mesh its evaluation reads.
+    pub fn mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> crate::evaluate::Mesh<'a> {
+        crate::evaluate::Mesh { gears: &self.pairs[k], lubricant }
+    }
 }
 
 impl Scene {
@@ -76,6 +94,11 @@ impl Scene {
         }
         scene.operating.oil_temperature = Some(theta);
         scene
+    }
+
+    /// The scene's pair with its lubricant: the mesh the pair's evaluation reads.
+    pub fn mesh(&self) -> crate::evaluate::Mesh<'_> {
+        crate::evaluate::Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
     }
 
     /// The oil temperatures the scene runs at, as written (`90 degC`): one per run.
@@ -307,6 +330,8 @@ pub struct Analyses {
     pub efficiency: Option<Vec<Formulation>>,
     /// The grid of `efficiency_map(pinion_torque = ..., pinion_speed = ...)`.
     pub efficiency_map: Option<(Sweep<Torque>, Sweep<AngularVelocity>)>,
+    /// A drive's map: the ends its axes are given at (`efficiency_map(output_torque = …, …)`).
+    pub map_ends: Option<crate::drive::DriveOperating>,
     pub friction_along_loa: bool,
     pub film: bool,
     /// Where `film` was asked for, for diagnostics.

@@ -39,6 +39,9 @@ pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
         };
         return Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files);
     }
+    if let Ok(drive) = serde_json::from_str::<crate::report::drive::DriveReport>(&text) {
+        return Ok(render::drive::render_drive(&drive).map_err(RunError::drawing)?.files);
+    }
     let sweep: OilSweepReport = serde_json::from_str(&text).map_err(|e| bad(dir, "report.json", e))?;
     let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
     for run in &sweep.runs {

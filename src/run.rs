@@ -83,6 +83,9 @@ fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), 
 pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let slug = report::slug(&scene.title);
+    if let Some(drive) = &scene.drive {
+        return Ok(drive_report_files(&scene, drive)?.1);
+    }
     if scene.operating.oil_temperatures.is_none() {
         let (_, files) = run_scene_to_files(&scene)?;
         return Ok(RenderedReport { slug, files });
@@ -163,6 +166,41 @@ pub struct Written {
     pub folder: PathBuf,
     pub files: Vec<String>,
     pub reports: Vec<(String, Report)>,
+    /// The report of a drive of several stages (then `reports` is empty).
+    pub drive: Option<crate::report::drive::DriveReport>,
+}
+
+/// A drive scene evaluated, reported and rendered in memory.
+pub fn drive_report_files(
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
+    let eval = evaluate::drive::evaluate_drive(scene, drive);
+    let report = report::drive::build_drive_report(scene, drive, &eval);
+    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    Ok((report, rendered))
+}
+
+/// A drive scene into its report folder, written whole.
+fn run_drive_into(
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    out_dir: &Path,
+    progress: &dyn Progress,
+) -> Result<Written, RunError> {
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    progress.stage("evaluate", 1);
+    let (report, rendered) = drive_report_files(scene, drive)?;
+    progress.stage("write", rendered.files.len() as u64);
+    let mut files = Vec::new();
+    for (file, content) in &rendered.files {
+        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(file.clone());
+        progress.advance(1);
+    }
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(Written { folder, files, reports: Vec::new(), drive: Some(report) })
 }
 
 /// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
@@ -178,12 +216,21 @@ pub fn run_into(
 ) -> Result<Written, RunError> {
     let slug = report::slug(&scene.title);
     let labels = scene.oil_temperature_labels();
+    if let (Some(drive), None) = (&scene.drive, shard) {
+        return run_drive_into(scene, drive, out_dir, progress);
+    }
+    if scene.drive.is_some() {
+        return Err(RunError::Shards(
+            Failure::new(FailureKind::ShardedDrive, "a drive of several stages runs whole in this version")
+                .hint("run it without `--shard`; a 41 × 30 map of a two-stage drive takes about a second"),
+        ));
+    }
     let Some(shard) = shard else {
         let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
         if labels.is_empty() {
             let (report, files) = run_scene_into(scene, &folder, "", progress)?;
             let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-            return Ok(Written { folder, files, reports: vec![(String::new(), report)] });
+            return Ok(Written { folder, files, reports: vec![(String::new(), report)], drive: None });
         }
         let mut files = Vec::new();
         let mut reports = Vec::new();
@@ -198,7 +245,7 @@ pub fn run_into(
             files.insert(k, file);
         }
         let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-        return Ok(Written { folder, files, reports });
+        return Ok(Written { folder, files, reports, drive: None });
     };
     if !labels.is_empty() {
         return Err(RunError::Shards(
@@ -217,7 +264,7 @@ pub fn run_into(
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: Vec::new() })
+    Ok(Written { folder, files, reports: Vec::new(), drive: None })
 }
 
 /// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
@@ -240,5 +287,5 @@ pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -
         files.push(file.clone());
     }
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: vec![(String::new(), report)] })
+    Ok(Written { folder, files, reports: vec![(String::new(), report)], drive: None })
 }

@@ -34,6 +34,8 @@ pub enum FailureKind {
     ShardsDoNotMatch,
     /// `--shard` on a scene that runs at several oil temperatures.
     ShardedOilSweep,
+    /// `--shard` on a drive of several stages (its points run whole in this version).
+    ShardedDrive,
 }
 
 /// A failure after lowering: its kind, the reason (one line) and what to do about it.

@@ -8,12 +8,14 @@
 pub(crate) mod cases;
 pub(crate) mod contact_curves;
 pub(crate) mod details;
+pub mod drive;
 pub(crate) mod dynamics;
 pub(crate) mod evaluation;
 pub(crate) mod first_balance;
 pub(crate) mod laws;
 pub(crate) mod map;
 pub(crate) mod map_best;
+pub mod mesh;
 pub mod plan;
 pub(crate) mod prepare;
 pub mod records;
@@ -34,10 +36,11 @@ pub use contact_curves::ContactCurves;
 pub use details::evaluate_details;
 pub use evaluation::{Evaluation, PointEvaluation};
 pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
+pub use mesh::Mesh;
 pub use plan::{Plan, Shard};
 pub use prepare::prepare;
 pub use records::{RecordSink, SummaryRow};
-pub use setup::{contact_table, tribology, Setup};
+pub use setup::{contact_table, Setup};
 pub use tally::Tally;
 
 /// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and

@@ -4,9 +4,8 @@ use super::cases::table_positions;
 use super::contact_curves::ContactCurves;
 use super::evaluation::Evaluation;
 use super::plan::Plan;
-use super::setup::{tribology, Setup};
+use super::setup::Setup;
 use crate::efficiency;
-use crate::geometry::contact::reduced_modulus;
 use crate::geometry::OperatingState;
 use crate::model::Scene;
 use crate::tribology::FilmInputs;
@@ -14,14 +13,10 @@ use crate::tribology::FilmInputs;
 /// Everything but the operating points: geometry, materials, lubricant, the fixed sample positions.
 /// Lowering has checked the geometry, so this cannot fail on a lowered scene.
 pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
-    let geometry = scene.gears.geometry().expect("lowering refuses pairs whose geometry fails");
-    let p = &scene.gears.pinion.material;
-    let w = &scene.gears.wheel.material;
-    let e_r = reduced_modulus(
-        [p.youngs_modulus.value.value, w.youngs_modulus.value.value],
-        [p.poisson_ratio.value, w.poisson_ratio.value],
-    );
-    let tribology = tribology(scene, e_r);
+    let mesh = scene.mesh();
+    let geometry = mesh.geometry();
+    let e_r = mesh.reduced_modulus();
+    let tribology = mesh.tribology(e_r);
     let analyses = &scene.analyses;
     let film_inputs = tribology.pressure_viscosity.filter(|_| analyses.film).map(|alpha| {
         let inputs = FilmInputs {

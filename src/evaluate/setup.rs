@@ -54,7 +54,7 @@ impl Setup {
     /// (lowering has checked that it has a lubricant then).
     pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
         let gearbox = scene.gearbox.as_ref()?;
-        let oil = budget_oil(scene, &self.tribology);
+        let oil = scene.mesh().budget_oil(&self.tribology);
         Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, &oil))
     }
 
@@ -83,57 +83,6 @@ impl Setup {
         }
         u.sort_by(f64::total_cmp);
         u
-    }
-}
-
-/// The oil as the losses beside the mesh read it, from the tribology at the oil temperature
-/// (ρ = η/ν; a lubricant of unknown base counts as mineral).
-pub(crate) fn budget_oil(scene: &Scene, t: &Tribology) -> crate::losses::Oil {
-    crate::losses::Oil {
-        nu: t.kinematic_viscosity,
-        rho: t.density(),
-        eta: t.dynamic_viscosity,
-        mineral: scene
-            .lubricant
-            .as_ref()
-            .and_then(|l| l.kind)
-            .is_none_or(|k| k == crate::model::LubricantType::Mineral),
-    }
-}
-
-/// The lubricant and surface data in SI.
-pub fn tribology(scene: &Scene, reduced_modulus: f64) -> Tribology {
-    let g = &scene.gears;
-    let mean = |f: fn(&crate::model::Gear) -> Option<f64>| match (f(&g.pinion), f(&g.wheel)) {
-        (Some(a), Some(b)) => Some(0.5 * (a + b)),
-        _ => None,
-    };
-    let ra = mean(|g| g.roughness_ra.as_ref().map(|r| r.value.value));
-    let rq = mean(|g| g.roughness_rq.as_ref().map(|r| r.value.value));
-    let rz = mean(|g| g.roughness_rz.as_ref().map(|r| r.value.value));
-    let rq_composite = match (&g.pinion.roughness_rq, &g.wheel.roughness_rq) {
-        (Some(a), Some(b)) => Some(a.value.value.hypot(b.value.value)),
-        _ => None,
-    };
-    let l = scene.lubricant.as_ref();
-    let (x_l, family) = match l.and_then(|l| l.kind) {
-        None => (1.0, "mineral (default)"),
-        Some(base) => match crate::tribology::lubricant::iso_lubricant_factor(base) {
-            Some(x) => (x, base.words()),
-            None => (1.0, "synthetic ester (no ISO/TR 14179-2 X_L: 1.0)"),
-        },
-    };
-    Tribology {
-        dynamic_viscosity: l.map_or(0.0, |l| l.dynamic_viscosity.value.value),
-        kinematic_viscosity: l.and_then(|l| l.kinematic_viscosity_si()),
-        pressure_viscosity: l.and_then(|l| l.pressure_viscosity.as_ref().map(|a| a.value.value)),
-        ra_mean: ra,
-        rq_mean: rq,
-        rq_composite,
-        rz_mean: rz,
-        reduced_modulus,
-        lubricant_factor: x_l,
-        lubricant_family: family,
     }
 }
 

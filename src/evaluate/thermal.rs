@@ -86,7 +86,7 @@ impl<'a> Losses<'a> {
             0.0
         };
         let budget = self.scene.gearbox.as_ref().map(|g| {
-            let oil = super::setup::budget_oil(self.scene, &tribology);
+            let oil = self.scene.mesh().budget_oil(&tribology);
             loss_budget(g, &self.setup.geometry, state.pinion_torque, state.pinion_speed, &oil)
         });
         LossesAt { mesh, budget }

@@ -29,3 +29,39 @@ pub fn run_summary(report: &Report, label: &str) -> String {
     }
     out
 }
+
+/// The terminal summary of a drive's run: each operating point's ends, total loss and η, then the
+/// number of warnings and the first of them.
+pub fn drive_summary(report: &crate::report::drive::DriveReport) -> String {
+    let mut out = format!("{}\n\n", report.title);
+    for p in &report.points {
+        let d = &p.point;
+        out.push_str(&format!(
+            "  {} ({} {}): {} in {:.1} W, out {:.1} W, lost {:.2} W, η = {}\n",
+            p.label,
+            p.law,
+            p.formulation,
+            d.flow.name(),
+            d.input_power,
+            d.output_power,
+            d.power_lost(),
+            if d.both_ends_deliver {
+                "0 (both ends deliver)".to_string()
+            } else {
+                format!("{:.4} %", 100.0 * d.efficiency)
+            }
+        ));
+    }
+    let warnings: Vec<&str> =
+        report.findings.iter().filter(|f| f.severity == Severity::Warning).map(|f| f.message.as_str()).collect();
+    out.push_str(&format!("\n{} warning(s)", warnings.len()));
+    if warnings.is_empty() {
+        out.push_str(".\n");
+        return out;
+    }
+    out.push_str(":\n");
+    for w in warnings.iter().take(FIRST_WARNINGS) {
+        out.push_str(&format!("  - {w}\n"));
+    }
+    out
+}

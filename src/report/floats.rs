@@ -118,3 +118,11 @@ pub fn serialize<T: Floats, S: Serializer>(x: &T, s: S) -> Result<S::Ok, S::Erro
 pub fn deserialize<'de, T: Floats, D: Deserializer<'de>>(d: D) -> Result<T, D::Error> {
     Ok(T::read(T::Written::deserialize(d)?))
 }
+
+/// Reads a series written as plain numbers, a value that was not finite written as `null` (serde_json
+/// writes NaN so), back with NaN in its place: a report whose series holds such a value (flagged
+/// in its findings) still reads back. Use `#[serde(deserialize_with = "floats::nan_from_null")]`.
+pub fn nan_from_null<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<f64>, D::Error> {
+    let read: Vec<Option<f64>> = Deserialize::deserialize(d)?;
+    Ok(read.into_iter().map(|x| x.unwrap_or(f64::NAN)).collect())
+}

@@ -1,6 +1,8 @@
 //! Stage 4, report: the serde data every renderer reads. Nothing here formats text for a reader.
 
 pub(crate) mod checks;
+pub mod drive;
+mod drive_inputs;
 pub(crate) mod dynamics;
 pub(crate) mod dynamics_findings;
 pub(crate) mod dynamics_records;
@@ -23,6 +25,7 @@ pub(crate) mod plausibility;
 pub(crate) mod points;
 pub(crate) mod scene;
 pub(crate) mod scene_report;
+mod slug;
 pub(crate) mod sweep;
 pub(crate) mod teeth;
 mod teeth_validity;
@@ -34,29 +37,12 @@ pub use geometry::{GearReport, GeometryReport, NamedPoint, PointsReport};
 pub use points::{ContactRow, Curves, OperatingPointReport, PointCurves};
 pub use scene::{InputRow, SiValue};
 pub use scene_report::{PlotKind, PlotRef, Report};
+pub use slug::slug;
 
 use crate::evaluate::{Evaluation, Plan, Tally};
 use crate::model::Scene;
 
 pub use crate::evaluate::{pick, MAX_CURVES};
-
-/// The folder name of a scene: lower case, ASCII letters and digits, words joined by `_`.
-pub fn slug(title: &str) -> String {
-    let mut out = String::new();
-    for c in title.chars() {
-        if c.is_ascii_alphanumeric() {
-            out.push(c.to_ascii_lowercase());
-        } else if !out.ends_with('_') && !out.is_empty() {
-            out.push('_');
-        }
-    }
-    let out = out.trim_end_matches('_').to_string();
-    if out.is_empty() {
-        "scene".into()
-    } else {
-        out
-    }
-}
 
 /// The formulation's name in the report (`external`, `internal`, `base`).
 pub fn formulation_name(f: crate::model::Formulation) -> &'static str {

@@ -6,8 +6,6 @@ use std::fmt::{self, Write};
 
 use serde::de::{DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 
-use super::scene_report::Report;
-
 /// Paths of every value in the report that is not a finite number (serialised as `null`), in the
 /// order report.json holds them; `point` (an optional label) and `curves` (a plot's gaps where a
 /// law diverges, by design) are not looked into.
@@ -18,7 +16,7 @@ use super::scene_report::Report;
 /// #     concat!(env!("CARGO_MANIFEST_DIR"), "/reports/fzg_type_c/report.json")).unwrap()).unwrap();
 /// assert!(non_finite_paths(&report).is_empty());
 /// ```
-pub fn non_finite_paths(report: &Report) -> Vec<String> {
+pub fn non_finite_paths<T: serde::Serialize>(report: &T) -> Vec<String> {
     let mut out = Vec::new();
     if let Ok(text) = serde_json::to_string(report) {
         let mut path = String::new();

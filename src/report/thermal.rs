@@ -78,8 +78,11 @@ pub struct ThermalRecord {
 pub struct HeatBalanceReport {
     /// The operating point, law and formulation, in words.
     pub label: String,
+    #[serde(deserialize_with = "super::floats::nan_from_null")]
     pub temperature: Vec<f64>,
+    #[serde(deserialize_with = "super::floats::nan_from_null")]
     pub power_loss: Vec<f64>,
+    #[serde(deserialize_with = "super::floats::nan_from_null")]
     pub dissipation: Vec<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub oil_temperature: Option<Q>,

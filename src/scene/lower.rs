@@ -15,8 +15,18 @@ use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
 
-const SCENE_BLOCKS: &[&str] =
-    &["gears", "material", "lubricant", "operating", "friction", "dynamics", "gearbox", "duty_cycle", "analyses"];
+const SCENE_BLOCKS: &[&str] = &[
+    "gears",
+    "stage",
+    "material",
+    "lubricant",
+    "operating",
+    "friction",
+    "dynamics",
+    "gearbox",
+    "duty_cycle",
+    "analyses",
+];
 const ANALYSES: &[&str] = &[
     "efficiency",
     "efficiency_map",
@@ -42,7 +52,10 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     let mut errors = Vec::new();
     let top = Fields::read("the scene", ast.title_span, &ast.items, &["lubricant"], SCENE_BLOCKS, &[], &mut errors);
 
-    let (materials, singles) = scene_blocks(ast, &top, &mut errors);
+    let (materials, singles, stages) = scene_blocks(ast, &top, &mut errors);
+    if !stages.is_empty() {
+        return super::lower_drive_scene::lower_drive_scene(ast, &top, &materials, &singles, &stages, errors);
+    }
 
     let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
     let operating = singles.get("operating").and_then(|b| lower_operating(b, &mut errors));
@@ -59,7 +72,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         check_oil_sweep(op, lubricant.as_ref(), &mut errors);
     }
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
-    let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, &mut errors));
+    let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, false, &mut errors));
     let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));
     let dynamics =
         singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));
@@ -85,6 +98,9 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));
     if let (Some(g), false) = (&gears, lubricant_failed) {
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
+    }
+    if let (Some(gb), Some(block), Some(g)) = (&gearbox, singles.get("gearbox"), &gears) {
+        super::lower_gearbox::check_immersion(gb.lubrication.as_ref(), g, lubrication_span(block), &mut errors);
     }
     if let (Some(gb), Some(block), false) = (&gearbox, singles.get("gearbox"), lubricant_failed) {
         super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
@@ -121,6 +137,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
                 housing,
                 duty_cycle,
                 analyses,
+                drive: None,
             };
             super::lower_dynamics::check_frequency_ratio(&scene, &mut errors);
             check_record_rows(&scene, &mut errors);
@@ -134,18 +151,20 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     }
 }
 
-/// The scene's blocks: its materials by name (each defined once) and every other block by kind (at
-/// most one of each); the `gears` and `operating` blocks must be there.
-fn scene_blocks<'a>(
-    ast: &'a SceneAst,
-    top: &Fields<'a>,
-    errors: &mut Vec<Diagnostic>,
-) -> (BTreeMap<&'a str, Material>, BTreeMap<&'a str, &'a Block>) {
+/// The scene's blocks: its materials by name (each defined once), its stages in order, and every
+/// other block by kind (at most one of each); the `operating` block must be there, and either a
+/// `gears` block (one pair) or `stage` blocks (a drive).
+type SceneBlocks<'a> = (BTreeMap<&'a str, Material>, BTreeMap<&'a str, &'a Block>, Vec<&'a Block>);
+
+fn scene_blocks<'a>(ast: &'a SceneAst, top: &Fields<'a>, errors: &mut Vec<Diagnostic>) -> SceneBlocks<'a> {
     let mut materials: BTreeMap<&str, Material> = BTreeMap::new();
     let mut singles: BTreeMap<&str, &Block> = BTreeMap::new();
+    let mut stages: Vec<&Block> = Vec::new();
     for block in &top.blocks {
         let kind = block.kind.text.as_str();
-        if kind == "material" {
+        if kind == "stage" {
+            stages.push(block);
+        } else if kind == "material" {
             if let Some(m) = lower_material(block, errors) {
                 if materials.contains_key(m.name.as_str()) {
                     errors.push(
@@ -171,10 +190,28 @@ fn scene_blocks<'a>(
             );
         }
     }
-    for (name, example) in [
-        ("gears", "gears { module = 4.5 mm ... }"),
-        ("operating", "operating { pinion_torque = 100 N*m  pinion_speed = 1000 rpm }"),
-    ] {
+    if let (Some(gears), Some(stage)) = (singles.get("gears"), stages.first()) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::DuplicateKey,
+                gears.kind.span,
+                "the scene has a `gears` block and `stage` blocks",
+            )
+            .hint(format!(
+                "a scene is one pair (`gears`) or a drive of stages: move this pair into a `stage` block like `{}`",
+                stage.label.as_ref().map_or("stage", |l| l.text.as_str())
+            )),
+        );
+    }
+    let example = if stages.is_empty() {
+        "operating { pinion_torque = 100 N*m  pinion_speed = 1000 rpm }"
+    } else {
+        "operating { output_torque = 1000 N*m  output_speed = 500 rpm }"
+    };
+    for (name, example) in [("gears", "gears { module = 4.5 mm ... }"), ("operating", example)] {
+        if name == "gears" && !stages.is_empty() {
+            continue;
+        }
         if !singles.contains_key(name) {
             errors.push(
                 Diagnostic::new(DiagnosticKind::MissingKey, ast.title_span, format!("the scene has no `{name}` block"))
@@ -182,7 +219,7 @@ fn scene_blocks<'a>(
             );
         }
     }
-    (materials, singles)
+    (materials, singles, stages)
 }
 
 /// What the dynamics analyses need: a `dynamics` block, both gears' inertias, and their masses for a
@@ -229,7 +266,7 @@ fn check_dynamics_needs(
 
 /// The lubricant, from a `lubricant` block or `lubricant = ...`, read at the oil temperature (at
 /// ambient when the scene asks for the equilibrium, until the run has found it).
-fn scene_lubricant(
+pub(super) fn scene_lubricant(
     singles: &BTreeMap<&str, &Block>,
     top: &Fields,
     operating: Option<&Operating>,
@@ -269,6 +306,18 @@ fn scene_lubricant(
     }
 }
 
+/// Where a block's `lubrication = ...` value stands (the block's name when it has none).
+pub(super) fn lubrication_span(block: &Block) -> Span {
+    block
+        .items
+        .iter()
+        .find_map(|i| match i {
+            Item::Assignment { key, value } if key.text == "lubrication" => Some(value.span),
+            _ => None,
+        })
+        .unwrap_or(block.kind.span)
+}
+
 /// `film` needs the lubricant's pressure-viscosity coefficient.
 fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: &mut Vec<Diagnostic>) {
     if let Some(span) = analyses.film_span {
@@ -285,7 +334,8 @@ fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: 
     }
 }
 
-fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
+/// The `analyses` block; a drive's (`drive`) map is given at its ends.
+pub(super) fn lower_analyses(block: &Block, drive: bool, errors: &mut Vec<Diagnostic>) -> Analyses {
     let f = Fields::read("the `analyses` block", block.span, &block.items, &[], &[], ANALYSES, errors);
     let mut a = Analyses::default();
     for call in &f.calls {
@@ -339,6 +389,14 @@ fn lower_analyses(block: &Block, errors: &mut Vec<Diagnostic>) -> Analyses {
                 }
                 a.efficiency = Some(formulations);
                 a.friction_span = Some(call.span);
+            }
+            "efficiency_map" if drive => {
+                if let Some((t, s, ends)) = super::lower_drive_operating::lower_drive_map(call, errors) {
+                    a.efficiency_map = Some((t, s));
+                    a.map_ends = Some(ends);
+                }
+                a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
+                a.friction_span = a.friction_span.or(Some(call.span));
             }
             "efficiency_map" => {
                 a.efficiency_map = super::lower_gearbox::lower_efficiency_map(call, errors);

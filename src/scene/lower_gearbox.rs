@@ -57,7 +57,7 @@ pub(super) fn lower_gearbox(block: &Block, errors: &mut Vec<Diagnostic>) -> Opti
     (errors.len() == before).then_some(Gearbox { lubrication, bearings, seals })
 }
 
-fn lower_lubrication(value: &Value, errors: &mut Vec<Diagnostic>) -> Option<Lubrication> {
+pub(super) fn lower_lubrication(value: &Value, errors: &mut Vec<Diagnostic>) -> Option<Lubrication> {
     let ValueKind::Call(call) = &value.kind else {
         errors.push(
             Diagnostic::new(DiagnosticKind::WrongDimension, value.span, "`lubrication` expects `dip(...)` or `injection(...)`")
@@ -97,7 +97,7 @@ fn lower_lubrication(value: &Value, errors: &mut Vec<Diagnostic>) -> Option<Lubr
     }
 }
 
-fn lower_bearing(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Bearing> {
+pub(super) fn lower_bearing(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Bearing> {
     let mut items = Vec::new();
     let f = call_fields(call, "`bearing(...)`", BEARING, &mut items, errors);
     let kind = match f.name("type", BearingType::NAMES, errors) {
@@ -241,7 +241,7 @@ fn lower_bearing_model(
     Ok(Some((constants, [d, big_d])))
 }
 
-fn lower_seal(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Seal> {
+pub(super) fn lower_seal(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Seal> {
     let mut items = Vec::new();
     let f = call_fields(call, "`seal(...)`", SEAL, &mut items, errors);
     let d = metres(positive(f.required("diameter", "30 mm", errors), "diameter", errors));
@@ -343,4 +343,32 @@ pub(super) fn lower_efficiency_map(
         }
     }
     Some((t, s))
+}
+
+/// A dip-lubricated gear is at most wholly under oil: its immersion depth cannot exceed its tip
+/// diameter (Mauz's churning moment grows exponentially with the depth and would overflow).
+pub(super) fn check_immersion(
+    lubrication: Option<&Lubrication>,
+    pair: &crate::model::GearPair,
+    span: Span,
+    errors: &mut Vec<Diagnostic>,
+) {
+    let (Some(Lubrication::Dip { immersion, .. }), Ok(g)) = (lubrication, pair.geometry()) else { return };
+    for (i, name) in ["pinion", "wheel"].iter().enumerate() {
+        let tip = 2.0 * g.tip_radius[i];
+        if immersion[i] > tip {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    span,
+                    format!(
+                        "the {name} is immersed {:.1} mm, deeper than its tip diameter {:.1} mm",
+                        immersion[i] * 1e3,
+                        tip * 1e3
+                    ),
+                )
+                .hint(format!("give `{name}_immersion` as the depth of the tip circle below the oil level: at most the tip diameter (a gear wholly under oil)")),
+            );
+        }
+    }
 }

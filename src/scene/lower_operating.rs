@@ -122,7 +122,7 @@ fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Opti
 
 /// `oil_temperature = 90 degC`, or a list or range of temperatures the scene runs at one after the
 /// other: the first value (at which the scene lowers) and, for two values or more, the sweep.
-fn oil_temperatures(
+pub(super) fn oil_temperatures(
     f: &Fields,
     errors: &mut Vec<Diagnostic>,
 ) -> (Option<Given<ThermodynamicTemperature>>, Option<Sweep<ThermodynamicTemperature>>) {

@@ -153,6 +153,18 @@ fn parse_call(pair: Pair<Rule>, errors: &mut Vec<Diagnostic>) -> Call {
 
 /// Functions whose arguments may be given in order, and the names the positions stand for.
 const POSITIONAL: &[(&str, &[&str])] = &[("iso_vg", &["grade", "base"])];
+/// Functions that take a bare flag among their arguments (`bearing(..., locating)`): the flag is
+/// read as an argument of its own name.
+const FLAGS: &[(&str, &[&str])] = &[("bearing", &["locating"])];
+
+/// The flag's name when `value` is a bare flag of `call`.
+fn flag_of(call: &Name, value: &Value) -> Option<Name> {
+    let flags = FLAGS.iter().find(|(f, _)| *f == call.text).map_or(&[][..], |(_, n)| *n);
+    match &value.kind {
+        ValueKind::Call(c) if c.arguments.is_empty() && flags.contains(&c.name.text.as_str()) => Some(c.name.clone()),
+        _ => None,
+    }
+}
 
 fn parse_arguments(pair: Pair<Rule>, call: &Name, errors: &mut Vec<Diagnostic>) -> Vec<(Name, Value)> {
     let mut out = Vec::new();
@@ -165,6 +177,9 @@ fn parse_arguments(pair: Pair<Rule>, call: &Name, errors: &mut Vec<Diagnostic>) 
                 let (key, value) = parse_argument(p, errors);
                 match key {
                     Some(key) => out.push((key, value)),
+                    None if flag_of(call, &value).is_some() => {
+                        out.extend(flag_of(call, &value).map(|name| (name, value)));
+                    }
                     None => {
                         match names.get(position) {
                             Some(name) => out.push((Name { text: name.to_string(), span: value.span }, value)),

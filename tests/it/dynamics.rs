@@ -8,7 +8,6 @@ use gearloss::dynamics::propagator::{magnus_adaptive, AffineSegment, Method};
 use gearloss::dynamics::response::PeriodicResponse;
 use gearloss::dynamics::trajectory::Trajectory;
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
@@ -30,7 +29,7 @@ pub(crate) fn ctx<'a>(scene: &gearloss::Scene, g: &'a PairGeometry, rpm: f64, to
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: torque, pinion_speed: rpm * std::f64::consts::PI / 30.0 },
-        tribology: tribology(scene, 226e9),
+        tribology: scene.mesh().tribology(226e9),
         sharing: Sharing::Equal,
     }
 }

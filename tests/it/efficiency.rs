@@ -2,7 +2,6 @@
 //! energy balance and limit cases.
 
 use gearloss::efficiency::{self, efficiency_at, mean_efficiency, ohlendorf_loss_factor};
-use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::LawContext;
 use gearloss::geometry::contact::{reduced_modulus, Sharing};
@@ -23,7 +22,7 @@ fn ctx(g: &PairGeometry) -> LawContext<'_> {
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 },
-        tribology: tribology(&scene, reduced_modulus([206e9; 2], [0.3; 2])),
+        tribology: scene.mesh().tribology(reduced_modulus([206e9; 2], [0.3; 2])),
         sharing: Sharing::Equal,
     }
 }

@@ -9,7 +9,6 @@ use gearloss::dynamics::numerics::{reference, relative_error, study_times};
 use gearloss::dynamics::propagator::Method;
 use gearloss::dynamics::trajectory::Trajectory;
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::LawContext;
 use gearloss::geometry::contact::Sharing;
@@ -70,7 +69,7 @@ fn four_state_model_is_the_union_of_its_parts() {
     let ctx = LawContext {
         geometry: &g,
         state: OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 },
-        tribology: tribology(&scene, 226e9),
+        tribology: scene.mesh().tribology(226e9),
         sharing: Sharing::Equal,
     };
     let make = |f: DynamicFormulation| {

@@ -3,7 +3,6 @@
 
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
 use gearloss::efficiency::{mean_efficiency, ohlendorf_loss_factor};
-use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::{reduced_modulus, Sharing};
@@ -25,7 +24,7 @@ fn ctx(g: &PairGeometry, speed_rpm: f64) -> LawContext<'_> {
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: 2000.0 * LBF_IN, pinion_speed: rpm(speed_rpm) },
-        tribology: tribology(&scene, reduced_modulus([206e9; 2], [0.3; 2])),
+        tribology: scene.mesh().tribology(reduced_modulus([206e9; 2], [0.3; 2])),
         sharing: Sharing::Equal,
     }
 }
@@ -254,7 +253,7 @@ fn helical_contact_table_is_the_efficiency_contact_model() {
     assert!(!report.operating_points.is_empty());
     for op in &report.operating_points {
         let state = OperatingState { pinion_torque: op.pinion_torque.si(), pinion_speed: op.pinion_speed.si() };
-        let ctx = LawContext { geometry: &g, state, tribology: tribology(&scene, e_r), sharing: Sharing::Equal };
+        let ctx = LawContext { geometry: &g, state, tribology: scene.mesh().tribology(e_r), sharing: Sharing::Equal };
         let f_bn = g.normal_load(&state);
         for (i, row) in op.contact.iter().enumerate() {
             let c = ctx.contact_at(row.distance_from_t1.si());
@@ -286,7 +285,7 @@ fn iso_total_of_a_helical_pair_is_the_standards_own() {
     for e in &report.efficiency {
         assert_eq!(e.law, gearloss::friction::LawId::Iso14179_2);
         let state = OperatingState { pinion_torque: e.pinion_torque.si(), pinion_speed: e.pinion_speed.si() };
-        let ctx = LawContext { geometry: &g, state, tribology: tribology(&scene, e_r), sharing: Sharing::Equal };
+        let ctx = LawContext { geometry: &g, state, tribology: scene.mesh().tribology(e_r), sharing: Sharing::Equal };
         let law = scene.friction[0].build(&ctx).unwrap();
         let mu = law.mu(&ctx.contact_at(g.points.e)).abs();
         let input = state.pinion_torque * state.pinion_speed;
@@ -332,7 +331,7 @@ fn helical_iso_map_charges_the_standards_mesh_loss() {
         let v: Vec<&str> = line.split(',').collect();
         let x = |i: usize| v[i].parse::<f64>().unwrap_or(0.0);
         let state = OperatingState { pinion_torque: x(t_at), pinion_speed: x(n_at) };
-        let ctx = LawContext { geometry: &g, state, tribology: tribology(&scene, e_r), sharing: Sharing::Equal };
+        let ctx = LawContext { geometry: &g, state, tribology: scene.mesh().tribology(e_r), sharing: Sharing::Equal };
         let mu = scene.friction[0].build(&ctx).unwrap().mu(&ctx.contact_at(g.points.e)).abs();
         let iso = state.pinion_torque * state.pinion_speed * mu * ohlendorf_loss_factor(&ctx);
         assert!(close(x(mesh_at), iso), "mesh {} vs ISO {iso}", x(mesh_at));

@@ -2,6 +2,7 @@
 
 mod catalogues;
 mod cli;
+mod drive;
 mod dynamics;
 mod dynamics_closed_forms;
 mod efficiency;

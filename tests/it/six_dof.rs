@@ -3,7 +3,6 @@
 use gearloss::dynamics::propagator::Method;
 use gearloss::dynamics::six_dof::{Bearing, SixDofSystem};
 use gearloss::dynamics::{DynamicFormulation, Floquet, PeriodicModel, SdofSystem, StiffnessModel};
-use gearloss::evaluate::tribology;
 use gearloss::friction::coulomb::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
 use gearloss::geometry::contact::Sharing;
@@ -27,7 +26,7 @@ pub(crate) fn ctx<'a>(scene: &gearloss::Scene, g: &'a PairGeometry, rpm: f64) ->
     LawContext {
         geometry: g,
         state: OperatingState { pinion_torque: 239.3, pinion_speed: rpm * std::f64::consts::PI / 30.0 },
-        tribology: tribology(scene, 226e9),
+        tribology: scene.mesh().tribology(226e9),
         sharing: Sharing::Equal,
     }
 }
@@ -249,7 +248,7 @@ fn helical_six_dof_tends_to_the_helical_sdof() {
     let c = LawContext {
         geometry: &g,
         state: OperatingState { pinion_torque: 226.0, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 },
-        tribology: tribology(&scene, 226e9),
+        tribology: scene.mesh().tribology(226e9),
         sharing: Sharing::Equal,
     };
     let k = StiffnessModel::per_length(5.676e9, &g);

@@ -19,20 +19,36 @@ fn edges(c: &[f64]) -> Vec<f64> {
     e
 }
 
-struct Map<'a> {
-    title: String,
-    speeds: &'a [f64],
-    torques: &'a [f64],
+/// One heat map: values over speed (x) × torque (y) cells.
+pub(crate) struct Map<'a> {
+    pub title: String,
+    pub speeds: &'a [f64],
+    pub torques: &'a [f64],
     /// values[t][s], NaN where missing.
-    values: Vec<Vec<f64>>,
+    pub values: Vec<Vec<f64>>,
+    /// The axes' descriptions.
+    pub x_label: String,
+    pub y_label: String,
 }
 
-fn draw_map(
-    area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
-    m: &Map,
-    speed_unit: &str,
-    torque_unit: &str,
-) -> Result<(), String> {
+/// Heat maps two a row under `title`.
+pub(crate) fn heat_maps(title: &str, maps: &[Map]) -> Result<String, String> {
+    let mut svg = String::new();
+    {
+        let rows = maps.len().div_ceil(2).max(1);
+        let root = SVGBackend::with_string(&mut svg, (1000, 40 + 320 * rows as u32)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let root = root.titled(title, ("sans-serif", 18)).map_err(|e| e.to_string())?;
+        let areas = root.split_evenly((rows, 2));
+        for (area, map) in areas.iter().zip(maps) {
+            draw_map(area, map)?;
+        }
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
+
+fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let (xe, ye) = (edges(m.speeds), edges(m.torques));
     let (Some((x0, x1)), Some((y0, y1))) = (plottable(xe[0], xe[xe.len() - 1]), plottable(ye[0], ye[ye.len() - 1]))
@@ -57,8 +73,8 @@ fn draw_map(
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_desc(format!("pinion speed ({speed_unit})"))
-        .y_desc(format!("pinion torque ({})", torque_unit))
+        .x_desc(m.x_label.as_str())
+        .y_desc(m.y_label.as_str())
         .x_labels(8)
         .y_labels(6)
         .draw()
@@ -111,27 +127,24 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             loss[t][s] = power.value(rec.power_loss.si());
         }
         let name = format!("{label} {}", f.name());
-        maps.push(Map { title: format!("η̄ % — {name}"), speeds: &speeds, torques: &torques, values: eta });
+        let (x_label, y_label) =
+            (format!("pinion speed ({})", r.speed_unit.name), format!("pinion torque ({})", r.torque_unit.shown()));
+        maps.push(Map {
+            title: format!("η̄ % — {name}"),
+            speeds: &speeds,
+            torques: &torques,
+            values: eta,
+            x_label: x_label.clone(),
+            y_label: y_label.clone(),
+        });
         maps.push(Map {
             title: format!("P_loss {} — {name}", power.unit),
             speeds: &speeds,
             torques: &torques,
             values: loss,
+            x_label,
+            y_label,
         });
     }
-    let mut svg = String::new();
-    {
-        let rows = combos.len().max(1);
-        let root = SVGBackend::with_string(&mut svg, (1000, 40 + 320 * rows as u32)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root
-            .titled(&format!("{}: mean efficiency and power loss over the map", r.title), ("sans-serif", 18))
-            .map_err(|e| e.to_string())?;
-        let areas = root.split_evenly((rows, 2));
-        for (area, map) in areas.iter().zip(&maps) {
-            draw_map(area, map, &r.speed_unit.name, &r.torque_unit.shown())?;
-        }
-        root.present().map_err(|e| e.to_string())?;
-    }
-    Ok(svg)
+    heat_maps(&format!("{}: mean efficiency and power loss over the map", r.title), &maps)
 }

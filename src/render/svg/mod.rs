@@ -7,7 +7,7 @@ mod curve;
 mod dynamics;
 mod helical;
 mod losses;
-mod maps;
+pub(crate) mod maps;
 mod palette;
 mod panel;
 mod sweeps;

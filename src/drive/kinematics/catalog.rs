@@ -1,0 +1,27 @@
+//! The catalogue of stage kinds: each kind's typed identity, name, file and how its kinematics is
+//! built from a stage of the drive.
+
+use super::kind_id::StageKindId;
+use super::parallel::Parallel;
+use super::stage_kinematics::StageKinematics;
+use crate::drive::layout::Stage;
+
+/// One stage kind of the catalogue.
+#[derive(Clone, Copy)]
+pub struct StageKindEntry {
+    pub id: StageKindId,
+    pub name: &'static str,
+    /// Its file in `src/drive/kinematics/`.
+    pub file: &'static str,
+    pub title: &'static str,
+    pub kinematics: fn(&Stage) -> Box<dyn StageKinematics>,
+}
+
+/// Every stage kind.
+pub const STAGE_KINDS: &[StageKindEntry] = &[StageKindEntry {
+    id: StageKindId::Parallel,
+    name: "parallel",
+    file: "parallel.rs",
+    title: "an external pair on parallel shafts: ω_wheel = −ω_pinion z_pinion/z_wheel",
+    kinematics: |s| Box::new(Parallel { teeth: s.teeth }),
+}];

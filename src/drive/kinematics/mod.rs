@@ -1,0 +1,12 @@
+//! Stage kinematics as a catalogue: each stage kind one file implementing [`StageKinematics`] and
+//! one row of [`catalog::STAGE_KINDS`]. Today: parallel axes (an external spur or helical pair). A
+//! planetary stage is the next row.
+
+pub(crate) mod catalog;
+pub(crate) mod kind_id;
+pub mod parallel;
+pub(crate) mod stage_kinematics;
+
+pub use catalog::{StageKindEntry, STAGE_KINDS};
+pub use kind_id::StageKindId;
+pub use stage_kinematics::StageKinematics;

@@ -1,0 +1,27 @@
+//! A drive: shafts carrying gears, bearings and seals, joined by stages, power entering at the input
+//! shaft and leaving at the output (README, "Several stages").
+//!
+//! ```text
+//!  Drive (layout) ─kinematics─▶ shaft speeds ─walk─▶ torques along the power flow ◀─┐
+//!   shafts, stages,  (catalogue:   by ratio       (source → sink, or back      │ fixed point:
+//!   input, output     one file a                   from a given sink)           │ bearing losses
+//!                     stage kind)                       │                      │ from the loads
+//!                                                       ▼                      │
+//!                                        mesh forces (forces) ─statics─▶ bearing loads ─┘
+//! ```
+//!
+//! The mesh efficiency comes in from outside ([`walk::MeshEfficiency`]): the evaluation builds one per
+//! stage from the stage's own pair (a checked mesh, never the scene), with the driving member in
+//! the pinion's role.
+
+pub(crate) mod forces;
+pub mod kinematics;
+pub(crate) mod layout;
+pub(crate) mod point;
+pub mod statics;
+pub mod walk;
+
+pub use forces::{mesh_forces, GearLoad, MeshForceSizes};
+pub use layout::{Drive, DriveOperating, GearPlace, Hand, Member, Shaft, ShaftEnd, Stage};
+pub use point::{BearingPoint, DrivePoint, PowerFlow, ShaftPoint, StagePoint};
+pub use walk::{solve, EndValue, MeshEfficiency, TOLERANCE};

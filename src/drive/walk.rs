@@ -1,0 +1,377 @@
+//! The power walk through the drive and its fixed point (README, "Several stages").
+//!
+//! Walking from the source to the sink, a shaft passes on the power it receives less its own
+//! losses (its bearings, its seals, and the no-load parts of the stages whose pinion it carries);
+//! a stage passes on η_mesh times what its driving gear puts in (driven torque = driving torque ×
+//! z_driven/z_driving × η_mesh). Bearing losses depend on the bearing loads, which depend on every
+//! mesh force on the shaft, which depend on the torques: the walk is repeated, the loads taken from
+//! the previous pass, until no torque moves by more than [`TOLERANCE`] relative. Given the sink's
+//! torque (a vehicle's wheel in drive, the motor's brake torque in coast), the walk runs back from
+//! the sink: a stage's driving gear must put in what its driven gear passes on over η_mesh, η read
+//! at the previous pass's driving torque.
+
+use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
+use super::kinematics::StageKindId;
+use super::layout::{Drive, Member, ShaftEnd};
+use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
+use super::statics::shaft_reactions;
+use crate::losses::gear_no_load::GearsRunning;
+use crate::losses::Oil;
+
+/// The fixed point stops when no torque moves by more than this, relative to the largest.
+pub const TOLERANCE: f64 = 1e-12;
+/// Passes before the walk gives up (the report then says how far it got).
+const MAX_PASSES: usize = 100;
+
+/// The mesh efficiency of a stage, from outside (a friction law on the stage's own pair).
+pub trait MeshEfficiency {
+    /// η of stage `stage` when member `driving` puts `torque` (N·m, > 0) into the mesh at `speed`
+    /// (rad/s, > 0).
+    fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64;
+}
+
+/// A value given at one end of the drive: a torque (N·m; positive: the input drives) or a speed
+/// (rad/s; at the input signed about +z, at the output a magnitude, the input then turning
+/// counter-clockwise).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EndValue {
+    pub at: ShaftEnd,
+    pub value: f64,
+}
+
+/// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
+pub struct DriveModel<'a> {
+    pub drive: &'a Drive,
+    pub sizes: &'a [MeshForceSizes],
+    pub oil: &'a Oil,
+}
+
+/// The drive at one operating point: speeds by the kinematics, the power walked through until the
+/// bearing loads settle.
+pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, speed: EndValue) -> DrivePoint {
+    let drive = model.drive;
+    let omega = shaft_speeds(drive, speed);
+    let flow = if torque.value < 0.0 { PowerFlow::Coast } else { PowerFlow::Drive };
+    let walk = Walk::new(model, &omega, flow);
+    let from_source = (flow == PowerFlow::Drive) == (torque.at == ShaftEnd::Input);
+    let given_shaft = if torque.at == ShaftEnd::Input { drive.input } else { drive.output };
+    let given_power = torque.value.abs() * omega[given_shaft].abs();
+    let fixed = walk.fixed_losses(model);
+    let mut loads = vec![0.0; drive.shafts.len()];
+    let mut state = walk.pass(meshes, from_source, given_power, &fixed, &loads, None);
+    let mut passes = 1;
+    loop {
+        loads = walk.bearing_powers(model, &state.driving_torque).0;
+        let next = walk.pass(meshes, from_source, given_power, &fixed, &loads, Some(&state.driving_torque));
+        passes += 1;
+        let moved = state.moved(&next);
+        state = next;
+        if moved <= TOLERANCE || passes >= MAX_PASSES {
+            break;
+        }
+    }
+    walk.point(model, &state, &fixed, passes)
+}
+
+/// The signed speed of every shaft (rad/s): the input's given, or found from the output's
+/// magnitude, then passed along the chain by each stage's kinematics.
+pub(crate) fn shaft_speeds(drive: &Drive, speed: EndValue) -> Vec<f64> {
+    let along = |input: f64| {
+        let mut omega = vec![0.0; drive.shafts.len()];
+        omega[drive.input] = input;
+        for &(k, m) in &drive.chain {
+            let stage = &drive.stages[k];
+            let kinematics = (stage.kind.entry().kinematics)(stage);
+            let s = kinematics.speeds(m.index(), omega[stage.places[m.index()].shaft]);
+            omega[stage.places[m.other().index()].shaft] = s[m.other().index()];
+        }
+        omega
+    };
+    match speed.at {
+        ShaftEnd::Input => along(speed.value),
+        ShaftEnd::Output => {
+            let ratio = along(1.0)[drive.output].abs();
+            along(speed.value.abs() / ratio)
+        }
+    }
+}
+
+/// The order of the power flow: shafts from source to sink, and between each two the stage with
+/// its driving member.
+struct Walk<'a> {
+    omega: &'a [f64],
+    flow: PowerFlow,
+    shafts: Vec<usize>,
+    steps: Vec<(usize, Member)>,
+}
+
+/// The powers of one pass (W), indexed by shaft and by stage, with the driving torques (N·m).
+#[derive(Debug, Clone)]
+struct Pass {
+    received: Vec<f64>,
+    passed: Vec<f64>,
+    /// By stage: the driving gear's torque, the mesh efficiency and the power the mesh loses.
+    driving_torque: Vec<f64>,
+    efficiency: Vec<f64>,
+    mesh_loss: Vec<f64>,
+}
+
+impl Pass {
+    /// The largest move of a driving torque from `self` to `next`, relative to the largest (the
+    /// ends' torques follow from them and the speeds).
+    fn moved(&self, next: &Pass) -> f64 {
+        let scale = next.driving_torque.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+        if scale == 0.0 {
+            return 0.0;
+        }
+        let moved = self.driving_torque.iter().zip(&next.driving_torque).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        moved / scale
+    }
+}
+
+/// Load-independent losses of each shaft (W): seals, and the no-load parts of the stages whose
+/// pinion it carries; and those parts by stage.
+struct FixedLosses {
+    seals: Vec<f64>,
+    gear_no_load: Vec<f64>,
+    stage_no_load: Vec<f64>,
+}
+
+impl<'a> Walk<'a> {
+    fn new(model: &DriveModel, omega: &'a [f64], flow: PowerFlow) -> Walk<'a> {
+        let drive = model.drive;
+        let mut shafts = drive.shaft_order();
+        let mut steps: Vec<(usize, Member)> = drive.chain.clone();
+        if flow == PowerFlow::Coast {
+            shafts.reverse();
+            steps = steps.into_iter().rev().map(|(k, m)| (k, m.other())).collect();
+        }
+        Walk { omega, flow, shafts, steps }
+    }
+
+    fn fixed_losses(&self, model: &DriveModel) -> FixedLosses {
+        let drive = model.drive;
+        let seals = drive
+            .shafts
+            .iter()
+            .enumerate()
+            .map(|(j, s)| 0.0 + s.seals.iter().map(|seal| seal.power_loss(self.omega[j].abs())).sum::<f64>())
+            .collect();
+        let mut gear_no_load = vec![0.0; drive.shafts.len()];
+        let stage_no_load: Vec<f64> = drive
+            .stages
+            .iter()
+            .zip(model.sizes)
+            .map(|(stage, sizes)| {
+                let running = GearsRunning {
+                    omega: stage.places.map(|p| self.omega[p.shaft].abs()),
+                    pitch_radius: sizes.working_pitch_radius,
+                    face_width: sizes.face_width,
+                };
+                let p = stage.lubrication.as_ref().and_then(|l| l.power_loss(&running, model.oil)).unwrap_or(0.0);
+                gear_no_load[stage.places[0].shaft] += p;
+                p
+            })
+            .collect();
+        FixedLosses { seals, gear_no_load, stage_no_load }
+    }
+
+    /// One walk with the shafts' bearing losses `bearings` (W): from the source when the source's
+    /// power is given, else back from the sink (η at `previous` driving torques when known).
+    fn pass(
+        &self,
+        meshes: &dyn MeshEfficiency,
+        from_source: bool,
+        given: f64,
+        fixed: &FixedLosses,
+        bearings: &[f64],
+        previous: Option<&[f64]>,
+    ) -> Pass {
+        let n = self.omega.len();
+        let stages = fixed.stage_no_load.len();
+        let mut p = Pass {
+            received: vec![0.0; n],
+            passed: vec![0.0; n],
+            driving_torque: vec![0.0; stages],
+            efficiency: vec![1.0; stages],
+            mesh_loss: vec![0.0; stages],
+        };
+        let own = |j: usize| bearings[j] + fixed.seals[j] + fixed.gear_no_load[j];
+        let eta = |k: usize, m: Member, torque: f64, speed: f64| {
+            if torque == 0.0 || speed == 0.0 {
+                1.0
+            } else {
+                meshes.efficiency(k, m, torque.abs(), speed)
+            }
+        };
+        if from_source {
+            let mut power = given;
+            for (i, &j) in self.shafts.iter().enumerate() {
+                p.received[j] = power;
+                p.passed[j] = power - own(j);
+                power = p.passed[j];
+                if let Some(&(k, m)) = self.steps.get(i) {
+                    let speed = self.omega[j].abs();
+                    p.driving_torque[k] = power / speed;
+                    p.efficiency[k] = eta(k, m, p.driving_torque[k], speed);
+                    p.mesh_loss[k] = power.abs() * (1.0 - p.efficiency[k]);
+                    power -= p.mesh_loss[k];
+                }
+            }
+        } else {
+            let mut power = given;
+            for (i, &j) in self.shafts.iter().enumerate().rev() {
+                p.passed[j] = power;
+                p.received[j] = power + own(j);
+                power = p.received[j];
+                if i > 0 {
+                    let (k, m) = self.steps[i - 1];
+                    let from = self.shafts[i - 1];
+                    let speed = self.omega[from].abs();
+                    let guess = previous.map_or(power / speed, |t| t[k]);
+                    p.efficiency[k] = eta(k, m, guess, speed);
+                    let put_in = power / p.efficiency[k];
+                    p.mesh_loss[k] = put_in - power;
+                    p.driving_torque[k] = put_in / speed;
+                    power = put_in;
+                }
+            }
+        }
+        p
+    }
+
+    /// The mesh forces of every stage at the driving torques `torques`.
+    fn gear_loads(&self, model: &DriveModel, torques: &[f64]) -> Vec<GearLoad> {
+        self.steps
+            .iter()
+            .flat_map(|&(k, m)| {
+                let stage = &model.drive.stages[k];
+                debug_assert_eq!(stage.kind, StageKindId::Parallel);
+                let omega = self.omega[stage.places[m.index()].shaft];
+                mesh_forces((k, stage), &model.sizes[k], m, torques[k], omega)
+            })
+            .collect()
+    }
+
+    /// Each shaft's bearing losses (W) and its places at the driving torques `torques`.
+    fn bearing_powers(&self, model: &DriveModel, torques: &[f64]) -> (Vec<f64>, Vec<Vec<BearingPoint>>, Vec<GearLoad>) {
+        let loads = self.gear_loads(model, torques);
+        let mut powers = vec![0.0; model.drive.shafts.len()];
+        let mut places = vec![Vec::new(); model.drive.shafts.len()];
+        for (j, shaft) in model.drive.shafts.iter().enumerate() {
+            let [a, b] = match shaft.bearings.as_slice() {
+                [a, b] => [a, b],
+                _ => continue,
+            };
+            let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
+            let positions = [a.position.unwrap_or(0.0), b.position.unwrap_or(0.0)];
+            let reactions = shaft_reactions(&on, positions, shaft.locating);
+            let speed = self.omega[j].abs();
+            for (i, bearing) in [a, b].into_iter().enumerate() {
+                let n = bearing.count as f64;
+                let r = reactions[i];
+                let (radial, axial) = (r[0].hypot(r[1]) / n, r[2].abs() / n);
+                let (m0, m1) = match model.oil.nu {
+                    Some(nu) => bearing.moments(radial, axial, nu, speed, model.oil.mineral),
+                    None => (0.0, None),
+                };
+                let (no_load, load) = (m0 * speed * n, m1.unwrap_or(0.0) * speed * n);
+                powers[j] += no_load + load;
+                places[j].push(BearingPoint {
+                    kind: bearing.kind.name().to_string(),
+                    count: bearing.count,
+                    position: positions[i],
+                    locating: i == shaft.locating,
+                    reaction: r,
+                    radial_load: radial,
+                    axial_load: axial,
+                    no_load,
+                    load,
+                });
+            }
+        }
+        (powers, places, loads)
+    }
+
+    /// The drive point of the settled pass `p`.
+    fn point(&self, model: &DriveModel, p: &Pass, fixed: &FixedLosses, passes: usize) -> DrivePoint {
+        let drive = model.drive;
+        let (_, places, loads) = self.bearing_powers(model, &p.driving_torque);
+        let torque = |power: f64, j: usize| if self.omega[j] == 0.0 { 0.0 } else { power / self.omega[j].abs() };
+        let shafts: Vec<ShaftPoint> = drive
+            .shafts
+            .iter()
+            .enumerate()
+            .zip(places)
+            .map(|((j, s), bearings)| ShaftPoint {
+                name: s.name.clone(),
+                speed: self.omega[j],
+                received_torque: torque(p.received[j], j),
+                passed_torque: torque(p.passed[j], j),
+                received_power: p.received[j],
+                passed_power: p.passed[j],
+                bearings,
+                gear_loads: loads.iter().filter(|l| l.shaft == j).copied().collect(),
+                seals: fixed.seals[j],
+                gear_no_load: fixed.gear_no_load[j],
+            })
+            .collect();
+        let mut steps = self.steps.clone();
+        steps.sort_by_key(|(k, _)| *k);
+        let stages: Vec<StagePoint> = steps
+            .iter()
+            .map(|&(k, m)| {
+                let stage = &drive.stages[k];
+                let sizes = &model.sizes[k];
+                let kinematics = (stage.kind.entry().kinematics)(stage);
+                let t = p.driving_torque[k];
+                let d = m.index();
+                let f_t = t / sizes.working_pitch_radius[d];
+                StagePoint {
+                    name: stage.name.clone(),
+                    driving: m,
+                    driving_torque: t,
+                    driven_torque: t * kinematics.torque_ratio(d) * p.efficiency[k],
+                    driving_speed: self.omega[stage.places[d].shaft].abs(),
+                    mesh_efficiency: p.efficiency[k],
+                    mesh_loss: p.mesh_loss[k],
+                    no_load: fixed.stage_no_load[k],
+                    tangential_force: f_t,
+                    radial_force: f_t * sizes.working_pressure_angle.tan(),
+                    axial_force: t * sizes.helix_angle.tan() / sizes.pitch_radius[d],
+                }
+            })
+            .collect();
+        let source = *self.shafts.first().expect("a drive has shafts");
+        let sink = *self.shafts.last().expect("a drive has shafts");
+        let (p_source, p_sink) = (p.received[source], p.passed[sink]);
+        let (input_power, output_power) = match self.flow {
+            PowerFlow::Drive => (p_source, p_sink),
+            PowerFlow::Coast => (-p_sink, -p_source),
+        };
+        let losses = LossParts {
+            meshes: p.mesh_loss.iter().sum(),
+            gear_no_load: fixed.stage_no_load.iter().sum(),
+            bearings_no_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.no_load).sum(),
+            bearings_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.load).sum(),
+            seals: fixed.seals.iter().sum(),
+        };
+        let both_ends_deliver = p_sink < 0.0 || p_source < 0.0;
+        let efficiency = if both_ends_deliver || p_source == 0.0 { 0.0 } else { p_sink / p_source };
+        DrivePoint {
+            flow: self.flow,
+            input_torque: torque(input_power, drive.input),
+            input_speed: self.omega[drive.input].abs(),
+            input_power,
+            output_torque: torque(output_power, drive.output),
+            output_speed: self.omega[drive.output].abs(),
+            output_power,
+            shafts,
+            stages,
+            losses,
+            efficiency,
+            both_ends_deliver,
+            iterations: passes,
+        }
+    }
+}

@@ -1,0 +1,347 @@
+//! report.md of a drive: the headline (every operating point's ends, loss parts and η), the
+//! findings, the stages and shafts as given, the oil, then each operating point in full (stages,
+//! shafts, bearing places with their loads, the mesh forces the statics read) and the model.
+
+use crate::render::markup::md;
+use crate::render::table::{fixed, header, row};
+use crate::report::drive::{DrivePointReport, DriveReport};
+
+const RPM: f64 = 30.0 / std::f64::consts::PI;
+
+pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
+    let mut out = String::new();
+    md!(out, "# {}\n", r.title);
+    md!(
+        out,
+        "A drive of {} stage(s) on {} shafts, overall ratio ω_in/ω_out = {} ({} → {}); operating points given as the {} torque and the {} speed. Laws: {}. README, \"Several stages\", states the model; every number below comes with the values it rests on.\n",
+        r.stages.len(),
+        r.shafts.len(),
+        fixed(r.overall_ratio, 4),
+        r.shafts.iter().find(|s| s.role == "input").map_or("", |s| &s.name),
+        r.shafts.iter().find(|s| s.role == "output").map_or("", |s| &s.name),
+        r.torque_at.name(),
+        r.speed_at.name(),
+        r.laws.join(", ")
+    );
+    headline(&mut out, r);
+    let drawn = super::power_flow::chosen(r);
+    if !drawn.is_empty() {
+        let which: Vec<String> = drawn.iter().map(|p| format!("{} ({})", p.label, p.point.flow.name())).collect();
+        md!(out, "![power from source to sink, every loss a step]({})\n", super::power_flow::FILE);
+        md!(
+            out,
+            "The power flow of {}: each shaft's own losses and each stage's mesh loss a step down.\n",
+            which.join(" and ")
+        );
+    }
+    if !r.findings.is_empty() {
+        md!(out, "## Findings\n");
+        for f in &r.findings {
+            md!(out, "- **{:?}**: {}", f.severity, f.message);
+        }
+        md!(out);
+    }
+    inputs(&mut out, r);
+    md!(out, "## Operating points\n");
+    for p in &r.points {
+        point(&mut out, p);
+    }
+    if !r.maps.is_empty() {
+        md!(out, "## Loss map\n");
+        md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);
+        header(
+            &mut out,
+            &["law", "formulation", "torques (N·m)", "speeds (rpm)", "least η (drive)", "most loss (W)", "most passes"],
+        );
+        for m in &r.maps {
+            let drive_eta = m
+                .efficiency
+                .iter()
+                .zip(&m.torques)
+                .filter(|(_, t)| **t > 0.0)
+                .flat_map(|(row, _)| row.iter().copied())
+                .fold(f64::INFINITY, f64::min);
+            let most = m.loss.iter().flatten().copied().fold(f64::NEG_INFINITY, f64::max);
+            row(
+                &mut out,
+                &[
+                    m.law.clone(),
+                    m.formulation.clone(),
+                    format!(
+                        "{} … {} ({})",
+                        fixed(m.torques[0], 1),
+                        fixed(m.torques[m.torques.len() - 1], 1),
+                        m.torques.len()
+                    ),
+                    format!(
+                        "{} … {} ({})",
+                        fixed(m.speeds_rpm[0], 1),
+                        fixed(m.speeds_rpm[m.speeds_rpm.len() - 1], 1),
+                        m.speeds_rpm.len()
+                    ),
+                    format!("{} %", fixed(100.0 * drive_eta, 3)),
+                    fixed(most, 2),
+                    m.most_passes.to_string(),
+                ],
+            );
+        }
+        md!(out, "\nThe grid's cells are values at the grid points (the map is a picture; the headline's numbers are computed at their points).\n");
+    }
+    model(&mut out);
+    out
+}
+
+fn headline(out: &mut String, r: &DriveReport) {
+    md!(out, "## Headline\n");
+    header(
+        out,
+        &[
+            "point",
+            "law",
+            "formulation",
+            "flow",
+            "T_in (N·m)",
+            "n_in (rpm)",
+            "P_in (W)",
+            "T_out (N·m)",
+            "n_out (rpm)",
+            "P_out (W)",
+            "meshes (W)",
+            "gears no-load (W)",
+            "bearings (W)",
+            "seals (W)",
+            "total (W)",
+            "η (%)",
+            "passes",
+        ],
+    );
+    for p in &r.points {
+        let d = &p.point;
+        let l = &d.losses;
+        row(
+            out,
+            &[
+                p.label.clone(),
+                p.law.clone(),
+                p.formulation.clone(),
+                d.flow.name().to_string(),
+                fixed(d.input_torque, 4),
+                fixed(d.input_speed * RPM, 2),
+                fixed(d.input_power, 2),
+                fixed(d.output_torque, 4),
+                fixed(d.output_speed * RPM, 2),
+                fixed(d.output_power, 2),
+                fixed(l.meshes, 3),
+                fixed(l.gear_no_load, 3),
+                fixed(l.bearings_no_load + l.bearings_load, 3),
+                fixed(l.seals, 3),
+                fixed(l.total(), 3),
+                if d.both_ends_deliver { "0 (both ends deliver)".into() } else { fixed(100.0 * d.efficiency, 4) },
+                d.iterations.to_string(),
+            ],
+        );
+    }
+    md!(out, "\nη = P_sink/P_source: P_out/P_in in drive, P_in/P_out (power received by the motor over power the output delivers) in coast; T_in is the torque into the box at the input shaft's end, T_out the torque the output passes to the load (negative in coast). Total = P_in − P_out = meshes + gears' no-load + bearings + seals.\n");
+}
+
+fn inputs(out: &mut String, r: &DriveReport) {
+    md!(out, "## Stages\n");
+    header(
+        out,
+        &[
+            "stage",
+            "pinion on → wheel on",
+            "at (mm)",
+            "z",
+            "u",
+            "m_n (mm)",
+            "β (°)",
+            "hand (pinion)",
+            "φ (°)",
+            "a (mm)",
+            "b (mm)",
+            "α_wt (°)",
+            "ε_α",
+            "ε_β",
+            "lubrication",
+        ],
+    );
+    for s in &r.stages {
+        row(
+            out,
+            &[
+                s.name.clone(),
+                format!("{} → {}", s.shafts[0], s.shafts[1]),
+                format!("{} / {}", fixed(s.at_mm[0], 2), fixed(s.at_mm[1], 2)),
+                format!("{}/{}", s.teeth[0], s.teeth[1]),
+                fixed(s.ratio, 4),
+                fixed(s.normal_module_mm, 4),
+                fixed(s.helix_angle_deg, 2),
+                if s.pinion_hand.is_empty() { "spur".into() } else { s.pinion_hand.clone() },
+                fixed(s.direction_deg, 2),
+                fixed(s.centre_distance_mm, 3),
+                fixed(s.face_width_mm, 2),
+                fixed(s.working_pressure_angle_deg, 3),
+                fixed(s.contact_ratio, 3),
+                fixed(s.overlap_ratio, 3),
+                s.lubrication.clone(),
+            ],
+        );
+    }
+    md!(out, "\n## Shafts\n");
+    header(out, &["shaft", "role", "bearing places (type × count at mm)", "locating", "seals (mm × count)"]);
+    for s in &r.shafts {
+        let places: Vec<String> =
+            s.bearings.iter().map(|(k, n, at, _)| format!("{k} × {n} at {}", fixed(*at, 2))).collect();
+        let locating = s.bearings.iter().find(|b| b.3).map_or("—".into(), |b| format!("at {}", fixed(b.2, 2)));
+        let seals: Vec<String> = s.seals.iter().map(|(d, n)| format!("{} × {n}", fixed(*d, 1))).collect();
+        row(out, &[s.name.clone(), s.role.clone(), places.join("; "), locating, seals.join("; ")]);
+    }
+    md!(out, "\n## Oil (one sump)\n");
+    header(out, &["value", "", "unit"]);
+    for (what, v, unit) in &r.oil {
+        row(out, &[what.clone(), fixed(*v, 4), unit.clone()]);
+    }
+    md!(out);
+}
+
+fn point(out: &mut String, p: &DrivePointReport) {
+    let d = &p.point;
+    md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
+    md!(
+        out,
+        "{}: {} W in at the input, {} W out at the output, {} W lost, η = {}; the bearing losses settled in {} passes.\n",
+        d.flow.name(),
+        fixed(d.input_power, 3),
+        fixed(d.output_power, 3),
+        fixed(d.power_lost(), 3),
+        if d.both_ends_deliver { "0 (both ends deliver)".into() } else { format!("{} %", fixed(100.0 * d.efficiency, 4)) },
+        d.iterations
+    );
+    header(
+        out,
+        &[
+            "stage",
+            "driving",
+            "T driving (N·m)",
+            "T driven (N·m)",
+            "n driving (rpm)",
+            "F_t (N)",
+            "F_r (N)",
+            "F_a (N)",
+            "η_mesh (%)",
+            "mesh loss (W)",
+            "no-load (W)",
+        ],
+    );
+    for s in &d.stages {
+        row(
+            out,
+            &[
+                s.name.clone(),
+                s.driving.name().to_string(),
+                fixed(s.driving_torque, 4),
+                fixed(s.driven_torque, 4),
+                fixed(s.driving_speed * RPM, 2),
+                fixed(s.tangential_force, 2),
+                fixed(s.radial_force, 2),
+                fixed(s.axial_force, 2),
+                fixed(100.0 * s.mesh_efficiency, 4),
+                fixed(s.mesh_loss, 3),
+                fixed(s.no_load, 3),
+            ],
+        );
+    }
+    md!(out);
+    header(
+        out,
+        &[
+            "shaft",
+            "n (rpm, + ccw)",
+            "T received (N·m)",
+            "T passed (N·m)",
+            "P received (W)",
+            "P passed (W)",
+            "bearings (W)",
+            "seals (W)",
+            "gears no-load (W)",
+        ],
+    );
+    for s in &d.shafts {
+        let bearings: f64 = s.bearings.iter().map(|b| b.no_load + b.load).sum();
+        row(
+            out,
+            &[
+                s.name.clone(),
+                fixed(s.speed * RPM, 2),
+                fixed(s.received_torque, 4),
+                fixed(s.passed_torque, 4),
+                fixed(s.received_power, 3),
+                fixed(s.passed_power, 3),
+                fixed(0.0 + bearings, 3),
+                fixed(s.seals, 3),
+                fixed(s.gear_no_load, 3),
+            ],
+        );
+    }
+    md!(out);
+    header(
+        out,
+        &[
+            "shaft",
+            "place at (mm)",
+            "type × count",
+            "locating",
+            "F_r per bearing (N)",
+            "F_a per bearing (N)",
+            "P_0 (W)",
+            "P_1 (W)",
+        ],
+    );
+    for s in &d.shafts {
+        for b in &s.bearings {
+            row(
+                out,
+                &[
+                    s.name.clone(),
+                    fixed(b.position * 1e3, 2),
+                    format!("{} × {}", b.kind, b.count),
+                    if b.locating { "yes".into() } else { String::new() },
+                    fixed(b.radial_load, 2),
+                    fixed(b.axial_load, 2),
+                    fixed(b.no_load, 3),
+                    fixed(b.load, 3),
+                ],
+            );
+        }
+    }
+    md!(out);
+    header(out, &["shaft", "gear", "point x, y, z (mm)", "force F_x, F_y, F_z (N)"]);
+    for s in &d.shafts {
+        for l in &s.gear_loads {
+            row(
+                out,
+                &[
+                    s.name.clone(),
+                    format!(
+                        "{} of stage {}",
+                        l.member.name(),
+                        d.stages.get(l.stage).map_or(String::new(), |x| x.name.clone())
+                    ),
+                    l.point.iter().map(|x| fixed(x * 1e3, 3)).collect::<Vec<_>>().join(", "),
+                    l.force.iter().map(|x| fixed(*x, 2)).collect::<Vec<_>>().join(", "),
+                ],
+            );
+        }
+    }
+    md!(out);
+}
+
+fn model(out: &mut String) {
+    md!(out, "## How these numbers are found\n");
+    md!(out, "- **Kinematics**: the input turns counter-clockwise about +z (a given output speed is a magnitude); an external mesh reverses the sense, ω_wheel = −ω_pinion z_pinion/z_wheel.");
+    md!(out, "- **Power walk**: from the source (input in drive, output in coast) each shaft passes on what it receives less its own bearings, seals and the no-load parts of the stages whose pinion it carries; each stage passes on η_mesh times its driving gear's power, η_mesh = 1 − P_mesh/(T ω) of the law at the driving gear's torque, the driving gear in the pinion's role (the pair with roles swapped where the wheel drives). Given the sink's torque, the walk runs back from it.");
+    md!(out, "- **Mesh forces**: F_t = T/r_w, F_r = F_t tan α_wt, F_a = T tan β/r of the driving gear, at the contact point on the line of centres; the axial force on a right-hand driving gear turning counter-clockwise points along +z, and flips with the hand, the sense and on the driven gear.");
+    md!(out, "- **Statics**: each shaft a rigid beam on its two bearing places; five equations give the places' reactions (the axial force all at the locating place); a place's radial load per bearing is |(R_x, R_y)|/count.");
+    md!(out, "- **Fixed point**: the walk is repeated with the bearing loads of the previous pass until no driving torque moves by more than 1e-12 relative (the passes are reported).");
+}

@@ -1,0 +1,34 @@
+//! The files of a drive's report folder: report.md ([`markdown`]), report.json (the serde data),
+//! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off)
+//! and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
+//! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
+
+pub(crate) mod loss_map;
+pub(crate) mod markdown;
+pub(crate) mod power_flow;
+
+use crate::render::RenderedReport;
+use crate::report::drive::DriveReport;
+
+/// report.json of a drive: pretty, plain arrays on one line.
+pub fn render_drive_json(report: &DriveReport) -> String {
+    let pretty = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
+    let mut s = crate::render::inline_plain_arrays(&pretty);
+    s.push('\n');
+    s
+}
+
+/// Every file of a drive's report folder.
+pub fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
+    let mut files = vec![
+        ("report.md".to_string(), markdown::render_drive_markdown(report)),
+        ("report.json".to_string(), render_drive_json(report)),
+    ];
+    if let Some(svg) = power_flow::power_flow(report)? {
+        files.push((power_flow::FILE.to_string(), svg));
+    }
+    if !report.maps.is_empty() {
+        files.push((loss_map::FILE.to_string(), loss_map::loss_map(report)?));
+    }
+    Ok(RenderedReport { slug: report.slug.clone(), files })
+}

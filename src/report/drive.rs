@@ -1,0 +1,216 @@
+//! The report of a drive of several stages: what the drive is made of (stages, shafts, oil, laws),
+//! every operating point's [`DrivePoint`] (per law and formulation) with the readings it rests on,
+//! the loss map over the ends' torque × speed, and the findings. Serde data; the renderers read it.
+
+use serde::{Deserialize, Serialize};
+
+use super::finding::{Finding, Severity};
+use crate::drive::{DrivePoint, PowerFlow, ShaftEnd};
+use crate::evaluate::drive::{DriveEvaluation, DriveRow};
+use crate::model::{Scene, SceneDrive};
+
+/// A stage as the scene gives it, with the sizes its mesh reads.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct StageInputs {
+    pub name: String,
+    /// The shafts of [pinion, wheel] and the gears' `at` (mm).
+    pub shafts: [String; 2],
+    pub at_mm: [f64; 2],
+    pub teeth: [u32; 2],
+    /// z_wheel / z_pinion.
+    pub ratio: f64,
+    pub normal_module_mm: f64,
+    pub helix_angle_deg: f64,
+    /// The pinion's hand ("right", "left"; "" for spur).
+    pub pinion_hand: String,
+    pub direction_deg: f64,
+    pub centre_distance_mm: f64,
+    pub face_width_mm: f64,
+    pub working_pressure_angle_deg: f64,
+    pub contact_ratio: f64,
+    pub overlap_ratio: f64,
+    pub lubrication: String,
+}
+
+/// A shaft as the scene gives it.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ShaftInputs {
+    pub name: String,
+    /// "input", "output" or "".
+    pub role: String,
+    /// Each place: type, count, `at` (mm), whether it locates.
+    pub bearings: Vec<(String, usize, f64, bool)>,
+    /// Each seal: lip diameter (mm), count.
+    pub seals: Vec<(f64, usize)>,
+}
+
+/// One operating point, law and formulation.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DrivePointReport {
+    /// `T_out = 150 N*m, n_out = 500 rpm`: the values as given.
+    pub label: String,
+    pub law: String,
+    pub formulation: String,
+    pub point: DrivePoint,
+}
+
+/// The map over the ends' torque × speed, for one law and formulation: the total loss (W) and η.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveMapReport {
+    pub law: String,
+    pub formulation: String,
+    pub torque_at: ShaftEnd,
+    pub speed_at: ShaftEnd,
+    /// Torques (N·m) and speeds (rpm) of the grid.
+    pub torques: Vec<f64>,
+    pub speeds_rpm: Vec<f64>,
+    /// [torque][speed]: total loss (W) and η (0 where both ends deliver).
+    #[serde(with = "super::floats")]
+    pub loss: Vec<Vec<f64>>,
+    #[serde(with = "super::floats")]
+    pub efficiency: Vec<Vec<f64>>,
+    /// The largest passes of the fixed point over the grid.
+    pub most_passes: usize,
+}
+
+/// The report of a drive.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveReport {
+    pub title: String,
+    pub slug: String,
+    pub stages: Vec<StageInputs>,
+    pub shafts: Vec<ShaftInputs>,
+    /// ω_in/ω_out of the chain (signed: negative when the output turns the other way).
+    pub overall_ratio: f64,
+    /// The oil: temperature (°C), ν (mm²/s), ρ (kg/m³), η (mPa·s) as the losses read them.
+    pub oil: Vec<(String, f64, String)>,
+    pub laws: Vec<String>,
+    pub torque_at: ShaftEnd,
+    pub speed_at: ShaftEnd,
+    pub points: Vec<DrivePointReport>,
+    pub maps: Vec<DriveMapReport>,
+    pub findings: Vec<Finding>,
+}
+
+/// The report of an evaluated drive scene.
+pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) -> DriveReport {
+    let layout = &drive.layout;
+    let op = &scene.operating;
+    let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
+    let label = |r: &DriveRow| {
+        format!(
+            "T_{} = {} {}, n_{} = {} {}",
+            end(layout.operating.torque_at),
+            op.pinion_torque.written_values[r.torque_index],
+            op.pinion_torque.unit,
+            end(layout.operating.speed_at),
+            op.pinion_speed.written_values[r.speed_index],
+            op.pinion_speed.unit
+        )
+    };
+    let laws: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
+    let points: Vec<DrivePointReport> = eval
+        .rows
+        .iter()
+        .map(|r| DrivePointReport {
+            label: label(r),
+            law: laws[r.law_index].clone(),
+            formulation: r.formulation.name().to_string(),
+            point: r.point.clone(),
+        })
+        .collect();
+    let speeds = crate::drive::walk::shaft_speeds(layout, crate::drive::EndValue { at: ShaftEnd::Input, value: 1.0 });
+    let mut report = DriveReport {
+        title: scene.title.clone(),
+        slug: super::slug::slug(&scene.title),
+        stages: super::drive_inputs::stage_inputs(drive),
+        shafts: super::drive_inputs::shaft_inputs(layout),
+        overall_ratio: 1.0 / speeds[layout.output],
+        oil: super::drive_inputs::oil_rows(scene),
+        laws: laws.clone(),
+        torque_at: layout.operating.torque_at,
+        speed_at: layout.operating.speed_at,
+        findings: findings(layout, &points),
+        maps: maps(scene, eval, &laws),
+        points,
+    };
+    for path in super::non_finite::non_finite_paths(&report) {
+        report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
+    }
+    report
+}
+
+/// The maps, one per law and formulation.
+fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Vec<DriveMapReport> {
+    let (Some((t, s)), Some(ends)) = (&scene.analyses.efficiency_map, scene.analyses.map_ends) else {
+        return Vec::new();
+    };
+    let formulations = scene.analyses.efficiency.clone().unwrap_or_default();
+    let mut out = Vec::new();
+    for (law_index, law) in laws.iter().enumerate() {
+        for f in &formulations {
+            let cells = eval.map.iter().filter(|r| r.law_index == law_index && r.formulation == *f);
+            let mut loss = vec![vec![f64::NAN; s.values.len()]; t.values.len()];
+            let mut efficiency = loss.clone();
+            let mut most_passes = 0;
+            for c in cells {
+                loss[c.torque_index][c.speed_index] = c.point.power_lost();
+                efficiency[c.torque_index][c.speed_index] = c.point.efficiency;
+                most_passes = most_passes.max(c.point.iterations);
+            }
+            out.push(DriveMapReport {
+                law: law.clone(),
+                formulation: f.name().to_string(),
+                torque_at: ends.torque_at,
+                speed_at: ends.speed_at,
+                torques: t.values.iter().map(|x| x.value).collect(),
+                speeds_rpm: s.values.iter().map(|w| w.value * 30.0 / std::f64::consts::PI).collect(),
+                loss,
+                efficiency,
+                most_passes,
+            });
+        }
+    }
+    out
+}
+
+/// What the reader must know: a shaft whose axial force goes to its first place by default, points
+/// where both ends deliver, a fixed point that did not settle.
+fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Finding> {
+    let mut out = Vec::new();
+    for (j, shaft) in layout.shafts.iter().enumerate() {
+        let helical = layout.stages.iter().any(|s| s.hand.is_some() && s.member_on(j).is_some());
+        if helical && !shaft.locating_given && !shaft.bearings.is_empty() {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: format!(
+                    "shaft `{}`: no bearing says `locating`; the first place (at {} mm) takes the axial force of its helical gears",
+                    shaft.name,
+                    crate::numerics::rounding::fixed(shaft.bearings[0].position.unwrap_or(0.0) * 1e3, 2)
+                ),
+            });
+        }
+    }
+    for p in points.iter().filter(|p| p.point.both_ends_deliver) {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} ({}, {}): the {} does not cover the box's losses, so both ends deliver power; η is reported as 0",
+                p.label,
+                p.law,
+                p.formulation,
+                if p.point.flow == PowerFlow::Drive { "input" } else { "output" }
+            ),
+        });
+    }
+    if let Some(p) = points.iter().find(|p| p.point.iterations >= 100) {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{}: the fixed point of the bearing losses did not settle to 1e-12 in 100 passes",
+                p.label
+            ),
+        });
+    }
+    out
+}

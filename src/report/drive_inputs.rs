@@ -1,0 +1,98 @@
+//! The inputs of a drive's report: its stages with the sizes their meshes read, its shafts with
+//! their bearing places and seals, the oil as the losses read it.
+
+use super::drive::{ShaftInputs, StageInputs};
+use crate::drive::{Drive, Hand};
+use crate::model::{Scene, SceneDrive};
+
+pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
+    let layout = &drive.layout;
+    layout
+        .stages
+        .iter()
+        .zip(&drive.pairs)
+        .map(|(s, pair)| {
+            let g = pair.geometry().expect("lowering checked the pair");
+            StageInputs {
+                name: s.name.clone(),
+                shafts: s.places.map(|p| layout.shafts[p.shaft].name.clone()),
+                at_mm: s.places.map(|p| p.at * 1e3),
+                teeth: s.teeth,
+                ratio: f64::from(s.teeth[1]) / f64::from(s.teeth[0]),
+                normal_module_mm: g.module * 1e3,
+                helix_angle_deg: g.helix_angle.to_degrees(),
+                pinion_hand: match s.hand {
+                    Some(Hand::Right) => "right".into(),
+                    Some(Hand::Left) => "left".into(),
+                    None => String::new(),
+                },
+                direction_deg: s.direction.to_degrees(),
+                centre_distance_mm: g.center_distance * 1e3,
+                face_width_mm: g.face_width * 1e3,
+                working_pressure_angle_deg: g.operating_pressure_angle.to_degrees(),
+                contact_ratio: g.contact_ratio,
+                overlap_ratio: g.overlap_ratio,
+                lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), lubrication_words),
+            }
+        })
+        .collect()
+}
+
+fn lubrication_words(l: &crate::losses::Lubrication) -> String {
+    match *l {
+        crate::losses::Lubrication::Dip { immersion, axis_height, housing_width } => format!(
+            "dip: immersion {} / {} mm, axis height {} mm, housing width {} mm",
+            immersion[0] * 1e3,
+            immersion[1] * 1e3,
+            axis_height * 1e3,
+            housing_width * 1e3
+        ),
+        crate::losses::Lubrication::Injection { flow, jet_speed } => {
+            format!("injection: {} l/min at {} m/s", crate::numerics::rounding::sig(flow * 6e4), jet_speed)
+        }
+    }
+}
+
+pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
+    layout
+        .shafts
+        .iter()
+        .enumerate()
+        .map(|(j, s)| ShaftInputs {
+            name: s.name.clone(),
+            role: if j == layout.input {
+                "input"
+            } else if j == layout.output {
+                "output"
+            } else {
+                ""
+            }
+            .into(),
+            bearings: s
+                .bearings
+                .iter()
+                .enumerate()
+                .map(|(i, b)| (b.kind.name().to_string(), b.count, b.position.unwrap_or(0.0) * 1e3, i == s.locating))
+                .collect(),
+            seals: s.seals.iter().map(|x| (x.diameter * 1e3, x.count)).collect(),
+        })
+        .collect()
+}
+
+/// (what, value, unit) of the oil as the losses read it.
+pub(super) fn oil_rows(scene: &Scene) -> Vec<(String, f64, String)> {
+    let mut out = Vec::new();
+    if let Some(t) = &scene.operating.oil_temperature {
+        out.push(("oil temperature".into(), t.value.value - 273.15, "degC".into()));
+    }
+    if let Some(l) = &scene.lubricant {
+        out.push(("dynamic viscosity η".into(), l.dynamic_viscosity.value.value * 1e3, "mPa*s".into()));
+        if let Some(nu) = l.kinematic_viscosity_si() {
+            out.push(("kinematic viscosity ν".into(), nu * 1e6, "mm^2/s".into()));
+        }
+        if let Some(rho) = &l.density {
+            out.push(("density ρ".into(), rho.value.value, "kg/m^3".into()));
+        }
+    }
+    out
+}

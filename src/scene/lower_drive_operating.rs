@@ -1,0 +1,135 @@
+//! A drive's `operating` block and map: torques and speeds given at the input or at the output.
+//!
+//! ```text
+//! operating {
+//!     output_torque = [-500, 150, 1000] N*m    # or input_torque; negative: the output drives (coast)
+//!     output_speed  = [500, 1000] rpm          # or input_speed
+//!     oil_temperature = 80 degC
+//! }
+//! ```
+
+use super::ast::*;
+use super::fields::{call_fields, Fields};
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::drive::{DriveOperating, ShaftEnd};
+use crate::model::{AngularVelocity, Operating, Sweep, Torque, MAX_OPERATING_POINTS};
+
+const KEYS: &[&str] = &["input_torque", "output_torque", "input_speed", "output_speed", "oil_temperature"];
+
+pub(super) fn lower_drive_operating(
+    block: &Block,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(Operating, DriveOperating)> {
+    if let Some(key) = block.items.iter().map(Item::head).find(|k| k.text.starts_with("pinion_")) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::UnknownName,
+                key.span,
+                format!("`{}` names one pair's pinion; a drive is driven at its ends", key.text),
+            )
+            .hint("write `input_torque` or `output_torque`, and `input_speed` or `output_speed`"),
+        );
+        return None;
+    }
+    let f = Fields::read("the `operating` block", block.span, &block.items, KEYS, &[], &[], errors);
+    let (torque, torque_at) = at_one_end::<Torque>(&f, "torque", "[150, 1000] N*m", errors)?;
+    let (speed, speed_at) = at_one_end::<AngularVelocity>(&f, "speed", "[500, 1000] rpm", errors)?;
+    if let Some(bad) =
+        speed.values.iter().position(|w| w.value == 0.0 || (speed_at == ShaftEnd::Output && w.value < 0.0))
+    {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, speed.span, format!("speed {} cannot drive the box", speed.label(bad)))
+                .hint("give speeds above zero (an output speed is a magnitude; a negative input speed turns every shaft the other way)"),
+        );
+        return None;
+    }
+    let count = torque.values.len() * speed.values.len();
+    if count > MAX_OPERATING_POINTS {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                speed.span,
+                format!("{count} operating points, above the limit of {MAX_OPERATING_POINTS}"),
+            )
+            .hint("use fewer values"),
+        );
+        return None;
+    }
+    let (oil_temperature, oil_temperatures) = super::lower_operating::oil_temperatures(&f, errors);
+    if let Some(sweep) = &oil_temperatures {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                sweep.span,
+                "a drive runs at one oil temperature in this version",
+            )
+            .hint("write one `oil_temperature`; one scene a temperature compares them"),
+        );
+        return None;
+    }
+    let operating = Operating {
+        pinion_torque: torque,
+        pinion_speed: speed,
+        oil_temperature,
+        oil_temperatures: None,
+        detail_points: Vec::new(),
+        equilibrium: None,
+    };
+    Some((operating, DriveOperating { torque_at, speed_at }))
+}
+
+/// `input_<what>` or `output_<what>`, exactly one of them.
+fn at_one_end<Q: super::units::SiQuantity>(
+    f: &Fields,
+    what: &str,
+    example: &str,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(Sweep<Q>, ShaftEnd)> {
+    let (input, output) = (format!("input_{what}"), format!("output_{what}"));
+    match (f.values.get(input.as_str()), f.values.get(output.as_str())) {
+        (Some(_), Some((key, _))) => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    key.span,
+                    format!("the {what} is given at both the input and the output"),
+                )
+                .hint(format!("give `{input}` or `{output}`: the other follows from the drive")),
+            );
+            None
+        }
+        (Some(_), None) => f.sweep(&input, example, errors).map(|s| (s, ShaftEnd::Input)),
+        (None, Some(_)) => f.sweep(&output, example, errors).map(|s| (s, ShaftEnd::Output)),
+        (None, None) => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::MissingKey, f.span, format!("the `operating` block gives no {what}"))
+                    .hint(format!("add `{output} = {example}` (or `{input}`)")),
+            );
+            None
+        }
+    }
+}
+
+/// `efficiency_map(output_torque = -1000..1000 N*m count 41, output_speed = 10..1500 rpm count 30)`:
+/// torques of both signs (drive and coast halves), positive speeds.
+pub(super) fn lower_drive_map(
+    call: &Call,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(Sweep<Torque>, Sweep<AngularVelocity>, DriveOperating)> {
+    let mut items = Vec::new();
+    let f = call_fields(call, "`efficiency_map(...)`", &KEYS[..4], &mut items, errors);
+    let (t, torque_at) = at_one_end::<Torque>(&f, "torque", "-1000..1000 N*m count 41", errors)?;
+    let (s, speed_at) = at_one_end::<AngularVelocity>(&f, "speed", "10..1500 rpm count 30", errors)?;
+    let max = super::lower_gearbox::MAX_MAP_VALUES;
+    if !(2..=max).contains(&t.values.len())
+        || !(2..=max).contains(&s.values.len())
+        || s.values.iter().any(|w| w.value <= 0.0)
+    {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, call.span, format!("the map needs 2 to {max} torques and 2 to {max} positive speeds"))
+                .hint("write `efficiency_map(output_torque = -1000..1000 N*m count 41, output_speed = 10..1500 rpm count 30)`"),
+        );
+        return None;
+    }
+    Some((t, s, DriveOperating { torque_at, speed_at }))
+}

@@ -1,0 +1,172 @@
+//! A scene written with `stage` blocks lowered into a [`Scene`] with its [`SceneDrive`]: the
+//! stages (each pair checked as one pair is), the shafts, the drive put together and checked, the
+//! operating points at the drive's ends, the lubricant, friction laws and analyses as for one pair.
+//! A drive's report is its efficiency (and map): the analyses of one pair's contact, film and
+//! dynamics are refused here with a hint.
+
+use std::collections::BTreeMap;
+
+use super::ast::*;
+use super::fields::Fields;
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::model::*;
+
+/// The analyses of one pair that a drive does not give (yet).
+const PAIR_ONLY: &[&str] = &[
+    "friction_along_loa",
+    "film",
+    "contact",
+    "dynamics",
+    "stability_map",
+    "numerics",
+    "thermal_balance",
+    "duty_cycle",
+    "transmission_error",
+];
+/// Scene blocks of one pair only.
+const PAIR_BLOCKS: &[&str] = &["dynamics", "duty_cycle"];
+
+pub(super) fn lower_drive_scene(
+    ast: &SceneAst,
+    top: &Fields,
+    materials: &BTreeMap<&str, Material>,
+    singles: &BTreeMap<&str, &Block>,
+    stage_blocks: &[&Block],
+    mut errors: Vec<Diagnostic>,
+) -> Result<Scene, Vec<Diagnostic>> {
+    let errors = &mut errors;
+    let stages: Vec<_> =
+        stage_blocks.iter().filter_map(|b| super::lower_stage::lower_stage(b, materials, errors)).collect();
+    for (i, s) in stages.iter().enumerate() {
+        if stages[..i].iter().any(|t| t.name.text == s.name.text) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    s.name.span,
+                    format!("two stages are named `{}`", s.name.text),
+                )
+                .hint("give each stage a name of its own"),
+            );
+        }
+    }
+    for kind in PAIR_BLOCKS {
+        if let Some(b) = singles.get(kind) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::UnknownName,
+                    b.kind.span,
+                    format!("a `{kind}` block is for one pair; a drive of stages does not take it in this version"),
+                )
+                .hint("leave it out, or study the pair alone in a scene with a `gears` block"),
+            );
+        }
+    }
+    let operating =
+        singles.get("operating").and_then(|b| super::lower_drive_operating::lower_drive_operating(b, errors));
+    let gearbox_block = singles.get("gearbox");
+    let shafts = gearbox_block.and_then(|b| super::lower_shafts::lower_shafts(b, errors));
+    if gearbox_block.is_none() {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                ast.title_span,
+                "a drive of stages needs a `gearbox` block with its shafts",
+            )
+            .hint("add `gearbox { shaft motor { input ... } shaft output { output ... } }`"),
+        );
+    }
+    let housing = gearbox_block
+        .and_then(|g| {
+            g.items.iter().find_map(|i| match i {
+                Item::Block(b) if b.kind.text == "housing" => Some(b),
+                _ => None,
+            })
+        })
+        .and_then(|b| super::lower_thermal::lower_housing(b, errors));
+    let lubricant =
+        super::lower::scene_lubricant(singles, top, operating.as_ref().map(|o| &o.0), housing.as_ref(), errors);
+    let friction = singles.get("friction").map_or_else(Vec::new, |b| super::lower_friction::lower_friction(b, errors));
+    let analyses =
+        singles.get("analyses").map_or_else(Analyses::default, |b| super::lower::lower_analyses(b, true, errors));
+    check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
+    let lubricant_failed =
+        lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));
+    if !lubricant_failed {
+        for s in &stages {
+            super::lower_friction::check_friction_needs(&friction, &s.pair, lubricant.as_ref(), errors);
+        }
+    }
+    let (Some((operating, ends)), Some(shafts), Some(gearbox)) = (operating, shafts, gearbox_block) else {
+        return Err(std::mem::take(errors));
+    };
+    check_oil_needs(&shafts, &stages, lubricant.as_ref(), lubricant_failed, gearbox.kind.span, errors);
+    let layout = super::lower_drive::build_drive(&stages, shafts, ends, gearbox.kind.span, errors);
+    match layout {
+        Some(layout) if errors.is_empty() => Ok(Scene {
+            title: ast.title.clone(),
+            gears: stages[0].pair.clone(),
+            lubricant,
+            operating,
+            friction,
+            dynamics: None,
+            gearbox: None,
+            housing,
+            duty_cycle: None,
+            analyses,
+            drive: Some(SceneDrive { layout, pairs: stages.into_iter().map(|s| s.pair).collect() }),
+        }),
+        _ => Err(std::mem::take(errors)),
+    }
+}
+
+/// A drive's analyses: `efficiency` (and its map), which need friction laws; the analyses of one
+/// pair are refused with a hint.
+fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: bool, errors: &mut Vec<Diagnostic>) {
+    for item in block.map_or(&[][..], |b| &b.items[..]) {
+        let name = item.head();
+        if PAIR_ONLY.contains(&name.text.as_str()) {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("`{}` is an analysis of one pair; a drive of stages gives `efficiency` and `efficiency_map` in this version", name.text))
+                    .hint("study one stage's pair alone in a scene with a `gears` block for its contact, film or dynamics"),
+            );
+        }
+    }
+    match (a.efficiency.is_some(), a.friction_span) {
+        (false, _) => errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                block.map_or(title, |b| b.kind.span),
+                "a drive's report is its efficiency: the scene asks for none",
+            )
+            .hint("add `analyses { efficiency(formulations = [external]) }`"),
+        ),
+        (true, Some(span)) if no_laws => errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                span,
+                "`efficiency` needs friction laws, and the scene lists none",
+            )
+            .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
+        ),
+        _ => {}
+    }
+}
+
+/// Bearings and injection need the oil's kinematic viscosity and density.
+fn check_oil_needs(
+    shafts: &[super::lower_shafts::ShaftDecl],
+    stages: &[super::lower_stage::StageDecl],
+    lubricant: Option<&Lubricant>,
+    lubricant_failed: bool,
+    gearbox: Span,
+    errors: &mut Vec<Diagnostic>,
+) {
+    let needs = shafts.iter().any(|s| !s.bearings.is_empty())
+        || stages.iter().any(|s| matches!(s.lubrication, Some(crate::losses::Lubrication::Injection { .. })));
+    if needs && !lubricant_failed && lubricant.and_then(|l| l.kinematic_viscosity_si()).is_none() {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, gearbox, "bearing and injection losses need the oil's kinematic viscosity and density")
+                .hint("give the lubricant by grade or by `nu_40`, `nu_100` and `density_15`, with `oil_temperature` in `operating`"),
+        );
+    }
+}

@@ -1,0 +1,188 @@
+//! A `stage` block of a drive: its pair (a `gears` block whose pinion and wheel also say on which
+//! `shaft` and `at` which axial coordinate they sit, and may say their `hand`), its direction and
+//! its lubrication.
+//!
+//! ```text
+//! stage "first" {
+//!     direction = 0 deg
+//!     gears {
+//!         module = 1.5177 mm  pressure_angle = 20 deg  helix_angle = 23.4 deg  hand = right  face_width = 35.44 mm
+//!         pinion { teeth = 23  shaft = motor  at = 55.72 mm  material = steel }
+//!         wheel  { teeth = 68  shaft = lay    at = 55.72 mm  material = steel }
+//!     }
+//!     lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)
+//! }
+//! ```
+
+use std::collections::BTreeMap;
+
+use super::ast::*;
+use super::fields::Fields;
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::drive::Hand;
+use crate::losses::Lubrication;
+use crate::model::{Angle, GearPair, Given, Length, Material};
+
+/// The keys a stage's pinion and wheel take beyond a pair's gear.
+const PLACE_KEYS: &[&str] = &["shaft", "at", "hand"];
+
+/// A stage as written: its pair, where its gears sit (shaft names as written), the pinion's hand.
+pub(super) struct StageDecl {
+    pub name: Name,
+    pub pair: GearPair,
+    /// [pinion, wheel]: the shaft's name and the face mid-plane on that shaft (m).
+    pub places: [(Name, f64); 2],
+    pub hand: Option<Hand>,
+    /// φ (rad) and where it was written.
+    pub direction: Option<Given<Angle>>,
+    pub lubrication: Option<Lubrication>,
+}
+
+pub(super) fn lower_stage(
+    block: &Block,
+    materials: &BTreeMap<&str, Material>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<StageDecl> {
+    let Some(name) = block.label.clone() else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "a stage needs a name")
+                .hint("write `stage \"first\" { ... }`"),
+        );
+        return None;
+    };
+    let what = format!("stage `{}`", name.text);
+    let f = Fields::read(&what, block.span, &block.items, &["direction", "lubrication"], &["gears"], &[], errors);
+    let direction: Option<Given<Angle>> = f.optional("direction", errors);
+    let lubrication = f.values.get("lubrication").and_then(|(_, v)| super::lower_gearbox::lower_lubrication(v, errors));
+    let Some(gears) = f.blocks.iter().find(|b| b.kind.text == "gears") else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, format!("{what} has no `gears` block")).hint(
+                "add `gears { module = 2 mm ... pinion { teeth = 23  shaft = motor  at = 50 mm } wheel { ... } }`",
+            ),
+        );
+        return None;
+    };
+    let (pair_block, placed) = split_places(gears);
+    let pair = super::lower_gears::lower_gears(&pair_block, materials, errors);
+    let pinion = lower_place(&placed[0], "pinion", gears, errors);
+    let wheel = lower_place(&placed[1], "wheel", gears, errors);
+    let (pair, (p_shaft, p_at, p_hand), (w_shaft, w_at, w_hand)) = (pair?, pinion?, wheel?);
+    let hand = stage_hand(&pair, &pair_block, p_hand, w_hand, errors)?;
+    super::lower_gearbox::check_immersion(lubrication.as_ref(), &pair, super::lower::lubrication_span(block), errors);
+    if pair.load_sharing == crate::model::LoadSharing::Stiffness {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                pair_block.kind.span,
+                "`load_sharing = stiffness` is not available in a drive's stage in this version",
+            )
+            .hint("leave `load_sharing` out (equal sharing), or study the pair alone in a scene with a `gears` block"),
+        );
+        return None;
+    }
+    Some(StageDecl { name, pair, places: [(p_shaft, p_at), (w_shaft, w_at)], hand, direction, lubrication })
+}
+
+/// The `gears` block without the place keys of its pinion and wheel, and those keys of each.
+fn split_places(gears: &Block) -> (Block, [Vec<Item>; 2]) {
+    let mut placed = [Vec::new(), Vec::new()];
+    let mut block = gears.clone();
+    for item in &mut block.items {
+        if let Item::Block(b) = item {
+            let Some(m) = ["pinion", "wheel"].iter().position(|n| *n == b.kind.text) else { continue };
+            let (keep, take): (Vec<Item>, Vec<Item>) = b
+                .items
+                .drain(..)
+                .partition(|i| !matches!(i, Item::Assignment { key, .. } if PLACE_KEYS.contains(&key.text.as_str())));
+            b.items = keep;
+            placed[m].extend(take);
+        }
+    }
+    (block, placed)
+}
+
+/// A hand as written, with where.
+type HandWritten = (Hand, Span);
+
+/// A gear's shaft name, `at` (m) and hand.
+fn lower_place(
+    items: &[Item],
+    member: &str,
+    gears: &Block,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<(Name, f64, Option<HandWritten>)> {
+    let span = gears
+        .items
+        .iter()
+        .find_map(|i| match i {
+            Item::Block(b) if b.kind.text == member => Some(b.kind.span),
+            _ => None,
+        })
+        .unwrap_or(gears.kind.span);
+    let f = Fields::read(format!("the stage's `{member}`"), span, items, PLACE_KEYS, &[], &[], errors);
+    if !f.has("shaft") {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                span,
+                format!("the stage's `{member}` does not say its `shaft`"),
+            )
+            .hint(format!("add `shaft = motor` to `{member}`: the name of a shaft declared in `gearbox`")),
+        );
+    }
+    let shaft = f.name("shaft", &[], errors).cloned();
+    let at: Option<Given<Length>> = f.required("at", "55.72 mm", errors);
+    let hand = f
+        .name("hand", &["left", "right"], errors)
+        .map(|n| (if n.text == "left" { Hand::Left } else { Hand::Right }, n.span));
+    Some((shaft?, at?.value.value, hand))
+}
+
+/// The pinion's hand from the pair's `hand` (the pinion's) or the gears' own; mating gears of an
+/// external pair have opposite hands. None for a spur stage.
+fn stage_hand(
+    pair: &GearPair,
+    pair_block: &Block,
+    pinion: Option<(Hand, Span)>,
+    wheel: Option<(Hand, Span)>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Option<Hand>> {
+    let helical = pair.helix_angle.as_ref().is_some_and(|b| b.value.value != 0.0);
+    let given = pair.hand.as_deref().map(|h| if h == "left" { Hand::Left } else { Hand::Right });
+    let other = |h: Hand| if h == Hand::Left { Hand::Right } else { Hand::Left };
+    if let (Some((w, span)), Some(p)) = (wheel, pinion.map(|p| p.0).or(given)) {
+        if w == p {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, span, "the pinion and the wheel of this stage have the same hand")
+                    .hint("mating gears on parallel shafts have opposite hands: a right-hand pinion meshes with a left-hand wheel"),
+            );
+            return None;
+        }
+    }
+    if let (Some((p, span)), Some(g)) = (pinion, given) {
+        if p != g {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    span,
+                    "the pinion's `hand` contradicts the pair's `hand`",
+                )
+                .hint("the pair's `hand` is the pinion's: give it once"),
+            );
+            return None;
+        }
+    }
+    let hand = pinion.map(|p| p.0).or(given).or(wheel.map(|w| other(w.0)));
+    if helical && hand.is_none() {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                pair_block.kind.span,
+                "a helical stage needs its `hand`: the axial forces on the shafts follow it",
+            )
+            .hint("add `hand = right` (the pinion's hand) to the stage's `gears` block"),
+        );
+        return None;
+    }
+    Some(hand.filter(|_| helical))
+}
