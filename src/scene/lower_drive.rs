@@ -17,8 +17,11 @@ use crate::drive::{Drive, DriveOperating, GearPlace, Shaft, Stage};
 /// How far a stage's centre distance may differ from the distance of its shafts' positions (m).
 const CENTRE_TOLERANCE: f64 = 1e-6;
 
+/// The drive of `stages` on `shafts`; `all_stages` says whether every stage block lowered (else the
+/// checks that need every stage, a shaft without a gear or the chain, are left to the next run).
 pub(super) fn build_drive(
     stages: &[StageDecl],
+    all_stages: bool,
     shafts: Vec<ShaftDecl>,
     operating: DriveOperating,
     gearbox: Span,
@@ -36,7 +39,11 @@ pub(super) fn build_drive(
                 let names: Vec<&str> = index.keys().copied().collect();
                 let hint = match nearest(&name.text, names.iter().copied()) {
                     Some(n) => format!("did you mean `{n}`? Or declare `shaft {} {{ ... }}` in `gearbox`", name.text),
-                    None => format!("declare `shaft {} {{ ... }}` in the `gearbox` block", name.text),
+                    None => format!(
+                        "the gearbox declares {}; or declare `shaft {} {{ ... }}` in it",
+                        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
+                        name.text
+                    ),
                 };
                 errors.push(
                     Diagnostic::new(
@@ -78,6 +85,9 @@ pub(super) fn build_drive(
     check_loops(stages, &built, shafts.len(), errors)?;
     check_layout(stages, &built, &shafts, errors);
     let (input, output) = ends(&shafts, gearbox, errors)?;
+    if !all_stages {
+        return None;
+    }
     for (j, shaft) in shafts.iter().enumerate() {
         if !built.iter().any(|s| s.member_on(j).is_some()) {
             errors.push(

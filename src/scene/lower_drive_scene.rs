@@ -100,7 +100,14 @@ pub(super) fn lower_drive_scene(
         return Err(std::mem::take(errors));
     };
     check_oil_needs(&shafts, &stages, lubricant.as_ref(), lubricant_failed, gearbox.kind.span, errors);
-    let layout = super::lower_drive::build_drive(&stages, shafts, ends, gearbox.kind.span, errors);
+    let layout = super::lower_drive::build_drive(
+        &stages,
+        stages.len() == stage_blocks.len(),
+        shafts,
+        ends,
+        gearbox.kind.span,
+        errors,
+    );
     match layout {
         Some(layout) if errors.is_empty() => Ok(Scene {
             title: ast.title.clone(),

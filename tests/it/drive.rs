@@ -72,39 +72,211 @@ fn the_fixed_point_settles_in_a_few_passes() {
     }
 }
 
+/// The EV reducer's text with `edits` (find, replace) applied.
+fn ev_with(edits: &[(&str, &str)]) -> gearloss::Scene {
+    let mut text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    for (a, b) in edits {
+        assert!(text.contains(a), "{a}");
+        text = text.replacen(a, b, 1);
+    }
+    gearloss::check("ev.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)))
+}
+
+/// Drive and coast at the same |T| (±500 N·m at the output): coast has every stage driven by its
+/// wheel, drive by its pinion; the tangential forces reverse (the axial ones with them), so the
+/// bearing loads differ (some place by more than 10 %), and so do the totals; each balances.
 #[test]
-#[ignore]
-fn print_ev_reducer() {
+fn drive_and_coast_at_the_same_torque() {
+    let both = points(&ev_with(&[("output_torque = [-500, 150, 1000] N*m", "output_torque = [-500, 500] N*m")]));
+    let (coast, drive) = (&both[0], &both[2]);
+    assert_eq!((coast.flow, drive.flow), (PowerFlow::Coast, PowerFlow::Drive));
+    assert!(coast.stages.iter().all(|s| s.driving == gearloss::drive::Member::Wheel));
+    assert!(drive.stages.iter().all(|s| s.driving == gearloss::drive::Member::Pinion));
+    let radial =
+        |p: &DrivePoint| p.shafts.iter().flat_map(|s| s.bearings.iter().map(|b| b.radial_load)).collect::<Vec<_>>();
+    let most = radial(coast).iter().zip(radial(drive)).map(|(c, d)| (c - d).abs() / d).fold(0.0, f64::max);
+    assert!(most > 0.10, "bearing loads differ by at most {most}");
+    // H_V is symmetric in ε₁, ε₂ and the law's μ reads the load and speed: the efficiencies are
+    // close, not equal (the bearing losses differ).
+    let gap = (coast.efficiency - drive.efficiency).abs();
+    assert!(gap > 0.0 && gap < 0.01, "{gap}");
+    assert!((coast.output_torque + drive.output_torque).abs() < 1e-9);
+}
+
+/// With no bearings, seals, lubrication or friction at all, drive and coast at the same |T| give
+/// η = 1 and P_in = P_out to 1e-12.
+#[test]
+fn a_box_without_losses_passes_all_its_power_both_ways() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    let start = text.find("    gearbox {").unwrap();
+    let end = text.find("    operating {").unwrap();
+    let text = format!(
+        "{}    gearbox {{ shaft motor {{ input }} shaft lay {{ }} shaft output {{ output }} }}\n{}",
+        &text[..start],
+        &text[end..]
+    )
+    .replace("friction { iso_14179_2(x_l = 0.75) }", "friction { coulomb(mu = 0) }")
+    .replace("        lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)\n", "")
+    .replace("output_torque = [-500, 150, 1000] N*m", "output_torque = [-500, 500] N*m")
+    .replace("efficiency_map(output_torque = -1000..1000 N*m count 41, output_speed = 10..1500 rpm count 30)", "");
+    let scene = gearloss::check("lossless.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let p = points(&scene);
+    assert_eq!(p.len(), 4);
+    for d in &p {
+        assert!((d.efficiency - 1.0).abs() < 1e-12, "{}", d.efficiency);
+        assert!((d.input_power - d.output_power).abs() <= 1e-12 * d.input_power.abs());
+        assert!((d.output_torque.abs() - 500.0).abs() < 1e-9);
+        assert_eq!(d.iterations, 2, "nothing moves after the first pass");
+    }
+    let (coast, drive) = (&p[0], &p[2]);
+    assert_eq!(coast.flow, PowerFlow::Coast);
+    assert!((coast.input_torque + drive.input_torque).abs() <= 1e-12 * drive.input_torque);
+}
+
+/// Given at the output or at the input, the same point: solving with the input torque a given
+/// output torque needed gives that output torque back (1e-9 relative), drive and coast.
+#[test]
+fn input_or_output_given_is_the_same_point() {
     for p in points(&ev_reducer()) {
-        println!(
-            "{} T_in {:.4} n_in {:.3} P_in {:.3} T_out {:.4} P_out {:.3} eta {:.6} it {} loss {:?}",
-            p.flow.name(),
-            p.input_torque,
-            p.input_speed * 30.0 / std::f64::consts::PI,
-            p.input_power,
-            p.output_torque,
-            p.output_power,
-            p.efficiency,
-            p.iterations,
-            p.losses
+        let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+        let text = text
+            .replace("output_torque = [-500, 150, 1000] N*m", &format!("input_torque = {:?} N*m", p.input_torque))
+            .replace("output_speed  = [500, 1000] rpm", &format!("input_speed = {:?} rad/s", p.input_speed));
+        let scene = gearloss::check("in.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
+        let q = &points(&scene)[0];
+        assert_eq!(q.flow, p.flow);
+        assert!(
+            (q.output_torque - p.output_torque).abs() <= 1e-9 * p.output_torque.abs(),
+            "{} vs {}",
+            q.output_torque,
+            p.output_torque
         );
-        for s in &p.stages {
-            println!(
-                "  stage {} {:?} Td {:.4} Tn {:.4} eta {:.6} loss {:.3} noload {:.3}",
-                s.name, s.driving, s.driving_torque, s.driven_torque, s.mesh_efficiency, s.mesh_loss, s.no_load
-            );
+        assert!((q.power_lost() - p.power_lost()).abs() <= 1e-9 * p.input_power.abs());
+    }
+}
+
+/// The axial sense: a right-hand driving gear turning counter-clockwise about +z is pushed along
+/// +z; the sign flips with the hand, with the sense of rotation and on the driven gear.
+#[test]
+fn axial_force_follows_hand_and_rotation() {
+    use gearloss::drive::kinematics::StageKindId;
+    use gearloss::drive::{mesh_forces, GearPlace, Hand, Member, MeshForceSizes, Stage};
+    let sizes = MeshForceSizes {
+        working_pitch_radius: [0.02, 0.05],
+        pitch_radius: [0.02, 0.05],
+        working_pressure_angle: 0.36,
+        helix_angle: 0.3,
+        face_width: 0.03,
+    };
+    let stage = |hand| Stage {
+        name: "s".into(),
+        kind: StageKindId::Parallel,
+        places: [GearPlace { shaft: 0, at: 0.0 }, GearPlace { shaft: 1, at: 0.0 }],
+        teeth: [20, 50],
+        hand: Some(hand),
+        direction: 0.7,
+        lubrication: None,
+    };
+    let f_a = 100.0 * 0.3f64.tan() / 0.02;
+    for (hand, omega, driving, on_driving) in [
+        (Hand::Right, 1.0, Member::Pinion, f_a),
+        (Hand::Left, 1.0, Member::Pinion, -f_a),
+        (Hand::Right, -1.0, Member::Pinion, -f_a),
+        (Hand::Left, -1.0, Member::Pinion, f_a),
+        // The wheel driving: its own hand is the other, its radius the wheel's.
+        (Hand::Right, 1.0, Member::Wheel, -100.0 * 0.3f64.tan() / 0.05),
+    ] {
+        let loads = mesh_forces((0, &stage(hand)), &sizes, driving, 100.0, omega);
+        let d = driving.index();
+        assert!((loads[d].force[2] - on_driving).abs() < 1e-9, "{hand:?} {omega} {driving:?}");
+        assert_eq!(loads[1 - d].force, loads[d].force.map(|x| -x));
+        // The moment on the driving gear opposes its rotation and is its torque.
+        assert!((loads[d].torque() + omega.signum() * 100.0).abs() < 1e-9);
+    }
+}
+
+/// A one-stage drive written with a stage gives the loss budget of the same pair written with
+/// `gears` (specs/helical_gearbox.gear), at the pinion torque the drive puts into the mesh: each
+/// bearing place's radial and axial load and its two losses, the seals, the gears' no-load loss
+/// and the mesh loss, to 1e-12 relative.
+#[test]
+fn one_stage_drive_is_the_pair_budget() {
+    use gearloss::geometry::contact::Sharing;
+    let pair = crate::scene(&crate::root().join("specs/helical_gearbox.gear"));
+    let drive = gearloss::check("one_stage.gear", ONE_STAGE).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let g = pair.gears.geometry().unwrap();
+    let tribology = pair.mesh().tribology(pair.mesh().reduced_modulus());
+    let oil = pair.mesh().budget_oil(&tribology);
+    let close = |a: f64, b: f64, what: &str| {
+        assert!((a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1e-9), "{what}: {a} vs {b}")
+    };
+    for p in points(&drive) {
+        let stage = &p.stages[0];
+        let (t, w) = (stage.driving_torque, stage.driving_speed);
+        let budget = gearloss::losses::loss_budget(pair.gearbox.as_ref().unwrap(), &g, t, w, &oil);
+        let places: Vec<_> = p.shafts.iter().flat_map(|s| &s.bearings).collect();
+        assert_eq!(places.len(), budget.bearings.len());
+        for (d, b) in places.iter().zip(&budget.bearings) {
+            close(d.radial_load, b.loads.radial_load, "radial load");
+            close(d.axial_load, b.loads.axial_load, "axial load");
+            close(d.no_load, b.loads.no_load, "P_0");
+            close(d.load, b.loads.load.unwrap(), "P_1");
         }
-        for s in &p.shafts {
-            println!(
-                "  shaft {} w {:.3} in {:.4} out {:.4} seals {:.3}",
-                s.name, s.speed, s.received_torque, s.passed_torque, s.seals
-            );
-            for b in &s.bearings {
-                println!(
-                    "    at {:.4} Fr {:.2} Fa {:.2} P0 {:.3} P1 {:.3}",
-                    b.position, b.radial_load, b.axial_load, b.no_load, b.load
-                );
-            }
+        let column = |c| budget.parts.iter().find(|(k, _)| *k == c).unwrap().1;
+        close(p.losses.seals, column(gearloss::losses::parts::LossColumn::Seals), "seals");
+        close(p.losses.gear_no_load, column(gearloss::losses::parts::LossColumn::GearNoLoad), "no-load");
+        let state = gearloss::geometry::OperatingState { pinion_torque: t, pinion_speed: w };
+        let ctx = gearloss::friction::LawContext { geometry: &g, state, tribology, sharing: Sharing::Equal };
+        let law = pair.friction[0].build(&ctx).unwrap();
+        let h_v = gearloss::efficiency::ohlendorf_loss_factor(&ctx);
+        let mesh =
+            gearloss::efficiency::charged_mesh_loss(&ctx, &*law, gearloss::efficiency::Formulation::External, h_v);
+        close(stage.mesh_loss, mesh, "mesh loss");
+    }
+}
+
+/// specs/helical_gearbox.gear written as a one-stage drive: the same pair, bearings, seals and
+/// oil; the gear at 0 on both shafts (today's `at` is from the mesh mid-plane), a right-hand pinion
+/// turning counter-clockwise so that its axial force points to +at as today's reading has it.
+const ONE_STAGE: &str = r#"scene "one stage" {
+    material steel { youngs_modulus = 210 GPa  poisson_ratio = 0.3 }
+    lubricant = iso_vg(150, pao)
+    stage "only" {
+        gears {
+            module = 3 mm  pressure_angle = 20 deg  helix_angle = 15 deg  hand = right  face_width = 30 mm
+            pinion { teeth = 23  profile_shift = 0.25  shaft = pinion_shaft  at = 0 mm  material = steel  roughness_ra = 0.4 um }
+            wheel  { teeth = 37  profile_shift = 0.10  shaft = wheel_shaft   at = 0 mm  material = steel  roughness_ra = 0.4 um }
         }
+        lubrication = dip(pinion_immersion = 0 mm, wheel_immersion = 25 mm, axis_height = 120 mm, housing_width = 120 mm)
+    }
+    gearbox {
+        shaft pinion_shaft { input
+            bearing(type = tapered_roller, bore = 30 mm, outside = 62 mm, y = 1.6, at = -45 mm, locating)
+            bearing(type = tapered_roller, bore = 30 mm, outside = 62 mm, y = 1.6, at = 45 mm)
+            seal(diameter = 30 mm) }
+        shaft wheel_shaft { output
+            bearing(type = deep_groove_ball, bore = 40 mm, outside = 80 mm, static_load_rating = 19 kN, at = -50 mm, locating)
+            bearing(type = cylindrical_roller, bore = 40 mm, outside = 80 mm, at = 70 mm)
+            seal(diameter = 40 mm) }
+    }
+    operating { input_torque = [100, 400] N*m  input_speed = [1000, 3000] rpm  oil_temperature = 70 degC }
+    friction { iso_14179_2 }
+    analyses { efficiency(formulations = [external]) }
+}"#;
+
+/// Stage kinds: each row names its file in `src/drive/kinematics/`, each entry file has a row, every
+/// row sits at its identity's index.
+#[test]
+fn stage_kinds_one_file_one_row() {
+    use gearloss::drive::kinematics::STAGE_KINDS;
+    let files: std::collections::BTreeSet<String> = std::fs::read_dir(crate::root().join("src/drive/kinematics"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !["mod.rs", "catalog.rs", "kind_id.rs", "stage_kinematics.rs"].contains(&n.as_str()))
+        .collect();
+    let rows: std::collections::BTreeSet<String> = STAGE_KINDS.iter().map(|k| k.file.to_string()).collect();
+    assert_eq!(files, rows, "files in src/drive/kinematics/ and rows of STAGE_KINDS differ");
+    for (i, k) in STAGE_KINDS.iter().enumerate() {
+        assert_eq!(k.id as usize, i, "{}", k.name);
     }
 }
