@@ -104,6 +104,8 @@ pub struct DriveRow {
 pub struct DriveEvaluation {
     pub rows: Vec<DriveRow>,
     pub map: Vec<DriveRow>,
+    /// The thermal balance of every row, when the scene asks for it.
+    pub balances: Vec<super::drive_thermal::DriveBalanceRow>,
 }
 
 /// What every point of a drive reads.
@@ -168,5 +170,9 @@ pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
         }
         _ => Vec::new(),
     };
-    DriveEvaluation { rows, map }
+    let balances = match (&scene.housing, scene.analyses.thermal_balance) {
+        (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
+        _ => Vec::new(),
+    };
+    DriveEvaluation { rows, map, balances }
 }

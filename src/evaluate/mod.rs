@@ -9,6 +9,7 @@ pub(crate) mod cases;
 pub(crate) mod contact_curves;
 pub(crate) mod details;
 pub mod drive;
+pub mod drive_thermal;
 pub(crate) mod dynamics;
 pub(crate) mod evaluation;
 pub(crate) mod first_balance;

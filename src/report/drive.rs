@@ -73,6 +73,23 @@ pub struct DriveMapReport {
     pub most_passes: usize,
 }
 
+/// The thermal balance of one operating point, law and formulation (one sump).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveBalanceReport {
+    pub label: String,
+    pub law: String,
+    pub formulation: String,
+    /// θ* (°C), P_V(θ*) = P_Q(θ*) (W); None (left out) without a balance up to 200 °C.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub loss: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dissipation: Option<f64>,
+    /// "ok", "above the limit" or "no balance up to 200 °C", in words.
+    pub status: String,
+}
+
 /// The report of a drive.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DriveReport {
@@ -89,6 +106,11 @@ pub struct DriveReport {
     pub speed_at: ShaftEnd,
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
+    /// The housing as a thermal node (what, value, unit) and each point's balance.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub housing: Vec<(String, f64, String)>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub thermal: Vec<DriveBalanceReport>,
     pub findings: Vec<Finding>,
 }
 
@@ -132,8 +154,36 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         speed_at: layout.operating.speed_at,
         findings: findings(layout, &points),
         maps: maps(scene, eval, &laws),
+        housing: scene
+            .housing
+            .as_ref()
+            .filter(|_| !eval.balances.is_empty())
+            .map_or_else(Vec::new, super::drive_inputs::housing_rows),
+        thermal: eval
+            .balances
+            .iter()
+            .map(|b| DriveBalanceReport {
+                label: points
+                    .iter()
+                    .zip(&eval.rows)
+                    .find(|(_, r)| (r.torque_index, r.speed_index) == (b.torque_index, b.speed_index))
+                    .map_or_else(String::new, |(p, _)| p.label.clone()),
+                law: laws[b.law_index].clone(),
+                formulation: b.formulation.name().to_string(),
+                temperature_c: b.balance.temperature.map(|t| t - 273.15),
+                loss: b.loss,
+                dissipation: b.dissipation,
+                status: b.balance.status.words().to_string(),
+            })
+            .collect(),
         points,
     };
+    for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
+        report.findings.push(Finding {
+            severity: Severity::Warning,
+            message: format!("{} ({}, {}): the sump {}", b.label, b.law, b.formulation, b.status),
+        });
+    }
     for path in super::non_finite::non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }

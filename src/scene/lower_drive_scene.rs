@@ -1,8 +1,8 @@
 //! A scene written with `stage` blocks lowered into a [`Scene`] with its [`SceneDrive`]: the
 //! stages (each pair checked as one pair is), the shafts, the drive put together and checked, the
 //! operating points at the drive's ends, the lubricant, friction laws and analyses as for one pair.
-//! A drive's report is its efficiency (and map): the analyses of one pair's contact, film and
-//! dynamics are refused here with a hint.
+//! A drive's report is its efficiency (with its map and thermal balance): the analyses of one
+//! pair's contact, film and dynamics, and duty cycles, are refused here with a hint.
 
 use std::collections::BTreeMap;
 
@@ -19,7 +19,6 @@ const PAIR_ONLY: &[&str] = &[
     "dynamics",
     "stability_map",
     "numerics",
-    "thermal_balance",
     "duty_cycle",
     "transmission_error",
 ];
@@ -133,7 +132,7 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
         let name = item.head();
         if PAIR_ONLY.contains(&name.text.as_str()) {
             errors.push(
-                Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("`{}` is an analysis of one pair; a drive of stages gives `efficiency` and `efficiency_map` in this version", name.text))
+                Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("`{}` is an analysis of one pair; a drive of stages gives `efficiency`, `efficiency_map` and `thermal_balance` in this version", name.text))
                     .hint("study one stage's pair alone in a scene with a `gears` block for its contact, film or dynamics"),
             );
         }

@@ -280,3 +280,27 @@ fn stage_kinds_one_file_one_row() {
         assert_eq!(k.id as usize, i, "{}", k.name);
     }
 }
+
+/// The drive's thermal balance: at θ* the drive's whole loss equals what the housing gives off
+/// (to 1e-9 relative; θ* is located to 1e-10 K), and the drive run at oil temperature θ* loses
+/// P_V(θ*) again (1e-9): the balance reads the same drive.
+#[test]
+fn thermal_balance_of_the_drive() {
+    let scene = ev_reducer();
+    let drive = scene.drive.as_ref().unwrap();
+    let eval = evaluate_drive(&scene, drive);
+    assert_eq!(eval.balances.len(), eval.rows.len());
+    let mut found = 0;
+    for (b, row) in eval.balances.iter().zip(&eval.rows) {
+        let (Some(t), Some(loss), Some(q)) = (b.balance.temperature, b.loss, b.dissipation) else { continue };
+        found += 1;
+        assert!((loss - q).abs() <= 1e-9 * loss, "{loss} vs {q}");
+        let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+        let at = text.replace("oil_temperature = 80 degC", &format!("oil_temperature = {:?} K", t));
+        let at = gearloss::check("at.gear", &at).unwrap();
+        let again = &evaluate_drive(&at, at.drive.as_ref().unwrap()).rows
+            [eval.rows.iter().position(|r| std::ptr::eq(r, row)).unwrap()];
+        assert!((again.point.power_lost() - loss).abs() <= 1e-9 * loss);
+    }
+    assert!(found >= 4, "{found} balances");
+}

@@ -42,6 +42,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         md!(out);
     }
     inputs(&mut out, r);
+    thermal(&mut out, r);
     md!(out, "## Operating points\n");
     for p in &r.points {
         point(&mut out, p);
@@ -333,6 +334,36 @@ fn point(out: &mut String, p: &DrivePointReport) {
                 ],
             );
         }
+    }
+    md!(out);
+}
+
+fn thermal(out: &mut String, r: &DriveReport) {
+    if r.thermal.is_empty() {
+        return;
+    }
+    md!(out, "## Thermal balance (one sump)\n");
+    md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K.\n");
+    header(out, &["housing", "", "unit"]);
+    for (what, v, unit) in &r.housing {
+        row(out, &[what.clone(), fixed(*v, 4), unit.clone()]);
+    }
+    md!(out);
+    header(out, &["point", "law", "formulation", "θ* (°C)", "P_V(θ*) (W)", "P_Q(θ*) (W)", "the sump"]);
+    let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
+    for b in &r.thermal {
+        row(
+            out,
+            &[
+                b.label.clone(),
+                b.law.clone(),
+                b.formulation.clone(),
+                opt(b.temperature_c, 3),
+                opt(b.loss, 3),
+                opt(b.dissipation, 3),
+                b.status.clone(),
+            ],
+        );
     }
     md!(out);
 }
