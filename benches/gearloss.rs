@@ -499,3 +499,57 @@ mod teeth {
         b.bench(|| job(&scene, &g));
     }
 }
+
+/// Several stages (issue 41): the two-stage EV reducer (two meshes, six bearings, three seals,
+/// injection, the fixed point). Targets: one operating point < 100 µs; its 41 × 30 map < 0.5 s; a
+/// 10⁵-point sweep within 1.2× of ten times the 10⁴-point sweep (linear).
+mod several_stages {
+    use gearloss::evaluate::drive::evaluate_drive_into;
+
+    /// The EV reducer with `operating` and `analyses` swapped in.
+    fn reducer(torques: &str, speeds: &str, analyses: &str) -> gearloss::Scene {
+        let text =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/ev_two_stage_reducer.gear")).unwrap();
+        let start = text.find("    operating {").unwrap();
+        let head = &text[..start];
+        let text = format!(
+            "{head}    operating {{ output_torque = {torques}  output_speed = {speeds}  oil_temperature = 80 degC }}\n    friction {{ iso_14179_2(x_l = 0.75) }}\n    analyses {{ {analyses} }}\n}}\n"
+        );
+        gearloss::check("bench.gear", &text).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    fn run(scene: &gearloss::Scene) -> usize {
+        let drive = scene.drive.as_ref().unwrap();
+        evaluate_drive_into(scene, drive, &mut std::io::sink()).unwrap().tally.rows
+    }
+
+    /// One operating point, its stages' meshes set up (both members driving) and the drive solved.
+    /// Target < 100 µs.
+    #[divan::bench]
+    fn one_point(b: divan::Bencher) {
+        let scene = reducer("800 N*m", "900 rpm", "efficiency(formulations = [external])");
+        b.bench(|| run(&scene));
+    }
+
+    /// The 41 × 30 map over output torque (drive and coast) × speed. Target < 0.5 s.
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn map_41_by_30(b: divan::Bencher) {
+        let scene = reducer(
+            "500 N*m",
+            "900 rpm",
+            "efficiency(formulations = [external])  efficiency_map(output_torque = -1000..1000 N*m count 41, output_speed = 10..1500 rpm count 30)",
+        );
+        b.bench(|| gearloss::evaluate::drive::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).map.len());
+    }
+
+    /// 10⁴ and 10⁵ points (records written to a sink): the second within 1.2× of ten times the first.
+    #[divan::bench(args = [100, 316], sample_count = 3, sample_size = 1)]
+    fn sweep(b: divan::Bencher, n: usize) {
+        let scene = reducer(
+            &format!("-1000..1000 N*m count {n}"),
+            &format!("10..1500 rpm count {n}"),
+            "efficiency(formulations = [external])",
+        );
+        b.bench(|| run(&scene));
+    }
+}

@@ -26,7 +26,11 @@
 //!    records, tally, laws,        blocks: rows to the record files, a mergeable tally; friction,
 //!    dynamics, cases)             efficiency and dynamics at each point, only what the scene asks for
 //!  scene/                         the language: grammar, parse, units, lowering to the model
-//!  model                          the lowered scene (uom quantities, what the user wrote)
+//!  model, mesh                    the lowered scene (uom quantities, what the user wrote); a checked
+//!                                 mesh (one pair and its lubricant), what a pair's evaluation reads
+//!  drive/                         a gearbox of several stages: its layout, the stage-kind catalogue
+//!                                 (kinematics/), the power walk and its fixed point, mesh forces,
+//!                                 shaft statics (the mesh efficiency comes in from evaluate/drive)
 //!  dynamics/                      the n-state periodic engine (PeriodicModel: propagators, Floquet,
 //!                                 trajectory, integrators, numerics study) and the model catalogue
 //!                                 (models/: SDOF, 6-DOF behind GearDynamics; generic analysis data)
@@ -45,7 +49,8 @@
 //!
 //! Where a new model goes (ARCHITECTURE.md, "Where a new model goes"): a friction law is one file in
 //! `friction/` and one row of [`friction::catalog::LAWS`]; a mesh stiffness model one file in
-//! `geometry/stiffness/` and one row of [`geometry::stiffness::MODELS`]; a dynamic model one file in
+//! `geometry/stiffness/` and one row of [`geometry::stiffness::MODELS`]; a stage kind of a drive one
+//! file in `drive/kinematics/` and one row of [`drive::kinematics::STAGE_KINDS`]; a dynamic model one file in
 //! `dynamics/models/` (a [`dynamics::models::GearDynamics`], usually over a
 //! [`dynamics::PeriodicModel`] of its own) and one row of [`dynamics::models::MODELS`]; a loss part
 //! one file in `losses/parts/` and one row of [`losses::parts::PARTS`] (a new column, a row of
@@ -62,6 +67,7 @@ pub mod friction;
 pub mod geometry;
 pub mod listing;
 pub mod losses;
+pub mod mesh;
 pub mod model;
 pub mod numerics;
 pub(crate) mod progress;

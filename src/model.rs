@@ -60,13 +60,6 @@ pub struct SceneDrive {
     pub pairs: Vec<GearPair>,
 }
 
-impl SceneDrive {
-    /// Stage `k`'s pair in `lubricant`: the mesh its evaluation reads.
-    pub fn mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> crate::evaluate::Mesh<'a> {
-        crate::evaluate::Mesh { gears: &self.pairs[k], lubricant }
-    }
-}
-
 impl Scene {
     /// The scene at the `i`-th temperature of its `oil_temperature` sweep: the lubricant moved to
     /// that temperature (α too when it comes from the base oil), no sweep left. The scene itself
@@ -94,11 +87,6 @@ impl Scene {
         }
         scene.operating.oil_temperature = Some(theta);
         scene
-    }
-
-    /// The scene's pair with its lubricant: the mesh the pair's evaluation reads.
-    pub fn mesh(&self) -> crate::evaluate::Mesh<'_> {
-        crate::evaluate::Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
     }
 
     /// The oil temperatures the scene runs at, as written (`90 degC`): one per run.

@@ -170,14 +170,17 @@ pub struct Written {
     pub drive: Option<crate::report::drive::DriveReport>,
 }
 
-/// A drive scene evaluated, reported and rendered in memory.
+/// A drive scene evaluated, reported and rendered in memory, its records among the files.
 pub fn drive_report_files(
     scene: &Scene,
     drive: &crate::model::SceneDrive,
 ) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
-    let eval = evaluate::drive::evaluate_drive(scene, drive);
+    let mut records = Vec::new();
+    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(RunError::io("records"))?;
     let report = report::drive::build_drive_report(scene, drive, &eval);
-    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    let mut rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    let text = String::from_utf8(records).expect("records are UTF-8");
+    rendered.files.push((evaluate::drive_records::FILE.to_string(), text));
     Ok((report, rendered))
 }
 
@@ -191,9 +194,15 @@ fn run_drive_into(
     let folder =
         ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
     progress.stage("evaluate", 1);
-    let (report, rendered) = drive_report_files(scene, drive)?;
+    let io = RunError::io("the record files");
+    let file = folder.create_file(evaluate::drive_records::FILE).map_err(&io)?;
+    let mut records = std::io::BufWriter::new(file);
+    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(&io)?;
+    std::io::Write::flush(&mut records).map_err(&io)?;
+    let report = report::drive::build_drive_report(scene, drive, &eval);
+    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
     progress.stage("write", rendered.files.len() as u64);
-    let mut files = Vec::new();
+    let mut files = vec![evaluate::drive_records::FILE.to_string()];
     for (file, content) in &rendered.files {
         folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
         files.push(file.clone());

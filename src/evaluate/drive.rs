@@ -1,169 +1,62 @@
-//! A drive's evaluation: each stage's mesh from its own pair ([`super::Mesh`], never the scene),
-//! the drive walked through ([`crate::drive::solve`]) at every operating point, friction law and
-//! formulation, and over the map's grid when the scene asks for one.
-//!
-//! Where a stage's wheel drives (coast), its mesh is evaluated as the pair with the roles swapped:
-//! the wheel in the pinion's place, so approach and recess exchange (Ohlendorf's H_V is symmetric
-//! in ε₁, ε₂); the efficiency of a law at a driving torque T and speed ω is 1 − P_mesh/(T ω), with
-//! P_mesh the mesh loss the budget of one pair charges ([`crate::efficiency::charged_mesh_loss`]).
+//! A drive's evaluation: the drive walked through at every operating point, friction law and
+//! formulation (rows streamed to the records, the first kept for the report), over the map's grid,
+//! and the thermal balance of the kept rows.
 
-use rayon::prelude::*;
+use super::drive_setup::DriveSetup;
+use crate::drive::DrivePoint;
+use crate::model::{Scene, SceneDrive};
 
-use super::setup::law_at;
-use crate::drive::walk::DriveModel;
-use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes};
-use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
-use crate::friction::LawContext;
-use crate::geometry::sharing::Sharing;
-use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{FrictionLawSpec, GearPair, LoadSharing, Scene, SceneDrive};
-use crate::tribology::Tribology;
-
-/// One stage's mesh as each member driving sees it.
-pub(crate) struct StageMesh {
-    /// [pinion driving, wheel driving]: the pair with the driving member as its pinion.
-    geometry: [PairGeometry; 2],
-    h_v: [f64; 2],
-    tribology: Tribology,
-    whole: bool,
-}
-
-impl StageMesh {
-    fn of(drive: &SceneDrive, k: usize, scene: &Scene) -> StageMesh {
-        let mesh = drive.mesh(k, scene.lubricant.as_ref());
-        let e_r = mesh.reduced_modulus();
-        let tribology = mesh.tribology(e_r);
-        let geometry = [
-            mesh.geometry(),
-            swapped(&drive.pairs[k]).geometry().expect("a pair's geometry holds with the roles swapped"),
-        ];
-        let whole = drive.pairs[k].load_sharing == LoadSharing::None;
-        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole };
-        for d in 0..2 {
-            out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
-        }
-        out
-    }
-
-    fn context(&self, d: usize, torque: f64, speed: f64) -> LawContext<'_> {
-        LawContext {
-            geometry: &self.geometry[d],
-            state: OperatingState { pinion_torque: torque, pinion_speed: speed },
-            tribology: self.tribology,
-            sharing: if self.whole { Sharing::Whole } else { Sharing::Equal },
-        }
-    }
-
-    /// The sizes the mesh forces read (pinion and wheel as the stage names them).
-    fn sizes(&self) -> MeshForceSizes {
-        let g = &self.geometry[0];
-        MeshForceSizes {
-            working_pitch_radius: g.working_pitch_radius,
-            pitch_radius: g.pitch_radius,
-            working_pressure_angle: g.operating_pressure_angle,
-            helix_angle: g.helix_angle,
-            face_width: g.face_width,
-        }
-    }
-}
-
-/// The pair with pinion and wheel exchanged (the wheel driving).
-fn swapped(pair: &GearPair) -> GearPair {
-    GearPair { pinion: pair.wheel.clone(), wheel: pair.pinion.clone(), ..pair.clone() }
-}
-
-/// The meshes of every stage under one law and formulation.
-struct LawMeshes<'a> {
-    stages: &'a [StageMesh],
-    spec: &'a FrictionLawSpec,
-    formulation: Formulation,
-}
-
-impl MeshEfficiency for LawMeshes<'_> {
-    fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64 {
-        let s = &self.stages[stage];
-        let d = driving.index();
-        let ctx = s.context(d, torque, speed);
-        let law = law_at(self.spec, &ctx);
-        1.0 - charged_mesh_loss(&ctx, &*law, self.formulation, s.h_v[d]) / (torque * speed)
-    }
-}
-
-/// One operating point, law and formulation of a drive.
-#[derive(Debug, Clone)]
-pub struct DriveRow {
-    pub torque_index: usize,
-    pub speed_index: usize,
-    pub law_index: usize,
-    pub formulation: Formulation,
-    pub point: DrivePoint,
-}
+pub use super::drive_setup::DriveRow;
 
 /// A drive's results: its operating points and its map (torque-major, then law, then formulation).
 #[derive(Debug, Clone, Default)]
 pub struct DriveEvaluation {
     pub rows: Vec<DriveRow>,
     pub map: Vec<DriveRow>,
-    /// The thermal balance of every row, when the scene asks for it.
+    /// The thermal balance of every kept row, when the scene asks for it.
     pub balances: Vec<super::drive_thermal::DriveBalanceRow>,
+    pub tally: DriveTally,
 }
 
-/// What every point of a drive reads.
-pub(crate) struct DriveSetup<'a> {
-    scene: &'a Scene,
-    drive: &'a SceneDrive,
-    stages: Vec<StageMesh>,
-    sizes: Vec<MeshForceSizes>,
-    oil: crate::losses::Oil,
-}
+/// Operating points (rows) a drive's report shows in full; the records hold every one.
+pub const DETAIL_ROWS: usize = 12;
+/// Rows evaluated together before they are written.
+const BLOCK: usize = 4096;
 
-impl<'a> DriveSetup<'a> {
-    pub(crate) fn new(scene: &'a Scene, drive: &'a SceneDrive) -> DriveSetup<'a> {
-        let stages: Vec<StageMesh> = (0..drive.pairs.len()).map(|k| StageMesh::of(drive, k, scene)).collect();
-        let sizes = stages.iter().map(StageMesh::sizes).collect();
-        let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
-        DriveSetup { scene, drive, stages, sizes, oil }
-    }
-
-    /// The drive at `torque` and `speed` under law `law` and `formulation`.
-    pub(crate) fn point(&self, law: usize, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
-        let meshes = LawMeshes { stages: &self.stages, spec: &self.scene.friction[law], formulation };
-        let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil };
-        solve(&model, &meshes, torque, speed)
-    }
-
-    /// Every (torque, speed, law, formulation) of a grid, in parallel, in that order.
-    fn grid(&self, torques: &[f64], speeds: &[f64], ends: crate::drive::DriveOperating) -> Vec<DriveRow> {
-        let formulations = self.scene.analyses.efficiency.clone().unwrap_or_default();
-        let laws = self.scene.friction.len();
-        let per_point = laws * formulations.len();
-        (0..torques.len() * speeds.len() * per_point)
-            .into_par_iter()
-            .map(|i| {
-                let (point, rest) = (i / per_point, i % per_point);
-                let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
-                let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
-                let torque = EndValue { at: ends.torque_at, value: torques[torque_index] };
-                let speed = EndValue { at: ends.speed_at, value: speeds[speed_index] };
-                DriveRow {
-                    torque_index,
-                    speed_index,
-                    law_index,
-                    formulation: formulations[f],
-                    point: self.point(law_index, formulations[f], torque, speed),
-                }
-            })
-            .collect()
-    }
-}
-
-/// Evaluates a drive scene: its operating points and its map.
+/// Evaluates a drive scene in memory (its records dropped): its operating points (the first
+/// [`DETAIL_ROWS`] rows), its map and its thermal balance.
 pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
+    evaluate_drive_into(scene, drive, &mut std::io::sink()).expect("a sink takes every row")
+}
+
+/// Evaluates a drive scene, every row of its operating points written to `records` as it goes
+/// ([`super::drive_records`]); the first [`DETAIL_ROWS`] rows are kept for the report, with the
+/// count and the least and greatest efficiency over every row (exact: the rows are the points
+/// asked for).
+pub fn evaluate_drive_into(
+    scene: &Scene,
+    drive: &SceneDrive,
+    records: &mut dyn std::io::Write,
+) -> std::io::Result<DriveEvaluation> {
     let setup = DriveSetup::new(scene, drive);
     let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
     let op = &scene.operating;
     let speeds: Vec<f64> = op.pinion_speed.values.iter().map(|w| w.value).collect();
-    let rows = setup.grid(&si(&op.pinion_torque.values), &speeds, drive.layout.operating);
+    let torques = si(&op.pinion_torque.values);
+    let n = torques.len() * speeds.len() * setup.rows_per_point();
+    let mut rows = Vec::new();
+    let mut tally = DriveTally { rows: n, ..Default::default() };
+    super::drive_records::header(records, drive)?;
+    for start in (0..n).step_by(BLOCK) {
+        let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(n));
+        for (i, row) in block.into_iter().enumerate() {
+            super::drive_records::row(records, start + i, row.point.flow, &row)?;
+            tally.add(start + i, &row.point);
+            if rows.len() < DETAIL_ROWS {
+                rows.push(row);
+            }
+        }
+    }
     let map = match (&scene.analyses.efficiency_map, scene.analyses.map_ends) {
         (Some((t, s)), Some(ends)) => {
             setup.grid(&si(&t.values), &s.values.iter().map(|w| w.value).collect::<Vec<_>>(), ends)
@@ -174,5 +67,30 @@ pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
         (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
         _ => Vec::new(),
     };
-    DriveEvaluation { rows, map, balances }
+    Ok(DriveEvaluation { rows, map, balances, tally })
+}
+
+/// Over every row of the operating points: the count, the rows where both ends deliver, and the
+/// least and greatest efficiency (of rows where one end delivers) with their row index.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct DriveTally {
+    pub rows: usize,
+    pub both_ends: usize,
+    pub least: Option<(f64, usize)>,
+    pub greatest: Option<(f64, usize)>,
+}
+
+impl DriveTally {
+    fn add(&mut self, i: usize, p: &DrivePoint) {
+        if p.both_ends_deliver {
+            self.both_ends += 1;
+            return;
+        }
+        if self.least.is_none_or(|(e, _)| p.efficiency < e) {
+            self.least = Some((p.efficiency, i));
+        }
+        if self.greatest.is_none_or(|(e, _)| p.efficiency > e) {
+            self.greatest = Some((p.efficiency, i));
+        }
+    }
 }

@@ -3,7 +3,7 @@
 //! gear, bearing and seal of the drive at the oil read at θ) equals what the housing gives off,
 //! P_Q(θ) ([`crate::thermal::balance`]: the lowest root, bracketed by a scan and located by Brent).
 
-use super::drive::{DriveRow, DriveSetup};
+use super::drive_setup::{DriveRow, DriveSetup};
 use crate::drive::EndValue;
 use crate::model::{Given, Scene, SceneDrive, ThermodynamicTemperature};
 use crate::thermal::{Balance, Housing};

@@ -4,45 +4,11 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::drive_inputs::{ShaftInputs, StageInputs};
 use super::finding::{Finding, Severity};
 use crate::drive::{DrivePoint, PowerFlow, ShaftEnd};
 use crate::evaluate::drive::{DriveEvaluation, DriveRow};
 use crate::model::{Scene, SceneDrive};
-
-/// A stage as the scene gives it, with the sizes its mesh reads.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct StageInputs {
-    pub name: String,
-    /// The shafts of [pinion, wheel] and the gears' `at` (mm).
-    pub shafts: [String; 2],
-    pub at_mm: [f64; 2],
-    pub teeth: [u32; 2],
-    /// z_wheel / z_pinion.
-    pub ratio: f64,
-    pub normal_module_mm: f64,
-    pub helix_angle_deg: f64,
-    /// The pinion's hand ("right", "left"; "" for spur).
-    pub pinion_hand: String,
-    pub direction_deg: f64,
-    pub centre_distance_mm: f64,
-    pub face_width_mm: f64,
-    pub working_pressure_angle_deg: f64,
-    pub contact_ratio: f64,
-    pub overlap_ratio: f64,
-    pub lubrication: String,
-}
-
-/// A shaft as the scene gives it.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct ShaftInputs {
-    pub name: String,
-    /// "input", "output" or "".
-    pub role: String,
-    /// Each place: type, count, `at` (mm), whether it locates.
-    pub bearings: Vec<(String, usize, f64, bool)>,
-    /// Each seal: lip diameter (mm), count.
-    pub seals: Vec<(f64, usize)>,
-}
 
 /// One operating point, law and formulation.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -102,6 +68,14 @@ pub struct DriveReport {
     /// The oil: temperature (°C), ν (mm²/s), ρ (kg/m³), η (mPa·s) as the losses read them.
     pub oil: Vec<(String, f64, String)>,
     pub laws: Vec<String>,
+    /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
+    /// report shows the first [`crate::evaluate::drive::DETAIL_ROWS`] in full.
+    pub rows: usize,
+    /// The least and greatest η over every row where one end delivers, with the row's label, law
+    /// and formulation; rows where both ends deliver.
+    pub least_efficiency: Option<(f64, String)>,
+    pub greatest_efficiency: Option<(f64, String)>,
+    pub both_ends_rows: usize,
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
     pub points: Vec<DrivePointReport>,
@@ -150,6 +124,10 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         overall_ratio: 1.0 / speeds[layout.output],
         oil: super::drive_inputs::oil_rows(scene),
         laws: laws.clone(),
+        rows: eval.tally.rows,
+        least_efficiency: eval.tally.least.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
+        greatest_efficiency: eval.tally.greatest.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
+        both_ends_rows: eval.tally.both_ends,
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
         findings: findings(layout, &points),
@@ -188,6 +166,28 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
     report
+}
+
+/// Row `i` of the operating points in words: its point, law and formulation.
+fn row_words(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> String {
+    let formulations = scene.analyses.efficiency.clone().unwrap_or_default();
+    let per_point = laws.len() * formulations.len();
+    let (point, rest) = (i / per_point, i % per_point);
+    let op = &scene.operating;
+    let n = op.pinion_speed.values.len();
+    let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
+    let ends = drive.layout.operating;
+    format!(
+        "T_{} = {} {}, n_{} = {} {} ({}, {})",
+        end(ends.torque_at),
+        op.pinion_torque.written_values[point / n],
+        op.pinion_torque.unit,
+        end(ends.speed_at),
+        op.pinion_speed.written_values[point % n],
+        op.pinion_speed.unit,
+        laws[rest / formulations.len()],
+        formulations[rest % formulations.len()].name()
+    )
 }
 
 /// The maps, one per law and formulation.

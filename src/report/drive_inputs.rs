@@ -1,9 +1,45 @@
 //! The inputs of a drive's report: its stages with the sizes their meshes read, its shafts with
 //! their bearing places and seals, the oil as the losses read it.
 
-use super::drive::{ShaftInputs, StageInputs};
+use serde::{Deserialize, Serialize};
+
 use crate::drive::{Drive, Hand};
 use crate::model::{Scene, SceneDrive};
+
+/// A stage as the scene gives it, with the sizes its mesh reads.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct StageInputs {
+    pub name: String,
+    /// The shafts of [pinion, wheel] and the gears' `at` (mm).
+    pub shafts: [String; 2],
+    pub at_mm: [f64; 2],
+    pub teeth: [u32; 2],
+    /// z_wheel / z_pinion.
+    pub ratio: f64,
+    pub normal_module_mm: f64,
+    pub helix_angle_deg: f64,
+    /// The pinion's hand ("right", "left"; "" for spur).
+    pub pinion_hand: String,
+    pub direction_deg: f64,
+    pub centre_distance_mm: f64,
+    pub face_width_mm: f64,
+    pub working_pressure_angle_deg: f64,
+    pub contact_ratio: f64,
+    pub overlap_ratio: f64,
+    pub lubrication: String,
+}
+
+/// A shaft as the scene gives it.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ShaftInputs {
+    pub name: String,
+    /// "input", "output" or "".
+    pub role: String,
+    /// Each place: type, count, `at` (mm), whether it locates.
+    pub bearings: Vec<(String, usize, f64, bool)>,
+    /// Each seal: lip diameter (mm), count.
+    pub seals: Vec<(f64, usize)>,
+}
 
 pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
     let layout = &drive.layout;

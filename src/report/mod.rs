@@ -2,7 +2,7 @@
 
 pub(crate) mod checks;
 pub mod drive;
-mod drive_inputs;
+pub mod drive_inputs;
 pub(crate) mod dynamics;
 pub(crate) mod dynamics_findings;
 pub(crate) mod dynamics_records;

@@ -5,10 +5,9 @@
 use std::collections::BTreeMap;
 
 use super::ast::*;
-use super::fields::{checked_scale, unknown_name, Fields};
+use super::fields::{checked_scale, Fields};
 use super::lower_friction::{check_friction_needs, lower_friction};
 use super::lower_gears::{block_label, lower_gears, lower_material};
-use super::lower_lubricant::{lower_lubricant, lower_lubricant_value};
 use super::lower_operating::{check_oil_sweep, check_record_rows, lower_operating};
 pub use super::lower_operating::{MAX_DETAIL_POINTS, MAX_RECORD_ROWS};
 use super::units::Dimension;
@@ -27,21 +26,6 @@ const SCENE_BLOCKS: &[&str] = &[
     "duty_cycle",
     "analyses",
 ];
-const ANALYSES: &[&str] = &[
-    "efficiency",
-    "efficiency_map",
-    "friction_along_loa",
-    "film",
-    "contact",
-    "dynamics",
-    "stability_map",
-    "numerics",
-    "thermal_balance",
-    "duty_cycle",
-    "transmission_error",
-];
-const FORMULATIONS: &[&str] = &["external", "internal"];
-
 /// Lowers a parsed scene. On failure, every diagnostic found.
 pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
     lower_scene_in(ast, None)
@@ -67,12 +51,15 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     });
     let housing = housing.and_then(|b| super::lower_thermal::lower_housing(b, &mut errors));
     let duty_cycle = singles.get("duty_cycle").and_then(|b| super::lower_thermal::lower_duty_cycle(b, &mut errors));
-    let lubricant = scene_lubricant(&singles, &top, operating.as_ref(), housing.as_ref(), &mut errors);
+    let lubricant =
+        super::lower_lubricant::scene_lubricant(&singles, &top, operating.as_ref(), housing.as_ref(), &mut errors);
     if let Some(op) = &operating {
         check_oil_sweep(op, lubricant.as_ref(), &mut errors);
     }
     let friction = singles.get("friction").map_or_else(Vec::new, |b| lower_friction(b, &mut errors));
-    let analyses = singles.get("analyses").map_or_else(Analyses::default, |b| lower_analyses(b, false, &mut errors));
+    let analyses = singles
+        .get("analyses")
+        .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, false, &mut errors));
     let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));
     let dynamics =
         singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));
@@ -100,7 +87,12 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         check_friction_needs(&friction, g, lubricant.as_ref(), &mut errors);
     }
     if let (Some(gb), Some(block), Some(g)) = (&gearbox, singles.get("gearbox"), &gears) {
-        super::lower_gearbox::check_immersion(gb.lubrication.as_ref(), g, lubrication_span(block), &mut errors);
+        super::lower_gearbox::check_immersion(
+            gb.lubrication.as_ref(),
+            g,
+            super::lower_gearbox::lubrication_span(block),
+            &mut errors,
+        );
     }
     if let (Some(gb), Some(block), false) = (&gearbox, singles.get("gearbox"), lubricant_failed) {
         super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
@@ -264,60 +256,6 @@ fn check_dynamics_needs(
     }
 }
 
-/// The lubricant, from a `lubricant` block or `lubricant = ...`, read at the oil temperature (at
-/// ambient when the scene asks for the equilibrium, until the run has found it).
-pub(super) fn scene_lubricant(
-    singles: &BTreeMap<&str, &Block>,
-    top: &Fields,
-    operating: Option<&Operating>,
-    housing: Option<&crate::thermal::Housing>,
-    errors: &mut Vec<Diagnostic>,
-) -> Option<Lubricant> {
-    // At `oil_temperature = equilibrium` the lubricant is read at ambient until the run has found the
-    // balance (the report says the temperature it used).
-    let ambient = match (operating.and_then(|o| o.equilibrium), housing) {
-        (Some(span), Some(h)) => Some(Given {
-            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(h.ambient),
-            written: "equilibrium".to_string(),
-            span,
-        }),
-        _ => None,
-    };
-    let oil_temperature = operating.and_then(|o| o.oil_temperature.as_ref()).or(ambient.as_ref());
-    // An `oil_temperature` that failed to lower has its own error: the lubricant is not read at none.
-    let temperature_failed = oil_temperature.is_none()
-        && singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
-    match (singles.get("lubricant"), top.values.get("lubricant")) {
-        _ if temperature_failed => None,
-        (Some(_), Some((key, _))) => {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::DuplicateKey,
-                    key.span,
-                    "the scene has a `lubricant` block and `lubricant = ...`",
-                )
-                .hint("keep one of them"),
-            );
-            None
-        }
-        (Some(b), None) => lower_lubricant(b, oil_temperature, errors),
-        (None, Some((_, v))) => lower_lubricant_value(v, oil_temperature, errors),
-        (None, None) => None,
-    }
-}
-
-/// Where a block's `lubrication = ...` value stands (the block's name when it has none).
-pub(super) fn lubrication_span(block: &Block) -> Span {
-    block
-        .items
-        .iter()
-        .find_map(|i| match i {
-            Item::Assignment { key, value } if key.text == "lubrication" => Some(value.span),
-            _ => None,
-        })
-        .unwrap_or(block.kind.span)
-}
-
 /// `film` needs the lubricant's pressure-viscosity coefficient.
 fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: &mut Vec<Diagnostic>) {
     if let Some(span) = analyses.film_span {
@@ -332,112 +270,6 @@ fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: 
             );
         }
     }
-}
-
-/// The `analyses` block; a drive's (`drive`) map is given at its ends.
-pub(super) fn lower_analyses(block: &Block, drive: bool, errors: &mut Vec<Diagnostic>) -> Analyses {
-    let f = Fields::read("the `analyses` block", block.span, &block.items, &[], &[], ANALYSES, errors);
-    let mut a = Analyses::default();
-    for call in &f.calls {
-        match call.name.text.as_str() {
-            "efficiency" => {
-                let mut formulations = vec![Formulation::External, Formulation::Internal];
-                for (name, value) in &call.arguments {
-                    if name.text != "formulations" {
-                        errors.push(unknown_name("argument of `efficiency`", name, &["formulations"]));
-                        continue;
-                    }
-                    match &value.kind {
-                        ValueKind::List { items, unit: None } => {
-                            formulations.clear();
-                            for item in items {
-                                match item {
-                                    ListItem::Name(n) if n.text == "external" => {
-                                        formulations.push(Formulation::External)
-                                    }
-                                    ListItem::Name(n) if n.text == "internal" => {
-                                        formulations.push(Formulation::Internal)
-                                    }
-                                    ListItem::Name(n) => errors.push(unknown_name("formulation", n, FORMULATIONS)),
-                                    ListItem::Number(_, s) => errors.push(
-                                        Diagnostic::new(DiagnosticKind::WrongDimension, *s, "a formulation is a name")
-                                            .hint("write `formulations = [external, internal]`"),
-                                    ),
-                                }
-                            }
-                            formulations.dedup();
-                            if items.is_empty() {
-                                errors.push(
-                                    Diagnostic::new(
-                                        DiagnosticKind::OutOfRange,
-                                        value.span,
-                                        "`formulations` is an empty list: there is nothing to compute",
-                                    )
-                                    .hint("name at least one: `formulations = [external, internal]`, or leave the argument out for both"),
-                                );
-                            }
-                        }
-                        _ => errors.push(
-                            Diagnostic::new(
-                                DiagnosticKind::WrongDimension,
-                                value.span,
-                                "`formulations` expects a list of names",
-                            )
-                            .hint("write `formulations = [external, internal]`"),
-                        ),
-                    }
-                }
-                a.efficiency = Some(formulations);
-                a.friction_span = Some(call.span);
-            }
-            "efficiency_map" if drive => {
-                if let Some((t, s, ends)) = super::lower_drive_operating::lower_drive_map(call, errors) {
-                    a.efficiency_map = Some((t, s));
-                    a.map_ends = Some(ends);
-                }
-                a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
-                a.friction_span = a.friction_span.or(Some(call.span));
-            }
-            "efficiency_map" => {
-                a.efficiency_map = super::lower_gearbox::lower_efficiency_map(call, errors);
-                // The map's formulations are those of `efficiency`: both unless the scene names them.
-                a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
-                a.friction_span = a.friction_span.or(Some(call.span));
-            }
-            "transmission_error" => a.transmission_error = super::lower_teeth::lower_transmission_error(call, errors),
-            "stability_map" => {
-                a.stability_map = super::lower_dynamics_blocks::lower_stability_map(call, errors);
-                a.dynamics_span = Some(call.span);
-            }
-            other => {
-                if let Some((name, _)) = call.arguments.first() {
-                    errors.push(unknown_name(&format!("argument of `{other}`"), name, &[]));
-                }
-                match other {
-                    "dynamics" => {
-                        a.dynamics = true;
-                        a.dynamics_span = Some(call.span);
-                    }
-                    "numerics" => {
-                        a.numerics = true;
-                        a.dynamics_span = Some(call.span);
-                    }
-                    "friction_along_loa" => {
-                        a.friction_along_loa = true;
-                        a.friction_span = Some(call.span);
-                    }
-                    "film" => {
-                        a.film = true;
-                        a.film_span = Some(call.span);
-                    }
-                    "thermal_balance" => a.thermal_balance = Some(call.span),
-                    "duty_cycle" => a.duty_cycle = Some(call.span),
-                    _ => {}
-                }
-            }
-        }
-    }
-    a
 }
 
 /// Checks a lone unit expression against a dimension (for `gearloss units` and tests).

@@ -82,11 +82,17 @@ pub(super) fn lower_drive_scene(
             })
         })
         .and_then(|b| super::lower_thermal::lower_housing(b, errors));
-    let lubricant =
-        super::lower::scene_lubricant(singles, top, operating.as_ref().map(|o| &o.0), housing.as_ref(), errors);
+    let lubricant = super::lower_lubricant::scene_lubricant(
+        singles,
+        top,
+        operating.as_ref().map(|o| &o.0),
+        housing.as_ref(),
+        errors,
+    );
     let friction = singles.get("friction").map_or_else(Vec::new, |b| super::lower_friction::lower_friction(b, errors));
-    let analyses =
-        singles.get("analyses").map_or_else(Analyses::default, |b| super::lower::lower_analyses(b, true, errors));
+    let analyses = singles
+        .get("analyses")
+        .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, true, errors));
     check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
     let lubricant_failed =
         lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));

@@ -372,3 +372,15 @@ pub(super) fn check_immersion(
         }
     }
 }
+
+/// Where a block's `lubrication = ...` value stands (the block's name when it has none).
+pub(super) fn lubrication_span(block: &Block) -> Span {
+    block
+        .items
+        .iter()
+        .find_map(|i| match i {
+            Item::Assignment { key, value } if key.text == "lubrication" => Some(value.span),
+            _ => None,
+        })
+        .unwrap_or(block.kind.span)
+}

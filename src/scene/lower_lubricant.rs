@@ -8,6 +8,8 @@
 //! The first two need `oil_temperature` in `operating`; ν, ρ, η and α at that temperature then
 //! follow ([`crate::tribology::lubricant`]) and every law, film and loss reads them.
 
+use std::collections::BTreeMap;
+
 use super::ast::*;
 use super::fields::{call_fields, positive, unknown_name, Fields};
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
@@ -285,4 +287,46 @@ fn resolve(
         return None;
     };
     Some(Lubricant::of_oil(name, oil, alpha, span, theta))
+}
+
+/// The lubricant, from a `lubricant` block or `lubricant = ...`, read at the oil temperature (at
+/// ambient when the scene asks for the equilibrium, until the run has found it).
+pub(super) fn scene_lubricant(
+    singles: &BTreeMap<&str, &Block>,
+    top: &Fields,
+    operating: Option<&Operating>,
+    housing: Option<&crate::thermal::Housing>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Lubricant> {
+    // At `oil_temperature = equilibrium` the lubricant is read at ambient until the run has found the
+    // balance (the report says the temperature it used).
+    let ambient = match (operating.and_then(|o| o.equilibrium), housing) {
+        (Some(span), Some(h)) => Some(Given {
+            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(h.ambient),
+            written: "equilibrium".to_string(),
+            span,
+        }),
+        _ => None,
+    };
+    let oil_temperature = operating.and_then(|o| o.oil_temperature.as_ref()).or(ambient.as_ref());
+    // An `oil_temperature` that failed to lower has its own error: the lubricant is not read at none.
+    let temperature_failed = oil_temperature.is_none()
+        && singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
+    match (singles.get("lubricant"), top.values.get("lubricant")) {
+        _ if temperature_failed => None,
+        (Some(_), Some((key, _))) => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    key.span,
+                    "the scene has a `lubricant` block and `lubricant = ...`",
+                )
+                .hint("keep one of them"),
+            );
+            None
+        }
+        (Some(b), None) => lower_lubricant(b, oil_temperature, errors),
+        (None, Some((_, v))) => lower_lubricant_value(v, oil_temperature, errors),
+        (None, None) => None,
+    }
 }

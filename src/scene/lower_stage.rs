@@ -68,7 +68,12 @@ pub(super) fn lower_stage(
     let wheel = lower_place(&placed[1], "wheel", gears, errors);
     let (pair, (p_shaft, p_at, p_hand), (w_shaft, w_at, w_hand)) = (pair?, pinion?, wheel?);
     let hand = stage_hand(&pair, &pair_block, p_hand, w_hand, errors)?;
-    super::lower_gearbox::check_immersion(lubrication.as_ref(), &pair, super::lower::lubrication_span(block), errors);
+    super::lower_gearbox::check_immersion(
+        lubrication.as_ref(),
+        &pair,
+        super::lower_gearbox::lubrication_span(block),
+        errors,
+    );
     if pair.load_sharing == crate::model::LoadSharing::Stiffness {
         errors.push(
             Diagnostic::new(

@@ -6,6 +6,7 @@ pub(crate) mod fields;
 pub(crate) mod grammar;
 pub(crate) mod limits;
 pub mod lower;
+pub(crate) mod lower_analyses;
 pub(crate) mod lower_drive;
 pub(crate) mod lower_drive_operating;
 pub(crate) mod lower_drive_scene;

@@ -304,3 +304,33 @@ fn thermal_balance_of_the_drive() {
     }
     assert!(found >= 4, "{found} balances");
 }
+
+/// drive_records.csv: a row per operating point, law and formulation with every part; each row's
+/// total is its parts' sum and P_in − P_out (1e-9), and every stage and bearing place has its columns.
+#[test]
+fn drive_records_hold_every_part() {
+    let path = crate::root().join("specs/ev_two_stage_reducer.gear");
+    let r = gearloss::run_to_files("ev.gear", &std::fs::read_to_string(path).unwrap()).unwrap();
+    let csv = &r.files.iter().find(|(f, _)| f == "drive_records.csv").unwrap().1;
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("{name}"));
+    assert_eq!(header.iter().filter(|h| h.starts_with("bearing_") && h.ends_with("_radial_N")).count(), 6);
+    assert_eq!(header.iter().filter(|h| h.starts_with("stage_") && h.ends_with("_mesh_loss_W")).count(), 2);
+    let rows: Vec<Vec<f64>> =
+        lines.map(|l| l.split(',').map(|c| c.parse::<f64>().unwrap_or(f64::NAN)).collect()).collect();
+    assert_eq!(rows.len(), 6);
+    for row in &rows {
+        assert_eq!(row.len(), header.len());
+        let parts: f64 = ["meshes_W", "gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"]
+            .iter()
+            .map(|c| row[col(c)])
+            .sum();
+        let total = row[col("total_W")];
+        assert!((parts - total).abs() <= 1e-9 * total);
+        assert!(
+            (row[col("input_power_W")] - row[col("output_power_W")] - total).abs()
+                <= 1e-9 * row[col("input_power_W")].abs()
+        );
+    }
+}

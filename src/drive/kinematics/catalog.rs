@@ -6,6 +6,12 @@ use super::parallel::Parallel;
 use super::stage_kinematics::StageKinematics;
 use crate::drive::layout::Stage;
 
+impl StageKindId {
+    pub fn entry(self) -> &'static StageKindEntry {
+        &STAGE_KINDS[self as usize]
+    }
+}
+
 /// One stage kind of the catalogue.
 #[derive(Clone, Copy)]
 pub struct StageKindEntry {

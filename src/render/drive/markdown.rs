@@ -4,7 +4,7 @@
 
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
-use crate::report::drive::{DrivePointReport, DriveReport};
+use crate::report::drive::DriveReport;
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
 
@@ -45,7 +45,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     thermal(&mut out, r);
     md!(out, "## Operating points\n");
     for p in &r.points {
-        point(&mut out, p);
+        super::point_tables::point(&mut out, p);
     }
     if !r.maps.is_empty() {
         md!(out, "## Loss map\n");
@@ -142,6 +142,28 @@ fn headline(out: &mut String, r: &DriveReport) {
             ],
         );
     }
+    if r.rows > r.points.len() {
+        md!(
+            out,
+            "\nThe first {} of {} rows (operating points × laws × formulations); `drive_records.csv` holds every one.",
+            r.points.len(),
+            r.rows
+        );
+    }
+    if let (Some((lo, lo_at)), Some((hi, hi_at)), true) = (&r.least_efficiency, &r.greatest_efficiency, r.rows > 1) {
+        md!(
+            out,
+            "\nOver all {} rows: η from {} % ({lo_at}) to {} % ({hi_at}){}.",
+            r.rows,
+            fixed(100.0 * lo, 4),
+            fixed(100.0 * hi, 4),
+            if r.both_ends_rows > 0 {
+                format!("; {} rows where both ends deliver left out", r.both_ends_rows)
+            } else {
+                String::new()
+            }
+        );
+    }
     md!(out, "\nη = P_sink/P_source: P_out/P_in in drive, P_in/P_out (power received by the motor over power the output delivers) in coast; T_in is the torque into the box at the input shaft's end, T_out the torque the output passes to the load (negative in coast). Total = P_in − P_out = meshes + gears' no-load + bearings + seals.\n");
 }
 
@@ -202,138 +224,6 @@ fn inputs(out: &mut String, r: &DriveReport) {
     header(out, &["value", "", "unit"]);
     for (what, v, unit) in &r.oil {
         row(out, &[what.clone(), fixed(*v, 4), unit.clone()]);
-    }
-    md!(out);
-}
-
-fn point(out: &mut String, p: &DrivePointReport) {
-    let d = &p.point;
-    md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
-    md!(
-        out,
-        "{}: {} W in at the input, {} W out at the output, {} W lost, η = {}; the bearing losses settled in {} passes.\n",
-        d.flow.name(),
-        fixed(d.input_power, 3),
-        fixed(d.output_power, 3),
-        fixed(d.power_lost(), 3),
-        if d.both_ends_deliver { "0 (both ends deliver)".into() } else { format!("{} %", fixed(100.0 * d.efficiency, 4)) },
-        d.iterations
-    );
-    header(
-        out,
-        &[
-            "stage",
-            "driving",
-            "T driving (N·m)",
-            "T driven (N·m)",
-            "n driving (rpm)",
-            "F_t (N)",
-            "F_r (N)",
-            "F_a (N)",
-            "η_mesh (%)",
-            "mesh loss (W)",
-            "no-load (W)",
-        ],
-    );
-    for s in &d.stages {
-        row(
-            out,
-            &[
-                s.name.clone(),
-                s.driving.name().to_string(),
-                fixed(s.driving_torque, 4),
-                fixed(s.driven_torque, 4),
-                fixed(s.driving_speed * RPM, 2),
-                fixed(s.tangential_force, 2),
-                fixed(s.radial_force, 2),
-                fixed(s.axial_force, 2),
-                fixed(100.0 * s.mesh_efficiency, 4),
-                fixed(s.mesh_loss, 3),
-                fixed(s.no_load, 3),
-            ],
-        );
-    }
-    md!(out);
-    header(
-        out,
-        &[
-            "shaft",
-            "n (rpm, + ccw)",
-            "T received (N·m)",
-            "T passed (N·m)",
-            "P received (W)",
-            "P passed (W)",
-            "bearings (W)",
-            "seals (W)",
-            "gears no-load (W)",
-        ],
-    );
-    for s in &d.shafts {
-        let bearings: f64 = s.bearings.iter().map(|b| b.no_load + b.load).sum();
-        row(
-            out,
-            &[
-                s.name.clone(),
-                fixed(s.speed * RPM, 2),
-                fixed(s.received_torque, 4),
-                fixed(s.passed_torque, 4),
-                fixed(s.received_power, 3),
-                fixed(s.passed_power, 3),
-                fixed(0.0 + bearings, 3),
-                fixed(s.seals, 3),
-                fixed(s.gear_no_load, 3),
-            ],
-        );
-    }
-    md!(out);
-    header(
-        out,
-        &[
-            "shaft",
-            "place at (mm)",
-            "type × count",
-            "locating",
-            "F_r per bearing (N)",
-            "F_a per bearing (N)",
-            "P_0 (W)",
-            "P_1 (W)",
-        ],
-    );
-    for s in &d.shafts {
-        for b in &s.bearings {
-            row(
-                out,
-                &[
-                    s.name.clone(),
-                    fixed(b.position * 1e3, 2),
-                    format!("{} × {}", b.kind, b.count),
-                    if b.locating { "yes".into() } else { String::new() },
-                    fixed(b.radial_load, 2),
-                    fixed(b.axial_load, 2),
-                    fixed(b.no_load, 3),
-                    fixed(b.load, 3),
-                ],
-            );
-        }
-    }
-    md!(out);
-    header(out, &["shaft", "gear", "point x, y, z (mm)", "force F_x, F_y, F_z (N)"]);
-    for s in &d.shafts {
-        for l in &s.gear_loads {
-            row(
-                out,
-                &[
-                    s.name.clone(),
-                    format!(
-                        "{} of stage {}",
-                        l.member.name(),
-                        d.stages.get(l.stage).map_or(String::new(), |x| x.name.clone())
-                    ),
-                    l.point.iter().map(|x| fixed(x * 1e3, 3)).collect::<Vec<_>>().join(", "),
-                    l.force.iter().map(|x| fixed(*x, 2)).collect::<Vec<_>>().join(", "),
-                ],
-            );
-        }
     }
     md!(out);
 }

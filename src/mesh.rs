@@ -4,7 +4,7 @@
 
 use crate::geometry::contact::reduced_modulus;
 use crate::geometry::PairGeometry;
-use crate::model::{GearPair, Lubricant, LubricantType};
+use crate::model::{GearPair, Lubricant, LubricantType, Scene, SceneDrive};
 use crate::tribology::Tribology;
 
 /// One pair and its lubricant.
@@ -12,6 +12,20 @@ use crate::tribology::Tribology;
 pub struct Mesh<'a> {
     pub gears: &'a GearPair,
     pub lubricant: Option<&'a Lubricant>,
+}
+
+impl Scene {
+    /// The scene's pair with its lubricant: the mesh the pair's evaluation reads.
+    pub fn mesh(&self) -> Mesh<'_> {
+        Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
+    }
+}
+
+impl SceneDrive {
+    /// Stage `k`'s pair in `lubricant`: the mesh its evaluation reads.
+    pub fn mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> Mesh<'a> {
+        Mesh { gears: &self.pairs[k], lubricant }
+    }
 }
 
 impl Mesh<'_> {

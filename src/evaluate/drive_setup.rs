@@ -1,0 +1,165 @@
+//! What every point of a drive's evaluation reads: each stage's mesh from its own pair (a
+//! [`crate::mesh::Mesh`], never the scene) as each member driving sees it, the forces' sizes, the
+//! oil; and one point, or a block of a grid's rows, solved ([`crate::drive::solve`]).
+//!
+//! Where a stage's wheel drives (coast), its mesh is evaluated as the pair with the roles swapped:
+//! the wheel in the pinion's place, so approach and recess exchange (Ohlendorf's H_V is symmetric
+//! in ε₁, ε₂); the efficiency of a law at a driving torque T and speed ω is 1 − P_mesh/(T ω), with
+//! P_mesh the mesh loss the budget of one pair charges ([`crate::efficiency::charged_mesh_loss`]).
+
+use rayon::prelude::*;
+
+use super::setup::law_at;
+use crate::drive::walk::DriveModel;
+use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes};
+use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
+use crate::friction::LawContext;
+use crate::geometry::sharing::Sharing;
+use crate::geometry::{OperatingState, PairGeometry};
+use crate::model::{FrictionLawSpec, GearPair, LoadSharing, Scene, SceneDrive};
+use crate::tribology::Tribology;
+
+/// One stage's mesh as each member driving sees it.
+pub(crate) struct StageMesh {
+    /// [pinion driving, wheel driving]: the pair with the driving member as its pinion.
+    geometry: [PairGeometry; 2],
+    h_v: [f64; 2],
+    tribology: Tribology,
+    whole: bool,
+}
+
+impl StageMesh {
+    fn of(drive: &SceneDrive, k: usize, scene: &Scene) -> StageMesh {
+        let mesh = drive.mesh(k, scene.lubricant.as_ref());
+        let e_r = mesh.reduced_modulus();
+        let tribology = mesh.tribology(e_r);
+        let geometry = [
+            mesh.geometry(),
+            swapped(&drive.pairs[k]).geometry().expect("a pair's geometry holds with the roles swapped"),
+        ];
+        let whole = drive.pairs[k].load_sharing == LoadSharing::None;
+        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole };
+        for d in 0..2 {
+            out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
+        }
+        out
+    }
+
+    fn context(&self, d: usize, torque: f64, speed: f64) -> LawContext<'_> {
+        LawContext {
+            geometry: &self.geometry[d],
+            state: OperatingState { pinion_torque: torque, pinion_speed: speed },
+            tribology: self.tribology,
+            sharing: if self.whole { Sharing::Whole } else { Sharing::Equal },
+        }
+    }
+
+    /// The sizes the mesh forces read (pinion and wheel as the stage names them).
+    fn sizes(&self) -> MeshForceSizes {
+        let g = &self.geometry[0];
+        MeshForceSizes {
+            working_pitch_radius: g.working_pitch_radius,
+            pitch_radius: g.pitch_radius,
+            working_pressure_angle: g.operating_pressure_angle,
+            helix_angle: g.helix_angle,
+            face_width: g.face_width,
+        }
+    }
+}
+
+/// The pair with pinion and wheel exchanged (the wheel driving).
+fn swapped(pair: &GearPair) -> GearPair {
+    GearPair { pinion: pair.wheel.clone(), wheel: pair.pinion.clone(), ..pair.clone() }
+}
+
+/// The meshes of every stage under one law and formulation.
+struct LawMeshes<'a> {
+    stages: &'a [StageMesh],
+    spec: &'a FrictionLawSpec,
+    formulation: Formulation,
+}
+
+impl MeshEfficiency for LawMeshes<'_> {
+    fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64 {
+        let s = &self.stages[stage];
+        let d = driving.index();
+        let ctx = s.context(d, torque, speed);
+        let law = law_at(self.spec, &ctx);
+        1.0 - charged_mesh_loss(&ctx, &*law, self.formulation, s.h_v[d]) / (torque * speed)
+    }
+}
+
+/// One operating point, law and formulation of a drive.
+#[derive(Debug, Clone)]
+pub struct DriveRow {
+    pub torque_index: usize,
+    pub speed_index: usize,
+    pub law_index: usize,
+    pub formulation: Formulation,
+    pub point: DrivePoint,
+}
+
+/// What every point of a drive reads.
+pub(crate) struct DriveSetup<'a> {
+    scene: &'a Scene,
+    drive: &'a SceneDrive,
+    stages: Vec<StageMesh>,
+    sizes: Vec<MeshForceSizes>,
+    oil: crate::losses::Oil,
+}
+
+impl<'a> DriveSetup<'a> {
+    pub(crate) fn new(scene: &'a Scene, drive: &'a SceneDrive) -> DriveSetup<'a> {
+        let stages: Vec<StageMesh> = (0..drive.pairs.len()).map(|k| StageMesh::of(drive, k, scene)).collect();
+        let sizes = stages.iter().map(StageMesh::sizes).collect();
+        let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
+        DriveSetup { scene, drive, stages, sizes, oil }
+    }
+
+    /// The drive at `torque` and `speed` under law `law` and `formulation`.
+    pub(crate) fn point(&self, law: usize, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
+        let meshes = LawMeshes { stages: &self.stages, spec: &self.scene.friction[law], formulation };
+        let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil };
+        solve(&model, &meshes, torque, speed)
+    }
+
+    /// Every (torque, speed, law, formulation) of a grid, in parallel, in that order.
+    pub(crate) fn grid(&self, torques: &[f64], speeds: &[f64], ends: crate::drive::DriveOperating) -> Vec<DriveRow> {
+        let n = torques.len() * speeds.len() * self.rows_per_point();
+        self.grid_rows(torques, speeds, ends, 0..n)
+    }
+
+    /// Rows (laws × formulations) per operating point.
+    pub(crate) fn rows_per_point(&self) -> usize {
+        self.scene.friction.len() * self.scene.analyses.efficiency.as_ref().map_or(0, Vec::len)
+    }
+
+    /// The rows `range` of a grid (torque-major, then law, then formulation), in parallel.
+    pub(crate) fn grid_rows(
+        &self,
+        torques: &[f64],
+        speeds: &[f64],
+        ends: crate::drive::DriveOperating,
+        range: std::ops::Range<usize>,
+    ) -> Vec<DriveRow> {
+        let formulations = self.scene.analyses.efficiency.clone().unwrap_or_default();
+        let per_point = self.rows_per_point();
+        range
+            .into_par_iter()
+            .map(|i| {
+                let (point, rest) = (i / per_point, i % per_point);
+                let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
+                let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
+                let torque = EndValue { at: ends.torque_at, value: torques[torque_index] };
+                let speed = EndValue { at: ends.speed_at, value: speeds[speed_index] };
+                DriveRow {
+                    torque_index,
+                    speed_index,
+                    law_index,
+                    formulation: formulations[f],
+                    point: self.point(law_index, formulations[f], torque, speed),
+                }
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,142 @@
+//! One operating point of a drive in report.md: its stages (driving member, torques, forces, η_mesh,
+//! losses), its shafts (speed, torque and power received and passed on, own losses), its bearing
+//! places (loads per bearing, P_0, P_1) and the mesh forces each shaft's statics read.
+
+use crate::render::markup::md;
+use crate::render::table::{fixed, header, row};
+use crate::report::drive::DrivePointReport;
+
+/// rad/s to rpm.
+const RPM: f64 = 30.0 / std::f64::consts::PI;
+
+pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
+    let d = &p.point;
+    md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
+    md!(
+        out,
+        "{}: {} W in at the input, {} W out at the output, {} W lost, η = {}; the bearing losses settled in {} passes.\n",
+        d.flow.name(),
+        fixed(d.input_power, 3),
+        fixed(d.output_power, 3),
+        fixed(d.power_lost(), 3),
+        if d.both_ends_deliver { "0 (both ends deliver)".into() } else { format!("{} %", fixed(100.0 * d.efficiency, 4)) },
+        d.iterations
+    );
+    header(
+        out,
+        &[
+            "stage",
+            "driving",
+            "T driving (N·m)",
+            "T driven (N·m)",
+            "n driving (rpm)",
+            "F_t (N)",
+            "F_r (N)",
+            "F_a (N)",
+            "η_mesh (%)",
+            "mesh loss (W)",
+            "no-load (W)",
+        ],
+    );
+    for s in &d.stages {
+        row(
+            out,
+            &[
+                s.name.clone(),
+                s.driving.name().to_string(),
+                fixed(s.driving_torque, 4),
+                fixed(s.driven_torque, 4),
+                fixed(s.driving_speed * RPM, 2),
+                fixed(s.tangential_force, 2),
+                fixed(s.radial_force, 2),
+                fixed(s.axial_force, 2),
+                fixed(100.0 * s.mesh_efficiency, 4),
+                fixed(s.mesh_loss, 3),
+                fixed(s.no_load, 3),
+            ],
+        );
+    }
+    md!(out);
+    header(
+        out,
+        &[
+            "shaft",
+            "n (rpm, + ccw)",
+            "T received (N·m)",
+            "T passed (N·m)",
+            "P received (W)",
+            "P passed (W)",
+            "bearings (W)",
+            "seals (W)",
+            "gears no-load (W)",
+        ],
+    );
+    for s in &d.shafts {
+        let bearings: f64 = s.bearings.iter().map(|b| b.no_load + b.load).sum();
+        row(
+            out,
+            &[
+                s.name.clone(),
+                fixed(s.speed * RPM, 2),
+                fixed(s.received_torque, 4),
+                fixed(s.passed_torque, 4),
+                fixed(s.received_power, 3),
+                fixed(s.passed_power, 3),
+                fixed(0.0 + bearings, 3),
+                fixed(s.seals, 3),
+                fixed(s.gear_no_load, 3),
+            ],
+        );
+    }
+    md!(out);
+    header(
+        out,
+        &[
+            "shaft",
+            "place at (mm)",
+            "type × count",
+            "locating",
+            "F_r per bearing (N)",
+            "F_a per bearing (N)",
+            "P_0 (W)",
+            "P_1 (W)",
+        ],
+    );
+    for s in &d.shafts {
+        for b in &s.bearings {
+            row(
+                out,
+                &[
+                    s.name.clone(),
+                    fixed(b.position * 1e3, 2),
+                    format!("{} × {}", b.kind, b.count),
+                    if b.locating { "yes".into() } else { String::new() },
+                    fixed(b.radial_load, 2),
+                    fixed(b.axial_load, 2),
+                    fixed(b.no_load, 3),
+                    fixed(b.load, 3),
+                ],
+            );
+        }
+    }
+    md!(out);
+    header(out, &["shaft", "gear", "point x, y, z (mm)", "force F_x, F_y, F_z (N)"]);
+    for s in &d.shafts {
+        for l in &s.gear_loads {
+            row(
+                out,
+                &[
+                    s.name.clone(),
+                    format!(
+                        "{} of stage {}",
+                        l.member.name(),
+                        d.stages.get(l.stage).map_or(String::new(), |x| x.name.clone())
+                    ),
+                    l.point.iter().map(|x| fixed(x * 1e3, 3)).collect::<Vec<_>>().join(", "),
+                    l.force.iter().map(|x| fixed(*x, 2)).collect::<Vec<_>>().join(", "),
+                ],
+            );
+        }
+    }
+    md!(out);
+}

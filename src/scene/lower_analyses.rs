@@ -1,0 +1,129 @@
+//! The `analyses` block: what the scene asks to compute (efficiency and its formulations, the map,
+//! friction along the line of action, film, dynamics, stability map, numerics, thermal balance, duty
+//! cycle, transmission error), with where each was asked for.
+
+use super::ast::*;
+use super::fields::{unknown_name, Fields};
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::model::*;
+
+const ANALYSES: &[&str] = &[
+    "efficiency",
+    "efficiency_map",
+    "friction_along_loa",
+    "film",
+    "contact",
+    "dynamics",
+    "stability_map",
+    "numerics",
+    "thermal_balance",
+    "duty_cycle",
+    "transmission_error",
+];
+const FORMULATIONS: &[&str] = &["external", "internal"];
+
+/// The `analyses` block; a drive's (`drive`) map is given at its ends.
+pub(super) fn lower_analyses(block: &Block, drive: bool, errors: &mut Vec<Diagnostic>) -> Analyses {
+    let f = Fields::read("the `analyses` block", block.span, &block.items, &[], &[], ANALYSES, errors);
+    let mut a = Analyses::default();
+    for call in &f.calls {
+        match call.name.text.as_str() {
+            "efficiency" => {
+                let mut formulations = vec![Formulation::External, Formulation::Internal];
+                for (name, value) in &call.arguments {
+                    if name.text != "formulations" {
+                        errors.push(unknown_name("argument of `efficiency`", name, &["formulations"]));
+                        continue;
+                    }
+                    match &value.kind {
+                        ValueKind::List { items, unit: None } => {
+                            formulations.clear();
+                            for item in items {
+                                match item {
+                                    ListItem::Name(n) if n.text == "external" => {
+                                        formulations.push(Formulation::External)
+                                    }
+                                    ListItem::Name(n) if n.text == "internal" => {
+                                        formulations.push(Formulation::Internal)
+                                    }
+                                    ListItem::Name(n) => errors.push(unknown_name("formulation", n, FORMULATIONS)),
+                                    ListItem::Number(_, s) => errors.push(
+                                        Diagnostic::new(DiagnosticKind::WrongDimension, *s, "a formulation is a name")
+                                            .hint("write `formulations = [external, internal]`"),
+                                    ),
+                                }
+                            }
+                            formulations.dedup();
+                            if items.is_empty() {
+                                errors.push(
+                                    Diagnostic::new(
+                                        DiagnosticKind::OutOfRange,
+                                        value.span,
+                                        "`formulations` is an empty list: there is nothing to compute",
+                                    )
+                                    .hint("name at least one: `formulations = [external, internal]`, or leave the argument out for both"),
+                                );
+                            }
+                        }
+                        _ => errors.push(
+                            Diagnostic::new(
+                                DiagnosticKind::WrongDimension,
+                                value.span,
+                                "`formulations` expects a list of names",
+                            )
+                            .hint("write `formulations = [external, internal]`"),
+                        ),
+                    }
+                }
+                a.efficiency = Some(formulations);
+                a.friction_span = Some(call.span);
+            }
+            "efficiency_map" if drive => {
+                if let Some((t, s, ends)) = super::lower_drive_operating::lower_drive_map(call, errors) {
+                    a.efficiency_map = Some((t, s));
+                    a.map_ends = Some(ends);
+                }
+                a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
+                a.friction_span = a.friction_span.or(Some(call.span));
+            }
+            "efficiency_map" => {
+                a.efficiency_map = super::lower_gearbox::lower_efficiency_map(call, errors);
+                // The map's formulations are those of `efficiency`: both unless the scene names them.
+                a.efficiency.get_or_insert_with(|| vec![Formulation::External, Formulation::Internal]);
+                a.friction_span = a.friction_span.or(Some(call.span));
+            }
+            "transmission_error" => a.transmission_error = super::lower_teeth::lower_transmission_error(call, errors),
+            "stability_map" => {
+                a.stability_map = super::lower_dynamics_blocks::lower_stability_map(call, errors);
+                a.dynamics_span = Some(call.span);
+            }
+            other => {
+                if let Some((name, _)) = call.arguments.first() {
+                    errors.push(unknown_name(&format!("argument of `{other}`"), name, &[]));
+                }
+                match other {
+                    "dynamics" => {
+                        a.dynamics = true;
+                        a.dynamics_span = Some(call.span);
+                    }
+                    "numerics" => {
+                        a.numerics = true;
+                        a.dynamics_span = Some(call.span);
+                    }
+                    "friction_along_loa" => {
+                        a.friction_along_loa = true;
+                        a.friction_span = Some(call.span);
+                    }
+                    "film" => {
+                        a.film = true;
+                        a.film_span = Some(call.span);
+                    }
+                    "thermal_balance" => a.thermal_balance = Some(call.span),
+                    "duty_cycle" => a.duty_cycle = Some(call.span),
+                    _ => {}
+                }
+            }
+        }
+    }
+    a
+}
