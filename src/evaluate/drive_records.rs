@@ -1,7 +1,7 @@
 //! drive_records.csv: one row per operating point, law and formulation of a drive, with every part
 //! of its loss: the ends (torque, speed, power), the loss parts, η and the passes, each stage's
 //! driving member, mesh efficiency and mesh loss, each bearing place's loads and losses, each
-//! shaft's seals. SI but speeds in rpm; numbers in Rust's shortest round-trip form.
+//! shaft's speed (signed), torques received and passed on, gears' no-load parts and seals. SI but speeds in rpm; numbers in Rust's shortest round-trip form.
 
 use std::io::Write;
 
@@ -53,7 +53,9 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
                 cols.push(format!("bearing_{}_{}_{c}", s.name, i + 1));
             }
         }
-        cols.push(format!("shaft_{}_seals_W", s.name));
+        for c in ["speed_rpm", "received_torque_N_m", "passed_torque_N_m", "gear_no_load_W", "seals_W"] {
+            cols.push(format!("shaft_{}_{c}", s.name));
+        }
     }
     writeln!(out, "{}", cols.join(","))
 }
@@ -99,7 +101,9 @@ pub(crate) fn row(out: &mut dyn Write, i: usize, flow: PowerFlow, r: &DriveRow) 
         for b in &s.bearings {
             cells.extend([b.radial_load, b.axial_load, b.no_load, b.load].iter().map(|x| x.to_string()));
         }
-        cells.push(s.seals.to_string());
+        cells.extend(
+            [s.speed * RPM, s.received_torque, s.passed_torque, s.gear_no_load, s.seals].iter().map(|x| x.to_string()),
+        );
     }
     writeln!(out, "{}", cells.join(","))
 }

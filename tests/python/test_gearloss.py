@@ -323,3 +323,28 @@ def test_replace_with_a_bad_number_says_what_is_wrong(value, said):
     messages = [d["message"] for d in e.value.diagnostics]
     assert any(said in m for m in messages), messages
     assert not any(m.endswith("but the value has no unit") for m in messages), messages
+
+
+def test_a_drive_as_tables():
+    """A drive of several stages (the EV reducer): drive_records with a row per point, law and
+    formulation, and the long tables per stage, shaft and bearing place, whose parts add up to the
+    records' columns (1e-9); a pair's report has none of them."""
+    report = gearloss.run(scene(ROOT / "specs/ev_two_stage_reducer.gear"))
+    records = report.drive_records
+    assert len(records) == 6
+    assert set(records["flow"]) == {"drive", "coast"}
+    stages, shafts, bearings = report.stages, report.shafts, report.bearings
+    assert len(stages) == 2 * 6 and set(stages["stage"]) == {"first", "second"}
+    assert len(shafts) == 3 * 6 and set(shafts["shaft"]) == {"motor", "lay", "output"}
+    assert len(bearings) == 6 * 6
+    coast = stages[stages["flow"] == "coast"]
+    assert set(coast["driving"]) == {"wheel"}
+    for row, r in records.set_index("row").iterrows():
+        mesh = stages[stages["row"] == row]["mesh_loss_W"].sum()
+        assert abs(mesh - r["meshes_W"]) <= 1e-9 * r["total_W"]
+        b = bearings[bearings["row"] == row]
+        assert abs(b["no_load_W"].sum() + b["load_W"].sum() - r["bearings_no_load_W"] - r["bearings_load_W"]) <= 1e-9 * r["total_W"]
+        s = shafts[shafts["row"] == row]
+        assert abs(s["seals_W"].sum() - r["seals_W"]) <= 1e-9 * r["total_W"]
+    pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    assert pair.drive_records.empty and pair.stages.empty and pair.bearings.empty

@@ -188,6 +188,41 @@ class Report:
         return self._kind("dynamics")
 
     @property
+    def drive_records(self):
+        """``drive_records.csv`` of a drive of several stages as a DataFrame: a row per operating
+        point, law and formulation with the ends' torque, speed and power, every loss part, η,
+        the passes, and each stage's, bearing place's and shaft's columns; empty for one pair."""
+        import pandas
+
+        if "drive_records.csv" not in self._files:
+            return pandas.DataFrame()
+        return pandas.read_csv(io.BytesIO(self._files["drive_records.csv"]))
+
+    @property
+    def stages(self):
+        """Per record row and stage: the driving member, its torque, η_mesh, the mesh loss and the
+        stage's no-load loss (W)."""
+        names = [s["name"] for s in self.data.get("stages", [])]
+        cols = ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W"]
+        return _drive_long(self, "stage", names, cols, "stage")
+
+    @property
+    def shafts(self):
+        """Per record row and shaft: its speed (rpm, signed about +z), the torques it receives and
+        passes on (N·m), its gears' no-load parts and its seals (W)."""
+        names = [s["name"] for s in self.data.get("shafts", [])]
+        cols = ["speed_rpm", "received_torque_N_m", "passed_torque_N_m", "gear_no_load_W", "seals_W"]
+        return _drive_long(self, "shaft", names, cols, "shaft")
+
+    @property
+    def bearings(self):
+        """Per record row and bearing place (``shaft_place``, the place 1 or 2 of its shaft): the
+        radial and axial load per bearing (N) and the place's P_0 and P_1 (W)."""
+        names = [f"{s['name']}_{i + 1}" for s in self.data.get("shafts", []) for i in range(len(s["bearings"]))]
+        cols = ["radial_N", "axial_N", "no_load_W", "load_W"]
+        return _drive_long(self, "bearing", names, cols, "place")
+
+    @property
     def plots(self) -> list:
         """The names of the report's plots (``svg(name)`` reads one)."""
         return sorted(f for f in self._files if f.endswith(".svg"))
@@ -217,3 +252,22 @@ class Report:
 
     def __repr__(self) -> str:
         return f"Report({self.name!r}, {len(self._files)} files)"
+
+
+def _drive_long(report: "Report", prefix: str, names, columns, key: str):
+    """A long table from drive_records.csv's wide columns ``<prefix>_<name>_<column>``: a row per
+    record row and name, keyed by the record's indices, law and formulation."""
+    import pandas
+
+    wide = report.drive_records
+    keys = ["row", "torque_index", "speed_index", "law_index", "formulation", "flow"]
+    parts = []
+    for name in names:
+        cols = {f"{prefix}_{name}_{c}": c for c in columns}
+        part = wide[keys + list(cols)].rename(columns=cols)
+        part.insert(len(keys), key, name)
+        parts.append(part)
+    if not parts:
+        return pandas.DataFrame()
+    return pandas.concat(parts, ignore_index=True).sort_values(["row", key], kind="stable").reset_index(drop=True)
+
