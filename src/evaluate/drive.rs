@@ -13,6 +13,8 @@ pub use super::drive_setup::DriveRow;
 pub struct DriveEvaluation {
     pub rows: Vec<DriveRow>,
     pub map: Vec<DriveRow>,
+    /// For every kept row, each stage's validity of the row's law.
+    pub validity: Vec<Vec<super::laws::ValiditySummary>>,
     /// The thermal balance of every kept row, when the scene asks for it.
     pub balances: Vec<super::drive_thermal::DriveBalanceRow>,
     pub tally: DriveTally,
@@ -47,13 +49,22 @@ pub fn evaluate_drive_into(
     let mut rows = Vec::new();
     let mut tally = DriveTally { rows: n, ..Default::default() };
     super::drive_records::header(records, drive)?;
+    let mut validity = Vec::new();
     for start in (0..n).step_by(BLOCK) {
+        use rayon::prelude::*;
         let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(n));
-        for (i, row) in block.into_iter().enumerate() {
-            super::drive_records::row(records, start + i, row.point.flow, &row)?;
+        let checked: Vec<_> = block.par_iter().map(|r| setup.validity(r.law_index, &r.point)).collect();
+        for (i, (row, valid)) in block.into_iter().zip(checked).enumerate() {
+            let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
+            super::drive_records::row(records, start + i, row.point.flow, &row, &outside)?;
             tally.add(start + i, &row.point);
+            if outside.iter().any(|o| *o > 0) {
+                tally.outside_rows += 1;
+                tally.first_outside.get_or_insert(start + i);
+            }
             if rows.len() < DETAIL_ROWS {
                 rows.push(row);
+                validity.push(valid);
             }
         }
     }
@@ -67,7 +78,7 @@ pub fn evaluate_drive_into(
         (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
         _ => Vec::new(),
     };
-    Ok(DriveEvaluation { rows, map, balances, tally })
+    Ok(DriveEvaluation { rows, map, validity, balances, tally })
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the
@@ -78,6 +89,9 @@ pub struct DriveTally {
     pub both_ends: usize,
     pub least: Option<(f64, usize)>,
     pub greatest: Option<(f64, usize)>,
+    /// Rows where a stage's law leaves its validity range somewhere on A–E, and the first of them.
+    pub outside_rows: usize,
+    pub first_outside: Option<usize>,
 }
 
 impl DriveTally {

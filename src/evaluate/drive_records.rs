@@ -43,7 +43,7 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
     .map(|c| c.to_string())
     .collect();
     for s in &drive.layout.stages {
-        for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W"] {
+        for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W", "validity_outside"] {
             cols.push(format!("stage_{}_{c}", s.name));
         }
     }
@@ -61,7 +61,15 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
 }
 
 /// One row.
-pub(crate) fn row(out: &mut dyn Write, i: usize, flow: PowerFlow, r: &DriveRow) -> std::io::Result<()> {
+/// One row; `outside`: by stage, the law's contacts outside its validity (of
+/// [`super::drive_setup::VALIDITY_SAMPLES`]).
+pub(crate) fn row(
+    out: &mut dyn Write,
+    i: usize,
+    flow: PowerFlow,
+    r: &DriveRow,
+    outside: &[usize],
+) -> std::io::Result<()> {
     let d = &r.point;
     let l = &d.losses;
     let mut cells: Vec<String> = vec![
@@ -93,9 +101,10 @@ pub(crate) fn row(out: &mut dyn Write, i: usize, flow: PowerFlow, r: &DriveRow) 
     );
     cells.push(d.both_ends_deliver.to_string());
     cells.push(d.iterations.to_string());
-    for s in &d.stages {
+    for (k, s) in d.stages.iter().enumerate() {
         cells.push(s.driving.name().to_string());
         cells.extend([s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load].iter().map(|x| x.to_string()));
+        cells.push(outside.get(k).copied().unwrap_or(0).to_string());
     }
     for s in &d.shafts {
         for b in &s.bearings {

@@ -99,6 +99,9 @@ pub struct DriveRow {
     pub point: DrivePoint,
 }
 
+/// Contacts along A–E at which a law's validity is read on each stage.
+pub(crate) const VALIDITY_SAMPLES: usize = 241;
+
 /// What every point of a drive reads.
 pub(crate) struct DriveSetup<'a> {
     scene: &'a Scene,
@@ -114,6 +117,28 @@ impl<'a> DriveSetup<'a> {
         let sizes = stages.iter().map(StageMesh::sizes).collect();
         let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
         DriveSetup { scene, drive, stages, sizes, oil }
+    }
+
+    /// Where law `law` leaves its validity range on each stage's mesh at `point` (the driving
+    /// member's torque and speed, the pair as that member drives it): the law's verdict at
+    /// [`VALIDITY_SAMPLES`] contacts evenly from A to E, by stage.
+    pub(crate) fn validity(&self, law: usize, point: &DrivePoint) -> Vec<super::laws::ValiditySummary> {
+        point
+            .stages
+            .iter()
+            .enumerate()
+            .map(|(k, s)| {
+                let mesh = &self.stages[k];
+                let d = s.driving.index();
+                let ctx = mesh.context(d, s.driving_torque.abs().max(f64::MIN_POSITIVE), s.driving_speed);
+                let built = law_at(&self.scene.friction[law], &ctx);
+                let p = mesh.geometry[d].points;
+                let contacts: Vec<_> = (0..VALIDITY_SAMPLES)
+                    .map(|i| ctx.contact_at(p.a + (p.e - p.a) * i as f64 / (VALIDITY_SAMPLES - 1) as f64))
+                    .collect();
+                super::laws::validity_summary(&*built, &contacts)
+            })
+            .collect()
     }
 
     /// The drive at `torque` and `speed` under law `law` and `formulation`.

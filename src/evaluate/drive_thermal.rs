@@ -1,7 +1,8 @@
 //! A drive's thermal balance (one sump, one thermal node, as for one pair): at each operating point,
 //! law and formulation, the oil temperature θ* where the drive's whole loss P_V(θ) (every mesh,
 //! gear, bearing and seal of the drive at the oil read at θ) equals what the housing gives off,
-//! P_Q(θ) ([`crate::thermal::balance`]: the lowest root, bracketed by a scan and located by Brent).
+//! P_Q(θ) ([`crate::thermal::balance`]: the lowest root, bracketed by a scan and located by Brent);
+//! in drive, the thermal rating: the torque at the given end that puts θ* on the oil's limit.
 
 use super::drive_setup::{DriveRow, DriveSetup};
 use crate::drive::EndValue;
@@ -20,10 +21,19 @@ pub struct DriveBalanceRow {
     /// P_V(θ*) and P_Q(θ*) (W); None without a balance.
     pub loss: Option<f64>,
     pub dissipation: Option<f64>,
+    /// In drive: the torque at the given end (N·m) the box carries continuously with the sump at
+    /// the oil's limit ([`crate::thermal::rating_torque`] at this point's speed); None in coast, or
+    /// when no torque reaches the limit.
+    pub rating: Option<f64>,
 }
 
 /// P_V(θ) of the drive at `row`'s point, law and formulation (W).
 fn loss_at(scene: &Scene, drive: &SceneDrive, row: &DriveRow, theta: f64) -> f64 {
+    loss_at_torque(scene, drive, row, scene.operating.pinion_torque.values[row.torque_index].value, theta)
+}
+
+/// P_V(θ) of the drive at `row`'s speed, law and formulation with `torque` (N·m) at the given end.
+fn loss_at_torque(scene: &Scene, drive: &SceneDrive, row: &DriveRow, torque: f64, theta: f64) -> f64 {
     let given = Given {
         value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(theta),
         written: format!("{theta} K"),
@@ -33,7 +43,7 @@ fn loss_at(scene: &Scene, drive: &SceneDrive, row: &DriveRow, theta: f64) -> f64
     let setup = DriveSetup::new(&at, drive);
     let op = &scene.operating;
     let ends = drive.layout.operating;
-    let torque = EndValue { at: ends.torque_at, value: op.pinion_torque.values[row.torque_index].value };
+    let torque = EndValue { at: ends.torque_at, value: torque };
     let speed = EndValue { at: ends.speed_at, value: op.pinion_speed.values[row.speed_index].value };
     setup.point(row.law_index, row.formulation, torque, speed).power_lost()
 }
@@ -58,6 +68,13 @@ pub(crate) fn drive_balances(
                 balance,
                 loss,
                 dissipation: balance.temperature.map(|t| housing.dissipation(t).total),
+                rating: (row.point.flow == crate::drive::PowerFlow::Drive)
+                    .then(|| {
+                        let given = scene.operating.pinion_torque.values[row.torque_index].value;
+                        let p_v = |torque: f64, theta: f64| loss_at_torque(scene, drive, row, torque, theta);
+                        crate::thermal::rating_torque(p_v, housing, housing.max_oil_temperature, given.max(1.0))
+                    })
+                    .flatten(),
             }
         })
         .collect()

@@ -83,7 +83,7 @@ pub struct LawCurves {
     pub efficiency: Vec<(Formulation, Vec<f64>)>,
 }
 
-fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> ValiditySummary {
+pub(crate) fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint]) -> ValiditySummary {
     let mut intervals: Vec<(f64, f64, &'static str)> = Vec::new();
     let mut outside = 0;
     let mut open: Option<(f64, f64, &'static str)> = None;

@@ -18,6 +18,9 @@ pub struct DrivePointReport {
     pub law: String,
     pub formulation: String,
     pub point: DrivePoint,
+    /// By stage: the law's contacts outside its validity range of those read along A–E, and the
+    /// first reason met (empty when inside).
+    pub validity: Vec<(usize, usize, String)>,
 }
 
 /// The map over the ends' torque × speed, for one law and formulation: the total loss (W) and η.
@@ -54,6 +57,10 @@ pub struct DriveBalanceReport {
     pub dissipation: Option<f64>,
     /// "ok", "above the limit" or "no balance up to 200 °C", in words.
     pub status: String,
+    /// In drive: the torque at the given end (N·m) that the box carries with the sump at the oil's
+    /// limit, at this point's speed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<f64>,
 }
 
 /// The report of a drive.
@@ -76,6 +83,9 @@ pub struct DriveReport {
     pub least_efficiency: Option<(f64, String)>,
     pub greatest_efficiency: Option<(f64, String)>,
     pub both_ends_rows: usize,
+    /// Rows where a stage's law leaves its validity range (drive_records.csv's
+    /// `stage_<name>_validity_outside` say where).
+    pub outside_rows: usize,
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
     pub points: Vec<DrivePointReport>,
@@ -108,11 +118,16 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
     let points: Vec<DrivePointReport> = eval
         .rows
         .iter()
-        .map(|r| DrivePointReport {
+        .zip(&eval.validity)
+        .map(|(r, v)| DrivePointReport {
             label: label(r),
             law: laws[r.law_index].clone(),
             formulation: r.formulation.name().to_string(),
             point: r.point.clone(),
+            validity: v
+                .iter()
+                .map(|s| (s.outside, s.samples, s.intervals.first().map_or_else(String::new, |i| i.2.to_string())))
+                .collect(),
         })
         .collect();
     let speeds = crate::drive::walk::shaft_speeds(layout, crate::drive::EndValue { at: ShaftEnd::Input, value: 1.0 });
@@ -128,6 +143,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         least_efficiency: eval.tally.least.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
         greatest_efficiency: eval.tally.greatest.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
         both_ends_rows: eval.tally.both_ends,
+        outside_rows: eval.tally.outside_rows,
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
         findings: findings(layout, &points),
@@ -152,6 +168,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 loss: b.loss,
                 dissipation: b.dissipation,
                 status: b.balance.status.words().to_string(),
+                rating: b.rating,
             })
             .collect(),
         points,
@@ -160,6 +177,16 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         report.findings.push(Finding {
             severity: Severity::Warning,
             message: format!("{} ({}, {}): the sump {}", b.label, b.law, b.formulation, b.status),
+        });
+    }
+    let shown = report.points.iter().filter(|p| p.validity.iter().any(|v| v.0 > 0)).count();
+    if report.outside_rows > shown {
+        report.findings.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} of {} rows have a stage whose law is outside its validity range (drive_records.csv: `stage_<name>_validity_outside`)",
+                report.outside_rows, report.rows
+            ),
         });
     }
     for path in super::non_finite::non_finite_paths(&report) {
@@ -252,6 +279,19 @@ fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Fi
                 if p.point.flow == PowerFlow::Drive { "input" } else { "output" }
             ),
         });
+    }
+    for p in points.iter() {
+        for ((outside, samples, reason), stage) in p.validity.iter().zip(&p.point.stages) {
+            if *outside > 0 {
+                out.push(Finding {
+                    severity: Severity::Warning,
+                    message: format!(
+                        "{} ({}, {}): stage `{}`: the law is outside its validity range at {outside} of {samples} contacts along A–E ({reason})",
+                        p.label, p.law, p.formulation, stage.name
+                    ),
+                });
+            }
+        }
     }
     if let Some(p) = points.iter().find(|p| p.point.iterations >= 100) {
         out.push(Finding {

@@ -334,3 +334,47 @@ fn drive_records_hold_every_part() {
         );
     }
 }
+
+/// A law used outside its validity range on a stage is flagged: Drozdov–Gavrikov holds for rolling
+/// velocities of 3–20 m/s, so at 10 rpm at the output every contact of both stages is outside
+/// (241 of 241 in the report and in drive_records.csv) and a warning names each stage.
+#[test]
+fn a_law_outside_its_validity_is_flagged_on_each_stage() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear"))
+        .unwrap()
+        .replace("friction { iso_14179_2(x_l = 0.75) }", "friction { drozdov_gavrikov }")
+        .replace("output_torque = [-500, 150, 1000] N*m", "output_torque = 300 N*m")
+        .replace("output_speed  = [500, 1000] rpm", "output_speed = 10 rpm")
+        .replace("efficiency_map(output_torque = -1000..1000 N*m count 41, output_speed = 10..1500 rpm count 30)", "")
+        .replace("        thermal_balance\n", "");
+    let r = gearloss::run_to_files("slow.gear", &text).unwrap_or_else(|e| panic!("{e}"));
+    let json = &r.files.iter().find(|(f, _)| f == "report.json").unwrap().1;
+    let report: gearloss::report::drive::DriveReport = serde_json::from_str(json).unwrap();
+    assert_eq!(report.points[0].validity.iter().map(|v| (v.0, v.1)).collect::<Vec<_>>(), vec![(241, 241); 2]);
+    let warned = |stage: &str| {
+        report.findings.iter().any(|f| f.message.contains(&format!("stage `{stage}`: the law is outside")))
+    };
+    assert!(warned("first") && warned("second"));
+    let csv = &r.files.iter().find(|(f, _)| f == "drive_records.csv").unwrap().1;
+    assert!(csv.lines().nth(1).unwrap().contains(",241,"));
+}
+
+/// The thermal rating: with the rated output torque the drive's sump settles on the oil's limit
+/// (120 °C, to 1e-6 K), at both speeds of the EV reducer.
+#[test]
+fn thermal_rating_puts_the_sump_on_the_limit() {
+    let scene = ev_reducer();
+    let eval = evaluate_drive(&scene, scene.drive.as_ref().unwrap());
+    let rated: Vec<(usize, f64)> = eval.balances.iter().filter_map(|b| b.rating.map(|r| (b.speed_index, r))).collect();
+    assert!(rated.len() >= 4);
+    for (speed, torque) in rated {
+        let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+        let rpm = [500, 1000][speed];
+        let text = text
+            .replace("output_torque = [-500, 150, 1000] N*m", &format!("output_torque = {torque:?} N*m"))
+            .replace("output_speed  = [500, 1000] rpm", &format!("output_speed = {rpm} rpm"));
+        let at = gearloss::check("rated.gear", &text).unwrap();
+        let b = &evaluate_drive(&at, at.drive.as_ref().unwrap()).balances[0];
+        assert!((b.balance.temperature.unwrap() - 393.15).abs() < 1e-6, "{:?} at {torque} N*m", b.balance);
+    }
+}

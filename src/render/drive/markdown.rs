@@ -233,13 +233,16 @@ fn thermal(out: &mut String, r: &DriveReport) {
         return;
     }
     md!(out, "## Thermal balance (one sump)\n");
-    md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K.\n");
+    md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed.\n");
     header(out, &["housing", "", "unit"]);
     for (what, v, unit) in &r.housing {
         row(out, &[what.clone(), fixed(*v, 4), unit.clone()]);
     }
     md!(out);
-    header(out, &["point", "law", "formulation", "θ* (°C)", "P_V(θ*) (W)", "P_Q(θ*) (W)", "the sump"]);
+    header(
+        out,
+        &["point", "law", "formulation", "θ* (°C)", "P_V(θ*) (W)", "P_Q(θ*) (W)", "the sump", "thermal rating (N·m)"],
+    );
     let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
     for b in &r.thermal {
         row(
@@ -252,6 +255,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
                 opt(b.loss, 3),
                 opt(b.dissipation, 3),
                 b.status.clone(),
+                opt(b.rating, 2),
             ],
         );
     }

@@ -36,9 +36,11 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
             "η_mesh (%)",
             "mesh loss (W)",
             "no-load (W)",
+            "law outside validity",
         ],
     );
-    for s in &d.stages {
+    for (k, s) in d.stages.iter().enumerate() {
+        let validity = p.validity.get(k).map_or_else(String::new, |(o, n, _)| format!("{o} of {n}"));
         row(
             out,
             &[
@@ -53,6 +55,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
                 fixed(100.0 * s.mesh_efficiency, 4),
                 fixed(s.mesh_loss, 3),
                 fixed(s.no_load, 3),
+                validity,
             ],
         );
     }
