@@ -231,8 +231,8 @@ fn written(result: Result<gearloss::Written, gearloss::RunError>) -> ExitCode {
             for (label, report) in &w.reports {
                 say!(out, "{}\n", gearloss::render::terminal::run_summary(report, label));
             }
-            if let Some(drive) = &w.drive {
-                say!(out, "{}\n", gearloss::render::terminal::drive_summary(drive));
+            for (label, drive) in &w.drives {
+                say!(out, "{}\n", gearloss::render::terminal::drive_summary(drive, label));
             }
             outln!("wrote {} ({} files: report.md is the report)", w.folder.display(), w.files.len());
             ExitCode::SUCCESS

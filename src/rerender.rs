@@ -42,6 +42,14 @@ pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
     if let Ok(drive) = serde_json::from_str::<crate::report::drive::DriveReport>(&text) {
         return Ok(render::drive::render_drive(&drive).map_err(RunError::drawing)?.files);
     }
+    if let Ok(sweep) = serde_json::from_str::<crate::report::drive_oil_sweep::DriveOilSweepReport>(&text) {
+        let mut files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep);
+        for run in &sweep.runs {
+            let inner = render_folder(&dir.join(&run.folder))?;
+            files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
+        }
+        return Ok(files);
+    }
     let sweep: OilSweepReport = serde_json::from_str(&text).map_err(|e| bad(dir, "report.json", e))?;
     let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
     for run in &sweep.runs {

@@ -84,6 +84,9 @@ pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, R
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let slug = report::slug(&scene.title);
     if let Some(drive) = &scene.drive {
+        if scene.operating.oil_temperatures.is_some() {
+            return Ok(RenderedReport { slug, files: drive_sweep_files(&scene)?.0 });
+        }
         return Ok(drive_report_files(&scene, drive)?.1);
     }
     if scene.operating.oil_temperatures.is_none() {
@@ -166,8 +169,8 @@ pub struct Written {
     pub folder: PathBuf,
     pub files: Vec<String>,
     pub reports: Vec<(String, Report)>,
-    /// The report of a drive of several stages (then `reports` is empty).
-    pub drive: Option<crate::report::drive::DriveReport>,
+    /// The reports of a drive of several stages, labelled as `reports` are (then `reports` is empty).
+    pub drives: LabelledDrives,
 }
 
 /// A drive scene evaluated, reported and rendered in memory, its records among the files.
@@ -184,6 +187,29 @@ pub fn drive_report_files(
     Ok((report, rendered))
 }
 
+/// Drive reports with their labels (their folders at several oil temperatures, else empty).
+type LabelledDrives = Vec<(String, crate::report::drive::DriveReport)>;
+
+/// A drive scene at several oil temperatures in memory: each run's files under its folder, then the
+/// comparison's files at the top; with the runs' reports.
+fn drive_sweep_files(scene: &Scene) -> Result<(Vec<(String, String)>, LabelledDrives), RunError> {
+    let mut runs = Vec::new();
+    let mut files = Vec::new();
+    let kelvin: Vec<f64> =
+        scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
+    for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
+        let at = scene.at_oil_temperature(i);
+        let drive = at.drive.as_ref().expect("a drive scene at another temperature is a drive scene");
+        let dir = report::oil_sweep::run_folder(&label);
+        let (report, rendered) = drive_report_files(&at, drive)?;
+        files.extend(rendered.files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
+        runs.push((label, kelvin, dir, report));
+    }
+    let top = render::drive::oil_sweep::render_drive_oil_sweep(&report::drive_oil_sweep::build_drive_oil_sweep(&runs));
+    let reports = runs.into_iter().map(|(_, _, dir, r)| (dir, r)).collect();
+    Ok((top.into_iter().chain(files).collect(), reports))
+}
+
 /// A drive scene into its report folder, written whole.
 fn run_drive_into(
     scene: &Scene,
@@ -194,6 +220,16 @@ fn run_drive_into(
     let folder =
         ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
     progress.stage("evaluate", 1);
+    if scene.operating.oil_temperatures.is_some() {
+        let (rendered, drives) = drive_sweep_files(scene)?;
+        let mut files = Vec::new();
+        for (file, content) in &rendered {
+            folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+            files.push(file.clone());
+        }
+        let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+        return Ok(Written { folder, files, reports: Vec::new(), drives });
+    }
     let io = RunError::io("the record files");
     let file = folder.create_file(evaluate::drive_records::FILE).map_err(&io)?;
     let mut records = std::io::BufWriter::new(file);
@@ -209,7 +245,7 @@ fn run_drive_into(
         progress.advance(1);
     }
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: Vec::new(), drive: Some(report) })
+    Ok(Written { folder, files, reports: Vec::new(), drives: vec![(String::new(), report)] })
 }
 
 /// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
@@ -239,7 +275,7 @@ pub fn run_into(
         if labels.is_empty() {
             let (report, files) = run_scene_into(scene, &folder, "", progress)?;
             let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-            return Ok(Written { folder, files, reports: vec![(String::new(), report)], drive: None });
+            return Ok(Written { folder, files, reports: vec![(String::new(), report)], drives: Vec::new() });
         }
         let mut files = Vec::new();
         let mut reports = Vec::new();
@@ -254,7 +290,7 @@ pub fn run_into(
             files.insert(k, file);
         }
         let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-        return Ok(Written { folder, files, reports, drive: None });
+        return Ok(Written { folder, files, reports, drives: Vec::new() });
     };
     if !labels.is_empty() {
         return Err(RunError::Shards(
@@ -273,7 +309,7 @@ pub fn run_into(
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: Vec::new(), drive: None })
+    Ok(Written { folder, files, reports: Vec::new(), drives: Vec::new() })
 }
 
 /// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
@@ -296,5 +332,5 @@ pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -
         files.push(file.clone());
     }
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: vec![(String::new(), report)], drive: None })
+    Ok(Written { folder, files, reports: vec![(String::new(), report)], drives: Vec::new() })
 }

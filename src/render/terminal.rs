@@ -32,8 +32,9 @@ pub fn run_summary(report: &Report, label: &str) -> String {
 
 /// The terminal summary of a drive's run: each operating point's ends, total loss and η, then the
 /// number of warnings and the first of them.
-pub fn drive_summary(report: &crate::report::drive::DriveReport) -> String {
-    let mut out = format!("{}\n\n", report.title);
+pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) -> String {
+    let at = if label.is_empty() { String::new() } else { format!(" ({label})") };
+    let mut out = format!("{}{at}\n\n", report.title);
     for p in &report.points {
         let d = &p.point;
         out.push_str(&format!(

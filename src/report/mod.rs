@@ -3,6 +3,7 @@
 pub(crate) mod checks;
 pub mod drive;
 pub mod drive_inputs;
+pub mod drive_oil_sweep;
 pub(crate) mod dynamics;
 pub(crate) mod dynamics_findings;
 pub(crate) mod dynamics_records;

@@ -56,22 +56,11 @@ pub(super) fn lower_drive_operating(
         return None;
     }
     let (oil_temperature, oil_temperatures) = super::lower_operating::oil_temperatures(&f, errors);
-    if let Some(sweep) = &oil_temperatures {
-        errors.push(
-            Diagnostic::new(
-                DiagnosticKind::OutOfRange,
-                sweep.span,
-                "a drive runs at one oil temperature in this version",
-            )
-            .hint("write one `oil_temperature`; one scene a temperature compares them"),
-        );
-        return None;
-    }
     let operating = Operating {
         pinion_torque: torque,
         pinion_speed: speed,
         oil_temperature,
-        oil_temperatures: None,
+        oil_temperatures,
         detail_points: Vec::new(),
         equilibrium: None,
     };

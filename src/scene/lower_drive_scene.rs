@@ -89,6 +89,9 @@ pub(super) fn lower_drive_scene(
         housing.as_ref(),
         errors,
     );
+    if let Some((op, _)) = &operating {
+        super::lower_operating::check_oil_sweep(op, lubricant.as_ref(), errors);
+    }
     let friction = singles.get("friction").map_or_else(Vec::new, |b| super::lower_friction::lower_friction(b, errors));
     let analyses = singles
         .get("analyses")

@@ -378,3 +378,29 @@ fn thermal_rating_puts_the_sump_on_the_limit() {
         assert!((b.balance.temperature.unwrap() - 393.15).abs() < 1e-6, "{:?} at {torque} N*m", b.balance);
     }
 }
+
+/// Several oil temperatures: one drive report per temperature in its folder, each the report the
+/// drive gives at that temperature alone (report.json byte for byte), and their comparison at the
+/// top; `gearloss render` draws the same files again from the folder's report.json files.
+#[test]
+fn a_drive_at_several_oil_temperatures() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    let swept = text.replace("oil_temperature = 80 degC", "oil_temperature = [60, 80] degC");
+    let r = gearloss::run_to_files("swept.gear", &swept).unwrap_or_else(|e| panic!("{e}"));
+    let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap_or_else(|| panic!("{n}")).1;
+    let alone = gearloss::run_to_files("ev.gear", &text).unwrap();
+    let alone_json = &alone.files.iter().find(|(f, _)| f == "report.json").unwrap().1;
+    assert_eq!(file("oil_temperature_80degC/report.json"), alone_json);
+    assert!(file("report.md").contains("[60 degC](oil_temperature_60degC/report.md)"));
+    let dir = std::env::temp_dir().join(format!("gearloss-drive-oil-{}", std::process::id()));
+    for (name, content) in &r.files {
+        let path = dir.join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, content).unwrap();
+    }
+    let again = gearloss::rerender::render_folder(&dir).unwrap();
+    for (name, content) in again {
+        assert_eq!(&content, file(&name), "{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

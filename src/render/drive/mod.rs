@@ -5,6 +5,7 @@
 
 pub(crate) mod loss_map;
 pub(crate) mod markdown;
+pub mod oil_sweep;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
 

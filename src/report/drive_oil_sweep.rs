@@ -1,0 +1,54 @@
+//! A drive run at several oil temperatures: one drive report per temperature (in its own folder)
+//! and their comparison, row by row (operating point, law, formulation): the total loss and η at
+//! each temperature, and the loss parts.
+
+use serde::{Deserialize, Serialize};
+
+use super::drive::DriveReport;
+
+/// One temperature's run: where its report is and its rows.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveOilRun {
+    /// As written (`60 degC`), in K, and the run's folder.
+    pub label: String,
+    pub kelvin: f64,
+    pub folder: String,
+    /// Per shown row: (total loss W, η, meshes W, bearings W).
+    pub rows: Vec<(f64, f64, f64, f64)>,
+}
+
+/// The comparison.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveOilSweepReport {
+    pub title: String,
+    pub slug: String,
+    /// The shown rows' labels (point, law, formulation), the same in every run.
+    pub rows: Vec<String>,
+    pub runs: Vec<DriveOilRun>,
+}
+
+/// The comparison of `runs`: (temperature as written, in K, its folder, its report).
+pub fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)]) -> DriveOilSweepReport {
+    let first = &runs[0].3;
+    DriveOilSweepReport {
+        title: first.title.clone(),
+        slug: first.slug.clone(),
+        rows: first.points.iter().map(|p| format!("{} ({}, {})", p.label, p.law, p.formulation)).collect(),
+        runs: runs
+            .iter()
+            .map(|(label, kelvin, folder, r)| DriveOilRun {
+                label: label.clone(),
+                kelvin: *kelvin,
+                folder: folder.clone(),
+                rows: r
+                    .points
+                    .iter()
+                    .map(|p| {
+                        let l = &p.point.losses;
+                        (l.total(), p.point.efficiency, l.meshes, l.bearings_no_load + l.bearings_load)
+                    })
+                    .collect(),
+            })
+            .collect(),
+    }
+}
