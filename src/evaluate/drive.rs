@@ -17,6 +17,8 @@ pub struct DriveEvaluation {
     pub validity: Vec<Vec<super::laws::ValiditySummary>>,
     /// The thermal balance of every kept row, when the scene asks for it.
     pub balances: Vec<super::drive_thermal::DriveBalanceRow>,
+    /// The duty cycle, when the scene asks for it.
+    pub duty: Option<super::thermal::DutyCycleResult>,
     pub tally: DriveTally,
 }
 
@@ -78,7 +80,11 @@ pub fn evaluate_drive_into(
         (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
         _ => Vec::new(),
     };
-    Ok(DriveEvaluation { rows, map, validity, balances, tally })
+    let duty = match (&scene.housing, &scene.duty_cycle, scene.analyses.duty_cycle) {
+        (Some(h), Some(c), Some(_)) => Some(super::drive_thermal::drive_duty(scene, drive, h, c)),
+        _ => None,
+    };
+    Ok(DriveEvaluation { rows, map, validity, balances, duty, tally })
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the

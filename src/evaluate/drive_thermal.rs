@@ -34,6 +34,22 @@ fn loss_at(scene: &Scene, drive: &SceneDrive, row: &DriveRow, theta: f64) -> f64
 
 /// P_V(θ) of the drive at `row`'s speed, law and formulation with `torque` (N·m) at the given end.
 fn loss_at_torque(scene: &Scene, drive: &SceneDrive, row: &DriveRow, torque: f64, theta: f64) -> f64 {
+    let speed = scene.operating.pinion_speed.values[row.speed_index].value;
+    loss_at_point(scene, drive, (row.law_index, row.formulation), (torque, speed), theta)
+}
+
+/// P_V(θ) (W) of the drive under (law, formulation) with `torque` and `speed` at the ends its
+/// operating block names; 0 standing (no speed).
+fn loss_at_point(
+    scene: &Scene,
+    drive: &SceneDrive,
+    (law, formulation): (usize, crate::efficiency::Formulation),
+    (torque, speed): (f64, f64),
+    theta: f64,
+) -> f64 {
+    if speed == 0.0 {
+        return 0.0;
+    }
     let given = Given {
         value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(theta),
         written: format!("{theta} K"),
@@ -41,11 +57,39 @@ fn loss_at_torque(scene: &Scene, drive: &SceneDrive, row: &DriveRow, torque: f64
     };
     let at = scene.at_temperature(given);
     let setup = DriveSetup::new(&at, drive);
-    let op = &scene.operating;
     let ends = drive.layout.operating;
     let torque = EndValue { at: ends.torque_at, value: torque };
-    let speed = EndValue { at: ends.speed_at, value: op.pinion_speed.values[row.speed_index].value };
-    setup.point(row.law_index, row.formulation, torque, speed).power_lost()
+    let speed = EndValue { at: ends.speed_at, value: speed };
+    setup.point(law, formulation, torque, speed).power_lost()
+}
+
+/// A drive's duty cycle under its first law and formulation: each step's P_V at the scene's oil
+/// temperature and, with a heat capacity, the sump's transient from ambient
+/// ([`crate::thermal::transient`], C dθ/dt = P_V(θ) − P_Q(θ), standing steps without losses).
+pub(crate) fn drive_duty(
+    scene: &Scene,
+    drive: &SceneDrive,
+    housing: &Housing,
+    cycle: &crate::thermal::DutyCycle,
+) -> super::thermal::DutyCycleResult {
+    let f = scene
+        .analyses
+        .efficiency
+        .as_ref()
+        .and_then(|f| f.first().copied())
+        .unwrap_or(crate::efficiency::Formulation::External);
+    let p_v = |k: usize, theta: f64| {
+        let s = &cycle.steps[k];
+        loss_at_point(scene, drive, (0, f), (s.pinion_torque, s.pinion_speed), theta)
+    };
+    let durations: Vec<f64> = cycle.steps.iter().map(|s| s.duration).collect();
+    let fixed = scene.operating.oil_temperature.as_ref().map(|t| t.value.value);
+    super::thermal::DutyCycleResult {
+        law_index: 0,
+        formulation: f,
+        fixed: fixed.map(|t| (0..cycle.steps.len()).map(|k| p_v(k, t)).collect()),
+        transient: housing.heat_capacity.map(|c| crate::thermal::transient(p_v, housing, c, &durations)),
+    }
 }
 
 /// The balance at every row of the operating points.

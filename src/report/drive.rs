@@ -63,6 +63,43 @@ pub struct DriveBalanceReport {
     pub rating: Option<f64>,
 }
 
+/// A step of the duty cycle.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveDutyStep {
+    /// `5 min, 1000 N*m, 1000 rpm`, as written.
+    pub label: String,
+    pub duration_s: f64,
+    /// P_V at the scene's oil temperature (W).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub loss_at_oil_temperature: Option<f64>,
+    /// With a heat capacity: θ at the step's end (°C), energy lost and given off in the step (J).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub end_temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_lost: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_dissipated: Option<f64>,
+}
+
+/// The duty cycle of a drive under its first law and formulation.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveDutyReport {
+    pub name: String,
+    pub law: String,
+    pub formulation: String,
+    pub steps: Vec<DriveDutyStep>,
+    /// The transient's highest θ (°C), its start (ambient, °C), the integrator's error estimate (K),
+    /// or why it failed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error_k: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub failure: Option<String>,
+}
+
 /// The report of a drive.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DriveReport {
@@ -95,6 +132,8 @@ pub struct DriveReport {
     pub housing: Vec<(String, f64, String)>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub thermal: Vec<DriveBalanceReport>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub duty: Option<DriveDutyReport>,
     pub findings: Vec<Finding>,
 }
 
@@ -171,6 +210,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 rating: b.rating,
             })
             .collect(),
+        duty: duty_report(scene, eval, &laws),
         points,
     };
     for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
@@ -193,6 +233,35 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
     report
+}
+
+/// The duty cycle's steps with their losses and, with a heat capacity, the transient.
+fn duty_report(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Option<DriveDutyReport> {
+    let (d, cycle, housing) = (eval.duty.as_ref()?, scene.duty_cycle.as_ref()?, scene.housing.as_ref()?);
+    let transient = d.transient.as_ref().and_then(|t| t.as_ref().ok());
+    let c = |k: f64| k - 273.15;
+    Some(DriveDutyReport {
+        name: cycle.name.clone(),
+        law: laws[d.law_index].clone(),
+        formulation: d.formulation.name().to_string(),
+        steps: cycle
+            .steps
+            .iter()
+            .enumerate()
+            .map(|(k, s)| DriveDutyStep {
+                label: s.label.clone(),
+                duration_s: s.duration,
+                loss_at_oil_temperature: d.fixed.as_ref().map(|f| f[k]),
+                end_temperature_c: transient.map(|t| c(t.steps[k].temperature)),
+                energy_lost: transient.map(|t| t.steps[k].energy_lost),
+                energy_dissipated: transient.map(|t| t.steps[k].energy_dissipated),
+            })
+            .collect(),
+        max_temperature_c: transient.map(|t| c(t.max_temperature(housing.ambient))),
+        start_temperature_c: transient.map(|_| c(housing.ambient)),
+        error_k: transient.map(|t| t.error),
+        failure: d.transient.as_ref().and_then(|t| t.as_ref().err().cloned()),
+    })
 }
 
 /// Row `i` of the operating points in words: its point, law and formulation.

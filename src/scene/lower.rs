@@ -50,7 +50,9 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         })
     });
     let housing = housing.and_then(|b| super::lower_thermal::lower_housing(b, &mut errors));
-    let duty_cycle = singles.get("duty_cycle").and_then(|b| super::lower_thermal::lower_duty_cycle(b, &mut errors));
+    let duty_cycle = singles
+        .get("duty_cycle")
+        .and_then(|b| super::lower_thermal::lower_duty_cycle(b, &super::lower_thermal::PAIR_STEP, &mut errors));
     let lubricant =
         super::lower_lubricant::scene_lubricant(&singles, &top, operating.as_ref(), housing.as_ref(), &mut errors);
     if let Some(op) = &operating {

@@ -1,8 +1,8 @@
 //! A scene written with `stage` blocks lowered into a [`Scene`] with its [`SceneDrive`]: the
 //! stages (each pair checked as one pair is), the shafts, the drive put together and checked, the
 //! operating points at the drive's ends, the lubricant, friction laws and analyses as for one pair.
-//! A drive's report is its efficiency (with its map and thermal balance): the analyses of one
-//! pair's contact, film and dynamics, and duty cycles, are refused here with a hint.
+//! A drive's report is its efficiency (with its map, thermal balance and duty cycle): the analyses
+//! of one pair's contact, film and dynamics are refused here with a hint.
 
 use std::collections::BTreeMap;
 
@@ -12,18 +12,10 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
 
 /// The analyses of one pair that a drive does not give (yet).
-const PAIR_ONLY: &[&str] = &[
-    "friction_along_loa",
-    "film",
-    "contact",
-    "dynamics",
-    "stability_map",
-    "numerics",
-    "duty_cycle",
-    "transmission_error",
-];
+const PAIR_ONLY: &[&str] =
+    &["friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics", "transmission_error"];
 /// Scene blocks of one pair only.
-const PAIR_BLOCKS: &[&str] = &["dynamics", "duty_cycle"];
+const PAIR_BLOCKS: &[&str] = &["dynamics"];
 
 pub(super) fn lower_drive_scene(
     ast: &SceneAst,
@@ -92,6 +84,10 @@ pub(super) fn lower_drive_scene(
     if let Some((op, _)) = &operating {
         super::lower_operating::check_oil_sweep(op, lubricant.as_ref(), errors);
     }
+    let duty_cycle = match (singles.get("duty_cycle"), &operating) {
+        (Some(b), Some((_, ends))) => super::lower_thermal::lower_duty_cycle(b, &step_keys(*ends), errors),
+        _ => None,
+    };
     let friction = singles.get("friction").map_or_else(Vec::new, |b| super::lower_friction::lower_friction(b, errors));
     let analyses = singles
         .get("analyses")
@@ -99,6 +95,18 @@ pub(super) fn lower_drive_scene(
     check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
     let lubricant_failed =
         lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));
+    super::lower_thermal::check_thermal_needs(
+        &super::lower_thermal::ThermalInputs {
+            housing: housing.as_ref(),
+            housing_failed: gearbox_block.is_some_and(|g| g.items.iter().any(|i| i.head().text == "housing")),
+            duty_block: singles.get("duty_cycle").map(|b| b.kind.span),
+            equilibrium: None,
+            moves_with_temperature: lubricant.as_ref().is_none_or(|l| l.oil.is_some()),
+            lubricant_failed,
+        },
+        &analyses,
+        errors,
+    );
     if !lubricant_failed {
         for s in &stages {
             super::lower_friction::check_friction_needs(&friction, &s.pair, lubricant.as_ref(), errors);
@@ -126,11 +134,21 @@ pub(super) fn lower_drive_scene(
             dynamics: None,
             gearbox: None,
             housing,
-            duty_cycle: None,
+            duty_cycle,
             analyses,
             drive: Some(SceneDrive { layout, pairs: stages.into_iter().map(|s| s.pair).collect() }),
         }),
         _ => Err(std::mem::take(errors)),
+    }
+}
+
+/// A drive's duty steps name the ends its `operating` block does (`output_torque`, ...).
+fn step_keys(ends: crate::drive::DriveOperating) -> super::lower_thermal::StepKeys {
+    use crate::drive::ShaftEnd::{Input, Output};
+    super::lower_thermal::StepKeys {
+        torque: if ends.torque_at == Input { "input_torque" } else { "output_torque" },
+        speed: if ends.speed_at == Output { "output_speed" } else { "input_speed" },
+        signed: true,
     }
 }
 
@@ -141,7 +159,7 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
         let name = item.head();
         if PAIR_ONLY.contains(&name.text.as_str()) {
             errors.push(
-                Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("`{}` is an analysis of one pair; a drive of stages gives `efficiency`, `efficiency_map` and `thermal_balance` in this version", name.text))
+                Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("`{}` is an analysis of one pair; a drive of stages gives `efficiency`, `efficiency_map`, `thermal_balance` and `duty_cycle` in this version", name.text))
                     .hint("study one stage's pair alone in a scene with a `gears` block for its contact, film or dynamics"),
             );
         }

@@ -37,7 +37,16 @@ const HOUSING: &[&str] = &[
     "max_oil_temperature",
 ];
 const COOLER: &[&str] = &["conductance", "above"];
-const STEP: &[&str] = &["duration", "pinion_torque", "pinion_speed"];
+/// A step's keys: one pair's, or a drive's at the ends its `operating` block names.
+pub(super) struct StepKeys {
+    pub torque: &'static str,
+    pub speed: &'static str,
+    /// A drive's torque may be negative (coast); a pair's pinion drives.
+    pub signed: bool,
+}
+
+/// One pair's step: `step(duration = 10 min, pinion_torque = 120 N*m, pinion_speed = 2500 rpm)`.
+pub(super) const PAIR_STEP: StepKeys = StepKeys { torque: "pinion_torque", speed: "pinion_speed", signed: false };
 /// Most steps a duty cycle may have.
 pub(crate) const MAX_DUTY_STEPS: usize = 10_000;
 /// The ambient temperatures a housing may stand in (K): −60 °C to 80 °C.
@@ -139,13 +148,13 @@ fn lower_cooler(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<Cooler> {
 }
 
 /// A top-level `duty_cycle "name" { step(...) ... }` block.
-pub(super) fn lower_duty_cycle(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<DutyCycle> {
+pub(super) fn lower_duty_cycle(block: &Block, keys: &StepKeys, errors: &mut Vec<Diagnostic>) -> Option<DutyCycle> {
     let f = Fields::read("the `duty_cycle` block", block.span, &block.items, &[], &[], &["step"], errors);
     let before = errors.len();
     if f.calls.is_empty() {
         errors.push(
             Diagnostic::new(DiagnosticKind::MissingKey, block.span, "the duty cycle has no steps")
-                .hint("add `step(duration = 10 min, pinion_torque = 120 N*m, pinion_speed = 2500 rpm)`"),
+                .hint(format!("add `step(duration = 10 min, {} = 120 N*m, {} = 2500 rpm)`", keys.torque, keys.speed)),
         );
         return None;
     }
@@ -157,18 +166,18 @@ pub(super) fn lower_duty_cycle(block: &Block, errors: &mut Vec<Diagnostic>) -> O
         ));
         return None;
     }
-    let steps: Vec<Option<DutyStep>> = f.calls.iter().map(|c| lower_step(c, errors)).collect();
+    let steps: Vec<Option<DutyStep>> = f.calls.iter().map(|c| lower_step(c, keys, errors)).collect();
     let name = block.label.as_ref().map_or_else(|| "duty cycle".to_string(), |l| l.text.clone());
     let steps: Option<Vec<DutyStep>> = steps.into_iter().collect();
     steps.filter(|_| errors.len() == before).map(|steps| DutyCycle { name, steps })
 }
 
-fn lower_step(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<DutyStep> {
+fn lower_step(call: &Call, keys: &StepKeys, errors: &mut Vec<Diagnostic>) -> Option<DutyStep> {
     let mut items = Vec::new();
-    let f = call_fields(call, "`step(...)`", STEP, &mut items, errors);
+    let f = call_fields(call, "`step(...)`", &["duration", keys.torque, keys.speed], &mut items, errors);
     let dt: Option<Given<Time>> = f.required("duration", "10 min", errors);
-    let torque: Option<Given<Torque>> = f.required("pinion_torque", "120 N*m", errors);
-    let speed: Option<Given<AngularVelocity>> = f.required("pinion_speed", "2500 rpm", errors);
+    let torque: Option<Given<Torque>> = f.required(keys.torque, "120 N*m", errors);
+    let speed: Option<Given<AngularVelocity>> = f.required(keys.speed, "2500 rpm", errors);
     let (dt, torque, speed) = (dt?, torque?, speed?);
     if dt.value.value <= 0.0 {
         errors.push(out_of_range(
@@ -178,13 +187,20 @@ fn lower_step(call: &Call, errors: &mut Vec<Diagnostic>) -> Option<DutyStep> {
         ));
         return None;
     }
-    if torque.value.value < 0.0 || speed.value.value < 0.0 {
-        let span = if torque.value.value < 0.0 { torque.span } else { speed.span };
-        errors.push(out_of_range(
-            span,
-            "a duty step's torque and speed may be zero but not negative".into(),
-            "the pinion drives: give zero (standing, or no load) or a positive value",
-        ));
+    if (!keys.signed && torque.value.value < 0.0) || speed.value.value < 0.0 {
+        let span = if torque.value.value < 0.0 && !keys.signed { torque.span } else { speed.span };
+        let (reason, hint) = if keys.signed {
+            (
+                "a duty step's speed may be zero but not negative",
+                "a drive's speed at its ends is a magnitude; a negative torque is coast",
+            )
+        } else {
+            (
+                "a duty step's torque and speed may be zero but not negative",
+                "the pinion drives: give zero (standing, or no load) or a positive value",
+            )
+        };
+        errors.push(out_of_range(span, reason.into(), hint));
         return None;
     }
     Some(DutyStep {

@@ -110,11 +110,16 @@ fn a_box_without_losses_passes_all_its_power_both_ways() {
     let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
     let start = text.find("    gearbox {").unwrap();
     let end = text.find("    operating {").unwrap();
+    // (Without a housing, no thermal balance or duty cycle either.)
+    let (duty, friction) = (text.find("    # A stretch of driving").unwrap(), text.find("    friction {").unwrap());
     let text = format!(
-        "{}    gearbox {{ shaft motor {{ input }} shaft lay {{ }} shaft output {{ output }} }}\n{}",
+        "{}    gearbox {{ shaft motor {{ input }} shaft lay {{ }} shaft output {{ output }} }}\n{}{}",
         &text[..start],
-        &text[end..]
+        &text[end..duty],
+        &text[friction..]
     )
+    .replace("        thermal_balance\n", "")
+    .replace("        duty_cycle\n", "")
     .replace("friction { iso_14179_2(x_l = 0.75) }", "friction { coulomb(mu = 0) }")
     .replace("        lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)\n", "")
     .replace("output_torque = [-500, 150, 1000] N*m", "output_torque = [-500, 500] N*m")
@@ -139,6 +144,9 @@ fn a_box_without_losses_passes_all_its_power_both_ways() {
 fn input_or_output_given_is_the_same_point() {
     for p in points(&ev_reducer()) {
         let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+        // (The duty cycle's steps name the ends `operating` does: given at the input, they go.)
+        let (start, end) = (text.find("    duty_cycle \"").unwrap(), text.find("    friction {").unwrap());
+        let text = format!("{}{}", &text[..start], &text[end..]).replace("        duty_cycle\n", "");
         let text = text
             .replace("output_torque = [-500, 150, 1000] N*m", &format!("input_torque = {:?} N*m", p.input_torque))
             .replace("output_speed  = [500, 1000] rpm", &format!("input_speed = {:?} rad/s", p.input_speed));
@@ -403,4 +411,25 @@ fn a_drive_at_several_oil_temperatures() {
         assert_eq!(&content, file(&name), "{name}");
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The drive's duty cycle: a step at an operating point's torque and speed loses what that point
+/// loses at the oil temperature (1e-12); over the transient the sump's heat balances,
+/// C (θ_end − θ_start) = Σ (E_lost − E_given off) to 1e-6; a standing step loses nothing.
+#[test]
+fn duty_cycle_of_the_drive_balances_its_energy() {
+    let scene = ev_reducer();
+    let eval = evaluate_drive(&scene, scene.drive.as_ref().unwrap());
+    let duty = eval.duty.as_ref().unwrap();
+    let fixed = duty.fixed.as_ref().unwrap();
+    // Step 1 is 150 N*m at 500 rpm: operating row 3 (torque 150, speed 500).
+    let row = eval.rows.iter().find(|r| (r.torque_index, r.speed_index) == (1, 0)).unwrap();
+    assert!((fixed[0] - row.point.power_lost()).abs() <= 1e-12 * fixed[0]);
+    assert_eq!(fixed[3], 0.0);
+    let t = duty.transient.as_ref().unwrap().as_ref().unwrap();
+    let c = scene.housing.as_ref().unwrap().heat_capacity.unwrap();
+    let stored = c * (t.steps.last().unwrap().temperature - scene.housing.as_ref().unwrap().ambient);
+    let net: f64 = t.steps.iter().map(|s| s.energy_lost - s.energy_dissipated).sum();
+    assert!((stored - net).abs() <= 1e-6 * stored, "{stored} vs {net}");
+    assert_eq!(t.steps[3].energy_lost, 0.0);
 }

@@ -43,6 +43,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     }
     inputs(&mut out, r);
     thermal(&mut out, r);
+    duty(&mut out, r);
     md!(out, "## Operating points\n");
     for p in &r.points {
         super::point_tables::point(&mut out, p);
@@ -260,6 +261,50 @@ fn thermal(out: &mut String, r: &DriveReport) {
         );
     }
     md!(out);
+}
+
+fn duty(out: &mut String, r: &DriveReport) {
+    let Some(d) = &r.duty else { return };
+    md!(out, "## Duty cycle \"{}\" ({} {})\n", d.name, d.law, d.formulation);
+    md!(out, "Each step's whole-drive loss at the scene's oil temperature and, with the housing's heat capacity, the sump's transient from ambient: C dθ/dt = P_V(θ) − P_Q(θ), integrated to 1e-12 and again to 1e-10 (the difference is the error estimate); a step without speed loses nothing.\n");
+    header(
+        out,
+        &[
+            "step",
+            "duration (s)",
+            "P_V at the oil temperature (W)",
+            "θ at its end (°C)",
+            "energy lost (J)",
+            "energy given off (J)",
+        ],
+    );
+    let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
+    for s in &d.steps {
+        row(
+            out,
+            &[
+                s.label.clone(),
+                fixed(s.duration_s, 1),
+                opt(s.loss_at_oil_temperature, 3),
+                opt(s.end_temperature_c, 3),
+                opt(s.energy_lost, 1),
+                opt(s.energy_dissipated, 1),
+            ],
+        );
+    }
+    md!(out);
+    if let (Some(max), Some(start), Some(e)) = (d.max_temperature_c, d.start_temperature_c, d.error_k) {
+        md!(
+            out,
+            "From {} °C the sump reaches at most {} °C (integration error {} K).\n",
+            fixed(start, 2),
+            fixed(max, 3),
+            crate::render::table::sig(e)
+        );
+    }
+    if let Some(f) = &d.failure {
+        md!(out, "The transient failed: {f}\n");
+    }
 }
 
 fn model(out: &mut String) {
