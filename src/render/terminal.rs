@@ -12,13 +12,19 @@ pub fn run_summary(report: &Report, label: &str) -> String {
     let at = if label.is_empty() { String::new() } else { format!(" ({label})") };
     out.push_str(&format!("{}{at}\n\n", report.title));
     out.push_str(&super::markdown_losses::headline_body(report));
+    warnings_tail(&mut out, &report.findings);
+    out
+}
+
+/// "N warning(s), M note(s)" and the first warnings, with how many more report.md holds.
+fn warnings_tail(out: &mut String, findings: &[crate::report::Finding]) {
     let warnings: Vec<&str> =
-        report.findings.iter().filter(|f| f.severity == Severity::Warning).map(|f| f.message.as_str()).collect();
-    let notes = report.findings.len() - warnings.len();
+        findings.iter().filter(|f| f.severity == Severity::Warning).map(|f| f.message.as_str()).collect();
+    let notes = findings.len() - warnings.len();
     out.push_str(&format!("{} warning(s), {notes} note(s)", warnings.len()));
     if warnings.is_empty() {
         out.push_str(".\n");
-        return out;
+        return;
     }
     out.push_str(":\n");
     for w in warnings.iter().take(FIRST_WARNINGS) {
@@ -27,7 +33,6 @@ pub fn run_summary(report: &Report, label: &str) -> String {
     if warnings.len() > FIRST_WARNINGS {
         out.push_str(&format!("  … and {} more in report.md, \"Findings\".\n", warnings.len() - FIRST_WARNINGS));
     }
-    out
 }
 
 /// The terminal summary of a drive's run: each operating point's ends, total loss and η, then the
@@ -53,16 +58,7 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
             }
         ));
     }
-    let warnings: Vec<&str> =
-        report.findings.iter().filter(|f| f.severity == Severity::Warning).map(|f| f.message.as_str()).collect();
-    out.push_str(&format!("\n{} warning(s)", warnings.len()));
-    if warnings.is_empty() {
-        out.push_str(".\n");
-        return out;
-    }
-    out.push_str(":\n");
-    for w in warnings.iter().take(FIRST_WARNINGS) {
-        out.push_str(&format!("  - {w}\n"));
-    }
+    out.push('\n');
+    warnings_tail(&mut out, &report.findings);
     out
 }
