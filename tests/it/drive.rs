@@ -433,3 +433,19 @@ fn duty_cycle_of_the_drive_balances_its_energy() {
     assert!((stored - net).abs() <= 1e-6 * stored, "{stored} vs {net}");
     assert_eq!(t.steps[3].energy_lost, 0.0);
 }
+
+/// `--shard` on a drive is refused with its reason and a hint (a drive runs whole in this version);
+/// nothing is written.
+#[test]
+fn a_drive_refuses_shards() {
+    let path = crate::root().join("specs/ev_two_stage_reducer.gear");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let scene = gearloss::check("ev.gear", &text).unwrap();
+    let out = std::env::temp_dir().join(format!("gearloss-drive-shard-{}", std::process::id()));
+    let shard = Some(gearloss::Shard { index: 1, count: 2 });
+    let e = gearloss::run_into("ev.gear", &text, &scene, &out, shard, &gearloss::Quiet).unwrap_err();
+    let failure = e.failure().unwrap();
+    assert_eq!(failure.kind, gearloss::FailureKind::ShardedDrive);
+    assert!(!failure.hints.is_empty());
+    assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none());
+}
