@@ -210,6 +210,58 @@ fn drive_sweep_files(scene: &Scene) -> Result<(Vec<(String, String)>, LabelledDr
     Ok((top.into_iter().chain(files).collect(), reports))
 }
 
+/// One shard of a drive into `out_dir/<slug>.shard-K-of-N/`: its rows of drive_records.csv and the
+/// manifest with their tally.
+fn run_drive_shard_into(
+    source_name: &str,
+    source: &str,
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    shard: Shard,
+    out_dir: &Path,
+) -> Result<Written, RunError> {
+    let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
+    let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
+    let io = RunError::io("the record files");
+    let mut records = std::io::BufWriter::new(folder.create_file(evaluate::drive_records::FILE).map_err(&io)?);
+    let tally = evaluate::drive::evaluate_drive_shard(scene, drive, shard, &mut records).map_err(&io)?;
+    std::io::Write::flush(&mut records).map_err(&io)?;
+    drop(records);
+    let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally);
+    folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
+    let files = vec![evaluate::drive_records::FILE.to_string(), shard::MANIFEST.to_string()];
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(Written { folder, files, reports: Vec::new(), drives: Vec::new() })
+}
+
+/// `gearloss merge` of a drive's shards: drive_records.csv concatenated in shard order (a single
+/// run's, byte for byte), the tallies folded, the report's rows, map, thermal balance and duty
+/// cycle evaluated again: the report a single run writes.
+fn merge_drive_into(
+    set: &shard::ShardSet,
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    out_dir: &Path,
+    progress: &dyn Progress,
+) -> Result<Written, RunError> {
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    progress.stage("merge", set.folders.len() as u64);
+    set.concatenate_files(&folder, &[(evaluate::drive_records::FILE, false)], progress)
+        .map_err(RunError::io("the record files"))?;
+    let tally = set.drive_tally.unwrap_or_default();
+    let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
+    let report = report::drive::build_drive_report(scene, drive, &eval);
+    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    let mut files = vec![evaluate::drive_records::FILE.to_string()];
+    for (file, content) in &rendered.files {
+        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(file.clone());
+    }
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(Written { folder, files, reports: Vec::new(), drives: vec![(String::new(), report)] })
+}
+
 /// A drive scene into its report folder, written whole.
 fn run_drive_into(
     scene: &Scene,
@@ -264,11 +316,20 @@ pub fn run_into(
     if let (Some(drive), None) = (&scene.drive, shard) {
         return run_drive_into(scene, drive, out_dir, progress);
     }
-    if scene.drive.is_some() {
-        return Err(RunError::Shards(
-            Failure::new(FailureKind::ShardedDrive, "a drive of several stages runs whole in this version")
-                .hint("run it without `--shard`; a 41 × 30 map of a two-stage drive takes about a second"),
-        ));
+    if let (Some(drive), Some(shard)) = (&scene.drive, shard) {
+        if !labels.is_empty() {
+            return Err(RunError::Shards(
+                Failure::new(
+                    FailureKind::ShardedDrive,
+                    format!(
+                        "the drive runs at {} oil temperatures, and a shard holds one scene's points",
+                        labels.len()
+                    ),
+                )
+                .hint("run it whole, or write one scene per oil temperature and shard each"),
+            ));
+        }
+        return run_drive_shard_into(source_name, source, scene, drive, shard, out_dir);
     }
     let Some(shard) = shard else {
         let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
@@ -317,6 +378,9 @@ pub fn run_into(
 pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -> Result<Written, RunError> {
     let set = shard::ShardSet::read(shards).map_err(RunError::Shards)?;
     let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
+    if let Some(drive) = &scene.drive {
+        return merge_drive_into(&set, &scene, drive, out_dir, progress);
+    }
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let folder =
         ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;

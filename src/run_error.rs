@@ -34,7 +34,7 @@ pub enum FailureKind {
     ShardsDoNotMatch,
     /// `--shard` on a scene that runs at several oil temperatures.
     ShardedOilSweep,
-    /// `--shard` on a drive of several stages (its points run whole in this version).
+    /// `--shard` on a drive at several oil temperatures.
     ShardedDrive,
 }
 

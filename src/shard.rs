@@ -48,6 +48,9 @@ pub(crate) struct Manifest {
     pub operating_points: usize,
     pub range: (usize, usize),
     pub tally: Tally,
+    /// A drive's shard: the tally of its rows (then `tally` is empty).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub drive_tally: Option<crate::evaluate::drive::DriveTally>,
 }
 
 impl Manifest {
@@ -61,6 +64,29 @@ impl Manifest {
             operating_points: plan.count(),
             range: (plan.range.start, plan.range.end),
             tally,
+            drive_tally: None,
+        }
+    }
+
+    /// The manifest of a drive's shard over `points` of its `operating_points`.
+    pub(crate) fn of_drive(
+        source_name: &str,
+        source: &str,
+        shard: Shard,
+        operating_points: usize,
+        tally: crate::evaluate::drive::DriveTally,
+    ) -> Manifest {
+        let points = shard.range(operating_points);
+        Manifest {
+            format: FORMAT.into(),
+            gearloss_version: env!("CARGO_PKG_VERSION").into(),
+            source_name: source_name.into(),
+            source: source.into(),
+            shard,
+            operating_points,
+            range: (points.start, points.end),
+            tally: Tally::default(),
+            drive_tally: Some(tally),
         }
     }
 
@@ -78,6 +104,8 @@ pub(crate) struct ShardSet {
     pub source: String,
     pub folders: Vec<PathBuf>,
     pub tally: Tally,
+    /// A drive's shards: their tallies folded in shard order.
+    pub drive_tally: Option<crate::evaluate::drive::DriveTally>,
 }
 
 impl ShardSet {
@@ -137,27 +165,45 @@ impl ShardSet {
             });
         }
         let mut tally = Tally::default();
+        let mut drive_tally: Option<crate::evaluate::drive::DriveTally> = None;
         let mut dirs = Vec::new();
         for (dir, m) in manifests {
             tally.absorb(m.tally);
+            if let Some(t) = m.drive_tally {
+                match &mut drive_tally {
+                    Some(d) => d.absorb(t),
+                    None => drive_tally = Some(t),
+                }
+            }
             dirs.push(dir);
         }
-        Ok(ShardSet { source_name, source, folders: dirs, tally })
+        Ok(ShardSet { source_name, source, folders: dirs, tally, drive_tally })
     }
 
     /// Writes the merged record files into `folder`: each file of each shard in shard order, the CSV
     /// header once.
     pub(crate) fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<()> {
-        for (file, header) in [(RECORDS_CSV, true), (RECORDS_JSONL, false)] {
+        self.concatenate_files(folder, &[(RECORDS_CSV, true), (RECORDS_JSONL, false)], progress)
+    }
+
+    /// Writes the merged `files` (name, whether it has a header line) into `folder`, each shard's in
+    /// shard order (a header, where a shard's file has one, kept from the first shard only).
+    pub(crate) fn concatenate_files(
+        &self,
+        folder: &ReportFolder,
+        files: &[(&str, bool)],
+        progress: &dyn Progress,
+    ) -> std::io::Result<()> {
+        for &(file, header) in files {
             let mut out = BufWriter::new(folder.create_file(file)?);
             for (k, dir) in self.folders.iter().enumerate() {
                 let mut input = BufReader::new(File::open(dir.join(file))?);
-                if header && k > 0 {
+                if header && k > 0 && file == RECORDS_CSV {
                     let mut skipped = Vec::new();
                     input.read_until(b'\n', &mut skipped)?;
                 }
                 std::io::copy(&mut input, &mut out)?;
-                if file == RECORDS_CSV {
+                if header {
                     progress.advance(1);
                 }
             }

@@ -43,18 +43,69 @@ pub fn evaluate_drive_into(
     records: &mut dyn std::io::Write,
 ) -> std::io::Result<DriveEvaluation> {
     let setup = DriveSetup::new(scene, drive);
+    let n = row_count(scene, &setup);
+    let (rows, validity, tally) = stream_rows(&setup, scene, drive, 0..n, records, true)?;
+    Ok(finish(&setup, scene, drive, (rows, validity), tally))
+}
+
+/// One shard of a drive's run (`gearloss run --shard K/N`): the rows of its operating points
+/// ([`crate::evaluate::Shard::range`] over the points) streamed to `records` (the header only in
+/// the first shard, so that the shards' files concatenated are a single run's), and their tally.
+pub fn evaluate_drive_shard(
+    scene: &Scene,
+    drive: &SceneDrive,
+    shard: crate::evaluate::Shard,
+    records: &mut dyn std::io::Write,
+) -> std::io::Result<DriveTally> {
+    let setup = DriveSetup::new(scene, drive);
+    let per_point = setup.rows_per_point();
+    let points = shard.range(scene.operating.count());
+    let rows = points.start * per_point..points.end * per_point;
+    Ok(stream_rows(&setup, scene, drive, rows, records, shard.index == 1)?.2)
+}
+
+/// After the shards are merged: the report's rows (the first [`DETAIL_ROWS`]) evaluated again, the
+/// map, thermal balance and duty cycle, with `tally` folded from the shards (exactly a single
+/// run's).
+pub fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
+    let setup = DriveSetup::new(scene, drive);
+    let n = row_count(scene, &setup).min(DETAIL_ROWS);
+    let (rows, validity, _) =
+        stream_rows(&setup, scene, drive, 0..n, &mut std::io::sink(), false).expect("a sink takes every row");
+    finish(&setup, scene, drive, (rows, validity), tally)
+}
+
+/// Rows of the operating points: points × laws × formulations.
+fn row_count(scene: &Scene, setup: &DriveSetup) -> usize {
+    scene.operating.count() * setup.rows_per_point()
+}
+
+/// The kept rows and their validity by stage.
+type Kept = (Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>);
+
+/// Rows `range` of the operating points in blocks, each written to `records` (after the header,
+/// when `header`) and tallied; the first [`DETAIL_ROWS`] kept with their validity.
+fn stream_rows(
+    setup: &DriveSetup,
+    scene: &Scene,
+    drive: &SceneDrive,
+    range: std::ops::Range<usize>,
+    records: &mut dyn std::io::Write,
+    header: bool,
+) -> std::io::Result<(Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, DriveTally)> {
     let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
     let op = &scene.operating;
     let speeds: Vec<f64> = op.pinion_speed.values.iter().map(|w| w.value).collect();
     let torques = si(&op.pinion_torque.values);
-    let n = torques.len() * speeds.len() * setup.rows_per_point();
     let mut rows = Vec::new();
-    let mut tally = DriveTally { rows: n, ..Default::default() };
-    super::drive_records::header(records, drive)?;
+    let mut tally = DriveTally { rows: range.len(), ..Default::default() };
+    if header {
+        super::drive_records::header(records, drive)?;
+    }
     let mut validity = Vec::new();
-    for start in (0..n).step_by(BLOCK) {
+    for start in range.clone().step_by(BLOCK) {
         use rayon::prelude::*;
-        let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(n));
+        let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(range.end));
         let checked: Vec<_> = block.par_iter().map(|r| setup.validity(r.law_index, &r.point)).collect();
         for (i, (row, valid)) in block.into_iter().zip(checked).enumerate() {
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
@@ -70,6 +121,18 @@ pub fn evaluate_drive_into(
             }
         }
     }
+    Ok((rows, validity, tally))
+}
+
+/// The evaluation around the kept rows: the map, the thermal balance of the kept rows, the duty cycle.
+fn finish(
+    setup: &DriveSetup,
+    scene: &Scene,
+    drive: &SceneDrive,
+    (rows, validity): Kept,
+    tally: DriveTally,
+) -> DriveEvaluation {
+    let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
     let map = match (&scene.analyses.efficiency_map, scene.analyses.map_ends) {
         (Some((t, s)), Some(ends)) => {
             setup.grid(&si(&t.values), &s.values.iter().map(|w| w.value).collect::<Vec<_>>(), ends)
@@ -84,12 +147,12 @@ pub fn evaluate_drive_into(
         (Some(h), Some(c), Some(_)) => Some(super::drive_thermal::drive_duty(scene, drive, h, c)),
         _ => None,
     };
-    Ok(DriveEvaluation { rows, map, validity, balances, duty, tally })
+    DriveEvaluation { rows, map, validity, balances, duty, tally }
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the
 /// least and greatest efficiency (of rows where one end delivers) with their row index.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy, Default, serde::Serialize, serde::Deserialize)]
 pub struct DriveTally {
     pub rows: usize,
     pub both_ends: usize,
@@ -101,6 +164,24 @@ pub struct DriveTally {
 }
 
 impl DriveTally {
+    /// Folds the tally of the rows that follow (the next shard's): the same as one tally of both.
+    pub fn absorb(&mut self, next: DriveTally) {
+        self.rows += next.rows;
+        self.both_ends += next.both_ends;
+        self.outside_rows += next.outside_rows;
+        self.first_outside = self.first_outside.or(next.first_outside);
+        if let Some((e, i)) = next.least {
+            if self.least.is_none_or(|(l, _)| e < l) {
+                self.least = Some((e, i));
+            }
+        }
+        if let Some((e, i)) = next.greatest {
+            if self.greatest.is_none_or(|(g, _)| e > g) {
+                self.greatest = Some((e, i));
+            }
+        }
+    }
+
     fn add(&mut self, i: usize, p: &DrivePoint) {
         if p.both_ends_deliver {
             self.both_ends += 1;

@@ -434,18 +434,37 @@ fn duty_cycle_of_the_drive_balances_its_energy() {
     assert_eq!(t.steps[3].energy_lost, 0.0);
 }
 
-/// `--shard` on a drive is refused with its reason and a hint (a drive runs whole in this version);
-/// nothing is written.
+/// A drive's run in three shards, merged, is the single run: drive_records.csv byte for byte (the
+/// shards' rows in order) and every report file (the tallies folded: the count, η's range over all
+/// rows). Shards of a drive at several oil temperatures are refused with a hint.
 #[test]
-fn a_drive_refuses_shards() {
-    let path = crate::root().join("specs/ev_two_stage_reducer.gear");
-    let text = std::fs::read_to_string(&path).unwrap();
+fn a_drive_in_shards_merges_to_the_single_run() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
     let scene = gearloss::check("ev.gear", &text).unwrap();
-    let out = std::env::temp_dir().join(format!("gearloss-drive-shard-{}", std::process::id()));
+    let base = std::env::temp_dir().join(format!("gearloss-drive-shards-{}", std::process::id()));
+    let whole = gearloss::run_into("ev.gear", &text, &scene, &base.join("whole"), None, &gearloss::Quiet).unwrap();
+    let mut folders = Vec::new();
+    for k in [2, 1, 3] {
+        let shard = Some(gearloss::Shard { index: k, count: 3 });
+        folders.push(
+            gearloss::run_into("ev.gear", &text, &scene, &base.join("shards"), shard, &gearloss::Quiet).unwrap().folder,
+        );
+    }
+    let merged = gearloss::merge_into(&folders, &base.join("merged"), &gearloss::Quiet).unwrap();
+    let mut names = whole.files.clone();
+    names.sort();
+    let mut got = merged.files.clone();
+    got.sort();
+    assert_eq!(names, got);
+    for name in &names {
+        let a = std::fs::read(whole.folder.join(name)).unwrap();
+        let b = std::fs::read(merged.folder.join(name)).unwrap();
+        assert!(a == b, "{name} differs");
+    }
+    let swept = text.replace("oil_temperature = 80 degC", "oil_temperature = [60, 80] degC");
+    let scene = gearloss::check("swept.gear", &swept).unwrap();
     let shard = Some(gearloss::Shard { index: 1, count: 2 });
-    let e = gearloss::run_into("ev.gear", &text, &scene, &out, shard, &gearloss::Quiet).unwrap_err();
-    let failure = e.failure().unwrap();
-    assert_eq!(failure.kind, gearloss::FailureKind::ShardedDrive);
-    assert!(!failure.hints.is_empty());
-    assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none());
+    let e = gearloss::run_into("swept.gear", &swept, &scene, &base.join("no"), shard, &gearloss::Quiet).unwrap_err();
+    assert_eq!(e.failure().unwrap().kind, gearloss::FailureKind::ShardedDrive);
+    std::fs::remove_dir_all(&base).unwrap();
 }

@@ -348,3 +348,12 @@ def test_a_drive_as_tables():
         assert abs(s["seals_W"].sum() - r["seals_W"]) <= 1e-9 * r["total_W"]
     pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
     assert pair.drive_records.empty and pair.stages.empty and pair.bearings.empty
+
+
+def test_a_drive_on_dask_is_the_single_run():
+    """A drive of several stages in Dask shards, merged: the single run's report and drive records."""
+    s = scene(ROOT / "specs/ev_two_stage_reducer.gear")
+    whole = gearloss.run(s)
+    merged = gearloss.dask.run(s, shards=3)
+    assert merged.data == whole.data
+    pandas.testing.assert_frame_equal(merged.drive_records, whole.drive_records)
