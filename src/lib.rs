@@ -78,6 +78,7 @@ pub mod render;
 pub mod report;
 pub mod rerender;
 pub mod run;
+pub mod run_drive;
 pub(crate) mod run_error;
 pub mod scene;
 pub(crate) mod shard;

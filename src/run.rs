@@ -85,9 +85,9 @@ pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, R
     let slug = report::slug(&scene.title);
     if let Some(drive) = &scene.drive {
         if scene.operating.oil_temperatures.is_some() {
-            return Ok(RenderedReport { slug, files: drive_sweep_files(&scene)?.0 });
+            return Ok(RenderedReport { slug, files: crate::run_drive::drive_sweep_files(&scene)?.0 });
         }
-        return Ok(drive_report_files(&scene, drive)?.1);
+        return Ok(crate::run_drive::drive_report_files(&scene, drive)?.1);
     }
     if scene.operating.oil_temperatures.is_none() {
         let (_, files) = run_scene_to_files(&scene)?;
@@ -170,134 +170,14 @@ pub struct Written {
     pub files: Vec<String>,
     pub reports: Vec<(String, Report)>,
     /// The reports of a drive of several stages, labelled as `reports` are (then `reports` is empty).
-    pub drives: LabelledDrives,
+    pub drives: crate::run_drive::LabelledDrives,
 }
 
-/// A drive scene evaluated, reported and rendered in memory, its records among the files.
-pub fn drive_report_files(
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
-    let mut records = Vec::new();
-    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(RunError::io("records"))?;
-    let report = report::drive::build_drive_report(scene, drive, &eval);
-    let mut rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
-    let text = String::from_utf8(records).expect("records are UTF-8");
-    rendered.files.push((evaluate::drive_records::FILE.to_string(), text));
-    Ok((report, rendered))
-}
-
-/// Drive reports with their labels (their folders at several oil temperatures, else empty).
-type LabelledDrives = Vec<(String, crate::report::drive::DriveReport)>;
-
-/// A drive scene at several oil temperatures in memory: each run's files under its folder, then the
-/// comparison's files at the top; with the runs' reports.
-fn drive_sweep_files(scene: &Scene) -> Result<(Vec<(String, String)>, LabelledDrives), RunError> {
-    let mut runs = Vec::new();
-    let mut files = Vec::new();
-    let kelvin: Vec<f64> =
-        scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
-    for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
-        let at = scene.at_oil_temperature(i);
-        let drive = at.drive.as_ref().expect("a drive scene at another temperature is a drive scene");
-        let dir = report::oil_sweep::run_folder(&label);
-        let (report, rendered) = drive_report_files(&at, drive)?;
-        files.extend(rendered.files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
-        runs.push((label, kelvin, dir, report));
+impl Written {
+    /// What a drive's run wrote.
+    fn of(w: crate::run_drive::DriveWritten) -> Written {
+        Written { folder: w.folder, files: w.files, reports: Vec::new(), drives: w.drives }
     }
-    let top = render::drive::oil_sweep::render_drive_oil_sweep(&report::drive_oil_sweep::build_drive_oil_sweep(&runs));
-    let reports = runs.into_iter().map(|(_, _, dir, r)| (dir, r)).collect();
-    Ok((top.into_iter().chain(files).collect(), reports))
-}
-
-/// One shard of a drive into `out_dir/<slug>.shard-K-of-N/`: its rows of drive_records.csv and the
-/// manifest with their tally.
-fn run_drive_shard_into(
-    source_name: &str,
-    source: &str,
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    shard: Shard,
-    out_dir: &Path,
-) -> Result<Written, RunError> {
-    let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
-    let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
-    let io = RunError::io("the record files");
-    let mut records = std::io::BufWriter::new(folder.create_file(evaluate::drive_records::FILE).map_err(&io)?);
-    let tally = evaluate::drive::evaluate_drive_shard(scene, drive, shard, &mut records).map_err(&io)?;
-    std::io::Write::flush(&mut records).map_err(&io)?;
-    drop(records);
-    let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally);
-    folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
-    let files = vec![evaluate::drive_records::FILE.to_string(), shard::MANIFEST.to_string()];
-    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: Vec::new(), drives: Vec::new() })
-}
-
-/// `gearloss merge` of a drive's shards: drive_records.csv concatenated in shard order (a single
-/// run's, byte for byte), the tallies folded, the report's rows, map, thermal balance and duty
-/// cycle evaluated again: the report a single run writes.
-fn merge_drive_into(
-    set: &shard::ShardSet,
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    out_dir: &Path,
-    progress: &dyn Progress,
-) -> Result<Written, RunError> {
-    let folder =
-        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
-    progress.stage("merge", set.folders.len() as u64);
-    set.concatenate_files(&folder, &[(evaluate::drive_records::FILE, false)], progress)
-        .map_err(RunError::io("the record files"))?;
-    let tally = set.drive_tally.unwrap_or_default();
-    let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
-    let report = report::drive::build_drive_report(scene, drive, &eval);
-    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
-    let mut files = vec![evaluate::drive_records::FILE.to_string()];
-    for (file, content) in &rendered.files {
-        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
-        files.push(file.clone());
-    }
-    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: Vec::new(), drives: vec![(String::new(), report)] })
-}
-
-/// A drive scene into its report folder, written whole.
-fn run_drive_into(
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    out_dir: &Path,
-    progress: &dyn Progress,
-) -> Result<Written, RunError> {
-    let folder =
-        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
-    progress.stage("evaluate", 1);
-    if scene.operating.oil_temperatures.is_some() {
-        let (rendered, drives) = drive_sweep_files(scene)?;
-        let mut files = Vec::new();
-        for (file, content) in &rendered {
-            folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
-            files.push(file.clone());
-        }
-        let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-        return Ok(Written { folder, files, reports: Vec::new(), drives });
-    }
-    let io = RunError::io("the record files");
-    let file = folder.create_file(evaluate::drive_records::FILE).map_err(&io)?;
-    let mut records = std::io::BufWriter::new(file);
-    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(&io)?;
-    std::io::Write::flush(&mut records).map_err(&io)?;
-    let report = report::drive::build_drive_report(scene, drive, &eval);
-    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
-    progress.stage("write", rendered.files.len() as u64);
-    let mut files = vec![evaluate::drive_records::FILE.to_string()];
-    for (file, content) in &rendered.files {
-        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
-        files.push(file.clone());
-        progress.advance(1);
-    }
-    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written { folder, files, reports: Vec::new(), drives: vec![(String::new(), report)] })
 }
 
 /// `gearloss run`: evaluates a checked scene into `out_dir/<slug>/` (or, with a shard, into
@@ -314,7 +194,7 @@ pub fn run_into(
     let slug = report::slug(&scene.title);
     let labels = scene.oil_temperature_labels();
     if let (Some(drive), None) = (&scene.drive, shard) {
-        return run_drive_into(scene, drive, out_dir, progress);
+        return crate::run_drive::run_drive_into(scene, drive, out_dir, progress).map(Written::of);
     }
     if let (Some(drive), Some(shard)) = (&scene.drive, shard) {
         if !labels.is_empty() {
@@ -329,7 +209,8 @@ pub fn run_into(
                 .hint("run it whole, or write one scene per oil temperature and shard each"),
             ));
         }
-        return run_drive_shard_into(source_name, source, scene, drive, shard, out_dir);
+        return crate::run_drive::run_drive_shard_into(source_name, source, scene, drive, shard, out_dir)
+            .map(Written::of);
     }
     let Some(shard) = shard else {
         let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
@@ -379,7 +260,7 @@ pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -
     let set = shard::ShardSet::read(shards).map_err(RunError::Shards)?;
     let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
     if let Some(drive) = &scene.drive {
-        return merge_drive_into(&set, &scene, drive, out_dir, progress);
+        return crate::run_drive::merge_drive_into(&set, &scene, drive, out_dir, progress).map(Written::of);
     }
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let folder =

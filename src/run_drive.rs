@@ -1,0 +1,158 @@
+//! A drive of several stages run into its report folder: whole (its records streamed), at several
+//! oil temperatures (a report each and their comparison), as a shard, and merged from its shards.
+
+use std::path::{Path, PathBuf};
+
+use crate::evaluate::{self, Shard};
+use crate::folder::ReportFolder;
+use crate::model::Scene;
+use crate::progress::Progress;
+use crate::render::RenderedReport;
+use crate::report;
+use crate::run_error::RunError;
+use crate::{render, shard};
+
+/// What a drive's run wrote: its folder, files and reports.
+pub(crate) struct DriveWritten {
+    pub folder: PathBuf,
+    pub files: Vec<String>,
+    pub drives: LabelledDrives,
+}
+
+/// Writes `files` into `folder`; their names.
+fn write_all(
+    folder: &ReportFolder,
+    files: &[(String, String)],
+    progress: &dyn Progress,
+) -> Result<Vec<String>, RunError> {
+    progress.stage("write", files.len() as u64);
+    let mut out = Vec::new();
+    for (file, content) in files {
+        folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        out.push(file.clone());
+        progress.advance(1);
+    }
+    Ok(out)
+}
+
+/// A drive scene evaluated, reported and rendered in memory, its records among the files.
+pub fn drive_report_files(
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
+    let mut records = Vec::new();
+    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(RunError::io("records"))?;
+    let report = report::drive::build_drive_report(scene, drive, &eval);
+    let mut rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    let text = String::from_utf8(records).expect("records are UTF-8");
+    rendered.files.push((evaluate::drive_records::FILE.to_string(), text));
+    Ok((report, rendered))
+}
+
+/// Drive reports with their labels (their folders at several oil temperatures, else empty).
+pub type LabelledDrives = Vec<(String, crate::report::drive::DriveReport)>;
+
+/// A drive scene at several oil temperatures in memory: each run's files under its folder, then the
+/// comparison's files at the top; with the runs' reports.
+pub(crate) fn drive_sweep_files(scene: &Scene) -> Result<(Vec<(String, String)>, LabelledDrives), RunError> {
+    let mut runs = Vec::new();
+    let mut files = Vec::new();
+    let kelvin: Vec<f64> =
+        scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
+    for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
+        let at = scene.at_oil_temperature(i);
+        let drive = at.drive.as_ref().expect("a drive scene at another temperature is a drive scene");
+        let dir = report::oil_sweep::run_folder(&label);
+        let (report, rendered) = drive_report_files(&at, drive)?;
+        files.extend(rendered.files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
+        runs.push((label, kelvin, dir, report));
+    }
+    let top = render::drive::oil_sweep::render_drive_oil_sweep(&report::drive_oil_sweep::build_drive_oil_sweep(&runs));
+    let reports = runs.into_iter().map(|(_, _, dir, r)| (dir, r)).collect();
+    Ok((top.into_iter().chain(files).collect(), reports))
+}
+
+/// One shard of a drive into `out_dir/<slug>.shard-K-of-N/`: its rows of drive_records.csv and the
+/// manifest with their tally.
+pub(crate) fn run_drive_shard_into(
+    source_name: &str,
+    source: &str,
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    shard: Shard,
+    out_dir: &Path,
+) -> Result<DriveWritten, RunError> {
+    let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
+    let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
+    let io = RunError::io("the record files");
+    let mut records = std::io::BufWriter::new(folder.create_file(evaluate::drive_records::FILE).map_err(&io)?);
+    let tally = evaluate::drive::evaluate_drive_shard(scene, drive, shard, &mut records).map_err(&io)?;
+    std::io::Write::flush(&mut records).map_err(&io)?;
+    drop(records);
+    let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally);
+    folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
+    let files = vec![evaluate::drive_records::FILE.to_string(), shard::MANIFEST.to_string()];
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(DriveWritten { folder, files, drives: Vec::new() })
+}
+
+/// `gearloss merge` of a drive's shards: drive_records.csv concatenated in shard order (a single
+/// run's, byte for byte), the tallies folded, the report's rows, map, thermal balance and duty
+/// cycle evaluated again: the report a single run writes.
+pub(crate) fn merge_drive_into(
+    set: &shard::ShardSet,
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    out_dir: &Path,
+    progress: &dyn Progress,
+) -> Result<DriveWritten, RunError> {
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    progress.stage("merge", set.folders.len() as u64);
+    set.concatenate_files(&folder, &[(evaluate::drive_records::FILE, false)], progress)
+        .map_err(RunError::io("the record files"))?;
+    let tally = set.drive_tally.unwrap_or_default();
+    let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
+    report_into(folder, scene, drive, &eval, progress)
+}
+
+/// The report of `eval` rendered into `folder` (which holds its drive_records.csv), committed.
+fn report_into(
+    folder: ReportFolder,
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    eval: &evaluate::drive::DriveEvaluation,
+    progress: &dyn Progress,
+) -> Result<DriveWritten, RunError> {
+    let report = report::drive::build_drive_report(scene, drive, eval);
+    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    let mut files = vec![evaluate::drive_records::FILE.to_string()];
+    files.extend(write_all(&folder, &rendered.files, progress)?);
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(DriveWritten { folder, files, drives: vec![(String::new(), report)] })
+}
+
+/// A drive scene into its report folder, written whole.
+pub(crate) fn run_drive_into(
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    out_dir: &Path,
+    progress: &dyn Progress,
+) -> Result<DriveWritten, RunError> {
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    progress.stage("evaluate", 1);
+    if scene.operating.oil_temperatures.is_some() {
+        let (rendered, drives) = drive_sweep_files(scene)?;
+        let files = write_all(&folder, &rendered, progress)?;
+        let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+        return Ok(DriveWritten { folder, files, drives });
+    }
+    let io = RunError::io("the record files");
+    let file = folder.create_file(evaluate::drive_records::FILE).map_err(&io)?;
+    let mut records = std::io::BufWriter::new(file);
+    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(&io)?;
+    std::io::Write::flush(&mut records).map_err(&io)?;
+    drop(records);
+    report_into(folder, scene, drive, &eval, progress)
+}
