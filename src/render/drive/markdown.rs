@@ -53,7 +53,15 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);
         header(
             &mut out,
-            &["law", "formulation", "torques (N·m)", "speeds (rpm)", "least η (drive)", "most loss (W)", "most passes"],
+            &[
+                "law",
+                "formulation",
+                "torques (N·m)",
+                "speeds (rpm)",
+                "least η of the grid points (drive)",
+                "most loss of the grid points (W)",
+                "most passes",
+            ],
         );
         for m in &r.maps {
             let drive_eta = m
@@ -87,7 +95,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                 ],
             );
         }
-        md!(out, "\nThe grid's cells are values at the grid points (the map is a picture; the headline's numbers are computed at their points).\n");
+        md!(out, "\nThe grid's cells are the drive solved at the grid points; the least η and most loss above are of those points, not located between them (the map is a picture; the headline's numbers are computed at their points).\n");
     }
     model(&mut out);
     out
