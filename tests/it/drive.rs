@@ -468,3 +468,49 @@ fn a_drive_in_shards_merges_to_the_single_run() {
     assert_eq!(e.failure().unwrap().kind, gearloss::FailureKind::ShardedDrive);
     std::fs::remove_dir_all(&base).unwrap();
 }
+
+/// Any number of stages in a chain: the EV reducer with a third, spur stage on a fourth shaft at
+/// φ = 90° (its own shaft layout off the line of the others): speeds by the three ratios (1e-14),
+/// every shaft in balance (1e-12), the power balance (1e-9), drive and coast.
+#[test]
+fn three_stages_with_a_spur_stage_across() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    let text = text
+        .replace(
+            "    gearbox {",
+            r#"    stage "third" {
+        direction = 90 deg
+        gears {
+            module = 3 mm  pressure_angle = 20 deg  face_width = 40 mm
+            pinion { teeth = 25  shaft = output  at = 100 mm  material = steel  roughness_ra = 0.5 um }
+            wheel  { teeth = 50  shaft = wheel   at = 60 mm   material = steel  roughness_ra = 0.5 um }
+        }
+        lubrication = dip(pinion_immersion = 0 mm, wheel_immersion = 20 mm, axis_height = 150 mm, housing_width = 200 mm)
+    }
+    gearbox {"#,
+        )
+        .replace("        shaft output { output\n", "        shaft output {\n")
+        .replace(
+            "        # The housing as one thermal node",
+            "        shaft wheel  { output\n                       bearing(type = cylindrical_roller, bore = 60 mm, outside = 110 mm, at = 20 mm)\n                       bearing(type = deep_groove_ball, bore = 60 mm, outside = 110 mm, static_load_rating = 23.2 kN, at = 120 mm, locating) }\n        # The housing as one thermal node",
+        );
+    let scene = gearloss::check("three.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let all = points(&scene);
+    assert!(all.iter().any(|p| p.flow == PowerFlow::Coast));
+    for p in all {
+        assert_eq!(p.stages.len(), 3);
+        let w = |n: &str| p.shafts.iter().find(|s| s.name == n).unwrap().speed;
+        let ratio = w("wheel") / w("motor");
+        assert!((ratio + 23.0 / 68.0 * 20.0 / 78.0 * 25.0 / 50.0).abs() < 1e-14, "{ratio}");
+        for s in &p.shafts {
+            let largest = s.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
+            let positions = [s.bearings[0].position, s.bearings[1].position];
+            let reactions = [s.bearings[0].reaction, s.bearings[1].reaction];
+            for r in residuals(&s.gear_loads, positions, &reactions) {
+                assert!(r.abs() <= 1e-12 * largest, "{}: {r}", s.name);
+            }
+        }
+        let source = p.input_power.abs().max(p.output_power.abs());
+        assert!((p.power_lost() - p.losses.total()).abs() <= 1e-9 * source);
+    }
+}
