@@ -514,3 +514,33 @@ fn three_stages_with_a_spur_stage_across() {
         assert!((p.power_lost() - p.losses.total()).abs() <= 1e-9 * source);
     }
 }
+
+/// A negative input speed turns every shaft the other way (speeds negated exactly) and the axial
+/// forces with them; the shafts stay in balance and the power balance holds.
+#[test]
+fn a_negative_input_speed_turns_every_shaft_the_other_way() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    let at = |speed: &str| {
+        let (start, end) = (text.find("    # A stretch of driving").unwrap(), text.find("    friction {").unwrap());
+        let t = format!("{}{}", &text[..start], &text[end..])
+            .replace("        duty_cycle\n", "")
+            .replace("output_torque = [-500, 150, 1000] N*m", "input_torque = 80 N*m")
+            .replace("output_speed  = [500, 1000] rpm", &format!("input_speed = {speed}"));
+        points(&gearloss::check("neg.gear", &t).unwrap_or_else(|e| panic!("{}", e.render(false))))[0].clone()
+    };
+    let (ccw, cw) = (at("6000 rpm"), at("-6000 rpm"));
+    for (a, b) in ccw.shafts.iter().zip(&cw.shafts) {
+        assert_eq!(a.speed, -b.speed, "{}", a.name);
+        let largest = b.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
+        let positions = [b.bearings[0].position, b.bearings[1].position];
+        for r in residuals(&b.gear_loads, positions, &[b.bearings[0].reaction, b.bearings[1].reaction]) {
+            assert!(r.abs() <= 1e-12 * largest);
+        }
+    }
+    // The right-hand pinion driving: along +z turning counter-clockwise, along −z clockwise (the
+    // magnitudes differ by the bearing losses before the mesh, which the reversed forces change).
+    let axial = |p: &DrivePoint| p.shafts[0].gear_loads[0].force[2];
+    assert!(axial(&ccw) > 0.0 && axial(&cw) < 0.0);
+    assert!((axial(&ccw) + axial(&cw)).abs() < 1e-3 * axial(&ccw));
+    assert!((cw.power_lost() - cw.losses.total()).abs() <= 1e-9 * cw.input_power);
+}
