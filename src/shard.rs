@@ -55,17 +55,8 @@ pub(crate) struct Manifest {
 
 impl Manifest {
     pub(crate) fn new(source_name: &str, source: &str, shard: Shard, plan: &Plan, tally: Tally) -> Manifest {
-        Manifest {
-            format: FORMAT.into(),
-            gearloss_version: env!("CARGO_PKG_VERSION").into(),
-            source_name: source_name.into(),
-            source: source.into(),
-            shard,
-            operating_points: plan.count(),
-            range: (plan.range.start, plan.range.end),
-            tally,
-            drive_tally: None,
-        }
+        let range = (plan.range.start, plan.range.end);
+        Manifest { tally, ..Manifest::new_with(source_name, source, shard, plan.count(), range) }
     }
 
     /// The manifest of a drive's shard over `points` of its `operating_points`.
@@ -77,6 +68,18 @@ impl Manifest {
         tally: crate::evaluate::drive::DriveTally,
     ) -> Manifest {
         let points = shard.range(operating_points);
+        let common = Manifest::new_with(source_name, source, shard, operating_points, (points.start, points.end));
+        Manifest { drive_tally: Some(tally), ..common }
+    }
+
+    /// The manifest's common fields, with empty tallies.
+    fn new_with(
+        source_name: &str,
+        source: &str,
+        shard: Shard,
+        operating_points: usize,
+        range: (usize, usize),
+    ) -> Manifest {
         Manifest {
             format: FORMAT.into(),
             gearloss_version: env!("CARGO_PKG_VERSION").into(),
@@ -84,9 +87,9 @@ impl Manifest {
             source: source.into(),
             shard,
             operating_points,
-            range: (points.start, points.end),
+            range,
             tally: Tally::default(),
-            drive_tally: Some(tally),
+            drive_tally: None,
         }
     }
 

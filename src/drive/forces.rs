@@ -29,6 +29,15 @@ pub struct MeshForceSizes {
     pub face_width: f64,
 }
 
+impl MeshForceSizes {
+    /// [F_t, F_r, F_a] (N) when member `driving` puts `torque` (N·m) into the mesh.
+    pub fn magnitudes(&self, driving: Member, torque: f64) -> [f64; 3] {
+        let d = driving.index();
+        let f_t = torque / self.working_pitch_radius[d];
+        [f_t, f_t * self.working_pressure_angle.tan(), torque * self.helix_angle.tan() / self.pitch_radius[d]]
+    }
+}
+
 /// A force `force` (N) on a gear of shaft `shaft`, acting at `point` (m: x, y from the shaft's
 /// axis, z on the shaft's own axial coordinate).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -76,9 +85,7 @@ pub fn mesh_forces(
     omega: f64,
 ) -> [GearLoad; 2] {
     let d = driving.index();
-    let f_t = torque / sizes.working_pitch_radius[d];
-    let f_r = f_t * sizes.working_pressure_angle.tan();
-    let f_a = torque * sizes.helix_angle.tan() / sizes.pitch_radius[d];
+    let [f_t, f_r, f_a] = sizes.magnitudes(driving, torque);
     let (s, c) = stage.direction.sin_cos();
     // Unit vectors from each gear's centre to the contact point: the pinion's along φ, the wheel's
     // along φ + π.

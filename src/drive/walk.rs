@@ -326,7 +326,7 @@ impl<'a> Walk<'a> {
                 let kinematics = (stage.kind.entry().kinematics)(stage);
                 let t = p.driving_torque[k];
                 let d = m.index();
-                let f_t = t / sizes.working_pitch_radius[d];
+                let [f_t, f_r, f_a] = sizes.magnitudes(m, t);
                 StagePoint {
                     name: stage.name.clone(),
                     driving: m,
@@ -337,8 +337,8 @@ impl<'a> Walk<'a> {
                     mesh_loss: p.mesh_loss[k],
                     no_load: fixed.stage_no_load[k],
                     tangential_force: f_t,
-                    radial_force: f_t * sizes.working_pressure_angle.tan(),
-                    axial_force: t * sizes.helix_angle.tan() / sizes.pitch_radius[d],
+                    radial_force: f_r,
+                    axial_force: f_a,
                 }
             })
             .collect();

@@ -140,19 +140,7 @@ pub struct DriveReport {
 /// The report of an evaluated drive scene.
 pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) -> DriveReport {
     let layout = &drive.layout;
-    let op = &scene.operating;
-    let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
-    let label = |r: &DriveRow| {
-        format!(
-            "T_{} = {} {}, n_{} = {} {}",
-            end(layout.operating.torque_at),
-            op.pinion_torque.written_values[r.torque_index],
-            op.pinion_torque.unit,
-            end(layout.operating.speed_at),
-            op.pinion_speed.written_values[r.speed_index],
-            op.pinion_speed.unit
-        )
-    };
+    let label = |r: &DriveRow| point_words(scene, drive, r.torque_index, r.speed_index);
     let laws: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
     let points: Vec<DrivePointReport> = eval
         .rows
@@ -269,20 +257,28 @@ fn row_words(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> St
     let formulations = scene.analyses.efficiency.clone().unwrap_or_default();
     let per_point = laws.len() * formulations.len();
     let (point, rest) = (i / per_point, i % per_point);
+    let n = scene.operating.pinion_speed.values.len();
+    format!(
+        "{} ({}, {})",
+        point_words(scene, drive, point / n, point % n),
+        laws[rest / formulations.len()],
+        formulations[rest % formulations.len()].name()
+    )
+}
+
+/// An operating point in words, as the scene gives it: `T_out = 150 N*m, n_out = 500 rpm`.
+fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize, speed_index: usize) -> String {
     let op = &scene.operating;
-    let n = op.pinion_speed.values.len();
     let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
     let ends = drive.layout.operating;
     format!(
-        "T_{} = {} {}, n_{} = {} {} ({}, {})",
+        "T_{} = {} {}, n_{} = {} {}",
         end(ends.torque_at),
-        op.pinion_torque.written_values[point / n],
+        op.pinion_torque.written_values[torque_index],
         op.pinion_torque.unit,
         end(ends.speed_at),
-        op.pinion_speed.written_values[point % n],
-        op.pinion_speed.unit,
-        laws[rest / formulations.len()],
-        formulations[rest % formulations.len()].name()
+        op.pinion_speed.written_values[speed_index],
+        op.pinion_speed.unit
     )
 }
 
