@@ -84,6 +84,7 @@ pub mod scene;
 pub(crate) mod shard;
 pub mod thermal;
 pub mod tribology;
+pub mod vehicle;
 
 pub use diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
 pub use evaluate::records::{RecordSink, RecordWriter};

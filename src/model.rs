@@ -77,14 +77,7 @@ impl Scene {
     /// The scene with its lubricant moved to `theta` (α too when it comes from the base oil).
     pub fn at_temperature(&self, theta: Given<ThermodynamicTemperature>) -> Scene {
         let mut scene = self.clone();
-        if let Some(l) = scene.lubricant.take() {
-            let alpha = if l.alpha_from_oil { None } else { l.pressure_viscosity };
-            let span = l.dynamic_viscosity.span;
-            scene.lubricant = Some(match l.oil {
-                Some(oil) => Lubricant::of_oil(l.name, oil, alpha, span, &theta),
-                None => Lubricant { pressure_viscosity: alpha, ..l },
-            });
-        }
+        scene.lubricant = scene.lubricant.take().map(|l| l.at_temperature(&theta));
         scene.operating.oil_temperature = Some(theta);
         scene
     }
@@ -202,6 +195,18 @@ pub struct Lubricant {
 }
 
 impl Lubricant {
+    /// The lubricant at oil temperature θ: an oil given by grade or by ν40, ν100 and ρ15 moved
+    /// there ([`Lubricant::of_oil`]); one given by its viscosity as it is (α kept unless it came from
+    /// the base oil).
+    pub fn at_temperature(self, theta: &Given<ThermodynamicTemperature>) -> Lubricant {
+        let alpha = if self.alpha_from_oil { None } else { self.pressure_viscosity };
+        let span = self.dynamic_viscosity.span;
+        match self.oil {
+            Some(oil) => Lubricant::of_oil(self.name, oil, alpha, span, theta),
+            None => Lubricant { pressure_viscosity: alpha, ..self },
+        }
+    }
+
     /// An oil given by grade or by ν40, ν100 and ρ15, at the oil temperature θ: ν by ASTM D341, ρ by
     /// thermal expansion, η = ρν, α from the base oil unless `alpha` is given
     /// ([`crate::tribology::lubricant::OilData::at`]).

@@ -21,8 +21,9 @@ use crate::tribology::Tribology;
 
 /// One stage's mesh as each member driving sees it.
 pub(crate) struct StageMesh {
-    /// [pinion driving, wheel driving]: the pair with the driving member as its pinion.
-    geometry: [PairGeometry; 2],
+    /// [pinion driving, wheel driving]: the pair with the driving member as its pinion (shared by
+    /// the setups of one drive at several oil temperatures).
+    geometry: std::sync::Arc<[PairGeometry; 2]>,
     h_v: [f64; 2],
     tribology: Tribology,
     whole: bool,
@@ -33,10 +34,10 @@ impl StageMesh {
         let mesh = drive.mesh(k, scene.lubricant.as_ref());
         let e_r = mesh.reduced_modulus();
         let tribology = mesh.tribology(e_r);
-        let geometry = [
+        let geometry = std::sync::Arc::new([
             mesh.geometry(),
             swapped(&drive.pairs[k]).geometry().expect("a pair's geometry holds with the roles swapped"),
-        ];
+        ]);
         let whole = drive.pairs[k].load_sharing == LoadSharing::None;
         let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole };
         for d in 0..2 {
@@ -117,6 +118,28 @@ impl<'a> DriveSetup<'a> {
         let sizes = stages.iter().map(StageMesh::sizes).collect();
         let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
         DriveSetup { scene, drive, stages, sizes, oil }
+    }
+
+    /// The same drive with its oil at `kelvin`: the lubricant moved there, each mesh's tribology
+    /// and the losses' oil read again, the geometry shared.
+    pub(crate) fn at_oil_temperature(&self, kelvin: f64) -> DriveSetup<'a> {
+        let theta = crate::model::Given {
+            value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(kelvin),
+            written: String::new(),
+            span: Default::default(),
+        };
+        let lubricant = self.scene.lubricant.clone().map(|l| l.at_temperature(&theta));
+        let stages: Vec<StageMesh> = self
+            .stages
+            .iter()
+            .enumerate()
+            .map(|(k, s)| {
+                let mesh = self.drive.mesh(k, lubricant.as_ref());
+                StageMesh { geometry: s.geometry.clone(), h_v: s.h_v, tribology: mesh.tribology(mesh.reduced_modulus()), whole: s.whole }
+            })
+            .collect();
+        let oil = self.drive.mesh(0, lubricant.as_ref()).budget_oil(&stages[0].tribology);
+        DriveSetup { scene: self.scene, drive: self.drive, stages, sizes: self.sizes.clone(), oil }
     }
 
     /// Where law `law` leaves its validity range on each stage's mesh at `point` (the driving

@@ -2,6 +2,7 @@
 //! Chebyshev–Lobatto spectral integration and the small dense linear algebra of the propagators.
 
 pub mod chebyshev;
+pub mod collocation;
 pub(crate) mod dense;
 pub mod quadrature;
 pub mod roots;

@@ -1,0 +1,11 @@
+//! A vehicle over a drive cycle: the speed trace ([`trace`]), the road load ([`road_load`]) and the
+//! cycle cut into smooth pieces ([`cycle`]). What the gearbox loses on them is evaluated in
+//! `evaluate::drive_cycle`.
+
+pub mod cycle;
+pub mod road_load;
+pub mod trace;
+
+pub use cycle::{Cycle, Mode, Phase, Piece};
+pub use road_load::{RoadLoad, Vehicle, GRAVITY};
+pub use trace::{Trace, TraceError};
