@@ -21,6 +21,10 @@ pub use si::{
 pub type ReciprocalPressure = Quantity<ISQ<P1, N1, P2, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
 /// N/m, the unit of mesh stiffness.
 pub type Stiffness = Quantity<ISQ<Z0, P1, N2, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
+/// N·s/m (= kg/s), a road load's speed coefficient f1.
+pub type MassRate = Quantity<ISQ<Z0, P1, N1, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
+/// N·s²/m² (= kg/m), a road load's square coefficient f2.
+pub type MassPerLength = Quantity<ISQ<N1, P1, Z0, Z0, Z0, Z0, Z0>, SI<f64>, f64>;
 /// W/K, the unit of a thermal conductance (a foundation, an oil cooler).
 pub type ThermalConductance = Quantity<ISQ<P2, P1, N3, Z0, N1, Z0, Z0>, SI<f64>, f64>;
 
@@ -58,6 +62,23 @@ pub struct Scene {
 pub struct SceneDrive {
     pub layout: crate::drive::Drive,
     pub pairs: Vec<GearPair>,
+    /// A vehicle over a drive cycle, with the box as its drive.
+    pub cycle: Option<DriveCycleSpec>,
+}
+
+/// A `vehicle` over a `drive_cycle` as the scene gives them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriveCycleSpec {
+    pub vehicle_name: String,
+    pub name: String,
+    /// The trace file as written in the scene.
+    pub trace_file: String,
+    pub cycle: crate::vehicle::Cycle,
+    /// Where the transient starts (K); None: the housing's ambient.
+    pub start_temperature: Option<f64>,
+    /// The vehicle as written: (what, value as written).
+    pub written: Vec<(String, String)>,
+    pub span: Span,
 }
 
 impl Scene {
@@ -340,6 +361,8 @@ pub struct Analyses {
     /// `thermal_balance` and `duty_cycle`, with where they were asked for.
     pub thermal_balance: Option<Span>,
     pub duty_cycle: Option<Span>,
+    /// A vehicle over a drive cycle (a drive's scene only), where it was asked for.
+    pub drive_cycle: Option<Span>,
     /// `transmission_error(pinion_torque = [...] N*m)`: the torques.
     pub transmission_error: Option<Sweep<Torque>>,
 }

@@ -48,6 +48,10 @@ impl Dimension {
     pub const AREA: Dimension = dim(2, 0, 0, 0, 0);
     pub const HEAT_CAPACITY: Dimension = dim(2, 1, -2, -1, 0);
     pub const THERMAL_CONDUCTANCE: Dimension = dim(2, 1, -3, -1, 0);
+    /// N·s/m = kg/s: a road load's speed coefficient f1.
+    pub const MASS_RATE: Dimension = dim(0, 1, -1, 0, 0);
+    /// N·s²/m² = kg/m: a road load's square coefficient f2.
+    pub const MASS_PER_LENGTH: Dimension = dim(-1, 1, 0, 0, 0);
 
     /// This dimension to the power `e`; None when an exponent would leave ±`MAX_EXPONENT`.
     pub fn checked_pow(self, e: i32) -> Option<Dimension> {
@@ -131,6 +135,8 @@ const NAMED: &[(Dimension, &str)] = &[
     (Dimension::AREA, "area"),
     (Dimension::HEAT_CAPACITY, "heat capacity"),
     (Dimension::THERMAL_CONDUCTANCE, "thermal conductance"),
+    (Dimension::MASS_RATE, "road-load speed coefficient (N*s/m)"),
+    (Dimension::MASS_PER_LENGTH, "road-load square coefficient (N*s^2/m^2)"),
 ];
 
 const SI_NAMES: &[(Dimension, &str)] = &[

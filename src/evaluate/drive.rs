@@ -19,6 +19,8 @@ pub struct DriveEvaluation {
     pub balances: Vec<super::drive_thermal::DriveBalanceRow>,
     /// The duty cycle, when the scene asks for it.
     pub duty: Option<super::thermal::DutyCycleResult>,
+    /// The vehicle's drive cycle, when the scene asks for it.
+    pub cycle: Option<super::drive_cycle::CycleEvaluation>,
     pub tally: DriveTally,
 }
 
@@ -147,7 +149,8 @@ fn finish(
         (Some(h), Some(c), Some(_)) => Some(super::drive_thermal::drive_duty(scene, drive, h, c)),
         _ => None,
     };
-    DriveEvaluation { rows, map, validity, balances, duty, tally }
+    let cycle = drive.cycle.as_ref().map(|spec| super::drive_cycle::evaluate_cycle(scene, drive, spec));
+    DriveEvaluation { rows, map, validity, balances, duty, cycle, tally }
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the

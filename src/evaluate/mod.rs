@@ -7,8 +7,10 @@
 
 pub(crate) mod cases;
 pub(crate) mod contact_curves;
+pub(crate) mod cycle_transient;
 pub(crate) mod details;
 pub mod drive;
+pub mod drive_cycle;
 pub mod drive_records;
 pub(crate) mod drive_setup;
 pub mod drive_thermal;

@@ -117,7 +117,9 @@ pub struct DriveReport {
     pub rows: usize,
     /// The least and greatest η over every row where one end delivers, with the row's label, law
     /// and formulation; rows where both ends deliver.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub least_efficiency: Option<(f64, String)>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub greatest_efficiency: Option<(f64, String)>,
     pub both_ends_rows: usize,
     /// Rows where a stage's law leaves its validity range (drive_records.csv's
@@ -134,6 +136,9 @@ pub struct DriveReport {
     pub thermal: Vec<DriveBalanceReport>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub duty: Option<DriveDutyReport>,
+    /// The vehicle over its drive cycle.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cycle: Option<super::drive_cycle::DriveCycleReport>,
     pub findings: Vec<Finding>,
 }
 
@@ -199,8 +204,15 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             })
             .collect(),
         duty: duty_report(scene, eval, &laws),
+        cycle: match (&drive.cycle, &eval.cycle) {
+            (Some(spec), Some(c)) => Some(super::drive_cycle::build_cycle_report(scene, drive, spec, c)),
+            _ => None,
+        },
         points,
     };
+    if let Some(c) = &report.cycle {
+        report.findings.extend(super::drive_cycle::cycle_findings(c));
+    }
     for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
         report.findings.push(Finding {
             severity: Severity::Warning,

@@ -2,6 +2,8 @@
 
 pub(crate) mod checks;
 pub mod drive;
+pub mod drive_cycle;
+pub mod drive_cycle_series;
 pub mod drive_inputs;
 pub mod drive_oil_sweep;
 pub(crate) mod dynamics;

@@ -24,6 +24,8 @@ const SCENE_BLOCKS: &[&str] = &[
     "dynamics",
     "gearbox",
     "duty_cycle",
+    "vehicle",
+    "drive_cycle",
     "analyses",
 ];
 /// Lowers a parsed scene. On failure, every diagnostic found.
@@ -38,7 +40,19 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
 
     let (materials, singles, stages) = scene_blocks(ast, &top, &mut errors);
     if !stages.is_empty() {
-        return super::lower_drive_scene::lower_drive_scene(ast, &top, &materials, &singles, &stages, errors);
+        return super::lower_drive_scene::lower_drive_scene(ast, &top, &materials, &singles, &stages, base_dir, errors);
+    }
+    for kind in ["vehicle", "drive_cycle"] {
+        if let Some(b) = singles.get(kind) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::UnknownName,
+                    b.kind.span,
+                    format!("a `{kind}` block drives a gearbox of stages; this scene is one pair"),
+                )
+                .hint("write the box with `stage` blocks and a `gearbox` of shafts (README, \"Several stages\")"),
+            );
+        }
     }
 
     let gears = singles.get("gears").and_then(|b| lower_gears(b, &materials, &mut errors));
@@ -62,6 +76,12 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     let analyses = singles
         .get("analyses")
         .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, false, &mut errors));
+    if let Some(span) = analyses.drive_cycle {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::UnknownName, span, "`drive_cycle` drives a gearbox of stages; this scene is one pair")
+                .hint("write the box with `stage` blocks and a `gearbox` of shafts, or use `duty_cycle` for one pair"),
+        );
+    }
     let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));
     let dynamics =
         singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));

@@ -19,6 +19,7 @@ const ANALYSES: &[&str] = &[
     "thermal_balance",
     "duty_cycle",
     "transmission_error",
+    "drive_cycle",
 ];
 const FORMULATIONS: &[&str] = &["external", "internal"];
 
@@ -120,6 +121,7 @@ pub(super) fn lower_analyses(block: &Block, drive: bool, errors: &mut Vec<Diagno
                     }
                     "thermal_balance" => a.thermal_balance = Some(call.span),
                     "duty_cycle" => a.duty_cycle = Some(call.span),
+                    "drive_cycle" => a.drive_cycle = Some(call.span),
                     _ => {}
                 }
             }

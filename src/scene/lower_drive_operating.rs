@@ -16,8 +16,11 @@ use crate::model::{AngularVelocity, Operating, Sweep, Torque, MAX_OPERATING_POIN
 
 const KEYS: &[&str] = &["input_torque", "output_torque", "input_speed", "output_speed", "oil_temperature"];
 
+/// The drive's `operating` block; with a drive cycle (`cycle`) torques and speeds may be left out
+/// (the cycle gives them), the ends then the output's.
 pub(super) fn lower_drive_operating(
     block: &Block,
+    cycle: bool,
     errors: &mut Vec<Diagnostic>,
 ) -> Option<(Operating, DriveOperating)> {
     if let Some(key) = block.items.iter().map(Item::head).find(|k| k.text.starts_with("pinion_")) {
@@ -32,6 +35,18 @@ pub(super) fn lower_drive_operating(
         return None;
     }
     let f = Fields::read("the `operating` block", block.span, &block.items, KEYS, &[], &[], errors);
+    if cycle && !KEYS[..4].iter().any(|k| f.has(k)) {
+        let (oil_temperature, oil_temperatures) = super::lower_operating::oil_temperatures(&f, errors);
+        let operating = Operating {
+            pinion_torque: Sweep { values: Vec::new(), unit: "N*m".into(), factor: 1.0, written_values: Vec::new(), span: block.span },
+            pinion_speed: Sweep { values: Vec::new(), unit: "rpm".into(), factor: 1.0, written_values: Vec::new(), span: block.span },
+            oil_temperature,
+            oil_temperatures,
+            detail_points: Vec::new(),
+            equilibrium: None,
+        };
+        return Some((operating, DriveOperating { torque_at: ShaftEnd::Output, speed_at: ShaftEnd::Output }));
+    }
     let (torque, torque_at) = at_one_end::<Torque>(&f, "torque", "[150, 1000] N*m", errors)?;
     let (speed, speed_at) = at_one_end::<AngularVelocity>(&f, "speed", "[500, 1000] rpm", errors)?;
     if let Some(bad) =

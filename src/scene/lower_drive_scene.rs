@@ -23,6 +23,7 @@ pub(super) fn lower_drive_scene(
     materials: &BTreeMap<&str, Material>,
     singles: &BTreeMap<&str, &Block>,
     stage_blocks: &[&Block],
+    base_dir: Option<&std::path::Path>,
     mut errors: Vec<Diagnostic>,
 ) -> Result<Scene, Vec<Diagnostic>> {
     let errors = &mut errors;
@@ -52,8 +53,10 @@ pub(super) fn lower_drive_scene(
             );
         }
     }
-    let operating =
-        singles.get("operating").and_then(|b| super::lower_drive_operating::lower_drive_operating(b, errors));
+    let cycle_blocks = (singles.get("vehicle"), singles.get("drive_cycle"));
+    let operating = singles.get("operating").and_then(|b| {
+        super::lower_drive_operating::lower_drive_operating(b, cycle_blocks.1.is_some(), errors)
+    });
     let gearbox_block = singles.get("gearbox");
     let shafts = gearbox_block.and_then(|b| super::lower_shafts::lower_shafts(b, errors));
     if gearbox_block.is_none() {
@@ -93,6 +96,7 @@ pub(super) fn lower_drive_scene(
         .get("analyses")
         .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, true, errors));
     check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
+    let cycle = super::lower_vehicle::cycle_of_scene(cycle_blocks, analyses.drive_cycle, base_dir, errors);
     let lubricant_failed =
         lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));
     super::lower_thermal::check_thermal_needs(
@@ -136,7 +140,7 @@ pub(super) fn lower_drive_scene(
             housing,
             duty_cycle,
             analyses,
-            drive: Some(SceneDrive { layout, pairs: stages.into_iter().map(|s| s.pair).collect() }),
+            drive: Some(SceneDrive { layout, pairs: stages.into_iter().map(|s| s.pair).collect(), cycle }),
         }),
         _ => Err(std::mem::take(errors)),
     }
@@ -165,6 +169,14 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
         }
     }
     match (a.efficiency.is_some(), a.friction_span) {
+        (false, _) if a.drive_cycle.is_some() => {
+            if no_laws {
+                errors.push(
+                    Diagnostic::new(DiagnosticKind::MissingKey, a.drive_cycle.unwrap_or(title), "a drive cycle's losses need friction laws, and the scene lists none")
+                        .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
+                );
+            }
+        }
         (false, _) => errors.push(
             Diagnostic::new(
                 DiagnosticKind::MissingKey,

@@ -22,6 +22,7 @@ pub(crate) mod lower_stage;
 pub(crate) mod lower_teeth;
 pub(crate) mod lower_thermal;
 pub(crate) mod lower_tooth_system;
+pub(crate) mod lower_vehicle;
 pub mod parse;
 pub(crate) mod screen;
 pub mod source;

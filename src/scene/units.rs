@@ -385,3 +385,5 @@ si_quantity!(q::Area, Dimension::AREA);
 si_quantity!(q::HeatCapacity, Dimension::HEAT_CAPACITY);
 si_quantity!(q::ThermalConductance, Dimension::THERMAL_CONDUCTANCE);
 si_quantity!(q::Time, Dimension::TIME);
+si_quantity!(q::MassRate, Dimension::MASS_RATE);
+si_quantity!(q::MassPerLength, Dimension::MASS_PER_LENGTH);

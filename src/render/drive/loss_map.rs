@@ -26,6 +26,7 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
             values: m.loss.clone(),
             x_label: x_label.clone(),
             y_label: y_label.clone(),
+            marks: Vec::new(),
         });
         maps.push(Map {
             title: format!("η % (blank: no power through) — {} {}", m.law, m.formulation),
@@ -34,6 +35,7 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
             values: eta,
             x_label,
             y_label,
+            marks: Vec::new(),
         });
     }
     heat_maps(&format!("{}: total loss and efficiency, drive (T > 0) and coast (T < 0)", r.title), &maps)

@@ -44,7 +44,12 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     inputs(&mut out, r);
     thermal(&mut out, r);
     duty(&mut out, r);
-    md!(out, "## Operating points\n");
+    if let Some(c) = &r.cycle {
+        super::cycle::cycle(&mut out, c);
+    }
+    if !r.points.is_empty() {
+        md!(out, "## Operating points\n");
+    }
     for p in &r.points {
         super::point_tables::point(&mut out, p);
     }

@@ -3,6 +3,8 @@
 //! and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
 //! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
 
+pub(crate) mod cycle;
+pub(crate) mod cycle_plots;
 pub(crate) mod loss_map;
 pub(crate) mod markdown;
 pub mod oil_sweep;
@@ -31,6 +33,12 @@ pub fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
     }
     if !report.maps.is_empty() {
         files.push((loss_map::FILE.to_string(), loss_map::loss_map(report)?));
+    }
+    if let Some(c) = &report.cycle {
+        files.push((cycle_plots::TRACE_FILE.to_string(), cycle_plots::trace(&report.title, c)?));
+        if !c.map.torques.is_empty() {
+            files.push((cycle_plots::MAP_FILE.to_string(), cycle_plots::map(&report.title, c)?));
+        }
     }
     Ok(RenderedReport { slug: report.slug.clone(), files })
 }

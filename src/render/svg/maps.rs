@@ -29,6 +29,8 @@ pub(crate) struct Map<'a> {
     /// The axes' descriptions.
     pub x_label: String,
     pub y_label: String,
+    /// Circles over the map at (x, y), their area in proportion to the weight (none: a plain map).
+    pub marks: Vec<(f64, f64, f64)>,
 }
 
 /// Heat maps two a row under `title`.
@@ -89,6 +91,14 @@ fn draw_map(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, m: &Map) -> 
             Rectangle::new([(xe[s], ye[t]), (xe[s + 1], ye[t + 1])], colour((v - lo) / span).filled())
         }))
         .map_err(e)?;
+    let heaviest = m.marks.iter().map(|m| m.2).fold(0.0, f64::max);
+    if heaviest > 0.0 {
+        // The heaviest mark 9 px across; area in proportion to the weight.
+        let radius = |w: f64| (9.0 * (w / heaviest).sqrt()).round().max(1.0) as i32;
+        chart
+            .draw_series(m.marks.iter().map(|&(x, y, w)| Circle::new((x, y), radius(w), RED.mix(0.8).stroke_width(1))))
+            .map_err(e)?;
+    }
     Ok(())
 }
 
@@ -136,6 +146,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             values: eta,
             x_label: x_label.clone(),
             y_label: y_label.clone(),
+            marks: Vec::new(),
         });
         maps.push(Map {
             title: format!("P_loss {} — {name}", power.unit),
@@ -144,6 +155,7 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
             values: loss,
             x_label,
             y_label,
+            marks: Vec::new(),
         });
     }
     heat_maps(&format!("{}: mean efficiency and power loss over the map", r.title), &maps)

@@ -1,0 +1,222 @@
+//! A vehicle over a drive cycle through the scene's drive (README, "Vehicles and drive cycles").
+//!
+//! On every piece of the cycle ([`crate::vehicle::Cycle::pieces`]: an interval of the trace, cut
+//! where the wheel force changes sign, where it crosses the recuperation limit and at the phase
+//! boundaries) the gearbox's output carries the wheel torque F r_dyn (or the limit) over the final
+//! ratio at the wheel speed v/r_dyn times it; the drive is solved there ([`DriveSetup::point`])
+//! and its loss parts, the motor's power and the output's power are integrated over the piece by
+//! Gauss–Legendre at [`LOW_ORDER`] and [`HIGH_ORDER`] nodes: the higher order's value is reported,
+//! the difference of the two is its error estimate. Standing pieces lose nothing.
+//!
+//! With a fixed oil temperature every piece is independent (evaluated in parallel). With the
+//! housing's heat capacity the sump follows the cycle ([`super::cycle_transient`]).
+
+use rayon::prelude::*;
+
+use super::drive_setup::DriveSetup;
+use crate::drive::{DrivePoint, EndValue, ShaftEnd};
+use crate::efficiency::Formulation;
+use crate::model::{DriveCycleSpec, Scene, SceneDrive};
+use crate::vehicle::{Mode, Piece};
+
+/// Gauss–Legendre nodes of the two rules on each piece.
+pub const LOW_ORDER: usize = 3;
+pub const HIGH_ORDER: usize = 5;
+
+/// What is integrated over a piece (J, and rad for the motor's angle), in this order.
+pub const QUANTITIES: [&str; 8] =
+    ["meshes", "gear_no_load", "bearings_no_load", "bearings_load", "seals", "motor", "output", "motor_angle"];
+pub const N: usize = QUANTITIES.len();
+/// Index of the motor's energy ∫ P_in dt, the output's ∫ P_out dt, and the motor's angle ∫ |ω_in| dt.
+pub const MOTOR: usize = 5;
+pub const OUTPUT: usize = 6;
+pub const ANGLE: usize = 7;
+/// The loss parts: the first five quantities.
+pub const PARTS: usize = 5;
+
+/// The integrands at one point of the drive.
+pub(crate) fn integrands(p: &DrivePoint) -> [f64; N] {
+    let l = &p.losses;
+    [l.meshes, l.gear_no_load, l.bearings_no_load, l.bearings_load, l.seals, p.input_power, p.output_power, p.input_speed]
+}
+
+/// One piece's integrals: the higher order's value and |high − low|.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PieceIntegrals {
+    pub value: [f64; N],
+    pub error: [f64; N],
+}
+
+/// With the sump's transient: a piece's end temperature (K), the heat given off (J), the highest
+/// θ on the piece (K) and its time (s), θ's difference between the two orders at the end (K).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PieceThermal {
+    pub end: f64,
+    pub dissipated: f64,
+    pub highest: (f64, f64),
+    pub error: f64,
+}
+
+/// How the oil temperature is taken over the cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CycleOil {
+    /// Fixed (K).
+    Fixed(f64),
+    /// The sump's transient from `start` (K) with heat capacity `c` (J/K).
+    Transient { start: f64, c: f64 },
+}
+
+/// A drive cycle evaluated under one law and formulation.
+#[derive(Debug, Clone)]
+pub struct CycleEvaluation {
+    pub law_index: usize,
+    pub formulation: Formulation,
+    pub oil: CycleOil,
+    pub pieces: Vec<Piece>,
+    pub integrals: Vec<PieceIntegrals>,
+    /// With the transient, per piece.
+    pub thermal: Vec<PieceThermal>,
+    /// Why the transient stopped, if it did.
+    pub failure: Option<String>,
+    /// The box's map for the plot (output torque N·m × output speed rad/s at the fixed or start
+    /// temperature): torques, speeds, [torque][speed] η (NaN where both ends deliver).
+    pub map: (Vec<f64>, Vec<f64>, Vec<Vec<f64>>),
+}
+
+/// What the gearbox's output carries at `t` on `piece`: (torque N·m, speed rad/s).
+pub(crate) fn box_load(spec: &DriveCycleSpec, piece: &Piece, t: f64) -> (f64, f64) {
+    let car = &spec.cycle.vehicle;
+    let torque = piece.carried_force(t) * car.wheel_radius / car.final_ratio;
+    let speed = piece.speed(t) / car.wheel_radius * car.final_ratio;
+    (torque, speed)
+}
+
+/// The integrands at `t` on `piece` with the drive's `setup` (zero standing or at zero speed).
+pub(crate) fn integrands_at(
+    setup: &DriveSetup,
+    spec: &DriveCycleSpec,
+    (law, formulation): (usize, Formulation),
+    piece: &Piece,
+    t: f64,
+) -> [f64; N] {
+    let (torque, speed) = box_load(spec, piece, t);
+    if piece.mode == Mode::Standing || speed <= 0.0 {
+        return [0.0; N];
+    }
+    let point = setup.point(
+        law,
+        formulation,
+        EndValue { at: ShaftEnd::Output, value: torque },
+        EndValue { at: ShaftEnd::Output, value: speed },
+    );
+    integrands(&point)
+}
+
+/// ∫ over `piece` of the integrands by the `n`-node Gauss–Legendre rule at the setup's oil.
+fn integrate(setup: &DriveSetup, spec: &DriveCycleSpec, row: (usize, Formulation), piece: &Piece, n: usize) -> [f64; N] {
+    let (x, w) = crate::numerics::quadrature::gauss_legendre(n);
+    let h = piece.to - piece.from;
+    let mut sum = [0.0; N];
+    for (x, w) in x.iter().zip(&w) {
+        let v = integrands_at(setup, spec, row, piece, piece.from + x * h);
+        for (s, v) in sum.iter_mut().zip(v) {
+            *s += w * h * v;
+        }
+    }
+    sum
+}
+
+/// The integrals of every piece at a fixed oil temperature, in parallel.
+pub(crate) fn fixed_integrals(
+    setup: &DriveSetup,
+    spec: &DriveCycleSpec,
+    row: (usize, Formulation),
+    pieces: &[Piece],
+) -> Vec<PieceIntegrals> {
+    pieces
+        .par_iter()
+        .map(|p| {
+            if p.mode == Mode::Standing {
+                return PieceIntegrals::default();
+            }
+            let (low, high) = (integrate(setup, spec, row, p, LOW_ORDER), integrate(setup, spec, row, p, HIGH_ORDER));
+            let mut error = [0.0; N];
+            for k in 0..N {
+                error[k] = (high[k] - low[k]).abs();
+            }
+            PieceIntegrals { value: high, error }
+        })
+        .collect()
+}
+
+/// The scene's drive cycle under its first law and formulation.
+pub fn evaluate_cycle(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec) -> CycleEvaluation {
+    let setup = DriveSetup::new(scene, drive);
+    let formulation = scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
+    let row = (0, formulation);
+    let pieces = spec.cycle.pieces();
+    let fixed = scene.operating.oil_temperature.as_ref().map(|t| t.value.value);
+    let transient = scene.housing.as_ref().and_then(|h| h.heat_capacity.map(|c| (h, c)));
+    let (oil, integrals, thermal, failure) = match transient {
+        Some((housing, c)) => {
+            let start = spec.start_temperature.unwrap_or(housing.ambient);
+            let run = super::cycle_transient::run(&setup, spec, row, &pieces, housing, c, start);
+            let failure = run.as_ref().err().cloned();
+            let (integrals, thermal) = run.unwrap_or_default();
+            (CycleOil::Transient { start, c }, integrals, thermal, failure)
+        }
+        None => {
+            let theta = fixed.expect("a cycle without a heat capacity has its oil temperature (checked)");
+            (CycleOil::Fixed(theta), fixed_integrals(&setup, spec, row, &pieces), Vec::new(), None)
+        }
+    };
+    let map_setup = match oil {
+        CycleOil::Transient { start, .. } => setup.at_oil_temperature(start),
+        CycleOil::Fixed(_) => setup,
+    };
+    let map = cycle_map(&map_setup, spec, row, &pieces);
+    CycleEvaluation { law_index: 0, formulation, oil, pieces, integrals, thermal, failure, map }
+}
+
+/// Grid of the map drawn under the cycle's operating points: torques × speeds.
+const MAP_GRID: (usize, usize) = (41, 30);
+
+/// η of the box over the output torques and speeds the cycle reaches (a plot's grid).
+fn cycle_map(
+    setup: &DriveSetup,
+    spec: &DriveCycleSpec,
+    (law, formulation): (usize, Formulation),
+    pieces: &[Piece],
+) -> (Vec<f64>, Vec<f64>, Vec<Vec<f64>>) {
+    let (mut lo, mut hi, mut top) = (0.0f64, 0.0f64, 0.0f64);
+    for p in pieces.iter().filter(|p| p.mode != Mode::Standing) {
+        for t in [p.from, p.to] {
+            let (torque, speed) = box_load(spec, p, t);
+            (lo, hi, top) = (lo.min(torque), hi.max(torque), top.max(speed));
+        }
+    }
+    if top <= 0.0 {
+        return (Vec::new(), Vec::new(), Vec::new());
+    }
+    let (lo, hi) = (1.05 * lo.min(-1.0), 1.05 * hi.max(1.0));
+    let torques: Vec<f64> = (0..MAP_GRID.0).map(|i| lo + (hi - lo) * i as f64 / (MAP_GRID.0 - 1) as f64).collect();
+    let speeds: Vec<f64> = (1..=MAP_GRID.1).map(|i| 1.05 * top * i as f64 / MAP_GRID.1 as f64).collect();
+    let eta = torques
+        .par_iter()
+        .map(|&torque| {
+            speeds
+                .iter()
+                .map(|&speed| {
+                    let p = setup.point(
+                        law,
+                        formulation,
+                        EndValue { at: ShaftEnd::Output, value: torque },
+                        EndValue { at: ShaftEnd::Output, value: speed },
+                    );
+                    if p.both_ends_deliver { f64::NAN } else { p.efficiency }
+                })
+                .collect()
+        })
+        .collect();
+    (torques, speeds, eta)
+}

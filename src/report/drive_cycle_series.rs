@@ -1,0 +1,124 @@
+//! The drive cycle's per-interval series (one row per interval of the trace, the pieces of an
+//! interval summed) and the time the cycle spends over the box's map: what report.json carries
+//! and cycle_records.csv writes.
+
+use serde::{Deserialize, Serialize};
+
+use super::drive_cycle::CycleMap;
+use crate::evaluate::drive_cycle::{box_load, CycleEvaluation, ANGLE, MOTOR, N, PARTS};
+use crate::model::DriveCycleSpec;
+use crate::vehicle::Mode;
+
+/// Columns of the series: one value per interval each. Forces, torques and speeds at an
+/// interval's start and end are the one-sided limits inside it; energies are the interval's (J).
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+pub struct CycleSeries {
+    pub columns: Vec<String>,
+    #[serde(with = "super::floats")]
+    pub values: Vec<Vec<f64>>,
+}
+
+/// The series' columns, in order.
+pub const COLUMNS: [&str; 24] = [
+    "t_start_s",
+    "t_end_s",
+    "v_start_km_h",
+    "v_end_km_h",
+    "force_start_n",
+    "force_end_n",
+    "wheel_torque_start_n_m",
+    "wheel_torque_end_n_m",
+    "wheel_speed_start_rpm",
+    "wheel_speed_end_rpm",
+    "motor_speed_start_rpm",
+    "motor_speed_end_rpm",
+    "motor_mean_torque_n_m",
+    "loss_j",
+    "loss_error_j",
+    "meshes_j",
+    "gear_no_load_j",
+    "bearings_no_load_j",
+    "bearings_load_j",
+    "seals_j",
+    "motor_j",
+    "wheel_j",
+    "brakes_j",
+    "oil_temperature_end_c",
+];
+
+const RPM: f64 = 30.0 / std::f64::consts::PI;
+
+/// One row per interval of the trace.
+pub(crate) fn series(spec: &DriveCycleSpec, eval: &CycleEvaluation, motor_per_wheel: f64) -> CycleSeries {
+    let car = &spec.cycle.vehicle;
+    let tr = &spec.cycle.trace;
+    let intervals = tr.time.len() - 1;
+    let mut sums = vec![[0.0; N]; intervals];
+    let mut errors = vec![0.0; intervals];
+    let mut wheel = vec![0.0; intervals];
+    let mut brakes = vec![0.0; intervals];
+    let mut first = vec![None; intervals];
+    let mut last = vec![0; intervals];
+    for (k, (p, r)) in eval.pieces.iter().zip(&eval.integrals).enumerate() {
+        let i = p.interval;
+        for q in 0..N {
+            sums[i][q] += r.value[q];
+        }
+        errors[i] += r.error[..PARTS].iter().sum::<f64>();
+        wheel[i] += p.wheel_energy();
+        brakes[i] += p.box_energy() - p.wheel_energy();
+        first[i].get_or_insert(k);
+        last[i] = k;
+    }
+    let rows = (0..intervals)
+        .map(|i| {
+            let (a, b) = (&eval.pieces[first[i].expect("every interval has a piece")], &eval.pieces[last[i]]);
+            let force = |p: &crate::vehicle::Piece, t: f64| if p.mode == Mode::Standing { 0.0 } else { p.force(t) };
+            let (f0, f1) = (force(a, a.from), force(b, b.to));
+            let wheel_rpm = |v: f64| v / car.wheel_radius * RPM;
+            let theta = eval.thermal.get(last[i]).map_or(f64::NAN, |t| t.end - 273.15);
+            let mut row = vec![
+                tr.time[i],
+                tr.time[i + 1],
+                tr.speed[i] * 3.6,
+                tr.speed[i + 1] * 3.6,
+                f0,
+                f1,
+                f0 * car.wheel_radius,
+                f1 * car.wheel_radius,
+                wheel_rpm(tr.speed[i]),
+                wheel_rpm(tr.speed[i + 1]),
+                wheel_rpm(tr.speed[i]) * motor_per_wheel.abs(),
+                wheel_rpm(tr.speed[i + 1]) * motor_per_wheel.abs(),
+                if sums[i][ANGLE] > 0.0 { sums[i][MOTOR] / sums[i][ANGLE] } else { 0.0 },
+                sums[i][..PARTS].iter().sum(),
+                errors[i],
+            ];
+            row.extend(&sums[i][..PARTS]);
+            row.extend([sums[i][MOTOR], wheel[i], brakes[i], theta]);
+            row
+        })
+        .collect();
+    CycleSeries { columns: COLUMNS.iter().map(|c| c.to_string()).collect(), values: rows }
+}
+
+/// The map with the seconds the cycle spends in each of its cells (the Gauss nodes of every
+/// moving piece, weighted by their share of its time).
+pub(crate) fn cycle_map(spec: &DriveCycleSpec, eval: &CycleEvaluation) -> CycleMap {
+    let (torques, speeds, efficiency) = eval.map.clone();
+    let mut seconds = vec![vec![0.0; speeds.len()]; torques.len()];
+    let nearest = |grid: &[f64], x: f64| {
+        (0..grid.len()).min_by(|&a, &b| (grid[a] - x).abs().total_cmp(&(grid[b] - x).abs())).unwrap_or(0)
+    };
+    if !torques.is_empty() {
+        let (x, w) = crate::numerics::quadrature::gauss_legendre(crate::evaluate::drive_cycle::HIGH_ORDER);
+        for p in eval.pieces.iter().filter(|p| p.mode != Mode::Standing) {
+            let h = p.to - p.from;
+            for (x, w) in x.iter().zip(&w) {
+                let (torque, speed) = box_load(spec, p, p.from + x * h);
+                seconds[nearest(&torques, torque)][nearest(&speeds, speed)] += w * h;
+            }
+        }
+    }
+    CycleMap { torques, speeds_rpm: speeds.iter().map(|w| w * RPM).collect(), efficiency, seconds }
+}
