@@ -149,6 +149,20 @@ pub(crate) fn fixed_integrals(
         .collect()
 }
 
+/// ∫ P_V dt (J) over the whole cycle at the scene's fixed oil temperature by the `n`-node
+/// Gauss–Legendre rule on each piece: the check of the error estimate (a higher order must stay
+/// within it).
+pub fn loss_energy_at_order(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec, n: usize) -> f64 {
+    let setup = DriveSetup::new(scene, drive);
+    let formulation = scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
+    spec.cycle
+        .pieces()
+        .par_iter()
+        .filter(|p| p.mode != Mode::Standing)
+        .map(|p| integrate(&setup, spec, (0, formulation), p, n)[..PARTS].iter().sum::<f64>())
+        .sum()
+}
+
 /// The scene's drive cycle under its first law and formulation.
 pub fn evaluate_cycle(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec) -> CycleEvaluation {
     let setup = DriveSetup::new(scene, drive);

@@ -79,8 +79,8 @@ pub struct CycleTemperature {
 pub struct CycleMap {
     pub torques: Vec<f64>,
     pub speeds_rpm: Vec<f64>,
-    #[serde(with = "super::floats")]
-    pub efficiency: Vec<Vec<f64>>,
+    /// None where both ends deliver.
+    pub efficiency: Vec<Vec<Option<f64>>>,
     /// [torque cell][speed cell] seconds, cells centred on the grid's values.
     pub seconds: Vec<Vec<f64>>,
 }

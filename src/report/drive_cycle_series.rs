@@ -7,16 +7,40 @@ use serde::{Deserialize, Serialize};
 use super::drive_cycle::CycleMap;
 use crate::evaluate::drive_cycle::{box_load, CycleEvaluation, ANGLE, MOTOR, N, PARTS};
 use crate::model::DriveCycleSpec;
+use crate::numerics::rounding::round_sig;
 use crate::vehicle::Mode;
 
-/// Columns of the series: one value per interval each. Forces, torques and speeds at an
-/// interval's start and end are the one-sided limits inside it; energies are the interval's (J).
+/// Columns of the series: one value per interval each (ten significant digits). Forces, torques
+/// and speeds at an interval's start and end are the one-sided limits inside it; energies are the
+/// interval's (J); the sump's temperature at its end only with the transient.
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct CycleSeries {
     pub columns: Vec<String>,
-    #[serde(with = "super::floats")]
     pub values: Vec<Vec<f64>>,
 }
+
+impl CycleSeries {
+    /// The column `name`, if the series has it.
+    pub fn column(&self, name: &str) -> Option<Vec<f64>> {
+        let k = self.columns.iter().position(|c| c == name)?;
+        Some(self.values.iter().map(|r| r[k]).collect())
+    }
+
+    /// cycle_records.csv: the columns, then a row per interval.
+    pub fn to_csv(&self) -> String {
+        let mut out = self.columns.join(",");
+        out.push('\n');
+        for r in &self.values {
+            let cells: Vec<String> = r.iter().map(|x| x.to_string()).collect();
+            out.push_str(&cells.join(","));
+            out.push('\n');
+        }
+        out
+    }
+}
+
+/// The records file of a cycle.
+pub const FILE: &str = "cycle_records.csv";
 
 /// The series' columns, in order.
 pub const COLUMNS: [&str; 24] = [
@@ -24,26 +48,26 @@ pub const COLUMNS: [&str; 24] = [
     "t_end_s",
     "v_start_km_h",
     "v_end_km_h",
-    "force_start_n",
-    "force_end_n",
-    "wheel_torque_start_n_m",
-    "wheel_torque_end_n_m",
+    "force_start_N",
+    "force_end_N",
+    "wheel_torque_start_N_m",
+    "wheel_torque_end_N_m",
     "wheel_speed_start_rpm",
     "wheel_speed_end_rpm",
     "motor_speed_start_rpm",
     "motor_speed_end_rpm",
-    "motor_mean_torque_n_m",
-    "loss_j",
-    "loss_error_j",
-    "meshes_j",
-    "gear_no_load_j",
-    "bearings_no_load_j",
-    "bearings_load_j",
-    "seals_j",
-    "motor_j",
-    "wheel_j",
-    "brakes_j",
-    "oil_temperature_end_c",
+    "motor_mean_torque_N_m",
+    "loss_J",
+    "loss_error_J",
+    "meshes_J",
+    "gear_no_load_J",
+    "bearings_no_load_J",
+    "bearings_load_J",
+    "seals_J",
+    "motor_J",
+    "wheel_J",
+    "brakes_J",
+    "oil_temperature_end_C",
 ];
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
@@ -76,7 +100,7 @@ pub(crate) fn series(spec: &DriveCycleSpec, eval: &CycleEvaluation, motor_per_wh
             let force = |p: &crate::vehicle::Piece, t: f64| if p.mode == Mode::Standing { 0.0 } else { p.force(t) };
             let (f0, f1) = (force(a, a.from), force(b, b.to));
             let wheel_rpm = |v: f64| v / car.wheel_radius * RPM;
-            let theta = eval.thermal.get(last[i]).map_or(f64::NAN, |t| t.end - 273.15);
+
             let mut row = vec![
                 tr.time[i],
                 tr.time[i + 1],
@@ -95,17 +119,22 @@ pub(crate) fn series(spec: &DriveCycleSpec, eval: &CycleEvaluation, motor_per_wh
                 errors[i],
             ];
             row.extend(&sums[i][..PARTS]);
-            row.extend([sums[i][MOTOR], wheel[i], brakes[i], theta]);
-            row
+            row.extend([sums[i][MOTOR], wheel[i], brakes[i]]);
+            if let Some(t) = eval.thermal.get(last[i]) {
+                row.push(t.end - 273.15);
+            }
+            row.into_iter().map(round_sig).collect()
         })
         .collect();
-    CycleSeries { columns: COLUMNS.iter().map(|c| c.to_string()).collect(), values: rows }
+    let shown = if eval.thermal.is_empty() { COLUMNS.len() - 1 } else { COLUMNS.len() };
+    CycleSeries { columns: COLUMNS[..shown].iter().map(|c| c.to_string()).collect(), values: rows }
 }
 
 /// The map with the seconds the cycle spends in each of its cells (the Gauss nodes of every
 /// moving piece, weighted by their share of its time).
 pub(crate) fn cycle_map(spec: &DriveCycleSpec, eval: &CycleEvaluation) -> CycleMap {
-    let (torques, speeds, efficiency) = eval.map.clone();
+    let (torques, speeds, eta) = eval.map.clone();
+    let efficiency = eta.iter().map(|r| r.iter().map(|e| e.is_finite().then(|| round_sig(*e))).collect()).collect();
     let mut seconds = vec![vec![0.0; speeds.len()]; torques.len()];
     let nearest = |grid: &[f64], x: f64| {
         (0..grid.len()).min_by(|&a, &b| (grid[a] - x).abs().total_cmp(&(grid[b] - x).abs())).unwrap_or(0)
@@ -120,5 +149,7 @@ pub(crate) fn cycle_map(spec: &DriveCycleSpec, eval: &CycleEvaluation) -> CycleM
             }
         }
     }
-    CycleMap { torques, speeds_rpm: speeds.iter().map(|w| w * RPM).collect(), efficiency, seconds }
+    let seconds = seconds.into_iter().map(|r| r.into_iter().map(round_sig).collect()).collect();
+    let round = |v: Vec<f64>| v.into_iter().map(round_sig).collect();
+    CycleMap { torques: round(torques), speeds_rpm: round(speeds.iter().map(|w| w * RPM).collect()), efficiency, seconds }
 }

@@ -3,6 +3,7 @@
 mod catalogues;
 mod cli;
 mod drive;
+mod drive_cycle;
 mod dynamics;
 mod dynamics_closed_forms;
 mod efficiency;

@@ -9,11 +9,12 @@ use crate::report::drive_cycle::DriveCycleReport;
 
 pub(crate) const TRACE_FILE: &str = "cycle.svg";
 pub(crate) const MAP_FILE: &str = "cycle_map.svg";
+/// η below this is left blank on the map, so that the colours resolve where the cycle drives.
+const SHOWN_FROM: f64 = 0.9;
 
-/// The column `name` of the series.
-fn column<'a>(c: &'a DriveCycleReport, name: &str) -> impl Iterator<Item = f64> + 'a {
-    let k = c.series.columns.iter().position(|x| x == name).expect("a column of the series");
-    c.series.values.iter().map(move |r| r[k])
+/// The column `name` of the series (NaN without it).
+fn column(c: &DriveCycleReport, name: &str) -> std::vec::IntoIter<f64> {
+    c.series.column(name).unwrap_or_else(|| vec![f64::NAN; c.series.values.len()]).into_iter()
 }
 
 pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String> {
@@ -21,9 +22,9 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
     let t1: Vec<f64> = column(c, "t_end_s").collect();
     let v0: Vec<f64> = column(c, "v_start_km_h").collect();
     let v1: Vec<f64> = column(c, "v_end_km_h").collect();
-    let loss: Vec<f64> = column(c, "loss_j").collect();
-    let wheel: Vec<f64> = column(c, "wheel_j").collect();
-    let theta: Vec<f64> = column(c, "oil_temperature_end_c").collect();
+    let loss: Vec<f64> = column(c, "loss_J").collect();
+    let wheel: Vec<f64> = column(c, "wheel_J").collect();
+    let theta: Vec<f64> = column(c, "oil_temperature_end_C").collect();
     let mut speed = vec![(t0[0], v0[0])];
     speed.extend(t1.iter().copied().zip(v1.iter().copied()));
     // The mean loss power of each interval, drawn as a step.
@@ -36,6 +37,8 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
     let (mut drive, mut recup) = (vec![(t0[0], 0.0)], vec![(t0[0], 0.0)]);
     let (mut sd, mut sr) = (0.0, 0.0);
     for k in 0..t0.len() {
+        // An interval counts as drive or recuperation by the sign of its wheel energy (the
+        // report's tables split its pieces exactly).
         if wheel[k] >= 0.0 { sd += loss[k] / 3600.0 } else { sr += loss[k] / 3600.0 }
         drive.push((t1[k], sd));
         recup.push((t1[k], sr));
@@ -67,7 +70,7 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
 pub(crate) fn map(title: &str, c: &DriveCycleReport) -> Result<String, String> {
     let m = &c.map;
     let eta: Vec<Vec<f64>> =
-        m.efficiency.iter().map(|row| row.iter().map(|e| if *e > 0.0 { 100.0 * e } else { f64::NAN }).collect()).collect();
+        m.efficiency.iter().map(|row| row.iter().map(|e| match e { Some(e) if *e >= SHOWN_FROM => 100.0 * e, _ => f64::NAN }).collect()).collect();
     let mut marks = Vec::new();
     for (t, row) in m.seconds.iter().enumerate() {
         for (s, secs) in row.iter().enumerate() {
@@ -77,7 +80,7 @@ pub(crate) fn map(title: &str, c: &DriveCycleReport) -> Result<String, String> {
         }
     }
     let maps = [Map {
-        title: "η % (circles: seconds the cycle spends there)".into(),
+        title: "η % (blank: below 90 %; circles: time spent there)".into(),
         speeds: &m.speeds_rpm,
         torques: &m.torques,
         values: eta,

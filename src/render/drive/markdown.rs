@@ -23,7 +23,11 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         r.speed_at.name(),
         r.laws.join(", ")
     );
-    headline(&mut out, r);
+    if r.points.is_empty() {
+        md!(out, "No operating points are given: the drive cycle below gives the box its load.\n");
+    } else {
+        headline(&mut out, r);
+    }
     let drawn = super::power_flow::chosen(r);
     if !drawn.is_empty() {
         let which: Vec<String> = drawn.iter().map(|p| format!("{} ({})", p.label, p.point.flow.name())).collect();

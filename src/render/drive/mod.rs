@@ -35,6 +35,7 @@ pub fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
         files.push((loss_map::FILE.to_string(), loss_map::loss_map(report)?));
     }
     if let Some(c) = &report.cycle {
+        files.push((crate::report::drive_cycle_series::FILE.to_string(), c.series.to_csv()));
         files.push((cycle_plots::TRACE_FILE.to_string(), cycle_plots::trace(&report.title, c)?));
         if !c.map.torques.is_empty() {
             files.push((cycle_plots::MAP_FILE.to_string(), cycle_plots::map(&report.title, c)?));
