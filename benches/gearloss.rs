@@ -553,3 +553,38 @@ mod several_stages {
         b.bench(|| run(&scene));
     }
 }
+
+mod drive_cycle {
+    use gearloss::evaluate::drive_cycle::evaluate_cycle;
+
+    /// specs/ev_reducer_wltc.gear, with its heat capacity (`transient`) or the oil fixed at 80 °C.
+    fn wltc(transient: bool) -> gearloss::Scene {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/ev_reducer_wltc.gear");
+        let mut text = std::fs::read_to_string(path).unwrap();
+        if !transient {
+            text = text.replacen("\n                  heat_capacity = 12 kJ/K }", " }", 1);
+        }
+        gearloss::check(path, &text).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    fn run(scene: &gearloss::Scene) -> usize {
+        let drive = scene.drive.as_ref().unwrap();
+        evaluate_cycle(scene, drive, drive.cycle.as_ref().unwrap()).integrals.len()
+    }
+
+    /// WLTC 3b (1800 s) through the two-stage box at a fixed oil temperature: every piece at 3 and
+    /// 5 Gauss nodes, the law's validity at each piece's middle, the map for the plot. Target < 0.3 s.
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn wltc_fixed_oil(b: divan::Bencher) {
+        let scene = wltc(false);
+        b.bench(|| run(&scene));
+    }
+
+    /// The same with the sump's transient (Gauss collocation at 3 and 5 stages, side by side).
+    /// Target < 1 s.
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn wltc_transient(b: divan::Bencher) {
+        let scene = wltc(true);
+        b.bench(|| run(&scene));
+    }
+}

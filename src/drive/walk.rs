@@ -22,6 +22,8 @@ use crate::losses::Oil;
 pub const TOLERANCE: f64 = 1e-12;
 /// Passes before the walk gives up (the report then says how far it got).
 const MAX_PASSES: usize = 100;
+/// A pass whose largest driving torque exceeds the first pass's this many times diverges.
+const DIVERGED: f64 = 1e3;
 
 /// The mesh efficiency of a stage, from outside (a friction law on the stage's own pair).
 pub trait MeshEfficiency {
@@ -59,11 +61,18 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     let fixed = walk.fixed_losses(model);
     let mut loads = vec![0.0; drive.shafts.len()];
     let mut state = walk.pass(meshes, from_source, given_power, &fixed, &loads, None);
+    let first = state.largest_torque();
     let mut passes = 1;
     loop {
         loads = walk.bearing_powers(model, &state.driving_torque).0;
         let next = walk.pass(meshes, from_source, given_power, &fixed, &loads, Some(&state.driving_torque));
         passes += 1;
+        if !next.is_finite() || next.largest_torque() > DIVERGED * first {
+            // The walk diverges: the bearing losses grow faster than the torque that loads them (a
+            // gear far outside its bearings' span). Keep the last pass before, reported unsettled.
+            passes = MAX_PASSES;
+            break;
+        }
         let moved = state.moved(&next);
         state = next;
         if moved <= TOLERANCE || passes >= MAX_PASSES {
@@ -117,6 +126,16 @@ struct Pass {
 }
 
 impl Pass {
+    fn largest_torque(&self) -> f64 {
+        self.driving_torque.iter().fold(0.0f64, |m, t| m.max(t.abs()))
+    }
+
+    fn is_finite(&self) -> bool {
+        [&self.received, &self.passed, &self.driving_torque, &self.efficiency, &self.mesh_loss]
+            .iter()
+            .all(|v| v.iter().all(|x| x.is_finite()))
+    }
+
     /// The largest move of a driving torque from `self` to `next`, relative to the largest (the
     /// ends' torques follow from them and the speeds).
     fn moved(&self, next: &Pass) -> f64 {

@@ -51,11 +51,7 @@ pub(crate) fn run(
     let mut integrals = Vec::with_capacity(pieces.len());
     let mut thermal = Vec::with_capacity(pieces.len());
     for (l, h) in low.iter().zip(&high) {
-        let mut error = [0.0; N];
-        for k in 0..N {
-            error[k] = (h.integrals[k] - l.integrals[k]).abs();
-        }
-        integrals.push(PieceIntegrals { value: h.integrals, error });
+        integrals.push(PieceIntegrals::of(&l.integrals, &h.integrals));
         thermal.push(PieceThermal { error: (h.thermal.end - l.thermal.end).abs(), ..h.thermal });
     }
     Ok((integrals, thermal))
@@ -101,7 +97,10 @@ fn march(
             stage = next;
         }
         let Some((values, given, f)) = settled else {
-            return Err(format!("the sump's temperature did not settle on the piece from {} s to {} s", piece.from, piece.to));
+            return Err(format!(
+                "the sump's temperature did not settle on the piece from {} s to {} s",
+                piece.from, piece.to
+            ));
         };
         let mut integrals = [0.0; N];
         for (v, b) in values.iter().zip(&g.b) {

@@ -37,7 +37,16 @@ pub const PARTS: usize = 5;
 /// The integrands at one point of the drive.
 pub(crate) fn integrands(p: &DrivePoint) -> [f64; N] {
     let l = &p.losses;
-    [l.meshes, l.gear_no_load, l.bearings_no_load, l.bearings_load, l.seals, p.input_power, p.output_power, p.input_speed]
+    [
+        l.meshes,
+        l.gear_no_load,
+        l.bearings_no_load,
+        l.bearings_load,
+        l.seals,
+        p.input_power,
+        p.output_power,
+        p.input_speed,
+    ]
 }
 
 /// One piece's integrals: the higher order's value and |high − low|.
@@ -45,6 +54,13 @@ pub(crate) fn integrands(p: &DrivePoint) -> [f64; N] {
 pub struct PieceIntegrals {
     pub value: [f64; N],
     pub error: [f64; N],
+}
+
+impl PieceIntegrals {
+    /// The higher order's value with |high − low| as its error.
+    pub(crate) fn of(low: &[f64; N], high: &[f64; N]) -> PieceIntegrals {
+        PieceIntegrals { value: *high, error: std::array::from_fn(|k| (high[k] - low[k]).abs()) }
+    }
 }
 
 /// With the sump's transient: a piece's end temperature (K), the heat given off (J), the highest
@@ -55,6 +71,14 @@ pub struct PieceThermal {
     pub dissipated: f64,
     pub highest: (f64, f64),
     pub error: f64,
+}
+
+/// Where a stage's law leaves its validity range over the cycle.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct StageValidity {
+    pub pieces: usize,
+    pub seconds: f64,
+    pub first: Option<(f64, &'static str)>,
 }
 
 /// How the oil temperature is taken over the cycle.
@@ -78,6 +102,9 @@ pub struct CycleEvaluation {
     pub thermal: Vec<PieceThermal>,
     /// Why the transient stopped, if it did.
     pub failure: Option<String>,
+    /// By stage: the pieces whose middle finds the law outside its validity range on that stage's
+    /// mesh, their time (s), and the first one's time and reason.
+    pub validity: Vec<StageValidity>,
     /// The box's map for the plot (output torque N·m × output speed rad/s at the fixed or start
     /// temperature): torques, speeds, [torque][speed] η (NaN where both ends deliver).
     pub map: (Vec<f64>, Vec<f64>, Vec<Vec<f64>>),
@@ -113,7 +140,13 @@ pub(crate) fn integrands_at(
 }
 
 /// ∫ over `piece` of the integrands by the `n`-node Gauss–Legendre rule at the setup's oil.
-fn integrate(setup: &DriveSetup, spec: &DriveCycleSpec, row: (usize, Formulation), piece: &Piece, n: usize) -> [f64; N] {
+fn integrate(
+    setup: &DriveSetup,
+    spec: &DriveCycleSpec,
+    row: (usize, Formulation),
+    piece: &Piece,
+    n: usize,
+) -> [f64; N] {
     let (x, w) = crate::numerics::quadrature::gauss_legendre(n);
     let h = piece.to - piece.from;
     let mut sum = [0.0; N];
@@ -140,11 +173,7 @@ pub(crate) fn fixed_integrals(
                 return PieceIntegrals::default();
             }
             let (low, high) = (integrate(setup, spec, row, p, LOW_ORDER), integrate(setup, spec, row, p, HIGH_ORDER));
-            let mut error = [0.0; N];
-            for k in 0..N {
-                error[k] = (high[k] - low[k]).abs();
-            }
-            PieceIntegrals { value: high, error }
+            PieceIntegrals::of(&low, &high)
         })
         .collect()
 }
@@ -154,7 +183,8 @@ pub(crate) fn fixed_integrals(
 /// within it).
 pub fn loss_energy_at_order(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec, n: usize) -> f64 {
     let setup = DriveSetup::new(scene, drive);
-    let formulation = scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
+    let formulation =
+        scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
     spec.cycle
         .pieces()
         .par_iter()
@@ -166,7 +196,8 @@ pub fn loss_energy_at_order(scene: &Scene, drive: &SceneDrive, spec: &DriveCycle
 /// The scene's drive cycle under its first law and formulation.
 pub fn evaluate_cycle(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec) -> CycleEvaluation {
     let setup = DriveSetup::new(scene, drive);
-    let formulation = scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
+    let formulation =
+        scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
     let row = (0, formulation);
     let pieces = spec.cycle.pieces();
     let fixed = scene.operating.oil_temperature.as_ref().map(|t| t.value.value);
@@ -189,7 +220,54 @@ pub fn evaluate_cycle(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec) 
         CycleOil::Fixed(_) => setup,
     };
     let map = cycle_map(&map_setup, spec, row, &pieces);
-    CycleEvaluation { law_index: 0, formulation, oil, pieces, integrals, thermal, failure, map }
+    let validity = validity(&map_setup, spec, row, &pieces, &thermal);
+    CycleEvaluation { law_index: 0, formulation, oil, pieces, integrals, thermal, failure, validity, map }
+}
+
+/// The law's validity on each stage at the middle of every moving piece (the oil at the piece's
+/// end temperature with the transient, else `setup`'s): a flag, not a reported number.
+fn validity(
+    setup: &DriveSetup,
+    spec: &DriveCycleSpec,
+    (law, formulation): (usize, Formulation),
+    pieces: &[Piece],
+    thermal: &[PieceThermal],
+) -> Vec<StageValidity> {
+    let verdicts: Vec<(f64, f64, Vec<Option<&'static str>>)> = pieces
+        .par_iter()
+        .enumerate()
+        .filter(|(_, p)| p.mode != Mode::Standing)
+        .map(|(k, p)| {
+            let mid = 0.5 * (p.from + p.to);
+            let (torque, speed) = box_load(spec, p, mid);
+            let at = thermal.get(k).map(|t| setup.at_oil_temperature(t.end));
+            let setup = at.as_ref().unwrap_or(setup);
+            let point = setup.point(
+                law,
+                formulation,
+                EndValue { at: ShaftEnd::Output, value: torque },
+                EndValue { at: ShaftEnd::Output, value: speed },
+            );
+            let stages = setup
+                .validity(law, &point)
+                .into_iter()
+                .map(|v| (v.outside > 0).then(|| v.intervals.first().map_or("outside", |i| i.2)))
+                .collect();
+            (p.from, p.to - p.from, stages)
+        })
+        .collect();
+    let stages = verdicts.first().map_or(0, |v| v.2.len());
+    let mut out = vec![StageValidity::default(); stages];
+    for (from, length, v) in &verdicts {
+        for (s, reason) in out.iter_mut().zip(v) {
+            if let Some(reason) = reason {
+                s.pieces += 1;
+                s.seconds += length;
+                s.first.get_or_insert((*from, reason));
+            }
+        }
+    }
+    out
 }
 
 /// Grid of the map drawn under the cycle's operating points: torques × speeds.
@@ -227,7 +305,11 @@ fn cycle_map(
                         EndValue { at: ShaftEnd::Output, value: torque },
                         EndValue { at: ShaftEnd::Output, value: speed },
                     );
-                    if p.both_ends_deliver { f64::NAN } else { p.efficiency }
+                    if p.both_ends_deliver {
+                        f64::NAN
+                    } else {
+                        p.efficiency
+                    }
                 })
                 .collect()
         })

@@ -135,7 +135,12 @@ impl<'a> DriveSetup<'a> {
             .enumerate()
             .map(|(k, s)| {
                 let mesh = self.drive.mesh(k, lubricant.as_ref());
-                StageMesh { geometry: s.geometry.clone(), h_v: s.h_v, tribology: mesh.tribology(mesh.reduced_modulus()), whole: s.whole }
+                StageMesh {
+                    geometry: s.geometry.clone(),
+                    h_v: s.h_v,
+                    tribology: mesh.tribology(mesh.reduced_modulus()),
+                    whole: s.whole,
+                }
             })
             .collect();
         let oil = self.drive.mesh(0, lubricant.as_ref()).budget_oil(&stages[0].tribology);

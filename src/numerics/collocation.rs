@@ -29,9 +29,7 @@ pub struct Collocation {
 impl Collocation {
     pub fn new(s: usize) -> Collocation {
         let (c, b) = super::quadrature::gauss_legendre(s);
-        let basis = |j: usize, x: f64| {
-            (0..s).filter(|&m| m != j).map(|m| (x - c[m]) / (c[j] - c[m])).product::<f64>()
-        };
+        let basis = |j: usize, x: f64| (0..s).filter(|&m| m != j).map(|m| (x - c[m]) / (c[j] - c[m])).product::<f64>();
         // ∫₀^{c_i} ℓ_j: ℓ_j has degree s − 1, so the s-point rule on [0, c_i] is exact.
         let a = c
             .iter()
@@ -44,7 +42,10 @@ impl Collocation {
     pub fn slope_at(&self, slopes: &[f64], x: f64) -> f64 {
         let s = self.c.len();
         (0..s)
-            .map(|j| slopes[j] * (0..s).filter(|&m| m != j).map(|m| (x - self.c[m]) / (self.c[j] - self.c[m])).product::<f64>())
+            .map(|j| {
+                slopes[j]
+                    * (0..s).filter(|&m| m != j).map(|m| (x - self.c[m]) / (self.c[j] - self.c[m])).product::<f64>()
+            })
             .sum()
     }
 

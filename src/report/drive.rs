@@ -211,7 +211,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         points,
     };
     if let Some(c) = &report.cycle {
-        report.findings.extend(super::drive_cycle::cycle_findings(c));
+        report.findings.extend(c.findings.iter().cloned());
     }
     for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
         report.findings.push(Finding {
@@ -374,7 +374,7 @@ fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Fi
         out.push(Finding {
             severity: Severity::Warning,
             message: format!(
-                "{}: the fixed point of the bearing losses did not settle to 1e-12 in 100 passes",
+                "{}: the fixed point of the bearing losses did not settle to 1e-12 in 100 passes (or diverged: the bearing losses grow faster than the torque that loads them); its numbers are the last pass's",
                 p.label
             ),
         });

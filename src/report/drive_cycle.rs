@@ -24,6 +24,9 @@ pub struct CycleTotals {
     pub wheel_recuperation_kwh: f64,
     /// The part of the recuperation the brakes take beyond the limit (kWh).
     pub brakes_kwh: f64,
+    /// Through the box's output: out of it while driving, into it while recuperating (kWh).
+    pub box_drive_kwh: f64,
+    pub box_recuperation_kwh: f64,
     /// The motor's energy out while driving and in while recuperating (kWh).
     pub motor_out_kwh: f64,
     pub motor_in_kwh: f64,
@@ -85,6 +88,18 @@ pub struct CycleMap {
     pub seconds: Vec<Vec<f64>>,
 }
 
+/// Where a stage's law is outside its validity range over the cycle (read at each piece's middle).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CycleValidity {
+    pub stage: String,
+    pub pieces: usize,
+    pub seconds: f64,
+    /// The first such piece's start (s) and the law's reason.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_s: Option<f64>,
+    pub reason: String,
+}
+
 /// The drive cycle's report.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DriveCycleReport {
@@ -113,8 +128,13 @@ pub struct DriveCycleReport {
     pub temperature: Option<CycleTemperature>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub failure: Option<String>,
+    /// By stage: (stage, pieces and seconds where its law is outside its validity range at the
+    /// piece's middle, the first one's time (s) and reason).
+    pub validity: Vec<CycleValidity>,
     pub map: CycleMap,
     pub series: CycleSeries,
+    /// What the reader must know (also among the drive report's findings).
+    pub findings: Vec<Finding>,
 }
 
 /// Totals of the pieces in [from, to].
@@ -148,6 +168,7 @@ fn totals(name: &str, (from, to): (f64, f64), pieces: &[Piece], eval: &CycleEval
             Mode::Standing => {}
         }
     }
+    (t.box_drive_kwh, t.box_recuperation_kwh) = (out_drive / 3.6e6, out_rec / 3.6e6);
     let ratio = |a: f64, b: f64| if b > 0.0 { a / b } else { 0.0 };
     t.loss_drive_percent = ratio(100.0 * t.loss_drive_wh, 1e3 * t.wheel_drive_kwh);
     t.loss_recuperation_percent = ratio(100.0 * t.loss_recuperation_wh, 1e3 * t.wheel_recuperation_kwh);
@@ -161,7 +182,12 @@ fn totals(name: &str, (from, to): (f64, f64), pieces: &[Piece], eval: &CycleEval
 }
 
 /// The cycle's report.
-pub fn build_cycle_report(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec, eval: &CycleEvaluation) -> DriveCycleReport {
+pub fn build_cycle_report(
+    scene: &Scene,
+    drive: &SceneDrive,
+    spec: &DriveCycleSpec,
+    eval: &CycleEvaluation,
+) -> DriveCycleReport {
     let car = &spec.cycle.vehicle;
     let trace = &spec.cycle.trace;
     let pieces = &eval.pieces;
@@ -189,7 +215,12 @@ pub fn build_cycle_report(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSp
             }
             e += r.error[k];
         }
-        parts.push(CyclePart { part: name.replace('_', " "), drive_wh: d / 3600.0, recuperation_wh: c / 3600.0, error_wh: e / 3600.0 });
+        parts.push(CyclePart {
+            part: name.replace('_', " "),
+            drive_wh: d / 3600.0,
+            recuperation_wh: c / 3600.0,
+            error_wh: e / 3600.0,
+        });
     }
     let (mut top, mut bottom) = (Peak { value: 0.0, time_s: span.0 }, Peak { value: 0.0, time_s: span.0 });
     for p in pieces.iter().filter(|p| p.mode != Mode::Standing) {
@@ -204,7 +235,7 @@ pub fn build_cycle_report(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSp
     let fastest = (0..trace.speed.len()).fold(0, |m, k| if trace.speed[k] > trace.speed[m] { k } else { m });
     let peak_speed = Peak { value: trace.speed[fastest] * 3.6, time_s: trace.time[fastest] };
     let motor_rpm = trace.speed[fastest] / car.wheel_radius * ratio.abs() * 30.0 / std::f64::consts::PI;
-    DriveCycleReport {
+    let mut report = DriveCycleReport {
         name: spec.name.clone(),
         vehicle: spec.vehicle_name.clone(),
         trace_file: spec.trace_file.clone(),
@@ -231,16 +262,62 @@ pub fn build_cycle_report(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSp
         peak_speed_kmh: peak_speed,
         temperature: temperature(eval),
         failure: eval.failure.clone(),
+        validity: eval
+            .validity
+            .iter()
+            .zip(&drive.layout.stages)
+            .map(|(v, s)| CycleValidity {
+                stage: s.name.clone(),
+                pieces: v.pieces,
+                seconds: v.seconds,
+                first_s: v.first.map(|f| f.0),
+                reason: v.first.map_or_else(String::new, |f| f.1.to_string()),
+            })
+            .collect(),
         map: super::drive_cycle_series::cycle_map(spec, eval),
         series: series(spec, eval, ratio),
+        findings: Vec::new(),
+    };
+    let at_box = BoxPeaks {
+        torque: top.value / car.final_ratio,
+        recuperation: bottom.value / car.final_ratio,
+        speed: trace.speed[fastest] / car.wheel_radius * car.final_ratio,
+    };
+    report.findings = cycle_findings(&report, &ranges(scene, drive), at_box);
+    report
+}
+
+/// The output torques and speeds (N·m, rad/s at the box's output) the scene defines besides the
+/// cycle: its operating points and its map (given at the input: through the ratio, losses aside).
+fn ranges(scene: &Scene, drive: &SceneDrive) -> Vec<Range> {
+    use crate::drive::ShaftEnd;
+    let ratio = overall_ratio(drive).abs();
+    let torque = |t: f64, at: ShaftEnd| if at == ShaftEnd::Input { t * ratio } else { t };
+    let speed = |w: f64, at: ShaftEnd| if at == ShaftEnd::Input { w.abs() / ratio } else { w };
+    let span = |v: &[f64]| v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(*x), b.max(*x)));
+    let mut out = Vec::new();
+    let ends = drive.layout.operating;
+    let op = &scene.operating;
+    if !op.pinion_torque.values.is_empty() {
+        let t: Vec<f64> = op.pinion_torque.values.iter().map(|x| torque(x.value, ends.torque_at)).collect();
+        let w: Vec<f64> = op.pinion_speed.values.iter().map(|x| speed(x.value, ends.speed_at)).collect();
+        out.push((span(&t), span(&w)));
     }
+    if let (Some((t, w)), Some(e)) = (&scene.analyses.efficiency_map, scene.analyses.map_ends) {
+        let t: Vec<f64> = t.values.iter().map(|x| torque(x.value, e.torque_at)).collect();
+        let w: Vec<f64> = w.values.iter().map(|x| speed(x.value, e.speed_at)).collect();
+        out.push((span(&t), span(&w)));
+    }
+    out
 }
 
 /// ω_in/ω_out of the chain (signed).
 fn overall_ratio(drive: &SceneDrive) -> f64 {
     let layout = &drive.layout;
-    let speeds =
-        crate::drive::walk::shaft_speeds(layout, crate::drive::EndValue { at: crate::drive::ShaftEnd::Input, value: 1.0 });
+    let speeds = crate::drive::walk::shaft_speeds(
+        layout,
+        crate::drive::EndValue { at: crate::drive::ShaftEnd::Input, value: 1.0 },
+    );
     1.0 / speeds[layout.output]
 }
 
@@ -267,9 +344,69 @@ fn temperature(eval: &CycleEvaluation) -> Option<CycleTemperature> {
     })
 }
 
-/// What the reader must know about the cycle.
-pub(crate) fn cycle_findings(report: &DriveCycleReport) -> Vec<Finding> {
+/// An operating range: (least, greatest) output torque (N·m) and speed (rad/s).
+type Range = ((f64, f64), (f64, f64));
+
+/// The cycle's peaks at the box's output: torque in drive and in recuperation (N·m), speed (rad/s).
+#[derive(Clone, Copy)]
+struct BoxPeaks {
+    torque: f64,
+    recuperation: f64,
+    speed: f64,
+}
+
+/// What the reader must know about the cycle: a transient that stopped, energy to the brakes, a
+/// law outside its validity range, peaks beyond every operating range the scene defines.
+fn cycle_findings(report: &DriveCycleReport, ranges: &[Range], peaks: BoxPeaks) -> Vec<Finding> {
     let mut out = Vec::new();
+    for CycleValidity { stage, pieces, seconds, first_s, reason } in &report.validity {
+        if let (true, Some(t)) = (*pieces > 0, first_s) {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: format!(
+                    "drive cycle: stage `{stage}`: the law is outside its validity range on {pieces} pieces ({} s of the cycle), first at {} s ({reason})",
+                    crate::numerics::rounding::fixed(*seconds, 1),
+                    crate::numerics::rounding::fixed(*t, 2)
+                ),
+            });
+        }
+    }
+    if !ranges.is_empty() {
+        let BoxPeaks { torque: top_torque, recuperation: low_torque, speed: top_speed } = peaks;
+        let words = |what: &str, value: String, t: f64| {
+            format!("drive cycle: its peak {what} ({value} at {} s) lies outside every operating range the scene defines (its operating points and map)", crate::numerics::rounding::fixed(t, 2))
+        };
+        if ranges.iter().all(|(t, _)| top_torque > t.1) {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: words(
+                    "output torque",
+                    format!("{} N·m", crate::numerics::rounding::fixed(top_torque, 1)),
+                    report.peak_wheel_torque.time_s,
+                ),
+            });
+        }
+        if ranges.iter().all(|(t, _)| low_torque < t.0) {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: words(
+                    "recuperation torque",
+                    format!("{} N·m", crate::numerics::rounding::fixed(low_torque, 1)),
+                    report.peak_recuperation_torque.time_s,
+                ),
+            });
+        }
+        if ranges.iter().all(|(_, w)| top_speed > w.1 * (1.0 + 1e-12)) {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: words(
+                    "motor speed",
+                    format!("{} rpm", crate::numerics::rounding::fixed(report.peak_motor_speed_rpm.value, 0)),
+                    report.peak_motor_speed_rpm.time_s,
+                ),
+            });
+        }
+    }
     if let Some(f) = &report.failure {
         out.push(Finding { severity: Severity::Warning, message: format!("drive cycle: {f}") });
     }

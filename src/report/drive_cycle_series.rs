@@ -85,8 +85,8 @@ pub(crate) fn series(spec: &DriveCycleSpec, eval: &CycleEvaluation, motor_per_wh
     let mut last = vec![0; intervals];
     for (k, (p, r)) in eval.pieces.iter().zip(&eval.integrals).enumerate() {
         let i = p.interval;
-        for q in 0..N {
-            sums[i][q] += r.value[q];
+        for (sum, v) in sums[i].iter_mut().zip(&r.value) {
+            *sum += v;
         }
         errors[i] += r.error[..PARTS].iter().sum::<f64>();
         wheel[i] += p.wheel_energy();
@@ -151,5 +151,10 @@ pub(crate) fn cycle_map(spec: &DriveCycleSpec, eval: &CycleEvaluation) -> CycleM
     }
     let seconds = seconds.into_iter().map(|r| r.into_iter().map(round_sig).collect()).collect();
     let round = |v: Vec<f64>| v.into_iter().map(round_sig).collect();
-    CycleMap { torques: round(torques), speeds_rpm: round(speeds.iter().map(|w| w * RPM).collect()), efficiency, seconds }
+    CycleMap {
+        torques: round(torques),
+        speeds_rpm: round(speeds.iter().map(|w| w * RPM).collect()),
+        efficiency,
+        seconds,
+    }
 }

@@ -78,8 +78,12 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, false, &mut errors));
     if let Some(span) = analyses.drive_cycle {
         errors.push(
-            Diagnostic::new(DiagnosticKind::UnknownName, span, "`drive_cycle` drives a gearbox of stages; this scene is one pair")
-                .hint("write the box with `stage` blocks and a `gearbox` of shafts, or use `duty_cycle` for one pair"),
+            Diagnostic::new(
+                DiagnosticKind::UnknownName,
+                span,
+                "`drive_cycle` drives a gearbox of stages; this scene is one pair",
+            )
+            .hint("write the box with `stage` blocks and a `gearbox` of shafts, or use `duty_cycle` for one pair"),
         );
     }
     let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));

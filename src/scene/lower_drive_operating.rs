@@ -38,8 +38,20 @@ pub(super) fn lower_drive_operating(
     if cycle && !KEYS[..4].iter().any(|k| f.has(k)) {
         let (oil_temperature, oil_temperatures) = super::lower_operating::oil_temperatures(&f, errors);
         let operating = Operating {
-            pinion_torque: Sweep { values: Vec::new(), unit: "N*m".into(), factor: 1.0, written_values: Vec::new(), span: block.span },
-            pinion_speed: Sweep { values: Vec::new(), unit: "rpm".into(), factor: 1.0, written_values: Vec::new(), span: block.span },
+            pinion_torque: Sweep {
+                values: Vec::new(),
+                unit: "N*m".into(),
+                factor: 1.0,
+                written_values: Vec::new(),
+                span: block.span,
+            },
+            pinion_speed: Sweep {
+                values: Vec::new(),
+                unit: "rpm".into(),
+                factor: 1.0,
+                written_values: Vec::new(),
+                span: block.span,
+            },
             oil_temperature,
             oil_temperatures,
             detail_points: Vec::new(),

@@ -54,9 +54,9 @@ pub(super) fn lower_drive_scene(
         }
     }
     let cycle_blocks = (singles.get("vehicle"), singles.get("drive_cycle"));
-    let operating = singles.get("operating").and_then(|b| {
-        super::lower_drive_operating::lower_drive_operating(b, cycle_blocks.1.is_some(), errors)
-    });
+    let operating = singles
+        .get("operating")
+        .and_then(|b| super::lower_drive_operating::lower_drive_operating(b, cycle_blocks.1.is_some(), errors));
     let gearbox_block = singles.get("gearbox");
     let shafts = gearbox_block.and_then(|b| super::lower_shafts::lower_shafts(b, errors));
     if gearbox_block.is_none() {
@@ -97,6 +97,15 @@ pub(super) fn lower_drive_scene(
         .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, true, errors));
     check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
     let cycle = super::lower_vehicle::cycle_of_scene(cycle_blocks, analyses.drive_cycle, base_dir, errors);
+    if let (Some(c), Some((op, _))) = (&cycle, &operating) {
+        let transient = housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
+        if !transient && op.oil_temperature.is_none() && op.oil_temperatures.is_none() {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::MissingKey, c.span, "the drive cycle needs the oil's temperature")
+                    .hint("give `oil_temperature = 80 degC` in `operating` (held over the cycle), or the housing's `heat_capacity` (the sump then follows the cycle)"),
+            );
+        }
+    }
     let lubricant_failed =
         lubricant.is_none() && (singles.contains_key("lubricant") || top.values.contains_key("lubricant"));
     super::lower_thermal::check_thermal_needs(
@@ -169,14 +178,15 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
         }
     }
     match (a.efficiency.is_some(), a.friction_span) {
-        (false, _) if a.drive_cycle.is_some() => {
-            if no_laws {
-                errors.push(
-                    Diagnostic::new(DiagnosticKind::MissingKey, a.drive_cycle.unwrap_or(title), "a drive cycle's losses need friction laws, and the scene lists none")
-                        .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
-                );
-            }
-        }
+        (false, _) if a.drive_cycle.is_some() && no_laws => errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                a.drive_cycle.unwrap_or(title),
+                "a drive cycle's losses need friction laws, and the scene lists none",
+            )
+            .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
+        ),
+        (false, _) if a.drive_cycle.is_some() => {}
         (false, _) => errors.push(
             Diagnostic::new(
                 DiagnosticKind::MissingKey,

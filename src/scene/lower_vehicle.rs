@@ -23,7 +23,8 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
 use crate::model::{DriveCycleSpec, Force, Given, Length, Mass, MassDensity, MassPerLength, MassRate, Time, Torque};
 use crate::vehicle::{Cycle, Phase, RoadLoad, Trace, Vehicle};
 
-const VEHICLE: &[&str] = &["mass", "rotating_mass_factor", "wheel_radius", "rolling_resistance", "recuperation_limit", "final_ratio"];
+const VEHICLE: &[&str] =
+    &["mass", "rotating_mass_factor", "wheel_radius", "rolling_resistance", "recuperation_limit", "final_ratio"];
 const CYCLE: &[&str] = &["trace", "start_temperature"];
 /// ISA sea-level air (kg/m³), when `drag(...)` gives no density.
 const AIR_DENSITY: f64 = 1.225;
@@ -172,8 +173,12 @@ fn road_load(
         (Some(call), None) => {
             if let Some((key, _)) = f.values.get("rolling_resistance") {
                 errors.push(
-                    Diagnostic::new(DiagnosticKind::DuplicateKey, key.span, "`rolling_resistance` with `road_load(...)`")
-                        .hint("the coastdown coefficient f0 holds the rolling resistance: leave one out"),
+                    Diagnostic::new(
+                        DiagnosticKind::DuplicateKey,
+                        key.span,
+                        "`rolling_resistance` with `road_load(...)`",
+                    )
+                    .hint("the coastdown coefficient f0 holds the rolling resistance: leave one out"),
                 );
                 return None;
             }
@@ -183,12 +188,14 @@ fn road_load(
             let f1: Option<Given<MassRate>> = g.required("f1", "0.4677 N*s/m", errors);
             let f2: Option<Given<MassPerLength>> = g.required("f2", "0.3205 N*s^2/m^2", errors);
             let (f0, f1, f2) = (f0?, f1?, f2?);
-            written.push(("road_load".into(), format!("f0 = {}, f1 = {}, f2 = {}", f0.written, f1.written, f2.written)));
+            written
+                .push(("road_load".into(), format!("f0 = {}, f1 = {}, f2 = {}", f0.written, f1.written, f2.written)));
             Some(RoadLoad::Coastdown { f0: f0.value.value, f1: f1.value.value, f2: f2.value.value })
         }
         (None, Some(call)) => {
             let mut items = Vec::new();
-            let g = call_fields(call, "`drag(...)`", &["coefficient", "frontal_area", "air_density"], &mut items, errors);
+            let g =
+                call_fields(call, "`drag(...)`", &["coefficient", "frontal_area", "air_density"], &mut items, errors);
             let cw = g.number("coefficient", 0.05, 2.0, errors);
             if !g.has("coefficient") {
                 errors.push(g.missing("coefficient", "0.267"));
@@ -201,8 +208,12 @@ fn road_load(
                 return None;
             };
             let (cw, area) = (cw?, area?);
-            let rho_text = rho.as_ref().map_or_else(|| format!("{AIR_DENSITY} kg/m^3 (ISA sea level)"), |r| r.written.clone());
-            written.push(("drag".into(), format!("coefficient = {}, frontal_area = {}, air_density = {rho_text}", cw.written, area.written)));
+            let rho_text =
+                rho.as_ref().map_or_else(|| format!("{AIR_DENSITY} kg/m^3 (ISA sea level)"), |r| r.written.clone());
+            written.push((
+                "drag".into(),
+                format!("coefficient = {}, frontal_area = {}, air_density = {rho_text}", cw.written, area.written),
+            ));
             Some(RoadLoad::Physical {
                 rolling,
                 drag_coefficient: cw.value,

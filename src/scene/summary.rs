@@ -59,6 +59,18 @@ pub fn would_run(scene: &Scene) -> Vec<String> {
     if let (Some(_), Some(d)) = (a.duty_cycle, &scene.duty_cycle) {
         out.push(format!("duty cycle \"{}\": {} step(s), transient sump temperature", d.name, d.steps.len()));
     }
+    if let Some(c) = scene.drive.as_ref().and_then(|d| d.cycle.as_ref()) {
+        let tr = &c.cycle.trace;
+        let transient = scene.housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
+        out.push(format!(
+            "drive cycle \"{}\" with \"{}\": {} samples over {} s, {}",
+            c.name,
+            c.vehicle_name,
+            tr.time.len(),
+            tr.duration(),
+            if transient { "the sump's transient" } else { "at the fixed oil temperature" }
+        ));
+    }
     if let Some(t) = &a.transmission_error {
         out.push(format!(
             "mesh stiffness from the teeth and static transmission error at {} torque(s)",
@@ -74,7 +86,12 @@ pub fn would_run(scene: &Scene) -> Vec<String> {
 /// The blocks the scene gives that no analysis it asks for reads, each with what would use it.
 pub fn unused_blocks(scene: &Scene) -> Vec<String> {
     let a = &scene.analyses;
-    let thermal = a.thermal_balance.is_some() || a.duty_cycle.is_some() || scene.operating.equilibrium.is_some();
+    let cycle_transient = scene.drive.as_ref().is_some_and(|d| d.cycle.is_some())
+        && scene.housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
+    let thermal = a.thermal_balance.is_some()
+        || a.duty_cycle.is_some()
+        || scene.operating.equilibrium.is_some()
+        || cycle_transient;
     let mut out = Vec::new();
     if scene.dynamics.is_some() && !(a.dynamics || a.stability_map.is_some() || a.numerics) {
         out.push("the `dynamics` block is not used: no analysis asks for dynamics (add `dynamics`, `stability_map(...)` or `numerics` to `analyses`)".to_string());

@@ -105,7 +105,8 @@ impl Piece {
             }
         }
         let at = |t: f64| (self.force(t), t);
-        let max = candidates.iter().map(|&t| at(t)).fold((f64::NEG_INFINITY, 0.0), |m, x| if x.0 > m.0 { x } else { m });
+        let max =
+            candidates.iter().map(|&t| at(t)).fold((f64::NEG_INFINITY, 0.0), |m, x| if x.0 > m.0 { x } else { m });
         let min = candidates.iter().map(|&t| at(t)).fold((f64::INFINITY, 0.0), |m, x| if x.0 < m.0 { x } else { m });
         (max, min)
     }
@@ -165,7 +166,8 @@ impl Cycle {
             let a = (v1 - v0) / (end - start);
             let h = end - start;
             let force = self.vehicle.force_on(v0, a, tr.grade[k + 1]);
-            let piece = |from: f64, to: f64, mode: Mode| Piece { interval: k, from, to, mode, start, v0, a, force, floor };
+            let piece =
+                |from: f64, to: f64, mode: Mode| Piece { interval: k, from, to, mode, start, v0, a, force, floor };
             if v0 == 0.0 && v1 == 0.0 {
                 out.push(Piece { force: [0.0; 3], ..piece(start, end, Mode::Standing) });
                 continue;
@@ -176,7 +178,11 @@ impl Cycle {
             }
             let margin = 1e-12 * h;
             cuts.extend(
-                self.phases.iter().flat_map(|p| [p.from, p.to]).map(|t| t - start).filter(|&t| t > margin && t < h - margin),
+                self.phases
+                    .iter()
+                    .flat_map(|p| [p.from, p.to])
+                    .map(|t| t - start)
+                    .filter(|&t| t > margin && t < h - margin),
             );
             cuts.sort_by(f64::total_cmp);
             cuts.dedup_by(|a, b| (*a - *b).abs() <= margin);

@@ -114,7 +114,12 @@ impl Trace {
         let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end_matches('\r')));
         let Some((header_line, header)) = lines.find(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
         else {
-            return Err(error(1, 1, "the trace file is empty".into(), "a header `time [s], speed [km/h]`, then one sample per line"));
+            return Err(error(
+                1,
+                1,
+                "the trace file is empty".into(),
+                "a header `time [s], speed [km/h]`, then one sample per line",
+            ));
         };
         let mut columns = Vec::new();
         let mut col = 1;
@@ -123,8 +128,7 @@ impl Trace {
             col += cell.len() + 1;
         }
         let find = |want: fn(&Column) -> bool| columns.iter().position(want);
-        let (Some(t_col), Some(v_col)) =
-            (find(|c| *c == Column::Time), find(|c| matches!(c, Column::Speed(..))))
+        let (Some(t_col), Some(v_col)) = (find(|c| *c == Column::Time), find(|c| matches!(c, Column::Speed(..))))
         else {
             return Err(error(
                 header_line,
@@ -146,21 +150,41 @@ impl Trace {
                 let column = 1 + cells.iter().take(k).map(|c| c.len() + 1).sum::<usize>();
                 let raw = cells.get(k).map(|c| c.trim()).unwrap_or("");
                 if raw.is_empty() {
-                    return Err(error(line, column, format!("a gap: no {what} on this line"), "every sample needs its time and speed"));
+                    return Err(error(
+                        line,
+                        column,
+                        format!("a gap: no {what} on this line"),
+                        "every sample needs its time and speed",
+                    ));
                 }
                 match raw.parse::<f64>() {
                     Ok(x) if x.is_finite() => Ok(x),
-                    _ => Err(error(line, column, format!("`{raw}` is not a number ({what})"), "write plain decimal numbers")),
+                    _ => Err(error(
+                        line,
+                        column,
+                        format!("`{raw}` is not a number ({what})"),
+                        "write plain decimal numbers",
+                    )),
                 }
             };
             let (t, v) = (cell(t_col, "time")?, cell(v_col, "speed")?);
             let g = g_col.map(|k| cell(k, "grade")).transpose()?.unwrap_or(0.0);
             if v < 0.0 {
-                return Err(error(line, 1, format!("the speed {v} is negative"), "a trace drives forwards: speeds ≥ 0"));
+                return Err(error(
+                    line,
+                    1,
+                    format!("the speed {v} is negative"),
+                    "a trace drives forwards: speeds ≥ 0",
+                ));
             }
             if let Some(&last) = trace.time.last() {
                 if t <= last {
-                    return Err(error(line, 1, format!("the time {t} s does not come after {last} s"), "times must increase from line to line"));
+                    return Err(error(
+                        line,
+                        1,
+                        format!("the time {t} s does not come after {last} s"),
+                        "times must increase from line to line",
+                    ));
                 }
             }
             trace.time.push(t);
@@ -169,7 +193,12 @@ impl Trace {
             lines_of.push(line);
         }
         if trace.time.len() < 2 {
-            return Err(error(header_line, 1, format!("the trace holds {} samples", trace.time.len()), "give at least two samples"));
+            return Err(error(
+                header_line,
+                1,
+                format!("the trace holds {} samples", trace.time.len()),
+                "give at least two samples",
+            ));
         }
         trace.check_gaps(&lines_of)?;
         Ok(trace)
@@ -185,7 +214,10 @@ impl Trace {
             Some(k) => Err(error(
                 lines[k + 1],
                 1,
-                format!("a gap of {} s after {} s, where the trace's samples are {median} s apart", all[k], self.time[k]),
+                format!(
+                    "a gap of {} s after {} s, where the trace's samples are {median} s apart",
+                    all[k], self.time[k]
+                ),
                 "the trace is read as straight lines between samples: give the samples of the gap",
             )),
             None => Ok(()),
@@ -194,7 +226,9 @@ impl Trace {
 
     /// The distance (m): the exact integral of the piecewise-linear speed.
     pub fn distance(&self) -> f64 {
-        (1..self.time.len()).map(|k| 0.5 * (self.speed[k] + self.speed[k - 1]) * (self.time[k] - self.time[k - 1])).sum()
+        (1..self.time.len())
+            .map(|k| 0.5 * (self.speed[k] + self.speed[k - 1]) * (self.time[k] - self.time[k - 1]))
+            .sum()
     }
 
     /// The duration (s).

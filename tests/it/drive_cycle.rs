@@ -9,7 +9,8 @@ use gearloss::vehicle::{Cycle, Mode, Phase, RoadLoad, Trace, Vehicle};
 /// `transient` false drops the heat capacity (the oil then fixed at 80 °C).
 fn cycle_scene(trace: &str, transient: bool, edits: &[(&str, &str)]) -> gearloss::Scene {
     let mut text = std::fs::read_to_string(crate::root().join("specs/ev_reducer_wltc.gear")).unwrap();
-    let dir = std::env::temp_dir().join(format!("gearloss-cycle-{}-{}", std::process::id(), fastrand_name(trace, edits)));
+    let dir =
+        std::env::temp_dir().join(format!("gearloss-cycle-{}-{}", std::process::id(), fastrand_name(trace, edits)));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("trace.csv"), trace).unwrap();
     let mut all = vec![("trace = \"cycles/wltc_3b.csv\"", "trace = \"trace.csv\"")];
@@ -75,7 +76,14 @@ fn speed_units_are_read_from_the_header() {
 }
 
 fn car(road_load: RoadLoad, limit: Option<f64>) -> Vehicle {
-    Vehicle { mass: 1500.0, rotating_mass_factor: 1.05, wheel_radius: 0.3, road_load, recuperation_limit: limit, final_ratio: 1.0 }
+    Vehicle {
+        mass: 1500.0,
+        rotating_mass_factor: 1.05,
+        wheel_radius: 0.3,
+        road_load,
+        recuperation_limit: limit,
+        final_ratio: 1.0,
+    }
 }
 
 const COASTDOWN: RoadLoad = RoadLoad::Coastdown { f0: 150.0, f1: 2.5, f2: 0.45 };
@@ -120,7 +128,8 @@ fn a_sign_change_of_the_force_cuts_the_interval_and_the_energies_are_exact() {
 /// f2 = ½ ρ c_w A: the same force on every piece.
 #[test]
 fn the_physical_and_coastdown_forms_agree() {
-    let physical = RoadLoad::Physical { rolling: 0.009, drag_coefficient: 0.267, frontal_area: 2.39, air_density: 1.225 };
+    let physical =
+        RoadLoad::Physical { rolling: 0.009, drag_coefficient: 0.267, frontal_area: 2.39, air_density: 1.225 };
     let coastdown = RoadLoad::Coastdown { f0: 0.009 * 1500.0 * 9.80665, f1: 0.0, f2: 0.5 * 1.225 * 0.267 * 2.39 };
     let trace = Trace::read(&wltc()).unwrap();
     let a = Cycle { vehicle: car(physical, None), trace: trace.clone(), phases: Vec::new() }.pieces();
@@ -179,17 +188,31 @@ fn a_constant_speed_loses_the_steady_points_loss_times_the_time() {
     let (m, r) = (1976.0, 0.335);
     let force = 0.009 * m * 9.80665 + 0.5 * 1.225 * 0.267 * 2.3903615 * v * v;
     let (torque, speed) = (force * r, v / r);
-    let operating = format!("operating {{ oil_temperature = 80 degC  output_torque = {torque:e} N*m  output_speed = {speed:e} rad/s }}");
-    let scene = cycle_scene("time [s], speed [m/s]\n0, 13.88888888888889\n3600, 13.88888888888889\n", false, &[
-        ("operating { oil_temperature = 80 degC }", &operating),
-    ]);
+    let operating = format!(
+        "operating {{ oil_temperature = 80 degC  output_torque = {torque:e} N*m  output_speed = {speed:e} rad/s }}"
+    );
+    let scene = cycle_scene(
+        "time [s], speed [m/s]\n0, 13.88888888888889\n3600, 13.88888888888889\n",
+        false,
+        &[("operating { oil_temperature = 80 degC }", &operating)],
+    );
     let e = evaluate(&scene);
     let point = gearloss::evaluate::drive::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).rows[0].point.clone();
     assert_eq!(e.pieces.len(), 1);
-    let parts = [point.losses.meshes, point.losses.gear_no_load, point.losses.bearings_no_load, point.losses.bearings_load, point.losses.seals];
+    let parts = [
+        point.losses.meshes,
+        point.losses.gear_no_load,
+        point.losses.bearings_no_load,
+        point.losses.bearings_load,
+        point.losses.seals,
+    ];
     for (k, p) in parts.iter().enumerate() {
         let cycle = e.integrals[0].value[k];
-        assert!((cycle - p * 3600.0).abs() <= 1e-12 * (p * 3600.0).abs().max(1e-300), "part {k}: {cycle} vs {}", p * 3600.0);
+        assert!(
+            (cycle - p * 3600.0).abs() <= 1e-12 * (p * 3600.0).abs().max(1e-300),
+            "part {k}: {cycle} vs {}",
+            p * 3600.0
+        );
     }
     assert!((e.integrals[0].value[MOTOR] - point.input_power * 3600.0).abs() <= 1e-12 * point.input_power * 3600.0);
 }
@@ -234,10 +257,14 @@ fn the_sumps_books_balance_over_the_cycle() {
     let books = lost(&e) - dissipated;
     assert!(end > start + 10.0, "{start} → {end} K");
     assert!((c * (end - start) - books).abs() <= 1e-9 * books.abs(), "{} vs {books}", c * (end - start));
-    let stiff = evaluate(&cycle_scene(&wltc(), true, &[
-        ("heat_capacity = 12 kJ/K", "heat_capacity = 1e12 J/K"),
-        ("start_temperature = 25 degC", "start_temperature = 80 degC"),
-    ]));
+    let stiff = evaluate(&cycle_scene(
+        &wltc(),
+        true,
+        &[
+            ("heat_capacity = 12 kJ/K", "heat_capacity = 1e12 J/K"),
+            ("start_temperature = 25 degC", "start_temperature = 80 degC"),
+        ],
+    ));
     let fixed = evaluate(&cycle_scene(&wltc(), false, &[]));
     assert!((lost(&stiff) - lost(&fixed)).abs() <= 1e-9 * lost(&fixed), "{} vs {}", lost(&stiff), lost(&fixed));
 }

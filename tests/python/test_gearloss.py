@@ -350,6 +350,26 @@ def test_a_drive_as_tables():
     assert pair.drive_records.empty and pair.stages.empty and pair.bearings.empty
 
 
+def test_a_drive_cycle_as_a_table():
+    """A vehicle over WLTC 3b: `report.cycle` has a row per interval (1800), its losses add up to
+    the report's totals (ten digits), and on every row the motor's energy is the box's output
+    (the wheel's plus what the brakes take) and the loss; a pair's report has no cycle."""
+    report = gearloss.run(scene(ROOT / "specs/ev_reducer_wltc.gear"))
+    cycle = report.cycle
+    assert len(cycle) == 1800
+    assert {"t_start_s", "v_end_km_h", "wheel_torque_start_N_m", "motor_speed_end_rpm", "loss_J", "seals_J",
+            "oil_temperature_end_C"} <= set(cycle.columns)
+    whole = report.data["cycle"]["whole"]
+    total = (whole["loss_drive_wh"] + whole["loss_recuperation_wh"]) * 3600.0
+    assert abs(cycle["loss_J"].sum() - total) <= 1e-8 * total
+    scale = cycle["motor_J"].abs() + cycle["wheel_J"].abs() + 1.0
+    residual = cycle["motor_J"] - cycle["wheel_J"] - cycle["brakes_J"] - cycle["loss_J"]
+    assert (residual.abs() <= 1e-8 * scale).all(), residual.abs().max()
+    parts = cycle[["meshes_J", "gear_no_load_J", "bearings_no_load_J", "bearings_load_J", "seals_J"]].sum(axis=1)
+    assert ((parts - cycle["loss_J"]).abs() <= 1e-8 * (cycle["loss_J"].abs() + 1.0)).all()
+    assert gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).cycle.empty
+
+
 def test_a_drive_on_dask_is_the_single_run():
     """A drive of several stages in Dask shards, merged: the single run's report and drive records."""
     s = scene(ROOT / "specs/ev_two_stage_reducer.gear")

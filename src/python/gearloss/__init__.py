@@ -199,6 +199,20 @@ class Report:
         return pandas.read_csv(io.BytesIO(self._files["drive_records.csv"]))
 
     @property
+    def cycle(self):
+        """A drive cycle's ``cycle_records.csv`` as a DataFrame: a row per interval of the trace
+        with its times (s), speeds (km/h), wheel force (N) and torque (N·m) and wheel and motor
+        speeds (rpm) at its start and end, the motor's mean torque (N·m), the box's loss and each
+        part (J) with the loss's error estimate, the motor's and the wheel's energy and what the
+        brakes take (J), and with the sump's transient its temperature at the end (°C); empty
+        without a drive cycle."""
+        import pandas
+
+        if "cycle_records.csv" not in self._files:
+            return pandas.DataFrame()
+        return pandas.read_csv(io.BytesIO(self._files["cycle_records.csv"]))
+
+    @property
     def stages(self):
         """Per record row and stage: the driving member, its torque, η_mesh, the mesh loss and the
         stage's no-load loss (W)."""

@@ -24,7 +24,8 @@ pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport) {
     header(out, &["over the cycle", "drive", "recuperation"]);
     let both = |out: &mut String, what: &str, a: String, b: String| row(out, &[what.to_string(), a, b]);
     both(out, "energy at the wheels (kWh)", fixed(w.wheel_drive_kwh, 4), fixed(w.wheel_recuperation_kwh, 4));
-    both(out, "energy at the motor: out, in (kWh)", fixed(w.motor_out_kwh, 4), fixed(w.motor_in_kwh, 4));
+    both(out, "through the box's output: out, in (kWh)", fixed(w.box_drive_kwh, 4), fixed(w.box_recuperation_kwh, 4));
+    both(out, "at the motor: out, in (kWh)", fixed(w.motor_out_kwh, 4), fixed(w.motor_in_kwh, 4));
     both(
         out,
         "gearbox loss (Wh)",
@@ -32,7 +33,12 @@ pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport) {
         format!("{} ± {}", fixed(w.loss_recuperation_wh, 3), sig(w.loss_recuperation_error_wh)),
     );
     both(out, "loss / wheel energy (%)", fixed(w.loss_drive_percent, 3), fixed(w.loss_recuperation_percent, 3));
-    both(out, "cycle efficiency of the box (%)", fixed(100.0 * w.efficiency_drive, 3), fixed(100.0 * w.efficiency_recuperation, 3));
+    both(
+        out,
+        "cycle efficiency of the box (%)",
+        fixed(100.0 * w.efficiency_drive, 3),
+        fixed(100.0 * w.efficiency_recuperation, 3),
+    );
     md!(out);
     md!(
         out,
@@ -68,7 +74,11 @@ pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport) {
     if let Some(f) = &c.failure {
         md!(out, "**The transient stopped**: {f}.\n");
     }
-    md!(out, "![speed, loss power, sump temperature and cumulative loss over the cycle]({})\n", super::cycle_plots::TRACE_FILE);
+    md!(
+        out,
+        "![speed, loss power, sump temperature and cumulative loss over the cycle]({})\n",
+        super::cycle_plots::TRACE_FILE
+    );
     if !c.map.torques.is_empty() {
         md!(out, "![the cycle's operating points over the box's efficiency map]({})\n", super::cycle_plots::MAP_FILE);
     }

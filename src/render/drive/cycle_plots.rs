@@ -39,13 +39,22 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
     for k in 0..t0.len() {
         // An interval counts as drive or recuperation by the sign of its wheel energy (the
         // report's tables split its pieces exactly).
-        if wheel[k] >= 0.0 { sd += loss[k] / 3600.0 } else { sr += loss[k] / 3600.0 }
+        if wheel[k] >= 0.0 {
+            sd += loss[k] / 3600.0
+        } else {
+            sr += loss[k] / 3600.0
+        }
         drive.push((t1[k], sd));
         recup.push((t1[k], sr));
     }
     let x_label = "time (s)".to_string();
     let mut panels = vec![
-        Panel { y_label: "vehicle speed (km/h)".into(), x_label: x_label.clone(), xy: vec![("v(t)".into(), speed)], ..Default::default() },
+        Panel {
+            y_label: "vehicle speed (km/h)".into(),
+            x_label: x_label.clone(),
+            xy: vec![("v(t)".into(), speed)],
+            ..Default::default()
+        },
         Panel {
             y_label: "gearbox loss power (W)".into(),
             x_label: x_label.clone(),
@@ -56,7 +65,12 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
     if theta.iter().any(|x| x.is_finite()) {
         let mut path = vec![(t0[0], c.temperature.as_ref().map_or(f64::NAN, |t| t.start_c))];
         path.extend(t1.iter().copied().zip(theta.iter().copied()));
-        panels.push(Panel { y_label: "sump temperature (°C)".into(), x_label: x_label.clone(), xy: vec![("θ at each interval's end".into(), path)], ..Default::default() });
+        panels.push(Panel {
+            y_label: "sump temperature (°C)".into(),
+            x_label: x_label.clone(),
+            xy: vec![("θ at each interval's end".into(), path)],
+            ..Default::default()
+        });
     }
     panels.push(Panel {
         y_label: "cumulative gearbox loss (Wh)".into(),
@@ -69,8 +83,18 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
 
 pub(crate) fn map(title: &str, c: &DriveCycleReport) -> Result<String, String> {
     let m = &c.map;
-    let eta: Vec<Vec<f64>> =
-        m.efficiency.iter().map(|row| row.iter().map(|e| match e { Some(e) if *e >= SHOWN_FROM => 100.0 * e, _ => f64::NAN }).collect()).collect();
+    let eta: Vec<Vec<f64>> = m
+        .efficiency
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|e| match e {
+                    Some(e) if *e >= SHOWN_FROM => 100.0 * e,
+                    _ => f64::NAN,
+                })
+                .collect()
+        })
+        .collect();
     let mut marks = Vec::new();
     for (t, row) in m.seconds.iter().enumerate() {
         for (s, secs) in row.iter().enumerate() {
