@@ -15,7 +15,7 @@
 
 use rayon::prelude::*;
 
-use super::drive_cycle::{integrands_at, PieceIntegrals, PieceThermal, HIGH_ORDER, LOW_ORDER, N, PARTS};
+use super::cycle_pieces::{integrands_at, PieceIntegrals, PieceThermal, HIGH_ORDER, LOW_ORDER, N, PARTS};
 use super::drive_setup::DriveSetup;
 use crate::efficiency::Formulation;
 use crate::model::DriveCycleSpec;

@@ -4,7 +4,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::drive_cycle::CycleMap;
 use crate::evaluate::drive_cycle::{box_load, CycleEvaluation, ANGLE, MOTOR, N, PARTS};
 use crate::model::DriveCycleSpec;
 use crate::numerics::rounding::round_sig;
@@ -41,6 +40,18 @@ impl CycleSeries {
 
 /// The records file of a cycle.
 pub const FILE: &str = "cycle_records.csv";
+
+/// The box's η over the output torque × speed the cycle reaches, with the time the cycle spends
+/// in each cell (s), for the plot.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CycleMap {
+    pub torques: Vec<f64>,
+    pub speeds_rpm: Vec<f64>,
+    /// None where both ends deliver.
+    pub efficiency: Vec<Vec<Option<f64>>>,
+    /// [torque cell][speed cell] seconds, cells centred on the grid's values.
+    pub seconds: Vec<Vec<f64>>,
+}
 
 /// The series' columns, in order.
 pub const COLUMNS: [&str; 24] = [

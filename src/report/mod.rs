@@ -4,6 +4,7 @@ pub(crate) mod checks;
 pub mod drive;
 pub mod drive_cycle;
 pub mod drive_cycle_series;
+pub mod drive_cycle_totals;
 pub mod drive_inputs;
 pub mod drive_oil_sweep;
 pub(crate) mod dynamics;
