@@ -51,6 +51,13 @@ enum Command {
     },
     /// Draw report.md and every plot of a report folder again from its report.json alone.
     Render { folder: PathBuf },
+    /// Read a REXS gear-unit model (.rexs, .rexsj, .rexsz) and write a commented scene from it.
+    Import {
+        model: PathBuf,
+        /// The scene to write (it must not exist yet); default: the model's name with `.gear`.
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+    },
     /// Parse and validate a scene, and say what `run` would compute.
     Check { scene: PathBuf },
     /// List the unit table.
@@ -90,6 +97,7 @@ pub(crate) fn main() -> ExitCode {
         Command::Run { scene, out, shard } => run(&scene, &out, shard),
         Command::Merge { shards, out } => merge(&shards, &out),
         Command::Check { scene } => check(&scene),
+        Command::Import { model, out } => import(&model, out),
         Command::Render { folder } => finished(gearloss::rerender::render_into(&folder).map(|files| (folder, files))),
         Command::Units => listing(&units_table()),
         Command::Laws => listing(&gearloss::listing::laws()),
@@ -97,6 +105,40 @@ pub(crate) fn main() -> ExitCode {
         Command::Bearings => listing(&gearloss::listing::bearings()),
         Command::New { scene } => new_scene(&scene),
     }
+}
+
+/// `gearloss import`: the scene written whole (a temporary file renamed into place, never over an
+/// existing file), the warnings on stderr; nothing written on an error.
+fn import(model: &Path, out: Option<PathBuf>) -> ExitCode {
+    let imported = match gearloss::rexs::import_file(model) {
+        Ok(i) => i,
+        Err(e) => {
+            errln!("error: {}: {e}", model.display());
+            errln!("  help: {}", e.hint);
+            return ExitCode::from(EXIT_SCENE);
+        }
+    };
+    let out = out.unwrap_or_else(|| model.with_extension("gear"));
+    if out.exists() {
+        errln!("error: {} exists; gearloss import never overwrites a file (give another with -o)", out.display());
+        return ExitCode::from(EXIT_IO);
+    }
+    let partial = out.with_extension("gear.partial");
+    let written = std::fs::write(&partial, imported.scene.as_bytes()).and_then(|()| std::fs::rename(&partial, &out));
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&partial);
+        errln!("error: cannot write {}: {e}", out.display());
+        return ExitCode::from(EXIT_IO);
+    }
+    for w in &imported.warnings {
+        errln!("warning: {w}");
+    }
+    outln!(
+        "wrote {} ({} warning(s)): `gearloss check {0}`, then `gearloss run {0}`",
+        out.display(),
+        imported.warnings.len()
+    );
+    ExitCode::SUCCESS
 }
 
 fn listing(text: &str) -> ExitCode {

@@ -80,6 +80,7 @@ pub(crate) mod quantity;
 pub mod render;
 pub mod report;
 pub mod rerender;
+pub mod rexs;
 pub mod run;
 pub mod run_drive;
 pub(crate) mod run_error;

@@ -1,0 +1,29 @@
+//! One REXS file into a scene's text, with what the reader must know.
+
+use super::RexsError;
+
+/// What an import gives: the scene's text and what the reader must know.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Imported {
+    pub scene: String,
+    pub warnings: Vec<String>,
+}
+
+/// Imports the REXS model in `bytes`, read from a file named `file_name` (its stem titles the scene).
+pub fn import(file_name: &str, bytes: &[u8]) -> Result<Imported, RexsError> {
+    let model = super::formats::read_model(bytes)?;
+    let unit = super::gear_unit::read_gear_unit(&model)?;
+    let scene = super::write_scene::write_scene(file_name, &model, &unit);
+    Ok(Imported { scene, warnings: unit.warnings })
+}
+
+/// Imports the REXS file at `path`.
+pub fn import_file(path: &std::path::Path) -> Result<Imported, RexsError> {
+    let bytes = std::fs::read(path).map_err(|e| {
+        RexsError::new(
+            format!("cannot read {}: {e}", path.display()),
+            "give the path of a .rexs, .rexsj or .rexsz file",
+        )
+    })?;
+    import(&path.display().to_string(), &bytes)
+}

@@ -1,0 +1,213 @@
+//! The shafts that carry the stages' gears, their role (input: `defines_speed`; output: its
+//! external load transmits torque it does not define), their position in the gear unit and their
+//! bearings (relation `side`: the bearing's inner part is the shaft).
+
+use super::error::describe;
+use super::gear_unit::StageData;
+use super::model::{Component, RexsModel};
+use super::units::{flag, quantity, text, vector, Kind};
+use super::RexsError;
+
+/// A bearing as the scene writes it.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct BearingData {
+    pub id: u64,
+    pub designation: String,
+    /// gearloss's type name.
+    pub kind: &'static str,
+    pub bore: f64,
+    pub outside: f64,
+    pub static_load_rating: Option<f64>,
+    pub at: f64,
+    /// `axial_force_absorption` as written.
+    pub axial: String,
+    pub locating: bool,
+    /// Where the sizes came from, in words.
+    pub sizes_from: String,
+}
+
+/// A shaft of the drive.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ShaftData {
+    pub id: u64,
+    pub name: String,
+    /// Its origin (support vector, mm) in the gear unit's (u, v, w).
+    pub origin: [f64; 3],
+    pub input: bool,
+    pub output: bool,
+    pub bearings: Vec<BearingData>,
+}
+
+/// REXS `bearing_type` → gearloss's type.
+const TYPES: &[(&str, &str)] = &[
+    ("radial_grooved_ball_bearing", "deep_groove_ball"),
+    ("radial_grooved_ball", "deep_groove_ball"),
+    ("radial_angular_contact_ball_bearing", "angular_contact_ball"),
+    ("angular_contact_ball_bearing", "angular_contact_ball"),
+    ("four_point_contact_ball_bearing", "angular_contact_ball"),
+    ("radial_roller_bearing", "cylindrical_roller"),
+    ("radial_cylindrical_roller_bearing", "cylindrical_roller"),
+    ("radial_tapered_roller_bearing", "tapered_roller"),
+    ("radial_spherical_roller_bearing", "spherical_roller"),
+    ("radial_self_aligning_roller_bearing", "spherical_roller"),
+];
+
+pub(crate) fn read_shafts(
+    model: &RexsModel,
+    stages: &[StageData],
+    warnings: &mut Vec<String>,
+) -> Result<Vec<ShaftData>, RexsError> {
+    let mut ids: Vec<u64> = stages.iter().flat_map(|s| s.gears.iter().map(|g| g.shaft)).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let loads = |shaft: u64| {
+        model
+            .relations
+            .iter()
+            .filter(move |r| r.kind == "assembly" && r.role("assembly") == Some(shaft))
+            .filter_map(|r| r.role("part"))
+            .map(|id| &model.components[&id])
+            .filter(|c| c.kind == "external_load")
+    };
+    let mut out = Vec::new();
+    for id in ids {
+        let c = &model.components[&id];
+        if vector(c, "u_axis_vector").is_some_and(|u| u[0] <= 0.0 || u[1].abs() + u[2].abs() > 1e-9) {
+            return Err(RexsError::at(
+                c,
+                "its axis is not the gear unit's +u axis",
+                "gearloss reads parallel shafts along the gear unit's u axis",
+            ));
+        }
+        let input = flag(c, &["defines_speed"]) == Some(true);
+        let output = !input
+            && loads(id)
+                .any(|l| flag(l, &["transmits_torque"]) == Some(true) && flag(l, &["defines_torque"]) != Some(true));
+        let bearings = read_bearings(model, c, warnings)?;
+        out.push(ShaftData {
+            id,
+            name: c.name.clone(),
+            origin: vector(c, "support_vector").unwrap_or([0.0; 3]),
+            input,
+            output,
+            bearings,
+        });
+    }
+    for (what, count) in [
+        ("input (`defines_speed`)", out.iter().filter(|s| s.input).count()),
+        ("output (a load that transmits torque)", out.iter().filter(|s| s.output).count()),
+    ] {
+        if count != 1 {
+            return Err(RexsError::new(
+                format!("{count} of the gear unit's shafts are its {what}"),
+                "gearloss imports a chain of stages with one input shaft and one output shaft",
+            ));
+        }
+    }
+    Ok(out)
+}
+
+/// The designation of a bearing: its `catalogue_designation` (`name` in REXS 1.0), or a concept
+/// bearing's from its component name (`not a catalogue bearing: 33016 (Rolling bearing [35])`).
+fn designation(b: &Component) -> String {
+    if let Some(t) = text(b, &["catalogue_designation", "name"]) {
+        return t.to_string();
+    }
+    let name = b.name.split(": ").nth(1).unwrap_or(&b.name);
+    name.split(" (").next().unwrap_or(name).trim().to_string()
+}
+
+fn read_bearings(
+    model: &RexsModel,
+    shaft: &Component,
+    warnings: &mut Vec<String>,
+) -> Result<Vec<BearingData>, RexsError> {
+    let mut out = Vec::new();
+    for r in model.relations_with("side", "inner_part", shaft.id) {
+        let Some(b) = r.role("assembly").map(|id| &model.components[&id]) else { continue };
+        if !matches!(b.kind.as_str(), "rolling_bearing_with_catalog_geometry" | "concept_bearing") {
+            warnings.push(format!("{}: a bearing of this type is not imported", describe(b)));
+            continue;
+        }
+        if let Some(other) = r.role("outer_part").map(|id| &model.components[&id]).filter(|o| o.kind == "shaft") {
+            warnings.push(format!(
+                "{}: it joins shaft {} to shaft {}; imported on shaft {} as a support to the housing (its load on shaft {} and its speed difference are not modelled)",
+                describe(b), shaft.id, other.id, shaft.id, other.id
+            ));
+        }
+        let designation = designation(b);
+        let kind = match text(b, &["bearing_type"]) {
+            Some(t) => TYPES.iter().find(|(r, _)| *r == t).map(|(_, g)| *g).ok_or_else(|| {
+                RexsError::at(b, format!("its `bearing_type` `{t}` has no gearloss type"), "gearloss's types: deep groove ball, angular contact ball, cylindrical, tapered and spherical roller")
+            })?,
+            None if designation.starts_with("K ") => "cylindrical_roller",
+            None if designation.starts_with("33") || designation.starts_with("32") || designation.starts_with("30") => "tapered_roller",
+            None if designation.starts_with('6') => "deep_groove_ball",
+            None => return Err(RexsError::at(b, format!("it gives no `bearing_type`, and its designation `{designation}` names none"), "export the bearing with its type")),
+        };
+        let table = super::bearing_sizes::sizes(&designation);
+        let given = (quantity(b, &["inner_diameter"], Kind::Length)?, quantity(b, &["outer_diameter"], Kind::Length)?);
+        let (bore, outside, sizes_from) = match (given, &table) {
+            ((Some(d), Some(big)), _) => (d, big, "the model".to_string()),
+            (_, Some(s)) => (s.bore, s.outside, format!("derived from the designation `{designation}` (ISO bore code and dimension series)")),
+            _ => {
+                return Err(RexsError::at(
+                    b,
+                    format!("`inner_diameter` and `outer_diameter` are missing, and its designation `{designation}` gives no sizes"),
+                    "export the bearing with its diameters, or use a catalogue designation gearloss knows",
+                ))
+            }
+        };
+        if sizes_from != "the model" {
+            warnings.push(format!("{}: d = {bore} mm, D = {outside} mm {sizes_from}", describe(b)));
+        }
+        let c0 = quantity(b, &["radial_static_load_rating", "static_capacity"], Kind::Force)?
+            .or(table.as_ref().and_then(|s| s.static_load_rating));
+        if kind == "deep_groove_ball" && c0.is_none() {
+            return Err(RexsError::at(
+                b,
+                "`radial_static_load_rating` is missing",
+                "a ball bearing's load-dependent loss needs its C_0: export it",
+            ));
+        }
+        let at = quantity(b, &["u_coordinate_on_shaft_inner_side", "u_coordinate_on_shaft"], Kind::Length)?
+            .ok_or_else(|| {
+                RexsError::at(
+                    b,
+                    "`u_coordinate_on_shaft_inner_side` is missing",
+                    "export the bearing's position on its shaft",
+                )
+            })?;
+        let axial = text(b, &["axial_force_absorption"]).unwrap_or("no_direction").to_string();
+        out.push(BearingData {
+            id: b.id,
+            designation,
+            kind,
+            bore,
+            outside,
+            static_load_rating: c0,
+            at,
+            locating: axial == "both_directions",
+            axial,
+            sizes_from,
+        });
+    }
+    out.sort_by(|a, b| a.at.total_cmp(&b.at));
+    if out.len() != 2 {
+        return Err(RexsError::at(
+            shaft,
+            format!("it sits on {} bearings; gearloss's shaft statics takes two bearing places", out.len()),
+            "gearloss imports shafts on two bearings (or two places of several bearings each)",
+        ));
+    }
+    if !out.iter().any(|b| b.locating) {
+        if let Some(first) = out.iter_mut().find(|b| b.axial == "positive" || b.axial == "negative") {
+            first.locating = true;
+            warnings.push(format!(
+                "shaft {}: its bearings each take one axial direction; gearloss gives the whole axial force to one place: the one at {} mm (chosen)",
+                shaft.id, first.at
+            ));
+        }
+    }
+    Ok(out)
+}
