@@ -28,6 +28,7 @@
 //!  scene/                         the language: grammar, parse, units, lowering to the model
 //!  model, mesh                    the lowered scene (uom quantities, what the user wrote); a checked
 //!                                 mesh (one pair and its lubricant), what a pair's evaluation reads
+//!  rexs/                          REXS gear-unit models (XML, JSON, zip) read into a commented scene
 //!  vehicle/                       a vehicle over a drive cycle: the speed trace, the road load, the
 //!                                 cycle's pieces with exact wheel energies (the box's losses over them
 //!                                 come in from evaluate/drive_cycle)

@@ -84,7 +84,7 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
 
 /// The signed speed of every shaft (rad/s): the input's given, or found from the output's
 /// magnitude, then passed along the chain by each stage's kinematics.
-pub(crate) fn shaft_speeds(drive: &Drive, speed: EndValue) -> Vec<f64> {
+pub fn shaft_speeds(drive: &Drive, speed: EndValue) -> Vec<f64> {
     let along = |input: f64| {
         let mut omega = vec![0.0; drive.shafts.len()];
         omega[drive.input] = input;

@@ -1,8 +1,9 @@
 //! Every error of the library as the Python exception it raises, in one place (as pyca/cryptography's
 //! `src/rust/src/error.rs`): a scene's diagnostics → `gearloss.SceneError` with `.diagnostics` (file,
 //! line, column, message, help — what the CLI prints) and `str()` the CLI's rendering; a run that
-//! fails after lowering → `gearloss.RunError` with `.kind` and `.hints`; a file system error →
-//! `OSError`.
+//! fails after lowering → `gearloss.RunError` with `.kind` and `.hints`; a REXS model that cannot
+//! be imported → `gearloss.RexsError` (a `ValueError`) with `.component` and `.hint`; a file system
+//! error → `OSError`.
 
 // pyo3 0.22's `create_exception!` tests a `gil-refs` feature this crate does not have.
 #![allow(unexpected_cfgs)]
@@ -22,10 +23,19 @@ pyo3::create_exception!(
     "A run that failed after lowering."
 );
 
+pyo3::create_exception!(_native, RexsError, pyo3::exceptions::PyValueError, "A REXS model that cannot be imported.");
+
 /// The error of the library, ready to become a Python exception.
 pub(super) enum Error {
     Scene(SceneErrors),
     Run(RunError),
+    Rexs(crate::rexs::RexsError),
+}
+
+impl From<crate::rexs::RexsError> for Error {
+    fn from(e: crate::rexs::RexsError) -> Error {
+        Error::Rexs(e)
+    }
 }
 
 impl From<SceneErrors> for Error {
@@ -76,6 +86,16 @@ impl Error {
                     }
                 }
                 if let Err(x) = err.value_bound(py).setattr("diagnostics", list) {
+                    return x;
+                }
+                err
+            }
+            Error::Rexs(e) => {
+                let err = RexsError::new_err(format!("{e}\n  help: {}", e.hint));
+                let value = err.value_bound(py);
+                let set =
+                    value.setattr("component", e.component.clone()).and_then(|_| value.setattr("hint", e.hint.clone()));
+                if let Err(x) = set {
                     return x;
                 }
                 err

@@ -194,6 +194,13 @@ fn replaced(name: &str, text: &str, values: &[(String, String)]) -> Result<Strin
     Ok(out)
 }
 
+/// A REXS model's scene text and the import's warnings.
+#[pyfunction]
+fn import_rexs(py: Python<'_>, path: PathBuf) -> PyResult<(String, Vec<String>)> {
+    let imported = py.allow_threads(|| crate::rexs::import_file(&path));
+    to_py(py, imported.map(|i| (i.scene, i.warnings)).map_err(Error::from))
+}
+
 /// The native module.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -206,5 +213,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(write_folder, m)?)?;
     m.add("SceneError", m.py().get_type_bound::<SceneError>())?;
     m.add("RunError", m.py().get_type_bound::<GearlossRunError>())?;
+    m.add("RexsError", m.py().get_type_bound::<error::RexsError>())?;
+    m.add_function(wrap_pyfunction!(import_rexs, m)?)?;
     Ok(())
 }

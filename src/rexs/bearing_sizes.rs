@@ -50,3 +50,22 @@ pub(crate) fn sizes(designation: &str) -> Option<Sizes> {
     let (_, outside, c0) = TABLE.iter().find(|(s, _, _)| *s == stem)?;
     Some(Sizes { bore: bore(&stem)?, outside: *outside, static_load_rating: *c0 })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ISO bore code (10, 12, 15, 17 mm for 00–03, then × 5 mm) and the table's D and C₀.
+    #[test]
+    fn bore_codes_and_the_table() {
+        assert_eq!(
+            [bore("6000"), bore("6201"), bore("6302"), bore("6203"), bore("6210"), bore("33014")],
+            [Some(10.0), Some(12.0), Some(15.0), Some(17.0), Some(50.0), Some(70.0)]
+        );
+        let s = sizes("6210-2Z").unwrap();
+        assert_eq!((s.bore, s.outside, s.static_load_rating), (50.0, 90.0, Some(23.2)));
+        let k = sizes("K 50x58x25").unwrap();
+        assert_eq!((k.bore, k.outside), (50.0, 58.0));
+        assert!(sizes("NU 2210").is_none() && sizes("K 58x50x25").is_none());
+    }
+}

@@ -370,6 +370,28 @@ def test_a_drive_cycle_as_a_table():
     assert gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).cycle.empty
 
 
+@pytest.mark.parametrize("name", ["FVA-Industriegetriebe_2stufig_1-4.rexs", "FVA-Industriegetriebe_2stufig_1-4.rexsj",
+                                  "FVA-Industriegetriebe_2_stufig_1-6.rexs"])
+def test_a_rexs_model_imports_and_runs(name):
+    """`Scene.from_rexs` gives the CLI's scene (its text, its warnings), which runs: the drive's two
+    stages with the file's teeth."""
+    s = gearloss.Scene.from_rexs(ROOT / "tests/rexs" / name)
+    assert "REXS cylindrical_stage" in s.text and any("tip_diameter" in w for w in s.warnings)
+    report = gearloss.run(s)
+    teeth = sorted(tuple(st["teeth"]) for st in report.data["stages"])
+    assert teeth == [(23, 34), (27, 51)]
+
+
+def test_a_broken_rexs_model_raises_rexs_error():
+    """A broken model raises `RexsError` (a ValueError) naming the component, with a hint."""
+    with pytest.raises(gearloss.RexsError) as e:
+        gearloss.Scene.from_rexs(ROOT / "tests/rexs/err/unit_contradicts_the_attribute.rexs")
+    assert isinstance(e.value, ValueError)
+    assert "normal_module" in str(e.value) and "component 6" in e.value.component and e.value.hint
+    with pytest.raises(gearloss.RexsError, match="planetary stages are not imported"):
+        gearloss.Scene.from_rexs(ROOT / "tests/rexs/planetary/FVA_Planetary_stage_-_Minus_gearing_1.1.rexsz")
+
+
 def test_a_drive_on_dask_is_the_single_run():
     """A drive of several stages in Dask shards, merged: the single run's report and drive records."""
     s = scene(ROOT / "specs/ev_two_stage_reducer.gear")

@@ -30,9 +30,9 @@ import pathlib
 from typing import Dict, Iterable, Optional, Tuple, Union
 
 from . import _native
-from ._native import RunError, SceneError
+from ._native import RexsError, RunError, SceneError
 
-__all__ = ["Scene", "Report", "run", "merge", "SceneError", "RunError"]
+__all__ = ["Scene", "Report", "run", "merge", "SceneError", "RunError", "RexsError"]
 
 
 class Scene:
@@ -49,6 +49,7 @@ class Scene:
         self.title: str = _native.check(name, text)
         self.text = text
         self.name = name
+        self.warnings: list = []
 
     @classmethod
     def from_file(cls, path: Union[str, os.PathLike]) -> "Scene":
@@ -57,6 +58,18 @@ class Scene:
         first bad byte located), line ends kept so that every column is the CLI's."""
         p = os.fspath(path)
         return cls(_native.read_scene(p), name=p)
+
+    @classmethod
+    def from_rexs(cls, path: Union[str, os.PathLike]) -> "Scene":
+        """Imports a REXS gear-unit model (``.rexs`` XML, ``.rexsj`` JSON or ``.rexsz`` zip), as
+        ``gearloss import`` does, and checks the scene it gives: ``.text`` is the commented scene,
+        ``.warnings`` what the model has that gearloss does not use and what the import chose; a
+        model that cannot be imported raises :class:`RexsError` (``.component``, ``.hint``)."""
+        p = os.fspath(path)
+        text, warnings = _native.import_rexs(p)
+        scene = cls(text, name=os.path.splitext(p)[0] + ".gear")
+        scene.warnings = list(warnings)
+        return scene
 
     def replace(self, **values: str) -> "Scene":
         """A new scene with values of its ``operating`` block replaced (or added), written as in a

@@ -1,0 +1,228 @@
+//! REXS import: every example model imports, checks and runs; the imported stages carry the file's
+//! own attribute values (read here independently of the importer); the XML and JSON exports of one
+//! model give one scene; broken models are refused with a clear message and nothing written.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+fn rexs(name: &str) -> PathBuf {
+    crate::root().join("tests/rexs").join(name)
+}
+
+const CYLINDRICAL: [&str; 3] = [
+    "FVA-Industriegetriebe_2stufig_1-4.rexs",
+    "FVA-Industriegetriebe_2stufig_1-4.rexsj",
+    "FVA-Industriegetriebe_2_stufig_1-6.rexs",
+];
+
+fn import(name: &str) -> gearloss::rexs::Imported {
+    gearloss::rexs::import_file(&rexs(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// A gear as the file gives it, read with a plain XML or JSON parser.
+#[derive(Debug, Default, Clone)]
+struct FileGear {
+    teeth: f64,
+    module: f64,
+    beta: f64,
+    width: f64,
+    u: f64,
+    alpha: f64,
+    x: f64,
+}
+
+/// Every `cylindrical_gear`'s attributes and its flank's pressure angle and profile shift, by the
+/// file's own names (the flank found through the `flank` relation).
+fn file_gears(path: &Path) -> Vec<FileGear> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let text = text.trim_start_matches('\u{feff}');
+    let mut attrs: BTreeMap<u64, (String, BTreeMap<String, f64>)> = BTreeMap::new();
+    let mut flanks: BTreeMap<u64, u64> = BTreeMap::new();
+    if text.trim_start().starts_with('<') {
+        let doc = roxmltree::Document::parse(text).unwrap();
+        for c in doc
+            .descendants()
+            .filter(|n| n.has_tag_name("component") && n.parent().is_some_and(|p| p.has_tag_name("components")))
+        {
+            let id: u64 = c.attribute("id").unwrap().parse().unwrap();
+            let values = c
+                .children()
+                .filter(|a| a.has_tag_name("attribute"))
+                .filter_map(|a| Some((a.attribute("id")?.to_string(), a.text()?.trim().parse::<f64>().ok()?)))
+                .collect();
+            attrs.insert(id, (c.attribute("type").unwrap().to_string(), values));
+        }
+        for r in doc.descendants().filter(|n| n.has_tag_name("relation") && n.attribute("type") == Some("flank")) {
+            let role = |name: &str| {
+                r.children()
+                    .find(|x| x.attribute("role") == Some(name))
+                    .map(|x| x.attribute("id").unwrap().parse().unwrap())
+            };
+            flanks.insert(role("gear").unwrap(), role("left").unwrap());
+        }
+    } else {
+        let doc: serde_json::Value = serde_json::from_str(text).unwrap();
+        for c in doc["model"]["components"].as_array().unwrap() {
+            let values = c["attributes"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .filter_map(|a| {
+                    Some((a["id"].as_str()?.to_string(), a.get("floating_point").or(a.get("integer"))?.as_f64()?))
+                })
+                .collect();
+            attrs.insert(c["id"].as_u64().unwrap(), (c["type"].as_str().unwrap().to_string(), values));
+        }
+        for r in doc["model"]["relations"].as_array().unwrap().iter().filter(|r| r["type"] == "flank") {
+            let role = |name: &str| {
+                r["refs"].as_array().unwrap().iter().find(|x| x["role"] == name).unwrap()["id"].as_u64().unwrap()
+            };
+            flanks.insert(role("gear"), role("left"));
+        }
+    }
+    attrs
+        .iter()
+        .filter(|(_, (kind, _))| kind == "cylindrical_gear")
+        .map(|(id, (_, a))| {
+            let flank = &attrs[&flanks[id]].1;
+            FileGear {
+                teeth: a["number_of_teeth"],
+                module: a["normal_module"],
+                beta: a["helix_angle_reference_diameter"],
+                width: a["face_width"],
+                u: a["u_coordinate_on_shaft"],
+                alpha: flank["normal_pressure_angle"],
+                x: flank["addendum_modification_coefficient"],
+            }
+        })
+        .collect()
+}
+
+/// Each example imports, its scene checks and runs (report.md names both stages).
+#[test]
+fn every_cylindrical_example_imports_checks_and_runs() {
+    for name in CYLINDRICAL {
+        let imported = import(name);
+        let files =
+            gearloss::run_to_files(name, &imported.scene).unwrap_or_else(|e| panic!("{name}: {e}\n{}", imported.scene));
+        let md = &files.files.iter().find(|(f, _)| f == "report.md").unwrap().1;
+        assert!(md.contains("| 27/51 |") && md.contains("| 23/34 |"), "{name}: the geometry table names both stages");
+        assert!(
+            imported.warnings.iter().any(|w| w.contains("tip_diameter")),
+            "{name}: the implausible tip diameter is said"
+        );
+    }
+}
+
+/// Every stage of the imported scene carries its two gears' values as the file writes them:
+/// teeth, normal module, |β| and the pinion's hand from the sign, face width, α_n, x and the
+/// gear's position on its shaft.
+#[test]
+fn the_stages_carry_the_files_values() {
+    for name in CYLINDRICAL {
+        let scene = gearloss::check(name, &import(name).scene).unwrap_or_else(|e| panic!("{e}"));
+        let drive = scene.drive.as_ref().unwrap();
+        let gears = file_gears(&rexs(name));
+        assert_eq!(drive.pairs.len(), 2);
+        for (k, pair) in drive.pairs.iter().enumerate() {
+            let stage = &drive.layout.stages[k];
+            for (m, gear) in [&pair.pinion, &pair.wheel].into_iter().enumerate() {
+                let z = f64::from(gear.teeth.value);
+                let file =
+                    gears.iter().find(|g| g.teeth == z).unwrap_or_else(|| panic!("{name}: no gear with {z} teeth"));
+                assert_eq!(pair.module.value.value, file.module * 1e-3, "{name}: module");
+                assert_eq!(pair.face_width.value.value, file.width * 1e-3, "{name}: face width");
+                assert!((pair.pressure_angle.value.value - file.alpha.to_radians()).abs() < 1e-15);
+                let beta = pair.helix_angle.as_ref().unwrap().value.value;
+                assert!((beta - file.beta.abs().to_radians()).abs() < 1e-15, "{name}: β");
+                assert_eq!(gear.profile_shift.value, file.x);
+                assert!((stage.places[m].at - file.u * 1e-3).abs() < 1e-15, "{name}: at");
+                if m == 0 {
+                    let hand = if file.beta > 0.0 { gearloss::drive::Hand::Right } else { gearloss::drive::Hand::Left };
+                    assert_eq!(stage.hand, Some(hand), "{name}: the pinion's hand");
+                }
+            }
+        }
+    }
+}
+
+/// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
+#[test]
+fn xml_and_json_of_one_model_give_one_scene() {
+    let body = |n: &str| import(n).scene.lines().skip(1).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(CYLINDRICAL[0]), body(CYLINDRICAL[1]));
+}
+
+/// The planetary stage (XML, JSON, zipped) is refused naming the component, not half imported.
+#[test]
+fn a_planetary_stage_is_refused_by_name() {
+    for name in [
+        "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs",
+        "FVA_Planetary_stage_-_Minus_gearing_1.1.rexsj",
+        "FVA_Planetary_stage_-_Minus_gearing_1.1.rexsz",
+        "FVA_Planetary_stage_-_Minus_gearing_1.1_vers2.rexsj",
+    ] {
+        let e = gearloss::rexs::import_file(&rexs(&format!("planetary/{name}"))).expect_err(name);
+        assert!(e.to_string().contains("planetary stages are not imported"), "{name}: {e}");
+        assert!(e.component.as_deref().is_some_and(|c| c.contains("planet_carrier")), "{name}: {e}");
+    }
+}
+
+/// Every broken model fails with its message (a snapshot each) and a hint.
+#[test]
+fn broken_models_are_refused() {
+    let mut count = 0;
+    insta::glob!("../rexs/err", "*.rexs*", |path| {
+        count += 1;
+        let e = gearloss::rexs::import_file(path).expect_err("a broken model must fail");
+        assert!(!e.hint.is_empty());
+        insta::assert_snapshot!(format!("{e}\nhelp: {}", e.hint));
+    });
+    assert!(count >= 7, "{count} broken models");
+}
+
+/// `gearloss import` writes the scene, never over a file, and writes nothing for a broken model.
+#[test]
+fn the_command_writes_the_scene_or_nothing() {
+    let dir = std::env::temp_dir().join(format!("gearloss-import-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("unit.gear");
+    let _ = std::fs::remove_file(&out);
+    let bin = env!("CARGO_BIN_EXE_gearloss");
+    let run =
+        |model: &Path| std::process::Command::new(bin).arg("import").arg(model).arg("-o").arg(&out).output().unwrap();
+    let broken = run(&rexs("err/unknown_version.rexs"));
+    assert_eq!(broken.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&broken.stderr).contains("REXS version `3.1`"));
+    assert!(!out.exists(), "nothing written for a broken model");
+    let ok = run(&rexs(CYLINDRICAL[2]));
+    assert!(ok.status.success(), "{}", String::from_utf8_lossy(&ok.stderr));
+    assert!(std::fs::read_to_string(&out).unwrap().contains("REXS cylindrical_stage 10"));
+    let again = run(&rexs(CYLINDRICAL[2]));
+    assert_eq!(again.status.code(), Some(3), "never over an existing file");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The 1.6 model's load spectrum: four cases (20, 30, 35, 15 % of the time; 543, 3456, 1234,
+/// 789 rpm; 567, 345, 456, 789 N·m; 70 °C) as the duty cycle's steps in file order (1 h chosen,
+/// the model gives no operating time), and the ratio 51/27 · 34/23 between input and output.
+#[test]
+fn the_load_spectrum_becomes_the_duty_cycle() {
+    let scene = gearloss::check("unit.gear", &import(CYLINDRICAL[2]).scene).unwrap();
+    let steps = &scene.duty_cycle.as_ref().unwrap().steps;
+    let rpm = std::f64::consts::PI / 30.0;
+    let want = [(0.20, 543.0, 567.0), (0.30, 3456.0, 345.0), (0.35, 1234.0, 456.0), (0.15, 789.0, 789.0)];
+    assert_eq!(steps.len(), 4);
+    for (s, (share, n, t)) in steps.iter().zip(want) {
+        assert!((s.duration - share * 3600.0).abs() < 1e-9, "{}", s.duration);
+        assert!((s.pinion_speed - n * rpm).abs() < 1e-9 * n && (s.pinion_torque - t).abs() < 1e-12);
+    }
+    assert!((scene.operating.oil_temperature.as_ref().unwrap().value.value - 343.15).abs() < 1e-9);
+    let drive = scene.drive.as_ref().unwrap();
+    let speeds = gearloss::drive::walk::shaft_speeds(
+        &drive.layout,
+        gearloss::drive::EndValue { at: gearloss::drive::ShaftEnd::Input, value: 1.0 },
+    );
+    let ratio = 1.0 / speeds[drive.layout.output];
+    assert!((ratio - 51.0 / 27.0 * 34.0 / 23.0).abs() < 1e-12, "{ratio}");
+}
