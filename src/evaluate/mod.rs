@@ -23,6 +23,7 @@ pub(crate) mod map;
 pub(crate) mod map_best;
 pub mod plan;
 pub(crate) mod prepare;
+pub mod record_cells;
 pub mod records;
 pub(crate) mod setup;
 pub(crate) mod stages;
