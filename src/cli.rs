@@ -40,6 +40,10 @@ enum Command {
         /// record files and a manifest for `gearloss merge`.
         #[arg(long, value_name = "K/N", value_parser = parse_shard)]
         shard: Option<gearloss::Shard>,
+        /// The record files to write: a list of csv, jsonl, parquet (default csv,jsonl; parquet for
+        /// big sweeps: typed, compressed, fast to read). A drive writes its records as CSV.
+        #[arg(long, value_name = "FORMATS", default_value = "csv,jsonl")]
+        records: gearloss::RecordFormats,
     },
     /// Combine the shard folders of one scene into the report a single run gives.
     Merge {
@@ -94,7 +98,7 @@ fn parse_shard(text: &str) -> Result<gearloss::Shard, String> {
 pub(crate) fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Run { scene, out, shard } => run(&scene, &out, shard),
+        Command::Run { scene, out, shard, records } => run(&scene, &out, shard, records),
         Command::Merge { shards, out } => merge(&shards, &out),
         Command::Check { scene } => check(&scene),
         Command::Import { model, out } => import(&model, out),
@@ -283,7 +287,7 @@ fn written(result: Result<gearloss::Written, gearloss::RunError>) -> ExitCode {
     }
 }
 
-fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>) -> ExitCode {
+fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>, records: gearloss::RecordFormats) -> ExitCode {
     let source = match read(path) {
         Ok(s) => s,
         Err(code) => return code,
@@ -294,7 +298,7 @@ fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>) -> ExitCode {
         Err(e) => return report_errors(&e),
     };
     let bar = Bar::new();
-    let result = gearloss::run_into(&name, &source, &scene, out, shard, &bar);
+    let result = gearloss::run_into_with(&name, &source, &scene, (out, shard), records, &bar);
     drop(bar);
     written(result)
 }

@@ -92,13 +92,14 @@ pub mod tribology;
 pub mod vehicle;
 
 pub use diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
+pub use evaluate::record_files::RecordFormats;
 pub use evaluate::records::{RecordSink, RecordWriter};
 pub use evaluate::{Evaluation, Plan, Shard, Tally};
 pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
-pub use run::{has_records, merge_into, report_of, run_into, run_to_files, Written};
+pub use run::{has_records, merge_into, report_of, run_into, run_into_with, run_to_files, Written};
 pub use run_error::{Failure, FailureKind, RunError};
 pub use scene::ast::SceneAst;
 

@@ -5,6 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::records::RecordWriter;
 use crate::evaluate::stages::{details, stream};
 use crate::evaluate::stream::Streamed;
@@ -125,33 +126,34 @@ fn each_oil_temperature(
 fn stream_into(
     scene: &Scene,
     plan: &Plan,
-    folder: &ReportFolder,
-    dir: &str,
+    (folder, dir): (&ReportFolder, &str),
+    formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<(Streamed, Vec<String>), RunError> {
     let io = RunError::io("the record files");
     if !has_records(scene) {
         return Ok((stream(scene, plan, &mut evaluate::records::NoRecords, progress).map_err(io)?, Vec::new()));
     }
-    let mut sink = shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(scene)).map_err(&io)?;
+    let mut sink =
+        shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(scene), formats).map_err(&io)?;
     let streamed = stream(scene, plan, &mut sink, progress).map_err(&io)?;
     sink.finish().map_err(&io)?;
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
-    Ok((streamed, vec![path(report::sweep::RECORDS_CSV), path(report::sweep::RECORDS_JSONL)]))
+    Ok((streamed, formats.files().into_iter().map(path).collect()))
 }
 
 /// One scene (at one oil temperature) into `folder`, its files under `dir` (`""`: the top): the
 /// record files as the sweep runs, then the report. Returns the report and the files written.
 fn run_scene_into(
     scene: &Scene,
-    folder: &ReportFolder,
-    dir: &str,
+    (folder, dir): (&ReportFolder, &str),
+    formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<(Report, Vec<String>), RunError> {
     let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
-    let (streamed, mut files) = stream_into(scene, &plan, folder, dir, progress)?;
+    let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;
     let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed, progress)?;
     progress.stage("write", rendered.files.len() as u64);
     for (file, content) in &rendered.files {
@@ -191,6 +193,18 @@ pub fn run_into(
     shard: Option<Shard>,
     progress: &dyn Progress,
 ) -> Result<Written, RunError> {
+    run_into_with(source_name, source, scene, (out_dir, shard), RecordFormats::default(), progress)
+}
+
+/// [`run_into`] writing the record files of `formats` (a drive's records are CSV whatever they say).
+pub fn run_into_with(
+    source_name: &str,
+    source: &str,
+    scene: &Scene,
+    (out_dir, shard): (&Path, Option<Shard>),
+    formats: RecordFormats,
+    progress: &dyn Progress,
+) -> Result<Written, RunError> {
     let slug = report::slug(&scene.title);
     let labels = scene.oil_temperature_labels();
     if let (Some(drive), None) = (&scene.drive, shard) {
@@ -215,14 +229,14 @@ pub fn run_into(
     let Some(shard) = shard else {
         let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;
         if labels.is_empty() {
-            let (report, files) = run_scene_into(scene, &folder, "", progress)?;
+            let (report, files) = run_scene_into(scene, (&folder, ""), formats, progress)?;
             let folder = folder.commit().map_err(RunError::io("the report folder"))?;
             return Ok(Written { folder, files, reports: vec![(String::new(), report)], drives: Vec::new() });
         }
         let mut files = Vec::new();
         let mut reports = Vec::new();
         let top = each_oil_temperature(scene, |at, dir| {
-            let (report, written) = run_scene_into(at, &folder, dir, progress)?;
+            let (report, written) = run_scene_into(at, (&folder, dir), formats, progress)?;
             files.extend(written);
             reports.push((dir.to_string(), report.clone()));
             Ok(report)
@@ -246,7 +260,7 @@ pub fn run_into(
     let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
     let name = format!("{slug}.shard-{}-of-{}", shard.index, shard.count);
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
-    let (streamed, mut files) = stream_into(scene, &plan, &folder, "", progress)?;
+    let (streamed, mut files) = stream_into(scene, &plan, (&folder, ""), formats, progress)?;
     let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
@@ -268,8 +282,7 @@ pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -
     let mut files = Vec::new();
     if has_records(&scene) {
         progress.stage("merge", set.folders.len() as u64);
-        set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?;
-        files.extend([report::sweep::RECORDS_CSV.to_string(), report::sweep::RECORDS_JSONL.to_string()]);
+        files.extend(set.concatenate(&folder, progress).map_err(RunError::io("the record files"))?);
     }
     let (report, rendered) = finish(&scene, &plan, &set.tally, &Default::default(), progress)?;
     for (file, content) in &rendered.files {

@@ -11,7 +11,8 @@ use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
-use crate::evaluate::records::{ExtraColumns, RecordWriter};
+use crate::evaluate::record_files::{RecordFiles, RecordFormats, RECORDS_PARQUET};
+use crate::evaluate::records::ExtraColumns;
 use crate::evaluate::{Plan, Shard, Tally};
 use crate::folder::ReportFolder;
 use crate::progress::Progress;
@@ -23,16 +24,15 @@ pub(crate) const MANIFEST: &str = "shard.json";
 /// The manifest's format, checked by `merge`.
 pub(crate) const FORMAT: &str = "gearloss-shard-1";
 
-/// Opens the record files of a folder being written.
+/// Opens the record files of `formats` in a folder being written.
 pub(crate) fn record_files(
     folder: &ReportFolder,
     dir: &str,
     extra: &ExtraColumns,
-) -> std::io::Result<RecordWriter<BufWriter<File>, BufWriter<File>>> {
+    formats: RecordFormats,
+) -> std::io::Result<RecordFiles<BufWriter<File>>> {
     let at = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
-    let csv = BufWriter::new(folder.create_file(&at(RECORDS_CSV))?);
-    let jsonl = BufWriter::new(folder.create_file(&at(RECORDS_JSONL))?);
-    RecordWriter::new(csv, jsonl, extra, true)
+    RecordFiles::new(formats, extra, |f| Ok(BufWriter::new(folder.create_file(&at(f))?)))
 }
 
 /// What a shard folder says of itself.
@@ -183,10 +183,51 @@ impl ShardSet {
         Ok(ShardSet { source_name, source, folders: dirs, tally, drive_tally })
     }
 
-    /// Writes the merged record files into `folder`: each file of each shard in shard order, the CSV
-    /// header once.
-    pub(crate) fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<()> {
-        self.concatenate_files(folder, &[(RECORDS_CSV, true), (RECORDS_JSONL, false)], progress)
+    /// Writes the merged record files into `folder` (those the first shard holds; every shard must
+    /// hold them): CSV and JSON Lines each shard's in shard order, the CSV header once; Parquet the
+    /// shards' rows in shard order into one file (a shard's file that cannot be read is refused,
+    /// named). Returns the files written.
+    pub(crate) fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<Vec<String>> {
+        let first = &self.folders[0];
+        let text: Vec<(&str, bool)> =
+            [(RECORDS_CSV, true), (RECORDS_JSONL, false)].into_iter().filter(|(f, _)| first.join(f).exists()).collect();
+        self.concatenate_files(folder, &text, progress)?;
+        let mut files: Vec<String> = text.iter().map(|(f, _)| f.to_string()).collect();
+        if first.join(RECORDS_PARQUET).exists() {
+            self.merge_parquet(folder)?;
+            files.push(RECORDS_PARQUET.to_string());
+        }
+        Ok(files)
+    }
+
+    /// The shards' records.parquet rows, in shard order, into one file of the first shard's columns.
+    fn merge_parquet(&self, folder: &ReportFolder) -> std::io::Result<()> {
+        use crate::evaluate::record_parquet::ParquetRecords;
+        use crate::evaluate::record_parquet_read::read_parquet_records;
+        let mut out: Option<ParquetRecords<BufWriter<File>>> = None;
+        for dir in &self.folders {
+            let path = dir.join(RECORDS_PARQUET);
+            let what = path.display().to_string();
+            let (columns, rows) = read_parquet_records(File::open(&path)?, &what)?;
+            let writer = match &mut out {
+                Some(w) => w,
+                None => out.insert(ParquetRecords::with_columns(
+                    BufWriter::new(folder.create_file(RECORDS_PARQUET)?),
+                    columns.clone(),
+                )?),
+            };
+            if writer.columns() != columns.as_slice() {
+                return Err(std::io::Error::new(
+                    std::io::ErrorKind::InvalidData,
+                    format!("{what} has other columns than the first shard's"),
+                ));
+            }
+            writer.write_cells(rows)?;
+        }
+        if let Some(w) = out {
+            w.finish()?;
+        }
+        Ok(())
     }
 
     /// Writes the merged `files` (name, whether it has a header line) into `folder`, each shard's in

@@ -3,10 +3,10 @@
 //! of the operating time (each case's attributes add to or override the model's).
 
 use super::error::describe;
+use super::error::RexsError;
 use super::model::{Attribute, Component, RexsModel};
 use super::shafts::ShaftData;
 use super::units::{flag, quantity, required, text, Kind};
-use super::RexsError;
 
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct LubricantData {

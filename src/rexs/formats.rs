@@ -4,8 +4,8 @@
 
 use std::collections::BTreeMap;
 
+use super::error::RexsError;
 use super::model::{Attribute, AttributeValue, Component, LoadCase, Reference, Relation, RexsModel};
-use super::RexsError;
 
 /// The model in `bytes` (a file's content).
 pub(crate) fn read_model(bytes: &[u8]) -> Result<RexsModel, RexsError> {

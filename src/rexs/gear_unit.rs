@@ -3,9 +3,9 @@
 //! ([`super::cases`]), checked; what gearloss does not use or had to choose, as warnings.
 
 use super::error::describe;
+use super::error::RexsError;
 use super::model::{Component, RexsModel};
 use super::units::{quantity, required, Kind};
-use super::RexsError;
 
 /// Versions this reader knows.
 pub(crate) const VERSIONS: &[&str] = &["1.0", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6", "1.7", "2.0", "2.0.0"];

@@ -1,6 +1,6 @@
 //! One REXS file into a scene's text, with what the reader must know.
 
-use super::RexsError;
+use super::error::RexsError;
 
 /// What an import gives: the scene's text and what the reader must know.
 #[derive(Debug, Clone, PartialEq)]

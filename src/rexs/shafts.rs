@@ -3,10 +3,10 @@
 //! bearings (relation `side`: the bearing's inner part is the shaft).
 
 use super::error::describe;
+use super::error::RexsError;
 use super::gear_unit::StageData;
 use super::model::{Component, RexsModel};
 use super::units::{flag, quantity, text, vector, Kind};
-use super::RexsError;
 
 /// A bearing as the scene writes it.
 #[derive(Debug, Clone, PartialEq)]

@@ -2,8 +2,8 @@
 //! value converted by its unit string (never by assumption), a unit that contradicts the quantity
 //! refused.
 
+use super::error::RexsError;
 use super::model::{AttributeValue, Component};
-use super::RexsError;
 
 /// What an attribute measures, and the unit the written scene gives it in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
