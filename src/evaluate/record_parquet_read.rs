@@ -7,11 +7,11 @@ use parquet::record::Field;
 use super::record_cells::Cell;
 use super::record_parquet::ColumnType;
 
+/// A records.parquet file's columns (name, type) and its rows as cells.
+pub type ParquetTable = (Vec<(String, ColumnType)>, Vec<Vec<Cell>>);
+
 /// A records.parquet file's columns and rows; an error naming `what` (the file) when it cannot be read.
-pub fn read_parquet_records(
-    file: std::fs::File,
-    what: &str,
-) -> std::io::Result<(Vec<(String, ColumnType)>, Vec<Vec<Cell>>)> {
+pub fn read_parquet_records(file: std::fs::File, what: &str) -> std::io::Result<ParquetTable> {
     let bad = |e: parquet::errors::ParquetError| {
         std::io::Error::new(std::io::ErrorKind::InvalidData, format!("{what} is not a readable Parquet file: {e}"))
     };
