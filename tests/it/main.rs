@@ -21,6 +21,7 @@ mod losses;
 mod oil_sweep;
 mod properties;
 mod readme;
+mod records_parquet;
 mod rexs;
 mod six_dof;
 mod specs;

@@ -1,0 +1,143 @@
+//! records.parquet against records.csv: the same cells, every float to the bit; shards merged into
+//! the single run's rows; a broken shard file refused by name; the format list read as documented.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use gearloss::evaluate::record_cells::Cell;
+use gearloss::evaluate::record_parquet_read::read_parquet_records;
+
+fn gearloss() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_gearloss"))
+}
+
+fn temp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("gearloss-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn run(args: &[&str], out: &Path) {
+    let o = gearloss().args(args).arg("--out").arg(out).current_dir(crate::root()).output().unwrap();
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+}
+
+fn parquet(dir: &Path) -> (Vec<(String, gearloss::evaluate::record_parquet::ColumnType)>, Vec<Vec<Cell>>) {
+    let path = dir.join("records.parquet");
+    read_parquet_records(std::fs::File::open(&path).unwrap(), &path.display().to_string()).unwrap()
+}
+
+/// A CSV line's cells (RFC 4180 quotes).
+fn split_csv(line: &str) -> Vec<String> {
+    let (mut out, mut cell, mut quoted, mut chars) = (Vec::new(), String::new(), false, line.chars().peekable());
+    while let Some(c) = chars.next() {
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                cell.push('"');
+                chars.next();
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => out.push(std::mem::take(&mut cell)),
+            _ => cell.push(c),
+        }
+    }
+    out.push(cell);
+    out
+}
+
+/// Every scene that writes records, its Parquet and CSV: the same columns (the CSV's, then the
+/// parameters' own), and on every row the same cells: integers equal, floats equal to the bit
+/// (the CSV's shortest text parsed), text equal, an empty CSV cell a null; each parameter column
+/// holds the value the `parameters` cell writes.
+#[test]
+fn parquet_holds_the_csvs_values_to_the_bit() {
+    for scene in
+        ["specs/fzg_type_c.gear", "specs/helical_gearbox.gear", "specs/fzg_c14_thermal.gear", "specs/fzg_dynamics.gear"]
+    {
+        let out = temp(&format!("pq-{}", scene.replace('/', "_")));
+        run(&["run", scene, "--records", "parquet,csv"], &out);
+        let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
+        assert!(!dir.join("records.jsonl").exists(), "{scene}: only the formats asked for");
+        let csv = std::fs::read_to_string(dir.join("records.csv")).unwrap();
+        let mut lines = csv.lines();
+        let header: Vec<String> = split_csv(lines.next().unwrap());
+        let (columns, rows) = parquet(&dir);
+        let names: Vec<&str> = columns.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(&names[..header.len()], header.iter().map(String::as_str).collect::<Vec<_>>().as_slice(), "{scene}");
+        let lines: Vec<&str> = lines.collect();
+        assert_eq!(rows.len(), lines.len(), "{scene}: rows");
+        assert!(!rows.is_empty());
+        for (row, line) in rows.iter().zip(&lines) {
+            let cells = split_csv(line);
+            for (k, text) in cells.iter().enumerate() {
+                match &row[k] {
+                    Cell::Int(i) => assert_eq!(i.to_string(), *text, "{scene}: {}", header[k]),
+                    Cell::Real(x) => {
+                        assert_eq!(x.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{scene}: {}", header[k])
+                    }
+                    Cell::Text(t) => assert_eq!(t, text, "{scene}: {}", header[k]),
+                    Cell::Empty => assert!(text.is_empty(), "{scene}: {} is null in Parquet, {text} in CSV", header[k]),
+                }
+            }
+            for (k, (name, _)) in columns.iter().enumerate().skip(header.len()) {
+                let parameters = &cells[header.iter().position(|h| h == "parameters").unwrap()];
+                if let Cell::Real(x) = row[k] {
+                    let short = name.trim_start_matches("param_");
+                    assert!(
+                        parameters.split("; ").any(|p| p.split('=').nth(1).is_some_and(|v| v
+                            .split(' ')
+                            .next()
+                            .unwrap()
+                            .parse::<f64>()
+                            .unwrap()
+                            == x)
+                            && short.starts_with(p.split('=').next().unwrap())),
+                        "{scene}: {name} = {x} not in `{parameters}`"
+                    );
+                }
+            }
+        }
+        let _ = std::fs::remove_dir_all(&out);
+    }
+}
+
+/// Three shards with Parquet records, merged: the single run's rows and columns; a shard's file
+/// cut short is refused, naming it, and nothing is written.
+#[test]
+fn shards_merge_into_the_single_runs_parquet() {
+    let out = temp("pq-shards");
+    let scene = "tests/specs/ok/large_sweep.gear";
+    run(&["run", scene, "--records", "parquet"], &out.join("single"));
+    let mut shards = Vec::new();
+    for k in 1..=3 {
+        run(&["run", scene, "--shard", &format!("{k}/3"), "--records", "parquet"], &out.join("shards"));
+        shards.push(out.join("shards").join(format!("large_sweep.shard-{k}-of-3")));
+    }
+    let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("merged")).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let single = parquet(&out.join("single/large_sweep"));
+    let merged = parquet(&out.join("merged/large_sweep"));
+    assert!(single.1.len() > 100);
+    assert_eq!(single, merged);
+    assert!(!out.join("merged/large_sweep/records.csv").exists());
+    // Cut the second shard's file in half.
+    let bad = shards[1].join("records.parquet");
+    let bytes = std::fs::read(&bad).unwrap();
+    std::fs::write(&bad, &bytes[..bytes.len() / 2]).unwrap();
+    let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("broken")).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && err.contains("shard-2-of-3") && err.contains("records.parquet"), "{err}");
+    assert!(!out.join("broken/large_sweep").exists(), "nothing written");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+/// `--records` takes a list of csv, jsonl, parquet; anything else is refused by name.
+#[test]
+fn the_record_formats_are_read_as_documented() {
+    let f: gearloss::RecordFormats = "parquet, csv".parse().unwrap();
+    assert_eq!((f.csv, f.jsonl, f.parquet), (true, false, true));
+    assert_eq!(f.files(), vec!["records.csv", "records.parquet"]);
+    assert_eq!(gearloss::RecordFormats::default().files(), vec!["records.csv", "records.jsonl"]);
+    assert!("xlsx".parse::<gearloss::RecordFormats>().unwrap_err().contains("`xlsx`"));
+    assert!("".parse::<gearloss::RecordFormats>().is_err());
+}
