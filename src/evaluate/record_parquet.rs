@@ -2,7 +2,7 @@
 //! pure-Rust `parquet` crate, Snappy-compressed, text columns dictionary-encoded), written in row
 //! groups of [`ROW_GROUP`] rows as the sweep streams, so memory stays bounded. The columns are
 //! records.csv's, in its order and with its names (integers INT64, numbers DOUBLE, text UTF-8; a
-//! missing or non-finite value is null), then one DOUBLE column per law parameter the run's first
+//! missing or non-finite value, and an empty text, is null, as an empty CSV cell reads), then one DOUBLE column per law parameter the run's first
 //! point reports, `param_<name>_<unit>` (the `parameters` text column keeps them all).
 
 use std::io::Write;
@@ -159,9 +159,10 @@ impl<W: Write + Send> ParquetRecords<W> {
                     let v: Vec<ByteArray> = self
                         .rows
                         .iter()
-                        .filter_map(
-                            |r| if let Cell::Text(t) = &r[j] { Some(ByteArray::from(t.as_str())) } else { None },
-                        )
+                        .filter_map(|r| match &r[j] {
+                            Cell::Text(t) if !t.is_empty() => Some(ByteArray::from(t.as_str())),
+                            _ => None,
+                        })
                         .collect();
                     w.write_batch(&v, Some(&defs), None).map_err(io)?;
                 }
@@ -205,6 +206,7 @@ impl<W: Write + Send> ParquetRecords<W> {
 fn present(c: &Cell) -> bool {
     match c {
         Cell::Real(x) => x.is_finite(),
+        Cell::Text(t) => !t.is_empty(),
         Cell::Empty => false,
         _ => true,
     }

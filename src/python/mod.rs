@@ -67,10 +67,21 @@ fn write_folder(py: Python<'_>, out: PathBuf, name: String, files: Vec<(String, 
 /// Between blocks of points the run asks Python for signals: Ctrl-C stops it within about a block
 /// (a second or less) and raises `KeyboardInterrupt`.
 #[pyfunction]
-#[pyo3(signature = (name, text, shard=None))]
-fn run(py: Python<'_>, name: String, text: String, shard: Option<(usize, usize)>) -> PyResult<PyFolder> {
+#[pyo3(signature = (name, text, shard=None, records=None))]
+fn run(
+    py: Python<'_>,
+    name: String,
+    text: String,
+    shard: Option<(usize, usize)>,
+    records: Option<String>,
+) -> PyResult<PyFolder> {
+    let formats: crate::RecordFormats = match records {
+        Some(r) => r.parse().map_err(pyo3::exceptions::PyValueError::new_err)?,
+        None => crate::RecordFormats::default(),
+    };
     let signals = Signals::default();
-    let result = py.allow_threads(|| in_temporary_folder(|out| run_into(&name, &text, shard, out, &signals)));
+    let result =
+        py.allow_threads(|| in_temporary_folder(|out| run_into(&name, &text, (shard, formats), out, &signals)));
     if let Some(interrupt) = signals.pending.into_inner().ok().flatten() {
         return Err(interrupt);
     }
@@ -111,13 +122,13 @@ fn replace(py: Python<'_>, name: &str, text: &str, values: Vec<(String, String)>
 fn run_into(
     name: &str,
     text: &str,
-    shard: Option<(usize, usize)>,
+    (shard, formats): (Option<(usize, usize)>, crate::RecordFormats),
     out: &Path,
     progress: &dyn crate::Progress,
 ) -> Result<PathBuf, Error> {
     let scene = crate::check(name, text)?;
     let shard = shard.map(|(index, count)| Shard { index, count });
-    Ok(crate::run_into(name, text, &scene, out, shard, progress)?.folder)
+    Ok(crate::run_into_with(name, text, &scene, (out, shard), formats, progress)?.folder)
 }
 
 /// Runs `write` into a fresh temporary folder, reads back the folder it wrote, removes it.

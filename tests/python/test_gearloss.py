@@ -392,6 +392,28 @@ def test_a_broken_rexs_model_raises_rexs_error():
         gearloss.Scene.from_rexs(ROOT / "tests/rexs/planetary/FVA_Planetary_stage_-_Minus_gearing_1.1.rexsz")
 
 
+@pytest.mark.parametrize("spec", ["fzg_type_c.gear", "helical_gearbox.gear", "fzg_c14_thermal.gear"])
+def test_records_from_parquet_equal_the_csvs(spec):
+    """`records=["parquet"]`: `Report.records` reads records.parquet, and its columns (the CSV's,
+    then the parameters') hold the CSV's DataFrame's values exactly."""
+    s = scene(ROOT / "specs" / spec)
+    from_csv = gearloss.run(s).records
+    parquet = gearloss.run(s, records=["parquet"])
+    assert "records.parquet" in parquet.files and "records.csv" not in parquet.files
+    from_parquet = parquet.records
+    assert list(from_parquet.columns[: len(from_csv.columns)]) == list(from_csv.columns)
+    assert all(c.startswith("param_") for c in from_parquet.columns[len(from_csv.columns):])
+    pandas.testing.assert_frame_equal(from_parquet[from_csv.columns], from_csv, check_dtype=False, check_exact=True)
+
+
+def test_parquet_shards_on_dask_are_the_single_run():
+    """Parquet records in Dask shards, merged: the single run's records.parquet rows."""
+    s = scene(ROOT / "tests/specs/ok/large_sweep.gear")
+    whole = gearloss.run(s, records="parquet")
+    merged = gearloss.dask.run(s, shards=3, records=["parquet"])
+    pandas.testing.assert_frame_equal(merged.records, whole.records, check_exact=True)
+
+
 def test_a_drive_on_dask_is_the_single_run():
     """A drive of several stages in Dask shards, merged: the single run's report and drive records."""
     s = scene(ROOT / "specs/ev_two_stage_reducer.gear")

@@ -108,10 +108,18 @@ def _shard(shard: Union[None, str, Tuple[int, int]]) -> Optional[Tuple[int, int]
     return int(k), int(n)
 
 
-def run(scene: Scene, shard: Union[None, str, Tuple[int, int]] = None) -> "Report":
+def _records(records) -> Optional[str]:
+    if records is None or isinstance(records, str):
+        return records
+    return ",".join(records)
+
+
+def run(scene: Scene, shard: Union[None, str, Tuple[int, int]] = None, records=None) -> "Report":
     """Runs the scene as ``gearloss run`` does (``shard="K/N"`` or ``(K, N)``: that share of its
-    operating points, as ``gearloss run --shard K/N``) and returns the report folder's contents."""
-    name, files = _native.run(scene.name, scene.text, _shard(shard))
+    operating points, as ``gearloss run --shard K/N``; ``records``: the record files, a list or a
+    comma-separated text of ``csv``, ``jsonl``, ``parquet`` as ``--records`` takes them, default
+    CSV and JSON Lines) and returns the report folder's contents."""
+    name, files = _native.run(scene.name, scene.text, _shard(shard), _records(records))
     return Report(name, files)
 
 
@@ -161,12 +169,16 @@ class Report:
 
     @property
     def records(self):
-        """``records.csv`` as a pandas DataFrame (every operating point, every law and formulation)."""
+        """The records as a pandas DataFrame (every operating point, every law and formulation):
+        ``records.csv``, or ``records.parquet`` when the run wrote Parquet only (the same columns
+        and values, then each law parameter's ``param_…`` column; reading it needs pyarrow)."""
         import pandas
 
-        if "records.csv" not in self._files:
-            return pandas.DataFrame()
-        return pandas.read_csv(io.BytesIO(self._files["records.csv"]))
+        if "records.csv" in self._files:
+            return pandas.read_csv(io.BytesIO(self._files["records.csv"]))
+        if "records.parquet" in self._files:
+            return pandas.read_parquet(io.BytesIO(self._files["records.parquet"]))
+        return pandas.DataFrame()
 
     def _kind(self, kind: str):
         r = self.records

@@ -28,24 +28,30 @@ import dask
 from . import Report, RunError, Scene, _native
 
 
-def _run_shard(name: str, text: str, k: int, n: int, workdir: str):
+def _run_shard(name: str, text: str, k: int, n: int, workdir: str, records=None):
     """One shard's folder written into ``workdir``: ``("ok", path)``, or ``("failed", error)`` so
     that every task finishes before the folder is removed."""
     try:
-        folder, files = _native.run(name, text, (k, n))
+        folder, files = _native.run(name, text, (k, n), records)
         return ("ok", os.fspath(Report(folder, files).write(workdir)))
     except Exception as e:  # noqa: BLE001 - handed back and raised, naming the shard
         return ("failed", e)
 
 
-def run(scene: Scene, shards: int, client=None, workdir: Optional[Union[str, os.PathLike]] = None) -> Report:
+def run(
+    scene: Scene, shards: int, client=None, workdir: Optional[Union[str, os.PathLike]] = None, records=None
+) -> Report:
     """Runs ``scene`` in ``shards`` Dask tasks (``client``'s cluster, or Dask's default scheduler;
-    at most one a point) and merges their folders into one :class:`~gearloss.Report`."""
+    at most one a point) and merges their folders into one :class:`~gearloss.Report` (``records``
+    as :func:`gearloss.run` takes it: Parquet shards merge into one records.parquet)."""
+    records = records if records is None or isinstance(records, str) else ",".join(records)
     if isinstance(shards, bool) or not isinstance(shards, int) or shards < 1:
         raise ValueError(f"shards must be a whole number, at least 1 (got {shards!r})")
     shards = min(shards, _native.operating_points(scene.name, scene.text))
     with tempfile.TemporaryDirectory(prefix="gearloss-dask-", dir=workdir) as tmp:
-        tasks = [dask.delayed(_run_shard)(scene.name, scene.text, k, shards, tmp) for k in range(1, shards + 1)]
+        tasks = [
+            dask.delayed(_run_shard)(scene.name, scene.text, k, shards, tmp, records) for k in range(1, shards + 1)
+        ]
         if client is not None:
             results = client.gather(client.compute(tasks))
         else:
