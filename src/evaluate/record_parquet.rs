@@ -19,7 +19,7 @@ use super::record_cells::{cells, Cell};
 use super::records::{csv_header, ExtraColumns, RecordSink, SummaryRow};
 
 /// Rows held before they are written as a row group.
-pub const ROW_GROUP: usize = 65_536;
+pub const ROW_GROUP: usize = 8_192;
 
 /// A column's Parquet type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
