@@ -588,3 +588,57 @@ mod drive_cycle {
         b.bench(|| run(&scene));
     }
 }
+
+/// The record files' writing on their own: the plain sweep's 20 000 rows (100 × 100 points, two
+/// formulations) streamed once, then written as CSV + JSON Lines or as Parquet into memory. The
+/// million-point whole runs with their sizes are README "Record files"' figures (target: Parquet
+/// no slower than CSV + JSON Lines).
+mod record_files {
+    use gearloss::evaluate::record_files::{RecordFiles, RecordFormats};
+    use gearloss::evaluate::records::{ExtraColumns, RecordSink, SummaryRow};
+
+    /// Collects the rows of a sweep.
+    struct Keep(Vec<SummaryRow>);
+
+    impl RecordSink for Keep {
+        fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
+            self.0.extend_from_slice(rows);
+            Ok(())
+        }
+    }
+
+    fn rows() -> (Vec<SummaryRow>, ExtraColumns) {
+        let text = super::ALL_LAWS
+            .replace("OP_TORQUE", "50..400 N*m count 100")
+            .replace("OP_SPEED", "100..3000 rpm count 100")
+            .replace("LAWS", "coulomb(mu = 0.05)")
+            .replace("efficiency  friction_along_loa", "efficiency(formulations = [external, internal])");
+        let scene = gearloss::check("plain.gear", &text).unwrap_or_else(|e| panic!("{e}"));
+        let plan = gearloss::Plan::new(&scene.operating, None, &[]);
+        let mut keep = Keep(Vec::new());
+        gearloss::evaluate_sweep(&scene, &plan, &mut keep, &gearloss::Quiet).unwrap();
+        (keep.0, ExtraColumns::of(&scene))
+    }
+
+    fn write(formats: &str, bencher: divan::Bencher) {
+        let (rows, extra) = rows();
+        let formats: RecordFormats = formats.parse().unwrap();
+        bencher.counter(divan::counter::ItemsCount::new(rows.len())).bench(|| {
+            let mut files = RecordFiles::new(formats, &extra, |_| Ok(Vec::new())).unwrap();
+            for block in rows.chunks(2048) {
+                files.write_rows(block).unwrap();
+            }
+            files.finish().unwrap();
+        });
+    }
+
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn csv_and_jsonl_20000_rows(bencher: divan::Bencher) {
+        write("csv,jsonl", bencher);
+    }
+
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn parquet_20000_rows(bencher: divan::Bencher) {
+        write("parquet", bencher);
+    }
+}

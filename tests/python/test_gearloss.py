@@ -289,11 +289,11 @@ def test_a_failing_dask_shard_is_named_and_nothing_writes_after(tmp_path, monkey
     the temporary folder is removed (the work folder is empty afterwards)."""
     real = gearloss._native.run
 
-    def flaky(name, text, shard):
+    def flaky(name, text, shard, records=None):
         if shard[0] == 2:
             raise gearloss.RunError("the disk is full")
         time.sleep(0.3)
-        return real(name, text, shard)
+        return real(name, text, shard, records)
 
     monkeypatch.setattr(gearloss.dask._native, "run", flaky)
     s = scene(ROOT / "specs/fzg_type_c.gear")
