@@ -61,7 +61,9 @@ impl RecordFormats {
     }
 }
 
-pub(crate) use crate::report::sweep::{RECORDS_CSV, RECORDS_JSONL};
+/// The text record files.
+pub const RECORDS_CSV: &str = "records.csv";
+pub const RECORDS_JSONL: &str = "records.jsonl";
 /// The Parquet record file.
 pub const RECORDS_PARQUET: &str = "records.parquet";
 

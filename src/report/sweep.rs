@@ -67,8 +67,7 @@ pub struct SweepReport {
 }
 
 /// The record files: `records.csv` and `records.jsonl`.
-pub(crate) const RECORDS_CSV: &str = "records.csv";
-pub(crate) const RECORDS_JSONL: &str = "records.jsonl";
+pub(crate) use crate::evaluate::record_files::{RECORDS_CSV, RECORDS_JSONL};
 
 pub(crate) fn records_report(tally: &Tally, plan: &Plan) -> Option<RecordsReport> {
     (tally.rows > 0).then_some(RecordsReport {

@@ -5,6 +5,7 @@
 use super::error::describe;
 use super::error::RexsError;
 use super::model::{Component, RexsModel};
+pub(crate) use super::stage_data::{GearData, StageData};
 use super::units::{quantity, required, Kind};
 
 /// Versions this reader knows.
@@ -26,36 +27,6 @@ const READ: &[&str] = &[
     "lubricant",
     "material",
 ];
-
-/// One gear of a stage.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct GearData {
-    pub id: u64,
-    pub teeth: u32,
-    /// m_n (mm), β at the reference diameter (deg, signed: > 0 right hand), b (mm), α_n (deg), x.
-    pub module: f64,
-    pub helix_angle: f64,
-    pub face_width: f64,
-    pub pressure_angle: f64,
-    pub profile_shift: f64,
-    /// d_a (mm) when given and plausible.
-    pub tip_diameter: Option<f64>,
-    pub shaft: u64,
-    /// The mid-plane on its shaft's axial coordinate (mm).
-    pub at: f64,
-}
-
-/// One cylindrical stage: [pinion, wheel].
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct StageData {
-    pub id: u64,
-    pub name: String,
-    pub gears: [GearData; 2],
-    pub center_distance: Option<f64>,
-    /// gearloss's `direction` (deg): from the pinion's shaft to the wheel's, in (v, w) seen from +u.
-    pub direction: f64,
-    pub face_width: f64,
-}
 
 /// What the scene is written from.
 #[derive(Debug, Clone, PartialEq, Default)]

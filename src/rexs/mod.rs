@@ -17,6 +17,7 @@ pub(crate) mod formats;
 pub(crate) mod gear_unit;
 pub(crate) mod model;
 pub(crate) mod shafts;
+pub(crate) mod stage_data;
 pub(crate) mod units;
 pub(crate) mod write_scene;
 

@@ -4,8 +4,8 @@
 
 use super::error::describe;
 use super::error::RexsError;
-use super::gear_unit::StageData;
 use super::model::{Component, RexsModel};
+use super::stage_data::StageData;
 use super::units::{flag, quantity, text, vector, Kind};
 
 /// A bearing as the scene writes it.

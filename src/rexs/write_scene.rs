@@ -3,9 +3,10 @@
 
 use std::fmt::Write;
 
-use super::gear_unit::{GearUnit, StageData};
+use super::gear_unit::GearUnit;
 use super::model::RexsModel;
 use super::shafts::ShaftData;
+use super::stage_data::StageData;
 
 /// A number as the scene writes it: the shortest text that reads back exactly, −0 as 0.
 fn n(x: f64) -> String {
