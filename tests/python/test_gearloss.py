@@ -406,6 +406,23 @@ def test_records_from_parquet_equal_the_csvs(spec):
     pandas.testing.assert_frame_equal(from_parquet[from_csv.columns], from_csv, check_dtype=False, check_exact=True)
 
 
+@pytest.mark.parametrize("reader", ["polars", "duckdb"])
+def test_polars_and_duckdb_read_records_parquet(reader, tmp_path):
+    """README's one-liners for polars and DuckDB, where the package is installed (skipped otherwise):
+    the same rows and mean efficiency as pandas reads."""
+    module = pytest.importorskip(reader)
+    run = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"), records=["parquet"])
+    folder = run.write(tmp_path)
+    path = folder / "records.parquet"
+    expected = pandas.read_parquet(path)["mean_efficiency"].mean()
+    if reader == "polars":
+        df = module.read_parquet(path)
+        assert df.height == len(run.records) and abs(df["mean_efficiency"].mean() - expected) < 1e-15
+    else:
+        (mean,) = module.sql(f"SELECT avg(mean_efficiency) FROM '{path}'").fetchone()
+        assert abs(mean - expected) < 1e-12
+
+
 def test_parquet_shards_on_dask_are_the_single_run():
     """Parquet records in Dask shards, merged: the single run's records.parquet rows."""
     s = scene(ROOT / "tests/specs/ok/large_sweep.gear")
