@@ -419,7 +419,7 @@ def test_polars_and_duckdb_read_records_parquet(reader, tmp_path):
         df = module.read_parquet(path)
         assert df.height == len(run.records) and abs(df["mean_efficiency"].mean() - expected) < 1e-15
     else:
-        (mean,) = module.sql(f"SELECT avg(mean_efficiency) FROM '{path}'").fetchone()
+        ((mean,),) = module.sql(f"SELECT avg(mean_efficiency) FROM '{path}'").fetchall()
         assert abs(mean - expected) < 1e-12
 
 
