@@ -92,8 +92,9 @@ pub mod tribology;
 pub mod vehicle;
 
 pub use diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
+pub use evaluate::record_files::RecordFiles;
 pub use evaluate::record_files::RecordFormats;
-pub use evaluate::records::{RecordSink, RecordWriter};
+pub use evaluate::records::RecordSink;
 pub use evaluate::{Evaluation, Plan, Shard, Tally};
 pub use model::Scene;
 pub use progress::{Progress, Quiet};

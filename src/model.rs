@@ -366,3 +366,10 @@ pub struct Analyses {
     /// `transmission_error(pinion_torque = [...] N*m)`: the torques.
     pub transmission_error: Option<Sweep<Torque>>,
 }
+
+impl Analyses {
+    /// The formulation a drive's duty cycle and drive cycle run under: `efficiency`'s first, else external.
+    pub fn first_formulation(&self) -> Formulation {
+        self.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External)
+    }
+}

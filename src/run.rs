@@ -5,8 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::evaluate::record_files::RecordFormats;
-use crate::evaluate::records::RecordWriter;
+use crate::evaluate::record_files::{RecordFiles, RecordFormats};
 use crate::evaluate::stages::{details, stream};
 use crate::evaluate::stream::Streamed;
 use crate::evaluate::{self, Plan, Shard, Tally};
@@ -65,12 +64,13 @@ fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), 
     let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let extra = evaluate::records::ExtraColumns::of(scene);
-    let mut sink = RecordWriter::new(Vec::new(), Vec::new(), &extra, true).map_err(RunError::io("records"))?;
+    let mut sink =
+        RecordFiles::new(RecordFormats::default(), &extra, |_| Ok(Vec::new())).map_err(RunError::io("records"))?;
     let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
     let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed, &Quiet)?;
     if has_records(scene) {
         let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
-        let text = |b: Vec<u8>| String::from_utf8(b).expect("records are UTF-8");
+        let text = |b: Option<Vec<u8>>| String::from_utf8(b.expect("the default formats")).expect("records are UTF-8");
         rendered.files.push((report::sweep::RECORDS_CSV.into(), text(csv)));
         rendered.files.push((report::sweep::RECORDS_JSONL.into(), text(jsonl)));
     }

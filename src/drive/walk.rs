@@ -82,6 +82,11 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     walk.point(model, &state, &fixed, passes)
 }
 
+/// ω_in/ω_out of the chain (signed: negative when the output turns the other way).
+pub fn overall_ratio(drive: &Drive) -> f64 {
+    1.0 / shaft_speeds(drive, EndValue { at: ShaftEnd::Input, value: 1.0 })[drive.output]
+}
+
 /// The signed speed of every shaft (rad/s): the input's given, or found from the output's
 /// magnitude, then passed along the chain by each stage's kinematics.
 pub fn shaft_speeds(drive: &Drive, speed: EndValue) -> Vec<f64> {

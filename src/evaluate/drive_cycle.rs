@@ -66,8 +66,7 @@ pub struct CycleEvaluation {
 /// within it).
 pub fn loss_energy_at_order(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec, n: usize) -> f64 {
     let setup = DriveSetup::new(scene, drive);
-    let formulation =
-        scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
+    let formulation = scene.analyses.first_formulation();
     spec.cycle
         .pieces()
         .par_iter()
@@ -79,8 +78,7 @@ pub fn loss_energy_at_order(scene: &Scene, drive: &SceneDrive, spec: &DriveCycle
 /// The scene's drive cycle under its first law and formulation.
 pub fn evaluate_cycle(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec) -> CycleEvaluation {
     let setup = DriveSetup::new(scene, drive);
-    let formulation =
-        scene.analyses.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External);
+    let formulation = scene.analyses.first_formulation();
     let row = (0, formulation);
     let pieces = spec.cycle.pieces();
     let fixed = scene.operating.oil_temperature.as_ref().map(|t| t.value.value);

@@ -72,12 +72,7 @@ pub(crate) fn drive_duty(
     housing: &Housing,
     cycle: &crate::thermal::DutyCycle,
 ) -> super::thermal::DutyCycleResult {
-    let f = scene
-        .analyses
-        .efficiency
-        .as_ref()
-        .and_then(|f| f.first().copied())
-        .unwrap_or(crate::efficiency::Formulation::External);
+    let f = scene.analyses.first_formulation();
     let p_v = |k: usize, theta: f64| {
         let s = &cycle.steps[k];
         loss_at_point(scene, drive, (0, f), (s.pinion_torque, s.pinion_speed), theta)

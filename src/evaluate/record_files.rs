@@ -92,15 +92,16 @@ impl<W: Write + Send> RecordFiles<W> {
         Ok(RecordFiles { csv, jsonl, parquet, widths: extra.widths() })
     }
 
-    /// Flushes every file and writes the Parquet footer.
-    pub fn finish(self) -> std::io::Result<()> {
-        for mut w in [self.csv, self.jsonl].into_iter().flatten() {
+    /// Flushes every file and writes the Parquet footer; the CSV and JSON Lines writers back (an
+    /// in-memory run reads its buffers).
+    pub fn finish(mut self) -> std::io::Result<(Option<W>, Option<W>)> {
+        for w in [&mut self.csv, &mut self.jsonl].into_iter().flatten() {
             w.flush()?;
         }
         if let Some(p) = self.parquet {
             p.finish()?;
         }
-        Ok(())
+        Ok((self.csv, self.jsonl))
     }
 }
 

@@ -7,8 +7,6 @@
 //! efficiency, then the dynamics rows (one per dynamic formulation). Points come in the order of
 //! the sweep (torque-major), so the records of a sharded run concatenate to those of a single run.
 
-use std::io::Write;
-
 use serde::{Deserialize, Serialize};
 
 use crate::geometry::OperatingState;
@@ -248,40 +246,6 @@ pub fn jsonl_line(row: &SummaryRow) -> String {
 pub trait RecordSink {
     /// Takes the rows of consecutive operating points, in order.
     fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()>;
-}
-
-/// Writes `records.csv` and `records.jsonl` through two writers (files, or buffers in tests).
-pub struct RecordWriter<C: Write, J: Write> {
-    pub csv: C,
-    pub jsonl: J,
-    /// How many cells each group of [`ExtraColumns`] holds.
-    pub widths: [usize; 3],
-}
-
-impl<C: Write, J: Write> RecordWriter<C, J> {
-    /// Starts both files: the CSV header line with the scene's `extra` columns (JSON Lines has none).
-    pub fn new(mut csv: C, jsonl: J, extra: &ExtraColumns, with_header: bool) -> std::io::Result<Self> {
-        if with_header {
-            csv.write_all(csv_header(extra).as_bytes())?;
-        }
-        Ok(RecordWriter { csv, jsonl, widths: extra.widths() })
-    }
-
-    pub fn finish(mut self) -> std::io::Result<(C, J)> {
-        self.csv.flush()?;
-        self.jsonl.flush()?;
-        Ok((self.csv, self.jsonl))
-    }
-}
-
-impl<C: Write, J: Write> RecordSink for RecordWriter<C, J> {
-    fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
-        for row in rows {
-            self.csv.write_all(csv_line(row, self.widths).as_bytes())?;
-            self.jsonl.write_all(jsonl_line(row).as_bytes())?;
-        }
-        Ok(())
-    }
 }
 
 /// Drops the rows (a run that only wants the report's summary).

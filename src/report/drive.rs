@@ -162,13 +162,12 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 .collect(),
         })
         .collect();
-    let speeds = crate::drive::walk::shaft_speeds(layout, crate::drive::EndValue { at: ShaftEnd::Input, value: 1.0 });
     let mut report = DriveReport {
         title: scene.title.clone(),
         slug: super::slug::slug(&scene.title),
         stages: super::drive_inputs::stage_inputs(drive),
         shafts: super::drive_inputs::shaft_inputs(layout),
-        overall_ratio: 1.0 / speeds[layout.output],
+        overall_ratio: crate::drive::walk::overall_ratio(layout),
         oil: super::drive_inputs::oil_rows(scene),
         laws: laws.clone(),
         rows: eval.tally.rows,

@@ -77,7 +77,7 @@ pub fn build_cycle_report(
     let span = (trace.time[0], trace.time[trace.time.len() - 1]);
     let whole = totals("whole cycle", span, pieces, eval, thermal);
     let phases = spec.cycle.phases.iter().map(|p| totals(&p.name, (p.from, p.to), pieces, eval, thermal)).collect();
-    let ratio = overall_ratio(drive) * car.final_ratio;
+    let ratio = crate::drive::walk::overall_ratio(&drive.layout) * car.final_ratio;
     let (f0, f1, f2) = car.road_coefficients(0.0);
     let vehicle_derived = vec![
         ("effective mass m_eff".to_string(), car.effective_mass(), "kg".to_string()),
@@ -173,7 +173,7 @@ pub fn build_cycle_report(
 /// cycle: its operating points and its map (given at the input: through the ratio, losses aside).
 fn ranges(scene: &Scene, drive: &SceneDrive) -> Vec<Range> {
     use crate::drive::ShaftEnd;
-    let ratio = overall_ratio(drive).abs();
+    let ratio = crate::drive::walk::overall_ratio(&drive.layout).abs();
     let torque = |t: f64, at: ShaftEnd| if at == ShaftEnd::Input { t * ratio } else { t };
     let speed = |w: f64, at: ShaftEnd| if at == ShaftEnd::Input { w.abs() / ratio } else { w };
     let span = |v: &[f64]| v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(*x), b.max(*x)));
@@ -191,16 +191,6 @@ fn ranges(scene: &Scene, drive: &SceneDrive) -> Vec<Range> {
         out.push((span(&t), span(&w)));
     }
     out
-}
-
-/// ω_in/ω_out of the chain (signed).
-fn overall_ratio(drive: &SceneDrive) -> f64 {
-    let layout = &drive.layout;
-    let speeds = crate::drive::walk::shaft_speeds(
-        layout,
-        crate::drive::EndValue { at: crate::drive::ShaftEnd::Input, value: 1.0 },
-    );
-    1.0 / speeds[layout.output]
 }
 
 /// An operating range: (least, greatest) output torque (N·m) and speed (rad/s).
