@@ -18,6 +18,7 @@ pub(crate) mod forces;
 pub mod kinematics;
 pub(crate) mod layout;
 pub(crate) mod point;
+pub(crate) mod speeds;
 pub mod statics;
 pub mod walk;
 

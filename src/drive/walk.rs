@@ -14,6 +14,7 @@ use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
 use super::kinematics::StageKindId;
 use super::layout::{Drive, Member, ShaftEnd};
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
+pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use super::statics::shaft_reactions;
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
@@ -30,15 +31,6 @@ pub trait MeshEfficiency {
     /// η of stage `stage` when member `driving` puts `torque` (N·m, > 0) into the mesh at `speed`
     /// (rad/s, > 0).
     fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64;
-}
-
-/// A value given at one end of the drive: a torque (N·m; positive: the input drives) or a speed
-/// (rad/s; at the input signed about +z, at the output a magnitude, the input then turning
-/// counter-clockwise).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct EndValue {
-    pub at: ShaftEnd,
-    pub value: f64,
 }
 
 /// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
@@ -80,34 +72,6 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
         }
     }
     walk.point(model, &state, &fixed, passes)
-}
-
-/// ω_in/ω_out of the chain (signed: negative when the output turns the other way).
-pub fn overall_ratio(drive: &Drive) -> f64 {
-    1.0 / shaft_speeds(drive, EndValue { at: ShaftEnd::Input, value: 1.0 })[drive.output]
-}
-
-/// The signed speed of every shaft (rad/s): the input's given, or found from the output's
-/// magnitude, then passed along the chain by each stage's kinematics.
-pub fn shaft_speeds(drive: &Drive, speed: EndValue) -> Vec<f64> {
-    let along = |input: f64| {
-        let mut omega = vec![0.0; drive.shafts.len()];
-        omega[drive.input] = input;
-        for &(k, m) in &drive.chain {
-            let stage = &drive.stages[k];
-            let kinematics = (stage.kind.entry().kinematics)(stage);
-            let s = kinematics.speeds(m.index(), omega[stage.places[m.index()].shaft]);
-            omega[stage.places[m.other().index()].shaft] = s[m.other().index()];
-        }
-        omega
-    };
-    match speed.at {
-        ShaftEnd::Input => along(speed.value),
-        ShaftEnd::Output => {
-            let ratio = along(1.0)[drive.output].abs();
-            along(speed.value.abs() / ratio)
-        }
-    }
 }
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with

@@ -8,8 +8,9 @@
 
 use std::io::Write;
 
+use super::record_cells::csv_line;
 use super::record_parquet::ParquetRecords;
-use super::records::{csv_header, csv_line, jsonl_line, ExtraColumns, RecordSink, SummaryRow};
+use super::records::{csv_header, jsonl_line, ExtraColumns, RecordSink, SummaryRow};
 
 /// The record files of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

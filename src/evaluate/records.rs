@@ -233,8 +233,6 @@ pub fn csv_header(extra: &ExtraColumns) -> String {
     s
 }
 
-pub use super::record_cells::{cells, csv_line, Cell};
-
 /// One JSON Lines line of a row (non-finite numbers become `null`).
 pub fn jsonl_line(row: &SummaryRow) -> String {
     let mut line = serde_json::to_string(row).expect("a row serialises");
