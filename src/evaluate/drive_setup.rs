@@ -147,6 +147,11 @@ impl<'a> DriveSetup<'a> {
         DriveSetup { scene: self.scene, drive: self.drive, stages, sizes: self.sizes.clone(), oil }
     }
 
+    /// The ends the drive's operating block gives its torque and speed at.
+    pub(crate) fn operating_ends(&self) -> crate::drive::DriveOperating {
+        self.drive.layout.operating
+    }
+
     /// Where law `law` leaves its validity range on each stage's mesh at `point` (the driving
     /// member's torque and speed, the pair as that member drives it): the law's verdict at
     /// [`VALIDITY_SAMPLES`] contacts evenly from A to E, by stage.

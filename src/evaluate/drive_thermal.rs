@@ -6,7 +6,7 @@
 
 use super::drive_setup::{DriveRow, DriveSetup};
 use crate::drive::EndValue;
-use crate::model::{Given, Scene, SceneDrive, ThermodynamicTemperature};
+use crate::model::{Scene, SceneDrive};
 use crate::thermal::{Balance, Housing};
 
 /// The balance of one operating point, law and formulation, with the drive's loss and the housing's
@@ -28,21 +28,20 @@ pub struct DriveBalanceRow {
 }
 
 /// P_V(θ) of the drive at `row`'s point, law and formulation (W).
-fn loss_at(scene: &Scene, drive: &SceneDrive, row: &DriveRow, theta: f64) -> f64 {
-    loss_at_torque(scene, drive, row, scene.operating.pinion_torque.values[row.torque_index].value, theta)
+fn loss_at(setup: &DriveSetup, scene: &Scene, row: &DriveRow, theta: f64) -> f64 {
+    loss_at_torque(setup, scene, row, scene.operating.pinion_torque.values[row.torque_index].value, theta)
 }
 
 /// P_V(θ) of the drive at `row`'s speed, law and formulation with `torque` (N·m) at the given end.
-fn loss_at_torque(scene: &Scene, drive: &SceneDrive, row: &DriveRow, torque: f64, theta: f64) -> f64 {
+fn loss_at_torque(setup: &DriveSetup, scene: &Scene, row: &DriveRow, torque: f64, theta: f64) -> f64 {
     let speed = scene.operating.pinion_speed.values[row.speed_index].value;
-    loss_at_point(scene, drive, (row.law_index, row.formulation), (torque, speed), theta)
+    loss_at_point(setup, (row.law_index, row.formulation), (torque, speed), theta)
 }
 
-/// P_V(θ) (W) of the drive under (law, formulation) with `torque` and `speed` at the ends its
-/// operating block names; 0 standing (no speed).
+/// P_V(θ) (W) of the drive of `base` (its meshes' geometry kept, the oil moved to θ) under (law,
+/// formulation) with `torque` and `speed` at the ends its operating block names; 0 standing.
 fn loss_at_point(
-    scene: &Scene,
-    drive: &SceneDrive,
+    base: &DriveSetup,
     (law, formulation): (usize, crate::efficiency::Formulation),
     (torque, speed): (f64, f64),
     theta: f64,
@@ -50,14 +49,8 @@ fn loss_at_point(
     if speed == 0.0 {
         return 0.0;
     }
-    let given = Given {
-        value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(theta),
-        written: format!("{theta} K"),
-        span: Default::default(),
-    };
-    let at = scene.at_temperature(given);
-    let setup = DriveSetup::new(&at, drive);
-    let ends = drive.layout.operating;
+    let setup = base.at_oil_temperature(theta);
+    let ends = base.operating_ends();
     let torque = EndValue { at: ends.torque_at, value: torque };
     let speed = EndValue { at: ends.speed_at, value: speed };
     setup.point(law, formulation, torque, speed).power_lost()
@@ -73,9 +66,10 @@ pub(crate) fn drive_duty(
     cycle: &crate::thermal::DutyCycle,
 ) -> super::thermal::DutyCycleResult {
     let f = scene.analyses.first_formulation();
+    let base = DriveSetup::new(scene, drive);
     let p_v = |k: usize, theta: f64| {
         let s = &cycle.steps[k];
-        loss_at_point(scene, drive, (0, f), (s.pinion_torque, s.pinion_speed), theta)
+        loss_at_point(&base, (0, f), (s.pinion_torque, s.pinion_speed), theta)
     };
     let durations: Vec<f64> = cycle.steps.iter().map(|s| s.duration).collect();
     let fixed = scene.operating.oil_temperature.as_ref().map(|t| t.value.value);
@@ -95,10 +89,11 @@ pub(crate) fn drive_balances(
     rows: &[DriveRow],
 ) -> Vec<DriveBalanceRow> {
     use rayon::prelude::*;
+    let base = DriveSetup::new(scene, drive);
     rows.par_iter()
         .map(|row| {
-            let balance = crate::thermal::balance(|theta| loss_at(scene, drive, row, theta), housing);
-            let loss = balance.temperature.map(|t| loss_at(scene, drive, row, t));
+            let balance = crate::thermal::balance(|theta| loss_at(&base, scene, row, theta), housing);
+            let loss = balance.temperature.map(|t| loss_at(&base, scene, row, t));
             DriveBalanceRow {
                 torque_index: row.torque_index,
                 speed_index: row.speed_index,
@@ -110,7 +105,7 @@ pub(crate) fn drive_balances(
                 rating: (row.point.flow == crate::drive::PowerFlow::Drive)
                     .then(|| {
                         let given = scene.operating.pinion_torque.values[row.torque_index].value;
-                        let p_v = |torque: f64, theta: f64| loss_at_torque(scene, drive, row, torque, theta);
+                        let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
                         crate::thermal::rating_torque(p_v, housing, housing.max_oil_temperature, given.max(1.0))
                     })
                     .flatten(),
