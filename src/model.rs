@@ -156,6 +156,8 @@ pub struct GearPair {
     pub load_sharing: LoadSharing,
     pub pinion: Gear,
     pub wheel: Gear,
+    /// `mesh = internal`: the wheel is a ring with its teeth inside (ISO 21771).
+    pub internal: bool,
     /// Span of the `gears` block, for diagnostics about the pair as a whole.
     pub span: Span,
 }

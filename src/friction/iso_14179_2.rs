@@ -36,8 +36,9 @@ impl Iso14179_2 {
         let fbt_per_b = ctx.state.pinion_torque / g.base_radius[0] / (g.face_width * units::MM_PER_M);
         let vt = ctx.state.pinion_speed * g.working_pitch_radius[0];
         let v_sum = 2.0 * vt * alpha_wt.sin();
-        let rho = u / (1.0 + u).powi(2) * g.center_distance * units::MM_PER_M * alpha_wt.sin();
-        // ρ_redC = u/(1+u)² · a sin α_wt / cos β_b (helical pairs; cos β_b = 1 for spur).
+        let rho = u / (1.0 + u).powi(2) * g.signed_center_distance() * units::MM_PER_M * alpha_wt.sin();
+        // ρ_redC = u/(1+u)² · a sin α_wt / cos β_b (helical pairs; cos β_b = 1 for spur); u and a
+        // negative for an internal pair (ISO 21771), where it is ρ1ρ2/(ρ2 − ρ1).
         let rho = if g.is_helical() { rho / g.base_helix_angle.cos() } else { rho };
         let eta = t.dynamic_viscosity * units::CP_PER_PA_S;
         let ra = Needs::RoughnessRa.of(t.ra_mean)? * units::UM_PER_M;

@@ -20,3 +20,4 @@ pub use contact::{ContactPoint, OperatingState};
 pub use involute::involute;
 pub use mesh::{Contacts, Mesh};
 pub use pair::{GeometryProblem, PairGeometry, PairInput, PairPart, TipSource};
+pub use pair_checks::trochoid_margin;

@@ -16,7 +16,10 @@ use serde::Serialize;
 
 pub(crate) use super::involute::inverse_involute;
 pub(crate) use super::involute::involute;
-use super::pair_checks::{centre_distance, contact_ratios, interference, too_few_teeth, tooth_shapes, TeethShape};
+use super::pair_checks::{
+    centre_distance, contact_ratios, interference, too_few_teeth, tooth_shapes, trochoid_interference, TeethShape,
+};
+use super::pair_input::wheel_sign;
 pub use super::pair_input::{GeometryProblem, PairInput, PairPart};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
@@ -50,7 +53,7 @@ pub struct PairGeometry {
     pub teeth: [u32; 2],
     pub profile_shift: [f64; 2],
     pub face_width: f64,
-    /// u = z2/z1
+    /// u = z2/z1, negative for an internal pair (ISO 21771: z2 < 0).
     pub gear_ratio: f64,
     pub pitch_radius: [f64; 2],
     pub base_radius: [f64; 2],
@@ -67,7 +70,8 @@ pub struct PairGeometry {
     pub working_pitch_radius: [f64; 2],
     /// Transverse base pitch p_bt = π m_t cos α_t (p_b = π m cos α for a spur pair).
     pub base_pitch: f64,
-    /// T1T2 = a sin α_w
+    /// T1T2 = a sin α_w; negative for an internal pair (ISO 21771's a < 0: T2 lies on T1's side of P,
+    /// beyond T1).
     pub line_of_action_length: f64,
     /// T1A, T1B, T1P, T1D, T1E
     pub points: LoaPoints,
@@ -79,6 +83,10 @@ pub struct PairGeometry {
     pub tip_thickness: [f64; 2],
     /// Smallest profile shift free of undercut, x_min = 1 − z sin²α / 2 (h_a0* = 1).
     pub undercut_limit: [f64; 2],
+    /// An internal pair (the wheel a ring, ISO 21771): `gear_ratio`, `line_of_action_length` and the
+    /// wheel's radius of curvature carry ISO's negative sign, every radius and the centre distance
+    /// are magnitudes.
+    pub internal: bool,
     /// Start of the generated involute (form circle) along the line of action from the gear's own T:
     /// T_iF_i = r_i sin α_t − (1 − x_i) m_n / sin α_t (rack addendum 1·m_n).
     pub involute_start: [f64; 2],
@@ -115,6 +123,8 @@ impl PairGeometry {
         let beta_b = (beta.tan() * alpha.cos()).atan();
         let z = [input.teeth[0] as f64, input.teeth[1] as f64];
         let x = input.profile_shift;
+        // ISO 21771's sign of the wheel: a ring's teeth, diameters and centre distance are negative.
+        let s2 = wheel_sign(input.internal);
         problems.extend(too_few_teeth(input));
         if !problems.is_empty() {
             return Err(problems);
@@ -122,9 +132,10 @@ impl PairGeometry {
         let r = [m * z[0] / 2.0, m * z[1] / 2.0];
         let rb = [r[0] * alpha.cos(), r[1] * alpha.cos()];
         let (ra, tip_source) = tip_radii(input, m, z);
-        let inv_w0 = involute(alpha) + 2.0 * alpha_n.tan() * (x[0] + x[1]) / (z[0] + z[1]);
+        let inv_w0 = involute(alpha) + 2.0 * alpha_n.tan() * (x[0] + x[1]) / (z[0] + s2 * z[1]);
         let alpha_w0 = inverse_involute(inv_w0);
-        let a0 = (rb[0] + rb[1]) / alpha_w0.cos();
+        // |a| = |r_b1 + r_b2| / cos α_w with the signed radii: r_b2 − r_b1 for a ring.
+        let a0 = (rb[0] + s2 * rb[1]).abs() / alpha_w0.cos();
         let Some((a, alpha_w)) = centre_distance(input, rb, (a0, alpha_w0), &mut problems) else {
             return Err(problems);
         };
@@ -140,13 +151,18 @@ impl PairGeometry {
         if !problems.is_empty() {
             return Err(problems);
         }
-        let t1t2 = a * alpha_w.sin();
+        // Signed along the line of action (ISO 21771): a ring's T2 and its tip's point A lie on the
+        // T1 side of P, so T1T2 and T2A are negative and T1A = T1T2 − T2A = √(r_a2² − r_b2²) − |a| sin α_w.
+        let t1t2 = s2 * a * alpha_w.sin();
         let t1e = (ra[0] * ra[0] - rb[0] * rb[0]).sqrt();
-        let t2a = (ra[1] * ra[1] - rb[1] * rb[1]).sqrt();
+        let t2a = s2 * (ra[1] * ra[1] - rb[1] * rb[1]).sqrt();
         let t1a = t1t2 - t2a;
         let t1p = rb[0] * alpha_w.tan();
         let pb = PI * m * alpha.cos();
-        problems.extend(interference(t1a, t1e, t1t2, rb));
+        problems.extend(interference(t1a, t1e, t1t2, rb, input.internal));
+        if input.internal && problems.is_empty() {
+            problems.extend(trochoid_interference(input.teeth, rb, ra, a, alpha_w));
+        }
         if !problems.is_empty() {
             return Err(problems);
         }
@@ -168,7 +184,7 @@ impl PairGeometry {
             teeth: input.teeth,
             profile_shift: x,
             face_width: input.face_width,
-            gear_ratio: z[1] / z[0],
+            gear_ratio: s2 * z[1] / z[0],
             pitch_radius: r,
             base_radius: rb,
             tip_radius: ra,
@@ -186,6 +202,7 @@ impl PairGeometry {
             addendum_contact_ratio: [(t1e - t1p) / pb, (t1p - t1a) / pb],
             tip_thickness,
             undercut_limit,
+            internal: input.internal,
             involute_start,
         })
     }
@@ -202,10 +219,13 @@ fn tip_radii(input: &PairInput, m: f64, z: [f64; 2]) -> ([f64; 2], [TipSource; 2
             Some(d) => d / 2.0,
             None => {
                 tip_source[i] = TipSource::AddendumRule;
+                // ISO 21771 with signed diameters, d_a = d + 2 m_n (1 + x): a ring's tip lies inside its
+                // reference circle, |d_a2| = |d2| − 2 m_n (1 + x2).
+                let sign = if i == 1 { wheel_sign(input.internal) } else { 1.0 };
                 if beta == 0.0 {
-                    m * (z[i] + 2.0 + 2.0 * x[i]) / 2.0
+                    m * (z[i] + sign * (2.0 + 2.0 * x[i])) / 2.0
                 } else {
-                    m * z[i] / 2.0 + input.module * (1.0 + x[i])
+                    m * z[i] / 2.0 + sign * input.module * (1.0 + x[i])
                 }
             }
         };

@@ -10,14 +10,25 @@ use super::pair_input::{gear_name, GeometryProblem, PairInput, PairPart, MAX_TOT
 
 /// A gear needs at least 5 teeth.
 pub(super) fn too_few_teeth(input: &PairInput) -> Vec<GeometryProblem> {
-    (0..2)
+    let mut problems: Vec<GeometryProblem> = (0..2)
         .filter(|&i| input.teeth[i] < 5)
         .map(|i| GeometryProblem {
             part: PairPart::Teeth(i),
             reason: format!("{} teeth are too few for an involute gear", input.teeth[i]),
             hint: "a spur gear needs at least 5 teeth".into(),
         })
-        .collect()
+        .collect();
+    if input.internal && input.teeth[1] <= input.teeth[0] {
+        problems.push(GeometryProblem {
+            part: PairPart::Teeth(1),
+            reason: format!(
+                "a ring of {} teeth cannot hold a pinion of {}: an internal pair needs more teeth on the ring",
+                input.teeth[1], input.teeth[0]
+            ),
+            hint: "a ring needs at least 10 teeth more than its pinion to clear the tips (z2 − z1 ≥ 10 for 20°)".into(),
+        });
+    }
+    problems
 }
 
 /// The centre distance a and the operating pressure angle α_w: the given a (cos α_w = (r_b1 + r_b2)/a)
@@ -30,14 +41,16 @@ pub(super) fn centre_distance(
     problems: &mut Vec<GeometryProblem>,
 ) -> Option<(f64, f64)> {
     let Some(a) = input.center_distance else { return Some((a0, alpha_w0)) };
-    let c = (rb[0] + rb[1]) / a;
-    if c >= 1.0 {
+    // |r_b1 + r_b2| with ISO 21771's signed radii: their difference for an internal pair.
+    let (span, of) = if input.internal { (rb[1] - rb[0], "difference") } else { (rb[0] + rb[1], "sum") };
+    let c = span / a;
+    if c >= 1.0 || c <= 0.0 {
         problems.push(GeometryProblem {
             part: PairPart::CenterDistance,
             reason: format!(
-                "centre distance {:.4} mm is not larger than the sum of the base radii {:.4} mm",
+                "centre distance {:.4} mm is not larger than the {of} of the base radii {:.4} mm",
                 a * 1e3,
-                (rb[0] + rb[1]) * 1e3
+                span * 1e3
             ),
             hint: format!("the zero-backlash centre distance of this pair is {:.4} mm", a0 * 1e3),
         });
@@ -45,7 +58,24 @@ pub(super) fn centre_distance(
     }
     // Below the zero-backlash centre distance the teeth collide: not a pair that can be
     // assembled. Allowed: 1e-3 m of rounding in the given value (FZG C: 91.5 against 91.5001 mm).
-    if a < a0 - 1e-3 * input.module {
+    // An internal pair collides the other way: the pinion moves into the ring's teeth as a grows.
+    if input.internal && a > a0 + 1e-3 * input.module {
+        problems.push(GeometryProblem {
+            part: PairPart::CenterDistance,
+            reason: format!(
+                "centre distance {:.4} mm of the internal pair is {:.4} mm above the zero-backlash centre distance {:.4} mm (α_w = {:.4}°): the pinion's teeth would cut into the ring's",
+                a * 1e3,
+                (a - a0) * 1e3,
+                a0 * 1e3,
+                alpha_w0.to_degrees()
+            ),
+            hint: format!(
+                "give a centre distance of at most {:.4} mm, leave it out for zero backlash, or lower the profile shifts' sum",
+                a0 * 1e3
+            ),
+        });
+    }
+    if !input.internal && a < a0 - 1e-3 * input.module {
         problems.push(GeometryProblem {
             part: PairPart::CenterDistance,
             reason: format!(
@@ -85,7 +115,9 @@ pub(super) fn tooth_shapes(
     let z = [input.teeth[0] as f64, input.teeth[1] as f64];
     let mut tip_thickness = [0.0; 2];
     for i in 0..2 {
-        if x[i] < undercut_limit[i] - 1e-9 {
+        // A ring is cut by a pinion-type cutter, not a rack: the rack's undercut limit is not its.
+        let ring = i == 1 && input.internal;
+        if !ring && x[i] < undercut_limit[i] - 1e-9 {
             problems.push(GeometryProblem {
                 part: PairPart::ProfileShift(i),
                 reason: format!(
@@ -112,8 +144,11 @@ pub(super) fn tooth_shapes(
             continue;
         }
         let alpha_a = (rb[i] / ra[i]).acos();
-        tip_thickness[i] =
-            2.0 * ra[i] * ((PI / 2.0 + 2.0 * x[i] * alpha_n.tan()) / z[i] + involute(alpha) - involute(alpha_a));
+        // ISO 21771 with a ring's r_a and z negative: s_a2 = 2|r_a2| ((π/2 + 2 x tan α_n)/|z2| − inv α_t + inv α_a2).
+        let sign = if ring { -1.0 } else { 1.0 };
+        tip_thickness[i] = 2.0
+            * ra[i]
+            * ((PI / 2.0 + 2.0 * x[i] * alpha_n.tan()) / z[i] + sign * (involute(alpha) - involute(alpha_a)));
         if tip_thickness[i] <= 0.0 {
             problems.push(GeometryProblem {
                 part: if input.tip_diameter[i].is_some() {
@@ -134,9 +169,25 @@ pub(super) fn tooth_shapes(
 }
 
 /// Each tip circle must end the path before the mate's interference point: A = T1T2 − T2A > 0 (the
-/// wheel's tip short of T1) and E = T1E < T1T2 (the pinion's short of T2).
-pub(super) fn interference(t1a: f64, t1e: f64, t1t2: f64, rb: [f64; 2]) -> Vec<GeometryProblem> {
+/// wheel's tip short of T1) and E = T1E < T1T2 (the pinion's short of T2). For an internal pair
+/// T1T2 < 0 and only the ring's tip can reach T1 (involute interference with the pinion's root:
+/// √(r_a2² − r_b2²) > |T1T2|); the pinion's tip moves away from T2.
+pub(super) fn interference(t1a: f64, t1e: f64, t1t2: f64, rb: [f64; 2], internal: bool) -> Vec<GeometryProblem> {
     let mut problems = Vec::new();
+    if internal && t1a <= 0.0 {
+        problems.push(GeometryProblem {
+            part: PairPart::TipDiameter(1),
+            reason: format!(
+                "the ring's tip circle reaches {:.4} mm beyond the pinion's interference point T1 (involute interference with the pinion's root)",
+                -t1a * 1e3
+            ),
+            hint: format!("raise the ring's tip diameter above {:.4} mm", 2e3 * (t1t2 * t1t2 + rb[1] * rb[1]).sqrt()),
+        });
+        return problems;
+    }
+    if internal {
+        return problems;
+    }
     if t1a <= 0.0 {
         problems.push(GeometryProblem {
             part: PairPart::TipDiameter(1),
@@ -183,5 +234,40 @@ pub(super) fn contact_ratios(eps: f64, overlap: f64) -> Option<GeometryProblem> 
             MAX_TOTAL_CONTACT_RATIO
         ),
         hint: "reduce the face width or the helix angle: more than 7 contact lines at once are not supported".into(),
+    })
+}
+
+/// Trochoid (tip-to-tip) interference of an internal pair: the pinion's tip, leaving contact, must
+/// clear the ring's tooth tip. With the magnitudes of the tip radii r_a1, r_a2 and the centre
+/// distance a (Stock Drive Products / KHK, *Elements of Metric Gear Technology*, eqs 5-6 to 5-8):
+/// θ1 = acos((r_a2² − r_a1² − a²)/(2 a r_a1)) + inv α_a1 − inv α_w,
+/// θ2 = acos((a² + r_a2² − r_a1²)/(2 a r_a2)); clear when θ1 z1/z2 + inv α_w − inv α_a2 ≥ θ2.
+/// Returns the margin θ1 z1/z2 + inv α_w − inv α_a2 − θ2 (rad, ≥ 0 when clear).
+pub fn trochoid_margin(teeth: [u32; 2], rb: [f64; 2], ra: [f64; 2], a: f64, alpha_w: f64) -> f64 {
+    let z = teeth.map(f64::from);
+    let inv_a1 = involute((rb[0] / ra[0]).acos());
+    let inv_a2 = involute((rb[1] / ra[1]).acos());
+    let clamp = |c: f64| c.clamp(-1.0, 1.0).acos();
+    let theta1 = clamp((ra[1] * ra[1] - ra[0] * ra[0] - a * a) / (2.0 * a * ra[0])) + inv_a1 - involute(alpha_w);
+    let theta2 = clamp((a * a + ra[1] * ra[1] - ra[0] * ra[0]) / (2.0 * a * ra[1]));
+    theta1 * z[0] / z[1] + involute(alpha_w) - inv_a2 - theta2
+}
+
+/// The trochoid interference of an internal pair as a problem, with the margin's numbers.
+pub(super) fn trochoid_interference(
+    teeth: [u32; 2],
+    rb: [f64; 2],
+    ra: [f64; 2],
+    a: f64,
+    alpha_w: f64,
+) -> Option<GeometryProblem> {
+    let margin = trochoid_margin(teeth, rb, ra, a, alpha_w);
+    (margin < 0.0).then(|| GeometryProblem {
+        part: PairPart::TipDiameter(1),
+        reason: format!(
+            "the pinion's tip fouls the ring's tip as it leaves contact (trochoid interference): θ1 z1/z2 + inv α_w − inv α_a2 − θ2 = {:.6} rad < 0 with z1 = {}, z2 = {}",
+            margin, teeth[0], teeth[1]
+        ),
+        hint: "raise the ring's teeth (z2 − z1 ≥ 10 clears a standard 20° pair), raise the ring's tip diameter or lower the pinion's".into(),
     })
 }

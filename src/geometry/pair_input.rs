@@ -18,6 +18,10 @@ pub struct PairInput {
     pub tip_diameter: [Option<f64>; 2],
     pub center_distance: Option<f64>,
     pub face_width: f64,
+    /// An internal pair: the wheel is a ring with its teeth inside (ISO 21771). Its teeth, diameters
+    /// and the centre distance are given as magnitudes; the geometry carries ISO's signs where the
+    /// physics reads them ([`super::pair::PairGeometry::wheel_sign`]).
+    pub internal: bool,
 }
 
 /// Which gear or quantity a geometry problem is about.
@@ -43,5 +47,15 @@ pub(crate) fn gear_name(i: usize) -> &'static str {
         "pinion"
     } else {
         "wheel"
+    }
+}
+
+/// The sign ISO 21771 gives the wheel's teeth, diameters and the centre distance: −1 for an
+/// internal pair (a ring), +1 for an external one.
+pub(crate) fn wheel_sign(internal: bool) -> f64 {
+    if internal {
+        -1.0
+    } else {
+        1.0
     }
 }

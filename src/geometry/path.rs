@@ -61,12 +61,26 @@ impl PairGeometry {
 
     /// The arm of the normal tooth force about gear `i`'s axis, r_b,i cos β_b: the normal force is
     /// inclined by β_b to the transverse plane (He & Singh eq 8; r_b,i for a spur pair).
+    ///
+    /// Signed as ISO 21771 signs the base radius: a ring's (i = 1 of an internal pair) is negative,
+    /// so the efficiency's formulas of an external pair hold for an internal one unchanged.
     pub fn normal_force_arm(&self, i: usize) -> f64 {
+        let sign = if i == 1 { self.wheel_sign() } else { 1.0 };
         if self.is_helical() {
-            self.base_radius[i] * self.base_helix_angle.cos()
+            sign * self.base_radius[i] * self.base_helix_angle.cos()
         } else {
-            self.base_radius[i]
+            sign * self.base_radius[i]
         }
+    }
+
+    /// ISO 21771's sign of the wheel's radii and teeth: −1 for a ring (an internal pair), else +1.
+    pub fn wheel_sign(&self) -> f64 {
+        super::pair_input::wheel_sign(self.internal)
+    }
+
+    /// The centre distance with ISO 21771's sign (negative for an internal pair).
+    pub fn signed_center_distance(&self) -> f64 {
+        self.wheel_sign() * self.center_distance
     }
 
     /// A force (or moment) per unit of the transverse force F_bn cos β_b, taken per unit of the normal
@@ -86,21 +100,28 @@ impl PairGeometry {
     }
 
     /// Involute start (form circle) of gear `i`, as a distance from T1.
+    /// A ring's flank is involute from its tip to its root (a pinion-type cutter generates it), so the
+    /// path never reaches a start: +∞.
     pub fn involute_start_from_t1(&self, i: usize) -> f64 {
         if i == 0 {
             self.involute_start[0]
+        } else if self.internal {
+            f64::INFINITY
         } else {
             self.line_of_action_length - self.involute_start[1]
         }
     }
 
-    /// ε_α by ISO 21771's tangent form, ε_α = [z1 (tan α_a1 − tan α_w) + z2 (tan α_a2 − tan α_w)] / 2π,
+    /// ε_α by ISO 21771's tangent form, ε_α = [z1 (tan α_a1 − tan α_w) + z2 (tan α_a2 − tan α_w)] / 2π
+    /// (z2 < 0 for an internal pair),
     /// independent of the line-of-action construction used by [`PairGeometry::compute`].
     pub fn contact_ratio_iso21771(&self) -> f64 {
         let mut sum = 0.0;
         for i in 0..2 {
+            // z2 < 0 for a ring (ISO 21771).
+            let z = if i == 1 { self.wheel_sign() } else { 1.0 } * self.teeth[i] as f64;
             let alpha_a = (self.base_radius[i] / self.tip_radius[i]).acos();
-            sum += self.teeth[i] as f64 * (alpha_a.tan() - self.operating_pressure_angle.tan());
+            sum += z * (alpha_a.tan() - self.operating_pressure_angle.tan());
         }
         sum / (2.0 * PI)
     }

@@ -136,6 +136,9 @@ fn gears_table(out: &mut String, r: &Report) {
     ];
     header(out, &cols);
     for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+        // A ring is cut by a pinion-type cutter: a rack's undercut limit says nothing of it.
+        let ring = g.internal && name == "wheel";
+        let name = if ring { "wheel (ring)" } else { name };
         row(
             out,
             &[
@@ -151,7 +154,7 @@ fn gears_table(out: &mut String, r: &Report) {
                 len.q(&gr.working_pitch_diameter, 4),
                 fixed(gr.addendum_contact_ratio.0, 4),
                 len.q(&gr.tip_thickness, 4),
-                fixed(gr.undercut_limit.0, 4),
+                if ring { "—".into() } else { fixed(gr.undercut_limit.0, 4) },
             ],
         );
     }

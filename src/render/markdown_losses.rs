@@ -29,6 +29,7 @@ pub(crate) fn headline_body(r: &Report) -> String {
     } else {
         "spur pair".to_string()
     };
+    let kind = if g.internal { format!("internal {kind} (the wheel a ring)") } else { kind };
     let u = r.units();
     let oil = r.lubricant.as_ref().map_or(String::new(), |l| match &l.temperature {
         Some(t) => format!(", {} at {:.0} {}", l.name, u.temperature().value(t.si()), u.temperature().unit),

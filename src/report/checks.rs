@@ -18,6 +18,10 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {}", len.with(2.0 * g.tip_radius[i], 4)),
+            TipSource::AddendumRule if i == 1 && g.internal => format!(
+                "ring tip diameter from the addendum rule with ISO 21771's signs, |d_a| = |d| − 2 m_n (1 + x) (inside the reference circle): {}",
+                len.with(2.0 * g.tip_radius[i], 4)
+            ),
             TipSource::AddendumRule if g.is_helical() => format!(
                 "{name} tip diameter from the addendum rule d_a = m_t z + 2 m_n (1 + x): {}",
                 len.with(2.0 * g.tip_radius[i], 4)
@@ -42,6 +46,18 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
                 "contact at {} from T1 lies below the {name}'s generated involute, which starts at {} (root interference with a rack-cut flank)",
                 len.with(contact_start, 4),
                 len.with(start, 4)
+            )));
+        }
+    }
+    if g.internal {
+        out.push(note(
+            "internal pair (ISO 21771's signs): u = z2/z1 < 0, T1T2 = a sin α_w < 0 (T2 beyond T1), the ring's radius of curvature ρ2 = T1T2 − T1C < 0 (concave), R = ρ1ρ2/(ρ1 + ρ2), v_s = ω1 (1 + 1/u) |s|".into(),
+        ));
+        let gap = g.teeth[1] as i64 - g.teeth[0] as i64;
+        if gap < 10 {
+            out.push(warn(format!(
+                "the ring has only {gap} teeth more than its pinion: below 10, standard 20° teeth risk tip fouling (trochoid interference passed here, with margin {:.5} rad)",
+                crate::geometry::trochoid_margin(g.teeth, g.base_radius, g.tip_radius, g.center_distance, g.operating_pressure_angle)
             )));
         }
     }

@@ -79,6 +79,9 @@ pub struct GeometryReport {
     pub load_sharing: LoadSharing,
     pub pinion: GearReport,
     pub wheel: GearReport,
+    /// An internal pair (the wheel a ring; ISO 21771's signs on u, T1T2 and the ring's ρ).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub internal: bool,
 }
 
 pub(super) fn gear_report(g: &PairGeometry, i: usize) -> GearReport {
@@ -138,6 +141,7 @@ pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
         ohlendorf_loss_factor: Num(eval.ohlendorf_loss_factor),
         reduced_modulus: pa(eval.reduced_modulus),
         load_sharing: eval.sharing,
+        internal: g.internal,
         pinion: gear_report(g, 0),
         wheel: gear_report(g, 1),
     }

@@ -128,7 +128,7 @@ pub(super) fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &Poin
         pinion_torque: Q::new(pe.state.pinion_torque, "N*m"),
         pinion_speed: Q::new(pe.state.pinion_speed, "rad/s"),
         label,
-        wheel_speed: Q::new(g.wheel_speed(&pe.state), "rad/s"),
+        wheel_speed: Q::new(g.wheel_speed(&pe.state).abs(), "rad/s"),
         normal_load: Q::new(g.normal_load(&pe.state), "N"),
         mesh_period: Q::new(pe.mesh_period, "s"),
         pitch_line_velocity: mps(pe.state.pinion_speed * g.working_pitch_radius[0]),

@@ -126,7 +126,14 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     if !lubricant_failed {
         check_film_needs(&analyses, lubricant.as_ref(), &mut errors);
     }
-    if let Some(g) = gears.as_ref().filter(|g| g.wants_teeth(&analyses, dynamics.as_ref())) {
+    if let Some(g) = gears.as_ref().filter(|g| g.internal) {
+        let wants = super::lower_gears::InternalPairWants {
+            teeth: g.wants_teeth(&analyses, dynamics.as_ref()),
+            dynamics: analyses.dynamics_span,
+            gearbox: singles.get("gearbox").map(|b| b.kind.span),
+        };
+        super::lower_gears::check_internal_pair(g, &wants, &mut errors);
+    } else if let Some(g) = gears.as_ref().filter(|g| g.wants_teeth(&analyses, dynamics.as_ref())) {
         super::lower_teeth::check_teeth(g, &mut errors);
     }
     let equilibrium = operating.as_ref().and_then(|o| o.equilibrium);

@@ -25,6 +25,7 @@ const GEARS_KEYS: &[&str] = &[
     "center_distance",
     "face_width",
     "load_sharing",
+    "mesh",
 ];
 const GEAR_KEYS: &[&str] = &[
     "teeth",
@@ -79,6 +80,7 @@ pub(super) fn lower_gears(
         Some("stiffness") => LoadSharing::Stiffness,
         _ => LoadSharing::Equal,
     };
+    let internal = f.name("mesh", &["external", "internal"], errors).is_some_and(|n| n.text == "internal");
     let mut gear = |name: &str| -> Option<Gear> {
         let found: Vec<&&Block> = f.blocks.iter().filter(|b| b.kind.text == name).collect();
         match found.as_slice() {
@@ -118,6 +120,7 @@ pub(super) fn lower_gears(
         load_sharing,
         pinion: pinion?,
         wheel: wheel?,
+        internal,
         span: block.kind.span,
     };
     if let (Some(b), LoadSharing::None) = (&pair.helix_angle, pair.load_sharing) {
@@ -238,6 +241,7 @@ impl GearPair {
             tip_diameter: [g(&self.pinion.tip_diameter), g(&self.wheel.tip_diameter)],
             center_distance: g(&self.center_distance),
             face_width: self.face_width.value.get::<meter>(),
+            internal: self.internal,
         }
     }
 
@@ -263,5 +267,41 @@ pub(super) fn check_geometry(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> O
             }
             None
         }
+    }
+}
+
+/// What a scene asks of its internal pair that the tool does not model for one.
+pub(super) struct InternalPairWants {
+    /// The teeth's stiffness (load sharing by stiffness, tip relief, bodies, transmission error).
+    pub teeth: bool,
+    pub dynamics: Option<crate::diagnostics::Span>,
+    pub gearbox: Option<crate::diagnostics::Span>,
+}
+
+/// An internal pair (`mesh = internal`) is evaluated along its path of contact (every law, both
+/// formulations, the film): its teeth's stiffness, its dynamics and a loss budget on shafts are
+/// external-pair models, refused here with the way on.
+pub(super) fn check_internal_pair(pair: &GearPair, wants: &InternalPairWants, errors: &mut Vec<Diagnostic>) {
+    if wants.teeth {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                pair.span,
+                "the teeth's stiffness (load sharing by stiffness, tip relief, gear bodies, transmission error) is modelled for external pairs only",
+            )
+            .hint("an internal pair shares its load equally: leave out `load_sharing = stiffness`, `tip_relief`, `root_diameter`, `bore_diameter` and `transmission_error`"),
+        );
+    }
+    if let Some(span) = wants.dynamics {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, "the dynamic models are written for external pairs")
+                .hint("leave out `dynamics`, `stability_map` and `numerics` for an internal pair"),
+        );
+    }
+    if let Some(span) = wants.gearbox {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, "a ring's loss budget on shafts is the planetary stage's")
+                .hint("describe the ring in a drive's `planetary` stage, where its bearings, the planets' and the carrier's churning are charged"),
+        );
     }
 }

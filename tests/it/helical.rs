@@ -20,6 +20,7 @@ pub(crate) fn nasa_art(beta_deg: f64) -> PairGeometry {
         tip_diameter: [Some(3.38 * 25.4e-3), Some(4.13 * 25.4e-3)],
         center_distance: Some(3.5 * 25.4e-3),
         face_width: 1.25 * 25.4e-3,
+        internal: false,
     })
     .unwrap()
 }

@@ -177,6 +177,7 @@ fn ohlendorf_is_the_slice_model_not_constant_density() {
         tip_diameter: [Some(3.38 * 25.4e-3), Some(4.13 * 25.4e-3)],
         center_distance: Some(3.5 * 25.4e-3),
         face_width: b,
+        internal: false,
     };
     let g1 = PairGeometry::compute(&input).unwrap();
     assert!((g1.overlap_ratio - 1.0).abs() < 1e-12);

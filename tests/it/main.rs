@@ -16,6 +16,7 @@ mod fuzz_mutations;
 mod geometry;
 mod helical;
 mod helical_physics;
+mod internal_pair;
 mod load_sharing;
 mod losses;
 mod oil_sweep;
@@ -54,5 +55,6 @@ pub fn high_contact_ratio_input() -> gearloss::geometry::PairInput {
         tip_diameter: [Some(127.2e-3), Some(187.2e-3)],
         center_distance: None,
         face_width: 0.025,
+        internal: false,
     }
 }

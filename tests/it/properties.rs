@@ -26,6 +26,7 @@ fn pair() -> impl Strategy<Value = PairGeometry> {
                 tip_diameter: [None, None],
                 center_distance: None,
                 face_width: 10.0 * m,
+                internal: false,
             })
             .ok()
         },

@@ -63,6 +63,7 @@ fn one_to_one_pair_is_symmetric() {
         tip_diameter: [None, None],
         center_distance: None,
         face_width: 0.02,
+        internal: false,
     })
     .unwrap();
     let k = PairStiffness::new(&g, &steel()).unwrap();
@@ -203,6 +204,7 @@ fn maximum_mesh_stiffness_against_ross() {
         tip_diameter: [Some(128e-3), Some(128e-3)],
         center_distance: None,
         face_width: 0.02,
+        internal: false,
     })
     .unwrap();
     let b = Bodies { young: [211e9; 2], poisson: [0.3; 2], root_radius: [None; 2], bore_radius: [Some(0.0175); 2] };
