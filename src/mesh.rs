@@ -26,6 +26,11 @@ impl SceneDrive {
     pub fn mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> Mesh<'a> {
         Mesh { gears: &self.pairs[k], lubricant }
     }
+
+    /// Planetary stage `k`'s planet–ring mesh in `lubricant`, if stage `k` is planetary.
+    pub fn ring_mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> Option<Mesh<'a>> {
+        self.ring_pairs[k].as_ref().map(|gears| Mesh { gears, lubricant })
+    }
 }
 
 impl Mesh<'_> {

@@ -61,7 +61,10 @@ pub struct Scene {
 #[derive(Debug, Clone)]
 pub struct SceneDrive {
     pub layout: crate::drive::Drive,
+    /// Each stage's pair: a planetary stage's sun–planet pair (the sun as pinion).
     pub pairs: Vec<GearPair>,
+    /// A planetary stage's planet–ring pair (internal, the planet as pinion); None for a parallel stage.
+    pub ring_pairs: Vec<Option<GearPair>>,
     /// A vehicle over a drive cycle, with the box as its drive.
     pub cycle: Option<DriveCycleSpec>,
 }

@@ -74,7 +74,8 @@ pub struct Shaft {
 
 /// One stage: its kind (the kinematics catalogue), its two gears' places, the teeth and the
 /// pinion's hand, its direction φ (rad; the line from the pinion shaft's centre to the wheel
-/// shaft's, seen from +z), its lubrication (the no-load parts, charged on the pinion's shaft).
+/// shaft's, seen from +z; a planetary stage's first planet), its lubrication (the no-load parts,
+/// charged on the pinion's shaft; a planetary stage's on its carrier's, else its sun's).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stage {
     pub name: String,
@@ -86,9 +87,21 @@ pub struct Stage {
     pub hand: Option<Hand>,
     pub direction: f64,
     pub lubrication: Option<Lubrication>,
+    /// A planetary stage's layout (its places carry two of sun, ring and carrier); None for a
+    /// parallel stage.
+    pub planetary: Option<super::planetary::PlanetaryLayout>,
 }
 
 impl Stage {
+    /// The name of the member on place `m`: pinion or wheel, or a planetary stage's sun, ring or
+    /// carrier.
+    pub fn member_name(&self, m: Member) -> &'static str {
+        match &self.planetary {
+            Some(p) => p.members[m.index()].name(),
+            None => m.name(),
+        }
+    }
+
     /// The member on `shaft`, if the stage has a gear there.
     pub fn member_on(&self, shaft: usize) -> Option<Member> {
         [Member::Pinion, Member::Wheel].into_iter().find(|m| self.places[m.index()].shaft == shaft)

@@ -17,6 +17,7 @@
 pub(crate) mod forces;
 pub mod kinematics;
 pub(crate) mod layout;
+pub mod planetary;
 pub(crate) mod point;
 pub(crate) mod speeds;
 pub mod statics;

@@ -88,6 +88,21 @@ pub struct StagePoint {
     pub tangential_force: f64,
     pub radial_force: f64,
     pub axial_force: f64,
+    /// A planetary stage's members, meshes and planets.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub planetary: Option<Box<super::planetary::PlanetaryPoint>>,
+}
+
+impl StagePoint {
+    /// The name of the member on place `m`: pinion or wheel, or a planetary stage's sun, ring or
+    /// carrier.
+    pub fn member_name(&self, m: Member) -> &'static str {
+        match &self.planetary {
+            Some(p) if m == self.driving => p.driving_member.name(),
+            Some(p) => p.driven_member.name(),
+            None => m.name(),
+        }
+    }
 }
 
 /// The parts of the total loss (W).

@@ -13,6 +13,7 @@
 use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
 use super::kinematics::StageKindId;
 use super::layout::{Drive, Member, ShaftEnd};
+use super::planetary;
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use super::statics::shaft_reactions;
@@ -31,6 +32,9 @@ pub trait MeshEfficiency {
     /// η of stage `stage` when member `driving` puts `torque` (N·m, > 0) into the mesh at `speed`
     /// (rad/s, > 0).
     fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64;
+    /// η of one mesh of planetary stage `stage` when its pinion carries `torque` (N·m per planet,
+    /// > 0) at `speed` (rad/s in the carrier's frame, > 0).
+    fn planet_mesh(&self, stage: usize, mesh: super::planetary::PlanetMesh, torque: f64, speed: f64) -> f64;
 }
 
 /// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
@@ -71,12 +75,13 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
             break;
         }
     }
-    walk.point(model, &state, &fixed, passes)
+    walk.point(model, meshes, &state, &fixed, passes)
 }
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
 /// its driving member.
 struct Walk<'a> {
+    drive: &'a Drive,
     omega: &'a [f64],
     flow: PowerFlow,
     shafts: Vec<usize>,
@@ -126,7 +131,7 @@ struct FixedLosses {
 }
 
 impl<'a> Walk<'a> {
-    fn new(model: &DriveModel, omega: &'a [f64], flow: PowerFlow) -> Walk<'a> {
+    fn new(model: &DriveModel<'a>, omega: &'a [f64], flow: PowerFlow) -> Walk<'a> {
         let drive = model.drive;
         let mut shafts = drive.shaft_order();
         let mut steps: Vec<(usize, Member)> = drive.chain.clone();
@@ -134,7 +139,12 @@ impl<'a> Walk<'a> {
             shafts.reverse();
             steps = steps.into_iter().rev().map(|(k, m)| (k, m.other())).collect();
         }
-        Walk { omega, flow, shafts, steps }
+        Walk { drive, omega, flow, shafts, steps }
+    }
+
+    /// The speeds of stage `k`'s two places (rad/s, signed).
+    fn places(&self, k: usize) -> [f64; 2] {
+        self.drive.stages[k].places.map(|p| self.omega[p.shaft])
     }
 
     fn fixed_losses(&self, model: &DriveModel) -> FixedLosses {
@@ -151,13 +161,19 @@ impl<'a> Walk<'a> {
             .iter()
             .zip(model.sizes)
             .map(|(stage, sizes)| {
-                let running = GearsRunning {
-                    omega: stage.places.map(|p| self.omega[p.shaft].abs()),
-                    pitch_radius: sizes.working_pitch_radius,
-                    face_width: sizes.face_width,
+                let (place, running) = match &stage.planetary {
+                    Some(layout) => layout.churning(layout.member_speeds(stage.places.map(|p| self.omega[p.shaft]))),
+                    None => (
+                        0,
+                        GearsRunning {
+                            omega: stage.places.map(|p| self.omega[p.shaft].abs()),
+                            pitch_radius: sizes.working_pitch_radius,
+                            face_width: sizes.face_width,
+                        },
+                    ),
                 };
                 let p = stage.lubrication.as_ref().and_then(|l| l.power_loss(&running, model.oil)).unwrap_or(0.0);
-                gear_no_load[stage.places[0].shaft] += p;
+                gear_no_load[stage.places[place].shaft] += p;
                 p
             })
             .collect();
@@ -188,6 +204,8 @@ impl<'a> Walk<'a> {
         let eta = |k: usize, m: Member, torque: f64, speed: f64| {
             if torque == 0.0 || speed == 0.0 {
                 1.0
+            } else if let Some(layout) = &self.drive.stages[k].planetary {
+                planetary::charges::state(meshes, k, layout, m, torque.abs(), self.places(k)).efficiency
             } else {
                 meshes.efficiency(k, m, torque.abs(), speed)
             }
@@ -234,9 +252,11 @@ impl<'a> Walk<'a> {
             .iter()
             .flat_map(|&(k, m)| {
                 let stage = &model.drive.stages[k];
-                debug_assert_eq!(stage.kind, StageKindId::Parallel);
+                if stage.kind == StageKindId::Planetary {
+                    return planetary::loads::member_loads(k, stage, m.index(), torques[k].abs(), self.places(k));
+                }
                 let omega = self.omega[stage.places[m.index()].shaft];
-                mesh_forces((k, stage), &model.sizes[k], m, torques[k], omega)
+                mesh_forces((k, stage), &model.sizes[k], m, torques[k], omega).to_vec()
             })
             .collect()
     }
@@ -278,11 +298,27 @@ impl<'a> Walk<'a> {
                 });
             }
         }
+        for &(k, m) in &self.steps {
+            let stage = &model.drive.stages[k];
+            if let Some((j, b)) =
+                planetary::charges::planet_bearings(stage, m, torques[k].abs(), self.places(k), model.oil)
+            {
+                powers[j] += b.no_load + b.load;
+                places[j].push(b);
+            }
+        }
         (powers, places, loads)
     }
 
     /// The drive point of the settled pass `p`.
-    fn point(&self, model: &DriveModel, p: &Pass, fixed: &FixedLosses, passes: usize) -> DrivePoint {
+    fn point(
+        &self,
+        model: &DriveModel,
+        meshes: &dyn MeshEfficiency,
+        p: &Pass,
+        fixed: &FixedLosses,
+        passes: usize,
+    ) -> DrivePoint {
         let drive = model.drive;
         let (_, places, loads) = self.bearing_powers(model, &p.driving_torque);
         let torque = |power: f64, j: usize| if self.omega[j] == 0.0 { 0.0 } else { power / self.omega[j].abs() };
@@ -314,7 +350,16 @@ impl<'a> Walk<'a> {
                 let kinematics = (stage.kind.entry().kinematics)(stage);
                 let t = p.driving_torque[k];
                 let d = m.index();
-                let [f_t, f_r, f_a] = sizes.magnitudes(m, t);
+                let planetary = stage.planetary.as_ref().map(|_| {
+                    let bearings = planetary::charges::planet_bearings(stage, m, t.abs(), self.places(k), model.oil)
+                        .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
+                    let parts = (bearings, fixed.stage_no_load[k]);
+                    Box::new(planetary::charges::point(meshes, k, stage, m, t.abs(), self.places(k), parts))
+                });
+                let [f_t, f_r, f_a] = match &planetary {
+                    Some(pp) => [pp.forces.tangential[0], pp.forces.radial[0], 0.0],
+                    None => sizes.magnitudes(m, t),
+                };
                 StagePoint {
                     name: stage.name.clone(),
                     driving: m,
@@ -327,6 +372,7 @@ impl<'a> Walk<'a> {
                     tangential_force: f_t,
                     radial_force: f_r,
                     axial_force: f_a,
+                    planetary,
                 }
             })
             .collect();

@@ -10,6 +10,7 @@
 use rayon::prelude::*;
 
 use super::setup::law_at;
+use crate::drive::planetary::PlanetMesh;
 use crate::drive::walk::DriveModel;
 use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes};
 use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
@@ -27,6 +28,40 @@ pub(crate) struct StageMesh {
     h_v: [f64; 2],
     tribology: Tribology,
     whole: bool,
+    /// A planetary stage's planet–ring mesh (internal, the planet as pinion).
+    ring: Option<RingMesh>,
+}
+
+/// A planetary stage's planet–ring mesh.
+pub(crate) struct RingMesh {
+    geometry: std::sync::Arc<PairGeometry>,
+    h_v: f64,
+    tribology: Tribology,
+}
+
+impl RingMesh {
+    fn of(
+        drive: &SceneDrive,
+        k: usize,
+        lubricant: Option<&crate::model::Lubricant>,
+        geometry: Option<std::sync::Arc<PairGeometry>>,
+    ) -> Option<RingMesh> {
+        let mesh = drive.ring_mesh(k, lubricant)?;
+        let tribology = mesh.tribology(mesh.reduced_modulus());
+        let geometry = geometry.unwrap_or_else(|| std::sync::Arc::new(mesh.geometry()));
+        let mut out = RingMesh { geometry, h_v: 0.0, tribology };
+        out.h_v = ohlendorf_loss_factor(&out.context(1.0, 1.0));
+        Some(out)
+    }
+
+    fn context(&self, torque: f64, speed: f64) -> LawContext<'_> {
+        LawContext {
+            geometry: &self.geometry,
+            state: OperatingState { pinion_torque: torque, pinion_speed: speed },
+            tribology: self.tribology,
+            sharing: Sharing::Equal,
+        }
+    }
 }
 
 impl StageMesh {
@@ -39,7 +74,8 @@ impl StageMesh {
             swapped(&drive.pairs[k]).geometry().expect("a pair's geometry holds with the roles swapped"),
         ]);
         let whole = drive.pairs[k].load_sharing == LoadSharing::None;
-        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole };
+        let ring = RingMesh::of(drive, k, scene.lubricant.as_ref(), None);
+        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole, ring };
         for d in 0..2 {
             out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
         }
@@ -87,6 +123,21 @@ impl MeshEfficiency for LawMeshes<'_> {
         let ctx = s.context(d, torque, speed);
         let law = law_at(self.spec, &ctx);
         1.0 - charged_mesh_loss(&ctx, &*law, self.formulation, s.h_v[d]) / (torque * speed)
+    }
+
+    fn planet_mesh(&self, stage: usize, mesh: PlanetMesh, torque: f64, speed: f64) -> f64 {
+        let s = &self.stages[stage];
+        match mesh {
+            PlanetMesh::SunPlanet { sun_drives } => {
+                self.efficiency(stage, if sun_drives { Member::Pinion } else { Member::Wheel }, torque, speed)
+            }
+            PlanetMesh::PlanetRing => {
+                let ring = s.ring.as_ref().expect("a planetary stage has its ring mesh");
+                let ctx = ring.context(torque, speed);
+                let law = law_at(self.spec, &ctx);
+                1.0 - charged_mesh_loss(&ctx, &*law, self.formulation, ring.h_v) / (torque * speed)
+            }
+        }
     }
 }
 
@@ -140,6 +191,7 @@ impl<'a> DriveSetup<'a> {
                     h_v: s.h_v,
                     tribology: mesh.tribology(mesh.reduced_modulus()),
                     whole: s.whole,
+                    ring: RingMesh::of(self.drive, k, lubricant.as_ref(), s.ring.as_ref().map(|r| r.geometry.clone())),
                 }
             })
             .collect();
@@ -162,14 +214,23 @@ impl<'a> DriveSetup<'a> {
             .enumerate()
             .map(|(k, s)| {
                 let mesh = &self.stages[k];
-                let d = s.driving.index();
-                let ctx = mesh.context(d, s.driving_torque.abs().max(f64::MIN_POSITIVE), s.driving_speed);
-                let built = law_at(&self.scene.friction[law], &ctx);
-                let p = mesh.geometry[d].points;
-                let contacts: Vec<_> = (0..VALIDITY_SAMPLES)
-                    .map(|i| ctx.contact_at(p.a + (p.e - p.a) * i as f64 / (VALIDITY_SAMPLES - 1) as f64))
-                    .collect();
-                super::laws::validity_summary(&*built, &contacts)
+                let spec = &self.scene.friction[law];
+                let Some(pp) = &s.planetary else {
+                    let d = s.driving.index();
+                    let ctx = mesh.context(d, s.driving_torque.abs().max(f64::MIN_POSITIVE), s.driving_speed);
+                    return validity_along(spec, &ctx);
+                };
+                // A planetary stage: both meshes at their pinions' loads and rolling speeds.
+                let torque = |t: f64| t.max(f64::MIN_POSITIVE);
+                let d = if pp.sun_drives_meshes { 0 } else { 1 };
+                let sun = validity_along(spec, &mesh.context(d, torque(pp.mesh_torque[0]), pp.mesh_speed[0]));
+                let ring = mesh.ring.as_ref().expect("a planetary stage has its ring mesh");
+                let at_ring = validity_along(spec, &ring.context(torque(pp.mesh_torque[1]), pp.mesh_speed[1]));
+                super::laws::ValiditySummary {
+                    samples: sun.samples + at_ring.samples,
+                    outside: sun.outside + at_ring.outside,
+                    intervals: sun.intervals.into_iter().chain(at_ring.intervals).collect(),
+                }
             })
             .collect()
     }
@@ -220,4 +281,14 @@ impl<'a> DriveSetup<'a> {
             })
             .collect()
     }
+}
+
+/// A law's validity at [`VALIDITY_SAMPLES`] contacts evenly from A to E of a mesh.
+fn validity_along(spec: &FrictionLawSpec, ctx: &LawContext) -> super::laws::ValiditySummary {
+    let built = law_at(spec, ctx);
+    let p = ctx.geometry.points;
+    let contacts: Vec<_> = (0..VALIDITY_SAMPLES)
+        .map(|i| ctx.contact_at(p.a + (p.e - p.a) * i as f64 / (VALIDITY_SAMPLES - 1) as f64))
+        .collect();
+    super::laws::validity_summary(&*built, &contacts)
 }

@@ -27,6 +27,10 @@ pub struct StageInputs {
     pub contact_ratio: f64,
     pub overlap_ratio: f64,
     pub lubrication: String,
+    /// A planetary stage (its `shafts`, `at_mm`, `teeth` are its two turning members' and the
+    /// sun's and ring's; its sizes the sun–planet mesh's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub planetary: Option<super::planetary_inputs::PlanetaryInputs>,
 }
 
 /// A shaft as the scene gives it.
@@ -47,7 +51,8 @@ pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
         .stages
         .iter()
         .zip(&drive.pairs)
-        .map(|(s, pair)| {
+        .zip(&drive.ring_pairs)
+        .map(|((s, pair), ring_pair)| {
             let g = pair.geometry().expect("lowering checked the pair");
             StageInputs {
                 name: s.name.clone(),
@@ -69,6 +74,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
                 contact_ratio: g.contact_ratio,
                 overlap_ratio: g.overlap_ratio,
                 lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), lubrication_words),
+                planetary: super::planetary_inputs::planetary_inputs(layout, s, ring_pair.as_ref()),
             }
         })
         .collect()

@@ -25,6 +25,7 @@ mod non_finite;
 pub mod number;
 pub(crate) mod numerics;
 pub(crate) mod oil_sweep;
+pub mod planetary_inputs;
 pub(crate) mod plausibility;
 pub(crate) mod points;
 pub(crate) mod scene;

@@ -63,20 +63,25 @@ pub(super) fn build_drive(
                 Diagnostic::new(
                     DiagnosticKind::OutOfRange,
                     s.places[1].0.span,
-                    "the stage's pinion and wheel are on the same shaft",
+                    "the stage's two members are on the same shaft",
                 )
-                .hint("a stage joins two shafts: put its wheel on another shaft"),
+                .hint("a stage joins two shafts: put its wheel (or a planetary stage's other turning member) on another shaft"),
             );
             continue;
         }
+        let planetary = s.planetary.as_ref().and_then(|d| planetary_layout(&s.pair, d));
         built.push(Stage {
             name: s.name.text.clone(),
-            kind: StageKindId::Parallel,
+            kind: if planetary.is_some() { StageKindId::Planetary } else { StageKindId::Parallel },
             places: [GearPlace { shaft: p, at: s.places[0].1 }, GearPlace { shaft: w, at: s.places[1].1 }],
-            teeth: [s.pair.pinion.teeth.value, s.pair.wheel.teeth.value],
+            teeth: match &planetary {
+                Some(l) => [l.teeth[0], l.teeth[2]],
+                None => [s.pair.pinion.teeth.value, s.pair.wheel.teeth.value],
+            },
             hand: s.hand,
             direction: s.direction.as_ref().map_or(0.0, |d| d.value.value),
             lubrication: s.lubrication,
+            planetary,
         });
     }
     if errors.len() > before {
@@ -221,6 +226,23 @@ fn check_layout(decls: &[StageDecl], stages: &[Stage], shafts: &[ShaftDecl], err
         let Ok(g) = d.pair.geometry() else { continue };
         let (dx, dy) = (w[0] - p[0], w[1] - p[1]);
         let distance = dx.hypot(dy);
+        if d.planetary.is_some() {
+            if distance > CENTRE_TOLERANCE {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::Geometry,
+                        span,
+                        format!(
+                            "the shafts of planetary stage `{}` are {:.4} mm apart: its members turn about one axis",
+                            s.name,
+                            distance * 1e3
+                        ),
+                    )
+                    .hint("give the shafts of a planetary stage's members the same `position`"),
+                );
+            }
+            continue;
+        }
         if (distance - g.center_distance).abs() > CENTRE_TOLERANCE {
             errors.push(
                 Diagnostic::new(
@@ -333,4 +355,29 @@ fn check_bearings_everywhere(shafts: &[ShaftDecl], errors: &mut Vec<Diagnostic>)
                 .hint("its statics (and so the other shafts' bearing losses) needs its two bearing places: add them with their `at`"),
         );
     }
+}
+
+/// A planetary stage's layout from its sun–planet pair and its declaration.
+fn planetary_layout(
+    sun_pair: &crate::model::GearPair,
+    d: &super::lower_planetary::PlanetaryDecl,
+) -> Option<crate::drive::planetary::PlanetaryLayout> {
+    let (sp, pr) = (sun_pair.geometry().ok()?, d.ring_pair.geometry().ok()?);
+    Some(crate::drive::planetary::PlanetaryLayout {
+        planets: d.planets,
+        teeth: [sp.teeth[0], sp.teeth[1], pr.teeth[1]],
+        members: d.members,
+        center_distance: sp.center_distance,
+        working_pitch_radius: [
+            sp.working_pitch_radius[0],
+            sp.working_pitch_radius[1],
+            pr.working_pitch_radius[0],
+            pr.working_pitch_radius[1],
+        ],
+        working_pressure_angle: [sp.operating_pressure_angle, pr.operating_pressure_angle],
+        planet_tip_radius: sp.tip_radius[1],
+        face_width: sp.face_width,
+        planet_mass: d.planet_mass,
+        planet_bearing: d.planet_bearing,
+    })
 }

@@ -123,6 +123,9 @@ pub(super) fn lower_drive_scene(
     if !lubricant_failed {
         for s in &stages {
             super::lower_friction::check_friction_needs(&friction, &s.pair, lubricant.as_ref(), errors);
+            if let Some(p) = &s.planetary {
+                super::lower_friction::check_friction_needs(&friction, &p.ring_pair, lubricant.as_ref(), errors);
+            }
         }
     }
     let (Some((operating, ends)), Some(shafts), Some(gearbox)) = (operating, shafts, gearbox_block) else {
@@ -149,7 +152,12 @@ pub(super) fn lower_drive_scene(
             housing,
             duty_cycle,
             analyses,
-            drive: Some(SceneDrive { layout, pairs: stages.into_iter().map(|s| s.pair).collect(), cycle }),
+            drive: Some(SceneDrive {
+                layout,
+                ring_pairs: stages.iter().map(|s| s.planetary.as_ref().map(|p| p.ring_pair.clone())).collect(),
+                pairs: stages.into_iter().map(|s| s.pair).collect(),
+                cycle,
+            }),
         }),
         _ => Err(std::mem::take(errors)),
     }

@@ -36,6 +36,8 @@ pub(super) struct StageDecl {
     /// φ (rad) and where it was written.
     pub direction: Option<Given<Angle>>,
     pub lubrication: Option<Lubrication>,
+    /// A planetary stage: `pair` is its sun–planet pair, `places` its two turning members'.
+    pub planetary: Option<super::lower_planetary::PlanetaryDecl>,
 }
 
 pub(super) fn lower_stage(
@@ -51,13 +53,36 @@ pub(super) fn lower_stage(
         return None;
     };
     let what = format!("stage `{}`", name.text);
-    let f = Fields::read(&what, block.span, &block.items, &["direction", "lubrication"], &["gears"], &[], errors);
+    let f = Fields::read(
+        &what,
+        block.span,
+        &block.items,
+        &["direction", "lubrication"],
+        &["gears", "planetary"],
+        &[],
+        errors,
+    );
     let direction: Option<Given<Angle>> = f.optional("direction", errors);
     let lubrication = f.values.get("lubrication").and_then(|(_, v)| super::lower_gearbox::lower_lubrication(v, errors));
+    if let Some(planetary) = f.blocks.iter().find(|b| b.kind.text == "planetary") {
+        if let Some(gears) = f.blocks.iter().find(|b| b.kind.text == "gears") {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::DuplicateKey,
+                    gears.kind.span,
+                    format!("{what} has both `gears` and `planetary`"),
+                )
+                .hint("a stage is one pair on parallel shafts (`gears`) or one planetary set (`planetary`)"),
+            );
+            return None;
+        }
+        let (pair, places, decl) = super::lower_planetary::lower_planetary(planetary, materials, errors)?;
+        return Some(StageDecl { name, pair, places, hand: None, direction, lubrication, planetary: Some(decl) });
+    }
     let Some(gears) = f.blocks.iter().find(|b| b.kind.text == "gears") else {
         errors.push(
             Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, format!("{what} has no `gears` block")).hint(
-                "add `gears { module = 2 mm ... pinion { teeth = 23  shaft = motor  at = 50 mm } wheel { ... } }`",
+                "add `gears { module = 2 mm ... pinion { teeth = 23  shaft = motor  at = 50 mm } wheel { ... } }`, or a `planetary { ... }` block",
             ),
         );
         return None;
@@ -85,7 +110,15 @@ pub(super) fn lower_stage(
         );
         return None;
     }
-    Some(StageDecl { name, pair, places: [(p_shaft, p_at), (w_shaft, w_at)], hand, direction, lubrication })
+    Some(StageDecl {
+        name,
+        pair,
+        places: [(p_shaft, p_at), (w_shaft, w_at)],
+        hand,
+        direction,
+        lubrication,
+        planetary: None,
+    })
 }
 
 /// The `gears` block without the place keys of its pinion and wheel, and those keys of each.

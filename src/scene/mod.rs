@@ -17,6 +17,8 @@ pub(crate) mod lower_gearbox;
 pub(crate) mod lower_gears;
 pub(crate) mod lower_lubricant;
 pub(crate) mod lower_operating;
+pub(crate) mod lower_planetary;
+pub(crate) mod lower_planetary_checks;
 pub(crate) mod lower_shafts;
 pub(crate) mod lower_stage;
 pub(crate) mod lower_teeth;

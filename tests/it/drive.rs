@@ -184,6 +184,7 @@ fn axial_force_follows_hand_and_rotation() {
         hand: Some(hand),
         direction: 0.7,
         lubrication: None,
+        planetary: None,
     };
     let f_a = 100.0 * 0.3f64.tan() / 0.02;
     for (hand, omega, driving, on_driving) in [

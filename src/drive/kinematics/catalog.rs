@@ -24,10 +24,19 @@ pub struct StageKindEntry {
 }
 
 /// Every stage kind.
-pub const STAGE_KINDS: &[StageKindEntry] = &[StageKindEntry {
-    id: StageKindId::Parallel,
-    name: "parallel",
-    file: "parallel.rs",
-    title: "an external pair on parallel shafts: ω_wheel = −ω_pinion z_pinion/z_wheel",
-    kinematics: |s| Box::new(Parallel { teeth: s.teeth }),
-}];
+pub const STAGE_KINDS: &[StageKindEntry] = &[
+    StageKindEntry {
+        id: StageKindId::Parallel,
+        name: "parallel",
+        file: "parallel.rs",
+        title: "an external pair on parallel shafts: ω_wheel = −ω_pinion z_pinion/z_wheel",
+        kinematics: |s| Box::new(Parallel { teeth: s.teeth }),
+    },
+    StageKindEntry {
+        id: StageKindId::Planetary,
+        name: "planetary",
+        file: "planetary.rs",
+        title: "sun, planets on a carrier, ring; one member held: Willis, n_s − i₀ n_r − (1 − i₀) n_c = 0",
+        kinematics: |s| Box::new(s.planetary.as_ref().expect("a planetary stage has its layout").kinematics()),
+    },
+];

@@ -4,4 +4,5 @@
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum StageKindId {
     Parallel,
+    Planetary,
 }

@@ -1,10 +1,11 @@
 //! Stage kinematics as a catalogue: each stage kind one file implementing [`StageKinematics`] and
-//! one row of [`catalog::STAGE_KINDS`]. Today: parallel axes (an external spur or helical pair). A
-//! planetary stage is the next row.
+//! one row of [`catalog::STAGE_KINDS`]: parallel axes (an external spur or helical pair) and a
+//! planetary stage (sun, planets, ring, carrier; one member held).
 
 pub(crate) mod catalog;
 pub(crate) mod kind_id;
 pub mod parallel;
+pub mod planetary;
 pub(crate) mod stage_kinematics;
 
 pub use catalog::{StageKindEntry, STAGE_KINDS};

@@ -208,14 +208,32 @@ fn inputs(out: &mut String, r: &DriveReport) {
         ],
     );
     for s in &r.stages {
+        // A planetary stage: its two turning members' shafts, the teeth sun/planet/ring, i₀.
+        let (joins, teeth, ratio) = match &s.planetary {
+            Some(p) => (
+                p.members
+                    .iter()
+                    .filter(|(_, shaft)| shaft != "housing")
+                    .map(|(m, shaft)| format!("{} on {shaft}", m.name()))
+                    .collect::<Vec<_>>()
+                    .join(" → "),
+                format!("{}/{}/{}", p.teeth[0], p.teeth[1], p.teeth[2]),
+                format!("i₀ {}", fixed(p.stationary_ratio, 4)),
+            ),
+            None => (
+                format!("{} → {}", s.shafts[0], s.shafts[1]),
+                format!("{}/{}", s.teeth[0], s.teeth[1]),
+                fixed(s.ratio, 4),
+            ),
+        };
         row(
             out,
             &[
                 s.name.clone(),
-                format!("{} → {}", s.shafts[0], s.shafts[1]),
+                joins,
                 format!("{} / {}", fixed(s.at_mm[0], 2), fixed(s.at_mm[1], 2)),
-                format!("{}/{}", s.teeth[0], s.teeth[1]),
-                fixed(s.ratio, 4),
+                teeth,
+                ratio,
                 fixed(s.normal_module_mm, 4),
                 fixed(s.helix_angle_deg, 2),
                 if s.pinion_hand.is_empty() { "spur".into() } else { s.pinion_hand.clone() },
@@ -229,6 +247,7 @@ fn inputs(out: &mut String, r: &DriveReport) {
             ],
         );
     }
+    super::planetary::inputs(out, &r.stages);
     md!(out, "\n## Shafts\n");
     header(out, &["shaft", "role", "bearing places (type × count at mm)", "locating", "seals (mm × count)"]);
     for s in &r.shafts {

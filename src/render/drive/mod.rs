@@ -8,6 +8,7 @@ pub(crate) mod cycle_plots;
 pub(crate) mod loss_map;
 pub(crate) mod markdown;
 pub mod oil_sweep;
+pub(crate) mod planetary;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
 

@@ -45,7 +45,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
             out,
             &[
                 s.name.clone(),
-                s.driving.name().to_string(),
+                s.member_name(s.driving).to_string(),
                 fixed(s.driving_torque, 4),
                 fixed(s.driven_torque, 4),
                 fixed(s.driving_speed * RPM, 2),
@@ -60,6 +60,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
         );
     }
     md!(out);
+    super::planetary::point(out, d);
     header(
         out,
         &[
@@ -132,7 +133,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
                     s.name.clone(),
                     format!(
                         "{} of stage {}",
-                        l.member.name(),
+                        d.stages.get(l.stage).map_or(l.member.name(), |x| x.member_name(l.member)),
                         d.stages.get(l.stage).map_or(String::new(), |x| x.name.clone())
                     ),
                     l.point.iter().map(|x| fixed(x * 1e3, 3)).collect::<Vec<_>>().join(", "),

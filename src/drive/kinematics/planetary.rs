@@ -1,0 +1,162 @@
+//! A planetary stage: a sun, n planets on a carrier, a ring. Two of its members sit on the stage's
+//! two places (shafts), the third is held by the housing.
+//!
+//! **Willis** (Müller, *Die Umlaufgetriebe*, 2nd ed., Springer 1998, eq 2.2; VDI 2157): with the
+//! stationary ratio i₀ = −z_ring/z_sun (the carrier held, sun to ring),
+//! n_sun − i₀ n_ring − (1 − i₀) n_carrier = 0.
+//!
+//! **Torques and losses** (Müller §3; Krüger, *Der Wirkungsgrad von Planetengetrieben*): the external
+//! torques on the members balance, T_sun + T_ring + T_carrier = 0. Only the rolling power
+//! P_w = T_sun (ω_sun − ω_carrier) passes the meshes, in the carrier's frame; the meshes lose the
+//! share 1 − η₀ of it, η₀ = η_sun–planet · η_planet–ring (the stationary efficiency). Where P_w > 0 the
+//! sun drives the meshes (w = +1), else the ring does (w = −1), and T_ring = −i₀ η₀^w T_sun. The
+//! stage's loss is then Σ T ω = (1 − η₀^w) P_w ≥ 0: (1 − η₀) times the rolling power of the side
+//! that drives the meshes.
+//!
+//! ```
+//! use gearloss::drive::kinematics::planetary::{one_fixed_efficiency, PlanetaryMember::*};
+//! // Krüger's check, i₀ = −3, η₀ = 0.98505: sun in, carrier out, ring held: η = (1 + 3 η₀)/4.
+//! let eta = one_fixed_efficiency(-3.0, 0.98505, Sun, Carrier);
+//! assert!((eta - (1.0 + 3.0 * 0.98505) / 4.0).abs() < 1e-15 && (eta - 0.98879).abs() < 5e-6);
+//! // Ring in, carrier out, sun held: η = (3 + η₀)/4 = 0.99626.
+//! assert!((one_fixed_efficiency(-3.0, 0.98505, Ring, Carrier) - 0.99626).abs() < 5e-6);
+//! ```
+
+use super::stage_kinematics::StageKinematics;
+
+/// A member of a planetary stage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlanetaryMember {
+    Sun,
+    Ring,
+    Carrier,
+}
+
+impl PlanetaryMember {
+    /// Every member, in the order [sun, ring, carrier] of the speed and torque arrays.
+    pub const ALL: [PlanetaryMember; 3] = [PlanetaryMember::Sun, PlanetaryMember::Ring, PlanetaryMember::Carrier];
+
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            PlanetaryMember::Sun => "sun",
+            PlanetaryMember::Ring => "ring",
+            PlanetaryMember::Carrier => "carrier",
+        }
+    }
+}
+
+/// The kinematics of a planetary stage: the sun's and the ring's teeth, and the members on the
+/// stage's two places (the third is held).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Planetary {
+    pub sun_teeth: u32,
+    pub ring_teeth: u32,
+    /// [place 0, place 1].
+    pub members: [PlanetaryMember; 2],
+}
+
+impl Planetary {
+    /// i₀ = −z_ring/z_sun.
+    pub fn stationary_ratio(&self) -> f64 {
+        stationary_ratio(self.sun_teeth, self.ring_teeth)
+    }
+
+    /// The member the housing holds.
+    pub fn held(&self) -> PlanetaryMember {
+        held(self.members)
+    }
+
+    /// [ω_sun, ω_ring, ω_carrier] with the held member at rest and member `known` at `omega`.
+    pub fn member_speeds(&self, known: PlanetaryMember, omega: f64) -> [f64; 3] {
+        willis(self.stationary_ratio(), (known, omega), (self.held(), 0.0))
+    }
+}
+
+/// i₀ = −z_ring/z_sun, the ratio sun to ring with the carrier held.
+pub fn stationary_ratio(sun_teeth: u32, ring_teeth: u32) -> f64 {
+    -f64::from(ring_teeth) / f64::from(sun_teeth)
+}
+
+/// The member that is neither of `members`.
+pub fn held(members: [PlanetaryMember; 2]) -> PlanetaryMember {
+    PlanetaryMember::ALL.into_iter().find(|m| !members.contains(m)).expect("two members leave a third")
+}
+
+/// Willis: [ω_sun, ω_ring, ω_carrier] from the speeds of two different members,
+/// ω_s − i₀ ω_r − (1 − i₀) ω_c = 0.
+pub fn willis(i0: f64, a: (PlanetaryMember, f64), b: (PlanetaryMember, f64)) -> [f64; 3] {
+    use PlanetaryMember::*;
+    let mut w = [f64::NAN; 3];
+    w[a.0.index()] = a.1;
+    w[b.0.index()] = b.1;
+    match held([a.0, b.0]) {
+        Sun => w[0] = i0 * w[1] + (1.0 - i0) * w[2],
+        Ring => w[1] = (w[0] - (1.0 - i0) * w[2]) / i0,
+        Carrier => w[2] = (w[0] - i0 * w[1]) / (1.0 - i0),
+    }
+    w
+}
+
+/// The members' external torques with the meshes' losses, from one member's torque.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MemberTorques {
+    /// [T_sun, T_ring, T_carrier] (N·m, about +z, the torques the outside puts on the members).
+    pub torques: [f64; 3],
+    /// P_w = T_sun (ω_sun − ω_carrier) (W).
+    pub rolling_power: f64,
+    /// The sun drives the meshes (P_w ≥ 0): w = +1; else the ring does.
+    pub sun_drives_meshes: bool,
+}
+
+impl MemberTorques {
+    /// Σ T ω (W): the power the stage turns into heat.
+    pub fn loss(&self, speeds: [f64; 3]) -> f64 {
+        (0..3).map(|i| self.torques[i] * speeds[i]).sum()
+    }
+}
+
+/// The torques on all three members when `given` = (member, external torque) at `speeds`
+/// ([ω_sun, ω_ring, ω_carrier]) with stationary ratio i₀ and stationary efficiency η₀:
+/// T_ring = −i₀ η₀^w T_sun, T_carrier = −T_sun − T_ring, w = sign(P_w).
+pub fn member_torques(i0: f64, eta0: f64, given: (PlanetaryMember, f64), speeds: [f64; 3]) -> MemberTorques {
+    let relative = speeds[0] - speeds[2];
+    // The sign of T_sun follows from the given torque alone (−1/i₀ > 0 and 1 − i₀ η₀^w > 0).
+    let sun_sign = match given.0 {
+        PlanetaryMember::Sun | PlanetaryMember::Ring => given.1.signum(),
+        PlanetaryMember::Carrier => -given.1.signum(),
+    };
+    let sun_drives_meshes = sun_sign * relative >= 0.0;
+    let k = if sun_drives_meshes { eta0 } else { 1.0 / eta0 };
+    let t_sun = match given.0 {
+        PlanetaryMember::Sun => given.1,
+        PlanetaryMember::Ring => -given.1 / (i0 * k),
+        PlanetaryMember::Carrier => -given.1 / (1.0 - i0 * k),
+    };
+    let t_ring = -i0 * k * t_sun;
+    MemberTorques { torques: [t_sun, t_ring, -t_sun - t_ring], rolling_power: t_sun * relative, sun_drives_meshes }
+}
+
+/// η = P_out/P_in of a stage with one member held, `input` driving and `output` driven
+/// (Krüger's one-member-fixed efficiencies, from i₀ and η₀).
+pub fn one_fixed_efficiency(i0: f64, eta0: f64, input: PlanetaryMember, output: PlanetaryMember) -> f64 {
+    let speeds = willis(i0, (input, 1.0), (held([input, output]), 0.0));
+    let t = member_torques(i0, eta0, (input, 1.0), speeds);
+    -t.torques[output.index()] * speeds[output.index()] / (t.torques[input.index()] * speeds[input.index()])
+}
+
+impl StageKinematics for Planetary {
+    fn speeds(&self, known: usize, omega: f64) -> Vec<f64> {
+        let w = self.member_speeds(self.members[known], omega);
+        self.members.iter().map(|m| w[m.index()]).collect()
+    }
+
+    fn torque_ratio(&self, driving: usize) -> f64 {
+        let w = self.member_speeds(self.members[driving], 1.0);
+        (w[self.members[driving].index()] / w[self.members[1 - driving].index()]).abs()
+    }
+}

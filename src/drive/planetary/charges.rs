@@ -1,0 +1,108 @@
+//! What the drive's walk charges for a planetary stage: its efficiency between its two places, its
+//! planets' bearings (on the carrier's shaft, or the driving member's where the carrier is held)
+//! and the point the report reads.
+//!
+//! The planet bearings' losses are Palmgren's (or SKF's) moments at the planet's speed relative to
+//! the carrier under the bearing load |B|/count of [`super::loads`], times that speed, the count
+//! and n; they join the fixed point of the walk with the shafts' bearings.
+
+use super::flow::{planetary_state, PlanetaryState};
+use super::layout::PlanetaryLayout;
+use super::loads::{lossless_torques, planet_forces};
+use super::point::PlanetaryPoint;
+use crate::drive::layout::{Member, Stage};
+use crate::drive::point::BearingPoint;
+use crate::drive::walk::MeshEfficiency;
+use crate::losses::Oil;
+
+/// The stage at place `driving` putting `torque` (N·m, > 0) in, the places at `places` (rad/s).
+pub fn state(
+    meshes: &dyn MeshEfficiency,
+    k: usize,
+    layout: &PlanetaryLayout,
+    driving: Member,
+    torque: f64,
+    places: [f64; 2],
+) -> PlanetaryState {
+    planetary_state(layout, driving.index(), torque, places, &|mesh, t, w| meshes.planet_mesh(k, mesh, t, w))
+}
+
+/// The planets' bearings at the driving torque: the shaft they are charged on, the place as the
+/// report lists it, and their power (W); None without planet bearings or without an oil viscosity.
+pub fn planet_bearings(
+    stage: &Stage,
+    driving: Member,
+    torque: f64,
+    places: [f64; 2],
+    oil: &Oil,
+) -> Option<(usize, BearingPoint)> {
+    let layout = stage.planetary.as_ref()?;
+    let bearing = layout.planet_bearing?;
+    let speeds = layout.member_speeds(places);
+    let torques = lossless_torques(layout, driving.index(), torque, speeds);
+    let forces = planet_forces(layout, torques, speeds);
+    let omega = layout.planet_speed(speeds);
+    let n = bearing.count as f64;
+    let radial = forces.bearing / n;
+    let (m0, m1) = match oil.nu {
+        Some(nu) => bearing.moments(radial, 0.0, nu, omega, oil.mineral),
+        None => (0.0, None),
+    };
+    let per_planet = n * omega;
+    let planets = f64::from(layout.planets);
+    let place =
+        layout.place_of(crate::drive::kinematics::planetary::PlanetaryMember::Carrier).unwrap_or(driving.index());
+    Some((
+        stage.places[place].shaft,
+        BearingPoint {
+            kind: format!("{} (planets)", bearing.kind.name()),
+            count: bearing.count * layout.planets as usize,
+            position: stage.places[place].at,
+            locating: false,
+            reaction: [
+                forces.tangential[0] + forces.tangential[1],
+                forces.centrifugal + forces.radial[0] - forces.radial[1],
+                0.0,
+            ],
+            radial_load: radial,
+            axial_load: 0.0,
+            no_load: m0 * per_planet * planets,
+            load: m1.unwrap_or(0.0) * per_planet * planets,
+        },
+    ))
+}
+
+/// The report's point of the stage at the settled driving torque.
+pub fn point(
+    meshes: &dyn MeshEfficiency,
+    k: usize,
+    stage: &Stage,
+    driving: Member,
+    torque: f64,
+    places: [f64; 2],
+    (planet_bearings, churning): ([f64; 2], f64),
+) -> PlanetaryPoint {
+    let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
+    let s = state(meshes, k, layout, driving, torque, places);
+    let torques = lossless_torques(layout, driving.index(), torque, s.speeds);
+    PlanetaryPoint {
+        planets: layout.planets,
+        held: layout.held(),
+        driving_member: layout.members[driving.index()],
+        driven_member: layout.members[1 - driving.index()],
+        speeds: s.speeds,
+        torques: s.torques.torques,
+        rolling_power: s.torques.rolling_power,
+        sun_drives_meshes: s.torques.sun_drives_meshes,
+        mesh_efficiency: s.mesh_efficiency,
+        mesh_loss: s.mesh_loss,
+        mesh_torque: s.mesh_torque,
+        mesh_speed: s.mesh_speed,
+        basic_efficiency: s.basic_efficiency,
+        efficiency: s.efficiency,
+        planet_speed: layout.planet_speed(s.speeds),
+        forces: planet_forces(layout, torques, s.speeds),
+        planet_bearings,
+        churning,
+    }
+}

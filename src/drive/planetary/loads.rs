@@ -1,0 +1,96 @@
+//! The forces of a planetary stage: each planet's two mesh forces, its bearing's load, and the
+//! forces on the members that sit on shafts (for the shafts' statics).
+//!
+//! As a parallel stage's, the forces follow the driving torque without the meshes' losses (the
+//! lossless torques of [`member_torques`] at η₀ = 1), shared equally by the n planets. Planet j sits
+//! at the angle θ_j = φ + 2πj/n (φ the stage's `direction`) at the carrier's centre distance a_w; with
+//! r̂ = (cos θ_j, sin θ_j) and t̂ = (−sin θ_j, cos θ_j) (Niemann & Winter, *Maschinenelemente* III,
+//! §24 "Umlaufgetriebe"; ISO 6336-1 for F_r = F_t tan α_w):
+//!
+//! - on the sun, at r_w,sun r̂: F = −T_sun/(n r_w,sun) t̂ − |F_t,sun| tan α_w,sp r̂ (towards its centre);
+//! - on the ring, at r_w,ring r̂: F = −T_ring/(n r_w,ring) t̂ + |F_t,ring| tan α_w,pr r̂ (outwards);
+//! - on the carrier, at a_w r̂: the reverse of both (the planet passes them on through its bearing).
+//!
+//! The planet's bearing carries the two mesh forces and the planet's centrifugal force m ω_c² a_w:
+//! B = −m ω_c² a_w r̂ − F_sun→planet − F_ring→planet, |B| shared by the planet's `count` bearings.
+//! With n ≥ 2 the forces on each member cancel (only the torque remains); one planet loads the
+//! sun's and the carrier's shafts.
+
+use super::layout::PlanetaryLayout;
+use crate::drive::forces::GearLoad;
+use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, PlanetaryMember};
+use crate::drive::layout::{Member, Stage};
+
+/// One planet's forces (N).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct PlanetForces {
+    /// F_t of the sun–planet and of the planet–ring mesh.
+    pub tangential: [f64; 2],
+    /// F_r of the sun–planet and of the planet–ring mesh.
+    pub radial: [f64; 2],
+    /// m ω_c² a_w.
+    pub centrifugal: f64,
+    /// |B|, the whole planet's bearing load.
+    pub bearing: f64,
+}
+
+/// The lossless external torques [T_sun, T_ring, T_carrier] when place `driving` puts `torque`
+/// (N·m, > 0) in at `speeds` ([ω_sun, ω_ring, ω_carrier]).
+pub fn lossless_torques(layout: &PlanetaryLayout, driving: usize, torque: f64, speeds: [f64; 3]) -> [f64; 3] {
+    let member = layout.members[driving];
+    let i0 = stationary_ratio(layout.teeth[0], layout.teeth[2]);
+    member_torques(i0, 1.0, (member, torque * speeds[member.index()].signum()), speeds).torques
+}
+
+/// One planet's forces at the torques `torques` and speeds `speeds`.
+pub fn planet_forces(layout: &PlanetaryLayout, torques: [f64; 3], speeds: [f64; 3]) -> PlanetForces {
+    let n = f64::from(layout.planets);
+    let r = layout.working_pitch_radius;
+    let f_sun = torques[0].abs() / (n * r[0]);
+    let f_ring = torques[1].abs() / (n * r[3]);
+    let radial = [f_sun * layout.working_pressure_angle[0].tan(), f_ring * layout.working_pressure_angle[1].tan()];
+    let centrifugal = layout.planet_mass * speeds[2] * speeds[2] * layout.center_distance;
+    // In the planet's own frame (r̂ outwards from the central axis): the tangential forces of both
+    // meshes add, the sun's radial push outwards and the ring's inwards meet the centrifugal force.
+    let b_t = f_sun + f_ring;
+    let b_r = centrifugal + radial[0] - radial[1];
+    PlanetForces { tangential: [f_sun, f_ring], radial, centrifugal, bearing: b_t.hypot(b_r) }
+}
+
+/// The forces on the stage's members that sit on shafts, one per planet and member, when place
+/// `driving` puts `torque` in at the places' speeds `places`.
+pub fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64, places: [f64; 2]) -> Vec<GearLoad> {
+    let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
+    let speeds = layout.member_speeds(places);
+    let t = lossless_torques(layout, driving, torque, speeds);
+    let n = layout.planets as usize;
+    let r = layout.working_pitch_radius;
+    let tan = layout.working_pressure_angle.map(f64::tan);
+    let mut out = Vec::new();
+    for j in 0..n {
+        let theta = stage.direction + std::f64::consts::TAU * j as f64 / n as f64;
+        let (radial_dir, tangent) = ([theta.cos(), theta.sin()], [-theta.sin(), theta.cos()]);
+        let along =
+            |f_t: f64, f_r: f64| [f_t * tangent[0] + f_r * radial_dir[0], f_t * tangent[1] + f_r * radial_dir[1]];
+        let n = n as f64;
+        let on_sun = along(-t[0] / (n * r[0]), -(t[0] / (n * r[0])).abs() * tan[0]);
+        let on_ring = along(-t[1] / (n * r[3]), (t[1] / (n * r[3])).abs() * tan[1]);
+        let on_carrier = [-(on_sun[0] + on_ring[0]), -(on_sun[1] + on_ring[1])];
+        for (member, radius, force) in [
+            (PlanetaryMember::Sun, r[0], on_sun),
+            (PlanetaryMember::Ring, r[3], on_ring),
+            (PlanetaryMember::Carrier, layout.center_distance, on_carrier),
+        ] {
+            let Some(place) = layout.place_of(member) else { continue };
+            let at = stage.places[place];
+            out.push(GearLoad {
+                stage: k,
+                member: if place == 0 { Member::Pinion } else { Member::Wheel },
+                shaft: at.shaft,
+                point: [radius * radial_dir[0], radius * radial_dir[1], at.at],
+                force: [force[0], force[1], 0.0],
+            });
+        }
+    }
+    out
+}

@@ -1,0 +1,41 @@
+//! What a planetary stage's physics found at one operating point: the members' speeds and torques,
+//! the rolling power, both meshes, η₀ and η, the planets' forces and bearings, the churning.
+
+use serde::{Deserialize, Serialize};
+
+use super::loads::PlanetForces;
+use crate::drive::kinematics::planetary::PlanetaryMember;
+
+/// A planetary stage at one operating point.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PlanetaryPoint {
+    pub planets: u32,
+    pub held: PlanetaryMember,
+    /// The member that puts the power in and the one that takes it out.
+    pub driving_member: PlanetaryMember,
+    pub driven_member: PlanetaryMember,
+    /// [sun, ring, carrier]: speeds (rad/s, signed about +z) and the torques the outside puts on
+    /// them (N·m, T_sun + T_ring + T_carrier = 0).
+    pub speeds: [f64; 3],
+    pub torques: [f64; 3],
+    /// P_w = T_sun (ω_sun − ω_carrier) (W).
+    pub rolling_power: f64,
+    pub sun_drives_meshes: bool,
+    /// [sun–planet, planet–ring]: η, the losses of all planets (W), the pinion's torque per planet
+    /// (N·m) and its speed in the carrier's frame (rad/s).
+    pub mesh_efficiency: [f64; 2],
+    pub mesh_loss: [f64; 2],
+    pub mesh_torque: [f64; 2],
+    pub mesh_speed: [f64; 2],
+    /// η₀ = η_sp η_pr.
+    pub basic_efficiency: f64,
+    /// η of the stage (meshes only; its bearings and churning are charged on the shafts).
+    pub efficiency: f64,
+    /// The planet's speed relative to the carrier (rad/s).
+    pub planet_speed: f64,
+    pub forces: PlanetForces,
+    /// All planets' bearings (W): no-load and load parts.
+    pub planet_bearings: [f64; 2],
+    /// The churning body's loss (W): the carrier with its planets, or the sun where the carrier is held.
+    pub churning: f64,
+}

@@ -1,0 +1,125 @@
+//! A drive's planetary stages in report.md: what each is (members, planets, ratios, both meshes,
+//! the assembly and neighbour conditions), and at each operating point its members' speeds and
+//! torques, the rolling power, both meshes, η₀ and η, the planets' forces and bearings.
+
+use crate::drive::DrivePoint;
+use crate::render::markup::md;
+use crate::render::table::{fixed, header, row};
+use crate::report::drive_inputs::StageInputs;
+
+/// rad/s to rpm.
+const RPM: f64 = 30.0 / std::f64::consts::PI;
+
+/// The planetary stages' inputs, after the stages' table.
+pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
+    let planetary: Vec<_> = stages.iter().filter_map(|s| s.planetary.as_ref().map(|p| (s, p))).collect();
+    if planetary.is_empty() {
+        return;
+    }
+    md!(out, "\n### Planetary stages\n");
+    md!(out, "A row of the table above gives a planetary stage's sun–planet mesh; here its members, planets and the planet–ring mesh (internal). Willis: n_sun − i₀ n_ring − (1 − i₀) n_carrier = 0, i₀ = −z_ring/z_sun; only the rolling power P_w = T_sun (ω_sun − ω_carrier) passes the meshes, which lose the share 1 − η₀ of it, η₀ = η_sp η_pr.\n");
+    header(
+        out,
+        &[
+            "stage",
+            "sun / ring / carrier on",
+            "z sun/planet/ring",
+            "planets",
+            "i₀",
+            "ratio",
+            "(z_s + z_r)/n",
+            "neighbour gap (mm)",
+            "α_w ring mesh (°)",
+            "ε_α ring mesh",
+            "d_a ring (mm)",
+            "planet mass (kg)",
+            "planet bearing",
+        ],
+    );
+    for (s, p) in planetary {
+        let on: Vec<String> = p.members.iter().map(|(_, shaft)| shaft.clone()).collect();
+        row(
+            out,
+            &[
+                s.name.clone(),
+                on.join(" / "),
+                format!("{}/{}/{}", p.teeth[0], p.teeth[1], p.teeth[2]),
+                p.planets.to_string(),
+                fixed(p.stationary_ratio, 4),
+                fixed(p.ratio, 4),
+                fixed(p.assembly, 4),
+                p.neighbour_gap_mm.map_or("— (one planet)".into(), |g| fixed(g, 3)),
+                fixed(p.ring_pressure_angle_deg, 3),
+                fixed(p.ring_contact_ratio, 3),
+                fixed(p.ring_tip_diameter_mm, 3),
+                fixed(p.planet_mass_kg, 4),
+                if p.planet_bearing.is_empty() { "none".into() } else { p.planet_bearing.clone() },
+            ],
+        );
+    }
+}
+
+/// Each planetary stage at one operating point.
+pub(crate) fn point(out: &mut String, d: &DrivePoint) {
+    for s in &d.stages {
+        let Some(p) = &s.planetary else { continue };
+        md!(
+            out,
+            "Planetary stage {}: the {} drives, the {} is driven, the {} is held; P_w = T_sun (ω_sun − ω_carrier) = {} W, the {} drives the meshes; η₀ = η_sp η_pr = {} %, η = {} %.\n",
+            s.name,
+            p.driving_member.name(),
+            p.driven_member.name(),
+            p.held.name(),
+            fixed(p.rolling_power, 3),
+            if p.sun_drives_meshes { "sun" } else { "ring" },
+            fixed(100.0 * p.basic_efficiency, 5),
+            fixed(100.0 * p.efficiency, 5)
+        );
+        header(out, &["member", "n (rpm, + ccw)", "T (N·m, on the member)", "P in (W)"]);
+        for m in crate::drive::kinematics::planetary::PlanetaryMember::ALL {
+            let i = m.index();
+            row(
+                out,
+                &[
+                    m.name().into(),
+                    fixed(p.speeds[i] * RPM, 3),
+                    fixed(p.torques[i], 4),
+                    fixed(p.torques[i] * p.speeds[i], 3),
+                ],
+            );
+        }
+        md!(out);
+        header(
+            out,
+            &["mesh", "pinion T per planet (N·m)", "n in the carrier's frame (rpm)", "η (%)", "loss, all planets (W)"],
+        );
+        for (i, name) in ["sun–planet", "planet–ring"].iter().enumerate() {
+            row(
+                out,
+                &[
+                    (*name).into(),
+                    fixed(p.mesh_torque[i], 4),
+                    fixed(p.mesh_speed[i] * RPM, 3),
+                    fixed(100.0 * p.mesh_efficiency[i], 5),
+                    fixed(p.mesh_loss[i], 3),
+                ],
+            );
+        }
+        md!(out);
+        let f = &p.forces;
+        md!(
+            out,
+            "Each planet: {} rpm relative to the carrier; F_t {} N (sun mesh) and {} N (ring mesh), F_r {} N and {} N, centrifugal m ω_c² a_w {} N; its bearing carries |B| = {} N; the planets' bearings lose {} W (no-load) + {} W (load); churning {} W.\n",
+            fixed(p.planet_speed * RPM, 3),
+            fixed(f.tangential[0], 2),
+            fixed(f.tangential[1], 2),
+            fixed(f.radial[0], 2),
+            fixed(f.radial[1], 2),
+            fixed(f.centrifugal, 3),
+            fixed(f.bearing, 2),
+            fixed(p.planet_bearings[0], 3),
+            fixed(p.planet_bearings[1], 3),
+            fixed(p.churning, 3)
+        );
+    }
+}

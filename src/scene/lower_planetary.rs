@@ -1,0 +1,239 @@
+//! A stage's `planetary` block: the sun–planet pair and the planet–ring pair (internal) lowered as
+//! two `gears` blocks of the members' own keys, the members' shafts (one held by `housing`), the
+//! planets' count, mass and bearings, and the assembly and neighbour conditions.
+//!
+//! ```text
+//! planetary {
+//!     planets = 3
+//!     module = 2 mm  pressure_angle = 20 deg  face_width = 25 mm
+//!     sun     { teeth = 25  shaft = motor  at = 40 mm  material = steel  roughness_ra = 0.4 um }
+//!     planet  { teeth = 25  material = steel  roughness_ra = 0.4 um
+//!               bearing(type = cylindrical_roller, bore = 15 mm, outside = 28 mm, count = 2) }
+//!     ring    { teeth = 75  tip_diameter = 147 mm  shaft = housing  material = steel }
+//!     carrier { shaft = output  at = 40 mm }
+//! }
+//! ```
+
+use std::collections::BTreeMap;
+
+use uom::si::length::meter;
+
+use super::ast::*;
+use super::fields::Fields;
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::drive::kinematics::planetary::PlanetaryMember;
+use crate::losses::Bearing;
+use crate::model::{GearPair, Given, Length, Mass, Material};
+
+/// The pair-level keys both meshes share.
+const PAIR_KEYS: &[&str] =
+    &["module", "diametral_pitch", "pressure_angle", "helix_angle", "center_distance", "face_width", "load_sharing"];
+/// Steel's density for a planet's mass when the scene gives none (kg/m³).
+pub(crate) const STEEL_DENSITY: f64 = 7850.0;
+
+/// A planetary stage as written.
+pub(super) struct PlanetaryDecl {
+    /// The planet–ring pair (internal), at the carrier's centre distance.
+    pub ring_pair: GearPair,
+    pub planets: u32,
+    /// The members on the stage's two places, in the order sun, ring, carrier.
+    pub members: [PlanetaryMember; 2],
+    pub planet_mass: f64,
+    pub planet_bearing: Option<Bearing>,
+}
+
+/// The sun–planet pair, the members' places [(shaft, at)] on the stage's two places, and the rest.
+pub(super) type Lowered = (GearPair, [(Name, f64); 2], PlanetaryDecl);
+
+pub(super) fn lower_planetary(
+    block: &Block,
+    materials: &BTreeMap<&str, Material>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Lowered> {
+    let members = ["sun", "planet", "ring", "carrier"];
+    let mut keys = PAIR_KEYS.to_vec();
+    keys.push("planets");
+    let f = Fields::read("the `planetary` block", block.span, &block.items, &keys, &members, &[], errors);
+    let member = |name: &str| f.blocks.iter().find(|b| b.kind.text == name).copied();
+    let mut missing = false;
+    for name in members {
+        if member(name).is_none() {
+            missing = true;
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    block.kind.span,
+                    format!("the `planetary` block has no `{name}`"),
+                )
+                .hint(match name {
+                    "carrier" => "add `carrier { shaft = output  at = 40 mm }`".to_string(),
+                    "planet" => "add `planet { teeth = 25  material = steel }`".to_string(),
+                    _ => format!("add `{name} {{ teeth = 25  shaft = input  at = 40 mm  material = steel }}`"),
+                }),
+            );
+        }
+    }
+    let planets = lower_planet_count(&f, block, errors);
+    if missing {
+        return None;
+    }
+    let [sun, planet, ring, carrier] = members.map(|m| member(m).expect("checked above"));
+    let pair_items: Vec<Item> = block
+        .items
+        .iter()
+        .filter(|i| matches!(i, Item::Assignment { key, .. } if PAIR_KEYS.contains(&key.text.as_str())))
+        .cloned()
+        .collect();
+    let (sun_gear, sun_place) = split(sun, "pinion");
+    let (planet_gear, planet_extra) = split(planet, "wheel");
+    let (ring_gear, ring_place) = split(ring, "wheel");
+    let sun_pair = gears_block(block, &pair_items, [sun_gear, planet_gear.clone()], false);
+    let mut planet_as_pinion = planet_gear;
+    planet_as_pinion.kind.text = "pinion".into();
+    let ring_block = gears_block(block, &pair_items, [planet_as_pinion, ring_gear], true);
+    let sun_pair = super::lower_gears::lower_gears(&sun_pair, materials, errors);
+    let ring_pair = super::lower_gears::lower_gears(&ring_block, materials, errors);
+    let (planet_mass, planet_bearing) = lower_planet_parts(&planet_extra, planet, errors);
+    let places = [("sun", sun, sun_place), ("ring", ring, ring_place), ("carrier", carrier, carrier.items.clone())]
+        .map(|(name, b, items)| lower_member_place(name, b, &items, errors));
+    let (sun_pair, mut ring_pair, planets) = (sun_pair?, ring_pair?, planets?);
+    let a = sun_pair.geometry().ok()?.center_distance;
+    // The ring meshes at the carrier's centre distance, the sun–planet mesh's.
+    ring_pair.center_distance = Some(Given {
+        value: Length::new::<meter>(a),
+        written: format!("{:.4} mm (the sun–planet mesh's)", a * 1e3),
+        span: ring.kind.span,
+    });
+    super::lower_gears::check_geometry(&ring_pair, errors)?;
+    super::lower_planetary_checks::check_planets(&sun_pair, &ring_pair, planets, block, errors)?;
+    let [sun_at, ring_at, carrier_at] = places;
+    let turning: Vec<(PlanetaryMember, (Name, f64))> =
+        [(PlanetaryMember::Sun, sun_at?), (PlanetaryMember::Ring, ring_at?), (PlanetaryMember::Carrier, carrier_at?)]
+            .into_iter()
+            .filter_map(|(m, p)| p.map(|p| (m, p)))
+            .collect();
+    let [(m0, p0), (m1, p1)] = super::lower_planetary_checks::one_held(turning, block, errors)?;
+    let planet_mass = planet_mass.unwrap_or_else(|| {
+        let d = 2.0 * sun_pair.geometry().map_or(0.0, |g| g.pitch_radius[1]);
+        STEEL_DENSITY * std::f64::consts::PI / 4.0 * d * d * sun_pair.face_width.value.get::<meter>()
+    });
+    let decl = PlanetaryDecl { ring_pair, planets, members: [m0, m1], planet_mass, planet_bearing };
+    Some((sun_pair, [p0, p1], decl))
+}
+
+/// A member's block without its place keys (`shaft`, `at`) and planet parts (`bearing`, `mass`),
+/// renamed to `as_name`, and the items taken out.
+fn split(b: &Block, as_name: &str) -> (Block, Vec<Item>) {
+    let mut gear = b.clone();
+    gear.kind.text = as_name.into();
+    let (keep, take): (Vec<Item>, Vec<Item>) = gear.items.drain(..).partition(|i| match i {
+        Item::Assignment { key, .. } => !["shaft", "at", "mass"].contains(&key.text.as_str()),
+        Item::Call(c) => c.name.text != "bearing",
+        Item::Block(_) => true,
+    });
+    gear.items = keep;
+    (gear, take)
+}
+
+/// A `gears` block of the shared pair keys and two gear blocks (`mesh = internal` for the ring).
+fn gears_block(planetary: &Block, pair_items: &[Item], gears: [Block; 2], internal: bool) -> Block {
+    let mut items = pair_items.to_vec();
+    if internal {
+        let mut key = planetary.kind.clone();
+        key.text = "mesh".into();
+        let mut value_name = planetary.kind.clone();
+        value_name.text = "internal".into();
+        items.push(Item::Assignment {
+            key,
+            value: Value {
+                kind: ValueKind::Call(Call { name: value_name, arguments: Vec::new(), span: planetary.kind.span }),
+                span: planetary.kind.span,
+            },
+        });
+    }
+    items.extend(gears.into_iter().map(Item::Block));
+    let mut kind = planetary.kind.clone();
+    kind.text = "gears".into();
+    Block { kind, label: None, items, span: planetary.span }
+}
+
+/// `planets = n`: a whole number of at least 1.
+fn lower_planet_count(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -> Option<u32> {
+    let Some((_, v)) = f.values.get("planets") else {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                block.kind.span,
+                "the `planetary` block does not say its `planets`",
+            )
+            .hint("add `planets = 3`: how many planets the carrier holds"),
+        );
+        return None;
+    };
+    let (n, _) = super::fields::scalar("planets", v, super::units::Dimension::NONE, errors)?;
+    if n.fract() != 0.0 || !(1.0..=32.0).contains(&n) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                v.span,
+                format!("planets = {n} is not a whole number from 1 to 32"),
+            )
+            .hint("a planetary stage has at least one planet; three to seven are usual"),
+        );
+        return None;
+    }
+    Some(n as u32)
+}
+
+/// The planet's `mass` (optional) and `bearing(...)` (optional).
+fn lower_planet_parts(items: &[Item], planet: &Block, errors: &mut Vec<Diagnostic>) -> (Option<f64>, Option<Bearing>) {
+    let f = Fields::read("the `planet` block", planet.span, items, &["mass"], &[], &["bearing"], errors);
+    let mass: Option<Given<Mass>> = super::fields::positive(f.optional("mass", errors), "mass", errors);
+    let bearings: Vec<&&Call> = f.calls.iter().filter(|c| c.name.text == "bearing").collect();
+    if let [_, second, ..] = bearings.as_slice() {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::DuplicateKey, second.name.span, "a planet takes one `bearing(...)`")
+                .hint("several bearings on each planet are one `bearing(..., count = 2)`"),
+        );
+    }
+    let bearing = bearings.first().and_then(|c| super::lower_gearbox::lower_bearing(c, errors));
+    (mass.map(|m| m.value.value), bearing)
+}
+
+/// A member's `shaft` (a shaft's name, or `housing`: held) and `at` (needed where it turns):
+/// Some(None) when held. The carrier's block holds nothing else; the sun's and ring's other keys
+/// were their gears'.
+fn lower_member_place(
+    name: &str,
+    b: &Block,
+    items: &[Item],
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Option<(Name, f64)>> {
+    let own: Vec<Item> = items
+        .iter()
+        .filter(|i| {
+            matches!(i, Item::Assignment { key, .. } if ["shaft", "at"].contains(&key.text.as_str()))
+                || name == "carrier"
+        })
+        .cloned()
+        .collect();
+    let f = Fields::read(format!("the `{name}` block"), b.span, &own, &["shaft", "at"], &[], &[], errors);
+    let Some(shaft) = f.name("shaft", &[], errors).cloned() else {
+        if !f.has("shaft") {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    b.kind.span,
+                    format!("the `{name}` does not say its `shaft`"),
+                )
+                .hint(format!("add `shaft = output` (a shaft of the gearbox) or `shaft = housing` (the {name} held)")),
+            );
+        }
+        return None;
+    };
+    if shaft.text == "housing" {
+        return Some(None);
+    }
+    let at: Option<Given<Length>> = f.required("at", "40 mm", errors);
+    Some(Some((shaft, at?.value.value)))
+}

@@ -1,0 +1,92 @@
+//! The conditions a planetary stage must meet before its physics means anything: the planets fit
+//! (assembly condition) and clear each other (neighbour condition), helical planetaries wait, and
+//! exactly one member is held.
+
+use super::ast::*;
+use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::drive::kinematics::planetary::PlanetaryMember;
+use crate::model::GearPair;
+
+/// Assembly: n equally spaced planets mesh with both sun and ring only if (z_sun + z_ring)/n is a
+/// whole number (Müller, *Die Umlaufgetriebe*, §2.4; VDI 2157). Neighbours: the planets' tip circles
+/// must not touch, 2 a_w sin(π/n) > d_a,planet. A helical planetary stage is refused (its axial
+/// forces and the planets' tilting moments are not modelled in this version).
+pub(super) fn check_planets(
+    sun: &GearPair,
+    ring: &GearPair,
+    n: u32,
+    block: &Block,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<()> {
+    let before = errors.len();
+    if sun.helix_angle.as_ref().is_some_and(|b| b.value.value != 0.0) {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, sun.helix_angle.as_ref().map_or(block.kind.span, |b| b.span), "a helical planetary stage is not available in this version")
+                .hint("give `helix_angle = 0 deg` (spur); the axial forces on the sun and the planets' tilting moments come later"),
+        );
+    }
+    let (z_sun, z_ring) = (sun.pinion.teeth.value, ring.wheel.teeth.value);
+    let z_planet = sun.wheel.teeth.value;
+    if (z_sun + z_ring) % n != 0 {
+        let fits: Vec<String> = (1..=8).filter(|k| (z_sun + z_ring) % k == 0).map(|k| k.to_string()).collect();
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::Geometry,
+                block.kind.span,
+                format!(
+                    "{n} planets cannot be assembled equally spaced: (z_sun + z_ring)/n = ({z_sun} + {z_ring})/{n} = {:.4} is not a whole number",
+                    f64::from(z_sun + z_ring) / f64::from(n)
+                ),
+            )
+            .hint(format!("with {z_sun} + {z_ring} teeth, {} planets fit; or change the sun's or the ring's teeth", fits.join(", "))),
+        );
+    }
+    let g = sun.geometry().ok()?;
+    let a = g.center_distance;
+    let tip = 2.0 * g.tip_radius[1];
+    let spacing = 2.0 * a * (std::f64::consts::PI / f64::from(n)).sin();
+    if n > 1 && spacing <= tip {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::Geometry,
+                block.kind.span,
+                format!(
+                    "{n} planets of {z_planet} teeth touch their neighbours: 2 a_w sin(π/n) = {:.4} mm is not larger than the planet's tip diameter {:.4} mm",
+                    spacing * 1e3,
+                    tip * 1e3
+                ),
+            )
+            .hint("take fewer planets, or larger sun and ring with smaller planets"),
+        );
+    }
+    (errors.len() == before).then_some(())
+}
+
+/// Exactly one member is held (`shaft = housing`): two turning members on the stage's two places.
+pub(super) fn one_held(
+    turning: Vec<(PlanetaryMember, (Name, f64))>,
+    block: &Block,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<[(PlanetaryMember, (Name, f64)); 2]> {
+    match <[_; 2]>::try_from(turning) {
+        Ok(two) => Some(two),
+        Err(turning) if turning.len() == 3 => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, block.kind.span, "no member of the planetary stage is held: all three turn")
+                    .hint("a power-split stage (two shafts given, the third by Willis) is not available in a drive in this version: hold one member with `shaft = housing`"),
+            );
+            None
+        }
+        Err(_) => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    block.kind.span,
+                    "two members of the planetary stage are held: nothing can turn",
+                )
+                .hint("hold one member (`shaft = housing`) and put the other two on shafts"),
+            );
+            None
+        }
+    }
+}
