@@ -33,7 +33,8 @@ pub struct BearingPoint {
     /// On the shaft's own axial coordinate (m).
     pub position: f64,
     pub locating: bool,
-    /// The whole place's reaction on the shaft [R_x, R_y, R_z] (N).
+    /// The whole place's reaction on the shaft [R_x, R_y, R_z] (N); zero for a planetary stage's
+    /// planet bearings (listed with their carrier's shaft, they load the planets' pins).
     pub reaction: [f64; 3],
     /// Per bearing: |(R_x, R_y)|/count and, at the locating place, |R_z|/count (N).
     pub radial_load: f64,
@@ -41,6 +42,10 @@ pub struct BearingPoint {
     /// The place's powers (W): M_0 (or M_rr) and M_1 (or M_sl) × |ω| × count.
     pub no_load: f64,
     pub load: f64,
+    /// A planetary stage's planet bearings (on the planets' pins, charged to this shaft), not one of
+    /// the shaft's two places.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub on_planets: bool,
 }
 
 /// One shaft at an operating point. Powers and torques along the power flow: `received` comes in

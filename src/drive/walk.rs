@@ -295,6 +295,7 @@ impl<'a> Walk<'a> {
                     axial_load: axial,
                     no_load,
                     load,
+                    on_planets: false,
                 });
             }
         }

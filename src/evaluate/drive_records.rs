@@ -46,6 +46,9 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
         for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W", "validity_outside"] {
             cols.push(format!("stage_{}_{c}", s.name));
         }
+        if s.planetary.is_some() {
+            cols.extend(PLANETARY.iter().map(|c| format!("stage_{}_{c}", s.name)));
+        }
     }
     for s in &drive.layout.shafts {
         for i in 0..s.bearings.len() {
@@ -60,7 +63,25 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
     writeln!(out, "{}", cols.join(","))
 }
 
-/// One row.
+/// A planetary stage's columns: its members, its meshes, its planets.
+const PLANETARY: [&str; 15] = [
+    "sun_speed_rpm",
+    "sun_torque_N_m",
+    "ring_speed_rpm",
+    "ring_torque_N_m",
+    "carrier_speed_rpm",
+    "carrier_torque_N_m",
+    "rolling_power_W",
+    "basic_efficiency",
+    "sun_planet_efficiency",
+    "planet_ring_efficiency",
+    "sun_planet_loss_W",
+    "planet_ring_loss_W",
+    "planet_bearing_load_N",
+    "planet_bearings_W",
+    "churning_W",
+];
+
 /// One row; `outside`: by stage, the law's contacts outside its validity (of
 /// [`super::drive_setup::VALIDITY_SAMPLES`]).
 pub(crate) fn row(
@@ -102,12 +123,22 @@ pub(crate) fn row(
     cells.push(d.both_ends_deliver.to_string());
     cells.push(d.iterations.to_string());
     for (k, s) in d.stages.iter().enumerate() {
-        cells.push(s.driving.name().to_string());
+        cells.push(s.member_name(s.driving).to_string());
         cells.extend([s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load].iter().map(|x| x.to_string()));
         cells.push(outside.get(k).copied().unwrap_or(0).to_string());
+        if let Some(p) = &s.planetary {
+            let mut v = Vec::with_capacity(PLANETARY.len());
+            for i in 0..3 {
+                v.extend([p.speeds[i] * RPM, p.torques[i]]);
+            }
+            v.extend([p.rolling_power, p.basic_efficiency, p.mesh_efficiency[0], p.mesh_efficiency[1]]);
+            v.extend([p.mesh_loss[0], p.mesh_loss[1], p.forces.bearing, p.planet_bearings[0] + p.planet_bearings[1]]);
+            v.push(p.churning);
+            cells.extend(v.iter().map(|x| x.to_string()));
+        }
     }
     for s in &d.shafts {
-        for b in &s.bearings {
+        for b in s.bearings.iter().filter(|b| !b.on_planets) {
             cells.extend([b.radial_load, b.axial_load, b.no_load, b.load].iter().map(|x| x.to_string()));
         }
         cells.extend(

@@ -14,7 +14,7 @@ pub struct StageInputs {
     pub shafts: [String; 2],
     pub at_mm: [f64; 2],
     pub teeth: [u32; 2],
-    /// z_wheel / z_pinion.
+    /// z_wheel / z_pinion; a planetary stage's |ω| ratio of its two turning members.
     pub ratio: f64,
     pub normal_module_mm: f64,
     pub helix_angle_deg: f64,
@@ -59,7 +59,11 @@ pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
                 shafts: s.places.map(|p| layout.shafts[p.shaft].name.clone()),
                 at_mm: s.places.map(|p| p.at * 1e3),
                 teeth: s.teeth,
-                ratio: f64::from(s.teeth[1]) / f64::from(s.teeth[0]),
+                // A planetary stage's: ω of its first turning member over its second's.
+                ratio: s.planetary.as_ref().map_or(f64::from(s.teeth[1]) / f64::from(s.teeth[0]), |p| {
+                    let w = p.kinematics().member_speeds(p.members[0], 1.0);
+                    (w[p.members[0].index()] / w[p.members[1].index()]).abs()
+                }),
                 normal_module_mm: g.module * 1e3,
                 helix_angle_deg: g.helix_angle.to_degrees(),
                 pinion_hand: match s.hand {

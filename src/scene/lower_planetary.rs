@@ -74,6 +74,8 @@ pub(super) fn lower_planetary(
         }
     }
     let planets = lower_planet_count(&f, block, errors);
+    let helix: Option<Given<crate::model::Angle>> = f.optional("helix_angle", errors);
+    super::lower_planetary_checks::check_spur(helix.as_ref(), errors)?;
     if missing {
         return None;
     }
@@ -105,7 +107,8 @@ pub(super) fn lower_planetary(
         span: ring.kind.span,
     });
     super::lower_gears::check_geometry(&ring_pair, errors)?;
-    super::lower_planetary_checks::check_planets(&sun_pair, &ring_pair, planets, block, errors)?;
+    let (planets, planets_span) = planets;
+    super::lower_planetary_checks::check_planets(&sun_pair, &ring_pair, planets, planets_span, errors)?;
     let [sun_at, ring_at, carrier_at] = places;
     let turning: Vec<(PlanetaryMember, (Name, f64))> =
         [(PlanetaryMember::Sun, sun_at?), (PlanetaryMember::Ring, ring_at?), (PlanetaryMember::Carrier, carrier_at?)]
@@ -157,8 +160,8 @@ fn gears_block(planetary: &Block, pair_items: &[Item], gears: [Block; 2], intern
     Block { kind, label: None, items, span: planetary.span }
 }
 
-/// `planets = n`: a whole number of at least 1.
-fn lower_planet_count(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -> Option<u32> {
+/// `planets = n`: a whole number of at least 1, with where it was written.
+fn lower_planet_count(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -> Option<(u32, Span)> {
     let Some((_, v)) = f.values.get("planets") else {
         errors.push(
             Diagnostic::new(
@@ -182,7 +185,7 @@ fn lower_planet_count(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -
         );
         return None;
     }
-    Some(n as u32)
+    Some((n as u32, v.span))
 }
 
 /// The planet's `mass` (optional) and `bearing(...)` (optional).

@@ -9,22 +9,15 @@ use crate::model::GearPair;
 
 /// Assembly: n equally spaced planets mesh with both sun and ring only if (z_sun + z_ring)/n is a
 /// whole number (Müller, *Die Umlaufgetriebe*, §2.4; VDI 2157). Neighbours: the planets' tip circles
-/// must not touch, 2 a_w sin(π/n) > d_a,planet. A helical planetary stage is refused (its axial
-/// forces and the planets' tilting moments are not modelled in this version).
+/// must not touch, 2 a_w sin(π/n) > d_a,planet.
 pub(super) fn check_planets(
     sun: &GearPair,
     ring: &GearPair,
     n: u32,
-    block: &Block,
+    span: Span,
     errors: &mut Vec<Diagnostic>,
 ) -> Option<()> {
     let before = errors.len();
-    if sun.helix_angle.as_ref().is_some_and(|b| b.value.value != 0.0) {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, sun.helix_angle.as_ref().map_or(block.kind.span, |b| b.span), "a helical planetary stage is not available in this version")
-                .hint("give `helix_angle = 0 deg` (spur); the axial forces on the sun and the planets' tilting moments come later"),
-        );
-    }
     let (z_sun, z_ring) = (sun.pinion.teeth.value, ring.wheel.teeth.value);
     let z_planet = sun.wheel.teeth.value;
     if (z_sun + z_ring) % n != 0 {
@@ -32,7 +25,7 @@ pub(super) fn check_planets(
         errors.push(
             Diagnostic::new(
                 DiagnosticKind::Geometry,
-                block.kind.span,
+                span,
                 format!(
                     "{n} planets cannot be assembled equally spaced: (z_sun + z_ring)/n = ({z_sun} + {z_ring})/{n} = {:.4} is not a whole number",
                     f64::from(z_sun + z_ring) / f64::from(n)
@@ -49,7 +42,7 @@ pub(super) fn check_planets(
         errors.push(
             Diagnostic::new(
                 DiagnosticKind::Geometry,
-                block.kind.span,
+                span,
                 format!(
                     "{n} planets of {z_planet} teeth touch their neighbours: 2 a_w sin(π/n) = {:.4} mm is not larger than the planet's tip diameter {:.4} mm",
                     spacing * 1e3,
@@ -88,5 +81,23 @@ pub(super) fn one_held(
             );
             None
         }
+    }
+}
+
+/// A helical planetary stage is refused: its axial forces on the sun and the planets' tilting
+/// moments are not modelled in this version.
+pub(super) fn check_spur(
+    helix: Option<&crate::model::Given<crate::model::Angle>>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<()> {
+    match helix {
+        Some(b) if b.value.value != 0.0 => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, b.span, "a helical planetary stage is not available in this version")
+                    .hint("give `helix_angle = 0 deg` (spur); the axial forces on the sun and the planets' tilting moments come later"),
+            );
+            None
+        }
+        _ => Some(()),
     }
 }

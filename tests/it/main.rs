@@ -20,6 +20,7 @@ mod internal_pair;
 mod load_sharing;
 mod losses;
 mod oil_sweep;
+mod planetary;
 mod properties;
 mod readme;
 mod records_parquet;
@@ -42,6 +43,11 @@ pub fn root() -> PathBuf {
 pub fn scene(path: &Path) -> gearloss::Scene {
     let source = std::fs::read_to_string(path).unwrap();
     gearloss::check(&path.display().to_string(), &source).unwrap_or_else(|e| panic!("{}", e.render(false)))
+}
+
+/// Lowers a scene from its text, panicking with the rendered diagnostics if it fails.
+pub fn scene_from_text(source: &str) -> gearloss::Scene {
+    gearloss::check("scene.gear", source).unwrap_or_else(|e| panic!("{}", e.render(false)))
 }
 
 /// A 40/60-tooth, 14.5° pair with a long addendum: ε_α ≈ 2.47, up to three pairs in contact.

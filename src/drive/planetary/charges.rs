@@ -59,15 +59,13 @@ pub fn planet_bearings(
             count: bearing.count * layout.planets as usize,
             position: stage.places[place].at,
             locating: false,
-            reaction: [
-                forces.tangential[0] + forces.tangential[1],
-                forces.centrifugal + forces.radial[0] - forces.radial[1],
-                0.0,
-            ],
+            // The planets' bearings sit on pins, not on the shaft's two places: no shaft reaction.
+            reaction: [0.0; 3],
             radial_load: radial,
             axial_load: 0.0,
             no_load: m0 * per_planet * planets,
             load: m1.unwrap_or(0.0) * per_planet * planets,
+            on_planets: true,
         },
     ))
 }

@@ -1,0 +1,219 @@
+//! Planetary stages: Willis, the torque balance with the meshes' losses, Krüger's one-member-fixed
+//! efficiencies (from a published η₀ and from the tool's own), the stage inside a drive (every shaft
+//! in balance, the loss its parts), and the planets' forces.
+
+use gearloss::drive::kinematics::planetary::{
+    member_torques, one_fixed_efficiency, willis, Planetary, PlanetaryMember, PlanetaryMember::*,
+};
+use gearloss::drive::statics::residuals;
+use gearloss::drive::DrivePoint;
+use gearloss::evaluate::drive::evaluate_drive;
+
+/// The six one-member-fixed cases: (held, input, output).
+const CASES: [(PlanetaryMember, PlanetaryMember, PlanetaryMember); 6] = [
+    (Ring, Sun, Carrier),
+    (Ring, Carrier, Sun),
+    (Sun, Ring, Carrier),
+    (Sun, Carrier, Ring),
+    (Carrier, Sun, Ring),
+    (Carrier, Ring, Sun),
+];
+
+fn reducer() -> gearloss::Scene {
+    crate::scene(&crate::root().join("specs/planetary_reducer.gear"))
+}
+
+fn points(scene: &gearloss::Scene) -> Vec<DrivePoint> {
+    evaluate_drive(scene, scene.drive.as_ref().unwrap()).rows.into_iter().map(|r| r.point).collect()
+}
+
+/// Willis for every one-fixed case (z 24/72 and 17/73): the held member at rest, the equation's
+/// residual below 1e-14 of the speeds, and the closed-form ratios 1 − i₀ (ring held, sun to carrier),
+/// 1 − 1/i₀ (sun held, ring to carrier), i₀ (carrier held, sun to ring), to 1e-14.
+#[test]
+fn willis_speeds_for_all_six_one_fixed_cases() {
+    for (z_sun, z_ring) in [(24u32, 72u32), (17, 73)] {
+        let i0 = -f64::from(z_ring) / f64::from(z_sun);
+        for (held, input, output) in CASES {
+            let k = Planetary { sun_teeth: z_sun, ring_teeth: z_ring, members: [input, output] };
+            let w = k.member_speeds(input, 314.159);
+            assert_eq!(w[held.index()], 0.0);
+            assert_eq!(w[input.index()], 314.159);
+            let residual = w[0] - i0 * w[1] - (1.0 - i0) * w[2];
+            assert!(residual.abs() < 1e-14 * 314.159, "{held:?} held: residual {residual}");
+            let ratio = w[input.index()] / w[output.index()];
+            let expected = match (input, output) {
+                (Sun, Carrier) => 1.0 - i0,
+                (Carrier, Sun) => 1.0 / (1.0 - i0),
+                (Ring, Carrier) => 1.0 - 1.0 / i0,
+                (Carrier, Ring) => 1.0 / (1.0 - 1.0 / i0),
+                (Sun, Ring) => i0,
+                (Ring, Sun) => 1.0 / i0,
+                _ => unreachable!(),
+            };
+            assert!((ratio - expected).abs() < 1e-14 * expected.abs(), "{input:?}→{output:?}: {ratio} vs {expected}");
+            // And back: from the output's speed, the input's.
+            let back = willis(i0, (output, w[output.index()]), (held, 0.0));
+            assert!((back[input.index()] - 314.159).abs() < 1e-13 * 314.159, "{input:?}: {}", back[input.index()]);
+        }
+    }
+}
+
+/// The torques with losses (η₀ = 0.97) in every one-fixed case, driven forwards and backwards: they
+/// balance (Σ T = 0 to 1e-12), the stage loses Σ T ω = (1 − η₀) × the rolling power of the side
+/// that drives the meshes (to 1e-12), never less than zero; with η₀ = 1 nothing is lost.
+#[test]
+fn torque_balance_with_losses() {
+    let i0 = -3.0;
+    for (held, input, output) in CASES {
+        let w = willis(i0, (input, 100.0), (held, 0.0));
+        for sign in [1.0, -1.0] {
+            for eta0 in [0.97, 1.0] {
+                let t = member_torques(i0, eta0, (input, sign * 50.0), w);
+                let sum: f64 = t.torques.iter().sum();
+                assert!(sum.abs() < 1e-12 * 50.0, "{input:?}→{output:?}: Σ T = {sum}");
+                let loss = t.loss(w);
+                let p_w = t.rolling_power.abs();
+                let driving_side = if t.sun_drives_meshes { p_w } else { p_w / eta0 };
+                let expected = (1.0 - eta0) * driving_side;
+                assert!(
+                    (loss - expected).abs() < 1e-12 * driving_side.max(1.0),
+                    "{input:?}→{output:?}: {loss} vs {expected}"
+                );
+                assert!(loss >= -1e-12);
+                // The ring's torque is −i₀ η₀^w times the sun's.
+                let w_exp = if t.sun_drives_meshes { eta0 } else { 1.0 / eta0 };
+                assert!((t.torques[1] + i0 * w_exp * t.torques[0]).abs() < 1e-12 * t.torques[1].abs().max(1.0));
+            }
+        }
+    }
+}
+
+/// Krüger's one-member-fixed efficiencies (as Müller, *Die Umlaufgetriebe*, tabulates them for
+/// i₀ < 0) from the tool's torque balance, every case to 1e-14; with i₀ = −3 and η₀ = 0.98505 the
+/// published 0.98879 (sun → carrier) and 0.99626 (ring → carrier) to their five digits; η₀ = 1 gives 1.
+#[test]
+fn kruger_one_member_fixed_efficiencies() {
+    for (i0, eta0) in [(-3.0, 0.98505), (-4.2941, 0.97), (-2.5, 0.99)] {
+        for (held, input, output) in CASES {
+            let eta = one_fixed_efficiency(i0, eta0, input, output);
+            let kruger = match (input, output) {
+                (Sun, Carrier) => (1.0 - i0 * eta0) / (1.0 - i0),
+                (Carrier, Sun) => (1.0 - i0) / (1.0 - i0 / eta0),
+                (Ring, Carrier) => (i0 - eta0) / (i0 - 1.0),
+                (Carrier, Ring) => eta0 * (1.0 - i0) / (1.0 - i0 * eta0),
+                (Sun, Ring) | (Ring, Sun) => eta0,
+                _ => unreachable!(),
+            };
+            assert!((eta - kruger).abs() < 1e-14, "{held:?} held, {input:?}→{output:?}: {eta} vs {kruger}");
+            assert!((one_fixed_efficiency(i0, 1.0, input, output) - 1.0).abs() < 1e-15);
+        }
+    }
+    assert!((one_fixed_efficiency(-3.0, 0.98505, Sun, Carrier) - 0.98879).abs() < 5e-6);
+    assert!((one_fixed_efficiency(-3.0, 0.98505, Ring, Carrier) - 0.99626).abs() < 5e-6);
+}
+
+/// The spec's reducer (sun in, carrier out, ring held, i₀ = −3): at every point, law and flow the
+/// stage's η is Krüger's from the tool's own η₀ = η_sp η_pr (drive: (1 + 3η₀)/4; coast, carrier in:
+/// 4η₀/(η₀ + 3)), to 1e-12; the meshes' losses add up to (1 − η) P_in (1e-9); the members' torques
+/// balance and their powers add up to the meshes' loss (1e-9).
+#[test]
+fn kruger_from_the_tools_own_eta0() {
+    let all = points(&reducer());
+    // 3 torques × 2 speeds × 2 laws, drive and coast.
+    assert_eq!(all.len(), 12);
+    assert!(all.iter().any(|p| p.flow == gearloss::drive::PowerFlow::Coast));
+    for p in all {
+        let s = &p.stages[0];
+        let pp = s.planetary.as_ref().expect("a planetary stage");
+        let eta0 = pp.basic_efficiency;
+        assert!((eta0 - pp.mesh_efficiency[0] * pp.mesh_efficiency[1]).abs() < 1e-15);
+        assert!(eta0 < 1.0 && eta0 > 0.95);
+        let kruger = match pp.driving_member {
+            Sun => (1.0 + 3.0 * eta0) / 4.0,
+            Carrier => 4.0 * eta0 / (eta0 + 3.0),
+            Ring => unreachable!(),
+        };
+        assert!((pp.efficiency - kruger).abs() < 1e-12, "{:?}: {} vs {kruger}", p.flow, pp.efficiency);
+        assert!((s.mesh_efficiency - pp.efficiency).abs() < 1e-12, "the walk's η of the stage");
+        let p_in = s.driving_torque * s.driving_speed;
+        let meshes = pp.mesh_loss[0] + pp.mesh_loss[1];
+        assert!(
+            (meshes - (1.0 - pp.efficiency) * p_in).abs() < 1e-9 * p_in,
+            "{meshes} vs {}",
+            (1.0 - pp.efficiency) * p_in
+        );
+        assert!((s.mesh_loss - meshes).abs() < 1e-9 * p_in);
+        let sum: f64 = pp.torques.iter().sum();
+        assert!(sum.abs() < 1e-12 * pp.torques[2].abs());
+        let power: f64 = (0..3).map(|i| pp.torques[i] * pp.speeds[i]).sum();
+        assert!((power - meshes).abs() < 1e-9 * p_in, "Σ T ω = {power} vs {meshes}");
+    }
+}
+
+/// The drive with the planetary stage: every shaft balances its forces and moments (five equations
+/// from its two bearing places, to 1e-12 of the largest force; the sixth from the walk's torques
+/// and the shaft's own losses), the sun's mesh forces turn it by −T_driving and the carrier's by the
+/// lossless 4 T_driving (1e-12), and P_in − P_out is the sum of the parts (1e-9). Three planets
+/// cancel each other's forces (the places carry none beyond 1e-9 of F_t); one planet loads them.
+#[test]
+fn the_planetary_stage_keeps_every_shaft_in_balance() {
+    let one = crate::scene_from_text(
+        &std::fs::read_to_string(crate::root().join("specs/planetary_reducer.gear"))
+            .unwrap()
+            .replace("planets = 3", "planets = 1"),
+    );
+    for (scene, planets) in [(reducer(), 3), (one, 1)] {
+        for p in points(&scene) {
+            let s = &p.stages[0];
+            for shaft in &p.shafts {
+                let largest = shaft.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
+                let positions = [shaft.bearings[0].position, shaft.bearings[1].position];
+                let reactions = [shaft.bearings[0].reaction, shaft.bearings[1].reaction];
+                for r in residuals(&shaft.gear_loads, positions, &reactions) {
+                    assert!(r.abs() <= 1e-12 * largest, "{}: residual {r} of {largest} N", shaft.name);
+                }
+                let own = shaft.losses() / shaft.speed.abs();
+                let torque = shaft.received_torque - shaft.passed_torque - own;
+                assert!(torque.abs() <= 1e-12 * shaft.received_torque.abs().max(1.0), "{}: {torque}", shaft.name);
+                let radial = reactions.iter().map(|r| r[0].hypot(r[1])).fold(0.0f64, f64::max);
+                if planets == 3 {
+                    assert!(radial < 1e-9 * s.tangential_force, "{}: {radial} N with three planets", shaft.name);
+                } else {
+                    assert!(radial > 0.1 * s.tangential_force, "{}: {radial} N with one planet", shaft.name);
+                }
+            }
+            let about_axis = |j: usize| p.shafts[j].gear_loads.iter().map(|l| l.torque()).sum::<f64>();
+            let t = s.driving_torque;
+            let (sun, carrier) = if s.driving == gearloss::drive::Member::Pinion { (0, 1) } else { (1, 0) };
+            let (on_driving, on_driven) = (about_axis(sun), about_axis(carrier));
+            let sense = p.shafts[sun].speed.signum();
+            let expected = if s.driving == gearloss::drive::Member::Pinion { (-t, 4.0 * t) } else { (-t, t / 4.0) };
+            assert!((on_driving * sense - expected.0).abs() < 1e-12 * t.abs(), "{on_driving} vs {}", expected.0);
+            assert!((on_driven * sense - expected.1).abs() < 1e-12 * t.abs() * 4.0, "{on_driven} vs {}", expected.1);
+            let parts = p.losses.total();
+            assert!((p.power_lost() - parts).abs() < 1e-9 * p.input_power.abs(), "{} vs {parts}", p.power_lost());
+        }
+    }
+}
+
+/// One planet's bearing load by hand: F_t = T_sun/(n r_w,sun) on both meshes (the radial forces
+/// cancel with equal pressure angles), |B| = √((2 F_t)² + (m ω_c² a_w)²), to 1e-12.
+#[test]
+fn planet_bearing_load_by_hand() {
+    for p in points(&reducer()) {
+        let pp = p.stages[0].planetary.as_ref().unwrap();
+        let f = &pp.forces;
+        // The lossless sun torque: the driving torque, or the carrier's over 1 − i₀ = 4.
+        let t = p.stages[0].driving_torque;
+        let sun = if pp.driving_member == Sun { t } else { t / 4.0 };
+        let expected_ft = sun / (3.0 * 0.024);
+        assert!((f.tangential[0] - expected_ft).abs() < 1e-12 * expected_ft, "{} vs {expected_ft}", f.tangential[0]);
+        assert!((f.tangential[1] - f.tangential[0]).abs() < 1e-12 * expected_ft);
+        let mass = 7850.0 * std::f64::consts::PI / 4.0 * 0.048f64.powi(2) * 0.025;
+        let centrifugal = mass * pp.speeds[2].powi(2) * 0.048;
+        assert!((f.centrifugal - centrifugal).abs() < 1e-12 * centrifugal);
+        let b = (2.0 * f.tangential[0]).hypot(centrifugal);
+        assert!((f.bearing - b).abs() < 1e-12 * b, "{} vs {b}", f.bearing);
+    }
+}
