@@ -89,7 +89,7 @@ pub struct Stage {
     pub lubrication: Option<Lubrication>,
     /// A planetary stage's layout (its places carry two of sun, ring and carrier); None for a
     /// parallel stage.
-    pub planetary: Option<super::planetary::PlanetaryLayout>,
+    pub planetary: Option<super::kinematics::planetary::PlanetaryLayout>,
 }
 
 impl Stage {

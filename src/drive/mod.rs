@@ -17,7 +17,10 @@
 pub(crate) mod forces;
 pub mod kinematics;
 pub(crate) mod layout;
+pub mod mesh_efficiency;
+pub(crate) mod pass;
 pub mod planetary;
+pub mod planetary_charges;
 pub(crate) mod point;
 pub(crate) mod speeds;
 pub mod statics;
@@ -25,5 +28,6 @@ pub mod walk;
 
 pub use forces::{mesh_forces, GearLoad, MeshForceSizes};
 pub use layout::{Drive, DriveOperating, GearPlace, Hand, Member, Shaft, ShaftEnd, Stage};
+pub use mesh_efficiency::MeshEfficiency;
 pub use point::{BearingPoint, DrivePoint, PowerFlow, ShaftPoint, StagePoint};
-pub use walk::{solve, EndValue, MeshEfficiency, TOLERANCE};
+pub use walk::{solve, EndValue, TOLERANCE};

@@ -13,7 +13,10 @@
 use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
 use super::kinematics::StageKindId;
 use super::layout::{Drive, Member, ShaftEnd};
+use super::mesh_efficiency::MeshEfficiency;
+use super::pass::Pass;
 use super::planetary;
+use super::planetary_charges;
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use super::statics::shaft_reactions;
@@ -26,16 +29,6 @@ pub const TOLERANCE: f64 = 1e-12;
 const MAX_PASSES: usize = 100;
 /// A pass whose largest driving torque exceeds the first pass's this many times diverges.
 const DIVERGED: f64 = 1e3;
-
-/// The mesh efficiency of a stage, from outside (a friction law on the stage's own pair).
-pub trait MeshEfficiency {
-    /// η of stage `stage` when member `driving` puts `torque` (N·m, > 0) into the mesh at `speed`
-    /// (rad/s, > 0).
-    fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64;
-    /// η of one mesh of planetary stage `stage` when its pinion carries `torque` (N·m per planet,
-    /// > 0) at `speed` (rad/s in the carrier's frame, > 0).
-    fn planet_mesh(&self, stage: usize, mesh: super::planetary::PlanetMesh, torque: f64, speed: f64) -> f64;
-}
 
 /// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
 pub struct DriveModel<'a> {
@@ -86,40 +79,6 @@ struct Walk<'a> {
     flow: PowerFlow,
     shafts: Vec<usize>,
     steps: Vec<(usize, Member)>,
-}
-
-/// The powers of one pass (W), indexed by shaft and by stage, with the driving torques (N·m).
-#[derive(Debug, Clone)]
-struct Pass {
-    received: Vec<f64>,
-    passed: Vec<f64>,
-    /// By stage: the driving gear's torque, the mesh efficiency and the power the mesh loses.
-    driving_torque: Vec<f64>,
-    efficiency: Vec<f64>,
-    mesh_loss: Vec<f64>,
-}
-
-impl Pass {
-    fn largest_torque(&self) -> f64 {
-        self.driving_torque.iter().fold(0.0f64, |m, t| m.max(t.abs()))
-    }
-
-    fn is_finite(&self) -> bool {
-        [&self.received, &self.passed, &self.driving_torque, &self.efficiency, &self.mesh_loss]
-            .iter()
-            .all(|v| v.iter().all(|x| x.is_finite()))
-    }
-
-    /// The largest move of a driving torque from `self` to `next`, relative to the largest (the
-    /// ends' torques follow from them and the speeds).
-    fn moved(&self, next: &Pass) -> f64 {
-        let scale = next.driving_torque.iter().fold(0.0f64, |m, t| m.max(t.abs()));
-        if scale == 0.0 {
-            return 0.0;
-        }
-        let moved = self.driving_torque.iter().zip(&next.driving_torque).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
-        moved / scale
-    }
 }
 
 /// Load-independent losses of each shaft (W): seals, and the no-load parts of the stages whose
@@ -205,7 +164,7 @@ impl<'a> Walk<'a> {
             if torque == 0.0 || speed == 0.0 {
                 1.0
             } else if let Some(layout) = &self.drive.stages[k].planetary {
-                planetary::charges::state(meshes, k, layout, m, torque.abs(), self.places(k)).efficiency
+                planetary_charges::state(meshes, k, layout, m, torque.abs(), self.places(k)).efficiency
             } else {
                 meshes.efficiency(k, m, torque.abs(), speed)
             }
@@ -302,7 +261,7 @@ impl<'a> Walk<'a> {
         for &(k, m) in &self.steps {
             let stage = &model.drive.stages[k];
             if let Some((j, b)) =
-                planetary::charges::planet_bearings(stage, m, torques[k].abs(), self.places(k), model.oil)
+                planetary_charges::planet_bearings(stage, m, torques[k].abs(), self.places(k), model.oil)
             {
                 powers[j] += b.no_load + b.load;
                 places[j].push(b);
@@ -352,10 +311,10 @@ impl<'a> Walk<'a> {
                 let t = p.driving_torque[k];
                 let d = m.index();
                 let planetary = stage.planetary.as_ref().map(|_| {
-                    let bearings = planetary::charges::planet_bearings(stage, m, t.abs(), self.places(k), model.oil)
+                    let bearings = planetary_charges::planet_bearings(stage, m, t.abs(), self.places(k), model.oil)
                         .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
                     let parts = (bearings, fixed.stage_no_load[k]);
-                    Box::new(planetary::charges::point(meshes, k, stage, m, t.abs(), self.places(k), parts))
+                    Box::new(planetary_charges::point(meshes, k, stage, m, t.abs(), self.places(k), parts))
                 });
                 let [f_t, f_r, f_a] = match &planetary {
                     Some(pp) => [pp.forces.tangential[0], pp.forces.radial[0], 0.0],

@@ -10,7 +10,8 @@ fn ev_reducer() -> gearloss::Scene {
     crate::scene(&crate::root().join("specs/ev_two_stage_reducer.gear"))
 }
 
-fn points(scene: &gearloss::Scene) -> Vec<DrivePoint> {
+/// Every row's point of a drive scene's evaluation.
+pub(crate) fn points(scene: &gearloss::Scene) -> Vec<DrivePoint> {
     evaluate_drive(scene, scene.drive.as_ref().unwrap()).rows.into_iter().map(|r| r.point).collect()
 }
 

@@ -6,8 +6,7 @@ use gearloss::drive::kinematics::planetary::{
     member_torques, one_fixed_efficiency, willis, Planetary, PlanetaryMember, PlanetaryMember::*,
 };
 use gearloss::drive::statics::residuals;
-use gearloss::drive::DrivePoint;
-use gearloss::evaluate::drive::evaluate_drive;
+use crate::drive::points;
 
 /// The six one-member-fixed cases: (held, input, output).
 const CASES: [(PlanetaryMember, PlanetaryMember, PlanetaryMember); 6] = [
@@ -21,10 +20,6 @@ const CASES: [(PlanetaryMember, PlanetaryMember, PlanetaryMember); 6] = [
 
 fn reducer() -> gearloss::Scene {
     crate::scene(&crate::root().join("specs/planetary_reducer.gear"))
-}
-
-fn points(scene: &gearloss::Scene) -> Vec<DrivePoint> {
-    evaluate_drive(scene, scene.drive.as_ref().unwrap()).rows.into_iter().map(|r| r.point).collect()
 }
 
 /// Willis for every one-fixed case (z 24/72 and 17/73): the held member at rest, the equation's

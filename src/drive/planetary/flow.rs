@@ -13,8 +13,9 @@
 //! loses (1 − η_sp) P_d and the planet–ring mesh (1 − η_pr) η_sp P_d, P_d the driving side's rolling
 //! power (the reverse order where the ring drives), together (1 − η₀) P_d = Σ T ω.
 
-use super::layout::PlanetaryLayout;
-use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, MemberTorques, PlanetaryMember};
+use crate::drive::kinematics::planetary::{
+    member_torques, stationary_ratio, MemberTorques, PlanetaryLayout, PlanetaryMember,
+};
 
 /// A planetary stage's two meshes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -16,9 +16,8 @@
 //! With n ≥ 2 the forces on each member cancel (only the torque remains); one planet loads the
 //! sun's and the carrier's shafts.
 
-use super::layout::PlanetaryLayout;
 use crate::drive::forces::GearLoad;
-use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, PlanetaryMember};
+use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, PlanetaryLayout, PlanetaryMember};
 use crate::drive::layout::{Member, Stage};
 
 /// One planet's forces (N).

@@ -1,13 +1,13 @@
-//! A planetary stage in the drive: its sizes and parts ([`layout`]), the stage at one operating
-//! point from its two meshes' efficiencies ([`flow`]) and the forces on its members and planet
-//! bearings ([`loads`]). Its kinematics is the catalogue's [`super::kinematics::planetary`] entry.
+//! A planetary stage in the drive: the stage at one operating point from its two meshes'
+//! efficiencies ([`flow`]), the forces on its members and planet bearings ([`loads`]) and what the
+//! report reads ([`point`]). Its kinematics and layout are the catalogue's
+//! [`super::kinematics::planetary`] entry; what the walk charges for it is
+//! [`super::planetary_charges`].
 
-pub mod charges;
 pub mod flow;
-pub mod layout;
 pub mod loads;
 pub mod point;
 
+pub use crate::drive::kinematics::planetary::PlanetaryLayout;
 pub use flow::{planetary_state, PlanetMesh, PlanetaryState};
-pub use layout::PlanetaryLayout;
 pub use point::PlanetaryPoint;

@@ -6,13 +6,13 @@
 //! the carrier under the bearing load |B|/count of [`super::loads`], times that speed, the count
 //! and n; they join the fixed point of the walk with the shafts' bearings.
 
-use super::flow::{planetary_state, PlanetaryState};
-use super::layout::PlanetaryLayout;
-use super::loads::{lossless_torques, planet_forces};
-use super::point::PlanetaryPoint;
-use crate::drive::layout::{Member, Stage};
-use crate::drive::point::BearingPoint;
-use crate::drive::walk::MeshEfficiency;
+use super::kinematics::planetary::PlanetaryLayout;
+use super::layout::{Member, Stage};
+use super::mesh_efficiency::MeshEfficiency;
+use super::planetary::flow::{planetary_state, PlanetaryState};
+use super::planetary::loads::{lossless_torques, planet_forces};
+use super::planetary::point::PlanetaryPoint;
+use super::point::BearingPoint;
 use crate::losses::Oil;
 
 /// The stage at place `driving` putting `torque` (N·m, > 0) in, the places at `places` (rad/s).
