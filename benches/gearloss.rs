@@ -554,6 +554,34 @@ mod several_stages {
     }
 }
 
+mod planetary {
+    use gearloss::evaluate::drive::evaluate_drive_into;
+
+    /// specs/planetary_reducer.gear with one operating point and one law.
+    fn reducer(torque: &str, speed: &str) -> gearloss::Scene {
+        let text =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/planetary_reducer.gear")).unwrap();
+        let start = text.find("    operating {").unwrap();
+        let head = &text[..start];
+        let text = format!(
+            "{head}    operating {{ input_torque = {torque}  input_speed = {speed}  oil_temperature = 70 degC }}\n    friction {{ iso_14179_2 }}\n    analyses {{ efficiency(formulations = [external]) }}\n}}\n"
+        );
+        gearloss::check("bench.gear", &text).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// One operating point of the planetary reducer: the sun–planet pair (both roles) and the
+    /// internal planet–ring pair set up, η₀ from both meshes, the planets' bearings and the carrier's
+    /// churning, the fixed point, both meshes' validity. Target < 50 µs.
+    #[divan::bench]
+    fn one_point(b: divan::Bencher) {
+        let scene = reducer("150 N*m", "3000 rpm");
+        b.bench(|| {
+            let drive = scene.drive.as_ref().unwrap();
+            evaluate_drive_into(&scene, drive, &mut std::io::sink()).unwrap().tally.rows
+        });
+    }
+}
+
 mod drive_cycle {
     use gearloss::evaluate::drive_cycle::evaluate_cycle;
 

@@ -2,11 +2,11 @@
 //! efficiencies (from a published η₀ and from the tool's own), the stage inside a drive (every shaft
 //! in balance, the loss its parts), and the planets' forces.
 
+use crate::drive::points;
 use gearloss::drive::kinematics::planetary::{
     member_torques, one_fixed_efficiency, willis, Planetary, PlanetaryMember, PlanetaryMember::*,
 };
 use gearloss::drive::statics::residuals;
-use crate::drive::points;
 
 /// The six one-member-fixed cases: (held, input, output).
 const CASES: [(PlanetaryMember, PlanetaryMember, PlanetaryMember); 6] = [

@@ -7,7 +7,8 @@
 //! (internal) with the planet's torque T_sun z_planet/(n z_sun) at the planet's speed relative to
 //! the carrier, the planet in the pinion's place whichever drives. η₀ = η_sp η_pr, and the torques
 //! follow from [`member_torques`]; where the given torque is the ring's or the carrier's, T_sun
-//! depends on η₀ and η₀ on T_sun: the two are iterated until η₀ moves by less than 1e-15.
+//! depends on η₀ and η₀ on T_sun: the two are iterated until the meshes' loads move by less than
+//! 1e-15 relative (where the sun's torque is given, one evaluation of each mesh).
 //!
 //! The meshes' losses add up to the stage's: with the sun driving the meshes the sun–planet mesh
 //! loses (1 − η_sp) P_d and the planet–ring mesh (1 − η_pr) η_sp P_d, P_d the driving side's rolling
@@ -63,14 +64,23 @@ pub fn planetary_state(
     let relative = (speeds[0] - speeds[2]).abs();
     let mut eta = [1.0, 1.0];
     let (mut mesh_torque, mut mesh_speed) = ([0.0; 2], [relative, relative * z_sun / z_planet]);
+    // The loads η was last evaluated at: the fixed point stops when the next loads are the same.
+    let mut evaluated: Option<([f64; 2], bool)> = None;
     for _ in 0..50 {
         let torques = member_torques(i0, eta[0] * eta[1], given, speeds);
         let per_planet = torques.torques[0].abs() / n;
         let sun_drives = torques.sun_drives_meshes;
-        mesh_torque =
+        let loads =
             [if sun_drives { per_planet } else { per_planet * z_planet / z_sun }, per_planet * z_planet / z_sun];
+        let settled = evaluated.is_some_and(|(last, drives): ([f64; 2], bool)| {
+            drives == sun_drives && (0..2).all(|i| (loads[i] - last[i]).abs() <= 1e-15 * loads[i])
+        });
+        if settled {
+            break;
+        }
+        mesh_torque = loads;
         mesh_speed[0] = if sun_drives { relative } else { relative * z_sun / z_planet };
-        let next = if per_planet == 0.0 || relative == 0.0 {
+        eta = if per_planet == 0.0 || relative == 0.0 {
             [1.0, 1.0]
         } else {
             [
@@ -78,11 +88,7 @@ pub fn planetary_state(
                 mesh(PlanetMesh::PlanetRing, mesh_torque[1], mesh_speed[1]),
             ]
         };
-        let moved = (next[0] * next[1] - eta[0] * eta[1]).abs();
-        eta = next;
-        if moved <= 1e-15 {
-            break;
-        }
+        evaluated = Some((loads, sun_drives));
     }
     let torques = member_torques(i0, eta[0] * eta[1], given, speeds);
     let eta0 = eta[0] * eta[1];
