@@ -33,8 +33,10 @@
 //!                                 cycle's pieces with exact wheel energies (the box's losses over them
 //!                                 come in from evaluate/drive_cycle)
 //!  drive/                         a gearbox of several stages: its layout, the stage-kind catalogue
-//!                                 (kinematics/), the power walk and its fixed point, mesh forces,
-//!                                 shaft statics (the mesh efficiency comes in from evaluate/drive)
+//!                                 (kinematics/: parallel, planetary), the power walk and its fixed
+//!                                 point, mesh forces, shaft statics, a planetary stage's meshes,
+//!                                 planets and forces (planetary/; the mesh efficiency comes in from
+//!                                 evaluate/drive)
 //!  dynamics/                      the n-state periodic engine (PeriodicModel: propagators, Floquet,
 //!                                 trajectory, integrators, numerics study) and the model catalogue
 //!                                 (models/: SDOF, 6-DOF behind GearDynamics; generic analysis data)

@@ -5,7 +5,7 @@
 //! stationary ratio i₀ = −z_ring/z_sun (the carrier held, sun to ring),
 //! n_sun − i₀ n_ring − (1 − i₀) n_carrier = 0.
 //!
-//! **Torques and losses** (Müller §3; Krüger, *Der Wirkungsgrad von Planetengetrieben*): the external
+//! **Torques and losses** (Müller §3, whose one-member-fixed efficiencies are Krüger's): the external
 //! torques on the members balance, T_sun + T_ring + T_carrier = 0. Only the rolling power
 //! P_w = T_sun (ω_sun − ω_carrier) passes the meshes, in the carrier's frame; the meshes lose the
 //! share 1 − η₀ of it, η₀ = η_sun–planet · η_planet–ring (the stationary efficiency). Where P_w > 0 the

@@ -5,7 +5,7 @@
 //! lossless torques of [`member_torques`] at η₀ = 1), shared equally by the n planets. Planet j sits
 //! at the angle θ_j = φ + 2πj/n (φ the stage's `direction`) at the carrier's centre distance a_w; with
 //! r̂ = (cos θ_j, sin θ_j) and t̂ = (−sin θ_j, cos θ_j) (Niemann & Winter, *Maschinenelemente* III,
-//! §24 "Umlaufgetriebe"; ISO 6336-1 for F_r = F_t tan α_w):
+//! "Umlaufgetriebe"; ISO 6336-1 for F_r = F_t tan α_w):
 //!
 //! - on the sun, at r_w,sun r̂: F = −T_sun/(n r_w,sun) t̂ − |F_t,sun| tan α_w,sp r̂ (towards its centre);
 //! - on the ring, at r_w,ring r̂: F = −T_ring/(n r_w,ring) t̂ + |F_t,ring| tan α_w,pr r̂ (outwards);
