@@ -10,7 +10,7 @@
 //!                                        mesh forces (forces) ─statics─▶ bearing loads ─┘
 //! ```
 //!
-//! The mesh efficiency comes in from outside ([`walk::MeshEfficiency`]): the evaluation builds one per
+//! The mesh efficiency comes in from outside ([`mesh_efficiency::MeshEfficiency`]): the evaluation builds one per
 //! stage from the stage's own pair (a checked mesh, never the scene), with the driving member in
 //! the pinion's role.
 

@@ -3,7 +3,7 @@
 //! and the point the report reads.
 //!
 //! The planet bearings' losses are Palmgren's (or SKF's) moments at the planet's speed relative to
-//! the carrier under the bearing load |B|/count of [`super::loads`], times that speed, the count
+//! the carrier under the bearing load |B|/count of [`super::planetary::loads`], times that speed, the count
 //! and n; they join the fixed point of the walk with the shafts' bearings.
 
 use super::kinematics::planetary::PlanetaryLayout;
