@@ -350,6 +350,31 @@ def test_a_drive_as_tables():
     assert pair.drive_records.empty and pair.stages.empty and pair.bearings.empty
 
 
+def test_a_planetary_stage_as_a_table():
+    """The planetary reducer: `report.planetary` has a row per record row; the members' torques
+    balance, their powers add up to both meshes' loss, and the stage's η is Krüger's from η₀
+    ((1 + 3η₀)/4 in drive, 4η₀/(η₀ + 3) in coast), to 1e-9; a drive without planets has none."""
+    report = gearloss.run(scene(ROOT / "specs/planetary_reducer.gear"))
+    p = report.planetary
+    records = report.drive_records
+    assert len(p) == len(records) == 12 and set(p["stage"]) == {"planetary"}
+    rpm = 3.141592653589793 / 30.0
+    for _, r in p.iterrows():
+        torques = [r["sun_torque_N_m"], r["ring_torque_N_m"], r["carrier_torque_N_m"]]
+        assert abs(sum(torques)) <= 1e-9 * abs(r["carrier_torque_N_m"])
+        power = sum(t * r[f"{m}_speed_rpm"] * rpm for t, m in zip(torques, ["sun", "ring", "carrier"]))
+        meshes = r["sun_planet_loss_W"] + r["planet_ring_loss_W"]
+        assert abs(power - meshes) <= 1e-9 * abs(r["rolling_power_W"])
+        eta0 = r["basic_efficiency"]
+        assert abs(eta0 - r["sun_planet_efficiency"] * r["planet_ring_efficiency"]) <= 1e-12
+    stages = report.stages.set_index("row")
+    for row, r in p.set_index("row").iterrows():
+        eta0 = r["basic_efficiency"]
+        kruger = (1 + 3 * eta0) / 4 if stages.loc[row, "driving"] == "sun" else 4 * eta0 / (eta0 + 3)
+        assert abs(stages.loc[row, "mesh_efficiency"] - kruger) <= 1e-9
+    assert gearloss.run(scene(ROOT / "specs/ev_two_stage_reducer.gear")).planetary.empty
+
+
 def test_a_drive_cycle_as_a_table():
     """A vehicle over WLTC 3b: `report.cycle` has a row per interval (1800), its losses add up to
     the report's totals (ten digits), and on every row the motor's energy is the box's output

@@ -246,6 +246,20 @@ class Report:
         return _drive_long(self, "stage", names, cols, "stage")
 
     @property
+    def planetary(self):
+        """Per record row and planetary stage: its members' speeds (rpm) and torques (N·m), the
+        rolling power P_w (W), η₀ and both meshes' η and loss (W), the planet bearing's load (N)
+        and the planets' bearing and churning losses (W); empty without planetary stages."""
+        names = [s["name"] for s in self.data.get("stages", []) if s.get("planetary")]
+        cols = [
+            "sun_speed_rpm", "sun_torque_N_m", "ring_speed_rpm", "ring_torque_N_m", "carrier_speed_rpm",
+            "carrier_torque_N_m", "rolling_power_W", "basic_efficiency", "sun_planet_efficiency",
+            "planet_ring_efficiency", "sun_planet_loss_W", "planet_ring_loss_W", "planet_bearing_load_N",
+            "planet_bearings_W", "churning_W",
+        ]
+        return _drive_long(self, "stage", names, cols, "stage")
+
+    @property
     def shafts(self):
         """Per record row and shaft: its speed (rpm, signed about +z), the torques it receives and
         passes on (N·m), its gears' no-load parts and its seals (W)."""
