@@ -40,16 +40,21 @@ pub fn planet_bearings(
     let bearing = layout.planet_bearing?;
     let speeds = layout.member_speeds(places);
     let torques = lossless_torques(layout, driving.index(), torque, speeds);
-    let forces = planet_forces(layout, torques, speeds);
     let omega = layout.planet_speed(speeds);
     let n = bearing.count as f64;
-    let radial = forces.bearing / n;
-    let (m0, m1) = match oil.nu {
-        Some(nu) => bearing.moments(radial, 0.0, nu, omega, oil.mineral),
-        None => (0.0, None),
-    };
-    let per_planet = n * omega;
-    let planets = f64::from(layout.planets);
+    // Each class of planets by its load; the place lists the most loaded planet's bearing.
+    let (mut no_load, mut load, mut radial) = (0.0, 0.0, 0.0f64);
+    for (count, divisor) in layout.planet_shares() {
+        let per_bearing = planet_forces(layout, torques, speeds, divisor).bearing / n;
+        radial = radial.max(per_bearing);
+        let (m0, m1) = match oil.nu {
+            Some(nu) => bearing.moments(per_bearing, 0.0, nu, omega, oil.mineral),
+            None => (0.0, None),
+        };
+        let per_planet = n * omega;
+        no_load += m0 * per_planet * count;
+        load += m1.unwrap_or(0.0) * per_planet * count;
+    }
     let place =
         layout.place_of(crate::drive::kinematics::planetary::PlanetaryMember::Carrier).unwrap_or(driving.index());
     Some((
@@ -63,8 +68,8 @@ pub fn planet_bearings(
             reaction: [0.0; 3],
             radial_load: radial,
             axial_load: 0.0,
-            no_load: m0 * per_planet * planets,
-            load: m1.unwrap_or(0.0) * per_planet * planets,
+            no_load,
+            load,
             on_planets: true,
         },
     ))
@@ -99,8 +104,13 @@ pub fn point(
         basic_efficiency: s.basic_efficiency,
         efficiency: s.efficiency,
         planet_speed: layout.planet_speed(s.speeds),
-        forces: planet_forces(layout, torques, s.speeds),
+        forces: planet_forces(layout, torques, s.speeds, most_loaded(layout)),
         planet_bearings,
         churning,
     }
+}
+
+/// 1/d of the sun's torque the most loaded planet carries: d = n/K_γ.
+fn most_loaded(layout: &PlanetaryLayout) -> f64 {
+    layout.planet_shares()[0].1
 }

@@ -11,6 +11,8 @@ use crate::model::GearPair;
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PlanetaryInputs {
     pub planets: u32,
+    /// K_γ: the most loaded planet's share over the mean (1: equal sharing).
+    pub load_sharing_factor: f64,
     /// [sun, planet, ring].
     pub teeth: [u32; 3],
     /// Each member with its shaft ("housing" where held).
@@ -41,6 +43,7 @@ pub(super) fn planetary_inputs(layout: &Drive, stage: &Stage, ring_pair: Option<
     let n = f64::from(p.planets);
     Some(PlanetaryInputs {
         planets: p.planets,
+        load_sharing_factor: p.load_sharing_factor,
         teeth: p.teeth,
         members: PlanetaryMember::ALL.iter().map(|m| (*m, shaft_of(*m))).collect(),
         stationary_ratio: stationary_ratio(p.teeth[0], p.teeth[2]),

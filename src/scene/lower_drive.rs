@@ -379,5 +379,6 @@ fn planetary_layout(
         face_width: sp.face_width,
         planet_mass: d.planet_mass,
         planet_bearing: d.planet_bearing,
+        load_sharing_factor: d.load_sharing_factor,
     })
 }

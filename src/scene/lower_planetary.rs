@@ -40,6 +40,8 @@ pub(super) struct PlanetaryDecl {
     pub members: [PlanetaryMember; 2],
     pub planet_mass: f64,
     pub planet_bearing: Option<Bearing>,
+    /// K_γ, 1 when not given.
+    pub load_sharing_factor: f64,
 }
 
 /// The sun–planet pair, the members' places [(shaft, at)] on the stage's two places, and the rest.
@@ -53,6 +55,7 @@ pub(super) fn lower_planetary(
     let members = ["sun", "planet", "ring", "carrier"];
     let mut keys = PAIR_KEYS.to_vec();
     keys.push("planets");
+    keys.push("load_sharing_factor");
     let f = Fields::read("the `planetary` block", block.span, &block.items, &keys, &members, &[], errors);
     let member = |name: &str| f.blocks.iter().find(|b| b.kind.text == name).copied();
     let mut missing = false;
@@ -120,7 +123,9 @@ pub(super) fn lower_planetary(
         let d = 2.0 * sun_pair.geometry().map_or(0.0, |g| g.pitch_radius[1]);
         STEEL_DENSITY * std::f64::consts::PI / 4.0 * d * d * sun_pair.face_width.value.get::<meter>()
     });
-    let decl = PlanetaryDecl { ring_pair, planets, members: [m0, m1], planet_mass, planet_bearing };
+    let load_sharing_factor = lower_load_sharing_factor(&f, planets, errors)?;
+    let decl =
+        PlanetaryDecl { ring_pair, planets, members: [m0, m1], planet_mass, planet_bearing, load_sharing_factor };
     Some((sun_pair, [p0, p1], decl))
 }
 
@@ -239,4 +244,23 @@ fn lower_member_place(
     }
     let at: Option<Given<Length>> = f.required("at", "40 mm", errors);
     Some(Some((shaft, at?.value.value)))
+}
+
+/// `load_sharing_factor = K_γ` (ISO 6336-1's mesh load factor of a planetary stage): from 1 (equal
+/// sharing, the default) to n (one planet carrying everything).
+fn lower_load_sharing_factor(f: &Fields, planets: u32, errors: &mut Vec<Diagnostic>) -> Option<f64> {
+    let Some((_, v)) = f.values.get("load_sharing_factor") else { return Some(1.0) };
+    let (k, _) = super::fields::scalar("load_sharing_factor", v, super::units::Dimension::NONE, errors)?;
+    if !(1.0..=f64::from(planets)).contains(&k) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                v.span,
+                format!("load_sharing_factor = {k} is outside 1 … {planets} (the planets' count)"),
+            )
+            .hint("K_γ is the most loaded planet's load over the mean: 1 for equal sharing, n if one planet carried it all"),
+        );
+        return None;
+    }
+    Some(k)
 }

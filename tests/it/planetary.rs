@@ -212,3 +212,82 @@ fn planet_bearing_load_by_hand() {
         assert!((f.bearing - b).abs() < 1e-12 * b, "{} vs {b}", f.bearing);
     }
 }
+
+/// The two-DOF stage (all three turning, two speeds given, the third by Willis; one torque given):
+/// the torques balance and Σ T ω is the meshes' loss (1e-12); with the ring's speed going to zero
+/// the stage's η goes to Krüger's ring-held value (continuity, 1e-9); turning as a block (ω_sun =
+/// ω_carrier) nothing rolls and nothing is lost; a differential summing sun and ring into the carrier
+/// loses only on the rolling power, so its η lies above the ring-held stage's.
+#[test]
+fn two_dof_stage_balances_and_meets_the_one_fixed_limits() {
+    let (i0, eta0) = (-3.0, 0.98505);
+    for ring in [-30.0, -1.0, 0.0, 1e-9, 20.0] {
+        let w = willis(i0, (Sun, 300.0), (Ring, ring));
+        let t = member_torques(i0, eta0, (Sun, 40.0), w);
+        assert!(t.torques.iter().sum::<f64>().abs() < 1e-12 * 40.0);
+        let expected = if t.sun_drives_meshes {
+            (1.0 - eta0) * t.rolling_power.abs()
+        } else {
+            (1.0 / eta0 - 1.0) * t.rolling_power.abs()
+        };
+        assert!((t.loss(w) - expected).abs() < 1e-12 * t.rolling_power.abs());
+        if ring.abs() < 1e-6 {
+            let kruger = (1.0 - i0 * eta0) / (1.0 - i0);
+            assert!((t.efficiency(w) - kruger).abs() < 1e-9, "ring at {ring}: {} vs {kruger}", t.efficiency(w));
+        }
+    }
+    let block = willis(i0, (Sun, 100.0), (Carrier, 100.0));
+    assert!((block[1] - 100.0).abs() < 1e-12);
+    let t = member_torques(i0, eta0, (Sun, 40.0), block);
+    assert!(t.rolling_power == 0.0 && t.loss(block).abs() < 1e-12 && t.efficiency(block) == 1.0);
+    // Sun and ring both driving the carrier (the ring turning with the sun).
+    let w = willis(i0, (Sun, 300.0), (Ring, 50.0));
+    let t = member_torques(i0, eta0, (Carrier, -4.0 * 40.0), w);
+    assert!(t.torques[0] * w[0] > 0.0 && t.torques[1] * w[1] > 0.0 && t.torques[2] * w[2] < 0.0);
+    assert!(t.efficiency(w) > one_fixed_efficiency(i0, eta0, Sun, Carrier) && t.efficiency(w) < 1.0);
+}
+
+/// A load-sharing factor K_γ = 1.25 (three planets): the most loaded planet's forces are K_γ times
+/// equal sharing's (1e-12); under Coulomb friction, whose mean loss is linear in the load, η₀ and η are
+/// equal sharing's (1e-12); under Benedict–Kelley (μ varies with the load) η₀ moves; the planets'
+/// bearings: the no-load part is unchanged (exactly), the load part grows a little (M_1 is linear in
+/// |B|, and |B| = √((2F_t)² + (centrifugal)²) is convex in the planet's load), by less than 1e-3.
+#[test]
+fn load_sharing_factor_loads_one_planet_more() {
+    let text = std::fs::read_to_string(crate::root().join("specs/planetary_reducer.gear")).unwrap();
+    let with = |k: &str, friction: &str| {
+        let t = text.replace("planets = 3", &format!("planets = 3  load_sharing_factor = {k}"));
+        crate::scene_from_text(&t.replace("        iso_14179_2\n        benedict_kelley\n", friction))
+    };
+    for friction in ["        coulomb(mu = 0.05)\n", "        benedict_kelley\n"] {
+        let (equal, unequal) = (points(&with("1", friction)), points(&with("1.25", friction)));
+        assert_eq!(equal.len(), unequal.len());
+        for (e, u) in equal.iter().zip(&unequal) {
+            let (pe, pu) = (e.stages[0].planetary.as_ref().unwrap(), u.stages[0].planetary.as_ref().unwrap());
+            // The lossless sun torque over n r_w,sun, times K_γ.
+            let t = u.stages[0].driving_torque;
+            let sun = if pu.driving_member == Sun { t } else { t / 4.0 };
+            let f_t = 1.25 * sun / (3.0 * 0.024);
+            assert!((pu.forces.tangential[0] - f_t).abs() < 1e-12 * f_t, "{} vs {f_t}", pu.forces.tangential[0]);
+            assert!(pe.forces.tangential[0] < pu.forces.tangential[0]);
+            let moved = (pu.basic_efficiency - pe.basic_efficiency).abs();
+            if friction.contains("coulomb") {
+                assert!(moved < 1e-12, "Coulomb: η₀ moved by {moved}");
+            } else {
+                assert!(moved > 1e-7, "Benedict–Kelley: η₀ moved by {moved} only");
+            }
+            let bearings = |p: &gearloss::drive::DrivePoint| {
+                p.shafts
+                    .iter()
+                    .flat_map(|s| &s.bearings)
+                    .filter(|b| b.on_planets)
+                    .map(|b| [b.no_load, b.load])
+                    .next()
+                    .unwrap()
+            };
+            let (be, bu) = (bearings(e), bearings(u));
+            assert_eq!(be[0], bu[0]);
+            assert!(bu[1] >= be[1] && bu[1] - be[1] < 1e-3 * be[1], "{be:?} vs {bu:?}");
+        }
+    }
+}

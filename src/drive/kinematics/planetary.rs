@@ -124,6 +124,20 @@ impl MemberTorques {
     pub fn loss(&self, speeds: [f64; 3]) -> f64 {
         (0..3).map(|i| self.torques[i] * speeds[i]).sum()
     }
+
+    /// η = Σ P_out / Σ P_in over the members (P = T ω; in: P > 0): the one-member-fixed η, and the
+    /// two-DOF stage's (a differential summing or splitting power) where all three turn; 1 where
+    /// no power flows.
+    pub fn efficiency(&self, speeds: [f64; 3]) -> f64 {
+        let p: Vec<f64> = (0..3).map(|i| self.torques[i] * speeds[i]).collect();
+        let input: f64 = p.iter().filter(|x| **x > 0.0).sum();
+        let output: f64 = -p.iter().filter(|x| **x < 0.0).sum::<f64>();
+        if input > 0.0 {
+            output / input
+        } else {
+            1.0
+        }
+    }
 }
 
 /// The torques on all three members when `given` = (member, external torque) at `speeds`
@@ -189,6 +203,9 @@ pub struct PlanetaryLayout {
     pub planet_mass: f64,
     /// One planet's bearings (their `count` on each planet), if given.
     pub planet_bearing: Option<Bearing>,
+    /// K_γ ≥ 1: the most loaded planet carries K_γ/n of the sun's torque, the other n − 1 share the
+    /// rest equally (1: equal sharing).
+    pub load_sharing_factor: f64,
 }
 
 impl PlanetaryLayout {
@@ -214,6 +231,19 @@ impl PlanetaryLayout {
             w[m.index()] = omega;
         }
         w
+    }
+
+    /// Each class of planets by its load: (how many planets, d), each carrying 1/d of the sun's
+    /// torque. Equal sharing: one class of n with d = n; with K_γ > 1, one planet with d = n/K_γ and
+    /// n − 1 with d = n (n − 1)/(n − K_γ).
+    pub fn planet_shares(&self) -> Vec<(f64, f64)> {
+        let n = f64::from(self.planets);
+        let k = self.load_sharing_factor;
+        if k == 1.0 || self.planets == 1 {
+            vec![(n, n)]
+        } else {
+            vec![(1.0, n / k), (n - 1.0, n * (n - 1.0) / (n - k))]
+        }
     }
 
     /// The planet's speed relative to the carrier, |ω_sun − ω_carrier| z_sun/z_planet (rad/s).

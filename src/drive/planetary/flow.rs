@@ -1,7 +1,9 @@
 //! A planetary stage at one operating point: the members' speeds and torques, the two meshes'
 //! efficiencies at the rolling speeds (the carrier's frame) and loads, η₀ and the stage's η.
 //!
-//! Each mesh is evaluated as a pair at the load one planet carries (the n planets share equally):
+//! Each mesh is evaluated as a pair at the load one planet carries (the n planets share equally;
+//! with a load-sharing factor K_γ > 1 the most loaded planet's meshes at K_γ/n of the sun's torque
+//! and the others' at the rest, η₀ then the load-weighted Σ w η_sp η_pr):
 //! the sun–planet mesh with the sun's torque T_sun/n at |ω_sun − ω_carrier| (the planet in the
 //! pinion's place, the pair's roles swapped, where the ring drives the meshes), the planet–ring mesh
 //! (internal) with the planet's torque T_sun z_planet/(n z_sun) at the planet's speed relative to
@@ -83,10 +85,18 @@ pub fn planetary_state(
         eta = if per_planet == 0.0 || relative == 0.0 {
             [1.0, 1.0]
         } else {
-            [
-                mesh(PlanetMesh::SunPlanet { sun_drives }, mesh_torque[0], mesh_speed[0]),
-                mesh(PlanetMesh::PlanetRing, mesh_torque[1], mesh_speed[1]),
-            ]
+            let at = |divisor: f64| {
+                let t = torques.torques[0].abs() / divisor;
+                let sp = if sun_drives { t } else { t * z_planet / z_sun };
+                [
+                    mesh(PlanetMesh::SunPlanet { sun_drives }, sp, mesh_speed[0]),
+                    mesh(PlanetMesh::PlanetRing, t * z_planet / z_sun, mesh_speed[1]),
+                ]
+            };
+            match layout.planet_shares().as_slice() {
+                [(_, divisor)] => at(*divisor),
+                classes => unequal(classes.iter().map(|(count, d)| (count / d, at(*d))), sun_drives),
+            }
         };
         evaluated = Some((loads, sun_drives));
     }
@@ -111,6 +121,22 @@ pub fn planetary_state(
         mesh_torque,
         mesh_speed,
         efficiency,
+    }
+}
+
+/// [η_sp, η_pr] of planets sharing the load unequally, from each class's (share of the rolling
+/// power, [η_sp, η_pr]): η₀ = Σ w η_sp η_pr (the meshes' losses add up over the planets), the mesh the
+/// power enters first at its weighted mean Σ w η and the other at η₀ over it.
+fn unequal(classes: impl Iterator<Item = (f64, [f64; 2])>, sun_drives: bool) -> [f64; 2] {
+    let (mut first, mut both) = (0.0, 0.0);
+    for (w, [sp, pr]) in classes {
+        first += w * if sun_drives { sp } else { pr };
+        both += w * sp * pr;
+    }
+    if sun_drives {
+        [first, both / first]
+    } else {
+        [both / first, first]
     }
 }
 

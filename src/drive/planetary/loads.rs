@@ -41,12 +41,12 @@ pub fn lossless_torques(layout: &PlanetaryLayout, driving: usize, torque: f64, s
     member_torques(i0, 1.0, (member, torque * speeds[member.index()].signum()), speeds).torques
 }
 
-/// One planet's forces at the torques `torques` and speeds `speeds`.
-pub fn planet_forces(layout: &PlanetaryLayout, torques: [f64; 3], speeds: [f64; 3]) -> PlanetForces {
-    let n = f64::from(layout.planets);
+/// The forces of a planet that carries 1/`divisor` of the sun's torque (1/n with equal sharing),
+/// at the torques `torques` and speeds `speeds`.
+pub fn planet_forces(layout: &PlanetaryLayout, torques: [f64; 3], speeds: [f64; 3], divisor: f64) -> PlanetForces {
     let r = layout.working_pitch_radius;
-    let f_sun = torques[0].abs() / (n * r[0]);
-    let f_ring = torques[1].abs() / (n * r[3]);
+    let f_sun = torques[0].abs() / (divisor * r[0]);
+    let f_ring = torques[1].abs() / (divisor * r[3]);
     let radial = [f_sun * layout.working_pressure_angle[0].tan(), f_ring * layout.working_pressure_angle[1].tan()];
     let centrifugal = layout.planet_mass * speeds[2] * speeds[2] * layout.center_distance;
     // In the planet's own frame (r̂ outwards from the central axis): the tangential forces of both

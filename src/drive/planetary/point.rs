@@ -33,6 +33,7 @@ pub struct PlanetaryPoint {
     pub efficiency: f64,
     /// The planet's speed relative to the carrier (rad/s).
     pub planet_speed: f64,
+    /// The most loaded planet's forces (every planet's with equal sharing).
     pub forces: PlanetForces,
     /// All planets' bearings (W): no-load and load parts.
     pub planet_bearings: [f64; 2],

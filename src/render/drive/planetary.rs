@@ -25,6 +25,7 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
             "sun / ring / carrier on",
             "z sun/planet/ring",
             "planets",
+            "K_γ",
             "i₀",
             "ratio",
             "(z_s + z_r)/n",
@@ -45,6 +46,7 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
                 on.join(" / "),
                 format!("{}/{}/{}", p.teeth[0], p.teeth[1], p.teeth[2]),
                 p.planets.to_string(),
+                fixed(p.load_sharing_factor, 3),
                 fixed(p.stationary_ratio, 4),
                 fixed(p.ratio, 4),
                 fixed(p.assembly, 4),
@@ -109,7 +111,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
         let f = &p.forces;
         md!(
             out,
-            "Each planet: {} rpm relative to the carrier; F_t {} N (sun mesh) and {} N (ring mesh), F_r {} N and {} N, centrifugal m ω_c² a_w {} N; its bearing carries |B| = {} N; the planets' bearings lose {} W (no-load) + {} W (load); churning {} W.\n",
+            "Each planet (the most loaded where K_γ > 1): {} rpm relative to the carrier; F_t {} N (sun mesh) and {} N (ring mesh), F_r {} N and {} N, centrifugal m ω_c² a_w {} N; its bearing carries |B| = {} N; the planets' bearings lose {} W (no-load) + {} W (load); churning {} W.\n",
             fixed(p.planet_speed * RPM, 3),
             fixed(f.tangential[0], 2),
             fixed(f.tangential[1], 2),
