@@ -291,3 +291,41 @@ fn load_sharing_factor_loads_one_planet_more() {
         }
     }
 }
+
+/// With every loss zero (μ = 0, no bearings, seals or lubrication) the planetary reducer passes all
+/// its power, drive and coast, with the sun or the carrier given (η = 1 to 1e-12), and the output
+/// torque is the input's times the ratio 4 (1e-12).
+#[test]
+fn with_every_loss_zero_the_stage_passes_all_its_power() {
+    let scene = |operating: &str| {
+        crate::scene_from_text(&format!(
+            r#"scene "lossless planetary" {{
+    material steel {{ youngs_modulus = 210 GPa  poisson_ratio = 0.3 }}
+    lubricant "oil" {{ nu_40 = 68 mm^2/s  nu_100 = 8.7 mm^2/s  density_15 = 880 kg/m^3  base = mineral }}
+    stage "planetary" {{
+        planetary {{
+            planets = 3
+            module = 2 mm  pressure_angle = 20 deg  face_width = 25 mm
+            sun     {{ teeth = 24  shaft = motor  at = 60 mm  material = steel  roughness_ra = 0.4 um }}
+            planet  {{ teeth = 24  material = steel  roughness_ra = 0.4 um }}
+            ring    {{ teeth = 72  tip_diameter = 141 mm  shaft = housing  material = steel  roughness_ra = 0.4 um }}
+            carrier {{ shaft = output  at = 40 mm }}
+        }}
+    }}
+    gearbox {{ shaft motor {{ input }}  shaft output {{ output }} }}
+    operating {{ {operating}  oil_temperature = 70 degC }}
+    friction {{ coulomb(mu = 0) }}
+    analyses {{ efficiency(formulations = [external, internal]) }}
+}}"#
+        ))
+    };
+    for operating in ["input_torque = [-80, 80] N*m  input_speed = 2000 rpm", "output_torque = [-300, 300] N*m  output_speed = 500 rpm"] {
+        let all = points(&scene(operating));
+        assert_eq!(all.len(), 4);
+        for p in all {
+            assert!((p.efficiency - 1.0).abs() < 1e-12, "{operating}: η = {}", p.efficiency);
+            assert!((p.output_torque - 4.0 * p.input_torque).abs() < 1e-12 * p.output_torque.abs());
+            assert_eq!(p.stages[0].planetary.as_ref().unwrap().basic_efficiency, 1.0);
+        }
+    }
+}
