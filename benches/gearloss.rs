@@ -33,6 +33,13 @@ fn scene(torque: &str, speed: &str, laws: &str) -> gearloss::Scene {
     gearloss::check("bench.gear", &text).unwrap_or_else(|e| panic!("{e}"))
 }
 
+/// A spec scene of a drive with everything from its `operating` block on replaced by `tail`.
+fn drive_spec(file: &str, tail: &str) -> gearloss::Scene {
+    let text = std::fs::read_to_string(format!("{}/specs/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let head = &text[..text.find("    operating {").unwrap()];
+    gearloss::check("bench.gear", &format!("{head}{tail}}}\n")).unwrap_or_else(|e| panic!("{e}"))
+}
+
 const EVERY_LAW: &str = "coulomb(mu = 0.05) benedict_kelley benedict_kelley_bernard xu smoothed_coulomb(mu = 0.05) \
     composite misharin odonoghue_cameron drozdov_gavrikov iso_14179_2 matsumoto";
 
@@ -508,14 +515,10 @@ mod several_stages {
 
     /// The EV reducer with `operating` and `analyses` swapped in.
     fn reducer(torques: &str, speeds: &str, analyses: &str) -> gearloss::Scene {
-        let text =
-            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/ev_two_stage_reducer.gear")).unwrap();
-        let start = text.find("    operating {").unwrap();
-        let head = &text[..start];
-        let text = format!(
-            "{head}    operating {{ output_torque = {torques}  output_speed = {speeds}  oil_temperature = 80 degC }}\n    friction {{ iso_14179_2(x_l = 0.75) }}\n    analyses {{ {analyses} }}\n}}\n"
-        );
-        gearloss::check("bench.gear", &text).unwrap_or_else(|e| panic!("{e}"))
+        super::drive_spec(
+            "ev_two_stage_reducer.gear",
+            &format!("    operating {{ output_torque = {torques}  output_speed = {speeds}  oil_temperature = 80 degC }}\n    friction {{ iso_14179_2(x_l = 0.75) }}\n    analyses {{ {analyses} }}\n"),
+        )
     }
 
     fn run(scene: &gearloss::Scene) -> usize {
@@ -559,14 +562,10 @@ mod planetary {
 
     /// specs/planetary_reducer.gear with one operating point and one law.
     fn reducer(torque: &str, speed: &str) -> gearloss::Scene {
-        let text =
-            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/planetary_reducer.gear")).unwrap();
-        let start = text.find("    operating {").unwrap();
-        let head = &text[..start];
-        let text = format!(
-            "{head}    operating {{ input_torque = {torque}  input_speed = {speed}  oil_temperature = 70 degC }}\n    friction {{ iso_14179_2 }}\n    analyses {{ efficiency(formulations = [external]) }}\n}}\n"
-        );
-        gearloss::check("bench.gear", &text).unwrap_or_else(|e| panic!("{e}"))
+        super::drive_spec(
+            "planetary_reducer.gear",
+            &format!("    operating {{ input_torque = {torque}  input_speed = {speed}  oil_temperature = 70 degC }}\n    friction {{ iso_14179_2 }}\n    analyses {{ efficiency(formulations = [external]) }}\n"),
+        )
     }
 
     /// One operating point of the planetary reducer: the sun–planet pair (both roles) and the

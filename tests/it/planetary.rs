@@ -319,7 +319,10 @@ fn with_every_loss_zero_the_stage_passes_all_its_power() {
 }}"#
         ))
     };
-    for operating in ["input_torque = [-80, 80] N*m  input_speed = 2000 rpm", "output_torque = [-300, 300] N*m  output_speed = 500 rpm"] {
+    for operating in [
+        "input_torque = [-80, 80] N*m  input_speed = 2000 rpm",
+        "output_torque = [-300, 300] N*m  output_speed = 500 rpm",
+    ] {
         let all = points(&scene(operating));
         assert_eq!(all.len(), 4);
         for p in all {
