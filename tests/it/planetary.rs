@@ -332,3 +332,38 @@ fn with_every_loss_zero_the_stage_passes_all_its_power() {
         }
     }
 }
+
+/// The e-axle with its planetary first stage in the ID.3 over WLTC 3b at 80 °C: the motor's energy −
+/// the output's = Σ parts (1e-9), and doubling the Gauss order moves the loss by less than its
+/// estimate: the drive cycle reads the planetary stage as any other.
+#[test]
+fn a_planetary_box_over_a_drive_cycle_balances() {
+    use gearloss::evaluate::drive_cycle::{evaluate_cycle, loss_energy_at_order, MOTOR, OUTPUT, PARTS};
+    let text = std::fs::read_to_string(crate::root().join("specs/planetary_two_stage.gear")).unwrap();
+    let trace = crate::root().join("specs/cycles/wltc_3b.csv");
+    let head = &text[..text.find("    operating {").unwrap()];
+    let scene = crate::scene_from_text(&format!(
+        r#"{head}    operating {{ oil_temperature = 80 degC }}
+    vehicle "ID.3" {{
+        mass = 1976 kg  rotating_mass_factor = 1.07  wheel_radius = 0.335 m
+        drag(coefficient = 0.267, frontal_area = 2.3903615 m^2, air_density = 1.225 kg/m^3)
+        rolling_resistance = 0.009
+        recuperation_limit = 900 N*m
+    }}
+    drive_cycle "WLTC class 3b" {{ trace = "{}" }}
+    friction {{ iso_14179_2(x_l = 0.75) }}
+    analyses {{ efficiency(formulations = [external])  drive_cycle }}
+}}
+"#,
+        trace.display()
+    ));
+    let drive = scene.drive.as_ref().unwrap();
+    let e = evaluate_cycle(&scene, drive, drive.cycle.as_ref().unwrap());
+    let (motor, output): (f64, f64) =
+        e.integrals.iter().fold((0.0, 0.0), |(a, b), r| (a + r.value[MOTOR], b + r.value[OUTPUT]));
+    let lost: f64 = e.integrals.iter().map(|r| r.value[..PARTS].iter().sum::<f64>()).sum();
+    assert!(lost > 0.0 && ((motor - output) - lost).abs() <= 1e-9 * motor.abs(), "{} vs {lost}", motor - output);
+    let estimate: f64 = e.integrals.iter().map(|r| r.error[..PARTS].iter().sum::<f64>()).sum();
+    let doubled = loss_energy_at_order(&scene, drive, drive.cycle.as_ref().unwrap(), 10);
+    assert!((doubled - lost).abs() < estimate, "moved {} J, estimate {estimate} J", (doubled - lost).abs());
+}
