@@ -9,6 +9,8 @@ pub(crate) struct Pass {
     pub(crate) driving_torque: Vec<f64>,
     pub(crate) efficiency: Vec<f64>,
     pub(crate) mesh_loss: Vec<f64>,
+    /// By stage: a planetary stage as the pass evaluated it (its efficiency is `efficiency`'s).
+    pub(crate) planetary: Vec<Option<super::planetary::PlanetaryState>>,
 }
 
 impl Pass {

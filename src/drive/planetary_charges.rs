@@ -75,18 +75,15 @@ pub fn planet_bearings(
     ))
 }
 
-/// The report's point of the stage at the settled driving torque.
+/// The report's point of the stage from its state `s` in the settled pass (driving torque `torque`).
 pub fn point(
-    meshes: &dyn MeshEfficiency,
-    k: usize,
+    s: &PlanetaryState,
     stage: &Stage,
     driving: Member,
     torque: f64,
-    places: [f64; 2],
     (planet_bearings, churning): ([f64; 2], f64),
 ) -> PlanetaryPoint {
     let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
-    let s = state(meshes, k, layout, driving, torque, places);
     let torques = lossless_torques(layout, driving.index(), torque, s.speeds);
     PlanetaryPoint {
         planets: layout.planets,

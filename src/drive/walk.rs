@@ -68,7 +68,7 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
             break;
         }
     }
-    walk.point(model, meshes, &state, &fixed, passes)
+    walk.point(model, &state, &fixed, passes)
 }
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
@@ -158,13 +158,18 @@ impl<'a> Walk<'a> {
             driving_torque: vec![0.0; stages],
             efficiency: vec![1.0; stages],
             mesh_loss: vec![0.0; stages],
+            planetary: vec![None; stages],
         };
         let own = |j: usize| bearings[j] + fixed.seals[j] + fixed.gear_no_load[j];
-        let eta = |k: usize, m: Member, torque: f64, speed: f64| {
-            if torque == 0.0 || speed == 0.0 {
+        // A planetary stage's state is kept for the report's point (at no torque or speed it
+        // evaluates no mesh and gives η = 1).
+        let mut eta = |k: usize, m: Member, torque: f64, speed: f64| {
+            if let Some(layout) = &self.drive.stages[k].planetary {
+                let state = planetary_charges::state(meshes, k, layout, m, torque.abs(), self.places(k));
+                p.planetary[k] = Some(state);
+                state.efficiency
+            } else if torque == 0.0 || speed == 0.0 {
                 1.0
-            } else if let Some(layout) = &self.drive.stages[k].planetary {
-                planetary_charges::state(meshes, k, layout, m, torque.abs(), self.places(k)).efficiency
             } else {
                 meshes.efficiency(k, m, torque.abs(), speed)
             }
@@ -271,14 +276,7 @@ impl<'a> Walk<'a> {
     }
 
     /// The drive point of the settled pass `p`.
-    fn point(
-        &self,
-        model: &DriveModel,
-        meshes: &dyn MeshEfficiency,
-        p: &Pass,
-        fixed: &FixedLosses,
-        passes: usize,
-    ) -> DrivePoint {
+    fn point(&self, model: &DriveModel, p: &Pass, fixed: &FixedLosses, passes: usize) -> DrivePoint {
         let drive = model.drive;
         let (_, places, loads) = self.bearing_powers(model, &p.driving_torque);
         let torque = |power: f64, j: usize| if self.omega[j] == 0.0 { 0.0 } else { power / self.omega[j].abs() };
@@ -310,11 +308,11 @@ impl<'a> Walk<'a> {
                 let kinematics = (stage.kind.entry().kinematics)(stage);
                 let t = p.driving_torque[k];
                 let d = m.index();
-                let planetary = stage.planetary.as_ref().map(|_| {
+                let planetary = p.planetary[k].map(|state| {
                     let bearings = planetary_charges::planet_bearings(stage, m, t.abs(), self.places(k), model.oil)
                         .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
                     let parts = (bearings, fixed.stage_no_load[k]);
-                    Box::new(planetary_charges::point(meshes, k, stage, m, t.abs(), self.places(k), parts))
+                    Box::new(planetary_charges::point(&state, stage, m, t.abs(), parts))
                 });
                 let [f_t, f_r, f_a] = match &planetary {
                     Some(pp) => [pp.forces.tangential[0], pp.forces.radial[0], 0.0],

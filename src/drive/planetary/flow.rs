@@ -16,9 +16,7 @@
 //! loses (1 − η_sp) P_d and the planet–ring mesh (1 − η_pr) η_sp P_d, P_d the driving side's rolling
 //! power (the reverse order where the ring drives), together (1 − η₀) P_d = Σ T ω.
 
-use crate::drive::kinematics::planetary::{
-    member_torques, stationary_ratio, MemberTorques, PlanetaryLayout, PlanetaryMember,
-};
+use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, MemberTorques, PlanetaryLayout};
 
 /// A planetary stage's two meshes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -138,11 +136,4 @@ fn unequal(classes: impl Iterator<Item = (f64, [f64; 2])>, sun_drives: bool) -> 
     } else {
         [both / first, first]
     }
-}
-
-/// The held member's and the other members' torques are all known once one is: the stage's
-/// efficiency from place `driving` to the other, η = −T_out ω_out / (T_in ω_in).
-pub fn stage_efficiency(state: &PlanetaryState, members: [PlanetaryMember; 2], driving: usize) -> f64 {
-    let (d, o) = (members[driving].index(), members[1 - driving].index());
-    -state.torques.torques[o] * state.speeds[o] / (state.torques.torques[d] * state.speeds[d])
 }
