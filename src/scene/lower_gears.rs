@@ -70,7 +70,18 @@ pub(super) fn lower_gears(
     materials: &BTreeMap<&str, Material>,
     errors: &mut Vec<Diagnostic>,
 ) -> Option<GearPair> {
-    let f = Fields::read("the `gears` block", block.span, &block.items, GEARS_KEYS, &["pinion", "wheel"], &[], errors);
+    lower_gears_named(block, ["pinion", "wheel"], materials, errors)
+}
+
+/// [`lower_gears`] of a pair whose pinion and wheel blocks are named `names` (a planetary stage's
+/// `sun` and `planet`, or `planet` and `ring`), so that messages name them as written.
+pub(super) fn lower_gears_named(
+    block: &Block,
+    names: [&str; 2],
+    materials: &BTreeMap<&str, Material>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<GearPair> {
+    let f = Fields::read("the `gears` block", block.span, &block.items, GEARS_KEYS, &names, &[], errors);
     let ToothSystem { helix_angle, hand, module, module_source, pressure_angle, transverse_pressure_angle } =
         super::lower_tooth_system::lower_tooth_system(&f, errors);
     let center_distance = positive(f.optional("center_distance", errors), "center_distance", errors);
@@ -106,8 +117,8 @@ pub(super) fn lower_gears(
             }
         }
     };
-    let pinion = gear("pinion");
-    let wheel = gear("wheel");
+    let pinion = gear(names[0]);
+    let wheel = gear(names[1]);
     let pair = GearPair {
         module: module?,
         module_source,

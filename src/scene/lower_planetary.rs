@@ -89,20 +89,20 @@ pub(super) fn lower_planetary(
         .filter(|i| matches!(i, Item::Assignment { key, .. } if PAIR_KEYS.contains(&key.text.as_str())))
         .cloned()
         .collect();
-    let (sun_gear, sun_place) = split(sun, "pinion");
-    let (planet_gear, planet_extra) = split(planet, "wheel");
-    let (ring_gear, ring_place) = split(ring, "wheel");
+    let place = ["shaft", "at"];
+    let (sun_gear, sun_place) = split(sun, &place, &[]);
+    let (planet_gear, planet_extra) = split(planet, &["shaft", "at", "mass"], &["bearing"]);
+    let (ring_gear, ring_place) = split(ring, &place, &[]);
     let sun_pair = gears_block(block, &pair_items, [sun_gear, planet_gear.clone()], false);
-    let mut planet_as_pinion = planet_gear;
-    planet_as_pinion.kind.text = "pinion".into();
-    let ring_block = gears_block(block, &pair_items, [planet_as_pinion, ring_gear], true);
-    let sun_pair = super::lower_gears::lower_gears(&sun_pair, materials, errors);
-    let ring_pair = super::lower_gears::lower_gears(&ring_block, materials, errors);
+    let ring_block = gears_block(block, &pair_items, [planet_gear, ring_gear], true);
+    let sun_pair = super::lower_gears::lower_gears_named(&sun_pair, ["sun", "planet"], materials, errors);
+    let ring_pair = super::lower_gears::lower_gears_named(&ring_block, ["planet", "ring"], materials, errors);
     let (planet_mass, planet_bearing) = lower_planet_parts(&planet_extra, planet, errors);
     let places = [("sun", sun, sun_place), ("ring", ring, ring_place), ("carrier", carrier, carrier.items.clone())]
         .map(|(name, b, items)| lower_member_place(name, b, &items, errors));
     let (sun_pair, mut ring_pair, planets) = (sun_pair?, ring_pair?, planets?);
-    let a = sun_pair.geometry().ok()?.center_distance;
+    let sun_geometry = sun_pair.geometry().ok()?;
+    let a = sun_geometry.center_distance;
     // The ring meshes at the carrier's centre distance, the sun–planet mesh's.
     ring_pair.center_distance = Some(Given {
         value: Length::new::<meter>(a),
@@ -120,7 +120,7 @@ pub(super) fn lower_planetary(
             .collect();
     let [(m0, p0), (m1, p1)] = super::lower_planetary_checks::one_held(turning, block, errors)?;
     let planet_mass = planet_mass.unwrap_or_else(|| {
-        let d = 2.0 * sun_pair.geometry().map_or(0.0, |g| g.pitch_radius[1]);
+        let d = 2.0 * sun_geometry.pitch_radius[1];
         STEEL_DENSITY * std::f64::consts::PI / 4.0 * d * d * sun_pair.face_width.value.get::<meter>()
     });
     let load_sharing_factor = lower_load_sharing_factor(&f, planets, errors)?;
@@ -129,14 +129,13 @@ pub(super) fn lower_planetary(
     Some((sun_pair, [p0, p1], decl))
 }
 
-/// A member's block without its place keys (`shaft`, `at`) and planet parts (`bearing`, `mass`),
-/// renamed to `as_name`, and the items taken out.
-fn split(b: &Block, as_name: &str) -> (Block, Vec<Item>) {
+/// A member's block without `keys` and `calls` (the place keys `shaft`, `at`; a planet's parts
+/// `mass`, `bearing`), and the items taken out.
+fn split(b: &Block, keys: &[&str], calls: &[&str]) -> (Block, Vec<Item>) {
     let mut gear = b.clone();
-    gear.kind.text = as_name.into();
     let (keep, take): (Vec<Item>, Vec<Item>) = gear.items.drain(..).partition(|i| match i {
-        Item::Assignment { key, .. } => !["shaft", "at", "mass"].contains(&key.text.as_str()),
-        Item::Call(c) => c.name.text != "bearing",
+        Item::Assignment { key, .. } => !keys.contains(&key.text.as_str()),
+        Item::Call(c) => !calls.contains(&c.name.text.as_str()),
         Item::Block(_) => true,
     });
     gear.items = keep;
@@ -209,23 +208,14 @@ fn lower_planet_parts(items: &[Item], planet: &Block, errors: &mut Vec<Diagnosti
 }
 
 /// A member's `shaft` (a shaft's name, or `housing`: held) and `at` (needed where it turns):
-/// Some(None) when held. The carrier's block holds nothing else; the sun's and ring's other keys
-/// were their gears'.
+/// Some(None) when held. `items` are the carrier's whole block, the sun's and ring's place keys.
 fn lower_member_place(
     name: &str,
     b: &Block,
     items: &[Item],
     errors: &mut Vec<Diagnostic>,
 ) -> Option<Option<(Name, f64)>> {
-    let own: Vec<Item> = items
-        .iter()
-        .filter(|i| {
-            matches!(i, Item::Assignment { key, .. } if ["shaft", "at"].contains(&key.text.as_str()))
-                || name == "carrier"
-        })
-        .cloned()
-        .collect();
-    let f = Fields::read(format!("the `{name}` block"), b.span, &own, &["shaft", "at"], &[], &[], errors);
+    let f = Fields::read(format!("the `{name}` block"), b.span, items, &["shaft", "at"], &[], &[], errors);
     let Some(shaft) = f.name("shaft", &[], errors).cloned() else {
         if !f.has("shaft") {
             errors.push(
