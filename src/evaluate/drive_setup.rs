@@ -116,13 +116,19 @@ struct LawMeshes<'a> {
     formulation: Formulation,
 }
 
+impl LawMeshes<'_> {
+    /// η = 1 − P_mesh/(T ω) of the law on one mesh at the context's point (its pinion's T and ω).
+    fn of(&self, ctx: &LawContext, h_v: f64) -> f64 {
+        let law = law_at(self.spec, ctx);
+        1.0 - charged_mesh_loss(ctx, &*law, self.formulation, h_v) / (ctx.state.pinion_torque * ctx.state.pinion_speed)
+    }
+}
+
 impl MeshEfficiency for LawMeshes<'_> {
     fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64 {
         let s = &self.stages[stage];
         let d = driving.index();
-        let ctx = s.context(d, torque, speed);
-        let law = law_at(self.spec, &ctx);
-        1.0 - charged_mesh_loss(&ctx, &*law, self.formulation, s.h_v[d]) / (torque * speed)
+        self.of(&s.context(d, torque, speed), s.h_v[d])
     }
 
     fn planet_mesh(&self, stage: usize, mesh: PlanetMesh, torque: f64, speed: f64) -> f64 {
@@ -133,9 +139,7 @@ impl MeshEfficiency for LawMeshes<'_> {
             }
             PlanetMesh::PlanetRing => {
                 let ring = s.ring.as_ref().expect("a planetary stage has its ring mesh");
-                let ctx = ring.context(torque, speed);
-                let law = law_at(self.spec, &ctx);
-                1.0 - charged_mesh_loss(&ctx, &*law, self.formulation, ring.h_v) / (torque * speed)
+                self.of(&ring.context(torque, speed), ring.h_v)
             }
         }
     }

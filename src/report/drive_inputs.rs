@@ -61,8 +61,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
                 teeth: s.teeth,
                 // A planetary stage's: ω of its first turning member over its second's.
                 ratio: s.planetary.as_ref().map_or(f64::from(s.teeth[1]) / f64::from(s.teeth[0]), |p| {
-                    let w = p.kinematics().member_speeds(p.members[0], 1.0);
-                    (w[p.members[0].index()] / w[p.members[1].index()]).abs()
+                    crate::drive::kinematics::StageKinematics::torque_ratio(&p.kinematics(), 0)
                 }),
                 normal_module_mm: g.module * 1e3,
                 helix_angle_deg: g.helix_angle.to_degrees(),

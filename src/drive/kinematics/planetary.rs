@@ -165,8 +165,7 @@ pub fn member_torques(i0: f64, eta0: f64, given: (PlanetaryMember, f64), speeds:
 /// (Krüger's one-member-fixed efficiencies, from i₀ and η₀).
 pub fn one_fixed_efficiency(i0: f64, eta0: f64, input: PlanetaryMember, output: PlanetaryMember) -> f64 {
     let speeds = willis(i0, (input, 1.0), (held([input, output]), 0.0));
-    let t = member_torques(i0, eta0, (input, 1.0), speeds);
-    -t.torques[output.index()] * speeds[output.index()] / (t.torques[input.index()] * speeds[input.index()])
+    member_torques(i0, eta0, (input, 1.0), speeds).efficiency(speeds)
 }
 
 impl StageKinematics for Planetary {

@@ -62,8 +62,10 @@ pub fn planetary_state(
     let n = f64::from(layout.planets);
     let (z_sun, z_planet) = (f64::from(layout.teeth[0]), f64::from(layout.teeth[1]));
     let relative = (speeds[0] - speeds[2]).abs();
+    // The planet's speed relative to the carrier.
+    let planet = layout.planet_speed(speeds);
     let mut eta = [1.0, 1.0];
-    let (mut mesh_torque, mut mesh_speed) = ([0.0; 2], [relative, relative * z_sun / z_planet]);
+    let (mut mesh_torque, mut mesh_speed) = ([0.0; 2], [relative, planet]);
     // The loads η was last evaluated at: the fixed point stops when the next loads are the same.
     let mut evaluated: Option<([f64; 2], bool)> = None;
     for _ in 0..50 {
@@ -79,7 +81,7 @@ pub fn planetary_state(
             break;
         }
         mesh_torque = loads;
-        mesh_speed[0] = if sun_drives { relative } else { relative * z_sun / z_planet };
+        mesh_speed[0] = if sun_drives { relative } else { planet };
         eta = if per_planet == 0.0 || relative == 0.0 {
             [1.0, 1.0]
         } else {

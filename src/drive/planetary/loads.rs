@@ -62,18 +62,18 @@ pub fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64, places
     let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
     let speeds = layout.member_speeds(places);
     let t = lossless_torques(layout, driving, torque, speeds);
-    let n = layout.planets as usize;
+    let n = layout.planets;
+    // Every planet's mesh forces (equal sharing), signed here by the torques they carry.
+    let f = planet_forces(layout, t, speeds, f64::from(n));
     let r = layout.working_pitch_radius;
-    let tan = layout.working_pressure_angle.map(f64::tan);
     let mut out = Vec::new();
     for j in 0..n {
-        let theta = stage.direction + std::f64::consts::TAU * j as f64 / n as f64;
+        let theta = stage.direction + std::f64::consts::TAU * f64::from(j) / f64::from(n);
         let (radial_dir, tangent) = ([theta.cos(), theta.sin()], [-theta.sin(), theta.cos()]);
         let along =
             |f_t: f64, f_r: f64| [f_t * tangent[0] + f_r * radial_dir[0], f_t * tangent[1] + f_r * radial_dir[1]];
-        let n = n as f64;
-        let on_sun = along(-t[0] / (n * r[0]), -(t[0] / (n * r[0])).abs() * tan[0]);
-        let on_ring = along(-t[1] / (n * r[3]), (t[1] / (n * r[3])).abs() * tan[1]);
+        let on_sun = along(-t[0].signum() * f.tangential[0], -f.radial[0]);
+        let on_ring = along(-t[1].signum() * f.tangential[1], f.radial[1]);
         let on_carrier = [-(on_sun[0] + on_ring[0]), -(on_sun[1] + on_ring[1])];
         for (member, radius, force) in [
             (PlanetaryMember::Sun, r[0], on_sun),
