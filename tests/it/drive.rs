@@ -21,19 +21,24 @@ pub(crate) fn points(scene: &gearloss::Scene) -> Vec<DrivePoint> {
 fn every_shaft_balances_forces_and_moments() {
     for p in points(&ev_reducer()) {
         for s in &p.shafts {
-            let largest = s.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
-            assert!(largest > 0.0);
-            let positions = [s.bearings[0].position, s.bearings[1].position];
-            let reactions = [s.bearings[0].reaction, s.bearings[1].reaction];
-            for r in residuals(&s.gear_loads, positions, &reactions) {
-                assert!(r.abs() <= 1e-12 * largest, "{}: residual {r} of {largest} N", s.name);
-            }
-            // The axis: received − passed = the shaft's own loss moments (powers over |ω|).
-            let own = s.losses() / s.speed.abs();
-            let torque = s.received_torque - s.passed_torque - own;
-            assert!(torque.abs() <= 1e-12 * s.received_torque.abs().max(1.0), "{}: {torque}", s.name);
+            assert!(s.gear_loads.iter().flat_map(|l| l.force).any(|f| f != 0.0));
+            assert_shaft_balances(s);
         }
     }
+}
+
+/// A shaft's five equations from its two bearing places' reactions hold to 1e-12 of its largest
+/// gear force, and about its axis received − passed = its own loss moments (powers over |ω|).
+pub(crate) fn assert_shaft_balances(s: &gearloss::drive::ShaftPoint) {
+    let largest = s.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
+    let positions = [s.bearings[0].position, s.bearings[1].position];
+    let reactions = [s.bearings[0].reaction, s.bearings[1].reaction];
+    for r in residuals(&s.gear_loads, positions, &reactions) {
+        assert!(r.abs() <= 1e-12 * largest, "{}: residual {r} of {largest} N", s.name);
+    }
+    let own = s.losses() / s.speed.abs();
+    let torque = s.received_torque - s.passed_torque - own;
+    assert!(torque.abs() <= 1e-12 * s.received_torque.abs().max(1.0), "{}: {torque}", s.name);
 }
 
 /// P_source − P_sink = Σ parts, to 1e-9 of the source's power, drive and coast.
@@ -504,14 +509,7 @@ fn three_stages_with_a_spur_stage_across() {
         let w = |n: &str| p.shafts.iter().find(|s| s.name == n).unwrap().speed;
         let ratio = w("wheel") / w("motor");
         assert!((ratio + 23.0 / 68.0 * 20.0 / 78.0 * 25.0 / 50.0).abs() < 1e-14, "{ratio}");
-        for s in &p.shafts {
-            let largest = s.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
-            let positions = [s.bearings[0].position, s.bearings[1].position];
-            let reactions = [s.bearings[0].reaction, s.bearings[1].reaction];
-            for r in residuals(&s.gear_loads, positions, &reactions) {
-                assert!(r.abs() <= 1e-12 * largest, "{}: {r}", s.name);
-            }
-        }
+        p.shafts.iter().for_each(assert_shaft_balances);
         let source = p.input_power.abs().max(p.output_power.abs());
         assert!((p.power_lost() - p.losses.total()).abs() <= 1e-9 * source);
     }
@@ -533,11 +531,7 @@ fn a_negative_input_speed_turns_every_shaft_the_other_way() {
     let (ccw, cw) = (at("6000 rpm"), at("-6000 rpm"));
     for (a, b) in ccw.shafts.iter().zip(&cw.shafts) {
         assert_eq!(a.speed, -b.speed, "{}", a.name);
-        let largest = b.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
-        let positions = [b.bearings[0].position, b.bearings[1].position];
-        for r in residuals(&b.gear_loads, positions, &[b.bearings[0].reaction, b.bearings[1].reaction]) {
-            assert!(r.abs() <= 1e-12 * largest);
-        }
+        assert_shaft_balances(b);
     }
     // The right-hand pinion driving: along +z turning counter-clockwise, along −z clockwise (the
     // magnitudes differ by the bearing losses before the mesh, which the reversed forces change).
