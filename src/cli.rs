@@ -77,22 +77,19 @@ enum Command {
         /// The file to write (it must not exist yet).
         #[arg(default_value = "scene.gear")]
         scene: PathBuf,
+        /// The template: `pair` (one gear pair), `drive` (a two-stage box), `planetary` (a
+        /// planetary stage) or `cycle` (a box in its car over WLTC; writes the trace beside it).
+        #[arg(long, default_value = "pair", value_parser = ["pair", "drive", "planetary", "cycle"])]
+        kind: String,
     },
 }
 
 const EXIT_SCENE: u8 = 1;
 const EXIT_IO: u8 = 3;
 
-/// `K/N` with 1 ≤ K ≤ N ≤ 1 000 000.
+/// `K/N` with 1 ≤ K ≤ N ≤ 1 000 000 (`Shard`'s own parse, shared with Python).
 fn parse_shard(text: &str) -> Result<gearloss::Shard, String> {
-    let hint = "write --shard K/N with whole numbers 1 ≤ K ≤ N, e.g. --shard 2/4";
-    let (k, n) = text.split_once('/').ok_or_else(|| format!("`{text}` is not K/N: {hint}"))?;
-    let k: usize = k.trim().parse().map_err(|_| format!("`{k}` is not a whole number: {hint}"))?;
-    let n: usize = n.trim().parse().map_err(|_| format!("`{n}` is not a whole number: {hint}"))?;
-    if k == 0 || k > n || n > 1_000_000 {
-        return Err(format!("shard {k}/{n} does not exist: {hint} (N at most 1000000)"));
-    }
-    Ok(gearloss::Shard { index: k, count: n })
+    text.parse()
 }
 
 pub(crate) fn main() -> ExitCode {
@@ -107,7 +104,7 @@ pub(crate) fn main() -> ExitCode {
         Command::Laws => listing(&gearloss::listing::laws()),
         Command::Oils => listing(&gearloss::listing::oils()),
         Command::Bearings => listing(&gearloss::listing::bearings()),
-        Command::New { scene } => new_scene(&scene),
+        Command::New { scene, kind } => new_scene(&scene, &kind),
     }
 }
 
@@ -150,20 +147,37 @@ fn listing(text: &str) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// `gearloss new`: the template, never over an existing file.
-fn new_scene(path: &Path) -> ExitCode {
-    let file = std::fs::OpenOptions::new().write(true).create_new(true).open(path);
-    let written = file.and_then(|mut f| std::io::Write::write_all(&mut f, gearloss::listing::TEMPLATE.as_bytes()));
-    match written {
-        Ok(()) => {
-            outln!("wrote {}: edit it, then `gearloss check {0}` and `gearloss run {0}`", path.display());
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            errln!("error: cannot write {}: {e} (gearloss new never overwrites a file)", path.display());
-            ExitCode::from(EXIT_IO)
+/// `gearloss new [--kind K]`: the template, never over an existing file (the cycle's trace beside
+/// it too, unless a file of its name is there already).
+fn new_scene(path: &Path, kind: &str) -> ExitCode {
+    let text = gearloss::listing::TEMPLATES.iter().find(|t| t.0 == kind).map_or(gearloss::listing::TEMPLATE, |t| t.2);
+    let create = |p: &Path, bytes: &[u8]| {
+        let file = std::fs::OpenOptions::new().write(true).create_new(true).open(p);
+        file.and_then(|mut f| std::io::Write::write_all(&mut f, bytes))
+    };
+    if let Err(e) = create(path, text.as_bytes()) {
+        errln!("error: cannot write {}: {e} (gearloss new never overwrites a file)", path.display());
+        return ExitCode::from(EXIT_IO);
+    }
+    outln!("wrote {}: edit it, then `gearloss check {0}` and `gearloss run {0}`", path.display());
+    if kind == "cycle" {
+        let (name, bytes) = gearloss::listing::CYCLE_TRACE;
+        let trace = path.parent().unwrap_or(Path::new(".")).join(name);
+        match create(&trace, bytes) {
+            Ok(()) => outln!("wrote {} (WLTC class 3b, from NREL FASTSim, Apache-2.0)", trace.display()),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                outln!(
+                    "kept {}: a file of that name is there already (the scene reads it as its trace)",
+                    trace.display()
+                )
+            }
+            Err(e) => {
+                errln!("error: cannot write {}: {e}", trace.display());
+                return ExitCode::from(EXIT_IO);
+            }
         }
     }
+    ExitCode::SUCCESS
 }
 
 fn read(path: &Path) -> Result<String, ExitCode> {

@@ -11,6 +11,30 @@ use crate::tribology::lubricant::{base_oil, iso_lubricant_factor, lowest_grade, 
 /// gearbox, the efficiency analysis; the dynamics block commented out).
 pub const TEMPLATE: &str = include_str!("templates/new_scene.gear");
 
+/// The templates of `gearloss new --kind K`: (kind, what it is, the scene's text).
+pub const TEMPLATES: &[(&str, &str, &str)] = &[
+    ("pair", "a spur pair, an ISO VG oil, two laws, a gearbox, efficiency", TEMPLATE),
+    (
+        "drive",
+        "a two-stage helical box on three shafts with bearings, seals, jets, a loss map and the sump's balance",
+        include_str!("templates/new_drive.gear"),
+    ),
+    (
+        "planetary",
+        "a planetary stage: sun in, carrier out, ring held, three planets",
+        include_str!("templates/new_planetary.gear"),
+    ),
+    (
+        "cycle",
+        "a one-stage reducer in its car over WLTC class 3b, the sump following the cycle (the trace written beside it)",
+        include_str!("templates/new_cycle.gear"),
+    ),
+];
+
+/// The drive-cycle template's trace, written beside the scene: (file name, bytes) — the WLTC
+/// class 3b of UN GTR No. 15 as NREL FASTSim ships it (Apache-2.0, `specs/cycles/NOTICE`).
+pub const CYCLE_TRACE: (&str, &[u8]) = ("wltc_3b.csv", include_bytes!("../specs/cycles/wltc_3b.csv"));
+
 /// `gearloss laws`: every friction law with its arguments (SI unit, default), what it needs from
 /// the scene and its source.
 pub fn laws() -> String {
@@ -39,6 +63,9 @@ pub fn laws() -> String {
             out.push_str(&format!("    needs:     {}\n", needs.join(", ")));
         }
         out.push_str(&format!("    source:    {}\n", l.source));
+        if let Some((_, ms)) = LAW_COST_MS.iter().find(|(name, _)| *name == l.id.name()) {
+            out.push_str(&format!("    cost:      ~{ms} ms a point of a two-stage drive\n"));
+        }
     }
     out.push_str(
         "\nFor an engineering answer: iso_14179_2 (the standard's mean μ, load- and speed-dependent) for a gearbox\nbudget; benedict_kelley or xu for μ along the path of contact in mixed or full-film lubrication; composite\nwhen the film parameter Λ spans regimes; coulomb to compare with a measured constant μ.\n",
@@ -80,11 +107,31 @@ pub fn oils() -> String {
     out
 }
 
+/// What a law costs: the wall time of one operating point of a two-stage drive (the EV reducer of
+/// `specs/ev_two_stage_reducer.gear`: 2 000 points, one law, the external formulation, `gearloss
+/// run` in release on 2 cores, 2026-11-28), in ms. ISO/TR 14179-2 charges its closed-form loss;
+/// every other law integrates η over the mesh cycle to 1e-10 at each pass of each stage's fixed
+/// point, and the composite law solves its film at every node. A map's or a cycle's cost is about
+/// this times its points.
+pub(crate) const LAW_COST_MS: &[(&str, f64)] = &[
+    ("coulomb", 2.7),
+    ("benedict_kelley", 4.2),
+    ("benedict_kelley_bernard", 5.3),
+    ("xu", 6.3),
+    ("smoothed_coulomb", 2.9),
+    ("composite", 183.0),
+    ("misharin", 15.0),
+    ("odonoghue_cameron", 13.0),
+    ("drozdov_gavrikov", 31.0),
+    ("iso_14179_2", 0.035),
+    ("matsumoto", 16.0),
+];
+
 /// `gearloss bearings`: the bearing types with Palmgren's factors, the keys of a `bearing(...)`,
 /// the SKF model's constants and the seals.
 pub fn bearings() -> String {
     let mut out = String::from(
-        "Bearings: `bearing(type = ..., bore = ..., outside = ...)` in `pinion_shaft { }` or `wheel_shaft { }` of `gearbox`.\nPalmgren (ISO/TR 14179-2; SKF General Catalogue 4000 E, 1989): M_0 = 1e-7 f_0 (ν n)^(2/3) d_m³ (ν n ≥ 2000), 160e-7 f_0 d_m³ below; M_1 = f_1 P_1 d_m.\n\n",
+        "Bearings: `bearing(type = ..., bore = ..., outside = ...)` in a shaft block of `gearbox`: `pinion_shaft { }` or `wheel_shaft { }` for one pair, `shaft <name> { }` in a drive of stages (and `planet { bearing(...) }` in a planetary stage).\nIn a drive, `at = ...` places the bearing along its shaft and the bare flag `locating` (`bearing(..., at = 20 mm, locating)`) names the one place of the shaft that takes the axial force (without it, the shaft's first place does, with a warning).\nPalmgren (ISO/TR 14179-2; SKF General Catalogue 4000 E, 1989): M_0 = 1e-7 f_0 (ν n)^(2/3) d_m³ (ν n ≥ 2000), 160e-7 f_0 d_m³ below; M_1 = f_1 P_1 d_m.\n\n",
     );
     out.push_str(&format!("{:<22} {:>4}  {:<26} {:<24} {}\n", "type", "f_0", "f_1", "P_1", "needs"));
     for name in BearingType::NAMES {
@@ -102,10 +149,25 @@ pub fn bearings() -> String {
         out.push('\n');
     }
     out.push_str(&format!(
-        "\nKeys of `bearing(...)`: {}.\nThe SKF model (SKF catalogue 17000, 2018): `model = skf({})` replaces M_0 and M_1 by M_rr and M_sl.\nSeals (ISO/TR 14179-2 after Linke): `seal({})`, P = 7.69e-6 d² n (d in mm, n in rpm).\n",
+        "\nKeys of `bearing(...)`: {}, and the flag `locating` (drives).\nValidity: the load-dependent factors f_1 of ball and spherical roller bearings grow as (P_0/C_0)^x, read by SKF for static loads up to the static rating: a bearing loaded beyond P_0/C_0 = 1 is flagged in the report (its loss is extrapolated, and the bearing is overloaded).\nThe SKF model (SKF catalogue 17000, 2018): `model = skf({})` replaces M_0 and M_1 by M_rr and M_sl.\nSeals (ISO/TR 14179-2 after Linke): `seal({})`, P = 7.69e-6 d² n (d in mm, n in rpm).\n",
         BEARING.join(", "),
         SKF.join(", "),
         SEAL.join(", ")
     ));
     out
+}
+
+#[cfg(test)]
+mod tests {
+    /// Every law of the catalogue has its cost, and every cost a law.
+    #[test]
+    fn every_law_has_its_cost() {
+        let names: Vec<&str> = crate::friction::catalog::LAWS.iter().map(|l| l.id.name()).collect();
+        for n in &names {
+            assert!(super::LAW_COST_MS.iter().any(|(c, _)| c == n), "no cost for {n}");
+        }
+        for (c, _) in super::LAW_COST_MS {
+            assert!(names.contains(c), "a cost for {c}, which is no law");
+        }
+    }
 }

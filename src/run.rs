@@ -223,7 +223,7 @@ pub fn run_into_with(
                 .hint("run it whole, or write one scene per oil temperature and shard each"),
             ));
         }
-        return crate::run_drive::run_drive_shard_into(source_name, source, scene, drive, shard, out_dir)
+        return crate::run_drive::run_drive_shard_into(source_name, source, scene, drive, (shard, out_dir), progress)
             .map(Written::of);
     }
     let Some(shard) = shard else {

@@ -79,14 +79,14 @@ pub(crate) fn run_drive_shard_into(
     source: &str,
     scene: &Scene,
     drive: &crate::model::SceneDrive,
-    shard: Shard,
-    out_dir: &Path,
+    (shard, out_dir): (Shard, &Path),
+    progress: &dyn Progress,
 ) -> Result<DriveWritten, RunError> {
     let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
     let io = RunError::io("the record files");
     let mut records = std::io::BufWriter::new(folder.create_file(evaluate::drive_records::FILE).map_err(&io)?);
-    let tally = evaluate::drive::evaluate_drive_shard(scene, drive, shard, &mut records).map_err(&io)?;
+    let tally = evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
     std::io::Write::flush(&mut records).map_err(&io)?;
     drop(records);
     let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally);
@@ -141,7 +141,6 @@ pub(crate) fn run_drive_into(
 ) -> Result<DriveWritten, RunError> {
     let folder =
         ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
-    progress.stage("evaluate", 1);
     if scene.operating.oil_temperatures.is_some() {
         let (rendered, drives) = drive_sweep_files(scene)?;
         let files = write_all(&folder, &rendered, progress)?;
@@ -151,7 +150,7 @@ pub(crate) fn run_drive_into(
     let io = RunError::io("the record files");
     let file = folder.create_file(evaluate::drive_records::FILE).map_err(&io)?;
     let mut records = std::io::BufWriter::new(file);
-    let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(&io)?;
+    let eval = evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, progress).map_err(&io)?;
     std::io::Write::flush(&mut records).map_err(&io)?;
     drop(records);
     report_into(folder, scene, drive, &eval, progress)

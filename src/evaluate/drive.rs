@@ -5,6 +5,7 @@
 use super::drive_setup::DriveSetup;
 use crate::drive::DrivePoint;
 use crate::model::{Scene, SceneDrive};
+use crate::progress::Progress;
 
 pub use super::drive_setup::DriveRow;
 
@@ -13,6 +14,8 @@ pub use super::drive_setup::DriveRow;
 pub struct DriveEvaluation {
     pub rows: Vec<DriveRow>,
     pub map: Vec<DriveRow>,
+    /// The map's best point of each half (drive, coast), per law and formulation, located.
+    pub map_best: Vec<super::drive_map_best::DriveMapBest>,
     /// For every kept row, each stage's validity of the row's law.
     pub validity: Vec<Vec<super::laws::ValiditySummary>>,
     /// The thermal balance of every kept row, when the scene asks for it.
@@ -44,9 +47,21 @@ pub fn evaluate_drive_into(
     drive: &SceneDrive,
     records: &mut dyn std::io::Write,
 ) -> std::io::Result<DriveEvaluation> {
+    evaluate_drive_into_with(scene, drive, records, &crate::progress::Quiet)
+}
+
+/// [`evaluate_drive_into`] announcing each block of rows to `progress`: where it says the run is
+/// cancelled (Ctrl-C in Python), the run stops after that block with an `Interrupted` error.
+pub(crate) fn evaluate_drive_into_with(
+    scene: &Scene,
+    drive: &SceneDrive,
+    records: &mut dyn std::io::Write,
+    progress: &dyn Progress,
+) -> std::io::Result<DriveEvaluation> {
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup);
-    let (rows, validity, tally) = stream_rows(&setup, scene, drive, 0..n, records, true)?;
+    progress.stage("evaluate", n as u64);
+    let (rows, validity, tally) = stream_rows(&setup, scene, drive, (0..n, records), true, progress)?;
     Ok(finish(&setup, scene, drive, (rows, validity), tally))
 }
 
@@ -59,11 +74,24 @@ pub fn evaluate_drive_shard(
     shard: crate::evaluate::Shard,
     records: &mut dyn std::io::Write,
 ) -> std::io::Result<DriveTally> {
+    evaluate_drive_shard_with(scene, drive, shard, records, &crate::progress::Quiet)
+}
+
+/// [`evaluate_drive_shard`] announcing each block of rows to `progress` (and stopping where it is
+/// cancelled).
+pub(crate) fn evaluate_drive_shard_with(
+    scene: &Scene,
+    drive: &SceneDrive,
+    shard: crate::evaluate::Shard,
+    records: &mut dyn std::io::Write,
+    progress: &dyn Progress,
+) -> std::io::Result<DriveTally> {
     let setup = DriveSetup::new(scene, drive);
     let per_point = setup.rows_per_point();
     let points = shard.range(scene.operating.count());
     let rows = points.start * per_point..points.end * per_point;
-    Ok(stream_rows(&setup, scene, drive, rows, records, shard.index == 1)?.2)
+    progress.stage("evaluate", rows.len() as u64);
+    Ok(stream_rows(&setup, scene, drive, (rows, records), shard.index == 1, progress)?.2)
 }
 
 /// After the shards are merged: the report's rows (the first [`DETAIL_ROWS`]) evaluated again, the
@@ -73,7 +101,8 @@ pub fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTall
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup).min(DETAIL_ROWS);
     let (rows, validity, _) =
-        stream_rows(&setup, scene, drive, 0..n, &mut std::io::sink(), false).expect("a sink takes every row");
+        stream_rows(&setup, scene, drive, (0..n, &mut std::io::sink()), false, &crate::progress::Quiet)
+            .expect("a sink takes every row");
     finish(&setup, scene, drive, (rows, validity), tally)
 }
 
@@ -86,14 +115,15 @@ fn row_count(scene: &Scene, setup: &DriveSetup) -> usize {
 type Kept = (Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>);
 
 /// Rows `range` of the operating points in blocks, each written to `records` (after the header,
-/// when `header`) and tallied; the first [`DETAIL_ROWS`] kept with their validity.
+/// when `header`) and tallied; the first [`DETAIL_ROWS`] kept with their validity. After each block
+/// `progress` advances; where it is cancelled the rows stop with an `Interrupted` error.
 fn stream_rows(
     setup: &DriveSetup,
     scene: &Scene,
     drive: &SceneDrive,
-    range: std::ops::Range<usize>,
-    records: &mut dyn std::io::Write,
+    (range, records): (std::ops::Range<usize>, &mut dyn std::io::Write),
     header: bool,
+    progress: &dyn Progress,
 ) -> std::io::Result<(Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, DriveTally)> {
     let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
     let op = &scene.operating;
@@ -122,6 +152,10 @@ fn stream_rows(
                 validity.push(valid);
             }
         }
+        progress.advance(BLOCK.min(range.end - start) as u64);
+        if progress.cancelled() {
+            return Err(std::io::Error::new(std::io::ErrorKind::Interrupted, "the run was interrupted"));
+        }
     }
     Ok((rows, validity, tally))
 }
@@ -135,11 +169,14 @@ fn finish(
     tally: DriveTally,
 ) -> DriveEvaluation {
     let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
-    let map = match (&scene.analyses.efficiency_map, scene.analyses.map_ends) {
+    let (map, map_best) = match (&scene.analyses.efficiency_map, scene.analyses.map_ends) {
         (Some((t, s)), Some(ends)) => {
-            setup.grid(&si(&t.values), &s.values.iter().map(|w| w.value).collect::<Vec<_>>(), ends)
+            let (torques, speeds) = (si(&t.values), s.values.iter().map(|w| w.value).collect::<Vec<_>>());
+            let map = setup.grid(&torques, &speeds, ends);
+            let best = super::drive_map_best::drive_map_best(setup, (&torques, &speeds), ends, &map);
+            (map, best)
         }
-        _ => Vec::new(),
+        _ => (Vec::new(), Vec::new()),
     };
     let balances = match (&scene.housing, scene.analyses.thermal_balance) {
         (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
@@ -149,8 +186,12 @@ fn finish(
         (Some(h), Some(c), Some(_)) => Some(super::drive_thermal::drive_duty(scene, drive, h, c)),
         _ => None,
     };
-    let cycle = drive.cycle.as_ref().map(|spec| super::drive_cycle::evaluate_cycle(scene, drive, spec));
-    DriveEvaluation { rows, map, validity, balances, duty, cycle, tally }
+    let cycle = drive
+        .cycle
+        .as_ref()
+        .filter(|_| scene.analyses.drive_cycle.is_some())
+        .map(|spec| super::drive_cycle::evaluate_cycle(scene, drive, spec));
+    DriveEvaluation { rows, map, map_best, validity, balances, duty, cycle, tally }
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the

@@ -30,6 +30,15 @@ pub struct StageValidity {
     pub pieces: usize,
     pub seconds: f64,
     pub first: Option<(f64, &'static str)>,
+    /// The law's notes at the pieces' middles (an input read at a bound of its range), by kind
+    /// (the note with its numbers taken out): (the first piece's note, its start (s), pieces,
+    /// seconds).
+    pub notes: Vec<(String, f64, usize, f64)>,
+}
+
+/// A note's kind: its text without the numbers in it (the same bound met at other values).
+pub(crate) fn note_kind(note: &str) -> String {
+    note.chars().filter(|c| !c.is_ascii_digit() && *c != '.' && *c != '-').collect()
 }
 
 /// How the oil temperature is taken over the cycle.
@@ -114,7 +123,8 @@ fn validity(
     pieces: &[Piece],
     thermal: &[PieceThermal],
 ) -> Vec<StageValidity> {
-    let verdicts: Vec<(f64, f64, Vec<Option<&'static str>>)> = pieces
+    type Verdict = (Option<&'static str>, Vec<String>);
+    let verdicts: Vec<(f64, f64, Vec<Verdict>)> = pieces
         .par_iter()
         .enumerate()
         .filter(|(_, p)| p.mode != Mode::Standing)
@@ -132,7 +142,7 @@ fn validity(
             let stages = setup
                 .validity(law, &point)
                 .into_iter()
-                .map(|v| (v.outside > 0).then(|| v.intervals.first().map_or("outside", |i| i.2)))
+                .map(|v| ((v.outside > 0).then(|| v.intervals.first().map_or("outside", |i| i.2)), v.notes))
                 .collect();
             (p.from, p.to - p.from, stages)
         })
@@ -140,11 +150,21 @@ fn validity(
     let stages = verdicts.first().map_or(0, |v| v.2.len());
     let mut out = vec![StageValidity::default(); stages];
     for (from, length, v) in &verdicts {
-        for (s, reason) in out.iter_mut().zip(v) {
+        for (s, (reason, notes)) in out.iter_mut().zip(v) {
             if let Some(reason) = reason {
                 s.pieces += 1;
                 s.seconds += length;
                 s.first.get_or_insert((*from, reason));
+            }
+            for note in notes {
+                let kind = note_kind(note);
+                match s.notes.iter_mut().find(|n| note_kind(&n.0) == kind) {
+                    Some(n) => {
+                        n.2 += 1;
+                        n.3 += length;
+                    }
+                    None => s.notes.push((note.clone(), *from, 1, *length)),
+                }
             }
         }
     }

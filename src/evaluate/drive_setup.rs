@@ -230,10 +230,14 @@ impl<'a> DriveSetup<'a> {
                 let sun = validity_along(spec, &mesh.context(d, torque(pp.mesh_torque[0]), pp.mesh_speed[0]));
                 let ring = mesh.ring.as_ref().expect("a planetary stage has its ring mesh");
                 let at_ring = validity_along(spec, &ring.context(torque(pp.mesh_torque[1]), pp.mesh_speed[1]));
+                let named = |mesh: &'static str, notes: Vec<String>| {
+                    notes.into_iter().map(move |n| format!("{mesh} mesh: {n}"))
+                };
                 super::laws::ValiditySummary {
                     samples: sun.samples + at_ring.samples,
                     outside: sun.outside + at_ring.outside,
                     intervals: sun.intervals.into_iter().chain(at_ring.intervals).collect(),
+                    notes: named("sun–planet", sun.notes).chain(named("planet–ring", at_ring.notes)).collect(),
                 }
             })
             .collect()

@@ -20,6 +20,11 @@ pub struct ValiditySummary {
     pub outside: usize,
     /// (from, to) along the line of action from T1 (m), with the first reason met there.
     pub intervals: Vec<(f64, f64, &'static str)>,
+    /// The law's own notes at this state (where it reads an input at a bound of its range, e.g.
+    /// ISO/TR 14179-2's F_bt/b raised to 150 N/mm): a drive's stages and a cycle's pieces report
+    /// them; a pair's report reads them from the law itself.
+    #[serde(skip)]
+    pub notes: Vec<String>,
 }
 
 /// One friction law at one operating point. Outside the detail points only the summary is filled
@@ -116,7 +121,7 @@ pub(crate) fn validity_summary(law: &dyn FrictionLaw, contacts: &[ContactPoint])
     if let Some(i) = open {
         intervals.push(i);
     }
-    ValiditySummary { samples: contacts.len(), outside, intervals }
+    ValiditySummary { samples: contacts.len(), outside, intervals, notes: law.notes() }
 }
 
 /// The regime between consecutive switch points (A, switches…, E), for laws that have regimes.

@@ -105,25 +105,38 @@ pub(crate) fn best_points(
                     }
                 }
             }
-            let around = |v: &[f64], i: usize| (v[i.saturating_sub(1)], v[(i + 1).min(v.len() - 1)]);
-            let ((t0, t1), (n0, n1)) = (around(torques, grid.0), around(speeds, grid.1));
             let eta = |t: f64, n: f64| {
                 efficiency_at(scene, eval, *law_index, *f, OperatingState { pinion_torque: t, pinion_speed: n })
             };
-            let mut count = 0;
-            let (mut t, mut n) = (torques[grid.0], speeds[grid.1]);
-            for _ in 0..50 {
-                let t_new = if t1 > t0 { golden_max(|x| eta(x, n), t0, t1, &mut count).0 } else { t };
-                let n_new = if n1 > n0 { golden_max(|x| eta(t_new, x), n0, n1, &mut count).0 } else { n };
-                let moved =
-                    (t_new - t).abs() > POINT_TOLERANCE * (t1 - t0) || (n_new - n).abs() > POINT_TOLERANCE * (n1 - n0);
-                (t, n) = (t_new, n_new);
-                if !moved {
-                    break;
-                }
-            }
-            let located = (t, n, eta(t, n));
-            MapBest { law_index: *law_index, formulation: *f, total: *total, located, grid, evaluations: count + 1 }
+            let (located, evaluations) = locate_max(torques, speeds, (grid.0, grid.1), eta);
+            MapBest { law_index: *law_index, formulation: *f, total: *total, located, grid, evaluations }
         })
         .collect()
+}
+
+/// The maximum of `eta(torque, speed)` next to the grid cell `grid` (indices into `torques` and
+/// `speeds`, ascending): coordinate ascent by golden sections over the box of the cell's neighbours
+/// (clipped to the grid), the box's ends included, until a sweep moves the point by less than
+/// [`POINT_TOLERANCE`] of the box in both directions (at most 50 sweeps). Returns (torque, speed,
+/// η) at the located point and the evaluations used.
+pub(crate) fn locate_max(
+    torques: &[f64],
+    speeds: &[f64],
+    grid: (usize, usize),
+    eta: impl Fn(f64, f64) -> f64,
+) -> ((f64, f64, f64), usize) {
+    let around = |v: &[f64], i: usize| (v[i.saturating_sub(1)], v[(i + 1).min(v.len() - 1)]);
+    let ((t0, t1), (n0, n1)) = (around(torques, grid.0), around(speeds, grid.1));
+    let mut count = 0;
+    let (mut t, mut n) = (torques[grid.0], speeds[grid.1]);
+    for _ in 0..50 {
+        let t_new = if t1 > t0 { golden_max(|x| eta(x, n), t0, t1, &mut count).0 } else { t };
+        let n_new = if n1 > n0 { golden_max(|x| eta(t_new, x), n0, n1, &mut count).0 } else { n };
+        let moved = (t_new - t).abs() > POINT_TOLERANCE * (t1 - t0) || (n_new - n).abs() > POINT_TOLERANCE * (n1 - n0);
+        (t, n) = (t_new, n_new);
+        if !moved {
+            break;
+        }
+    }
+    ((t, n, eta(t, n)), count + 1)
 }

@@ -12,6 +12,7 @@ pub(crate) mod cycle_transient;
 pub(crate) mod details;
 pub mod drive;
 pub mod drive_cycle;
+pub mod drive_map_best;
 pub mod drive_records;
 pub(crate) mod drive_setup;
 pub mod drive_thermal;

@@ -19,19 +19,54 @@ pub const PLOTTED_VALUES: usize = 200;
 pub const MAP_VALUES: usize = 40;
 pub use crate::model::MAX_OPERATING_POINTS;
 
-/// One share of a sharded run: `index` of `count`, 1-based (`--shard 2/4`).
+/// One share of a sharded run: `index` of `count`, 1-based (`--shard 2/4`). Made only by
+/// [`Shard::new`] (or parsed from `K/N`), which holds 1 ≤ K ≤ N ≤ [`MAX_SHARDS`]: the CLI and
+/// Python validate a shard in this one place.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Shard {
     pub index: usize,
     pub count: usize,
 }
 
+/// The most shards a sweep is cut into.
+pub const MAX_SHARDS: usize = 1_000_000;
+
+const SHARD_HINT: &str = "write K/N with whole numbers 1 ≤ K ≤ N ≤ 1000000, e.g. 2/4";
+
 impl Shard {
+    /// Shard `index` of `count`, or why it does not exist (with the hint).
+    ///
+    /// ```
+    /// assert!(gearloss::Shard::new(2, 4).is_ok());
+    /// assert!(gearloss::Shard::new(7, 6).is_err());
+    /// assert!(gearloss::Shard::new(0, 6).is_err());
+    /// assert!(gearloss::Shard::new(1, 0).is_err());
+    /// assert_eq!("3/5".parse::<gearloss::Shard>(), gearloss::Shard::new(3, 5));
+    /// ```
+    pub fn new(index: usize, count: usize) -> Result<Shard, String> {
+        if index == 0 || index > count || count > MAX_SHARDS {
+            return Err(format!("shard {index}/{count} does not exist: {SHARD_HINT}"));
+        }
+        Ok(Shard { index, count })
+    }
+
     /// The operating points of this share of `n`: a contiguous block, so that the shards' record
     /// files concatenate in order to a single run's.
     pub fn range(&self, n: usize) -> Range<usize> {
         let at = |i: usize| ((i as u128 * n as u128) / self.count as u128) as usize;
         at(self.index - 1)..at(self.index)
+    }
+}
+
+impl std::str::FromStr for Shard {
+    type Err = String;
+
+    /// `K/N`, as `--shard` and Python's `shard="K/N"` take it.
+    fn from_str(text: &str) -> Result<Shard, String> {
+        let (k, n) = text.split_once('/').ok_or_else(|| format!("`{text}` is not K/N: {SHARD_HINT}"))?;
+        let whole =
+            |t: &str| t.trim().parse::<usize>().map_err(|_| format!("`{t}` is not a whole number: {SHARD_HINT}"));
+        Shard::new(whole(k)?, whole(n)?)
     }
 }
 

@@ -53,7 +53,7 @@ impl BearingType {
 
     /// f_1 at radial and axial loads F_r, F_a (N) and static rating C_0 (N, where needed).
     pub fn f1(self, fr: f64, fa: f64, c0: Option<f64>) -> Option<f64> {
-        let p0 = (0.6 * fr + 0.5 * fa).max(fr);
+        let p0 = static_equivalent_load(fr, fa);
         Some(match self {
             BearingType::DeepGrooveBall => 0.0007 * (p0 / c0?).powf(0.5),
             BearingType::AngularContactBall => 0.001 * (p0 / c0?).powf(0.33),
@@ -74,3 +74,15 @@ impl BearingType {
         }
     }
 }
+
+/// The static equivalent load P_0 = max(0.6 F_r + 0.5 F_a, F_r) (N) that Palmgren's f_1 reads
+/// against C_0 (SKF General Catalogue 4000 E, 1989, the deep groove ball bearing's factors).
+pub(crate) fn static_equivalent_load(fr: f64, fa: f64) -> f64 {
+    (0.6 * fr + 0.5 * fa).max(fr)
+}
+
+/// The largest static load ratio P_0/C_0 the bearing models read as data: f_1's power laws in
+/// P_0/C_0 were fitted for bearings inside their static rating (static safety s_0 = C_0/P_0 ≥ 1,
+/// ISO 76); beyond it the bearing deforms permanently and its loss is extrapolated. A report
+/// warns at the bearing and the point where a ratio exceeds it.
+pub(crate) const MAX_STATIC_LOAD_RATIO: f64 = 1.0;

@@ -100,7 +100,7 @@ impl Error {
                 }
                 err
             }
-            Error::Run(RunError::Io { what, source }) => PyOSError::new_err(format!("cannot write {what}: {source}")),
+            Error::Run(RunError::Io { what, source }) => os_error(&format!("cannot write {what}"), &source),
             Error::Run(e) => {
                 let err = GearlossRunError::new_err(e.to_string());
                 let (kind, hints) = e.failure().map_or((String::new(), Vec::new()), |f| {
@@ -119,6 +119,24 @@ impl Error {
                 err
             }
         }
+    }
+}
+
+/// A file system error as the `OSError` subclass Python raises for its kind (`PermissionError`,
+/// `FileNotFoundError`, `FileExistsError`, `IsADirectoryError`, `NotADirectoryError`,
+/// `InterruptedError`; else `OSError`), with `message` (what could not be done) and the cause.
+pub(super) fn os_error(message: &str, e: &std::io::Error) -> PyErr {
+    use pyo3::exceptions as x;
+    use std::io::ErrorKind as K;
+    let text = format!("{message}: {e}");
+    match e.kind() {
+        K::PermissionDenied => x::PyPermissionError::new_err(text),
+        K::NotFound => x::PyFileNotFoundError::new_err(text),
+        K::AlreadyExists => x::PyFileExistsError::new_err(text),
+        K::IsADirectory => x::PyIsADirectoryError::new_err(text),
+        K::NotADirectory => x::PyNotADirectoryError::new_err(text),
+        K::Interrupted => x::PyInterruptedError::new_err(text),
+        _ => PyOSError::new_err(text),
     }
 }
 

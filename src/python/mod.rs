@@ -46,7 +46,10 @@ fn operating_points(py: Python<'_>, name: &str, text: &str) -> PyResult<usize> {
 #[pyfunction]
 fn read_scene(py: Python<'_>, path: PathBuf) -> PyResult<String> {
     let text = py.allow_threads(|| crate::scene::source::read_text(&path, crate::scene::source::MAX_SCENE_BYTES));
-    text.map_err(|e| pyo3::exceptions::PyOSError::new_err(format!("cannot read {}: {e}", path.display())))
+    text.map_err(|e| match e {
+        crate::scene::source::ReadError::Io(io) => error::os_error(&format!("cannot read {}", path.display()), &io),
+        other => pyo3::exceptions::PyOSError::new_err(format!("cannot read {}: {other}", path.display())),
+    })
 }
 
 /// Writes a report folder `name` with `files` into `out` as `gearloss run` does: a hidden
@@ -60,10 +63,11 @@ fn write_folder(py: Python<'_>, out: PathBuf, name: String, files: Vec<(String, 
         }
         folder.commit()
     });
-    written.map_err(|e| pyo3::exceptions::PyOSError::new_err(format!("cannot write the report folder: {e}")))
+    written.map_err(|e| error::os_error("cannot write the report folder", &e))
 }
 
-/// Runs a scene (or one shard `(K, N)` of it) as `gearloss run` does: the report folder in memory.
+/// Runs a scene (or one shard `"K/N"` of it, validated as `--shard` is) as `gearloss run` does:
+/// the report folder in memory.
 /// Between blocks of points the run asks Python for signals: Ctrl-C stops it within about a block
 /// (a second or less) and raises `KeyboardInterrupt`.
 #[pyfunction]
@@ -72,9 +76,13 @@ fn run(
     py: Python<'_>,
     name: String,
     text: String,
-    shard: Option<(usize, usize)>,
+    shard: Option<String>,
     records: Option<String>,
 ) -> PyResult<PyFolder> {
+    let shard: Option<Shard> = match shard {
+        Some(s) => Some(s.parse().map_err(pyo3::exceptions::PyValueError::new_err)?),
+        None => None,
+    };
     let formats: crate::RecordFormats = match records {
         Some(r) => r.parse().map_err(pyo3::exceptions::PyValueError::new_err)?,
         None => crate::RecordFormats::default(),
@@ -86,6 +94,35 @@ fn run(
         return Err(interrupt);
     }
     to_py(py, result).map(to_python)
+}
+
+/// Runs a scene (or one shard `"K/N"` of it) as `gearloss run --out out` does and returns the
+/// report folder's path: nothing of it is held in memory (a sweep's records stay on disk, read
+/// when a table is asked for). Ctrl-C stops it as [`run`].
+#[pyfunction]
+#[pyo3(signature = (name, text, out, shard=None, records=None))]
+fn run_to(
+    py: Python<'_>,
+    name: String,
+    text: String,
+    out: PathBuf,
+    shard: Option<String>,
+    records: Option<String>,
+) -> PyResult<PathBuf> {
+    let formats: crate::RecordFormats = match records {
+        Some(r) => r.parse().map_err(pyo3::exceptions::PyValueError::new_err)?,
+        None => crate::RecordFormats::default(),
+    };
+    let shard: Option<Shard> = match shard {
+        Some(s) => Some(s.parse().map_err(pyo3::exceptions::PyValueError::new_err)?),
+        None => None,
+    };
+    let signals = Signals::default();
+    let result = py.allow_threads(|| run_into(&name, &text, (shard, formats), &out, &signals));
+    if let Some(interrupt) = signals.pending.into_inner().ok().flatten() {
+        return Err(interrupt);
+    }
+    to_py(py, result)
 }
 
 /// A run's progress that asks Python for pending signals (Ctrl-C) and keeps the exception the
@@ -113,6 +150,13 @@ fn merge(py: Python<'_>, folders: Vec<PathBuf>) -> PyResult<PyFolder> {
     to_py(py, result).map(to_python)
 }
 
+/// Merges shard folders as `gearloss merge --out out` does; returns the merged folder's path.
+#[pyfunction]
+fn merge_to(py: Python<'_>, folders: Vec<PathBuf>, out: PathBuf) -> PyResult<PathBuf> {
+    let result = py.allow_threads(|| Ok(crate::merge_into(&folders, &out, &crate::Quiet)?.folder));
+    to_py(py, result)
+}
+
 /// The scene text with operating values replaced (`pinion_speed = "100..3000 rpm count 30"`), checked.
 #[pyfunction]
 fn replace(py: Python<'_>, name: &str, text: &str, values: Vec<(String, String)>) -> PyResult<String> {
@@ -122,12 +166,11 @@ fn replace(py: Python<'_>, name: &str, text: &str, values: Vec<(String, String)>
 fn run_into(
     name: &str,
     text: &str,
-    (shard, formats): (Option<(usize, usize)>, crate::RecordFormats),
+    (shard, formats): (Option<Shard>, crate::RecordFormats),
     out: &Path,
     progress: &dyn crate::Progress,
 ) -> Result<PathBuf, Error> {
     let scene = crate::check(name, text)?;
-    let shard = shard.map(|(index, count)| Shard { index, count });
     Ok(crate::run_into_with(name, text, &scene, (out, shard), formats, progress)?.folder)
 }
 
@@ -217,7 +260,9 @@ fn import_rexs(py: Python<'_>, path: PathBuf) -> PyResult<(String, Vec<String>)>
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(run_to, m)?)?;
     m.add_function(wrap_pyfunction!(merge, m)?)?;
+    m.add_function(wrap_pyfunction!(merge_to, m)?)?;
     m.add_function(wrap_pyfunction!(replace, m)?)?;
     m.add_function(wrap_pyfunction!(operating_points, m)?)?;
     m.add_function(wrap_pyfunction!(read_scene, m)?)?;

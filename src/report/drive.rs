@@ -40,6 +40,26 @@ pub struct DriveMapReport {
     pub efficiency: Vec<Vec<f64>>,
     /// The largest passes of the fixed point over the grid.
     pub most_passes: usize,
+    /// Where η peaks on the drive half and on the coast half, located (not the grid's best cell).
+    #[serde(default)]
+    pub best: Vec<DriveMapBestReport>,
+}
+
+/// The located best point of one half of a drive's map.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveMapBestReport {
+    /// "drive" or "coast".
+    pub flow: String,
+    /// The located point: torque (N·m) and speed (rpm) at the map's ends, and η.
+    pub torque: f64,
+    pub speed_rpm: f64,
+    pub efficiency: f64,
+    /// The half's best grid cell, where the search started.
+    pub grid_torque: f64,
+    pub grid_speed_rpm: f64,
+    pub grid_efficiency: f64,
+    /// Drive walks the search used.
+    pub evaluations: usize,
 }
 
 /// The thermal balance of one operating point, law and formulation (one sump).
@@ -72,6 +92,10 @@ pub struct DriveDutyStep {
     /// P_V at the scene's oil temperature (W).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub loss_at_oil_temperature: Option<f64>,
+    /// P_V at the scene's oil temperature × the step's duration (J): the step's energy with the
+    /// sump held at that temperature.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_at_oil_temperature: Option<f64>,
     /// With a heat capacity: θ at the step's end (°C), energy lost and given off in the step (J).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub end_temperature_c: Option<f64>,
@@ -209,6 +233,26 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         },
         points,
     };
+    if let (Some(d), Some(h)) = (&report.duty, &scene.housing) {
+        if h.heat_capacity.is_none() {
+            report.findings.push(Finding {
+                severity: Severity::Warning,
+                message: format!(
+                    "duty cycle \"{}\": the housing gives no `heat_capacity`, so the sump's transient (θ and the energies along it) is not computed; {}",
+                    d.name,
+                    if d.steps.iter().any(|s| s.energy_at_oil_temperature.is_some()) {
+                        "each step's energy at the scene's oil temperature is given"
+                    } else {
+                        "give `oil_temperature` in `operating` for each step's energy at a fixed temperature, or the housing's `heat_capacity`"
+                    }
+                ),
+            });
+        }
+    }
+    let unused = crate::scene::summary::unused_blocks(scene)
+        .into_iter()
+        .map(|message| Finding { severity: Severity::Warning, message });
+    report.findings.splice(0..0, unused);
     if let Some(c) = &report.cycle {
         report.findings.extend(c.findings.iter().cloned());
     }
@@ -218,6 +262,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             message: format!("{} ({}, {}): the sump {}", b.label, b.law, b.formulation, b.status),
         });
     }
+    report.findings.extend(stage_notes(drive, &eval.rows, &eval.validity, &report.points));
     let shown = report.points.iter().filter(|p| p.validity.iter().any(|v| v.0 > 0)).count();
     if report.outside_rows > shown {
         report.findings.push(Finding {
@@ -251,6 +296,7 @@ fn duty_report(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Option
                 label: s.label.clone(),
                 duration_s: s.duration,
                 loss_at_oil_temperature: d.fixed.as_ref().map(|f| f[k]),
+                energy_at_oil_temperature: d.fixed.as_ref().map(|f| f[k] * s.duration),
                 end_temperature_c: transient.map(|t| c(t.steps[k].temperature)),
                 energy_lost: transient.map(|t| t.steps[k].energy_lost),
                 energy_dissipated: transient.map(|t| t.steps[k].energy_dissipated),
@@ -277,7 +323,7 @@ fn row_words(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> St
     )
 }
 
-/// An operating point in words, as the scene gives it: `T_out = 150 N*m, n_out = 500 rpm`.
+/// An operating point in words, as the scene gives it: `T_out = 150 N·m, n_out = 500 rpm`.
 fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize, speed_index: usize) -> String {
     let op = &scene.operating;
     let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
@@ -286,10 +332,10 @@ fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize, speed_ind
         "T_{} = {} {}, n_{} = {} {}",
         end(ends.torque_at),
         op.pinion_torque.written_values[torque_index],
-        op.pinion_torque.unit,
+        crate::scene::units::shown_written_unit(&op.pinion_torque.unit),
         end(ends.speed_at),
         op.pinion_speed.written_values[speed_index],
-        op.pinion_speed.unit
+        crate::scene::units::shown_written_unit(&op.pinion_speed.unit)
     )
 }
 
@@ -311,7 +357,24 @@ fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Vec<DriveMapR
                 efficiency[c.torque_index][c.speed_index] = c.point.efficiency;
                 most_passes = most_passes.max(c.point.iterations);
             }
+            let rpm = 30.0 / std::f64::consts::PI;
+            let best = eval
+                .map_best
+                .iter()
+                .filter(|b| b.law_index == law_index && b.formulation == *f)
+                .map(|b| DriveMapBestReport {
+                    flow: b.flow.name().to_string(),
+                    torque: b.located.0,
+                    speed_rpm: b.located.1 * rpm,
+                    efficiency: b.located.2,
+                    grid_torque: t.values[b.grid.0].value,
+                    grid_speed_rpm: s.values[b.grid.1].value * rpm,
+                    grid_efficiency: b.grid.2,
+                    evaluations: b.evaluations,
+                })
+                .collect();
             out.push(DriveMapReport {
+                best,
                 law: law.clone(),
                 formulation: f.name().to_string(),
                 torque_at: ends.torque_at,
@@ -328,9 +391,28 @@ fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Vec<DriveMapR
 }
 
 /// What the reader must know: a shaft whose axial force goes to its first place by default, points
-/// where both ends deliver, a fixed point that did not settle.
+/// where both ends deliver, a fixed point that did not settle, a bearing beyond its static rating.
 fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Finding> {
     let mut out = Vec::new();
+    let loads = points.iter().flat_map(|p| {
+        layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
+            s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {
+                super::bearing_checks::BearingAtPoint {
+                    place: format!(
+                        "shaft `{}`, bearing at {} mm ({})",
+                        shaft.name,
+                        crate::numerics::rounding::fixed(b.position * 1e3, 2),
+                        b.kind
+                    ),
+                    c0: bearing.static_load_rating,
+                    radial: b.radial_load,
+                    axial: b.axial_load,
+                    point: &p.label,
+                }
+            })
+        })
+    });
+    out.extend(super::bearing_checks::overloaded(loads));
     for (j, shaft) in layout.shafts.iter().enumerate() {
         let helical = layout.stages.iter().any(|s| s.hand.is_some() && s.member_on(j).is_some());
         if helical && !shaft.locating_given && !shaft.bearings.is_empty() {
@@ -379,4 +461,42 @@ fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Fi
         });
     }
     out
+}
+
+/// The laws' notes on each stage at the points shown (an input read at a bound of its range, e.g.
+/// ISO/TR 14179-2's F_bt/b raised to 150 N/mm), one note a stage and kind, naming its points.
+fn stage_notes(
+    drive: &SceneDrive,
+    rows: &[crate::evaluate::drive::DriveRow],
+    validity: &[Vec<crate::evaluate::laws::ValiditySummary>],
+    points: &[DrivePointReport],
+) -> Vec<Finding> {
+    use crate::evaluate::drive_cycle::note_kind;
+    let mut groups: Vec<(usize, String, String, Vec<String>)> = Vec::new();
+    for ((_, stages), p) in rows.iter().zip(validity).zip(points) {
+        for (k, v) in stages.iter().enumerate() {
+            for note in &v.notes {
+                let kind = note_kind(note);
+                let label = format!("{} ({})", p.label, p.law);
+                match groups.iter_mut().find(|g| g.0 == k && g.1 == kind) {
+                    Some(g) if !g.3.contains(&label) => g.3.push(label),
+                    Some(_) => {}
+                    None => groups.push((k, kind, note.clone(), vec![label])),
+                }
+            }
+        }
+    }
+    groups
+        .into_iter()
+        .map(|(k, _, note, labels)| Finding {
+            severity: Severity::Note,
+            message: format!(
+                "stage `{}`: {note} (here, at {} of the {} points shown: {})",
+                drive.layout.stages[k].name,
+                labels.len(),
+                points.len(),
+                labels.join("; ")
+            ),
+        })
+        .collect()
 }

@@ -24,6 +24,19 @@ pub struct CycleValidity {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_s: Option<f64>,
     pub reason: String,
+    /// The law's notes on this stage (an input read at a bound of its range), by kind: the first
+    /// piece's note, where that piece starts (s), the pieces and seconds they hold for.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<CycleNote>,
+}
+
+/// A law's note over the cycle's pieces.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CycleNote {
+    pub note: String,
+    pub first_s: f64,
+    pub pieces: usize,
+    pub seconds: f64,
 }
 
 /// The drive cycle's report.
@@ -154,6 +167,16 @@ pub fn build_cycle_report(
                 seconds: v.seconds,
                 first_s: v.first.map(|f| f.0),
                 reason: v.first.map_or_else(String::new, |f| f.1.to_string()),
+                notes: v
+                    .notes
+                    .iter()
+                    .map(|(note, first_s, pieces, seconds)| CycleNote {
+                        note: note.clone(),
+                        first_s: *first_s,
+                        pieces: *pieces,
+                        seconds: *seconds,
+                    })
+                    .collect(),
             })
             .collect(),
         map: super::drive_cycle_series::cycle_map(spec, eval),
@@ -208,7 +231,25 @@ struct BoxPeaks {
 /// law outside its validity range, peaks beyond every operating range the scene defines.
 fn cycle_findings(report: &DriveCycleReport, ranges: &[Range], peaks: BoxPeaks) -> Vec<Finding> {
     let mut out = Vec::new();
-    for CycleValidity { stage, pieces, seconds, first_s, reason } in &report.validity {
+    let total = report.whole.to_s - report.whole.from_s;
+    for v in &report.validity {
+        for n in &v.notes {
+            out.push(Finding {
+                severity: Severity::Note,
+                message: format!(
+                    "drive cycle: stage `{}`: for {} s ({} % of the cycle's {} s, {} pieces) the law notes — {} (at the first such piece, {} s)",
+                    v.stage,
+                    crate::numerics::rounding::fixed(n.seconds, 1),
+                    crate::numerics::rounding::fixed(100.0 * n.seconds / total.max(f64::MIN_POSITIVE), 1),
+                    crate::numerics::rounding::fixed(total, 0),
+                    n.pieces,
+                    n.note,
+                    crate::numerics::rounding::fixed(n.first_s, 2)
+                ),
+            });
+        }
+    }
+    for CycleValidity { stage, pieces, seconds, first_s, reason, .. } in &report.validity {
         if let (true, Some(t)) = (*pieces > 0, first_s) {
             out.push(Finding {
                 severity: Severity::Warning,

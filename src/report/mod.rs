@@ -1,5 +1,6 @@
 //! Stage 4, report: the serde data every renderer reads. Nothing here formats text for a reader.
 
+pub(crate) mod bearing_checks;
 pub(crate) mod checks;
 pub mod drive;
 pub mod drive_cycle;
@@ -98,6 +99,9 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         stiffness: None,
         transmission_error: Vec::new(),
     };
+    if let Some(g) = &scene.gearbox {
+        report.findings.extend(pair_bearing_findings(scene, g, &report.efficiency));
+    }
     if let Some(t) = &eval.teeth {
         with_teeth(&mut report, scene, eval, t);
     }
@@ -239,3 +243,27 @@ fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Pla
 }
 
 pub use non_finite::non_finite_paths;
+
+/// The pair's bearings beyond their static rating at a reported point (one warning a bearing).
+fn pair_bearing_findings(
+    scene: &Scene,
+    g: &crate::losses::Gearbox,
+    records: &[friction::EfficiencyRecord],
+) -> Vec<finding::Finding> {
+    let labels: Vec<String> =
+        records.iter().map(|r| crate::evaluate::cases::case_at(&scene.operating, r.case).label).collect();
+    let loads = records.iter().zip(&labels).filter_map(|(r, label)| Some((r.budget.as_ref()?, label))).flat_map(
+        |(budget, label)| {
+            losses::bearing_places(g).enumerate().zip(&budget.bearings).map(move |((k, (shaft, b)), l)| {
+                bearing_checks::BearingAtPoint {
+                    place: format!("{shaft} shaft, bearing {} ({})", k + 1, b.kind.name()),
+                    c0: b.static_load_rating,
+                    radial: l.radial_load.si(),
+                    axial: l.axial_load.si(),
+                    point: label,
+                }
+            })
+        },
+    );
+    bearing_checks::overloaded(loads)
+}

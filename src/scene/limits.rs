@@ -28,6 +28,9 @@ pub(crate) const LIMITS: &[Limit] = &[
     limit("tip_diameter", "m", 1e-4, 40.0, "0.1 mm to 40 m"),
     limit("pinion_torque", "N*m", 1e-6, 1e8, "1e-6 N·m to 1e8 N·m"),
     limit("pinion_speed", "rad/s", 1e-4, 1.05e5, "0.001 rpm to 1 000 000 rpm"),
+    // A drive's output speed is a magnitude (its sense follows from the chain), so it is positive
+    // as a pinion's speed is: a bare `-80` is said to be negative before its missing unit.
+    limit("output_speed", "rad/s", 1e-4, 1.05e5, "0.001 rpm to 1 000 000 rpm"),
     limit("youngs_modulus", "Pa", 1e8, 2e12, "0.1 GPa to 2000 GPa"),
     limit("inertia", "kg*m^2", 1e-12, 1e6, "1e-12 to 1e6 kg·m²"),
     limit("mass", "kg", 1e-6, 1e6, "1 mg to 1000 t"),

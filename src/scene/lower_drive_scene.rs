@@ -97,7 +97,7 @@ pub(super) fn lower_drive_scene(
         .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, true, errors));
     check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
     let cycle = super::lower_vehicle::cycle_of_scene(cycle_blocks, analyses.drive_cycle, base_dir, errors);
-    if let (Some(c), Some((op, _))) = (&cycle, &operating) {
+    if let (Some(c), Some((op, _)), Some(_)) = (&cycle, &operating, analyses.drive_cycle) {
         let transient = housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
         if !transient && op.oil_temperature.is_none() && op.oil_temperatures.is_none() {
             errors.push(

@@ -249,13 +249,6 @@ pub(super) fn check_thermal_needs(t: &ThermalInputs, analyses: &crate::model::An
             "add `duty_cycle \"cycle\" { step(duration = 10 min, pinion_torque = 120 N*m, pinion_speed = 2500 rpm) }`",
         ));
     }
-    if let (Some(span), None) = (t.duty_block, analyses.duty_cycle) {
-        errors.push(missing(
-            span,
-            "the scene has a `duty_cycle` block but does not ask for it",
-            "add `duty_cycle` to `analyses`",
-        ));
-    }
     if !t.moves_with_temperature && !t.lubricant_failed {
         if let Some((span, _)) = wants.iter().find_map(|(s, r)| s.map(|s| (s, r))) {
             errors.push(

@@ -231,8 +231,9 @@ fn road_load(
     }
 }
 
-/// The scene's cycle: a `vehicle` and a `drive_cycle` block with the `drive_cycle` analysis, all
-/// three or none.
+/// The scene's cycle: a `vehicle` and a `drive_cycle` block, with or without the `drive_cycle`
+/// analysis (without it the blocks are checked and kept, and the scene's check warns that no
+/// analysis reads them, as it does for every other unused block); the analysis needs both blocks.
 pub(super) fn cycle_of_scene(
     (vehicle, cycle): (Option<&&Block>, Option<&&Block>),
     analysis: Option<Span>,
@@ -243,16 +244,8 @@ pub(super) fn cycle_of_scene(
         Diagnostic::new(DiagnosticKind::MissingKey, span, reason.to_string()).hint(hint.to_string())
     };
     match (vehicle, cycle, analysis) {
-        (Some(v), Some(c), Some(_)) => lower_drive_cycle(v, c, base_dir, errors),
+        (Some(v), Some(c), _) => lower_drive_cycle(v, c, base_dir, errors),
         (None, None, None) => None,
-        (Some(v), Some(_), None) => {
-            errors.push(missing(
-                v.kind.span,
-                "the scene describes a vehicle and its drive cycle but asks for no `drive_cycle` analysis",
-                "add `drive_cycle` to the `analyses` block, or leave the blocks out",
-            ));
-            None
-        }
         (None, _, _) => {
             let span = cycle.map(|c| c.kind.span).or(analysis).expect("one of them is there");
             errors.push(missing(

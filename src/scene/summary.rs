@@ -59,7 +59,9 @@ pub fn would_run(scene: &Scene) -> Vec<String> {
     if let (Some(_), Some(d)) = (a.duty_cycle, &scene.duty_cycle) {
         out.push(format!("duty cycle \"{}\": {} step(s), transient sump temperature", d.name, d.steps.len()));
     }
-    if let Some(c) = scene.drive.as_ref().and_then(|d| d.cycle.as_ref()) {
+    if let Some(c) =
+        scene.drive.as_ref().and_then(|d| d.cycle.as_ref()).filter(|_| scene.analyses.drive_cycle.is_some())
+    {
         let tr = &c.cycle.trace;
         let transient = scene.housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
         out.push(format!(
@@ -86,8 +88,9 @@ pub fn would_run(scene: &Scene) -> Vec<String> {
 /// The blocks the scene gives that no analysis it asks for reads, each with what would use it.
 pub fn unused_blocks(scene: &Scene) -> Vec<String> {
     let a = &scene.analyses;
-    let cycle_transient = scene.drive.as_ref().is_some_and(|d| d.cycle.is_some())
-        && scene.housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
+    let cycle = scene.drive.as_ref().is_some_and(|d| d.cycle.is_some());
+    let cycle_transient =
+        cycle && a.drive_cycle.is_some() && scene.housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
     let thermal = a.thermal_balance.is_some()
         || a.duty_cycle.is_some()
         || scene.operating.equilibrium.is_some()
@@ -101,7 +104,14 @@ pub fn unused_blocks(scene: &Scene) -> Vec<String> {
         out.push("the `gearbox` block's lubrication, bearings and seals are not used: no analysis asks for the loss budget (add `efficiency` to `analyses`)".to_string());
     }
     if scene.housing.is_some() && !thermal {
-        out.push("the `housing` block is not used: no analysis asks for the thermal balance (add `thermal_balance` to `analyses`, or write `oil_temperature = equilibrium`)".to_string());
+        out.push(if scene.drive.is_some() {
+            "the `housing` block is not used: no analysis asks for the thermal balance (add `thermal_balance` or `duty_cycle` to `analyses`, or give the housing a `heat_capacity` and run a `drive_cycle`)".to_string()
+        } else {
+            "the `housing` block is not used: no analysis asks for the thermal balance (add `thermal_balance` to `analyses`, or write `oil_temperature = equilibrium`)".to_string()
+        });
+    }
+    if cycle && a.drive_cycle.is_none() {
+        out.push("the `vehicle` and `drive_cycle` blocks are not used: add `drive_cycle` to `analyses`".to_string());
     }
     if scene.duty_cycle.is_some() && a.duty_cycle.is_none() {
         out.push("the `duty_cycle` block is not used: add `duty_cycle` to `analyses`".to_string());

@@ -540,3 +540,46 @@ fn a_negative_input_speed_turns_every_shaft_the_other_way() {
     assert!((axial(&ccw) + axial(&cw)).abs() < 1e-3 * axial(&ccw));
     assert!((cw.power_lost() - cw.losses.total()).abs() <= 1e-9 * cw.input_power);
 }
+
+/// The loss map's best point of each half is located, not the grid's: on the e-axle's map (25 × 12
+/// points) η at the located point is at least the half's best grid point's, and no point a step of
+/// 1e-3 of the search box away (inside the map, on the half's side of zero) is higher, to 1e-12
+/// (the search stops where a sweep moves it by 1e-7 of the box; η is smooth there, so the loss of η
+/// over that distance is far below 1e-12). Each neighbour is the drive solved afresh from a scene
+/// with that operating point.
+#[test]
+fn drive_map_best_points_are_located_maxima() {
+    let text = std::fs::read_to_string(crate::root().join("specs/planetary_two_stage.gear")).unwrap();
+    let scene = crate::scene_from_text(&text);
+    let eval = evaluate_drive(&scene, scene.drive.as_ref().unwrap());
+    assert_eq!(eval.map_best.len(), 2);
+    let (cell_t, cell_n) = (100.0, (1200.0 - 10.0) / 11.0);
+    for b in &eval.map_best {
+        let (t, w, eta) = b.located;
+        let n = w * 30.0 / std::f64::consts::PI;
+        assert!(eta >= b.grid.2, "{:?}: located η {eta} below the grid's {}", b.flow, b.grid.2);
+        let (dt, dn) = (2e-3 * cell_t, 2e-3 * cell_n);
+        let torques: Vec<f64> = [t - dt, t, t + dt].into_iter().filter(|x| x.abs() <= 1200.0 && x * t > 0.0).collect();
+        let speeds: Vec<f64> = [n - dn, n, n + dn].into_iter().filter(|x| (10.0..=1200.0).contains(x)).collect();
+        let list = |v: &[f64]| v.iter().map(|x| format!("{x:.15}")).collect::<Vec<_>>().join(", ");
+        let at = text.replace(
+            "output_torque = [-500, 300, 1200] N*m\n        output_speed  = [200, 800] rpm",
+            &format!("output_torque = [{}] N*m\n        output_speed = [{}] rpm", list(&torques), list(&speeds)),
+        );
+        assert_ne!(at, text);
+        let around = points(&crate::scene_from_text(&at));
+        let centre = around
+            .iter()
+            .find(|p| (p.output_torque.abs() - t.abs()).abs() < 1e-9 && (p.output_speed.abs() - w).abs() < 1e-9)
+            .expect("the located point among the neighbours");
+        assert!((centre.efficiency - eta).abs() < 1e-12, "{} vs {eta}", centre.efficiency);
+        for p in &around {
+            assert!(
+                p.efficiency <= eta + 1e-12,
+                "{:?}: η {} at a neighbour above the located {eta}",
+                b.flow,
+                p.efficiency
+            );
+        }
+    }
+}

@@ -54,6 +54,35 @@ fn new_writes_a_template_that_runs() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `gearloss new --kind drive|planetary|cycle` writes a drive template that checks with no unused
+/// block (the cycle's trace written beside it, and kept where a file of its name is already
+/// there), and `run` runs the drive and the planetary one.
+#[test]
+fn new_writes_drive_templates_that_check() {
+    let dir = std::env::temp_dir().join(format!("gearloss-new-kinds-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for kind in ["drive", "planetary", "cycle"] {
+        let file = dir.join(format!("{kind}.gear"));
+        let o = gearloss().args(["new", "--kind", kind]).arg(&file).output().unwrap();
+        assert!(o.status.success(), "{kind}: {}", String::from_utf8_lossy(&o.stderr));
+        let text = std::fs::read_to_string(&file).unwrap();
+        let scene = gearloss::check(&file.display().to_string(), &text)
+            .unwrap_or_else(|e| panic!("{kind}: {}", e.render(false)));
+        assert!(scene.drive.is_some(), "{kind}: not a drive");
+        assert!(gearloss::scene::summary::unused_blocks(&scene).is_empty(), "{kind}");
+        if kind != "cycle" {
+            let run = gearloss().arg("run").arg(&file).arg("--out").arg(dir.join("out")).output().unwrap();
+            assert!(run.status.success(), "{kind}: {}", String::from_utf8_lossy(&run.stderr));
+        }
+    }
+    assert_eq!(std::fs::read(dir.join("wltc_3b.csv")).unwrap(), gearloss::listing::CYCLE_TRACE.1);
+    let again = gearloss().args(["new", "--kind", "cycle"]).arg(dir.join("second.gear")).output().unwrap();
+    assert!(again.status.success());
+    assert!(String::from_utf8_lossy(&again.stdout).contains("kept"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// `check` says what `run` would compute, and warns about a `dynamics` block no analysis reads
 /// (the report says it too).
 #[test]
@@ -124,7 +153,7 @@ fn findings_are_grouped_and_name_their_points() {
     let dynamics = gearloss::report_of(&crate::scene(&crate::root().join("specs/fzg_dynamics.gear")));
     let kv: Vec<&str> = dynamics.findings.iter().map(|f| f.message.as_str()).filter(|m| m.contains("K_v ≈")).collect();
     assert_eq!(kv.len(), 1, "{kv:?}");
-    assert!(kv[0].contains("239.3 N*m, 100 rpm (base 2.0000, external"), "{}", kv[0]);
+    assert!(kv[0].contains("239.3 N·m, 100 rpm (base 2.0000, external"), "{}", kv[0]);
     let composite = gearloss::report_of(&crate::scene(&crate::root().join("specs/composite_speed_sweep.gear")));
     let magnitudes: Vec<&str> =
         composite.findings.iter().map(|f| f.message.as_str()).filter(|m| m.contains("Model IV magnitude")).collect();

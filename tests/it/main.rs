@@ -21,6 +21,7 @@ mod load_sharing;
 mod losses;
 mod oil_sweep;
 mod planetary;
+mod plot_text;
 mod properties;
 mod readme;
 mod records_parquet;

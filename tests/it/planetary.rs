@@ -284,6 +284,36 @@ fn load_sharing_factor_loads_one_planet_more() {
     }
 }
 
+/// K_γ = n (one planet carries the whole load, the limit the language allows): every number of
+/// every point finite (it gave NaN efficiencies), the most loaded planet's F_t the whole sun torque
+/// over r_w,sun (1e-12), and with Coulomb's law η₀ the equal sharing's (1e-12: Coulomb's mesh loss is
+/// linear in the load).
+#[test]
+fn load_sharing_factor_at_the_planets_count_is_one_planet_carrying_all() {
+    let text = std::fs::read_to_string(crate::root().join("specs/planetary_reducer.gear")).unwrap();
+    let with = |k: &str| {
+        let t = text.replace("planets = 3", &format!("planets = 3  load_sharing_factor = {k}"));
+        crate::scene_from_text(&t.replace(
+            "        iso_14179_2
+        benedict_kelley
+",
+            "        coulomb(mu = 0.05)
+",
+        ))
+    };
+    let (equal, all) = (points(&with("1")), points(&with("3")));
+    for (e, a) in equal.iter().zip(&all) {
+        assert!(a.efficiency.is_finite() && a.power_lost().is_finite(), "η {} loss {}", a.efficiency, a.power_lost());
+        let (pe, pa) = (e.stages[0].planetary.as_ref().unwrap(), a.stages[0].planetary.as_ref().unwrap());
+        assert!(pa.basic_efficiency.is_finite() && pa.efficiency.is_finite());
+        let t = a.stages[0].driving_torque;
+        let sun = if pa.driving_member == Sun { t } else { t / 4.0 };
+        let f_t = sun / 0.024;
+        assert!((pa.forces.tangential[0] - f_t).abs() < 1e-12 * f_t, "{} vs {f_t}", pa.forces.tangential[0]);
+        assert!((pa.basic_efficiency - pe.basic_efficiency).abs() < 1e-12);
+    }
+}
+
 /// With every loss zero (μ = 0, no bearings, seals or lubrication) the planetary reducer passes all
 /// its power, drive and coast, with the sun or the carrier given (η = 1 to 1e-12), and the output
 /// torque is the input's times the ratio 4 (1e-12).

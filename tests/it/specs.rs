@@ -22,6 +22,7 @@ fn file<'a>(r: &'a gearloss::RenderedReport, name: &str) -> &'a str {
 fn example_scenes_render() {
     insta::glob!("../../specs", "*.gear", |path| {
         let r = render(path);
+        crate::plot_text::assert_text_inside(&source_name(path), &r.files);
         // report.md links every plot the folder holds (each report.md its own folder's).
         for (name, _) in r.files.iter().filter(|(n, _)| n.ends_with(".svg")) {
             let (dir, svg) = name.rsplit_once('/').map_or(("", name.as_str()), |(d, f)| (d, f));
@@ -48,6 +49,7 @@ fn example_scenes_render() {
 fn ok_fixtures_render() {
     insta::glob!("../specs/ok", "*.gear", |path| {
         let r = render(path);
+        crate::plot_text::assert_text_inside(&source_name(path), &r.files);
         insta::assert_snapshot!(file(&r, "report.md"));
     });
 }

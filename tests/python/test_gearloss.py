@@ -6,6 +6,7 @@ Run from the repository root (``tests/python/run`` does): the scenes are read by
 """
 
 import json
+import os
 import pathlib
 import threading
 import time
@@ -287,21 +288,30 @@ def _write_many(args):
 def test_a_failing_dask_shard_is_named_and_nothing_writes_after(tmp_path, monkeypatch):
     """Shard 2 of 3 fails: the error names it, and the other shards have finished writing before
     the temporary folder is removed (the work folder is empty afterwards)."""
-    real = gearloss._native.run
+    real = gearloss._native.run_to
 
-    def flaky(name, text, shard, records=None):
-        if shard[0] == 2:
+    def flaky(name, text, out, shard, records=None):
+        if shard.startswith("2/"):
             raise gearloss.RunError("the disk is full")
         time.sleep(0.3)
-        return real(name, text, shard, records)
+        return real(name, text, out, shard, records)
 
-    monkeypatch.setattr(gearloss.dask._native, "run", flaky)
+    monkeypatch.setattr(gearloss.dask._native, "run_to", flaky)
     s = scene(ROOT / "specs/fzg_type_c.gear")
     with pytest.raises(gearloss.RunError, match="shard 2 of 3 failed: the disk is full") as e:
         gearloss.dask.run(s, shards=3, workdir=tmp_path)
     assert e.value.shard == 2
     time.sleep(0.5)
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("shard", ["7/6", (3, 2), (1, 0), "0/6", "1/1000001", (-1, 2), (1.5, 2), "x/2", 3])
+def test_a_shard_that_does_not_exist_is_a_value_error(shard):
+    """The CLI's validation of ``--shard K/N`` (1 ≤ K ≤ N ≤ 10⁶), never a panic."""
+    s = scene(ROOT / "specs/fzg_type_c.gear")
+    with pytest.raises(ValueError, match="K/N|K, N") as e:
+        gearloss.run(s, shard=shard)
+    assert not isinstance(e.value, gearloss.SceneError)
 
 
 def test_svg_of_a_missing_plot_lists_the_plots():
@@ -463,3 +473,75 @@ def test_a_drive_on_dask_is_the_single_run():
     merged = gearloss.dask.run(s, shards=3)
     assert merged.data == whole.data
     pandas.testing.assert_frame_equal(merged.drive_records, whole.drive_records)
+
+
+def test_a_bare_negative_output_speed_of_a_drive_is_said_to_be_negative():
+    """A drive's `output_speed = -80.0` (a bare number) gets the sign rule the text form gets, not
+    only "no unit"."""
+    s = scene(ROOT / "specs/ev_two_stage_reducer.gear")
+    with pytest.raises(gearloss.SceneError) as e:
+        s.replace(output_speed=-80.0)
+    messages = [d["message"] for d in e.value.diagnostics]
+    assert any("is negative" in m for m in messages), messages
+
+
+def test_tables_of_the_other_kind_of_report_raise_lookup_error():
+    """A pair's tables asked of a drive, and a drive's of a pair, say which tables the report has."""
+    pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    drive = gearloss.run(scene(ROOT / "specs/planetary_reducer.gear"))
+    for table in ("drive_records", "stages", "shafts", "bearings", "planetary", "cycle"):
+        with pytest.raises(LookupError, match="its tables are records"):
+            getattr(pair, table)
+    for table in ("records", "efficiency", "budget", "dynamics"):
+        with pytest.raises(LookupError, match="its tables are drive_records"):
+            getattr(drive, table)
+    assert len(drive.stages) > 0 and len(pair.efficiency) > 0
+
+
+def test_from_folder_of_a_missing_or_foreign_folder(tmp_path):
+    with pytest.raises(FileNotFoundError, match="does not exist"):
+        gearloss.Report.from_folder(tmp_path / "nope")
+    (tmp_path / "empty").mkdir()
+    with pytest.raises(FileNotFoundError, match="no report.json"):
+        gearloss.Report.from_folder(tmp_path / "empty")
+    (tmp_path / "file").write_text("x")
+    with pytest.raises(NotADirectoryError):
+        gearloss.Report.from_folder(tmp_path / "file")
+
+
+def test_write_errors_are_the_os_error_of_their_cause(tmp_path):
+    """A folder that cannot be made (its parent is a file) is `NotADirectoryError`; a read-only
+    folder `PermissionError` (skipped as root, whom permissions do not stop)."""
+    report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    (tmp_path / "a_file").write_text("x")
+    with pytest.raises(NotADirectoryError):
+        report.write(tmp_path / "a_file" / "under")
+    if os.geteuid() != 0:
+        ro = tmp_path / "ro"
+        ro.mkdir()
+        ro.chmod(0o500)
+        with pytest.raises(PermissionError):
+            report.write(ro)
+
+
+def test_a_run_lives_on_disk_until_its_report_goes(tmp_path):
+    """`run` keeps its folder in a temporary folder while the report lives, reads files when asked,
+    and removes it with the report."""
+    import gc
+
+    report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    root = report._files.root
+    assert (root / "report.json").is_file() and report.data["title"] == "FZG type C"
+    runs_parent = root.parent
+    del report
+    gc.collect()
+    assert not runs_parent.exists()
+
+
+def test_dask_on_a_scene_of_a_drive_cycle_only_runs_it_whole():
+    import gearloss.dask
+
+    s = scene(ROOT / "specs/ev_reducer_wltc.gear")
+    assert gearloss._native.operating_points(s.name, s.text) == 0
+    report = gearloss.dask.run(s, shards=4)
+    assert len(report.cycle) > 0

@@ -234,15 +234,25 @@ impl PlanetaryLayout {
 
     /// Each class of planets by its load: (how many planets, d), each carrying 1/d of the sun's
     /// torque. Equal sharing: one class of n with d = n; with K_γ > 1, one planet with d = n/K_γ and
-    /// n − 1 with d = n (n − 1)/(n − K_γ).
+    /// n − 1 with d = n (n − 1)/(n − K_γ). At K_γ = n the one planet carries everything and the
+    /// others nothing: their class has d = ∞ (its meshes idle; the loss of a mesh at no load is
+    /// not the load-weighted η's to count, see `carrying_shares`).
     pub fn planet_shares(&self) -> Vec<(f64, f64)> {
         let n = f64::from(self.planets);
         let k = self.load_sharing_factor;
         if k == 1.0 || self.planets == 1 {
             vec![(n, n)]
+        } else if k >= n {
+            vec![(1.0, 1.0), (n - 1.0, f64::INFINITY)]
         } else {
             vec![(1.0, n / k), (n - 1.0, n * (n - 1.0) / (n - k))]
         }
+    }
+
+    /// The classes of [`Self::planet_shares`] that carry load (1/d > 0): the meshes' efficiencies
+    /// are weighted over these (a planet that carries nothing passes no rolling power).
+    pub fn carrying_shares(&self) -> Vec<(f64, f64)> {
+        self.planet_shares().into_iter().filter(|(count, d)| count / d > 0.0).collect()
     }
 
     /// The planet's speed relative to the carrier, |ω_sun − ω_carrier| z_sun/z_planet (rad/s).

@@ -93,7 +93,7 @@ pub fn planetary_state(
                     mesh(PlanetMesh::PlanetRing, t * z_planet / z_sun, mesh_speed[1]),
                 ]
             };
-            match layout.planet_shares().as_slice() {
+            match layout.carrying_shares().as_slice() {
                 [(_, divisor)] => at(*divisor),
                 classes => unequal(classes.iter().map(|(count, d)| (count / d, at(*d))), sun_drives),
             }

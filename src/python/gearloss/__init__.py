@@ -27,7 +27,11 @@ import io
 import json
 import os
 import pathlib
-from typing import Dict, Iterable, Optional, Tuple, Union
+import shutil
+import tempfile
+import weakref
+from collections.abc import Mapping
+from typing import Iterable, Optional, Tuple, Union
 
 from . import _native
 from ._native import RexsError, RunError, SceneError
@@ -101,11 +105,18 @@ def _value_text(key: str, value) -> str:
     return str(value)
 
 
-def _shard(shard: Union[None, str, Tuple[int, int]]) -> Optional[Tuple[int, int]]:
-    if shard is None or isinstance(shard, tuple):
-        return shard
-    k, n = str(shard).split("/")
-    return int(k), int(n)
+def _shard(shard: Union[None, str, Tuple[int, int]]) -> Optional[str]:
+    """A shard as the text ``K/N`` the library validates (as ``gearloss run --shard`` does: 1 ≤ K ≤
+    N ≤ 1 000 000, else ``ValueError``)."""
+    if shard is None:
+        return None
+    if isinstance(shard, tuple):
+        if len(shard) != 2 or any(isinstance(x, bool) or not isinstance(x, int) for x in shard):
+            raise ValueError(f"shard: give (K, N) with whole numbers 1 ≤ K ≤ N, e.g. (2, 4) (got {shard!r})")
+        return f"{shard[0]}/{shard[1]}"
+    if not isinstance(shard, str):
+        raise ValueError(f"shard: give \"K/N\" or (K, N), e.g. \"2/4\" (got {shard!r})")
+    return shard
 
 
 def _records(records) -> Optional[str]:
@@ -116,17 +127,53 @@ def _records(records) -> Optional[str]:
 
 def run(scene: Scene, shard: Union[None, str, Tuple[int, int]] = None, records=None) -> "Report":
     """Runs the scene as ``gearloss run`` does (``shard="K/N"`` or ``(K, N)``: that share of its
-    operating points, as ``gearloss run --shard K/N``; ``records``: the record files, a list or a
-    comma-separated text of ``csv``, ``jsonl``, ``parquet`` as ``--records`` takes them, default
-    CSV and JSON Lines) and returns the report folder's contents."""
-    name, files = _native.run(scene.name, scene.text, _shard(shard), _records(records))
-    return Report(name, files)
+    operating points, as ``gearloss run --shard K/N``, validated as the CLI validates it; ``records``:
+    the record files, a list or a comma-separated text of ``csv``, ``jsonl``, ``parquet`` as
+    ``--records`` takes them, default CSV and JSON Lines) and returns the report.
+
+    The report folder is written to a temporary folder that lives as long as the returned
+    :class:`Report` (removed when it is garbage-collected): a file is read when it is asked for, so a
+    sweep of a million points costs Python no more memory than the table it reads. Ctrl-C stops the
+    run within a block of points and raises ``KeyboardInterrupt``."""
+    tmp = tempfile.mkdtemp(prefix="gearloss-run-")
+    try:
+        path = _native.run_to(scene.name, scene.text, tmp, _shard(shard), _records(records))
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return Report._temporary(pathlib.Path(path), tmp)
 
 
 def merge(folders: Iterable[Union[str, os.PathLike]]) -> "Report":
-    """Merges shard folders as ``gearloss merge`` does."""
-    name, files = _native.merge([os.fspath(f) for f in folders])
-    return Report(name, files)
+    """Merges shard folders as ``gearloss merge`` does (the merged folder kept on disk as
+    :func:`run` keeps its own)."""
+    tmp = tempfile.mkdtemp(prefix="gearloss-merge-")
+    try:
+        path = _native.merge_to([os.fspath(f) for f in folders], tmp)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    return Report._temporary(pathlib.Path(path), tmp)
+
+
+class _Folder(Mapping):
+    """A report folder's files by their path inside it, read from disk when one is asked for."""
+
+    def __init__(self, root: pathlib.Path) -> None:
+        self.root = root
+        self._names = sorted(p.relative_to(root).as_posix() for p in root.rglob("*") if p.is_file())
+        self._known = set(self._names)
+
+    def __getitem__(self, name: str) -> bytes:
+        if name not in self._known:
+            raise KeyError(name)
+        return (self.root / name).read_bytes()
+
+    def __iter__(self):
+        return iter(self._names)
+
+    def __len__(self) -> int:
+        return len(self._names)
 
 
 class Report:
@@ -137,16 +184,69 @@ class Report:
     (``pinion_torque_N_m``, ``power_loss_W``).
     """
 
-    def __init__(self, name: str, files: Iterable[Tuple[str, bytes]]) -> None:
+    def __init__(self, name: str, files: Union[Iterable[Tuple[str, bytes]], Mapping]) -> None:
         self.name = name
-        self._files: Dict[str, bytes] = dict(files)
+        self._files: Mapping = files if isinstance(files, _Folder) else dict(files)
+        self._keep = None
 
     @classmethod
     def from_folder(cls, path: Union[str, os.PathLike]) -> "Report":
-        """Reads a report folder that ``gearloss run`` (or ``write``) wrote."""
+        """Opens a report folder that ``gearloss run`` (or ``write``) wrote; its files are read when
+        asked for. A path that is not a folder raises ``FileNotFoundError`` (``NotADirectoryError``
+        for a file), a folder without ``report.json`` or ``shard.json`` ``FileNotFoundError`` naming
+        what it lacks."""
         root = pathlib.Path(path)
-        files = [(p.relative_to(root).as_posix(), p.read_bytes()) for p in sorted(root.rglob("*")) if p.is_file()]
-        return cls(root.name, files)
+        if not root.exists():
+            raise FileNotFoundError(f"no report folder {os.fspath(path)!r}: it does not exist")
+        if not root.is_dir():
+            raise NotADirectoryError(f"{os.fspath(path)!r} is a file, not a report folder")
+        if not (root / "report.json").is_file() and not (root / "shard.json").is_file():
+            raise FileNotFoundError(
+                f"{os.fspath(path)!r} is not a report folder: it holds no report.json (nor a shard's shard.json)"
+            )
+        return cls(root.name, _Folder(root))
+
+    @classmethod
+    def _temporary(cls, root: pathlib.Path, tmp: str) -> "Report":
+        """A report in a temporary folder, removed when the report is garbage-collected."""
+        report = cls(root.name, _Folder(root))
+        weakref.finalize(report, shutil.rmtree, tmp, True)
+        return report
+
+    def _source(self, name: str):
+        """A file as pandas reads it: its path on disk, or its bytes."""
+        if isinstance(self._files, _Folder):
+            return self._files.root / name
+        return io.BytesIO(self._files[name])
+
+    def _shape(self) -> str:
+        """``"drive"`` (a drive of several stages), ``"pair"``, ``"runs"`` (several oil
+        temperatures) or ``"shard"``."""
+        if "drive_records.csv" in self._files:
+            return "drive"
+        if any(f.startswith("records.") for f in self._files):
+            return "pair"
+        if "shard.json" in self._files:
+            return "shard"
+        if "report.json" in self._files and "runs" in self.data:
+            return "runs"
+        return "drive" if "report.json" in self._files and "stages" in self.data else "pair"
+
+    def _table_of(self, table: str, shape: str) -> None:
+        """Raises ``LookupError`` where ``table`` is not a table of this report's kind."""
+        mine = self._shape()
+        if mine == shape or mine == "shard":
+            return
+        if mine == "runs":
+            raise LookupError(
+                f"`{table}` is a table of one run; this report holds runs at several oil temperatures: "
+                f"read it of one of them, report.runs[name].{table} ({', '.join(self.runs)})"
+            )
+        tables = _TABLES[mine]
+        raise LookupError(
+            f"`{table}` is a table of {_SHAPES[shape]}, and this report is of {_SHAPES[mine]}: "
+            f"its tables are {', '.join(tables)}"
+        )
 
     @property
     def files(self) -> list:
@@ -162,6 +262,11 @@ class Report:
     def runs(self) -> Dict[str, "Report"]:
         """A scene at several oil temperatures: the report of each, by its folder's name."""
         names = sorted({f.split("/")[0] for f in self._files if "/" in f})
+        if isinstance(self._files, _Folder):
+            runs = {n: Report(n, _Folder(self._files.root / n)) for n in names}
+            for r in runs.values():
+                r._keep = self  # the temporary folder lives as long as a run read from it
+            return runs
         return {
             n: Report(n, [(f[len(n) + 1 :], b) for f, b in self._files.items() if f.startswith(n + "/")])
             for n in names
@@ -174,13 +279,15 @@ class Report:
         and values, then each law parameter's ``param_…`` column; reading it needs pyarrow)."""
         import pandas
 
+        self._table_of("records", "pair")
         if "records.csv" in self._files:
-            return pandas.read_csv(io.BytesIO(self._files["records.csv"]))
+            return pandas.read_csv(self._source("records.csv"))
         if "records.parquet" in self._files:
-            return pandas.read_parquet(io.BytesIO(self._files["records.parquet"]))
+            return pandas.read_parquet(self._source("records.parquet"))
         return pandas.DataFrame()
 
     def _kind(self, kind: str):
+        self._table_of({"efficiency": "efficiency", "dynamics": "dynamics"}[kind], "pair")
         r = self.records
         if r.empty:
             return r
@@ -199,6 +306,7 @@ class Report:
         (``power_loss_W``), gears without load, bearings, seals, total and η total, and each
         bearing's loads and losses; empty without a gearbox. (The mesh loss and the total differ
         between laws and formulations; the parts beside the mesh do not.)"""
+        self._table_of("budget", "pair")
         e = self.efficiency
         keys = ("point", "pinion_torque_N_m", "pinion_speed_rad_s", "law", "label", "formulation")
         keep = [c for c in keys if c in e.columns]
@@ -219,9 +327,10 @@ class Report:
         the passes, and each stage's, bearing place's and shaft's columns; empty for one pair."""
         import pandas
 
+        self._table_of("drive_records", "drive")
         if "drive_records.csv" not in self._files:
             return pandas.DataFrame()
-        return pandas.read_csv(io.BytesIO(self._files["drive_records.csv"]))
+        return pandas.read_csv(self._source("drive_records.csv"))
 
     @property
     def cycle(self):
@@ -233,14 +342,16 @@ class Report:
         without a drive cycle."""
         import pandas
 
+        self._table_of("cycle", "drive")
         if "cycle_records.csv" not in self._files:
             return pandas.DataFrame()
-        return pandas.read_csv(io.BytesIO(self._files["cycle_records.csv"]))
+        return pandas.read_csv(self._source("cycle_records.csv"))
 
     @property
     def stages(self):
         """Per record row and stage: the driving member, its torque, η_mesh, the mesh loss and the
         stage's no-load loss (W)."""
+        self._table_of("stages", "drive")
         names = [s["name"] for s in self.data.get("stages", [])]
         cols = ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W"]
         return _drive_long(self, "stage", names, cols, "stage")
@@ -257,12 +368,14 @@ class Report:
             "planet_ring_efficiency", "sun_planet_loss_W", "planet_ring_loss_W", "planet_bearing_load_N",
             "planet_bearings_W", "churning_W",
         ]
+        self._table_of("planetary", "drive")
         return _drive_long(self, "stage", names, cols, "stage")
 
     @property
     def shafts(self):
         """Per record row and shaft: its speed (rpm, signed about +z), the torques it receives and
         passes on (N·m), its gears' no-load parts and its seals (W)."""
+        self._table_of("shafts", "drive")
         names = [s["name"] for s in self.data.get("shafts", [])]
         cols = ["speed_rpm", "received_torque_N_m", "passed_torque_N_m", "gear_no_load_W", "seals_W"]
         return _drive_long(self, "shaft", names, cols, "shaft")
@@ -273,6 +386,7 @@ class Report:
         radial and axial load per bearing (N) and the place's P_0 and P_1 (W)."""
         names = [f"{s['name']}_{i + 1}" for s in self.data.get("shafts", []) for i in range(len(s["bearings"]))]
         cols = ["radial_N", "axial_N", "no_load_W", "load_W"]
+        self._table_of("bearings", "drive")
         return _drive_long(self, "bearing", names, cols, "place")
 
     @property
@@ -305,6 +419,14 @@ class Report:
 
     def __repr__(self) -> str:
         return f"Report({self.name!r}, {len(self._files)} files)"
+
+
+_SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
+_TABLES = {
+    "pair": ("records", "efficiency", "budget", "dynamics"),
+    "drive": ("drive_records", "stages", "shafts", "bearings", "planetary", "cycle"),
+    "runs": ("runs",),
+}
 
 
 def _drive_long(report: "Report", prefix: str, names, columns, key: str):

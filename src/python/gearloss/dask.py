@@ -26,14 +26,15 @@ from typing import Optional, Union
 import dask
 
 from . import Report, RunError, Scene, _native
+from . import merge as gearloss_merge
+from . import run as gearloss_run
 
 
 def _run_shard(name: str, text: str, k: int, n: int, workdir: str, records=None):
     """One shard's folder written into ``workdir``: ``("ok", path)``, or ``("failed", error)`` so
     that every task finishes before the folder is removed."""
     try:
-        folder, files = _native.run(name, text, (k, n), records)
-        return ("ok", os.fspath(Report(folder, files).write(workdir)))
+        return ("ok", os.fspath(_native.run_to(name, text, workdir, f"{k}/{n}", records)))
     except Exception as e:  # noqa: BLE001 - handed back and raised, naming the shard
         return ("failed", e)
 
@@ -47,7 +48,12 @@ def run(
     records = records if records is None or isinstance(records, str) else ",".join(records)
     if isinstance(shards, bool) or not isinstance(shards, int) or shards < 1:
         raise ValueError(f"shards must be a whole number, at least 1 (got {shards!r})")
-    shards = min(shards, _native.operating_points(scene.name, scene.text))
+    points = _native.operating_points(scene.name, scene.text)
+    if points == 0:
+        # A scene without operating points (a vehicle over a drive cycle only) is one piece of
+        # work with nothing to share out: it runs whole, here.
+        return gearloss_run(scene, records=records)
+    shards = min(shards, points)
     with tempfile.TemporaryDirectory(prefix="gearloss-dask-", dir=workdir) as tmp:
         tasks = [
             dask.delayed(_run_shard)(scene.name, scene.text, k, shards, tmp, records) for k in range(1, shards + 1)
@@ -63,5 +69,4 @@ def run(
                 err.kind = getattr(value, "kind", "")
                 err.hints = list(getattr(value, "hints", []))
                 raise err from value
-        name, files = _native.merge([value for _, value in results])
-        return Report(name, files)
+        return gearloss_merge([value for _, value in results])

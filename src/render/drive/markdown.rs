@@ -105,6 +105,45 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
             );
         }
         md!(out, "\nThe grid's cells are the drive solved at the grid points; the least η and most loss above are of those points, not located between them (the map is a picture; the headline's numbers are computed at their points).\n");
+        if r.maps.iter().any(|m| !m.best.is_empty()) {
+            md!(out, "\nThe best point of each half of the map, located: from the half's best grid point, coordinate ascent by golden sections over the box of its neighbours (torques of the half's sign only), each step the drive solved afresh, until a sweep moves the point by less than 1e-7 of the box.\n");
+            header(
+                &mut out,
+                &[
+                    "law",
+                    "formulation",
+                    "half",
+                    "torque (N·m)",
+                    "speed (rpm)",
+                    "η",
+                    "grid's best (N·m, rpm, η)",
+                    "drives solved",
+                ],
+            );
+            for m in &r.maps {
+                for b in &m.best {
+                    row(
+                        &mut out,
+                        &[
+                            m.law.clone(),
+                            m.formulation.clone(),
+                            b.flow.clone(),
+                            fixed(b.torque, 3),
+                            fixed(b.speed_rpm, 3),
+                            format!("{} %", fixed(100.0 * b.efficiency, 4)),
+                            format!(
+                                "{}, {}, {} %",
+                                fixed(b.grid_torque, 1),
+                                fixed(b.grid_speed_rpm, 1),
+                                fixed(100.0 * b.grid_efficiency, 4)
+                            ),
+                            b.evaluations.to_string(),
+                        ],
+                    );
+                }
+            }
+            md!(out, "");
+        }
     }
     model(&mut out);
     out
@@ -309,6 +348,7 @@ fn duty(out: &mut String, r: &DriveReport) {
             "step",
             "duration (s)",
             "P_V at the oil temperature (W)",
+            "energy at the oil temperature (J)",
             "θ at its end (°C)",
             "energy lost (J)",
             "energy given off (J)",
@@ -322,6 +362,7 @@ fn duty(out: &mut String, r: &DriveReport) {
                 s.label.clone(),
                 fixed(s.duration_s, 1),
                 opt(s.loss_at_oil_temperature, 3),
+                opt(s.energy_at_oil_temperature, 1),
                 opt(s.end_temperature_c, 3),
                 opt(s.energy_lost, 1),
                 opt(s.energy_dissipated, 1),

@@ -1,14 +1,20 @@
 //! power_flow.svg: the power along the drive from the source to the sink as a waterfall, every
 //! loss (a shaft's bearings, seals and gears' no-load parts; a stage's mesh) a step down with its
 //! watts, for the largest drive point and the largest coast point of the first law and
-//! formulation. The axis starts near the sink's power, so that losses of a percent are seen.
+//! formulation. The axis starts near the sink's power, so that losses of a percent are seen: the
+//! cut is marked on the axis (two slashes) and said in the panel's caption.
 
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::drive::{DrivePoint, PowerFlow};
+use crate::render::svg::fitted;
 use crate::report::drive::{DrivePointReport, DriveReport};
 
 pub(crate) const FILE: &str = "power_flow.svg";
+
+/// The plot's width (px).
+const WIDTH: u32 = 1000;
 
 /// One step of the waterfall: its label, the power before and after it (W).
 struct Step {
@@ -57,16 +63,13 @@ pub(crate) fn power_flow(r: &DriveReport) -> Result<Option<String>, String> {
     let (law, formulation) = (&first.law, &first.formulation);
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1000, 40 + 360 * chosen.len() as u32)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, 40 + 380 * chosen.len() as u32)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root
-            .titled(
-                &format!("{}: power from source to sink, every loss a step ({law} {formulation})", r.title),
-                ("sans-serif", 18),
-            )
-            .map_err(|e| e.to_string())?;
+        let title = format!("{}: power from source to sink, every loss a step", r.title);
+        let root = root.titled(&title, ("sans-serif", fitted(&title, WIDTH, 18.0))).map_err(|e| e.to_string())?;
         for (area, p) in root.split_evenly((chosen.len(), 1)).iter().zip(&chosen) {
-            draw(area, &format!("{} — {}", p.label, p.point.flow.name()), &steps(&p.point))?;
+            let caption = format!("{} — {} ({law} {formulation})", p.label, p.point.flow.name());
+            draw(area, &caption, &steps(&p.point))?;
         }
         root.present().map_err(|e| e.to_string())?;
     }
@@ -78,26 +81,42 @@ fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, ste
     let hi = steps.first().map_or(1.0, |s| s.from);
     let lo = steps.last().map_or(0.0, |s| s.to);
     let pad = 0.15 * (hi - lo).max(1e-9 * hi.abs().max(1.0));
-    let (y0, y1) = (lo - pad, hi + pad);
-    let n = steps.len();
+    let (y0, y1) = (lo - pad, hi + 1.6 * pad);
+    // Bars: the source, one a step, the sink.
+    let n = steps.len() + 2;
+    let caption = format!("{title}; the axis starts at {:.1} W", y0);
     let mut chart = ChartBuilder::on(area)
-        .caption(title, ("sans-serif", 14))
+        .caption(&caption, ("sans-serif", fitted(&caption, WIDTH, 14.0)))
         .margin(12)
-        .x_label_area_size(30)
+        .margin_right(20)
+        .x_label_area_size(12)
         .y_label_area_size(80)
-        .build_cartesian_2d(0.0..(n as f64 + 1.0), y0..y1)
+        .build_cartesian_2d(0.0..n as f64, y0..y1)
         .map_err(e)?;
-    chart.configure_mesh().disable_x_mesh().x_labels(0).y_desc("power (W)").draw().map_err(e)?;
+    chart
+        .configure_mesh()
+        .disable_x_mesh()
+        .max_light_lines(0)
+        .x_labels(0)
+        .y_labels(6)
+        .y_desc("power (W)")
+        .y_label_formatter(&|y| format!("{y:.0}"))
+        .draw()
+        .map_err(e)?;
     let blue = RGBColor(70, 110, 180);
     let red = RGBColor(200, 70, 60);
+    // Each bar's words centred above it, in at most three short lines, so that neighbours never meet.
+    let above = |x: f64, top: f64, lines: &[String]| {
+        let style = ("sans-serif", 11).into_font().color(&BLACK).pos(Pos::new(HPos::Center, VPos::Bottom));
+        lines
+            .iter()
+            .rev()
+            .enumerate()
+            .map(|(k, l)| Text::new(l.clone(), (x + 0.5, top + (0.05 + 0.3 * k as f64) * pad), style.clone()))
+            .collect::<Vec<_>>()
+    };
     chart.draw_series(std::iter::once(Rectangle::new([(0.1, y0), (0.9, hi)], blue.filled()))).map_err(e)?;
-    chart
-        .draw_series(std::iter::once(Text::new(
-            format!("source {:.1} W", hi),
-            (0.1, hi + 0.4 * pad),
-            ("sans-serif", 12),
-        )))
-        .map_err(e)?;
+    chart.draw_series(above(0.0, hi, &["source".into(), format!("{hi:.1} W")])).map_err(e)?;
     for (i, s) in steps.iter().enumerate() {
         let x = i as f64 + 1.0;
         chart
@@ -106,18 +125,18 @@ fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, ste
         chart
             .draw_series(std::iter::once(Rectangle::new([(x + 0.1, s.to), (x + 0.9, s.from)], red.filled())))
             .map_err(e)?;
-        let words = format!("{}: −{:.2} W", s.label, s.from - s.to);
-        let y = if i % 2 == 0 { s.from + 0.25 * pad } else { s.from + 0.6 * pad };
-        chart
-            .draw_series(std::iter::once(Text::new(words, (x + 0.05, y.min(y1 - 0.05 * pad)), ("sans-serif", 11))))
-            .map_err(e)?;
+        chart.draw_series(above(x, s.from, &[s.label.clone(), format!("−{:.2} W", s.from - s.to)])).map_err(e)?;
     }
-    chart
-        .draw_series(std::iter::once(Text::new(
-            format!("sink {:.1} W", lo),
-            (n as f64 - 0.2, lo - 0.6 * pad),
-            ("sans-serif", 12),
-        )))
-        .map_err(e)?;
+    let x = n as f64 - 1.0;
+    chart.draw_series(std::iter::once(Rectangle::new([(x + 0.1, y0), (x + 0.9, lo)], blue.filled()))).map_err(e)?;
+    chart.draw_series(above(x, lo, &["sink".into(), format!("{lo:.1} W")])).map_err(e)?;
+    // The cut axis: two short slashes across the y axis just above its foot.
+    let (columns, rows) = chart.plotting_area().get_pixel_range();
+    let (ox, oy) = area.get_base_pixel();
+    let (ax, ay) = (columns.start - ox, rows.end - oy - 14);
+    for dy in [0, 6] {
+        let slash = PathElement::new(vec![(ax - 6, ay - dy + 3), (ax + 6, ay - dy - 3)], BLACK.stroke_width(1));
+        area.draw(&slash).map_err(e)?;
+    }
     Ok(())
 }

@@ -95,7 +95,7 @@ pub fn point_friction(r: &Report, k: usize) -> Result<String, String> {
             ..Default::default()
         },
         Panel {
-            y_label: format!("friction power loss per unit path, one contact ({})", u.power().unit),
+            y_label: format!("friction power of one contact, |μ| F v_s ({})", u.power().unit),
             x_label: along_label(r),
             clip: Some(mu_clip(&x, &power, p_mm, span)),
             x,

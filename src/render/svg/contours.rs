@@ -2,14 +2,12 @@
 //! (joined into one path each), bilinear values for the filled bands.
 
 /// One contour panel: values[t][s] over speeds (x) and torques (y).
-pub(super) struct Field<'a> {
-    pub(super) title: String,
-    pub(super) speeds: &'a [f64],
-    pub(super) torques: &'a [f64],
-    pub(super) values: Vec<Vec<f64>>,
-    pub(super) unit: &'a str,
-    /// The torque axis' unit (the scene's, as written).
-    pub(super) torque_unit: &'a str,
+pub(crate) struct Field<'a> {
+    pub(crate) title: String,
+    pub(crate) speeds: &'a [f64],
+    pub(crate) torques: &'a [f64],
+    pub(crate) values: Vec<Vec<f64>>,
+    pub(crate) unit: &'a str,
 }
 
 /// "Nice" iso-levels spanning [lo, hi]: about `n` of them on a 1-2-5 step.
@@ -115,7 +113,6 @@ mod tests {
             torques: &[0.0, 1.0],
             values: vec![vec![0.0, 1.0], vec![1.0, 2.0]],
             unit: "",
-            torque_unit: "N·m",
         };
         let s = iso_segments(&f, 0.5);
         assert_eq!(s.len(), 1);

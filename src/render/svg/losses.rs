@@ -95,11 +95,18 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
     Ok(svg)
 }
 
-fn draw_field(
+/// What a map panel marks: located points (x, y) ringed, and weights (x, y, w) as circles.
+pub(crate) type Marks<'a> = (&'a [(f64, f64)], &'a [(f64, f64, f64)]);
+
+/// One map panel of `f`: filled bands between iso-levels on a 1-2-5 step over the upper nine
+/// tenths of its values, the iso-lines labelled, a colour bar at the right, the axes described by
+/// `axes` (x, y), each of `best` (located points) marked by a ring, and `weights` (x, y, weight)
+/// drawn as red circles of area in proportion to the weight (a drive cycle's time at each cell).
+pub(crate) fn draw_field(
     area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
     f: &Field,
-    speed_unit: &str,
-    best: Option<(f64, f64)>,
+    axes: (&str, &str),
+    (best, weights): Marks<'_>,
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let finite: Vec<f64> = f.values.iter().flatten().copied().filter(|v| v.is_finite()).collect();
@@ -117,8 +124,10 @@ fn draw_field(
     ) else {
         return Ok(());
     };
+    let caption = format!("{} ({})", f.title, f.unit);
+    let (width, _) = area.dim_in_pixel();
     let mut chart = ChartBuilder::on(area)
-        .caption(format!("{} ({})", f.title, f.unit), ("sans-serif", 14))
+        .caption(&caption, ("sans-serif", super::panel::fitted(&caption, width, 14.0)))
         .margin(14)
         .margin_right(78)
         .x_label_area_size(38)
@@ -128,8 +137,8 @@ fn draw_field(
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_desc(format!("pinion speed ({speed_unit})"))
-        .y_desc(format!("pinion torque ({})", f.torque_unit))
+        .x_desc(axes.0)
+        .y_desc(axes.1)
         .x_labels(6)
         .y_labels(6)
         .x_label_formatter(&|x| crate::render::table::sig(*x))
@@ -163,9 +172,16 @@ fn draw_field(
         }
     }
     // The located best point (report.md gives its value), marked where its panel shows it.
-    if let Some(p) = best {
-        chart.draw_series(std::iter::once(Circle::new(p, 5, WHITE.filled()))).map_err(e)?;
-        chart.draw_series(std::iter::once(Circle::new(p, 5, BLACK.stroke_width(2)))).map_err(e)?;
+    let heaviest = weights.iter().map(|m| m.2).fold(0.0, f64::max);
+    if heaviest > 0.0 {
+        // The heaviest 9 px across; area in proportion to the weight.
+        let radius = |w: f64| (9.0 * (w / heaviest).sqrt()).round().max(1.0) as i32;
+        let marks = weights.iter().map(|&(x, y, w)| Circle::new((x, y), radius(w), RED.mix(0.85).stroke_width(1)));
+        chart.draw_series(marks).map_err(e)?;
+    }
+    for p in best {
+        chart.draw_series(std::iter::once(Circle::new(*p, 5, WHITE.filled()))).map_err(e)?;
+        chart.draw_series(std::iter::once(Circle::new(*p, 5, BLACK.stroke_width(2)))).map_err(e)?;
     }
     colour_bar(area, &lv)
 }
@@ -296,8 +312,9 @@ pub fn efficiency_map(r: &Report) -> Result<String, String> {
                 .filter(|b| Some(b.formulation) == first)
                 .find(|b| title == format!("{} η — {}", b.efficiency_of, crate::report::law_words::law_words(&b.label)))
                 .map(|b| (r.speed_unit.value(&b.pinion_speed), b.pinion_torque.si() / r.torque_unit.factor));
-            let f = Field { title, speeds, torques: &torques, values, unit, torque_unit: &torque_unit };
-            draw_field(area, &f, &m.speed_unit, best)?;
+            let f = Field { title, speeds, torques: &torques, values, unit };
+            let axes = (format!("pinion speed ({})", m.speed_unit), format!("pinion torque ({torque_unit})"));
+            draw_field(area, &f, (&axes.0, &axes.1), (best.as_slice(), &[]))?;
         }
         root.present().map_err(|e| e.to_string())?;
     }

@@ -15,10 +15,13 @@ mod teeth;
 mod thermal;
 
 pub use contact::{contact_state, film, point_friction};
+pub(crate) use contours::Field;
 pub use dynamics::{dynamics_point, free_response, stability_map, work_precision};
 pub use helical::plane_of_action;
+pub(crate) use losses::draw_field;
 pub use losses::{efficiency_map as efficiency_contours, loss_budget};
 pub use maps::efficiency_map;
+pub(crate) use panel::fitted;
 pub use panel::{figure, figure_with_legend, Panel};
 pub use sweeps::{composite_mu_vs_speed, sweep, sweep_mu};
 pub use teeth::{load_share, mesh_stiffness, transmission_error};

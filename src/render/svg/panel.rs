@@ -111,6 +111,18 @@ impl Panel {
     }
 }
 
+/// The widest a line of sans-serif text of `size` px may be, per character: an upper bound on the
+/// average advance of the plots' fonts (DejaVu Sans ~0.55 em for mixed text), so that text measured
+/// with it fits wherever the viewer's sans-serif is drawn.
+pub(crate) const CHAR_WIDTH_EM: f64 = 0.6;
+
+/// The font size (px) for a title of `text` across `width` px: `max` where it fits, smaller where it
+/// would run past the canvas' edges (never below 9 px).
+pub(crate) fn fitted(text: &str, width: u32, max: f64) -> f64 {
+    let chars = text.chars().count().max(1) as f64;
+    ((width as f64 - 24.0) / (CHAR_WIDTH_EM * chars)).clamp(9.0, max)
+}
+
 /// A range plotters can draw ticks for: finite, increasing, with a finite width not lost in the
 /// rounding of its ends. A degenerate range is widened around its value; None if none can be drawn
 /// (values near the largest f64), so that a plot can never hang or fail on extreme numbers.
