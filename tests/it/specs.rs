@@ -90,7 +90,7 @@ fn several_errors_are_all_reported() {
 }
 
 /// reports/ holds the rendered report of every scene in specs/. To refresh after a change:
-/// `for f in specs/*.gear; do cargo run --release -- run $f; done`.
+/// `for f in specs/*.gear; do cargo run --locked -- run $f; done`.
 #[test]
 fn committed_reports_are_up_to_date() {
     let mut stale = Vec::new();
