@@ -251,6 +251,23 @@ def test_ctrl_c_stops_a_long_run_within_a_second():
     timer.cancel()
 
 
+def test_ctrl_c_stops_a_long_drive_run_within_a_second():
+    """The same for a drive: a 160 000-point sweep of the EV reducer (tens of seconds) stops within
+    about a second of Ctrl-C (between blocks of 4 096 rows), not when it ends."""
+    import _thread
+
+    s = scene(ROOT / "specs/ev_two_stage_reducer.gear").replace(
+        output_torque="50..1000 N*m count 400", output_speed="100..1500 rpm count 400"
+    )
+    timer = threading.Timer(0.5, _thread.interrupt_main)
+    started = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        gearloss.run(s)
+    assert time.monotonic() - started < 2.5
+    timer.cancel()
+
+
 def test_replace_errors_name_the_edited_text():
     """An error in a replaced value is located in the edited text, and the file name says so."""
     s = scene(ROOT / "specs/fzg_type_c.gear")
