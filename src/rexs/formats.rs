@@ -29,6 +29,10 @@ pub(crate) fn read_model(bytes: &[u8]) -> Result<RexsModel, RexsError> {
     }
 }
 
+/// The largest REXS model read, as a file and as the model inflated from a `.rexsz` (the largest
+/// real gear-unit models are a few MiB): a zip that inflates past it is refused, never inflated whole.
+pub(crate) const MAX_MODEL_BYTES: u64 = 64 << 20;
+
 /// The one model file inside a zip.
 fn unzip(bytes: &[u8]) -> Result<Vec<u8>, RexsError> {
     use std::io::Read;
@@ -42,7 +46,14 @@ fn unzip(bytes: &[u8]) -> Result<Vec<u8>, RexsError> {
         return Err(bad(format!("it holds no .rexs or .rexsj file (it holds: {})", names.join(", "))));
     };
     let mut out = Vec::new();
-    archive.by_name(name).map_err(|e| bad(e.to_string()))?.read_to_end(&mut out).map_err(|e| bad(e.to_string()))?;
+    let member = archive.by_name(name).map_err(|e| bad(e.to_string()))?;
+    member.take(MAX_MODEL_BYTES + 1).read_to_end(&mut out).map_err(|e| bad(e.to_string()))?;
+    if out.len() as u64 > MAX_MODEL_BYTES {
+        return Err(RexsError::new(
+            format!("`{name}` inflates to more than {} MiB", MAX_MODEL_BYTES >> 20),
+            "a REXS model of a gear unit is a few MiB; give the model itself, not an archive that only claims to be one",
+        ));
+    }
     Ok(out)
 }
 

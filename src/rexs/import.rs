@@ -19,10 +19,10 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Result<Imported, RexsError> {
 
 /// Imports the REXS file at `path`.
 pub fn import_file(path: &std::path::Path) -> Result<Imported, RexsError> {
-    let bytes = std::fs::read(path).map_err(|e| {
+    let bytes = crate::scene::source::read_bytes(path, super::formats::MAX_MODEL_BYTES).map_err(|e| {
         RexsError::new(
             format!("cannot read {}: {e}", path.display()),
-            "give the path of a .rexs, .rexsj or .rexsz file",
+            "give the path of a .rexs, .rexsj or .rexsz file (a regular file of at most 64 MiB)",
         )
     })?;
     import(&path.display().to_string(), &bytes)

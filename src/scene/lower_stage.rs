@@ -99,6 +99,21 @@ pub(super) fn lower_stage(
         super::lower_gearbox::lubrication_span(block),
         errors,
     );
+    if pair.internal {
+        // A ring gear on its own shaft is a planetary stage's member (its own geometry, signs and
+        // forces); a parallel stage's walk, forces and statics are of two external gears.
+        let span = pair_block
+            .items
+            .iter()
+            .map(crate::scene::ast::Item::head)
+            .find(|k| k.text == "mesh")
+            .map_or(pair_block.kind.span, |k| k.span);
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, "an internal pair (`mesh = internal`) is not a stage of a drive in this version")
+                .hint("a ring gear turns in a drive as a planetary stage's `ring` (`planetary { ... ring { teeth = 72  shaft = housing } ... }`); study an internal pair alone in a scene with a `gears` block"),
+        );
+        return None;
+    }
     if pair.load_sharing == crate::model::LoadSharing::Stiffness {
         errors.push(
             Diagnostic::new(

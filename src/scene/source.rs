@@ -26,7 +26,14 @@ pub enum ReadError {
 
 /// Reads a UTF-8 text file of at most `limit` bytes.
 pub fn read_text(path: &Path, limit: u64) -> Result<String, ReadError> {
-    // Asked before opening: opening a pipe blocks until something writes to it.
+    text(read_bytes(path, limit)?)
+}
+
+/// Reads a regular file of at most `limit` bytes: a folder, a device (`/dev/zero`) or a pipe is
+/// refused before anything is read (opening a pipe would block until something writes to it), and
+/// no more than `limit + 1` bytes are ever read. The files a user gives go through here: scenes,
+/// tables, traces and REXS models.
+pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, ReadError> {
     if !std::fs::metadata(path)?.is_file() {
         return Err(ReadError::NotAFile);
     }
@@ -39,7 +46,7 @@ pub fn read_text(path: &Path, limit: u64) -> Result<String, ReadError> {
     if bytes.len() as u64 > limit {
         return Err(ReadError::TooLarge { limit });
     }
-    text(bytes)
+    Ok(bytes)
 }
 
 /// Bytes as UTF-8 text, or where the first bad byte is.

@@ -226,3 +226,39 @@ fn the_load_spectrum_becomes_the_duty_cycle() {
     let ratio = 1.0 / speeds[drive.layout.output];
     assert!((ratio - 51.0 / 27.0 * 34.0 / 23.0).abs() < 1e-12, "{ratio}");
 }
+
+/// Every file an import reads goes through the scene reader's guards: `/dev/zero` and a FIFO are
+/// refused before anything is read (they read 2 GiB, and blocked forever), a `.rexsz` whose model
+/// inflates past 64 MiB is refused after at most 64 MiB + 1 byte, never inflated whole.
+#[test]
+fn hostile_files_are_refused_before_they_are_read_whole() {
+    let zero = gearloss::rexs::import_file(Path::new("/dev/zero")).expect_err("a device is no model");
+    assert!(zero.to_string().contains("not a regular file"), "{zero}");
+    let dir = std::env::temp_dir().join(format!("gearloss-rexs-hostile-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let fifo = dir.join("model.rexs");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if made.is_ok_and(|s| s.success()) {
+        let e = gearloss::rexs::import_file(&fifo).expect_err("a pipe is no model");
+        assert!(e.to_string().contains("not a regular file"), "{e}");
+    }
+    // A zip bomb: 80 MiB of one character, deflated to a few hundred kB.
+    let bomb = dir.join("bomb.rexsz");
+    {
+        use std::io::Write;
+        let mut z = zip::ZipWriter::new(std::fs::File::create(&bomb).unwrap());
+        let options = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
+        z.start_file("model.rexs", options).unwrap();
+        let block = vec![b' '; 1 << 20];
+        z.write_all(b"<model>").unwrap();
+        for _ in 0..80 {
+            z.write_all(&block).unwrap();
+        }
+        z.finish().unwrap();
+    }
+    assert!(std::fs::metadata(&bomb).unwrap().len() < 4 << 20);
+    let e = gearloss::rexs::import_file(&bomb).expect_err("the bomb is refused");
+    assert!(e.to_string().contains("inflates to more than 64 MiB"), "{e}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
