@@ -6,6 +6,7 @@ pub mod drive;
 pub mod drive_cycle;
 pub mod drive_cycle_series;
 pub mod drive_cycle_totals;
+pub(crate) mod drive_findings;
 pub mod drive_inputs;
 pub mod drive_oil_sweep;
 pub(crate) mod dynamics;

@@ -1,0 +1,120 @@
+//! What a drive's report tells the reader beyond its numbers: a shaft whose axial force goes to its
+//! first place by default, points where both ends deliver, a fixed point that did not settle, a
+//! bearing beyond its static rating, and the laws' notes on each stage (an input read at a bound of
+//! its range).
+
+use super::drive::DrivePointReport;
+use super::finding::{Finding, Severity};
+use crate::drive::PowerFlow;
+use crate::model::SceneDrive;
+
+/// What the reader must know: a shaft whose axial force goes to its first place by default, points
+/// where both ends deliver, a fixed point that did not settle, a bearing beyond its static rating.
+pub(super) fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let loads = points.iter().flat_map(|p| {
+        layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
+            s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {
+                super::bearing_checks::BearingAtPoint {
+                    place: format!(
+                        "shaft `{}`, bearing at {} mm ({})",
+                        shaft.name,
+                        crate::numerics::rounding::fixed(b.position * 1e3, 2),
+                        b.kind
+                    ),
+                    c0: bearing.static_load_rating,
+                    radial: b.radial_load,
+                    axial: b.axial_load,
+                    point: &p.label,
+                }
+            })
+        })
+    });
+    out.extend(super::bearing_checks::overloaded(loads));
+    for (j, shaft) in layout.shafts.iter().enumerate() {
+        let helical = layout.stages.iter().any(|s| s.hand.is_some() && s.member_on(j).is_some());
+        if helical && !shaft.locating_given && !shaft.bearings.is_empty() {
+            out.push(Finding {
+                severity: Severity::Warning,
+                message: format!(
+                    "shaft `{}`: no bearing says `locating`; the first place (at {} mm) takes the axial force of its helical gears",
+                    shaft.name,
+                    crate::numerics::rounding::fixed(shaft.bearings[0].position.unwrap_or(0.0) * 1e3, 2)
+                ),
+            });
+        }
+    }
+    for p in points.iter().filter(|p| p.point.both_ends_deliver) {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} ({}, {}): the {} does not cover the box's losses, so both ends deliver power; η is reported as 0",
+                p.label,
+                p.law,
+                p.formulation,
+                if p.point.flow == PowerFlow::Drive { "input" } else { "output" }
+            ),
+        });
+    }
+    for p in points.iter() {
+        for ((outside, samples, reason), stage) in p.validity.iter().zip(&p.point.stages) {
+            if *outside > 0 {
+                out.push(Finding {
+                    severity: Severity::Warning,
+                    message: format!(
+                        "{} ({}, {}): stage `{}`: the law is outside its validity range at {outside} of {samples} contacts along A–E ({reason})",
+                        p.label, p.law, p.formulation, stage.name
+                    ),
+                });
+            }
+        }
+    }
+    if let Some(p) = points.iter().find(|p| p.point.iterations >= 100) {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{}: the fixed point of the bearing losses did not settle to 1e-12 in 100 passes (or diverged: the bearing losses grow faster than the torque that loads them); its numbers are the last pass's",
+                p.label
+            ),
+        });
+    }
+    out
+}
+
+/// The laws' notes on each stage at the points shown (an input read at a bound of its range, e.g.
+/// ISO/TR 14179-2's F_bt/b raised to 150 N/mm), one note a stage and kind, naming its points.
+pub(super) fn stage_notes(
+    drive: &SceneDrive,
+    rows: &[crate::evaluate::drive::DriveRow],
+    validity: &[Vec<crate::evaluate::laws::ValiditySummary>],
+    points: &[DrivePointReport],
+) -> Vec<Finding> {
+    use crate::evaluate::drive_cycle::note_kind;
+    let mut groups: Vec<(usize, String, String, Vec<String>)> = Vec::new();
+    for ((_, stages), p) in rows.iter().zip(validity).zip(points) {
+        for (k, v) in stages.iter().enumerate() {
+            for note in &v.notes {
+                let kind = note_kind(note);
+                let label = format!("{} ({})", p.label, p.law);
+                match groups.iter_mut().find(|g| g.0 == k && g.1 == kind) {
+                    Some(g) if !g.3.contains(&label) => g.3.push(label),
+                    Some(_) => {}
+                    None => groups.push((k, kind, note.clone(), vec![label])),
+                }
+            }
+        }
+    }
+    groups
+        .into_iter()
+        .map(|(k, _, note, labels)| Finding {
+            severity: Severity::Note,
+            message: format!(
+                "stage `{}`: {note} (here, at {} of the {} points shown: {})",
+                drive.layout.stages[k].name,
+                labels.len(),
+                points.len(),
+                labels.join("; ")
+            ),
+        })
+        .collect()
+}
