@@ -313,7 +313,7 @@ pub struct Sweep<T> {
 impl<T> Sweep<T> {
     /// Value `i` as written, with its unit (`90 degC`).
     pub fn label(&self, i: usize) -> String {
-        format!("{} {}", self.written_values[i], crate::scene::units::shown_written_unit(&self.unit))
+        format!("{} {}", self.written_values[i], crate::quantity::shown_written_unit(&self.unit))
     }
 }
 

@@ -162,3 +162,20 @@ const SI_NAMES: &[(Dimension, &str)] = &[
     (Dimension::HEAT_CAPACITY, "J/K"),
     (Dimension::THERMAL_CONDUCTANCE, "W/K"),
 ];
+
+/// A unit as written, as the report shows it: a product's `*` as the middle dot the tables write
+/// (`N*m` → `N·m`, `lbf*in` → `lbf·in`).
+///
+pub(crate) fn shown_written_unit(unit: &str) -> String {
+    unit.replace('*', "·")
+}
+
+#[cfg(test)]
+mod shown_unit_tests {
+    #[test]
+    fn a_product_shows_its_middle_dot() {
+        assert_eq!(super::shown_written_unit("N*m"), "N·m");
+        assert_eq!(super::shown_written_unit("lbf*in"), "lbf·in");
+        assert_eq!(super::shown_written_unit("rpm"), "rpm");
+    }
+}

@@ -33,9 +33,9 @@ pub fn case_at(op: &crate::model::Operating, k: usize) -> Case {
         label: format!(
             "{} {}, {} {}",
             op.pinion_torque.written_values[ti],
-            crate::scene::units::shown_written_unit(&op.pinion_torque.unit),
+            crate::quantity::shown_written_unit(&op.pinion_torque.unit),
             op.pinion_speed.written_values[ni],
-            crate::scene::units::shown_written_unit(&op.pinion_speed.unit)
+            crate::quantity::shown_written_unit(&op.pinion_speed.unit)
         ),
     }
 }

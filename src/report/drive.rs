@@ -6,22 +6,11 @@ use serde::{Deserialize, Serialize};
 
 use super::drive_inputs::{ShaftInputs, StageInputs};
 use super::finding::{Finding, Severity};
-use crate::drive::{DrivePoint, ShaftEnd};
+use crate::drive::ShaftEnd;
 use crate::evaluate::drive::{DriveEvaluation, DriveRow};
 use crate::model::{Scene, SceneDrive};
 
-/// One operating point, law and formulation.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct DrivePointReport {
-    /// `T_out = 150 N*m, n_out = 500 rpm`: the values as given.
-    pub label: String,
-    pub law: String,
-    pub formulation: String,
-    pub point: DrivePoint,
-    /// By stage: the law's contacts outside its validity range of those read along A–E, and the
-    /// first reason met (empty when inside).
-    pub validity: Vec<(usize, usize, String)>,
-}
+pub use super::drive_point::DrivePointReport;
 
 /// The map over the ends' torque × speed, for one law and formulation: the total loss (W) and η.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -332,10 +321,10 @@ fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize, speed_ind
         "T_{} = {} {}, n_{} = {} {}",
         end(ends.torque_at),
         op.pinion_torque.written_values[torque_index],
-        crate::scene::units::shown_written_unit(&op.pinion_torque.unit),
+        crate::quantity::shown_written_unit(&op.pinion_torque.unit),
         end(ends.speed_at),
         op.pinion_speed.written_values[speed_index],
-        crate::scene::units::shown_written_unit(&op.pinion_speed.unit)
+        crate::quantity::shown_written_unit(&op.pinion_speed.unit)
     )
 }
 

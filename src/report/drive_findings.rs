@@ -3,7 +3,7 @@
 //! bearing beyond its static rating, and the laws' notes on each stage (an input read at a bound of
 //! its range).
 
-use super::drive::DrivePointReport;
+use super::drive_point::DrivePointReport;
 use super::finding::{Finding, Severity};
 use crate::drive::PowerFlow;
 use crate::model::SceneDrive;

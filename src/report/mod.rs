@@ -9,6 +9,7 @@ pub mod drive_cycle_totals;
 pub(crate) mod drive_findings;
 pub mod drive_inputs;
 pub mod drive_oil_sweep;
+pub mod drive_point;
 pub(crate) mod dynamics;
 pub(crate) mod dynamics_findings;
 pub(crate) mod dynamics_records;

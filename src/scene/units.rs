@@ -189,17 +189,6 @@ pub fn example_units(dimension: Dimension) -> String {
 /// `1/in`) has its results shown in inch–pound units.
 pub const INCH_LENGTHS: &[&str] = &["in", "uin", "µin", "μin", "ft"];
 
-/// A unit as written, as the report shows it: a product's `*` as the middle dot the tables write
-/// (`N*m` → `N·m`, `lbf*in` → `lbf·in`).
-///
-/// ```
-/// assert_eq!(gearloss::scene::units::shown_written_unit("N*m"), "N·m");
-/// assert_eq!(gearloss::scene::units::shown_written_unit("rpm"), "rpm");
-/// ```
-pub fn shown_written_unit(unit: &str) -> String {
-    unit.replace('*', "·")
-}
-
 /// Whether a value as written (`1.25 in`, `8 1/in`, `1/(8 1/in)`) names one of [`INCH_LENGTHS`].
 ///
 /// ```

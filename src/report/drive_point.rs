@@ -1,0 +1,19 @@
+//! One operating point of a drive's report: the point, law and formulation, and the law's
+//! validity on each stage (what report.md's point tables and the findings read).
+
+use serde::{Deserialize, Serialize};
+
+use crate::drive::DrivePoint;
+
+/// One operating point, law and formulation.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DrivePointReport {
+    /// `T_out = 150 N*m, n_out = 500 rpm`: the values as given.
+    pub label: String,
+    pub law: String,
+    pub formulation: String,
+    pub point: DrivePoint,
+    /// By stage: the law's contacts outside its validity range of those read along A–E, and the
+    /// first reason met (empty when inside).
+    pub validity: Vec<(usize, usize, String)>,
+}
