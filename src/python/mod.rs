@@ -9,25 +9,13 @@
 
 mod error;
 
-use std::borrow::Cow;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use pyo3::prelude::*;
 
 use crate::scene::ast::Item;
 use crate::Shard;
 use error::{to_py, Error, GearlossRunError, SceneError};
-
-/// A report folder in memory: its name and its files (path inside it, bytes), sorted by path.
-type Folder = (String, Vec<(String, Vec<u8>)>);
-
-/// The folder as Python receives it: the files' contents as `bytes`.
-type PyFolder = (String, Vec<(String, Cow<'static, [u8]>)>);
-
-fn to_python((name, files): Folder) -> PyFolder {
-    (name, files.into_iter().map(|(path, bytes)| (path, Cow::Owned(bytes))).collect())
-}
 
 /// Checks a scene; returns its title.
 #[pyfunction]
@@ -64,36 +52,6 @@ fn write_folder(py: Python<'_>, out: PathBuf, name: String, files: Vec<(String, 
         folder.commit()
     });
     written.map_err(|e| error::os_error("cannot write the report folder", &e))
-}
-
-/// Runs a scene (or one shard `"K/N"` of it, validated as `--shard` is) as `gearloss run` does:
-/// the report folder in memory.
-/// Between blocks of points the run asks Python for signals: Ctrl-C stops it within about a block
-/// (a second or less) and raises `KeyboardInterrupt`.
-#[pyfunction]
-#[pyo3(signature = (name, text, shard=None, records=None))]
-fn run(
-    py: Python<'_>,
-    name: String,
-    text: String,
-    shard: Option<String>,
-    records: Option<String>,
-) -> PyResult<PyFolder> {
-    let shard: Option<Shard> = match shard {
-        Some(s) => Some(s.parse().map_err(pyo3::exceptions::PyValueError::new_err)?),
-        None => None,
-    };
-    let formats: crate::RecordFormats = match records {
-        Some(r) => r.parse().map_err(pyo3::exceptions::PyValueError::new_err)?,
-        None => crate::RecordFormats::default(),
-    };
-    let signals = Signals::default();
-    let result =
-        py.allow_threads(|| in_temporary_folder(|out| run_into(&name, &text, (shard, formats), out, &signals)));
-    if let Some(interrupt) = signals.pending.into_inner().ok().flatten() {
-        return Err(interrupt);
-    }
-    to_py(py, result).map(to_python)
 }
 
 /// Runs a scene (or one shard `"K/N"` of it) as `gearloss run --out out` does and returns the
@@ -142,14 +100,6 @@ impl crate::Progress for Signals {
     }
 }
 
-/// Merges shard folders as `gearloss merge` does: the merged report folder in memory.
-#[pyfunction]
-fn merge(py: Python<'_>, folders: Vec<PathBuf>) -> PyResult<PyFolder> {
-    let result =
-        py.allow_threads(|| in_temporary_folder(|out| Ok(crate::merge_into(&folders, out, &crate::Quiet)?.folder)));
-    to_py(py, result).map(to_python)
-}
-
 /// Merges shard folders as `gearloss merge --out out` does; returns the merged folder's path.
 #[pyfunction]
 fn merge_to(py: Python<'_>, folders: Vec<PathBuf>, out: PathBuf) -> PyResult<PathBuf> {
@@ -172,37 +122,6 @@ fn run_into(
 ) -> Result<PathBuf, Error> {
     let scene = crate::check(name, text)?;
     Ok(crate::run_into_with(name, text, &scene, (out, shard), formats, progress)?.folder)
-}
-
-/// Runs `write` into a fresh temporary folder, reads back the folder it wrote, removes it.
-fn in_temporary_folder(write: impl FnOnce(&Path) -> Result<PathBuf, Error>) -> Result<Folder, Error> {
-    static COUNT: AtomicUsize = AtomicUsize::new(0);
-    let n = COUNT.fetch_add(1, Ordering::Relaxed);
-    let out = std::env::temp_dir().join(format!("gearloss-python-{}-{n}", std::process::id()));
-    let io = |e: std::io::Error| Error::from(crate::RunError::Io { what: "a temporary report folder", source: e });
-    std::fs::create_dir_all(&out).map_err(io)?;
-    let result = write(&out).and_then(|folder| {
-        let mut files = Vec::new();
-        read_tree(&folder, "", &mut files).map_err(io)?;
-        files.sort();
-        let name = folder.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        Ok((name, files))
-    });
-    let _ = std::fs::remove_dir_all(&out);
-    result
-}
-
-fn read_tree(dir: &Path, prefix: &str, out: &mut Vec<(String, Vec<u8>)>) -> std::io::Result<()> {
-    for entry in std::fs::read_dir(dir)? {
-        let entry = entry?;
-        let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
-        if entry.file_type()?.is_dir() {
-            read_tree(&entry.path(), &format!("{name}/"), out)?;
-        } else {
-            out.push((name, std::fs::read(entry.path())?));
-        }
-    }
-    Ok(())
 }
 
 /// Replaces (or adds) `key = value` in the scene's `operating` block, then checks the new text.
@@ -259,9 +178,7 @@ fn import_rexs(py: Python<'_>, path: PathBuf) -> PyResult<(String, Vec<String>)>
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check, m)?)?;
-    m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(run_to, m)?)?;
-    m.add_function(wrap_pyfunction!(merge, m)?)?;
     m.add_function(wrap_pyfunction!(merge_to, m)?)?;
     m.add_function(wrap_pyfunction!(replace, m)?)?;
     m.add_function(wrap_pyfunction!(operating_points, m)?)?;
