@@ -77,9 +77,8 @@ enum Command {
         /// The file to write (it must not exist yet).
         #[arg(default_value = "scene.gear")]
         scene: PathBuf,
-        /// The template: `pair` (one gear pair), `drive` (a two-stage box), `planetary` (a
-        /// planetary stage) or `cycle` (a box in its car over WLTC; writes the trace beside it).
-        #[arg(long, default_value = "pair", value_parser = ["pair", "drive", "planetary", "cycle"])]
+        /// The template to write.
+        #[arg(long, default_value = "pair", value_parser = template_kinds())]
         kind: String,
     },
 }
@@ -147,24 +146,33 @@ fn listing(text: &str) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// `gearloss new [--kind K]`: the template, never over an existing file (the cycle's trace beside
-/// it too, unless a file of its name is there already).
+/// The `--kind` values of `gearloss new`, each with its help, from the templates' table.
+fn template_kinds() -> clap::builder::PossibleValuesParser {
+    let values = gearloss::listing::TEMPLATES.iter().map(|t| clap::builder::PossibleValue::new(t.kind).help(t.what));
+    clap::builder::PossibleValuesParser::new(values)
+}
+
+/// `gearloss new [--kind K]`: the template, never over an existing file (a file the template writes
+/// beside it too, unless a file of its name is there already).
 fn new_scene(path: &Path, kind: &str) -> ExitCode {
-    let text = gearloss::listing::TEMPLATES.iter().find(|t| t.0 == kind).map_or(gearloss::listing::TEMPLATE, |t| t.2);
+    let templates = gearloss::listing::TEMPLATES;
+    let template = templates.iter().find(|t| t.kind == kind).unwrap_or(&templates[0]);
     let create = |p: &Path, bytes: &[u8]| {
         let file = std::fs::OpenOptions::new().write(true).create_new(true).open(p);
         file.and_then(|mut f| std::io::Write::write_all(&mut f, bytes))
     };
-    if let Err(e) = create(path, text.as_bytes()) {
+    if let Err(e) = create(path, template.text.as_bytes()) {
         errln!("error: cannot write {}: {e} (gearloss new never overwrites a file)", path.display());
         return ExitCode::from(EXIT_IO);
     }
     outln!("wrote {}: edit it, then `gearloss check {0}` and `gearloss run {0}`", path.display());
-    if kind == "cycle" {
-        let (name, bytes) = gearloss::listing::CYCLE_TRACE;
+    if let Some((name, bytes)) = template.beside {
         let trace = path.parent().unwrap_or(Path::new(".")).join(name);
         match create(&trace, bytes) {
-            Ok(()) => outln!("wrote {} (WLTC class 3b, from NREL FASTSim, Apache-2.0)", trace.display()),
+            Ok(()) => outln!(
+                "wrote {} beside it (the scene reads it; its source is in the scene's first lines)",
+                trace.display()
+            ),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
                 outln!(
                     "kept {}: a file of that name is there already (the scene reads it as its trace)",

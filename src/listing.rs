@@ -11,29 +11,46 @@ use crate::tribology::lubricant::{base_oil, iso_lubricant_factor, lowest_grade, 
 /// gearbox, the efficiency analysis; the dynamics block commented out).
 pub const TEMPLATE: &str = include_str!("templates/new_scene.gear");
 
-/// The templates of `gearloss new --kind K`: (kind, what it is, the scene's text).
-pub const TEMPLATES: &[(&str, &str, &str)] = &[
-    ("pair", "a spur pair, an ISO VG oil, two laws, a gearbox, efficiency", TEMPLATE),
-    (
-        "drive",
-        "a two-stage helical box on three shafts with bearings, seals, jets, a loss map and the sump's balance",
-        include_str!("templates/new_drive.gear"),
-    ),
-    (
-        "planetary",
-        "a planetary stage: sun in, carrier out, ring held, three planets",
-        include_str!("templates/new_planetary.gear"),
-    ),
-    (
-        "cycle",
-        "a one-stage reducer in its car over WLTC class 3b, the sump following the cycle (the trace written beside it)",
-        include_str!("templates/new_cycle.gear"),
-    ),
-];
+/// A template of `gearloss new --kind K`: its kind, what it is (the `--kind` help), the scene's
+/// text and a file written beside it, if any (name, bytes).
+pub struct Template {
+    pub kind: &'static str,
+    pub what: &'static str,
+    pub text: &'static str,
+    pub beside: Option<(&'static str, &'static [u8])>,
+}
 
 /// The drive-cycle template's trace, written beside the scene: (file name, bytes) — the WLTC
 /// class 3b of UN GTR No. 15 as NREL FASTSim ships it (Apache-2.0, `specs/cycles/NOTICE`).
 pub const CYCLE_TRACE: (&str, &[u8]) = ("wltc_3b.csv", include_bytes!("../specs/cycles/wltc_3b.csv"));
+
+/// The templates of `gearloss new --kind K`, the first the default.
+pub const TEMPLATES: &[Template] = &[
+    Template {
+        kind: "pair",
+        what: "a spur pair, an ISO VG oil, two laws, a gearbox, efficiency",
+        text: TEMPLATE,
+        beside: None,
+    },
+    Template {
+        kind: "drive",
+        what: "a two-stage helical box on three shafts with bearings, seals, jets, a loss map and the sump's balance",
+        text: include_str!("templates/new_drive.gear"),
+        beside: None,
+    },
+    Template {
+        kind: "planetary",
+        what: "a planetary stage: sun in, carrier out, ring held, three planets",
+        text: include_str!("templates/new_planetary.gear"),
+        beside: None,
+    },
+    Template {
+        kind: "cycle",
+        what: "a one-stage reducer in its car over WLTC class 3b (its trace written beside it)",
+        text: include_str!("templates/new_cycle.gear"),
+        beside: Some(CYCLE_TRACE),
+    },
+];
 
 /// `gearloss laws`: every friction law with its arguments (SI unit, default), what it needs from
 /// the scene and its source.

@@ -19,9 +19,9 @@ pub const PLOTTED_VALUES: usize = 200;
 pub const MAP_VALUES: usize = 40;
 pub use crate::model::MAX_OPERATING_POINTS;
 
-/// One share of a sharded run: `index` of `count`, 1-based (`--shard 2/4`). Made only by
-/// [`Shard::new`] (or parsed from `K/N`), which holds 1 ≤ K ≤ N ≤ [`MAX_SHARDS`]: the CLI and
-/// Python validate a shard in this one place.
+/// One share of a sharded run: `index` of `count`, 1-based (`--shard 2/4`). What a user writes is
+/// validated in one place, [`Shard::new`] (and the `K/N` parse on it), which holds 1 ≤ K ≤ N ≤
+/// [`MAX_SHARDS`]: the CLI and Python both go through it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Shard {
     pub index: usize,
