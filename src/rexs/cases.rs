@@ -50,7 +50,7 @@ pub(crate) fn read_lubricant(
     warnings: &mut Vec<String>,
 ) -> Result<Option<LubricantData>, RexsError> {
     let Some(l) = model.of_kind("lubricant").next() else {
-        warnings.push("the model has no lubricant: the scene gives none (add one before running)".into());
+        warnings.push("the model has no lubricant: an ISO VG 220 mineral gear oil is chosen (replace it with the unit's oil)".into());
         return Ok(None);
     };
     let kind = text(l, &["lubricant_type_iso_6336_2006"]);

@@ -14,7 +14,27 @@ pub fn import(file_name: &str, bytes: &[u8]) -> Result<Imported, RexsError> {
     let model = super::formats::read_model(bytes)?;
     let unit = super::gear_unit::read_gear_unit(&model)?;
     let scene = super::write_scene::write_scene(file_name, &model, &unit);
+    written_scene_checks(file_name, &scene)?;
     Ok(Imported { scene, warnings: unit.warnings })
+}
+
+/// Every scene an import gives parses and checks (`gearloss check`'s own path) before anyone
+/// writes it: a scene that does not is the importer's fault, refused with what the check said.
+fn written_scene_checks(file_name: &str, scene: &str) -> Result<(), RexsError> {
+    crate::check(&format!("{file_name} (imported)"), scene).map(|_| ()).map_err(|errors| {
+        let first = errors.diagnostics.first().map(|d| {
+            let (line, column) = errors.line_column(d.span.start);
+            format!("line {line}, column {column}: {}", d.reason)
+        });
+        RexsError::new(
+            format!(
+                "the scene written for this model does not check ({} error(s); the first at {})",
+                errors.diagnostics.len(),
+                first.unwrap_or_default()
+            ),
+            "this is a gearloss bug: please report it with the model",
+        )
+    })
 }
 
 /// Imports the REXS file at `path`.

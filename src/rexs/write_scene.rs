@@ -43,6 +43,12 @@ pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -
             n(l.density_15),
             l.base
         );
+    } else {
+        let _ = writeln!(
+            w,
+            "    # chosen: the model gives no lubricant; an ISO VG 220 mineral gear oil (a common CLP grade)."
+        );
+        let _ = writeln!(w, "    lubricant = iso_vg(220, mineral)");
     }
     for st in &unit.stages {
         stage(w, st);
@@ -156,8 +162,9 @@ fn cases(w: &mut String, unit: &GearUnit) {
     let list = |v: &[f64]| v.iter().map(|x| n(*x)).collect::<Vec<_>>().join(", ");
     let mut temps: Vec<f64> = unit.cases.iter().filter_map(|c| c.oil_temperature).collect();
     temps.dedup();
+    // A comment never shares the operating line: it would swallow the block's closing brace.
     let oil = match temps.as_slice() {
-        [] => "oil_temperature = 70 degC  # chosen: the model gives no lubricant temperature".to_string(),
+        [] => "oil_temperature = 70 degC".to_string(),
         [t] => format!("oil_temperature = {} degC", n(*t)),
         many => format!("oil_temperature = [{}] degC", list(many)),
     };
@@ -167,6 +174,9 @@ fn cases(w: &mut String, unit: &GearUnit) {
         unit.cases.len()
     );
     let _ = writeln!(w, "    # are the duty cycle's steps).");
+    if temps.is_empty() {
+        let _ = writeln!(w, "    # chosen: the oil at 70 °C, the model gives no lubricant temperature.");
+    }
     let _ = writeln!(
         w,
         "    operating {{ input_torque = [{}] N*m  input_speed = [{}] rpm  {oil} }}",

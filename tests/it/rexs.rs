@@ -146,6 +146,27 @@ fn the_stages_carry_the_files_values() {
     }
 }
 
+/// A model without a lubricant and without a lubricant temperature (the 1.4 model with both cut
+/// out): the scene chooses an ISO VG 220 mineral oil at 70 °C, marks both `chosen:` on lines of their
+/// own (a comment on the operating line swallowed its closing brace), checks and runs.
+#[test]
+fn a_model_without_oil_gets_a_chosen_one_and_runs() {
+    let name = "constructs/no_lubricant_no_oil_temperature.rexs";
+    let imported = import(name);
+    let scene = &imported.scene;
+    assert!(scene.contains("    lubricant = iso_vg(220, mineral)\n"), "{scene}");
+    assert!(scene.contains("# chosen: the model gives no lubricant"), "{scene}");
+    assert!(scene.contains("# chosen: the oil at 70 °C"), "{scene}");
+    for line in scene.lines() {
+        let comment = line.split_once('#').map_or("", |(_, c)| c);
+        assert!(!comment.contains('}'), "a closing brace inside a comment: {line}");
+    }
+    assert!(imported.warnings.iter().any(|w| w.contains("ISO VG 220 mineral gear oil is chosen")));
+    let checked = gearloss::check(name, scene).unwrap_or_else(|e| panic!("{e}"));
+    assert!((checked.operating.oil_temperature.as_ref().unwrap().value.value - 343.15).abs() < 1e-9);
+    gearloss::run_to_files(name, scene).unwrap_or_else(|e| panic!("{e}"));
+}
+
 /// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
 #[test]
 fn xml_and_json_of_one_model_give_one_scene() {
