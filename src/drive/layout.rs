@@ -70,6 +70,10 @@ pub struct Shaft {
     /// Whether a place said `locating` (else the first takes the axial force, and the report says so).
     pub locating_given: bool,
     pub seals: Vec<Seal>,
+    /// The shaft's body for the elastic beam (sections, material); None: a rigid beam on two places.
+    pub body: Option<super::shaft_beam::ShaftBody>,
+    /// Per bearing place: its radial stiffness (N/m); None (or an empty list) is rigid.
+    pub stiffness: Vec<Option<f64>>,
 }
 
 /// One stage: its kind (the kinematics catalogue), its two gears' places, the teeth and the

@@ -22,6 +22,8 @@ pub(crate) mod pass;
 pub mod planetary;
 pub mod planetary_charges;
 pub(crate) mod point;
+pub mod shaft_beam;
+pub mod shaft_bending;
 pub(crate) mod speeds;
 pub mod statics;
 pub mod walk;

@@ -43,7 +43,7 @@ pub struct BearingPoint {
     pub no_load: f64,
     pub load: f64,
     /// A planetary stage's planet bearings (on the planets' pins, charged to this shaft), not one of
-    /// the shaft's two places.
+    /// the shaft's bearing places.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub on_planets: bool,
 }
@@ -65,6 +65,9 @@ pub struct ShaftPoint {
     pub seals: f64,
     /// The no-load parts of the stages whose pinion this shaft carries (W).
     pub gear_no_load: f64,
+    /// A shaft with sections: its bending (elastic beam).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bending: Option<super::shaft_bending::ShaftBending>,
 }
 
 impl ShaftPoint {
@@ -93,6 +96,10 @@ pub struct StagePoint {
     pub tangential_force: f64,
     pub radial_force: f64,
     pub axial_force: f64,
+    /// The mesh misalignment its bent shafts imply (m), when both have sections (reported, not fed
+    /// back into the mesh).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mesh_misalignment: Option<f64>,
     /// A planetary stage's members, meshes and planets.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub planetary: Option<Box<super::planetary::PlanetaryPoint>>,

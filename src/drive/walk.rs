@@ -19,7 +19,7 @@ use super::planetary;
 use super::planetary_charges;
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
-use super::statics::shaft_reactions;
+use super::shaft_bending::{support_reactions, ShaftBending};
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
@@ -29,6 +29,15 @@ pub const TOLERANCE: f64 = 1e-12;
 const MAX_PASSES: usize = 100;
 /// A pass whose largest driving torque exceeds the first pass's this many times diverges.
 const DIVERGED: f64 = 1e3;
+
+/// What the supports of every shaft carry at one pass: each shaft's bearing losses (W), its
+/// places, every gear's load and each shaft's bending (when asked and it has sections).
+struct Supported {
+    powers: Vec<f64>,
+    places: Vec<Vec<BearingPoint>>,
+    loads: Vec<GearLoad>,
+    bending: Vec<Option<ShaftBending>>,
+}
 
 /// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
 pub struct DriveModel<'a> {
@@ -53,7 +62,7 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     let first = state.largest_torque();
     let mut passes = 1;
     loop {
-        loads = walk.bearing_powers(model, &state.driving_torque).0;
+        loads = walk.bearing_powers(model, &state.driving_torque, false).powers;
         let next = walk.pass(meshes, from_source, given_power, &fixed, &loads, Some(&state.driving_torque));
         passes += 1;
         if !next.is_finite() || next.largest_torque() > DIVERGED * first {
@@ -225,21 +234,22 @@ impl<'a> Walk<'a> {
             .collect()
     }
 
-    /// Each shaft's bearing losses (W) and its places at the driving torques `torques`.
-    fn bearing_powers(&self, model: &DriveModel, torques: &[f64]) -> (Vec<f64>, Vec<Vec<BearingPoint>>, Vec<GearLoad>) {
+    /// Each shaft's bearing losses (W), its places, its gears' loads and (with `bent`) its bending
+    /// at the driving torques `torques`.
+    fn bearing_powers(&self, model: &DriveModel, torques: &[f64], bent: bool) -> Supported {
         let loads = self.gear_loads(model, torques);
         let mut powers = vec![0.0; model.drive.shafts.len()];
         let mut places = vec![Vec::new(); model.drive.shafts.len()];
+        let mut bending = vec![None; model.drive.shafts.len()];
         for (j, shaft) in model.drive.shafts.iter().enumerate() {
-            let [a, b] = match shaft.bearings.as_slice() {
-                [a, b] => [a, b],
-                _ => continue,
-            };
+            if shaft.bearings.len() < 2 {
+                continue;
+            }
             let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
-            let positions = [a.position.unwrap_or(0.0), b.position.unwrap_or(0.0)];
-            let reactions = shaft_reactions(&on, positions, shaft.locating);
+            let (reactions, bent_shaft) = support_reactions(shaft, &on, bent);
+            bending[j] = bent_shaft;
             let speed = self.omega[j].abs();
-            for (i, bearing) in [a, b].into_iter().enumerate() {
+            for (i, bearing) in shaft.bearings.iter().enumerate() {
                 let n = bearing.count as f64;
                 let r = reactions[i];
                 let (radial, axial) = (r[0].hypot(r[1]) / n, r[2].abs() / n);
@@ -252,7 +262,7 @@ impl<'a> Walk<'a> {
                 places[j].push(BearingPoint {
                     kind: bearing.kind.name().to_string(),
                     count: bearing.count,
-                    position: positions[i],
+                    position: bearing.position.unwrap_or(0.0),
                     locating: i == shaft.locating,
                     reaction: r,
                     radial_load: radial,
@@ -272,20 +282,20 @@ impl<'a> Walk<'a> {
                 places[j].push(b);
             }
         }
-        (powers, places, loads)
+        Supported { powers, places, loads, bending }
     }
 
     /// The drive point of the settled pass `p`.
     fn point(&self, model: &DriveModel, p: &Pass, fixed: &FixedLosses, passes: usize) -> DrivePoint {
         let drive = model.drive;
-        let (_, places, loads) = self.bearing_powers(model, &p.driving_torque);
+        let Supported { places, loads, bending, .. } = self.bearing_powers(model, &p.driving_torque, true);
         let torque = |power: f64, j: usize| if self.omega[j] == 0.0 { 0.0 } else { power / self.omega[j].abs() };
         let shafts: Vec<ShaftPoint> = drive
             .shafts
             .iter()
             .enumerate()
-            .zip(places)
-            .map(|((j, s), bearings)| ShaftPoint {
+            .zip(places.into_iter().zip(bending))
+            .map(|((j, s), (bearings, bending))| ShaftPoint {
                 name: s.name.clone(),
                 speed: self.omega[j],
                 received_torque: torque(p.received[j], j),
@@ -296,6 +306,7 @@ impl<'a> Walk<'a> {
                 gear_loads: loads.iter().filter(|l| l.shaft == j).copied().collect(),
                 seals: fixed.seals[j],
                 gear_no_load: fixed.gear_no_load[j],
+                bending,
             })
             .collect();
         let mut steps = self.steps.clone();
@@ -330,6 +341,7 @@ impl<'a> Walk<'a> {
                     tangential_force: f_t,
                     radial_force: f_r,
                     axial_force: f_a,
+                    mesh_misalignment: misalignment(&shafts, (k, stage), sizes.face_width),
                     planetary,
                 }
             })
@@ -366,4 +378,20 @@ impl<'a> Walk<'a> {
             iterations: passes,
         }
     }
+}
+
+/// Stage `k`'s mesh misalignment from its two gears' tilts on their bent shafts (a parallel stage
+/// whose shafts both have sections), m.
+fn misalignment(shafts: &[ShaftPoint], (k, stage): (usize, &super::layout::Stage), face_width: f64) -> Option<f64> {
+    if stage.planetary.is_some() {
+        return None;
+    }
+    let gear = |m: usize| {
+        let shaft = &shafts[stage.places[m].shaft];
+        let bent = shaft.bending.as_ref()?.gears.iter().find(|g| g.stage == k)?;
+        let load = shaft.gear_loads.iter().find(|l| l.stage == k)?;
+        Some((bent, load.force))
+    };
+    let ((pinion, force), (wheel, _)) = (gear(0)?, gear(1)?);
+    Some(super::shaft_bending::mesh_misalignment(face_width, pinion, wheel, force))
 }

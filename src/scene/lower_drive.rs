@@ -341,6 +341,8 @@ fn lower_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Option<Shaft> {
         locating: locating.first().map_or(0, |(i, _)| *i),
         locating_given: !locating.is_empty(),
         seals: s.seals.clone(),
+        body: None,
+        stiffness: Vec::new(),
     })
 }
 

@@ -1,0 +1,170 @@
+//! A shaft's supports under its gears' loads: the reactions of every bearing place (a rigid beam's
+//! statics on two places, the elastic beam of [`super::shaft_beam`] on more) and, for a shaft with
+//! sections, its bending: the deflection and slope at each gear, the bending moment along it and
+//! the largest bending stress, located.
+//!
+//! The bending moment in each plane follows from the loads and the reactions alone (statics, not
+//! the stiffness solve): M(z) = Σ_{z_i < z} (F_i (z − z_i) − C_i), with a jump of −C at a gear whose
+//! axial force makes a couple. Its resultant |M| = √(M_x² + M_y²) is a norm of a function affine in
+//! z between nodes, so convex there: its largest value on an element is at one of its ends. The
+//! largest stress σ = |M|/W (W = π (D⁴ − d⁴)/(32 D)) is therefore located exactly by the one-sided
+//! limits at every node, each with the section on its own side (Niemann & Winter,
+//! *Maschinenelemente* I, the nominal bending stress of a shaft).
+
+use serde::{Deserialize, Serialize};
+
+use super::forces::GearLoad;
+use super::layout::{Member, Shaft};
+use super::shaft_beam::{plane_loads, solve, BeamSolution, BeamTheory, PlaneLoad, Support};
+
+/// A gear on its bent shaft.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct GearDeflection {
+    pub stage: usize,
+    pub member: Member,
+    /// Its `at` (m).
+    pub at: f64,
+    /// [w_x, w_y] (m) and the section's rotation [θ_x, θ_y] (rad, each plane's slope).
+    pub deflection: [f64; 2],
+    pub slope: [f64; 2],
+}
+
+/// A shaft's bending at one operating point.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShaftBending {
+    pub theory: BeamTheory,
+    pub gears: Vec<GearDeflection>,
+    /// At each node: z (m), the resultant bending moment just left of it and just right of it (N·m).
+    pub moment: Vec<[f64; 3]>,
+    /// The largest nominal bending stress (Pa), where (m), the moment there (N·m) and the section's
+    /// outer diameter there (m).
+    pub max_stress: f64,
+    pub max_stress_at: f64,
+    pub max_stress_moment: f64,
+    pub max_stress_diameter: f64,
+    /// The largest deflection |w| over the nodes (m) and where.
+    pub max_deflection: f64,
+    pub max_deflection_at: f64,
+}
+
+/// The reactions [R_x, R_y, R_z] (N, on the shaft) of every place of `shaft` under `on`, and with
+/// `bent` its bending when it has sections. Two places: the rigid beam's statics
+/// ([`super::statics::shaft_reactions`], whatever the sections and springs: two places are
+/// statically determinate); more: the elastic beam. The locating place takes −ΣF_z.
+pub fn support_reactions(shaft: &Shaft, on: &[GearLoad], bent: bool) -> (Vec<[f64; 3]>, Option<ShaftBending>) {
+    let positions: Vec<f64> = shaft.bearings.iter().map(|b| b.position.unwrap_or(0.0)).collect();
+    let needs_beam = positions.len() > 2 || (bent && shaft.body.is_some());
+    let solution = match (&shaft.body, needs_beam) {
+        (Some(body), true) => solve(body, &supports(shaft, &positions), &plane_loads(on)),
+        _ => None,
+    };
+    let reactions: Vec<[f64; 3]> = match (positions.as_slice(), &solution) {
+        ([a, b], _) => super::statics::shaft_reactions(on, [*a, *b], shaft.locating).to_vec(),
+        (_, Some(s)) => {
+            let axial: f64 = -on.iter().map(|l| l.force[2]).sum::<f64>();
+            s.reactions
+                .iter()
+                .enumerate()
+                .map(|(i, r)| [r[0], r[1], if i == shaft.locating { axial } else { 0.0 }])
+                .collect()
+        }
+        // Lowering gives every shaft of more than two places its sections; a beam that cannot be
+        // solved shows as NaN, which the report refuses to print silently.
+        (_, None) => vec![[f64::NAN; 3]; positions.len()],
+    };
+    let bending = match (bent, &shaft.body, &solution) {
+        (true, Some(body), Some(s)) => Some(bending(body, on, &positions, &reactions, s)),
+        _ => None,
+    };
+    (reactions, bending)
+}
+
+fn supports(shaft: &Shaft, positions: &[f64]) -> Vec<Support> {
+    positions
+        .iter()
+        .enumerate()
+        .map(|(i, &at)| Support { at, stiffness: shaft.stiffness.get(i).copied().flatten() })
+        .collect()
+}
+
+fn bending(
+    body: &super::shaft_beam::ShaftBody,
+    on: &[GearLoad],
+    positions: &[f64],
+    reactions: &[[f64; 3]],
+    s: &BeamSolution,
+) -> ShaftBending {
+    let mut items: Vec<PlaneLoad> = plane_loads(on);
+    items.extend(
+        positions.iter().zip(reactions).map(|(&at, r)| PlaneLoad { at, force: [r[0], r[1]], couple: [0.0, 0.0] }),
+    );
+    let node_of: Vec<usize> = items.iter().map(|l| s.node(l.at)).collect();
+    let mut moment = Vec::with_capacity(s.nodes.len());
+    for (k, &z) in s.nodes.iter().enumerate() {
+        let (mut left, mut jump) = ([0.0; 2], [0.0; 2]);
+        for (l, &i) in items.iter().zip(&node_of) {
+            for p in 0..2 {
+                if i < k {
+                    left[p] += l.force[p] * (z - l.at) - l.couple[p];
+                } else if i == k {
+                    jump[p] -= l.couple[p];
+                }
+            }
+        }
+        let right = [left[0] + jump[0], left[1] + jump[1]];
+        moment.push([z, left[0].hypot(left[1]), right[0].hypot(right[1])]);
+    }
+    let mut most = (0.0_f64, s.nodes[0], 0.0, body.sections[0].outer_diameter);
+    for k in 0..s.nodes.len().saturating_sub(1) {
+        let Some(section) = body.section_at(0.5 * (s.nodes[k] + s.nodes[k + 1])) else { continue };
+        for (z, m) in [(moment[k][0], moment[k][2]), (moment[k + 1][0], moment[k + 1][1])] {
+            let sigma = m / section.section_modulus();
+            if sigma > most.0 {
+                most = (sigma, z, m, section.outer_diameter);
+            }
+        }
+    }
+    let (mut w_max, mut w_at) = (0.0_f64, s.nodes[0]);
+    for (z, w) in s.nodes.iter().zip(&s.deflection) {
+        if w[0].hypot(w[1]) > w_max {
+            (w_max, w_at) = (w[0].hypot(w[1]), *z);
+        }
+    }
+    ShaftBending {
+        theory: body.theory,
+        gears: on
+            .iter()
+            .map(|l| {
+                let i = s.node(l.point[2]);
+                GearDeflection {
+                    stage: l.stage,
+                    member: l.member,
+                    at: l.point[2],
+                    deflection: s.deflection[i],
+                    slope: s.slope[i],
+                }
+            })
+            .collect(),
+        moment,
+        max_stress: most.0,
+        max_stress_at: most.1,
+        max_stress_moment: most.2,
+        max_stress_diameter: most.3,
+        max_deflection: w_max,
+        max_deflection_at: w_at,
+    }
+}
+
+/// The mesh misalignment a stage's bent shafts imply (m): the face width times the two gears'
+/// relative tilt projected on the line of action, |b (θ_pinion − θ_wheel) · ê|, ê the transverse
+/// direction of the mesh force (ISO 6336-1:2019, 7.6: the component f_sh of the deformations in
+/// the plane of action; reported, not fed back into the mesh).
+pub fn mesh_misalignment(face_width: f64, pinion: &GearDeflection, wheel: &GearDeflection, force: [f64; 3]) -> f64 {
+    let norm = force[0].hypot(force[1]);
+    if norm == 0.0 {
+        return 0.0;
+    }
+    let e = [force[0] / norm, force[1] / norm];
+    let d = [pinion.slope[0] - wheel.slope[0], pinion.slope[1] - wheel.slope[1]];
+    (face_width * (d[0] * e[0] + d[1] * e[1])).abs()
+}
