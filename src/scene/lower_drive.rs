@@ -87,6 +87,7 @@ pub(super) fn build_drive(
     if errors.len() > before {
         return None;
     }
+    check_gears_on_sections(stages, &built, &shafts, errors);
     check_loops(stages, &built, shafts.len(), errors)?;
     check_layout(stages, &built, &shafts, errors);
     let (input, output) = ends(&shafts, gearbox, errors)?;
@@ -149,6 +150,30 @@ fn shaft_index<'a>(shafts: &'a [ShaftDecl], errors: &mut Vec<Diagnostic>) -> BTr
         }
     }
     index
+}
+
+/// Every gear on a shaft with sections lies on them.
+fn check_gears_on_sections(decls: &[StageDecl], stages: &[Stage], shafts: &[ShaftDecl], errors: &mut Vec<Diagnostic>) {
+    for (s, d) in stages.iter().zip(decls) {
+        for (m, place) in s.places.iter().enumerate() {
+            let shaft = &shafts[place.shaft];
+            if shaft.body.as_ref().is_some_and(|b| !b.covers(place.at)) {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::OutOfRange,
+                        d.places[m].0.span,
+                        format!(
+                            "stage `{}`'s gear at {} mm lies outside shaft `{}`'s sections",
+                            s.name,
+                            place.at * 1e3,
+                            shaft.name.text
+                        ),
+                    )
+                    .hint("extend the shaft's sections over every gear and bearing on it, or move the gear's `at`"),
+                );
+            }
+        }
+    }
 }
 
 /// Stages must not close a loop of shafts (each stage joins two shafts not yet joined).
@@ -280,50 +305,66 @@ fn check_layout(decls: &[StageDecl], stages: &[Stage], shafts: &[ShaftDecl], err
     }
 }
 
-/// A shaft's bearing places: none, or two with `at` at distinct positions (the shaft's statics);
-/// at most one says `locating`.
+/// A shaft's bearing places: none, or two or more with `at` at distinct positions (a rigid beam's
+/// statics on two; more need the shaft's sections, the elastic beam); each on the sections when
+/// given; at most one says `locating`.
 fn lower_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Option<Shaft> {
     let bearings: Vec<_> = s.bearings.iter().map(|(b, _, _)| *b).collect();
     let fail = |errors: &mut Vec<Diagnostic>, span: Span, reason: String, hint: &str| {
         errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, span, reason).hint(hint.to_string()));
         None
     };
-    match s.bearings.as_slice() {
-        [] => {}
-        [_] => {
+    if let [_] = s.bearings.as_slice() {
+        return fail(
+            errors,
+            s.name.span,
+            format!("shaft `{}` has one bearing place; its statics needs two", s.name.text),
+            "add the second bearing with its `at` (a place of several bearings says `count`)",
+        );
+    }
+    if let (Some(third), None) = (s.bearings.get(2), &s.body) {
+        return fail(
+            errors,
+            third.2,
+            format!("shaft `{}` has more than two bearing places and no sections", s.name.text),
+            "on three or more places the reactions depend on the shaft's bending: give its `section(from = 0 mm, to = 42 mm, diameter = 40 mm)`s (several bearings at one place are one `bearing(..., count = 2)`)",
+        );
+    }
+    for (k, (bearing, _, span)) in s.bearings.iter().enumerate() {
+        let Some(at) = bearing.position else {
             return fail(
                 errors,
-                s.name.span,
-                format!("shaft `{}` has one bearing place; its statics needs two", s.name.text),
-                "add the second bearing with its `at` (a place of several bearings says `count`)",
-            )
+                *span,
+                "a bearing of a drive's shaft needs its `at`".into(),
+                "add `at = 30 mm` (on the shaft's own axial coordinate, as the gears' `at`)",
+            );
+        };
+        if s.bearings[..k].iter().any(|(b, _, _)| b.position == Some(at)) {
+            return fail(
+                errors,
+                *span,
+                format!("two bearing places of shaft `{}` are at the same `at`", s.name.text),
+                "a shaft rests on places at different positions (several bearings at one place are one `bearing(..., count = 2)`)",
+            );
         }
-        [a, b] => {
-            for (bearing, _, span) in [a, b] {
-                if bearing.position.is_none() {
-                    return fail(
-                        errors,
-                        *span,
-                        "a bearing of a drive's shaft needs its `at`".into(),
-                        "add `at = 30 mm` (on the shaft's own axial coordinate, as the gears' `at`)",
-                    );
-                }
-            }
-            if a.0.position == b.0.position {
+        if let Some(body) = &s.body {
+            if !body.covers(at) {
                 return fail(
                     errors,
-                    b.2,
-                    format!("both bearing places of shaft `{}` are at the same `at`", s.name.text),
-                    "a shaft rests on two places at different positions",
+                    *span,
+                    format!("this bearing at {} mm lies outside shaft `{}`'s sections", at * 1e3, s.name.text),
+                    "extend the sections over every bearing and gear of the shaft, or move the bearing's `at`",
                 );
             }
         }
-        [_, _, third, ..] => return fail(
+    }
+    if let (Some((_, span)), None) = (s.stiffness.iter().flatten().next(), &s.body) {
+        return fail(
             errors,
-            third.2,
-            format!("shaft `{}` has more than two bearing places", s.name.text),
-            "the shaft is a rigid beam on two places; several bearings at one place are one `bearing(..., count = 2)`",
-        ),
+            *span,
+            format!("`radial_stiffness` bends shaft `{}`, which has no sections", s.name.text),
+            "give the shaft's `section(...)`s, or leave `radial_stiffness` out (the place is rigid)",
+        );
     }
     let locating: Vec<(usize, Span)> =
         s.bearings.iter().enumerate().filter_map(|(i, (_, l, _))| l.map(|span| (i, span))).collect();
@@ -341,8 +382,8 @@ fn lower_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Option<Shaft> {
         locating: locating.first().map_or(0, |(i, _)| *i),
         locating_given: !locating.is_empty(),
         seals: s.seals.clone(),
-        body: None,
-        stiffness: Vec::new(),
+        body: s.body.clone(),
+        stiffness: s.stiffness.iter().map(|k| k.map(|(k, _)| k)).collect(),
     })
 }
 

@@ -58,7 +58,7 @@ pub(super) fn lower_drive_scene(
         .get("operating")
         .and_then(|b| super::lower_drive_operating::lower_drive_operating(b, cycle_blocks.1.is_some(), errors));
     let gearbox_block = singles.get("gearbox");
-    let shafts = gearbox_block.and_then(|b| super::lower_shafts::lower_shafts(b, errors));
+    let shafts = gearbox_block.and_then(|b| super::lower_shafts::lower_shafts(b, materials, errors));
     if gearbox_block.is_none() {
         errors.push(
             Diagnostic::new(

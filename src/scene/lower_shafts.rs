@@ -17,7 +17,8 @@ use super::ast::*;
 use super::fields::Fields;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::losses::{Bearing, Seal};
-use crate::model::Length;
+use crate::model::{Length, Material};
+use std::collections::BTreeMap;
 
 /// A shaft as written.
 pub(super) struct ShaftDecl {
@@ -29,9 +30,17 @@ pub(super) struct ShaftDecl {
     pub seals: Vec<Seal>,
     /// The shaft's centre (m) and where it was written.
     pub position: Option<([f64; 2], Span)>,
+    /// Per bearing place: its radial stiffness (N/m) and where it was written; None rigid.
+    pub stiffness: Vec<Option<(f64, Span)>>,
+    /// Its sections, material and beam theory, when it gives sections (the elastic beam).
+    pub body: Option<crate::drive::shaft_beam::ShaftBody>,
 }
 
-pub(super) fn lower_shafts(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<Vec<ShaftDecl>> {
+pub(super) fn lower_shafts(
+    block: &Block,
+    materials: &BTreeMap<&str, Material>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Vec<ShaftDecl>> {
     if let Some(key) = block.items.iter().find_map(|i| match i {
         Item::Assignment { key, .. } if key.text == "lubrication" => Some(key),
         _ => None,
@@ -52,11 +61,11 @@ pub(super) fn lower_shafts(block: &Block, errors: &mut Vec<Diagnostic>) -> Optio
     );
     let before = errors.len();
     let shafts: Vec<ShaftDecl> =
-        f.blocks.iter().filter(|b| b.kind.text == "shaft").filter_map(|b| lower_shaft(b, errors)).collect();
+        f.blocks.iter().filter(|b| b.kind.text == "shaft").filter_map(|b| lower_shaft(b, materials, errors)).collect();
     (errors.len() == before).then_some(shafts)
 }
 
-fn lower_shaft(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<ShaftDecl> {
+fn lower_shaft(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut Vec<Diagnostic>) -> Option<ShaftDecl> {
     let Some(name) = block.label.clone() else {
         errors.push(
             Diagnostic::new(DiagnosticKind::MissingKey, block.kind.span, "a shaft needs a name")
@@ -69,24 +78,36 @@ fn lower_shaft(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<ShaftDecl>
         &what,
         block.span,
         &block.items,
-        &["position"],
+        &["position", "material", "beam"],
         &[],
-        &["input", "output", "bearing", "seal"],
+        &["input", "output", "bearing", "seal", "section"],
         errors,
     );
-    let mut shaft =
-        ShaftDecl { name, input: None, output: None, bearings: Vec::new(), seals: Vec::new(), position: None };
+    let mut shaft = ShaftDecl {
+        name,
+        input: None,
+        output: None,
+        bearings: Vec::new(),
+        seals: Vec::new(),
+        position: None,
+        stiffness: Vec::new(),
+        body: None,
+    };
+    let mut sections = Vec::new();
     for call in &f.calls {
         match call.name.text.as_str() {
             "input" => shaft.input = Some(call.span),
             "output" => shaft.output = Some(call.span),
             "seal" => shaft.seals.extend(super::lower_gearbox::lower_seal(call, errors)),
+            "section" => sections.extend(super::lower_shaft_body::lower_section(call, errors)),
             _ => {
                 let locating = call.arguments.iter().find(|(k, _)| k.text == "locating").map(|(k, _)| k.span);
+                let stiffness = super::lower_shaft_body::lower_radial_stiffness(call, errors);
                 let mut bare = (*call).clone();
-                bare.arguments.retain(|(k, _)| k.text != "locating");
+                bare.arguments.retain(|(k, _)| k.text != "locating" && k.text != "radial_stiffness");
                 if let Some(b) = super::lower_gearbox::lower_bearing(&bare, errors) {
                     shaft.bearings.push((b, locating, call.span));
+                    shaft.stiffness.push(stiffness);
                 }
             }
         }
@@ -106,5 +127,11 @@ fn lower_shaft(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<ShaftDecl>
             None => {}
         }
     }
+    let decl = super::lower_shaft_body::BodyDecl {
+        sections,
+        material: f.name("material", &[], errors),
+        theory: f.name("beam", &["euler_bernoulli", "timoshenko"], errors),
+    };
+    shaft.body = super::lower_shaft_body::shaft_body(&shaft.name, &decl, materials, errors);
     Some(shaft)
 }

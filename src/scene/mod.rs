@@ -19,6 +19,7 @@ pub(crate) mod lower_lubricant;
 pub(crate) mod lower_operating;
 pub(crate) mod lower_planetary;
 pub(crate) mod lower_planetary_checks;
+pub(crate) mod lower_shaft_body;
 pub(crate) mod lower_shafts;
 pub(crate) mod lower_stage;
 pub(crate) mod lower_teeth;
