@@ -515,8 +515,13 @@ mod several_stages {
 
     /// The EV reducer with `operating` and `analyses` swapped in.
     fn reducer(torques: &str, speeds: &str, analyses: &str) -> gearloss::Scene {
+        reducer_of("ev_two_stage_reducer.gear", torques, speeds, analyses)
+    }
+
+    /// The reducer of spec `file` with `operating` and `analyses` swapped in.
+    fn reducer_of(file: &str, torques: &str, speeds: &str, analyses: &str) -> gearloss::Scene {
         super::drive_spec(
-            "ev_two_stage_reducer.gear",
+            file,
             &format!("    operating {{ output_torque = {torques}  output_speed = {speeds}  oil_temperature = 80 degC }}\n    friction {{ iso_14179_2(x_l = 0.75) }}\n    analyses {{ {analyses} }}\n"),
         )
     }
@@ -531,6 +536,33 @@ mod several_stages {
     #[divan::bench]
     fn one_point(b: divan::Bencher) {
         let scene = reducer("800 N*m", "900 rpm", "efficiency(formulations = [external])");
+        b.bench(|| run(&scene));
+    }
+
+    /// The same point with the lay shaft an elastic beam on three places, one sprung
+    /// (specs/ev_reducer_three_bearing_lay_shaft.gear): the beam solved at every pass of the fixed
+    /// point, every shaft's bending at the end. Target < 100 µs.
+    #[divan::bench]
+    fn one_point_lay_shaft_on_three_places(b: divan::Bencher) {
+        let scene = reducer_of(
+            "ev_reducer_three_bearing_lay_shaft.gear",
+            "800 N*m",
+            "900 rpm",
+            "efficiency(formulations = [external])",
+        );
+        b.bench(|| run(&scene));
+    }
+
+    /// 10⁴ and 10⁵ points of that drive: the second within 1.2× of ten times the first (linear;
+    /// records streamed to a sink, memory bounded).
+    #[divan::bench(args = [100, 316], sample_count = 3, sample_size = 1)]
+    fn sweep_lay_shaft_on_three_places(b: divan::Bencher, n: usize) {
+        let scene = reducer_of(
+            "ev_reducer_three_bearing_lay_shaft.gear",
+            &format!("-1000..1000 N*m count {n}"),
+            &format!("10..1500 rpm count {n}"),
+            "efficiency(formulations = [external])",
+        );
         b.bench(|| run(&scene));
     }
 

@@ -167,60 +167,91 @@ const SAME_NODE: f64 = 1e-9;
 /// The shaft `body` on `supports` under `loads`; None when the supports cannot hold the shaft
 /// (fewer than two distinct places, or a point outside the sections).
 pub fn solve(body: &ShaftBody, supports: &[Support], loads: &[PlaneLoad]) -> Option<BeamSolution> {
-    let nodes = node_positions(body, supports, loads)?;
-    let n = nodes.len();
-    let k = stiffness(body, &nodes)?;
-    let mut f = DMatrix::<f64>::zeros(2 * n, 2);
-    for l in loads {
-        let i = nearest(&nodes, l.at);
-        for p in 0..2 {
-            f[(2 * i, p)] += l.force[p];
-            f[(2 * i + 1, p)] += l.couple[p];
-        }
-    }
-    let mut k_free = k.clone();
-    let mut fixed = vec![false; 2 * n];
-    for s in supports {
-        let i = nearest(&nodes, s.at);
-        match s.stiffness {
-            None => fixed[2 * i] = true,
-            Some(c) => k_free[(2 * i, 2 * i)] += c,
-        }
-    }
-    let free: Vec<usize> = (0..2 * n).filter(|&d| !fixed[d]).collect();
-    let kr = DMatrix::from_fn(free.len(), free.len(), |a, b| k_free[(free[a], free[b])]);
-    let fr = DMatrix::from_fn(free.len(), 2, |a, p| f[(free[a], p)]);
-    let ur = kr.cholesky()?.solve(&fr);
-    let mut u = DMatrix::<f64>::zeros(2 * n, 2);
-    for (a, &d) in free.iter().enumerate() {
-        u[(d, 0)] = ur[(a, 0)];
-        u[(d, 1)] = ur[(a, 1)];
-    }
-    let ku = &k * &u;
-    let mut reactions: Vec<[f64; 2]> = supports
-        .iter()
-        .map(|s| {
-            let d = 2 * nearest(&nodes, s.at);
+    let at: Vec<f64> = loads.iter().map(|l| l.at).collect();
+    PreparedBeam::new(body, supports, &at)?.solve(loads)
+}
+
+/// A shaft's beam made ready for its loads: nodes, stiffness and the Cholesky factor of its free
+/// part depend on the shaft alone (its sections, supports and gear positions), so a drive builds
+/// them once and each pass of its fixed point only substitutes the loads.
+#[derive(Debug, Clone)]
+pub struct PreparedBeam {
+    nodes: Vec<f64>,
+    k: DMatrix<f64>,
+    factor: nalgebra::Cholesky<f64, nalgebra::Dyn>,
+    free: Vec<usize>,
+    supports: Vec<Support>,
+}
+
+impl PreparedBeam {
+    /// The beam of `body` on `supports` with loads at `load_positions` (m); None when the supports
+    /// cannot hold it or a position lies outside the sections.
+    pub fn new(body: &ShaftBody, supports: &[Support], load_positions: &[f64]) -> Option<PreparedBeam> {
+        let nodes = node_positions(body, supports, load_positions)?;
+        let n = nodes.len();
+        let k = stiffness(body, &nodes)?;
+        let mut k_free = k.clone();
+        let mut fixed = vec![false; 2 * n];
+        for s in supports {
+            let i = nearest(&nodes, s.at);
             match s.stiffness {
-                None => [ku[(d, 0)] - f[(d, 0)], ku[(d, 1)] - f[(d, 1)]],
-                Some(c) => [-c * u[(d, 0)], -c * u[(d, 1)]],
+                None => fixed[2 * i] = true,
+                Some(c) => k_free[(2 * i, 2 * i)] += c,
             }
+        }
+        let free: Vec<usize> = (0..2 * n).filter(|&d| !fixed[d]).collect();
+        let kr = DMatrix::from_fn(free.len(), free.len(), |a, b| k_free[(free[a], free[b])]);
+        Some(PreparedBeam { factor: kr.cholesky()?, nodes, k, free, supports: supports.to_vec() })
+    }
+
+    /// The beam under `loads`; None when a load lies off the nodes it was made for.
+    pub fn solve(&self, loads: &[PlaneLoad]) -> Option<BeamSolution> {
+        let (nodes, n) = (&self.nodes, self.nodes.len());
+        let mut f = DMatrix::<f64>::zeros(2 * n, 2);
+        for l in loads {
+            let i = nearest(nodes, l.at);
+            if (nodes[i] - l.at).abs() >= SAME_NODE {
+                return None;
+            }
+            for p in 0..2 {
+                f[(2 * i, p)] += l.force[p];
+                f[(2 * i + 1, p)] += l.couple[p];
+            }
+        }
+        let fr = DMatrix::from_fn(self.free.len(), 2, |a, p| f[(self.free[a], p)]);
+        let ur = self.factor.solve(&fr);
+        let mut u = DMatrix::<f64>::zeros(2 * n, 2);
+        for (a, &d) in self.free.iter().enumerate() {
+            u[(d, 0)] = ur[(a, 0)];
+            u[(d, 1)] = ur[(a, 1)];
+        }
+        let ku = &self.k * &u;
+        let mut reactions: Vec<[f64; 2]> = self
+            .supports
+            .iter()
+            .map(|s| {
+                let d = 2 * nearest(nodes, s.at);
+                match s.stiffness {
+                    None => [ku[(d, 0)] - f[(d, 0)], ku[(d, 1)] - f[(d, 1)]],
+                    Some(c) => [-c * u[(d, 0)], -c * u[(d, 1)]],
+                }
+            })
+            .collect();
+        balance_outer(&self.supports, loads, &mut reactions);
+        Some(BeamSolution {
+            deflection: (0..n).map(|i| [u[(2 * i, 0)], u[(2 * i, 1)]]).collect(),
+            slope: (0..n).map(|i| [u[(2 * i + 1, 0)], u[(2 * i + 1, 1)]]).collect(),
+            nodes: nodes.clone(),
+            reactions,
         })
-        .collect();
-    balance_outer(supports, loads, &mut reactions);
-    Some(BeamSolution {
-        deflection: (0..n).map(|i| [u[(2 * i, 0)], u[(2 * i, 1)]]).collect(),
-        slope: (0..n).map(|i| [u[(2 * i + 1, 0)], u[(2 * i + 1, 1)]]).collect(),
-        nodes,
-        reactions,
-    })
+    }
 }
 
 /// Every section change, support and load position, sorted, near ones merged; None when one lies
 /// outside the sections or fewer than two distinct supports hold the shaft.
-fn node_positions(body: &ShaftBody, supports: &[Support], loads: &[PlaneLoad]) -> Option<Vec<f64>> {
+fn node_positions(body: &ShaftBody, supports: &[Support], loads: &[f64]) -> Option<Vec<f64>> {
     let mut z: Vec<f64> = body.sections.iter().flat_map(|s| [s.from, s.to]).collect();
-    let points = supports.iter().map(|s| s.at).chain(loads.iter().map(|l| l.at));
+    let points = supports.iter().map(|s| s.at).chain(loads.iter().copied());
     for p in points {
         if !p.is_finite() || !body.covers(p) {
             return None;

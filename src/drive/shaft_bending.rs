@@ -15,7 +15,7 @@ use serde::{Deserialize, Serialize};
 
 use super::forces::GearLoad;
 use super::layout::{Member, Shaft};
-use super::shaft_beam::{plane_loads, solve, BeamSolution, BeamTheory, PlaneLoad, Support};
+use super::shaft_beam::{plane_loads, solve, BeamSolution, BeamTheory, PlaneLoad, PreparedBeam, Support};
 
 /// A gear on its bent shaft.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -51,11 +51,20 @@ pub struct ShaftBending {
 /// `bent` its bending when it has sections. Two places: the rigid beam's statics
 /// ([`super::statics::shaft_reactions`], whatever the sections and springs: two places are
 /// statically determinate); more: the elastic beam. The locating place takes −ΣF_z.
-pub fn support_reactions(shaft: &Shaft, on: &[GearLoad], bent: bool) -> (Vec<[f64; 3]>, Option<ShaftBending>) {
+/// `beam`, when given, is the shaft's beam made ready ([`shaft_beam_of`]); else it is made here.
+pub fn support_reactions(
+    shaft: &Shaft,
+    on: &[GearLoad],
+    bent: bool,
+    beam: Option<&PreparedBeam>,
+) -> (Vec<[f64; 3]>, Option<ShaftBending>) {
     let positions: Vec<f64> = shaft.bearings.iter().map(|b| b.position.unwrap_or(0.0)).collect();
     let needs_beam = positions.len() > 2 || (bent && shaft.body.is_some());
+    let planes = plane_loads(on);
     let solution = match (&shaft.body, needs_beam) {
-        (Some(body), true) => solve(body, &supports(shaft, &positions), &plane_loads(on)),
+        (Some(body), true) => {
+            beam.and_then(|b| b.solve(&planes)).or_else(|| solve(body, &supports(shaft, &positions), &planes))
+        }
         _ => None,
     };
     let reactions: Vec<[f64; 3]> = match (positions.as_slice(), &solution) {
@@ -77,6 +86,12 @@ pub fn support_reactions(shaft: &Shaft, on: &[GearLoad], bent: bool) -> (Vec<[f6
         _ => None,
     };
     (reactions, bending)
+}
+
+/// Shaft `shaft`'s beam made ready for loads at `gear_positions` (m); None without sections.
+pub fn shaft_beam_of(shaft: &Shaft, gear_positions: &[f64]) -> Option<PreparedBeam> {
+    let positions: Vec<f64> = shaft.bearings.iter().map(|b| b.position.unwrap_or(0.0)).collect();
+    PreparedBeam::new(shaft.body.as_ref()?, &supports(shaft, &positions), gear_positions)
 }
 
 fn supports(shaft: &Shaft, positions: &[f64]) -> Vec<Support> {

@@ -44,6 +44,9 @@ pub struct DriveModel<'a> {
     pub drive: &'a Drive,
     pub sizes: &'a [MeshForceSizes],
     pub oil: &'a Oil,
+    /// Each shaft's beam made ready ([`super::shaft_bending::shaft_beam_of`]; None: a rigid beam,
+    /// or made at each pass).
+    pub beams: &'a [Option<super::shaft_beam::PreparedBeam>],
 }
 
 /// The drive at one operating point: speeds by the kinematics, the power walked through until the
@@ -246,7 +249,8 @@ impl<'a> Walk<'a> {
                 continue;
             }
             let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
-            let (reactions, bent_shaft) = support_reactions(shaft, &on, bent);
+            let beam = model.beams.get(j).and_then(Option::as_ref);
+            let (reactions, bent_shaft) = support_reactions(shaft, &on, bent, beam);
             bending[j] = bent_shaft;
             let speed = self.omega[j].abs();
             for (i, bearing) in shaft.bearings.iter().enumerate() {

@@ -165,6 +165,8 @@ pub(crate) struct DriveSetup<'a> {
     stages: Vec<StageMesh>,
     sizes: Vec<MeshForceSizes>,
     oil: crate::losses::Oil,
+    /// Each shaft's beam made ready once (a shaft with sections).
+    beams: Vec<Option<crate::drive::shaft_beam::PreparedBeam>>,
 }
 
 impl<'a> DriveSetup<'a> {
@@ -172,7 +174,15 @@ impl<'a> DriveSetup<'a> {
         let stages: Vec<StageMesh> = (0..drive.pairs.len()).map(|k| StageMesh::of(drive, k, scene)).collect();
         let sizes = stages.iter().map(StageMesh::sizes).collect();
         let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
-        DriveSetup { scene, drive, stages, sizes, oil }
+        let layout = &drive.layout;
+        let beams = (0..layout.shafts.len())
+            .map(|j| {
+                let at: Vec<f64> =
+                    layout.stages.iter().flat_map(|s| s.places).filter(|p| p.shaft == j).map(|p| p.at).collect();
+                crate::drive::shaft_bending::shaft_beam_of(&layout.shafts[j], &at)
+            })
+            .collect();
+        DriveSetup { scene, drive, stages, sizes, oil, beams }
     }
 
     /// The same drive with its oil at `kelvin`: the lubricant moved there, each mesh's tribology
@@ -200,7 +210,7 @@ impl<'a> DriveSetup<'a> {
             })
             .collect();
         let oil = self.drive.mesh(0, lubricant.as_ref()).budget_oil(&stages[0].tribology);
-        DriveSetup { scene: self.scene, drive: self.drive, stages, sizes: self.sizes.clone(), oil }
+        DriveSetup { scene: self.scene, drive: self.drive, stages, sizes: self.sizes.clone(), oil, beams: self.beams.clone() }
     }
 
     /// The ends the drive's operating block gives its torque and speed at.
@@ -246,7 +256,7 @@ impl<'a> DriveSetup<'a> {
     /// The drive at `torque` and `speed` under law `law` and `formulation`.
     pub(crate) fn point(&self, law: usize, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
         let meshes = LawMeshes { stages: &self.stages, spec: &self.scene.friction[law], formulation };
-        let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil };
+        let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil, beams: &self.beams };
         solve(&model, &meshes, torque, speed)
     }
 

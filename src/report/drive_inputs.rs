@@ -43,6 +43,31 @@ pub struct ShaftInputs {
     pub bearings: Vec<(String, usize, f64, bool)>,
     /// Each seal: lip diameter (mm), count.
     pub seals: Vec<(f64, usize)>,
+    /// A shaft with sections: the elastic beam it is solved as.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub beam: Option<ShaftBeamInputs>,
+}
+
+/// A shaft's body as the elastic beam reads it.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ShaftBeamInputs {
+    pub material: String,
+    pub youngs_modulus_gpa: f64,
+    pub poisson_ratio: f64,
+    /// "euler_bernoulli" or "timoshenko".
+    pub theory: String,
+    /// Each section: from, to, outer diameter, bore (mm).
+    pub sections_mm: Vec<[f64; 4]>,
+    /// Each bearing place: `at` (mm) and its radial stiffness (N/m; none: rigid).
+    pub supports: Vec<SupportInputs>,
+}
+
+/// A bearing place as the elastic beam reads it.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct SupportInputs {
+    pub at_mm: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radial_stiffness: Option<f64>,
 }
 
 pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
@@ -120,6 +145,22 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
                 .map(|(i, b)| (b.kind.name().to_string(), b.count, b.position.unwrap_or(0.0) * 1e3, i == s.locating))
                 .collect(),
             seals: s.seals.iter().map(|x| (x.diameter * 1e3, x.count)).collect(),
+            beam: s.body.as_ref().map(|b| ShaftBeamInputs {
+                material: b.material.clone(),
+                youngs_modulus_gpa: b.youngs_modulus * 1e-9,
+                poisson_ratio: b.poisson_ratio,
+                theory: b.theory.name().to_string(),
+                sections_mm: b.sections.iter().map(|x| [x.from, x.to, x.outer_diameter, x.bore].map(|v| v * 1e3)).collect(),
+                supports: s
+                    .bearings
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| SupportInputs {
+                        at_mm: p.position.unwrap_or(0.0) * 1e3,
+                        radial_stiffness: s.stiffness.get(i).copied().flatten(),
+                    })
+                    .collect(),
+            }),
         })
         .collect()
 }

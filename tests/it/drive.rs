@@ -443,12 +443,18 @@ fn duty_cycle_of_the_drive_balances_its_energy() {
 
 /// A drive's run in three shards, merged, is the single run: drive_records.csv byte for byte (the
 /// shards' rows in order) and every report file (the tallies folded: the count, η's range over all
-/// rows). Shards of a drive at several oil temperatures are refused with a hint.
+/// rows), for the EV reducer and for it with a lay shaft on three places (elastic shafts, their
+/// plot). Shards of a drive at several oil temperatures are refused with a hint.
 #[test]
 fn a_drive_in_shards_merges_to_the_single_run() {
-    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    shards_merge_to_the_single_run("specs/ev_reducer_three_bearing_lay_shaft.gear", "elastic");
+    shards_merge_to_the_single_run("specs/ev_two_stage_reducer.gear", "rigid");
+}
+
+fn shards_merge_to_the_single_run(spec: &str, tag: &str) {
+    let text = std::fs::read_to_string(crate::root().join(spec)).unwrap();
     let scene = gearloss::check("ev.gear", &text).unwrap();
-    let base = std::env::temp_dir().join(format!("gearloss-drive-shards-{}", std::process::id()));
+    let base = std::env::temp_dir().join(format!("gearloss-drive-shards-{tag}-{}", std::process::id()));
     let whole = gearloss::run_into("ev.gear", &text, &scene, &base.join("whole"), None, &gearloss::Quiet).unwrap();
     let mut folders = Vec::new();
     for k in [2, 1, 3] {

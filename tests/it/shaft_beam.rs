@@ -160,7 +160,7 @@ fn every_shaft_balances_forces_and_moments() {
             for k in [None, Some(3e8)] {
                 let stiffness = at.iter().enumerate().map(|(i, _)| if i == 1 { k } else { None }).collect();
                 let s = shaft(at, stiffness, Some(stepped(theory)), at.len() - 1);
-                let (r, _) = support_reactions(&s, &loads, false);
+                let (r, _) = support_reactions(&s, &loads, false, None);
                 let mut sum = [0.0; 5];
                 for l in &loads {
                     let ([x, y, z], [fx, fy, fz]) = (l.point, l.force);
@@ -188,7 +188,7 @@ fn two_places_are_the_rigid_beams_statics() {
     let statics = gearloss::drive::statics::shaft_reactions(&loads, at, 0);
     for body in [None, Some(stepped(BeamTheory::EulerBernoulli)), Some(stepped(BeamTheory::Timoshenko))] {
         let s = shaft(&at, vec![Some(2e8), None], body.clone(), 0);
-        let (r, bending) = support_reactions(&s, &loads, true);
+        let (r, bending) = support_reactions(&s, &loads, true, None);
         assert_eq!(r, statics.to_vec(), "two places take the closed form");
         assert_eq!(bending.is_some(), body.is_some());
         if let Some(body) = body {
@@ -283,7 +283,7 @@ fn the_flexibility_method_agrees_on_a_stepped_shaft() {
 fn the_largest_stress_is_located() {
     let loads = helical_loads();
     let s = shaft(&[0.02, 0.12, 0.28], vec![None; 3], Some(stepped(BeamTheory::EulerBernoulli)), 0);
-    let (reactions, bending) = support_reactions(&s, &loads, true);
+    let (reactions, bending) = support_reactions(&s, &loads, true, None);
     let b = bending.unwrap();
     let body = s.body.as_ref().unwrap();
     let mut items = gearloss::drive::shaft_beam::plane_loads(&loads);

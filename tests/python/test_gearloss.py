@@ -357,6 +357,21 @@ def test_replace_with_a_bad_number_says_what_is_wrong(value, said):
     assert not any(m.endswith("but the value has no unit") for m in messages), messages
 
 
+def test_a_drive_with_an_elastic_shaft_as_tables():
+    """The EV reducer with its lay shaft on three places: the bearings table has all seven places
+    at each of the six rows, the lay shaft's three among them, and the places' losses add up to
+    the records' bearing columns (1e-9)."""
+    report = gearloss.run(scene(ROOT / "specs/ev_reducer_three_bearing_lay_shaft.gear"))
+    bearings, records = report.bearings, report.drive_records
+    assert len(bearings) == 7 * 6
+    assert {p for p in bearings["place"] if p.startswith("lay_")} == {"lay_1", "lay_2", "lay_3"}
+    for row, r in records.set_index("row").iterrows():
+        places = bearings[bearings["row"] == row]
+        got = places["no_load_W"].sum() + places["load_W"].sum()
+        want = r["bearings_no_load_W"] + r["bearings_load_W"]
+        assert abs(got - want) <= 1e-9 * abs(want)
+
+
 def test_a_drive_as_tables():
     """A drive of several stages (the EV reducer): drive_records with a row per point, law and
     formulation, and the long tables per stage, shaft and bearing place, whose parts add up to the

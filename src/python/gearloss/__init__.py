@@ -382,7 +382,7 @@ class Report:
 
     @property
     def bearings(self):
-        """Per record row and bearing place (``shaft_place``, the place 1 or 2 of its shaft): the
+        """Per record row and bearing place (``shaft_place``, the places numbered 1, 2, … along their shaft as the scene lists them): the
         radial and axial load per bearing (N) and the place's P_0 and P_1 (W)."""
         names = [f"{s['name']}_{i + 1}" for s in self.data.get("shafts", []) for i in range(len(s["bearings"]))]
         cols = ["radial_N", "axial_N", "no_load_W", "load_W"]

@@ -145,7 +145,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
             md!(out, "");
         }
     }
-    model(&mut out);
+    model(&mut out, r);
     out
 }
 
@@ -296,6 +296,7 @@ fn inputs(out: &mut String, r: &DriveReport) {
         let seals: Vec<String> = s.seals.iter().map(|(d, n)| format!("{} × {n}", fixed(*d, 1))).collect();
         row(out, &[s.name.clone(), s.role.clone(), places.join("; "), locating, seals.join("; ")]);
     }
+    super::shaft_bending::inputs(out, r);
     md!(out, "\n## Oil (one sump)\n");
     header(out, &["value", "", "unit"]);
     for (what, v, unit) in &r.oil {
@@ -384,11 +385,14 @@ fn duty(out: &mut String, r: &DriveReport) {
     }
 }
 
-fn model(out: &mut String) {
+fn model(out: &mut String, r: &DriveReport) {
     md!(out, "## How these numbers are found\n");
     md!(out, "- **Kinematics**: the input turns counter-clockwise about +z (a given output speed is a magnitude); an external mesh reverses the sense, ω_wheel = −ω_pinion z_pinion/z_wheel.");
     md!(out, "- **Power walk**: from the source (input in drive, output in coast) each shaft passes on what it receives less its own bearings, seals and the no-load parts of the stages whose pinion it carries; each stage passes on η_mesh times its driving gear's power, η_mesh = 1 − P_mesh/(T ω) of the law at the driving gear's torque, the driving gear in the pinion's role (the pair with roles swapped where the wheel drives). Given the sink's torque, the walk runs back from it.");
     md!(out, "- **Mesh forces**: F_t = T/r_w, F_r = F_t tan α_wt, F_a = T tan β/r of the driving gear, at the contact point on the line of centres; the axial force on a right-hand driving gear turning counter-clockwise points along +z, and flips with the hand, the sense and on the driven gear.");
     md!(out, "- **Statics**: each shaft a rigid beam on its two bearing places; five equations give the places' reactions (the axial force all at the locating place); a place's radial load per bearing is |(R_x, R_y)|/count.");
+    if r.shafts.iter().any(|s| s.beam.is_some()) {
+        md!(out, "- **Elastic shafts**: a shaft with sections is a beam (Euler–Bernoulli, or Timoshenko with Cowper's shear coefficient) bent in both transverse planes by its gears' forces and the couples of their axial forces, on rigid or sprung places; on two places its reactions are the rigid beam's statics, on more the beam's (the outer two from equilibrium); the bending moment comes from the loads and reactions, the largest σ_b = |M|/W at one-sided limits at every node; the mesh misalignment is b × the gears' relative tilt on the line of action (reported, not fed back).");
+    }
     md!(out, "- **Fixed point**: the walk is repeated with the bearing loads of the previous pass until no driving torque moves by more than 1e-12 relative (the passes are reported).");
 }

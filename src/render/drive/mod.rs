@@ -1,6 +1,6 @@
 //! The files of a drive's report folder: report.md ([`markdown`]), report.json (the serde data),
-//! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off)
-//! and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
+//! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off),
+//! with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
 //! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
 
 pub(crate) mod cycle;
@@ -11,6 +11,7 @@ pub mod oil_sweep;
 pub(crate) mod planetary;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
+pub(crate) mod shaft_bending;
 
 use crate::render::RenderedReport;
 use crate::report::drive::DriveReport;
@@ -34,6 +35,9 @@ pub fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
     }
     if !report.maps.is_empty() {
         files.push((loss_map::FILE.to_string(), loss_map::loss_map(report)?));
+    }
+    if let Some(svg) = shaft_bending::moments(report) {
+        files.push((shaft_bending::FILE.to_string(), svg?));
     }
     if let Some(c) = &report.cycle {
         files.push((crate::report::drive_cycle_series::FILE.to_string(), c.series.to_csv()));

@@ -124,6 +124,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
         }
     }
     md!(out);
+    super::shaft_bending::point(out, d);
     header(out, &["shaft", "gear", "point x, y, z (mm)", "force F_x, F_y, F_z (N)"]);
     for s in &d.shafts {
         for l in &s.gear_loads {
