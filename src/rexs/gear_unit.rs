@@ -93,12 +93,6 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     if !others.is_empty() {
         unit.warnings.push(format!("not imported (gearloss has no use for them): {}", others.join(", ")));
     }
-    let sections = model.of_kind("shaft_section").count();
-    if sections > 0 {
-        unit.warnings.push(format!(
-            "not imported: {sections} shaft sections (diameters, stiffness): gearloss's shafts are rigid beams on two bearing places"
-        ));
-    }
     Ok(unit)
 }
 

@@ -36,6 +36,8 @@ pub(crate) struct ShaftData {
     pub input: bool,
     pub output: bool,
     pub bearings: Vec<BearingData>,
+    /// Its sections when they make a beam over its gears and bearings (empty: the rigid beam).
+    pub sections: Vec<super::shaft_sections::SectionData>,
 }
 
 /// REXS `bearing_type` → gearloss's type.
@@ -84,6 +86,22 @@ pub(crate) fn read_shafts(
             && loads(id)
                 .any(|l| flag(l, &["transmits_torque"]) == Some(true) && flag(l, &["defines_torque"]) != Some(true));
         let bearings = read_bearings(model, c, warnings)?;
+        let mut points: Vec<f64> = bearings.iter().map(|b| b.at).collect();
+        points.extend(stages.iter().flat_map(|s| &s.gears).filter(|g| g.shaft == id).map(|g| g.at));
+        let sections = match super::shaft_sections::read_sections(model, c, &points, warnings)? {
+            Ok(s) => s,
+            Err(why) if bearings.len() > 2 => {
+                return Err(RexsError::at(
+                    c,
+                    format!("it sits on {} bearing places, and its sections do not make a beam: {why}", bearings.len()),
+                    "on three or more places the shaft is an elastic beam: export its shaft sections, joined end to end over every gear and bearing",
+                ))
+            }
+            Err(why) => {
+                warnings.push(format!("{}: its sections are not imported ({why}); the shaft is a rigid beam on its two places", describe(c)));
+                Vec::new()
+            }
+        };
         out.push(ShaftData {
             id,
             name: c.name.clone(),
@@ -91,6 +109,7 @@ pub(crate) fn read_shafts(
             input,
             output,
             bearings,
+            sections,
         });
     }
     for (what, count) in [
@@ -193,11 +212,11 @@ fn read_bearings(
         });
     }
     out.sort_by(|a, b| a.at.total_cmp(&b.at));
-    if out.len() != 2 {
+    if out.len() < 2 {
         return Err(RexsError::at(
             shaft,
-            format!("it sits on {} bearings; gearloss's shaft statics takes two bearing places", out.len()),
-            "gearloss imports shafts on two bearings (or two places of several bearings each)",
+            format!("it sits on {} bearings; a shaft needs two bearing places or more", out.len()),
+            "export every bearing of the shaft (a `side` relation with the shaft as its inner part)",
         ));
     }
     if !out.iter().any(|b| b.locating) {

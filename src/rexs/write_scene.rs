@@ -129,6 +129,17 @@ fn shaft(w: &mut String, sh: &ShaftData) {
         n(sh.origin[1]),
         n(sh.origin[2])
     );
+    for x in &sh.sections {
+        let bore = if x.bore > 0.0 { format!(", bore = {} mm", n(x.bore)) } else { String::new() };
+        let _ = writeln!(
+            w,
+            "            section(from = {} mm, to = {} mm, diameter = {} mm{bore})  # REXS shaft_section {}",
+            n(x.from),
+            n(x.to),
+            n(x.outer_diameter),
+            x.id
+        );
+    }
     for b in &sh.bearings {
         let c0 = b.static_load_rating.map_or_else(String::new, |c| format!(", static_load_rating = {} kN", n(c)));
         let locating = if b.locating { ", locating" } else { "" };

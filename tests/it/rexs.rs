@@ -167,6 +167,62 @@ fn a_model_without_oil_gets_a_chosen_one_and_runs() {
     gearloss::run_to_files(name, scene).unwrap_or_else(|e| panic!("{e}"));
 }
 
+/// Every `shaft_section` of the XML examples (start, length, outer and inner diameters, read here
+/// with a plain XML parser) is a section of its shaft in the checked scene, and every shaft's
+/// sections are exactly the file's.
+#[test]
+fn shaft_sections_become_the_shafts_sections() {
+    for name in [CYLINDRICAL[0], CYLINDRICAL[2], "constructs/three_bearings_on_a_shaft.rexs"] {
+        let text = std::fs::read_to_string(rexs(name)).unwrap();
+        let doc = roxmltree::Document::parse(text.trim_start_matches('\u{feff}')).unwrap();
+        let value = |c: roxmltree::Node, id: &str| -> f64 {
+            c.children().find(|a| a.attribute("id") == Some(id)).unwrap().text().unwrap().trim().parse().unwrap()
+        };
+        let mut want: BTreeMap<u64, Vec<[f64; 4]>> = BTreeMap::new();
+        for r in doc.descendants().filter(|n| n.has_tag_name("relation") && n.attribute("type") == Some("assembly")) {
+            let role = |role: &str| r.children().find(|x| x.attribute("role") == Some(role));
+            let (Some(shaft), Some(part)) = (role("assembly"), role("part")) else { continue };
+            if part.attribute("hint") != Some("shaft_section") {
+                continue;
+            }
+            let id = part.attribute("id").unwrap();
+            let c = doc.descendants().find(|n| n.has_tag_name("component") && n.attribute("id") == Some(id)).unwrap();
+            let from = value(c, "u_coordinate_on_shaft");
+            let section = [from, from + value(c, "length"), value(c, "outer_diameter_begin"), value(c, "inner_diameter_begin")];
+            want.entry(shaft.attribute("id").unwrap().parse().unwrap()).or_default().push(section.map(|x| x * 1e-3));
+        }
+        let scene = gearloss::check(name, &import(name).scene).unwrap_or_else(|e| panic!("{e}"));
+        let layout = &scene.drive.as_ref().unwrap().layout;
+        assert_eq!(want.len(), layout.shafts.len(), "{name}");
+        for (id, mut sections) in want {
+            sections.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            let shaft = layout.shafts.iter().find(|s| s.name == format!("shaft_{id}")).unwrap();
+            let body = shaft.body.as_ref().unwrap_or_else(|| panic!("{name}: shaft {id} has no sections"));
+            let got: Vec<[f64; 4]> = body.sections.iter().map(|x| [x.from, x.to, x.outer_diameter, x.bore]).collect();
+            for (g, w) in got.iter().zip(&sections) {
+                assert!(g.iter().zip(w).all(|(a, b)| (a - b).abs() < 1e-15), "{name} shaft {id}: {g:?} vs {w:?}");
+            }
+            assert_eq!(got.len(), sections.len());
+        }
+    }
+}
+
+/// A shaft on three bearing places (the 1.4 model with an NU 216 added between the lay shaft's
+/// gears) imports with its sections and runs as an elastic beam: the report shows its bending.
+#[test]
+fn a_shaft_on_three_places_imports_and_runs() {
+    let name = "constructs/three_bearings_on_a_shaft.rexs";
+    let imported = import(name);
+    let scene = gearloss::check(name, &imported.scene).unwrap_or_else(|e| panic!("{e}"));
+    let lay = &scene.drive.as_ref().unwrap().layout.shafts.iter().find(|s| s.name == "shaft_13").unwrap();
+    assert_eq!(lay.bearings.len(), 3);
+    assert!(lay.body.is_some());
+    let files = gearloss::run_to_files(name, &imported.scene).unwrap_or_else(|e| panic!("{e}"));
+    let md = &files.files.iter().find(|(f, _)| f == "report.md").unwrap().1;
+    assert!(md.contains("## Shaft sections (elastic beams)") && md.contains("| shaft_13 | 130.00 |"), "{md}");
+    assert!(files.files.iter().any(|(f, _)| f == "shaft_moments.svg"));
+}
+
 /// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
 #[test]
 fn xml_and_json_of_one_model_give_one_scene() {
