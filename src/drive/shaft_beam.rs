@@ -336,16 +336,3 @@ fn balance_outer(supports: &[Support], loads: &[PlaneLoad], reactions: &mut [[f6
         reactions[a][p] = -s0 - rb;
     }
 }
-
-/// Each plane's loads of a shaft from its gears' force vectors: the transverse force at the gear's
-/// `at`, and the axial force's couple at its point (x, y): −x F_z in the x–z plane, −y F_z in the
-/// y–z plane.
-pub fn plane_loads(loads: &[super::forces::GearLoad]) -> Vec<PlaneLoad> {
-    loads
-        .iter()
-        .map(|l| {
-            let ([x, y, z], [fx, fy, fz]) = (l.point, l.force);
-            PlaneLoad { at: z, force: [fx, fy], couple: [-x * fz, -y * fz] }
-        })
-        .collect()
-}

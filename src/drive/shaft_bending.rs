@@ -15,7 +15,7 @@ use serde::{Deserialize, Serialize};
 
 use super::forces::GearLoad;
 use super::layout::{Member, Shaft};
-use super::shaft_beam::{plane_loads, solve, BeamSolution, BeamTheory, PlaneLoad, PreparedBeam, Support};
+use super::shaft_beam::{solve, BeamSolution, BeamTheory, PlaneLoad, PreparedBeam, Support};
 
 /// A gear on its bent shaft.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -182,4 +182,17 @@ pub fn mesh_misalignment(face_width: f64, pinion: &GearDeflection, wheel: &GearD
     let e = [force[0] / norm, force[1] / norm];
     let d = [pinion.slope[0] - wheel.slope[0], pinion.slope[1] - wheel.slope[1]];
     (face_width * (d[0] * e[0] + d[1] * e[1])).abs()
+}
+
+/// Each plane's loads of a shaft from its gears' force vectors: the transverse force at the gear's
+/// `at`, and the axial force's couple at its point (x, y): −x F_z in the x–z plane, −y F_z in the
+/// y–z plane.
+pub fn plane_loads(loads: &[GearLoad]) -> Vec<PlaneLoad> {
+    loads
+        .iter()
+        .map(|l| {
+            let ([x, y, z], [fx, fy, fz]) = (l.point, l.force);
+            PlaneLoad { at: z, force: [fx, fy], couple: [-x * fz, -y * fz] }
+        })
+        .collect()
 }

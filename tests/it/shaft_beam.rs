@@ -192,7 +192,7 @@ fn two_places_are_the_rigid_beams_statics() {
         assert_eq!(r, statics.to_vec(), "two places take the closed form");
         assert_eq!(bending.is_some(), body.is_some());
         if let Some(body) = body {
-            let planes = gearloss::drive::shaft_beam::plane_loads(&loads);
+            let planes = gearloss::drive::shaft_bending::plane_loads(&loads);
             let beam = solve(&body, &[Support { at: 0.02, stiffness: Some(2e8) }, Support { at: 0.28, stiffness: None }], &planes).unwrap();
             for (a, b) in beam.reactions.iter().zip(&statics) {
                 assert!((a[0] - b[0]).abs() < 1e-12 * 12600.0 && (a[1] - b[1]).abs() < 1e-12 * 12600.0);
@@ -286,7 +286,7 @@ fn the_largest_stress_is_located() {
     let (reactions, bending) = support_reactions(&s, &loads, true, None);
     let b = bending.unwrap();
     let body = s.body.as_ref().unwrap();
-    let mut items = gearloss::drive::shaft_beam::plane_loads(&loads);
+    let mut items = gearloss::drive::shaft_bending::plane_loads(&loads);
     items.extend([0.02, 0.12, 0.28].iter().zip(&reactions).map(|(&at, r)| force(at, r[0], r[1])));
     let moment = |z: f64| {
         let mut m = [0.0; 2];
