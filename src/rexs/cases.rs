@@ -80,9 +80,10 @@ fn in_case(c: &Component, case: Option<&[Attribute]>) -> Component {
 }
 
 /// A case's share of the operating time (0–1): `operating_time_fraction` in % (REXS ≥ 1.3), or
-/// `load_duration_fraction` as a fraction (≤ 1.2; Bearinx writes it in 1.4 too, in %).
+/// `load_duration_fraction` as a fraction (≤ 1.2; Bearinx writes it in 1.4 too, in %), or a
+/// tool's `custom_load_duration_fraction` (the same reading).
 fn share(unit: &Component) -> Option<f64> {
-    let a = unit.attribute(&["operating_time_fraction", "load_duration_fraction"])?;
+    let a = unit.attribute(&["operating_time_fraction", "load_duration_fraction", "custom_load_duration_fraction"])?;
     let super::model::AttributeValue::Number(x) = a.value else { return None };
     Some(if a.unit.as_deref() == Some("%") { x / 100.0 } else { x })
 }
@@ -111,10 +112,20 @@ pub(crate) fn read_cases(
         if model.load_cases.is_empty() { vec![None] } else { model.load_cases.iter().map(Some).collect() };
     let mut out = Vec::new();
     let mut forces = false;
+    let mut powered = false;
     for case in cases {
         let of = |c: &Component| in_case(c, case.and_then(|k| k.components.get(&c.id)).map(Vec::as_slice));
         let speed = required(&of(shaft), &["rotational_speed"], Kind::Speed)?;
-        let torque = required(&of(torque_load), &["torque_around_u_axis"], Kind::Torque)?;
+        let load = of(torque_load);
+        let torque = match (quantity(&load, &["torque_around_u_axis"], Kind::Torque)?, quantity(&load, &["power"], Kind::Power)?) {
+            (Some(t), _) => t,
+            // A load given as power at the input's speed: T = P/ω (P in kW, n in rpm).
+            (None, Some(p)) if speed != 0.0 => {
+                powered = true;
+                p * 1e3 / (speed.abs() * std::f64::consts::PI / 30.0)
+            }
+            _ => required(&load, &["torque_around_u_axis"], Kind::Torque)?,
+        };
         let fraction = unit.map(&of).and_then(|u| share(&u));
         let oil = match casing.map(&of) {
             Some(c) => quantity(&c, &["temperature_lubricant"], Kind::Temperature)?,
@@ -134,6 +145,19 @@ pub(crate) fn read_cases(
             oil_temperature: oil,
             fraction,
         });
+    }
+    if powered {
+        warnings.push(format!(
+            "{}: its load is given as power: the torque is P/ω at the input's speed in each case",
+            describe(torque_load)
+        ));
+    }
+    if out.len() > 1 && out.iter().any(|c| c.fraction.is_none()) {
+        let missing: Vec<String> = out.iter().filter(|c| c.fraction.is_none()).map(|c| c.id.to_string()).collect();
+        warnings.push(format!(
+            "load case(s) {} give no share of the operating time: those without one share what the others leave equally (chosen)",
+            missing.join(", ")
+        ));
     }
     if forces {
         warnings.push("not imported: the external loads' forces and bending moments on the shaft ends (gearloss loads its shafts by the meshes only)".into());

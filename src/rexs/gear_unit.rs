@@ -22,10 +22,29 @@ const READ: &[&str] = &[
     "cylindrical_stage_gear_data",
     "stage_gear_data",
     "rolling_bearing_with_catalog_geometry",
+    "rolling_bearing_with_detailed_geometry",
     "concept_bearing",
     "external_load",
     "lubricant",
     "material",
+];
+
+/// Component types of stages and parts gearloss does not model, refused by name with what they are.
+const UNMODELLED: &[(&str, &str)] = &[
+    ("bevel_stage", "a bevel or hypoid stage"),
+    ("bevel_gear", "a bevel or hypoid gear"),
+    ("worm_stage", "a worm stage"),
+    ("worm_gear", "a worm"),
+    ("worm_wheel", "a worm wheel"),
+    ("switchable_coupling", "a shiftable coupling: a unit with gears to shift"),
+];
+
+/// Shaft–hub connections: a gear sits on its shaft through one (a `side` relation).
+pub(crate) const HUB_CONNECTIONS: &[&str] = &[
+    "feather_key_connection",
+    "cylindrical_interference_fit",
+    "tapered_interference_fit",
+    "involute_spline_connection",
 ];
 
 /// What the scene is written from.
@@ -68,6 +87,17 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
             "import a gear unit of cylindrical stages on parallel shafts",
         ));
     }
+    let unmodelled: Vec<String> = model
+        .components
+        .values()
+        .filter_map(|c| UNMODELLED.iter().find(|(k, _)| *k == c.kind).map(|(_, what)| format!("{} ({what})", describe(c))))
+        .collect();
+    if !unmodelled.is_empty() {
+        return Err(RexsError::new(
+            format!("the model has what gearloss does not model yet: {}", unmodelled.join("; ")),
+            "gearloss imports gear units of cylindrical stages on parallel shafts (and, later, simple planetary stages)",
+        ));
+    }
     let mut unit =
         GearUnit { version: model.version.clone(), application: model.application.clone(), ..Default::default() };
     for c in model.of_kind("cylindrical_stage") {
@@ -86,7 +116,7 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     let mut others: Vec<String> = model
         .components
         .values()
-        .filter(|c| !READ.contains(&c.kind.as_str()) && c.kind != "shaft_section")
+        .filter(|c| !READ.contains(&c.kind.as_str()) && !HUB_CONNECTIONS.contains(&c.kind.as_str()) && c.kind != "shaft_section")
         .map(|c| c.kind.clone())
         .collect();
     others.dedup();
@@ -156,12 +186,14 @@ fn read_stage(model: &RexsModel, c: &Component, warnings: &mut Vec<String>) -> R
     // the pinion's shaft to the wheel's, measured from +v towards +w.
     let from_first = 90.0 - phi;
     let direction = normalise(if pinion_first { from_first } else { from_first + 180.0 });
-    let gears = if pinion_first { [g1, g2] } else { [g2, g1] };
+    let mut gears = if pinion_first { [g1, g2] } else { [g2, g1] };
+    let center_distance = quantity(c, &["center_distance"], Kind::Length)?;
+    super::profile_shift::derive_missing(c, &mut gears, center_distance, warnings);
     Ok(StageData {
         id: c.id,
         name: c.name.clone(),
         gears,
-        center_distance: quantity(c, &["center_distance"], Kind::Length)?,
+        center_distance,
         direction,
         face_width,
     })
@@ -201,20 +233,30 @@ fn read_gear(model: &RexsModel, g: &Component, warnings: &mut Vec<String>) -> Re
             "export the gear's flank geometry",
         )
     })?;
-    let profile_shift = on_flank(&["addendum_modification_coefficient"], Kind::Number)?.unwrap_or(0.0);
+    let given_shift = on_flank(&["addendum_modification_coefficient"], Kind::Number)?;
+    let profile_shift = given_shift.unwrap_or(0.0);
+    let is_shaft = |id: Option<u64>| id.and_then(|id| model.components.get(&id)).is_some_and(|c| c.kind == "shaft");
+    // A gear is a part of its shaft (`assembly`), or sits on it through a shaft–hub connection (a
+    // `side` relation: the connection the assembly, the shaft its inner part, the gear its outer).
     let shaft = model
         .relations
         .iter()
-        .find(|r| {
-            r.kind == "assembly"
-                && r.role("part") == Some(g.id)
-                && model.components.get(&r.role("assembly").unwrap_or(0)).is_some_and(|c| c.kind == "shaft")
-        })
+        .find(|r| r.kind == "assembly" && r.role("part") == Some(g.id) && is_shaft(r.role("assembly")))
         .and_then(|r| r.role("assembly"))
+        .or_else(|| {
+            model
+                .relations
+                .iter()
+                .find(|r| r.kind == "side" && r.role("outer_part") == Some(g.id) && is_shaft(r.role("inner_part")))
+                .and_then(|r| r.role("inner_part"))
+        })
         .ok_or_else(|| {
-            RexsError::at(g, "no `assembly` relation puts it on a shaft", "every gear is a part of its shaft")
+            RexsError::at(g, "no `assembly` relation, and no shaft–hub connection (`side`), puts it on a shaft", "every gear is a part of its shaft, or sits on it through a connection")
         })?;
-    let at = quantity(g, &["u_coordinate_on_shaft"], Kind::Length)?;
+    // REXS 1.0 gives a gear's `u_coordinate_on_shaft` at its face start; later versions at its
+    // mid-plane, which gearloss's `at` is.
+    let face_start = model.version == "1.0";
+    let at = quantity(g, &["u_coordinate_on_shaft"], Kind::Length)?.map(|u| if face_start { u + 0.5 * face_width } else { u });
     let from_vectors = match (
         super::units::vector(g, "support_vector"),
         super::units::vector(&model.components[&shaft], "support_vector"),
@@ -255,6 +297,8 @@ fn read_gear(model: &RexsModel, g: &Component, warnings: &mut Vec<String>) -> Re
         face_width,
         pressure_angle,
         profile_shift,
+        profile_shift_given: given_shift.is_some(),
+        profile_shift_note: None,
         tip_diameter,
         shaft,
         at,

@@ -16,6 +16,7 @@ pub(crate) mod cases;
 pub(crate) mod formats;
 pub(crate) mod gear_unit;
 pub(crate) mod model;
+pub(crate) mod profile_shift;
 pub(crate) mod shaft_sections;
 pub(crate) mod shafts;
 pub(crate) mod stage_data;

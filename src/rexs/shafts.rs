@@ -54,6 +54,24 @@ const TYPES: &[(&str, &str)] = &[
     ("radial_self_aligning_roller_bearing", "spherical_roller"),
 ];
 
+/// REXS bearing types gearloss has no type of its own for: the type whose Palmgren factors stand
+/// in (chosen, said).
+const STAND_INS: &[(&str, &str)] = &[
+    ("radial_needle_roller_bearing", "cylindrical_roller"),
+    ("crossed_roller_bearing", "cylindrical_roller"),
+    ("radial_self_aligning_ball_bearing", "deep_groove_ball"),
+];
+
+/// Thrust bearings (REXS `axial_*`): they take no radial load, so they are no bearing place of the
+/// shaft's beam; the shaft's axial force goes to its locating place (said).
+fn is_thrust(bearing_type: Option<&str>, b: &Component) -> bool {
+    bearing_type.is_some_and(|t| t.starts_with("axial_")) || flag(b, &["radial_force_absorption"]) == Some(false)
+}
+
+/// Component types that are rolling bearings.
+const BEARING_KINDS: &[&str] =
+    &["rolling_bearing_with_catalog_geometry", "rolling_bearing_with_detailed_geometry", "concept_bearing"];
+
 pub(crate) fn read_shafts(
     model: &RexsModel,
     stages: &[StageData],
@@ -144,8 +162,18 @@ fn read_bearings(
     let mut out = Vec::new();
     for r in model.relations_with("side", "inner_part", shaft.id) {
         let Some(b) = r.role("assembly").map(|id| &model.components[&id]) else { continue };
-        if !matches!(b.kind.as_str(), "rolling_bearing_with_catalog_geometry" | "concept_bearing") {
+        if super::gear_unit::HUB_CONNECTIONS.contains(&b.kind.as_str()) {
+            continue;
+        }
+        if !BEARING_KINDS.contains(&b.kind.as_str()) {
             warnings.push(format!("{}: a bearing of this type is not imported", describe(b)));
+            continue;
+        }
+        if is_thrust(text(b, &["bearing_type"]), b) {
+            warnings.push(format!(
+                "{}: a thrust bearing takes no radial load: it is no bearing place of shaft {}; the shaft's axial force goes to its locating place, and the thrust bearing's own loss is not counted",
+                describe(b), shaft.id
+            ));
             continue;
         }
         if let Some(other) = r.role("outer_part").map(|id| &model.components[&id]).filter(|o| o.kind == "shaft") {
@@ -156,9 +184,16 @@ fn read_bearings(
         }
         let designation = designation(b);
         let kind = match text(b, &["bearing_type"]) {
-            Some(t) => TYPES.iter().find(|(r, _)| *r == t).map(|(_, g)| *g).ok_or_else(|| {
-                RexsError::at(b, format!("its `bearing_type` `{t}` has no gearloss type"), "gearloss's types: deep groove ball, angular contact ball, cylindrical, tapered and spherical roller")
-            })?,
+            Some(t) => match (TYPES.iter().find(|(r, _)| *r == t), STAND_INS.iter().find(|(r, _)| *r == t)) {
+                (Some((_, g)), _) => *g,
+                (None, Some((_, g))) => {
+                    warnings.push(format!("{}: a `{t}` is modelled as a {g} bearing (its Palmgren factors; chosen)", describe(b)));
+                    *g
+                }
+                (None, None) => {
+                    return Err(RexsError::at(b, format!("its `bearing_type` `{t}` has no gearloss type"), "gearloss's types: deep groove ball, angular contact ball, cylindrical, tapered and spherical roller (needle, crossed roller and self-aligning ball bearings stand in as one of them)"))
+                }
+            },
             None if designation.starts_with("K ") => "cylindrical_roller",
             None if designation.starts_with("33") || designation.starts_with("32") || designation.starts_with("30") => "tapered_roller",
             None if designation.starts_with('6') => "deep_groove_ball",

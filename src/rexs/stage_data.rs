@@ -11,6 +11,9 @@ pub(crate) struct GearData {
     pub face_width: f64,
     pub pressure_angle: f64,
     pub profile_shift: f64,
+    /// Whether the model gives x, and how x was found when it does not (a `chosen:` note).
+    pub profile_shift_given: bool,
+    pub profile_shift_note: Option<String>,
     /// d_a (mm) when given and plausible.
     pub tip_diameter: Option<f64>,
     pub shaft: u64,

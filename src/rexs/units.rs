@@ -26,6 +26,8 @@ pub(crate) enum Kind {
     Temperature,
     /// h
     Hours,
+    /// kW
+    Power,
     /// a plain number
     Number,
 }
@@ -42,6 +44,7 @@ impl Kind {
             Kind::Density => "a density",
             Kind::Temperature => "a temperature",
             Kind::Hours => "a time",
+            Kind::Power => "a power",
             Kind::Number => "a plain number",
         }
     }
@@ -74,6 +77,11 @@ fn factor(unit: &str, kind: Kind) -> Option<f64> {
         },
         Kind::Temperature => matches!(u, "C" | "°C" | "degC").then_some(1.0),
         Kind::Hours => matches!(u, "h").then_some(1.0),
+        Kind::Power => match u {
+            "kW" => Some(1.0),
+            "W" => Some(1e-3),
+            _ => None,
+        },
         Kind::Number => plain.then_some(1.0),
     }
 }

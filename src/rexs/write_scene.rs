@@ -97,12 +97,13 @@ fn stage(w: &mut String, st: &StageData) {
         let tip = gear.tip_diameter.map_or_else(String::new, |d| format!("  tip_diameter = {} mm", n(d)));
         let _ = writeln!(
             w,
-            "            {role} {{ teeth = {}  shaft = {}  at = {} mm  profile_shift = {}{tip}  material = steel  roughness_ra = 0.8 um }}  # REXS cylindrical_gear {}; chosen: roughness",
+            "            {role} {{ teeth = {}  shaft = {}  at = {} mm  profile_shift = {}{tip}  material = steel  roughness_ra = 0.8 um }}  # REXS cylindrical_gear {}; chosen: roughness{}",
             gear.teeth,
             shaft_name(gear.shaft),
             n(gear.at),
             n(gear.profile_shift),
-            gear.id
+            gear.id,
+            gear.profile_shift_note.as_ref().map_or_else(String::new, |note| format!("; chosen: {note}"))
         );
     }
     let _ = writeln!(w, "        }}");
@@ -199,10 +200,14 @@ fn cases(w: &mut String, unit: &GearUnit) {
             Some(h) => (h, format!("the unit's operating time, {} h", n(h))),
             None => (1.0, "chosen: 1 h, the model gives no operating time".to_string()),
         };
+        // Cases without a share divide what the others leave equally (all of it when none has one).
+        let missing = unit.cases.iter().filter(|c| c.fraction.is_none()).count().max(1) as f64;
+        let given: f64 = unit.cases.iter().filter_map(|c| c.fraction).sum();
+        let left_over = (1.0 - given).max(0.0) / missing;
         let _ = writeln!(w, "    # One step per load case in file order, its duration its share of {note}.");
         let _ = writeln!(w, "    duty_cycle \"load spectrum\" {{");
         for c in &unit.cases {
-            let share = c.fraction.unwrap_or(1.0 / unit.cases.len() as f64);
+            let share = c.fraction.unwrap_or(left_over);
             let _ = writeln!(
                 w,
                 "        step(duration = {} h, input_torque = {} N*m, input_speed = {} rpm)  # REXS load case {}",
