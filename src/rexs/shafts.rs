@@ -24,6 +24,8 @@ pub(crate) struct BearingData {
     pub locating: bool,
     /// Where the sizes came from, in words.
     pub sizes_from: String,
+    /// C₀ was estimated (chosen).
+    pub c0_estimated: bool,
 }
 
 /// A shaft of the drive.
@@ -194,10 +196,16 @@ fn read_bearings(
                     return Err(RexsError::at(b, format!("its `bearing_type` `{t}` has no gearloss type"), "gearloss's types: deep groove ball, angular contact ball, cylindrical, tapered and spherical roller (needle, crossed roller and self-aligning ball bearings stand in as one of them)"))
                 }
             },
-            None if designation.starts_with("K ") => "cylindrical_roller",
-            None if designation.starts_with("33") || designation.starts_with("32") || designation.starts_with("30") => "tapered_roller",
-            None if designation.starts_with('6') => "deep_groove_ball",
-            None => return Err(RexsError::at(b, format!("it gives no `bearing_type`, and its designation `{designation}` names none"), "export the bearing with its type")),
+            None => match super::bearing_sizes::type_of(&designation) {
+                Some(t) => t,
+                None => {
+                    warnings.push(format!(
+                        "{}: it gives no `bearing_type` and its designation `{designation}` names none: a deep groove ball bearing (chosen)",
+                        describe(b)
+                    ));
+                    "deep_groove_ball"
+                }
+            },
         };
         let table = super::bearing_sizes::sizes(&designation);
         let given = (quantity(b, &["inner_diameter"], Kind::Length)?, quantity(b, &["outer_diameter"], Kind::Length)?);
@@ -215,14 +223,18 @@ fn read_bearings(
         if sizes_from != "the model" {
             warnings.push(format!("{}: d = {bore} mm, D = {outside} mm {sizes_from}", describe(b)));
         }
-        let c0 = quantity(b, &["radial_static_load_rating", "static_capacity"], Kind::Force)?
+        let mut c0 = quantity(b, &["radial_static_load_rating", "static_capacity"], Kind::Force)?
             .or(table.as_ref().and_then(|s| s.static_load_rating));
-        if kind == "deep_groove_ball" && c0.is_none() {
-            return Err(RexsError::at(
-                b,
-                "`radial_static_load_rating` is missing",
-                "a ball bearing's load-dependent loss needs its C_0: export it",
+        let needs_c0 = matches!(kind, "deep_groove_ball" | "angular_contact_ball" | "spherical_roller");
+        let c0_estimated = needs_c0 && c0.is_none();
+        if c0_estimated {
+            let e = (super::bearing_sizes::estimated_static_rating(kind, bore, outside) * 10.0).round() / 10.0;
+            warnings.push(format!(
+                "{}: no `radial_static_load_rating`: C_0 = {} kN estimated from d and D (ISO 76's f_0 Z D_w² with the balls' size and count estimated; chosen)",
+                describe(b),
+                crate::numerics::rounding::sig(e)
             ));
+            c0 = Some(e);
         }
         let at = quantity(b, &["u_coordinate_on_shaft_inner_side", "u_coordinate_on_shaft"], Kind::Length)?
             .ok_or_else(|| {
@@ -244,6 +256,7 @@ fn read_bearings(
             locating: axial == "both_directions",
             axial,
             sizes_from,
+            c0_estimated,
         });
     }
     out.sort_by(|a, b| a.at.total_cmp(&b.at));

@@ -146,7 +146,7 @@ fn shaft(w: &mut String, sh: &ShaftData) {
         let locating = if b.locating { ", locating" } else { "" };
         let _ = writeln!(
             w,
-            "            bearing(type = {}, bore = {} mm, outside = {} mm{c0}, at = {} mm{locating})  # REXS {} `{}`, axial: {}; sizes from {}",
+            "            bearing(type = {}, bore = {} mm, outside = {} mm{c0}, at = {} mm{locating})  # REXS {} `{}`, axial: {}; sizes from {}{}",
             b.kind,
             n(b.bore),
             n(b.outside),
@@ -154,7 +154,8 @@ fn shaft(w: &mut String, sh: &ShaftData) {
             b.id,
             b.designation,
             b.axial,
-            if b.sizes_from == "the model" { "the model" } else { "its designation" }
+            if b.sizes_from == "the model" { "the model" } else { "its designation" },
+            if b.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" }
         );
     }
     let _ = writeln!(w, "        }}");

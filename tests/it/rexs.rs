@@ -273,6 +273,24 @@ fn rexs_1_0_reads_the_face_start() {
     assert!(!old.warnings.iter().any(|w| w.contains("differs from its support vector")), "{:?}", old.warnings);
 }
 
+/// Designations outside the built-in table read by the ISO 15 / ISO 355 dimension plans (6305-2Z
+/// 25/62 mm, 30212-A 60/110, NU 2216 E 80/140, the catalogues' sizes), a concept bearing without type
+/// or designation a deep groove ball bearing, and C₀ estimated where a ball bearing needs it: each
+/// chosen value marked in the scene and said; the scene runs.
+#[test]
+fn designations_follow_the_dimension_plans() {
+    let name = "constructs/designations_by_dimension_plan.rexs";
+    let imported = import(name);
+    let line = |id: &str| imported.scene.lines().find(|l| l.contains(&format!("# REXS {id} `"))).unwrap().to_string();
+    assert!(line("33").contains("type = deep_groove_ball, bore = 25 mm, outside = 62 mm"), "{}", line("33"));
+    assert!(line("33").contains("chosen: C_0 estimated"));
+    assert!(line("35").contains("type = tapered_roller, bore = 60 mm, outside = 110 mm"), "{}", line("35"));
+    assert!(line("37").contains("type = cylindrical_roller, bore = 80 mm, outside = 140 mm"), "{}", line("37"));
+    assert!(line("38").contains("type = deep_groove_ball") && line("38").contains("chosen: C_0 estimated"));
+    assert!(imported.warnings.iter().any(|w| w.contains("names none: a deep groove ball bearing (chosen)")));
+    gearloss::run_to_files(name, &imported.scene).unwrap_or_else(|e| panic!("{e}"));
+}
+
 /// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
 #[test]
 fn xml_and_json_of_one_model_give_one_scene() {
