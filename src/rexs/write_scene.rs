@@ -13,6 +13,13 @@ fn n(x: f64) -> String {
     format!("{}", x + 0.0)
 }
 
+/// A name from the model as the scene may write it, in a comment or a string: on one line (a line
+/// break would end the comment and let the rest be read as scene), no `"` (it would end the
+/// string), no other control characters.
+fn clean(name: &str) -> String {
+    name.chars().map(|c| if c.is_control() { ' ' } else if c == '"' { '\'' } else { c }).collect()
+}
+
 fn shaft_name(id: u64) -> String {
     format!("shaft_{id}")
 }
@@ -22,22 +29,22 @@ pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -
     let mut s = String::new();
     let w = &mut s;
     let _ =
-        writeln!(w, "# Imported by `gearloss import` from {file_name} (REXS {}, {}).", unit.version, unit.application);
+        writeln!(w, "# Imported by `gearloss import` from {} (REXS {}, {}).", clean(file_name), clean(&unit.version), clean(&unit.application));
     let _ = writeln!(
         w,
         "# Each item names the REXS component it came from. What the model does not give was chosen here and"
     );
     let _ = writeln!(w, "# is marked `chosen:`; replace it with the unit's own data.");
-    let _ = writeln!(w, "scene \"{}\" {{", stem.replace('"', "'"));
+    let _ = writeln!(w, "scene \"{}\" {{", clean(stem));
     let _ = writeln!(w, "    # chosen: the gears reference no material; steel.");
     let _ = writeln!(w, "    material steel {{ youngs_modulus = 210 GPa  poisson_ratio = 0.3 }}");
     if let Some(l) = &unit.lubricant {
         let base = if l.base_given { "" } else { "  # chosen: base oil (the model gives no ISO 6336 lubricant type)" };
-        let _ = writeln!(w, "    # REXS lubricant {} \"{}\"", l.id, l.name);
+        let _ = writeln!(w, "    # REXS lubricant {} \"{}\"", l.id, clean(&l.name));
         let _ = writeln!(
             w,
             "    lubricant \"{}\" {{ nu_40 = {} mm^2/s  nu_100 = {} mm^2/s  density_15 = {} kg/m^3  base = {} }}{base}",
-            l.name.replace('"', "'"),
+            clean(&l.name),
             n(l.nu_40),
             n(l.nu_100),
             n(l.density_15),
@@ -75,7 +82,7 @@ pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -
 
 fn stage(w: &mut String, st: &StageData) {
     let [p, g] = &st.gears;
-    let _ = writeln!(w, "    # REXS cylindrical_stage {} \"{}\"; gears {} and {}", st.id, st.name, p.id, g.id);
+    let _ = writeln!(w, "    # REXS cylindrical_stage {} \"{}\"; gears {} and {}", st.id, clean(&st.name), p.id, g.id);
     let _ = writeln!(w, "    stage \"stage_{}\" {{", st.id);
     let _ = writeln!(w, "        direction = {} deg", n(st.direction));
     let _ = writeln!(w, "        gears {{");
@@ -122,7 +129,7 @@ fn shaft(w: &mut String, sh: &ShaftData) {
     } else {
         ""
     };
-    let _ = writeln!(w, "        # REXS shaft {} \"{}\"", sh.id, sh.name);
+    let _ = writeln!(w, "        # REXS shaft {} \"{}\"", sh.id, clean(&sh.name));
     let _ = writeln!(
         w,
         "        shaft {} {{ {role}position = [{}, {}] mm",
@@ -152,8 +159,8 @@ fn shaft(w: &mut String, sh: &ShaftData) {
             n(b.outside),
             n(b.at),
             b.id,
-            b.designation,
-            b.axial,
+            clean(&b.designation),
+            clean(&b.axial),
             if b.sizes_from == "the model" { "the model" } else { "its designation" },
             if b.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" }
         );

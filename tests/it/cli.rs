@@ -154,3 +154,16 @@ fn oil_temperature_sweep_writes_one_folder_per_temperature() {
     );
     std::fs::remove_dir_all(&out).unwrap();
 }
+
+/// `--records parquet` on a drive is said, not silently dropped: the drive writes its CSV and
+/// the run says the Parquet file is not written.
+#[test]
+fn records_parquet_on_a_drive_is_said() {
+    let out = std::env::temp_dir().join(format!("gearloss-drive-parquet-{}", std::process::id()));
+    let scene = crate::root().join("tests/specs/ok/drive_one_stage.gear");
+    let o = gearloss().arg("run").arg(&scene).arg("--out").arg(&out).args(["--records", "parquet"]).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let said = String::from_utf8_lossy(&o.stderr);
+    assert!(said.contains("a drive writes its records as CSV only") && said.contains("`--records parquet`"), "{said}");
+    let _ = std::fs::remove_dir_all(&out);
+}

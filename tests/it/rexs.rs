@@ -291,6 +291,21 @@ fn designations_follow_the_dimension_plans() {
     gearloss::run_to_files(name, &imported.scene).unwrap_or_else(|e| panic!("{e}"));
 }
 
+/// Names with line breaks, quotes and scene text in them (a shaft, the lubricant, the exporting
+/// application) stay inside their comment or string: the scene is the plain model's, line for line
+/// outside comments and the lubricant's name.
+#[test]
+fn hostile_names_stay_in_their_comments() {
+    let imported = import("constructs/hostile_names.rexs");
+    let scene = &imported.scene;
+    assert!(!scene.lines().any(|l| l.trim_start().starts_with("operating { input_torque = 1 N*m }")), "{scene}");
+    assert!(scene.contains("lubricant \"Oil 'X'  }\" {"), "{scene}");
+    let code = |scene: &str| -> Vec<String> {
+        scene.lines().filter(|l| !l.trim_start().starts_with('#') && !l.contains("lubricant \"")).skip(1).map(|l| l.split('#').next().unwrap().to_string()).collect()
+    };
+    assert_eq!(code(scene), code(&import(CYLINDRICAL[0]).scene));
+}
+
 /// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
 #[test]
 fn xml_and_json_of_one_model_give_one_scene() {
