@@ -321,6 +321,8 @@ fn balance_outer(supports: &[Support], loads: &[PlaneLoad], reactions: &mut [[f6
         }
     }
     let (za, zb) = (supports[a].at, supports[b].at);
+    // p is the plane: it indexes the loads' forces and couples and the reactions alike.
+    #[allow(clippy::needless_range_loop)]
     for p in 0..2 {
         let (mut s0, mut s1) = (0.0, 0.0);
         for l in loads {

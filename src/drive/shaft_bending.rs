@@ -110,9 +110,11 @@ fn bending(
     s: &BeamSolution,
 ) -> ShaftBending {
     let mut items: Vec<PlaneLoad> = plane_loads(on);
-    items.extend(
-        positions.iter().zip(reactions).map(|(&at, r)| PlaneLoad { at, force: [r[0], r[1]], couple: [0.0, 0.0] }),
-    );
+    items.extend(positions.iter().zip(reactions).map(|(&at, r)| PlaneLoad {
+        at,
+        force: [r[0], r[1]],
+        couple: [0.0, 0.0],
+    }));
     let node_of: Vec<usize> = items.iter().map(|l| s.node(l.at)).collect();
     let mut moment = Vec::with_capacity(s.nodes.len());
     for (k, &z) in s.nodes.iter().enumerate() {

@@ -18,8 +18,8 @@ use super::pass::Pass;
 use super::planetary;
 use super::planetary_charges;
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
-pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use super::shaft_bending::{support_reactions, ShaftBending};
+pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 

@@ -210,7 +210,14 @@ impl<'a> DriveSetup<'a> {
             })
             .collect();
         let oil = self.drive.mesh(0, lubricant.as_ref()).budget_oil(&stages[0].tribology);
-        DriveSetup { scene: self.scene, drive: self.drive, stages, sizes: self.sizes.clone(), oil, beams: self.beams.clone() }
+        DriveSetup {
+            scene: self.scene,
+            drive: self.drive,
+            stages,
+            sizes: self.sizes.clone(),
+            oil,
+            beams: self.beams.clone(),
+        }
     }
 
     /// The ends the drive's operating block gives its torque and speed at.

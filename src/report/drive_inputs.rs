@@ -150,7 +150,11 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
                 youngs_modulus_gpa: b.youngs_modulus * 1e-9,
                 poisson_ratio: b.poisson_ratio,
                 theory: b.theory.name().to_string(),
-                sections_mm: b.sections.iter().map(|x| [x.from, x.to, x.outer_diameter, x.bore].map(|v| v * 1e3)).collect(),
+                sections_mm: b
+                    .sections
+                    .iter()
+                    .map(|x| [x.from, x.to, x.outer_diameter, x.bore].map(|v| v * 1e3))
+                    .collect(),
                 supports: s
                     .bearings
                     .iter()

@@ -50,7 +50,10 @@ pub(crate) fn read_lubricant(
     warnings: &mut Vec<String>,
 ) -> Result<Option<LubricantData>, RexsError> {
     let Some(l) = model.of_kind("lubricant").next() else {
-        warnings.push("the model has no lubricant: an ISO VG 220 mineral gear oil is chosen (replace it with the unit's oil)".into());
+        warnings.push(
+            "the model has no lubricant: an ISO VG 220 mineral gear oil is chosen (replace it with the unit's oil)"
+                .into(),
+        );
         return Ok(None);
     };
     let kind = text(l, &["lubricant_type_iso_6336_2006"]);
@@ -117,7 +120,10 @@ pub(crate) fn read_cases(
         let of = |c: &Component| in_case(c, case.and_then(|k| k.components.get(&c.id)).map(Vec::as_slice));
         let speed = required(&of(shaft), &["rotational_speed"], Kind::Speed)?;
         let load = of(torque_load);
-        let torque = match (quantity(&load, &["torque_around_u_axis"], Kind::Torque)?, quantity(&load, &["power"], Kind::Power)?) {
+        let torque = match (
+            quantity(&load, &["torque_around_u_axis"], Kind::Torque)?,
+            quantity(&load, &["power"], Kind::Power)?,
+        ) {
             (Some(t), _) => t,
             // A load given as power at the input's speed: T = P/ω (P in kW, n in rpm).
             (None, Some(p)) if speed != 0.0 => {

@@ -90,7 +90,9 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     let unmodelled: Vec<String> = model
         .components
         .values()
-        .filter_map(|c| UNMODELLED.iter().find(|(k, _)| *k == c.kind).map(|(_, what)| format!("{} ({what})", describe(c))))
+        .filter_map(|c| {
+            UNMODELLED.iter().find(|(k, _)| *k == c.kind).map(|(_, what)| format!("{} ({what})", describe(c)))
+        })
         .collect();
     if !unmodelled.is_empty() {
         return Err(RexsError::new(
@@ -116,7 +118,9 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     let mut others: Vec<String> = model
         .components
         .values()
-        .filter(|c| !READ.contains(&c.kind.as_str()) && !HUB_CONNECTIONS.contains(&c.kind.as_str()) && c.kind != "shaft_section")
+        .filter(|c| {
+            !READ.contains(&c.kind.as_str()) && !HUB_CONNECTIONS.contains(&c.kind.as_str()) && c.kind != "shaft_section"
+        })
         .map(|c| c.kind.clone())
         .collect();
     others.dedup();
@@ -189,14 +193,7 @@ fn read_stage(model: &RexsModel, c: &Component, warnings: &mut Vec<String>) -> R
     let mut gears = if pinion_first { [g1, g2] } else { [g2, g1] };
     let center_distance = quantity(c, &["center_distance"], Kind::Length)?;
     super::profile_shift::derive_missing(c, &mut gears, center_distance, warnings);
-    Ok(StageData {
-        id: c.id,
-        name: c.name.clone(),
-        gears,
-        center_distance,
-        direction,
-        face_width,
-    })
+    Ok(StageData { id: c.id, name: c.name.clone(), gears, center_distance, direction, face_width })
 }
 
 /// An angle in (−180°, 180°], −0 written as 0.
@@ -251,12 +248,18 @@ fn read_gear(model: &RexsModel, g: &Component, warnings: &mut Vec<String>) -> Re
                 .and_then(|r| r.role("inner_part"))
         })
         .ok_or_else(|| {
-            RexsError::at(g, "no `assembly` relation, and no shaft–hub connection (`side`), puts it on a shaft", "every gear is a part of its shaft, or sits on it through a connection")
+            RexsError::at(
+                g,
+                "no `assembly` relation, and no shaft–hub connection (`side`), puts it on a shaft",
+                "every gear is a part of its shaft, or sits on it through a connection",
+            )
         })?;
     // REXS 1.0 gives a gear's `u_coordinate_on_shaft` at its face start; later versions at its
     // mid-plane, which gearloss's `at` is.
     let face_start = model.version == "1.0";
-    let at = quantity(g, &["u_coordinate_on_shaft"], Kind::Length)?.map(|u| if face_start { u + 0.5 * face_width } else { u });
+    let at =
+        quantity(g, &["u_coordinate_on_shaft"], Kind::Length)?
+            .map(|u| if face_start { u + 0.5 * face_width } else { u });
     let from_vectors = match (
         super::units::vector(g, "support_vector"),
         super::units::vector(&model.components[&shaft], "support_vector"),

@@ -27,7 +27,12 @@ pub(crate) fn sum_of_shifts(teeth: [u32; 2], m_n: f64, alpha_n: f64, beta: f64, 
 
 /// Fills in the shifts of `gears` ([pinion, wheel]) the model left out, from the stage `stage`'s
 /// centre distance; says what it derived. Without a centre distance they stay 0, said.
-pub(crate) fn derive_missing(stage: &Component, gears: &mut [GearData; 2], a_w: Option<f64>, warnings: &mut Vec<String>) {
+pub(crate) fn derive_missing(
+    stage: &Component,
+    gears: &mut [GearData; 2],
+    a_w: Option<f64>,
+    warnings: &mut Vec<String>,
+) {
     let given = [gears[0].profile_shift_given, gears[1].profile_shift_given];
     if given == [true, true] {
         return;
@@ -53,14 +58,19 @@ pub(crate) fn derive_missing(stage: &Component, gears: &mut [GearData; 2], a_w: 
     for (g, x) in gears.iter_mut().zip(shares) {
         if !g.profile_shift_given {
             g.profile_shift = x;
-            g.profile_shift_note = Some(format!("x from the centre distance (Σx = {})", crate::numerics::rounding::sig(sum)));
+            g.profile_shift_note =
+                Some(format!("x from the centre distance (Σx = {})", crate::numerics::rounding::sig(sum)));
         }
     }
     warnings.push(format!(
         "{}: profile shifts the model does not give follow from its centre distance: Σx = {} ({}; chosen)",
         describe(stage),
         crate::numerics::rounding::sig(sum),
-        if given == [false, false] { "split pinion z₂/(z₁+z₂), wheel z₁/(z₁+z₂)" } else { "the other gear's given x taken off" }
+        if given == [false, false] {
+            "split pinion z₂/(z₁+z₂), wheel z₁/(z₁+z₂)"
+        } else {
+            "the other gear's given x taken off"
+        }
     ));
 }
 

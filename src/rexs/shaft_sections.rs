@@ -58,7 +58,10 @@ pub(crate) fn read_sections(
         }
         let (d_out, d_in) = (0.5 * (outer.0 + outer.1), 0.5 * (inner.0 + inner.1));
         if length <= 0.0 || d_out <= 0.0 || !(0.0..d_out).contains(&d_in) {
-            return Ok(Err(format!("{} is not a shaft section (length {length} mm, D {d_out} mm, d {d_in} mm)", describe(c))));
+            return Ok(Err(format!(
+                "{} is not a shaft section (length {length} mm, D {d_out} mm, d {d_in} mm)",
+                describe(c)
+            )));
         }
         out.push(SectionData { id: c.id, from, to: from + length, outer_diameter: d_out, bore: d_in });
     }

@@ -17,7 +17,17 @@ fn n(x: f64) -> String {
 /// break would end the comment and let the rest be read as scene), no `"` (it would end the
 /// string), no other control characters.
 fn clean(name: &str) -> String {
-    name.chars().map(|c| if c.is_control() { ' ' } else if c == '"' { '\'' } else { c }).collect()
+    name.chars()
+        .map(|c| {
+            if c.is_control() {
+                ' '
+            } else if c == '"' {
+                '\''
+            } else {
+                c
+            }
+        })
+        .collect()
 }
 
 fn shaft_name(id: u64) -> String {
@@ -28,8 +38,13 @@ pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -
     let stem = std::path::Path::new(file_name).file_stem().and_then(|s| s.to_str()).unwrap_or("REXS model");
     let mut s = String::new();
     let w = &mut s;
-    let _ =
-        writeln!(w, "# Imported by `gearloss import` from {} (REXS {}, {}).", clean(file_name), clean(&unit.version), clean(&unit.application));
+    let _ = writeln!(
+        w,
+        "# Imported by `gearloss import` from {} (REXS {}, {}).",
+        clean(file_name),
+        clean(&unit.version),
+        clean(&unit.application)
+    );
     let _ = writeln!(
         w,
         "# Each item names the REXS component it came from. What the model does not give was chosen here and"

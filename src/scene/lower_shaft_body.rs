@@ -42,14 +42,26 @@ pub(super) fn lower_section(call: &Call, errors: &mut Vec<Diagnostic>) -> Option
         None
     };
     if to <= from {
-        return fail(errors, "a section's `to` must lie beyond its `from`".into(), "write `section(from = 0 mm, to = 42 mm, diameter = 40 mm)`");
+        return fail(
+            errors,
+            "a section's `to` must lie beyond its `from`".into(),
+            "write `section(from = 0 mm, to = 42 mm, diameter = 40 mm)`",
+        );
     }
     let d = diameter.value.value;
     if d > LARGEST_DIAMETER {
-        return fail(errors, format!("a section of {} is not a shaft", diameter.written), "a shaft's diameter is at most 10 m: check the unit");
+        return fail(
+            errors,
+            format!("a section of {} is not a shaft", diameter.written),
+            "a shaft's diameter is at most 10 m: check the unit",
+        );
     }
     if !(0.0..d).contains(&bore) {
-        return fail(errors, "a section's `bore` must be at least 0 and below its `diameter`".into(), "give the bore of a hollow shaft, or leave it out for a solid one");
+        return fail(
+            errors,
+            "a section's `bore` must be at least 0 and below its `diameter`".into(),
+            "give the bore of a hollow shaft, or leave it out for a solid one",
+        );
     }
     Some((ShaftSection { from, to, outer_diameter: d, bore }, call.span))
 }
@@ -59,7 +71,8 @@ pub(super) fn lower_radial_stiffness(call: &Call, errors: &mut Vec<Diagnostic>) 
     let (k, v) = call.arguments.iter().find(|(k, _)| k.text == "radial_stiffness")?;
     let items = vec![Item::Assignment { key: k.clone(), value: v.clone() }];
     let f = Fields::read("`bearing(...)`", call.span, &items, &["radial_stiffness"], &[], &[], errors);
-    let k: Option<crate::model::Given<Stiffness>> = positive(f.optional("radial_stiffness", errors), "radial_stiffness", errors);
+    let k: Option<crate::model::Given<Stiffness>> =
+        positive(f.optional("radial_stiffness", errors), "radial_stiffness", errors);
     k.map(|k| (k.value.value, k.span))
 }
 
@@ -81,8 +94,14 @@ pub(super) fn shaft_body(
     if decl.sections.is_empty() {
         if let Some(key) = decl.material.or(decl.theory) {
             errors.push(
-                Diagnostic::new(DiagnosticKind::MissingKey, key.span, format!("shaft `{}` has no sections to bend", shaft.text))
-                    .hint("add its `section(from = 0 mm, to = 42 mm, diameter = 40 mm)`s, or leave `material` and `beam` out"),
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    key.span,
+                    format!("shaft `{}` has no sections to bend", shaft.text),
+                )
+                .hint(
+                    "add its `section(from = 0 mm, to = 42 mm, diameter = 40 mm)`s, or leave `material` and `beam` out",
+                ),
             );
         }
         return None;
@@ -110,7 +129,8 @@ pub(super) fn shaft_body(
         Some(n) => match materials.get(n.text.as_str()) {
             Some(m) => m,
             None => {
-                let mut d = Diagnostic::new(DiagnosticKind::Undefined, n.span, format!("material `{}` is not defined", n.text));
+                let mut d =
+                    Diagnostic::new(DiagnosticKind::Undefined, n.span, format!("material `{}` is not defined", n.text));
                 if let Some(near) = super::fields::nearest(&n.text, materials.keys().copied()) {
                     d = d.hint(format!("did you mean `{near}`?"));
                 }
@@ -123,8 +143,12 @@ pub(super) fn shaft_body(
             (None, 1) => materials.values().next().expect("one material"),
             _ => {
                 errors.push(
-                    Diagnostic::new(DiagnosticKind::MissingKey, shaft.span, format!("shaft `{}` needs its `material` to bend", shaft.text))
-                        .hint("add `material = steel` (a `material` block of the scene) to the shaft"),
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        shaft.span,
+                        format!("shaft `{}` needs its `material` to bend", shaft.text),
+                    )
+                    .hint("add `material = steel` (a `material` block of the scene) to the shaft"),
                 );
                 return None;
             }

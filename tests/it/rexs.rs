@@ -188,7 +188,8 @@ fn shaft_sections_become_the_shafts_sections() {
             let id = part.attribute("id").unwrap();
             let c = doc.descendants().find(|n| n.has_tag_name("component") && n.attribute("id") == Some(id)).unwrap();
             let from = value(c, "u_coordinate_on_shaft");
-            let section = [from, from + value(c, "length"), value(c, "outer_diameter_begin"), value(c, "inner_diameter_begin")];
+            let section =
+                [from, from + value(c, "length"), value(c, "outer_diameter_begin"), value(c, "inner_diameter_begin")];
             want.entry(shaft.attribute("id").unwrap().parse().unwrap()).or_default().push(section.map(|x| x * 1e-3));
         }
         let scene = gearloss::check(name, &import(name).scene).unwrap_or_else(|e| panic!("{e}"));
@@ -230,7 +231,12 @@ fn a_shaft_on_three_places_imports_and_runs() {
 #[test]
 fn hub_connections_and_bearing_kinds_import() {
     let code = |scene: &str| -> Vec<String> {
-        scene.lines().filter(|l| !l.trim_start().starts_with('#')).skip(1).map(|l| l.split('#').next().unwrap().to_string()).collect()
+        scene
+            .lines()
+            .filter(|l| !l.trim_start().starts_with('#'))
+            .skip(1)
+            .map(|l| l.split('#').next().unwrap().to_string())
+            .collect()
     };
     let changed = import("constructs/hub_connections_and_bearing_kinds.rexs");
     assert_eq!(code(&changed.scene), code(&import(CYLINDRICAL[0]).scene));
@@ -252,7 +258,8 @@ fn profile_shifts_follow_from_the_centre_distance() {
     for pair in &scene.drive.as_ref().unwrap().pairs {
         let x = pair.pinion.profile_shift.value + pair.wheel.profile_shift.value;
         let z = |g: &gearloss::model::Gear| f64::from(g.teeth.value);
-        let want: f64 = file.iter().filter(|g| g.teeth == z(&pair.pinion) || g.teeth == z(&pair.wheel)).map(|g| g.x).sum();
+        let want: f64 =
+            file.iter().filter(|g| g.teeth == z(&pair.pinion) || g.teeth == z(&pair.wheel)).map(|g| g.x).sum();
         assert!((x - want).abs() < 1e-5, "Σx {x} vs the file's {want}");
         assert!(pair.pinion.profile_shift.value > pair.wheel.profile_shift.value, "the pinion's share is the larger");
     }
@@ -266,7 +273,12 @@ fn profile_shifts_follow_from_the_centre_distance() {
 #[test]
 fn rexs_1_0_reads_the_face_start() {
     let code = |scene: &str| -> Vec<String> {
-        scene.lines().filter(|l| !l.trim_start().starts_with('#')).skip(1).map(|l| l.split('#').next().unwrap().to_string()).collect()
+        scene
+            .lines()
+            .filter(|l| !l.trim_start().starts_with('#'))
+            .skip(1)
+            .map(|l| l.split('#').next().unwrap().to_string())
+            .collect()
     };
     let old = import("constructs/rexs_1_0_face_start.rexs");
     assert_eq!(code(&old.scene), code(&import(CYLINDRICAL[0]).scene));
@@ -301,7 +313,12 @@ fn hostile_names_stay_in_their_comments() {
     assert!(!scene.lines().any(|l| l.trim_start().starts_with("operating { input_torque = 1 N*m }")), "{scene}");
     assert!(scene.contains("lubricant \"Oil 'X'  }\" {"), "{scene}");
     let code = |scene: &str| -> Vec<String> {
-        scene.lines().filter(|l| !l.trim_start().starts_with('#') && !l.contains("lubricant \"")).skip(1).map(|l| l.split('#').next().unwrap().to_string()).collect()
+        scene
+            .lines()
+            .filter(|l| !l.trim_start().starts_with('#') && !l.contains("lubricant \""))
+            .skip(1)
+            .map(|l| l.split('#').next().unwrap().to_string())
+            .collect()
     };
     assert_eq!(code(scene), code(&import(CYLINDRICAL[0]).scene));
 }

@@ -193,7 +193,12 @@ fn two_places_are_the_rigid_beams_statics() {
         assert_eq!(bending.is_some(), body.is_some());
         if let Some(body) = body {
             let planes = gearloss::drive::shaft_bending::plane_loads(&loads);
-            let beam = solve(&body, &[Support { at: 0.02, stiffness: Some(2e8) }, Support { at: 0.28, stiffness: None }], &planes).unwrap();
+            let beam = solve(
+                &body,
+                &[Support { at: 0.02, stiffness: Some(2e8) }, Support { at: 0.28, stiffness: None }],
+                &planes,
+            )
+            .unwrap();
             for (a, b) in beam.reactions.iter().zip(&statics) {
                 assert!((a[0] - b[0]).abs() < 1e-12 * 12600.0 && (a[1] - b[1]).abs() < 1e-12 * 12600.0);
             }
@@ -291,8 +296,8 @@ fn the_largest_stress_is_located() {
     let moment = |z: f64| {
         let mut m = [0.0; 2];
         for l in items.iter().filter(|l| l.at < z) {
-            for p in 0..2 {
-                m[p] += l.force[p] * (z - l.at) - l.couple[p];
+            for (p, m) in m.iter_mut().enumerate() {
+                *m += l.force[p] * (z - l.at) - l.couple[p];
             }
         }
         m[0].hypot(m[1])

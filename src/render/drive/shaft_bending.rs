@@ -96,7 +96,18 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
         }
     }
     md!(out);
-    header(out, &["shaft (elastic)", "largest σ_b (MPa)", "at (mm)", "|M| there (N·m)", "D there (mm)", "largest |w| (µm)", "at (mm)"]);
+    header(
+        out,
+        &[
+            "shaft (elastic)",
+            "largest σ_b (MPa)",
+            "at (mm)",
+            "|M| there (N·m)",
+            "D there (mm)",
+            "largest |w| (µm)",
+            "at (mm)",
+        ],
+    );
     for s in &d.shafts {
         let Some(b) = &s.bending else { continue };
         row(
@@ -151,7 +162,11 @@ pub(crate) fn moments(r: &DriveReport) -> Option<Result<String, String>> {
                 x_label: "z on the shaft (mm); B bearing places, G gears".into(),
                 xy: vec![(String::new(), line)],
                 points: vec![(
-                    format!("largest σ_b {} MPa at {} mm", fixed(b.max_stress * 1e-6, 2), fixed(b.max_stress_at * 1e3, 2)),
+                    format!(
+                        "largest σ_b {} MPa at {} mm",
+                        fixed(b.max_stress * 1e-6, 2),
+                        fixed(b.max_stress_at * 1e3, 2)
+                    ),
                     vec![(b.max_stress_at * 1e3, b.max_stress_moment)],
                 )],
                 marks,
