@@ -19,6 +19,16 @@ fn import(name: &str) -> gearloss::rexs::Imported {
     gearloss::rexs::import_file(&rexs(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
+/// A scene's lines outside comments, after its `scene "…"` line (which names the file).
+fn code_lines(scene: &str) -> Vec<String> {
+    scene
+        .lines()
+        .filter(|l| !l.trim_start().starts_with('#'))
+        .skip(1)
+        .map(|l| l.split('#').next().unwrap().to_string())
+        .collect()
+}
+
 /// A gear as the file gives it, read with a plain XML or JSON parser.
 #[derive(Debug, Default, Clone)]
 struct FileGear {
@@ -230,16 +240,8 @@ fn a_shaft_on_three_places_imports_and_runs() {
 /// line outside the comments; the needle bearing's stand-in and the thrust bearing are said.
 #[test]
 fn hub_connections_and_bearing_kinds_import() {
-    let code = |scene: &str| -> Vec<String> {
-        scene
-            .lines()
-            .filter(|l| !l.trim_start().starts_with('#'))
-            .skip(1)
-            .map(|l| l.split('#').next().unwrap().to_string())
-            .collect()
-    };
     let changed = import("constructs/hub_connections_and_bearing_kinds.rexs");
-    assert_eq!(code(&changed.scene), code(&import(CYLINDRICAL[0]).scene));
+    assert_eq!(code_lines(&changed.scene), code_lines(&import(CYLINDRICAL[0]).scene));
     let said = changed.warnings.join("\n");
     assert!(said.contains("`radial_needle_roller_bearing` is modelled as a cylindrical_roller bearing"), "{said}");
     assert!(said.contains("component 903") && said.contains("a thrust bearing takes no radial load"), "{said}");
@@ -272,16 +274,8 @@ fn profile_shifts_follow_from_the_centre_distance() {
 /// support vector disagree.
 #[test]
 fn rexs_1_0_reads_the_face_start() {
-    let code = |scene: &str| -> Vec<String> {
-        scene
-            .lines()
-            .filter(|l| !l.trim_start().starts_with('#'))
-            .skip(1)
-            .map(|l| l.split('#').next().unwrap().to_string())
-            .collect()
-    };
     let old = import("constructs/rexs_1_0_face_start.rexs");
-    assert_eq!(code(&old.scene), code(&import(CYLINDRICAL[0]).scene));
+    assert_eq!(code_lines(&old.scene), code_lines(&import(CYLINDRICAL[0]).scene));
     assert!(!old.warnings.iter().any(|w| w.contains("differs from its support vector")), "{:?}", old.warnings);
 }
 
@@ -312,15 +306,8 @@ fn hostile_names_stay_in_their_comments() {
     let scene = &imported.scene;
     assert!(!scene.lines().any(|l| l.trim_start().starts_with("operating { input_torque = 1 N*m }")), "{scene}");
     assert!(scene.contains("lubricant \"Oil 'X'  }\" {"), "{scene}");
-    let code = |scene: &str| -> Vec<String> {
-        scene
-            .lines()
-            .filter(|l| !l.trim_start().starts_with('#') && !l.contains("lubricant \""))
-            .skip(1)
-            .map(|l| l.split('#').next().unwrap().to_string())
-            .collect()
-    };
-    assert_eq!(code(scene), code(&import(CYLINDRICAL[0]).scene));
+    let other = |s: &str| code_lines(s).into_iter().filter(|l| !l.contains("lubricant \"")).collect::<Vec<_>>();
+    assert_eq!(other(scene), other(&import(CYLINDRICAL[0]).scene));
 }
 
 /// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
