@@ -132,6 +132,10 @@ pub(crate) fn read_shafts(
             sections,
         });
     }
+    let flagged = (out.iter().filter(|s| s.input).count(), out.iter().filter(|s| s.output).count());
+    if flagged != (1, 1) {
+        ends_from_torque_loads(model, stages, &mut out, warnings);
+    }
     for (what, count) in [
         ("input (`defines_speed`)", out.iter().filter(|s| s.input).count()),
         ("output (a load that transmits torque)", out.iter().filter(|s| s.output).count()),
@@ -144,6 +148,54 @@ pub(crate) fn read_shafts(
         }
     }
     Ok(out)
+}
+
+/// The input and output when the model does not flag exactly one of each: the two shafts that
+/// carry a torque load (`transmits_torque` or `defines_torque`) are the ends; the input is the one
+/// whose speed the model gives (`rotational_speed`, in the model or a load case), else the one
+/// carrying its stage's pinion (a reducer; chosen). Said either way; left as it is when the ends
+/// are not two.
+fn ends_from_torque_loads(model: &RexsModel, stages: &[StageData], out: &mut [ShaftData], warnings: &mut Vec<String>) {
+    let torque_load = |shaft: u64| {
+        model
+            .relations
+            .iter()
+            .filter(|r| r.kind == "assembly" && r.role("assembly") == Some(shaft))
+            .filter_map(|r| r.role("part").and_then(|id| model.components.get(&id)))
+            .any(|l| {
+                l.kind == "external_load"
+                    && (flag(l, &["transmits_torque"]) == Some(true) || flag(l, &["defines_torque"]) == Some(true))
+            })
+    };
+    let ends: Vec<usize> = (0..out.len()).filter(|&j| torque_load(out[j].id)).collect();
+    let [a, b] = ends[..] else { return };
+    let has_speed = |id: u64| {
+        let c = &model.components[&id];
+        c.attribute(&["rotational_speed"]).is_some()
+            || model
+                .load_cases
+                .iter()
+                .any(|k| k.components.get(&id).is_some_and(|x| x.iter().any(|at| at.id == "rotational_speed")))
+    };
+    let carries_pinion = |id: u64| stages.iter().any(|s| s.gears[0].shaft == id);
+    let (input, why) = match (has_speed(out[a].id), has_speed(out[b].id)) {
+        (true, false) => (a, "the model gives its speed"),
+        (false, true) => (b, "the model gives its speed"),
+        _ => match (carries_pinion(out[a].id), carries_pinion(out[b].id)) {
+            (true, false) => (a, "it carries its stage's pinion (a reducer; chosen)"),
+            (false, true) => (b, "it carries its stage's pinion (a reducer; chosen)"),
+            _ => return,
+        },
+    };
+    let output = if input == a { b } else { a };
+    for (j, s) in out.iter_mut().enumerate() {
+        s.input = j == input;
+        s.output = j == output;
+    }
+    warnings.push(format!(
+        "the model does not flag one input and one output shaft: shafts {} and {} carry its torque loads; shaft {} is the input ({why}), shaft {} the output",
+        out[a].id, out[b].id, out[input].id, out[output].id
+    ));
 }
 
 /// The designation of a bearing: its `catalogue_designation` (`name` in REXS 1.0), or a concept

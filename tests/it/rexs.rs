@@ -310,6 +310,22 @@ fn hostile_names_stay_in_their_comments() {
     assert_eq!(other(scene), other(&import(CYLINDRICAL[0]).scene));
 }
 
+/// No shaft flagged `defines_speed`: the two shafts with torque loads are the ends, the one whose
+/// speed the model gives the input (said), and the scene is the flagged model's.
+#[test]
+fn the_ends_follow_from_the_torque_loads() {
+    let imported = import("constructs/no_flagged_input.rexs");
+    assert_eq!(code_lines(&imported.scene), code_lines(&import(CYLINDRICAL[0]).scene));
+    assert!(
+        imported
+            .warnings
+            .iter()
+            .any(|w| w.contains("shaft 12 is the input (the model gives its speed), shaft 14 the output")),
+        "{:?}",
+        imported.warnings
+    );
+}
+
 /// The 1.4 model's XML and JSON exports give the same scene (its first line names the file).
 #[test]
 fn xml_and_json_of_one_model_give_one_scene() {
