@@ -198,3 +198,24 @@ pub fn plane_loads(loads: &[GearLoad]) -> Vec<PlaneLoad> {
         })
         .collect()
 }
+
+/// Stage `k`'s mesh misalignment from its two gears' tilts on their bent shafts (a parallel stage
+/// whose shafts both have sections), m: `bending` by shaft, `loads` every gear's.
+pub(crate) fn stage_misalignment(
+    bending: &[Option<&ShaftBending>],
+    loads: &[GearLoad],
+    (k, stage): (usize, &super::layout::Stage),
+    face_width: f64,
+) -> Option<f64> {
+    if stage.planetary.is_some() {
+        return None;
+    }
+    let gear = |m: usize| {
+        let j = stage.places[m].shaft;
+        let bent = bending.get(j).copied().flatten()?.gears.iter().find(|g| g.stage == k)?;
+        let load = loads.iter().find(|l| l.stage == k && l.shaft == j)?;
+        Some((bent, load.force))
+    };
+    let ((pinion, force), (wheel, _)) = (gear(0)?, gear(1)?);
+    Some(mesh_misalignment(face_width, pinion, wheel, force))
+}

@@ -313,6 +313,7 @@ impl<'a> Walk<'a> {
                 bending,
             })
             .collect();
+        let bent: Vec<_> = shafts.iter().map(|s| s.bending.as_ref()).collect();
         let mut steps = self.steps.clone();
         steps.sort_by_key(|(k, _)| *k);
         let stages: Vec<StagePoint> = steps
@@ -345,7 +346,12 @@ impl<'a> Walk<'a> {
                     tangential_force: f_t,
                     radial_force: f_r,
                     axial_force: f_a,
-                    mesh_misalignment: misalignment(&shafts, (k, stage), sizes.face_width),
+                    mesh_misalignment: super::shaft_bending::stage_misalignment(
+                        &bent,
+                        &loads,
+                        (k, stage),
+                        sizes.face_width,
+                    ),
                     planetary,
                 }
             })
@@ -382,20 +388,4 @@ impl<'a> Walk<'a> {
             iterations: passes,
         }
     }
-}
-
-/// Stage `k`'s mesh misalignment from its two gears' tilts on their bent shafts (a parallel stage
-/// whose shafts both have sections), m.
-fn misalignment(shafts: &[ShaftPoint], (k, stage): (usize, &super::layout::Stage), face_width: f64) -> Option<f64> {
-    if stage.planetary.is_some() {
-        return None;
-    }
-    let gear = |m: usize| {
-        let shaft = &shafts[stage.places[m].shaft];
-        let bent = shaft.bending.as_ref()?.gears.iter().find(|g| g.stage == k)?;
-        let load = shaft.gear_loads.iter().find(|l| l.stage == k)?;
-        Some((bent, load.force))
-    };
-    let ((pinion, force), (wheel, _)) = (gear(0)?, gear(1)?);
-    Some(super::shaft_bending::mesh_misalignment(face_width, pinion, wheel, force))
 }

@@ -39,14 +39,6 @@ const UNMODELLED: &[(&str, &str)] = &[
     ("switchable_coupling", "a shiftable coupling: a unit with gears to shift"),
 ];
 
-/// Shaft–hub connections: a gear sits on its shaft through one (a `side` relation).
-pub(crate) const HUB_CONNECTIONS: &[&str] = &[
-    "feather_key_connection",
-    "cylindrical_interference_fit",
-    "tapered_interference_fit",
-    "involute_spline_connection",
-];
-
 /// What the scene is written from.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub(crate) struct GearUnit {
@@ -119,7 +111,9 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
         .components
         .values()
         .filter(|c| {
-            !READ.contains(&c.kind.as_str()) && !HUB_CONNECTIONS.contains(&c.kind.as_str()) && c.kind != "shaft_section"
+            !READ.contains(&c.kind.as_str())
+                && !super::shafts::HUB_CONNECTIONS.contains(&c.kind.as_str())
+                && c.kind != "shaft_section"
         })
         .map(|c| c.kind.clone())
         .collect();

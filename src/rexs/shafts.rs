@@ -42,6 +42,14 @@ pub(crate) struct ShaftData {
     pub sections: Vec<super::shaft_sections::SectionData>,
 }
 
+/// Shaft–hub connections: a gear sits on its shaft through one (a `side` relation).
+pub(crate) const HUB_CONNECTIONS: &[&str] = &[
+    "feather_key_connection",
+    "cylindrical_interference_fit",
+    "tapered_interference_fit",
+    "involute_spline_connection",
+];
+
 /// REXS `bearing_type` → gearloss's type.
 const TYPES: &[(&str, &str)] = &[
     ("radial_grooved_ball_bearing", "deep_groove_ball"),
@@ -216,7 +224,7 @@ fn read_bearings(
     let mut out = Vec::new();
     for r in model.relations_with("side", "inner_part", shaft.id) {
         let Some(b) = r.role("assembly").map(|id| &model.components[&id]) else { continue };
-        if super::gear_unit::HUB_CONNECTIONS.contains(&b.kind.as_str()) {
+        if HUB_CONNECTIONS.contains(&b.kind.as_str()) {
             continue;
         }
         if !BEARING_KINDS.contains(&b.kind.as_str()) {

@@ -9,6 +9,7 @@ pub mod lower;
 pub(crate) mod lower_analyses;
 pub(crate) mod lower_drive;
 pub(crate) mod lower_drive_operating;
+pub(crate) mod lower_drive_places;
 pub(crate) mod lower_drive_scene;
 pub(crate) mod lower_dynamics;
 pub(crate) mod lower_dynamics_blocks;

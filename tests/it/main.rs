@@ -26,6 +26,7 @@ mod properties;
 mod readme;
 mod records_parquet;
 mod rexs;
+mod rexs_constructs;
 mod shaft_beam;
 mod six_dof;
 mod specs;
