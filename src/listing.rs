@@ -166,7 +166,7 @@ pub fn bearings() -> String {
         out.push('\n');
     }
     out.push_str(&format!(
-        "\nKeys of `bearing(...)`: {}, and the flag `locating` (drives).\nValidity: the load-dependent factors f_1 of ball and spherical roller bearings grow as (P_0/C_0)^x, read by SKF for static loads up to the static rating: a bearing loaded beyond P_0/C_0 = 1 is flagged in the report (its loss is extrapolated, and the bearing is overloaded).\nThe SKF model (SKF catalogue 17000, 2018): `model = skf({})` replaces M_0 and M_1 by M_rr and M_sl.\nSeals (ISO/TR 14179-2 after Linke): `seal({})`, P = 7.69e-6 d² n (d in mm, n in rpm).\n",
+        "\nKeys of `bearing(...)`: {}, and in a drive the flag `locating` and `radial_stiffness = 4e8 N/m` (a sprung place; the shaft then needs its `section`s).\nValidity: the load-dependent factors f_1 of ball and spherical roller bearings grow as (P_0/C_0)^x, read by SKF for static loads up to the static rating: a bearing loaded beyond P_0/C_0 = 1 is flagged in the report (its loss is extrapolated, and the bearing is overloaded).\nThe SKF model (SKF catalogue 17000, 2018): `model = skf({})` replaces M_0 and M_1 by M_rr and M_sl.\nSeals (ISO/TR 14179-2 after Linke): `seal({})`, P = 7.69e-6 d² n (d in mm, n in rpm).\n",
         BEARING.join(", "),
         SKF.join(", "),
         SEAL.join(", ")
