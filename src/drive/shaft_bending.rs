@@ -62,9 +62,7 @@ pub fn support_reactions(
     let needs_beam = positions.len() > 2 || (bent && shaft.body.is_some());
     let planes = plane_loads(on);
     let solution = match (&shaft.body, needs_beam) {
-        (Some(body), true) => {
-            beam.and_then(|b| b.solve(&planes)).or_else(|| solve(body, &supports(shaft, &positions), &planes))
-        }
+        (Some(body), true) => beam.and_then(|b| b.solve(&planes)).or_else(|| solve(body, &supports(shaft), &planes)),
         _ => None,
     };
     let reactions: Vec<[f64; 3]> = match (positions.as_slice(), &solution) {
@@ -90,15 +88,16 @@ pub fn support_reactions(
 
 /// Shaft `shaft`'s beam made ready for loads at `gear_positions` (m); None without sections.
 pub fn shaft_beam_of(shaft: &Shaft, gear_positions: &[f64]) -> Option<PreparedBeam> {
-    let positions: Vec<f64> = shaft.bearings.iter().map(|b| b.position.unwrap_or(0.0)).collect();
-    PreparedBeam::new(shaft.body.as_ref()?, &supports(shaft, &positions), gear_positions)
+    PreparedBeam::new(shaft.body.as_ref()?, &supports(shaft), gear_positions)
 }
 
-fn supports(shaft: &Shaft, positions: &[f64]) -> Vec<Support> {
-    positions
+/// The shaft's bearing places as the beam's supports: each `at` with its radial stiffness.
+fn supports(shaft: &Shaft) -> Vec<Support> {
+    shaft
+        .bearings
         .iter()
         .enumerate()
-        .map(|(i, &at)| Support { at, stiffness: shaft.stiffness.get(i).copied().flatten() })
+        .map(|(i, b)| Support { at: b.position.unwrap_or(0.0), stiffness: shaft.stiffness.get(i).copied().flatten() })
         .collect()
 }
 

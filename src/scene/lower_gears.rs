@@ -148,6 +148,28 @@ pub(super) fn lower_gears_named(
     Some(pair)
 }
 
+/// The scene's material named `name`; else an error at the name with the nearest defined one and
+/// how to define it (a gear's and a shaft's `material = …`).
+pub(super) fn named_material<'m>(
+    name: &Name,
+    materials: &'m BTreeMap<&str, Material>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<&'m Material> {
+    if let Some(m) = materials.get(name.text.as_str()) {
+        return Some(m);
+    }
+    let mut d =
+        Diagnostic::new(DiagnosticKind::Undefined, name.span, format!("material `{}` is not defined", name.text));
+    if let Some(n) = super::fields::nearest(&name.text, materials.keys().copied()) {
+        d = d.hint(format!("did you mean `{n}`?"));
+    }
+    errors.push(d.hint(format!(
+        "define it in the scene: `material {} {{ youngs_modulus = 206 GPa  poisson_ratio = 0.3 }}`",
+        name.text
+    )));
+    None
+}
+
 fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut Vec<Diagnostic>) -> Option<Gear> {
     let name = block.kind.text.as_str();
     let f =
@@ -206,21 +228,7 @@ fn lower_gear(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut 
             None
         }
         None => None,
-        Some(m) => match materials.get(m.text.as_str()) {
-            Some(mat) => Some(mat.clone()),
-            None => {
-                let mut d =
-                    Diagnostic::new(DiagnosticKind::Undefined, m.span, format!("material `{}` is not defined", m.text));
-                if let Some(n) = super::fields::nearest(&m.text, materials.keys().copied()) {
-                    d = d.hint(format!("did you mean `{n}`?"));
-                }
-                errors.push(d.hint(format!(
-                    "define it in the scene: `material {} {{ youngs_modulus = 206 GPa  poisson_ratio = 0.3 }}`",
-                    m.text
-                )));
-                None
-            }
-        },
+        Some(m) => named_material(m, materials, errors).cloned(),
     };
     Some(Gear {
         teeth: teeth?,

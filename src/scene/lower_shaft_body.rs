@@ -126,18 +126,7 @@ pub(super) fn shaft_body(
         _ => BeamTheory::EulerBernoulli,
     };
     let material = match decl.material {
-        Some(n) => match materials.get(n.text.as_str()) {
-            Some(m) => m,
-            None => {
-                let mut d =
-                    Diagnostic::new(DiagnosticKind::Undefined, n.span, format!("material `{}` is not defined", n.text));
-                if let Some(near) = super::fields::nearest(&n.text, materials.keys().copied()) {
-                    d = d.hint(format!("did you mean `{near}`?"));
-                }
-                errors.push(d);
-                return None;
-            }
-        },
+        Some(n) => super::lower_gears::named_material(n, materials, errors)?,
         None => match (materials.get("steel"), materials.len()) {
             (Some(m), _) => m,
             (None, 1) => materials.values().next().expect("one material"),
