@@ -86,6 +86,7 @@ pub mod rerender;
 pub mod rexs;
 pub mod run;
 pub mod run_drive;
+pub(crate) mod run_pair;
 pub(crate) mod run_error;
 pub mod scene;
 pub(crate) mod shard;
@@ -102,7 +103,8 @@ pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
-pub use run::{has_records, merge_into, report_of, run_into, run_into_with, run_to_files, Written};
+pub use run_pair::has_records;
+pub use run::{merge_into, report_of, run_into, run_into_with, run_to_files, Written};
 pub use run_error::{Failure, FailureKind, RunError};
 pub use scene::ast::SceneAst;
 

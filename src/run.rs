@@ -5,10 +5,10 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::evaluate::record_files::{RecordFiles, RecordFormats};
+use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::stages::{details, stream};
 use crate::evaluate::stream::Streamed;
-use crate::evaluate::{self, Plan, Shard, Tally};
+use crate::evaluate::{self, Plan, Shard};
 use crate::folder::ReportFolder;
 use crate::model::Scene;
 use crate::progress::{Progress, Quiet};
@@ -16,7 +16,8 @@ use crate::render::RenderedReport;
 use crate::report::{self, Report};
 use crate::run_error::{Failure, FailureKind, RunError};
 use crate::scene::check::check;
-use crate::{render, rerender, shard};
+use crate::run_pair::{finish, has_records, run_scene_to_files};
+use crate::{render, shard};
 
 /// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
 pub fn report_of(scene: &Scene) -> Report {
@@ -26,55 +27,6 @@ pub fn report_of(scene: &Scene) -> Report {
         .expect("records that go nowhere cannot fail to be written");
     let eval = details(scene, &plan, &streamed, &Quiet);
     report::build_report(scene, &eval, &streamed.tally, &plan)
-}
-
-/// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
-pub fn has_records(scene: &Scene) -> bool {
-    let a = &scene.analyses;
-    a.friction_along_loa
-        || a.efficiency.is_some()
-        || (a.dynamics && scene.dynamics.is_some())
-        || a.transmission_error.is_some()
-}
-
-/// Stages 3 to 5 after the sweep: details (reusing the dynamics the stream computed), report, render.
-fn finish(
-    scene: &Scene,
-    plan: &Plan,
-    tally: &Tally,
-    known: &evaluate::stream::Streamed,
-    progress: &dyn Progress,
-) -> Result<(Report, RenderedReport), RunError> {
-    let eval = details(scene, plan, known, progress);
-    progress.stage("report", 1);
-    let report = report::build_report(scene, &eval, tally, plan);
-    let timings = eval.dynamics.as_ref().and_then(report::dynamics::timings);
-    progress.stage("render", 1);
-    let (report, mut rendered) = rerender::render_as_written(&report, timings.as_ref())?;
-    // The map's cells are data of the run, as the record files are: written beside the report.
-    if let (Some(map), Some(m)) = (&eval.efficiency_map, &report.efficiency_map) {
-        let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
-        rendered.files.push((m.csv.clone(), map.csv(&labels)));
-    }
-    Ok((report, rendered))
-}
-
-/// One scene (at one oil temperature) run in memory: its report and files, the record files included.
-fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
-    let scene = &*evaluate::first_balance::at_first_balance(scene);
-    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let extra = evaluate::records::ExtraColumns::of(scene);
-    let mut sink =
-        RecordFiles::new(RecordFormats::default(), &extra, |_| Ok(Vec::new())).map_err(RunError::io("records"))?;
-    let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
-    let (report, mut rendered) = finish(scene, &plan, &streamed.tally, &streamed, &Quiet)?;
-    if has_records(scene) {
-        let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
-        let text = |b: Option<Vec<u8>>| String::from_utf8(b.expect("the default formats")).expect("records are UTF-8");
-        rendered.files.push((report::sweep::RECORDS_CSV.into(), text(csv)));
-        rendered.files.push((report::sweep::RECORDS_JSONL.into(), text(jsonl)));
-    }
-    Ok((report, rendered.files))
 }
 
 /// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
