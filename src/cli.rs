@@ -319,16 +319,11 @@ fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>, records: gearlos
         Ok(s) => s,
         Err(e) => return report_errors(&e),
     };
-    if scene.drive.is_some() && (records.parquet || !records.csv) {
-        errln!(
-            "warning: a drive writes its records as CSV only in this version (drive_records.csv); `--records {}` is not written for it",
-            gearloss::evaluate::record_files::FORMAT_NAMES
-                .iter()
-                .zip([records.csv, records.jsonl, records.parquet])
-                .filter_map(|(n, on)| on.then_some(*n))
-                .collect::<Vec<_>>()
-                .join(",")
-        );
+    if scene.drive.is_some() && !records.csv && !records.parquet {
+        errln!("warning: a drive writes its rows as CSV or Parquet; `--records jsonl` writes drive_records.csv");
+    }
+    if scene.drive.is_some() && records.parquet && scene.operating.oil_temperatures.is_some() {
+        errln!("warning: a drive at several oil temperatures writes each run's drive_records.csv; `--records parquet` is not written for it");
     }
     let bar = Bar::new();
     let result = gearloss::run_into_with(&name, &source, &scene, (out, shard), records, &bar);

@@ -19,6 +19,8 @@
 //! ```text
 //!  cli ─ lib                      the binary's commands; one function per stage
 //!  run, rerender                  the stages chained into a report folder; a folder redrawn from its json
+//!  run_drive, run_stage_pairs,    a drive's run; its stages' meshes run as pairs alone; one pair's run
+//!    run_pair                     in memory (what run and run_stage_pairs both call)
 //!  shard, folder                  shards and merge; a report folder written whole (concurrent-safe)
 //!  render/ (markdown, svg/)       formats the report; never computes
 //!  report/                        the serde report: numbers and series ready to draw, findings
@@ -86,8 +88,9 @@ pub mod rerender;
 pub mod rexs;
 pub mod run;
 pub mod run_drive;
-pub(crate) mod run_pair;
 pub(crate) mod run_error;
+pub(crate) mod run_pair;
+pub(crate) mod run_stage_pairs;
 pub mod scene;
 pub(crate) mod shard;
 pub mod thermal;
@@ -103,9 +106,9 @@ pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
-pub use run_pair::has_records;
 pub use run::{merge_into, report_of, run_into, run_into_with, run_to_files, Written};
 pub use run_error::{Failure, FailureKind, RunError};
+pub use run_pair::has_records;
 pub use scene::ast::SceneAst;
 
 /// Stage 1: text → syntax tree.

@@ -370,9 +370,29 @@ pub struct Analyses {
     pub drive_cycle: Option<Span>,
     /// `transmission_error(pinion_torque = [...] N*m)`: the torques.
     pub transmission_error: Option<Sweep<Torque>>,
+    /// A drive's `stages = [first, second]`: the stages whose meshes the analyses of one pair
+    /// (friction along the line of action, film, dynamics, …) run on, with where each is named;
+    /// None: every stage.
+    pub stages: Option<Vec<(String, Span)>>,
 }
 
 impl Analyses {
+    /// Whether the analyses of one pair run on the drive's stage `name` (`stages = [...]` names it,
+    /// or it names none).
+    pub fn analyses_stage(&self, name: &str) -> bool {
+        self.stages.as_ref().is_none_or(|s| s.iter().any(|(n, _)| n == name))
+    }
+
+    /// Whether the scene asks for an analysis of one pair's mesh (run on each stage of a drive).
+    pub fn wants_pair_analyses(&self) -> bool {
+        self.friction_along_loa
+            || self.film
+            || self.dynamics
+            || self.numerics
+            || self.stability_map.is_some()
+            || self.transmission_error.is_some()
+    }
+
     /// The formulation a drive's duty cycle and drive cycle run under: `efficiency`'s first, else external.
     pub fn first_formulation(&self) -> Formulation {
         self.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External)

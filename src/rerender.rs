@@ -40,7 +40,13 @@ pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
         return Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files);
     }
     if let Ok(drive) = serde_json::from_str::<crate::report::drive::DriveReport>(&text) {
-        return Ok(render::drive::render_drive(&drive).map_err(RunError::drawing)?.files);
+        let mut files = render::drive::render_drive(&drive).map_err(RunError::drawing)?.files;
+        // Each stage mesh analysed as a pair alone has its report of one pair in its folder.
+        for folder in drive.stage_pairs.iter().filter_map(|p| p.folder.as_ref()) {
+            let inner = render_folder(&dir.join(folder))?;
+            files.extend(inner.into_iter().map(|(f, c)| (format!("{folder}/{f}"), c)));
+        }
+        return Ok(files);
     }
     if let Ok(sweep) = serde_json::from_str::<crate::report::drive_oil_sweep::DriveOilSweepReport>(&text) {
         let mut files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep);

@@ -15,8 +15,8 @@ use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
 use crate::report::{self, Report};
 use crate::run_error::{Failure, FailureKind, RunError};
-use crate::scene::check::check;
 use crate::run_pair::{finish, has_records, run_scene_to_files};
+use crate::scene::check::check;
 use crate::{render, shard};
 
 /// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
@@ -148,7 +148,8 @@ pub fn run_into(
     run_into_with(source_name, source, scene, (out_dir, shard), RecordFormats::default(), progress)
 }
 
-/// [`run_into`] writing the record files of `formats` (a drive's records are CSV whatever they say).
+/// [`run_into`] writing the record files of `formats` (a drive's: drive_records.csv and
+/// drive_records.parquet; JSON Lines alone gives the CSV).
 pub fn run_into_with(
     source_name: &str,
     source: &str,
@@ -160,7 +161,7 @@ pub fn run_into_with(
     let slug = report::slug(&scene.title);
     let labels = scene.oil_temperature_labels();
     if let (Some(drive), None) = (&scene.drive, shard) {
-        return crate::run_drive::run_drive_into(scene, drive, out_dir, progress).map(Written::of);
+        return crate::run_drive::run_drive_into(scene, drive, (out_dir, formats), progress).map(Written::of);
     }
     if let (Some(drive), Some(shard)) = (&scene.drive, shard) {
         if !labels.is_empty() {
@@ -175,8 +176,15 @@ pub fn run_into_with(
                 .hint("run it whole, or write one scene per oil temperature and shard each"),
             ));
         }
-        return crate::run_drive::run_drive_shard_into(source_name, source, scene, drive, (shard, out_dir), progress)
-            .map(Written::of);
+        return crate::run_drive::run_drive_shard_into(
+            source_name,
+            source,
+            scene,
+            drive,
+            (shard, out_dir, formats),
+            progress,
+        )
+        .map(Written::of);
     }
     let Some(shard) = shard else {
         let folder = ReportFolder::create(out_dir, &slug).map_err(RunError::io("the report folder"))?;

@@ -3,6 +3,11 @@
 
 use std::path::{Path, PathBuf};
 
+use std::fs::File;
+use std::io::BufWriter;
+
+use crate::evaluate::drive_records::{self, DriveRecordFiles};
+use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::{self, Shard};
 use crate::folder::ReportFolder;
 use crate::model::Scene;
@@ -35,6 +40,21 @@ fn write_all(
     Ok(out)
 }
 
+/// The report of `eval` with the analyses of one pair on its stages, rendered; the stages' pair
+/// reports among the files.
+fn reported(
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+    eval: &evaluate::drive::DriveEvaluation,
+) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
+    let mut report = report::drive::build_drive_report(scene, drive, eval);
+    let (rows, files) = crate::run_stage_pairs::stage_pair_files(scene, drive)?;
+    report.stage_pairs = rows;
+    let mut rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    rendered.files.extend(files);
+    Ok((report, rendered))
+}
+
 /// A drive scene evaluated, reported and rendered in memory, its records among the files.
 pub fn drive_report_files(
     scene: &Scene,
@@ -42,8 +62,7 @@ pub fn drive_report_files(
 ) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
     let mut records = Vec::new();
     let eval = evaluate::drive::evaluate_drive_into(scene, drive, &mut records).map_err(RunError::io("records"))?;
-    let report = report::drive::build_drive_report(scene, drive, &eval);
-    let mut rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    let (report, mut rendered) = reported(scene, drive, &eval)?;
     let text = String::from_utf8(records).expect("records are UTF-8");
     rendered.files.push((evaluate::drive_records::FILE.to_string(), text));
     Ok((report, rendered))
@@ -79,19 +98,18 @@ pub(crate) fn run_drive_shard_into(
     source: &str,
     scene: &Scene,
     drive: &crate::model::SceneDrive,
-    (shard, out_dir): (Shard, &Path),
+    (shard, out_dir, formats): (Shard, &Path, RecordFormats),
     progress: &dyn Progress,
 ) -> Result<DriveWritten, RunError> {
     let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
     let io = RunError::io("the record files");
-    let mut records = std::io::BufWriter::new(folder.create_file(evaluate::drive_records::FILE).map_err(&io)?);
+    let (mut records, mut files) = record_files(&folder, drive, formats)?;
     let tally = evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
-    std::io::Write::flush(&mut records).map_err(&io)?;
-    drop(records);
+    records.finish().map_err(&io)?;
     let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally);
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
-    let files = vec![evaluate::drive_records::FILE.to_string(), shard::MANIFEST.to_string()];
+    files.push(shard::MANIFEST.to_string());
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
     Ok(DriveWritten { folder, files, drives: Vec::new() })
 }
@@ -109,24 +127,21 @@ pub(crate) fn merge_drive_into(
     let folder =
         ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
     progress.stage("merge", set.folders.len() as u64);
-    set.concatenate_files(&folder, &[(evaluate::drive_records::FILE, false)], progress)
-        .map_err(RunError::io("the record files"))?;
+    let files = set.concatenate_drive_records(&folder, progress).map_err(RunError::io("the record files"))?;
     let tally = set.drive_tally.unwrap_or_default();
     let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
-    report_into(folder, scene, drive, &eval, progress)
+    report_into((folder, files), scene, drive, &eval, progress)
 }
 
-/// The report of `eval` rendered into `folder` (which holds its drive_records.csv), committed.
+/// The report of `eval` rendered into `folder` (which holds its record files `files`), committed.
 fn report_into(
-    folder: ReportFolder,
+    (folder, mut files): (ReportFolder, Vec<String>),
     scene: &Scene,
     drive: &crate::model::SceneDrive,
     eval: &evaluate::drive::DriveEvaluation,
     progress: &dyn Progress,
 ) -> Result<DriveWritten, RunError> {
-    let report = report::drive::build_drive_report(scene, drive, eval);
-    let rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
-    let mut files = vec![evaluate::drive_records::FILE.to_string()];
+    let (report, rendered) = reported(scene, drive, eval)?;
     files.extend(write_all(&folder, &rendered.files, progress)?);
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
     Ok(DriveWritten { folder, files, drives: vec![(String::new(), report)] })
@@ -136,7 +151,7 @@ fn report_into(
 pub(crate) fn run_drive_into(
     scene: &Scene,
     drive: &crate::model::SceneDrive,
-    out_dir: &Path,
+    (out_dir, formats): (&Path, RecordFormats),
     progress: &dyn Progress,
 ) -> Result<DriveWritten, RunError> {
     let folder =
@@ -148,10 +163,37 @@ pub(crate) fn run_drive_into(
         return Ok(DriveWritten { folder, files, drives });
     }
     let io = RunError::io("the record files");
-    let file = folder.create_file(evaluate::drive_records::FILE).map_err(&io)?;
-    let mut records = std::io::BufWriter::new(file);
+    let (mut records, files) = record_files(&folder, drive, formats)?;
     let eval = evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, progress).map_err(&io)?;
-    std::io::Write::flush(&mut records).map_err(&io)?;
-    drop(records);
-    report_into(folder, scene, drive, &eval, progress)
+    records.finish().map_err(&io)?;
+    report_into((folder, files), scene, drive, &eval, progress)
+}
+
+/// A drive's record files in a folder as they are written.
+type DriveFiles = DriveRecordFiles<BufWriter<File>, BufWriter<File>>;
+
+/// The record files `formats` ask for in `folder`: drive_records.csv (also where they name JSON
+/// Lines only: a drive's rows are CSV or Parquet), drive_records.parquet; and their names.
+fn record_files(
+    folder: &ReportFolder,
+    drive: &crate::model::SceneDrive,
+    formats: RecordFormats,
+) -> Result<(DriveFiles, Vec<String>), RunError> {
+    let io = RunError::io("the record files");
+    let csv = formats.csv || !formats.parquet;
+    let open = |file: &str| folder.create_file(file).map(BufWriter::new).map_err(&io);
+    let mut files = Vec::new();
+    let csv_out = if csv {
+        files.push(drive_records::FILE.to_string());
+        Some(open(drive_records::FILE)?)
+    } else {
+        None
+    };
+    let parquet_out = if formats.parquet {
+        files.push(drive_records::PARQUET_FILE.to_string());
+        Some(open(drive_records::PARQUET_FILE)?)
+    } else {
+        None
+    };
+    Ok((DriveRecordFiles::new(drive, csv_out, parquet_out).map_err(&io)?, files))
 }

@@ -62,8 +62,11 @@ pub(crate) fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, 
     run_scene_exact(scene).map(|(_, report, files)| (report, files))
 }
 
+/// A pair's run in memory: the report as built, as report.json reads it back, and the files.
+pub(crate) type ExactRun = (Report, Report, Vec<(String, String)>);
+
 /// [`run_scene_to_files`] with the report as built, its numbers unrounded, first.
-pub(crate) fn run_scene_exact(scene: &Scene) -> Result<(Report, Report, Vec<(String, String)>), RunError> {
+pub(crate) fn run_scene_exact(scene: &Scene) -> Result<ExactRun, RunError> {
     let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let extra = evaluate::records::ExtraColumns::of(scene);

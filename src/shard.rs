@@ -194,27 +194,48 @@ impl ShardSet {
         self.concatenate_files(folder, &text, progress)?;
         let mut files: Vec<String> = text.iter().map(|(f, _)| f.to_string()).collect();
         if first.join(RECORDS_PARQUET).exists() {
-            self.merge_parquet(folder)?;
+            self.merge_parquet(folder, RECORDS_PARQUET)?;
             files.push(RECORDS_PARQUET.to_string());
         }
         Ok(files)
     }
 
-    /// The shards' records.parquet rows, in shard order, into one file of the first shard's columns.
-    fn merge_parquet(&self, folder: &ReportFolder) -> std::io::Result<()> {
+    /// A drive's merged record files (those the first shard holds): drive_records.csv concatenated
+    /// in shard order (its header in the first shard only), drive_records.parquet's rows in shard
+    /// order into one file. Returns the files written.
+    pub(crate) fn concatenate_drive_records(
+        &self,
+        folder: &ReportFolder,
+        progress: &dyn Progress,
+    ) -> std::io::Result<Vec<String>> {
+        use crate::evaluate::drive_records::{FILE, PARQUET_FILE};
+        let first = &self.folders[0];
+        let mut files = Vec::new();
+        if first.join(FILE).exists() {
+            self.concatenate_files(folder, &[(FILE, false)], progress)?;
+            files.push(FILE.to_string());
+        }
+        if first.join(PARQUET_FILE).exists() {
+            self.merge_parquet(folder, PARQUET_FILE)?;
+            files.push(PARQUET_FILE.to_string());
+        }
+        Ok(files)
+    }
+
+    /// The shards' Parquet record files `file`, rows in shard order, into one file of the first
+    /// shard's columns.
+    fn merge_parquet(&self, folder: &ReportFolder, file: &str) -> std::io::Result<()> {
         use crate::evaluate::record_parquet::ParquetRecords;
         use crate::evaluate::record_parquet_read::read_parquet_records;
         let mut out: Option<ParquetRecords<BufWriter<File>>> = None;
         for dir in &self.folders {
-            let path = dir.join(RECORDS_PARQUET);
+            let path = dir.join(file);
             let what = path.display().to_string();
             let (columns, rows) = read_parquet_records(File::open(&path)?, &what)?;
             let writer = match &mut out {
                 Some(w) => w,
-                None => out.insert(ParquetRecords::with_columns(
-                    BufWriter::new(folder.create_file(RECORDS_PARQUET)?),
-                    columns.clone(),
-                )?),
+                None => out
+                    .insert(ParquetRecords::with_columns(BufWriter::new(folder.create_file(file)?), columns.clone())?),
             };
             if writer.columns() != columns.as_slice() {
                 return Err(std::io::Error::new(

@@ -2,6 +2,7 @@
 //! formulation (rows streamed to the records, the first kept for the report), over the map's grid,
 //! and the thermal balance of the kept rows.
 
+use super::drive_records::{DriveRecordFiles, DriveRecordSink};
 use super::drive_setup::DriveSetup;
 use crate::drive::DrivePoint;
 use crate::model::{Scene, SceneDrive};
@@ -47,7 +48,8 @@ pub fn evaluate_drive_into(
     drive: &SceneDrive,
     records: &mut dyn std::io::Write,
 ) -> std::io::Result<DriveEvaluation> {
-    evaluate_drive_into_with(scene, drive, records, &crate::progress::Quiet)
+    let mut csv = DriveRecordFiles::csv(records);
+    evaluate_drive_into_with(scene, drive, &mut csv, &crate::progress::Quiet)
 }
 
 /// [`evaluate_drive_into`] announcing each block of rows to `progress`: where it says the run is
@@ -55,7 +57,7 @@ pub fn evaluate_drive_into(
 pub(crate) fn evaluate_drive_into_with(
     scene: &Scene,
     drive: &SceneDrive,
-    records: &mut dyn std::io::Write,
+    records: &mut dyn DriveRecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<DriveEvaluation> {
     let setup = DriveSetup::new(scene, drive);
@@ -74,7 +76,8 @@ pub fn evaluate_drive_shard(
     shard: crate::evaluate::Shard,
     records: &mut dyn std::io::Write,
 ) -> std::io::Result<DriveTally> {
-    evaluate_drive_shard_with(scene, drive, shard, records, &crate::progress::Quiet)
+    let mut csv = DriveRecordFiles::csv(records);
+    evaluate_drive_shard_with(scene, drive, shard, &mut csv, &crate::progress::Quiet)
 }
 
 /// [`evaluate_drive_shard`] announcing each block of rows to `progress` (and stopping where it is
@@ -83,7 +86,7 @@ pub(crate) fn evaluate_drive_shard_with(
     scene: &Scene,
     drive: &SceneDrive,
     shard: crate::evaluate::Shard,
-    records: &mut dyn std::io::Write,
+    records: &mut dyn DriveRecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<DriveTally> {
     let setup = DriveSetup::new(scene, drive);
@@ -100,9 +103,15 @@ pub(crate) fn evaluate_drive_shard_with(
 pub fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup).min(DETAIL_ROWS);
-    let (rows, validity, _) =
-        stream_rows(&setup, scene, drive, (0..n, &mut std::io::sink()), false, &crate::progress::Quiet)
-            .expect("a sink takes every row");
+    let (rows, validity, _) = stream_rows(
+        &setup,
+        scene,
+        drive,
+        (0..n, &mut DriveRecordFiles::csv(std::io::sink())),
+        false,
+        &crate::progress::Quiet,
+    )
+    .expect("a sink takes every row");
     finish(&setup, scene, drive, (rows, validity), tally)
 }
 
@@ -121,7 +130,7 @@ fn stream_rows(
     setup: &DriveSetup,
     scene: &Scene,
     drive: &SceneDrive,
-    (range, records): (std::ops::Range<usize>, &mut dyn std::io::Write),
+    (range, records): (std::ops::Range<usize>, &mut dyn DriveRecordSink),
     header: bool,
     progress: &dyn Progress,
 ) -> std::io::Result<(Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, DriveTally)> {
@@ -132,7 +141,7 @@ fn stream_rows(
     let mut rows = Vec::new();
     let mut tally = DriveTally { rows: range.len(), ..Default::default() };
     if header {
-        super::drive_records::header(records, drive)?;
+        records.header(drive)?;
     }
     let mut validity = Vec::new();
     for start in range.clone().step_by(BLOCK) {
@@ -141,7 +150,7 @@ fn stream_rows(
         let checked: Vec<_> = block.par_iter().map(|r| setup.validity(r.law_index, &r.point)).collect();
         for (i, (row, valid)) in block.into_iter().zip(checked).enumerate() {
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
-            super::drive_records::row(records, start + i, row.point.flow, &row, &outside)?;
+            records.row(start + i, row.point.flow, &row, &outside)?;
             tally.add(start + i, &row.point);
             if outside.iter().any(|o| *o > 0) {
                 tally.outside_rows += 1;

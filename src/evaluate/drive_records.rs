@@ -6,16 +6,27 @@
 use std::io::Write;
 
 use super::drive_setup::DriveRow;
+use super::record_cells::Cell;
+use super::record_parquet::ColumnType;
 use crate::drive::PowerFlow;
 use crate::model::SceneDrive;
 
 /// The file's name in the report folder.
 pub const FILE: &str = "drive_records.csv";
+/// The same rows as typed Parquet columns (`--records parquet`).
+pub const PARQUET_FILE: &str = "drive_records.parquet";
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
 
-/// The header: the fixed columns, then per stage and per bearing place and shaft.
+/// The header line: [`columns`]' names.
 pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result<()> {
+    let cols: Vec<String> = columns(drive).into_iter().map(|(name, _)| name).collect();
+    writeln!(out, "{}", cols.join(","))
+}
+
+/// The columns, named and typed (drive_records.parquet's schema): the fixed columns, then per stage
+/// and per bearing place and shaft.
+pub fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
     let mut cols: Vec<String> = [
         "row",
         "torque_index",
@@ -60,8 +71,23 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
             cols.push(format!("shaft_{}_{c}", s.name));
         }
     }
-    writeln!(out, "{}", cols.join(","))
+    cols.into_iter()
+        .map(|c| {
+            let t = if INTS.contains(&c.as_str()) || c.ends_with("_validity_outside") {
+                ColumnType::Int
+            } else if TEXTS.contains(&c.as_str()) || c.ends_with("_driving") {
+                ColumnType::Text
+            } else {
+                ColumnType::Real
+            };
+            (c, t)
+        })
+        .collect()
 }
+
+/// The whole-number and the text columns; every other column is a number.
+const INTS: &[&str] = &["row", "torque_index", "speed_index", "law_index", "passes"];
+const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver"];
 
 /// A planetary stage's columns: its members, its meshes, its planets.
 const PLANETARY: [&str; 15] = [
@@ -82,8 +108,8 @@ const PLANETARY: [&str; 15] = [
     "churning_W",
 ];
 
-/// One row; `outside`: by stage, the law's contacts outside its validity (of
-/// [`super::drive_setup::VALIDITY_SAMPLES`]).
+/// One row, written as CSV (numbers in Rust's shortest round-trip form, as every file of the
+/// report writes them).
 pub(crate) fn row(
     out: &mut dyn Write,
     i: usize,
@@ -91,41 +117,54 @@ pub(crate) fn row(
     r: &DriveRow,
     outside: &[usize],
 ) -> std::io::Result<()> {
+    let text: Vec<String> = cells(i, flow, r, outside)
+        .into_iter()
+        .map(|c| match c {
+            Cell::Int(n) => n.to_string(),
+            Cell::Real(x) => x.to_string(),
+            Cell::Text(t) => t,
+            Cell::Empty => String::new(),
+        })
+        .collect();
+    writeln!(out, "{}", text.join(","))
+}
+
+/// One row's cells in [`columns`]' order; `outside`: by stage, the law's contacts outside its
+/// validity (of [`super::drive_setup::VALIDITY_SAMPLES`]).
+pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> Vec<Cell> {
     let d = &r.point;
     let l = &d.losses;
-    let mut cells: Vec<String> = vec![
-        (i + 1).to_string(),
-        r.torque_index.to_string(),
-        r.speed_index.to_string(),
-        r.law_index.to_string(),
-        r.formulation.name().to_string(),
-        flow.name().to_string(),
+    let int = |n: usize| Cell::Int(n as i64);
+    let mut cells: Vec<Cell> = vec![
+        int(i + 1),
+        int(r.torque_index),
+        int(r.speed_index),
+        int(r.law_index),
+        Cell::Text(r.formulation.name().to_string()),
+        Cell::Text(flow.name().to_string()),
     ];
-    cells.extend(
-        [
-            d.input_torque,
-            d.input_speed * RPM,
-            d.input_power,
-            d.output_torque,
-            d.output_speed * RPM,
-            d.output_power,
-            l.meshes,
-            l.gear_no_load,
-            l.bearings_no_load,
-            l.bearings_load,
-            l.seals,
-            l.total(),
-            d.efficiency,
-        ]
-        .iter()
-        .map(|x| x.to_string()),
-    );
-    cells.push(d.both_ends_deliver.to_string());
-    cells.push(d.iterations.to_string());
+    let reals = |v: &[f64]| v.iter().map(|x| Cell::Real(*x)).collect::<Vec<_>>();
+    cells.extend(reals(&[
+        d.input_torque,
+        d.input_speed * RPM,
+        d.input_power,
+        d.output_torque,
+        d.output_speed * RPM,
+        d.output_power,
+        l.meshes,
+        l.gear_no_load,
+        l.bearings_no_load,
+        l.bearings_load,
+        l.seals,
+        l.total(),
+        d.efficiency,
+    ]));
+    cells.push(Cell::Text(d.both_ends_deliver.to_string()));
+    cells.push(int(d.iterations));
     for (k, s) in d.stages.iter().enumerate() {
-        cells.push(s.member_name(s.driving).to_string());
-        cells.extend([s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load].iter().map(|x| x.to_string()));
-        cells.push(outside.get(k).copied().unwrap_or(0).to_string());
+        cells.push(Cell::Text(s.member_name(s.driving).to_string()));
+        cells.extend(reals(&[s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load]));
+        cells.push(int(outside.get(k).copied().unwrap_or(0)));
         if let Some(p) = &s.planetary {
             let mut v = Vec::with_capacity(PLANETARY.len());
             for i in 0..3 {
@@ -134,16 +173,74 @@ pub(crate) fn row(
             v.extend([p.rolling_power, p.basic_efficiency, p.mesh_efficiency[0], p.mesh_efficiency[1]]);
             v.extend([p.mesh_loss[0], p.mesh_loss[1], p.forces.bearing, p.planet_bearings[0] + p.planet_bearings[1]]);
             v.push(p.churning);
-            cells.extend(v.iter().map(|x| x.to_string()));
+            cells.extend(reals(&v));
         }
     }
     for s in &d.shafts {
         for b in s.bearings.iter().filter(|b| !b.on_planets) {
-            cells.extend([b.radial_load, b.axial_load, b.no_load, b.load].iter().map(|x| x.to_string()));
+            cells.extend(reals(&[b.radial_load, b.axial_load, b.no_load, b.load]));
         }
-        cells.extend(
-            [s.speed * RPM, s.received_torque, s.passed_torque, s.gear_no_load, s.seals].iter().map(|x| x.to_string()),
-        );
+        cells.extend(reals(&[s.speed * RPM, s.received_torque, s.passed_torque, s.gear_no_load, s.seals]));
     }
-    writeln!(out, "{}", cells.join(","))
+    cells
+}
+
+/// Where a drive's rows go as they are computed.
+pub trait DriveRecordSink {
+    /// The header, written once before the rows (a CSV's first line; the first shard's only).
+    fn header(&mut self, drive: &SceneDrive) -> std::io::Result<()>;
+    fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()>;
+}
+
+/// drive_records.csv into `C`, drive_records.parquet (typed columns, row groups as the rows come,
+/// [`super::record_parquet`]) into `P`: either or both.
+pub struct DriveRecordFiles<C: Write, P: Write + Send> {
+    csv: Option<C>,
+    parquet: Option<super::record_parquet::ParquetRecords<P>>,
+}
+
+impl<C: Write> DriveRecordFiles<C, Vec<u8>> {
+    /// drive_records.csv only.
+    pub fn csv(out: C) -> Self {
+        DriveRecordFiles { csv: Some(out), parquet: None }
+    }
+}
+
+impl<C: Write, P: Write + Send> DriveRecordFiles<C, P> {
+    /// The files of `drive`'s rows: the CSV into `csv`, the Parquet file (its schema from
+    /// [`columns`]) into `parquet`.
+    pub fn new(drive: &SceneDrive, csv: Option<C>, parquet: Option<P>) -> std::io::Result<Self> {
+        let parquet =
+            parquet.map(|out| super::record_parquet::ParquetRecords::with_columns(out, columns(drive))).transpose()?;
+        Ok(DriveRecordFiles { csv, parquet })
+    }
+
+    /// Writes what is held and the Parquet footer; the two writers back, flushed.
+    pub fn finish(self) -> std::io::Result<(Option<C>, Option<P>)> {
+        let mut csv = self.csv;
+        if let Some(c) = &mut csv {
+            c.flush()?;
+        }
+        let parquet = self.parquet.map(|p| p.finish()).transpose()?;
+        Ok((csv, parquet))
+    }
+}
+
+impl<C: Write, P: Write + Send> DriveRecordSink for DriveRecordFiles<C, P> {
+    fn header(&mut self, drive: &SceneDrive) -> std::io::Result<()> {
+        match &mut self.csv {
+            Some(c) => header(c, drive),
+            None => Ok(()),
+        }
+    }
+
+    fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()> {
+        if let Some(c) = &mut self.csv {
+            row(c, i, flow, r, outside)?;
+        }
+        if let Some(p) = &mut self.parquet {
+            p.write_cells([cells(i, flow, r, outside)])?;
+        }
+        Ok(())
+    }
 }

@@ -30,6 +30,7 @@ pub mod record_parquet;
 pub mod record_parquet_read;
 pub mod records;
 pub(crate) mod setup;
+pub mod stage_pairs;
 pub(crate) mod stages;
 pub(crate) mod ste_row;
 pub mod stream;

@@ -152,6 +152,9 @@ pub struct DriveReport {
     /// The vehicle over its drive cycle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cycle: Option<super::drive_cycle::DriveCycleReport>,
+    /// The analyses of one pair on the drive's stages' meshes, each with its own report folder.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stage_pairs: Vec<super::drive_stage_pairs::StagePairReport>,
     pub findings: Vec<Finding>,
 }
 
@@ -220,6 +223,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             (Some(spec), Some(c)) => Some(super::drive_cycle::build_cycle_report(scene, drive, spec, c)),
             _ => None,
         },
+        stage_pairs: Vec::new(),
         points,
     };
     if let (Some(d), Some(h)) = (&report.duty, &scene.housing) {
@@ -313,7 +317,7 @@ fn row_words(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> St
 }
 
 /// An operating point in words, as the scene gives it: `T_out = 150 N·m, n_out = 500 rpm`.
-fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize, speed_index: usize) -> String {
+pub(crate) fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize, speed_index: usize) -> String {
     let op = &scene.operating;
     let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
     let ends = drive.layout.operating;

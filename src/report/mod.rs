@@ -10,6 +10,7 @@ pub(crate) mod drive_findings;
 pub mod drive_inputs;
 pub mod drive_oil_sweep;
 pub mod drive_point;
+pub mod drive_stage_pairs;
 pub(crate) mod dynamics;
 pub(crate) mod dynamics_findings;
 pub(crate) mod dynamics_records;

@@ -90,7 +90,13 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     let dynamics =
         singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, &mut errors));
     if let Some(span) = analyses.dynamics_span {
-        check_dynamics_needs(span, singles.contains_key("dynamics"), gears.as_ref(), dynamics.as_ref(), &mut errors);
+        super::lower_dynamics_blocks::check_dynamics_needs(
+            span,
+            singles.contains_key("dynamics"),
+            gears.as_ref(),
+            dynamics.as_ref(),
+            &mut errors,
+        );
     }
 
     // (A law that failed to lower has its own error; this one is for a scene that lists none.)
@@ -245,48 +251,6 @@ fn scene_blocks<'a>(ast: &'a SceneAst, top: &Fields<'a>, errors: &mut Vec<Diagno
         }
     }
     (materials, singles, stages)
-}
-
-/// What the dynamics analyses need: a `dynamics` block, both gears' inertias, and their masses for a
-/// model on bearings.
-fn check_dynamics_needs(
-    span: Span,
-    has_block: bool,
-    gears: Option<&GearPair>,
-    dynamics: Option<&DynamicsSpec>,
-    errors: &mut Vec<Diagnostic>,
-) {
-    if !has_block {
-        errors.push(
-            Diagnostic::new(DiagnosticKind::MissingKey, span, "the dynamics analyses need a `dynamics` block")
-                .hint("add `dynamics { mesh_stiffness { single = 1.96e8 N/m  double = 3.92e8 N/m }  damping_ratio = 0.05  friction = coulomb(mu = 0.08) }`"),
-        );
-    }
-    if let Some(g) = gears {
-        for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
-            if gear.inertia.is_none() {
-                errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::MissingKey,
-                        gear.span,
-                        format!("the dynamics need the {name}'s `inertia`"),
-                    )
-                    .hint(format!("add `inertia = 3.45e-4 kg*m^2` to `{name}`")),
-                );
-            }
-            let on_bearings = dynamics.map(|d| d.model.id.entry()).filter(|m| m.on_bearings);
-            if let Some(model) = on_bearings.filter(|_| gear.mass.is_none()) {
-                errors.push(
-                    Diagnostic::new(
-                        DiagnosticKind::MissingKey,
-                        gear.span,
-                        format!("the {} model needs the {name}'s `mass`", model.name),
-                    )
-                    .hint(format!("add `mass = 1.5 kg` to `{name}` (the gear with its share of the shaft)")),
-                );
-            }
-        }
-    }
 }
 
 /// `film` needs the lubricant's pressure-viscosity coefficient.

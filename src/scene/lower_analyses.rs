@@ -25,8 +25,10 @@ const FORMULATIONS: &[&str] = &["external", "internal"];
 
 /// The `analyses` block; a drive's (`drive`) map is given at its ends.
 pub(super) fn lower_analyses(block: &Block, drive: bool, errors: &mut Vec<Diagnostic>) -> Analyses {
-    let f = Fields::read("the `analyses` block", block.span, &block.items, &[], &[], ANALYSES, errors);
-    let mut a = Analyses::default();
+    let keys: &[&str] = if drive { &["stages"] } else { &[] };
+    let f = Fields::read("the `analyses` block", block.span, &block.items, keys, &[], ANALYSES, errors);
+    let mut a =
+        Analyses { stages: f.values.get("stages").and_then(|(_, v)| stage_names(v, errors)), ..Default::default() };
     for call in &f.calls {
         match call.name.text.as_str() {
             "efficiency" => {
@@ -128,4 +130,36 @@ pub(super) fn lower_analyses(block: &Block, drive: bool, errors: &mut Vec<Diagno
         }
     }
     a
+}
+
+/// `stages = [first, second]`: names of a drive's stages, each with where it is written.
+fn stage_names(value: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<(String, crate::diagnostics::Span)>> {
+    let hint = "write the stages' names as a list: `stages = [first, second]`";
+    let ValueKind::List { items, unit: None } = &value.kind else {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::WrongDimension, value.span, "`stages` expects a list of stage names")
+                .hint(hint),
+        );
+        return None;
+    };
+    let mut names = Vec::new();
+    for item in items {
+        match item {
+            ListItem::Name(n) => names.push((n.text.clone(), n.span)),
+            ListItem::Number(_, s) => errors
+                .push(Diagnostic::new(DiagnosticKind::WrongDimension, *s, "a stage is named, not numbered").hint(hint)),
+        }
+    }
+    if items.is_empty() {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                value.span,
+                "`stages` is an empty list: no stage would be analysed",
+            )
+            .hint("name at least one stage, or leave `stages` out for every stage"),
+        );
+        return None;
+    }
+    Some(names)
 }

@@ -5,6 +5,7 @@
 //!     output_torque = [-500, 150, 1000] N*m    # or input_torque; negative: the output drives (coast)
 //!     output_speed  = [500, 1000] rpm          # or input_speed
 //!     oil_temperature = 80 degC
+//!     detail_points = [1, 4]                   # where the analyses of one pair run on the stages
 //! }
 //! ```
 
@@ -14,7 +15,8 @@ use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::drive::{DriveOperating, ShaftEnd};
 use crate::model::{AngularVelocity, Operating, Sweep, Torque, MAX_OPERATING_POINTS};
 
-const KEYS: &[&str] = &["input_torque", "output_torque", "input_speed", "output_speed", "oil_temperature"];
+const KEYS: &[&str] =
+    &["input_torque", "output_torque", "input_speed", "output_speed", "oil_temperature", "detail_points"];
 
 /// The drive's `operating` block; with a drive cycle (`cycle`) torques and speeds may be left out
 /// (the cycle gives them), the ends then the output's.
@@ -83,12 +85,15 @@ pub(super) fn lower_drive_operating(
         return None;
     }
     let (oil_temperature, oil_temperatures) = super::lower_operating::oil_temperatures(&f, errors);
+    let mut detail_points = super::lower_operating::detail_points(&f, count, errors)?;
+    detail_points.sort_unstable();
+    detail_points.dedup();
     let operating = Operating {
         pinion_torque: torque,
         pinion_speed: speed,
         oil_temperature,
         oil_temperatures,
-        detail_points: Vec::new(),
+        detail_points,
         equilibrium: None,
     };
     Some((operating, DriveOperating { torque_at, speed_at }))
@@ -114,12 +119,50 @@ fn at_one_end<Q: super::units::SiQuantity>(
             );
             None
         }
-        (Some(_), None) => f.sweep(&input, example, errors).map(|s| (s, ShaftEnd::Input)),
-        (None, Some(_)) => f.sweep(&output, example, errors).map(|s| (s, ShaftEnd::Output)),
+        (Some(_), None) => {
+            f.sweep(&input, example, errors).and_then(|s| plausible(s, &input, errors)).map(|s| (s, ShaftEnd::Input))
+        }
+        (None, Some(_)) => {
+            f.sweep(&output, example, errors).and_then(|s| plausible(s, &output, errors)).map(|s| (s, ShaftEnd::Output))
+        }
         (None, None) => {
             errors.push(
                 Diagnostic::new(DiagnosticKind::MissingKey, f.span, format!("the `operating` block gives no {what}"))
                     .hint(format!("add `{output} = {example}` (or `{input}`)")),
+            );
+            None
+        }
+    }
+}
+
+/// The plausible magnitudes of a drive's signed torques and speeds: those of one pair's
+/// `pinion_torque` and `pinion_speed` ([`super::limits`]: up to 1e8 N·m, up to 10⁶ rpm), so that a
+/// typo in a unit or an exponent is refused at its line instead of giving NaN losses.
+const MAGNITUDES: [(&str, f64, &str); 2] = [("torque", 1e8, "1e8 N·m"), ("speed", 1.05e5, "1 000 000 rpm")];
+
+/// `sweep` of `key` when every value's magnitude is within [`MAGNITUDES`].
+fn plausible<Q: super::units::SiQuantity>(
+    sweep: Sweep<Q>,
+    key: &str,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Sweep<Q>> {
+    let (_, most, shown) = MAGNITUDES.iter().find(|(w, _, _)| key.ends_with(w))?;
+    match sweep.values.iter().position(|v| !(v.si().abs() <= *most)) {
+        None => Some(sweep),
+        Some(i) => {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    sweep.span,
+                    format!(
+                        "`{key}` = {:e} {} is outside the plausible range: up to {shown} either way",
+                        sweep.written_values[i],
+                        crate::quantity::shown_written_unit(&sweep.unit)
+                    ),
+                )
+                .hint(
+                    "check the value's unit and exponent (a drive's torques and speeds are held to one pair's ranges)",
+                ),
             );
             None
         }

@@ -1,8 +1,9 @@
 //! A scene written with `stage` blocks lowered into a [`Scene`] with its [`SceneDrive`]: the
 //! stages (each pair checked as one pair is), the shafts, the drive put together and checked, the
 //! operating points at the drive's ends, the lubricant, friction laws and analyses as for one pair.
-//! A drive's report is its efficiency (with its map, thermal balance and duty cycle): the analyses
-//! of one pair's contact, film and dynamics are refused here with a hint.
+//! A drive's report is its efficiency (with its map, thermal balance and duty cycle); the analyses
+//! of one pair's contact, film and dynamics run on its stages' meshes
+//! ([`super::lower_stage_analyses`]).
 
 use std::collections::BTreeMap;
 
@@ -10,12 +11,6 @@ use super::ast::*;
 use super::fields::Fields;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
 use crate::model::*;
-
-/// The analyses of one pair that a drive does not give (yet).
-const PAIR_ONLY: &[&str] =
-    &["friction_along_loa", "film", "contact", "dynamics", "stability_map", "numerics", "transmission_error"];
-/// Scene blocks of one pair only.
-const PAIR_BLOCKS: &[&str] = &["dynamics"];
 
 pub(super) fn lower_drive_scene(
     ast: &SceneAst,
@@ -38,18 +33,6 @@ pub(super) fn lower_drive_scene(
                     format!("two stages are named `{}`", s.name.text),
                 )
                 .hint("give each stage a name of its own"),
-            );
-        }
-    }
-    for kind in PAIR_BLOCKS {
-        if let Some(b) = singles.get(kind) {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::UnknownName,
-                    b.kind.span,
-                    format!("a `{kind}` block is for one pair; a drive of stages does not take it in this version"),
-                )
-                .hint("leave it out, or study the pair alone in a scene with a `gears` block"),
             );
         }
     }
@@ -96,6 +79,7 @@ pub(super) fn lower_drive_scene(
         .get("analyses")
         .map_or_else(Analyses::default, |b| super::lower_analyses::lower_analyses(b, true, errors));
     check_analyses(singles.get("analyses").copied(), &analyses, ast.title_span, friction.is_empty(), errors);
+    let dynamics = singles.get("dynamics").and_then(|b| super::lower_dynamics::lower_dynamics(b, base_dir, errors));
     let cycle = super::lower_vehicle::cycle_of_scene(cycle_blocks, analyses.drive_cycle, base_dir, errors);
     if let (Some(c), Some((op, _)), Some(_)) = (&cycle, &operating, analyses.drive_cycle) {
         let transient = housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
@@ -128,6 +112,22 @@ pub(super) fn lower_drive_scene(
             }
         }
     }
+    super::lower_stage_analyses::check_stage_analyses(
+        &super::lower_stage_analyses::StageAnalysesInputs {
+            stages: &stages,
+            analyses: &analyses,
+            dynamics: dynamics.as_ref(),
+            dynamics_block: singles.get("dynamics").copied(),
+            lubricant: lubricant.as_ref(),
+            lubricant_failed,
+            operating: operating.as_ref().map(|o| &o.0),
+            detail_points: singles
+                .get("operating")
+                .and_then(|b| b.items.iter().map(Item::head).find(|k| k.text == "detail_points"))
+                .map(|k| k.span),
+        },
+        errors,
+    );
     let (Some((operating, ends)), Some(shafts), Some(gearbox)) = (operating, shafts, gearbox_block) else {
         return Err(std::mem::take(errors));
     };
@@ -147,7 +147,7 @@ pub(super) fn lower_drive_scene(
             lubricant,
             operating,
             friction,
-            dynamics: None,
+            dynamics,
             gearbox: None,
             housing,
             duty_cycle,
@@ -173,18 +173,9 @@ fn step_keys(ends: crate::drive::DriveOperating) -> super::lower_thermal::StepKe
     }
 }
 
-/// A drive's analyses: `efficiency` (and its map), which need friction laws; the analyses of one
-/// pair are refused with a hint.
+/// A drive's analyses: `efficiency` (and its map), which need friction laws (the analyses of one
+/// pair on its stages: [`super::lower_stage_analyses`]).
 fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: bool, errors: &mut Vec<Diagnostic>) {
-    for item in block.map_or(&[][..], |b| &b.items[..]) {
-        let name = item.head();
-        if PAIR_ONLY.contains(&name.text.as_str()) {
-            errors.push(
-                Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("`{}` is an analysis of one pair; a drive of stages gives `efficiency`, `efficiency_map`, `thermal_balance` and `duty_cycle` in this version", name.text))
-                    .hint("study one stage's pair alone in a scene with a `gears` block for its contact, film or dynamics"),
-            );
-        }
-    }
     match (a.efficiency.is_some(), a.friction_span) {
         (false, _) if a.drive_cycle.is_some() && no_laws => errors.push(
             Diagnostic::new(

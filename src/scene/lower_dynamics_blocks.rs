@@ -4,9 +4,9 @@
 use super::ast::*;
 use super::fields::{scalar, sweep_values, unknown_name, Fields};
 use super::units::Dimension;
-use crate::diagnostics::{Diagnostic, DiagnosticKind};
+use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
 use crate::dynamics::six_dof::Bearing;
-use crate::model::{AngularVelocity, FreeResponseSpec, Sweep};
+use crate::model::{AngularVelocity, DynamicsSpec, FreeResponseSpec, GearPair, Sweep};
 use crate::scene::units::SiQuantity;
 
 const STE_KEYS: &[&str] = &["amplitudes", "phases"];
@@ -149,4 +149,46 @@ pub(crate) fn lower_stability_map(call: &Call, errors: &mut Vec<Diagnostic>) -> 
         );
     }
     out
+}
+
+/// What the dynamics analyses need: a `dynamics` block, both gears' inertias, and their masses for a
+/// model on bearings.
+pub(super) fn check_dynamics_needs(
+    span: Span,
+    has_block: bool,
+    gears: Option<&GearPair>,
+    dynamics: Option<&DynamicsSpec>,
+    errors: &mut Vec<Diagnostic>,
+) {
+    if !has_block {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::MissingKey, span, "the dynamics analyses need a `dynamics` block")
+                .hint("add `dynamics { mesh_stiffness { single = 1.96e8 N/m  double = 3.92e8 N/m }  damping_ratio = 0.05  friction = coulomb(mu = 0.08) }`"),
+        );
+    }
+    if let Some(g) = gears {
+        for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+            if gear.inertia.is_none() {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        gear.span,
+                        format!("the dynamics need the {name}'s `inertia`"),
+                    )
+                    .hint(format!("add `inertia = 3.45e-4 kg*m^2` to `{name}`")),
+                );
+            }
+            let on_bearings = dynamics.map(|d| d.model.id.entry()).filter(|m| m.on_bearings);
+            if let Some(model) = on_bearings.filter(|_| gear.mass.is_none()) {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::MissingKey,
+                        gear.span,
+                        format!("the {} model needs the {name}'s `mass`", model.name),
+                    )
+                    .hint(format!("add `mass = 1.5 kg` to `{name}` (the gear with its share of the shaft)")),
+                );
+            }
+        }
+    }
 }

@@ -94,7 +94,7 @@ pub(super) fn check_record_rows(scene: &Scene, errors: &mut Vec<Diagnostic>) {
 
 /// `detail_points = [1, 57]`: operating points (1-based, torque-major, as in records.csv) reported in
 /// full besides the default ones; returned 0-based.
-fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Option<Vec<usize>> {
+pub(super) fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Option<Vec<usize>> {
     let Some((_, value)) = f.values.get("detail_points") else {
         return Some(Vec::new());
     };

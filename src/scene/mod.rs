@@ -23,6 +23,7 @@ pub(crate) mod lower_planetary_checks;
 pub(crate) mod lower_shaft_body;
 pub(crate) mod lower_shafts;
 pub(crate) mod lower_stage;
+pub(crate) mod lower_stage_analyses;
 pub(crate) mod lower_teeth;
 pub(crate) mod lower_thermal;
 pub(crate) mod lower_tooth_system;

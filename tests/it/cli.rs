@@ -158,12 +158,25 @@ fn oil_temperature_sweep_writes_one_folder_per_temperature() {
 /// `--records parquet` on a drive is said, not silently dropped: the drive writes its CSV and
 /// the run says the Parquet file is not written.
 #[test]
-fn records_parquet_on_a_drive_is_said() {
+fn records_of_a_drive_are_written_as_asked() {
     let out = std::env::temp_dir().join(format!("gearloss-drive-parquet-{}", std::process::id()));
     let scene = crate::root().join("tests/specs/ok/drive_one_stage.gear");
-    let o = gearloss().arg("run").arg(&scene).arg("--out").arg(&out).args(["--records", "parquet"]).output().unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let said = String::from_utf8_lossy(&o.stderr);
-    assert!(said.contains("a drive writes its records as CSV only") && said.contains("`--records parquet`"), "{said}");
+    let run = |formats: &str| {
+        let o = gearloss().arg("run").arg(&scene).arg("--out").arg(&out).args(["--records", formats]).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
+        let mut names: Vec<String> = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.starts_with("drive_records"))
+            .collect();
+        names.sort();
+        (names, String::from_utf8_lossy(&o.stderr).into_owned())
+    };
+    assert_eq!(run("parquet").0, vec!["drive_records.parquet"]);
+    assert_eq!(run("csv,parquet").0, vec!["drive_records.csv", "drive_records.parquet"]);
+    let (names, said) = run("jsonl");
+    assert_eq!(names, vec!["drive_records.csv"]);
+    assert!(said.contains("`--records jsonl` writes drive_records.csv"), "{said}");
     let _ = std::fs::remove_dir_all(&out);
 }

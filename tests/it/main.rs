@@ -30,6 +30,7 @@ mod rexs_constructs;
 mod shaft_beam;
 mod six_dof;
 mod specs;
+mod stage_pairs;
 mod stiffness;
 mod sweeps;
 mod thermal;

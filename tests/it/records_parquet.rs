@@ -22,9 +22,14 @@ fn run(args: &[&str], out: &Path) {
     assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
 }
 
-fn parquet(dir: &Path) -> (Vec<(String, gearloss::evaluate::record_parquet::ColumnType)>, Vec<Vec<Cell>>) {
-    let path = dir.join("records.parquet");
-    read_parquet_records(std::fs::File::open(&path).unwrap(), &path.display().to_string()).unwrap()
+type Table = (Vec<(String, gearloss::evaluate::record_parquet::ColumnType)>, Vec<Vec<Cell>>);
+
+fn parquet(dir: &Path) -> Table {
+    parquet_file(&dir.join("records.parquet"))
+}
+
+fn parquet_file(path: &Path) -> Table {
+    read_parquet_records(std::fs::File::open(path).unwrap(), &path.display().to_string()).unwrap()
 }
 
 /// A CSV line's cells (RFC 4180 quotes).
@@ -129,6 +134,49 @@ fn shards_merge_into_the_single_runs_parquet() {
     assert!(!o.status.success() && err.contains("shard-2-of-3") && err.contains("records.parquet"), "{err}");
     assert!(!out.join("broken/large_sweep").exists(), "nothing written");
     let _ = std::fs::remove_dir_all(&out);
+}
+
+/// A drive's drive_records.parquet against its drive_records.csv (a parallel and a planetary
+/// drive): the same columns in order, every cell equal (floats to the bit, whole numbers and text
+/// as written); three shards with Parquet records merged are the single run's rows.
+#[test]
+fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
+    for (scene, slug) in [
+        ("specs/ev_two_stage_reducer.gear", "two_stage_ev_reducer"),
+        ("specs/planetary_two_stage.gear", "e_axle_with_a_planetary_first_stage"),
+    ] {
+        let out = temp(&format!("drive-pq-{slug}"));
+        run(&["run", scene, "--records", "parquet,csv"], &out.join("single"));
+        let dir = out.join("single").join(slug);
+        let csv = std::fs::read_to_string(dir.join("drive_records.csv")).unwrap();
+        let mut lines = csv.lines();
+        let header = split_csv(lines.next().unwrap());
+        let (columns, rows) = parquet_file(&dir.join("drive_records.parquet"));
+        assert_eq!(columns.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>(), header, "{scene}");
+        let lines: Vec<&str> = lines.collect();
+        assert_eq!(rows.len(), lines.len(), "{scene}");
+        for (row, line) in rows.iter().zip(&lines) {
+            for (k, text) in split_csv(line).iter().enumerate() {
+                match &row[k] {
+                    Cell::Int(i) => assert_eq!(i.to_string(), *text, "{scene}: {}", header[k]),
+                    Cell::Real(x) => assert_eq!(x.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{}", header[k]),
+                    Cell::Text(t) => assert_eq!(t, text, "{scene}: {}", header[k]),
+                    Cell::Empty => panic!("{scene}: {} is null", header[k]),
+                }
+            }
+        }
+        let mut shards = Vec::new();
+        for k in 1..=3 {
+            run(&["run", scene, "--shard", &format!("{k}/3"), "--records", "parquet"], &out.join("shards"));
+            shards.push(out.join("shards").join(format!("{slug}.shard-{k}-of-3")));
+        }
+        let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("merged")).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let merged = out.join("merged").join(slug);
+        assert_eq!(parquet_file(&merged.join("drive_records.parquet")), (columns, rows), "{scene}");
+        assert!(!merged.join("drive_records.csv").exists(), "{scene}: only the formats asked for");
+        let _ = std::fs::remove_dir_all(&out);
+    }
 }
 
 /// `--records` takes a list of csv, jsonl, parquet; anything else is refused by name.

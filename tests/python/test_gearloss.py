@@ -482,6 +482,17 @@ def test_records_from_parquet_equal_the_csvs(spec):
     pandas.testing.assert_frame_equal(from_parquet[from_csv.columns], from_csv, check_dtype=False, check_exact=True)
 
 
+def test_drive_records_from_parquet_equal_the_csvs():
+    """`records=["parquet"]` on a drive: `Report.drive_records` reads drive_records.parquet, the
+    CSV's columns and values exactly, and the long tables follow from it."""
+    s = scene(ROOT / "specs/planetary_two_stage.gear")
+    from_csv = gearloss.run(s).drive_records
+    parquet = gearloss.run(s, records=["parquet"])
+    assert "drive_records.parquet" in parquet.files and "drive_records.csv" not in parquet.files
+    pandas.testing.assert_frame_equal(parquet.drive_records, from_csv, check_dtype=False, check_exact=True)
+    assert len(parquet.stages) == 2 * len(from_csv)
+
+
 @pytest.mark.parametrize("reader", ["polars", "duckdb"])
 def test_polars_and_duckdb_read_records_parquet(reader, tmp_path):
     """README's one-liners for polars and DuckDB, where the package is installed (skipped otherwise):

@@ -222,7 +222,7 @@ class Report:
     def _shape(self) -> str:
         """``"drive"`` (a drive of several stages), ``"pair"``, ``"runs"`` (several oil
         temperatures) or ``"shard"``."""
-        if "drive_records.csv" in self._files:
+        if "drive_records.csv" in self._files or "drive_records.parquet" in self._files:
             return "drive"
         if any(f.startswith("records.") for f in self._files):
             return "pair"
@@ -322,15 +322,18 @@ class Report:
 
     @property
     def drive_records(self):
-        """``drive_records.csv`` of a drive of several stages as a DataFrame: a row per operating
-        point, law and formulation with the ends' torque, speed and power, every loss part, η,
-        the passes, and each stage's, bearing place's and shaft's columns; empty for one pair."""
+        """``drive_records.csv`` (or ``drive_records.parquet`` when the run wrote Parquet only) of a
+        drive of several stages as a DataFrame: a row per operating point, law and formulation with
+        the ends' torque, speed and power, every loss part, η, the passes, and each stage's, bearing
+        place's and shaft's columns; empty for one pair."""
         import pandas
 
         self._table_of("drive_records", "drive")
-        if "drive_records.csv" not in self._files:
-            return pandas.DataFrame()
-        return pandas.read_csv(self._source("drive_records.csv"))
+        if "drive_records.csv" in self._files:
+            return pandas.read_csv(self._source("drive_records.csv"))
+        if "drive_records.parquet" in self._files:
+            return pandas.read_parquet(self._source("drive_records.parquet"))
+        return pandas.DataFrame()
 
     @property
     def cycle(self):

@@ -57,6 +57,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     for p in &r.points {
         super::point_tables::point(&mut out, p);
     }
+    super::stage_pairs::section(&mut out, r);
     if !r.maps.is_empty() {
         md!(out, "## Loss map\n");
         md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);

@@ -12,6 +12,7 @@ pub(crate) mod planetary;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
 pub(crate) mod shaft_bending;
+pub(crate) mod stage_pairs;
 
 use crate::render::RenderedReport;
 use crate::report::drive::DriveReport;

@@ -1,0 +1,185 @@
+//! The analyses of one pair on a drive's stages: each analysed stage's mesh (each mesh of a
+//! planetary stage) becomes a scene of one pair at the operating state the drive's power walk gives
+//! it, and runs as that pair alone runs.
+//!
+//! At each analysed operating point the drive is solved under its first friction law and first
+//! efficiency formulation (the row drive_records.csv holds first for that point). Each mesh is then
+//! the pair with its **driving member in the pinion's place**, exactly the pair whose efficiency the
+//! walk charged ([`super::drive_setup`]):
+//!
+//! - a parallel stage: its pinion drives in drive, its wheel in coast (the pair with the roles
+//!   swapped); the pinion's torque is |T| of the driving gear into the mesh, its speed the driving
+//!   gear's |ω|;
+//! - a planetary stage: the sun–planet pair with the sun or the planet in the pinion's place (the
+//!   one that drives the meshes), and the planet–ring pair with the planet as pinion whichever
+//!   drives (as the walk evaluates it); each at the pinion's torque per planet and its speed in the
+//!   carrier's frame.
+//!
+//! The lubricant is the scene's at its oil temperature, the laws, the `dynamics` block and the
+//! analyses of one pair are the scene's; the drive's efficiency formulations are the pair's. So a
+//! stage's pair reports what the same pair written alone with `pinion_torque` and `pinion_speed` at
+//! those values reports (tests/it/stage_pairs.rs holds the two to 1e-12).
+
+use super::drive_setup::DriveSetup;
+use crate::drive::{EndValue, Member};
+use crate::model::{Analyses, GearPair, Operating, Scene, SceneDrive, Sweep};
+
+/// One mesh of an analysed stage at one of the drive's operating points.
+#[derive(Debug, Clone)]
+pub struct StagePair {
+    /// The stage's index and name.
+    pub stage: usize,
+    pub stage_name: String,
+    /// A planetary stage's mesh: `sun–planet` or `planet–ring`; None for a parallel stage.
+    pub mesh: Option<&'static str>,
+    /// The drive's operating point (0-based, torque-major) and its torque and speed indices.
+    pub point: usize,
+    pub torque_index: usize,
+    pub speed_index: usize,
+    /// The gears in the pinion's and the wheel's places (`wheel`, `pinion` in coast; `planet`,
+    /// `ring` for the planet–ring mesh whichever drives, as the walk evaluates it).
+    pub members: [&'static str; 2],
+    /// The pinion's torque (N·m) and speed (rad/s) from the drive's walk.
+    pub pinion_torque: f64,
+    pub pinion_speed: f64,
+    /// The mesh's efficiency the walk charged at this point (first law and formulation).
+    pub mesh_efficiency: f64,
+    /// The pair alone at that state; None where no torque or no speed goes through the mesh.
+    pub scene: Option<Scene>,
+}
+
+/// Every analysed stage's meshes at every analysed point (`detail_points`, else the first point),
+/// point-major; empty when the scene asks for no analysis of one pair.
+pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
+    let a = &scene.analyses;
+    if !a.wants_pair_analyses() || scene.operating.count() == 0 || scene.friction.is_empty() {
+        return Vec::new();
+    }
+    let setup = DriveSetup::new(scene, drive);
+    let op = &scene.operating;
+    let points = if op.detail_points.is_empty() { vec![0] } else { op.detail_points.clone() };
+    let speeds = op.pinion_speed.values.len();
+    let ends = setup.operating_ends();
+    let mut out = Vec::new();
+    for point in points {
+        let (torque_index, speed_index) = (point / speeds, point % speeds);
+        let torque = EndValue { at: ends.torque_at, value: op.pinion_torque.values[torque_index].value };
+        let speed = EndValue { at: ends.speed_at, value: op.pinion_speed.values[speed_index].value };
+        let solved = setup.point(0, a.first_formulation(), torque, speed);
+        for (k, s) in solved.stages.iter().enumerate() {
+            if !a.analyses_stage(&s.name) {
+                continue;
+            }
+            let at = |mesh: Option<&'static str>, members, pair: GearPair, state: [f64; 3]| {
+                let [t, w, eta] = state;
+                let title = format!(
+                    "{}: {}{}, point {}",
+                    scene.title,
+                    s.name,
+                    mesh.map_or_else(String::new, |m| format!(" {m}")),
+                    point + 1
+                );
+                let alone = (t > 0.0 && w > 0.0).then(|| pair_scene(scene, title, pair, (t, w)));
+                StagePair {
+                    stage: k,
+                    stage_name: s.name.clone(),
+                    mesh,
+                    point,
+                    torque_index,
+                    speed_index,
+                    members,
+                    pinion_torque: t,
+                    pinion_speed: w,
+                    mesh_efficiency: eta,
+                    scene: alone,
+                }
+            };
+            let Some(pp) = &s.planetary else {
+                let pair = if s.driving == Member::Pinion { drive.pairs[k].clone() } else { swapped(&drive.pairs[k]) };
+                let members = if s.driving == Member::Pinion { ["pinion", "wheel"] } else { ["wheel", "pinion"] };
+                let state = [s.driving_torque.abs(), s.driving_speed.abs(), s.mesh_efficiency];
+                out.push(at(None, members, pair, state));
+                continue;
+            };
+            let sun = pp.sun_drives_meshes;
+            let sun_pair = if sun { drive.pairs[k].clone() } else { swapped(&drive.pairs[k]) };
+            let sun_members = if sun { ["sun", "planet"] } else { ["planet", "sun"] };
+            let state = |i: usize| [pp.mesh_torque[i].abs(), pp.mesh_speed[i].abs(), pp.mesh_efficiency[i]];
+            out.push(at(Some("sun–planet"), sun_members, sun_pair, state(0)));
+            let ring = drive.ring_pairs[k].clone().expect("a planetary stage has its planet–ring pair");
+            out.push(at(Some("planet–ring"), ["planet", "ring"], ring, state(1)));
+        }
+    }
+    out
+}
+
+/// The pair with pinion and wheel exchanged (the wheel driving).
+fn swapped(pair: &GearPair) -> GearPair {
+    GearPair { pinion: pair.wheel.clone(), wheel: pair.pinion.clone(), ..pair.clone() }
+}
+
+/// The scene of `pair` alone at the pinion's torque (N·m) and speed (rad/s), shown in the units the
+/// drive's operating block writes its speeds in.
+fn pair_scene(scene: &Scene, title: String, pair: GearPair, (torque, speed): (f64, f64)) -> Scene {
+    let op = &scene.operating;
+    let torque_sweep = Sweep {
+        values: vec![crate::model::Torque::new::<uom::si::torque::newton_meter>(torque)],
+        unit: "N*m".to_string(),
+        factor: 1.0,
+        written_values: vec![shown(torque)],
+        span: op.pinion_torque.span,
+    };
+    let speeds = &op.pinion_speed;
+    let speed_sweep = Sweep {
+        values: vec![crate::model::AngularVelocity::new::<uom::si::angular_velocity::radian_per_second>(speed)],
+        unit: speeds.unit.clone(),
+        factor: speeds.factor,
+        written_values: vec![shown(speed / speeds.factor)],
+        span: speeds.span,
+    };
+    let a = &scene.analyses;
+    Scene {
+        title,
+        gears: pair,
+        lubricant: scene.lubricant.clone(),
+        operating: Operating {
+            pinion_torque: torque_sweep,
+            pinion_speed: speed_sweep,
+            oil_temperature: op.oil_temperature.clone(),
+            oil_temperatures: None,
+            detail_points: Vec::new(),
+            equilibrium: None,
+        },
+        friction: scene.friction.clone(),
+        dynamics: scene.dynamics.clone(),
+        gearbox: None,
+        housing: None,
+        duty_cycle: None,
+        analyses: Analyses {
+            efficiency: a.efficiency.clone(),
+            friction_along_loa: a.friction_along_loa,
+            film: a.film,
+            film_span: a.film_span,
+            dynamics: a.dynamics,
+            stability_map: a.stability_map.clone(),
+            numerics: a.numerics,
+            dynamics_span: a.dynamics_span,
+            friction_span: a.friction_span,
+            transmission_error: a.transmission_error.clone(),
+            ..Analyses::default()
+        },
+        drive: None,
+    }
+}
+
+/// A value as the pair's report shows it "as written": to 12 significant digits where that is the
+/// value but for the last bits of a unit's conversion (3900 rpm, not 3899.9999999999995), else in
+/// full. The scene's SI value is the walk's, untouched.
+fn shown(x: f64) -> f64 {
+    let rounded: f64 = format!("{x:.11e}").parse().unwrap_or(x);
+    if (rounded - x).abs() <= 1e-14 * x.abs() {
+        rounded
+    } else {
+        x
+    }
+}

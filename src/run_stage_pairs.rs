@@ -1,0 +1,64 @@
+//! The analyses of one pair on a drive's stages, run: each analysed mesh's scene of one pair
+//! ([`crate::evaluate::stage_pairs`]) run as a pair alone runs ([`crate::run_pair`]), its files
+//! under `stages/…` in the drive's report folder, and the drive report's rows that say what each
+//! ran at and where its report is.
+
+use crate::efficiency::charges_iso_mesh_loss;
+use crate::evaluate::stage_pairs::stage_pairs;
+use crate::model::{Scene, SceneDrive};
+use crate::report::drive_stage_pairs::{folder, StagePairReport};
+use crate::run_error::RunError;
+
+/// The rows for the drive's report and the files of every analysed mesh's report (paths under the
+/// drive's folder).
+pub(crate) type StagePairFiles = (Vec<StagePairReport>, Vec<(String, String)>);
+
+/// Every analysed mesh run as a pair alone; a mesh whose pair a scene of one pair would refuse at
+/// that state (dynamics at too low a speed, too many record rows) is listed with the reason, not run.
+pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<StagePairFiles, RunError> {
+    let formulation = scene.analyses.first_formulation();
+    let law = scene.friction.first().map_or_else(String::new, |l| l.label());
+    let mut rows = Vec::new();
+    let mut files = Vec::new();
+    for p in stage_pairs(scene, drive) {
+        let mut row = StagePairReport {
+            stage: p.stage_name.clone(),
+            mesh: p.mesh.map(str::to_string),
+            point: p.point + 1,
+            point_words: crate::report::drive::point_words(scene, drive, p.torque_index, p.speed_index),
+            law: law.clone(),
+            formulation: formulation.name().to_string(),
+            pinion: p.members[0].to_string(),
+            wheel: p.members[1].to_string(),
+            pinion_torque: p.pinion_torque,
+            pinion_speed_rpm: p.pinion_speed * 30.0 / std::f64::consts::PI,
+            mesh_efficiency: p.mesh_efficiency,
+            pair_mean_efficiency: None,
+            pair_charged_efficiency: None,
+            folder: None,
+            not_run: None,
+        };
+        if let Some(alone) = &p.scene {
+            let refused = crate::scene::lower_stage_analyses::check_pair_at_state(alone);
+            if let Some(d) = refused.first() {
+                row.not_run = Some(d.reason.clone());
+            } else {
+                let dir = folder(&p.stage_name, p.mesh, p.point);
+                let (report, _, run_files) = crate::run_pair::run_scene_exact(alone)?;
+                if let Some(r) = report.efficiency.iter().find(|r| r.formulation == formulation) {
+                    let charged = match &r.ohlendorf {
+                        Some(o) if charges_iso_mesh_loss(r.law, &alone.mesh().geometry()) => o.power_loss.value.0,
+                        _ => r.power_loss.value.0,
+                    };
+                    row.pair_mean_efficiency = Some(r.mean_efficiency.0);
+                    row.pair_charged_efficiency =
+                        Some(1.0 - charged / (r.pinion_torque.value.0 * r.pinion_speed.value.0));
+                }
+                files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
+                row.folder = Some(dir);
+            }
+        }
+        rows.push(row);
+    }
+    Ok((rows, files))
+}

@@ -1,0 +1,158 @@
+//! A drive's analyses of one pair (`friction_along_loa`, `film`, `dynamics`, `stability_map`,
+//! `numerics`, `transmission_error`) run on the meshes of its stages: what they need of each stage
+//! they run on, checked here as a scene of one pair has it checked.
+//!
+//! ```text
+//! analyses {
+//!     efficiency(formulations = [external])
+//!     friction_along_loa
+//!     film
+//!     stages = [second]        # the stages whose meshes are analysed; every stage without it
+//! }
+//! ```
+//!
+//! The analyses run at the drive's first operating point, or at those `detail_points` names in its
+//! `operating` block ([`crate::evaluate::stage_pairs`]).
+
+use super::ast::Block;
+use super::lower_stage::StageDecl;
+use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
+use crate::model::{Analyses, DynamicsSpec, GearPair, Lubricant, Operating, Scene};
+
+/// What a drive's analyses of one pair are checked against.
+pub(super) struct StageAnalysesInputs<'a> {
+    pub stages: &'a [StageDecl],
+    pub analyses: &'a Analyses,
+    pub dynamics: Option<&'a DynamicsSpec>,
+    pub dynamics_block: Option<&'a Block>,
+    pub lubricant: Option<&'a Lubricant>,
+    pub lubricant_failed: bool,
+    pub operating: Option<&'a Operating>,
+    /// Where the operating block writes `detail_points`, if it does.
+    pub detail_points: Option<Span>,
+}
+
+/// The stage names `stages = [...]` lists exist; the analyses have operating points to run at;
+/// each analysed stage's pairs (a planetary stage's sun–planet and planet–ring pairs) give what the
+/// analyses need (inertias for the dynamics, outlines for the teeth, an external pair for the
+/// dynamic models), and the lubricant its pressure–viscosity coefficient for the film.
+pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Diagnostic>) {
+    let a = i.analyses;
+    for (name, span) in a.stages.iter().flatten() {
+        if !i.stages.iter().any(|s| &s.name.text == name) {
+            let names: Vec<String> = i.stages.iter().map(|s| format!("`{}`", s.name.text)).collect();
+            errors.push(
+                Diagnostic::new(DiagnosticKind::UnknownName, *span, format!("no stage is named `{name}`"))
+                    .hint(format!("the drive's stages are {}", names.join(", "))),
+            );
+        }
+    }
+    let Some(asked) = first_asked(a) else {
+        if let Some(span) = i.detail_points {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    span,
+                    "a drive's `detail_points` are the points the analyses of one pair run at, and the scene asks for none",
+                )
+                .hint("add `friction_along_loa`, `film` or `dynamics` to `analyses`, or leave `detail_points` out (the report shows the drive's first points in full and drive_records.csv every point)"),
+            );
+        }
+        if let Some((_, span)) = a.stages.as_ref().and_then(|s| s.first()) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    *span,
+                    "`stages` names the stages the analyses of one pair run on, and the scene asks for none",
+                )
+                .hint("add `friction_along_loa`, `film` or `dynamics` to `analyses`, or leave `stages` out"),
+            );
+        }
+        return;
+    };
+    if i.operating.is_some_and(|o| o.count() == 0) {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::MissingKey,
+                asked,
+                "the analyses of one pair run on each stage at the drive's operating points, and this scene gives none",
+            )
+            .hint("add `output_torque = [150] N*m` and `output_speed = [1000] rpm` to `operating` (the drive cycle keeps its own)"),
+        );
+    }
+    if let (Some(span), false) = (a.film_span, i.lubricant_failed) {
+        if i.lubricant.is_none_or(|l| l.pressure_viscosity.is_none()) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    span,
+                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
+                )
+                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
+            );
+        }
+    }
+    if let Some(span) = a.dynamics_span {
+        super::lower_dynamics_blocks::check_dynamics_needs(span, i.dynamics_block.is_some(), None, i.dynamics, errors);
+    }
+    for stage in i.stages.iter().filter(|s| a.analyses_stage(&s.name.text)) {
+        let Some(p) = &stage.planetary else {
+            check_pair(&stage.pair, i, errors);
+            continue;
+        };
+        if let Some(span) = a.dynamics_span {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    span,
+                    format!("the dynamic models are of one pair on fixed axes; planetary stage `{}` turns its planets on a moving carrier", stage.name.text),
+                )
+                .hint("name the stages the dynamics run on without it: `stages = [...]` in `analyses`"),
+            );
+            continue;
+        }
+        check_pair(&stage.pair, i, errors);
+        check_pair(&p.ring_pair, i, errors);
+    }
+}
+
+/// Where the first analysis of one pair is asked for.
+fn first_asked(a: &Analyses) -> Option<Span> {
+    if !a.wants_pair_analyses() {
+        return None;
+    }
+    a.friction_span.or(a.film_span).or(a.dynamics_span).or(a.transmission_error.as_ref().map(|t| t.span))
+}
+
+/// One analysed pair: what the dynamics and the teeth need of it.
+fn check_pair(pair: &GearPair, i: &StageAnalysesInputs, errors: &mut Vec<Diagnostic>) {
+    let a = i.analyses;
+    if pair.internal {
+        let wants = super::lower_gears::InternalPairWants {
+            teeth: pair.wants_teeth(a, i.dynamics),
+            dynamics: a.dynamics_span,
+            gearbox: None,
+        };
+        let before = errors.len();
+        super::lower_gears::check_internal_pair(pair, &wants, errors);
+        for e in &mut errors[before..] {
+            *e = e.clone().hint("a planetary stage's planet–ring mesh is internal: leave that stage out with `stages = [...]` in `analyses`");
+        }
+        return;
+    }
+    if let Some(span) = a.dynamics_span {
+        super::lower_dynamics_blocks::check_dynamics_needs(span, true, Some(pair), i.dynamics, errors);
+    }
+    if pair.wants_teeth(a, i.dynamics) {
+        super::lower_teeth::check_teeth(pair, errors);
+    }
+}
+
+/// The checks of a scene of one pair that read its operating speeds and counts, on a scene of one
+/// pair built from a drive's stage at its operating state: every problem found.
+pub(crate) fn check_pair_at_state(scene: &Scene) -> Vec<Diagnostic> {
+    let mut errors = Vec::new();
+    super::lower_dynamics::check_frequency_ratio(scene, &mut errors);
+    super::lower_operating::check_record_rows(scene, &mut errors);
+    errors
+}

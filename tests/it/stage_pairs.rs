@@ -1,0 +1,168 @@
+//! The analyses of one pair on a drive's stages equal the pair alone: each analysed mesh's report
+//! is the report of the same pair written as a scene of its own at the torque and speed the drive's
+//! power walk gives it (every number to 1e-12 relative), and the mesh efficiency the walk charged
+//! equals the pair alone's loss as a budget charges it (1e-12).
+
+use gearloss::evaluate::stage_pairs::{stage_pairs, StagePair};
+
+const SPEC: &str = "specs/ev_reducer_stage_meshes.gear";
+
+fn drive_scene(path: &str, edit: impl Fn(String) -> String) -> gearloss::Scene {
+    let source = edit(std::fs::read_to_string(crate::root().join(path)).unwrap());
+    gearloss::check(path, &source).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Splits `text` into its numbers and the text between them (the skeleton).
+fn numbers_and_skeleton(text: &str) -> (Vec<f64>, String) {
+    let (mut numbers, mut skeleton) = (Vec::new(), String::new());
+    let b = text.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let starts = b[i].is_ascii_digit()
+            || (b[i] == b'-' && i + 1 < b.len() && b[i + 1].is_ascii_digit())
+            || (b[i] == b'.' && i + 1 < b.len() && b[i + 1].is_ascii_digit());
+        let after_word = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
+        if !starts || after_word {
+            skeleton.push(text[i..].chars().next().unwrap());
+            i += text[i..].chars().next().unwrap().len_utf8();
+            continue;
+        }
+        let start = i;
+        i += 1;
+        while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+            i += 1;
+        }
+        if i + 1 < b.len() && (b[i] == b'e' || b[i] == b'E') {
+            let mut j = i + 1;
+            if b[j] == b'-' || b[j] == b'+' {
+                j += 1;
+            }
+            if j < b.len() && b[j].is_ascii_digit() {
+                i = j;
+                while i < b.len() && b[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+        }
+        numbers.push(text[start..i].parse::<f64>().unwrap());
+        skeleton.push('#');
+    }
+    (numbers, skeleton)
+}
+
+/// The same text around numbers that agree to `tol` relative (of the larger magnitude).
+fn assert_reports_agree(stage: &str, alone: &str, tol: f64) -> usize {
+    let (a, sa) = numbers_and_skeleton(stage);
+    let (b, sb) = numbers_and_skeleton(alone);
+    assert_eq!(sa, sb, "the two reports differ in more than their numbers");
+    assert_eq!(a.len(), b.len());
+    for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+        let scale = x.abs().max(y.abs());
+        assert!((x - y).abs() <= tol * scale, "number {k}: {x} vs {y}");
+    }
+    a.len()
+}
+
+/// The scene of one stage's pair written by hand as a user would: the stage's gears without their
+/// places, the pinion's torque and speed printed exactly (shortest round-trip decimal).
+fn pair_alone_source(p: &StagePair, title: &str, gears: &str, speed_unit_per_rad_s: f64) -> String {
+    let spec = std::fs::read_to_string(crate::root().join(SPEC)).unwrap();
+    let block = |name: &str| {
+        let start = spec.find(name).unwrap();
+        let end = start + spec[start..].find("\n    }\n").unwrap();
+        spec[start..end + 6].to_string()
+    };
+    format!(
+        "scene {title:?} {{\n    material steel {{ youngs_modulus = 210 GPa  poisson_ratio = 0.3 }}\n    lubricant \"SAE 70W-75W\" {{ nu_40 = 30.8 mm^2/s  nu_100 = 5.9 mm^2/s  density_15 = 845 kg/m^3  base = mineral\n                              pressure_viscosity = 1.8e-8 1/Pa }}\n{gears}\n    operating {{ pinion_torque = [{:?}] N*m  pinion_speed = [{:?}] rpm  oil_temperature = 80 degC }}\n    friction {{ iso_14179_2(x_l = 0.75)  benedict_kelley }}\n{}\n    analyses {{ efficiency(formulations = [external])  friction_along_loa  film  dynamics }}\n}}\n",
+        p.pinion_torque,
+        p.pinion_speed / speed_unit_per_rad_s,
+        block("    dynamics {"),
+    )
+}
+
+#[test]
+fn each_stage_mesh_reports_what_its_pair_alone_reports() {
+    let scene = drive_scene(SPEC, |s| s);
+    let drive = scene.drive.as_ref().unwrap();
+    let pairs = stage_pairs(&scene, drive);
+    // Both stages at points 2 (recuperation: the wheels drive) and 4 (full load).
+    assert_eq!(pairs.len(), 4);
+    let rpm = std::f64::consts::PI / 30.0;
+    let gear =
+        |teeth: u32, rest: &str| format!("{{ teeth = {teeth}  material = steel  roughness_ra = 0.5 um  {rest} }}");
+    let mut checked = 0;
+    for p in &pairs {
+        let stage = p.scene.as_ref().expect("load goes through every mesh at these points");
+        let (head, small, big) = if p.stage == 0 {
+            (
+                "module = 1.5177 mm  pressure_angle = 20 deg  helix_angle = 23.4 deg  face_width = 35.44 mm",
+                gear(23, "inertia = 5.7e-5 kg*m^2"),
+                gear(68, "inertia = 4.4e-3 kg*m^2"),
+            )
+        } else {
+            (
+                "module = 2.5361 mm  pressure_angle = 20 deg  helix_angle = 18.4 deg  face_width = 49.80 mm",
+                gear(20, "inertia = 3.1e-4 kg*m^2"),
+                gear(78, "inertia = 7.3e-2 kg*m^2"),
+            )
+        };
+        // In coast the stage's wheel drives: the pair alone has it in the pinion's place.
+        let (pinion, wheel) = if p.members[0] == "pinion" { (&small, &big) } else { (&big, &small) };
+        let gears = format!("    gears {{\n        {head}\n        pinion {pinion}\n        wheel {wheel}\n    }}");
+        let source = pair_alone_source(p, &stage.title, &gears, rpm);
+        let alone = gearloss::check("alone.gear", &source).unwrap_or_else(|e| panic!("{e}\n{source}"));
+        let (a, b) = (gearloss::report_of(stage), gearloss::report_of(&alone));
+        assert!(a.dynamics.is_some() && !a.efficiency.is_empty(), "the stage's report holds the analyses asked for");
+        let numbers = assert_reports_agree(&format!("{a:?}"), &format!("{b:?}"), 1e-12);
+        assert!(numbers > 1000, "only {numbers} numbers compared");
+        checked += 1;
+    }
+    assert_eq!(checked, 4);
+}
+
+#[test]
+fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
+    for (path, edit) in [
+        (SPEC, None),
+        ("specs/planetary_two_stage.gear", Some(("efficiency_map(", "friction_along_loa\n        efficiency_map("))),
+    ] {
+        let scene = drive_scene(path, |s| match edit {
+            Some((from, to)) => s.replacen(from, to, 1).replacen(
+                "oil_temperature = 80 degC",
+                "oil_temperature = 80 degC  detail_points = [1, 2, 3, 4, 5, 6]",
+                1,
+            ),
+            None => s,
+        });
+        let drive = scene.drive.as_ref().unwrap();
+        let (report, rendered) = gearloss::run_drive::drive_report_files(&scene, drive).unwrap();
+        assert!(report.stage_pairs.len() >= 4, "{path}: {} meshes", report.stage_pairs.len());
+        for p in &report.stage_pairs {
+            let charged = p.pair_charged_efficiency.expect("the scene asks for efficiency");
+            assert!(
+                (p.mesh_efficiency - charged).abs() <= 1e-12,
+                "{path}, stage {} {:?} at point {}: walk {} vs alone {charged}",
+                p.stage,
+                p.mesh,
+                p.point,
+                p.mesh_efficiency
+            );
+            let folder = p.folder.as_ref().unwrap();
+            assert!(rendered.files.iter().any(|(f, _)| *f == format!("{folder}/report.md")), "{folder}");
+        }
+        if path != SPEC {
+            assert!(report.stage_pairs.iter().any(|p| p.mesh.as_deref() == Some("planet–ring")));
+        }
+    }
+}
+
+#[test]
+fn only_the_named_stages_are_analysed() {
+    let scene = drive_scene(SPEC, |s| {
+        s.replace("        dynamics\n    }", "        dynamics\n        stages = [second]\n    }")
+    });
+    let pairs = stage_pairs(&scene, scene.drive.as_ref().unwrap());
+    assert_eq!(pairs.len(), 2);
+    assert!(pairs.iter().all(|p| p.stage_name == "second"));
+    assert_eq!(pairs.iter().map(|p| p.point).collect::<Vec<_>>(), vec![1, 3]);
+}
