@@ -147,7 +147,7 @@ fn plausible<Q: super::units::SiQuantity>(
     errors: &mut Vec<Diagnostic>,
 ) -> Option<Sweep<Q>> {
     let (_, most, shown) = MAGNITUDES.iter().find(|(w, _, _)| key.ends_with(w))?;
-    match sweep.values.iter().position(|v| !(v.si().abs() <= *most)) {
+    match sweep.values.iter().position(|v| v.si().is_nan() || v.si().abs() > *most) {
         None => Some(sweep),
         Some(i) => {
             errors.push(
