@@ -154,9 +154,70 @@ pub struct DrivePoint {
     pub both_ends_deliver: bool,
     /// Passes of the fixed point until no torque moved by more than 1e-12 relative.
     pub iterations: usize,
+    /// The fixed point diverged (the bearing losses grew faster than the torque that loads them):
+    /// the numbers are the last pass's before it ran away.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub diverged: bool,
+    /// Where the books do not balance: (P_source − P_sink) − Σ parts (W), when it is more than
+    /// [`BOOKS_TOLERANCE`] of the larger of P_source and Σ parts, or not a finite number.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub books_gap: Option<f64>,
 }
 
+/// The books of a point balance when P_source − P_sink equals the sum of the loss parts to this
+/// fraction of the larger of P_source and the parts (a settled point balances to about 1e-12).
+pub(crate) const BOOKS_TOLERANCE: f64 = 1e-9;
+
+/// Passes after which the fixed point counts as not settled.
+pub(crate) const MAX_PASSES: usize = 100;
+
 impl DrivePoint {
+    /// Whether the point's numbers can be trusted: the fixed point settled and the books balance.
+    pub fn settled(&self) -> bool {
+        self.iterations < MAX_PASSES && !self.diverged && self.books_gap.is_none()
+    }
+
+    /// What is wrong with an unsettled point, in words (empty when it settled).
+    pub fn unsettled_words(&self) -> String {
+        let mut out = Vec::new();
+        if self.diverged {
+            out.push("the fixed point of the bearing losses diverged (they grow faster than the torque that loads them: a gear far outside its bearings' span?); its numbers are the last pass's before it ran away".to_string());
+        } else if self.iterations >= MAX_PASSES {
+            out.push(format!("the fixed point of the bearing losses did not settle to 1e-12 in {MAX_PASSES} passes; its numbers are the last pass's"));
+        }
+        if let Some(gap) = self.books_gap {
+            out.push(format!(
+                "the books do not balance: P_source − P_sink = {:.6e} W but the loss parts add up to {:.6e} W (a gap of {gap:.3e} W)",
+                self.source_power() - self.sink_power(),
+                self.losses.total()
+            ));
+        }
+        out.join("; ")
+    }
+
+    /// The power the source delivers and the sink takes (W).
+    fn source_power(&self) -> f64 {
+        match self.flow {
+            PowerFlow::Drive => self.input_power,
+            PowerFlow::Coast => -self.output_power,
+        }
+    }
+
+    fn sink_power(&self) -> f64 {
+        match self.flow {
+            PowerFlow::Drive => self.output_power,
+            PowerFlow::Coast => -self.input_power,
+        }
+    }
+
+    /// The books' gap of a point as built, None where they balance ([`BOOKS_TOLERANCE`]).
+    pub(crate) fn books_gap_of(&self) -> Option<f64> {
+        let (source, parts) = (self.source_power(), self.losses.total());
+        let gap = (source - self.sink_power()) - parts;
+        let scale = source.abs().max(parts.abs());
+        (gap.is_nan() || gap.abs() > BOOKS_TOLERANCE * scale).then_some(gap)
+    }
+
     /// P_source − P_sink (W): the power the box turns into heat.
     pub fn power_lost(&self) -> f64 {
         self.input_power - self.output_power

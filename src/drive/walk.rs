@@ -26,7 +26,7 @@ use crate::losses::Oil;
 /// The fixed point stops when no torque moves by more than this, relative to the largest.
 pub const TOLERANCE: f64 = 1e-12;
 /// Passes before the walk gives up (the report then says how far it got).
-const MAX_PASSES: usize = 100;
+use super::point::MAX_PASSES;
 /// A pass whose largest driving torque exceeds the first pass's this many times diverges.
 const DIVERGED: f64 = 1e3;
 
@@ -64,6 +64,7 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     let mut state = walk.pass(meshes, from_source, given_power, &fixed, &loads, None);
     let first = state.largest_torque();
     let mut passes = 1;
+    let mut diverged = false;
     loop {
         loads = walk.bearing_powers(model, &state.driving_torque, false).powers;
         let next = walk.pass(meshes, from_source, given_power, &fixed, &loads, Some(&state.driving_torque));
@@ -72,6 +73,7 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
             // The walk diverges: the bearing losses grow faster than the torque that loads them (a
             // gear far outside its bearings' span). Keep the last pass before, reported unsettled.
             passes = MAX_PASSES;
+            diverged = true;
             break;
         }
         let moved = state.moved(&next);
@@ -80,7 +82,10 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
             break;
         }
     }
-    walk.point(model, &state, &fixed, passes)
+    let mut point = walk.point(model, &state, &fixed, passes);
+    point.diverged = diverged;
+    point.books_gap = point.books_gap_of();
+    point
 }
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
@@ -386,6 +391,8 @@ impl<'a> Walk<'a> {
             efficiency,
             both_ends_deliver,
             iterations: passes,
+            diverged: false,
+            books_gap: None,
         }
     }
 }

@@ -152,6 +152,10 @@ fn stream_rows(
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
             records.row(start + i, row.point.flow, &row, &outside)?;
             tally.add(start + i, &row.point);
+            if !row.point.settled() {
+                tally.unsettled_rows += 1;
+                tally.first_unsettled.get_or_insert(start + i);
+            }
             if outside.iter().any(|o| *o > 0) {
                 tally.outside_rows += 1;
                 tally.first_outside.get_or_insert(start + i);
@@ -214,6 +218,16 @@ pub struct DriveTally {
     /// Rows where a stage's law leaves its validity range somewhere on A–E, and the first of them.
     pub outside_rows: usize,
     pub first_outside: Option<usize>,
+    /// Rows whose fixed point did not settle (or diverged) or whose books do not balance
+    /// ([`crate::drive::DrivePoint::settled`]), and the first of them.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub unsettled_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_unsettled: Option<usize>,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl DriveTally {
@@ -223,6 +237,8 @@ impl DriveTally {
         self.both_ends += next.both_ends;
         self.outside_rows += next.outside_rows;
         self.first_outside = self.first_outside.or(next.first_outside);
+        self.unsettled_rows += next.unsettled_rows;
+        self.first_unsettled = self.first_unsettled.or(next.first_unsettled);
         if let Some((e, i)) = next.least {
             if self.least.is_none_or(|(l, _)| e < l) {
                 self.least = Some((e, i));

@@ -43,7 +43,7 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
     for p in &report.points {
         let d = &p.point;
         out.push_str(&format!(
-            "  {} ({} {}): {} in {:.1} W, out {:.1} W, lost {:.2} W, η = {}\n",
+            "  {} ({} {}): {} in {:.1} W, out {:.1} W, lost {:.2} W, η = {}{}\n",
             p.label,
             p.law,
             p.formulation,
@@ -55,7 +55,8 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
                 "0 (both ends deliver)".to_string()
             } else {
                 format!("{:.4} %", 100.0 * d.efficiency)
-            }
+            },
+            if d.settled() { "" } else { " — NOT SETTLED (see the warnings)" }
         ));
     }
     out.push('\n');

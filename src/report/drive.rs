@@ -138,6 +138,11 @@ pub struct DriveReport {
     /// Rows where a stage's law leaves its validity range (drive_records.csv's
     /// `stage_<name>_validity_outside` say where).
     pub outside_rows: usize,
+    /// Rows whose fixed point did not settle or whose books do not balance, and the first in words.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub unsettled_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_unsettled: Option<String>,
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
     pub points: Vec<DrivePointReport>,
@@ -191,6 +196,8 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         greatest_efficiency: eval.tally.greatest.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
         both_ends_rows: eval.tally.both_ends,
         outside_rows: eval.tally.outside_rows,
+        unsettled_rows: eval.tally.unsettled_rows,
+        first_unsettled: eval.tally.first_unsettled.map(|i| row_words(scene, drive, &laws, i)),
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
         findings: super::drive_findings::findings(layout, &points),
@@ -266,10 +273,24 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             ),
         });
     }
+    let unsettled_shown = report.points.iter().filter(|p| !p.point.settled()).count();
+    if let (true, Some(first)) = (report.unsettled_rows > unsettled_shown, &report.first_unsettled) {
+        report.findings.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} of {} rows did not settle or do not balance their books (drive_records.csv: `passes` = 100, or P_source − P_sink ≠ the sum of the parts); the first: row {first}",
+                report.unsettled_rows, report.rows
+            ),
+        });
+    }
     for path in super::non_finite::non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
     report
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 /// The duty cycle's steps with their losses and, with a heat capacity, the transient.

@@ -69,13 +69,10 @@ pub(super) fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]
             }
         }
     }
-    if let Some(p) = points.iter().find(|p| p.point.iterations >= 100) {
+    for p in points.iter().filter(|p| !p.point.settled()) {
         out.push(Finding {
             severity: Severity::Warning,
-            message: format!(
-                "{}: the fixed point of the bearing losses did not settle to 1e-12 in 100 passes (or diverged: the bearing losses grow faster than the torque that loads them); its numbers are the last pass's",
-                p.label
-            ),
+            message: format!("{} ({}, {}): {}", p.label, p.law, p.formulation, p.point.unsettled_words()),
         });
     }
     out

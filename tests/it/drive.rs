@@ -78,6 +78,35 @@ fn the_fixed_point_settles_in_a_few_passes() {
     }
 }
 
+/// Every point of every drive spec settles and balances its books (P_source − P_sink = Σ parts to
+/// 1e-9 of the larger); bearing places 1 µm apart make the fixed point run away: every point is
+/// then reported unsettled with its gap (the books off by more than 1e6 W), and the report warns
+/// on each point shown and counts the rows, none of them passed off as settled.
+#[test]
+fn a_point_is_settled_only_when_its_books_balance() {
+    for spec in ["ev_two_stage_reducer", "planetary_two_stage", "ev_reducer_three_bearing_lay_shaft"] {
+        let scene = crate::scene(&crate::root().join(format!("specs/{spec}.gear")));
+        for p in points(&scene) {
+            assert!(p.settled() && p.books_gap.is_none(), "{spec}: {}", p.unsettled_words());
+        }
+    }
+    let scene =
+        ev_with(&[("static_load_rating = 10.2 kN, at = 136.24 mm)", "static_load_rating = 10.2 kN, at = 30.001 mm)")]);
+    let drive = scene.drive.as_ref().unwrap();
+    let eval = evaluate_drive(&scene, drive);
+    for r in &eval.rows {
+        let p = &r.point;
+        assert!(!p.settled() && p.diverged, "a row passed off as settled");
+        let gap = p.books_gap.expect("the books cannot balance");
+        assert!(gap.abs() > 1e6 && (gap + p.losses.total() - p.power_lost()).abs() <= 1e-6 * gap.abs(), "{gap}");
+    }
+    assert_eq!(eval.tally.unsettled_rows, eval.tally.rows);
+    let report = gearloss::report::drive::build_drive_report(&scene, drive, &eval);
+    let warned =
+        report.findings.iter().filter(|f| f.message.contains("diverged") && f.message.contains("books")).count();
+    assert_eq!(warned, report.points.len());
+}
+
 /// The EV reducer's text with `edits` (find, replace) applied.
 fn ev_with(edits: &[(&str, &str)]) -> gearloss::Scene {
     let mut text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();

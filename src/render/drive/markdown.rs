@@ -196,7 +196,7 @@ fn headline(out: &mut String, r: &DriveReport) {
                 fixed(l.seals, 3),
                 fixed(l.total(), 3),
                 if d.both_ends_deliver { "0 (both ends deliver)".into() } else { fixed(100.0 * d.efficiency, 4) },
-                d.iterations.to_string(),
+                if d.settled() { d.iterations.to_string() } else { format!("{} (not settled)", d.iterations) },
             ],
         );
     }

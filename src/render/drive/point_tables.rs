@@ -14,13 +14,21 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
     md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
     md!(
         out,
-        "{}: {} W in at the input, {} W out at the output, {} W lost, η = {}; the bearing losses settled in {} passes.\n",
+        "{}: {} W in at the input, {} W out at the output, {} W lost, η = {}; {}.\n",
         d.flow.name(),
         fixed(d.input_power, 3),
         fixed(d.output_power, 3),
         fixed(d.power_lost(), 3),
-        if d.both_ends_deliver { "0 (both ends deliver)".into() } else { format!("{} %", fixed(100.0 * d.efficiency, 4)) },
-        d.iterations
+        if d.both_ends_deliver {
+            "0 (both ends deliver)".into()
+        } else {
+            format!("{} %", fixed(100.0 * d.efficiency, 4))
+        },
+        if d.settled() {
+            format!("the bearing losses settled in {} passes", d.iterations)
+        } else {
+            format!("**not settled**: {}", d.unsettled_words())
+        }
     );
     header(
         out,
