@@ -215,7 +215,7 @@ impl DrivePoint {
         let (source, parts) = (self.source_power(), self.losses.total());
         let gap = (source - self.sink_power()) - parts;
         let scale = source.abs().max(parts.abs());
-        (gap.is_nan() || gap.abs() > BOOKS_TOLERANCE * scale).then_some(gap)
+        (!gap.is_finite() || gap.abs() > BOOKS_TOLERANCE * scale).then_some(gap)
     }
 
     /// P_source − P_sink (W): the power the box turns into heat.

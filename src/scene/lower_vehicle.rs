@@ -59,6 +59,31 @@ pub(super) fn lower_drive_cycle(
     if phases.len() != f.calls.len() {
         return None;
     }
+    for (k, p) in phases.iter().enumerate() {
+        if let Some(q) = phases[..k].iter().find(|q| q.name == p.name || (p.from < q.to && q.from < p.to)) {
+            let what = if q.name == p.name { "is named twice" } else { "overlaps" };
+            errors.push(error(
+                f.calls[k].span,
+                format!(
+                    "the phase `{}` ({} s to {} s) {what}: `{}` ({} s to {} s)",
+                    p.name, p.from, p.to, q.name, q.from, q.to
+                ),
+                "give each phase a name of its own and a stretch of the trace no other phase covers",
+            ));
+            return None;
+        }
+    }
+    if let Some(t) = &start {
+        let c = t.value.value - 273.15;
+        if !(-50.0..=150.0).contains(&c) {
+            errors.push(error(
+                t.span,
+                format!("a start temperature of {} is outside the plausible range", t.written),
+                "the sump starts between -50 °C and 150 °C (the ambient, or a warm box)",
+            ));
+            return None;
+        }
+    }
     Some(DriveCycleSpec {
         vehicle_name: vehicle.label.as_ref().map_or_else(|| "vehicle".into(), |l| l.text.clone()),
         name: cycle.label.as_ref().map_or_else(|| "drive cycle".into(), |l| l.text.clone()),
@@ -139,6 +164,20 @@ fn lower_vehicle(block: &Block, errors: &mut Vec<Diagnostic>) -> Option<(Vehicle
     note("final_ratio", final_ratio.as_ref().map(|g| &g.written));
     let road = road_load(&f, block.span, rolling.as_ref().map(|r| r.value), &mut written, errors);
     let (mass, radius, road) = (mass?, radius?, road?);
+    // A vehicle, not a gear: from a pedelec (10 kg) to a train car (10⁶ kg), wheels of 5 cm to 3 m.
+    for (what, given, lo, hi, range) in [
+        ("mass", (mass.value.value, &mass.written, mass.span), 10.0, 1e6, "10 kg to 1000 t"),
+        ("wheel_radius", (radius.value.value, &radius.written, radius.span), 0.05, 3.0, "0.05 m to 3 m"),
+    ] {
+        let (value, written, span) = given;
+        if !(lo..=hi).contains(&value) {
+            errors.push(error(
+                span,
+                format!("a vehicle's {what} of {written} is outside the plausible range, {range}"),
+                "check the value's unit and exponent",
+            ));
+        }
+    }
     (errors.len() == before).then(|| {
         let vehicle = Vehicle {
             mass: mass.value.value,
@@ -188,6 +227,16 @@ fn road_load(
             let f1: Option<Given<MassRate>> = g.required("f1", "0.4677 N*s/m", errors);
             let f2: Option<Given<MassPerLength>> = g.required("f2", "0.3205 N*s^2/m^2", errors);
             let (f0, f1, f2) = (f0?, f1?, f2?);
+            if f0.value.value < 0.0 || f2.value.value < 0.0 {
+                let bad =
+                    if f0.value.value < 0.0 { (&f0.written, f0.span, "f0") } else { (&f2.written, f2.span, "f2") };
+                errors.push(error(
+                    bad.1,
+                    format!("the coastdown coefficient {} = {} is negative", bad.2, bad.0),
+                    "f0 (rolling) and f2 (aerodynamic) resist the motion: both ≥ 0 (f1 may take either sign)",
+                ));
+                return None;
+            }
             written
                 .push(("road_load".into(), format!("f0 = {}, f1 = {}, f2 = {}", f0.written, f1.written, f2.written)));
             Some(RoadLoad::Coastdown { f0: f0.value.value, f1: f1.value.value, f2: f2.value.value })

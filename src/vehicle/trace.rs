@@ -39,6 +39,15 @@ const SPEED_UNITS: &[(&str, f64, f64)] =
     &[("m/s", 1.0, 1.0), ("mps", 1.0, 1.0), ("km/h", 1.0, 3.6), ("kmh", 1.0, 3.6), ("mph", 0.44704, 1.0)];
 /// An interval longer than this many times the median interval is a gap in the trace.
 const GAP_FACTOR: f64 = 10.0;
+/// Plausible traces, so that a typo in a unit, an exponent or a decimal mark is refused at its line
+/// instead of giving a cycle of absurd energies: samples at least 1 ms apart, a trace of at most
+/// 10⁶ s (11.6 days), speeds up to 150 m/s (540 km/h), accelerations up to 20 m/s² (2 g), grades
+/// up to 50 % (rise over run 0.5).
+const MIN_STEP: f64 = 1e-3;
+const MAX_DURATION: f64 = 1e6;
+const MAX_SPEED: f64 = 150.0;
+const MAX_ACCELERATION: f64 = 20.0;
+const MAX_GRADE: f64 = 0.5;
 
 #[derive(Clone, Copy, PartialEq)]
 enum Column {
@@ -47,6 +56,16 @@ enum Column {
     Speed(f64, f64),
     Grade,
     Other,
+}
+
+impl Column {
+    fn is_time(&self) -> bool {
+        *self == Column::Time
+    }
+
+    fn is_speed(&self) -> bool {
+        matches!(self, Column::Speed(..))
+    }
 }
 
 fn error(line: usize, column: usize, message: String, hint: &str) -> TraceError {
@@ -111,7 +130,9 @@ impl Trace {
     /// Reads a trace from the text of its file.
     pub fn read(text: &str) -> Result<Trace, TraceError> {
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-        let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end_matches('\r')));
+        // Line ends as any editor writes them: LF, CRLF, a bare CR (old Mac), or a mix.
+        let text = text.replace("\r\n", "\n").replace('\r', "\n");
+        let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l));
         let Some((header_line, header)) = lines.find(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
         else {
             return Err(error(
@@ -121,10 +142,19 @@ impl Trace {
                 "a header `time [s], speed [km/h]`, then one sample per line",
             ));
         };
+        if let Some(c) = [';', '\t'].into_iter().find(|c| header.contains(*c) && !header.contains(',')) {
+            return Err(error(
+                header_line,
+                1 + header.find(c).unwrap_or(0),
+                format!("the header `{}` separates its columns by {c:?}", header.trim()),
+                "this reader takes commas between the columns (`time [s], speed [km/h]`) and decimal points in the numbers",
+            ));
+        }
         let mut columns = Vec::new();
         let mut col = 1;
         for cell in header.split(',') {
-            columns.push(column(cell, col).map_err(|e| TraceError { line: header_line, ..e })?);
+            let unquoted = cell.trim().trim_matches('"');
+            columns.push(column(unquoted, col).map_err(|e| TraceError { line: header_line, ..e })?);
             col += cell.len() + 1;
         }
         let find = |want: fn(&Column) -> bool| columns.iter().position(want);
@@ -137,6 +167,22 @@ impl Trace {
                 "start the file with a header such as `time [s], speed [km/h]`",
             ));
         };
+        let header_cells: Vec<&str> = header.split(',').collect();
+        for (what, is) in [("time", Column::is_time as fn(&Column) -> bool), ("speed", Column::is_speed)] {
+            let named: Vec<usize> = (0..columns.len()).filter(|&k| is(&columns[k])).collect();
+            if let [first, second, ..] = named[..] {
+                return Err(error(
+                    header_line,
+                    1 + header_cells.iter().take(second).map(|c| c.len() + 1).sum::<usize>(),
+                    format!(
+                        "two {what} columns, `{}` and `{}`: which one the cycle follows would be a guess",
+                        header_cells[first].trim(),
+                        header_cells[second].trim()
+                    ),
+                    "keep one of them (or rename the other, which is then ignored)",
+                ));
+            }
+        }
         let Column::Speed(multiplier, divisor) = columns[v_col] else { unreachable!("v_col is a speed column") };
         let g_col = find(|c| *c == Column::Grade);
         let mut trace = Trace { time: Vec::new(), speed: Vec::new(), grade: Vec::new() };
@@ -146,6 +192,14 @@ impl Trace {
                 continue;
             }
             let cells: Vec<&str> = text.split(',').collect();
+            if cells.len() != columns.len() {
+                return Err(error(
+                    line,
+                    1,
+                    format!("{} cells on this line, {} columns in the header", cells.len(), columns.len()),
+                    "one cell per column, separated by commas, with decimal points (5.5, not 5,5)",
+                ));
+            }
             let cell = |k: usize, what: &str| -> Result<f64, TraceError> {
                 let column = 1 + cells.iter().take(k).map(|c| c.len() + 1).sum::<usize>();
                 let raw = cells.get(k).map(|c| c.trim()).unwrap_or("");
@@ -177,6 +231,14 @@ impl Trace {
                     "a trace drives forwards: speeds ≥ 0",
                 ));
             }
+            if v * multiplier / divisor > MAX_SPEED || g.abs() > MAX_GRADE {
+                return Err(error(
+                    line,
+                    1,
+                    format!("the speed {v} or the grade {g} is outside the plausible range"),
+                    "speeds up to 150 m/s (540 km/h), grades as rise over run up to 0.5 (50 %): check the unit in the header",
+                ));
+            }
             if let Some(&last) = trace.time.last() {
                 if t <= last {
                     return Err(error(
@@ -184,6 +246,15 @@ impl Trace {
                         1,
                         format!("the time {t} s does not come after {last} s"),
                         "times must increase from line to line",
+                    ));
+                }
+                let (dt, dv) = (t - last, v * multiplier / divisor - trace.speed[trace.speed.len() - 1]);
+                if dt < MIN_STEP || (dv / dt).abs() > MAX_ACCELERATION || t - trace.time[0] > MAX_DURATION {
+                    return Err(error(
+                        line,
+                        1,
+                        format!("from {last} s to {t} s the trace is not plausible (step {dt:e} s, acceleration {:e} m/s²)", dv / dt),
+                        "samples at least 1 ms apart, accelerations up to 20 m/s², a trace of at most 1e6 s: check the time column's unit",
                     ));
                 }
             }

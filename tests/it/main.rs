@@ -16,6 +16,7 @@ mod fuzz_mutations;
 mod geometry;
 mod helical;
 mod helical_physics;
+mod hostile_cycles;
 mod internal_pair;
 mod load_sharing;
 mod losses;
