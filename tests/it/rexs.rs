@@ -201,6 +201,9 @@ fn the_command_writes_the_scene_or_nothing() {
     let bin = env!("CARGO_BIN_EXE_gearloss");
     let run =
         |model: &Path| std::process::Command::new(bin).arg("import").arg(model).arg("-o").arg(&out).output().unwrap();
+    // A file that an old temporary name (`unit.gear.partial`) would have overwritten stays as it is.
+    let neighbour = dir.join("unit.gear.partial");
+    std::fs::write(&neighbour, "a model of the user's").unwrap();
     let broken = run(&rexs("err/unknown_version.rexs"));
     assert_eq!(broken.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&broken.stderr).contains("REXS version `3.1`"));
@@ -210,6 +213,13 @@ fn the_command_writes_the_scene_or_nothing() {
     assert!(std::fs::read_to_string(&out).unwrap().contains("REXS cylindrical_stage 10"));
     let again = run(&rexs(CYLINDRICAL[2]));
     assert_eq!(again.status.code(), Some(3), "never over an existing file");
+    assert_eq!(std::fs::read_to_string(&neighbour).unwrap(), "a model of the user's");
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".import-"))
+        .collect();
+    assert!(left.is_empty(), "temporary files left: {left:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
