@@ -93,6 +93,7 @@ pub(crate) mod run_pair;
 pub(crate) mod run_stage_pairs;
 pub mod scene;
 pub(crate) mod shard;
+pub(crate) mod shard_digest;
 pub mod thermal;
 pub mod tribology;
 pub mod vehicle;

@@ -221,7 +221,9 @@ pub fn run_into_with(
     let name = format!("{slug}.shard-{}-of-{}", shard.index, shard.count);
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
     let (streamed, mut files) = stream_into(scene, &plan, (&folder, ""), formats, progress)?;
-    let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally);
+    let manifest = shard::Manifest::new(source_name, source, shard, &plan, streamed.tally)
+        .with_digests(&folder, &files)
+        .map_err(RunError::io("the record files"))?;
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;

@@ -107,7 +107,9 @@ pub(crate) fn run_drive_shard_into(
     let (mut records, mut files) = record_files(&folder, drive, formats)?;
     let tally = evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
     records.finish().map_err(&io)?;
-    let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally);
+    let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally)
+        .with_digests(&folder, &files)
+        .map_err(&io)?;
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.to_string());
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;

@@ -5,6 +5,7 @@
 //! shard order (byte for byte those of a single run) and folds their tallies in the same order
 //! (exactly a single run's tally), then reports as a single run does.
 
+use std::collections::BTreeMap;
 use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, Write};
 use std::path::PathBuf;
@@ -51,6 +52,12 @@ pub(crate) struct Manifest {
     /// A drive's shard: the tally of its rows (then `tally` is empty).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub drive_tally: Option<crate::evaluate::drive::DriveTally>,
+    /// The CRC-32 of the scene's text and of each record file the shard wrote
+    /// ([`crate::shard_digest`]), checked by `merge`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub source_digest: Option<String>,
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub digests: BTreeMap<String, String>,
 }
 
 impl Manifest {
@@ -90,7 +97,15 @@ impl Manifest {
             range,
             tally: Tally::default(),
             drive_tally: None,
+            source_digest: Some(crate::shard_digest::of_text(source.as_bytes())),
+            digests: BTreeMap::new(),
         }
+    }
+
+    /// The manifest with the digests of the record files `files` of the shard's folder.
+    pub(crate) fn with_digests(mut self, folder: &ReportFolder, files: &[String]) -> std::io::Result<Manifest> {
+        self.digests = crate::shard_digest::of_files(&folder.path(""), files)?;
+        Ok(self)
     }
 
     pub(crate) fn to_json(&self) -> Vec<u8> {
@@ -131,7 +146,23 @@ impl ShardSet {
                 return Err(not_a_shard(format!("{}: shard format {} is not {FORMAT}", path.display(), m.format))
                     .hint("shard and merge with the same version of gearloss"));
             }
+            if m.source_digest.as_ref().is_some_and(|d| *d != crate::shard_digest::of_text(m.source.as_bytes())) {
+                return Err(mismatch(format!(
+                    "{}: the scene in the manifest was edited after the shard's run (its text no longer matches its CRC-32)",
+                    path.display()
+                ))
+                .hint("run the shard again from the scene file; a shard's records belong to the scene it was run with"));
+            }
             manifests.push((dir.clone(), m));
+        }
+        if let Some((_, first)) = manifests.first() {
+            let first = first.digests.clone();
+            for (dir, m) in manifests.iter().filter(|(_, m)| !m.digests.is_empty()) {
+                if let Some(problem) = crate::shard_digest::problem(dir, &m.digests, &first) {
+                    return Err(mismatch(problem)
+                        .hint("run that shard again (`gearloss run --shard K/N`) and merge its new folder"));
+                }
+            }
         }
         let Some((_, first)) = manifests.first() else {
             return Err(not_a_shard("no shard folders given".to_string()));

@@ -103,6 +103,50 @@ fn a_large_sweep_reports_a_bounded_set_and_records_every_point() {
     assert!((e["min_efficiency"]["value"].as_f64().unwrap() - min).abs() < 1e-9);
 }
 
+/// A shard whose record file was cut short or edited, whose manifest's scene was edited, or that
+/// was run with other `--records` than the first is refused by `merge`, naming the folder and the
+/// file; nothing is written.
+#[test]
+fn merge_refuses_shards_that_do_not_hold_what_they_wrote() {
+    let out = temp("shard-digests");
+    let scene = "tests/specs/ok/large_sweep.gear";
+    let cut = |k: usize, records: &str| {
+        let at = out.join(format!("set-{k}-{records}"));
+        run(&["run", scene, "--shard", &format!("{k}/3"), "--records", records], &at);
+        at.join(format!("large_sweep.shard-{k}-of-3"))
+    };
+    let merge = |shards: &[std::path::PathBuf]| {
+        let o = gearloss().arg("merge").args(shards).arg("--out").arg(out.join("merged")).output().unwrap();
+        assert!(!out.join("merged/large_sweep").exists(), "nothing written");
+        (o.status.code(), String::from_utf8_lossy(&o.stderr).into_owned())
+    };
+    let shards: Vec<_> = (1..=3).map(|k| cut(k, "csv")).collect();
+    // A record file with a row fewer.
+    let csv = shards[1].join("records.csv");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    std::fs::write(&csv, &text[..text[..text.len() - 1].rfind('\n').unwrap() + 1]).unwrap();
+    let (code, err) = merge(&shards);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("shard-2-of-3/records.csv is not the file its shard wrote"), "{err}");
+    std::fs::write(&csv, &text).unwrap();
+    // The scene in a manifest edited (μ 0.05 → 0.09 in every shard's, the shards still of one scene).
+    for s in &shards {
+        let m = s.join("shard.json");
+        std::fs::write(&m, std::fs::read_to_string(&m).unwrap().replace("mu = 0.05", "mu = 0.09")).unwrap();
+    }
+    let (_, err) = merge(&shards);
+    assert!(err.contains("shard-1-of-3/shard.json: the scene in the manifest was edited"), "{err}");
+    // Shards run with other record files than the first.
+    let mixed = vec![cut(1, "csv"), cut(2, "parquet"), cut(3, "csv")];
+    let (_, err) = merge(&mixed);
+    assert!(err.contains("shard-2-of-3 holds the record files") && err.contains("different `--records`"), "{err}");
+    // As they were written, they merge.
+    let good = vec![cut(1, "csv"), cut(2, "csv"), cut(3, "csv")];
+    let o = gearloss().arg("merge").args(&good).arg("--out").arg(out.join("merged")).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
 /// `run --shard K/4` four times, then `merge`: the record files equal a single run's byte for byte,
 /// and so do report.md and report.json.
 #[test]
