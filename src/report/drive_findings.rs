@@ -69,6 +69,12 @@ pub(super) fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]
             }
         }
     }
+    if layout.shafts.iter().all(|s| s.bearings.is_empty()) {
+        out.push(Finding {
+            severity: Severity::Warning,
+            message: "no shaft of the drive has bearings: its losses are the meshes', the seals' and the gears' no-load parts only (no bearing loads, no bearing losses, no shaft statics)".to_string(),
+        });
+    }
     for p in points.iter().filter(|p| !p.point.settled()) {
         out.push(Finding {
             severity: Severity::Warning,

@@ -132,6 +132,7 @@ pub(super) fn lower_drive_scene(
         return Err(std::mem::take(errors));
     };
     check_oil_needs(&shafts, &stages, lubricant.as_ref(), lubricant_failed, gearbox.kind.span, errors);
+    check_gear_faces(&stages, errors);
     let layout = super::lower_drive::build_drive(
         &stages,
         stages.len() == stage_blocks.len(),
@@ -203,6 +204,39 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
             .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
         ),
         _ => {}
+    }
+}
+
+/// Two gears of parallel stages on one shaft may not share any of its length: their faces (each
+/// `at` ± b/2) must not overlap.
+fn check_gear_faces(stages: &[super::lower_stage::StageDecl], errors: &mut Vec<Diagnostic>) {
+    let faces: Vec<(&str, f64, f64, &str, crate::diagnostics::Span)> = stages
+        .iter()
+        .filter(|s| s.planetary.is_none())
+        .flat_map(|s| {
+            let b = s.pair.face_width.value.value;
+            s.places.iter().map(move |(shaft, at)| (shaft.text.as_str(), *at, b, s.name.text.as_str(), shaft.span))
+        })
+        .collect();
+    for (k, (shaft, at, b, stage, span)) in faces.iter().enumerate() {
+        let Some(other) = faces[..k].iter().find(|f| f.0 == *shaft && (f.1 - at).abs() < 0.5 * (f.2 + b)) else {
+            continue;
+        };
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                *span,
+                format!(
+                    "stage `{stage}`'s gear on shaft `{shaft}` at {} mm (face {} mm) overlaps stage `{}`'s gear at {} mm (face {} mm)",
+                    at * 1e3,
+                    b * 1e3,
+                    other.3,
+                    other.1 * 1e3,
+                    other.2 * 1e3
+                ),
+            )
+            .hint("two gears cannot share a stretch of one shaft: give each its own `at` (the face mid-plane), at least half the sum of their face widths apart"),
+        );
     }
 }
 

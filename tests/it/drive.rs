@@ -107,6 +107,24 @@ fn a_point_is_settled_only_when_its_books_balance() {
     assert_eq!(warned, report.points.len());
 }
 
+/// A drive with no bearings anywhere runs (meshes, seals and no-load parts) and says so.
+#[test]
+fn a_drive_without_bearings_says_so() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    let mut kept = String::new();
+    let mut rest = text.as_str();
+    while let Some(at) = rest.find("bearing(") {
+        kept.push_str(&rest[..at]);
+        rest = &rest[at + rest[at..].find(')').unwrap() + 1..];
+    }
+    kept.push_str(rest);
+    let scene = gearloss::check("nobearings.gear", &kept).unwrap_or_else(|e| panic!("{e}"));
+    let drive = scene.drive.as_ref().unwrap();
+    let report = gearloss::report::drive::build_drive_report(&scene, drive, &evaluate_drive(&scene, drive));
+    assert!(report.findings.iter().any(|f| f.message.starts_with("no shaft of the drive has bearings")));
+    assert!(report.points.iter().all(|p| p.point.losses.bearings_load == 0.0 && p.point.settled()));
+}
+
 /// The EV reducer's text with `edits` (find, replace) applied.
 fn ev_with(edits: &[(&str, &str)]) -> gearloss::Scene {
     let mut text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
