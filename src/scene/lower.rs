@@ -130,7 +130,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
         super::lower_gearbox::check_gearbox_needs(gb, block, lubricant.as_ref(), &analyses, &mut errors);
     }
     if !lubricant_failed {
-        check_film_needs(&analyses, lubricant.as_ref(), &mut errors);
+        super::lower_lubricant::check_film_needs(&analyses, lubricant.as_ref(), &mut errors);
     }
     if let Some(g) = gears.as_ref().filter(|g| g.internal) {
         let wants = super::lower_gears::InternalPairWants {
@@ -251,22 +251,6 @@ fn scene_blocks<'a>(ast: &'a SceneAst, top: &Fields<'a>, errors: &mut Vec<Diagno
         }
     }
     (materials, singles, stages)
-}
-
-/// `film` needs the lubricant's pressure-viscosity coefficient.
-fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: &mut Vec<Diagnostic>) {
-    if let Some(span) = analyses.film_span {
-        if lubricant.is_none_or(|l| l.pressure_viscosity.is_none()) {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::MissingKey,
-                    span,
-                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
-                )
-                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
-            );
-        }
-    }
 }
 
 /// Checks a lone unit expression against a dimension (for `gearloss units` and tests).

@@ -330,3 +330,19 @@ pub(super) fn scene_lubricant(
         (None, None) => None,
     }
 }
+
+/// `film` needs the lubricant's pressure-viscosity coefficient.
+pub(super) fn check_film_needs(analyses: &Analyses, lubricant: Option<&Lubricant>, errors: &mut Vec<Diagnostic>) {
+    if let Some(span) = analyses.film_span {
+        if lubricant.is_none_or(|l| l.pressure_viscosity.is_none()) {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    span,
+                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
+                )
+                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
+            );
+        }
+    }
+}

@@ -80,17 +80,8 @@ pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Dia
             .hint("add `output_torque = [150] N*m` and `output_speed = [1000] rpm` to `operating` (the drive cycle keeps its own)"),
         );
     }
-    if let (Some(span), false) = (a.film_span, i.lubricant_failed) {
-        if i.lubricant.is_none_or(|l| l.pressure_viscosity.is_none()) {
-            errors.push(
-                Diagnostic::new(
-                    DiagnosticKind::MissingKey,
-                    span,
-                    "`film` needs the lubricant's `pressure_viscosity`, which the scene lacks",
-                )
-                .hint("add `pressure_viscosity = 2.0e-8 1/Pa` to the `lubricant` block"),
-            );
-        }
+    if !i.lubricant_failed {
+        super::lower_lubricant::check_film_needs(a, i.lubricant, errors);
     }
     if let Some(span) = a.dynamics_span {
         super::lower_dynamics_blocks::check_dynamics_needs(span, i.dynamics_block.is_some(), None, i.dynamics, errors);
