@@ -228,16 +228,22 @@ fn check_gear_faces(stages: &[super::lower_stage::StageDecl], errors: &mut Vec<D
                 *span,
                 format!(
                     "stage `{stage}`'s gear on shaft `{shaft}` at {} mm (face {} mm) overlaps stage `{}`'s gear at {} mm (face {} mm)",
-                    at * 1e3,
-                    b * 1e3,
+                    mm(*at),
+                    mm(*b),
                     other.3,
-                    other.1 * 1e3,
-                    other.2 * 1e3
+                    mm(other.1),
+                    mm(other.2)
                 ),
             )
             .hint("two gears cannot share a stretch of one shaft: give each its own `at` (the face mid-plane), at least half the sum of their face widths apart"),
         );
     }
+}
+
+/// A length (m) in mm as a message shows it: to the µm, trailing zeros left out.
+fn mm(x: f64) -> String {
+    let text = format!("{:.3}", x * 1e3);
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 /// Bearings and injection need the oil's kinematic viscosity and density.

@@ -542,7 +542,7 @@ fn three_stages_with_a_spur_stage_across() {
         direction = 90 deg
         gears {
             module = 3 mm  pressure_angle = 20 deg  face_width = 40 mm
-            pinion { teeth = 25  shaft = output  at = 100 mm  material = steel  roughness_ra = 0.5 um }
+            pinion { teeth = 25  shaft = output  at = 70 mm   material = steel  roughness_ra = 0.5 um }
             wheel  { teeth = 50  shaft = wheel   at = 60 mm   material = steel  roughness_ra = 0.5 um }
         }
         lubrication = dip(pinion_immersion = 0 mm, wheel_immersion = 20 mm, axis_height = 150 mm, housing_width = 200 mm)
