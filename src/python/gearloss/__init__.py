@@ -332,7 +332,11 @@ class Report:
         if "drive_records.csv" in self._files:
             return pandas.read_csv(self._source("drive_records.csv"))
         if "drive_records.parquet" in self._files:
-            return pandas.read_parquet(self._source("drive_records.parquet"))
+            frame = pandas.read_parquet(self._source("drive_records.parquet"))
+            # The file holds `both_ends_deliver` as the CSV writes it (text `true`/`false`); the
+            # DataFrame gives it as the CSV reader does, a bool.
+            frame["both_ends_deliver"] = frame["both_ends_deliver"] == "true"
+            return frame
         return pandas.DataFrame()
 
     @property
