@@ -139,7 +139,7 @@ pub struct DriveReport {
     /// `stage_<name>_validity_outside` say where).
     pub outside_rows: usize,
     /// Rows whose fixed point did not settle or whose books do not balance, and the first in words.
-    #[serde(default, skip_serializing_if = "is_zero")]
+    #[serde(default, skip_serializing_if = "super::drive_findings::is_zero")]
     pub unsettled_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_unsettled: Option<String>,
@@ -273,24 +273,11 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             ),
         });
     }
-    let unsettled_shown = report.points.iter().filter(|p| !p.point.settled()).count();
-    if let (true, Some(first)) = (report.unsettled_rows > unsettled_shown, &report.first_unsettled) {
-        report.findings.push(Finding {
-            severity: Severity::Warning,
-            message: format!(
-                "{} of {} rows did not settle or do not balance their books (drive_records.csv: `passes` = 100, or P_source − P_sink ≠ the sum of the parts); the first: row {first}",
-                report.unsettled_rows, report.rows
-            ),
-        });
-    }
+    report.findings.extend(super::drive_findings::unsettled_rows(&report));
     for path in super::non_finite::non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
     report
-}
-
-fn is_zero(n: &usize) -> bool {
-    *n == 0
 }
 
 /// The duty cycle's steps with their losses and, with a heat capacity, the transient.

@@ -121,3 +121,22 @@ pub(super) fn stage_notes(
         })
         .collect()
 }
+
+/// The rows beyond those the report shows that did not settle or do not balance their books, with
+/// the first of them named.
+pub(super) fn unsettled_rows(report: &super::drive::DriveReport) -> Option<Finding> {
+    let shown = report.points.iter().filter(|p| !p.point.settled()).count();
+    let first = report.first_unsettled.as_ref().filter(|_| report.unsettled_rows > shown)?;
+    Some(Finding {
+        severity: Severity::Warning,
+        message: format!(
+            "{} of {} rows did not settle or do not balance their books (drive_records.csv: `passes` = 100, or P_source − P_sink ≠ the sum of the parts); the first: row {first}",
+            report.unsettled_rows, report.rows
+        ),
+    })
+}
+
+/// For serde: a count left out of report.json when it is zero.
+pub(super) fn is_zero(n: &usize) -> bool {
+    *n == 0
+}
