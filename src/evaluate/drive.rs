@@ -226,7 +226,8 @@ pub struct DriveTally {
     pub first_unsettled: Option<usize>,
 }
 
-fn is_zero(n: &usize) -> bool {
+/// For serde: a count left out when it is zero.
+pub(crate) fn is_zero(n: &usize) -> bool {
     *n == 0
 }
 

@@ -105,7 +105,7 @@ impl StageMesh {
 }
 
 /// The pair with pinion and wheel exchanged (the wheel driving).
-fn swapped(pair: &GearPair) -> GearPair {
+pub(crate) fn swapped(pair: &GearPair) -> GearPair {
     GearPair { pinion: pair.wheel.clone(), wheel: pair.pinion.clone(), ..pair.clone() }
 }
 

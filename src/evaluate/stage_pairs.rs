@@ -20,7 +20,7 @@
 //! stage's pair reports what the same pair written alone with `pinion_torque` and `pinion_speed` at
 //! those values reports (tests/it/stage_pairs.rs holds the two to 1e-12).
 
-use super::drive_setup::DriveSetup;
+use super::drive_setup::{swapped, DriveSetup};
 use crate::drive::{EndValue, Member};
 use crate::model::{Analyses, GearPair, Operating, Scene, SceneDrive, Sweep};
 
@@ -111,11 +111,6 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
         }
     }
     out
-}
-
-/// The pair with pinion and wheel exchanged (the wheel driving).
-fn swapped(pair: &GearPair) -> GearPair {
-    GearPair { pinion: pair.wheel.clone(), wheel: pair.pinion.clone(), ..pair.clone() }
 }
 
 /// The scene of `pair` alone at the pinion's torque (N·m) and speed (rad/s), shown in the units the

@@ -139,7 +139,7 @@ pub struct DriveReport {
     /// `stage_<name>_validity_outside` say where).
     pub outside_rows: usize,
     /// Rows whose fixed point did not settle or whose books do not balance, and the first in words.
-    #[serde(default, skip_serializing_if = "super::drive_findings::is_zero")]
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
     pub unsettled_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_unsettled: Option<String>,

@@ -135,8 +135,3 @@ pub(super) fn unsettled_rows(report: &super::drive::DriveReport) -> Option<Findi
         ),
     })
 }
-
-/// For serde: a count left out of report.json when it is zero.
-pub(super) fn is_zero(n: &usize) -> bool {
-    *n == 0
-}
