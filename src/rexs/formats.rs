@@ -33,17 +33,49 @@ pub(crate) fn read_model(bytes: &[u8]) -> Result<RexsModel, RexsError> {
 /// real gear-unit models are a few MiB): a zip that inflates past it is refused, never inflated whole.
 pub(crate) const MAX_MODEL_BYTES: u64 = 64 << 20;
 
-/// The one model file inside a zip.
+/// The one model file inside a zip: a `.rexs`, `.rexsj` or `.rexs.json` member, else the one
+/// `.json` member that holds a REXS model (a tool's manifest beside it is passed over). Two models
+/// in one archive are refused by name: which one was meant is not the importer's to guess.
 fn unzip(bytes: &[u8]) -> Result<Vec<u8>, RexsError> {
-    use std::io::Read;
     let bad = |e: String| {
         RexsError::new(format!("the zip archive cannot be read: {e}"), "give a .rexsz holding one .rexs or .rexsj file")
     };
     let mut archive = zip::ZipArchive::new(std::io::Cursor::new(bytes)).map_err(|e| bad(e.to_string()))?;
     let names: Vec<String> = archive.file_names().filter_map(|n| n.ok().map(|n| n.to_string())).collect();
-    let Some(name) = names.iter().find(|n| n.ends_with(".rexs") || n.ends_with(".rexsj") || n.ends_with(".json"))
-    else {
-        return Err(bad(format!("it holds no .rexs or .rexsj file (it holds: {})", names.join(", "))));
+    let named = |n: &&String| n.ends_with(".rexs") || n.ends_with(".rexsj") || n.ends_with(".rexs.json");
+    let mut models: Vec<(String, Vec<u8>)> = Vec::new();
+    for name in names.iter().filter(named) {
+        models.push((name.clone(), member(&mut archive, name)?));
+    }
+    if models.is_empty() {
+        for name in names.iter().filter(|n| n.ends_with(".json")) {
+            let text = member(&mut archive, name)?;
+            let holds_model =
+                serde_json::from_slice::<serde_json::Value>(&text).is_ok_and(|v| v.get("model").is_some());
+            if holds_model {
+                models.push((name.clone(), text));
+            }
+        }
+    }
+    match models.len() {
+        1 => Ok(models.pop().expect("one model").1),
+        0 => Err(bad(format!("it holds no REXS model (it holds: {})", names.join(", ")))),
+        _ => Err(RexsError::new(
+            format!(
+                "the zip archive holds {} models: {}",
+                models.len(),
+                models.iter().map(|(n, _)| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+            ),
+            "unpack the archive and import the model meant",
+        )),
+    }
+}
+
+/// A zip member's bytes, inflated to at most [`MAX_MODEL_BYTES`].
+fn member(archive: &mut zip::ZipArchive<std::io::Cursor<&[u8]>>, name: &str) -> Result<Vec<u8>, RexsError> {
+    use std::io::Read;
+    let bad = |e: String| {
+        RexsError::new(format!("the zip archive cannot be read: {e}"), "give a .rexsz holding one .rexs or .rexsj file")
     };
     let mut out = Vec::new();
     let member = archive.by_name(name).map_err(|e| bad(e.to_string()))?;
@@ -101,6 +133,13 @@ fn xml_attributes(node: roxmltree::Node) -> Vec<Attribute> {
 }
 
 fn read_xml(text: &str) -> Result<RexsModel, RexsError> {
+    use super::xml_depth::{depth, MAX_XML_DEPTH};
+    if depth(text, MAX_XML_DEPTH) > MAX_XML_DEPTH {
+        return Err(RexsError::new(
+            format!("the XML nests elements more than {MAX_XML_DEPTH} deep"),
+            "a REXS model nests six deep (model, components, component, attribute, array, c); give the model as its tool exported it",
+        ));
+    }
     let doc = roxmltree::Document::parse(text).map_err(|e| {
         RexsError::new(format!("the file is not well-formed XML: {e}"), "give a REXS model as its tool exported it")
     })?;

@@ -22,6 +22,7 @@ pub(crate) mod shafts;
 pub(crate) mod stage_data;
 pub(crate) mod units;
 pub(crate) mod write_scene;
+pub(crate) mod xml_depth;
 
 mod error;
 mod import;

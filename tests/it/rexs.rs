@@ -289,5 +289,45 @@ fn hostile_files_are_refused_before_they_are_read_whole() {
     assert!(std::fs::metadata(&bomb).unwrap().len() < 4 << 20);
     let e = gearloss::rexs::import_file(&bomb).expect_err("the bomb is refused");
     assert!(e.to_string().contains("inflates to more than 64 MiB"), "{e}");
+    // XML nested 100 000 deep (it overflowed the stack): refused before the tree is built.
+    let deep = dir.join("deep.rexs");
+    std::fs::write(
+        &deep,
+        format!("<model version=\"1.4\">{}{}</model>", "<a>".repeat(100_000), "</a>".repeat(100_000)),
+    )
+    .unwrap();
+    let e = gearloss::rexs::import_file(&deep).expect_err("nesting past 64 is refused");
+    assert!(e.to_string().contains("nests elements more than 64 deep"), "{e}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A `.rexsz` is read for its one model: a tool's manifest `.json` stored first is passed over
+/// (it was refused), and two models in one archive are refused naming both (the first was taken
+/// without a word).
+#[test]
+fn a_zip_gives_its_one_model_or_names_them_all() {
+    let dir = std::env::temp_dir().join(format!("gearloss-rexs-zips-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = std::fs::read(rexs(CYLINDRICAL[1])).unwrap();
+    let zipped = |name: &str, members: &[(&str, &[u8])]| {
+        use std::io::Write;
+        let path = dir.join(name);
+        let mut z = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
+        for (member, bytes) in members {
+            z.start_file(*member, zip::write::SimpleFileOptions::default()).unwrap();
+            z.write_all(bytes).unwrap();
+        }
+        z.finish().unwrap();
+        path
+    };
+    let manifest = br#"{"manifest": {"files": ["gear_unit.json"], "tool": "export"}}"#;
+    let first = zipped("manifest_first.rexsz", &[("manifest.json", manifest), ("gear_unit.json", &model)]);
+    let from_zip = gearloss::rexs::import_file(&first).unwrap_or_else(|e| panic!("{e}"));
+    let plain = import(CYLINDRICAL[1]);
+    assert_eq!(code_lines(&from_zip.scene), code_lines(&plain.scene));
+    let two = zipped("two_models.rexsz", &[("a.rexsj", &model), ("b.rexsj", &model)]);
+    let e = gearloss::rexs::import_file(&two).expect_err("two models are refused");
+    assert!(e.to_string().contains("holds 2 models: `a.rexsj`, `b.rexsj`"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
