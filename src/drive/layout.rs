@@ -78,8 +78,9 @@ pub struct Shaft {
 
 /// One stage: its kind (the kinematics catalogue), its two gears' places, the teeth and the
 /// pinion's hand, its direction φ (rad; the line from the pinion shaft's centre to the wheel
-/// shaft's, seen from +z; a planetary stage's first planet), its lubrication (the no-load parts,
-/// charged on the pinion's shaft; a planetary stage's on its carrier's, else its sun's).
+/// shaft's, seen from +z; a planetary stage's first planet), its lubrication (the no-load parts:
+/// churning and jet impulse charged on the pinion's shaft, each gear's windage on its own; a
+/// planetary stage's on its carrier's, else its sun's).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stage {
     pub name: String,

@@ -63,7 +63,7 @@ pub struct ShaftPoint {
     /// The mesh forces on the shaft's gears, in the frame the statics reads.
     pub gear_loads: Vec<super::forces::GearLoad>,
     pub seals: f64,
-    /// The no-load parts of the stages whose pinion this shaft carries (W).
+    /// The gears' no-load parts charged on this shaft (W): the churning and jet impulse of the stages whose pinion it carries, the windage of each gear it carries.
     pub gear_no_load: f64,
     /// A shaft with sections: its bending (elastic beam).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -90,7 +90,7 @@ pub struct StagePoint {
     pub mesh_efficiency: f64,
     /// (1 − η_mesh) × the power through the mesh (W).
     pub mesh_loss: f64,
-    /// The stage's no-load parts (W), charged on its pinion's shaft.
+    /// The stage's no-load parts (W): churning and jet impulse charged on its pinion's shaft, each gear's windage on its own.
     pub no_load: f64,
     /// F_t, F_r, F_a (N).
     pub tangential_force: f64,

@@ -1,7 +1,8 @@
 //! The power walk through the drive and its fixed point (README, "Several stages").
 //!
 //! Walking from the source to the sink, a shaft passes on the power it receives less its own
-//! losses (its bearings, its seals, and the no-load parts of the stages whose pinion it carries);
+//! losses (its bearings, its seals, the churning and jet impulse of the stages whose pinion it carries
+//! and the windage of each gear it carries);
 //! a stage passes on η_mesh times what its driving gear puts in (driven torque = driving torque ×
 //! z_driven/z_driving × η_mesh). Bearing losses depend on the bearing loads, which depend on every
 //! mesh force on the shaft, which depend on the torques: the walk is repeated, the loads taken from
@@ -98,8 +99,9 @@ struct Walk<'a> {
     steps: Vec<(usize, Member)>,
 }
 
-/// Load-independent losses of each shaft (W): seals, and the no-load parts of the stages whose
-/// pinion it carries; and those parts by stage.
+/// Load-independent losses of each shaft (W): seals, and the gears' no-load parts (a stage's
+/// churning and jet impulse on its pinion's shaft, each gear's windage on its own); and those parts
+/// by stage.
 struct FixedLosses {
     seals: Vec<f64>,
     gear_no_load: Vec<f64>,
@@ -148,9 +150,13 @@ impl<'a> Walk<'a> {
                         },
                     ),
                 };
-                let p = stage.lubrication.as_ref().and_then(|l| l.power_loss(&running, model.oil)).unwrap_or(0.0);
-                gear_no_load[stage.places[place].shaft] += p;
-                p
+                let by_gear = stage.lubrication.as_ref().and_then(|l| l.power_loss_by_gear(&running, model.oil));
+                let [own, other] = by_gear.unwrap_or([0.0; 2]);
+                // The mesh's parts (and a planetary stage's one turning body) where `place` says; a
+                // pair's wheel windage on the wheel's own shaft.
+                gear_no_load[stage.places[place].shaft] += own;
+                gear_no_load[stage.places[1 - place].shaft] += other;
+                own + other
             })
             .collect();
         FixedLosses { seals, gear_no_load, stage_no_load }

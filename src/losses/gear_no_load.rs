@@ -93,18 +93,28 @@ impl Lubrication {
     /// P_VZ0 (W) of the two gears in `oil`; `None` for injection lubrication of an oil without a
     /// density (lowering refuses that scene).
     pub fn power_loss(&self, g: &GearsRunning, oil: &super::oil::Oil) -> Option<f64> {
+        self.parts(g, oil).map(|(mesh, windage)| mesh + (windage[0] + windage[1]))
+    }
+
+    /// P_VZ0 (W) split by where it acts, [pinion's shaft, wheel's shaft]: Mauz's T_H and the jet's
+    /// impulse are the mesh's and act where Mauz read his torque, at the pinion shaft (T_H ω_1);
+    /// each gear's windage is its own and acts on its own gear's shaft.
+    pub fn power_loss_by_gear(&self, g: &GearsRunning, oil: &super::oil::Oil) -> Option<[f64; 2]> {
+        self.parts(g, oil).map(|(mesh, windage)| [mesh + windage[0], windage[1]])
+    }
+
+    /// The mesh's part (churning or the jet's impulse, W) and each gear's windage (W).
+    fn parts(&self, g: &GearsRunning, oil: &super::oil::Oil) -> Option<(f64, [f64; 2])> {
         let v_t = g.omega[0] * g.pitch_radius[0];
         match *self {
             Lubrication::Dip { immersion, axis_height, housing_width } => {
-                Some(mauz_dip_torque(immersion, axis_height, housing_width, g.face_width, v_t) * g.omega[0])
+                Some((mauz_dip_torque(immersion, axis_height, housing_width, g.face_width, v_t) * g.omega[0], [0.0; 2]))
             }
             Lubrication::Injection { flow, jet_speed } => {
-                let windage: f64 = (0..2)
-                    .map(|i| {
-                        windage_loss(g.omega[i] * 30.0 / std::f64::consts::PI, g.pitch_radius[i], g.face_width, oil.eta)
-                    })
-                    .sum();
-                Some(injection_impulse_loss(oil.rho?, flow, v_t, jet_speed) + windage)
+                let windage = |i: usize| {
+                    windage_loss(g.omega[i] * 30.0 / std::f64::consts::PI, g.pitch_radius[i], g.face_width, oil.eta)
+                };
+                Some((injection_impulse_loss(oil.rho?, flow, v_t, jet_speed), [windage(0), windage(1)]))
             }
         }
     }
@@ -154,6 +164,11 @@ mod tests {
         let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
         let w = windage_loss(rpm(100.0), 0.1, 0.02, 8.7e-3) + windage_loss(rpm(50.0), 0.2, 0.02, 8.7e-3);
         assert!((p - 8.7 - w).abs() < 1e-12, "{p}");
+        // The wheel's windage is the wheel's own; the jet and the pinion's windage the pinion's.
+        let by_gear =
+            Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss_by_gear(&g, &oil).unwrap();
+        assert!((by_gear[1] - windage_loss(rpm(50.0), 0.2, 0.02, 8.7e-3)).abs() < 1e-15, "{by_gear:?}");
+        assert!((by_gear[0] - 8.7 - windage_loss(rpm(100.0), 0.1, 0.02, 8.7e-3)).abs() < 1e-12, "{by_gear:?}");
         let no_density = crate::losses::oil::Oil { rho: None, ..oil };
         assert_eq!(Lubrication::Injection { flow: 2e-3 / 60.0, jet_speed: 20.0 }.power_loss(&g, &no_density), None);
     }

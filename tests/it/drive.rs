@@ -636,3 +636,29 @@ fn drive_map_best_points_are_located_maxima() {
         }
     }
 }
+
+/// Where each no-load part acts: each gear's windage (Anderson & Loewenthal) on its own gear's
+/// shaft, the jet's impulse on its stage's pinion's shaft. In the EV reducer (injection on both
+/// stages) the output shaft carries the second wheel's windage alone, and the lay shaft the first
+/// wheel's windage plus the second stage's jet and pinion windage. The two wheels' windages stand
+/// in the ratio P_W ∝ (1 + 2.3 b/R) n^2.8 R^4.6 (the mist's viscosity cancels), R = m_n z/(2 cos β)
+/// (no profile shift): checked to 1e-12, every point.
+#[test]
+fn each_gears_windage_acts_on_its_own_shaft() {
+    let radius = |m: f64, z: f64, beta: f64| m * z / (2.0 * beta.to_radians().cos());
+    let (r1, b1) = (radius(1.5177e-3, 68.0, 23.4), 35.44e-3);
+    let (r2, b2) = (radius(2.5361e-3, 78.0, 18.4), 49.80e-3);
+    for p in points(&ev_reducer()) {
+        let [motor, lay, output] = [0, 1, 2].map(|j| &p.shafts[j]);
+        assert!(output.gear_no_load > 0.0, "the second wheel's windage is on the output shaft");
+        let ratio = (1.0 + 2.3 * b1 / r1) / (1.0 + 2.3 * b2 / r2)
+            * (lay.speed / output.speed).abs().powf(2.8)
+            * (r1 / r2).powf(4.6);
+        let first_wheel = lay.gear_no_load - (p.stages[1].no_load - output.gear_no_load);
+        assert!((first_wheel / (output.gear_no_load * ratio) - 1.0).abs() < 1e-12, "{first_wheel}");
+        let books = motor.gear_no_load + lay.gear_no_load + output.gear_no_load;
+        let stages = p.stages[0].no_load + p.stages[1].no_load;
+        assert!((books - stages).abs() <= 1e-12 * stages, "{books} vs {stages}");
+        assert!(motor.gear_no_load < p.stages[0].no_load);
+    }
+}
