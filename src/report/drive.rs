@@ -176,6 +176,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             label: label(r),
             law: laws[r.law_index].clone(),
             formulation: r.formulation.name().to_string(),
+            total_loss: r.point.power_lost(),
             point: r.point.clone(),
             validity: v
                 .iter()

@@ -12,6 +12,10 @@ pub struct DrivePointReport {
     pub label: String,
     pub law: String,
     pub formulation: String,
+    /// The power the box loses, P_in − P_out (W), report.md's "total": what the loss parts (the
+    /// records' `total_W`) add up to where the point's books balance.
+    #[serde(default)]
+    pub total_loss: f64,
     pub point: DrivePoint,
     /// By stage: the law's contacts outside its validity range of those read along A–E, and the
     /// first reason met (empty when inside).

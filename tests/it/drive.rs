@@ -89,6 +89,14 @@ fn a_point_is_settled_only_when_its_books_balance() {
         for p in points(&scene) {
             assert!(p.settled() && p.books_gap.is_none(), "{spec}: {}", p.unsettled_words());
         }
+        // report.json's total loss is P_in − P_out and the parts' sum (1e-9 of the source).
+        let drive = scene.drive.as_ref().unwrap();
+        let report = gearloss::report::drive::build_drive_report(&scene, drive, &evaluate_drive(&scene, drive));
+        for p in &report.points {
+            let source = p.point.input_power.abs().max(p.point.output_power.abs());
+            assert_eq!(p.total_loss, p.point.input_power - p.point.output_power);
+            assert!((p.total_loss - p.point.losses.total()).abs() <= 1e-9 * source, "{spec}: {}", p.total_loss);
+        }
     }
     let scene =
         ev_with(&[("static_load_rating = 10.2 kN, at = 136.24 mm)", "static_load_rating = 10.2 kN, at = 30.001 mm)")]);
