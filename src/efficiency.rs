@@ -226,18 +226,17 @@ pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
     Integral { value: i.value / (p.e - p.a), error: i.error / (p.e - p.a), evaluations: i.evaluations }
 }
 
-/// Ohlendorf's gear loss factor H_V = π(u+1)/(z1 u cos β_b) · (1 − ε_α + ε_1² + ε_2²) (spur: cos β_b = 1).
+/// The gear loss factor H_V (geometry only, [`crate::geometry::loss_factor::loss_factor`]):
+/// Ohlendorf's closed form H_V = π(u+1)/(z1 u cos β_b) · (1 − ε_α + ε_1² + ε_2²) (spur: cos β_b = 1)
+/// where the pitch point lies in single contact, else the path integral under equal sharing that it
+/// closes (ε_1 or ε_2 above 1: a ring mesh's long recess).
 ///
 /// For a helical pair 1 − μ H_V is the mean efficiency of a *slice* model (equal load sharing within
 /// each transverse slice of the face), not of constant stiffness density along the contact lines,
 /// which puts more load where more line length is and so weights the ends of the path (physics
 /// notes, "Helical pairs"): the two agree as β → 0 and when ε_β is an integer.
 pub fn ohlendorf_loss_factor(ctx: &LawContext) -> f64 {
-    let g = ctx.geometry;
-    let u = g.gear_ratio;
-    let [e1, e2] = g.addendum_contact_ratio;
-    let h = std::f64::consts::PI * (u + 1.0) / (g.teeth[0] as f64 * u) * (1.0 - g.contact_ratio + e1 * e1 + e2 * e2);
-    g.to_normal(h)
+    crate::geometry::loss_factor::loss_factor(ctx.geometry)
 }
 
 /// Local friction power loss of one contact, |μ| F v_s (W), with F = its force share of F_bn.

@@ -6,6 +6,7 @@ pub mod contact;
 pub(crate) mod contact_lines;
 pub(crate) mod elastic;
 pub(crate) mod involute;
+pub mod loss_factor;
 pub mod mesh;
 pub(crate) mod pair;
 pub(crate) mod pair_checks;

@@ -49,6 +49,14 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             )));
         }
     }
+    if !crate::geometry::loss_factor::closed_form_holds(g) {
+        let [e1, e2] = g.addendum_contact_ratio;
+        out.push(note(format!(
+            "Ohlendorf's closed form H_V = π(u+1)/(z1 u cos β_b)(1 − ε_α + ε_1² + ε_2²) assumes the pitch point in single contact (ε_1, ε_2 ≤ 1); here ε_1 = {e1:.4}, ε_2 = {e2:.4}, where it would give {:.5}. H_V = {:.5} is the path integral it closes (equal sharing, n pairs in contact each 1/n of the load), the factor the mean efficiency follows and every P_in μ H_V charges",
+            crate::geometry::loss_factor::ohlendorf_closed_form(g),
+            eval.ohlendorf_loss_factor
+        )));
+    }
     if g.internal {
         out.push(note(
             "internal pair (ISO 21771's signs): u = z2/z1 < 0, T1T2 = a sin α_w < 0 (T2 beyond T1), the ring's radius of curvature ρ2 = T1T2 − T1C < 0 (concave), R = ρ1ρ2/(ρ1 + ρ2), v_s = ω1 (1 + 1/u) |s|".into(),

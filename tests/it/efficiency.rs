@@ -129,3 +129,30 @@ fn efficiency_range_is_located() {
     let located = eval.points[0].laws[k].efficiency[0].min;
     assert!(located <= scan + 1e-15 && scan - located < 1e-9, "located {located} vs scan {scan}");
 }
+
+/// A ring mesh whose recess reaches past one base pitch (24/72, ring tip 140 mm: ε_2 = 1.13) and a
+/// pair of ε_α = 2.47 (ε_1, ε_2 > 1): Ohlendorf's closed form, which assumes the pitch point in
+/// single contact, reads 1.7 % and 32 % high; the loss factor charged is the path integral it
+/// closes, and the external mean with constant μ is 1 − μ H_V with it, to 1e-9 (an independent
+/// quadrature of the same physics).
+#[test]
+fn a_long_recess_takes_the_integral_not_the_closed_form() {
+    use gearloss::geometry::loss_factor::{closed_form_holds, ohlendorf_closed_form};
+    for (fixture, high) in [("internal_pair_long_recess", 0.015), ("any_order_and_ranges", 0.3)] {
+        let scene = crate::scene(&crate::root().join(format!("tests/specs/ok/{fixture}.gear")));
+        let g = PairGeometry::compute(&scene.gears.pair_input()).unwrap();
+        assert!(!closed_form_holds(&g), "{fixture}: {:?}", g.addendum_contact_ratio);
+        let c = LawContext { geometry: &g, ..ctx(&g) };
+        let hv = ohlendorf_loss_factor(&c);
+        let closed = ohlendorf_closed_form(&g);
+        assert!((closed / hv - 1.0) > high, "{fixture}: {closed} vs {hv}");
+        for mu in [0.02, 0.05, 0.1] {
+            let e = mean_efficiency(&c, &Coulomb { mu }, External).value;
+            assert!((e - (1.0 - mu * hv)).abs() < 1e-9, "{fixture} μ {mu}: {e} vs {}", 1.0 - mu * hv);
+        }
+    }
+    // Where the closed form holds (FZG type C), it is the factor charged, to the bit.
+    let fzg = PairGeometry::compute(&fzg_input(true)).unwrap();
+    assert!(closed_form_holds(&fzg));
+    assert_eq!(ohlendorf_loss_factor(&ctx(&fzg)), ohlendorf_closed_form(&fzg));
+}
