@@ -220,6 +220,18 @@ impl<'a> DriveSetup<'a> {
         }
     }
 
+    /// Each shaft's speeds (rad/s, magnitudes) at which one of its bearings' models changes form
+    /// at this setup's oil ([`crate::losses::bearings::Bearing::switch_speed`]).
+    pub(crate) fn bearing_switch_speeds(&self) -> Vec<Vec<f64>> {
+        let Some(nu) = self.oil.nu else { return vec![Vec::new(); self.drive.layout.shafts.len()] };
+        self.drive
+            .layout
+            .shafts
+            .iter()
+            .map(|s| s.bearings.iter().filter_map(|b| b.switch_speed(nu)).collect())
+            .collect()
+    }
+
     /// The ends the drive's operating block gives its torque and speed at.
     pub(crate) fn operating_ends(&self) -> crate::drive::DriveOperating {
         self.drive.layout.operating

@@ -81,6 +81,13 @@ impl Bearing {
         n_mm * 1e-3
     }
 
+    /// The shaft speed ω (rad/s) at which this bearing's model changes form at the oil's ν (m²/s):
+    /// Palmgren's ν n = 2000 mm²/s·rpm, where M_0 steps from 160·10⁻⁷ f_0 d_m³ to
+    /// 10⁻⁷ f_0 (ν n)^(2/3) d_m³ (a 0.8 % jump); `None` for the SKF model (smooth in n).
+    pub fn switch_speed(&self, nu: f64) -> Option<f64> {
+        (self.skf.is_none() && nu > 0.0).then(|| 2000.0 / (nu * 1e6) * std::f64::consts::PI / 30.0)
+    }
+
     /// M_1 (N·m) of one bearing under F_r, F_a (N); `None` when f_1 needs a C_0 the bearing lacks.
     pub fn load_moment(&self, fr: f64, fa: f64) -> Option<f64> {
         let f1 = match self.f1 {

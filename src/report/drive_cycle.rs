@@ -55,6 +55,11 @@ pub struct DriveCycleReport {
     /// Samples, duration (s), distance (km), v_max (km/h), mean speed (km/h).
     pub samples: usize,
     pub pieces: usize,
+    /// Switches of the losses' form located inside the pieces, where the integrals are cut
+    /// further (a shaft passing Palmgren's ν n = 2000; in coast, the power through a stage
+    /// reversing).
+    #[serde(default)]
+    pub switches: usize,
     pub whole: CycleTotals,
     pub phases: Vec<CycleTotals>,
     pub parts: Vec<CyclePart>,
@@ -148,6 +153,7 @@ pub fn build_cycle_report(
         vehicle_derived,
         samples: trace.time.len(),
         pieces: pieces.len(),
+        switches: eval.switches,
         whole,
         phases,
         parts,

@@ -57,6 +57,18 @@ impl Piece {
         self.v0 + self.a * (t - self.start)
     }
 
+    /// The same piece of the interval between `from` and `to` (s): a part of it, cut where
+    /// something the gearbox does changes form inside.
+    pub(crate) fn between(&self, from: f64, to: f64) -> Piece {
+        Piece { from, to, ..self.clone() }
+    }
+
+    /// The time of F's vertex (s), when it lies inside the piece.
+    pub(crate) fn force_vertex(&self) -> Option<f64> {
+        let vertex = self.start - self.force[1] / (2.0 * self.force[2]);
+        (self.force[2] != 0.0 && vertex > self.from && vertex < self.to).then_some(vertex)
+    }
+
     /// F (N) at `t` (the force inside the piece: at its ends, the one-sided limit).
     pub fn force(&self, t: f64) -> f64 {
         let tau = t - self.start;

@@ -240,7 +240,7 @@ fn the_loss_balances_and_doubling_the_gauss_order_stays_within_its_estimate() {
     assert!(((motor - output) - total).abs() <= 1e-9 * motor.abs(), "{} vs {total}", motor - output);
     let estimate: f64 = e.integrals.iter().map(|r| r.error[..PARTS].iter().sum::<f64>()).sum();
     let drive = scene.drive.as_ref().unwrap();
-    let doubled = loss_energy_at_order(&scene, drive, drive.cycle.as_ref().unwrap(), 10);
+    let doubled = loss_energy_at_order(&scene, drive, drive.cycle.as_ref().unwrap(), 10, 1);
     assert!(estimate > 0.0);
     assert!((doubled - total).abs() < estimate, "moved {} J, estimate {estimate} J", (doubled - total).abs());
 }
@@ -267,4 +267,33 @@ fn the_sumps_books_balance_over_the_cycle() {
     ));
     let fixed = evaluate(&cycle_scene(&wltc(), false, &[]));
     assert!((lost(&stiff) - lost(&fixed)).abs() <= 1e-9 * lost(&fixed), "{} vs {}", lost(&stiff), lost(&fixed));
+}
+
+/// The error estimate bounds the error on every shipped cycle (WLTC 3b, UDDS, HWFET at 80 °C, and
+/// UDDS with the oil at 0 °C; recuperation limited): against a reference of 16 Gauss–Legendre nodes
+/// on each quarter of every piece (the pieces not cut at the switches inside them, so the
+/// reference is independent of the cutting; it agrees with 32 nodes uncut to 1e-3 J), the
+/// reported loss differs by less than its ± (measured: 0.0097 J against 0.044 J, 0.049 against
+/// 0.21, 0.0026 against 0.011; cold UDDS 7.5e-5 against 0.019). The pieces are cut where
+/// Palmgren's M_0 changes form and where the power through a stage reverses in coast (found on
+/// every cycle); uncut, cold UDDS's 5-node rule is off by 0.09 J, more than 100 × the cut one.
+#[test]
+fn the_error_estimate_bounds_the_error_on_every_shipped_cycle() {
+    let cold = [("oil_temperature = 80 degC", "oil_temperature = 0 degC")];
+    for (file, edits) in [("wltc_3b.csv", &[][..]), ("udds.csv", &[]), ("hwfet.csv", &[]), ("udds.csv", &cold)] {
+        let trace = std::fs::read_to_string(crate::root().join("specs/cycles").join(file)).unwrap();
+        let scene = cycle_scene(&trace, false, edits);
+        let e = evaluate(&scene);
+        let estimate: f64 = e.integrals.iter().map(|r| r.error[..PARTS].iter().sum::<f64>()).sum();
+        let drive = scene.drive.as_ref().unwrap();
+        let at = |n: usize, parts: usize| loss_energy_at_order(&scene, drive, drive.cycle.as_ref().unwrap(), n, parts);
+        let reference = at(16, 4);
+        let error = (lost(&e) - reference).abs();
+        assert!(e.switches > 0, "{file}: no switch located");
+        assert!(error < estimate, "{file} {edits:?}: off by {error} J, estimate {estimate} J");
+        if !edits.is_empty() {
+            let uncut = (at(5, 1) - reference).abs();
+            assert!(uncut > 100.0 * error, "{file} {edits:?}: uncut {uncut} J, cut {error} J");
+        }
+    }
 }

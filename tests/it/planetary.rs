@@ -386,6 +386,6 @@ fn a_planetary_box_over_a_drive_cycle_balances() {
     let lost: f64 = e.integrals.iter().map(|r| r.value[..PARTS].iter().sum::<f64>()).sum();
     assert!(lost > 0.0 && ((motor - output) - lost).abs() <= 1e-9 * motor.abs(), "{} vs {lost}", motor - output);
     let estimate: f64 = e.integrals.iter().map(|r| r.error[..PARTS].iter().sum::<f64>()).sum();
-    let doubled = loss_energy_at_order(&scene, drive, drive.cycle.as_ref().unwrap(), 10);
+    let doubled = loss_energy_at_order(&scene, drive, drive.cycle.as_ref().unwrap(), 10, 1);
     assert!((doubled - lost).abs() < estimate, "moved {} J, estimate {estimate} J", (doubled - lost).abs());
 }

@@ -12,14 +12,15 @@ pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport) {
     md!(out, "## Drive cycle \"{}\": {}\n", c.name, c.vehicle);
     md!(
         out,
-        "The trace `{}` ({} samples, {} s, piecewise linear; {} pieces after cutting where the wheel force changes sign, at the recuperation limit and at the phases), {} ({}), oil: {}. Each loss is integrated over each piece by Gauss–Legendre at 5 nodes; ± is its difference from 3 nodes, summed over the pieces. Wheel energies are exact.\n",
+        "The trace `{}` ({} samples, {} s, piecewise linear; {} pieces after cutting where the wheel force changes sign, at the recuperation limit and at the phases), {} ({}), oil: {}. Each loss is integrated over each piece by Gauss–Legendre at 5 nodes, the piece cut further at the {} switches located inside the pieces where the losses change form (a shaft passing Palmgren's ν n = 2000; in coast, the power through a stage reversing); ± is its difference from 3 nodes, summed over the parts. Wheel energies are exact.\n",
         c.trace_file,
         c.samples,
         fixed(w.to_s - w.from_s, 0),
         c.pieces,
         c.law,
         c.formulation,
-        c.oil
+        c.oil,
+        c.switches
     );
     header(out, &["over the cycle", "drive", "recuperation"]);
     let both = |out: &mut String, what: &str, a: String, b: String| row(out, &[what.to_string(), a, b]);
