@@ -97,7 +97,7 @@ pub(super) fn lower_planetary(
     let ring_block = gears_block(block, &pair_items, [planet_gear, ring_gear], true);
     let sun_pair = super::lower_gears::lower_gears_named(&sun_pair, ["sun", "planet"], materials, errors);
     let ring_pair = super::lower_gears::lower_gears_named(&ring_block, ["planet", "ring"], materials, errors);
-    let (planet_mass, planet_bearing) = lower_planet_parts(&planet_extra, planet, errors);
+    let (planet_mass, planet_bearing, bearing_outside) = lower_planet_parts(&planet_extra, planet, errors);
     let places = [("sun", sun, sun_place), ("ring", ring, ring_place), ("carrier", carrier, carrier.items.clone())]
         .map(|(name, b, items)| lower_member_place(name, b, &items, errors));
     let (sun_pair, mut ring_pair, planets) = (sun_pair?, ring_pair?, planets?);
@@ -119,10 +119,14 @@ pub(super) fn lower_planetary(
             .filter_map(|(m, p)| p.map(|p| (m, p)))
             .collect();
     let [(m0, p0), (m1, p1)] = super::lower_planetary_checks::one_held(turning, block, errors)?;
-    let planet_mass = planet_mass.unwrap_or_else(|| {
-        let d = 2.0 * sun_geometry.pitch_radius[1];
-        STEEL_DENSITY * std::f64::consts::PI / 4.0 * d * d * sun_pair.face_width.value.get::<meter>()
-    });
+    let disc = |d: f64| STEEL_DENSITY * std::f64::consts::PI / 4.0 * d * d * sun_pair.face_width.value.get::<meter>();
+    super::lower_planetary_checks::check_planet_parts(
+        &sun_pair,
+        planet_mass.map(|(m, span)| (m, span, disc(2.0 * sun_geometry.tip_radius[1]))),
+        bearing_outside,
+        errors,
+    )?;
+    let planet_mass = planet_mass.map_or_else(|| disc(2.0 * sun_geometry.pitch_radius[1]), |(m, _)| m);
     let load_sharing_factor = lower_load_sharing_factor(&f, planets, errors)?;
     let decl =
         PlanetaryDecl { ring_pair, planets, members: [m0, m1], planet_mass, planet_bearing, load_sharing_factor };
@@ -192,8 +196,15 @@ fn lower_planet_count(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -
     Some((n as u32, v.span))
 }
 
-/// The planet's `mass` (optional) and `bearing(...)` (optional).
-fn lower_planet_parts(items: &[Item], planet: &Block, errors: &mut Vec<Diagnostic>) -> (Option<f64>, Option<Bearing>) {
+/// The planet's `mass` (optional, with its span) and `bearing(...)` (optional) with the diameter
+/// its outer ring needs in the planet (m: `outside`, else its mean diameter, which D exceeds) and
+/// the call's span.
+#[allow(clippy::type_complexity)]
+fn lower_planet_parts(
+    items: &[Item],
+    planet: &Block,
+    errors: &mut Vec<Diagnostic>,
+) -> (Option<(f64, Span)>, Option<Bearing>, Option<(f64, Span)>) {
     let f = Fields::read("the `planet` block", planet.span, items, &["mass"], &[], &["bearing"], errors);
     let mass: Option<Given<Mass>> = super::fields::positive(f.optional("mass", errors), "mass", errors);
     let bearings: Vec<&&Call> = f.calls.iter().filter(|c| c.name.text == "bearing").collect();
@@ -204,7 +215,15 @@ fn lower_planet_parts(items: &[Item], planet: &Block, errors: &mut Vec<Diagnosti
         );
     }
     let bearing = bearings.first().and_then(|c| super::lower_gearbox::lower_bearing(c, errors));
-    (mass.map(|m| m.value.value), bearing)
+    // The outer ring's diameter, read again quietly (lower_bearing said what is wrong with it).
+    let outside = bearings.first().and_then(|c| {
+        let (mut scratch_items, mut scratch) = (Vec::new(), Vec::new());
+        let args = super::fields::call_fields(c, "", super::lower_gearbox::BEARING, &mut scratch_items, &mut scratch);
+        let d: Option<Given<Length>> = args.optional("outside", &mut scratch);
+        let d = d.map(|d| d.value.get::<meter>()).or(bearing.as_ref().map(|b| b.mean_diameter))?;
+        Some((d, c.span))
+    });
+    (mass.map(|m| (m.value.value, m.span)), bearing, outside)
 }
 
 /// A member's `shaft` (a shaft's name, or `housing`: held) and `at` (needed where it turns):

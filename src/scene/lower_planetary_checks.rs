@@ -101,3 +101,54 @@ pub(super) fn check_spur(
         _ => Some(()),
     }
 }
+
+/// A planet's parts must fit it. Its bearing's outer ring sits in the planet's bore, inside the
+/// root circle (d_f = d − 2 m_n (1.25 − x) with ISO 53's dedendum, or the given root diameter): an
+/// outer ring at or beyond the root circle is refused. A given mass is refused above 1.5 × the solid steel
+/// disc of the planet's tip diameter and face width (a hub wider than the face, not a different
+/// metal) and below 2 % of it (not a gear).
+pub(super) fn check_planet_parts(
+    sun: &GearPair,
+    mass: Option<(f64, Span, f64)>,
+    bearing: Option<(f64, Span)>,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<()> {
+    let before = errors.len();
+    let g = sun.geometry().ok()?;
+    let m = g.module;
+    let root = sun.wheel.root_diameter.as_ref().map_or_else(
+        || 2.0 * (g.pitch_radius[1] - (1.25 - g.profile_shift[1]) * m),
+        |d| d.value.get::<uom::si::length::meter>(),
+    );
+    if let Some((outside, span)) = bearing {
+        if outside >= root {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::Geometry,
+                    span,
+                    format!(
+                        "the planet's bearing does not fit in the planet: its outer ring ({:.3} mm) is not inside the planet's root circle ({:.3} mm)",
+                        outside * 1e3,
+                        root * 1e3
+                    ),
+                )
+                .hint("a planet bearing sits in the planet's bore: take a smaller bearing, or larger planets"),
+            );
+        }
+    }
+    if let Some((mass, span, disc)) = mass {
+        if mass > 1.5 * disc || mass < 0.02 * disc {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    span,
+                    format!(
+                        "a planet of {mass} kg: a solid steel disc of its tip diameter and face width weighs {disc:.4} kg; a planet lies between 2 % and 1.5 × that"
+                    ),
+                )
+                .hint("give the planet's mass in kg (with its bearing's inner parts, not the carrier's), or leave it out: the reference disc in steel is taken"),
+            );
+        }
+    }
+    (errors.len() == before).then_some(())
+}
