@@ -32,37 +32,78 @@ pub fn render_as_written(report: &Report, timings: Option<&Timings>) -> Result<(
 /// temperatures with one such folder per temperature), as (path inside `dir`, content).
 pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
     let text = read(dir, "report.json")?;
-    if let Ok(report) = serde_json::from_str::<Report>(&text) {
-        let timings = match std::fs::read_to_string(dir.join(TIMINGS_FILE)) {
-            Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| bad(dir, TIMINGS_FILE, e))?),
-            Err(_) => None,
-        };
-        return Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files);
-    }
-    if let Ok(drive) = serde_json::from_str::<crate::report::drive::DriveReport>(&text) {
-        let mut files = render::drive::render_drive(&drive).map_err(RunError::drawing)?.files;
-        // Each stage mesh analysed as a pair alone has its report of one pair in its folder.
-        for folder in drive.stage_pairs.iter().filter_map(|p| p.folder.as_ref()) {
-            let inner = render_folder(&dir.join(folder))?;
-            files.extend(inner.into_iter().map(|(f, c)| (format!("{folder}/{f}"), c)));
+    let kind = report_kind(&text).ok_or_else(|| {
+        RunError::Render(
+            Failure::new(
+                FailureKind::NotAReport,
+                format!(
+                    "{} is not a report gearloss wrote: it is not JSON, or none of its kinds (a pair's, a drive's, a comparison of oil temperatures)",
+                    dir.join("report.json").display()
+                ),
+            )
+            .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
+        )
+    })?;
+    let bad = |e| bad(dir, kind, e);
+    match kind {
+        "a pair's report" => {
+            let report: Report = serde_json::from_str(&text).map_err(bad)?;
+            let timings = match std::fs::read_to_string(dir.join(TIMINGS_FILE)) {
+                Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| timings_bad(dir, e))?),
+                Err(_) => None,
+            };
+            Ok(render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files)
         }
-        return Ok(files);
-    }
-    if let Ok(sweep) = serde_json::from_str::<crate::report::drive_oil_sweep::DriveOilSweepReport>(&text) {
-        let mut files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep);
-        for run in &sweep.runs {
-            let inner = render_folder(&dir.join(&run.folder))?;
-            files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
+        "a drive's report" => {
+            let drive: crate::report::drive::DriveReport = serde_json::from_str(&text).map_err(bad)?;
+            let mut files = render::drive::render_drive(&drive).map_err(RunError::drawing)?.files;
+            // Each stage mesh analysed as a pair alone has its report of one pair in its folder.
+            for folder in drive.stage_pairs.iter().filter_map(|p| p.folder.as_ref()) {
+                let inner = render_folder(&dir.join(folder))?;
+                files.extend(inner.into_iter().map(|(f, c)| (format!("{folder}/{f}"), c)));
+            }
+            Ok(files)
         }
-        return Ok(files);
+        "a drive's comparison of oil temperatures" => {
+            let sweep: crate::report::drive_oil_sweep::DriveOilSweepReport =
+                serde_json::from_str(&text).map_err(bad)?;
+            let mut files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep);
+            for run in &sweep.runs {
+                let inner = render_folder(&dir.join(&run.folder))?;
+                files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
+            }
+            Ok(files)
+        }
+        _ => {
+            let sweep: OilSweepReport = serde_json::from_str(&text).map_err(bad)?;
+            let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
+            for run in &sweep.runs {
+                let inner = render_folder(&dir.join(&run.folder))?;
+                files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
+            }
+            Ok(files)
+        }
     }
-    let sweep: OilSweepReport = serde_json::from_str(&text).map_err(|e| bad(dir, "report.json", e))?;
-    let mut files = render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
-    for run in &sweep.runs {
-        let inner = render_folder(&dir.join(&run.folder))?;
-        files.extend(inner.into_iter().map(|(f, c)| (format!("{}/{f}", run.folder), c)));
+}
+
+/// Which of the four reports `text` is, by the top-level field only that kind has: a pair's its
+/// `geometry`, a drive's its `shafts`, a comparison of oil temperatures its `runs` (a drive's with
+/// `rows`, a pair's with `efficiency`); `None` when it is not a JSON object of any. An edited or
+/// damaged report is then read as its own kind, and the error names that kind's field.
+fn report_kind(text: &str) -> Option<&'static str> {
+    let value: serde_json::Value = serde_json::from_str(text).ok()?;
+    let has = |key: &str| value.get(key).is_some();
+    if has("geometry") {
+        Some("a pair's report")
+    } else if has("shafts") {
+        Some("a drive's report")
+    } else if has("runs") && has("rows") {
+        Some("a drive's comparison of oil temperatures")
+    } else if has("runs") {
+        Some("a pair's comparison of oil temperatures")
+    } else {
+        None
     }
-    Ok(files)
 }
 
 /// `gearloss render DIR`: writes every file [`render_folder`] draws into `dir`, each to a
@@ -89,11 +130,21 @@ fn read(dir: &Path, file: &str) -> Result<String, RunError> {
     })
 }
 
-fn bad(dir: &Path, file: &str, e: serde_json::Error) -> RunError {
+fn bad(dir: &Path, kind: &str, e: serde_json::Error) -> RunError {
     RunError::Render(
         Failure::new(
             FailureKind::NotAReport,
-            format!("{} is not a report gearloss wrote: {e}", dir.join(file).display()),
+            format!("{} is {kind} that gearloss did not write as it is: {e}", dir.join("report.json").display()),
+        )
+        .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
+    )
+}
+
+fn timings_bad(dir: &Path, e: serde_json::Error) -> RunError {
+    RunError::Render(
+        Failure::new(
+            FailureKind::NotAReport,
+            format!("{} is not the timings gearloss wrote: {e}", dir.join(TIMINGS_FILE).display()),
         )
         .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
     )

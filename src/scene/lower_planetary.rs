@@ -109,7 +109,12 @@ pub(super) fn lower_planetary(
         written: format!("{:.4} mm (the sun–planet mesh's)", a * 1e3),
         span: ring.kind.span,
     });
-    super::lower_gears::check_geometry(&ring_pair, errors)?;
+    let before = errors.len();
+    let ring_fits = super::lower_gears::check_geometry(&ring_pair, errors);
+    if ring_fits.is_none() {
+        super::lower_planetary_checks::name_the_ring(&sun_pair, &ring_pair, a, &mut errors[before..]);
+    }
+    ring_fits?;
     let (planets, planets_span) = planets;
     super::lower_planetary_checks::check_planets(&sun_pair, &ring_pair, planets, planets_span, errors)?;
     let [sun_at, ring_at, carrier_at] = places;

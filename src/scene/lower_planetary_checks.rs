@@ -152,3 +152,26 @@ pub(super) fn check_planet_parts(
     }
     (errors.len() == before).then_some(())
 }
+
+/// The ring–planet mesh's geometry errors said as the ring's: it meshes at the carrier's centre
+/// distance `a` (m, the sun–planet mesh's), and where the teeth break the coaxial condition of
+/// unshifted gears, z_ring = z_sun + 2 z_planet, the hint says by how many teeth (a ring one size
+/// too big read as "ε_α = 0.69 outside (1, 3)", hint "more teeth").
+pub(super) fn name_the_ring(sun: &GearPair, ring: &GearPair, a: f64, errors: &mut [Diagnostic]) {
+    let (z_sun, z_planet, z_ring) = (sun.pinion.teeth.value, sun.wheel.teeth.value, ring.wheel.teeth.value);
+    let coaxial = z_sun + 2 * z_planet;
+    for d in errors {
+        d.reason = format!(
+            "the ring–planet mesh, at the carrier's centre distance a = {:.4} mm (the sun–planet mesh's): {}",
+            a * 1e3,
+            d.reason
+        );
+        if z_ring != coaxial {
+            let (more, word) = if z_ring > coaxial { (z_ring - coaxial, "more") } else { (coaxial - z_ring, "fewer") };
+            d.span = ring.wheel.teeth.span;
+            d.hints = vec![format!(
+                "the ring has {z_ring} teeth, {more} {word} than z_sun + 2 z_planet = {z_sun} + 2 × {z_planet} = {coaxial}: unshifted gears are coaxial only with z_ring = {coaxial}; take {coaxial} teeth, or profile shifts that bring the ring–planet centre distance to a"
+            )];
+        }
+    }
+}

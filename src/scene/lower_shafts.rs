@@ -73,6 +73,19 @@ fn lower_shaft(block: &Block, materials: &BTreeMap<&str, Material>, errors: &mut
         );
         return None;
     };
+    if name.text == "housing" {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::UnknownName,
+                name.span,
+                "`housing` is the casing's name (a member it holds says `shaft = housing`): a shaft cannot take it",
+            )
+            .hint(
+                "name the shaft after what it carries, e.g. `shaft carrier { ... }`, and put its members on that name",
+            ),
+        );
+        return None;
+    }
     let what = format!("shaft `{}`", name.text);
     let f = Fields::read(
         &what,

@@ -59,6 +59,28 @@ fn render_redraws_a_report_folder() {
     std::fs::remove_dir_all(&out).unwrap();
 }
 
+/// An edited report.json is read as the kind it is (by the field only that kind has) and the error
+/// names that kind and its missing field: a drive's report without a point's `label` said a pair's
+/// oil sweep missed `runs`.
+#[test]
+fn render_of_an_edited_report_names_its_own_kind() {
+    let out = std::env::temp_dir().join(format!("gearloss-cli-render-kind-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&out);
+    std::fs::create_dir_all(&out).unwrap();
+    let report = crate::root().join("reports/two_stage_ev_reducer/report.json");
+    let mut json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(report).unwrap()).unwrap();
+    json["points"][0].as_object_mut().unwrap().remove("label");
+    std::fs::write(out.join("report.json"), json.to_string()).unwrap();
+    let o = gearloss().arg("render").arg(&out).output().unwrap();
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("is a drive's report") && err.contains("missing field `label`"), "{err}");
+    std::fs::write(out.join("report.json"), "{\"rows\": []}").unwrap();
+    let err = String::from_utf8_lossy(&gearloss().arg("render").arg(&out).output().unwrap().stderr).to_string();
+    assert!(err.contains("none of its kinds"), "{err}");
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
 #[test]
 fn bad_scene_exits_1_with_file_line_column() {
     let o =
