@@ -59,6 +59,29 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
             if d.settled() { "" } else { " — NOT SETTLED (see the warnings)" }
         ));
     }
+    if let Some(c) = &report.cycle {
+        let w = &c.whole;
+        out.push_str(&format!(
+            "  drive cycle \"{}\" ({} s, {:.4} km, {}): the box loses {:.3} ± {:.2e} Wh in drive and {:.3} ± {:.2e} Wh in recuperation, {:.3} Wh/km; cycle efficiency {:.3} % in drive, {:.3} % in recuperation\n",
+            c.name,
+            w.to_s - w.from_s,
+            w.distance_km,
+            c.vehicle,
+            w.loss_drive_wh,
+            w.loss_drive_error_wh,
+            w.loss_recuperation_wh,
+            w.loss_recuperation_error_wh,
+            w.loss_wh_per_km,
+            100.0 * w.efficiency_drive,
+            100.0 * w.efficiency_recuperation
+        ));
+        if let Some(t) = &c.temperature {
+            out.push_str(&format!(
+                "  the sump: {:.2} °C → {:.2} °C, highest {:.3} °C\n",
+                t.start_c, t.end_c, t.max.value
+            ));
+        }
+    }
     out.push('\n');
     warnings_tail(&mut out, &report.findings);
     out

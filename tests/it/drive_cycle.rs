@@ -8,6 +8,11 @@ use gearloss::vehicle::{Cycle, Mode, Phase, RoadLoad, Trace, Vehicle};
 /// The WLTC spec's scene with its trace replaced by `trace` (a file beside it), `edits` applied;
 /// `transient` false drops the heat capacity (the oil then fixed at 80 °C).
 fn cycle_scene(trace: &str, transient: bool, edits: &[(&str, &str)]) -> gearloss::Scene {
+    crate::scene(&cycle_scene_file(trace, transient, edits))
+}
+
+/// [`cycle_scene`]'s file.
+fn cycle_scene_file(trace: &str, transient: bool, edits: &[(&str, &str)]) -> std::path::PathBuf {
     let mut text = std::fs::read_to_string(crate::root().join("specs/ev_reducer_wltc.gear")).unwrap();
     let dir =
         std::env::temp_dir().join(format!("gearloss-cycle-{}-{}", std::process::id(), fastrand_name(trace, edits)));
@@ -26,7 +31,7 @@ fn cycle_scene(trace: &str, transient: bool, edits: &[(&str, &str)]) -> gearloss
     text = text.lines().filter(|l| !l.trim_start().starts_with("phase(")).collect::<Vec<_>>().join("\n");
     let path = dir.join("scene.gear");
     std::fs::write(&path, &text).unwrap();
-    crate::scene(&path)
+    path
 }
 
 /// A folder name of its own for each scene a test writes (tests run in parallel).
@@ -296,4 +301,35 @@ fn the_error_estimate_bounds_the_error_on_every_shipped_cycle() {
             assert!(uncut > 100.0 * error, "{file} {edits:?}: uncut {uncut} J, cut {error} J");
         }
     }
+}
+
+/// `run` of a cycle scene prints the cycle's answer in the terminal like every other answer: the
+/// losses in drive and recuperation with their ±, Wh/km and the cycle efficiencies, as report.json
+/// holds them (it printed the title alone).
+#[test]
+fn a_cycle_run_prints_its_energies() {
+    let path = cycle_scene_file("time [s], speed [km/h]\n0, 0\n10, 36\n20, 36\n30, 0\n", false, &[]);
+    let out = path.parent().unwrap().join("out");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gearloss"))
+        .arg("run")
+        .arg(&path)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let folder = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(folder.join("report.json")).unwrap()).unwrap();
+    let whole = &json["cycle"]["whole"];
+    let said = format!(
+        "the box loses {:.3} ± {:.2e} Wh in drive and {:.3} ± {:.2e} Wh in recuperation, {:.3} Wh/km",
+        whole["loss_drive_wh"].as_f64().unwrap(),
+        whole["loss_drive_error_wh"].as_f64().unwrap(),
+        whole["loss_recuperation_wh"].as_f64().unwrap(),
+        whole["loss_recuperation_error_wh"].as_f64().unwrap(),
+        whole["loss_wh_per_km"].as_f64().unwrap()
+    );
+    assert!(stdout.contains("drive cycle") && stdout.contains(&said), "{stdout}\nwanted: {said}");
 }
