@@ -138,8 +138,13 @@ fn import(model: &Path, out: Option<PathBuf>) -> ExitCode {
     let imported = match gearloss::rexs::import_file(model) {
         Ok(i) => i,
         Err(e) => {
-            errln!("error: {}: {e}", model.display());
-            errln!("  help: {}", e.hint);
+            for e in e.all() {
+                errln!("error: {}: {e}", model.display());
+                errln!("  help: {}", e.hint);
+            }
+            if !e.more.is_empty() {
+                errln!("{} errors in {}", e.more.len() + 1, model.display());
+            }
             return ExitCode::from(EXIT_SCENE);
         }
     };

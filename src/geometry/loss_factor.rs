@@ -19,7 +19,7 @@
 //! points −ε_1 + k and ε_2 − k, so the integral is a sum of exact pieces. u is signed (negative for
 //! an internal pair, where (u + 1)/u = (|u| − 1)/|u|).
 
-use super::PairGeometry;
+use super::pair::PairGeometry;
 
 /// 2 ∫ |x|/n(x) dx over the path −ε_1 … ε_2 (base pitches), exactly: the bracket of Ohlendorf's
 /// H_V without his assumption of the pitch point in single contact.

@@ -91,7 +91,8 @@ impl Error {
                 err
             }
             Error::Rexs(e) => {
-                let err = RexsError::new_err(format!("{e}\n  help: {}", e.hint));
+                let all: Vec<String> = e.all().map(|e| format!("{e}\n  help: {}", e.hint)).collect();
+                let err = RexsError::new_err(all.join("\n"));
                 let value = err.value_bound(py);
                 let set =
                     value.setattr("component", e.component.clone()).and_then(|_| value.setattr("hint", e.hint.clone()));

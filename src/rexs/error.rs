@@ -8,11 +8,26 @@ pub struct RexsError {
     pub component: Option<String>,
     pub message: String,
     pub hint: String,
+    /// The model's further errors, found in the same reading (every stage, shaft and load case is
+    /// read even after one fails), in the order met.
+    pub more: Vec<RexsError>,
 }
 
 impl RexsError {
     pub(crate) fn new(message: impl Into<String>, hint: impl Into<String>) -> RexsError {
-        RexsError { component: None, message: message.into(), hint: hint.into() }
+        RexsError { component: None, message: message.into(), hint: hint.into(), more: Vec::new() }
+    }
+
+    /// The first of `errors` carrying the rest; `None` when there are none.
+    pub(crate) fn gather(errors: Vec<RexsError>) -> Option<RexsError> {
+        let mut all = errors.into_iter().flat_map(|e| e.all().cloned().collect::<Vec<_>>());
+        let first = all.next()?;
+        Some(RexsError { more: all.map(|e| RexsError { more: Vec::new(), ..e }).collect(), ..first })
+    }
+
+    /// This error and every further one, each with its own component and hint.
+    pub fn all(&self) -> impl Iterator<Item = &RexsError> {
+        std::iter::once(self).chain(self.more.iter())
     }
 
     /// An error at component `c`.

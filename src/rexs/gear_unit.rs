@@ -61,16 +61,22 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
             format!("gearloss reads REXS {}; export the model in one of them", VERSIONS.join(", ")),
         ));
     }
-    for r in &model.relations {
-        if let Some(x) = r.refs.iter().find(|x| !model.components.contains_key(&x.id)) {
-            return Err(RexsError::new(
+    let missing: Vec<RexsError> = model
+        .relations
+        .iter()
+        .filter_map(|r| {
+            let x = r.refs.iter().find(|x| !model.components.contains_key(&x.id))?;
+            Some(RexsError::new(
                 format!(
                     "a `{}` relation names component {} (as `{}`), which the model does not have",
                     r.kind, x.id, x.role
                 ),
                 "every relation's references must name components of the model",
-            ));
-        }
+            ))
+        })
+        .collect();
+    if let Some(e) = RexsError::gather(missing) {
+        return Err(e);
     }
     if let Some(c) = model.components.values().find(|c| c.kind.starts_with("planet") || c.kind == "ring_gear") {
         return Err(RexsError::at(
@@ -94,9 +100,15 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     }
     let mut unit =
         GearUnit { version: model.version.clone(), application: model.application.clone(), ..Default::default() };
+    let mut errors = Vec::new();
     for c in model.of_kind("cylindrical_stage") {
-        let stage = read_stage(model, c, &mut unit.warnings)?;
-        unit.stages.push(stage);
+        match read_stage(model, c, &mut unit.warnings) {
+            Ok(stage) => unit.stages.push(stage),
+            Err(e) => errors.push(e),
+        }
+    }
+    if let Some(e) = RexsError::gather(errors) {
+        return Err(e);
     }
     if unit.stages.is_empty() {
         return Err(RexsError::new(
@@ -105,8 +117,17 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
         ));
     }
     unit.shafts = super::shafts::read_shafts(model, &unit.stages, &mut unit.warnings)?;
-    unit.lubricant = super::cases::read_lubricant(model, &mut unit.warnings)?;
-    (unit.cases, unit.operating_time) = super::cases::read_cases(model, &unit.shafts, &mut unit.warnings)?;
+    let lubricant = super::cases::read_lubricant(model, &mut unit.warnings);
+    let cases = super::cases::read_cases(model, &unit.shafts, &mut unit.warnings);
+    match (lubricant, cases) {
+        (Ok(lubricant), Ok((cases, time))) => {
+            (unit.lubricant, unit.cases, unit.operating_time) = (lubricant, cases, time)
+        }
+        (lubricant, cases) => {
+            let errors = [lubricant.err(), cases.err()].into_iter().flatten().collect();
+            return Err(RexsError::gather(errors).expect("one of them failed"));
+        }
+    }
     let mut others: Vec<String> = model
         .components
         .values()

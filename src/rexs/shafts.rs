@@ -100,7 +100,43 @@ pub(crate) fn read_shafts(
             .filter(|c| c.kind == "external_load")
     };
     let mut out = Vec::new();
+    let mut errors = Vec::new();
     for id in ids {
+        match read_shaft(model, id, stages, &loads, warnings) {
+            Ok(shaft) => out.push(shaft),
+            Err(e) => errors.push(e),
+        }
+    }
+    if let Some(e) = RexsError::gather(errors) {
+        return Err(e);
+    }
+    let flagged = (out.iter().filter(|s| s.input).count(), out.iter().filter(|s| s.output).count());
+    if flagged != (1, 1) {
+        ends_from_torque_loads(model, stages, &mut out, warnings);
+    }
+    for (what, count) in [
+        ("input (`defines_speed`)", out.iter().filter(|s| s.input).count()),
+        ("output (a load that transmits torque)", out.iter().filter(|s| s.output).count()),
+    ] {
+        if count != 1 {
+            return Err(RexsError::new(
+                format!("{count} of the gear unit's shafts are its {what}"),
+                "gearloss imports a chain of stages with one input shaft and one output shaft",
+            ));
+        }
+    }
+    Ok(out)
+}
+
+/// One shaft carrying a stage's gear: its axis, ends, bearings and sections.
+fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
+    model: &'m RexsModel,
+    id: u64,
+    stages: &[StageData],
+    loads: &impl Fn(u64) -> L,
+    warnings: &mut Vec<String>,
+) -> Result<ShaftData, RexsError> {
+    {
         let c = &model.components[&id];
         if vector(c, "u_axis_vector").is_some_and(|u| u[0] <= 0.0 || u[1].abs() + u[2].abs() > 1e-9) {
             return Err(RexsError::at(
@@ -130,7 +166,7 @@ pub(crate) fn read_shafts(
                 Vec::new()
             }
         };
-        out.push(ShaftData {
+        Ok(ShaftData {
             id,
             name: c.name.clone(),
             origin: vector(c, "support_vector").unwrap_or([0.0; 3]),
@@ -138,24 +174,8 @@ pub(crate) fn read_shafts(
             output,
             bearings,
             sections,
-        });
+        })
     }
-    let flagged = (out.iter().filter(|s| s.input).count(), out.iter().filter(|s| s.output).count());
-    if flagged != (1, 1) {
-        ends_from_torque_loads(model, stages, &mut out, warnings);
-    }
-    for (what, count) in [
-        ("input (`defines_speed`)", out.iter().filter(|s| s.input).count()),
-        ("output (a load that transmits torque)", out.iter().filter(|s| s.output).count()),
-    ] {
-        if count != 1 {
-            return Err(RexsError::new(
-                format!("{count} of the gear unit's shafts are its {what}"),
-                "gearloss imports a chain of stages with one input shaft and one output shaft",
-            ));
-        }
-    }
-    Ok(out)
 }
 
 /// The input and output when the model does not flag exactly one of each: the two shafts that

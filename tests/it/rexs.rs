@@ -178,15 +178,17 @@ fn a_planetary_stage_is_refused_by_name() {
     }
 }
 
-/// Every broken model fails with its message (a snapshot each) and a hint.
+/// Every broken model fails with its messages (a snapshot each: all of a model's errors at once,
+/// `two_gears_without_teeth.rexs` two) and a hint each.
 #[test]
 fn broken_models_are_refused() {
     let mut count = 0;
     insta::glob!("../rexs/err", "*.rexs*", |path| {
         count += 1;
         let e = gearloss::rexs::import_file(path).expect_err("a broken model must fail");
-        assert!(!e.hint.is_empty());
-        insta::assert_snapshot!(format!("{e}\nhelp: {}", e.hint));
+        assert!(e.all().all(|e| !e.hint.is_empty()));
+        let all: Vec<String> = e.all().map(|e| format!("{e}\nhelp: {}", e.hint)).collect();
+        insta::assert_snapshot!(all.join("\n"));
     });
     assert!(count >= 7, "{count} broken models");
 }
