@@ -1,10 +1,9 @@
 //! The power walk through the drive and its fixed point (README, "Several stages").
 //!
 //! Walking from the source to the sink, a shaft passes on the power it receives less its own
-//! losses (its bearings, its seals, the churning and jet impulse of the stages whose pinion it carries
-//! and the windage of each gear it carries);
-//! a stage passes on η_mesh times what its driving gear puts in (driven torque = driving torque ×
-//! z_driven/z_driving × η_mesh). Bearing losses depend on the bearing loads, which depend on every
+//! losses (its bearings, its seals, the churning and jet impulse of the stages whose pinion it
+//! carries, each gear's windage); a stage passes on η_mesh times what its driving gear puts in
+//! (driven torque = driving torque × z_driven/z_driving × η_mesh). Bearing losses depend on the bearing loads, which depend on every
 //! mesh force on the shaft, which depend on the torques: the walk is repeated, the loads taken from
 //! the previous pass, until no torque moves by more than [`TOLERANCE`] relative. Given the sink's
 //! torque (a vehicle's wheel in drive, the motor's brake torque in coast), the walk runs back from
@@ -16,11 +15,10 @@ use super::kinematics::StageKindId;
 use super::layout::{Drive, Member, ShaftEnd};
 use super::mesh_efficiency::MeshEfficiency;
 use super::pass::Pass;
-use super::planetary;
-use super::planetary_charges;
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
 use super::shaft_bending::{support_reactions, ShaftBending};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
+use super::{planetary, planetary_charges};
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
@@ -99,9 +97,8 @@ struct Walk<'a> {
     steps: Vec<(usize, Member)>,
 }
 
-/// Load-independent losses of each shaft (W): seals, and the gears' no-load parts (a stage's
-/// churning and jet impulse on its pinion's shaft, each gear's windage on its own); and those parts
-/// by stage.
+/// Load-independent losses of each shaft (W): seals, and the gears' no-load parts (churning and
+/// jet impulse on the pinion's shaft, each gear's windage on its own); and those parts by stage.
 struct FixedLosses {
     seals: Vec<f64>,
     gear_no_load: Vec<f64>,
@@ -151,9 +148,8 @@ impl<'a> Walk<'a> {
                     ),
                 };
                 let by_gear = stage.lubrication.as_ref().and_then(|l| l.power_loss_by_gear(&running, model.oil));
+                // The mesh's parts (a planetary stage's one body) at `place`; a wheel's windage on its shaft.
                 let [own, other] = by_gear.unwrap_or([0.0; 2]);
-                // The mesh's parts (and a planetary stage's one turning body) where `place` says; a
-                // pair's wheel windage on the wheel's own shaft.
                 gear_no_load[stage.places[place].shaft] += own;
                 gear_no_load[stage.places[1 - place].shaft] += other;
                 own + other
