@@ -22,7 +22,9 @@ pub struct PlanetaryInputs {
     pub ratio: f64,
     /// (z_sun + z_ring)/n, a whole number.
     pub assembly: f64,
-    /// 2 a_w sin(π/n) − d_a,planet (mm): the gap between neighbouring planets' tips (none for one planet).
+    /// 2 a_w sin(π/n) − d_a,planet (mm): the gap between neighbouring planets' tips (none for one
+    /// planet: left out of report.json, where a null would read as a number that is not finite).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub neighbour_gap_mm: Option<f64>,
     /// The planet–ring mesh: its working pressure angle (°), ε_α, the ring's tip diameter (mm).
     pub ring_pressure_angle_deg: f64,
