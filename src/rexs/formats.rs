@@ -89,6 +89,24 @@ fn member(archive: &mut zip::ZipArchive<std::io::Cursor<&[u8]>>, name: &str) -> 
     Ok(out)
 }
 
+/// Adds `c` to the model; two components of one id are refused naming both (the second silently
+/// replaced the first, and the relations to it were then reported missing or wrong).
+fn add_component(model: &mut RexsModel, c: Component) -> Result<(), RexsError> {
+    if let Some(first) = model.components.get(&c.id) {
+        return Err(RexsError::new(
+            format!(
+                "two components share the id {}: {} and {}",
+                c.id,
+                super::error::describe(first),
+                super::error::describe(&c)
+            ),
+            "every component of a REXS model has an id of its own; export the model again from its tool",
+        ));
+    }
+    model.components.insert(c.id, c);
+    Ok(())
+}
+
 fn number(text: &str) -> Option<f64> {
     text.trim().parse::<f64>().ok().filter(|x| x.is_finite())
 }
@@ -179,15 +197,15 @@ fn read_xml(text: &str) -> Result<RexsModel, RexsError> {
             "components" => {
                 for c in part.children().filter(|n| n.has_tag_name("component")) {
                     let id = id_of(c.attribute("id"), "a component")?;
-                    model.components.insert(
-                        id,
+                    add_component(
+                        &mut model,
                         Component {
                             id,
                             kind: c.attribute("type").unwrap_or("").to_string(),
                             name: c.attribute("name").unwrap_or("").to_string(),
                             attributes: xml_attributes(c),
                         },
-                    );
+                    )?;
                 }
             }
             "load_spectrum" => {
@@ -279,15 +297,15 @@ fn read_json(text: &str) -> Result<RexsModel, RexsError> {
     }
     for c in root.get("components").and_then(|v| v.as_array()).into_iter().flatten() {
         let id = json_id(c, "a component")?;
-        model.components.insert(
-            id,
+        add_component(
+            &mut model,
             Component {
                 id,
                 kind: c.get("type").and_then(|v| v.as_str()).unwrap_or("").to_string(),
                 name: c.get("name").and_then(|v| v.as_str()).unwrap_or("").to_string(),
                 attributes: json_attributes(c),
             },
-        );
+        )?;
     }
     let spectrum = root.get("load_spectrum");
     for case in spectrum.and_then(|s| s.get("load_cases")).and_then(|v| v.as_array()).into_iter().flatten() {

@@ -103,7 +103,7 @@ fn read_trace(name: &str, span: Span, base_dir: Option<&Path>, errors: &mut Vec<
         Err(e) => {
             errors.push(
                 Diagnostic::new(DiagnosticKind::Undefined, span, format!("cannot read the trace `{name}`: {e}"))
-                    .hint("a CSV file of at most 4 MiB; the path is relative to the folder of the scene file"),
+                    .hint("a CSV file of at most 4 MiB and 36 000 samples; the path is relative to the folder of the scene file"),
             );
             return None;
         }

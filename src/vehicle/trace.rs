@@ -48,6 +48,10 @@ const MAX_DURATION: f64 = 1e6;
 const MAX_SPEED: f64 = 150.0;
 const MAX_ACCELERATION: f64 = 20.0;
 const MAX_GRADE: f64 = 0.5;
+/// The most samples a trace may hold: what a cycle run does in seconds and a bounded memory (its
+/// cost grows linearly with the samples: 36 000, ten hours at 1 Hz or one at 10 Hz; README gives
+/// the measured figures).
+pub const MAX_SAMPLES: usize = 36_000;
 
 #[derive(Clone, Copy, PartialEq)]
 enum Column {
@@ -190,6 +194,14 @@ impl Trace {
         for (line, text) in lines {
             if text.trim().is_empty() || text.trim_start().starts_with('#') {
                 continue;
+            }
+            if trace.time.len() == MAX_SAMPLES {
+                return Err(error(
+                    line,
+                    1,
+                    format!("more than {MAX_SAMPLES} samples: a cycle this long is more than gearloss runs in reasonable time and memory"),
+                    "resample the trace (the regulation cycles are 1 Hz: WLTC has 1801 samples) or cut it into traces of a few hours",
+                ));
             }
             let cells: Vec<&str> = text.split(',').collect();
             if cells.len() != columns.len() {

@@ -36,6 +36,25 @@ fn implausible_traces_are_refused_at_their_line() {
     assert_eq!(read("time [s], speed [km/h], v [m/s]\n0, 0, 0\n").unwrap_err().1, 24);
 }
 
+/// A trace holds at most `MAX_SAMPLES` (36 000) samples, what a cycle run does in seconds (a 4 MiB
+/// trace inside the file limit held 300 000 and took 98 s and 798 MiB): the next sample is refused
+/// at its line, with the way out.
+#[test]
+fn a_trace_longer_than_the_tool_runs_is_refused_at_its_line() {
+    use gearloss::vehicle::trace::MAX_SAMPLES;
+    let samples = |n: usize| {
+        let mut text = String::from("time [s], speed [km/h]\n");
+        for k in 0..n {
+            text.push_str(&format!("{k}, {}\n", if k % 60 < 30 { 36 } else { 0 }));
+        }
+        text
+    };
+    assert_eq!(read(&samples(MAX_SAMPLES)), Ok(MAX_SAMPLES));
+    let (line, _, message, hint) = read(&samples(MAX_SAMPLES + 1)).unwrap_err();
+    assert_eq!(line, MAX_SAMPLES + 2, "{message}");
+    assert!(message.contains("more than 36000 samples") && hint.contains("resample"), "{message} / {hint}");
+}
+
 /// The WLTC scene with `edits`; the error messages and hints when it is refused.
 fn refused(edits: &[(&str, &str)]) -> String {
     let path = crate::root().join("specs/ev_reducer_wltc.gear");
