@@ -128,7 +128,7 @@ pub(crate) fn cut_at_switches(
     row: (usize, Formulation),
     piece: &Piece,
 ) -> Vec<Piece> {
-    let mut cuts = speed_switches(setup, spec, row, piece);
+    let mut cuts = speed_switches(setup, spec, piece);
     if matches!(piece.mode, Mode::Coast | Mode::CoastCapped) {
         cuts.extend(reversals(setup, spec, row, piece));
     }
@@ -145,28 +145,15 @@ pub(crate) fn cut_at_switches(
 
 /// Where a shaft's speed passes a speed at which one of its bearings' models changes form
 /// (Palmgren's ν n = 2000): every shaft turns in proportion to the output, whose speed is linear
-/// on the piece, so each time is a closed form (the ratios read from one solved point).
-fn speed_switches(setup: &DriveSetup, spec: &DriveCycleSpec, row: (usize, Formulation), piece: &Piece) -> Vec<f64> {
-    let switching = setup.bearing_switch_speeds();
-    if switching.iter().all(Vec::is_empty) {
-        return Vec::new();
-    }
-    let (v0, v1) = (piece.speed(piece.from), piece.speed(piece.to));
-    let mid = 0.5 * (piece.from + piece.to);
-    let Some(point) = point_at(setup, spec, row, piece, mid) else { return Vec::new() };
-    let (_, output) = box_load(spec, piece, mid);
-    let mut out = Vec::new();
-    for (shaft, speeds) in point.shafts.iter().zip(&switching) {
-        let ratio = shaft.speed.abs() / output;
-        for &omega in speeds {
-            // The vehicle speed at which this shaft turns at ω (v ∝ the output's speed).
-            let v = omega / ratio * piece.speed(mid) / output;
-            if (v - v0) * (v - v1) < 0.0 {
-                out.push(piece.from + (v - v0) / (v1 - v0) * (piece.to - piece.from));
-            }
-        }
-    }
-    out
+/// on the piece, so each time is a closed form.
+fn speed_switches(setup: &DriveSetup, spec: &DriveCycleSpec, piece: &Piece) -> Vec<f64> {
+    let (w0, w1) = (box_load(spec, piece, piece.from).1, box_load(spec, piece, piece.to).1);
+    setup
+        .bearing_switch_output_speeds()
+        .into_iter()
+        .filter(|w| (w - w0) * (w - w1) < 0.0)
+        .map(|w| piece.from + (w - w0) / (w1 - w0) * (piece.to - piece.from))
+        .collect()
 }
 
 /// In coast, where the power through a stage reverses: between two readings of a stage's driving

@@ -220,15 +220,22 @@ impl<'a> DriveSetup<'a> {
         }
     }
 
-    /// Each shaft's speeds (rad/s, magnitudes) at which one of its bearings' models changes form
-    /// at this setup's oil ([`crate::losses::bearings::Bearing::switch_speed`]).
-    pub(crate) fn bearing_switch_speeds(&self) -> Vec<Vec<f64>> {
-        let Some(nu) = self.oil.nu else { return vec![Vec::new(); self.drive.layout.shafts.len()] };
-        self.drive
-            .layout
+    /// The output speeds (rad/s, magnitudes) at which a bearing's model changes form on its shaft at
+    /// this setup's oil ([`crate::losses::bearings::Bearing::switch_speed`]): every shaft turns in
+    /// proportion to the output, by the stages' kinematics alone.
+    pub(crate) fn bearing_switch_output_speeds(&self) -> Vec<f64> {
+        let Some(nu) = self.oil.nu else { return Vec::new() };
+        let layout = &self.drive.layout;
+        let per_output = crate::drive::walk::shaft_speeds(
+            layout,
+            crate::drive::EndValue { at: crate::drive::ShaftEnd::Output, value: 1.0 },
+        );
+        layout
             .shafts
             .iter()
-            .map(|s| s.bearings.iter().filter_map(|b| b.switch_speed(nu)).collect())
+            .zip(&per_output)
+            .filter(|(_, ratio)| ratio.abs() > 0.0)
+            .flat_map(|(s, ratio)| s.bearings.iter().filter_map(move |b| b.switch_speed(nu).map(|w| w / ratio.abs())))
             .collect()
     }
 
