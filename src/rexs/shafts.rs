@@ -136,46 +136,44 @@ fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
     loads: &impl Fn(u64) -> L,
     warnings: &mut Vec<String>,
 ) -> Result<ShaftData, RexsError> {
-    {
-        let c = &model.components[&id];
-        if vector(c, "u_axis_vector").is_some_and(|u| u[0] <= 0.0 || u[1].abs() + u[2].abs() > 1e-9) {
+    let c = &model.components[&id];
+    if vector(c, "u_axis_vector").is_some_and(|u| u[0] <= 0.0 || u[1].abs() + u[2].abs() > 1e-9) {
+        return Err(RexsError::at(
+            c,
+            "its axis is not the gear unit's +u axis",
+            "gearloss reads parallel shafts along the gear unit's u axis",
+        ));
+    }
+    let input = flag(c, &["defines_speed"]) == Some(true);
+    let output = !input
+        && loads(id)
+            .any(|l| flag(l, &["transmits_torque"]) == Some(true) && flag(l, &["defines_torque"]) != Some(true));
+    let bearings = read_bearings(model, c, warnings)?;
+    let mut points: Vec<f64> = bearings.iter().map(|b| b.at).collect();
+    points.extend(stages.iter().flat_map(|s| &s.gears).filter(|g| g.shaft == id).map(|g| g.at));
+    let sections = match super::shaft_sections::read_sections(model, c, &points, warnings)? {
+        Ok(s) => s,
+        Err(why) if bearings.len() > 2 => {
             return Err(RexsError::at(
                 c,
-                "its axis is not the gear unit's +u axis",
-                "gearloss reads parallel shafts along the gear unit's u axis",
-            ));
+                format!("it sits on {} bearing places, and its sections do not make a beam: {why}", bearings.len()),
+                "on three or more places the shaft is an elastic beam: export its shaft sections, joined end to end over every gear and bearing",
+            ))
         }
-        let input = flag(c, &["defines_speed"]) == Some(true);
-        let output = !input
-            && loads(id)
-                .any(|l| flag(l, &["transmits_torque"]) == Some(true) && flag(l, &["defines_torque"]) != Some(true));
-        let bearings = read_bearings(model, c, warnings)?;
-        let mut points: Vec<f64> = bearings.iter().map(|b| b.at).collect();
-        points.extend(stages.iter().flat_map(|s| &s.gears).filter(|g| g.shaft == id).map(|g| g.at));
-        let sections = match super::shaft_sections::read_sections(model, c, &points, warnings)? {
-            Ok(s) => s,
-            Err(why) if bearings.len() > 2 => {
-                return Err(RexsError::at(
-                    c,
-                    format!("it sits on {} bearing places, and its sections do not make a beam: {why}", bearings.len()),
-                    "on three or more places the shaft is an elastic beam: export its shaft sections, joined end to end over every gear and bearing",
-                ))
-            }
-            Err(why) => {
-                warnings.push(format!("{}: its sections are not imported ({why}); the shaft is a rigid beam on its two places", describe(c)));
-                Vec::new()
-            }
-        };
-        Ok(ShaftData {
-            id,
-            name: c.name.clone(),
-            origin: vector(c, "support_vector").unwrap_or([0.0; 3]),
-            input,
-            output,
-            bearings,
-            sections,
-        })
-    }
+        Err(why) => {
+            warnings.push(format!("{}: its sections are not imported ({why}); the shaft is a rigid beam on its two places", describe(c)));
+            Vec::new()
+        }
+    };
+    Ok(ShaftData {
+        id,
+        name: c.name.clone(),
+        origin: vector(c, "support_vector").unwrap_or([0.0; 3]),
+        input,
+        output,
+        bearings,
+        sections,
+    })
 }
 
 /// The input and output when the model does not flag exactly one of each: the two shafts that
