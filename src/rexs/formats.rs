@@ -37,10 +37,7 @@ pub(crate) const MAX_MODEL_BYTES: u64 = 64 << 20;
 /// `.json` member that holds a REXS model (a tool's manifest beside it is passed over). Two models
 /// in one archive are refused by name: which one was meant is not the importer's to guess.
 fn unzip(bytes: &[u8]) -> Result<Vec<u8>, RexsError> {
-    let bad = |e: String| {
-        RexsError::new(format!("the zip archive cannot be read: {e}"), "give a .rexsz holding one .rexs or .rexsj file")
-    };
-    let mut archive = zip::ZipArchive::new(std::io::Cursor::new(bytes)).map_err(|e| bad(e.to_string()))?;
+    let mut archive = zip::ZipArchive::new(std::io::Cursor::new(bytes)).map_err(|e| zip_error(e.to_string()))?;
     let names: Vec<String> = archive.file_names().filter_map(|n| n.ok().map(|n| n.to_string())).collect();
     let named = |n: &&String| n.ends_with(".rexs") || n.ends_with(".rexsj") || n.ends_with(".rexs.json");
     let mut models: Vec<(String, Vec<u8>)> = Vec::new();
@@ -59,7 +56,7 @@ fn unzip(bytes: &[u8]) -> Result<Vec<u8>, RexsError> {
     }
     match models.len() {
         1 => Ok(models.pop().expect("one model").1),
-        0 => Err(bad(format!("it holds no REXS model (it holds: {})", names.join(", ")))),
+        0 => Err(zip_error(format!("it holds no REXS model (it holds: {})", names.join(", ")))),
         _ => Err(RexsError::new(
             format!(
                 "the zip archive holds {} models: {}",
@@ -71,15 +68,17 @@ fn unzip(bytes: &[u8]) -> Result<Vec<u8>, RexsError> {
     }
 }
 
+/// A zip archive that cannot be read, and why.
+fn zip_error(why: String) -> RexsError {
+    RexsError::new(format!("the zip archive cannot be read: {why}"), "give a .rexsz holding one .rexs or .rexsj file")
+}
+
 /// A zip member's bytes, inflated to at most [`MAX_MODEL_BYTES`].
 fn member(archive: &mut zip::ZipArchive<std::io::Cursor<&[u8]>>, name: &str) -> Result<Vec<u8>, RexsError> {
     use std::io::Read;
-    let bad = |e: String| {
-        RexsError::new(format!("the zip archive cannot be read: {e}"), "give a .rexsz holding one .rexs or .rexsj file")
-    };
     let mut out = Vec::new();
-    let member = archive.by_name(name).map_err(|e| bad(e.to_string()))?;
-    member.take(MAX_MODEL_BYTES + 1).read_to_end(&mut out).map_err(|e| bad(e.to_string()))?;
+    let member = archive.by_name(name).map_err(|e| zip_error(e.to_string()))?;
+    member.take(MAX_MODEL_BYTES + 1).read_to_end(&mut out).map_err(|e| zip_error(e.to_string()))?;
     if out.len() as u64 > MAX_MODEL_BYTES {
         return Err(RexsError::new(
             format!("`{name}` inflates to more than {} MiB", MAX_MODEL_BYTES >> 20),
