@@ -91,8 +91,19 @@ fn parse_shard(text: &str) -> Result<gearloss::Shard, String> {
     text.parse()
 }
 
+/// The exit code of a run stopped by Ctrl-C (128 + SIGINT, as a shell reports it).
+const EXIT_INTERRUPTED: i32 = 130;
+
 pub(crate) fn main() -> ExitCode {
     let cli = Cli::parse();
+    // Ctrl-C: the report folder or scene being written is removed (never left half-written, and no
+    // temporary folder beside it), then the process exits. Without a handler (a platform that has
+    // none) the next run removes what is left.
+    let _ = ctrlc::set_handler(|| {
+        let removed = gearloss::remove_unfinished();
+        errln!("interrupted: nothing was written ({removed} unfinished folder(s) or file(s) removed)");
+        std::process::exit(EXIT_INTERRUPTED);
+    });
     match cli.command {
         Command::Run { scene, out, shard, records } => run(&scene, &out, shard, records),
         Command::Merge { shards, out } => merge(&shards, &out),
@@ -105,31 +116,6 @@ pub(crate) fn main() -> ExitCode {
         Command::Bearings => listing(&gearloss::listing::bearings()),
         Command::New { scene, kind } => new_scene(&scene, &kind),
     }
-}
-
-/// `bytes` written whole into a new file `out`: first into a temporary file of a name no other file
-/// has (`.<name>.import-<pid>-<n>`, created new beside `out`), then linked into place, which fails
-/// if `out` has appeared meanwhile (a file is never overwritten: not the model, not another
-/// import's scene); the temporary file is removed whatever happens.
-fn write_new(out: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    use std::io::Write;
-    let dir = out.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = out.file_name().map_or_else(|| "scene".into(), |n| n.to_string_lossy().into_owned());
-    let (mut file, temp) = (0..1000)
-        .find_map(|n| {
-            let temp = dir.join(format!(".{name}.import-{}-{n}", std::process::id()));
-            std::fs::OpenOptions::new().write(true).create_new(true).open(&temp).ok().map(|f| (f, temp))
-        })
-        .ok_or_else(|| std::io::Error::other("no temporary file could be created beside it"))?;
-    let placed =
-        file.write_all(bytes).and_then(|()| file.sync_all()).and_then(|()| match std::fs::hard_link(&temp, out) {
-            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Err(e),
-            // A file system without hard links: renamed, once more checked not to be there.
-            Err(_) if !out.exists() => std::fs::rename(&temp, out),
-            other => other,
-        });
-    let _ = std::fs::remove_file(&temp);
-    placed
 }
 
 /// `gearloss import`: the scene written whole (a temporary file renamed into place, never over an
@@ -153,7 +139,7 @@ fn import(model: &Path, out: Option<PathBuf>) -> ExitCode {
         errln!("error: {} exists; gearloss import never overwrites a file (give another with -o)", out.display());
         return ExitCode::from(EXIT_IO);
     }
-    if let Err(e) = write_new(&out, imported.scene.as_bytes()) {
+    if let Err(e) = gearloss::write_new_file(&out, imported.scene.as_bytes()) {
         errln!("error: cannot write {}: {e}", out.display());
         return ExitCode::from(EXIT_IO);
     }

@@ -1,12 +1,15 @@
 //! The report folder, written whole or not at all: files go into a hidden temporary folder beside
 //! the target (`.<name>.tmp-<pid>-<n>`), which is renamed into place once complete. Whatever
 //! happens before [`ReportFolder::commit`] (an error, a panic), dropping the folder removes the
-//! temporary one; a run killed by a signal leaves its temporary folder, which the next run into the
-//! same place removes. Concurrent runs writing the same folder all succeed; the last to commit wins
+//! temporary one; a run stopped by Ctrl-C removes it through the process's list of unfinished paths
+//! (`unfinished.rs`, which the command's interrupt handler empties); a run killed otherwise (SIGKILL,
+//! a power cut) leaves its temporary folder, which the next run into the same place removes. Concurrent runs writing the same folder all succeed; the last to commit wins
 //! and no temporary or displaced folder is left behind.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+use crate::unfinished::Unfinished;
 
 static UNIQUE: AtomicUsize = AtomicUsize::new(0);
 
@@ -23,6 +26,8 @@ pub(crate) struct ReportFolder {
     name: String,
     tmp: PathBuf,
     committed: bool,
+    /// The temporary folder on the process's list of unfinished paths.
+    unfinished: Unfinished,
 }
 
 impl ReportFolder {
@@ -40,8 +45,10 @@ impl ReportFolder {
         std::fs::create_dir_all(out_dir)?;
         remove_stale(out_dir, name);
         let tmp = unique(out_dir, name, "tmp");
+        // Registered before it exists: an interrupt between the two removes it all the same.
+        let unfinished = Unfinished::register(&tmp)?;
         std::fs::create_dir(&tmp)?;
-        Ok(ReportFolder { dir: out_dir.to_path_buf(), name: name.to_string(), tmp, committed: false })
+        Ok(ReportFolder { dir: out_dir.to_path_buf(), name: name.to_string(), tmp, committed: false, unfinished })
     }
 
     /// The path of a file inside the folder being written.
@@ -51,6 +58,7 @@ impl ReportFolder {
 
     /// Creates one file of the folder for writing (`dir/file` in a subfolder, created as needed).
     pub(crate) fn create_file(&self, file: &str) -> std::io::Result<std::fs::File> {
+        Unfinished::check_open()?;
         let path = self.path(file);
         if let Some(parent) = path.parent() {
             std::fs::create_dir_all(parent)?;
@@ -71,11 +79,13 @@ impl ReportFolder {
         let target = self.dir.join(&self.name);
         let mut last = None;
         for _ in 0..256 {
-            match std::fs::rename(&self.tmp, &target) {
+            match self.unfinished.finish(|| std::fs::rename(&self.tmp, &target)) {
                 Ok(()) => {
                     self.committed = true;
                     return Ok(target);
                 }
+                // Interrupted: the temporary folder is gone, the folder in place stays as it was.
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => return Err(e),
                 // Another run's folder is in the way (or was, a moment ago): move it aside and retry.
                 Err(e) if target.exists() || is_in_the_way(&e) => {
                     last = Some(e);
@@ -91,6 +101,38 @@ impl ReportFolder {
         }
         Err(last.unwrap_or_else(|| std::io::Error::other("the report folder could not be renamed into place")))
     }
+}
+
+/// `bytes` written whole into a new file `out` (`gearloss import`'s scene): first into a temporary
+/// file of a name no other file has (`.<name>.import-<pid>-<n>`, created new beside `out`, on the
+/// process's list of unfinished paths), then linked into place, which fails if `out` has appeared
+/// meanwhile (a file is never overwritten: not the model, not another import's scene); the
+/// temporary file is removed whatever happens, Ctrl-C included.
+pub fn write_new_file(out: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    use std::io::Write;
+    let dir = out.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = out.file_name().map_or_else(|| "scene".into(), |n| n.to_string_lossy().into_owned());
+    let mut opened = None;
+    for n in 0..1000 {
+        let temp = dir.join(format!(".{name}.import-{}-{n}", std::process::id()));
+        let unfinished = Unfinished::register(&temp)?;
+        if let Ok(file) = std::fs::OpenOptions::new().write(true).create_new(true).open(&temp) {
+            opened = Some((file, temp, unfinished));
+            break;
+        }
+    }
+    let (mut file, temp, unfinished) =
+        opened.ok_or_else(|| std::io::Error::other("no temporary file could be created beside it"))?;
+    let placed = file.write_all(bytes).and_then(|()| file.sync_all()).and_then(|()| {
+        unfinished.finish(|| match std::fs::hard_link(&temp, out) {
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Err(e),
+            // A file system without hard links: renamed, once more checked not to be there.
+            Err(_) if !out.exists() => std::fs::rename(&temp, out),
+            other => other,
+        })
+    });
+    let _ = std::fs::remove_file(&temp);
+    placed
 }
 
 /// Removes the temporary and displaced folders that runs killed before they could clean up (a

@@ -96,6 +96,7 @@ pub(crate) mod shard;
 pub(crate) mod shard_digest;
 pub mod thermal;
 pub mod tribology;
+pub(crate) mod unfinished;
 pub mod vehicle;
 
 pub use diagnostics::{Diagnostic, DiagnosticKind, SceneErrors};
@@ -103,6 +104,7 @@ pub use evaluate::record_files::RecordFiles;
 pub use evaluate::record_files::RecordFormats;
 pub use evaluate::records::RecordSink;
 pub use evaluate::{Evaluation, Plan, Shard, Tally};
+pub use folder::write_new_file;
 pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
@@ -111,6 +113,7 @@ pub use run::{merge_into, report_of, run_into, run_into_with, run_to_files, Writ
 pub use run_error::{Failure, FailureKind, RunError};
 pub use run_pair::has_records;
 pub use scene::ast::SceneAst;
+pub use unfinished::remove_unfinished;
 
 /// Stage 1: text → syntax tree.
 pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {

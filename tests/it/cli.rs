@@ -202,3 +202,44 @@ fn records_of_a_drive_are_written_as_asked() {
     assert!(said.contains("`--records jsonl` writes drive_records.csv"), "{said}");
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// Ctrl-C during a run: the process exits 130 and leaves nothing in the output folder: neither the
+/// report folder nor its temporary one (`.<slug>.tmp-<pid>-<n>`).
+#[test]
+fn an_interrupted_run_leaves_no_folder_behind() {
+    let dir = std::env::temp_dir().join(format!("gearloss-interrupt-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    // 250 000 points with records: minutes of work, interrupted as soon as its folder appears.
+    let scene = std::fs::read_to_string(crate::root().join("tests/specs/ok/large_sweep.gear"))
+        .unwrap()
+        .replace("20..240 N*m count 12", "20..240 N*m count 500")
+        .replace("200..6000 rpm count 12", "200..6000 rpm count 500");
+    std::fs::write(dir.join("big.gear"), scene).unwrap();
+    let out = dir.join("out");
+    let mut child = gearloss()
+        .args(["run", "big.gear", "--out", "out"])
+        .current_dir(&dir)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let entries = || -> Vec<String> {
+        std::fs::read_dir(&out)
+            .map_or_else(|_| Vec::new(), |d| d.map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect())
+    };
+    let started = std::time::Instant::now();
+    while !entries().iter().any(|e| e.starts_with(".large_sweep.tmp-")) {
+        assert!(started.elapsed().as_secs() < 120, "no temporary folder appeared: {:?}", entries());
+        assert!(child.try_wait().unwrap().is_none(), "the run ended before it could be interrupted");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+    assert!(kill.success());
+    let done = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&done.stderr);
+    assert_eq!(done.status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted: nothing was written (1 unfinished"), "{stderr}");
+    assert_eq!(entries(), Vec::<String>::new());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
