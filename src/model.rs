@@ -67,6 +67,8 @@ pub struct SceneDrive {
     pub ring_pairs: Vec<Option<GearPair>>,
     /// A vehicle over a drive cycle, with the box as its drive.
     pub cycle: Option<DriveCycleSpec>,
+    /// The scene is one pair (a `gears` block) read as its one-stage drive (`scene/pair_stage.rs`).
+    pub one_pair: bool,
 }
 
 /// A `vehicle` over a `drive_cycle` as the scene gives them.

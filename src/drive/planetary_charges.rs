@@ -62,7 +62,7 @@ pub fn planet_bearings(
         BearingPoint {
             kind: format!("{} (planets)", bearing.kind.name()),
             count: bearing.count * layout.planets as usize,
-            position: stage.places[place].at,
+            position: Some(stage.places[place].at),
             locating: false,
             // The planets' bearings sit on pins, not on the shaft's two places: no shaft reaction.
             reaction: [0.0; 3],

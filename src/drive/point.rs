@@ -30,8 +30,10 @@ impl PowerFlow {
 pub struct BearingPoint {
     pub kind: String,
     pub count: usize,
-    /// On the shaft's own axial coordinate (m).
-    pub position: f64,
+    /// On the shaft's own axial coordinate (m); None for a place of a one-pair scene written
+    /// without `at` (it carries its share of the gear force, `shaft_bending::shared_reactions`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position: Option<f64>,
     pub locating: bool,
     /// The whole place's reaction on the shaft [R_x, R_y, R_z] (N); zero for a planetary stage's
     /// planet bearings (listed with their carrier's shaft, they load the planets' pins).

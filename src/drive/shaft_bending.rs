@@ -58,6 +58,9 @@ pub fn support_reactions(
     bent: bool,
     beam: Option<&PreparedBeam>,
 ) -> (Vec<[f64; 3]>, Option<ShaftBending>) {
+    if shaft.bearings.iter().any(|b| b.position.is_none()) {
+        return (shared_reactions(shaft, on), None);
+    }
     let positions: Vec<f64> = shaft.bearings.iter().map(|b| b.position.unwrap_or(0.0)).collect();
     let needs_beam = positions.len() > 2 || (bent && shaft.body.is_some());
     let planes = plane_loads(on);
@@ -84,6 +87,27 @@ pub fn support_reactions(
         _ => None,
     };
     (reactions, bending)
+}
+
+/// The reactions of a shaft whose places have no positions (a one-pair scene's shaft written without
+/// `at`, the pair's reading): every bearing carries an equal share of the gears' transverse force,
+/// place i the share count_i/Σcount of −(ΣF_x, ΣF_y), and the locating place (the first unless one
+/// says `locating`) the whole axial −ΣF_z. For one gear on the shaft each bearing's radial load is
+/// F_bt/Σcount (|(F_t, F_r)| = F_bt), the one-pair budget's rule (`losses::parts::bearings`); the
+/// moments of the mesh force are not taken up (no positions, no lever arms).
+pub(crate) fn shared_reactions(shaft: &Shaft, on: &[GearLoad]) -> Vec<[f64; 3]> {
+    let total: usize = shaft.bearings.iter().map(|b| b.count).sum();
+    let sum = |k: usize| on.iter().map(|l| l.force[k]).sum::<f64>();
+    let (fx, fy, fz) = (sum(0), sum(1), sum(2));
+    shaft
+        .bearings
+        .iter()
+        .enumerate()
+        .map(|(i, b)| {
+            let share = b.count as f64 / total as f64;
+            [-fx * share, -fy * share, if i == shaft.locating { -fz } else { 0.0 }]
+        })
+        .collect()
 }
 
 /// Shaft `shaft`'s beam made ready for loads at `gear_positions` (m); None without sections.

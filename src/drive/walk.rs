@@ -252,7 +252,7 @@ impl<'a> Walk<'a> {
         let mut places = vec![Vec::new(); model.drive.shafts.len()];
         let mut bending = vec![None; model.drive.shafts.len()];
         for (j, shaft) in model.drive.shafts.iter().enumerate() {
-            if shaft.bearings.len() < 2 {
+            if shaft.bearings.is_empty() {
                 continue;
             }
             let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
@@ -273,7 +273,7 @@ impl<'a> Walk<'a> {
                 places[j].push(BearingPoint {
                     kind: bearing.kind.name().to_string(),
                     count: bearing.count,
-                    position: bearing.position.unwrap_or(0.0),
+                    position: bearing.position,
                     locating: i == shaft.locating,
                     reaction: r,
                     radial_load: radial,

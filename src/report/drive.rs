@@ -201,7 +201,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         first_unsettled: eval.tally.first_unsettled.map(|i| row_words(scene, drive, &laws, i)),
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
-        findings: super::drive_findings::findings(layout, &points),
+        findings: super::drive_findings::findings(drive, &points),
         maps: maps(scene, eval, &laws),
         housing: scene
             .housing

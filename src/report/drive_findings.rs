@@ -8,20 +8,33 @@ use super::finding::{Finding, Severity};
 use crate::drive::PowerFlow;
 use crate::model::SceneDrive;
 
+/// Where a bearing place is: `at 30 mm`, or `without \`at\`` (a place of a one-pair scene).
+fn place_at(position: Option<f64>) -> String {
+    position
+        .map_or_else(|| "without `at`".into(), |x| format!("at {} mm", crate::numerics::rounding::fixed(x * 1e3, 2)))
+}
+
 /// What the reader must know: a shaft whose axial force goes to its first place by default, points
 /// where both ends deliver, a fixed point that did not settle, a bearing beyond its static rating.
-pub(super) fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]) -> Vec<Finding> {
+pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<Finding> {
+    let layout = &drive.layout;
     let mut out = Vec::new();
+    if drive.one_pair {
+        out.push(Finding {
+            severity: Severity::Note,
+            message: format!(
+                "the scene is one pair with a vehicle: it runs as the one-stage drive it is, stage `{}` from shaft `{}` (the pinion's, the input: `pinion_torque` and `pinion_speed` are the input's) to shaft `{}` (the wheel's, the output); a bearing's `at` is from the mesh mid-plane, and bearings written without `at` each carry an equal share of the gear force (README, \"One pair over a drive cycle\")",
+                crate::scene::pair_stage::STAGE,
+                layout.shafts[layout.input].name,
+                layout.shafts[layout.output].name
+            ),
+        });
+    }
     let loads = points.iter().flat_map(|p| {
         layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
             s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {
                 super::bearing_checks::BearingAtPoint {
-                    place: format!(
-                        "shaft `{}`, bearing at {} mm ({})",
-                        shaft.name,
-                        crate::numerics::rounding::fixed(b.position * 1e3, 2),
-                        b.kind
-                    ),
+                    place: format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position), b.kind),
                     c0: bearing.static_load_rating,
                     radial: b.radial_load,
                     axial: b.axial_load,
@@ -37,9 +50,9 @@ pub(super) fn findings(layout: &crate::drive::Drive, points: &[DrivePointReport]
             out.push(Finding {
                 severity: Severity::Warning,
                 message: format!(
-                    "shaft `{}`: no bearing says `locating`; the first place (at {} mm) takes the axial force of its helical gears",
+                    "shaft `{}`: no bearing says `locating`; the first place ({}) takes the axial force of its helical gears",
                     shaft.name,
-                    crate::numerics::rounding::fixed(shaft.bearings[0].position.unwrap_or(0.0) * 1e3, 2)
+                    place_at(shaft.bearings[0].position)
                 ),
             });
         }

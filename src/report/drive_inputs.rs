@@ -39,8 +39,11 @@ pub struct ShaftInputs {
     pub name: String,
     /// "input", "output" or "".
     pub role: String,
-    /// Each place: type, count, `at` (mm), whether it locates.
+    /// Each place: type, count, `at` (mm; 0 where `without_at`), whether it locates.
     pub bearings: Vec<(String, usize, f64, bool)>,
+    /// The places have no `at` (a one-pair scene's shaft: each bearing carries an equal share).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub without_at: bool,
     /// Each seal: lip diameter (mm), count.
     pub seals: Vec<(f64, usize)>,
     /// A shaft with sections: the elastic beam it is solved as.
@@ -144,6 +147,7 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
                 .enumerate()
                 .map(|(i, b)| (b.kind.name().to_string(), b.count, b.position.unwrap_or(0.0) * 1e3, i == s.locating))
                 .collect(),
+            without_at: s.bearings.iter().any(|b| b.position.is_none()),
             seals: s.seals.iter().map(|x| (x.diameter * 1e3, x.count)).collect(),
             beam: s.body.as_ref().map(|b| ShaftBeamInputs {
                 material: b.material.clone(),

@@ -35,12 +35,27 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
 
 /// As [`lower_scene`], with the folder of the scene file, where files it names (a stiffness CSV) are read.
 pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Diagnostic>> {
+    if super::pair_stage::is_pair_on_a_cycle(ast) {
+        return lower_any(&super::pair_stage::as_one_stage(ast), base_dir, true);
+    }
+    lower_any(ast, base_dir, false)
+}
+
+/// A scene of one pair or of stages; `one_pair`: the stages are the one a pair on a drive cycle is
+/// ([`super::pair_stage`]).
+fn lower_any(ast: &SceneAst, base_dir: Option<&std::path::Path>, one_pair: bool) -> Result<Scene, Vec<Diagnostic>> {
     let mut errors = Vec::new();
     let top = Fields::read("the scene", ast.title_span, &ast.items, &["lubricant"], SCENE_BLOCKS, &[], &mut errors);
 
     let (materials, singles, stages) = scene_blocks(ast, &top, &mut errors);
     if !stages.is_empty() {
-        return super::lower_drive_scene::lower_drive_scene(ast, &top, &materials, &singles, &stages, base_dir, errors);
+        return super::lower_drive_scene::lower_drive_scene(
+            ast,
+            (&top, &materials, &singles),
+            &stages,
+            (base_dir, one_pair),
+            errors,
+        );
     }
     for kind in ["vehicle", "drive_cycle"] {
         if let Some(b) = singles.get(kind) {
@@ -81,9 +96,9 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
             Diagnostic::new(
                 DiagnosticKind::UnknownName,
                 span,
-                "`drive_cycle` drives a gearbox of stages; this scene is one pair",
+                "`drive_cycle` runs a vehicle over a drive cycle, and the scene has no `vehicle` and no `drive_cycle` block",
             )
-            .hint("write the box with `stage` blocks and a `gearbox` of shafts, or use `duty_cycle` for one pair"),
+            .hint("add `vehicle \"car\" { ... }` and `drive_cycle \"WLTC\" { trace = \"wltc.csv\" }` (README, \"Vehicles and drive cycles\"), or use `duty_cycle` for a load spectrum"),
         );
     }
     let gearbox = singles.get("gearbox").and_then(|b| super::lower_gearbox::lower_gearbox(b, &mut errors));

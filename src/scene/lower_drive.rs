@@ -24,12 +24,14 @@ pub(super) fn build_drive(
     all_stages: bool,
     shafts: Vec<ShaftDecl>,
     operating: DriveOperating,
-    gearbox: Span,
+    (gearbox, one_pair): (Span, bool),
     errors: &mut Vec<Diagnostic>,
 ) -> Option<Drive> {
     let before = errors.len();
     let index = shaft_index(&shafts, errors);
-    check_bearings_everywhere(&shafts, errors);
+    if !one_pair {
+        check_bearings_everywhere(&shafts, errors);
+    }
     let mut built = Vec::new();
     for s in stages {
         let mut at = |m: usize| -> Option<usize> {
@@ -123,7 +125,8 @@ pub(super) fn build_drive(
             }
         }
     }
-    let shafts = shafts.iter().filter_map(|s| super::lower_drive_places::lower_places(s, errors)).collect::<Vec<_>>();
+    let shafts =
+        shafts.iter().filter_map(|s| super::lower_drive_places::lower_places(s, one_pair, errors)).collect::<Vec<_>>();
     (errors.len() == before).then(|| Drive {
         shafts,
         stages: built,

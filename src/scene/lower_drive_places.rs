@@ -10,9 +10,46 @@ use crate::drive::{Shaft, Stage};
 
 /// A shaft's bearing places: none, or two or more with `at` at distinct positions (a rigid beam's
 /// statics on two; more need the shaft's sections, the elastic beam); each on the sections when
-/// given; at most one says `locating`.
-pub(super) fn lower_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Option<Shaft> {
+/// given; at most one says `locating`. A one-pair scene's shaft (`one_pair`) may instead give no
+/// `at` at all, on any number of places and without sections: each bearing then carries an equal
+/// share of the gear force, the pair's reading (`crate::drive::shaft_bending::shared_reactions`).
+pub(super) fn lower_places(s: &ShaftDecl, one_pair: bool, errors: &mut Vec<Diagnostic>) -> Option<Shaft> {
     let bearings: Vec<_> = s.bearings.iter().map(|(b, _, _)| *b).collect();
+    let unplaced = one_pair
+        && s.body.is_none()
+        && s.stiffness.iter().all(Option::is_none)
+        && bearings.iter().all(|b| b.position.is_none());
+    if !unplaced {
+        check_places(s, errors)?;
+    }
+    let locating: Vec<(usize, Span)> =
+        s.bearings.iter().enumerate().filter_map(|(i, (_, l, _))| l.map(|span| (i, span))).collect();
+    if let [_, (_, span), ..] = locating.as_slice() {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                *span,
+                format!("two bearing places of shaft `{}` say `locating`", s.name.text),
+            )
+            .hint("one place takes the shaft's axial force: leave `locating` on one"),
+        );
+        return None;
+    }
+    Some(Shaft {
+        name: s.name.text.clone(),
+        bearings,
+        locating: locating.first().map_or(0, |(i, _)| *i),
+        // A one-pair scene's reading names the first place (it has no `locating`).
+        locating_given: one_pair || !locating.is_empty(),
+        seals: s.seals.clone(),
+        body: s.body.clone(),
+        stiffness: s.stiffness.iter().map(|k| k.map(|(k, _)| k)).collect(),
+    })
+}
+
+/// Two or more places, each with its `at`, at distinct positions on the sections when given; more
+/// than two only with sections; `radial_stiffness` only with sections.
+fn check_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Option<()> {
     let fail = |errors: &mut Vec<Diagnostic>, span: Span, reason: String, hint: &str| {
         errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, span, reason).hint(hint.to_string()));
         None
@@ -69,25 +106,7 @@ pub(super) fn lower_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Optio
             "give the shaft's `section(...)`s, or leave `radial_stiffness` out (the place is rigid)",
         );
     }
-    let locating: Vec<(usize, Span)> =
-        s.bearings.iter().enumerate().filter_map(|(i, (_, l, _))| l.map(|span| (i, span))).collect();
-    if let [_, (_, span), ..] = locating.as_slice() {
-        return fail(
-            errors,
-            *span,
-            format!("two bearing places of shaft `{}` say `locating`", s.name.text),
-            "one place takes the shaft's axial force: leave `locating` on one",
-        );
-    }
-    Some(Shaft {
-        name: s.name.text.clone(),
-        bearings,
-        locating: locating.first().map_or(0, |(i, _)| *i),
-        locating_given: !locating.is_empty(),
-        seals: s.seals.clone(),
-        body: s.body.clone(),
-        stiffness: s.stiffness.iter().map(|k| k.map(|(k, _)| k)).collect(),
-    })
+    Some(())
 }
 
 /// Every gear on a shaft with sections lies on them.

@@ -14,11 +14,9 @@ use crate::model::*;
 
 pub(super) fn lower_drive_scene(
     ast: &SceneAst,
-    top: &Fields,
-    materials: &BTreeMap<&str, Material>,
-    singles: &BTreeMap<&str, &Block>,
+    (top, materials, singles): (&Fields, &BTreeMap<&str, Material>, &BTreeMap<&str, &Block>),
     stage_blocks: &[&Block],
-    base_dir: Option<&std::path::Path>,
+    (base_dir, one_pair): (Option<&std::path::Path>, bool),
     mut errors: Vec<Diagnostic>,
 ) -> Result<Scene, Vec<Diagnostic>> {
     let errors = &mut errors;
@@ -138,7 +136,7 @@ pub(super) fn lower_drive_scene(
         stages.len() == stage_blocks.len(),
         shafts,
         ends,
-        gearbox.kind.span,
+        (gearbox.kind.span, one_pair),
         errors,
     );
     match layout {
@@ -158,6 +156,7 @@ pub(super) fn lower_drive_scene(
                 ring_pairs: stages.iter().map(|s| s.planetary.as_ref().map(|p| p.ring_pair.clone())).collect(),
                 pairs: stages.into_iter().map(|s| s.pair).collect(),
                 cycle,
+                one_pair,
             }),
         }),
         _ => Err(std::mem::take(errors)),

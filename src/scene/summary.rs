@@ -116,7 +116,11 @@ pub fn unused_blocks(scene: &Scene) -> Vec<String> {
     if scene.duty_cycle.is_some() && a.duty_cycle.is_none() {
         out.push("the `duty_cycle` block is not used: add `duty_cycle` to `analyses`".to_string());
     }
-    let laws = a.efficiency.is_some() || a.efficiency_map.is_some() || a.friction_along_loa || thermal;
+    let laws = a.efficiency.is_some()
+        || a.efficiency_map.is_some()
+        || a.friction_along_loa
+        || a.drive_cycle.is_some()
+        || thermal;
     if !scene.friction.is_empty() && !laws {
         out.push("the friction laws are not used: no analysis asks for friction (add `efficiency` or `friction_along_loa` to `analyses`)".to_string());
     }

@@ -31,7 +31,7 @@ fn every_shaft_balances_forces_and_moments() {
 /// gear force, and about its axis received − passed = its own loss moments (powers over |ω|).
 pub(crate) fn assert_shaft_balances(s: &gearloss::drive::ShaftPoint) {
     let largest = s.gear_loads.iter().flat_map(|l| l.force).fold(0.0f64, |m, f| m.max(f.abs()));
-    let positions = [s.bearings[0].position, s.bearings[1].position];
+    let positions = [0, 1].map(|i| s.bearings[i].position.expect("a place of a drive's shaft has its `at`"));
     let reactions = [s.bearings[0].reaction, s.bearings[1].reaction];
     for r in residuals(&s.gear_loads, positions, &reactions) {
         assert!(r.abs() <= 1e-12 * largest, "{}: residual {r} of {largest} N", s.name);
@@ -271,16 +271,25 @@ fn axial_force_follows_hand_and_rotation() {
 /// and the mesh loss, to 1e-12 relative.
 #[test]
 fn one_stage_drive_is_the_pair_budget() {
-    use gearloss::geometry::contact::Sharing;
     let pair = crate::scene(&crate::root().join("specs/helical_gearbox.gear"));
     let drive = gearloss::check("one_stage.gear", ONE_STAGE).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    assert_the_pair_budget(&pair, &drive);
+}
+
+/// At every point of `drive` (one stage), each bearing place's loads and losses, the seals, the
+/// gears' no-load loss and the mesh loss equal `pair`'s budget at the stage's driving torque and
+/// speed, to 1e-12 relative.
+pub(crate) fn assert_the_pair_budget(pair: &gearloss::Scene, drive: &gearloss::Scene) {
+    use gearloss::geometry::contact::Sharing;
     let g = pair.gears.geometry().unwrap();
     let tribology = pair.mesh().tribology(pair.mesh().reduced_modulus());
     let oil = pair.mesh().budget_oil(&tribology);
     let close = |a: f64, b: f64, what: &str| {
         assert!((a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1e-9), "{what}: {a} vs {b}")
     };
-    for p in points(&drive) {
+    let points = points(drive);
+    assert!(!points.is_empty());
+    for p in points {
         let stage = &p.stages[0];
         let (t, w) = (stage.driving_torque, stage.driving_speed);
         let budget = gearloss::losses::loss_budget(pair.gearbox.as_ref().unwrap(), &g, t, w, &oil);

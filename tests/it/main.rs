@@ -21,6 +21,7 @@ mod internal_pair;
 mod load_sharing;
 mod losses;
 mod oil_sweep;
+mod pair_cycle;
 mod planetary;
 mod plot_text;
 mod properties;

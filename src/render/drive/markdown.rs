@@ -288,15 +288,7 @@ fn inputs(out: &mut String, r: &DriveReport) {
         );
     }
     super::planetary::inputs(out, &r.stages);
-    md!(out, "\n## Shafts\n");
-    header(out, &["shaft", "role", "bearing places (type × count at mm)", "locating", "seals (mm × count)"]);
-    for s in &r.shafts {
-        let places: Vec<String> =
-            s.bearings.iter().map(|(k, n, at, _)| format!("{k} × {n} at {}", fixed(*at, 2))).collect();
-        let locating = s.bearings.iter().find(|b| b.3).map_or("—".into(), |b| format!("at {}", fixed(b.2, 2)));
-        let seals: Vec<String> = s.seals.iter().map(|(d, n)| format!("{} × {n}", fixed(*d, 1))).collect();
-        row(out, &[s.name.clone(), s.role.clone(), places.join("; "), locating, seals.join("; ")]);
-    }
+    super::point_tables::shafts(out, &r.shafts);
     super::shaft_bending::inputs(out, r);
     md!(out, "\n## Oil (one sump)\n");
     header(out, &["value", "", "unit"]);

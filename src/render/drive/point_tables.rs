@@ -1,6 +1,7 @@
 //! One operating point of a drive in report.md: its stages (driving member, torques, forces, η_mesh,
 //! losses), its shafts (speed, torque and power received and passed on, own losses), its bearing
-//! places (loads per bearing, P_0, P_1) and the mesh forces each shaft's statics read.
+//! places (loads per bearing, P_0, P_1) and the mesh forces each shaft's statics read; and the
+//! shafts as the scene gives them (their places, locating place and seals).
 
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
@@ -120,7 +121,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
                 out,
                 &[
                     s.name.clone(),
-                    fixed(b.position * 1e3, 2),
+                    b.position.map_or_else(|| "—".into(), |x| fixed(x * 1e3, 2)),
                     format!("{} × {}", b.kind, b.count),
                     if b.locating { "yes".into() } else { String::new() },
                     fixed(b.radial_load, 2),
@@ -152,4 +153,24 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
         }
     }
     md!(out);
+}
+
+/// The shafts as the scene gives them: role, bearing places (type × count at mm, or "(no `at`)"
+/// for a one-pair scene's shaft written without positions), the locating place, the seals.
+pub(super) fn shafts(out: &mut String, shafts: &[crate::report::drive_inputs::ShaftInputs]) {
+    md!(out, "\n## Shafts\n");
+    header(out, &["shaft", "role", "bearing places (type × count at mm)", "locating", "seals (mm × count)"]);
+    for s in shafts {
+        let at = |at: f64| if s.without_at { " (no `at`)".to_string() } else { format!(" at {}", fixed(at, 2)) };
+        let places: Vec<String> = s.bearings.iter().map(|(k, n, x, _)| format!("{k} × {n}{}", at(*x))).collect();
+        let locating = s.bearings.iter().find(|b| b.3).map_or("—".into(), |b| {
+            if s.without_at {
+                "the first".into()
+            } else {
+                format!("at {}", fixed(b.2, 2))
+            }
+        });
+        let seals: Vec<String> = s.seals.iter().map(|(d, n)| format!("{} × {n}", fixed(*d, 1))).collect();
+        row(out, &[s.name.clone(), s.role.clone(), places.join("; "), locating, seals.join("; ")]);
+    }
 }

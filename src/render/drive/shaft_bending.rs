@@ -71,7 +71,8 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
     for s in d.shafts.iter().filter(|s| s.bending.is_some()) {
         for b in &s.bearings {
             let r = b.reaction;
-            row(out, &[s.name.clone(), fixed(b.position * 1e3, 2), fixed(r[0], 2), fixed(r[1], 2), fixed(r[2], 2)]);
+            let at = b.position.map_or_else(|| "—".into(), |x| fixed(x * 1e3, 2));
+            row(out, &[s.name.clone(), at, fixed(r[0], 2), fixed(r[1], 2), fixed(r[2], 2)]);
         }
     }
     md!(out);
@@ -154,8 +155,12 @@ pub(crate) fn moments(r: &DriveReport) -> Option<Result<String, String>> {
                 line.push((m[0] * 1e3, m[1]));
                 line.push((m[0] * 1e3, m[2]));
             }
-            let mut marks: Vec<(String, f64)> =
-                s.bearings.iter().enumerate().map(|(i, p)| (format!("B{}", i + 1), p.position * 1e3)).collect();
+            let mut marks: Vec<(String, f64)> = s
+                .bearings
+                .iter()
+                .enumerate()
+                .filter_map(|(i, p)| Some((format!("B{}", i + 1), p.position? * 1e3)))
+                .collect();
             marks.extend(b.gears.iter().map(|g| ("G".to_string(), g.at * 1e3)));
             Some(Panel {
                 y_label: format!("shaft {}: |M| (N·m)", s.name),
