@@ -63,7 +63,12 @@ enum Command {
         out: Option<PathBuf>,
     },
     /// Parse and validate a scene, and say what `run` would compute.
-    Check { scene: PathBuf },
+    Check {
+        scene: PathBuf,
+        /// Print the lowered form instead (`lowered`: the checked scene as JSON, every quantity in SI).
+        #[arg(long, value_parser = ["lowered"])]
+        emit: Option<String>,
+    },
     /// List the unit table.
     Units,
     /// List the friction laws with their arguments, needs and sources.
@@ -107,7 +112,7 @@ pub(crate) fn main() -> ExitCode {
     match cli.command {
         Command::Run { scene, out, shard, records } => run(&scene, &out, shard, records),
         Command::Merge { shards, out } => merge(&shards, &out),
-        Command::Check { scene } => check(&scene),
+        Command::Check { scene, emit } => check(&scene, emit.is_some()),
         Command::Import { model, out } => import(&model, out),
         Command::Render { folder } => finished(gearloss::rerender::render_into(&folder).map(|files| (folder, files))),
         Command::Units => listing(&units_table()),
@@ -213,12 +218,16 @@ fn report_errors(errors: &gearloss::SceneErrors) -> ExitCode {
     ExitCode::from(EXIT_SCENE)
 }
 
-fn check(path: &Path) -> ExitCode {
+fn check(path: &Path, emit_lowered: bool) -> ExitCode {
     let source = match read(path) {
         Ok(s) => s,
         Err(code) => return code,
     };
     match gearloss::check(&path.display().to_string(), &source) {
+        Ok(scene) if emit_lowered => {
+            say!(out, "{}", gearloss::lowered(&scene));
+            ExitCode::SUCCESS
+        }
         Ok(scene) => {
             let n = scene.operating.count();
             outln!(

@@ -8,7 +8,7 @@
 //!                                checks           is asked                                          then renamed)
 //! ```
 //!
-//! One public function per stage: [`parse`], [`lower`], [`evaluate_sweep`] (the sweep streamed, its
+//! One public function per stage: [`parse`], [`lower`] (its output printed by [`lowered`]), [`evaluate_sweep`] (the sweep streamed, its
 //! summary rows to the record files, its tally returned) with [`evaluate_details`] (the detail points in
 //! full), [`report()`] and [`render()`]; [`run_into`] and [`merge_into`] (in [`run`]) run them into a
 //! report folder (whole or sharded). Errors of the first two stages are [`SceneErrors`]: every problem with
@@ -124,6 +124,11 @@ pub fn parse(source_name: &str, source: &str) -> Result<SceneAst, SceneErrors> {
 /// Files the scene names are read relative to the folder of `source_name`.
 pub fn lower(source_name: &str, source: &str, ast: &SceneAst) -> Result<Scene, SceneErrors> {
     scene::check::lower(source_name, source, ast)
+}
+
+/// Stage 2's output as text: the checked scene as JSON in SI (`gearloss check --emit lowered`).
+pub fn lowered(scene: &Scene) -> String {
+    scene::lowered::lowered(scene)
 }
 
 /// Stages 1 and 2: what `gearloss check` runs.

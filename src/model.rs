@@ -29,7 +29,7 @@ pub type MassPerLength = Quantity<ISQ<N1, P1, Z0, Z0, Z0, Z0, Z0>, SI<f64>, f64>
 pub type ThermalConductance = Quantity<ISQ<P2, P1, N3, Z0, N1, Z0, Z0>, SI<f64>, f64>;
 
 /// A value as the user gave it: the checked value, the text written and where.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Given<T> {
     pub value: T,
     pub written: String,
@@ -37,7 +37,7 @@ pub struct Given<T> {
 }
 
 /// One `.gear` scene after lowering.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct Scene {
     pub title: String,
     pub gears: GearPair,
@@ -58,7 +58,7 @@ pub struct Scene {
 
 /// A drive of several stages as the scene gives it: the checked layout and each stage's pair, in
 /// stage order.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct SceneDrive {
     pub layout: crate::drive::Drive,
     /// Each stage's pair: a planetary stage's sun–planet pair (the sun as pinion).
@@ -72,7 +72,7 @@ pub struct SceneDrive {
 }
 
 /// A `vehicle` over a `drive_cycle` as the scene gives them.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DriveCycleSpec {
     pub vehicle_name: String,
     pub name: String,
@@ -133,7 +133,7 @@ pub enum LoadSharing {
 
 /// How the module was given. For a helical pair `module` and `diametral_pitch` are normal values
 /// (ISO 21771, AGMA), the `transverse_*` keys transverse ones: m_n = m_t cos β.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub enum ModuleSource {
     Module,
     /// `diametral_pitch = 10 1/in`: m = 1/P_d.
@@ -144,7 +144,7 @@ pub enum ModuleSource {
     TransverseDiametralPitch(Given<ReciprocalLength>),
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct GearPair {
     pub module: Given<Length>,
     pub module_source: ModuleSource,
@@ -167,7 +167,7 @@ pub struct GearPair {
     pub span: Span,
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct Gear {
     pub teeth: Given<u32>,
     pub profile_shift: Given<f64>,
@@ -188,7 +188,7 @@ pub struct Gear {
 }
 
 /// `tip_relief { amount = 10 um  length = 1.8 mm  shape = linear }`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct TipReliefSpec {
     pub amount: Given<Length>,
     pub length: Given<Length>,
@@ -196,7 +196,7 @@ pub struct TipReliefSpec {
     pub span: Span,
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct Material {
     pub name: String,
     pub youngs_modulus: Given<Pressure>,
@@ -205,7 +205,7 @@ pub struct Material {
 
 pub use crate::tribology::lubricant::BaseOil as LubricantType;
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct Lubricant {
     pub name: String,
     pub dynamic_viscosity: Given<DynamicViscosity>,
@@ -300,7 +300,7 @@ impl Lubricant {
 }
 
 /// A swept or single operating variable: values in SI, plus how they were written.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Sweep<T> {
     pub values: Vec<T>,
     /// The unit the user wrote, for the summary (`rpm`).
@@ -319,7 +319,7 @@ impl<T> Sweep<T> {
     }
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub struct Operating {
     pub pinion_torque: Sweep<Torque>,
     pub pinion_speed: Sweep<AngularVelocity>,
@@ -346,7 +346,7 @@ impl Operating {
 }
 
 /// What the scene asks to compute. Geometry and the contact state are always computed.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
 pub struct Analyses {
     pub efficiency: Option<Vec<Formulation>>,
     /// The grid of `efficiency_map(pinion_torque = ..., pinion_speed = ...)`.

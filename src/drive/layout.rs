@@ -35,7 +35,7 @@ impl Member {
 }
 
 /// The hand of a helix; a spur gear has none.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub enum Hand {
     Right,
     Left,
@@ -53,7 +53,7 @@ impl Hand {
 
 /// Where a stage's gear sits: its shaft (index into [`Drive::shafts`]) and the axial coordinate of
 /// its face mid-plane on that shaft (m).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct GearPlace {
     pub shaft: usize,
     pub at: f64,
@@ -61,7 +61,7 @@ pub struct GearPlace {
 
 /// One shaft: its name, its bearing places (each with `position`, m on the shaft's own axial
 /// coordinate), which place locates (takes the whole axial force), and its seals.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Shaft {
     pub name: String,
     pub bearings: Vec<Bearing>,
@@ -81,7 +81,7 @@ pub struct Shaft {
 /// shaft's, seen from +z; a planetary stage's first planet), its lubrication (the no-load parts:
 /// churning and jet impulse charged on the pinion's shaft, each gear's windage on its own; a
 /// planetary stage's on its carrier's, else its sun's).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Stage {
     pub name: String,
     pub kind: StageKindId,
@@ -131,14 +131,14 @@ impl ShaftEnd {
 }
 
 /// At which ends the operating sweeps are given (the values are the scene's sweeps).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub struct DriveOperating {
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
 }
 
 /// The checked drive.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Drive {
     pub shafts: Vec<Shaft>,
     pub stages: Vec<Stage>,

@@ -88,7 +88,7 @@ impl BeamTheory {
 }
 
 /// A shaft's body: its contiguous sections (ordered along z) and its material.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ShaftBody {
     pub sections: Vec<ShaftSection>,
     pub material: String,

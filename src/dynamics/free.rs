@@ -30,7 +30,7 @@ const TERMS: usize = 2 * MAX_ORDER + 1;
 const N_INTEGRANDS: usize = 4 * TERMS;
 
 /// The free response asked for: X(0) = (x0, v0) followed over `periods` mesh periods.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct FreeResponseSpec {
     pub x0: f64,
     pub v0: f64,

@@ -10,7 +10,7 @@ pub use super::free::FreeResponseSpec;
 
 /// How the mesh stiffness k(t) is given: by values in a `mesh_stiffness { ... }` block, or by
 /// the name of a catalogue model computed from the geometry ([`crate::geometry::stiffness::MODELS`]).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub enum StiffnessSpec {
     /// Rectangular, with one, two (and three) pairs in contact (N/m); triple defaults to 3/2 double.
     Pairs { single: f64, double: f64, triple: Option<f64> },
@@ -66,7 +66,7 @@ pub enum Solver {
 }
 
 /// Which dynamic model, with the parameters its catalogue row asks for.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct DynamicModel {
     /// The catalogue row ([`crate::dynamics::models::MODELS`]).
     pub id: crate::dynamics::models::DynamicModelId,
@@ -75,7 +75,7 @@ pub struct DynamicModel {
 }
 
 /// The `dynamics` block.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DynamicsSpec {
     pub model: DynamicModel,
     pub formulations: Vec<crate::dynamics::DynamicFormulation>,

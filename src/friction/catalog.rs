@@ -19,7 +19,7 @@ impl LawId {
 }
 
 /// A friction law named in the `friction` block (or the dynamics block), with its arguments as given.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct FrictionLawSpec {
     pub law: LawId,
     /// (argument name, SI value, as written)

@@ -43,7 +43,7 @@ pub use super::bearing_type::BearingType;
 pub(crate) use super::bearing_type::TAPERED_Y;
 
 /// One bearing position on a shaft (`count` equal bearings there), in SI.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Bearing {
     pub kind: BearingType,
     /// d_m = (d + D)/2 (m).

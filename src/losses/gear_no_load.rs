@@ -43,7 +43,7 @@
 //! ```
 
 /// How the gears are lubricated.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub enum Lubrication {
     /// Dip (splash) lubrication: immersion depths [pinion, wheel], wheel-axis height h_c and inner
     /// housing width l_h (m).

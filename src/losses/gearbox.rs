@@ -5,7 +5,7 @@ use super::gear_no_load::Lubrication;
 use super::seals::Seal;
 
 /// The housing, shafts, bearings and seals of a single-stage gearbox, in SI.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Gearbox {
     pub lubrication: Option<Lubrication>,
     /// [pinion shaft, wheel shaft].

@@ -10,7 +10,7 @@
 //! ```
 
 /// One or more equal radial lip seals on a shaft.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Seal {
     /// Shaft diameter at the lip (m).
     pub diameter: f64,

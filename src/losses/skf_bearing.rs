@@ -47,7 +47,7 @@ pub const K_RS: f64 = 3e-8;
 pub const MU_BOUNDARY: f64 = 0.15;
 
 /// The SKF geometry constants of one bearing and the friction coefficients that may override SKF's.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SkfConstants {
     pub r1: f64,
     /// Not used by cylindrical roller bearings.

@@ -28,6 +28,7 @@ pub(crate) mod lower_teeth;
 pub(crate) mod lower_thermal;
 pub(crate) mod lower_tooth_system;
 pub(crate) mod lower_vehicle;
+pub(crate) mod lowered;
 pub(crate) mod pair_stage;
 pub mod parse;
 pub(crate) mod screen;

@@ -1,7 +1,7 @@
 //! A duty cycle: steps of pinion torque and speed held for a duration, in order.
 
 /// One step of a duty cycle, in SI.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DutyStep {
     /// Δt (s).
     pub duration: f64,
@@ -13,7 +13,7 @@ pub struct DutyStep {
 }
 
 /// A named duty cycle.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DutyCycle {
     pub name: String,
     pub steps: Vec<DutyStep>,

@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 pub(crate) const STEFAN_BOLTZMANN: f64 = 5.670374419e-8;
 
 /// An oil cooler that takes G_c (θ − θ_set) above its set temperature.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Cooler {
     /// G_c (W/K).
     pub conductance: f64,
@@ -35,7 +35,7 @@ pub struct Cooler {
 }
 
 /// The housing of a gearbox as a thermal node, in SI (temperatures in K).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Housing {
     /// Surface area A that gives off heat (m²).
     pub area: f64,

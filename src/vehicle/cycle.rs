@@ -12,7 +12,7 @@ use super::road_load::Vehicle;
 use super::trace::Trace;
 
 /// A named stretch of the cycle (s from the trace's first sample).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Phase {
     pub name: String,
     pub from: f64,
@@ -159,7 +159,7 @@ fn roots_inside(c: [f64; 3], lo: f64, hi: f64) -> Vec<f64> {
 }
 
 /// A vehicle over a trace, cut into its pieces.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Cycle {
     pub vehicle: Vehicle,
     pub trace: Trace,

@@ -21,7 +21,7 @@
 pub const GRAVITY: f64 = 9.80665;
 
 /// How the road load is given.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub enum RoadLoad {
     /// Coastdown coefficients f0 (N), f1 (N·s/m), f2 (N·s²/m²).
     Coastdown { f0: f64, f1: f64, f2: f64 },
@@ -30,7 +30,7 @@ pub enum RoadLoad {
 }
 
 /// A vehicle as its drive cycle reads it (SI).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Vehicle {
     /// m (kg), the test mass.
     pub mass: f64,

@@ -14,7 +14,7 @@
 //! ```
 
 /// The samples of a trace, in SI.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Trace {
     /// t (s), strictly increasing.
     pub time: Vec<f64>,

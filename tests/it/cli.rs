@@ -99,6 +99,27 @@ fn missing_file_exits_3_and_bad_arguments_exit_2() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// `check --emit lowered` prints the lowered form (JSON, SI) on stdout and nothing else; an
+/// unknown form is a bad argument (exit 2).
+#[test]
+fn check_emits_the_lowered_form() {
+    let out = gearloss()
+        .args(["check", "tests/specs/ok/drive_one_stage.gear", "--emit", "lowered"])
+        .current_dir(crate::root())
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["drive"]["layout"]["stages"][0]["name"], "only");
+    assert_eq!(json["drive"]["layout"]["shafts"][0]["bearings"][0]["position"], -0.045);
+    let bad = gearloss()
+        .args(["check", "tests/specs/ok/drive_one_stage.gear", "--emit", "ast"])
+        .current_dir(crate::root())
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+}
+
 #[test]
 fn check_and_units_succeed() {
     let o = gearloss().args(["check", "specs/us_spur_inch.gear"]).current_dir(crate::root()).output().unwrap();

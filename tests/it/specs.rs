@@ -54,6 +54,21 @@ fn ok_fixtures_render() {
     });
 }
 
+/// Lowering on its own (`gearloss check --emit lowered`): the checked scene in SI of a pair, an
+/// internal pair, a one-stage drive and a one-planet planetary stage. (A scene on a drive cycle
+/// prints its whole trace: its lowering is held by the cycle tests instead.)
+#[test]
+fn lowered_forms() {
+    for name in ["minimal", "internal_pair", "drive_one_stage", "planetary_one_planet"] {
+        let path = crate::root().join(format!("tests/specs/ok/{name}.gear"));
+        let scene = crate::scene(&path);
+        let text = gearloss::lowered(&scene);
+        let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(json["title"], scene.title.as_str());
+        insta::assert_snapshot!(format!("lowered_{name}"), text);
+    }
+}
+
 #[test]
 fn err_fixtures_fail_with_diagnostics() {
     let mut count = 0;

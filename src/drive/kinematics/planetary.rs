@@ -181,7 +181,7 @@ impl StageKinematics for Planetary {
 }
 
 /// A planetary stage's layout.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct PlanetaryLayout {
     /// n, the planets on the carrier (equally spaced, sharing the load equally).
     pub planets: u32,
