@@ -14,7 +14,7 @@ pub use super::drive_setup::DriveRow;
 #[derive(Debug, Clone, Default)]
 pub struct DriveEvaluation {
     pub rows: Vec<DriveRow>,
-    pub map: Vec<DriveRow>,
+    pub map: Vec<super::drive_map_cell::DriveMapCell>,
     /// The map's best point of each half (drive, coast), per law and formulation, located.
     pub map_best: Vec<super::drive_map_best::DriveMapBest>,
     /// For every kept row, each stage's validity of the row's law.
@@ -185,7 +185,7 @@ fn finish(
     let (map, map_best) = match (&scene.analyses.efficiency_map, scene.analyses.map_ends) {
         (Some((t, s)), Some(ends)) => {
             let (torques, speeds) = (si(&t.values), s.values.iter().map(|w| w.value).collect::<Vec<_>>());
-            let map = setup.grid(&torques, &speeds, ends);
+            let map = super::drive_map_cell::map_cells(setup, &torques, &speeds, ends);
             let best = super::drive_map_best::drive_map_best(setup, (&torques, &speeds), ends, &map);
             (map, best)
         }

@@ -6,7 +6,8 @@
 //! stays inside its half (the grid's torques of one sign), where η is smooth; zero torque, where no
 //! power passes and η is 0, is never a candidate.
 
-use super::drive_setup::{DriveRow, DriveSetup};
+use super::drive_map_cell::DriveMapCell;
+use super::drive_setup::DriveSetup;
 use super::map_best::locate_max;
 use crate::drive::{DriveOperating, EndValue, PowerFlow};
 use crate::efficiency::Formulation;
@@ -33,7 +34,7 @@ pub(crate) fn drive_map_best(
     setup: &DriveSetup,
     (torques, speeds): (&[f64], &[f64]),
     ends: DriveOperating,
-    map: &[DriveRow],
+    map: &[DriveMapCell],
 ) -> Vec<DriveMapBest> {
     let mut keys: Vec<(usize, Formulation)> = Vec::new();
     for r in map {
@@ -51,8 +52,8 @@ pub(crate) fn drive_map_best(
             half.sort_by(|a, b| torques[*a].total_cmp(&torques[*b]));
             let cells = map.iter().filter(|r| r.law_index == law_index && r.formulation == formulation);
             let best = cells
-                .filter(|r| half.contains(&r.torque_index) && !r.point.both_ends_deliver && r.point.efficiency > 0.0)
-                .max_by(|a, b| a.point.efficiency.total_cmp(&b.point.efficiency));
+                .filter(|r| half.contains(&r.torque_index) && !r.both_ends_deliver && r.efficiency > 0.0)
+                .max_by(|a, b| a.efficiency.total_cmp(&b.efficiency));
             let Some(best) = best else { continue };
             let half_torques: Vec<f64> = half.iter().map(|i| torques[*i]).collect();
             let at = |index: &[usize], i: usize| index.iter().position(|k| *k == i).unwrap_or(0);
@@ -68,7 +69,7 @@ pub(crate) fn drive_map_best(
                 }
             };
             let (located, evaluations) = locate_max(&half_torques, &sorted_speeds, start, eta);
-            let grid = (best.torque_index, best.speed_index, best.point.efficiency);
+            let grid = (best.torque_index, best.speed_index, best.efficiency);
             out.push(DriveMapBest { law_index, formulation, flow, located, grid, evaluations });
         }
     }

@@ -286,10 +286,9 @@ impl<'a> DriveSetup<'a> {
         solve(&model, &meshes, torque, speed)
     }
 
-    /// Every (torque, speed, law, formulation) of a grid, in parallel, in that order.
-    pub(crate) fn grid(&self, torques: &[f64], speeds: &[f64], ends: crate::drive::DriveOperating) -> Vec<DriveRow> {
-        let n = torques.len() * speeds.len() * self.rows_per_point();
-        self.grid_rows(torques, speeds, ends, 0..n)
+    /// The formulations each point is evaluated in, in the scene's order.
+    pub(crate) fn formulations(&self) -> Vec<Formulation> {
+        self.scene.analyses.efficiency.clone().unwrap_or_default()
     }
 
     /// Rows (laws × formulations) per operating point.
@@ -305,7 +304,7 @@ impl<'a> DriveSetup<'a> {
         ends: crate::drive::DriveOperating,
         range: std::ops::Range<usize>,
     ) -> Vec<DriveRow> {
-        let formulations = self.scene.analyses.efficiency.clone().unwrap_or_default();
+        let formulations = self.formulations();
         let per_point = self.rows_per_point();
         range
             .into_par_iter()

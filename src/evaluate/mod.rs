@@ -13,6 +13,7 @@ pub(crate) mod details;
 pub mod drive;
 pub mod drive_cycle;
 pub mod drive_map_best;
+pub mod drive_map_cell;
 pub mod drive_records;
 pub(crate) mod drive_setup;
 pub mod drive_thermal;

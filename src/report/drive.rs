@@ -355,9 +355,9 @@ fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Vec<DriveMapR
             let mut efficiency = loss.clone();
             let mut most_passes = 0;
             for c in cells {
-                loss[c.torque_index][c.speed_index] = c.point.power_lost();
-                efficiency[c.torque_index][c.speed_index] = c.point.efficiency;
-                most_passes = most_passes.max(c.point.iterations);
+                loss[c.torque_index][c.speed_index] = c.power_lost;
+                efficiency[c.torque_index][c.speed_index] = c.efficiency;
+                most_passes = most_passes.max(c.iterations);
             }
             let rpm = 30.0 / std::f64::consts::PI;
             let best = eval

@@ -1,0 +1,59 @@
+//! A drive's efficiency map, cell by cell: each grid point walked through and at once reduced to
+//! what the map's report and its best-point search read (η, the loss, whether both ends deliver,
+//! the passes), the point itself dropped. The map's memory is then a few numbers a cell, not a
+//! whole `DrivePoint` (its shafts, bearings and forces) a cell.
+
+use rayon::prelude::*;
+
+use super::drive_setup::DriveSetup;
+use crate::drive::{DriveOperating, EndValue};
+use crate::efficiency::Formulation;
+
+/// One cell of a drive's map under one law and formulation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DriveMapCell {
+    pub torque_index: usize,
+    pub speed_index: usize,
+    pub law_index: usize,
+    pub formulation: Formulation,
+    /// P_sink/P_source (0 where both ends deliver).
+    pub efficiency: f64,
+    /// P_source − P_sink (W).
+    pub power_lost: f64,
+    pub both_ends_deliver: bool,
+    /// Passes of the power walk's fixed point.
+    pub iterations: usize,
+}
+
+/// Every (torque, speed, law, formulation) of the grid `torques` × `speeds` (SI, at `ends`), in
+/// parallel, in that order (torque-major, then law, then formulation).
+pub(crate) fn map_cells(
+    setup: &DriveSetup,
+    torques: &[f64],
+    speeds: &[f64],
+    ends: DriveOperating,
+) -> Vec<DriveMapCell> {
+    let formulations = setup.formulations();
+    let per_point = setup.rows_per_point();
+    (0..torques.len() * speeds.len() * per_point)
+        .into_par_iter()
+        .map(|i| {
+            let (point, rest) = (i / per_point, i % per_point);
+            let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
+            let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
+            let torque = EndValue { at: ends.torque_at, value: torques[torque_index] };
+            let speed = EndValue { at: ends.speed_at, value: speeds[speed_index] };
+            let p = setup.point(law_index, formulations[f], torque, speed);
+            DriveMapCell {
+                torque_index,
+                speed_index,
+                law_index,
+                formulation: formulations[f],
+                efficiency: p.efficiency,
+                power_lost: p.power_lost(),
+                both_ends_deliver: p.both_ends_deliver,
+                iterations: p.iterations,
+            }
+        })
+        .collect()
+}
