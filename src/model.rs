@@ -56,8 +56,7 @@ pub struct Scene {
     pub drive: Option<SceneDrive>,
 }
 
-/// A drive of several stages as the scene gives it: the checked layout and each stage's pair, in
-/// stage order.
+/// A drive of stages as the scene gives it: the checked layout and each stage's pair, in order.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct SceneDrive {
     pub layout: crate::drive::Drive,
@@ -76,8 +75,7 @@ pub struct SceneDrive {
 pub struct DriveCycleSpec {
     pub vehicle_name: String,
     pub name: String,
-    /// The trace file as written in the scene.
-    pub trace_file: String,
+    pub trace_file: String, // as written in the scene
     pub cycle: crate::vehicle::Cycle,
     /// Where the transient starts (K); None: the housing's ambient.
     pub start_temperature: Option<f64>,

@@ -274,7 +274,12 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             ),
         });
     }
-    report.findings.extend(super::drive_findings::unsettled_rows(&report));
+    let unsettled = super::drive_findings::unsettled_rows(
+        &report.points,
+        (report.unsettled_rows, report.rows),
+        report.first_unsettled.as_ref(),
+    );
+    report.findings.extend(unsettled);
     for path in super::non_finite::non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }

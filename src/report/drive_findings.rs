@@ -137,14 +137,18 @@ pub(super) fn stage_notes(
 
 /// The rows beyond those the report shows that did not settle or do not balance their books, with
 /// the first of them named.
-pub(super) fn unsettled_rows(report: &super::drive::DriveReport) -> Option<Finding> {
-    let shown = report.points.iter().filter(|p| !p.point.settled()).count();
-    let first = report.first_unsettled.as_ref().filter(|_| report.unsettled_rows > shown)?;
+/// `(unsettled, rows)`: how many rows did not settle, of how many; `first`: the first in words.
+pub(super) fn unsettled_rows(
+    points: &[DrivePointReport],
+    (unsettled, rows): (usize, usize),
+    first: Option<&String>,
+) -> Option<Finding> {
+    let shown = points.iter().filter(|p| !p.point.settled()).count();
+    let first = first.filter(|_| unsettled > shown)?;
     Some(Finding {
         severity: Severity::Warning,
         message: format!(
-            "{} of {} rows did not settle or do not balance their books (drive_records.csv: `passes` = 100, or P_source − P_sink ≠ the sum of the parts); the first: row {first}",
-            report.unsettled_rows, report.rows
+            "{unsettled} of {rows} rows did not settle or do not balance their books (drive_records.csv: `passes` = 100, or P_source − P_sink ≠ the sum of the parts); the first: row {first}"
         ),
     })
 }
