@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use super::drive_inputs::{ShaftInputs, StageInputs};
 use super::finding::{Finding, Severity};
+use super::number::DisplayUnit;
 use crate::drive::ShaftEnd;
 use crate::evaluate::drive::{DriveEvaluation, DriveRow};
 use crate::model::{Scene, SceneDrive};
@@ -145,6 +146,10 @@ pub struct DriveReport {
     pub first_unsettled: Option<String>,
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
+    /// The unit the scene wrote its speeds in, which report.md shows every speed in (report.json
+    /// keeps rad/s, and rpm in the fields so named); left out when rpm.
+    #[serde(default = "DisplayUnit::rpm", skip_serializing_if = "DisplayUnit::is_rpm")]
+    pub speed_unit: DisplayUnit,
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
     /// The housing as a thermal node (what, value, unit) and each point's balance.
@@ -201,6 +206,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         first_unsettled: eval.tally.first_unsettled.map(|i| row_words(scene, drive, &laws, i)),
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
+        speed_unit: speed_unit(scene),
         findings: super::drive_findings::findings(drive, &points),
         maps: maps(scene, eval, &laws),
         housing: scene
@@ -344,6 +350,13 @@ pub(crate) fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize
         op.pinion_speed.written_values[speed_index],
         crate::quantity::shown_written_unit(&op.pinion_speed.unit)
     )
+}
+
+/// The unit the scene wrote its speeds in: its operating points', else its map's, else rpm.
+fn speed_unit(scene: &Scene) -> DisplayUnit {
+    let op = &scene.operating.pinion_speed;
+    let map = scene.analyses.efficiency_map.as_ref().map(|(_, s)| s);
+    [Some(op), map].into_iter().flatten().find(|s| !s.values.is_empty()).map_or_else(DisplayUnit::rpm, DisplayUnit::of)
 }
 
 /// The maps, one per law and formulation.

@@ -108,6 +108,16 @@ impl DisplayUnit {
         DisplayUnit { name: "N*m".into(), factor: 1.0 }
     }
 
+    /// rpm, the speed unit of drive reports written before speeds were shown as written.
+    pub fn rpm() -> DisplayUnit {
+        DisplayUnit { name: "rpm".into(), factor: std::f64::consts::PI / 30.0 }
+    }
+
+    /// Whether this is rpm (a drive's report then leaves its speed unit out of report.json).
+    pub fn is_rpm(&self) -> bool {
+        self.name == "rpm"
+    }
+
     /// The name as tables print it: `lbf*in` → `lbf·in`.
     pub fn shown(&self) -> String {
         self.name.replace('*', "·")

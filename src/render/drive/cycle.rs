@@ -7,7 +7,7 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row, sig};
 use crate::report::drive_cycle::{CycleTotals, DriveCycleReport};
 
-pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport) {
+pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport, n: super::speed::Speed) {
     let w = &c.whole;
     md!(out, "## Drive cycle \"{}\": {}\n", c.name, c.vehicle);
     md!(
@@ -50,12 +50,13 @@ pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport) {
     );
     md!(
         out,
-        "Peaks (located on each piece: its ends and the vertex of the force's quadratic): wheel torque {} N·m at {} s, in recuperation {} N·m at {} s; motor speed {} rpm at {} s (v = {} km/h).\n",
+        "Peaks (located on each piece: its ends and the vertex of the force's quadratic): wheel torque {} N·m at {} s, in recuperation {} N·m at {} s; motor speed {} {} at {} s (v = {} km/h).\n",
         fixed(c.peak_wheel_torque.value, 1),
         fixed(c.peak_wheel_torque.time_s, 2),
         fixed(c.peak_recuperation_torque.value, 1),
         fixed(c.peak_recuperation_torque.time_s, 2),
-        fixed(c.peak_motor_speed_rpm.value, 0),
+        fixed(n.of_rpm(c.peak_motor_speed_rpm.value), 0),
+        n.unit(),
         fixed(c.peak_motor_speed_rpm.time_s, 2),
         fixed(c.peak_speed_kmh.value, 2)
     );

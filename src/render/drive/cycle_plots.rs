@@ -101,8 +101,9 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
 /// over the upper nine tenths of the values, the iso-lines labelled, a colour bar), every cell
 /// shown (η falls to 0 at zero torque, where no power passes: the lowest band), and the time the
 /// cycle spends at each cell as red circles.
-pub(crate) fn map(title: &str, c: &DriveCycleReport) -> Result<String, String> {
+pub(crate) fn map(title: &str, c: &DriveCycleReport, n: super::speed::Speed) -> Result<String, String> {
     let m = &c.map;
+    let speeds: Vec<f64> = m.speeds_rpm.iter().map(|x| n.of_rpm(*x)).collect();
     let eta: Vec<Vec<f64>> = m
         .efficiency
         .iter()
@@ -112,7 +113,7 @@ pub(crate) fn map(title: &str, c: &DriveCycleReport) -> Result<String, String> {
     for (t, row) in m.seconds.iter().enumerate() {
         for (s, secs) in row.iter().enumerate() {
             if *secs > 0.0 {
-                marks.push((m.speeds_rpm[s], m.torques[t], *secs));
+                marks.push((speeds[s], m.torques[t], *secs));
             }
         }
     }
@@ -125,12 +126,13 @@ pub(crate) fn map(title: &str, c: &DriveCycleReport) -> Result<String, String> {
         if m.speeds_rpm.len() >= 2 && m.torques.len() >= 2 {
             let field = Field {
                 title: "η, ○ time spent at each cell".into(),
-                speeds: &m.speeds_rpm,
+                speeds: &speeds,
                 torques: &m.torques,
                 values: eta,
                 unit: "%",
             };
-            let axes = ("output speed (rpm)", "output torque (N·m; < 0: recuperation)");
+            let x_label = format!("output speed ({})", n.unit());
+            let axes = (x_label.as_str(), "output torque (N·m; < 0: recuperation)");
             draw_field(&root, &field, axes, (&[], &marks))?;
         }
         root.present().map_err(|e| e.to_string())?;

@@ -6,7 +6,7 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
 
-const RPM: f64 = 30.0 / std::f64::consts::PI;
+use super::speed::Speed;
 
 pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     let mut out = String::new();
@@ -49,13 +49,13 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     thermal(&mut out, r);
     duty(&mut out, r);
     if let Some(c) = &r.cycle {
-        super::cycle::cycle(&mut out, c);
+        super::cycle::cycle(&mut out, c, Speed(&r.speed_unit));
     }
     if !r.points.is_empty() {
         md!(out, "## Operating points\n");
     }
     for p in &r.points {
-        super::point_tables::point(&mut out, p);
+        super::point_tables::point(&mut out, p, Speed(&r.speed_unit));
     }
     super::stage_pairs::section(&mut out, r);
     if !r.maps.is_empty() {
@@ -67,7 +67,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                 "law",
                 "formulation",
                 "torques (N·m)",
-                "speeds (rpm)",
+                &format!("speeds ({})", Speed(&r.speed_unit).unit()),
                 "least η of the grid points (drive)",
                 "most loss of the grid points (W)",
                 "most passes",
@@ -95,8 +95,8 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                     ),
                     format!(
                         "{} … {} ({})",
-                        fixed(m.speeds_rpm[0], 1),
-                        fixed(m.speeds_rpm[m.speeds_rpm.len() - 1], 1),
+                        fixed(Speed(&r.speed_unit).of_rpm(m.speeds_rpm[0]), 1),
+                        fixed(Speed(&r.speed_unit).of_rpm(m.speeds_rpm[m.speeds_rpm.len() - 1]), 1),
                         m.speeds_rpm.len()
                     ),
                     format!("{} %", fixed(100.0 * drive_eta, 3)),
@@ -115,9 +115,9 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                     "formulation",
                     "half",
                     "torque (N·m)",
-                    "speed (rpm)",
+                    &format!("speed ({})", Speed(&r.speed_unit).unit()),
                     "η",
-                    "grid's best (N·m, rpm, η)",
+                    &format!("grid's best (N·m, {}, η)", Speed(&r.speed_unit).unit()),
                     "drives solved",
                 ],
             );
@@ -130,12 +130,12 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                             m.formulation.clone(),
                             b.flow.clone(),
                             fixed(b.torque, 3),
-                            fixed(b.speed_rpm, 3),
+                            fixed(Speed(&r.speed_unit).of_rpm(b.speed_rpm), 3),
                             format!("{} %", fixed(100.0 * b.efficiency, 4)),
                             format!(
                                 "{}, {}, {} %",
                                 fixed(b.grid_torque, 1),
-                                fixed(b.grid_speed_rpm, 1),
+                                fixed(Speed(&r.speed_unit).of_rpm(b.grid_speed_rpm), 1),
                                 fixed(100.0 * b.grid_efficiency, 4)
                             ),
                             b.evaluations.to_string(),
@@ -160,10 +160,10 @@ fn headline(out: &mut String, r: &DriveReport) {
             "formulation",
             "flow",
             "T_in (N·m)",
-            "n_in (rpm)",
+            &format!("n_in ({})", Speed(&r.speed_unit).unit()),
             "P_in (W)",
             "T_out (N·m)",
-            "n_out (rpm)",
+            &format!("n_out ({})", Speed(&r.speed_unit).unit()),
             "P_out (W)",
             "meshes (W)",
             "gears no-load (W)",
@@ -185,10 +185,10 @@ fn headline(out: &mut String, r: &DriveReport) {
                 p.formulation.clone(),
                 d.flow.name().to_string(),
                 fixed(d.input_torque, 4),
-                fixed(d.input_speed * RPM, 2),
+                fixed(Speed(&r.speed_unit).of_rad_s(d.input_speed), 2),
                 fixed(d.input_power, 2),
                 fixed(d.output_torque, 4),
-                fixed(d.output_speed * RPM, 2),
+                fixed(Speed(&r.speed_unit).of_rad_s(d.output_speed), 2),
                 fixed(d.output_power, 2),
                 fixed(l.meshes, 3),
                 fixed(l.gear_no_load, 3),

@@ -12,6 +12,7 @@ pub(crate) mod planetary;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
 pub(crate) mod shaft_bending;
+pub(crate) mod speed;
 pub(crate) mod stage_pairs;
 
 use crate::render::RenderedReport;
@@ -44,7 +45,10 @@ pub fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
         files.push((crate::report::drive_cycle_series::FILE.to_string(), c.series.to_csv()));
         files.push((cycle_plots::TRACE_FILE.to_string(), cycle_plots::trace(&report.title, c)?));
         if !c.map.torques.is_empty() {
-            files.push((cycle_plots::MAP_FILE.to_string(), cycle_plots::map(&report.title, c)?));
+            files.push((
+                cycle_plots::MAP_FILE.to_string(),
+                cycle_plots::map(&report.title, c, speed::Speed(&report.speed_unit))?,
+            ));
         }
     }
     Ok(RenderedReport { slug: report.slug.clone(), files })

@@ -7,8 +7,7 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_inputs::StageInputs;
 
-/// rad/s to rpm.
-const RPM: f64 = 30.0 / std::f64::consts::PI;
+use super::speed::Speed;
 
 /// The planetary stages' inputs, after the stages' table.
 pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
@@ -62,7 +61,7 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
 }
 
 /// Each planetary stage at one operating point.
-pub(crate) fn point(out: &mut String, d: &DrivePoint) {
+pub(crate) fn point(out: &mut String, d: &DrivePoint, n: Speed) {
     for s in &d.stages {
         let Some(p) = &s.planetary else { continue };
         md!(
@@ -77,14 +76,14 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
             fixed(100.0 * p.basic_efficiency, 5),
             fixed(100.0 * p.efficiency, 5)
         );
-        header(out, &["member", "n (rpm, + ccw)", "T (N·m, on the member)", "P in (W)"]);
+        header(out, &["member", &format!("n ({}, + ccw)", n.unit()), "T (N·m, on the member)", "P in (W)"]);
         for m in crate::drive::kinematics::planetary::PlanetaryMember::ALL {
             let i = m.index();
             row(
                 out,
                 &[
                     m.name().into(),
-                    fixed(p.speeds[i] * RPM, 3),
+                    fixed(n.of_rad_s(p.speeds[i]), 3),
                     fixed(p.torques[i], 4),
                     fixed(p.torques[i] * p.speeds[i], 3),
                 ],
@@ -93,7 +92,13 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
         md!(out);
         header(
             out,
-            &["mesh", "pinion T per planet (N·m)", "n in the carrier's frame (rpm)", "η (%)", "loss, all planets (W)"],
+            &[
+                "mesh",
+                "pinion T per planet (N·m)",
+                &format!("n in the carrier's frame ({})", n.unit()),
+                "η (%)",
+                "loss, all planets (W)",
+            ],
         );
         for (i, name) in ["sun–planet", "planet–ring"].iter().enumerate() {
             row(
@@ -101,7 +106,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
                 &[
                     (*name).into(),
                     fixed(p.mesh_torque[i], 4),
-                    fixed(p.mesh_speed[i] * RPM, 3),
+                    fixed(n.of_rad_s(p.mesh_speed[i]), 3),
                     fixed(100.0 * p.mesh_efficiency[i], 5),
                     fixed(p.mesh_loss[i], 3),
                 ],
@@ -111,8 +116,9 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
         let f = &p.forces;
         md!(
             out,
-            "Each planet (the most loaded where K_γ > 1): {} rpm relative to the carrier; F_t {} N (sun mesh) and {} N (ring mesh), F_r {} N and {} N, centrifugal m ω_c² a_w {} N; its bearing carries |B| = {} N; the planets' bearings lose {} W (no-load) + {} W (load); churning {} W.\n",
-            fixed(p.planet_speed * RPM, 3),
+            "Each planet (the most loaded where K_γ > 1): {} {} relative to the carrier; F_t {} N (sun mesh) and {} N (ring mesh), F_r {} N and {} N, centrifugal m ω_c² a_w {} N; its bearing carries |B| = {} N; the planets' bearings lose {} W (no-load) + {} W (load); churning {} W.\n",
+            fixed(n.of_rad_s(p.planet_speed), 3),
+            n.unit(),
             fixed(f.tangential[0], 2),
             fixed(f.tangential[1], 2),
             fixed(f.radial[0], 2),

@@ -7,10 +7,9 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DrivePointReport;
 
-/// rad/s to rpm.
-const RPM: f64 = 30.0 / std::f64::consts::PI;
+use super::speed::Speed;
 
-pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
+pub(crate) fn point(out: &mut String, p: &DrivePointReport, n: Speed) {
     let d = &p.point;
     md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
     md!(
@@ -38,7 +37,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
             "driving",
             "T driving (N·m)",
             "T driven (N·m)",
-            "n driving (rpm)",
+            &format!("n driving ({})", n.unit()),
             "F_t (N)",
             "F_r (N)",
             "F_a (N)",
@@ -57,7 +56,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
                 s.member_name(s.driving).to_string(),
                 fixed(s.driving_torque, 4),
                 fixed(s.driven_torque, 4),
-                fixed(s.driving_speed * RPM, 2),
+                fixed(n.of_rad_s(s.driving_speed), 2),
                 fixed(s.tangential_force, 2),
                 fixed(s.radial_force, 2),
                 fixed(s.axial_force, 2),
@@ -69,12 +68,12 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
         );
     }
     md!(out);
-    super::planetary::point(out, d);
+    super::planetary::point(out, d, n);
     header(
         out,
         &[
             "shaft",
-            "n (rpm, + ccw)",
+            &format!("n ({}, + ccw)", n.unit()),
             "T received (N·m)",
             "T passed (N·m)",
             "P received (W)",
@@ -90,7 +89,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport) {
             out,
             &[
                 s.name.clone(),
-                fixed(s.speed * RPM, 2),
+                fixed(n.of_rad_s(s.speed), 2),
                 fixed(s.received_torque, 4),
                 fixed(s.passed_torque, 4),
                 fixed(s.received_power, 3),
