@@ -17,10 +17,10 @@
 pub(crate) mod forces;
 pub mod kinematics;
 pub(crate) mod layout;
-pub mod mesh_efficiency;
+pub(crate) mod mesh_efficiency;
 pub(crate) mod pass;
-pub mod planetary;
-pub mod planetary_charges;
+pub(crate) mod planetary;
+pub(crate) mod planetary_charges;
 pub(crate) mod point;
 pub mod shaft_beam;
 pub mod shaft_bending;

@@ -16,7 +16,7 @@ use super::point::BearingPoint;
 use crate::losses::Oil;
 
 /// The stage at place `driving` putting `torque` (N·m, > 0) in, the places at `places` (rad/s).
-pub fn state(
+pub(crate) fn state(
     meshes: &dyn MeshEfficiency,
     k: usize,
     layout: &PlanetaryLayout,
@@ -29,7 +29,7 @@ pub fn state(
 
 /// The planets' bearings at the driving torque: the shaft they are charged on, the place as the
 /// report lists it, and their power (W); None without planet bearings or without an oil viscosity.
-pub fn planet_bearings(
+pub(crate) fn planet_bearings(
     stage: &Stage,
     driving: Member,
     torque: f64,
@@ -76,7 +76,7 @@ pub fn planet_bearings(
 }
 
 /// The report's point of the stage from its state `s` in the settled pass (driving torque `torque`).
-pub fn point(
+pub(crate) fn point(
     s: &PlanetaryState,
     stage: &Stage,
     driving: Member,

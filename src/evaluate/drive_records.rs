@@ -12,9 +12,9 @@ use crate::drive::PowerFlow;
 use crate::model::SceneDrive;
 
 /// The file's name in the report folder.
-pub const FILE: &str = "drive_records.csv";
+pub(crate) const FILE: &str = "drive_records.csv";
 /// The same rows as typed Parquet columns (`--records parquet`).
-pub const PARQUET_FILE: &str = "drive_records.parquet";
+pub(crate) const PARQUET_FILE: &str = "drive_records.parquet";
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
 
@@ -26,7 +26,7 @@ pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result
 
 /// The columns, named and typed (drive_records.parquet's schema): the fixed columns, then per stage
 /// and per bearing place and shaft.
-pub fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
+pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
     let mut cols: Vec<String> = [
         "row",
         "torque_index",
@@ -186,7 +186,7 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
 }
 
 /// Where a drive's rows go as they are computed.
-pub trait DriveRecordSink {
+pub(crate) trait DriveRecordSink {
     /// The header, written once before the rows (a CSV's first line; the first shard's only).
     fn header(&mut self, drive: &SceneDrive) -> std::io::Result<()>;
     fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()>;
@@ -194,14 +194,14 @@ pub trait DriveRecordSink {
 
 /// drive_records.csv into `C`, drive_records.parquet (typed columns, row groups as the rows come,
 /// [`super::record_parquet`]) into `P`: either or both.
-pub struct DriveRecordFiles<C: Write, P: Write + Send> {
+pub(crate) struct DriveRecordFiles<C: Write, P: Write + Send> {
     csv: Option<C>,
     parquet: Option<super::record_parquet::ParquetRecords<P>>,
 }
 
 impl<C: Write> DriveRecordFiles<C, Vec<u8>> {
     /// drive_records.csv only.
-    pub fn csv(out: C) -> Self {
+    pub(crate) fn csv(out: C) -> Self {
         DriveRecordFiles { csv: Some(out), parquet: None }
     }
 }
@@ -209,14 +209,14 @@ impl<C: Write> DriveRecordFiles<C, Vec<u8>> {
 impl<C: Write, P: Write + Send> DriveRecordFiles<C, P> {
     /// The files of `drive`'s rows: the CSV into `csv`, the Parquet file (its schema from
     /// [`columns`]) into `parquet`.
-    pub fn new(drive: &SceneDrive, csv: Option<C>, parquet: Option<P>) -> std::io::Result<Self> {
+    pub(crate) fn new(drive: &SceneDrive, csv: Option<C>, parquet: Option<P>) -> std::io::Result<Self> {
         let parquet =
             parquet.map(|out| super::record_parquet::ParquetRecords::with_columns(out, columns(drive))).transpose()?;
         Ok(DriveRecordFiles { csv, parquet })
     }
 
     /// Writes what is held and the Parquet footer; the two writers back, flushed.
-    pub fn finish(self) -> std::io::Result<(Option<C>, Option<P>)> {
+    pub(crate) fn finish(self) -> std::io::Result<(Option<C>, Option<P>)> {
         let mut csv = self.csv;
         if let Some(c) = &mut csv {
             c.flush()?;

@@ -1,6 +1,6 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
-pub mod drive;
+pub(crate) mod drive;
 pub(crate) mod headline;
 pub mod markdown;
 pub(crate) mod markdown_bearings;

@@ -5,10 +5,10 @@
 
 use serde::{Deserialize, Serialize};
 
-pub use super::drive_cycle_series::CycleMap;
+pub(crate) use super::drive_cycle_series::CycleMap;
 use super::drive_cycle_series::{series, CycleSeries};
 use super::drive_cycle_totals::{temperature, totals};
-pub use super::drive_cycle_totals::{CyclePart, CycleTemperature, CycleTotals, Peak};
+pub(crate) use super::drive_cycle_totals::{CyclePart, CycleTemperature, CycleTotals, Peak};
 use super::finding::{Finding, Severity};
 use crate::evaluate::drive_cycle::{CycleEvaluation, CycleOil, PARTS, QUANTITIES};
 use crate::model::{DriveCycleSpec, Scene, SceneDrive};
@@ -82,7 +82,7 @@ pub struct DriveCycleReport {
 }
 
 /// The cycle's report.
-pub fn build_cycle_report(
+pub(crate) fn build_cycle_report(
     scene: &Scene,
     drive: &SceneDrive,
     spec: &DriveCycleSpec,

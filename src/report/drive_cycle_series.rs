@@ -39,7 +39,7 @@ impl CycleSeries {
 }
 
 /// The records file of a cycle.
-pub const FILE: &str = "cycle_records.csv";
+pub(crate) const FILE: &str = "cycle_records.csv";
 
 /// The box's η over the output torque × speed the cycle reaches, with the time the cycle spends
 /// in each cell (s), for the plot.
@@ -54,7 +54,7 @@ pub struct CycleMap {
 }
 
 /// The series' columns, in order.
-pub const COLUMNS: [&str; 24] = [
+pub(crate) const COLUMNS: [&str; 24] = [
     "t_start_s",
     "t_end_s",
     "v_start_km_h",

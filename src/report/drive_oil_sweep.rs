@@ -8,7 +8,7 @@ use super::drive::DriveReport;
 
 /// One temperature's run: where its report is and its rows.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct DriveOilRun {
+pub(crate) struct DriveOilRun {
     /// As written (`60 degC`), in K, and the run's folder.
     pub label: String,
     pub kelvin: f64,
@@ -19,7 +19,7 @@ pub struct DriveOilRun {
 
 /// The comparison.
 #[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct DriveOilSweepReport {
+pub(crate) struct DriveOilSweepReport {
     pub title: String,
     pub slug: String,
     /// The shown rows' labels (point, law, formulation), the same in every run.
@@ -28,7 +28,7 @@ pub struct DriveOilSweepReport {
 }
 
 /// The comparison of `runs`: (temperature as written, in K, its folder, its report).
-pub fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)]) -> DriveOilSweepReport {
+pub(crate) fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)]) -> DriveOilSweepReport {
     let first = &runs[0].3;
     DriveOilSweepReport {
         title: first.title.clone(),

@@ -45,7 +45,7 @@ pub struct StagePairReport {
 }
 
 /// The folder of an analysed mesh's report: `stages/<stage>[_<mesh>]_point_<n>`.
-pub fn folder(stage: &str, mesh: Option<&str>, point: usize) -> String {
+pub(crate) fn folder(stage: &str, mesh: Option<&str>, point: usize) -> String {
     let mesh = mesh.map_or_else(String::new, |m| format!("_{}", super::slug::slug(&m.replace('–', " "))));
     format!("stages/{}{mesh}_point_{}", super::slug::slug(stage), point + 1)
 }

@@ -2,8 +2,8 @@
 //! cycle cut into smooth pieces ([`cycle`]). What the gearbox loses on them is evaluated in
 //! `evaluate::drive_cycle`.
 
-pub mod cycle;
-pub mod road_load;
+pub(crate) mod cycle;
+pub(crate) mod road_load;
 pub mod trace;
 
 pub use cycle::{Cycle, Mode, Phase, Piece};

@@ -29,7 +29,7 @@ pub enum PlanetMesh {
 
 /// The stage at one operating point.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlanetaryState {
+pub(crate) struct PlanetaryState {
     /// [ω_sun, ω_ring, ω_carrier] (rad/s, signed about +z).
     pub speeds: [f64; 3],
     pub torques: MemberTorques,
@@ -48,7 +48,7 @@ pub struct PlanetaryState {
 /// The stage when the member on place `driving` puts `torque` (N·m, > 0) into it, the places
 /// turning at `places` (rad/s, signed); `mesh` gives a mesh's efficiency at the pinion's torque
 /// and speed.
-pub fn planetary_state(
+pub(crate) fn planetary_state(
     layout: &PlanetaryLayout,
     driving: usize,
     torque: f64,

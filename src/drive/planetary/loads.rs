@@ -35,7 +35,7 @@ pub struct PlanetForces {
 
 /// The lossless external torques [T_sun, T_ring, T_carrier] when place `driving` puts `torque`
 /// (N·m, > 0) in at `speeds` ([ω_sun, ω_ring, ω_carrier]).
-pub fn lossless_torques(layout: &PlanetaryLayout, driving: usize, torque: f64, speeds: [f64; 3]) -> [f64; 3] {
+pub(crate) fn lossless_torques(layout: &PlanetaryLayout, driving: usize, torque: f64, speeds: [f64; 3]) -> [f64; 3] {
     let member = layout.members[driving];
     let i0 = stationary_ratio(layout.teeth[0], layout.teeth[2]);
     member_torques(i0, 1.0, (member, torque * speeds[member.index()].signum()), speeds).torques
@@ -43,7 +43,12 @@ pub fn lossless_torques(layout: &PlanetaryLayout, driving: usize, torque: f64, s
 
 /// The forces of a planet that carries 1/`divisor` of the sun's torque (1/n with equal sharing),
 /// at the torques `torques` and speeds `speeds`.
-pub fn planet_forces(layout: &PlanetaryLayout, torques: [f64; 3], speeds: [f64; 3], divisor: f64) -> PlanetForces {
+pub(crate) fn planet_forces(
+    layout: &PlanetaryLayout,
+    torques: [f64; 3],
+    speeds: [f64; 3],
+    divisor: f64,
+) -> PlanetForces {
     let r = layout.working_pitch_radius;
     let f_sun = torques[0].abs() / (divisor * r[0]);
     let f_ring = torques[1].abs() / (divisor * r[3]);
@@ -58,7 +63,7 @@ pub fn planet_forces(layout: &PlanetaryLayout, torques: [f64; 3], speeds: [f64; 
 
 /// The forces on the stage's members that sit on shafts, one per planet and member, when place
 /// `driving` puts `torque` in at the places' speeds `places`.
-pub fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64, places: [f64; 2]) -> Vec<GearLoad> {
+pub(crate) fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64, places: [f64; 2]) -> Vec<GearLoad> {
     let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
     let speeds = layout.member_speeds(places);
     let t = lossless_torques(layout, driving, torque, speeds);

@@ -4,10 +4,10 @@
 //! [`super::kinematics::planetary`] entry; what the walk charges for it is
 //! [`super::planetary_charges`].
 
-pub mod flow;
-pub mod loads;
-pub mod point;
+pub(crate) mod flow;
+pub(crate) mod loads;
+pub(crate) mod point;
 
-pub use crate::drive::kinematics::planetary::PlanetaryLayout;
-pub use flow::{planetary_state, PlanetMesh, PlanetaryState};
-pub use point::PlanetaryPoint;
+pub(crate) use crate::drive::kinematics::planetary::PlanetaryLayout;
+pub(crate) use flow::{PlanetMesh, PlanetaryState};
+pub(crate) use point::PlanetaryPoint;

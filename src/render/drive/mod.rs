@@ -7,7 +7,7 @@ pub(crate) mod cycle;
 pub(crate) mod cycle_plots;
 pub(crate) mod loss_map;
 pub(crate) mod markdown;
-pub mod oil_sweep;
+pub(crate) mod oil_sweep;
 pub(crate) mod planetary;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
@@ -19,7 +19,7 @@ use crate::render::RenderedReport;
 use crate::report::drive::DriveReport;
 
 /// report.json of a drive: pretty, plain arrays on one line.
-pub fn render_drive_json(report: &DriveReport) -> String {
+pub(crate) fn render_drive_json(report: &DriveReport) -> String {
     let pretty = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
     let mut s = crate::render::inline_plain_arrays(&pretty);
     s.push('\n');
@@ -27,7 +27,7 @@ pub fn render_drive_json(report: &DriveReport) -> String {
 }
 
 /// Every file of a drive's report folder.
-pub fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
+pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, String> {
     let mut files = vec![
         ("report.md".to_string(), markdown::render_drive_markdown(report)),
         ("report.json".to_string(), render_drive_json(report)),

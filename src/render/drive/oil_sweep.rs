@@ -7,7 +7,7 @@ use crate::render::table::{fixed, header, row};
 use crate::report::drive_oil_sweep::DriveOilSweepReport;
 
 /// report.md and report.json of the comparison.
-pub fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, String)> {
+pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, String)> {
     let mut out = String::new();
     md!(out, "# {} — oil temperatures\n", r.title);
     md!(
