@@ -81,7 +81,10 @@ pub(super) fn lower_drive_scene(
     let cycle = super::lower_vehicle::cycle_of_scene(cycle_blocks, analyses.drive_cycle, base_dir, errors);
     if let (Some(c), Some((op, _)), Some(_)) = (&cycle, &operating, analyses.drive_cycle) {
         let transient = housing.as_ref().is_some_and(|h| h.heat_capacity.is_some());
-        if !transient && op.oil_temperature.is_none() && op.oil_temperatures.is_none() {
+        // (An `oil_temperature` written but refused has its own error.)
+        let written =
+            singles.get("operating").is_some_and(|b| b.items.iter().any(|i| i.head().text == "oil_temperature"));
+        if !transient && !written && op.oil_temperature.is_none() && op.oil_temperatures.is_none() {
             errors.push(
                 Diagnostic::new(DiagnosticKind::MissingKey, c.span, "the drive cycle needs the oil's temperature")
                     .hint("give `oil_temperature = 80 degC` in `operating` (held over the cycle), or the housing's `heat_capacity` (the sump then follows the cycle)"),

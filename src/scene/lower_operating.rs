@@ -129,6 +129,18 @@ pub(super) fn oil_temperatures(
     let Some((_, value)) = f.values.get("oil_temperature") else {
         return (None, None);
     };
+    // (One pair's `equilibrium` is read before this; here it is a drive's, which has none.)
+    if matches!(&value.kind, ValueKind::Call(c) if c.name.text == "equilibrium") {
+        errors.push(
+            Diagnostic::new(
+                DiagnosticKind::OutOfRange,
+                value.span,
+                "`oil_temperature = equilibrium` is one pair's alone: a drive (also one pair on a drive cycle) is evaluated at a given oil temperature",
+            )
+            .hint("write `oil_temperature = 80 degC`, and add `thermal_balance` to `analyses` for each point's balance θ* (or give the housing a `heat_capacity`: the sump then follows the drive cycle)"),
+        );
+        return (None, None);
+    }
     if !matches!(value.kind, ValueKind::List { .. } | ValueKind::Range { .. }) {
         return (positive(f.optional("oil_temperature", errors), "oil_temperature", errors), None);
     }

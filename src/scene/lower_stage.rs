@@ -110,7 +110,7 @@ pub(super) fn lower_stage(
             .map_or(pair_block.kind.span, |k| k.span);
         errors.push(
             Diagnostic::new(DiagnosticKind::OutOfRange, span, "an internal pair (`mesh = internal`) is not a stage of a drive in this version")
-                .hint("a ring gear turns in a drive as a planetary stage's `ring` (`planetary { ... ring { teeth = 72  shaft = housing } ... }`); study an internal pair alone in a scene with a `gears` block"),
+                .hint("a ring gear turns in a drive as a planetary stage's `ring` (`planetary { ... ring { teeth = 72  shaft = housing } ... }`); study an internal pair alone in a scene with a `gears` block and no vehicle (one pair with a vehicle runs as a drive's stage)"),
         );
         return None;
     }

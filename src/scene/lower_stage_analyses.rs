@@ -77,7 +77,7 @@ pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Dia
                 asked,
                 "the analyses of one pair run on each stage at the drive's operating points, and this scene gives none",
             )
-            .hint("add `output_torque = [150] N*m` and `output_speed = [1000] rpm` to `operating` (the drive cycle keeps its own)"),
+            .hint("add `output_torque = [150] N*m` and `output_speed = [1000] rpm` to `operating` (one pair on a drive cycle: `pinion_torque` and `pinion_speed`); the drive cycle keeps its own"),
         );
     }
     if !i.lubricant_failed {
