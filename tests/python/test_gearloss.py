@@ -34,14 +34,18 @@ def scene(path):
 
 @pytest.mark.parametrize("path", SPECS, ids=lambda p: p.name)
 def test_every_spec_gives_the_cli_report(path):
-    """`run(...).data` is the CLI's report.json and `.records` its records.csv, for every scene."""
+    """`run(...).data` is the CLI's report.json and `.records` its records.csv (a drive's
+    drive_records.csv), for every scene."""
     report = gearloss.run(scene(path))
     folder = ROOT / "reports" / report.name
     assert json.loads((folder / "report.json").read_text()) == report.data
     if (folder / "records.csv").exists():
         pandas.testing.assert_frame_equal(report.records, pandas.read_csv(folder / "records.csv"))
+    elif (folder / "drive_records.csv").exists():
+        # A drive's records are its drive_records.csv.
+        pandas.testing.assert_frame_equal(report.records, pandas.read_csv(folder / "drive_records.csv"))
     else:
-        # A drive's report (or one at several oil temperatures) has no pair records: asking says so.
+        # A report at several oil temperatures has its records in each run: asking says so.
         with pytest.raises(LookupError):
             report.records
     assert report.markdown() == (folder / "report.md").read_text()
@@ -544,10 +548,26 @@ def test_tables_of_the_other_kind_of_report_raise_lookup_error():
     for table in ("drive_records", "stages", "shafts", "bearings", "planetary", "cycle"):
         with pytest.raises(LookupError, match="its tables are records"):
             getattr(pair, table)
-    for table in ("records", "efficiency", "budget", "dynamics"):
-        with pytest.raises(LookupError, match="its tables are drive_records"):
+    for table in ("efficiency", "budget", "dynamics"):
+        with pytest.raises(LookupError, match="its tables are records, drive_records"):
             getattr(drive, table)
     assert len(drive.stages) > 0 and len(pair.efficiency) > 0
+    # `records` serves every report: a drive's are its drive_records.
+    pandas.testing.assert_frame_equal(drive.records, drive.drive_records)
+
+
+def test_one_pair_on_a_drive_cycle_is_a_one_stage_drive():
+    """One pair with a vehicle runs as its one-stage drive: its records are a drive's (stage `pair`
+    from `pinion_shaft` to `wheel_shaft`), its cycle a table, and its four points' P_in are
+    T_in ω_in as written (1e-9)."""
+    report = gearloss.run(scene(ROOT / "tests/specs/ok/cycle_pair_udds.gear"))
+    records = report.records
+    assert len(records) == 4 and set(report.stages["stage"]) == {"pair"}
+    assert set(report.shafts["shaft"]) == {"pinion_shaft", "wheel_shaft"}
+    for _, r in records.iterrows():
+        p_in = r["input_torque_N_m"] * r["input_speed_rpm"] * 3.141592653589793 / 30.0
+        assert abs(p_in - r["input_power_W"]) <= 1e-9 * abs(p_in)
+    assert len(report.cycle) > 1000
 
 
 def test_from_folder_of_a_missing_or_foreign_folder(tmp_path):

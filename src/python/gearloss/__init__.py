@@ -276,9 +276,13 @@ class Report:
     def records(self):
         """The records as a pandas DataFrame (every operating point, every law and formulation):
         ``records.csv``, or ``records.parquet`` when the run wrote Parquet only (the same columns
-        and values, then each law parameter's ``param_…`` column; reading it needs pyarrow)."""
+        and values, then each law parameter's ``param_…`` column; reading it needs pyarrow). Of a
+        drive (one pair on a drive cycle included, which runs as its one-stage drive) its rows,
+        :attr:`drive_records`."""
         import pandas
 
+        if self._shape() == "drive":
+            return self.drive_records
         self._table_of("records", "pair")
         if "records.csv" in self._files:
             return pandas.read_csv(self._source("records.csv"))
@@ -431,7 +435,7 @@ class Report:
 _SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
 _TABLES = {
     "pair": ("records", "efficiency", "budget", "dynamics"),
-    "drive": ("drive_records", "stages", "shafts", "bearings", "planetary", "cycle"),
+    "drive": ("records", "drive_records", "stages", "shafts", "bearings", "planetary", "cycle"),
     "runs": ("runs",),
 }
 
