@@ -6,7 +6,7 @@
 use rayon::prelude::*;
 
 use super::drive_setup::DriveSetup;
-use crate::drive::{DriveOperating, EndValue};
+use crate::drive::DriveOperating;
 use crate::efficiency::Formulation;
 
 /// One cell of a drive's map under one law and formulation.
@@ -34,21 +34,16 @@ pub(crate) fn map_cells(
     ends: DriveOperating,
 ) -> Vec<DriveMapCell> {
     let formulations = setup.formulations();
-    let per_point = setup.rows_per_point();
-    (0..torques.len() * speeds.len() * per_point)
+    (0..torques.len() * speeds.len() * setup.rows_per_point())
         .into_par_iter()
         .map(|i| {
-            let (point, rest) = (i / per_point, i % per_point);
-            let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
-            let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
-            let torque = EndValue { at: ends.torque_at, value: torques[torque_index] };
-            let speed = EndValue { at: ends.speed_at, value: speeds[speed_index] };
-            let p = setup.point(law_index, formulations[f], torque, speed);
+            let c = setup.grid_cell(i, (torques, speeds), ends, &formulations);
+            let p = setup.point(c.law_index, c.formulation, c.torque, c.speed);
             DriveMapCell {
-                torque_index,
-                speed_index,
-                law_index,
-                formulation: formulations[f],
+                torque_index: c.torque_index,
+                speed_index: c.speed_index,
+                law_index: c.law_index,
+                formulation: c.formulation,
                 efficiency: p.efficiency,
                 power_lost: p.power_lost(),
                 both_ends_deliver: p.both_ends_deliver,

@@ -305,25 +305,53 @@ impl<'a> DriveSetup<'a> {
         range: std::ops::Range<usize>,
     ) -> Vec<DriveRow> {
         let formulations = self.formulations();
-        let per_point = self.rows_per_point();
         range
             .into_par_iter()
             .map(|i| {
-                let (point, rest) = (i / per_point, i % per_point);
-                let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
-                let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
-                let torque = EndValue { at: ends.torque_at, value: torques[torque_index] };
-                let speed = EndValue { at: ends.speed_at, value: speeds[speed_index] };
+                let c = self.grid_cell(i, (torques, speeds), ends, &formulations);
                 DriveRow {
-                    torque_index,
-                    speed_index,
-                    law_index,
-                    formulation: formulations[f],
-                    point: self.point(law_index, formulations[f], torque, speed),
+                    torque_index: c.torque_index,
+                    speed_index: c.speed_index,
+                    law_index: c.law_index,
+                    formulation: c.formulation,
+                    point: self.point(c.law_index, c.formulation, c.torque, c.speed),
                 }
             })
             .collect()
     }
+
+    /// The grid's `i`-th row (torque-major, then law, then formulation): its indices and the ends'
+    /// values it is evaluated at.
+    pub(crate) fn grid_cell(
+        &self,
+        i: usize,
+        (torques, speeds): (&[f64], &[f64]),
+        ends: crate::drive::DriveOperating,
+        formulations: &[Formulation],
+    ) -> GridCell {
+        let per_point = self.rows_per_point();
+        let (point, rest) = (i / per_point, i % per_point);
+        let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
+        let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
+        GridCell {
+            torque_index,
+            speed_index,
+            law_index,
+            formulation: formulations[f],
+            torque: EndValue { at: ends.torque_at, value: torques[torque_index] },
+            speed: EndValue { at: ends.speed_at, value: speeds[speed_index] },
+        }
+    }
+}
+
+/// One row of a grid: its torque, speed and law indices, its formulation and the ends' values.
+pub(crate) struct GridCell {
+    pub(crate) torque_index: usize,
+    pub(crate) speed_index: usize,
+    pub(crate) law_index: usize,
+    pub(crate) formulation: Formulation,
+    pub(crate) torque: EndValue,
+    pub(crate) speed: EndValue,
 }
 
 /// A law's validity at [`VALIDITY_SAMPLES`] contacts evenly from A to E of a mesh.
