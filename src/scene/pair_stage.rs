@@ -19,6 +19,8 @@ use super::ast::*;
 
 /// The stage's name in the drive a one-pair scene is.
 pub(crate) const STAGE: &str = "pair";
+/// The pair's shaft blocks in `gearbox`, which become the drive's shafts of these names.
+const SHAFTS: [&str; 2] = ["pinion_shaft", "wheel_shaft"];
 
 /// Whether the scene is one pair (a `gears` block, no `stage`) that puts a vehicle on a drive cycle:
 /// then it is lowered as the one-stage drive [`as_one_stage`] writes.
@@ -104,7 +106,7 @@ fn stage(gears: &Block, lubrication: Option<Item>) -> Block {
 /// `gearbox { shaft pinion_shaft { input ... }  shaft wheel_shaft { output ... }  housing { ... } }`.
 fn gearbox(block: &Block) -> Block {
     let mut items: Vec<Item> = Vec::with_capacity(block.items.len() + 2);
-    for (shaft, end) in [("pinion_shaft", "input"), ("wheel_shaft", "output")] {
+    for (shaft, end) in SHAFTS.into_iter().zip(["input", "output"]) {
         let written = block.items.iter().find_map(|i| match i {
             Item::Block(b) if b.kind.text == shaft => Some(b),
             _ => None,
@@ -125,7 +127,10 @@ fn gearbox(block: &Block) -> Block {
         block
             .items
             .iter()
-            .filter(|i| !is_key(i, "lubrication") && !matches!(i, Item::Block(b) if b.kind.text.ends_with("_shaft")))
+            // (Any other block stays, for the drive's gearbox to refuse at its name.)
+            .filter(|i| {
+                !is_key(i, "lubrication") && !matches!(i, Item::Block(b) if SHAFTS.contains(&b.kind.text.as_str()))
+            })
             .cloned(),
     );
     Block { items, ..block.clone() }
