@@ -14,8 +14,9 @@ fn place_at(position: Option<f64>) -> String {
         .map_or_else(|| "without `at`".into(), |x| format!("at {} mm", crate::numerics::rounding::fixed(x * 1e3, 2)))
 }
 
-/// What the reader must know: a shaft whose axial force goes to its first place by default, points
-/// where both ends deliver, a fixed point that did not settle, a bearing beyond its static rating.
+/// What the reader must know: how one pair on a drive cycle was read as its one-stage drive, a
+/// shaft whose axial force goes to its first place by default, points where both ends deliver, a
+/// fixed point that did not settle, a bearing beyond its static rating.
 pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<Finding> {
     let layout = &drive.layout;
     let mut out = Vec::new();
