@@ -150,6 +150,9 @@ pub struct DriveReport {
     /// keeps rad/s, and rpm in the fields so named); left out when rpm.
     #[serde(default = "DisplayUnit::rpm", skip_serializing_if = "DisplayUnit::is_rpm")]
     pub speed_unit: DisplayUnit,
+    /// The unit the scene wrote its torques in, likewise (report.json keeps N·m); left out when N·m.
+    #[serde(default = "DisplayUnit::newton_metre", skip_serializing_if = "DisplayUnit::is_newton_metre")]
+    pub torque_unit: DisplayUnit,
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
     /// The housing as a thermal node (what, value, unit) and each point's balance.
@@ -207,6 +210,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
         speed_unit: speed_unit(scene),
+        torque_unit: torque_unit(scene),
         findings: super::drive_findings::findings(drive, &points),
         maps: maps(scene, eval, &laws),
         housing: scene
@@ -357,6 +361,17 @@ fn speed_unit(scene: &Scene) -> DisplayUnit {
     let op = &scene.operating.pinion_speed;
     let map = scene.analyses.efficiency_map.as_ref().map(|(_, s)| s);
     [Some(op), map].into_iter().flatten().find(|s| !s.values.is_empty()).map_or_else(DisplayUnit::rpm, DisplayUnit::of)
+}
+
+/// The unit the scene wrote its torques in: its operating points', else its map's, else N·m.
+fn torque_unit(scene: &Scene) -> DisplayUnit {
+    let op = &scene.operating.pinion_torque;
+    let map = scene.analyses.efficiency_map.as_ref().map(|(t, _)| t);
+    [Some(op), map]
+        .into_iter()
+        .flatten()
+        .find(|t| !t.values.is_empty())
+        .map_or_else(DisplayUnit::newton_metre, DisplayUnit::of)
 }
 
 /// The maps, one per law and formulation.

@@ -108,6 +108,11 @@ impl DisplayUnit {
         DisplayUnit { name: "N*m".into(), factor: 1.0 }
     }
 
+    /// Whether this is N·m (a drive's report then leaves its torque unit out of report.json).
+    pub fn is_newton_metre(&self) -> bool {
+        self.name == "N*m"
+    }
+
     /// rpm, the speed unit of drive reports written before speeds were shown as written.
     pub fn rpm() -> DisplayUnit {
         DisplayUnit { name: "rpm".into(), factor: std::f64::consts::PI / 30.0 }

@@ -7,7 +7,8 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row, sig};
 use crate::report::drive_cycle::{CycleTotals, DriveCycleReport};
 
-pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport, n: super::speed::Speed) {
+pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport, u: super::shown_units::Shown) {
+    let (n, t) = (u.speed, u.torque);
     let w = &c.whole;
     md!(out, "## Drive cycle \"{}\": {}\n", c.name, c.vehicle);
     md!(
@@ -50,10 +51,12 @@ pub(crate) fn cycle(out: &mut String, c: &DriveCycleReport, n: super::speed::Spe
     );
     md!(
         out,
-        "Peaks (located on each piece: its ends and the vertex of the force's quadratic): wheel torque {} N·m at {} s, in recuperation {} N·m at {} s; motor speed {} {} at {} s (v = {} km/h).\n",
-        fixed(c.peak_wheel_torque.value, 1),
+        "Peaks (located on each piece: its ends and the vertex of the force's quadratic): wheel torque {} {} at {} s, in recuperation {} {} at {} s; motor speed {} {} at {} s (v = {} km/h).\n",
+        fixed(t.of_si(c.peak_wheel_torque.value), 1),
+        t.unit(),
         fixed(c.peak_wheel_torque.time_s, 2),
-        fixed(c.peak_recuperation_torque.value, 1),
+        fixed(t.of_si(c.peak_recuperation_torque.value), 1),
+        t.unit(),
         fixed(c.peak_recuperation_torque.time_s, 2),
         fixed(n.of_rpm(c.peak_motor_speed_rpm.value), 0),
         n.unit(),

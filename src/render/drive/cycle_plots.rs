@@ -101,9 +101,10 @@ pub(crate) fn trace(title: &str, c: &DriveCycleReport) -> Result<String, String>
 /// over the upper nine tenths of the values, the iso-lines labelled, a colour bar), every cell
 /// shown (η falls to 0 at zero torque, where no power passes: the lowest band), and the time the
 /// cycle spends at each cell as red circles.
-pub(crate) fn map(title: &str, c: &DriveCycleReport, n: super::speed::Speed) -> Result<String, String> {
+pub(crate) fn map(title: &str, c: &DriveCycleReport, u: super::shown_units::Shown) -> Result<String, String> {
     let m = &c.map;
-    let speeds: Vec<f64> = m.speeds_rpm.iter().map(|x| n.of_rpm(*x)).collect();
+    let speeds: Vec<f64> = m.speeds_rpm.iter().map(|x| u.speed.of_rpm(*x)).collect();
+    let torques: Vec<f64> = m.torques.iter().map(|x| u.torque.of_si(*x)).collect();
     let eta: Vec<Vec<f64>> = m
         .efficiency
         .iter()
@@ -113,7 +114,7 @@ pub(crate) fn map(title: &str, c: &DriveCycleReport, n: super::speed::Speed) -> 
     for (t, row) in m.seconds.iter().enumerate() {
         for (s, secs) in row.iter().enumerate() {
             if *secs > 0.0 {
-                marks.push((speeds[s], m.torques[t], *secs));
+                marks.push((speeds[s], torques[t], *secs));
             }
         }
     }
@@ -127,12 +128,13 @@ pub(crate) fn map(title: &str, c: &DriveCycleReport, n: super::speed::Speed) -> 
             let field = Field {
                 title: "η, ○ time spent at each cell".into(),
                 speeds: &speeds,
-                torques: &m.torques,
+                torques: &torques,
                 values: eta,
                 unit: "%",
             };
-            let x_label = format!("output speed ({})", n.unit());
-            let axes = (x_label.as_str(), "output torque (N·m; < 0: recuperation)");
+            let x_label = format!("output speed ({})", u.speed.unit());
+            let y_label = format!("output torque ({}; < 0: recuperation)", u.torque.unit());
+            let axes = (x_label.as_str(), y_label.as_str());
             draw_field(&root, &field, axes, (&[], &marks))?;
         }
         root.present().map_err(|e| e.to_string())?;

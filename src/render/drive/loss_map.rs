@@ -10,7 +10,7 @@ use plotters::prelude::*;
 use crate::render::svg::{draw_field, fitted, Field};
 use crate::report::drive::DriveReport;
 
-use super::speed::Speed;
+use super::shown_units::Shown;
 
 /// The map's file.
 pub(crate) const FILE: &str = "loss_map.svg";
@@ -29,29 +29,30 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
         let title = format!("{}: total loss and efficiency, drive (T > 0) and coast (T < 0)", r.title);
         let root = root.titled(&title, ("sans-serif", fitted(&title, WIDTH, 18.0))).map_err(|e| e.to_string())?;
         let areas = root.split_evenly((rows as usize, 2));
-        let n = Speed(&r.speed_unit);
+        let Shown { speed: n, torque: t } = Shown::of(r);
         for (k, m) in maps.iter().enumerate() {
             let x_label = format!("{} speed ({})", m.speed_at.name(), n.unit());
             let speeds: Vec<f64> = m.speeds_rpm.iter().map(|x| n.of_rpm(*x)).collect();
-            let y_label = format!("{} torque (N·m; < 0: coast)", m.torque_at.name());
+            let y_label = format!("{} torque ({}; < 0: coast)", m.torque_at.name(), t.unit());
+            let torques: Vec<f64> = m.torques.iter().map(|x| t.of_si(*x)).collect();
             // η is 0 where no power goes through (zero torque, or both ends deliver): the limit
             // of P_out/P_in as the torque falls to zero with the no-load losses still there.
             let eta = m.efficiency.iter().map(|row| row.iter().map(|e| 100.0 * e.max(0.0)).collect()).collect();
             let loss = Field {
                 title: format!("total loss — {} {}", m.law, m.formulation),
                 speeds: &speeds,
-                torques: &m.torques,
+                torques: &torques,
                 values: m.loss.clone(),
                 unit: "W",
             };
             let efficiency = Field {
                 title: format!("η, ○ best located — {} {}", m.law, m.formulation),
                 speeds: &speeds,
-                torques: &m.torques,
+                torques: &torques,
                 values: eta,
                 unit: "%",
             };
-            let best: Vec<(f64, f64)> = m.best.iter().map(|b| (n.of_rpm(b.speed_rpm), b.torque)).collect();
+            let best: Vec<(f64, f64)> = m.best.iter().map(|b| (n.of_rpm(b.speed_rpm), t.of_si(b.torque))).collect();
             if m.speeds_rpm.len() < 2 || m.torques.len() < 2 {
                 continue;
             }

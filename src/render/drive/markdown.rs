@@ -6,7 +6,7 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
 
-use super::speed::Speed;
+use super::shown_units::{Shown, Speed};
 
 pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     let mut out = String::new();
@@ -49,13 +49,13 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     thermal(&mut out, r);
     duty(&mut out, r);
     if let Some(c) = &r.cycle {
-        super::cycle::cycle(&mut out, c, Speed(&r.speed_unit));
+        super::cycle::cycle(&mut out, c, Shown::of(r));
     }
     if !r.points.is_empty() {
         md!(out, "## Operating points\n");
     }
     for p in &r.points {
-        super::point_tables::point(&mut out, p, Speed(&r.speed_unit));
+        super::point_tables::point(&mut out, p, Shown::of(r));
     }
     super::stage_pairs::section(&mut out, r);
     if !r.maps.is_empty() {
@@ -66,7 +66,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
             &[
                 "law",
                 "formulation",
-                "torques (N·m)",
+                &format!("torques ({})", Shown::of(r).torque.unit()),
                 &format!("speeds ({})", Speed(&r.speed_unit).unit()),
                 "least η of the grid points (drive)",
                 "most loss of the grid points (W)",
@@ -89,8 +89,8 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                     m.formulation.clone(),
                     format!(
                         "{} … {} ({})",
-                        fixed(m.torques[0], 1),
-                        fixed(m.torques[m.torques.len() - 1], 1),
+                        fixed(Shown::of(r).torque.of_si(m.torques[0]), 1),
+                        fixed(Shown::of(r).torque.of_si(m.torques[m.torques.len() - 1]), 1),
                         m.torques.len()
                     ),
                     format!(
@@ -114,10 +114,10 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                     "law",
                     "formulation",
                     "half",
-                    "torque (N·m)",
+                    &format!("torque ({})", Shown::of(r).torque.unit()),
                     &format!("speed ({})", Speed(&r.speed_unit).unit()),
                     "η",
-                    &format!("grid's best (N·m, {}, η)", Speed(&r.speed_unit).unit()),
+                    &format!("grid's best ({}, {}, η)", Shown::of(r).torque.unit(), Speed(&r.speed_unit).unit()),
                     "drives solved",
                 ],
             );
@@ -129,12 +129,12 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
                             m.law.clone(),
                             m.formulation.clone(),
                             b.flow.clone(),
-                            fixed(b.torque, 3),
+                            fixed(Shown::of(r).torque.of_si(b.torque), 3),
                             fixed(Speed(&r.speed_unit).of_rpm(b.speed_rpm), 3),
                             format!("{} %", fixed(100.0 * b.efficiency, 4)),
                             format!(
                                 "{}, {}, {} %",
-                                fixed(b.grid_torque, 1),
+                                fixed(Shown::of(r).torque.of_si(b.grid_torque), 1),
                                 fixed(Speed(&r.speed_unit).of_rpm(b.grid_speed_rpm), 1),
                                 fixed(100.0 * b.grid_efficiency, 4)
                             ),
@@ -159,10 +159,10 @@ fn headline(out: &mut String, r: &DriveReport) {
             "law",
             "formulation",
             "flow",
-            "T_in (N·m)",
+            &format!("T_in ({})", Shown::of(r).torque.unit()),
             &format!("n_in ({})", Speed(&r.speed_unit).unit()),
             "P_in (W)",
-            "T_out (N·m)",
+            &format!("T_out ({})", Shown::of(r).torque.unit()),
             &format!("n_out ({})", Speed(&r.speed_unit).unit()),
             "P_out (W)",
             "meshes (W)",
@@ -184,10 +184,10 @@ fn headline(out: &mut String, r: &DriveReport) {
                 p.law.clone(),
                 p.formulation.clone(),
                 d.flow.name().to_string(),
-                fixed(d.input_torque, 4),
+                fixed(Shown::of(r).torque.of_si(d.input_torque), 4),
                 fixed(Speed(&r.speed_unit).of_rad_s(d.input_speed), 2),
                 fixed(d.input_power, 2),
-                fixed(d.output_torque, 4),
+                fixed(Shown::of(r).torque.of_si(d.output_torque), 4),
                 fixed(Speed(&r.speed_unit).of_rad_s(d.output_speed), 2),
                 fixed(d.output_power, 2),
                 fixed(l.meshes, 3),
@@ -311,7 +311,16 @@ fn thermal(out: &mut String, r: &DriveReport) {
     md!(out);
     header(
         out,
-        &["point", "law", "formulation", "θ* (°C)", "P_V(θ*) (W)", "P_Q(θ*) (W)", "the sump", "thermal rating (N·m)"],
+        &[
+            "point",
+            "law",
+            "formulation",
+            "θ* (°C)",
+            "P_V(θ*) (W)",
+            "P_Q(θ*) (W)",
+            "the sump",
+            &format!("thermal rating ({})", Shown::of(r).torque.unit()),
+        ],
     );
     let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
     for b in &r.thermal {
@@ -325,7 +334,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
                 opt(b.loss, 3),
                 opt(b.dissipation, 3),
                 b.status.clone(),
-                opt(b.rating, 2),
+                opt(b.rating.map(|t| Shown::of(r).torque.of_si(t)), 2),
             ],
         );
     }

@@ -12,7 +12,7 @@ pub(crate) mod planetary;
 pub(crate) mod point_tables;
 pub(crate) mod power_flow;
 pub(crate) mod shaft_bending;
-pub(crate) mod speed;
+pub(crate) mod shown_units;
 pub(crate) mod stage_pairs;
 
 use crate::render::RenderedReport;
@@ -47,7 +47,7 @@ pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, Strin
         if !c.map.torques.is_empty() {
             files.push((
                 cycle_plots::MAP_FILE.to_string(),
-                cycle_plots::map(&report.title, c, speed::Speed(&report.speed_unit))?,
+                cycle_plots::map(&report.title, c, shown_units::Shown::of(report))?,
             ));
         }
     }

@@ -7,7 +7,7 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_inputs::StageInputs;
 
-use super::speed::Speed;
+use super::shown_units::Shown;
 
 /// The planetary stages' inputs, after the stages' table.
 pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
@@ -61,7 +61,8 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
 }
 
 /// Each planetary stage at one operating point.
-pub(crate) fn point(out: &mut String, d: &DrivePoint, n: Speed) {
+pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
+    let (n, t) = (u.speed, u.torque);
     for s in &d.stages {
         let Some(p) = &s.planetary else { continue };
         md!(
@@ -76,7 +77,10 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, n: Speed) {
             fixed(100.0 * p.basic_efficiency, 5),
             fixed(100.0 * p.efficiency, 5)
         );
-        header(out, &["member", &format!("n ({}, + ccw)", n.unit()), "T (N·m, on the member)", "P in (W)"]);
+        header(
+            out,
+            &["member", &format!("n ({}, + ccw)", n.unit()), &format!("T ({}, on the member)", t.unit()), "P in (W)"],
+        );
         for m in crate::drive::kinematics::planetary::PlanetaryMember::ALL {
             let i = m.index();
             row(
@@ -84,7 +88,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, n: Speed) {
                 &[
                     m.name().into(),
                     fixed(n.of_rad_s(p.speeds[i]), 3),
-                    fixed(p.torques[i], 4),
+                    fixed(t.of_si(p.torques[i]), 4),
                     fixed(p.torques[i] * p.speeds[i], 3),
                 ],
             );
@@ -94,7 +98,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, n: Speed) {
             out,
             &[
                 "mesh",
-                "pinion T per planet (N·m)",
+                &format!("pinion T per planet ({})", t.unit()),
                 &format!("n in the carrier's frame ({})", n.unit()),
                 "η (%)",
                 "loss, all planets (W)",
@@ -105,7 +109,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, n: Speed) {
                 out,
                 &[
                     (*name).into(),
-                    fixed(p.mesh_torque[i], 4),
+                    fixed(t.of_si(p.mesh_torque[i]), 4),
                     fixed(n.of_rad_s(p.mesh_speed[i]), 3),
                     fixed(100.0 * p.mesh_efficiency[i], 5),
                     fixed(p.mesh_loss[i], 3),

@@ -7,9 +7,10 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DrivePointReport;
 
-use super::speed::Speed;
+use super::shown_units::Shown;
 
-pub(crate) fn point(out: &mut String, p: &DrivePointReport, n: Speed) {
+pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
+    let (n, t) = (u.speed, u.torque);
     let d = &p.point;
     md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
     md!(
@@ -35,8 +36,8 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, n: Speed) {
         &[
             "stage",
             "driving",
-            "T driving (N·m)",
-            "T driven (N·m)",
+            &format!("T driving ({})", t.unit()),
+            &format!("T driven ({})", t.unit()),
             &format!("n driving ({})", n.unit()),
             "F_t (N)",
             "F_r (N)",
@@ -54,8 +55,8 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, n: Speed) {
             &[
                 s.name.clone(),
                 s.member_name(s.driving).to_string(),
-                fixed(s.driving_torque, 4),
-                fixed(s.driven_torque, 4),
+                fixed(t.of_si(s.driving_torque), 4),
+                fixed(t.of_si(s.driven_torque), 4),
                 fixed(n.of_rad_s(s.driving_speed), 2),
                 fixed(s.tangential_force, 2),
                 fixed(s.radial_force, 2),
@@ -68,14 +69,14 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, n: Speed) {
         );
     }
     md!(out);
-    super::planetary::point(out, d, n);
+    super::planetary::point(out, d, u);
     header(
         out,
         &[
             "shaft",
             &format!("n ({}, + ccw)", n.unit()),
-            "T received (N·m)",
-            "T passed (N·m)",
+            &format!("T received ({})", t.unit()),
+            &format!("T passed ({})", t.unit()),
             "P received (W)",
             "P passed (W)",
             "bearings (W)",
@@ -90,8 +91,8 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, n: Speed) {
             &[
                 s.name.clone(),
                 fixed(n.of_rad_s(s.speed), 2),
-                fixed(s.received_torque, 4),
-                fixed(s.passed_torque, 4),
+                fixed(t.of_si(s.received_torque), 4),
+                fixed(t.of_si(s.passed_torque), 4),
                 fixed(s.received_power, 3),
                 fixed(s.passed_power, 3),
                 fixed(0.0 + bearings, 3),
