@@ -10,7 +10,7 @@ use super::finding::{Finding, Severity};
 use super::number::DisplayUnit;
 use crate::drive::ShaftEnd;
 use crate::evaluate::drive::{DriveEvaluation, DriveRow};
-use crate::model::{Scene, SceneDrive};
+use crate::model::{Scene, SceneDrive, Sweep};
 
 pub use super::drive_point::DrivePointReport;
 
@@ -154,6 +154,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 .collect(),
         })
         .collect();
+    let map = scene.analyses.efficiency_map.as_ref();
     let mut report = DriveReport {
         title: scene.title.clone(),
         slug: super::slug::slug(&scene.title),
@@ -171,8 +172,8 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         first_unsettled: eval.tally.first_unsettled.map(|i| row_words(scene, drive, &laws, i)),
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
-        speed_unit: speed_unit(scene),
-        torque_unit: torque_unit(scene),
+        speed_unit: unit_written(&scene.operating.pinion_speed, map.map(|m| &m.1), DisplayUnit::rpm),
+        torque_unit: unit_written(&scene.operating.pinion_torque, map.map(|m| &m.0), DisplayUnit::newton_metre),
         findings: super::drive_findings::findings(drive, &points),
         maps: super::drive_map::maps(scene, eval, &laws),
         housing: scene
@@ -318,20 +319,8 @@ pub(crate) fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize
     )
 }
 
-/// The unit the scene wrote its speeds in: its operating points', else its map's, else rpm.
-fn speed_unit(scene: &Scene) -> DisplayUnit {
-    let op = &scene.operating.pinion_speed;
-    let map = scene.analyses.efficiency_map.as_ref().map(|(_, s)| s);
-    [Some(op), map].into_iter().flatten().find(|s| !s.values.is_empty()).map_or_else(DisplayUnit::rpm, DisplayUnit::of)
-}
-
-/// The unit the scene wrote its torques in: its operating points', else its map's, else N·m.
-fn torque_unit(scene: &Scene) -> DisplayUnit {
-    let op = &scene.operating.pinion_torque;
-    let map = scene.analyses.efficiency_map.as_ref().map(|(t, _)| t);
-    [Some(op), map]
-        .into_iter()
-        .flatten()
-        .find(|t| !t.values.is_empty())
-        .map_or_else(DisplayUnit::newton_metre, DisplayUnit::of)
+/// The unit the scene wrote a quantity in: its operating points' (`op`), else its map's, else
+/// `default`.
+fn unit_written<T>(op: &Sweep<T>, map: Option<&Sweep<T>>, default: fn() -> DisplayUnit) -> DisplayUnit {
+    [Some(op), map].into_iter().flatten().find(|s| !s.values.is_empty()).map_or_else(default, DisplayUnit::of)
 }

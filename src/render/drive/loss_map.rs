@@ -3,11 +3,13 @@
 //! iso-lines labelled and a colour bar per panel (the pair's efficiency map's panels), the bands
 //! spread over the upper nine tenths of the values so that a few cells near zero torque (where η
 //! falls to 0) do not take the whole scale, and each half's located best point ringed on the η
-//! panel.
+//! panel; and report.md's section on the maps ([`section`]).
 
 use plotters::prelude::*;
 
+use crate::render::markup::md;
 use crate::render::svg::{draw_field, fitted, Field};
+use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
 
 use super::shown_units::Shown;
@@ -62,4 +64,97 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
+}
+
+/// report.md's section on the maps: per law and formulation the grid's extent, least η and most loss,
+/// and the best point of each half, located.
+pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
+    if !r.maps.is_empty() {
+        md!(out, "## Loss map\n");
+        md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);
+        header(
+            out,
+            &[
+                "law",
+                "formulation",
+                &format!("torques ({})", u.torque.unit()),
+                &format!("speeds ({})", u.speed.unit()),
+                "least η of the grid points (drive)",
+                "most loss of the grid points (W)",
+                "most passes",
+            ],
+        );
+        for m in &r.maps {
+            let drive_eta = m
+                .efficiency
+                .iter()
+                .zip(&m.torques)
+                .filter(|(_, t)| **t > 0.0)
+                .flat_map(|(row, _)| row.iter().copied())
+                .fold(f64::INFINITY, f64::min);
+            let most = m.loss.iter().flatten().copied().fold(f64::NEG_INFINITY, f64::max);
+            row(
+                out,
+                &[
+                    m.law.clone(),
+                    m.formulation.clone(),
+                    format!(
+                        "{} … {} ({})",
+                        fixed(u.torque.of_si(m.torques[0]), 1),
+                        fixed(u.torque.of_si(m.torques[m.torques.len() - 1]), 1),
+                        m.torques.len()
+                    ),
+                    format!(
+                        "{} … {} ({})",
+                        fixed(u.speed.of_rpm(m.speeds_rpm[0]), 1),
+                        fixed(u.speed.of_rpm(m.speeds_rpm[m.speeds_rpm.len() - 1]), 1),
+                        m.speeds_rpm.len()
+                    ),
+                    format!("{} %", fixed(100.0 * drive_eta, 3)),
+                    fixed(most, 2),
+                    m.most_passes.to_string(),
+                ],
+            );
+        }
+        md!(out, "\nThe grid's cells are the drive solved at the grid points; the least η and most loss above are of those points, not located between them (the map is a picture; the headline's numbers are computed at their points).\n");
+        if r.maps.iter().any(|m| !m.best.is_empty()) {
+            md!(out, "\nThe best point of each half of the map, located: from the half's best grid point, coordinate ascent by golden sections over the box of its neighbours (torques of the half's sign only), each step the drive solved afresh, until a sweep moves the point by less than 1e-7 of the box.\n");
+            header(
+                out,
+                &[
+                    "law",
+                    "formulation",
+                    "half",
+                    &format!("torque ({})", u.torque.unit()),
+                    &format!("speed ({})", u.speed.unit()),
+                    "η",
+                    &format!("grid's best ({}, {}, η)", u.torque.unit(), u.speed.unit()),
+                    "drives solved",
+                ],
+            );
+            for m in &r.maps {
+                for b in &m.best {
+                    row(
+                        out,
+                        &[
+                            m.law.clone(),
+                            m.formulation.clone(),
+                            b.flow.clone(),
+                            fixed(u.torque.of_si(b.torque), 3),
+                            fixed(u.speed.of_rpm(b.speed_rpm), 3),
+                            format!("{} %", fixed(100.0 * b.efficiency, 4)),
+                            format!(
+                                "{}, {}, {} %",
+                                fixed(u.torque.of_si(b.grid_torque), 1),
+                                fixed(u.speed.of_rpm(b.grid_speed_rpm), 1),
+                                fixed(100.0 * b.grid_efficiency, 4)
+                            ),
+                            b.evaluations.to_string(),
+                        ],
+                    );
+                }
+            }
+            md!(out, "");
+        }
+    }
 }

@@ -6,9 +6,10 @@ use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
 
-use super::shown_units::{Shown, Speed};
+use super::shown_units::Shown;
 
 pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
+    let u = Shown::of(r);
     let mut out = String::new();
     md!(out, "# {}\n", r.title);
     md!(
@@ -49,108 +50,22 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     thermal(&mut out, r);
     duty(&mut out, r);
     if let Some(c) = &r.cycle {
-        super::cycle::cycle(&mut out, c, Shown::of(r));
+        super::cycle::cycle(&mut out, c, u);
     }
     if !r.points.is_empty() {
         md!(out, "## Operating points\n");
     }
     for p in &r.points {
-        super::point_tables::point(&mut out, p, Shown::of(r));
+        super::point_tables::point(&mut out, p, u);
     }
     super::stage_pairs::section(&mut out, r);
-    if !r.maps.is_empty() {
-        md!(out, "## Loss map\n");
-        md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);
-        header(
-            &mut out,
-            &[
-                "law",
-                "formulation",
-                &format!("torques ({})", Shown::of(r).torque.unit()),
-                &format!("speeds ({})", Speed(&r.speed_unit).unit()),
-                "least η of the grid points (drive)",
-                "most loss of the grid points (W)",
-                "most passes",
-            ],
-        );
-        for m in &r.maps {
-            let drive_eta = m
-                .efficiency
-                .iter()
-                .zip(&m.torques)
-                .filter(|(_, t)| **t > 0.0)
-                .flat_map(|(row, _)| row.iter().copied())
-                .fold(f64::INFINITY, f64::min);
-            let most = m.loss.iter().flatten().copied().fold(f64::NEG_INFINITY, f64::max);
-            row(
-                &mut out,
-                &[
-                    m.law.clone(),
-                    m.formulation.clone(),
-                    format!(
-                        "{} … {} ({})",
-                        fixed(Shown::of(r).torque.of_si(m.torques[0]), 1),
-                        fixed(Shown::of(r).torque.of_si(m.torques[m.torques.len() - 1]), 1),
-                        m.torques.len()
-                    ),
-                    format!(
-                        "{} … {} ({})",
-                        fixed(Speed(&r.speed_unit).of_rpm(m.speeds_rpm[0]), 1),
-                        fixed(Speed(&r.speed_unit).of_rpm(m.speeds_rpm[m.speeds_rpm.len() - 1]), 1),
-                        m.speeds_rpm.len()
-                    ),
-                    format!("{} %", fixed(100.0 * drive_eta, 3)),
-                    fixed(most, 2),
-                    m.most_passes.to_string(),
-                ],
-            );
-        }
-        md!(out, "\nThe grid's cells are the drive solved at the grid points; the least η and most loss above are of those points, not located between them (the map is a picture; the headline's numbers are computed at their points).\n");
-        if r.maps.iter().any(|m| !m.best.is_empty()) {
-            md!(out, "\nThe best point of each half of the map, located: from the half's best grid point, coordinate ascent by golden sections over the box of its neighbours (torques of the half's sign only), each step the drive solved afresh, until a sweep moves the point by less than 1e-7 of the box.\n");
-            header(
-                &mut out,
-                &[
-                    "law",
-                    "formulation",
-                    "half",
-                    &format!("torque ({})", Shown::of(r).torque.unit()),
-                    &format!("speed ({})", Speed(&r.speed_unit).unit()),
-                    "η",
-                    &format!("grid's best ({}, {}, η)", Shown::of(r).torque.unit(), Speed(&r.speed_unit).unit()),
-                    "drives solved",
-                ],
-            );
-            for m in &r.maps {
-                for b in &m.best {
-                    row(
-                        &mut out,
-                        &[
-                            m.law.clone(),
-                            m.formulation.clone(),
-                            b.flow.clone(),
-                            fixed(Shown::of(r).torque.of_si(b.torque), 3),
-                            fixed(Speed(&r.speed_unit).of_rpm(b.speed_rpm), 3),
-                            format!("{} %", fixed(100.0 * b.efficiency, 4)),
-                            format!(
-                                "{}, {}, {} %",
-                                fixed(Shown::of(r).torque.of_si(b.grid_torque), 1),
-                                fixed(Speed(&r.speed_unit).of_rpm(b.grid_speed_rpm), 1),
-                                fixed(100.0 * b.grid_efficiency, 4)
-                            ),
-                            b.evaluations.to_string(),
-                        ],
-                    );
-                }
-            }
-            md!(out, "");
-        }
-    }
+    super::loss_map::section(&mut out, r, u);
     model(&mut out, r);
     out
 }
 
 fn headline(out: &mut String, r: &DriveReport) {
+    let u = Shown::of(r);
     md!(out, "## Headline\n");
     header(
         out,
@@ -159,11 +74,11 @@ fn headline(out: &mut String, r: &DriveReport) {
             "law",
             "formulation",
             "flow",
-            &format!("T_in ({})", Shown::of(r).torque.unit()),
-            &format!("n_in ({})", Speed(&r.speed_unit).unit()),
+            &format!("T_in ({})", u.torque.unit()),
+            &format!("n_in ({})", u.speed.unit()),
             "P_in (W)",
-            &format!("T_out ({})", Shown::of(r).torque.unit()),
-            &format!("n_out ({})", Speed(&r.speed_unit).unit()),
+            &format!("T_out ({})", u.torque.unit()),
+            &format!("n_out ({})", u.speed.unit()),
             "P_out (W)",
             "meshes (W)",
             "gears no-load (W)",
@@ -184,11 +99,11 @@ fn headline(out: &mut String, r: &DriveReport) {
                 p.law.clone(),
                 p.formulation.clone(),
                 d.flow.name().to_string(),
-                fixed(Shown::of(r).torque.of_si(d.input_torque), 4),
-                fixed(Speed(&r.speed_unit).of_rad_s(d.input_speed), 2),
+                fixed(u.torque.of_si(d.input_torque), 4),
+                fixed(u.speed.of_rad_s(d.input_speed), 2),
                 fixed(d.input_power, 2),
-                fixed(Shown::of(r).torque.of_si(d.output_torque), 4),
-                fixed(Speed(&r.speed_unit).of_rad_s(d.output_speed), 2),
+                fixed(u.torque.of_si(d.output_torque), 4),
+                fixed(u.speed.of_rad_s(d.output_speed), 2),
                 fixed(d.output_power, 2),
                 fixed(l.meshes, 3),
                 fixed(l.gear_no_load, 3),
@@ -299,6 +214,7 @@ fn inputs(out: &mut String, r: &DriveReport) {
 }
 
 fn thermal(out: &mut String, r: &DriveReport) {
+    let u = Shown::of(r);
     if r.thermal.is_empty() {
         return;
     }
@@ -319,7 +235,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
             "P_V(θ*) (W)",
             "P_Q(θ*) (W)",
             "the sump",
-            &format!("thermal rating ({})", Shown::of(r).torque.unit()),
+            &format!("thermal rating ({})", u.torque.unit()),
         ],
     );
     let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
@@ -334,7 +250,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
                 opt(b.loss, 3),
                 opt(b.dissipation, 3),
                 b.status.clone(),
-                opt(b.rating.map(|t| Shown::of(r).torque.of_si(t)), 2),
+                opt(b.rating.map(|t| u.torque.of_si(t)), 2),
             ],
         );
     }

@@ -9,6 +9,7 @@ use crate::report::drive::DriveReport;
 /// The section, when the scene asks for analyses of one pair.
 pub(crate) fn section(out: &mut String, r: &DriveReport) {
     let Some(first) = r.stage_pairs.first() else { return };
+    let n = super::shown_units::Speed(&r.speed_unit);
     md!(out, "## Stage meshes analysed as pairs\n");
     md!(
         out,
@@ -24,7 +25,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport) {
             "drive point",
             "pinion's / wheel's place",
             &format!("T_pinion ({})", super::shown_units::Torque(&r.torque_unit).unit()),
-            &format!("n_pinion ({})", super::shown_units::Speed(&r.speed_unit).unit()),
+            &format!("n_pinion ({})", n.unit()),
             "η_mesh in the drive",
             "η of the pair alone (as charged)",
             "η̄ of the pair alone (line integral)",
@@ -40,7 +41,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport) {
                 format!("{}: {}", p.point, p.point_words),
                 format!("{} / {}", p.pinion, p.wheel),
                 fixed(super::shown_units::Torque(&r.torque_unit).of_si(p.pinion_torque), 4),
-                fixed(super::shown_units::Speed(&r.speed_unit).of_rpm(p.pinion_speed_rpm), 3),
+                fixed(n.of_rpm(p.pinion_speed_rpm), 3),
                 format!("{} %", fixed(100.0 * p.mesh_efficiency, 6)),
                 percent(p.pair_charged_efficiency),
                 percent(p.pair_mean_efficiency),
