@@ -16,9 +16,11 @@ pub mod regions;
 pub(crate) mod sharing;
 pub mod stiffness;
 pub mod teeth;
+pub(crate) mod undercut;
 
 pub use contact::{ContactPoint, OperatingState};
 pub use involute::involute;
 pub use mesh::{Contacts, Mesh};
 pub use pair::{GeometryProblem, PairGeometry, PairInput, PairPart, TipSource};
 pub use pair_checks::trochoid_margin;
+pub use undercut::undercut_radius;

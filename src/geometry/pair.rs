@@ -90,6 +90,10 @@ pub struct PairGeometry {
     /// Start of the generated involute (form circle) along the line of action from the gear's own T:
     /// T_iF_i = r_i sin α_t − (1 − x_i) m_n / sin α_t (rack addendum 1·m_n).
     pub involute_start: [f64; 2],
+    /// The radius up to which the rack's flank end cuts a gear below its undercut limit
+    /// ([`super::undercut::undercut_radius`]); None where the gear is not undercut (and for a ring). An
+    /// undercut that reaches the mate's path of contact is refused; one below it is reported.
+    pub undercut_radius: [Option<f64>; 2],
 }
 
 /// Positions along the line of action, measured from T1 (m).
@@ -147,7 +151,16 @@ impl PairGeometry {
             r[1] * alpha.sin() - (1.0 - x[1]) * m_n / alpha.sin(),
         ];
         let shape = TeethShape { transverse_pressure_angle: alpha, base_radius: rb, tip_radius: ra };
-        let tip_thickness = tooth_shapes(input, &shape, undercut_limit, &mut problems);
+        let tip_thickness = tooth_shapes(input, &shape, &mut problems);
+        let undercut_radius = [0, 1].map(|i| {
+            let ring = i == 1 && input.internal;
+            let h = (1.0 - x[i]) * m_n;
+            if ring {
+                None
+            } else {
+                super::undercut::undercut_radius(r[i], alpha, h)
+            }
+        });
         if !problems.is_empty() {
             return Err(problems);
         }
@@ -160,6 +173,9 @@ impl PairGeometry {
         let t1p = rb[0] * alpha_w.tan();
         let pb = PI * m * alpha.cos();
         problems.extend(interference(t1a, t1e, t1t2, rb, input.internal));
+        // The lowest points of the gears' flanks in contact: the pinion's at A, the wheel's at E.
+        let active_start = [(rb[0] * rb[0] + t1a * t1a).sqrt(), (rb[1] * rb[1] + (t1t2 - t1e).powi(2)).sqrt()];
+        problems.extend(super::pair_checks::undercut_in_contact(input, undercut_radius, active_start, undercut_limit));
         if input.internal && problems.is_empty() {
             problems.extend(trochoid_interference(input.teeth, rb, ra, a, alpha_w));
         }
@@ -204,6 +220,7 @@ impl PairGeometry {
             undercut_limit,
             internal: input.internal,
             involute_start,
+            undercut_radius,
         })
     }
 }

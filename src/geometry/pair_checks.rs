@@ -102,34 +102,14 @@ pub(super) struct TeethShape {
 }
 
 /// Each gear's tip thickness s_a = 2 r_a ((π/2 + 2 x tan α_n)/z + inv α_t − inv α_a) (ISO 21771),
-/// with the problems of an undercut tooth (x below `undercut_limit`), a tip inside the base circle
-/// and a pointed tooth (s_a ≤ 0).
-pub(super) fn tooth_shapes(
-    input: &PairInput,
-    shape: &TeethShape,
-    undercut_limit: [f64; 2],
-    problems: &mut Vec<GeometryProblem>,
-) -> [f64; 2] {
+/// with the problems of a tip inside the base circle and a pointed tooth (s_a ≤ 0).
+pub(super) fn tooth_shapes(input: &PairInput, shape: &TeethShape, problems: &mut Vec<GeometryProblem>) -> [f64; 2] {
     let (x, alpha, alpha_n) = (input.profile_shift, shape.transverse_pressure_angle, input.pressure_angle);
     let (rb, ra) = (shape.base_radius, shape.tip_radius);
     let z = [input.teeth[0] as f64, input.teeth[1] as f64];
     let mut tip_thickness = [0.0; 2];
     for i in 0..2 {
-        // A ring is cut by a pinion-type cutter, not a rack: the rack's undercut limit is not its.
         let ring = i == 1 && input.internal;
-        if !ring && x[i] < undercut_limit[i] - 1e-9 {
-            problems.push(GeometryProblem {
-                part: PairPart::ProfileShift(i),
-                reason: format!(
-                    "profile shift x = {} undercuts the {}: z = {} needs x ≥ {:.4}",
-                    x[i],
-                    gear_name(i),
-                    input.teeth[i],
-                    undercut_limit[i]
-                ),
-                hint: format!("raise the profile shift to at least {:.4}", undercut_limit[i]),
-            });
-        }
         if ra[i] <= rb[i] {
             problems.push(GeometryProblem {
                 part: PairPart::TipDiameter(i),
@@ -209,6 +189,36 @@ pub(super) fn interference(t1a: f64, t1e: f64, t1t2: f64, rb: [f64; 2], internal
         });
     }
     problems
+}
+
+/// A gear below its undercut limit x_min whose undercut reaches its mate's path of contact (its
+/// undercut radius at or above the radius where contact starts on its flank): the contact would
+/// meet the cut-away flank (DIN 3960's condition for an undercut that does no harm fails). An
+/// undercut below the path is no problem here (the report says it).
+pub(super) fn undercut_in_contact(
+    input: &PairInput,
+    undercut_radius: [Option<f64>; 2],
+    active_start: [f64; 2],
+    undercut_limit: [f64; 2],
+) -> Vec<GeometryProblem> {
+    (0..2)
+        .filter_map(|i| {
+            let ru = undercut_radius[i]?;
+            (ru >= active_start[i]).then(|| GeometryProblem {
+                part: PairPart::ProfileShift(i),
+                reason: format!(
+                    "profile shift x = {} undercuts the {} into its path of contact: the rack cuts its involute up to d = {:.4} mm, and contact starts at d = {:.4} mm (z = {} is free of undercut from x = {:.4})",
+                    input.profile_shift[i],
+                    gear_name(i),
+                    2e3 * ru,
+                    2e3 * active_start[i],
+                    input.teeth[i],
+                    undercut_limit[i]
+                ),
+                hint: format!("raise the profile shift to at least {:.4}, or shorten the mate's tip", undercut_limit[i]),
+            })
+        })
+        .collect()
 }
 
 /// The mesh model takes 1 < ε_α < 3 and ε_γ = ε_α + ε_β ≤ [`MAX_TOTAL_CONTACT_RATIO`]: the first

@@ -49,6 +49,7 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
             )));
         }
     }
+    out.extend(super::undercut_notes::undercut_notes(g, ["pinion", "wheel"]).into_iter().map(warn));
     if !crate::geometry::loss_factor::closed_form_holds(g) {
         let [e1, e2] = g.addendum_contact_ratio;
         out.push(note(format!(

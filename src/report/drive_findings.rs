@@ -31,6 +31,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<F
             ),
         });
     }
+    out.extend(undercut_findings(drive));
     let loads = points.iter().flat_map(|p| {
         layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
             s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {
@@ -152,4 +153,25 @@ pub(super) fn unsettled_rows(
             "{unsettled} of {rows} rows did not settle or do not balance their books (drive_records.csv: `passes` = 100, or P_source − P_sink ≠ the sum of the parts); the first: row {first}"
         ),
     })
+}
+
+/// Each stage's undercut gears whose undercut stays below the path of contact.
+fn undercut_findings(drive: &SceneDrive) -> Vec<Finding> {
+    let mut out = Vec::new();
+    for (k, stage) in drive.layout.stages.iter().enumerate() {
+        let planetary = stage.planetary.is_some();
+        let meshes = [
+            (drive.pairs.get(k), if planetary { ["sun", "planet"] } else { ["pinion", "wheel"] }),
+            (drive.ring_pairs.get(k).and_then(Option::as_ref), ["planet", "ring"]),
+        ];
+        for (pair, names) in meshes {
+            let Some(g) = pair.and_then(|p| p.geometry().ok()) else { continue };
+            out.extend(
+                super::undercut_notes::undercut_notes(&g, names)
+                    .into_iter()
+                    .map(|m| Finding { severity: Severity::Warning, message: format!("stage `{}`: {m}", stage.name) }),
+            );
+        }
+    }
+    out
 }

@@ -147,6 +147,12 @@ pub(crate) fn estimated_static_rating(kind: &str, bore: f64, outside: f64) -> f6
     }
 }
 
+/// The smallest bore of ISO 15's plan not below `d` (mm) and its outside diameter D in diameter
+/// series 2 (the medium series, the usual choice in a gear unit); None beyond the plan (160 mm).
+pub(crate) fn series_2_outside(d: f64) -> Option<(f64, f64)> {
+    DIAMETER_SERIES.iter().find(|r| r.0 >= d - 1e-9).map(|r| (r.0, r.2))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

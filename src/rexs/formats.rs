@@ -116,8 +116,12 @@ fn xml_value(node: roxmltree::Node) -> AttributeValue {
         if array.attribute("code").is_some() {
             return AttributeValue::Other;
         }
-        let values: Option<Vec<f64>> =
-            array.children().filter(|c| c.has_tag_name("c")).map(|c| number(c.text().unwrap_or(""))).collect();
+        let cells: Vec<&str> =
+            array.children().filter(|c| c.has_tag_name("c")).map(|c| c.text().unwrap_or("").trim()).collect();
+        if !cells.is_empty() && cells.iter().all(|c| *c == "true" || *c == "false") {
+            return AttributeValue::Bools(cells.iter().map(|c| *c == "true").collect());
+        }
+        let values: Option<Vec<f64>> = cells.into_iter().map(number).collect();
         return values.map_or(AttributeValue::Other, AttributeValue::Numbers);
     }
     if node.children().any(|c| c.is_element()) {
@@ -242,6 +246,8 @@ fn json_attribute(a: &serde_json::Value) -> Attribute {
     } else if let Some(v) = a.get("floating_point_array").or_else(|| a.get("integer_array")).and_then(|v| v.as_array())
     {
         v.iter().map(|x| x.as_f64()).collect::<Option<Vec<_>>>().map_or(AttributeValue::Other, AttributeValue::Numbers)
+    } else if let Some(v) = a.get("boolean_array").and_then(|v| v.as_array()) {
+        v.iter().map(|x| x.as_bool()).collect::<Option<Vec<_>>>().map_or(AttributeValue::Other, AttributeValue::Bools)
     } else {
         AttributeValue::Other
     };

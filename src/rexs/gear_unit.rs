@@ -6,7 +6,7 @@ use super::error::describe;
 use super::error::RexsError;
 use super::model::{Component, RexsModel};
 pub(crate) use super::stage_data::{GearData, StageData};
-use super::units::{quantity, required, Kind};
+use super::units::{quantity, Kind};
 
 /// Versions this reader knows.
 pub(crate) const VERSIONS: &[&str] = &["1.0", "1.1", "1.2", "1.3", "1.4", "1.5", "1.6", "1.7", "2.0", "2.0.0"];
@@ -16,6 +16,9 @@ const READ: &[&str] = &[
     "gear_casing",
     "shaft",
     "cylindrical_stage",
+    "planetary_stage",
+    "planet_carrier",
+    "ring_gear",
     "cylindrical_gear",
     "cylindrical_gear_flank",
     "flank_geometry",
@@ -45,6 +48,7 @@ pub(crate) struct GearUnit {
     pub version: String,
     pub application: String,
     pub stages: Vec<StageData>,
+    pub planetary: Vec<super::planetary::PlanetaryData>,
     pub shafts: Vec<super::shafts::ShaftData>,
     pub lubricant: Option<super::cases::LubricantData>,
     pub cases: Vec<super::cases::CaseData>,
@@ -78,30 +82,33 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     if let Some(e) = RexsError::gather(missing) {
         return Err(e);
     }
-    if let Some(c) = model.components.values().find(|c| c.kind.starts_with("planet") || c.kind == "ring_gear") {
-        return Err(RexsError::at(
-            c,
-            "planetary stages are not imported in this version",
-            "import a gear unit of cylindrical stages on parallel shafts",
-        ));
+    let mut unit =
+        GearUnit { version: model.version.clone(), application: model.application.clone(), ..Default::default() };
+    let mut errors = Vec::new();
+    for c in model.of_kind("planetary_stage") {
+        match super::planetary::read_planetary(model, c, &mut unit.warnings) {
+            Ok(stage) => unit.planetary.push(stage),
+            Err(e) => errors.push(e),
+        }
     }
+    let holds = super::planetary_hold::member_joints(model);
     let unmodelled: Vec<String> = model
         .components
         .values()
+        .filter(|c| !holds.contains(&c.id))
         .filter_map(|c| {
             UNMODELLED.iter().find(|(k, _)| *k == c.kind).map(|(_, what)| format!("{} ({what})", describe(c)))
         })
         .collect();
     if !unmodelled.is_empty() {
-        return Err(RexsError::new(
+        errors.push(RexsError::new(
             format!("the model has what gearloss does not model yet: {}", unmodelled.join("; ")),
-            "gearloss imports gear units of cylindrical stages on parallel shafts (and, later, simple planetary stages)",
+            "gearloss imports gear units of cylindrical stages on parallel shafts and simple planetary stages",
         ));
     }
-    let mut unit =
-        GearUnit { version: model.version.clone(), application: model.application.clone(), ..Default::default() };
-    let mut errors = Vec::new();
-    for c in model.of_kind("cylindrical_stage") {
+    let in_planetary: Vec<u64> =
+        model.of_kind("planetary_stage").flat_map(|p| super::planetary::meshes_of(model, p.id)).collect();
+    for c in model.of_kind("cylindrical_stage").filter(|c| !in_planetary.contains(&c.id)) {
         match read_stage(model, c, &mut unit.warnings) {
             Ok(stage) => unit.stages.push(stage),
             Err(e) => errors.push(e),
@@ -110,13 +117,17 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     if let Some(e) = RexsError::gather(errors) {
         return Err(e);
     }
-    if unit.stages.is_empty() {
+    if unit.stages.is_empty() && unit.planetary.is_empty() {
         return Err(RexsError::new(
-            "the model has no cylindrical stage",
-            "gearloss imports gear units of cylindrical stages",
+            "the model has no cylindrical or planetary stage",
+            "gearloss imports gear units of cylindrical stages and simple planetary stages",
         ));
     }
-    unit.shafts = super::shafts::read_shafts(model, &unit.stages, &mut unit.warnings)?;
+    onto_the_carrier_shaft(model, &mut unit);
+    let places: Vec<(u64, f64)> = unit.planetary.iter().flat_map(|p| p.places()).collect();
+    let joined: Vec<(u64, Vec<u64>)> =
+        unit.planetary.iter().filter_map(|p| p.carrier.as_ref().map(|(s, others, _)| (*s, others.clone()))).collect();
+    unit.shafts = super::shafts::read_shafts(model, &unit.stages, &places, &joined, &mut unit.warnings)?;
     let lubricant = super::cases::read_lubricant(model, &mut unit.warnings);
     let cases = super::cases::read_cases(model, &unit.shafts, &mut unit.warnings);
     match (lubricant, cases) {
@@ -135,10 +146,12 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
             !READ.contains(&c.kind.as_str())
                 && !super::shafts::HUB_CONNECTIONS.contains(&c.kind.as_str())
                 && c.kind != "shaft_section"
+                && !holds.contains(&c.id)
         })
         .map(|c| c.kind.clone())
         .collect();
-    others.dedup();
+    let mut seen = std::collections::BTreeSet::new();
+    others.retain(|k| seen.insert(k.clone()));
     if !others.is_empty() {
         unit.warnings.push(format!("not imported (gearloss has no use for them): {}", others.join(", ")));
     }
@@ -154,7 +167,7 @@ fn read_stage(model: &RexsModel, c: &Component, warnings: &mut Vec<String>) -> R
         let id = relation.role(role).ok_or_else(|| {
             RexsError::at(c, format!("its stage relation has no `{role}`"), "a stage names gear_1 and gear_2")
         })?;
-        read_gear(model, &model.components[&id], warnings)
+        super::gears::read_gear(model, &model.components[&id], false, warnings)
     };
     let (g1, g2) = (gear("gear_1")?, gear("gear_2")?);
     if g1.shaft == g2.shaft {
@@ -222,103 +235,19 @@ fn normalise(deg: f64) -> f64 {
     a + 0.0
 }
 
-fn read_gear(model: &RexsModel, g: &Component, warnings: &mut Vec<String>) -> Result<GearData, RexsError> {
-    let teeth = required(g, &["number_of_teeth"], Kind::Number)?;
-    let module = required(g, &["normal_module"], Kind::Length)?;
-    let helix_angle = quantity(g, &["helix_angle_reference_diameter", "helix_angle"], Kind::Angle)?.unwrap_or(0.0);
-    let face_width = required(g, &["face_width"], Kind::Length)?;
-    let flank = model
-        .relations_with("flank", "gear", g.id)
-        .next()
-        .and_then(|r| r.role("left").or(r.role("right")))
-        .map(|id| &model.components[&id]);
-    let on_flank = |ids: &[&str], kind| -> Result<Option<f64>, RexsError> {
-        match flank {
-            Some(f) => Ok(quantity(f, ids, kind)?.or(quantity(g, ids, kind)?)),
-            None => quantity(g, ids, kind),
+/// A stage's gear on a carrier's other cheek sits on the carrier's shaft (the cheeks are rigidly
+/// one), at its place along u from that shaft's origin.
+fn onto_the_carrier_shaft(model: &RexsModel, unit: &mut GearUnit) {
+    let origin = |id: u64| super::units::vector(&model.components[&id], "support_vector").map_or(0.0, |v| v[0]);
+    for p in &unit.planetary {
+        let Some((main, others, _)) = &p.carrier else { continue };
+        for g in unit.stages.iter_mut().flat_map(|s| s.gears.iter_mut()).filter(|g| others.contains(&g.shaft)) {
+            unit.warnings.push(format!(
+                "gear {}: on shaft {}, the carrier's other cheek; it sits on the carrier's shaft {main}",
+                g.id, g.shaft
+            ));
+            g.at += origin(g.shaft) - origin(*main);
+            g.shaft = *main;
         }
-    };
-    let pressure_angle = on_flank(&["normal_pressure_angle"], Kind::Angle)?.ok_or_else(|| {
-        RexsError::at(
-            g,
-            "`normal_pressure_angle` is missing (on the gear and its flanks)",
-            "export the gear's flank geometry",
-        )
-    })?;
-    let given_shift = on_flank(&["addendum_modification_coefficient"], Kind::Number)?;
-    let profile_shift = given_shift.unwrap_or(0.0);
-    let is_shaft = |id: Option<u64>| id.and_then(|id| model.components.get(&id)).is_some_and(|c| c.kind == "shaft");
-    // A gear is a part of its shaft (`assembly`), or sits on it through a shaft–hub connection (a
-    // `side` relation: the connection the assembly, the shaft its inner part, the gear its outer).
-    let shaft = model
-        .relations
-        .iter()
-        .find(|r| r.kind == "assembly" && r.role("part") == Some(g.id) && is_shaft(r.role("assembly")))
-        .and_then(|r| r.role("assembly"))
-        .or_else(|| {
-            model
-                .relations
-                .iter()
-                .find(|r| r.kind == "side" && r.role("outer_part") == Some(g.id) && is_shaft(r.role("inner_part")))
-                .and_then(|r| r.role("inner_part"))
-        })
-        .ok_or_else(|| {
-            RexsError::at(
-                g,
-                "no `assembly` relation, and no shaft–hub connection (`side`), puts it on a shaft",
-                "every gear is a part of its shaft, or sits on it through a connection",
-            )
-        })?;
-    // REXS 1.0 gives a gear's `u_coordinate_on_shaft` at its face start; later versions at its
-    // mid-plane, which gearloss's `at` is.
-    let face_start = model.version == "1.0";
-    let at =
-        quantity(g, &["u_coordinate_on_shaft"], Kind::Length)?
-            .map(|u| if face_start { u + 0.5 * face_width } else { u });
-    let from_vectors = match (
-        super::units::vector(g, "support_vector"),
-        super::units::vector(&model.components[&shaft], "support_vector"),
-    ) {
-        (Some(a), Some(b)) => Some(a[0] - b[0]),
-        _ => None,
-    };
-    let at = match (at, from_vectors) {
-        (Some(u), Some(v)) if (u - v).abs() > 1e-6 => {
-            warnings.push(format!("{}: `u_coordinate_on_shaft` {u} mm differs from its support vector's {v} mm; the support vector is used", describe(g)));
-            v
-        }
-        (Some(u), _) => u,
-        (None, Some(v)) => v,
-        (None, None) => {
-            return Err(RexsError::at(
-                g,
-                "`u_coordinate_on_shaft` is missing",
-                "export the gear's position on its shaft",
-            ))
-        }
-    };
-    let reference = module * teeth / helix_angle.to_radians().cos();
-    let tip = quantity(g, &["tip_diameter"], Kind::Length)?;
-    let tip_diameter = match tip {
-        Some(da) if da > reference && da < reference + 4.0 * module => Some(da),
-        Some(da) => {
-            warnings.push(format!("{}: `tip_diameter` {da} mm is not plausible (d = {:.3} mm, m_n = {module} mm); left out, the tip follows from the profile shift", describe(g), reference));
-            None
-        }
-        None => None,
-    };
-    Ok(GearData {
-        id: g.id,
-        teeth: teeth.round() as u32,
-        module,
-        helix_angle,
-        face_width,
-        pressure_angle,
-        profile_shift,
-        profile_shift_given: given_shift.is_some(),
-        profile_shift_note: None,
-        tip_diameter,
-        shaft,
-        at,
-    })
+    }
 }

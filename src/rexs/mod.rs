@@ -12,15 +12,21 @@
 //! component and the attribute.
 
 pub(crate) mod bearing_sizes;
+pub(crate) mod bearings;
 pub(crate) mod cases;
 pub(crate) mod formats;
 pub(crate) mod gear_unit;
+pub(crate) mod gears;
 pub(crate) mod model;
+pub(crate) mod planetary;
+pub(crate) mod planetary_hold;
 pub(crate) mod profile_shift;
+pub(crate) mod scene_text;
 pub(crate) mod shaft_sections;
 pub(crate) mod shafts;
 pub(crate) mod stage_data;
 pub(crate) mod units;
+pub(crate) mod write_planetary;
 pub(crate) mod write_scene;
 pub(crate) mod xml_depth;
 

@@ -11,6 +11,8 @@ pub(crate) enum AttributeValue {
     Text(String),
     Bool(bool),
     Numbers(Vec<f64>),
+    /// A boolean per gear (`is_engaged` of a switchable coupling, one per gear shift index).
+    Bools(Vec<bool>),
     /// A value this reader does not use (matrices, coded arrays of arrays, file references).
     Other,
 }

@@ -78,3 +78,31 @@ pub(crate) fn read_sections(
     }
     Ok(Ok(out))
 }
+
+/// The outer and inner diameter (mm) of shaft `shaft`'s section at `u` (mm on the shaft): the
+/// section whose span holds it (a section without `u_coordinate_on_shaft` starts at 0), the mean
+/// of a conical one; None when no section holds it.
+pub(crate) fn diameters_at(model: &RexsModel, shaft: u64, u: f64) -> Result<Option<(f64, f64)>, RexsError> {
+    for r in model.relations_with("assembly", "assembly", shaft) {
+        let Some(c) = r.role("part").and_then(|id| model.components.get(&id)) else { continue };
+        if c.kind != "shaft_section" {
+            continue;
+        }
+        let mm = |ids: &[&str]| quantity(c, ids, Kind::Length);
+        let from = mm(&["u_coordinate_on_shaft"])?.unwrap_or(0.0);
+        let Some(length) = mm(&["length"])? else { continue };
+        if u < from - JOIN || u > from + length + JOIN {
+            continue;
+        }
+        let mean = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => Some(0.5 * (a + b)),
+            (a, b) => a.or(b),
+        };
+        let Some(outer) = mean(mm(&["outer_diameter_begin"])?, mm(&["outer_diameter_end"])?) else { continue };
+        let inner = mean(mm(&["inner_diameter_begin"])?, mm(&["inner_diameter_end"])?).unwrap_or(0.0);
+        if outer > 0.0 {
+            return Ok(Some((outer, inner)));
+        }
+    }
+    Ok(None)
+}

@@ -2,31 +2,12 @@
 //! external load transmits torque it does not define), their position in the gear unit and their
 //! bearings (relation `side`: the bearing's inner part is the shaft).
 
+use super::bearings::{is_thrust, read_bearing, BearingData, BEARING_KINDS};
 use super::error::describe;
 use super::error::RexsError;
 use super::model::{Component, RexsModel};
 use super::stage_data::StageData;
 use super::units::{flag, quantity, text, vector, Kind};
-
-/// A bearing as the scene writes it.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct BearingData {
-    pub id: u64,
-    pub designation: String,
-    /// gearloss's type name.
-    pub kind: &'static str,
-    pub bore: f64,
-    pub outside: f64,
-    pub static_load_rating: Option<f64>,
-    pub at: f64,
-    /// `axial_force_absorption` as written.
-    pub axial: String,
-    pub locating: bool,
-    /// Where the sizes came from, in words.
-    pub sizes_from: String,
-    /// C₀ was estimated (chosen).
-    pub c0_estimated: bool,
-}
 
 /// A shaft of the drive.
 #[derive(Debug, Clone, PartialEq)]
@@ -50,44 +31,17 @@ pub(crate) const HUB_CONNECTIONS: &[&str] = &[
     "involute_spline_connection",
 ];
 
-/// REXS `bearing_type` → gearloss's type.
-const TYPES: &[(&str, &str)] = &[
-    ("radial_grooved_ball_bearing", "deep_groove_ball"),
-    ("radial_grooved_ball", "deep_groove_ball"),
-    ("radial_angular_contact_ball_bearing", "angular_contact_ball"),
-    ("angular_contact_ball_bearing", "angular_contact_ball"),
-    ("four_point_contact_ball_bearing", "angular_contact_ball"),
-    ("radial_roller_bearing", "cylindrical_roller"),
-    ("radial_cylindrical_roller_bearing", "cylindrical_roller"),
-    ("radial_tapered_roller_bearing", "tapered_roller"),
-    ("radial_spherical_roller_bearing", "spherical_roller"),
-    ("radial_self_aligning_roller_bearing", "spherical_roller"),
-];
-
-/// REXS bearing types gearloss has no type of its own for: the type whose Palmgren factors stand
-/// in (chosen, said).
-const STAND_INS: &[(&str, &str)] = &[
-    ("radial_needle_roller_bearing", "cylindrical_roller"),
-    ("crossed_roller_bearing", "cylindrical_roller"),
-    ("radial_self_aligning_ball_bearing", "deep_groove_ball"),
-];
-
-/// Thrust bearings (REXS `axial_*`): they take no radial load, so they are no bearing place of the
-/// shaft's beam; the shaft's axial force goes to its locating place (said).
-fn is_thrust(bearing_type: Option<&str>, b: &Component) -> bool {
-    bearing_type.is_some_and(|t| t.starts_with("axial_")) || flag(b, &["radial_force_absorption"]) == Some(false)
-}
-
-/// Component types that are rolling bearings.
-const BEARING_KINDS: &[&str] =
-    &["rolling_bearing_with_catalog_geometry", "rolling_bearing_with_detailed_geometry", "concept_bearing"];
-
+/// The shafts of `stages`' gears and of the planetary members' `places` (shaft, at mm); `joined`
+/// names shafts rigidly one with another (a carrier's cheeks: their bearings join the first's).
 pub(crate) fn read_shafts(
     model: &RexsModel,
     stages: &[StageData],
+    places: &[(u64, f64)],
+    joined: &[(u64, Vec<u64>)],
     warnings: &mut Vec<String>,
 ) -> Result<Vec<ShaftData>, RexsError> {
     let mut ids: Vec<u64> = stages.iter().flat_map(|s| s.gears.iter().map(|g| g.shaft)).collect();
+    ids.extend(places.iter().map(|(s, _)| *s));
     ids.sort_unstable();
     ids.dedup();
     let loads = |shaft: u64| {
@@ -102,7 +56,8 @@ pub(crate) fn read_shafts(
     let mut out = Vec::new();
     let mut errors = Vec::new();
     for id in ids {
-        match read_shaft(model, id, stages, &loads, warnings) {
+        let others = joined.iter().find(|(s, _)| *s == id).map_or(&[][..], |(_, o)| o.as_slice());
+        match read_shaft(model, id, stages, places, others, &loads, warnings) {
             Ok(shaft) => out.push(shaft),
             Err(e) => errors.push(e),
         }
@@ -133,6 +88,8 @@ fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
     model: &'m RexsModel,
     id: u64,
     stages: &[StageData],
+    places: &[(u64, f64)],
+    joined: &[u64],
     loads: &impl Fn(u64) -> L,
     warnings: &mut Vec<String>,
 ) -> Result<ShaftData, RexsError> {
@@ -144,13 +101,32 @@ fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
             "gearloss reads parallel shafts along the gear unit's u axis",
         ));
     }
-    let input = flag(c, &["defines_speed"]) == Some(true);
+    let one = || std::iter::once(id).chain(joined.iter().copied());
+    let input = one().any(|s| flag(&model.components[&s], &["defines_speed"]) == Some(true));
     let output = !input
-        && loads(id)
+        && one()
+            .flat_map(loads)
             .any(|l| flag(l, &["transmits_torque"]) == Some(true) && flag(l, &["defines_torque"]) != Some(true));
-    let bearings = read_bearings(model, c, warnings)?;
+    let origin = vector(c, "support_vector").unwrap_or([0.0; 3]);
+    let mut bearings = read_bearings(model, c, 0.0, warnings)?;
+    for &other in joined {
+        let o = &model.components[&other];
+        let shift = vector(o, "support_vector").map_or(0.0, |v| v[0] - origin[0]);
+        let theirs = read_bearings(model, o, shift, warnings)?;
+        if !theirs.is_empty() {
+            warnings.push(format!(
+                "{}: rigidly one with shaft {id} (the carrier's other cheek); its {} bearing(s) are shaft {id}'s",
+                describe(o),
+                theirs.len()
+            ));
+        }
+        bearings.extend(theirs);
+    }
+    bearings.sort_by(|a, b| a.at.total_cmp(&b.at));
+    check_places(c, &mut bearings, warnings)?;
     let mut points: Vec<f64> = bearings.iter().map(|b| b.at).collect();
     points.extend(stages.iter().flat_map(|s| &s.gears).filter(|g| g.shaft == id).map(|g| g.at));
+    points.extend(places.iter().filter(|(s, _)| *s == id).map(|(_, at)| *at));
     let sections = match super::shaft_sections::read_sections(model, c, &points, warnings)? {
         Ok(s) => s,
         Err(why) if bearings.len() > 2 => {
@@ -165,15 +141,7 @@ fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
             Vec::new()
         }
     };
-    Ok(ShaftData {
-        id,
-        name: c.name.clone(),
-        origin: vector(c, "support_vector").unwrap_or([0.0; 3]),
-        input,
-        output,
-        bearings,
-        sections,
-    })
+    Ok(ShaftData { id, name: c.name.clone(), origin, input, output, bearings, sections })
 }
 
 /// The input and output when the model does not flag exactly one of each: the two shafts that
@@ -224,25 +192,20 @@ fn ends_from_torque_loads(model: &RexsModel, stages: &[StageData], out: &mut [Sh
     ));
 }
 
-/// The designation of a bearing: its `catalogue_designation` (`name` in REXS 1.0), or a concept
-/// bearing's from its component name (`not a catalogue bearing: 33016 (Rolling bearing [35])`).
-fn designation(b: &Component) -> String {
-    if let Some(t) = text(b, &["catalogue_designation", "name"]) {
-        return t.to_string();
-    }
-    let name = b.name.split(": ").nth(1).unwrap_or(&b.name);
-    name.split(" (").next().unwrap_or(name).trim().to_string()
-}
-
+/// The bearings whose inner part is `shaft`, at their place on it plus `shift` (mm).
 fn read_bearings(
     model: &RexsModel,
     shaft: &Component,
+    shift: f64,
     warnings: &mut Vec<String>,
 ) -> Result<Vec<BearingData>, RexsError> {
     let mut out = Vec::new();
     for r in model.relations_with("side", "inner_part", shaft.id) {
         let Some(b) = r.role("assembly").map(|id| &model.components[&id]) else { continue };
         if HUB_CONNECTIONS.contains(&b.kind.as_str()) {
+            continue;
+        }
+        if b.kind.ends_with("coupling") {
             continue;
         }
         if !BEARING_KINDS.contains(&b.kind.as_str()) {
@@ -262,58 +225,6 @@ fn read_bearings(
                 describe(b), shaft.id, other.id, shaft.id, other.id
             ));
         }
-        let designation = designation(b);
-        let kind = match text(b, &["bearing_type"]) {
-            Some(t) => match (TYPES.iter().find(|(r, _)| *r == t), STAND_INS.iter().find(|(r, _)| *r == t)) {
-                (Some((_, g)), _) => *g,
-                (None, Some((_, g))) => {
-                    warnings.push(format!("{}: a `{t}` is modelled as a {g} bearing (its Palmgren factors; chosen)", describe(b)));
-                    *g
-                }
-                (None, None) => {
-                    return Err(RexsError::at(b, format!("its `bearing_type` `{t}` has no gearloss type"), "gearloss's types: deep groove ball, angular contact ball, cylindrical, tapered and spherical roller (needle, crossed roller and self-aligning ball bearings stand in as one of them)"))
-                }
-            },
-            None => match super::bearing_sizes::type_of(&designation) {
-                Some(t) => t,
-                None => {
-                    warnings.push(format!(
-                        "{}: it gives no `bearing_type` and its designation `{designation}` names none: a deep groove ball bearing (chosen)",
-                        describe(b)
-                    ));
-                    "deep_groove_ball"
-                }
-            },
-        };
-        let table = super::bearing_sizes::sizes(&designation);
-        let given = (quantity(b, &["inner_diameter"], Kind::Length)?, quantity(b, &["outer_diameter"], Kind::Length)?);
-        let (bore, outside, sizes_from) = match (given, &table) {
-            ((Some(d), Some(big)), _) => (d, big, "the model".to_string()),
-            (_, Some(s)) => (s.bore, s.outside, format!("derived from the designation `{designation}` (ISO bore code and dimension series)")),
-            _ => {
-                return Err(RexsError::at(
-                    b,
-                    format!("`inner_diameter` and `outer_diameter` are missing, and its designation `{designation}` gives no sizes"),
-                    "export the bearing with its diameters, or use a catalogue designation gearloss knows",
-                ))
-            }
-        };
-        if sizes_from != "the model" {
-            warnings.push(format!("{}: d = {bore} mm, D = {outside} mm {sizes_from}", describe(b)));
-        }
-        let mut c0 = quantity(b, &["radial_static_load_rating", "static_capacity"], Kind::Force)?
-            .or(table.as_ref().and_then(|s| s.static_load_rating));
-        let needs_c0 = matches!(kind, "deep_groove_ball" | "angular_contact_ball" | "spherical_roller");
-        let c0_estimated = needs_c0 && c0.is_none();
-        if c0_estimated {
-            let e = (super::bearing_sizes::estimated_static_rating(kind, bore, outside) * 10.0).round() / 10.0;
-            warnings.push(format!(
-                "{}: no `radial_static_load_rating`: C_0 = {} kN estimated from d and D (ISO 76's f_0 Z D_w² with the balls' size and count estimated; chosen)",
-                describe(b),
-                crate::numerics::rounding::sig(e)
-            ));
-            c0 = Some(e);
-        }
         let at = quantity(b, &["u_coordinate_on_shaft_inner_side", "u_coordinate_on_shaft"], Kind::Length)?
             .ok_or_else(|| {
                 RexsError::at(
@@ -322,22 +233,16 @@ fn read_bearings(
                     "export the bearing's position on its shaft",
                 )
             })?;
-        let axial = text(b, &["axial_force_absorption"]).unwrap_or("no_direction").to_string();
-        out.push(BearingData {
-            id: b.id,
-            designation,
-            kind,
-            bore,
-            outside,
-            static_load_rating: c0,
-            at,
-            locating: axial == "both_directions",
-            axial,
-            sizes_from,
-            c0_estimated,
-        });
+        let mut bearing = read_bearing(model, r, b, at, "deep_groove_ball", warnings)?;
+        bearing.at += shift;
+        out.push(bearing);
     }
-    out.sort_by(|a, b| a.at.total_cmp(&b.at));
+    Ok(out)
+}
+
+/// A shaft sits on two bearing places or more; where none locates and each takes one axial
+/// direction, the first locates (chosen, said).
+fn check_places(shaft: &Component, out: &mut [BearingData], warnings: &mut Vec<String>) -> Result<(), RexsError> {
     if out.len() < 2 {
         return Err(RexsError::at(
             shaft,
@@ -354,5 +259,5 @@ fn read_bearings(
             ));
         }
     }
-    Ok(out)
+    Ok(())
 }

@@ -5,34 +5,9 @@ use std::fmt::Write;
 
 use super::gear_unit::GearUnit;
 use super::model::RexsModel;
+use super::scene_text::{clean, n, shaft_name};
 use super::shafts::ShaftData;
 use super::stage_data::StageData;
-
-/// A number as the scene writes it: the shortest text that reads back exactly, −0 as 0.
-fn n(x: f64) -> String {
-    format!("{}", x + 0.0)
-}
-
-/// A name from the model as the scene may write it, in a comment or a string: on one line (a line
-/// break would end the comment and let the rest be read as scene), no `"` (it would end the
-/// string), no other control characters.
-fn clean(name: &str) -> String {
-    name.chars()
-        .map(|c| {
-            if c.is_control() {
-                ' '
-            } else if c == '"' {
-                '\''
-            } else {
-                c
-            }
-        })
-        .collect()
-}
-
-fn shaft_name(id: u64) -> String {
-    format!("shaft_{id}")
-}
 
 pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -> String {
     let stem = std::path::Path::new(file_name).file_stem().and_then(|s| s.to_str()).unwrap_or("REXS model");
@@ -71,6 +46,9 @@ pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -
             "    # chosen: the model gives no lubricant; an ISO VG 220 mineral gear oil (a common CLP grade)."
         );
         let _ = writeln!(w, "    lubricant = iso_vg(220, mineral)");
+    }
+    for p in &unit.planetary {
+        super::write_planetary::planetary_stage(w, p);
     }
     for st in &unit.stages {
         stage(w, st);
@@ -176,7 +154,13 @@ fn shaft(w: &mut String, sh: &ShaftData) {
             b.id,
             clean(&b.designation),
             clean(&b.axial),
-            if b.sizes_from == "the model" { "the model" } else { "its designation" },
+            if b.sizes_from == "the model" {
+                "the model".to_string()
+            } else if let Some(how) = b.sizes_from.strip_prefix("chosen: ") {
+                format!("the parts it sits between; chosen: {how}")
+            } else {
+                "its designation".to_string()
+            },
             if b.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" }
         );
     }

@@ -29,6 +29,7 @@ mod readme;
 mod records_parquet;
 mod rexs;
 mod rexs_constructs;
+mod rexs_planetary;
 mod shaft_beam;
 mod six_dof;
 mod specs;
@@ -36,6 +37,7 @@ mod stage_pairs;
 mod stiffness;
 mod sweeps;
 mod thermal;
+mod undercut;
 mod units;
 
 use std::path::{Path, PathBuf};

@@ -163,21 +163,6 @@ fn xml_and_json_of_one_model_give_one_scene() {
     assert_eq!(body(CYLINDRICAL[0]), body(CYLINDRICAL[1]));
 }
 
-/// The planetary stage (XML, JSON, zipped) is refused naming the component, not half imported.
-#[test]
-fn a_planetary_stage_is_refused_by_name() {
-    for name in [
-        "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs",
-        "FVA_Planetary_stage_-_Minus_gearing_1.1.rexsj",
-        "FVA_Planetary_stage_-_Minus_gearing_1.1.rexsz",
-        "FVA_Planetary_stage_-_Minus_gearing_1.1_vers2.rexsj",
-    ] {
-        let e = gearloss::rexs::import_file(&rexs(&format!("planetary/{name}"))).expect_err(name);
-        assert!(e.to_string().contains("planetary stages are not imported"), "{name}: {e}");
-        assert!(e.component.as_deref().is_some_and(|c| c.contains("planet_carrier")), "{name}: {e}");
-    }
-}
-
 /// Every broken model fails with its messages (a snapshot each: all of a model's errors at once,
 /// `two_gears_without_teeth.rexs` two) and a hint each.
 #[test]
