@@ -3,8 +3,9 @@
 //! and the point the report reads.
 //!
 //! The planet bearings' losses are Palmgren's (or SKF's) moments at the planet's speed relative to
-//! the carrier under the bearing load |B|/count of [`super::planetary::loads`], times that speed, the count
-//! and n; they join the fixed point of the walk with the shafts' bearings.
+//! the carrier under each bearing's load of [`super::planetary::loads`] (|B|/count, or with a helical
+//! stage's tilting moment |(B_t/2, B_r/2 ± M/L)|), times that speed, summed over the bearings and
+//! the planets; they join the fixed point of the walk with the shafts' bearings.
 
 use super::kinematics::planetary::PlanetaryLayout;
 use super::layout::{Member, Stage};
@@ -41,19 +42,19 @@ pub(crate) fn planet_bearings(
     let speeds = layout.member_speeds(places);
     let torques = lossless_torques(layout, driving.index(), torque, speeds);
     let omega = layout.planet_speed(speeds);
-    let n = bearing.count as f64;
     // Each class of planets by its load; the place lists the most loaded planet's bearing.
     let (mut no_load, mut load, mut radial) = (0.0, 0.0, 0.0f64);
     for (count, divisor) in layout.planet_shares() {
-        let per_bearing = planet_forces(layout, torques, speeds, divisor).bearing / n;
-        radial = radial.max(per_bearing);
-        let (m0, m1) = match oil.nu {
-            Some(nu) => bearing.moments(per_bearing, 0.0, nu, omega, oil.mineral),
-            None => (0.0, None),
-        };
-        let per_planet = n * omega;
-        no_load += m0 * per_planet * count;
-        load += m1.unwrap_or(0.0) * per_planet * count;
+        let forces = planet_forces(layout, torques, speeds, divisor);
+        for per_bearing in forces.bearing_loads(bearing.count, layout.planet_bearing_spacing) {
+            radial = radial.max(per_bearing);
+            let (m0, m1) = match oil.nu {
+                Some(nu) => bearing.moments(per_bearing, 0.0, nu, omega, oil.mineral),
+                None => (0.0, None),
+            };
+            no_load += m0 * omega * count;
+            load += m1.unwrap_or(0.0) * omega * count;
+        }
     }
     let place =
         layout.place_of(crate::drive::kinematics::planetary::PlanetaryMember::Carrier).unwrap_or(driving.index());
@@ -85,6 +86,7 @@ pub(crate) fn point(
 ) -> PlanetaryPoint {
     let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
     let torques = lossless_torques(layout, driving.index(), torque, s.speeds);
+    let forces = planet_forces(layout, torques, s.speeds, most_loaded(layout));
     PlanetaryPoint {
         planets: layout.planets,
         held: layout.held(),
@@ -101,9 +103,30 @@ pub(crate) fn point(
         basic_efficiency: s.basic_efficiency,
         efficiency: s.efficiency,
         planet_speed: layout.planet_speed(s.speeds),
-        forces: planet_forces(layout, torques, s.speeds, most_loaded(layout)),
+        forces,
         planet_bearings,
         churning,
+        tilting_support: tilting_support(layout, &forces),
+    }
+}
+
+/// How the most loaded planet's bearings carry its tilting moment, in words; empty for a spur stage.
+fn tilting_support(layout: &PlanetaryLayout, forces: &super::planetary::loads::PlanetForces) -> String {
+    if forces.tilting == 0.0 {
+        return String::new();
+    }
+    match (layout.planet_bearing, layout.planet_bearing_spacing) {
+        (None, _) => "the scene gives the planets no bearings".into(),
+        (Some(b), Some(l)) if b.count == 2 => {
+            let loads = forces.bearing_loads(2, Some(l));
+            format!(
+                "its two bearings {:.3} mm apart carry |(B_t/2, B_r/2 ± M/L)| = {:.2} N and {:.2} N",
+                l * 1e3,
+                loads[0],
+                loads[1]
+            )
+        }
+        (Some(_), _) => "one bearing per planet: the moment is not on its load, which is |B| (a double-row bearing's share of it is not modelled)".into(),
     }
 }
 

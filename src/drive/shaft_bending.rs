@@ -48,7 +48,7 @@ pub struct ShaftBending {
 }
 
 /// The reactions [R_x, R_y, R_z] (N, on the shaft) of every place of `shaft` under `on`, and with
-/// `bent` its bending when it has sections. Two places: the rigid beam's statics
+/// `bent` its bending when it has sections. One place (a floating sun's shaft): −ΣF. Two places: the rigid beam's statics
 /// ([`super::statics::shaft_reactions`], whatever the sections and springs: two places are
 /// statically determinate); more: the elastic beam. The locating place takes −ΣF_z.
 /// `beam`, when given, is the shaft's beam made ready ([`shaft_beam_of`]); else it is made here.
@@ -69,6 +69,9 @@ pub fn support_reactions(
         _ => None,
     };
     let reactions: Vec<[f64; 3]> = match (positions.as_slice(), &solution) {
+        // A floating sun's shaft: its one place takes what its planets leave, nothing with n ≥ 2
+        // equally spaced planets but the helical sun's axial force.
+        ([_], _) => vec![[0, 1, 2].map(|k| -on.iter().map(|l| l.force[k]).sum::<f64>())],
         ([a, b], _) => super::statics::shaft_reactions(on, [*a, *b], shaft.locating).to_vec(),
         (_, Some(s)) => {
             let axial: f64 = -on.iter().map(|l| l.force[2]).sum::<f64>();

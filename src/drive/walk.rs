@@ -338,7 +338,7 @@ impl<'a> Walk<'a> {
                     Box::new(planetary_charges::point(&state, stage, m, t.abs(), parts))
                 });
                 let [f_t, f_r, f_a] = match &planetary {
-                    Some(pp) => [pp.forces.tangential[0], pp.forces.radial[0], 0.0],
+                    Some(pp) => [pp.forces.tangential[0], pp.forces.radial[0], pp.forces.axial],
                     None => sizes.magnitudes(m, t),
                 };
                 StagePoint {

@@ -32,6 +32,24 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<F
         });
     }
     out.extend(undercut_findings(drive));
+    let carries_a_sun = |j: usize| {
+        layout.stages.iter().any(|st| {
+            st.planetary.as_ref().is_some_and(|p| {
+                p.place_of(crate::drive::kinematics::planetary::PlanetaryMember::Sun)
+                    .is_some_and(|m| st.places[m].shaft == j)
+            })
+        })
+    };
+    for (_, shaft) in layout.shafts.iter().enumerate().filter(|(j, s)| s.bearings.len() == 1 && carries_a_sun(*j)) {
+        out.push(Finding {
+            severity: Severity::Note,
+            message: format!(
+                "shaft `{}` carries a floating sun on one bearing place ({}): its planets centre the sun, their forces cancel on it, so the place takes only what they leave (a helical sun's axial force)",
+                shaft.name,
+                place_at(shaft.bearings[0].position)
+            ),
+        });
+    }
     let loads = points.iter().flat_map(|p| {
         layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
             s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {

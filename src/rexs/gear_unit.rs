@@ -124,10 +124,26 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
         ));
     }
     onto_the_carrier_shaft(model, &mut unit);
+    let sleeves = super::joined_shafts::groups(model)?;
+    let gears = unit
+        .stages
+        .iter_mut()
+        .flat_map(|s| s.gears.iter_mut())
+        .chain(unit.planetary.iter_mut().flat_map(|p| [&mut p.sun, &mut p.ring]));
+    super::joined_shafts::onto_the_kept_shaft(model, &sleeves, gears, &mut unit.warnings);
     let places: Vec<(u64, f64)> = unit.planetary.iter().flat_map(|p| p.places()).collect();
-    let joined: Vec<(u64, Vec<u64>)> =
+    let mut joined: Vec<(u64, Vec<u64>)> =
         unit.planetary.iter().filter_map(|p| p.carrier.as_ref().map(|(s, others, _)| (*s, others.clone()))).collect();
-    unit.shafts = super::shafts::read_shafts(model, &unit.stages, &places, &joined, &mut unit.warnings)?;
+    joined.extend(sleeves);
+    // A sun among two planets or more, alone on its shaft, floats: one bearing place carries it.
+    let floating: Vec<u64> = unit
+        .planetary
+        .iter()
+        .filter(|p| p.planet_ids.len() >= 2 && p.held != super::planetary::Member::Sun)
+        .map(|p| p.sun.shaft)
+        .filter(|s| !unit.stages.iter().any(|st| st.gears.iter().any(|g| g.shaft == *s)))
+        .collect();
+    unit.shafts = super::shafts::read_shafts(model, &unit.stages, &places, &joined, &floating, &mut unit.warnings)?;
     let lubricant = super::cases::read_lubricant(model, &mut unit.warnings);
     let cases = super::cases::read_cases(model, &unit.shafts, &mut unit.warnings);
     match (lubricant, cases) {

@@ -17,6 +17,7 @@ pub(crate) mod cases;
 pub(crate) mod formats;
 pub(crate) mod gear_unit;
 pub(crate) mod gears;
+pub(crate) mod joined_shafts;
 pub(crate) mod model;
 pub(crate) mod planetary;
 pub(crate) mod planetary_hold;

@@ -7,7 +7,7 @@
 //! the carrier). The member held is the one joined to the casing by a coupling (an engaged
 //! `switchable_coupling`, a `coupling`, a shaft–hub connection) or a ring that is a part of the
 //! casing. Refused by name: a compound set (several suns or rings, stepped planets), planets that
-//! differ, no member or two held, a helical stage.
+//! differ, no member or two held, helix angles that do not mesh.
 
 use super::bearings::{read_bearing, BearingData, BEARING_KINDS};
 use super::error::RexsError;
@@ -40,6 +40,8 @@ pub(crate) struct PlanetaryData {
     pub carrier: Option<(u64, Vec<u64>, f64)>,
     /// One planet's bearings (their count is the planet bearing's `count`).
     pub planet_bearings: Vec<BearingData>,
+    /// The distance between a planet's two bearings (mm), where it has two.
+    pub planet_bearing_spacing: Option<f64>,
     /// The cylindrical stages read as its meshes, and the couplings read as its hold.
     pub meshes: Vec<u64>,
     pub couplings: Vec<u64>,
@@ -144,13 +146,7 @@ pub(crate) fn read_planetary(
     }
     let planet = planet_gears[0].clone();
     same_planets(c, &planet_gears)?;
-    if sun.helix_angle != 0.0 || planet.helix_angle != 0.0 || ring.helix_angle != 0.0 {
-        return Err(RexsError::at(
-            c,
-            format!("a helical planetary stage (β = {} deg) is not modelled yet", planet.helix_angle.abs()),
-            "gearloss models spur planetary stages; the axial forces of a helical one are not in its model",
-        ));
-    }
+    check_hands(c, &sun, &planet, &ring)?;
     let first_mesh = &model.components
         [&sun_meshes.iter().find(|(_, a, b)| *a == planet.id || *b == planet.id).expect("a planet meshes").0];
     let center_distance = quantity(first_mesh, &["center_distance"], Kind::Length)?;
@@ -186,10 +182,30 @@ pub(crate) fn read_planetary(
         held_by,
         carrier_id: carrier,
         carrier: carrier_place,
+        planet_bearing_spacing: match planet_bearings.as_slice() {
+            [a, b] => Some((a.at - b.at).abs()),
+            _ => None,
+        },
         planet_bearings,
         meshes,
         couplings,
     })
+}
+
+/// A helical stage's hands: the planets' opposite to the sun's (an external mesh), the ring's the
+/// planets' (an internal one), one |β|.
+fn check_hands(c: &Component, sun: &GearData, planet: &GearData, ring: &GearData) -> Result<(), RexsError> {
+    let (s, p, r) = (sun.helix_angle, planet.helix_angle, ring.helix_angle);
+    let same_size = (s.abs() - p.abs()).abs() < 1e-9 && (p.abs() - r.abs()).abs() < 1e-9;
+    let hands = s == 0.0 || (s * p < 0.0 && p * r > 0.0);
+    if same_size && hands {
+        return Ok(());
+    }
+    Err(RexsError::at(
+        c,
+        format!("its helix angles are {s} (sun), {p} (planet) and {r} deg (ring): the planets mesh with the sun in the other hand and with the ring in their own, at one |β|"),
+        "check the signs of `helix_angle_reference_diameter` (> 0 right hand, < 0 left)",
+    ))
 }
 
 /// Every planet has the first one's teeth, module, helix, face width and flank.

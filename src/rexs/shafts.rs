@@ -38,6 +38,7 @@ pub(crate) fn read_shafts(
     stages: &[StageData],
     places: &[(u64, f64)],
     joined: &[(u64, Vec<u64>)],
+    floating: &[u64],
     warnings: &mut Vec<String>,
 ) -> Result<Vec<ShaftData>, RexsError> {
     let mut ids: Vec<u64> = stages.iter().flat_map(|s| s.gears.iter().map(|g| g.shaft)).collect();
@@ -57,7 +58,7 @@ pub(crate) fn read_shafts(
     let mut errors = Vec::new();
     for id in ids {
         let others = joined.iter().find(|(s, _)| *s == id).map_or(&[][..], |(_, o)| o.as_slice());
-        match read_shaft(model, id, stages, places, others, &loads, warnings) {
+        match read_shaft(model, id, (stages, places), others, floating.contains(&id), &loads, warnings) {
             Ok(shaft) => out.push(shaft),
             Err(e) => errors.push(e),
         }
@@ -87,9 +88,9 @@ pub(crate) fn read_shafts(
 fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
     model: &'m RexsModel,
     id: u64,
-    stages: &[StageData],
-    places: &[(u64, f64)],
+    (stages, places): (&[StageData], &[(u64, f64)]),
     joined: &[u64],
+    floating: bool,
     loads: &impl Fn(u64) -> L,
     warnings: &mut Vec<String>,
 ) -> Result<ShaftData, RexsError> {
@@ -123,7 +124,7 @@ fn read_shaft<'m, L: Iterator<Item = &'m Component>>(
         bearings.extend(theirs);
     }
     bearings.sort_by(|a, b| a.at.total_cmp(&b.at));
-    check_places(c, &mut bearings, warnings)?;
+    check_places(c, &mut bearings, floating, warnings)?;
     let mut points: Vec<f64> = bearings.iter().map(|b| b.at).collect();
     points.extend(stages.iter().flat_map(|s| &s.gears).filter(|g| g.shaft == id).map(|g| g.at));
     points.extend(places.iter().filter(|(s, _)| *s == id).map(|(_, at)| *at));
@@ -240,9 +241,22 @@ fn read_bearings(
     Ok(out)
 }
 
-/// A shaft sits on two bearing places or more; where none locates and each takes one axial
-/// direction, the first locates (chosen, said).
-fn check_places(shaft: &Component, out: &mut [BearingData], warnings: &mut Vec<String>) -> Result<(), RexsError> {
+/// A shaft sits on two bearing places or more (a floating sun's on one, which locates); where none
+/// locates and each takes one axial direction, the first locates (chosen, said).
+fn check_places(
+    shaft: &Component,
+    out: &mut [BearingData],
+    floating: bool,
+    warnings: &mut Vec<String>,
+) -> Result<(), RexsError> {
+    if floating && out.len() == 1 {
+        warnings.push(format!(
+            "{}: a floating sun's shaft on one bearing place: its planets centre the sun",
+            describe(shaft)
+        ));
+        out[0].locating = true;
+        return Ok(());
+    }
     if out.len() < 2 {
         return Err(RexsError::at(
             shaft,

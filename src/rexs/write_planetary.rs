@@ -27,9 +27,15 @@ pub(super) fn planetary_stage(w: &mut String, p: &PlanetaryData) {
     let _ = writeln!(w, "        planetary {{");
     let _ = writeln!(w, "            planets = {}", p.planet_ids.len());
     let centre = p.center_distance.map_or_else(String::new, |a| format!("  center_distance = {} mm", n(a)));
+    let helix = if p.sun.helix_angle == 0.0 {
+        String::new()
+    } else {
+        let hand = if p.sun.helix_angle > 0.0 { "right" } else { "left" };
+        format!("  helix_angle = {} deg  hand = {hand}", n(p.sun.helix_angle.abs()))
+    };
     let _ = writeln!(
         w,
-        "            module = {} mm  pressure_angle = {} deg  face_width = {} mm{centre}",
+        "            module = {} mm  pressure_angle = {} deg{helix}  face_width = {} mm{centre}",
         n(p.planet.module),
         n(p.planet.pressure_angle),
         n(p.face_width)
@@ -92,6 +98,9 @@ pub(super) fn planetary_stage(w: &mut String, p: &PlanetaryData) {
             ids(&p.planet_bearings.iter().map(|b| b.id).collect::<Vec<_>>()),
             if b.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" }
         );
+        if let Some(l) = p.planet_bearing_spacing {
+            let _ = writeln!(w, "                      bearing_spacing = {} mm  # their places on the pin", n(l));
+        }
     }
     let _ = writeln!(w, "            }}");
     let _ = writeln!(w, "{}", member("ring   ", &p.ring, Member::Ring, "ring_gear"));

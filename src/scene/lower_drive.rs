@@ -125,8 +125,12 @@ pub(super) fn build_drive(
             }
         }
     }
-    let shafts =
-        shafts.iter().filter_map(|s| super::lower_drive_places::lower_places(s, one_pair, errors)).collect::<Vec<_>>();
+    let floating = floating_suns(&built, shafts.len());
+    let shafts = shafts
+        .iter()
+        .enumerate()
+        .filter_map(|(j, s)| super::lower_drive_places::lower_places(s, (one_pair, floating[j]), errors))
+        .collect::<Vec<_>>();
     (errors.len() == before).then(|| Drive {
         shafts,
         stages: built,
@@ -297,6 +301,21 @@ fn check_bearings_everywhere(shafts: &[ShaftDecl], errors: &mut Vec<Diagnostic>)
     }
 }
 
+/// Per shaft: whether its one gear is a planetary stage's sun among two planets or more (a
+/// floating sun: the planets centre it, so one bearing place may carry its shaft).
+fn floating_suns(stages: &[crate::drive::Stage], shafts: usize) -> Vec<bool> {
+    use crate::drive::kinematics::planetary::PlanetaryMember;
+    (0..shafts)
+        .map(|j| {
+            let on: Vec<(&crate::drive::Stage, usize)> = stages
+                .iter()
+                .flat_map(|st| (0..2).filter(move |m| st.places[*m].shaft == j).map(move |m| (st, m)))
+                .collect();
+            matches!(on.as_slice(), [(st, m)] if st.planetary.as_ref().is_some_and(|p| p.planets >= 2 && p.members[*m] == PlanetaryMember::Sun))
+        })
+        .collect()
+}
+
 /// A planetary stage's layout from its sun–planet pair and its declaration.
 fn planetary_layout(
     sun_pair: &crate::model::GearPair,
@@ -320,5 +339,13 @@ fn planetary_layout(
         planet_mass: d.planet_mass,
         planet_bearing: d.planet_bearing,
         load_sharing_factor: d.load_sharing_factor,
+        helix: d.sun_hand.filter(|_| sp.helix_angle != 0.0).map(|h| {
+            crate::drive::kinematics::planetary::PlanetaryHelix {
+                helix_angle: sp.helix_angle,
+                sun_hand: h.sign(),
+                sun_reference_radius: sp.pitch_radius[0],
+            }
+        }),
+        planet_bearing_spacing: d.planet_bearing_spacing,
     })
 }

@@ -1,4 +1,5 @@
-//! A drive's shafts on their bearing places: none, or two or more at distinct positions, each
+//! A drive's shafts on their bearing places: none, or two or more at distinct positions (one for a
+//! floating sun's shaft), each
 //! with its `at` (a rigid beam's statics on two; more need the shaft's sections, the elastic
 //! beam), every place and every gear on the sections when given, at most one place that locates.
 
@@ -13,14 +14,18 @@ use crate::drive::{Shaft, Stage};
 /// given; at most one says `locating`. A one-pair scene's shaft (`one_pair`) may instead give no
 /// `at` at all, on any number of places and without sections: each bearing then carries an equal
 /// share of the gear force, the pair's reading (`crate::drive::shaft_bending::shared_reactions`).
-pub(super) fn lower_places(s: &ShaftDecl, one_pair: bool, errors: &mut Vec<Diagnostic>) -> Option<Shaft> {
+pub(super) fn lower_places(
+    s: &ShaftDecl,
+    (one_pair, floating): (bool, bool),
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Shaft> {
     let bearings: Vec<_> = s.bearings.iter().map(|(b, _, _)| *b).collect();
     let unplaced = one_pair
         && s.body.is_none()
         && s.stiffness.iter().all(Option::is_none)
         && bearings.iter().all(|b| b.position.is_none());
     if !unplaced {
-        check_places(s, errors)?;
+        check_places(s, floating, errors)?;
     }
     let locating: Vec<(usize, Span)> =
         s.bearings.iter().enumerate().filter_map(|(i, (_, l, _))| l.map(|span| (i, span))).collect();
@@ -47,14 +52,15 @@ pub(super) fn lower_places(s: &ShaftDecl, one_pair: bool, errors: &mut Vec<Diagn
     })
 }
 
-/// Two or more places, each with its `at`, at distinct positions on the sections when given; more
-/// than two only with sections; `radial_stiffness` only with sections.
-fn check_places(s: &ShaftDecl, errors: &mut Vec<Diagnostic>) -> Option<()> {
+/// Two or more places (one for a floating sun's shaft: its planets centre it), each with its `at`,
+/// at distinct positions on the sections when given; more than two only with sections;
+/// `radial_stiffness` only with sections.
+fn check_places(s: &ShaftDecl, floating: bool, errors: &mut Vec<Diagnostic>) -> Option<()> {
     let fail = |errors: &mut Vec<Diagnostic>, span: Span, reason: String, hint: &str| {
         errors.push(Diagnostic::new(DiagnosticKind::OutOfRange, span, reason).hint(hint.to_string()));
         None
     };
-    if let [_] = s.bearings.as_slice() {
+    if let ([_], false) = (s.bearings.as_slice(), floating) {
         return fail(
             errors,
             s.name.span,

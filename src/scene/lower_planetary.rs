@@ -8,7 +8,8 @@
 //!     module = 2 mm  pressure_angle = 20 deg  face_width = 25 mm
 //!     sun     { teeth = 25  shaft = motor  at = 40 mm  material = steel  roughness_ra = 0.4 um }
 //!     planet  { teeth = 25  material = steel  roughness_ra = 0.4 um
-//!               bearing(type = cylindrical_roller, bore = 15 mm, outside = 28 mm, count = 2) }
+//!               bearing(type = cylindrical_roller, bore = 15 mm, outside = 28 mm, count = 2)
+//!               bearing_spacing = 14 mm }
 //!     ring    { teeth = 75  tip_diameter = 147 mm  shaft = housing  material = steel }
 //!     carrier { shaft = output  at = 40 mm }
 //! }
@@ -40,8 +41,12 @@ pub(super) struct PlanetaryDecl {
     pub members: [PlanetaryMember; 2],
     pub planet_mass: f64,
     pub planet_bearing: Option<Bearing>,
+    /// The distance between a planet's two bearings (m), `bearing_spacing`.
+    pub planet_bearing_spacing: Option<f64>,
     /// K_γ, 1 when not given.
     pub load_sharing_factor: f64,
+    /// The sun's hand (`hand`) of a helical stage; None for a spur stage.
+    pub sun_hand: Option<crate::drive::Hand>,
 }
 
 /// The sun–planet pair, the members' places [(shaft, at)] on the stage's two places, and the rest.
@@ -56,6 +61,7 @@ pub(super) fn lower_planetary(
     let mut keys = PAIR_KEYS.to_vec();
     keys.push("planets");
     keys.push("load_sharing_factor");
+    keys.push("hand");
     let f = Fields::read("the `planetary` block", block.span, &block.items, &keys, &members, &[], errors);
     let member = |name: &str| f.blocks.iter().find(|b| b.kind.text == name).copied();
     let mut missing = false;
@@ -78,7 +84,7 @@ pub(super) fn lower_planetary(
     }
     let planets = lower_planet_count(&f, block, errors);
     let helix: Option<Given<crate::model::Angle>> = f.optional("helix_angle", errors);
-    super::lower_planetary_checks::check_spur(helix.as_ref(), errors)?;
+    let sun_hand = super::lower_planetary_checks::sun_hand(&f, helix.as_ref(), block, errors);
     if missing {
         return None;
     }
@@ -91,13 +97,13 @@ pub(super) fn lower_planetary(
         .collect();
     let place = ["shaft", "at"];
     let (sun_gear, sun_place) = split(sun, &place, &[]);
-    let (planet_gear, planet_extra) = split(planet, &["shaft", "at", "mass"], &["bearing"]);
+    let (planet_gear, planet_extra) = split(planet, &["shaft", "at", "mass", "bearing_spacing"], &["bearing"]);
     let (ring_gear, ring_place) = split(ring, &place, &[]);
     let sun_pair = gears_block(block, &pair_items, [sun_gear, planet_gear.clone()], false);
     let ring_block = gears_block(block, &pair_items, [planet_gear, ring_gear], true);
     let sun_pair = super::lower_gears::lower_gears_named(&sun_pair, ["sun", "planet"], materials, errors);
     let ring_pair = super::lower_gears::lower_gears_named(&ring_block, ["planet", "ring"], materials, errors);
-    let (planet_mass, planet_bearing, bearing_outside) = lower_planet_parts(&planet_extra, planet, errors);
+    let (planet_mass, planet_bearing, bearing_outside, spacing) = lower_planet_parts(&planet_extra, planet, errors);
     let places = [("sun", sun, sun_place), ("ring", ring, ring_place), ("carrier", carrier, carrier.items.clone())]
         .map(|(name, b, items)| lower_member_place(name, b, &items, errors));
     let (sun_pair, mut ring_pair, planets) = (sun_pair?, ring_pair?, planets?);
@@ -133,8 +139,24 @@ pub(super) fn lower_planetary(
     )?;
     let planet_mass = planet_mass.map_or_else(|| disc(2.0 * sun_geometry.pitch_radius[1]), |(m, _)| m);
     let load_sharing_factor = lower_load_sharing_factor(&f, planets, errors)?;
-    let decl =
-        PlanetaryDecl { ring_pair, planets, members: [m0, m1], planet_mass, planet_bearing, load_sharing_factor };
+    let sun_hand = sun_hand?;
+    super::lower_planetary_checks::check_tilting_support(
+        sun_hand.is_some(),
+        planet_bearing.as_ref().map(|b| b.count),
+        spacing,
+        planet.kind.span,
+        errors,
+    )?;
+    let decl = PlanetaryDecl {
+        ring_pair,
+        planets,
+        members: [m0, m1],
+        planet_mass,
+        planet_bearing,
+        planet_bearing_spacing: spacing.map(|(l, _)| l),
+        load_sharing_factor,
+        sun_hand,
+    };
     Some((sun_pair, [p0, p1], decl))
 }
 
@@ -201,17 +223,20 @@ fn lower_planet_count(f: &Fields, block: &Block, errors: &mut Vec<Diagnostic>) -
     Some((n as u32, v.span))
 }
 
-/// The planet's `mass` (optional, with its span) and `bearing(...)` (optional) with the diameter
+/// The planet's `mass` (optional, with its span), `bearing(...)` (optional) with the diameter
 /// its outer ring needs in the planet (m: `outside`, else its mean diameter, which D exceeds) and
-/// the call's span.
+/// the call's span, and `bearing_spacing` (m, with its span).
 #[allow(clippy::type_complexity)]
 fn lower_planet_parts(
     items: &[Item],
     planet: &Block,
     errors: &mut Vec<Diagnostic>,
-) -> (Option<(f64, Span)>, Option<Bearing>, Option<(f64, Span)>) {
-    let f = Fields::read("the `planet` block", planet.span, items, &["mass"], &[], &["bearing"], errors);
+) -> (Option<(f64, Span)>, Option<Bearing>, Option<(f64, Span)>, Option<(f64, Span)>) {
+    let f =
+        Fields::read("the `planet` block", planet.span, items, &["mass", "bearing_spacing"], &[], &["bearing"], errors);
     let mass: Option<Given<Mass>> = super::fields::positive(f.optional("mass", errors), "mass", errors);
+    let spacing: Option<Given<Length>> =
+        super::fields::positive(f.optional("bearing_spacing", errors), "bearing_spacing", errors);
     let bearings: Vec<&&Call> = f.calls.iter().filter(|c| c.name.text == "bearing").collect();
     if let [_, second, ..] = bearings.as_slice() {
         errors.push(
@@ -228,7 +253,7 @@ fn lower_planet_parts(
         let d = d.map(|d| d.value.get::<meter>()).or(bearing.as_ref().map(|b| b.mean_diameter))?;
         Some((d, c.span))
     });
-    (mass.map(|m| (m.value.value, m.span)), bearing, outside)
+    (mass.map(|m| (m.value.value, m.span)), bearing, outside, spacing.map(|l| (l.value.get::<meter>(), l.span)))
 }
 
 /// A member's `shaft` (a shaft's name, or `housing`: held) and `at` (needed where it turns):

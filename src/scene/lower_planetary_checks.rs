@@ -1,6 +1,6 @@
 //! The conditions a planetary stage must meet before its physics means anything: the planets fit
-//! (assembly condition) and clear each other (neighbour condition), helical planetaries wait, and
-//! exactly one member is held.
+//! (assembly condition) and clear each other (neighbour condition), a helical stage names the sun's
+//! hand and carries its planets' tilting on two bearings, and exactly one member is held.
 
 use super::ast::*;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
@@ -84,22 +84,84 @@ pub(super) fn one_held(
     }
 }
 
-/// A helical planetary stage is refused: its axial forces on the sun and the planets' tilting
-/// moments are not modelled in this version.
-pub(super) fn check_spur(
+/// The sun's hand of a helical stage (`hand = right`: the sun's; the planets' the other, the
+/// ring's the planets'): Some(None) for a spur stage, None (an error) when a helical stage gives no
+/// hand or a spur one gives one.
+pub(super) fn sun_hand(
+    f: &super::fields::Fields,
     helix: Option<&crate::model::Given<crate::model::Angle>>,
+    block: &Block,
     errors: &mut Vec<Diagnostic>,
-) -> Option<()> {
-    match helix {
-        Some(b) if b.value.value != 0.0 => {
+) -> Option<Option<crate::drive::Hand>> {
+    let helical = helix.is_some_and(|b| b.value.value != 0.0);
+    let hand = f.name("hand", &["left", "right"], errors);
+    match (helical, hand) {
+        (true, Some(h)) => {
+            Some(Some(if h.text == "left" { crate::drive::Hand::Left } else { crate::drive::Hand::Right }))
+        }
+        (true, None) => {
             errors.push(
-                Diagnostic::new(DiagnosticKind::OutOfRange, b.span, "a helical planetary stage is not available in this version")
-                    .hint("give `helix_angle = 0 deg` (spur); the axial forces on the sun and the planets' tilting moments come later"),
+                Diagnostic::new(
+                    DiagnosticKind::MissingKey,
+                    block.kind.span,
+                    "a helical planetary stage does not say the sun's `hand`",
+                )
+                .hint("add `hand = right` (the sun's; the planets take the other hand, the ring the planets')"),
             );
             None
         }
-        _ => Some(()),
+        (false, Some(h)) => {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, h.span, "a spur planetary stage has no hand")
+                    .hint("give `helix_angle` for a helical stage, or leave out `hand`"),
+            );
+            None
+        }
+        (false, None) => Some(None),
     }
+}
+
+/// A helical stage's planets tilt under their two meshes' axial forces: two bearings a known
+/// distance apart carry the moment (`count = 2` with `bearing_spacing`). One bearing per planet is
+/// taken as it is (the report says the moment is not on it); three or more, or two without their
+/// spacing, are refused.
+pub(super) fn check_tilting_support(
+    helical: bool,
+    count: Option<usize>,
+    spacing: Option<(f64, Span)>,
+    planet: Span,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<()> {
+    let problem = match (helical, count, spacing) {
+        (true, Some(2), None) => Some("the planets' two bearings need their `bearing_spacing`: they carry the planet's tilting moment in a helical stage"),
+        (true, Some(c), _) if c > 2 => Some("a helical stage's planet tilts under its axial forces: on more than two bearings their shares are not known"),
+        _ => None,
+    };
+    let span = spacing.map_or(planet, |(_, s)| s);
+    if let Some(reason) = problem {
+        errors.push(
+            Diagnostic::new(DiagnosticKind::OutOfRange, span, reason)
+                .hint("give each planet `bearing(..., count = 2)` and `bearing_spacing = 30 mm` (centre to centre, the mesh midway)"),
+        );
+        return None;
+    }
+    if let (Some(c), Some((l, s))) = (count, spacing) {
+        if c != 2 {
+            errors.push(
+                Diagnostic::new(
+                    DiagnosticKind::OutOfRange,
+                    s,
+                    format!(
+                        "`bearing_spacing` = {:.3} mm is the distance between two bearings, but the planet has {c}",
+                        l * 1e3
+                    ),
+                )
+                .hint("give `count = 2` in the planet's `bearing(...)`, or leave out `bearing_spacing`"),
+            );
+            return None;
+        }
+    }
+    Some(())
 }
 
 /// A planet's parts must fit it. Its bearing's outer ring sits in the planet's bore, inside the

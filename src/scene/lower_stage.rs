@@ -77,7 +77,8 @@ pub(super) fn lower_stage(
             return None;
         }
         let (pair, places, decl) = super::lower_planetary::lower_planetary(planetary, materials, errors)?;
-        return Some(StageDecl { name, pair, places, hand: None, direction, lubrication, planetary: Some(decl) });
+        let hand = decl.sun_hand;
+        return Some(StageDecl { name, pair, places, hand, direction, lubrication, planetary: Some(decl) });
     }
     let Some(gears) = f.blocks.iter().find(|b| b.kind.text == "gears") else {
         errors.push(

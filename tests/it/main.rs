@@ -23,6 +23,7 @@ mod losses;
 mod oil_sweep;
 mod pair_cycle;
 mod planetary;
+mod planetary_helical;
 mod plot_text;
 mod properties;
 mod readme;

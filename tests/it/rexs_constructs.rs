@@ -177,3 +177,18 @@ fn the_ends_follow_from_the_torque_loads() {
         imported.warnings
     );
 }
+
+/// A gear on a sleeve splined to its shaft (the REXS 1.4 model with gear 17 moved onto shaft 905,
+/// which sits on shaft 13 from u = 20 mm through an `involute_spline_connection`; XML and its JSON
+/// twin): the sleeve is one with shaft 13, the gear at its place along u, so the scene's code is
+/// the original model's, and the reader says so.
+#[test]
+fn a_gear_on_a_sleeve_sits_on_the_shaft_it_is_joined_to() {
+    let original = code_lines(&import(CYLINDRICAL[0]).scene);
+    for name in ["constructs/gear_on_a_sleeve.rexs", "constructs/gear_on_a_sleeve.rexsj"] {
+        let imported = import(name);
+        assert_eq!(code_lines(&imported.scene), original, "{name}");
+        assert!(imported.warnings.iter().any(|w| w.contains("gear 17: on shaft 905, joined to shaft 13")), "{name}");
+        gearloss::check(name, &imported.scene).unwrap_or_else(|e| panic!("{name}: {e}"));
+    }
+}

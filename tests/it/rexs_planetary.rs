@@ -96,11 +96,18 @@ fn ratio(drive: &gearloss::model::SceneDrive) -> f64 {
 /// cheeks with a bearing each (joined on the first cheek's shaft at their places along u), a
 /// stage's pinion on the far cheek (on the carrier's shaft, at 100 + 40 mm), needle roller
 /// planet bearings (two per planet, the cylindrical roller bearing's factors), then a parallel
-/// stage: the ratio −(1 + 72/24)·60/20 = −12 (the external mesh turns the sense). And a star stage, the carrier held by a coupling,
-/// the ring on the output shaft: −72/24.
+/// stage: the ratio −(1 + 72/24)·60/20 = −12 (the external mesh turns the sense); the same with
+/// a 10° helix (the sun right hand: `hand = right`, the planets' bearings 12 mm apart on their
+/// pins: `bearing_spacing`), and with its sun floating (its shaft on one bearing). And a star stage, the carrier held by a coupling, the ring on the
+/// output shaft: −72/24.
 #[test]
 fn the_planetary_constructs_import_and_run() {
-    for (stem, want_ratio, held) in [("planetary_and_parallel", -12.0, "ring"), ("carrier_held", -3.0, "carrier")] {
+    for (stem, want_ratio, held) in [
+        ("planetary_and_parallel", -12.0, "ring"),
+        ("helical_planetary", -12.0, "ring"),
+        ("floating_sun", -12.0, "ring"),
+        ("carrier_held", -3.0, "carrier"),
+    ] {
         let body = |n: &str| import(n).scene.lines().skip(1).collect::<Vec<_>>().join("\n");
         let (xml, json) = (format!("constructs/{stem}.rexs"), format!("constructs/{stem}.rexsj"));
         assert_eq!(body(&xml), body(&json), "{stem}: XML and JSON give one scene");
@@ -113,7 +120,18 @@ fn the_planetary_constructs_import_and_run() {
         assert!(!turning.contains(&held) && turning.len() == 2, "{stem}: {turning:?}");
         assert!((ratio(drive) - want_ratio).abs() < 1e-12 * want_ratio.abs(), "{stem}: {}", ratio(drive));
         let b = p.planet_bearing.as_ref().unwrap();
-        if stem == "planetary_and_parallel" {
+        match &p.helix {
+            Some(h) => {
+                assert!(stem == "helical_planetary" || stem == "floating_sun", "{stem}");
+                assert!((h.helix_angle - 10f64.to_radians()).abs() < 1e-15 && h.sun_hand == 1.0, "{h:?}");
+                assert!((p.planet_bearing_spacing.unwrap() - 12e-3).abs() < 1e-15);
+                assert!(imported.scene.contains("helix_angle = 10 deg  hand = right"));
+            }
+            None => assert!(stem != "helical_planetary" && stem != "floating_sun"),
+        }
+        let sun_places = drive.layout.shafts.iter().find(|s| s.name == "shaft_10").unwrap().bearings.len();
+        assert_eq!(sun_places, if stem == "floating_sun" { 1 } else { 2 }, "{stem}");
+        if stem != "carrier_held" {
             assert_eq!(b.count, 2);
             assert!((b.mean_diameter - 23e-3).abs() < 1e-12);
             let carrier = drive.layout.shafts.iter().find(|s| s.name == "shaft_31").unwrap();

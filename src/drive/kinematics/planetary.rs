@@ -205,6 +205,27 @@ pub struct PlanetaryLayout {
     /// K_γ ≥ 1: the most loaded planet carries K_γ/n of the sun's torque, the other n − 1 share the
     /// rest equally (1: equal sharing).
     pub load_sharing_factor: f64,
+    /// A helical stage's helix; None for a spur stage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub helix: Option<PlanetaryHelix>,
+    /// The distance between a planet's two bearings (m): they carry its tilting moment in a helical
+    /// stage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planet_bearing_spacing: Option<f64>,
+}
+
+/// A helical planetary stage's helix: the sun's hand (the planets' is the other, the ring's the
+/// planets'), β at the reference circle and the sun's reference radius, from which each mesh's
+/// axial force F_a = F_t tan β_w = |T_sun| tan β/(n r_sun) follows (equal in both meshes: the
+/// planet's torque balance).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct PlanetaryHelix {
+    /// β (rad, > 0).
+    pub helix_angle: f64,
+    /// +1 for a right-hand sun, −1 for a left-hand one.
+    pub sun_hand: f64,
+    /// The sun's reference radius r = m_t z/2 (m).
+    pub sun_reference_radius: f64,
 }
 
 impl PlanetaryLayout {

@@ -15,6 +15,19 @@
 //! B = −m ω_c² a_w r̂ − F_sun→planet − F_ring→planet, |B| shared by the planet's `count` bearings.
 //! With n ≥ 2 the forces on each member cancel (only the torque remains); one planet loads the
 //! sun's and the carrier's shafts.
+//!
+//! A helical stage adds each mesh's axial force F_a = F_t tan β_w = |T_sun| tan β/(n r_sun) (the
+//! same in both meshes: F_t,sp r_w,p = F_t,pr r_w,p' and tan β_w = tan β r_w/r). Its sense follows
+//! the parallel stage's rule ([`crate::drive::forces`]): a gear of hand h (+1 right) whose mesh
+//! torque about +z is T_m receives −h sign(T_m) F_a along z. On the sun, T_m = −T_sun: F_z,sun =
+//! h_sun sign(T_sun) F_a per planet, n F_a in all; the planet receives the reverse at the sun mesh
+//! and, its two mesh torques opposite, the same F_z,sun at the ring mesh, so the ring receives
+//! −F_z,sun per planet and the planet's axial forces cancel into the tilting moment
+//! M = F_a (r_w,p + r_w,p') about its tangent, which its bearings pass to the carrier: there the two
+//! axial forces act at the contact points, r_w,sun r̂ and r_w,ring r̂ (their sum over n ≥ 2 equally
+//! spaced planets vanishes). A planet on two bearings a spacing L apart, its mesh plane midway,
+//! gives each half the in-plane load and ±M/L along r̂: |(B_t/2, B_r/2 ± M/L)| (Niemann & Winter,
+//! *Maschinenelemente* III, "Umlaufgetriebe"; the planet bearing's tilting load as in VDI 2157).
 
 use crate::drive::forces::GearLoad;
 use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, PlanetaryLayout, PlanetaryMember};
@@ -29,8 +42,36 @@ pub struct PlanetForces {
     pub radial: [f64; 2],
     /// m ω_c² a_w.
     pub centrifugal: f64,
-    /// |B|, the whole planet's bearing load.
+    /// |B|, the whole planet's bearing load in the transverse plane.
     pub bearing: f64,
+    /// F_a of each mesh (N; 0 for a spur stage).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub axial: f64,
+    /// The planet's tilting moment F_a (r_w,p + r_w,p') (N·m; 0 for a spur stage).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tilting: f64,
+    /// B's tangential and radial parts (N), for the bearings' split.
+    #[serde(skip)]
+    pub bearing_parts: [f64; 2],
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
+
+impl PlanetForces {
+    /// The load of each of a planet's `count` bearings (N): |B|/count each, or, where two bearings
+    /// `spacing` apart carry a tilting moment, |(B_t/2, B_r/2 ± M/L)|.
+    pub fn bearing_loads(&self, count: usize, spacing: Option<f64>) -> Vec<f64> {
+        match (count, spacing) {
+            (2, Some(l)) if self.tilting != 0.0 => {
+                let [t, r] = self.bearing_parts;
+                let m = self.tilting / l;
+                vec![(0.5 * t).hypot(0.5 * r + m), (0.5 * t).hypot(0.5 * r - m)]
+            }
+            _ => vec![self.bearing / count as f64; count],
+        }
+    }
 }
 
 /// The lossless external torques [T_sun, T_ring, T_carrier] when place `driving` puts `torque`
@@ -58,7 +99,17 @@ pub(crate) fn planet_forces(
     // meshes add, the sun's radial push outwards and the ring's inwards meet the centrifugal force.
     let b_t = f_sun + f_ring;
     let b_r = centrifugal + radial[0] - radial[1];
-    PlanetForces { tangential: [f_sun, f_ring], radial, centrifugal, bearing: b_t.hypot(b_r) }
+    let axial =
+        layout.helix.map_or(0.0, |h| torques[0].abs() * h.helix_angle.tan() / (divisor * h.sun_reference_radius));
+    PlanetForces {
+        tangential: [f_sun, f_ring],
+        radial,
+        centrifugal,
+        bearing: b_t.hypot(b_r),
+        axial,
+        tilting: axial * (r[1] + r[2]),
+        bearing_parts: [b_t, b_r],
+    }
 }
 
 /// The forces on the stage's members that sit on shafts, one per planet and member, when place
@@ -80,11 +131,18 @@ pub(crate) fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64,
         let on_sun = along(-t[0].signum() * f.tangential[0], -f.radial[0]);
         let on_ring = along(-t[1].signum() * f.tangential[1], f.radial[1]);
         let on_carrier = [-(on_sun[0] + on_ring[0]), -(on_sun[1] + on_ring[1])];
-        for (member, radius, force) in [
-            (PlanetaryMember::Sun, r[0], on_sun),
-            (PlanetaryMember::Ring, r[3], on_ring),
-            (PlanetaryMember::Carrier, layout.center_distance, on_carrier),
-        ] {
+        let axial_on_sun = layout.helix.map_or(0.0, |h| h.sun_hand * t[0].signum() * f.axial);
+        let mut loads = vec![
+            (PlanetaryMember::Sun, r[0], [on_sun[0], on_sun[1], axial_on_sun]),
+            (PlanetaryMember::Ring, r[3], [on_ring[0], on_ring[1], -axial_on_sun]),
+            (PlanetaryMember::Carrier, layout.center_distance, [on_carrier[0], on_carrier[1], 0.0]),
+        ];
+        if axial_on_sun != 0.0 {
+            // The planet's axial forces reach the carrier where they act: its tilting moment.
+            loads.push((PlanetaryMember::Carrier, r[0], [0.0, 0.0, -axial_on_sun]));
+            loads.push((PlanetaryMember::Carrier, r[3], [0.0, 0.0, axial_on_sun]));
+        }
+        for (member, radius, force) in loads {
             let Some(place) = layout.place_of(member) else { continue };
             let at = stage.places[place];
             out.push(GearLoad {
@@ -92,7 +150,7 @@ pub(crate) fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64,
                 member: if place == 0 { Member::Pinion } else { Member::Wheel },
                 shaft: at.shaft,
                 point: [radius * radial_dir[0], radius * radial_dir[1], at.at],
-                force: [force[0], force[1], 0.0],
+                force,
             });
         }
     }

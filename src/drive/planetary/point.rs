@@ -39,4 +39,7 @@ pub struct PlanetaryPoint {
     pub planet_bearings: [f64; 2],
     /// The churning body's loss (W): the carrier with its planets, or the sun where the carrier is held.
     pub churning: f64,
+    /// A helical stage's planet bearings under its tilting moment, in words (empty for a spur stage).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub tilting_support: String,
 }

@@ -133,5 +133,15 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
             fixed(p.planet_bearings[1], 3),
             fixed(p.churning, 3)
         );
+        if f.axial != 0.0 {
+            md!(
+                out,
+                "Helical: each mesh's axial force F_a = {} N (on the sun n F_a = {} N, on the ring as much the other way; on the planet the two cancel into the tilting moment M = F_a (r_w,sp + r_w,pr) = {} N·m, which its bearings take and pass to the carrier: {}).\n",
+                fixed(f.axial, 2),
+                fixed(f64::from(p.planets) * f.axial, 2),
+                fixed(f.tilting, 4),
+                p.tilting_support
+            );
+        }
     }
 }

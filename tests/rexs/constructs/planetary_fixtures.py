@@ -10,7 +10,9 @@ planetary_and_parallel: a spur planetary stage (sun 24, planets 3 x 24, ring 72,
 carrier_held: the same planetary stage with the carrier held by a coupling to the casing (a
     star stage) and the ring on the output shaft; the planets on one deep groove ball bearing.
 err/compound_planetary_set: the first with a second ring meshing the planets.
-err/helical_planetary: the first with a helix of 10 deg.
+floating_sun: the helical one with its sun's shaft on one bearing (the planets centre the sun).
+helical_planetary: the first with a helix of 10 deg (the sun right hand, the planets left, the ring
+    left), its ring's tip by the addendum rule.
 """
 
 import json
@@ -135,7 +137,7 @@ def bearing(m, cid, name, designation, u, axial, kind="rolling_bearing_with_cata
 def unit(variant):
     """The model of `variant` (see the module's doc)."""
     m = Model()
-    helix = 10.0 if variant == "helical_planetary" else 0.0
+    helix = 10.0 if variant in ("helical_planetary", "floating_sun") else 0.0
     m.comp(1, "gear_unit", "Planetary and parallel unit")
     m.comp(2, "gear_casing", "Casing", temperature_lubricant=("C", num(70)))
     m.comp(3, "lubricant", "ISO VG 150", viscosity_at_40_degree_celsius=("mm^2 / s", num(150)),
@@ -149,8 +151,10 @@ def unit(variant):
     gear(m, 11, "Sun", 24, 2, 25, 60, (60, 0, 0), helix=helix)
     m.rel("assembly", assembly=10, part=11)
     bearing(m, 12, "Sun bearing A", "6206", 10, "both_directions")
-    bearing(m, 13, "Sun bearing B", "6206", 110, "no_direction")
-    for b in (12, 13):
+    sun_bearings = (12,) if variant == "floating_sun" else (12, 13)
+    if variant != "floating_sun":
+        bearing(m, 13, "Sun bearing B", "6206", 110, "no_direction")
+    for b in sun_bearings:
         m.rel("side", assembly=b, inner_part=10, outer_part=2)
     m.comp(14, "external_load", "Motor", torque_around_u_axis=("N m", num(100)),
            transmits_torque=("none", {"boolean": True}), defines_torque=("none", {"boolean": True}))
@@ -165,7 +169,7 @@ def unit(variant):
         m.rel("assembly", assembly=30, part=s)
     # The ring: in the casing, or on the output shaft where the carrier is held.
     held_carrier = variant == "carrier_held"
-    ring = gear(m, 40, "Ring", 72, 2, 25, 60, (60, 0, 0), helix=helix, kind="ring_gear")
+    ring = gear(m, 40, "Ring", 72, 2, 25, 60, (60, 0, 0), helix=-helix + 0.0, kind="ring_gear")
     if held_carrier:
         shaft(m, 41, "Ring shaft", (0, 0, 0))
         m.rel("central_shaft", planetary_stage=9, shaft=41)
@@ -189,9 +193,10 @@ def unit(variant):
         m.rel("assembly", assembly=2, part=45)
     # Three planets at 90°, 210° and 330°, each on its planet shaft, on a pin of the carrier.
     import math
+    a = round(48 / math.cos(math.radians(helix)), 9)
     for j in range(3):
         ang = math.radians(90 + 120 * j)
-        v, w = round(48 * math.cos(ang), 9) + 0.0, round(48 * math.sin(ang), 9) + 0.0
+        v, w = round(a * math.cos(ang), 9) + 0.0, round(a * math.sin(ang), 9) + 0.0
         ps, pin, pg = 50 + j, 60 + j, 70 + j
         shaft(m, ps, f"Planet shaft {j + 1}", (35, v, w))
         shaft(m, pin, f"Planet pin {j + 1}", (35, v, w))
@@ -200,16 +205,16 @@ def unit(variant):
         m.rel("assembly", assembly=30, part=pin)
         gear(m, pg, f"Planet {j + 1}", 24, 2, 25, 25, (60, v, w), helix=-helix)
         m.rel("assembly", assembly=ps, part=pg)
-        m.comp(100 + 10 * j, "cylindrical_stage", f"Sun-planet {j + 1}", center_distance=("mm", num(48)),
+        m.comp(100 + 10 * j, "cylindrical_stage", f"Sun-planet {j + 1}", center_distance=("mm", num(a)),
                common_face_width=("mm", num(25)))
         m.rel("assembly", assembly=9, part=100 + 10 * j)
         m.rel("stage", stage=100 + 10 * j, gear_1=11, gear_2=pg)
-        m.comp(101 + 10 * j, "cylindrical_stage", f"Planet-ring {j + 1}", center_distance=("mm", num(-48)),
+        m.comp(101 + 10 * j, "cylindrical_stage", f"Planet-ring {j + 1}", center_distance=("mm", num(-a)),
                common_face_width=("mm", num(25)))
         m.rel("assembly", assembly=9, part=101 + 10 * j)
         m.rel("stage", stage=101 + 10 * j, gear_1=pg, gear_2=ring)
         if variant == "compound_planetary_set":
-            m.comp(102 + 10 * j, "cylindrical_stage", f"Planet-second ring {j + 1}", center_distance=("mm", num(-48)))
+            m.comp(102 + 10 * j, "cylindrical_stage", f"Planet-second ring {j + 1}", center_distance=("mm", num(-a)))
             m.rel("assembly", assembly=9, part=102 + 10 * j)
             m.rel("stage", stage=102 + 10 * j, gear_1=pg, gear_2=45)
         if held_carrier:
@@ -249,7 +254,8 @@ def main():
         ("planetary_and_parallel", "constructs"),
         ("carrier_held", "constructs"),
         ("compound_planetary_set", "err"),
-        ("helical_planetary", "err"),
+        ("helical_planetary", "constructs"),
+        ("floating_sun", "constructs"),
     ]:
         m = unit(variant)
         for ext, text in (("rexs", m.xml()), ("rexsj", m.json())):
