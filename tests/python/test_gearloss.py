@@ -468,8 +468,17 @@ def test_a_broken_rexs_model_raises_rexs_error():
         gearloss.Scene.from_rexs(ROOT / "tests/rexs/err/unit_contradicts_the_attribute.rexs")
     assert isinstance(e.value, ValueError)
     assert "normal_module" in str(e.value) and "component 6" in e.value.component and e.value.hint
-    with pytest.raises(gearloss.RexsError, match="planetary stages are not imported"):
-        gearloss.Scene.from_rexs(ROOT / "tests/rexs/planetary/FVA_Planetary_stage_-_Minus_gearing_1.1.rexsz")
+    with pytest.raises(gearloss.RexsError, match="none of its members is held by the casing") as e:
+        gearloss.Scene.from_rexs(ROOT / "tests/rexs/planetary/FVA_Planetary_stage_-_Minus_gearing_1.1.rexsj")
+    assert "planetary_stage" in e.value.component
+
+
+def test_a_planetary_rexs_model_imports_and_runs():
+    """FVA's planetary stage (zipped XML) imports into a planetary stage kind and runs."""
+    s = gearloss.Scene.from_rexs(ROOT / "tests/rexs/planetary/FVA_Planetary_stage_-_Minus_gearing_1.1.rexsz")
+    assert "planetary {" in s.text and "planets = 3" in s.text
+    report = gearloss.run(s)
+    assert "report.md" in report.files
 
 
 @pytest.mark.parametrize("spec", ["fzg_type_c.gear", "helical_gearbox.gear", "fzg_c14_thermal.gear"])
