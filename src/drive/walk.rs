@@ -328,7 +328,7 @@ impl<'a> Walk<'a> {
             .map(|&(k, m)| {
                 let stage = &drive.stages[k];
                 let sizes = &model.sizes[k];
-                let kinematics = (stage.kind.entry().kinematics)(stage);
+                let kinematics = (stage.kind.entry().kinematics)(stage.teeth, stage.planetary.as_ref());
                 let t = p.driving_torque[k];
                 let d = m.index();
                 let planetary = p.planetary[k].map(|state| {

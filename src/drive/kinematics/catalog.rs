@@ -3,8 +3,8 @@
 
 use super::kind_id::StageKindId;
 use super::parallel::Parallel;
+use super::planetary::PlanetaryLayout;
 use super::stage_kinematics::StageKinematics;
-use crate::drive::layout::Stage;
 
 impl StageKindId {
     pub fn entry(self) -> &'static StageKindEntry {
@@ -20,7 +20,9 @@ pub struct StageKindEntry {
     /// Its file in `src/drive/kinematics/`.
     pub file: &'static str,
     pub title: &'static str,
-    pub kinematics: fn(&Stage) -> Box<dyn StageKinematics>,
+    /// The kinematics of a stage of this kind from its [pinion, wheel] teeth and, for a planetary
+    /// stage, its layout.
+    pub kinematics: fn([u32; 2], Option<&PlanetaryLayout>) -> Box<dyn StageKinematics>,
 }
 
 /// Every stage kind.
@@ -30,13 +32,13 @@ pub const STAGE_KINDS: &[StageKindEntry] = &[
         name: "parallel",
         file: "parallel.rs",
         title: "an external pair on parallel shafts: ω_wheel = −ω_pinion z_pinion/z_wheel",
-        kinematics: |s| Box::new(Parallel { teeth: s.teeth }),
+        kinematics: |teeth, _| Box::new(Parallel { teeth }),
     },
     StageKindEntry {
         id: StageKindId::Planetary,
         name: "planetary",
         file: "planetary.rs",
         title: "sun, planets on a carrier, ring; one member held: Willis, n_s − i₀ n_r − (1 − i₀) n_c = 0",
-        kinematics: |s| Box::new(s.planetary.as_ref().expect("a planetary stage has its layout").kinematics()),
+        kinematics: |_, p| Box::new(p.expect("a planetary stage has its layout").kinematics()),
     },
 ];
