@@ -78,6 +78,31 @@ fn designation(b: &Component) -> String {
     name.split(" (").next().unwrap_or(name).trim().to_string()
 }
 
+impl BearingData {
+    /// Where its sizes and C₀ came from, as the scene's comment says it: `sizes from the model`,
+    /// `… from its designation`, or `… from the parts it sits between; chosen: …`, and the C₀ estimate.
+    pub(crate) fn source_note(&self) -> String {
+        let sizes = if self.sizes_from == "the model" {
+            "sizes from the model".to_string()
+        } else if let Some(how) = self.sizes_from.strip_prefix("chosen: ") {
+            format!("sizes from the parts it sits between; chosen: {how}")
+        } else {
+            "sizes from its designation".to_string()
+        };
+        let c0 = if self.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" };
+        format!("{sizes}{c0}")
+    }
+}
+
+/// Whether shaft `shaft` sits on a bearing (a `side` relation with it as the inner part).
+pub(crate) fn sits_on_bearings(model: &RexsModel, shaft: u64) -> bool {
+    model.relations_with("side", "inner_part", shaft).any(|r| {
+        r.role("assembly")
+            .and_then(|id| model.components.get(&id))
+            .is_some_and(|b| BEARING_KINDS.contains(&b.kind.as_str()))
+    })
+}
+
 /// Reads bearing `b`, joined to its parts by the `side` relation `r`; `at` is its place on the
 /// inner part (mm); `fallback` the type where neither `bearing_type` nor the designation names one
 /// (a shaft's deep groove ball bearing, a planet's cylindrical roller bearing; chosen, said).
@@ -185,7 +210,7 @@ fn from_its_parts(
         Some(outside) => Some((
             bore,
             outside,
-            format!("chosen: from the parts it sits between (shaft {inner}'s diameter and its outer part's bore)"),
+            format!("chosen: d from shaft {inner}'s diameter, D from its outer part's bore"),
         )),
         None => super::bearing_sizes::series_2_outside(bore).map(|(standard, outside)| {
             (

@@ -123,18 +123,19 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
             "gearloss imports gear units of cylindrical stages and simple planetary stages",
         ));
     }
-    onto_the_carrier_shaft(model, &mut unit);
-    let sleeves = super::joined_shafts::groups(model)?;
-    let gears = unit
-        .stages
-        .iter_mut()
-        .flat_map(|s| s.gears.iter_mut())
-        .chain(unit.planetary.iter_mut().flat_map(|p| [&mut p.sun, &mut p.ring]));
-    super::joined_shafts::onto_the_kept_shaft(model, &sleeves, gears, &mut unit.warnings);
-    let places: Vec<(u64, f64)> = unit.planetary.iter().flat_map(|p| p.places()).collect();
-    let mut joined: Vec<(u64, Vec<u64>)> =
+    let cheeks: Vec<(u64, Vec<u64>)> =
         unit.planetary.iter().filter_map(|p| p.carrier.as_ref().map(|(s, others, _)| (*s, others.clone()))).collect();
-    joined.extend(sleeves);
+    let sleeves = super::joined_shafts::groups(model)?;
+    for (groups, joint) in [(&cheeks, "the carrier's other cheek"), (&sleeves, "a shaft–hub connection")] {
+        let gears = unit
+            .stages
+            .iter_mut()
+            .flat_map(|s| s.gears.iter_mut())
+            .chain(unit.planetary.iter_mut().flat_map(|p| [&mut p.sun, &mut p.ring]));
+        super::joined_shafts::onto_the_kept_shaft(model, groups, joint, gears, &mut unit.warnings);
+    }
+    let places: Vec<(u64, f64)> = unit.planetary.iter().flat_map(|p| p.places()).collect();
+    let joined: Vec<(u64, Vec<u64>)> = cheeks.into_iter().chain(sleeves).collect();
     // A sun among two planets or more, alone on its shaft, floats: one bearing place carries it.
     let floating: Vec<u64> = unit
         .planetary
@@ -249,21 +250,4 @@ fn normalise(deg: f64) -> f64 {
         a -= 360.0;
     }
     a + 0.0
-}
-
-/// A stage's gear on a carrier's other cheek sits on the carrier's shaft (the cheeks are rigidly
-/// one), at its place along u from that shaft's origin.
-fn onto_the_carrier_shaft(model: &RexsModel, unit: &mut GearUnit) {
-    let origin = |id: u64| super::units::vector(&model.components[&id], "support_vector").map_or(0.0, |v| v[0]);
-    for p in &unit.planetary {
-        let Some((main, others, _)) = &p.carrier else { continue };
-        for g in unit.stages.iter_mut().flat_map(|s| s.gears.iter_mut()).filter(|g| others.contains(&g.shaft)) {
-            unit.warnings.push(format!(
-                "gear {}: on shaft {}, the carrier's other cheek; it sits on the carrier's shaft {main}",
-                g.id, g.shaft
-            ));
-            g.at += origin(g.shaft) - origin(*main);
-            g.shaft = *main;
-        }
-    }
 }

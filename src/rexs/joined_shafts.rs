@@ -5,7 +5,7 @@
 //! it at their places along u (said). A `coupling` between shafts is no such joint (it passes the
 //! torque, not the bending), and neither is a bearing.
 
-use super::bearings::BEARING_KINDS;
+use super::bearings::sits_on_bearings;
 use super::error::RexsError;
 use super::model::RexsModel;
 use super::units::vector;
@@ -36,16 +36,9 @@ pub(crate) fn groups(model: &RexsModel) -> Result<Vec<(u64, Vec<u64>)>, RexsErro
         merged.dedup();
         sets.push(merged);
     }
-    let on_bearings = |s: u64| {
-        model.relations_with("side", "inner_part", s).any(|r| {
-            r.role("assembly")
-                .and_then(|id| model.components.get(&id))
-                .is_some_and(|b| BEARING_KINDS.contains(&b.kind.as_str()))
-        })
-    };
     let mut out = Vec::new();
     for set in sets {
-        let main = set.iter().copied().find(|s| on_bearings(*s)).unwrap_or(set[0]);
+        let main = set.iter().copied().find(|s| sits_on_bearings(model, *s)).unwrap_or(set[0]);
         for &s in &set {
             if vector(&model.components[&s], "support_vector").is_none() {
                 return Err(RexsError::at(
@@ -61,10 +54,11 @@ pub(crate) fn groups(model: &RexsModel) -> Result<Vec<(u64, Vec<u64>)>, RexsErro
 }
 
 /// Moves every gear of `gears` on a joined shaft onto the shaft it joins, at its place along u from
-/// that shaft's origin, and says so.
+/// that shaft's origin, and says so (`joint`: how they are joined, in words).
 pub(crate) fn onto_the_kept_shaft<'a>(
     model: &RexsModel,
     groups: &[(u64, Vec<u64>)],
+    joint: &str,
     gears: impl Iterator<Item = &'a mut super::stage_data::GearData>,
     warnings: &mut Vec<String>,
 ) {
@@ -72,7 +66,7 @@ pub(crate) fn onto_the_kept_shaft<'a>(
     for g in gears {
         let Some((main, _)) = groups.iter().find(|(_, others)| others.contains(&g.shaft)) else { continue };
         warnings.push(format!(
-            "gear {}: on shaft {}, joined to shaft {main} by a shaft–hub connection; it sits on shaft {main} at its place along u",
+            "gear {}: on shaft {}, joined to shaft {main} ({joint}); it sits on shaft {main} at its place along u",
             g.id, g.shaft
         ));
         g.at += origin(g.shaft) - origin(*main);

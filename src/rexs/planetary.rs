@@ -9,7 +9,7 @@
 //! casing. Refused by name: a compound set (several suns or rings, stepped planets), planets that
 //! differ, no member or two held, helix angles that do not mesh.
 
-use super::bearings::{read_bearing, BearingData, BEARING_KINDS};
+use super::bearings::{read_bearing, sits_on_bearings, BearingData, BEARING_KINDS};
 use super::error::RexsError;
 use super::model::{Component, RexsModel};
 pub(crate) use super::planetary_hold::Member;
@@ -256,20 +256,14 @@ fn carrier_place(
     shafts: &[u64],
     planet: &GearData,
 ) -> Result<(u64, Vec<u64>, f64), RexsError> {
-    let on_bearings = |s: u64| {
-        model.relations_with("side", "inner_part", s).any(|r| {
-            r.role("assembly")
-                .and_then(|id| model.components.get(&id))
-                .is_some_and(|b| BEARING_KINDS.contains(&b.kind.as_str()))
-        })
-    };
-    let main = shafts.iter().copied().find(|s| on_bearings(*s)).or(shafts.first().copied()).ok_or_else(|| {
-        RexsError::at(
-            c,
-            "no `planet_carrier_shaft` relation names the carrier's shaft",
-            "export the carrier with its shaft",
-        )
-    })?;
+    let main =
+        shafts.iter().copied().find(|s| sits_on_bearings(model, *s)).or(shafts.first().copied()).ok_or_else(|| {
+            RexsError::at(
+                c,
+                "no `planet_carrier_shaft` relation names the carrier's shaft",
+                "export the carrier with its shaft",
+            )
+        })?;
     let others: Vec<u64> = shafts.iter().copied().filter(|s| *s != main).collect();
     let origin = vector(&model.components[&main], "support_vector");
     let planet_u = vector(&model.components[&planet.id], "support_vector");

@@ -82,21 +82,14 @@ pub(super) fn planetary_stage(w: &mut String, p: &PlanetaryData) {
         let c0 = b.static_load_rating.map_or_else(String::new, |c| format!(", static_load_rating = {} kN", n(c)));
         let count = p.planet_bearings.len();
         let counted = if count > 1 { format!(", count = {count}") } else { String::new() };
-        let how = if b.sizes_from == "the model" {
-            "sizes from the model".to_string()
-        } else if let Some(how) = b.sizes_from.strip_prefix("chosen: ") {
-            format!("sizes chosen: {how}")
-        } else {
-            "sizes from its designation".to_string()
-        };
         let _ = writeln!(
             w,
-            "                      bearing(type = {}, bore = {} mm, outside = {} mm{c0}{counted})  # REXS {}; {how}{}",
+            "                      bearing(type = {}, bore = {} mm, outside = {} mm{c0}{counted})  # REXS {}; {}",
             b.kind,
             n(b.bore),
             n(b.outside),
             ids(&p.planet_bearings.iter().map(|b| b.id).collect::<Vec<_>>()),
-            if b.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" }
+            b.source_note()
         );
         if let Some(l) = p.planet_bearing_spacing {
             let _ = writeln!(w, "                      bearing_spacing = {} mm  # their places on the pin", n(l));

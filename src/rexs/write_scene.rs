@@ -146,7 +146,7 @@ fn shaft(w: &mut String, sh: &ShaftData) {
         let locating = if b.locating { ", locating" } else { "" };
         let _ = writeln!(
             w,
-            "            bearing(type = {}, bore = {} mm, outside = {} mm{c0}, at = {} mm{locating})  # REXS {} `{}`, axial: {}; sizes from {}{}",
+            "            bearing(type = {}, bore = {} mm, outside = {} mm{c0}, at = {} mm{locating})  # REXS {} `{}`, axial: {}; {}",
             b.kind,
             n(b.bore),
             n(b.outside),
@@ -154,14 +154,7 @@ fn shaft(w: &mut String, sh: &ShaftData) {
             b.id,
             clean(&b.designation),
             clean(&b.axial),
-            if b.sizes_from == "the model" {
-                "the model".to_string()
-            } else if let Some(how) = b.sizes_from.strip_prefix("chosen: ") {
-                format!("the parts it sits between; chosen: {how}")
-            } else {
-                "its designation".to_string()
-            },
-            if b.c0_estimated { "; chosen: C_0 estimated from d and D" } else { "" }
+            b.source_note()
         );
     }
     let _ = writeln!(w, "        }}");
