@@ -42,9 +42,8 @@ pub(crate) struct PlanetaryData {
     pub planet_bearings: Vec<BearingData>,
     /// The distance between a planet's two bearings (mm), where it has two.
     pub planet_bearing_spacing: Option<f64>,
-    /// The cylindrical stages read as its meshes, and the couplings read as its hold.
+    /// The cylindrical stages read as its meshes.
     pub meshes: Vec<u64>,
-    pub couplings: Vec<u64>,
 }
 
 impl PlanetaryData {
@@ -164,7 +163,7 @@ pub(crate) fn read_planetary(
         .ok_or_else(|| RexsError::at(c, "it has no `planet_carrier`", "export the stage with its carrier"))?;
     let carrier_shafts: Vec<u64> =
         model.relations_with("planet_carrier_shaft", "planetary_stage", c.id).filter_map(|r| r.role("shaft")).collect();
-    let (held, held_by, couplings) = super::planetary_hold::held_member(model, c, &sun, &ring, &carrier_shafts)?;
+    let (held, held_by) = super::planetary_hold::held_member(model, c, &sun, &ring, &carrier_shafts)?;
     let carrier_place =
         if held == Member::Carrier { None } else { Some(carrier_place(model, c, &carrier_shafts, &planet)?) };
     let planet_bearings = planet_bearings(model, planet.shaft, warnings)?;
@@ -188,7 +187,6 @@ pub(crate) fn read_planetary(
         },
         planet_bearings,
         meshes,
-        couplings,
     })
 }
 

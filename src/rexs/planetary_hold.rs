@@ -26,18 +26,17 @@ impl Member {
     }
 }
 
-/// The member the casing holds, how, and the couplings read as the hold.
+/// The member the casing holds and how, in words.
 pub(super) fn held_member(
     model: &RexsModel,
     c: &Component,
     sun: &GearData,
     ring: &GearData,
     carrier_shafts: &[u64],
-) -> Result<(Member, String, Vec<u64>), RexsError> {
+) -> Result<(Member, String), RexsError> {
     let casing = |id: Option<u64>| id.and_then(|id| model.components.get(&id)).is_some_and(|k| k.kind == "gear_casing");
     let mut held = Vec::new();
     let mut loose = Vec::new();
-    let mut couplings = Vec::new();
     if casing(Some(ring.shaft)) {
         held.push((Member::Ring, format!("the casing itself (ring_gear {} is a part of it)", ring.id)));
     }
@@ -55,7 +54,6 @@ pub(super) fn held_member(
                 continue;
             }
             if engaged(model, joint) {
-                couplings.push(joint.id);
                 if !held.iter().any(|(m, _)| *m == member) {
                     held.push((member, format!("{} to the casing", describe(joint))));
                 }
@@ -65,7 +63,7 @@ pub(super) fn held_member(
         }
     }
     match held.as_slice() {
-        [(m, how)] => Ok((*m, how.clone(), couplings)),
+        [(m, how)] => Ok((*m, how.clone())),
         [] => Err(RexsError::at(
             c,
             format!(
