@@ -34,7 +34,7 @@ pub(super) fn held_member(
     ring: &GearData,
     carrier_shafts: &[u64],
 ) -> Result<(Member, String), RexsError> {
-    let casing = |id: Option<u64>| id.and_then(|id| model.components.get(&id)).is_some_and(|k| k.kind == "gear_casing");
+    let casing = |id: Option<u64>| is_casing(model, id);
     let mut held = Vec::new();
     let mut loose = Vec::new();
     if casing(Some(ring.shaft)) {
@@ -120,7 +120,7 @@ pub(crate) fn member_joints(model: &RexsModel) -> Vec<u64> {
             .filter(|r| r.role("part").and_then(|id| model.components.get(&id)).is_some_and(|c| c.kind == "ring_gear"))
             .filter_map(|r| r.role("assembly")),
     );
-    let casing = |id: Option<u64>| id.and_then(|id| model.components.get(&id)).is_some_and(|k| k.kind == "gear_casing");
+    let casing = |id: Option<u64>| is_casing(model, id);
     model
         .relations
         .iter()
@@ -133,4 +133,9 @@ pub(crate) fn member_joints(model: &RexsModel) -> Vec<u64> {
         .filter_map(|r| r.role("assembly"))
         .filter(|id| model.components.get(id).is_some_and(|c| !BEARING_KINDS.contains(&c.kind.as_str())))
         .collect()
+}
+
+/// Whether `id` names the gear casing.
+fn is_casing(model: &RexsModel, id: Option<u64>) -> bool {
+    id.and_then(|id| model.components.get(&id)).is_some_and(|k| k.kind == "gear_casing")
 }

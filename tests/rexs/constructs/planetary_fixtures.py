@@ -134,6 +134,16 @@ def bearing(m, cid, name, designation, u, axial, kind="rolling_bearing_with_cata
     return m.comp(cid, kind, name, **attrs)
 
 
+def output_shaft_parts(m, shaft, ids, designation, places, name):
+    """The output shaft's two bearings (ids[0] locating at places[0], ids[1] at places[1]) and its
+    load that transmits torque (ids[2])."""
+    for cid, u, axial, end in zip(ids[:2], places, ("both_directions", "no_direction"), "AB"):
+        bearing(m, cid, f"{name} {end}", designation, u, axial)
+        m.rel("side", assembly=cid, inner_part=shaft, outer_part=2)
+    m.comp(ids[2], "external_load", "Load", transmits_torque=("none", {"boolean": True}))
+    m.rel("assembly", assembly=shaft, part=ids[2])
+
+
 def unit(variant):
     """The model of `variant` (see the module's doc)."""
     m = Model()
@@ -174,12 +184,7 @@ def unit(variant):
         shaft(m, 41, "Ring shaft", (0, 0, 0))
         m.rel("central_shaft", planetary_stage=9, shaft=41)
         m.rel("assembly", assembly=41, part=ring)
-        bearing(m, 42, "Ring bearing A", "6220", 20, "both_directions")
-        bearing(m, 43, "Ring bearing B", "6220", 100, "no_direction")
-        for b in (42, 43):
-            m.rel("side", assembly=b, inner_part=41, outer_part=2)
-        m.comp(44, "external_load", "Load", transmits_torque=("none", {"boolean": True}))
-        m.rel("assembly", assembly=41, part=44)
+        output_shaft_parts(m, 41, (42, 43, 44), "6220", (20, 100), "Ring bearing")
         m.comp(33, "coupling", "Carrier to casing")
         m.rel("side", assembly=33, inner_part=31, outer_part=2)
     else:
@@ -239,12 +244,7 @@ def unit(variant):
     m.comp(94, "cylindrical_stage", "Parallel stage", center_distance=("mm", num(120)),
            common_face_width=("mm", num(30)), rotating_angle_around_neg_u_axis=("deg", num(0)))
     m.rel("stage", stage=94, gear_1=91, gear_2=93)
-    bearing(m, 95, "Output bearing A", "6210", 0, "both_directions")
-    bearing(m, 96, "Output bearing B", "6210", 80, "no_direction")
-    for b in (95, 96):
-        m.rel("side", assembly=b, inner_part=92, outer_part=2)
-    m.comp(97, "external_load", "Load", transmits_torque=("none", {"boolean": True}))
-    m.rel("assembly", assembly=92, part=97)
+    output_shaft_parts(m, 92, (95, 96, 97), "6210", (0, 80), "Output bearing")
     return m
 
 
