@@ -82,8 +82,7 @@ fn sweep_10000_points_three_laws(bencher: divan::Bencher) {
     let scene = scene("50..500 N*m count 100", "100..10000 rpm count 100", "coulomb(mu = 0.05) xu benedict_kelley");
     let plan = gearloss::Plan::new(&scene.operating, None, &[]);
     bencher.bench(|| {
-        let tally =
-            gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::records::NoRecords, &gearloss::Quiet);
+        let tally = gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::NoRecords, &gearloss::Quiet);
         divan::black_box(tally.expect("no writes").points)
     });
 }
@@ -136,8 +135,7 @@ mod plain_sweep {
         let scene = plain("50..400 N*m count 20", "100..3000 rpm count 20");
         let plan = gearloss::Plan::new(&scene.operating, None, &[]);
         bencher.counter(divan::counter::ItemsCount::new(400usize)).bench(|| {
-            let tally =
-                gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::records::NoRecords, &gearloss::Quiet);
+            let tally = gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::NoRecords, &gearloss::Quiet);
             divan::black_box(tally.expect("no writes").points)
         });
     }
@@ -156,11 +154,11 @@ mod plain_sweep {
 }
 
 mod dynamics {
-    use gearloss::dynamics::integrators::{integrate, Integrator};
-    use gearloss::dynamics::propagator::period_segments;
-    use gearloss::dynamics::response::PeriodicResponse;
+    use gearloss::dynamics::period_segments;
+    use gearloss::dynamics::PeriodicResponse;
+    use gearloss::dynamics::{integrate, Integrator};
     use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::friction::Coulomb;
     use gearloss::geometry::OperatingState;
 
     /// FZG type C rectangular stiffness (N/m).
@@ -308,11 +306,11 @@ mod dynamics {
 /// The 6-DOF model (issue 11): FZG type C on bearings (specs/fzg_bearings.gear), Coulomb μ 0.08,
 /// internal formulation (friction inside the system matrix: 4th-order Magnus on every segment).
 mod six_dof {
-    use gearloss::dynamics::integrators::{integrate, Integrator};
     use gearloss::dynamics::numerics::{reference, relative_error, study_times, LADDER};
-    use gearloss::dynamics::six_dof::{Bearing, SixDofSystem};
+    use gearloss::dynamics::{integrate, Integrator};
+    use gearloss::dynamics::{Bearing, SixDofSystem};
     use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::friction::Coulomb;
     use gearloss::geometry::OperatingState;
 
     /// FZG type C rectangular stiffness (N/m).
@@ -408,7 +406,7 @@ mod six_dof {
 /// The thermal balance (issue 27) on `specs/fzg_c14_thermal.gear`: P_V(θ) is its mesh loss and
 /// loss budget with the oil read at θ.
 mod thermal {
-    use gearloss::evaluate::thermal::{duty_cycle, Losses};
+    use gearloss::evaluate::{duty_cycle, Losses};
     use gearloss::evaluate::{prepare, state_at, Plan};
     use gearloss::model::Formulation;
 
@@ -466,9 +464,9 @@ mod thermal {
 }
 
 mod teeth {
-    use gearloss::geometry::teeth::load_sharing::{LoadSharing, ReliefShape, Reliefs, TipRelief};
-    use gearloss::geometry::teeth::pair_stiffness::PairStiffness;
-    use gearloss::geometry::teeth::transmission_error::SERIES_POINTS;
+    use gearloss::geometry::teeth::PairStiffness;
+    use gearloss::geometry::teeth::SERIES_POINTS;
+    use gearloss::geometry::teeth::{LoadSharing, ReliefShape, Reliefs, TipRelief};
 
     fn pair(path: &str) -> (gearloss::Scene, gearloss::geometry::PairGeometry) {
         let text = std::fs::read_to_string(format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))).unwrap();
@@ -511,7 +509,7 @@ mod teeth {
 /// injection, the fixed point). Targets: one operating point < 100 µs; its 41 × 30 map < 0.5 s; a
 /// 10⁵-point sweep within 1.2× of ten times the 10⁴-point sweep (linear).
 mod several_stages {
-    use gearloss::evaluate::drive::evaluate_drive_into;
+    use gearloss::evaluate::evaluate_drive_into;
 
     /// The EV reducer with `operating` and `analyses` swapped in.
     fn reducer(torques: &str, speeds: &str, analyses: &str) -> gearloss::Scene {
@@ -574,7 +572,7 @@ mod several_stages {
             "900 rpm",
             "efficiency(formulations = [external])  efficiency_map(output_torque = -1000..1000 N*m count 41, output_speed = 10..1500 rpm count 30)",
         );
-        b.bench(|| gearloss::evaluate::drive::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).map.len());
+        b.bench(|| gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).map.len());
     }
 
     /// 10⁴ and 10⁵ points (records written to a sink): the second within 1.2× of ten times the first.
@@ -590,7 +588,7 @@ mod several_stages {
 }
 
 mod planetary {
-    use gearloss::evaluate::drive::evaluate_drive_into;
+    use gearloss::evaluate::evaluate_drive_into;
 
     /// specs/planetary_reducer.gear with one operating point and one law.
     fn reducer(torque: &str, speed: &str) -> gearloss::Scene {
@@ -653,8 +651,8 @@ mod drive_cycle {
 /// million-point whole runs with their sizes are README "Record files"' figures (target: Parquet
 /// no slower than CSV + JSON Lines).
 mod record_files {
-    use gearloss::evaluate::record_files::{RecordFiles, RecordFormats};
-    use gearloss::evaluate::records::{ExtraColumns, RecordSink, SummaryRow};
+    use gearloss::evaluate::{ExtraColumns, RecordSink, SummaryRow};
+    use gearloss::{RecordFiles, RecordFormats};
 
     /// Collects the rows of a sweep.
     struct Keep(Vec<SummaryRow>);

@@ -226,7 +226,7 @@ pub fn mean_abs_mu(ctx: &LawContext, law: &dyn FrictionLaw) -> Integral {
     Integral { value: i.value / (p.e - p.a), error: i.error / (p.e - p.a), evaluations: i.evaluations }
 }
 
-/// The gear loss factor H_V (geometry only, [`crate::geometry::loss_factor::loss_factor`]):
+/// The gear loss factor H_V (geometry only, `crate::geometry::loss_factor::loss_factor`):
 /// Ohlendorf's closed form H_V = π(u+1)/(z1 u cos β_b) · (1 − ε_α + ε_1² + ε_2²) (spur: cos β_b = 1)
 /// where the pitch point lies in single contact, else the path integral under equal sharing that it
 /// closes (ε_1 or ε_2 above 1: a ring mesh's long recess).

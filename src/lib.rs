@@ -10,7 +10,7 @@
 //!
 //! One public function per stage: [`parse`], [`lower`] (its output printed by [`lowered`]), [`evaluate_sweep`] (the sweep streamed, its
 //! summary rows to the record files, its tally returned) with [`evaluate_details`] (the detail points in
-//! full), [`report()`] and [`render()`]; [`run_into`] and [`merge_into`] (in [`run`]) run them into a
+//! full), [`report()`] and [`render()`]; [`run_into`] and [`merge_into`] (in `run`) run them into a
 //! report folder (whole or sharded). Errors of the first two stages are [`SceneErrors`]: every problem with
 //! its span, reason and hints, rendered by miette. The library never prints.
 //!

@@ -161,7 +161,7 @@ pub struct DrivePoint {
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub diverged: bool,
     /// Where the books do not balance: (P_source − P_sink) − Σ parts (W), when it is more than
-    /// [`BOOKS_TOLERANCE`] of the larger of P_source and Σ parts, or not a finite number.
+    /// `BOOKS_TOLERANCE` of the larger of P_source and Σ parts, or not a finite number.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub books_gap: Option<f64>,
 }

@@ -56,7 +56,7 @@ pub struct Floquet<const N: usize> {
 }
 
 /// Eigenvalues of a real 2×2 matrix (closed form; the larger-modulus one first for real pairs).
-pub fn eigenvalues_2x2(tr: f64, det: f64) -> [Multiplier; 2] {
+pub(crate) fn eigenvalues_2x2(tr: f64, det: f64) -> [Multiplier; 2] {
     let disc = 0.25 * tr * tr - det;
     if disc >= 0.0 {
         let r = disc.sqrt();
@@ -69,7 +69,7 @@ pub fn eigenvalues_2x2(tr: f64, det: f64) -> [Multiplier; 2] {
 
 /// Eigenvalues of a real n×n matrix: closed form for n = 2, the real Schur form otherwise (sorted
 /// by decreasing modulus, then by decreasing imaginary part).
-pub fn eigenvalues<const N: usize>(m: &SMatrix<f64, N, N>) -> Vec<Multiplier> {
+pub(crate) fn eigenvalues<const N: usize>(m: &SMatrix<f64, N, N>) -> Vec<Multiplier> {
     if N == 2 {
         return eigenvalues_2x2(m.trace(), determinant(m)).to_vec();
     }
@@ -80,7 +80,7 @@ pub fn eigenvalues<const N: usize>(m: &SMatrix<f64, N, N>) -> Vec<Multiplier> {
 }
 
 /// det m (nalgebra's closed form for n = 2, LU otherwise).
-pub fn determinant<const N: usize>(m: &SMatrix<f64, N, N>) -> f64 {
+pub(crate) fn determinant<const N: usize>(m: &SMatrix<f64, N, N>) -> f64 {
     if N == 2 {
         Matrix2::from_fn(|i, j| m[(i, j)]).determinant()
     } else {
@@ -89,7 +89,7 @@ pub fn determinant<const N: usize>(m: &SMatrix<f64, N, N>) -> f64 {
 }
 
 /// x with m x = b, None when m is singular (nalgebra's closed-form inverse for n = 2, LU otherwise).
-pub fn solve<const N: usize>(m: &SMatrix<f64, N, N>, b: &SVector<f64, N>) -> Option<SVector<f64, N>> {
+pub(crate) fn solve<const N: usize>(m: &SMatrix<f64, N, N>, b: &SVector<f64, N>) -> Option<SVector<f64, N>> {
     if N == 2 {
         let inv = Matrix2::from_fn(|i, j| m[(i, j)]).try_inverse()?;
         let x = inv * Vector2::new(b[0], b[1]);

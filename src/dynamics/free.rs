@@ -20,9 +20,9 @@ use super::trajectory::{Extremum, Trajectory};
 use crate::numerics::quadrature::integrate_pieces_n;
 
 /// Highest mesh order of the spectrum lines (|k| ≤ this).
-pub const MAX_ORDER: usize = 14;
+pub(crate) const MAX_ORDER: usize = 14;
 /// Lines kept in the report, largest first.
-pub const LINES: usize = 8;
+pub(crate) const LINES: usize = 8;
 /// Plot samples per mesh period.
 const PLOT_SAMPLES: usize = 64;
 const TERMS: usize = 2 * MAX_ORDER + 1;

@@ -13,23 +13,33 @@
 //!     numerics (error vs run time)             response (DTE, forces, dynamic factor, spectrum)
 //! ```
 
-pub mod airy;
-pub mod analysis;
-pub mod floquet;
-pub mod free;
-pub mod integrators;
-pub mod model;
+pub(crate) mod airy;
+pub(crate) mod analysis;
+pub(crate) mod floquet;
+pub(crate) mod free;
+pub(crate) mod integrators;
+pub(crate) mod model;
 pub mod models;
 pub mod numerics;
-pub mod propagator;
+pub(crate) mod propagator;
 pub(crate) mod rank_one;
-pub mod response;
+pub(crate) mod response;
 pub(crate) mod sdof;
-pub mod six_dof;
-pub mod six_dof_response;
+pub(crate) mod six_dof;
+pub(crate) mod six_dof_response;
 pub(crate) mod spec;
-pub mod trajectory;
+pub(crate) mod trajectory;
 
+pub use airy::{airy_propagation, airy_propagator, linear_on_segments};
+pub use analysis::FormulationResult;
+pub use floquet::Verdict;
 pub use floquet::{Floquet, Multiplier};
+pub use free::free_response;
+pub use integrators::{integrate, Integrator};
 pub use model::{PeriodicModel, Segment};
+pub use propagator::{magnus_adaptive, period_segments, AffineSegment, Method};
+pub use response::PeriodicResponse;
 pub use sdof::{DynamicFormulation, SdofSystem, StiffnessModel};
+pub use six_dof::{Bearing, SixDofSystem};
+pub use six_dof_response::SixDofResponse;
+pub use trajectory::Trajectory;

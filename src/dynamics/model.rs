@@ -8,7 +8,7 @@
 //! ([`PeriodicModel::segment_is_affine`]) the exact propagator applies there.
 //!
 //! ```
-//! use gearloss::dynamics::model::{PeriodicModel, Segment};
+//! use gearloss::dynamics::{PeriodicModel, Segment};
 //! use gearloss::dynamics::Floquet;
 //! use nalgebra::{SMatrix, SVector};
 //!
@@ -112,7 +112,7 @@ pub trait PeriodicModel<const N: usize>: Sync {
 /// limits (k or μ jump at the switch times): by 1e-14 of the segment, at least 8 rounding units of t
 /// (so that the model's own zone test sees the inside) and at most a quarter of the segment. A
 /// smooth A varies by ~1e-14 of its change over the segment across that step.
-pub fn just_inside(start: f64, end: f64, t: f64) -> f64 {
+pub(crate) fn just_inside(start: f64, end: f64, t: f64) -> f64 {
     let h = end - start;
     let d = (1e-14 * h).max(8.0 * f64::EPSILON * start.abs().max(end.abs())).min(0.25 * h);
     t.clamp(start + d, end - d)

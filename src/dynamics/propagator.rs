@@ -20,7 +20,7 @@ use std::sync::Arc;
 use nalgebra::allocator::Allocator;
 use nalgebra::{DefaultAllocator, Dim, DimMin, Dyn, OMatrix, SMatrix, SVector, U3, U4};
 
-pub use super::model::Propagation;
+pub(crate) use super::model::Propagation;
 use super::model::{just_inside, PeriodicModel};
 use super::rank_one::RankOneSegment;
 
@@ -36,7 +36,7 @@ pub enum Method {
 
 /// Relative error at which a Magnus segment is accepted. Halving the substep of a 4th-order method
 /// divides the error by 16, so the error of the finer result is estimated as |P_2n − P_n| / 15.
-pub const MAGNUS_TOLERANCE: f64 = 1e-11;
+pub(crate) const MAGNUS_TOLERANCE: f64 = 1e-11;
 
 /// A segment on which A is constant and b(t) = b0 + b1 (t − start).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -135,7 +135,12 @@ fn split<const N: usize>(e: impl Fn(usize, usize) -> f64) -> SegmentExponential<
 
 /// Magnus over [t0, t0 + h] in `n` equal substeps: 4th order for the 2-state SDOF model, 6th order
 /// for the 10-state 6-DOF model (whose fast bearing modes make the 4th order need ~8× the substeps).
-pub fn magnus<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M, t0: f64, h: f64, n: usize) -> Propagation<N> {
+pub(crate) fn magnus<M: PeriodicModel<N> + ?Sized, const N: usize>(
+    model: &M,
+    t0: f64,
+    h: f64,
+    n: usize,
+) -> Propagation<N> {
     if N == 2 {
         magnus_in(model, U3, t0, h, n)
     } else if N == 10 {
@@ -146,7 +151,7 @@ pub fn magnus<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M, t0: f64, 
 }
 
 /// The order of [`magnus`] for an `N`-state model.
-pub fn magnus_order(n: usize) -> usize {
+pub(crate) fn magnus_order(n: usize) -> usize {
     if n == 2 {
         4
     } else {
@@ -241,7 +246,7 @@ where
     })
 }
 
-/// Magnus with substeps doubled until successive results agree to [`MAGNUS_TOLERANCE`]; returns
+/// Magnus with substeps doubled until successive results agree to `MAGNUS_TOLERANCE`; returns
 /// the propagation and the substeps used.
 pub fn magnus_adaptive<M: PeriodicModel<N> + ?Sized, const N: usize>(
     model: &M,
@@ -354,6 +359,6 @@ pub fn period_segments<M: PeriodicModel<N> + ?Sized, const N: usize>(model: &M) 
     PeriodPropagation { segments, routes, method }
 }
 /// The monodromy propagation over one period (Φ(T), q(T)).
-pub fn monodromy<const N: usize>(segments: &[Propagation<N>]) -> Propagation<N> {
+pub(crate) fn monodromy<const N: usize>(segments: &[Propagation<N>]) -> Propagation<N> {
     segments.iter().fold(Propagation::identity(), |acc, s| acc.then(s))
 }

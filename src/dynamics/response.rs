@@ -25,11 +25,11 @@ use super::trajectory::{Extremum, Trajectory};
 use crate::numerics::quadrature::{integrate_pieces_n, Integral};
 
 /// Uniform plot samples per mesh period (merged with switch times and located extrema).
-pub const PLOT_SAMPLES: usize = 256;
+pub(crate) const PLOT_SAMPLES: usize = 256;
 /// Mesh orders kept in the DTE spectrum.
-pub const ORDERS: usize = 10;
+pub(crate) const ORDERS: usize = 10;
 /// Tolerance of the means and Fourier coefficients, relative to their scale (|x|max, 1 for η).
-pub const MEAN_TOLERANCE: f64 = 1e-10;
+pub(crate) const MEAN_TOLERANCE: f64 = 1e-10;
 /// Number of integrands in the one Gauss–Kronrod pass: x, η, and cos/sin of each order.
 const N_INTEGRANDS: usize = 2 + 2 * ORDERS;
 

@@ -32,7 +32,7 @@ use super::model::{PeriodicModel, Segment};
 use super::sdof::SdofSystem;
 
 /// The number of states: δ_θ, x_p, x_g, y_p, y_g and their rates.
-pub const STATES: usize = 10;
+pub(crate) const STATES: usize = 10;
 
 /// One gear's bearing: stiffness along and off the line of action (N/m) and the damping ratio.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

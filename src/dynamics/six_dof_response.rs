@@ -18,9 +18,9 @@ use super::trajectory::{Extremum, Trajectory};
 use crate::numerics::quadrature::{integrate_pieces_n, Integral};
 
 /// Mesh orders of the spectra.
-pub const ORDERS: usize = 10;
+pub(crate) const ORDERS: usize = 10;
 /// Relative tolerance of the means and Fourier coefficients.
-pub const MEAN_TOLERANCE: f64 = 1e-10;
+pub(crate) const MEAN_TOLERANCE: f64 = 1e-10;
 /// Plot samples per period.
 const PLOT_SAMPLES: usize = 256;
 /// Quantities integrated: DTE, bearing forces x_p, x_g, y_p, y_g, friction force; each with its
@@ -149,7 +149,7 @@ impl SixDofResponse {
 }
 
 /// The dynamic factor alone (located max N / F0), for stability maps; None when unstable.
-pub fn dynamic_factor(sys: &SixDofSystem, floquet: &Floquet<STATES>) -> Option<f64> {
+pub(crate) fn dynamic_factor(sys: &SixDofSystem, floquet: &Floquet<STATES>) -> Option<f64> {
     let tr = Trajectory::new(sys, &floquet.period, floquet.periodic_state?);
     let period = sys.period();
     let force = |p: usize, t: f64| sys.mesh_force(tr.parameter_time(p, t), &tr.state(p, t));

@@ -23,9 +23,9 @@ use super::model::PeriodicModel;
 use super::propagator::{PeriodPropagation, SegmentRoute};
 
 /// Grid nodes per period of the fastest free oscillation on a piece.
-pub const NODES_PER_OSCILLATION: f64 = 16.0;
+pub(crate) const NODES_PER_OSCILLATION: f64 = 16.0;
 /// Grid nodes per piece at least.
-pub const MIN_NODES: usize = 8;
+pub(crate) const MIN_NODES: usize = 8;
 
 /// One smooth piece of the period.
 #[derive(Debug, Clone)]

@@ -8,7 +8,7 @@ use crate::drive::DrivePoint;
 use crate::model::{Scene, SceneDrive};
 use crate::progress::Progress;
 
-pub use super::drive_setup::DriveRow;
+pub(crate) use super::drive_setup::DriveRow;
 
 /// A drive's results: its operating points and its map (torque-major, then law, then formulation).
 #[derive(Debug, Clone, Default)]
@@ -29,18 +29,18 @@ pub struct DriveEvaluation {
 }
 
 /// Operating points (rows) a drive's report shows in full; the records hold every one.
-pub const DETAIL_ROWS: usize = 12;
+pub(crate) const DETAIL_ROWS: usize = 12;
 /// Rows evaluated together before they are written.
 const BLOCK: usize = 4096;
 
 /// Evaluates a drive scene in memory (its records dropped): its operating points (the first
-/// [`DETAIL_ROWS`] rows), its map and its thermal balance.
+/// `DETAIL_ROWS` rows), its map and its thermal balance.
 pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
     evaluate_drive_into(scene, drive, &mut std::io::sink()).expect("a sink takes every row")
 }
 
 /// Evaluates a drive scene, every row of its operating points written to `records` as it goes
-/// ([`super::drive_records`]); the first [`DETAIL_ROWS`] rows are kept for the report, with the
+/// (`super::drive_records`); the first `DETAIL_ROWS` rows are kept for the report, with the
 /// count and the least and greatest efficiency over every row (exact: the rows are the points
 /// asked for).
 pub fn evaluate_drive_into(
@@ -69,19 +69,8 @@ pub(crate) fn evaluate_drive_into_with(
 
 /// One shard of a drive's run (`gearloss run --shard K/N`): the rows of its operating points
 /// ([`crate::evaluate::Shard::range`] over the points) streamed to `records` (the header only in
-/// the first shard, so that the shards' files concatenated are a single run's), and their tally.
-pub fn evaluate_drive_shard(
-    scene: &Scene,
-    drive: &SceneDrive,
-    shard: crate::evaluate::Shard,
-    records: &mut dyn std::io::Write,
-) -> std::io::Result<DriveTally> {
-    let mut csv = DriveRecordFiles::csv(records);
-    evaluate_drive_shard_with(scene, drive, shard, &mut csv, &crate::progress::Quiet)
-}
-
-/// [`evaluate_drive_shard`] announcing each block of rows to `progress` (and stopping where it is
-/// cancelled).
+/// the first shard, so that the shards' files concatenated are a single run's), and their tally;
+/// each block of rows announced to `progress` (stopping where it is cancelled).
 pub(crate) fn evaluate_drive_shard_with(
     scene: &Scene,
     drive: &SceneDrive,
@@ -100,7 +89,7 @@ pub(crate) fn evaluate_drive_shard_with(
 /// After the shards are merged: the report's rows (the first [`DETAIL_ROWS`]) evaluated again, the
 /// map, thermal balance and duty cycle, with `tally` folded from the shards (exactly a single
 /// run's).
-pub fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
+pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup).min(DETAIL_ROWS);
     let (rows, validity, _) = stream_rows(

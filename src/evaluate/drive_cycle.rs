@@ -3,7 +3,7 @@
 //! On every piece of the cycle ([`crate::vehicle::Cycle::pieces`]: an interval of the trace, cut
 //! where the wheel force changes sign, where it crosses the recuperation limit and at the phase
 //! boundaries) the gearbox's output carries the wheel torque F r_dyn (or the limit) over the final
-//! ratio at the wheel speed v/r_dyn times it; the drive is solved there ([`DriveSetup::point`])
+//! ratio at the wheel speed v/r_dyn times it; the drive is solved there (`DriveSetup::point`)
 //! and its loss parts, the motor's power and the output's power are integrated over the piece by
 //! Gauss–Legendre at [`LOW_ORDER`] and [`HIGH_ORDER`] nodes: the higher order's value is reported,
 //! the difference of the two is its error estimate. A piece on which the drive's losses change
@@ -11,7 +11,7 @@
 //! the located switches, so that the estimate bounds the error. Standing pieces lose nothing.
 //!
 //! With a fixed oil temperature every piece is independent (evaluated in parallel). With the
-//! housing's heat capacity the sump follows the cycle ([`super::cycle_transient`]).
+//! housing's heat capacity the sump follows the cycle (`super::cycle_transient`).
 
 use rayon::prelude::*;
 
@@ -61,7 +61,7 @@ pub struct CycleEvaluation {
     pub pieces: Vec<Piece>,
     pub integrals: Vec<PieceIntegrals>,
     /// How many switches inside the pieces the integrals were cut at (where the power through a
-    /// stage reverses in coast: [`super::cycle_pieces::cut_at_switches`]).
+    /// stage reverses in coast: `super::cycle_pieces::cut_at_switches`).
     pub switches: usize,
     /// With the transient, per piece.
     pub thermal: Vec<PieceThermal>,
@@ -71,7 +71,7 @@ pub struct CycleEvaluation {
     /// mesh, their time (s), and the first one's time and reason.
     pub validity: Vec<StageValidity>,
     /// The box's map for the plot (output torque N·m × output speed rad/s at the fixed or start
-    /// temperature): torques, speeds, [torque][speed] η (NaN where both ends deliver).
+    /// temperature): torques, speeds, `[torque][speed]` η (NaN where both ends deliver).
     pub map: (Vec<f64>, Vec<f64>, Vec<Vec<f64>>),
 }
 

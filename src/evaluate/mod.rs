@@ -10,7 +10,7 @@ pub(crate) mod contact_curves;
 pub(crate) mod cycle_pieces;
 pub(crate) mod cycle_transient;
 pub(crate) mod details;
-pub mod drive;
+pub(crate) mod drive;
 pub mod drive_cycle;
 pub(crate) mod drive_map_best;
 pub(crate) mod drive_map_cell;
@@ -23,21 +23,21 @@ pub(crate) mod first_balance;
 pub(crate) mod laws;
 pub(crate) mod map;
 pub(crate) mod map_best;
-pub mod plan;
+pub(crate) mod plan;
 pub(crate) mod prepare;
-pub mod record_cells;
-pub mod record_files;
-pub mod record_parquet;
-pub mod record_parquet_read;
-pub mod records;
+pub(crate) mod record_cells;
+pub(crate) mod record_files;
+pub(crate) mod record_parquet;
+pub(crate) mod record_parquet_read;
+pub(crate) mod records;
 pub(crate) mod setup;
-pub mod stage_pairs;
+pub(crate) mod stage_pairs;
 pub(crate) mod stages;
 pub(crate) mod ste_row;
-pub mod stream;
+pub(crate) mod stream;
 pub(crate) mod tally;
-pub mod teeth;
-pub mod thermal;
+pub(crate) mod teeth;
+pub(crate) mod thermal;
 
 use crate::model::Scene;
 
@@ -49,11 +49,21 @@ pub use details::evaluate_details;
 pub use evaluation::{Evaluation, PointEvaluation};
 pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 
+pub use drive::{evaluate_drive, evaluate_drive_into, DriveEvaluation, DriveTally};
+pub use plan::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
 pub use plan::{Plan, Shard};
 pub use prepare::prepare;
+pub use record_cells::Cell;
+pub use record_parquet::ColumnType;
+pub use record_parquet_read::read_parquet_records;
+pub use records::{ExtraColumns, NoRecords};
 pub use records::{RecordSink, SummaryRow};
 pub use setup::{contact_table, Setup};
+pub use stage_pairs::{stage_pairs, StagePair};
+pub use stream::{evaluate_records, implausible_efficiency};
 pub use tally::Tally;
+pub use teeth::{teeth_details, TeethDetails};
+pub use thermal::{duty_cycle, ratings, DutyCycleResult, Losses, Ratings};
 
 /// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
 /// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).

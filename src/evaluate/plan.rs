@@ -12,16 +12,15 @@ use crate::model::Operating;
 /// Sweeps of up to this many operating points report every point in full (as small scenes always did).
 pub const ALL_IN_DETAIL: usize = 100;
 /// Larger sweeps report this many values of each sweep in full (their products: up to 9 points).
-pub const DETAIL_PER_SWEEP: usize = 3;
+pub(crate) const DETAIL_PER_SWEEP: usize = 3;
 /// A sweep plot draws at most this many values along its x axis.
 pub const PLOTTED_VALUES: usize = 200;
 /// A map plot's grid has at most this many values of each sweep.
 pub const MAP_VALUES: usize = 40;
-pub use crate::model::MAX_OPERATING_POINTS;
 
 /// One share of a sharded run: `index` of `count`, 1-based (`--shard 2/4`). What a user writes is
 /// validated in one place, [`Shard::new`] (and the `K/N` parse on it), which holds 1 ≤ K ≤ N ≤
-/// [`MAX_SHARDS`]: the CLI and Python both go through it.
+/// `MAX_SHARDS`: the CLI and Python both go through it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Shard {
     pub index: usize,
@@ -29,7 +28,7 @@ pub struct Shard {
 }
 
 /// The most shards a sweep is cut into.
-pub const MAX_SHARDS: usize = 1_000_000;
+pub(crate) const MAX_SHARDS: usize = 1_000_000;
 
 const SHARD_HINT: &str = "write K/N with whole numbers 1 ≤ K ≤ N ≤ 1000000, e.g. 2/4";
 

@@ -75,7 +75,7 @@ pub(crate) fn parameters_text(row: &SummaryRow) -> String {
 /// A row's cells, with the cells of each group of [`super::records::ExtraColumns`] after the
 /// fixed ones (`widths` of them; empty where the row has not that group: friction and dynamics
 /// rows have no budget).
-pub fn cells(row: &SummaryRow, widths: [usize; 3]) -> Vec<Cell> {
+pub(crate) fn cells(row: &SummaryRow, widths: [usize; 3]) -> Vec<Cell> {
     let kind = match row.kind {
         RowKind::Efficiency => "efficiency",
         RowKind::Friction => "friction",
@@ -128,7 +128,7 @@ pub fn cells(row: &SummaryRow, widths: [usize; 3]) -> Vec<Cell> {
 }
 
 /// One CSV line of a row.
-pub fn csv_line(row: &SummaryRow, widths: [usize; 3]) -> String {
+pub(crate) fn csv_line(row: &SummaryRow, widths: [usize; 3]) -> String {
     let mut line = cells(row, widths).iter().map(Cell::csv).collect::<Vec<_>>().join(",");
     line.push('\n');
     line

@@ -27,7 +27,7 @@ impl Default for RecordFormats {
 }
 
 /// The formats' names, as `--records` takes them.
-pub const FORMAT_NAMES: [&str; 3] = ["csv", "jsonl", "parquet"];
+pub(crate) const FORMAT_NAMES: [&str; 3] = ["csv", "jsonl", "parquet"];
 
 impl std::str::FromStr for RecordFormats {
     type Err = String;
@@ -63,10 +63,10 @@ impl RecordFormats {
 }
 
 /// The text record files.
-pub const RECORDS_CSV: &str = "records.csv";
-pub const RECORDS_JSONL: &str = "records.jsonl";
+pub(crate) const RECORDS_CSV: &str = "records.csv";
+pub(crate) const RECORDS_JSONL: &str = "records.jsonl";
 /// The Parquet record file.
-pub const RECORDS_PARQUET: &str = "records.parquet";
+pub(crate) const RECORDS_PARQUET: &str = "records.parquet";
 
 /// The record files being written.
 pub struct RecordFiles<W: Write + Send> {

@@ -19,7 +19,7 @@ use super::record_cells::{cells, Cell};
 use super::records::{csv_header, ExtraColumns, RecordSink, SummaryRow};
 
 /// Rows held before they are written as a row group.
-pub const ROW_GROUP: usize = 8_192;
+pub(crate) const ROW_GROUP: usize = 8_192;
 
 /// A column's Parquet type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -54,7 +54,7 @@ fn parameter_column(name: &str, unit: &str) -> String {
 }
 
 /// Writes records.parquet: the columns fixed by the scene and the first rows' parameters.
-pub struct ParquetRecords<W: Write + Send> {
+pub(crate) struct ParquetRecords<W: Write + Send> {
     out: Option<W>,
     writer: Option<SerializedFileWriter<W>>,
     extra: ExtraColumns,
@@ -66,7 +66,7 @@ pub struct ParquetRecords<W: Write + Send> {
 
 impl<W: Write + Send> ParquetRecords<W> {
     /// A writer for a run with the scene's `extra` columns; the file starts with the first rows.
-    pub fn new(out: W, extra: &ExtraColumns) -> ParquetRecords<W> {
+    pub(crate) fn new(out: W, extra: &ExtraColumns) -> ParquetRecords<W> {
         ParquetRecords {
             out: Some(out),
             writer: None,
@@ -78,7 +78,7 @@ impl<W: Write + Send> ParquetRecords<W> {
     }
 
     /// A writer of the given columns (a merge, from its shards' schema).
-    pub fn with_columns(out: W, columns: Vec<(String, ColumnType)>) -> std::io::Result<ParquetRecords<W>> {
+    pub(crate) fn with_columns(out: W, columns: Vec<(String, ColumnType)>) -> std::io::Result<ParquetRecords<W>> {
         let mut w = ParquetRecords {
             out: Some(out),
             writer: None,
@@ -114,7 +114,7 @@ impl<W: Write + Send> ParquetRecords<W> {
     }
 
     /// Takes rows given as cells in the writer's column order.
-    pub fn write_cells(&mut self, rows: impl IntoIterator<Item = Vec<Cell>>) -> std::io::Result<()> {
+    pub(crate) fn write_cells(&mut self, rows: impl IntoIterator<Item = Vec<Cell>>) -> std::io::Result<()> {
         for row in rows {
             self.rows.push(row);
             if self.rows.len() >= ROW_GROUP {
@@ -125,7 +125,7 @@ impl<W: Write + Send> ParquetRecords<W> {
     }
 
     /// The columns, in order.
-    pub fn columns(&self) -> &[(String, ColumnType)] {
+    pub(crate) fn columns(&self) -> &[(String, ColumnType)] {
         &self.columns
     }
 
@@ -177,7 +177,7 @@ impl<W: Write + Send> ParquetRecords<W> {
     }
 
     /// Writes what is held and the footer; the inner writer flushed.
-    pub fn finish(mut self) -> std::io::Result<W> {
+    pub(crate) fn finish(mut self) -> std::io::Result<W> {
         if self.writer.is_none() {
             self.start(&[])?;
         }

@@ -8,7 +8,7 @@ use super::record_cells::Cell;
 use super::record_parquet::ColumnType;
 
 /// A records.parquet file's columns (name, type) and its rows as cells.
-pub type ParquetTable = (Vec<(String, ColumnType)>, Vec<Vec<Cell>>);
+pub(crate) type ParquetTable = (Vec<(String, ColumnType)>, Vec<Vec<Cell>>);
 
 /// A records.parquet file's columns and rows; an error naming `what` (the file) when it cannot be read.
 pub fn read_parquet_records(file: std::fs::File, what: &str) -> std::io::Result<ParquetTable> {

@@ -156,7 +156,7 @@ impl SummaryRow {
 /// The columns of `records.csv`, in order: the keys records.jsonl writes (a row leaves out there
 /// what it has not, and the CSV leaves that cell empty); `parameters` is one cell
 /// `name=value unit; …`.
-pub const CSV_COLUMNS: [&str; 23] = [
+pub(crate) const CSV_COLUMNS: [&str; 23] = [
     "point",
     "torque_index",
     "speed_index",
@@ -182,9 +182,9 @@ pub const CSV_COLUMNS: [&str; 23] = [
     "parameters",
 ];
 
-/// The columns of `records.csv` after [`CSV_COLUMNS`], in groups each present as the scene asks:
+/// The columns of `records.csv` after `CSV_COLUMNS`, in groups each present as the scene asks:
 /// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
-/// balance's ([`super::thermal::ThermalRow::COLUMNS`]), then the static transmission error's
+/// balance's (`super::thermal::ThermalRow::COLUMNS`), then the static transmission error's
 /// (`super::ste_row::SteRow::COLUMNS`). A row fills the groups it has and leaves the others' cells
 /// empty.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -223,7 +223,7 @@ impl ExtraColumns {
 }
 
 /// The header line of `records.csv`: [`CSV_COLUMNS`], then the scene's [`ExtraColumns`].
-pub fn csv_header(extra: &ExtraColumns) -> String {
+pub(crate) fn csv_header(extra: &ExtraColumns) -> String {
     let mut s = CSV_COLUMNS.join(",");
     for name in extra.names() {
         s.push(',');
@@ -234,7 +234,7 @@ pub fn csv_header(extra: &ExtraColumns) -> String {
 }
 
 /// One JSON Lines line of a row (non-finite numbers become `null`).
-pub fn jsonl_line(row: &SummaryRow) -> String {
+pub(crate) fn jsonl_line(row: &SummaryRow) -> String {
     let mut line = serde_json::to_string(row).expect("a row serialises");
     line.push('\n');
     line

@@ -18,7 +18,7 @@ use crate::geometry::ContactPoint;
 use crate::model::Scene;
 
 /// Points evaluated together before their rows are written.
-pub const BLOCK: usize = 1024;
+pub(crate) const BLOCK: usize = 1024;
 
 /// What the stream computed beyond the tally: the dynamics of the detail points in its range, and
 /// the teeth when its first point wrote their rows, so that the details of a single run do not
@@ -196,9 +196,9 @@ fn half_width_beyond_limit(table: &[(Option<&str>, ContactPoint)]) -> Option<Imp
 /// How far past [0, 1] an efficiency may lie and still be rounding: 4 units in the last place of
 /// 1 (8.9e-16). η = 1 − P/P_in is computed from integrals whose last bits are rounding; one step
 /// above 1 is not a law giving negative friction.
-pub const EFFICIENCY_ULPS: f64 = 4.0 * f64::EPSILON;
+pub(crate) const EFFICIENCY_ULPS: f64 = 4.0 * f64::EPSILON;
 
-/// An efficiency outside [0, 1] (beyond [`EFFICIENCY_ULPS`]) or a power loss above the input power.
+/// An efficiency outside [0, 1] (beyond `EFFICIENCY_ULPS`) or a power loss above the input power.
 pub fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
     let mut out = Vec::new();
     let f = e.formulation.name().to_string();

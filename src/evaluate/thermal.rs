@@ -17,7 +17,7 @@ use crate::tribology::lubricant::OilData;
 use crate::tribology::Tribology;
 
 /// The ISO/TR 14179-1 rating temperature (K): 95 °C.
-pub const RATING_TEMPERATURE: f64 = 368.15;
+pub(crate) const RATING_TEMPERATURE: f64 = 368.15;
 
 /// The scene's losses as a function of the oil temperature.
 pub struct Losses<'a> {
@@ -109,7 +109,7 @@ pub struct ThermalPoint {
 
 /// The balance and the losses at it of law `spec`, formulation `f` at `state`, with the two ratings
 /// of its speed ([`ratings`]).
-pub fn thermal_point(
+pub(crate) fn thermal_point(
     losses: &Losses,
     housing: &Housing,
     spec: &FrictionLawSpec,
@@ -139,7 +139,7 @@ pub struct Ratings {
 /// The ratings of law `spec`, formulation `f` at pinion speed `speed` (rad/s): they depend on the
 /// speed alone, not on the operating point's torque. `guess` (N·m) starts the bracket; a sweep gives
 /// every point the same (its largest torque), so that a speed's ratings are one number whichever
-/// point asks first ([`RatingTable`]).
+/// point asks first (`RatingTable`).
 pub fn ratings(
     losses: &Losses,
     housing: &Housing,
@@ -162,7 +162,7 @@ pub fn ratings(
 
 /// Each speed's ratings of a sweep, computed by the first point that asks (a 200 × 200 sweep
 /// locates 200 speeds' ratings, not 40 000 points'). Keyed by law, formulation and speed index.
-pub struct RatingTable {
+pub(crate) struct RatingTable {
     slots: Vec<std::sync::OnceLock<Ratings>>,
     speeds: usize,
     /// The bracket's start for every speed: the sweep's largest torque.
@@ -170,7 +170,7 @@ pub struct RatingTable {
 }
 
 impl RatingTable {
-    pub fn new(scene: &Scene) -> RatingTable {
+    pub(crate) fn new(scene: &Scene) -> RatingTable {
         let speeds = scene.operating.pinion_speed.values.len();
         let guess = scene.operating.pinion_torque.values.iter().map(|v| v.value).fold(1.0, f64::max);
         let slots = (0..scene.friction.len() * 2 * speeds).map(|_| std::sync::OnceLock::new()).collect();
@@ -178,7 +178,14 @@ impl RatingTable {
     }
 
     /// The ratings of law `law` (index in the scene), formulation `f` at speed index `speed_index`.
-    pub fn get(&self, losses: &Losses, housing: &Housing, law: usize, f: Formulation, speed_index: usize) -> Ratings {
+    pub(crate) fn get(
+        &self,
+        losses: &Losses,
+        housing: &Housing,
+        law: usize,
+        f: Formulation,
+        speed_index: usize,
+    ) -> Ratings {
         let speed = losses.scene.operating.pinion_speed.values[speed_index].value;
         let spec = &losses.scene.friction[law];
         *self.slots[(law * 2 + f.index()) * self.speeds + speed_index]
@@ -295,7 +302,7 @@ impl ThermalRow {
 }
 
 /// Temperatures of the heat-balance curve.
-pub const CURVE_POINTS: usize = 120;
+pub(crate) const CURVE_POINTS: usize = 120;
 
 /// P_V(θ) and P_Q(θ) of one operating point, law and formulation from ambient to 200 °C, for the
 /// heat-balance plot (the balance itself is located, not read from these).
@@ -318,7 +325,7 @@ pub struct ThermalDetails {
 }
 
 /// The heat-balance curve of the first detail point and the duty cycle, as the scene asks.
-pub fn thermal_details(scene: &Scene, setup: &Setup) -> Option<ThermalDetails> {
+pub(crate) fn thermal_details(scene: &Scene, setup: &Setup) -> Option<ThermalDetails> {
     let housing = scene.housing.as_ref()?;
     let losses = Losses::new(scene, setup)?;
     let spec = scene.friction.first()?;

@@ -16,8 +16,8 @@ use crate::numerics::roots::{bracketed_roots, brent};
 use crate::tribology::FilmInputs;
 
 /// Λ thresholds between boundary/mixed and mixed/full film.
-pub const MIXED_FROM: f64 = 1.0;
-pub const FULL_FILM_FROM: f64 = 4.0;
+pub(super) const MIXED_FROM: f64 = 1.0;
+pub(super) const FULL_FILM_FROM: f64 = 4.0;
 
 #[derive(Debug, Clone)]
 pub struct Composite {

@@ -7,7 +7,7 @@
 //! value at P into a table, plot or mean, and integrate the (integrable) singularity instead.
 //!
 //! ```
-//! use gearloss::friction::{FrictionLaw, coulomb::Coulomb};
+//! use gearloss::friction::{Coulomb, FrictionLaw};
 //! # use gearloss::geometry::ContactPoint;
 //! # let mut c: ContactPoint = gearloss::friction::testing::contact();
 //! let law = Coulomb { mu: 0.05 };
@@ -17,25 +17,35 @@
 //! assert_eq!(law.mu(&c), 0.05);
 //! ```
 
-pub mod benedict_kelley;
+mod benedict_kelley;
 pub(crate) mod benedict_kelley_bernard;
 pub mod catalog;
-pub mod composite;
-pub mod coulomb;
+mod composite;
+mod coulomb;
 pub(crate) mod drozdov_gavrikov;
 mod friction_law;
-pub mod iso_14179_2;
+mod iso_14179_2;
 mod law_context;
 pub(crate) mod law_id;
-pub mod matsumoto;
-pub mod misharin;
+mod matsumoto;
+mod misharin;
 pub(crate) mod needs;
-pub mod odonoghue_cameron;
-pub mod smoothed_coulomb;
+mod odonoghue_cameron;
+mod smoothed_coulomb;
 #[doc(hidden)]
 pub mod testing;
-pub mod xu;
+mod xu;
 
 pub use friction_law::{signed, FrictionLaw, Parameter, Regime};
 pub use law_context::LawContext;
 pub use law_id::LawId;
+
+pub use benedict_kelley::BenedictKelley;
+pub use composite::Composite;
+pub use coulomb::Coulomb;
+pub use iso_14179_2::Iso14179_2;
+pub use matsumoto::Matsumoto;
+pub use misharin::Misharin;
+pub use odonoghue_cameron::ODonoghueCameron;
+pub use smoothed_coulomb::SmoothedCoulomb;
+pub use xu::Xu;

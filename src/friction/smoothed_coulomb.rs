@@ -3,7 +3,7 @@
 //! as Φ (physics notes: σ would make it dimensionally wrong). Φ = 50 1/mm by default.
 //!
 //! ```
-//! use gearloss::friction::{FrictionLaw, smoothed_coulomb::SmoothedCoulomb};
+//! use gearloss::friction::{FrictionLaw, SmoothedCoulomb};
 //! let law = SmoothedCoulomb { mu: 0.05, phi: 50e3 };
 //! let mut c = gearloss::friction::testing::contact();
 //! c.s = 0.0;

@@ -5,7 +5,7 @@
 //! b5 as the exponent of U: it is b6 (physics notes). μ → 0 at P (|SR|^b3).
 //!
 //! ```
-//! use gearloss::friction::{FrictionLaw, xu::Xu};
+//! use gearloss::friction::{FrictionLaw, Xu};
 //! let law = Xu::from_units(95.0, 0.3);
 //! let mut c = gearloss::friction::testing::contact();
 //! c.slide_to_roll = 0.0;
@@ -18,7 +18,8 @@ use crate::geometry::ContactPoint;
 use crate::tribology::{units, FilmInputs, Tribology};
 
 /// b1 … b9 of Xu (2005), as printed by both papers.
-pub const B: [f64; 9] = [-8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.100601, 0.752755, -0.390958, 0.620305];
+pub(super) const B: [f64; 9] =
+    [-8.916465, 1.03303, 1.036077, -0.354068, 2.812084, -0.100601, 0.752755, -0.390958, 0.620305];
 
 #[derive(Debug, Clone, Copy)]
 pub struct Xu {

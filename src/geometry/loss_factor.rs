@@ -25,7 +25,7 @@ use super::pair::PairGeometry;
 /// H_V without his assumption of the pitch point in single contact.
 ///
 /// ```
-/// use gearloss::geometry::loss_factor::shared_sliding_integral;
+/// use gearloss::geometry::shared_sliding_integral;
 /// // The pitch point in single contact: Ohlendorf's 1 − ε_α + ε_1² + ε_2².
 /// let (e1, e2) = (0.8, 0.9);
 /// let closed = 1.0 - (e1 + e2) + e1 * e1 + e2 * e2;
@@ -62,7 +62,7 @@ pub fn ohlendorf_closed_form(g: &PairGeometry) -> f64 {
 
 /// The loss factor H_V every mesh loss P_in μ H_V charges: Ohlendorf's closed form where it holds,
 /// else the integral it closes ([`shared_sliding_integral`]).
-pub fn loss_factor(g: &PairGeometry) -> f64 {
+pub(crate) fn loss_factor(g: &PairGeometry) -> f64 {
     if closed_form_holds(g) {
         ohlendorf_closed_form(g)
     } else {

@@ -12,7 +12,7 @@ use super::contact::{ContactPoint, OperatingState};
 use super::pair::PairGeometry;
 
 /// The most pairs that can be in contact at once (ε_α < 4).
-pub const MAX_CONTACTS: usize = 4;
+pub(crate) const MAX_CONTACTS: usize = 4;
 
 impl PairGeometry {
     /// How many pairs are in contact at time τ of the mesh cycle.
@@ -114,7 +114,7 @@ impl<'a> IntoIterator for &'a Contacts {
 
 /// How many pieces [`Mesh::line_contacts`] cuts a line spanning [lo, hi] along u into: two when it
 /// crosses the pitch point, one otherwise (each piece holds `nodes` quadrature points).
-pub fn line_pieces(lo: f64, hi: f64, pitch: f64) -> usize {
+pub(crate) fn line_pieces(lo: f64, hi: f64, pitch: f64) -> usize {
     if lo < pitch && pitch < hi {
         2
     } else {

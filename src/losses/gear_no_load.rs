@@ -35,7 +35,7 @@
 //! gears.
 //!
 //! ```
-//! use gearloss::losses::gear_no_load::mauz_dip_torque;
+//! use gearloss::losses::mauz_dip_torque;
 //! // FZG-like: e1 = 0, e2 = 30 mm, h_c = 80 mm, l_h = 200 mm, b = 14 mm at 8.3 m/s.
 //! let t = mauz_dip_torque([0.0, 0.030], 0.080, 0.200, 0.014, 8.3);
 //! let (c_sp, c1, c2) = ((4.0 * 30.0 / 240.0f64).powf(1.5) * 160.0 / 200.0, 0.063 * 3.0 + 0.0128 * 1.4f64.powi(3), 30.0 / 800.0 + 0.2);
@@ -53,7 +53,7 @@ pub enum Lubrication {
 }
 
 /// Mauz's highest tested pitch-line speed (m/s).
-pub const MAUZ_SPEED_LIMIT: f64 = 60.0;
+pub(crate) const MAUZ_SPEED_LIMIT: f64 = 60.0;
 
 /// T_H (N·m) of ISO/TR 14179-2 (Mauz) for immersion depths `e` [pinion, wheel], h_c, l_h, face
 /// width b (all m) and pitch-line speed v_t (m/s).
@@ -69,7 +69,7 @@ pub fn mauz_dip_torque(e: [f64; 2], h_c: f64, l_h: f64, b: f64, v_t: f64) -> f64
 }
 
 /// The impulse loss P (W) of an injection jet: ρ Q v_t (v_t + v_j).
-pub fn injection_impulse_loss(density: f64, flow: f64, v_t: f64, jet_speed: f64) -> f64 {
+pub(crate) fn injection_impulse_loss(density: f64, flow: f64, v_t: f64, jet_speed: f64) -> f64 {
     density * flow * v_t * (v_t + jet_speed)
 }
 

@@ -27,7 +27,7 @@
 //! moment M_drag of a bearing running submerged in the oil bath (it needs SKF's drag diagram).
 //!
 //! ```
-//! use gearloss::losses::skf_bearing::{SkfConstants, skf_moments};
+//! use gearloss::losses::{SkfConstants, skf_moments};
 //! use gearloss::losses::BearingType;
 //! // A 61806-size deep groove ball bearing (d = 30, D = 42 mm) with SKF's 618-series constants,
 //! // 1 kN radial, 3000 rpm, ν = 20 mm²/s: the sliding moment is μ_sl S1 d_m^-0.26 F_r^(5/3).
@@ -42,9 +42,9 @@
 use super::bearing_type::BearingType;
 
 /// K_rs for a low oil bath level and for oil jet lubrication (SKF).
-pub const K_RS: f64 = 3e-8;
+pub(crate) const K_RS: f64 = 3e-8;
 /// SKF's approximate boundary friction coefficient μ_bl.
-pub const MU_BOUNDARY: f64 = 0.15;
+pub(crate) const MU_BOUNDARY: f64 = 0.15;
 
 /// The SKF geometry constants of one bearing and the friction coefficients that may override SKF's.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -62,7 +62,7 @@ pub struct SkfConstants {
 }
 
 /// Whether the SKF model is available for `kind` here.
-pub fn supports(kind: BearingType) -> bool {
+pub(crate) fn supports(kind: BearingType) -> bool {
     matches!(kind, BearingType::DeepGrooveBall | BearingType::CylindricalRoller | BearingType::TaperedRoller)
 }
 

@@ -7,7 +7,7 @@
 //! x = −1 and halved for the map x = 2s − 1.
 //!
 //! ```
-//! use gearloss::numerics::chebyshev::Lobatto;
+//! use gearloss::numerics::Lobatto;
 //! let c = Lobatto::get(16);
 //! // ∫₀^s cos(3u) du = sin(3s)/3 at every node, to rounding.
 //! let f: Vec<f64> = c.nodes.iter().map(|s| (3.0 * s).cos()).collect();
@@ -22,7 +22,7 @@ use std::sync::OnceLock;
 use nalgebra::DMatrix;
 
 /// The node counts (M + 1 nodes, degree M) for which the nodes and S are kept.
-pub const DEGREES: [usize; 6] = [8, 16, 24, 32, 48, 64];
+pub(crate) const DEGREES: [usize; 6] = [8, 16, 24, 32, 48, 64];
 
 /// Nodes and integration matrix of degree M on [0, 1].
 #[derive(Debug, Clone)]
@@ -41,7 +41,7 @@ pub struct Lobatto {
 }
 
 impl Lobatto {
-    /// The nodes and S for a degree of [`DEGREES`] (built on first use).
+    /// The nodes and S for a degree of `DEGREES` (built on first use).
     pub fn get(degree: usize) -> &'static Lobatto {
         static CACHE: [OnceLock<Lobatto>; DEGREES.len()] = [const { OnceLock::new() }; DEGREES.len()];
         let i = DEGREES.iter().position(|d| *d == degree).expect("a degree of DEGREES");
@@ -110,7 +110,7 @@ impl Lobatto {
 
 /// The coefficients (in x, up to a constant) of an antiderivative of Σ_k c_k T_k(x): ∫T_0 = T_1,
 /// ∫T_1 = T_2/4, ∫T_k = T_{k+1}/(2(k+1)) − T_{k−1}/(2(k−1)); one longer than `c`.
-pub fn integrated_series(c: &[f64]) -> Vec<f64> {
+pub(crate) fn integrated_series(c: &[f64]) -> Vec<f64> {
     let m = c.len() - 1;
     let mut d = vec![0.0; m + 2];
     d[1] += c[0];
@@ -126,7 +126,7 @@ pub fn integrated_series(c: &[f64]) -> Vec<f64> {
 
 /// Σ_k c_k T_k(2s − 1) by Clenshaw's recurrence b_k = c_k + 2x b_{k+1} − b_{k+2}, p = c_0 + x b_1 − b_2
 /// (Clenshaw, "A note on the summation of Chebyshev series", MTAC 9 (1955) 118–120).
-pub fn clenshaw(coefficients: &[f64], s: f64) -> f64 {
+pub(crate) fn clenshaw(coefficients: &[f64], s: f64) -> f64 {
     let x = 2.0 * s - 1.0;
     let (mut b1, mut b2) = (0.0, 0.0);
     for c in coefficients[1..].iter().rev() {
@@ -137,7 +137,7 @@ pub fn clenshaw(coefficients: &[f64], s: f64) -> f64 {
 
 /// [`clenshaw`] at many points at once, `out[m]` = the sum at `s[m]`: the recurrences of 16 points
 /// run side by side, so that neither waits on the other's last step.
-pub fn clenshaw_many(coefficients: &[f64], s: &[f64], out: &mut [f64]) {
+pub(crate) fn clenshaw_many(coefficients: &[f64], s: &[f64], out: &mut [f64]) {
     const LANES: usize = 16;
     for (points, out) in s.chunks(LANES).zip(out.chunks_mut(LANES)) {
         let (mut x, mut b1, mut b2) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);

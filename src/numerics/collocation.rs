@@ -5,7 +5,7 @@
 //! invariant of the system exactly (an energy balance among the states holds to rounding).
 //!
 //! ```
-//! use gearloss::numerics::collocation::Collocation;
+//! use gearloss::numerics::Collocation;
 //! // y' = y from y(0) = 1 over one step of 1: 3-stage Gauss collocation gives the [3/3] Padé
 //! // approximant of e (Butcher 1964), 2.71831, to rounding.
 //! let g = Collocation::new(3);

@@ -6,7 +6,7 @@
 //! since no node ever lies on an endpoint.
 //!
 //! ```
-//! use gearloss::numerics::quadrature::integrate;
+//! use gearloss::numerics::integrate;
 //! // ∫₀¹ −ln x dx = 1, with a log singularity at 0.
 //! let r = integrate(|x| -x.ln(), &[0.0, 1.0], 1e-10);
 //! assert!((r.value - 1.0).abs() < 1e-9 && r.error < 1e-9);
@@ -105,7 +105,7 @@ pub fn integrate(f: impl Fn(f64) -> f64, breaks: &[f64], rel_tol: f64) -> Integr
 /// `f(x, d)` also receives d = x − (the singular point of its piece), computed exactly from the
 /// map (x itself cannot resolve a point 1e-20 away from a singular point at 0.01); d is NaN on
 /// pieces that touch no singular point it is `None`.
-pub fn integrate_singular(
+pub(crate) fn integrate_singular(
     f: impl Fn(f64, Option<f64>) -> f64,
     breaks: &[f64],
     singular: &[f64],
@@ -117,7 +117,7 @@ pub fn integrate_singular(
 
 /// As [`integrate_singular`] for N integrands that share their (expensive) evaluation points; each
 /// meets the tolerance, the pieces are refined where any of them needs it.
-pub fn integrate_singular_n<const N: usize>(
+pub(crate) fn integrate_singular_n<const N: usize>(
     f: impl Fn(f64, Option<f64>) -> [f64; N],
     breaks: &[f64],
     singular: &[f64],
@@ -226,14 +226,14 @@ fn adaptive<const N: usize>(f: &impl Fn(f64) -> [f64; N], a: f64, b: f64, rel_to
 /// where a relative tolerance could never be met.
 ///
 /// ```
-/// use gearloss::numerics::quadrature::integrate_pieces_n;
+/// use gearloss::numerics::integrate_pieces_n;
 /// // ∫₀^2π [sin² x, sin x] dx = [π, 0], the second to an absolute 1e-12.
 /// let [a, b] = integrate_pieces_n(|x| [x.sin().powi(2), x.sin()], &[0.0, 3.0, 6.283185307179586], [1e-12, 1e-12]);
 /// assert!((a.value - std::f64::consts::PI).abs() < 1e-11 && b.value.abs() < 1e-11);
 /// assert!(a.error <= 1e-12 && b.error <= 1e-12);
 /// ```
 /// The evaluation budget of [`integrate_pieces_n`].
-pub const MAX_PIECE_EVALUATIONS: usize = 30_000;
+pub(crate) const MAX_PIECE_EVALUATIONS: usize = 30_000;
 
 pub fn integrate_pieces_n<const N: usize>(
     f: impl Fn(f64) -> [f64; N],
@@ -282,7 +282,7 @@ pub fn integrate_pieces_n<const N: usize>(
 /// polynomials of degree 2n − 1).
 ///
 /// ```
-/// use gearloss::numerics::quadrature::gauss_legendre;
+/// use gearloss::numerics::gauss_legendre;
 /// let (x, w) = gauss_legendre(3);
 /// let i: f64 = x.iter().zip(&w).map(|(x, w)| w * x.powi(5)).sum();
 /// assert!((i - 1.0 / 6.0).abs() < 1e-15);

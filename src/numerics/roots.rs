@@ -5,7 +5,7 @@ use roots::{find_root_brent, SimpleConvergency};
 /// A root of `f` in [a, b] where f(a) and f(b) differ in sign, to `xtol` in x.
 ///
 /// ```
-/// use gearloss::numerics::roots::brent;
+/// use gearloss::numerics::brent;
 /// let r = brent(|x| x * x - 2.0, 0.0, 2.0, 1e-14);
 /// assert!((r - 2f64.sqrt()).abs() < 1e-13);
 /// ```
@@ -31,7 +31,7 @@ pub fn brent(f: impl Fn(f64) -> f64, a: f64, b: f64, xtol: f64) -> f64 {
 }
 
 /// ((minimum, where), (maximum, where)) of a function over an interval.
-pub type Extremes = ((f64, f64), (f64, f64));
+pub(crate) type Extremes = ((f64, f64), (f64, f64));
 
 /// Minimum and maximum (value, x) of `f` over `[breaks[0], breaks[last]]`, where `f` is smooth between
 /// consecutive breaks and may jump at them. Located, not sampled: on each piece the sign changes of a
@@ -39,7 +39,7 @@ pub type Extremes = ((f64, f64), (f64, f64));
 /// one-sided limits at both ends of every piece (f read `xtol` inside) are candidates too.
 ///
 /// ```
-/// use gearloss::numerics::roots::extrema;
+/// use gearloss::numerics::extrema;
 /// // sin on [0, 2π] split at 1: max 1 at π/2, min −1 at 3π/2.
 /// let ((lo, at_lo), (hi, at_hi)) = extrema(f64::sin, &[0.0, 1.0, 6.283185307179586], 8, 1e-13);
 /// assert!((hi - 1.0).abs() < 1e-15 && (at_hi - std::f64::consts::FRAC_PI_2).abs() < 1e-7);
@@ -55,7 +55,7 @@ pub fn extrema(f: impl Fn(f64) -> f64, breaks: &[f64], nodes: usize, xtol: f64) 
 /// exactly [`extrema`] of that component alone.
 ///
 /// ```
-/// use gearloss::numerics::roots::{extrema, extrema_each};
+/// use gearloss::numerics::{extrema, extrema_each};
 /// let breaks = [0.0, 1.0, 6.283185307179586];
 /// let both = extrema_each(|x| [x.sin(), x.cos()], &breaks, 8, 1e-13);
 /// assert_eq!(both[0], extrema(f64::sin, &breaks, 8, 1e-13));
@@ -127,7 +127,7 @@ pub fn extrema_each<const N: usize>(
 /// exactly 0. Two roots between the same two nodes are not seen: the nodes must be fine enough.
 ///
 /// ```
-/// use gearloss::numerics::roots::bracketed_roots;
+/// use gearloss::numerics::bracketed_roots;
 /// let r = bracketed_roots(f64::cos, &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0], 1e-14);
 /// assert_eq!(r.len(), 2);
 /// assert!((r[0] - std::f64::consts::FRAC_PI_2).abs() < 1e-13 && (r[1] - 1.5 * std::f64::consts::PI).abs() < 1e-13);

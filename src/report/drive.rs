@@ -1,5 +1,5 @@
 //! The report of a drive of several stages: what the drive is made of (stages, shafts, oil, laws),
-//! every operating point's [`DrivePoint`] (per law and formulation) with the readings it rests on,
+//! every operating point's [`DrivePointReport`] (per law and formulation) with the readings it rests on,
 //! the loss map over the ends' torque × speed, and the findings. Serde data; the renderers read it.
 
 use serde::{Deserialize, Serialize};
@@ -89,7 +89,7 @@ pub struct DriveReport {
     pub oil: Vec<(String, f64, String)>,
     pub laws: Vec<String>,
     /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
-    /// report shows the first [`crate::evaluate::drive::DETAIL_ROWS`] in full.
+    /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full.
     pub rows: usize,
     /// The least and greatest η over every row where one end delivers, with the row's label, law
     /// and formulation; rows where both ends deliver.

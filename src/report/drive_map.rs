@@ -17,7 +17,7 @@ pub struct DriveMapReport {
     /// Torques (N·m) and speeds (rpm) of the grid.
     pub torques: Vec<f64>,
     pub speeds_rpm: Vec<f64>,
-    /// [torque][speed]: total loss (W) and η (0 where both ends deliver).
+    /// `[torque][speed]`: total loss (W) and η (0 where both ends deliver).
     #[serde(with = "super::floats")]
     pub loss: Vec<Vec<f64>>,
     #[serde(with = "super::floats")]

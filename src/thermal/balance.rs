@@ -39,11 +39,11 @@ use super::housing::Housing;
 use crate::numerics::roots::brent;
 
 /// The highest oil temperature searched for a balance (K): 200 °C.
-pub const SEARCH_LIMIT: f64 = 473.15;
+pub(crate) const SEARCH_LIMIT: f64 = 473.15;
 /// The scan step that brackets the balance (K).
-pub const SCAN_STEP: f64 = 5.0;
+pub(crate) const SCAN_STEP: f64 = 5.0;
 /// The balance is located to this (K).
-pub const TEMPERATURE_TOLERANCE: f64 = 1e-10;
+pub(crate) const TEMPERATURE_TOLERANCE: f64 = 1e-10;
 
 /// Where the balance lies against the oil's limit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -80,7 +80,7 @@ impl BalanceStatus {
 /// The balance of one operating point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Balance {
-    /// θ* (K); `None` without a balance up to [`SEARCH_LIMIT`].
+    /// θ* (K); `None` without a balance up to `SEARCH_LIMIT`.
     pub temperature: Option<f64>,
     pub status: BalanceStatus,
 }

@@ -6,7 +6,7 @@
 //! What one node leaves out: no conduction along the shafts, no temperature differences inside
 //! the box (the oil, the housing wall and the gears share θ), no solar or other heat input.
 
-pub mod balance;
+pub(crate) mod balance;
 pub(crate) mod duty_cycle;
 pub(crate) mod housing;
 pub(crate) mod transient;

@@ -9,7 +9,7 @@
 //! open-source `chemicals` package by Caleb Bell (MIT licence, version 1.5.2, `chemicals/viscosity.py`).
 //!
 //! ```
-//! use gearloss::tribology::d2270::l_and_h;
+//! use gearloss::tribology::l_and_h;
 //! // The standard's worked example: Y = 8.86 mm²/s, between the rows 8.8 and 8.9.
 //! let (l, h) = l_and_h(8.86).unwrap();
 //! assert!((l - 119.94).abs() < 1e-9 && (h - 69.48).abs() < 1e-9);
@@ -17,7 +17,7 @@
 //! ```
 
 /// (Y, L, H) in mm²/s, ASTM D2270 Table 1.
-pub const TABLE_1: [(f64, f64, f64); 311] = [
+pub(crate) const TABLE_1: [(f64, f64, f64); 311] = [
     (2.0, 7.994, 6.394),
     (2.1, 8.64, 6.894),
     (2.2, 9.309, 7.41),
@@ -332,7 +332,7 @@ pub const TABLE_1: [(f64, f64, f64); 311] = [
 ];
 
 /// The lowest ν100 (mm²/s) at which ASTM D2270 defines a viscosity index.
-pub const LOWEST_NU_100: f64 = 2.0;
+pub(crate) const LOWEST_NU_100: f64 = 2.0;
 
 /// L and H (mm²/s) at ν100 = `y` (mm²/s): Table 1 with linear interpolation for 2 ≤ y ≤ 70, the
 /// standard's equations above; `None` below 2 mm²/s (or for a value that is not a number).

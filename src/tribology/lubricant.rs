@@ -224,7 +224,7 @@ pub fn walther_viscosity((a, b): (f64, f64), t: f64) -> f64 {
 }
 
 /// The viscosity index of an oil from ν40 = u and ν100 = y (mm²/s), ASTM D2270 §5 with L and H of
-/// its Table 1 ([`super::d2270`]): VI ≤ 100: 100 (L − U)/(L − H); above: N = (log H − log U)/log Y,
+/// its Table 1 (`super::d2270`): VI ≤ 100: 100 (L − U)/(L − H); above: N = (log H − log U)/log Y,
 /// VI = (10^N − 1)/0.00715 + 100. `None` below ν100 = 2 mm²/s, where the standard defines none.
 pub fn viscosity_index(u: f64, y: f64) -> Option<f64> {
     let (l, h) = super::d2270::l_and_h(y)?;

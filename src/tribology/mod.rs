@@ -1,9 +1,10 @@
 //! Lubricant and surface inputs in SI, and EHL film thickness along the line of action.
 
-pub mod d2270;
+pub(crate) mod d2270;
 pub(crate) mod film;
 pub mod lubricant;
 
+pub use d2270::l_and_h;
 pub use film::{Film, FilmInputs};
 
 /// What the friction laws read from the scene besides the contact state, in SI.

@@ -45,7 +45,7 @@ fn stiffness_models_one_file_one_row() {
 #[test]
 fn stiffness_models_by_hand() {
     use gearloss::geometry::stiffness::{StiffnessId, StiffnessModel};
-    use gearloss::geometry::teeth::iso_6336_method_b::iso_6336_method_b;
+    use gearloss::geometry::teeth::iso_6336_method_b;
     let scene = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
     let g = scene.gears.geometry().unwrap();
     let period = 1e-3;
@@ -85,7 +85,7 @@ fn dynamic_models_one_file_one_row() {
     let files = entry_files("dynamics/models", &["mod.rs", "catalog.rs", "gear_dynamics.rs", "model_id.rs"]);
     let rows: BTreeSet<String> = MODELS.iter().map(|m| m.file.to_string()).collect();
     assert_eq!(files, rows, "files in src/dynamics/models/ and rows of MODELS differ");
-    let bearing = gearloss::dynamics::six_dof::Bearing { loa: 1e8, oloa: 1e8, damping_ratio: 0.02 };
+    let bearing = gearloss::dynamics::Bearing { loa: 1e8, oloa: 1e8, damping_ratio: 0.02 };
     let inputs = ModelInputs { mass: [Some(1.0), Some(4.0)], bearings: Some([bearing; 2]) };
     let bare = ModelInputs { mass: [None, None], bearings: None };
     for (i, m) in MODELS.iter().enumerate() {

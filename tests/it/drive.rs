@@ -4,7 +4,7 @@
 
 use gearloss::drive::statics::residuals;
 use gearloss::drive::{DrivePoint, PowerFlow};
-use gearloss::evaluate::drive::evaluate_drive;
+use gearloss::evaluate::evaluate_drive;
 
 fn ev_reducer() -> gearloss::Scene {
     crate::scene(&crate::root().join("specs/ev_two_stage_reducer.gear"))
@@ -280,7 +280,7 @@ fn one_stage_drive_is_the_pair_budget() {
 /// gears' no-load loss and the mesh loss equal `pair`'s budget at the stage's driving torque and
 /// speed, to 1e-12 relative.
 pub(crate) fn assert_the_pair_budget(pair: &gearloss::Scene, drive: &gearloss::Scene) {
-    use gearloss::geometry::contact::Sharing;
+    use gearloss::geometry::Sharing;
     let g = pair.gears.geometry().unwrap();
     let tribology = pair.mesh().tribology(pair.mesh().reduced_modulus());
     let oil = pair.mesh().budget_oil(&tribology);

@@ -202,7 +202,7 @@ fn a_constant_speed_loses_the_steady_points_loss_times_the_time() {
         &[("operating { oil_temperature = 80 degC }", &operating)],
     );
     let e = evaluate(&scene);
-    let point = gearloss::evaluate::drive::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).rows[0].point.clone();
+    let point = gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).rows[0].point.clone();
     assert_eq!(e.pieces.len(), 1);
     let parts = [
         point.losses.meshes,

@@ -1,16 +1,16 @@
 //! Gear dynamics: propagators against closed forms and each other, Floquet theory against Liouville,
 //! stability tongues, and every integrator against the exact propagator.
 
-use gearloss::dynamics::floquet::Verdict;
-use gearloss::dynamics::integrators::{integrate, Integrator};
 use gearloss::dynamics::numerics::{reference, states};
-use gearloss::dynamics::propagator::{magnus_adaptive, AffineSegment, Method};
-use gearloss::dynamics::response::PeriodicResponse;
-use gearloss::dynamics::trajectory::Trajectory;
+use gearloss::dynamics::PeriodicResponse;
+use gearloss::dynamics::Trajectory;
+use gearloss::dynamics::Verdict;
+use gearloss::dynamics::{integrate, Integrator};
+use gearloss::dynamics::{magnus_adaptive, AffineSegment, Method};
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
-use gearloss::geometry::contact::Sharing;
+use gearloss::geometry::Sharing;
 use gearloss::geometry::{OperatingState, PairGeometry};
 
 /// FZG type C rectangular stiffness (N/m).

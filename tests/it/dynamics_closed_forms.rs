@@ -2,16 +2,16 @@
 //! transmission error, Meissner's instability tongues and the primary resonance.
 
 use super::dynamics::{ctx, fzg, system, J};
-use gearloss::dynamics::propagator::{magnus_adaptive, Method};
-use gearloss::dynamics::response::PeriodicResponse;
+use gearloss::dynamics::PeriodicResponse;
+use gearloss::dynamics::{magnus_adaptive, Method};
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::Coulomb;
 
 /// He & Singh's Airy closed form (undamped, internal formulation, stiffness linear in t on each
 /// segment) against the Magnus route: the homogeneous propagators and the forced parts agree to 1e-8.
 #[test]
 fn airy_closed_form_matches_magnus() {
-    use gearloss::dynamics::airy::airy_propagator;
+    use gearloss::dynamics::airy_propagator;
     let (scene, g) = fzg();
     let law = Coulomb { mu: 0.3 };
     for rpm in [300.0, 3000.0] {
@@ -23,7 +23,7 @@ fn airy_closed_form_matches_magnus() {
             let rel = (airy - m.phi).norm() / m.phi.norm();
             assert!(rel < 1e-8, "{rpm} rpm, segment {s:?}: {rel:e}");
             // With the forcing (Duhamel over Ai and Bi): q agrees too.
-            let full = gearloss::dynamics::airy::airy_propagation(&sys, s.start, s.end, h).unwrap();
+            let full = gearloss::dynamics::airy_propagation(&sys, s.start, s.end, h).unwrap();
             let rel_q = (full.q - m.q).norm() / m.q.norm();
             assert!(rel_q < 1e-8, "{rpm} rpm, segment {s:?}: q {rel_q:e}");
         }

@@ -2,9 +2,9 @@
 //! energy balance and limit cases.
 
 use gearloss::efficiency::{self, efficiency_at, mean_efficiency, ohlendorf_loss_factor};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::Coulomb;
 use gearloss::friction::LawContext;
-use gearloss::geometry::contact::{reduced_modulus, Sharing};
+use gearloss::geometry::{reduced_modulus, Sharing};
 use gearloss::geometry::{OperatingState, PairGeometry, PairInput};
 use gearloss::model::Formulation::{External, Internal};
 
@@ -137,7 +137,7 @@ fn efficiency_range_is_located() {
 /// quadrature of the same physics).
 #[test]
 fn a_long_recess_takes_the_integral_not_the_closed_form() {
-    use gearloss::geometry::loss_factor::{closed_form_holds, ohlendorf_closed_form};
+    use gearloss::geometry::{closed_form_holds, ohlendorf_closed_form};
     for (fixture, high) in [("internal_pair_long_recess", 0.015), ("any_order_and_ranges", 0.3)] {
         let scene = crate::scene(&crate::root().join(format!("tests/specs/ok/{fixture}.gear")));
         let g = PairGeometry::compute(&scene.gears.pair_input()).unwrap();

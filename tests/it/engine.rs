@@ -3,16 +3,16 @@
 //! results: multipliers, periodic state, trajectory extrema, integrators — through the general paths
 //! (dynamic matrix exponentials, Schur eigenvalues, LU solve) that a 2-state model never takes.
 
-use gearloss::dynamics::integrators::{integrate, Integrator};
-use gearloss::dynamics::model::{PeriodicModel, Segment};
 use gearloss::dynamics::numerics::{reference, relative_error, study_times};
-use gearloss::dynamics::propagator::Method;
-use gearloss::dynamics::trajectory::Trajectory;
+use gearloss::dynamics::Method;
+use gearloss::dynamics::Trajectory;
+use gearloss::dynamics::{integrate, Integrator};
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::dynamics::{PeriodicModel, Segment};
+use gearloss::friction::Coulomb;
 use gearloss::friction::LawContext;
-use gearloss::geometry::contact::Sharing;
 use gearloss::geometry::OperatingState;
+use gearloss::geometry::Sharing;
 use nalgebra::{SMatrix, SVector};
 
 /// Two SDOF systems with the same segments, uncoupled: X = [x₁, ẋ₁, x₂, ẋ₂].

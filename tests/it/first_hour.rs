@@ -129,8 +129,8 @@ fn run_prints_the_headline_and_the_warnings() {
 #[test]
 fn efficiency_within_ulps_of_one_is_no_finding() {
     use gearloss::efficiency::EfficiencyResult;
-    use gearloss::evaluate::stream::implausible_efficiency;
-    use gearloss::numerics::quadrature::Integral;
+    use gearloss::evaluate::implausible_efficiency;
+    use gearloss::numerics::Integral;
     let e = |max: f64| EfficiencyResult {
         formulation: gearloss::model::Formulation::Internal,
         mean: Integral { value: 0.99, error: 1e-12, evaluations: 1 },

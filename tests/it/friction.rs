@@ -1,15 +1,15 @@
 //! Each friction law against its paper: a published number, a closed form or a limit case.
 
 use gearloss::evaluate::evaluate_scene;
-use gearloss::friction::benedict_kelley::{BenedictKelley, CONSTANT, CONSTANT_FROM_IMPERIAL};
 use gearloss::friction::catalog::ArgumentDefault;
-use gearloss::friction::composite::Composite;
-use gearloss::friction::coulomb::Coulomb;
-use gearloss::friction::misharin::Misharin;
-use gearloss::friction::odonoghue_cameron::ODonoghueCameron;
-use gearloss::friction::smoothed_coulomb::SmoothedCoulomb;
 use gearloss::friction::testing::contact;
-use gearloss::friction::xu::Xu;
+use gearloss::friction::BenedictKelley;
+use gearloss::friction::Composite;
+use gearloss::friction::Coulomb;
+use gearloss::friction::Misharin;
+use gearloss::friction::ODonoghueCameron;
+use gearloss::friction::SmoothedCoulomb;
+use gearloss::friction::Xu;
 use gearloss::friction::{FrictionLaw, Regime};
 
 fn spec(name: &str) -> gearloss::Scene {
@@ -116,8 +116,9 @@ fn laws_name_the_input_they_miss() {
 /// the conversion gives 29 662, which rounds to 2.97e4 at the three figures printed.
 #[test]
 fn benedict_kelley_constant_is_the_imperial_one_converted() {
-    assert!((CONSTANT_FROM_IMPERIAL - 29_662.0).abs() < 1.0, "{CONSTANT_FROM_IMPERIAL}");
-    assert_eq!(format!("{:.2e}", CONSTANT_FROM_IMPERIAL), format!("{:.2e}", CONSTANT));
+    let from_imperial = BenedictKelley::CONSTANT_FROM_IMPERIAL;
+    assert!((from_imperial - 29_662.0).abs() < 1.0, "{from_imperial}");
+    assert_eq!(format!("{:.2e}", from_imperial), format!("{:.2e}", BenedictKelley::CONSTANT));
 }
 
 /// Xu: zero at P, rising with |SR| at low SR (the linear, isothermal region; He–Cho–Singh §4).
@@ -279,7 +280,7 @@ fn film_thickness_hand_value() {
 /// ISO/TR 14179-2 by hand for FZG type C at 1000 rpm, 239.3 N·m (X_L = 1, Ra 0.3 µm, 95 mPa·s).
 #[test]
 fn iso_14179_2_hand_value() {
-    use gearloss::friction::iso_14179_2::Iso14179_2;
+    use gearloss::friction::Iso14179_2;
     let scene = spec("fzg_type_c.gear");
     let g = scene.gears.geometry().unwrap();
     let eval = evaluate_scene(&scene);
@@ -299,7 +300,7 @@ fn iso_14179_2_hand_value() {
 /// Matsumoto: ξ = 0.5 log10(Rz/h_min) clamped; a very thick film gives μ_EHL, a very thin one μ_bl.
 #[test]
 fn matsumoto_limits() {
-    use gearloss::friction::matsumoto::Matsumoto;
+    use gearloss::friction::Matsumoto;
     use gearloss::tribology::FilmInputs;
     let film = FilmInputs { dynamic_viscosity: 0.095, pressure_viscosity: 2e-8, reduced_modulus: 226e9 };
     let c = contact();
@@ -328,7 +329,7 @@ fn no_scene_report_has_a_non_finite_number() {
 /// The mean |μ| of a law that diverges at P converges with the tolerance (the singularity is integrated).
 #[test]
 fn divergent_means_converge() {
-    use gearloss::numerics::quadrature::integrate;
+    use gearloss::numerics::integrate;
     let scene = spec("bernard_table4.gear");
     let eval = evaluate_scene(&scene);
     let ctx = eval.law_context(eval.points[0].state);

@@ -115,8 +115,8 @@ fn equal_sharing_carries_the_whole_load_between_b_and_d() {
 /// Kinematics: v_s = ω1 (1 + z1/z2) |s| (physics notes), zero at P; Hertz p_H·b_H·π/2 = w.
 #[test]
 fn contact_state_closed_forms() {
-    use gearloss::geometry::contact::{reduced_modulus, Sharing};
     use gearloss::geometry::OperatingState;
+    use gearloss::geometry::{reduced_modulus, Sharing};
     let g = fzg();
     let op = OperatingState { pinion_torque: 302.0, pinion_speed: 1000.0 * PI / 30.0 };
     let e_r = reduced_modulus([206e9, 206e9], [0.3, 0.3]);

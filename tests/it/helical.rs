@@ -1,7 +1,7 @@
 //! Helical pairs (He & Singh): geometry, contact lines, efficiency along the lines, effective
 //! stiffness and Floquet stability, against the paper, closed forms and the spur limit.
 
-use gearloss::geometry::regions::{LineEnd::*, PitchSide::*};
+use gearloss::geometry::{LineEnd::*, PitchSide::*};
 use gearloss::geometry::{PairGeometry, PairInput};
 
 use crate::root;
@@ -118,9 +118,9 @@ fn helical_report_carries_the_required_fields() {
 }
 
 mod free_response {
-    use gearloss::dynamics::free::free_response;
+    use gearloss::dynamics::free_response;
     use gearloss::dynamics::{DynamicFormulation, Floquet};
-    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::friction::Coulomb;
 
     /// He & Singh after Fig. 6 and Fig. 7: the free response at 1000 rpm (x0 = 2e-6 in, v0 = 20 in/s,
     /// μ = 0.2, undamped) is dominated by f_n ≈ 9.5 f_mesh with sidebands at 8.5 and 10.5 f_mesh:
@@ -147,10 +147,10 @@ mod free_response {
 }
 
 mod closed_form {
-    use gearloss::dynamics::airy::{airy_propagation, linear_on_segments};
-    use gearloss::dynamics::propagator::magnus_adaptive;
+    use gearloss::dynamics::magnus_adaptive;
+    use gearloss::dynamics::{airy_propagation, linear_on_segments};
     use gearloss::dynamics::{DynamicFormulation, PeriodicModel};
-    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::friction::Coulomb;
 
     /// He & Singh eqs 28–35: where K_e is linear in t (μ = 0, and the eq-25 chord with friction) the
     /// undamped segment has the Airy closed form; it agrees with adaptive 4th-order Magnus on every

@@ -3,9 +3,9 @@
 
 use gearloss::dynamics::{DynamicFormulation, Floquet, SdofSystem, StiffnessModel};
 use gearloss::efficiency::{mean_efficiency, ohlendorf_loss_factor};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
-use gearloss::geometry::contact::{reduced_modulus, Sharing};
+use gearloss::geometry::{reduced_modulus, Sharing};
 use gearloss::geometry::{OperatingState, PairGeometry, PairInput};
 use gearloss::model::Formulation::{External, Internal};
 
@@ -203,7 +203,7 @@ fn external_mean_equals_an_independent_double_integral() {
     let eta = mean_efficiency(&c, &law, External).value;
     // Independent: P_f(τ) = μ w ω1 (1 + 1/i) ∫ |u − P| dl, w = F_bn / L(τ); the integral over each
     // line in u in closed form; the mean over τ by composite Gauss–Legendre between the breaks.
-    let (x, wt) = gearloss::numerics::quadrature::gauss_legendre(20);
+    let (x, wt) = gearloss::numerics::gauss_legendre(20);
     let breaks = g.cycle_break_times(&[]);
     let fbn = g.normal_load(&c.state);
     let mut loss = 0.0;

@@ -41,7 +41,7 @@ fn implausible_traces_are_refused_at_their_line() {
 /// at its line, with the way out.
 #[test]
 fn a_trace_longer_than_the_tool_runs_is_refused_at_its_line() {
-    use gearloss::vehicle::trace::MAX_SAMPLES;
+    use gearloss::vehicle::MAX_SAMPLES;
     let samples = |n: usize| {
         let mut text = String::from("time [s], speed [km/h]\n");
         for k in 0..n {

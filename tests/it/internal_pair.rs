@@ -2,11 +2,11 @@
 //! friction along its path against independent integrals, and the checks that refuse a ring.
 
 use gearloss::efficiency::{local_power_loss, mean_efficiency, ohlendorf_loss_factor};
-use gearloss::friction::benedict_kelley::BenedictKelley;
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::BenedictKelley;
+use gearloss::friction::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
-use gearloss::geometry::contact::{reduced_modulus, Sharing};
 use gearloss::geometry::{involute, trochoid_margin, OperatingState, PairGeometry, PairInput, PairPart};
+use gearloss::geometry::{reduced_modulus, Sharing};
 use gearloss::model::Formulation::{External, Internal};
 
 /// A planet of 25 teeth in a ring of 75, m = 2 mm, 20°, b = 25 mm; the ring's tip at `ring_tip`.

@@ -3,14 +3,14 @@
 //! against the stiffness directly, the balance of forces and an independent integral of the loss.
 
 use gearloss::efficiency::{mean_efficiency, Formulation};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::Coulomb;
 use gearloss::friction::LawContext;
-use gearloss::geometry::contact::Sharing;
-use gearloss::geometry::mesh::{Mesh, LINE_NODES};
-use gearloss::geometry::teeth::load_sharing::{LoadSharing, ReliefShape, Reliefs, TipRelief};
-use gearloss::geometry::teeth::pair_stiffness::{Bodies, PairStiffness};
+use gearloss::geometry::teeth::{Bodies, PairStiffness};
+use gearloss::geometry::teeth::{LoadSharing, ReliefShape, Reliefs, TipRelief};
+use gearloss::geometry::Sharing;
+use gearloss::geometry::{Mesh, LINE_NODES};
 use gearloss::geometry::{OperatingState, PairGeometry};
-use gearloss::numerics::quadrature::integrate;
+use gearloss::numerics::integrate;
 
 fn steel() -> Bodies {
     Bodies { young: [206e9; 2], poisson: [0.3; 2], root_radius: [None; 2], bore_radius: [None; 2] }

@@ -3,9 +3,9 @@
 
 use gearloss::evaluate::evaluate_scene;
 use gearloss::geometry::OperatingState;
-use gearloss::losses::gear_no_load::{windage_loss, GearsRunning};
 use gearloss::losses::parts::LossColumn;
 use gearloss::losses::{loss_budget, Bearing, BearingType, Gearbox, Lubrication, Oil, Seal};
+use gearloss::losses::{windage_loss, GearsRunning};
 
 /// A mineral oil of 50 mm²/s and 870 kg/m³.
 const OIL: Oil = Oil { nu: Some(50e-6), rho: Some(870.0), eta: 50e-6 * 870.0, mineral: true };
@@ -57,7 +57,7 @@ fn catalogue_oil_at_temperature_by_hand() {
 /// mineral at 90 °C, Ra 0.3 µm, `x_l = 0.846`: μ_mZ within 0.5 % of the peer's 0.04487.
 #[test]
 fn c14_mu_matches_the_peer() {
-    use gearloss::friction::iso_14179_2::Iso14179_2;
+    use gearloss::friction::Iso14179_2;
     let scene = spec("fzg_c14_gearbox.gear");
     let eval = evaluate_scene(&scene);
     let state = OperatingState { pinion_torque: 239.3, pinion_speed: rpm(1500.0) };
@@ -77,7 +77,7 @@ fn c14_mu_matches_the_peer() {
 #[test]
 fn c14_mesh_loss_matches_the_peer_with_the_load_at_the_wheel() {
     use gearloss::efficiency::{evaluate_efficiencies, Formulation};
-    use gearloss::friction::iso_14179_2::Iso14179_2;
+    use gearloss::friction::Iso14179_2;
     let scene = spec("fzg_c14_gearbox.gear");
     let eval = evaluate_scene(&scene);
     let state = OperatingState { pinion_torque: 239.3 / 1.5, pinion_speed: rpm(2250.0) };

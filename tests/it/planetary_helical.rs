@@ -10,7 +10,7 @@ const SPEC: &str = "tests/specs/ok/planetary_helical.gear";
 fn points(source: &str) -> Vec<gearloss::drive::DrivePoint> {
     let scene = gearloss::check("helical.gear", source).unwrap_or_else(|e| panic!("{e}"));
     let drive = scene.drive.as_ref().unwrap();
-    gearloss::evaluate::drive::evaluate_drive(&scene, drive).rows.into_iter().map(|r| r.point).collect()
+    gearloss::evaluate::evaluate_drive(&scene, drive).rows.into_iter().map(|r| r.point).collect()
 }
 
 fn spec() -> String {
@@ -106,11 +106,8 @@ fn a_floating_sun_rests_on_one_place() {
     }
     let scene = gearloss::check("floating.gear", &floating).unwrap();
     let drive = scene.drive.as_ref().unwrap();
-    let report = gearloss::report::drive::build_drive_report(
-        &scene,
-        drive,
-        &gearloss::evaluate::drive::evaluate_drive(&scene, drive),
-    );
+    let report =
+        gearloss::report::drive::build_drive_report(&scene, drive, &gearloss::evaluate::evaluate_drive(&scene, drive));
     assert!(report.findings.iter().any(|f| f.message.contains("carries a floating sun on one bearing place")));
     let one = floating.replace("planets = 3", "planets = 1");
     let e = gearloss::check("one.gear", &one).expect_err("one planet does not centre the sun");

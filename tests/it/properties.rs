@@ -2,11 +2,11 @@
 //! agreement of the two formulations to first order in μ.
 
 use gearloss::efficiency::{efficiency_at, mean_efficiency};
-use gearloss::friction::coulomb::Coulomb;
-use gearloss::friction::smoothed_coulomb::SmoothedCoulomb;
-use gearloss::friction::xu::Xu;
+use gearloss::friction::Coulomb;
+use gearloss::friction::SmoothedCoulomb;
+use gearloss::friction::Xu;
 use gearloss::friction::{FrictionLaw, LawContext};
-use gearloss::geometry::contact::Sharing;
+use gearloss::geometry::Sharing;
 use gearloss::geometry::{OperatingState, PairGeometry, PairInput};
 use gearloss::model::Formulation::{External, Internal};
 use gearloss::tribology::Tribology;

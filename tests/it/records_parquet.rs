@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use gearloss::evaluate::record_cells::Cell;
-use gearloss::evaluate::record_parquet_read::read_parquet_records;
+use gearloss::evaluate::read_parquet_records;
+use gearloss::evaluate::Cell;
 
 fn gearloss() -> Command {
     Command::new(env!("CARGO_BIN_EXE_gearloss"))
@@ -22,7 +22,7 @@ fn run(args: &[&str], out: &Path) {
     assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
 }
 
-type Table = (Vec<(String, gearloss::evaluate::record_parquet::ColumnType)>, Vec<Vec<Cell>>);
+type Table = (Vec<(String, gearloss::evaluate::ColumnType)>, Vec<Vec<Cell>>);
 
 fn parquet(dir: &Path) -> Table {
     parquet_file(&dir.join("records.parquet"))

@@ -1,11 +1,11 @@
 //! The 6-DOF model (He–Cho–Singh eqs 1–9): limits, balances and Floquet identities on FZG type C.
 
-use gearloss::dynamics::propagator::Method;
-use gearloss::dynamics::six_dof::{Bearing, SixDofSystem};
+use gearloss::dynamics::Method;
+use gearloss::dynamics::{Bearing, SixDofSystem};
 use gearloss::dynamics::{DynamicFormulation, Floquet, PeriodicModel, SdofSystem, StiffnessModel};
-use gearloss::friction::coulomb::Coulomb;
+use gearloss::friction::Coulomb;
 use gearloss::friction::{FrictionLaw, LawContext};
-use gearloss::geometry::contact::Sharing;
+use gearloss::geometry::Sharing;
 use gearloss::geometry::{OperatingState, PairGeometry};
 
 /// FZG type C rectangular stiffness (N/m).
@@ -113,9 +113,9 @@ fn liouville_and_two_propagation_methods() {
 }
 
 mod response {
-    use gearloss::dynamics::six_dof_response::SixDofResponse;
     use gearloss::dynamics::Floquet;
-    use gearloss::friction::coulomb::Coulomb;
+    use gearloss::dynamics::SixDofResponse;
+    use gearloss::friction::Coulomb;
     use gearloss::friction::FrictionLaw;
 
     use super::{ctx, fzg, six};
@@ -278,8 +278,8 @@ fn helical_six_dof_tends_to_the_helical_sdof() {
 /// at most μ × max N.
 #[test]
 fn largest_pair_friction_force_is_located() {
-    use gearloss::dynamics::six_dof_response::SixDofResponse;
-    use gearloss::dynamics::trajectory::Trajectory;
+    use gearloss::dynamics::SixDofResponse;
+    use gearloss::dynamics::Trajectory;
     let (scene, g) = fzg();
     let law = Coulomb { mu: 0.08 };
     let s = six(ctx(&scene, &g, 1000.0), Some(&law), 5e8);

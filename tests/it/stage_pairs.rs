@@ -3,7 +3,7 @@
 //! power walk gives it (every number to 1e-12 relative), and the mesh efficiency the walk charged
 //! equals the pair alone's loss as a budget charges it (1e-12).
 
-use gearloss::evaluate::stage_pairs::{stage_pairs, StagePair};
+use gearloss::evaluate::{stage_pairs, StagePair};
 
 const SPEC: &str = "specs/ev_reducer_stage_meshes.gear";
 

@@ -1,9 +1,9 @@
 //! Mesh stiffness from the teeth (potential-energy method), load sharing, tip relief and the static
 //! transmission error, against closed forms, limits and ISO 6336-1.
 
-use gearloss::geometry::teeth::iso_6336_method_b::iso_6336_method_b;
-use gearloss::geometry::teeth::load_sharing::{LoadSharing, ReliefShape, Reliefs, TipRelief};
-use gearloss::geometry::teeth::pair_stiffness::{Bodies, PairStiffness};
+use gearloss::geometry::teeth::iso_6336_method_b;
+use gearloss::geometry::teeth::{Bodies, PairStiffness};
+use gearloss::geometry::teeth::{LoadSharing, ReliefShape, Reliefs, TipRelief};
 use gearloss::geometry::{PairGeometry, PairInput};
 
 fn steel() -> Bodies {
@@ -144,8 +144,7 @@ fn pem_beside_iso_6336() {
         let k = PairStiffness::new(&g, &steel()).unwrap();
         let roots = [Bodies::default_root_radius(&g, 0), Bodies::default_root_radius(&g, 1)];
         let iso = iso_6336_method_b(&g, [206e9; 2], roots);
-        let ((_, _), (k_max, _)) =
-            gearloss::numerics::roots::extrema(|s| k.per_width(s), &[0.0, k.path], 32, 1e-12 * k.path);
+        let ((_, _), (k_max, _)) = gearloss::numerics::extrema(|s| k.per_width(s), &[0.0, k.path], 32, 1e-12 * k.path);
         let ratio = k_max * 1e-9 / (iso.c_single / 0.8);
         assert!((0.9..1.1).contains(&ratio), "{p}: PEM {} vs ISO c'/C_M {}", k_max * 1e-9, iso.c_single / 0.8);
         let mean = k.mean() / g.face_width * 1e-9;
@@ -213,7 +212,7 @@ fn maximum_mesh_stiffness_against_ross() {
     // K is smooth within double contact; its maximum there located on the piece's own extrema.
     let scale = k.mean();
     let breaks = [s0, s0 + (k.path - k.base_pitch), s0 + k.base_pitch];
-    let (_, (max, _)) = gearloss::numerics::roots::extrema(|s| k.mesh_at(s) / scale, &breaks, 32, 1e-13 * k.path);
+    let (_, (max, _)) = gearloss::numerics::extrema(|s| k.mesh_at(s) / scale, &breaks, 32, 1e-13 * k.path);
     let max = max * scale;
     assert!((max / 429.787e6 - 1.0).abs() < 0.05, "max K {max:.6e} N/m against ROSS 4.29787e8");
 }
@@ -254,7 +253,7 @@ fn sainsot_fit_range_is_checked() {
 /// it: its largest single-pair stiffness within 10 % of c′/C_M, its mean within 25 % of c_γα/C_M.
 #[test]
 fn iso_tr_6336_30_example_1() {
-    use gearloss::geometry::teeth::iso_6336_method_b::{virtual_teeth, C_M};
+    use gearloss::geometry::teeth::{virtual_teeth, C_M};
     let scene = crate::scene(&crate::root().join("specs/iso_tr_6336_30_example_1.gear"));
     let (g, bodies) = (scene.gears.geometry().unwrap(), scene.gears.bodies());
     let zn = [0, 1].map(|i| virtual_teeth(g.teeth[i], g.helix_angle, g.base_helix_angle));
@@ -267,8 +266,7 @@ fn iso_tr_6336_30_example_1() {
     assert!((g.contact_ratio - 1.54934).abs() < 1e-5, "ε_α {}", g.contact_ratio);
     assert!((iso.c_gamma_alpha / 17.46485 - 1.0).abs() < 2e-4, "c_γα {}", iso.c_gamma_alpha);
     let k = PairStiffness::new(&g, &bodies).unwrap();
-    let ((_, _), (k_max, _)) =
-        gearloss::numerics::roots::extrema(|s| k.per_width(s), &[0.0, k.path], 32, 1e-12 * k.path);
+    let ((_, _), (k_max, _)) = gearloss::numerics::extrema(|s| k.per_width(s), &[0.0, k.path], 32, 1e-12 * k.path);
     let ratio = k_max * 1e-9 / (iso.c_single / C_M);
     assert!((0.9..1.1).contains(&ratio), "PEM {} vs ISO c′/C_M {}", k_max * 1e-9, iso.c_single / C_M);
     let ratio = k.mean() / g.face_width * 1e-9 / (iso.c_gamma_alpha / C_M);
@@ -286,7 +284,7 @@ fn pair_series_end_with_the_left_limit_at_e() {
     let report = gearloss::report_of(&scene);
     let s = report.stiffness.as_ref().unwrap();
     let g = scene.gears.geometry().unwrap();
-    let details = gearloss::evaluate::teeth::teeth_details(&scene, &g).unwrap();
+    let details = gearloss::evaluate::teeth_details(&scene, &g).unwrap();
     let k = &details.sharing.stiffness;
     let (pos, stiff) = (&s.pair.position.values, &s.pair.stiffness.values);
     let end = *pos.last().unwrap();

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use gearloss::evaluate::plan::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
+use gearloss::evaluate::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
 use gearloss::{Plan, Shard};
 
 fn gearloss() -> Command {

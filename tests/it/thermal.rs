@@ -1,8 +1,8 @@
 //! The thermal balance end to end: the duty cycle's books, the rating on the limit, the balance at
 //! `oil_temperature = equilibrium`, the zero-speed and zero-torque steps, the step limit.
 
-use gearloss::evaluate::thermal::{ratings, Losses};
 use gearloss::evaluate::{prepare, state_at, Plan};
+use gearloss::evaluate::{ratings, Losses};
 use gearloss::geometry::OperatingState;
 use gearloss::model::Formulation;
 

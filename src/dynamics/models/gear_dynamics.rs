@@ -9,7 +9,7 @@
 //! ```
 //! use gearloss::dynamics::models::{DynamicModelId, GearDynamics, ModelFacts, Wants};
 //! use gearloss::dynamics::models::sdof::Sdof;
-//! use gearloss::dynamics::analysis::FormulationResult;
+//! use gearloss::dynamics::FormulationResult;
 //! use gearloss::dynamics::numerics::Study;
 //! use gearloss::dynamics::SdofSystem;
 //!
@@ -35,7 +35,7 @@
 //!
 //! // Without friction the external formulation is the base one: the same ρ (to rounding).
 //! use gearloss::dynamics::{DynamicFormulation, StiffnessModel};
-//! use gearloss::friction::coulomb::Coulomb;
+//! use gearloss::friction::Coulomb;
 //! use gearloss::geometry::OperatingState;
 //! let text = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear"));
 //! let scene = gearloss::check("fzg_type_c.gear", text).unwrap();

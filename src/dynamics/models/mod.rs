@@ -6,7 +6,7 @@
 //! both gears on their bearings (`six_dof`). Each wraps the mesh (an [`crate::dynamics::SdofSystem`]
 //! at one operating point and formulation) in its own system, analyses it with the shared engine
 //! (Floquet, trajectories, integrators) and gives back generic data
-//! ([`crate::dynamics::analysis`]).
+//! (`crate::dynamics::analysis`).
 
 pub(crate) mod catalog;
 pub(crate) mod gear_dynamics;

@@ -2,7 +2,7 @@
 //! "Dynamics"): x = DTE = R_p θ_p − R_w θ_w, m_e ẍ + c ẋ + k(t) x = F0 + friction terms, in the
 //! base, external, internal and internal-chord formulations. The system is the mesh itself
 //! ([`SdofSystem`]); its periodic response is [`PeriodicResponse`], its free response
-//! [`crate::dynamics::free`].
+//! `crate::dynamics::free`.
 
 use super::gear_dynamics::{DynamicModelId, GearDynamics, ModelFacts, ModelInputs, Wants};
 use crate::dynamics::analysis::{FormulationResult, ModelResponse, Range, ResponseCurves};

@@ -9,7 +9,7 @@ use crate::geometry::pair::PairGeometry;
 /// mesh period with τ = 0 when a pair enters at A.
 ///
 /// ```
-/// use gearloss::geometry::stiffness::{MeshStiffness, pairs_in_contact::PairsInContact};
+/// use gearloss::geometry::stiffness::{MeshStiffness, PairsInContact};
 /// let k = PairsInContact { single: 2e8, double: 4e8, triple: 6e8 };
 /// assert_eq!(k.at_pairs(2), 4e8);
 /// assert!(k.is_piecewise_constant());

@@ -11,7 +11,7 @@
 pub(crate) mod catalog;
 pub(crate) mod iso_6336;
 pub(crate) mod mesh_stiffness;
-pub mod pairs_in_contact;
+pub(crate) mod pairs_in_contact;
 pub(crate) mod per_length;
 pub(crate) mod potential_energy;
 pub(crate) mod stiffness_id;
@@ -19,3 +19,4 @@ pub(crate) mod table;
 
 pub use catalog::{StiffnessEntry, StiffnessId, MODELS};
 pub use mesh_stiffness::{MeshStiffness, StiffnessModel, StiffnessShape};
+pub use pairs_in_contact::PairsInContact;

@@ -44,7 +44,7 @@ pub const SAINSOT_RANGES: [(f64, f64); 4] = [(6.82, 6.94), (1.08, 3.29), (2.56, 
 /// A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F with the coefficients of their Table 1.
 ///
 /// ```
-/// use gearloss::geometry::teeth::compliance::{sainsot_coefficients, SAINSOT_RANGES};
+/// use gearloss::geometry::teeth::{sainsot_coefficients, SAINSOT_RANGES};
 /// // FZG type C's pinion (h_f = 2.0795, θ_f = 0.18830 rad): inside every range.
 /// let c = sainsot_coefficients(2.07951, 0.1883006749);
 /// assert!(c.iter().zip(SAINSOT_RANGES).all(|(v, (lo, hi))| (lo..=hi).contains(v)));

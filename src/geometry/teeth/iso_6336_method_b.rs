@@ -15,7 +15,7 @@
 //! (test `iso_tr_6336_30_example_1`).
 //!
 //! ```
-//! use gearloss::geometry::teeth::iso_6336_method_b::{virtual_teeth, single_pair_flexibility};
+//! use gearloss::geometry::teeth::{virtual_teeth, single_pair_flexibility};
 //! // ISO/TR 6336-30 example 1: z_n = 18.905 and 114.543, q′ = 1/17.85584 mm·µm/N.
 //! let (beta, beta_b) = (15.8f64.to_radians(), (15.8f64.to_radians().sin() * 20f64.to_radians().cos()).asin());
 //! let zn = [virtual_teeth(17, beta, beta_b), virtual_teeth(103, beta, beta_b)];

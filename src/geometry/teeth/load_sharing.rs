@@ -127,7 +127,7 @@ impl Shared {
 }
 
 /// The most spur pairs in contact at once that [`LoadSharing::spur_loads`] takes (ε_α < 8).
-pub const MAX_PAIRS: usize = 8;
+pub(crate) const MAX_PAIRS: usize = 8;
 
 /// A pair's stiffness with its reliefs: the load sharing at any torque.
 #[derive(Debug, Clone)]
@@ -195,7 +195,7 @@ impl LoadSharing {
     }
 
     /// The loads F_j (N) of the spur pairs at `positions` (from A: every pair in contact at one
-    /// instant, at most [`MAX_PAIRS`]) under `force`, written into `loads`; returns δ. Σ F_j is
+    /// instant, at most `MAX_PAIRS`) under `force`, written into `loads`; returns δ. Σ F_j is
     /// piecewise linear in δ: the pairs taken in the order of their relief, δ = (F + Σ k e)/Σ k over
     /// the pairs loaded so far until it stays below the next pair's relief. Allocation-free: the
     /// efficiency's integrands call it at every quadrature node.

@@ -35,7 +35,7 @@ impl TransmissionError {
 }
 
 /// Evenly spaced positions over [a, b] with both sides of every break inside.
-pub fn series_positions(a: f64, b: f64, breaks: &[f64]) -> Vec<f64> {
+pub(crate) fn series_positions(a: f64, b: f64, breaks: &[f64]) -> Vec<f64> {
     let eps = 1e-9 * (b - a);
     let mut s: Vec<f64> = (0..SERIES_POINTS).map(|i| a + (b - a) * i as f64 / (SERIES_POINTS - 1) as f64).collect();
     for c in breaks.iter().filter(|c| **c > a && **c < b) {

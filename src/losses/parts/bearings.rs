@@ -1,6 +1,6 @@
 //! The rolling bearings' loss P_VL as a part of the budget, bearing place by bearing place with the
 //! loads each carries (the moments are `crate::losses::bearings` and
-//! [`crate::losses::skf_bearing`]).
+//! `crate::losses::skf_bearing`).
 //!
 //! Bearing loads come from the mesh force at the gear's mid-plane: the transverse force
 //! F_bt = T_1/r_b1 along the line of action (the same on both shafts; tangential part
