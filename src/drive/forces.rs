@@ -63,11 +63,10 @@ impl GearLoad {
 /// ```
 /// use gearloss::drive::{mesh_forces, MeshForceSizes, Member};
 /// # use gearloss::drive::{GearPlace, Hand, Stage};
-/// # use gearloss::drive::kinematics::StageKindId;
-/// let stage = Stage { name: "first".into(), kind: StageKindId::Parallel,
+/// # use gearloss::drive::kinematics::StageKind;
+/// let stage = Stage { name: "first".into(), kind: StageKind::Parallel,
 ///     places: [GearPlace { shaft: 0, at: 0.05 }, GearPlace { shaft: 1, at: 0.05 }],
-///     teeth: [23, 68], hand: Some(Hand::Right), direction: 0.0, lubrication: None,
-///     planetary: None };
+///     teeth: [23, 68], hand: Some(Hand::Right), direction: 0.0, lubrication: None };
 /// let sizes = MeshForceSizes { working_pitch_radius: [0.019, 0.056], pitch_radius: [0.019, 0.056],
 ///     working_pressure_angle: 0.37, helix_angle: 0.4, face_width: 0.035 };
 /// let [p, w] = mesh_forces((0, &stage), &sizes, Member::Pinion, 100.0, 300.0);

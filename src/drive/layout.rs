@@ -3,7 +3,7 @@
 //! through. Plain SI; the stages' gear pairs themselves stay with the scene
 //! ([`crate::model::SceneDrive`]), the drive keeps what its physics reads.
 
-use super::kinematics::StageKindId;
+use super::kinematics::StageKind;
 use crate::losses::{Bearing, Lubrication, Seal};
 
 /// A stage's member: the pinion (index 0) or the wheel (index 1).
@@ -76,15 +76,15 @@ pub struct Shaft {
     pub stiffness: Vec<Option<f64>>,
 }
 
-/// One stage: its kind (the kinematics catalogue), its two gears' places, the teeth and the
-/// pinion's hand, its direction φ (rad; the line from the pinion shaft's centre to the wheel
-/// shaft's, seen from +z; a planetary stage's first planet), its lubrication (the no-load parts:
-/// churning and jet impulse charged on the pinion's shaft, each gear's windage on its own; a
-/// planetary stage's on its carrier's, else its sun's).
+/// One stage: its kind with the kind's own data (the catalogue; what the walk reads of it is the
+/// kind's `StageModel`), its two gears' places, the teeth and the pinion's hand, its direction φ
+/// (rad; the line from the pinion shaft's centre to the wheel shaft's, seen from +z; for a kind of
+/// several meshes, its first), its lubrication (the no-load parts: churning and jet impulse charged
+/// on the pinion's shaft, each gear's windage on its own; a kind may charge another body).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Stage {
     pub name: String,
-    pub kind: StageKindId,
+    pub kind: StageKind,
     /// [pinion, wheel].
     pub places: [GearPlace; 2],
     pub teeth: [u32; 2],
@@ -92,21 +92,9 @@ pub struct Stage {
     pub hand: Option<Hand>,
     pub direction: f64,
     pub lubrication: Option<Lubrication>,
-    /// A planetary stage's layout (its places carry two of sun, ring and carrier); None for a
-    /// parallel stage.
-    pub planetary: Option<super::kinematics::planetary::PlanetaryLayout>,
 }
 
 impl Stage {
-    /// The name of the member on place `m`: pinion or wheel, or a planetary stage's sun, ring or
-    /// carrier.
-    pub fn member_name(&self, m: Member) -> &'static str {
-        match &self.planetary {
-            Some(p) => p.members[m.index()].name(),
-            None => m.name(),
-        }
-    }
-
     /// The member on `shaft`, if the stage has a gear there.
     pub fn member_on(&self, shaft: usize) -> Option<Member> {
         [Member::Pinion, Member::Wheel].into_iter().find(|m| self.places[m.index()].shaft == shaft)

@@ -2,14 +2,12 @@
 //! own pairs (a friction law on a checked mesh, never the scene).
 
 use super::layout::Member;
-use super::planetary::PlanetMesh;
 
-/// The mesh efficiency of a stage, from outside (a friction law on the stage's own pair).
+/// The mesh efficiency of a stage's meshes, from outside (a friction law on each mesh's own pair).
 pub trait MeshEfficiency {
-    /// η of stage `stage` when member `driving` puts `torque` (N·m, > 0) into the mesh at `speed`
-    /// (rad/s, > 0).
-    fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64;
-    /// η of one mesh of planetary stage `stage` when its pinion carries `torque` (N·m per planet,
-    /// > 0) at `speed` (rad/s in the carrier's frame, > 0).
-    fn planet_mesh(&self, stage: usize, mesh: PlanetMesh, torque: f64, speed: f64) -> f64;
+    /// η of mesh `mesh` of stage `stage` when the gear in place `driving` puts `torque` (N·m, > 0)
+    /// into it at `speed` (rad/s, > 0, in the frame the mesh turns in). Mesh 0 is the stage's own
+    /// pair (its pinion and wheel in the places [`Member`] names); a kind of several meshes numbers
+    /// its others on (a planetary stage's planet–ring mesh is 1, the planet in the pinion's place).
+    fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64;
 }

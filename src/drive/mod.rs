@@ -15,20 +15,25 @@
 //! the pinion's role.
 
 pub(crate) mod forces;
+pub(crate) mod kind_state;
 pub mod kinematics;
 pub(crate) mod layout;
 pub(crate) mod mesh_efficiency;
+pub(crate) mod parallel_stage;
 pub(crate) mod pass;
 pub(crate) mod planetary;
-pub(crate) mod planetary_charges;
+pub(crate) mod planetary_stage;
 pub(crate) mod point;
 pub mod shaft_beam;
 pub mod shaft_bending;
 pub(crate) mod speeds;
+pub(crate) mod stage_kinds;
+pub(crate) mod stage_model;
 pub mod statics;
 pub mod walk;
 
 pub use forces::{mesh_forces, GearLoad, MeshForceSizes};
+pub use kind_state::KindPoint;
 pub use layout::{Drive, DriveOperating, GearPlace, Hand, Member, Shaft, ShaftEnd, Stage};
 pub use mesh_efficiency::MeshEfficiency;
 pub use point::{BearingPoint, DrivePoint, PowerFlow, ShaftPoint, StagePoint};

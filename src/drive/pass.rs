@@ -1,5 +1,7 @@
 //! The powers of one pass of the drive's walk and how far a pass moved from the one before.
 
+use super::kind_state::KindState;
+
 /// The powers of one pass (W), indexed by shaft and by stage, with the driving torques (N·m).
 #[derive(Debug, Clone)]
 pub(crate) struct Pass {
@@ -9,8 +11,8 @@ pub(crate) struct Pass {
     pub(crate) driving_torque: Vec<f64>,
     pub(crate) efficiency: Vec<f64>,
     pub(crate) mesh_loss: Vec<f64>,
-    /// By stage: a planetary stage as the pass evaluated it (its efficiency is `efficiency`'s).
-    pub(crate) planetary: Vec<Option<super::planetary::PlanetaryState>>,
+    /// By stage: what its kind keeps of the pass for its point (its efficiency is `efficiency`'s).
+    pub(crate) kind_state: Vec<Option<KindState>>,
 }
 
 impl Pass {

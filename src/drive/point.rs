@@ -4,6 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::kind_state::KindPoint;
 use super::layout::Member;
 
 /// Which end delivers the power.
@@ -102,18 +103,17 @@ pub struct StagePoint {
     /// back into the mesh).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mesh_misalignment: Option<f64>,
-    /// A planetary stage's members, meshes and planets.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub planetary: Option<Box<super::planetary::PlanetaryPoint>>,
+    /// The stage kind's own part of the point (its members, meshes and what they carry), for a
+    /// kind that has one.
+    #[serde(flatten, default)]
+    pub kind: Option<Box<KindPoint>>,
 }
 
 impl StagePoint {
-    /// The name of the member on place `m`: pinion or wheel, or a planetary stage's sun, ring or
-    /// carrier.
+    /// The name of the member on place `m`: pinion or wheel, or the kind's own name of it.
     pub fn member_name(&self, m: Member) -> &'static str {
-        match &self.planetary {
-            Some(p) if m == self.driving => p.driving_member.name(),
-            Some(p) => p.driven_member.name(),
+        match &self.kind {
+            Some(k) => k.member_name(m, self.driving),
             None => m.name(),
         }
     }

@@ -233,7 +233,7 @@ pub(crate) fn stage_misalignment(
     (k, stage): (usize, &super::layout::Stage),
     face_width: f64,
 ) -> Option<f64> {
-    if stage.planetary.is_some() {
+    if !stage.model().one_pair_on_two_shafts() {
         return None;
     }
     let gear = |m: usize| {

@@ -24,7 +24,7 @@ pub fn shaft_speeds(drive: &Drive, speed: EndValue) -> Vec<f64> {
         omega[drive.input] = input;
         for &(k, m) in &drive.chain {
             let stage = &drive.stages[k];
-            let kinematics = (stage.kind.entry().kinematics)(stage.teeth, stage.planetary.as_ref());
+            let kinematics = stage.model().kinematics(stage);
             let s = kinematics.speeds(m.index(), omega[stage.places[m.index()].shaft]);
             omega[stage.places[m.other().index()].shaft] = s[m.other().index()];
         }

@@ -10,16 +10,13 @@
 //! the sink: a stage's driving gear must put in what its driven gear passes on over η_mesh, η read
 //! at the previous pass's driving torque.
 
-use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
-use super::kinematics::StageKindId;
+use super::forces::{GearLoad, MeshForceSizes};
 use super::layout::{Drive, Member, ShaftEnd};
 use super::mesh_efficiency::MeshEfficiency;
 use super::pass::Pass;
 use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
 use super::shaft_bending::{support_reactions, ShaftBending};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
-use super::{planetary, planetary_charges};
-use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
 /// The fixed point stops when no torque moves by more than this, relative to the largest.
@@ -136,19 +133,10 @@ impl<'a> Walk<'a> {
             .iter()
             .zip(model.sizes)
             .map(|(stage, sizes)| {
-                let (place, running) = match &stage.planetary {
-                    Some(layout) => layout.churning(layout.member_speeds(stage.places.map(|p| self.omega[p.shaft]))),
-                    None => (
-                        0,
-                        GearsRunning {
-                            omega: stage.places.map(|p| self.omega[p.shaft].abs()),
-                            pitch_radius: sizes.working_pitch_radius,
-                            face_width: sizes.face_width,
-                        },
-                    ),
-                };
+                let (place, running) =
+                    stage.model().gears_running(stage, sizes, stage.places.map(|p| self.omega[p.shaft]));
                 let by_gear = stage.lubrication.as_ref().and_then(|l| l.power_loss_by_gear(&running, model.oil));
-                // The mesh's parts (a planetary stage's one body) at `place`; a wheel's windage on its shaft.
+                // The mesh's parts at `place`; the other gear's windage on its shaft.
                 let [own, other] = by_gear.unwrap_or([0.0; 2]);
                 gear_no_load[stage.places[place].shaft] += own;
                 gear_no_load[stage.places[1 - place].shaft] += other;
@@ -177,21 +165,15 @@ impl<'a> Walk<'a> {
             driving_torque: vec![0.0; stages],
             efficiency: vec![1.0; stages],
             mesh_loss: vec![0.0; stages],
-            planetary: vec![None; stages],
+            kind_state: vec![None; stages],
         };
         let own = |j: usize| bearings[j] + fixed.seals[j] + fixed.gear_no_load[j];
-        // A planetary stage's state is kept for the report's point (at no torque or speed it
-        // evaluates no mesh and gives η = 1).
+        // What the stage's kind keeps of the pass is kept for the report's point.
         let mut eta = |k: usize, m: Member, torque: f64, speed: f64| {
-            if let Some(layout) = &self.drive.stages[k].planetary {
-                let state = planetary_charges::state(meshes, k, layout, m, torque.abs(), self.places(k));
-                p.planetary[k] = Some(state);
-                state.efficiency
-            } else if torque == 0.0 || speed == 0.0 {
-                1.0
-            } else {
-                meshes.efficiency(k, m, torque.abs(), speed)
-            }
+            let stage = &self.drive.stages[k];
+            let (efficiency, state) = stage.model().efficiency((k, stage), meshes, (m, torque, speed), self.places(k));
+            p.kind_state[k] = state;
+            efficiency
         };
         if from_source {
             let mut power = given;
@@ -235,11 +217,7 @@ impl<'a> Walk<'a> {
             .iter()
             .flat_map(|&(k, m)| {
                 let stage = &model.drive.stages[k];
-                if stage.kind == StageKindId::Planetary {
-                    return planetary::loads::member_loads(k, stage, m.index(), torques[k].abs(), self.places(k));
-                }
-                let omega = self.omega[stage.places[m.index()].shaft];
-                mesh_forces((k, stage), &model.sizes[k], m, torques[k], omega).to_vec()
+                stage.model().member_loads((k, stage), &model.sizes[k], (m, torques[k]), self.places(k))
             })
             .collect()
     }
@@ -286,9 +264,7 @@ impl<'a> Walk<'a> {
         }
         for &(k, m) in &self.steps {
             let stage = &model.drive.stages[k];
-            if let Some((j, b)) =
-                planetary_charges::planet_bearings(stage, m, torques[k].abs(), self.places(k), model.oil)
-            {
+            if let Some((j, b)) = stage.model().member_bearings(stage, (m, torques[k]), self.places(k), model.oil) {
                 powers[j] += b.no_load + b.load;
                 places[j].push(b);
             }
@@ -328,24 +304,19 @@ impl<'a> Walk<'a> {
             .map(|&(k, m)| {
                 let stage = &drive.stages[k];
                 let sizes = &model.sizes[k];
-                let kinematics = (stage.kind.entry().kinematics)(stage.teeth, stage.planetary.as_ref());
+                let kind = stage.model();
                 let t = p.driving_torque[k];
                 let d = m.index();
-                let planetary = p.planetary[k].map(|state| {
-                    let bearings = planetary_charges::planet_bearings(stage, m, t.abs(), self.places(k), model.oil)
-                        .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
-                    let parts = (bearings, fixed.stage_no_load[k]);
-                    Box::new(planetary_charges::point(&state, stage, m, t.abs(), parts))
-                });
-                let [f_t, f_r, f_a] = match &planetary {
-                    Some(pp) => [pp.forces.tangential[0], pp.forces.radial[0], pp.forces.axial],
-                    None => sizes.magnitudes(m, t),
-                };
+                let bearings = kind
+                    .member_bearings(stage, (m, t), self.places(k), model.oil)
+                    .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
+                let parts = (bearings, fixed.stage_no_load[k]);
+                let ([f_t, f_r, f_a], kind_point) = kind.point(stage, sizes, (m, t), p.kind_state[k].as_ref(), parts);
                 StagePoint {
                     name: stage.name.clone(),
                     driving: m,
                     driving_torque: t,
-                    driven_torque: t * kinematics.torque_ratio(d) * p.efficiency[k],
+                    driven_torque: t * kind.kinematics(stage).torque_ratio(d) * p.efficiency[k],
                     driving_speed: self.omega[stage.places[d].shaft].abs(),
                     mesh_efficiency: p.efficiency[k],
                     mesh_loss: p.mesh_loss[k],
@@ -359,7 +330,7 @@ impl<'a> Walk<'a> {
                         (k, stage),
                         sizes.face_width,
                     ),
-                    planetary,
+                    kind: kind_point,
                 }
             })
             .collect();

@@ -57,7 +57,7 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
         for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W", "validity_outside"] {
             cols.push(format!("stage_{}_{c}", s.name));
         }
-        if s.planetary.is_some() {
+        if s.planetary().is_some() {
             cols.extend(PLANETARY.iter().map(|c| format!("stage_{}_{c}", s.name)));
         }
     }
@@ -165,7 +165,7 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
         cells.push(Cell::Text(s.member_name(s.driving).to_string()));
         cells.extend(reals(&[s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load]));
         cells.push(int(outside.get(k).copied().unwrap_or(0)));
-        if let Some(p) = &s.planetary {
+        if let Some(p) = s.planetary() {
             let mut v = Vec::with_capacity(PLANETARY.len());
             for i in 0..3 {
                 v.extend([p.speeds[i] * RPM, p.torques[i]]);

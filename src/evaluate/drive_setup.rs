@@ -10,7 +10,6 @@
 use rayon::prelude::*;
 
 use super::setup::law_at;
-use crate::drive::planetary::PlanetMesh;
 use crate::drive::walk::DriveModel;
 use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes};
 use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
@@ -125,21 +124,16 @@ impl LawMeshes<'_> {
 }
 
 impl MeshEfficiency for LawMeshes<'_> {
-    fn efficiency(&self, stage: usize, driving: Member, torque: f64, speed: f64) -> f64 {
-        let s = &self.stages[stage];
-        let d = driving.index();
-        self.of(&s.context(d, torque, speed), s.h_v[d])
-    }
-
-    fn planet_mesh(&self, stage: usize, mesh: PlanetMesh, torque: f64, speed: f64) -> f64 {
+    fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64 {
         let s = &self.stages[stage];
         match mesh {
-            PlanetMesh::SunPlanet { sun_drives } => {
-                self.efficiency(stage, if sun_drives { Member::Pinion } else { Member::Wheel }, torque, speed)
+            0 => {
+                let d = driving.index();
+                self.of(&s.context(d, torque, speed), s.h_v[d])
             }
-            PlanetMesh::PlanetRing => {
-                let ring = s.ring.as_ref().expect("a planetary stage has its ring mesh");
-                self.of(&ring.context(torque, speed), ring.h_v)
+            _ => {
+                let second = s.ring.as_ref().expect("a stage of two meshes has its second");
+                self.of(&second.context(torque, speed), second.h_v)
             }
         }
     }
@@ -255,7 +249,7 @@ impl<'a> DriveSetup<'a> {
             .map(|(k, s)| {
                 let mesh = &self.stages[k];
                 let spec = &self.scene.friction[law];
-                let Some(pp) = &s.planetary else {
+                let Some(pp) = s.planetary() else {
                     let d = s.driving.index();
                     let ctx = mesh.context(d, s.driving_torque.abs().max(f64::MIN_POSITIVE), s.driving_speed);
                     return validity_along(spec, &ctx);

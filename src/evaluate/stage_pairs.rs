@@ -94,7 +94,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
                     scene: alone,
                 }
             };
-            let Some(pp) = &s.planetary else {
+            let Some(pp) = s.planetary() else {
                 let pair = if s.driving == Member::Pinion { drive.pairs[k].clone() } else { swapped(&drive.pairs[k]) };
                 let members = if s.driving == Member::Pinion { ["pinion", "wheel"] } else { ["wheel", "pinion"] };
                 let state = [s.driving_torque.abs(), s.driving_speed.abs(), s.mesh_efficiency];

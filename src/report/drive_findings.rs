@@ -34,7 +34,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<F
     out.extend(undercut_findings(drive));
     let carries_a_sun = |j: usize| {
         layout.stages.iter().any(|st| {
-            st.planetary.as_ref().is_some_and(|p| {
+            st.planetary().is_some_and(|p| {
                 p.place_of(crate::drive::kinematics::planetary::PlanetaryMember::Sun)
                     .is_some_and(|m| st.places[m].shaft == j)
             })
@@ -177,7 +177,7 @@ pub(super) fn unsettled_rows(
 fn undercut_findings(drive: &SceneDrive) -> Vec<Finding> {
     let mut out = Vec::new();
     for (k, stage) in drive.layout.stages.iter().enumerate() {
-        let planetary = stage.planetary.is_some();
+        let planetary = stage.planetary().is_some();
         let meshes = [
             (drive.pairs.get(k), if planetary { ["sun", "planet"] } else { ["pinion", "wheel"] }),
             (drive.ring_pairs.get(k).and_then(Option::as_ref), ["planet", "ring"]),

@@ -88,7 +88,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
                 at_mm: s.places.map(|p| p.at * 1e3),
                 teeth: s.teeth,
                 // A planetary stage's: ω of its first turning member over its second's.
-                ratio: s.planetary.as_ref().map_or(f64::from(s.teeth[1]) / f64::from(s.teeth[0]), |p| {
+                ratio: s.planetary().map_or(f64::from(s.teeth[1]) / f64::from(s.teeth[0]), |p| {
                     crate::drive::kinematics::StageKinematics::torque_ratio(&p.kinematics(), 0)
                 }),
                 normal_module_mm: g.module * 1e3,

@@ -36,7 +36,7 @@ pub struct PlanetaryInputs {
 }
 
 pub(super) fn planetary_inputs(layout: &Drive, stage: &Stage, ring_pair: Option<&GearPair>) -> Option<PlanetaryInputs> {
-    let p = stage.planetary.as_ref()?;
+    let p = stage.planetary()?;
     let ring = ring_pair?.geometry().ok()?;
     let shaft_of = |m: PlanetaryMember| {
         p.place_of(m).map_or_else(|| "housing".to_string(), |i| layout.shafts[stage.places[i].shaft].name.clone())

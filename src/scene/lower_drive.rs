@@ -11,7 +11,7 @@ use super::fields::nearest;
 use super::lower_shafts::ShaftDecl;
 use super::lower_stage::StageDecl;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
-use crate::drive::kinematics::StageKindId;
+use crate::drive::kinematics::StageKind;
 use crate::drive::{Drive, DriveOperating, GearPlace, Stage};
 
 /// How far a stage's centre distance may differ from the distance of its shafts' positions (m).
@@ -74,7 +74,6 @@ pub(super) fn build_drive(
         let planetary = s.planetary.as_ref().and_then(|d| planetary_layout(&s.pair, d));
         built.push(Stage {
             name: s.name.text.clone(),
-            kind: if planetary.is_some() { StageKindId::Planetary } else { StageKindId::Parallel },
             places: [GearPlace { shaft: p, at: s.places[0].1 }, GearPlace { shaft: w, at: s.places[1].1 }],
             teeth: match &planetary {
                 Some(l) => [l.teeth[0], l.teeth[2]],
@@ -83,7 +82,7 @@ pub(super) fn build_drive(
             hand: s.hand,
             direction: s.direction.as_ref().map_or(0.0, |d| d.value.value),
             lubrication: s.lubrication,
-            planetary,
+            kind: planetary.map_or(StageKind::Parallel, |l| StageKind::Planetary(Box::new(l))),
         });
     }
     if errors.len() > before {
@@ -311,7 +310,7 @@ fn floating_suns(stages: &[crate::drive::Stage], shafts: usize) -> Vec<bool> {
                 .iter()
                 .flat_map(|st| (0..2).filter(move |m| st.places[*m].shaft == j).map(move |m| (st, m)))
                 .collect();
-            matches!(on.as_slice(), [(st, m)] if st.planetary.as_ref().is_some_and(|p| p.planets >= 2 && p.members[*m] == PlanetaryMember::Sun))
+            matches!(on.as_slice(), [(st, m)] if st.planetary().is_some_and(|p| p.planets >= 2 && p.members[*m] == PlanetaryMember::Sun))
         })
         .collect()
 }

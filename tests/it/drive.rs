@@ -228,7 +228,7 @@ fn input_or_output_given_is_the_same_point() {
 /// +z; the sign flips with the hand, with the sense of rotation and on the driven gear.
 #[test]
 fn axial_force_follows_hand_and_rotation() {
-    use gearloss::drive::kinematics::StageKindId;
+    use gearloss::drive::kinematics::StageKind;
     use gearloss::drive::{mesh_forces, GearPlace, Hand, Member, MeshForceSizes, Stage};
     let sizes = MeshForceSizes {
         working_pitch_radius: [0.02, 0.05],
@@ -239,13 +239,12 @@ fn axial_force_follows_hand_and_rotation() {
     };
     let stage = |hand| Stage {
         name: "s".into(),
-        kind: StageKindId::Parallel,
+        kind: StageKind::Parallel,
         places: [GearPlace { shaft: 0, at: 0.0 }, GearPlace { shaft: 1, at: 0.0 }],
         teeth: [20, 50],
         hand: Some(hand),
         direction: 0.7,
         lubrication: None,
-        planetary: None,
     };
     let f_a = 100.0 * 0.3f64.tan() / 0.02;
     for (hand, omega, driving, on_driving) in [

@@ -119,7 +119,7 @@ fn kruger_from_the_tools_own_eta0() {
     assert!(all.iter().any(|p| p.flow == gearloss::drive::PowerFlow::Coast));
     for p in all {
         let s = &p.stages[0];
-        let pp = s.planetary.as_ref().expect("a planetary stage");
+        let pp = s.planetary().expect("a planetary stage");
         let eta0 = pp.basic_efficiency;
         assert!((eta0 - pp.mesh_efficiency[0] * pp.mesh_efficiency[1]).abs() < 1e-15);
         assert!(eta0 < 1.0 && eta0 > 0.95);
@@ -189,7 +189,7 @@ fn the_planetary_stage_keeps_every_shaft_in_balance() {
 #[test]
 fn planet_bearing_load_by_hand() {
     for p in points(&reducer()) {
-        let pp = p.stages[0].planetary.as_ref().unwrap();
+        let pp = p.stages[0].planetary().unwrap();
         let f = &pp.forces;
         // The lossless sun torque: the driving torque, or the carrier's over 1 − i₀ = 4.
         let t = p.stages[0].driving_torque;
@@ -255,7 +255,7 @@ fn load_sharing_factor_loads_one_planet_more() {
         let (equal, unequal) = (points(&with("1", friction)), points(&with("1.25", friction)));
         assert_eq!(equal.len(), unequal.len());
         for (e, u) in equal.iter().zip(&unequal) {
-            let (pe, pu) = (e.stages[0].planetary.as_ref().unwrap(), u.stages[0].planetary.as_ref().unwrap());
+            let (pe, pu) = (e.stages[0].planetary().unwrap(), u.stages[0].planetary().unwrap());
             // The lossless sun torque over n r_w,sun, times K_γ.
             let t = u.stages[0].driving_torque;
             let sun = if pu.driving_member == Sun { t } else { t / 4.0 };
@@ -304,7 +304,7 @@ fn load_sharing_factor_at_the_planets_count_is_one_planet_carrying_all() {
     let (equal, all) = (points(&with("1")), points(&with("3")));
     for (e, a) in equal.iter().zip(&all) {
         assert!(a.efficiency.is_finite() && a.power_lost().is_finite(), "η {} loss {}", a.efficiency, a.power_lost());
-        let (pe, pa) = (e.stages[0].planetary.as_ref().unwrap(), a.stages[0].planetary.as_ref().unwrap());
+        let (pe, pa) = (e.stages[0].planetary().unwrap(), a.stages[0].planetary().unwrap());
         assert!(pa.basic_efficiency.is_finite() && pa.efficiency.is_finite());
         let t = a.stages[0].driving_torque;
         let sun = if pa.driving_member == Sun { t } else { t / 4.0 };
@@ -350,7 +350,7 @@ fn with_every_loss_zero_the_stage_passes_all_its_power() {
         for p in all {
             assert!((p.efficiency - 1.0).abs() < 1e-12, "{operating}: η = {}", p.efficiency);
             assert!((p.output_torque - 4.0 * p.input_torque).abs() < 1e-12 * p.output_torque.abs());
-            assert_eq!(p.stages[0].planetary.as_ref().unwrap().basic_efficiency, 1.0);
+            assert_eq!(p.stages[0].planetary().unwrap().basic_efficiency, 1.0);
         }
     }
 }

@@ -31,7 +31,7 @@ fn the_axial_forces_and_the_tilting_moment_follow_their_closed_forms() {
         if p.input_torque <= 0.0 {
             continue;
         }
-        let pp = p.stages[0].planetary.as_ref().unwrap();
+        let pp = p.stages[0].planetary().unwrap();
         let f = &pp.forces;
         let t_sun = p.stages[0].driving_torque;
         let f_a = t_sun * beta.tan() / (n * r);

@@ -36,7 +36,7 @@ fn the_fva_planetary_stage_imports_checks_and_runs() {
         let scene = gearloss::check(&name, &imported.scene).unwrap_or_else(|e| panic!("{name}: {e}"));
         let drive = scene.drive.as_ref().unwrap();
         let stage = &drive.layout.stages[0];
-        let p = stage.planetary.as_ref().expect("a planetary stage");
+        let p = stage.planetary().expect("a planetary stage");
         let teeth = [&sun, &planet, &ring].map(|g| g["number_of_teeth"] as u32);
         assert_eq!(p.teeth, teeth, "{name}");
         assert_eq!((p.planets, teeth), (3, [17, 22, 61]), "{name}");
@@ -114,7 +114,7 @@ fn the_planetary_constructs_import_and_run() {
         let imported = import(&xml);
         let scene = gearloss::check(&xml, &imported.scene).unwrap_or_else(|e| panic!("{stem}: {e}"));
         let drive = scene.drive.as_ref().unwrap();
-        let p = drive.layout.stages[0].planetary.as_ref().unwrap();
+        let p = drive.layout.stages[0].planetary().unwrap();
         assert_eq!((p.teeth, p.planets), ([24, 24, 72], 3), "{stem}");
         let turning: Vec<&str> = p.members.iter().map(|m| m.name()).collect();
         assert!(!turning.contains(&held) && turning.len() == 2, "{stem}: {turning:?}");

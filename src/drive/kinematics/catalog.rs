@@ -1,10 +1,7 @@
-//! The catalogue of stage kinds: each kind's typed identity, name, file and how its kinematics is
-//! built from a stage of the drive.
+//! The catalogue of stage kinds: each kind's typed identity, name and file; what the drive's walk
+//! reads of a kind is its `StageModel` (`crate::drive::stage_model`).
 
 use super::kind_id::StageKindId;
-use super::parallel::Parallel;
-use super::planetary::PlanetaryLayout;
-use super::stage_kinematics::StageKinematics;
 
 impl StageKindId {
     pub fn entry(self) -> &'static StageKindEntry {
@@ -20,9 +17,6 @@ pub struct StageKindEntry {
     /// Its file in `src/drive/kinematics/`.
     pub file: &'static str,
     pub title: &'static str,
-    /// The kinematics of a stage of this kind from its [pinion, wheel] teeth and, for a planetary
-    /// stage, its layout.
-    pub kinematics: fn([u32; 2], Option<&PlanetaryLayout>) -> Box<dyn StageKinematics>,
 }
 
 /// Every stage kind.
@@ -32,13 +26,11 @@ pub const STAGE_KINDS: &[StageKindEntry] = &[
         name: "parallel",
         file: "parallel.rs",
         title: "an external pair on parallel shafts: ω_wheel = −ω_pinion z_pinion/z_wheel",
-        kinematics: |teeth, _| Box::new(Parallel { teeth }),
     },
     StageKindEntry {
         id: StageKindId::Planetary,
         name: "planetary",
         file: "planetary.rs",
         title: "sun, planets on a carrier, ring; one member held: Willis, n_s − i₀ n_r − (1 − i₀) n_c = 0",
-        kinematics: |_, p| Box::new(p.expect("a planetary stage has its layout").kinematics()),
     },
 ];

@@ -9,5 +9,5 @@ pub mod planetary;
 pub(crate) mod stage_kinematics;
 
 pub use catalog::{StageKindEntry, STAGE_KINDS};
-pub use kind_id::StageKindId;
+pub use kind_id::{StageKind, StageKindId};
 pub use stage_kinematics::StageKinematics;

@@ -20,7 +20,7 @@ use crate::drive::kinematics::planetary::{member_torques, stationary_ratio, Memb
 
 /// A planetary stage's two meshes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PlanetMesh {
+pub(crate) enum PlanetMesh {
     /// The sun and a planet (external); `sun_drives` says which is in the pinion's place.
     SunPlanet { sun_drives: bool },
     /// A planet and the ring (internal), the planet in the pinion's place.

@@ -114,8 +114,13 @@ pub(crate) fn planet_forces(
 
 /// The forces on the stage's members that sit on shafts, one per planet and member, when place
 /// `driving` puts `torque` in at the places' speeds `places`.
-pub(crate) fn member_loads(k: usize, stage: &Stage, driving: usize, torque: f64, places: [f64; 2]) -> Vec<GearLoad> {
-    let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
+pub(crate) fn member_loads(
+    (k, stage): (usize, &Stage),
+    layout: &PlanetaryLayout,
+    driving: usize,
+    torque: f64,
+    places: [f64; 2],
+) -> Vec<GearLoad> {
     let speeds = layout.member_speeds(places);
     let t = lossless_torques(layout, driving, torque, speeds);
     let n = layout.planets;

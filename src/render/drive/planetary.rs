@@ -64,7 +64,7 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
 pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
     let (n, t) = (u.speed, u.torque);
     for s in &d.stages {
-        let Some(p) = &s.planetary else { continue };
+        let Some(p) = s.planetary() else { continue };
         md!(
             out,
             "Planetary stage {}: the {} drives, the {} is driven, the {} is held; P_w = T_sun (ω_sun − ω_carrier) = {} W, the {} drives the meshes; η₀ = η_sp η_pr = {} %, η = {} %.\n",

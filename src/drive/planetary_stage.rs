@@ -1,43 +1,124 @@
-//! What the drive's walk charges for a planetary stage: its efficiency between its two places, its
-//! planets' bearings (on the carrier's shaft, or the driving member's where the carrier is held)
-//! and the point the report reads.
+//! A planetary stage as the drive's walk reads it (its `StageModel`): Willis's kinematics, the
+//! churning body, η from its two meshes' efficiencies ([`super::planetary::flow`]), the forces on
+//! its members that sit on shafts and on its planets' bearings ([`super::planetary::loads`]), and
+//! its part of the report's point ([`super::planetary::point`]).
 //!
 //! The planet bearings' losses are Palmgren's (or SKF's) moments at the planet's speed relative to
 //! the carrier under each bearing's load of [`super::planetary::loads`] (|B|/count, or with a helical
 //! stage's tilting moment |(B_t/2, B_r/2 ± M/L)|), times that speed, summed over the bearings and
 //! the planets; they join the fixed point of the walk with the shafts' bearings.
 
+use super::forces::{GearLoad, MeshForceSizes};
+use super::kind_state::{KindPoint, KindState};
 use super::kinematics::planetary::PlanetaryLayout;
+use super::kinematics::StageKinematics;
 use super::layout::{Member, Stage};
 use super::mesh_efficiency::MeshEfficiency;
-use super::planetary::flow::{planetary_state, PlanetaryState};
+use super::planetary::flow::PlanetMesh;
+use super::planetary::flow::PlanetaryState;
 use super::planetary::loads::{lossless_torques, planet_forces};
 use super::planetary::point::PlanetaryPoint;
-use super::point::BearingPoint;
+use super::point::{BearingPoint, StagePoint};
+use super::stage_model::StageModel;
+use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
-/// The stage at place `driving` putting `torque` (N·m, > 0) in, the places at `places` (rad/s).
-pub(crate) fn state(
-    meshes: &dyn MeshEfficiency,
-    k: usize,
-    layout: &PlanetaryLayout,
-    driving: Member,
-    torque: f64,
-    places: [f64; 2],
-) -> PlanetaryState {
-    planetary_state(layout, driving.index(), torque, places, &|mesh, t, w| meshes.planet_mesh(k, mesh, t, w))
+impl StagePoint {
+    /// A planetary stage's part of the point; None for a stage of another kind.
+    pub fn planetary(&self) -> Option<&PlanetaryPoint> {
+        match self.kind.as_deref() {
+            Some(KindPoint::Planetary(p)) => Some(p),
+            _ => None,
+        }
+    }
+}
+
+impl StageModel for PlanetaryLayout {
+    fn kinematics(&self, _: &Stage) -> Box<dyn StageKinematics> {
+        Box::new(PlanetaryLayout::kinematics(self))
+    }
+
+    /// Sun, ring or carrier.
+    fn member_name(&self, m: Member) -> &'static str {
+        self.members[m.index()].name()
+    }
+
+    /// The carrier with its planets where it turns, else the sun ([`PlanetaryLayout::churning`]).
+    fn gears_running(&self, _: &Stage, _: &MeshForceSizes, places: [f64; 2]) -> (usize, GearsRunning) {
+        self.churning(self.member_speeds(places))
+    }
+
+    /// The stage's η from its meshes' (the sun–planet mesh is the stage's own pair, mesh 0, the sun
+    /// its pinion; the planet–ring mesh is mesh 1, the planet its pinion), kept for the point (at
+    /// no torque or speed no mesh is evaluated and η = 1).
+    fn efficiency(
+        &self,
+        (k, _): (usize, &Stage),
+        meshes: &dyn MeshEfficiency,
+        (driving, torque, _): (Member, f64, f64),
+        places: [f64; 2],
+    ) -> (f64, Option<KindState>) {
+        let mesh = |mesh: PlanetMesh, t: f64, w: f64| match mesh {
+            PlanetMesh::SunPlanet { sun_drives } => {
+                meshes.efficiency(k, 0, if sun_drives { Member::Pinion } else { Member::Wheel }, t, w)
+            }
+            PlanetMesh::PlanetRing => meshes.efficiency(k, 1, Member::Pinion, t, w),
+        };
+        let state = super::planetary::flow::planetary_state(self, driving.index(), torque.abs(), places, &mesh);
+        (state.efficiency, Some(KindState::Planetary(state)))
+    }
+
+    fn member_loads(
+        &self,
+        (k, stage): (usize, &Stage),
+        _: &MeshForceSizes,
+        (driving, torque): (Member, f64),
+        places: [f64; 2],
+    ) -> Vec<GearLoad> {
+        super::planetary::loads::member_loads((k, stage), self, driving.index(), torque.abs(), places)
+    }
+
+    fn member_bearings(
+        &self,
+        stage: &Stage,
+        (driving, torque): (Member, f64),
+        places: [f64; 2],
+        oil: &Oil,
+    ) -> Option<(usize, BearingPoint)> {
+        planet_bearings((stage, self), driving, torque.abs(), places, oil)
+    }
+
+    /// The sun–planet mesh's forces and the stage's [`PlanetaryPoint`].
+    fn point(
+        &self,
+        _: &Stage,
+        _: &MeshForceSizes,
+        (driving, torque): (Member, f64),
+        state: Option<&KindState>,
+        parts: ([f64; 2], f64),
+    ) -> ([f64; 3], Option<Box<KindPoint>>) {
+        let Some(KindState::Planetary(state)) = state else {
+            unreachable!("the walk keeps a planetary stage's state at every pass")
+        };
+        let point = point(state, self, driving, torque.abs(), parts);
+        let forces = [point.forces.tangential[0], point.forces.radial[0], point.forces.axial];
+        (forces, Some(Box::new(KindPoint::Planetary(point))))
+    }
+
+    fn one_pair_on_two_shafts(&self) -> bool {
+        false
+    }
 }
 
 /// The planets' bearings at the driving torque: the shaft they are charged on, the place as the
 /// report lists it, and their power (W); None without planet bearings or without an oil viscosity.
 pub(crate) fn planet_bearings(
-    stage: &Stage,
+    (stage, layout): (&Stage, &PlanetaryLayout),
     driving: Member,
     torque: f64,
     places: [f64; 2],
     oil: &Oil,
 ) -> Option<(usize, BearingPoint)> {
-    let layout = stage.planetary.as_ref()?;
     let bearing = layout.planet_bearing?;
     let speeds = layout.member_speeds(places);
     let torques = lossless_torques(layout, driving.index(), torque, speeds);
@@ -79,12 +160,11 @@ pub(crate) fn planet_bearings(
 /// The report's point of the stage from its state `s` in the settled pass (driving torque `torque`).
 pub(crate) fn point(
     s: &PlanetaryState,
-    stage: &Stage,
+    layout: &PlanetaryLayout,
     driving: Member,
     torque: f64,
     (planet_bearings, churning): ([f64; 2], f64),
 ) -> PlanetaryPoint {
-    let layout = stage.planetary.as_ref().expect("a planetary stage has its layout");
     let torques = lossless_torques(layout, driving.index(), torque, s.speeds);
     let forces = planet_forces(layout, torques, s.speeds, most_loaded(layout));
     PlanetaryPoint {

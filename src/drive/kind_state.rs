@@ -1,0 +1,32 @@
+//! What a stage kind keeps of one pass of the drive's walk ([`KindState`]) and puts into the
+//! report's point of the stage ([`KindPoint`]), one variant a kind that keeps anything: a parallel
+//! stage keeps nothing beyond its η and its mesh forces, which every stage's point carries.
+
+use serde::{Deserialize, Serialize};
+
+use super::layout::Member;
+use super::planetary::flow::PlanetaryState;
+use super::planetary::point::PlanetaryPoint;
+
+/// A stage as one pass of the walk evaluated it, for its point in the report.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum KindState {
+    Planetary(PlanetaryState),
+}
+
+/// A stage kind's part of the stage's point (in report.json under the kind's name).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum KindPoint {
+    #[serde(rename = "planetary")]
+    Planetary(PlanetaryPoint),
+}
+
+impl KindPoint {
+    /// The name of the member on place `m` when the member on `driving` drives.
+    pub fn member_name(&self, m: Member, driving: Member) -> &'static str {
+        match self {
+            KindPoint::Planetary(p) if m == driving => p.driving_member.name(),
+            KindPoint::Planetary(p) => p.driven_member.name(),
+        }
+    }
+}

@@ -1,0 +1,80 @@
+//! A parallel stage as the drive's walk reads it: one external pair on two shafts (spur or
+//! helical), its pinion and wheel on the stage's two places.
+
+use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
+use super::kind_state::{KindPoint, KindState};
+use super::kinematics::{parallel::Parallel, StageKinematics};
+use super::layout::{Member, Stage};
+use super::mesh_efficiency::MeshEfficiency;
+use super::point::BearingPoint;
+use super::stage_model::StageModel;
+use crate::losses::gear_no_load::GearsRunning;
+use crate::losses::Oil;
+
+/// The parallel stage kind.
+pub(crate) struct ParallelStage;
+
+impl StageModel for ParallelStage {
+    fn kinematics(&self, stage: &Stage) -> Box<dyn StageKinematics> {
+        Box::new(Parallel { teeth: stage.teeth })
+    }
+
+    fn member_name(&self, m: Member) -> &'static str {
+        m.name()
+    }
+
+    /// Both gears at their places' speeds: the mesh's parts on the pinion's shaft.
+    fn gears_running(&self, _: &Stage, sizes: &MeshForceSizes, places: [f64; 2]) -> (usize, GearsRunning) {
+        let running = GearsRunning {
+            omega: places.map(f64::abs),
+            pitch_radius: sizes.working_pitch_radius,
+            face_width: sizes.face_width,
+        };
+        (0, running)
+    }
+
+    /// The one mesh's η at the driving gear's torque and speed (1 at no torque or no speed, where
+    /// no mesh is evaluated).
+    fn efficiency(
+        &self,
+        (k, _): (usize, &Stage),
+        meshes: &dyn MeshEfficiency,
+        (driving, torque, speed): (Member, f64, f64),
+        _: [f64; 2],
+    ) -> (f64, Option<KindState>) {
+        if torque == 0.0 || speed == 0.0 {
+            (1.0, None)
+        } else {
+            (meshes.efficiency(k, 0, driving, torque.abs(), speed), None)
+        }
+    }
+
+    fn member_loads(
+        &self,
+        (k, stage): (usize, &Stage),
+        sizes: &MeshForceSizes,
+        (driving, torque): (Member, f64),
+        places: [f64; 2],
+    ) -> Vec<GearLoad> {
+        mesh_forces((k, stage), sizes, driving, torque, places[driving.index()]).to_vec()
+    }
+
+    fn member_bearings(&self, _: &Stage, _: (Member, f64), _: [f64; 2], _: &Oil) -> Option<(usize, BearingPoint)> {
+        None
+    }
+
+    fn point(
+        &self,
+        _: &Stage,
+        sizes: &MeshForceSizes,
+        (driving, torque): (Member, f64),
+        _: Option<&KindState>,
+        _: ([f64; 2], f64),
+    ) -> ([f64; 3], Option<Box<KindPoint>>) {
+        (sizes.magnitudes(driving, torque), None)
+    }
+
+    fn one_pair_on_two_shafts(&self) -> bool {
+        true
+    }
+}

@@ -1,0 +1,75 @@
+//! What the drive's walk reads of a stage kind: one [`StageModel`] a kind (`parallel_stage.rs`,
+//! `planetary/model.rs`), one row of `Stage::model` (`stage_kinds.rs`) each. The walk never asks which kind a
+//! stage is: the kind gives its kinematics, the gears its no-load parts charge, its efficiency
+//! from its meshes', the forces on its members, the bearings its own members carry and its part
+//! of the report's point.
+
+use super::forces::{GearLoad, MeshForceSizes};
+use super::kind_state::{KindPoint, KindState};
+use super::kinematics::StageKinematics;
+use super::layout::{Member, Stage};
+use super::mesh_efficiency::MeshEfficiency;
+use super::point::BearingPoint;
+use crate::losses::gear_no_load::GearsRunning;
+use crate::losses::Oil;
+
+/// A stage kind as the drive's walk reads it. `places` are the speeds of the stage's two places
+/// (rad/s, signed about +z), `driving` the place whose member puts the power in, `torque` its
+/// torque into the stage (N·m; > 0 unless said).
+pub(crate) trait StageModel {
+    /// The speeds of the stage's members and its ideal torque ratio.
+    fn kinematics(&self, stage: &Stage) -> Box<dyn StageKinematics>;
+
+    /// The name of the member on place `m`.
+    fn member_name(&self, m: Member) -> &'static str;
+
+    /// The gears the stage's lubrication sets running (churning, jet impulse and windage at their
+    /// speeds), and the place the mesh's parts are charged on (the other place takes the second
+    /// gear's windage).
+    fn gears_running(&self, stage: &Stage, sizes: &MeshForceSizes, places: [f64; 2]) -> (usize, GearsRunning);
+
+    /// η of stage `k` (P_out/P_in of its meshes) at `speed` (|ω| of the driving place, rad/s,
+    /// > 0) from its meshes' efficiencies `meshes`, and what the kind keeps of it for its point.
+    fn efficiency(
+        &self,
+        stage: (usize, &Stage),
+        meshes: &dyn MeshEfficiency,
+        driving_torque_speed: (Member, f64, f64),
+        places: [f64; 2],
+    ) -> (f64, Option<KindState>);
+
+    /// The forces of stage `k` on its members that sit on shafts, `torque` signed as the walk
+    /// carries it.
+    fn member_loads(
+        &self,
+        stage: (usize, &Stage),
+        sizes: &MeshForceSizes,
+        driving_torque: (Member, f64),
+        places: [f64; 2],
+    ) -> Vec<GearLoad>;
+
+    /// The bearings the stage's own members carry (none on a shaft's places), charged to a shaft:
+    /// its index and the place as the report lists it; None when the kind has none.
+    fn member_bearings(
+        &self,
+        stage: &Stage,
+        driving_torque: (Member, f64),
+        places: [f64; 2],
+        oil: &Oil,
+    ) -> Option<(usize, BearingPoint)>;
+
+    /// The stage's mesh forces [F_t, F_r, F_a] (N) for its point, and the kind's part of the point
+    /// from the settled pass's `state`; `parts` are the [no-load, load] losses of the bearings its
+    /// members carry and its no-load parts (W).
+    fn point(
+        &self,
+        stage: &Stage,
+        sizes: &MeshForceSizes,
+        driving_torque: (Member, f64),
+        state: Option<&KindState>,
+        parts: ([f64; 2], f64),
+    ) -> ([f64; 3], Option<Box<KindPoint>>);
+
+    /// Whether the stage is one pair on two shafts, whose mesh misalignment their bending gives.
+    fn one_pair_on_two_shafts(&self) -> bool;
+}
