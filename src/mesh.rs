@@ -27,6 +27,15 @@ impl SceneDrive {
         Mesh { gears: &self.pairs[k], lubricant }
     }
 
+    /// Mesh `mesh` of stage `k` as a pair: 0 the stage's own pair, 1 the second mesh of a stage of
+    /// two (a planetary stage's planet–ring pair).
+    pub fn mesh_pair(&self, k: usize, mesh: usize) -> &GearPair {
+        match mesh {
+            0 => &self.pairs[k],
+            _ => self.ring_pairs[k].as_ref().expect("a stage of two meshes has its second pair"),
+        }
+    }
+
     /// Planetary stage `k`'s planet–ring mesh in `lubricant`, if stage `k` is planetary.
     pub fn ring_mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> Option<Mesh<'a>> {
         self.ring_pairs[k].as_ref().map(|gears| Mesh { gears, lubricant })

@@ -5,6 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::layout::Member;
+use super::mesh_state::MeshState;
 use super::planetary::flow::PlanetaryState;
 use super::planetary::point::PlanetaryPoint;
 
@@ -27,6 +28,13 @@ impl KindPoint {
         match self {
             KindPoint::Planetary(p) if m == driving => p.driving_member.name(),
             KindPoint::Planetary(p) => p.driven_member.name(),
+        }
+    }
+
+    /// The kind's meshes at the point, as the walk evaluated them.
+    pub fn mesh_states(&self) -> Vec<MeshState> {
+        match self {
+            KindPoint::Planetary(p) => p.mesh_states().to_vec(),
         }
     }
 }

@@ -90,6 +90,21 @@ impl StageMesh {
         }
     }
 
+    /// Mesh `mesh` (0 the stage's own pair, 1 its second) with the gear on place `driving` in the
+    /// pinion's place at its torque and speed, and that pair's loss factor H_V.
+    fn law_context(&self, mesh: usize, driving: Member, torque: f64, speed: f64) -> (LawContext<'_>, f64) {
+        match mesh {
+            0 => {
+                let d = driving.index();
+                (self.context(d, torque, speed), self.h_v[d])
+            }
+            _ => {
+                let second = self.ring.as_ref().expect("a stage of two meshes has its second");
+                (second.context(torque, speed), second.h_v)
+            }
+        }
+    }
+
     /// The sizes the mesh forces read (pinion and wheel as the stage names them).
     fn sizes(&self) -> MeshForceSizes {
         let g = &self.geometry[0];
@@ -125,17 +140,8 @@ impl LawMeshes<'_> {
 
 impl MeshEfficiency for LawMeshes<'_> {
     fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64 {
-        let s = &self.stages[stage];
-        match mesh {
-            0 => {
-                let d = driving.index();
-                self.of(&s.context(d, torque, speed), s.h_v[d])
-            }
-            _ => {
-                let second = s.ring.as_ref().expect("a stage of two meshes has its second");
-                self.of(&second.context(torque, speed), second.h_v)
-            }
-        }
+        let (ctx, h_v) = self.stages[stage].law_context(mesh, driving, torque, speed);
+        self.of(&ctx, h_v)
     }
 }
 
@@ -249,25 +255,28 @@ impl<'a> DriveSetup<'a> {
             .map(|(k, s)| {
                 let mesh = &self.stages[k];
                 let spec = &self.scene.friction[law];
-                let Some(pp) = s.planetary() else {
-                    let d = s.driving.index();
-                    let ctx = mesh.context(d, s.driving_torque.abs().max(f64::MIN_POSITIVE), s.driving_speed);
-                    return validity_along(spec, &ctx);
+                let at = |m: &crate::drive::MeshState| {
+                    validity_along(
+                        spec,
+                        &mesh.law_context(m.mesh, m.driving, m.torque.max(f64::MIN_POSITIVE), m.speed).0,
+                    )
                 };
-                // A planetary stage: both meshes at their pinions' loads and rolling speeds.
-                let torque = |t: f64| t.max(f64::MIN_POSITIVE);
-                let d = if pp.sun_drives_meshes { 0 } else { 1 };
-                let sun = validity_along(spec, &mesh.context(d, torque(pp.mesh_torque[0]), pp.mesh_speed[0]));
-                let ring = mesh.ring.as_ref().expect("a planetary stage has its ring mesh");
-                let at_ring = validity_along(spec, &ring.context(torque(pp.mesh_torque[1]), pp.mesh_speed[1]));
-                let named = |mesh: &'static str, notes: Vec<String>| {
-                    notes.into_iter().map(move |n| format!("{mesh} mesh: {n}"))
-                };
-                super::laws::ValiditySummary {
-                    samples: sun.samples + at_ring.samples,
-                    outside: sun.outside + at_ring.outside,
-                    intervals: sun.intervals.into_iter().chain(at_ring.intervals).collect(),
-                    notes: named("sun–planet", sun.notes).chain(named("planet–ring", at_ring.notes)).collect(),
+                match s.mesh_states().as_slice() {
+                    [one] => at(one),
+                    meshes => {
+                        // A stage of several meshes: each at its pinion's load and rolling speed,
+                        // its notes named by the mesh.
+                        let mut all = super::laws::ValiditySummary::default();
+                        for m in meshes {
+                            let v = at(m);
+                            all.samples += v.samples;
+                            all.outside += v.outside;
+                            all.intervals.extend(v.intervals);
+                            let name = m.name.unwrap_or_default();
+                            all.notes.extend(v.notes.into_iter().map(|n| format!("{name} mesh: {n}")));
+                        }
+                        all
+                    }
                 }
             })
             .collect()

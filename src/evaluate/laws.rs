@@ -14,7 +14,7 @@ use crate::model::Formulation;
 use crate::numerics::quadrature::Integral;
 
 /// Where a law left its validity range along the line of action.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Default, Serialize)]
 pub struct ValiditySummary {
     pub samples: usize,
     pub outside: usize,

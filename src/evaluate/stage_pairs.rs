@@ -70,44 +70,32 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
             if !a.analyses_stage(&s.name) {
                 continue;
             }
-            let at = |mesh: Option<&'static str>, members, pair: GearPair, state: [f64; 3]| {
-                let [t, w, eta] = state;
+            for m in s.mesh_states() {
                 let title = format!(
                     "{}: {}{}, point {}",
                     scene.title,
                     s.name,
-                    mesh.map_or_else(String::new, |m| format!(" {m}")),
+                    m.name.map_or_else(String::new, |name| format!(" {name}")),
                     point + 1
                 );
-                let alone = (t > 0.0 && w > 0.0).then(|| pair_scene(scene, title, pair, (t, w)));
-                StagePair {
+                let pair = drive.mesh_pair(k, m.mesh);
+                let pair = if m.driving == Member::Pinion { pair.clone() } else { swapped(pair) };
+                let alone =
+                    (m.torque > 0.0 && m.speed > 0.0).then(|| pair_scene(scene, title, pair, (m.torque, m.speed)));
+                out.push(StagePair {
                     stage: k,
                     stage_name: s.name.clone(),
-                    mesh,
+                    mesh: m.name,
                     point,
                     torque_index,
                     speed_index,
-                    members,
-                    pinion_torque: t,
-                    pinion_speed: w,
-                    mesh_efficiency: eta,
+                    members: m.members,
+                    pinion_torque: m.torque,
+                    pinion_speed: m.speed,
+                    mesh_efficiency: m.efficiency,
                     scene: alone,
-                }
-            };
-            let Some(pp) = s.planetary() else {
-                let pair = if s.driving == Member::Pinion { drive.pairs[k].clone() } else { swapped(&drive.pairs[k]) };
-                let members = if s.driving == Member::Pinion { ["pinion", "wheel"] } else { ["wheel", "pinion"] };
-                let state = [s.driving_torque.abs(), s.driving_speed.abs(), s.mesh_efficiency];
-                out.push(at(None, members, pair, state));
-                continue;
-            };
-            let sun = pp.sun_drives_meshes;
-            let sun_pair = if sun { drive.pairs[k].clone() } else { swapped(&drive.pairs[k]) };
-            let sun_members = if sun { ["sun", "planet"] } else { ["planet", "sun"] };
-            let state = |i: usize| [pp.mesh_torque[i].abs(), pp.mesh_speed[i].abs(), pp.mesh_efficiency[i]];
-            out.push(at(Some("sun–planet"), sun_members, sun_pair, state(0)));
-            let ring = drive.ring_pairs[k].clone().expect("a planetary stage has its planet–ring pair");
-            out.push(at(Some("planet–ring"), ["planet", "ring"], ring, state(1)));
+                });
+            }
         }
     }
     out

@@ -5,6 +5,8 @@ use serde::{Deserialize, Serialize};
 
 use super::loads::PlanetForces;
 use crate::drive::kinematics::planetary::PlanetaryMember;
+use crate::drive::layout::Member;
+use crate::drive::mesh_state::MeshState;
 
 /// A planetary stage at one operating point.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -42,4 +44,36 @@ pub struct PlanetaryPoint {
     /// A helical stage's planet bearings under its tilting moment, in words (empty for a spur stage).
     #[serde(default, skip_serializing_if = "String::is_empty")]
     pub tilting_support: String,
+}
+
+impl PlanetaryPoint {
+    /// Its two meshes as the walk evaluates them: the sun–planet mesh (the stage's own pair, the sun
+    /// its pinion) driven by the sun or the planet, whichever drives the meshes, and the
+    /// planet–ring mesh (mesh 1) with the planet in the pinion's place whichever drives; each at
+    /// the pinion's torque per planet and its speed in the carrier's frame.
+    pub(crate) fn mesh_states(&self) -> [MeshState; 2] {
+        let sun = self.sun_drives_meshes;
+        let at = |i: usize| (self.mesh_torque[i].abs(), self.mesh_speed[i].abs(), self.mesh_efficiency[i]);
+        let ((t0, w0, e0), (t1, w1, e1)) = (at(0), at(1));
+        [
+            MeshState {
+                mesh: 0,
+                name: Some("sun–planet"),
+                driving: if sun { Member::Pinion } else { Member::Wheel },
+                members: if sun { ["sun", "planet"] } else { ["planet", "sun"] },
+                torque: t0,
+                speed: w0,
+                efficiency: e0,
+            },
+            MeshState {
+                mesh: 1,
+                name: Some("planet–ring"),
+                driving: Member::Pinion,
+                members: ["planet", "ring"],
+                torque: t1,
+                speed: w1,
+                efficiency: e1,
+            },
+        ]
+    }
 }
