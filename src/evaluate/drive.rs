@@ -68,13 +68,13 @@ pub(crate) fn evaluate_drive_into_with(
 }
 
 /// One shard of a drive's run (`gearloss run --shard K/N`): the rows of its operating points
-/// ([`crate::evaluate::Shard::range`] over the points) streamed to `records` (the header only in
+/// ([`super::plan::Shard::range`] over the points) streamed to `records` (the header only in
 /// the first shard, so that the shards' files concatenated are a single run's), and their tally;
 /// each block of rows announced to `progress` (stopping where it is cancelled).
 pub(crate) fn evaluate_drive_shard_with(
     scene: &Scene,
     drive: &SceneDrive,
-    shard: crate::evaluate::Shard,
+    shard: super::plan::Shard,
     records: &mut dyn DriveRecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<DriveTally> {
