@@ -115,6 +115,10 @@ pub struct DriveReport {
     /// The unit the scene wrote its torques in, likewise (report.json keeps N·m); left out when N·m.
     #[serde(default = "DisplayUnit::newton_metre", skip_serializing_if = "DisplayUnit::is_newton_metre")]
     pub torque_unit: DisplayUnit,
+    /// The units report.md shows forces, powers, lengths and temperatures in: inch–pound when every
+    /// stage's pair is sized in inches (as a pair's report), else SI; report.json stays SI.
+    #[serde(default, skip_serializing_if = "super::number::UnitSystem::is_si")]
+    pub unit_system: super::number::UnitSystem,
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
     /// The housing as a thermal node (what, value, unit) and each point's balance.
@@ -131,6 +135,17 @@ pub struct DriveReport {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stage_pairs: Vec<super::drive_stage_pairs::StagePairReport>,
     pub findings: Vec<Finding>,
+}
+
+/// Inch–pound when every stage's pair is sized in inches, else SI.
+fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
+    use super::number::UnitSystem;
+    let inch = |g: &crate::model::GearPair| super::scene::pair_unit_system(g) == UnitSystem::Inch;
+    if !drive.pairs.is_empty() && drive.pairs.iter().all(inch) {
+        UnitSystem::Inch
+    } else {
+        UnitSystem::Si
+    }
 }
 
 /// The report of an evaluated drive scene.
@@ -174,7 +189,12 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         speed_at: layout.operating.speed_at,
         speed_unit: unit_written(&scene.operating.pinion_speed, map.map(|m| &m.1), DisplayUnit::rpm),
         torque_unit: unit_written(&scene.operating.pinion_torque, map.map(|m| &m.0), DisplayUnit::newton_metre),
-        findings: super::drive_findings::findings(drive, &points),
+        unit_system: drive_unit_system(drive),
+        findings: super::drive_findings::findings(
+            drive,
+            &points,
+            super::units::Units::of_system(drive_unit_system(drive)),
+        ),
         maps: super::drive_map::maps(scene, eval, &laws),
         housing: scene
             .housing

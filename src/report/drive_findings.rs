@@ -5,19 +5,20 @@
 
 use super::drive_point::DrivePointReport;
 use super::finding::{Finding, Severity};
+use super::units::Units;
 use crate::drive::PowerFlow;
 use crate::model::SceneDrive;
 
-/// Where a bearing place is: `at 30 mm`, or `without \`at\`` (a place of a one-pair scene).
-fn place_at(position: Option<f64>) -> String {
-    position
-        .map_or_else(|| "without `at`".into(), |x| format!("at {} mm", crate::numerics::rounding::fixed(x * 1e3, 2)))
+/// Where a bearing place is: `at 30.00 mm` (in the report's length unit), or `without \`at\`` (a
+/// place of a one-pair scene).
+fn place_at(position: Option<f64>, units: Units) -> String {
+    position.map_or_else(|| "without `at`".into(), |x| format!("at {}", units.length().with(x, 2)))
 }
 
 /// What the reader must know: how one pair on a drive cycle was read as its one-stage drive, a
 /// shaft whose axial force goes to its first place by default, points where both ends deliver, a
 /// fixed point that did not settle, a bearing beyond its static rating.
-pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<Finding> {
+pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: Units) -> Vec<Finding> {
     let layout = &drive.layout;
     let mut out = Vec::new();
     if drive.one_pair {
@@ -46,7 +47,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<F
             message: format!(
                 "shaft `{}` carries a floating sun on one bearing place ({}): its planets centre the sun, their forces cancel on it, so the place takes only what they leave (a helical sun's axial force)",
                 shaft.name,
-                place_at(shaft.bearings[0].position)
+                place_at(shaft.bearings[0].position, units)
             ),
         });
     }
@@ -54,7 +55,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<F
         layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
             s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {
                 super::bearing_checks::BearingAtPoint {
-                    place: format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position), b.kind),
+                    place: format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind),
                     c0: bearing.static_load_rating,
                     radial: b.radial_load,
                     axial: b.axial_load,
@@ -72,7 +73,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport]) -> Vec<F
                 message: format!(
                     "shaft `{}`: no bearing says `locating`; the first place ({}) takes the axial force of its helical gears",
                     shaft.name,
-                    place_at(shaft.bearings[0].position)
+                    place_at(shaft.bearings[0].position, units)
                 ),
             });
         }

@@ -16,8 +16,12 @@ pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Give
 /// The unit system report.md shows results in: inch–pound when the pair is sized in inches (a
 /// diametral pitch, or the module, transverse module or face width written in an inch length).
 pub(super) fn unit_system(scene: &Scene) -> super::number::UnitSystem {
+    pair_unit_system(&scene.gears)
+}
+
+/// [`unit_system`] of one pair: inch–pound when it is sized in inches.
+pub(super) fn pair_unit_system(g: &crate::model::GearPair) -> super::number::UnitSystem {
     use crate::scene::units::written_in_inches;
-    let g = &scene.gears;
     let sized_in_inches = match &g.module_source {
         ModuleSource::DiametralPitch(_) | ModuleSource::TransverseDiametralPitch(_) => true,
         ModuleSource::TransverseModule(m) => written_in_inches(&m.written),

@@ -31,7 +31,8 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
         let title = format!("{}: total loss and efficiency, drive (T > 0) and coast (T < 0)", r.title);
         let root = root.titled(&title, ("sans-serif", fitted(&title, WIDTH, 18.0))).map_err(|e| e.to_string())?;
         let areas = root.split_evenly((rows as usize, 2));
-        let Shown { speed: n, torque: t } = Shown::of(r);
+        let Shown { speed: n, torque: t, units } = Shown::of(r);
+        let w = units.power();
         for (k, m) in maps.iter().enumerate() {
             let x_label = format!("{} speed ({})", m.speed_at.name(), n.unit());
             let speeds: Vec<f64> = m.speeds_rpm.iter().map(|x| n.of_rpm(*x)).collect();
@@ -44,8 +45,8 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
                 title: format!("total loss — {} {}", m.law, m.formulation),
                 speeds: &speeds,
                 torques: &torques,
-                values: m.loss.clone(),
-                unit: "W",
+                values: m.loss.iter().map(|row| row.iter().map(|x| w.value(*x)).collect()).collect(),
+                unit: w.unit,
             };
             let efficiency = Field {
                 title: format!("η, ○ best located — {} {}", m.law, m.formulation),
@@ -69,6 +70,7 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
 /// report.md's section on the maps: per law and formulation the grid's extent, least η and most loss,
 /// and the best point of each half, located.
 pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
+    let w = u.units.power();
     if !r.maps.is_empty() {
         md!(out, "## Loss map\n");
         md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);
@@ -80,7 +82,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
                 &format!("torques ({})", u.torque.unit()),
                 &format!("speeds ({})", u.speed.unit()),
                 "least η of the grid points (drive)",
-                "most loss of the grid points (W)",
+                &format!("most loss of the grid points ({})", w.unit),
                 "most passes",
             ],
         );
@@ -111,7 +113,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
                         m.speeds_rpm.len()
                     ),
                     format!("{} %", fixed(100.0 * drive_eta, 3)),
-                    fixed(most, 2),
+                    w.cell(most, 2),
                     m.most_passes.to_string(),
                 ],
             );

@@ -5,6 +5,7 @@
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
+use crate::report::units::Units;
 
 use super::shown_units::Shown;
 
@@ -66,6 +67,8 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
 
 fn headline(out: &mut String, r: &DriveReport) {
     let u = Shown::of(r);
+    let w = u.units.power();
+    let watts = |name: &str| format!("{name} ({})", w.unit);
     md!(out, "## Headline\n");
     header(
         out,
@@ -76,15 +79,15 @@ fn headline(out: &mut String, r: &DriveReport) {
             "flow",
             &format!("T_in ({})", u.torque.unit()),
             &format!("n_in ({})", u.speed.unit()),
-            "P_in (W)",
+            &watts("P_in"),
             &format!("T_out ({})", u.torque.unit()),
             &format!("n_out ({})", u.speed.unit()),
-            "P_out (W)",
-            "meshes (W)",
-            "gears no-load (W)",
-            "bearings (W)",
-            "seals (W)",
-            "total (W)",
+            &watts("P_out"),
+            &watts("meshes"),
+            &watts("gears no-load"),
+            &watts("bearings"),
+            &watts("seals"),
+            &watts("total"),
             "η (%)",
             "passes",
         ],
@@ -101,15 +104,15 @@ fn headline(out: &mut String, r: &DriveReport) {
                 d.flow.name().to_string(),
                 fixed(u.torque.of_si(d.input_torque), 4),
                 fixed(u.speed.of_rad_s(d.input_speed), 2),
-                fixed(d.input_power, 2),
+                w.cell(d.input_power, 2),
                 fixed(u.torque.of_si(d.output_torque), 4),
                 fixed(u.speed.of_rad_s(d.output_speed), 2),
-                fixed(d.output_power, 2),
-                fixed(l.meshes, 3),
-                fixed(l.gear_no_load, 3),
-                fixed(l.bearings_no_load + l.bearings_load, 3),
-                fixed(l.seals, 3),
-                fixed(l.total(), 3),
+                w.cell(d.output_power, 2),
+                w.cell(l.meshes, 3),
+                w.cell(l.gear_no_load, 3),
+                w.cell(l.bearings_no_load + l.bearings_load, 3),
+                w.cell(l.seals, 3),
+                w.cell(l.total(), 3),
                 if d.both_ends_deliver { "0 (both ends deliver)".into() } else { fixed(100.0 * d.efficiency, 4) },
                 if d.settled() { d.iterations.to_string() } else { format!("{} (not settled)", d.iterations) },
             ],
@@ -141,21 +144,26 @@ fn headline(out: &mut String, r: &DriveReport) {
 }
 
 fn inputs(out: &mut String, r: &DriveReport) {
+    let units = Units::of_system(r.unit_system);
+    let len = units.length();
+    // The inputs keep millimetres; an inch report shows inches and the normal diametral pitch.
+    let mm = |x: f64, decimals: usize| len.cell(x * 1e-3, decimals);
+    let inch = !units.is_si();
     md!(out, "## Stages\n");
     header(
         out,
         &[
             "stage",
             "pinion on → wheel on",
-            "at (mm)",
+            &format!("at ({})", len.unit),
             "z",
             "u",
-            "m_n (mm)",
+            if inch { "P_nd (1/in)" } else { "m_n (mm)" },
             "β (°)",
             "hand (pinion)",
             "φ (°)",
-            "a (mm)",
-            "b (mm)",
+            &format!("a ({})", len.unit),
+            &format!("b ({})", len.unit),
             "α_wt (°)",
             "ε_α",
             "ε_β",
@@ -186,15 +194,15 @@ fn inputs(out: &mut String, r: &DriveReport) {
             &[
                 s.name.clone(),
                 joins,
-                format!("{} / {}", fixed(s.at_mm[0], 2), fixed(s.at_mm[1], 2)),
+                format!("{} / {}", mm(s.at_mm[0], 2), mm(s.at_mm[1], 2)),
                 teeth,
                 ratio,
-                fixed(s.normal_module_mm, 4),
+                if inch { fixed(25.4 / s.normal_module_mm, 4) } else { fixed(s.normal_module_mm, 4) },
                 fixed(s.helix_angle_deg, 2),
                 if s.pinion_hand.is_empty() { "spur".into() } else { s.pinion_hand.clone() },
                 fixed(s.direction_deg, 2),
-                fixed(s.centre_distance_mm, 3),
-                fixed(s.face_width_mm, 2),
+                mm(s.centre_distance_mm, 3),
+                mm(s.face_width_mm, 2),
                 fixed(s.working_pressure_angle_deg, 3),
                 fixed(s.contact_ratio, 3),
                 fixed(s.overlap_ratio, 3),
@@ -202,8 +210,8 @@ fn inputs(out: &mut String, r: &DriveReport) {
             ],
         );
     }
-    super::planetary::inputs(out, &r.stages);
-    super::point_tables::shafts(out, &r.shafts);
+    super::planetary::inputs(out, &r.stages, Units::of_system(r.unit_system));
+    super::point_tables::shafts(out, &r.shafts, Units::of_system(r.unit_system));
     super::shaft_bending::inputs(out, r);
     md!(out, "\n## Oil (one sump)\n");
     header(out, &["value", "", "unit"]);
@@ -218,6 +226,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
     if r.thermal.is_empty() {
         return;
     }
+    let (w, temp) = (u.units.power(), u.units.temperature());
     md!(out, "## Thermal balance (one sump)\n");
     md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed.\n");
     header(out, &["housing", "", "unit"]);
@@ -231,14 +240,15 @@ fn thermal(out: &mut String, r: &DriveReport) {
             "point",
             "law",
             "formulation",
-            "θ* (°C)",
-            "P_V(θ*) (W)",
-            "P_Q(θ*) (W)",
+            &format!("θ* ({})", temp.unit),
+            &format!("P_V(θ*) ({})", w.unit),
+            &format!("P_Q(θ*) ({})", w.unit),
             "the sump",
             &format!("thermal rating ({})", u.torque.unit()),
         ],
     );
     let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
+    let watts = |x: Option<f64>| x.map_or_else(|| "—".to_string(), |v| w.cell(v, 3));
     for b in &r.thermal {
         row(
             out,
@@ -246,9 +256,9 @@ fn thermal(out: &mut String, r: &DriveReport) {
                 b.label.clone(),
                 b.law.clone(),
                 b.formulation.clone(),
-                opt(b.temperature_c, 3),
-                opt(b.loss, 3),
-                opt(b.dissipation, 3),
+                opt(b.temperature_c.map(|c| temp.from_celsius(c)), 3),
+                watts(b.loss),
+                watts(b.dissipation),
                 b.status.clone(),
                 opt(b.rating.map(|t| u.torque.of_si(t)), 2),
             ],
@@ -259,6 +269,10 @@ fn thermal(out: &mut String, r: &DriveReport) {
 
 fn duty(out: &mut String, r: &DriveReport) {
     let Some(d) = &r.duty else { return };
+    let units = Units::of_system(r.unit_system);
+    let (w, temp) = (units.power(), units.temperature());
+    // Energies in J (SI) or Btu.
+    let (joule, energy_unit) = if units.is_si() { (1.0, "J") } else { (crate::report::units::BTU, "Btu") };
     md!(out, "## Duty cycle \"{}\" ({} {})\n", d.name, d.law, d.formulation);
     md!(out, "Each step's whole-drive loss at the scene's oil temperature and, with the housing's heat capacity, the sump's transient from ambient: C dθ/dt = P_V(θ) − P_Q(θ), integrated to 1e-12 and again to 1e-10 (the difference is the error estimate); a step without speed loses nothing.\n");
     header(
@@ -266,25 +280,26 @@ fn duty(out: &mut String, r: &DriveReport) {
         &[
             "step",
             "duration (s)",
-            "P_V at the oil temperature (W)",
-            "energy at the oil temperature (J)",
-            "θ at its end (°C)",
-            "energy lost (J)",
-            "energy given off (J)",
+            &format!("P_V at the oil temperature ({})", w.unit),
+            &format!("energy at the oil temperature ({energy_unit})"),
+            &format!("θ at its end ({})", temp.unit),
+            &format!("energy lost ({energy_unit})"),
+            &format!("energy given off ({energy_unit})"),
         ],
     );
     let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
+    let energy = |x: Option<f64>| opt(x.map(|e| e / joule), 1);
     for s in &d.steps {
         row(
             out,
             &[
                 s.label.clone(),
                 fixed(s.duration_s, 1),
-                opt(s.loss_at_oil_temperature, 3),
-                opt(s.energy_at_oil_temperature, 1),
-                opt(s.end_temperature_c, 3),
-                opt(s.energy_lost, 1),
-                opt(s.energy_dissipated, 1),
+                s.loss_at_oil_temperature.map_or_else(|| "—".to_string(), |v| w.cell(v, 3)),
+                energy(s.energy_at_oil_temperature),
+                opt(s.end_temperature_c.map(|c| temp.from_celsius(c)), 3),
+                energy(s.energy_lost),
+                energy(s.energy_dissipated),
             ],
         );
     }
@@ -292,10 +307,11 @@ fn duty(out: &mut String, r: &DriveReport) {
     if let (Some(max), Some(start), Some(e)) = (d.max_temperature_c, d.start_temperature_c, d.error_k) {
         md!(
             out,
-            "From {} °C the sump reaches at most {} °C (integration error {} K).\n",
-            fixed(start, 2),
-            fixed(max, 3),
-            crate::render::table::sig(e)
+            "From {} the sump reaches at most {} (integration error {} {}).\n",
+            format!("{} {}", fixed(temp.from_celsius(start), 2), temp.unit),
+            format!("{} {}", fixed(temp.from_celsius(max), 3), temp.unit),
+            crate::render::table::sig(e * temp.per_kelvin()),
+            if units.is_si() { "K" } else { "°F" }
         );
     }
     if let Some(f) = &d.failure {

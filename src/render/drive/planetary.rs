@@ -6,11 +6,14 @@ use crate::drive::DrivePoint;
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_inputs::StageInputs;
+use crate::report::units::Units;
 
 use super::shown_units::Shown;
 
 /// The planetary stages' inputs, after the stages' table.
-pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
+pub(crate) fn inputs(out: &mut String, stages: &[StageInputs], units: Units) {
+    let (len, mass) = (units.length(), units.mass());
+    let mm = |x: f64| len.cell(x * 1e-3, 3);
     let planetary: Vec<_> = stages.iter().filter_map(|s| s.planetary.as_ref().map(|p| (s, p))).collect();
     if planetary.is_empty() {
         return;
@@ -28,11 +31,11 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
             "i₀",
             "ratio",
             "(z_s + z_r)/n",
-            "neighbour gap (mm)",
+            &format!("neighbour gap ({})", len.unit),
             "α_w ring mesh (°)",
             "ε_α ring mesh",
-            "d_a ring (mm)",
-            "planet mass (kg)",
+            &format!("d_a ring ({})", len.unit),
+            &format!("planet mass ({})", mass.unit),
             "planet bearing",
         ],
     );
@@ -49,11 +52,11 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
                 fixed(p.stationary_ratio, 4),
                 fixed(p.ratio, 4),
                 fixed(p.assembly, 4),
-                p.neighbour_gap_mm.map_or("— (one planet)".into(), |g| fixed(g, 3)),
+                p.neighbour_gap_mm.map_or("— (one planet)".into(), mm),
                 fixed(p.ring_pressure_angle_deg, 3),
                 fixed(p.ring_contact_ratio, 3),
-                fixed(p.ring_tip_diameter_mm, 3),
-                fixed(p.planet_mass_kg, 4),
+                mm(p.ring_tip_diameter_mm),
+                mass.cell(p.planet_mass_kg, 4),
                 if p.planet_bearing.is_empty() { "none".into() } else { p.planet_bearing.clone() },
             ],
         );
@@ -63,23 +66,29 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs]) {
 /// Each planetary stage at one operating point.
 pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
     let (n, t) = (u.speed, u.torque);
+    let (force, w) = (u.units.force(), u.units.power());
     for s in &d.stages {
         let Some(p) = s.planetary() else { continue };
         md!(
             out,
-            "Planetary stage {}: the {} drives, the {} is driven, the {} is held; P_w = T_sun (ω_sun − ω_carrier) = {} W, the {} drives the meshes; η₀ = η_sp η_pr = {} %, η = {} %.\n",
+            "Planetary stage {}: the {} drives, the {} is driven, the {} is held; P_w = T_sun (ω_sun − ω_carrier) = {}, the {} drives the meshes; η₀ = η_sp η_pr = {} %, η = {} %.\n",
             s.name,
             p.driving_member.name(),
             p.driven_member.name(),
             p.held.name(),
-            fixed(p.rolling_power, 3),
+            w.with(p.rolling_power, 3),
             if p.sun_drives_meshes { "sun" } else { "ring" },
             fixed(100.0 * p.basic_efficiency, 5),
             fixed(100.0 * p.efficiency, 5)
         );
         header(
             out,
-            &["member", &format!("n ({}, + ccw)", n.unit()), &format!("T ({}, on the member)", t.unit()), "P in (W)"],
+            &[
+                "member",
+                &format!("n ({}, + ccw)", n.unit()),
+                &format!("T ({}, on the member)", t.unit()),
+                &format!("P in ({})", w.unit),
+            ],
         );
         for m in crate::drive::kinematics::planetary::PlanetaryMember::ALL {
             let i = m.index();
@@ -89,7 +98,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
                     m.name().into(),
                     fixed(n.of_rad_s(p.speeds[i]), 3),
                     fixed(t.of_si(p.torques[i]), 4),
-                    fixed(p.torques[i] * p.speeds[i], 3),
+                    w.cell(p.torques[i] * p.speeds[i], 3),
                 ],
             );
         }
@@ -101,7 +110,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
                 &format!("pinion T per planet ({})", t.unit()),
                 &format!("n in the carrier's frame ({})", n.unit()),
                 "η (%)",
-                "loss, all planets (W)",
+                &format!("loss, all planets ({})", w.unit),
             ],
         );
         for (i, name) in ["sun–planet", "planet–ring"].iter().enumerate() {
@@ -112,7 +121,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
                     fixed(t.of_si(p.mesh_torque[i]), 4),
                     fixed(n.of_rad_s(p.mesh_speed[i]), 3),
                     fixed(100.0 * p.mesh_efficiency[i], 5),
-                    fixed(p.mesh_loss[i], 3),
+                    w.cell(p.mesh_loss[i], 3),
                 ],
             );
         }
@@ -120,26 +129,26 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
         let f = &p.forces;
         md!(
             out,
-            "Each planet (the most loaded where K_γ > 1): {} {} relative to the carrier; F_t {} N (sun mesh) and {} N (ring mesh), F_r {} N and {} N, centrifugal m ω_c² a_w {} N; its bearing carries |B| = {} N; the planets' bearings lose {} W (no-load) + {} W (load); churning {} W.\n",
+            "Each planet (the most loaded where K_γ > 1): {} {} relative to the carrier; F_t {} (sun mesh) and {} (ring mesh), F_r {} and {}, centrifugal m ω_c² a_w {}; its bearing carries |B| = {}; the planets' bearings lose {} (no-load) + {} (load); churning {}.\n",
             fixed(n.of_rad_s(p.planet_speed), 3),
             n.unit(),
-            fixed(f.tangential[0], 2),
-            fixed(f.tangential[1], 2),
-            fixed(f.radial[0], 2),
-            fixed(f.radial[1], 2),
-            fixed(f.centrifugal, 3),
-            fixed(f.bearing, 2),
-            fixed(p.planet_bearings[0], 3),
-            fixed(p.planet_bearings[1], 3),
-            fixed(p.churning, 3)
+            force.with(f.tangential[0], 2),
+            force.with(f.tangential[1], 2),
+            force.with(f.radial[0], 2),
+            force.with(f.radial[1], 2),
+            force.with(f.centrifugal, 3),
+            force.with(f.bearing, 2),
+            w.with(p.planet_bearings[0], 3),
+            w.with(p.planet_bearings[1], 3),
+            w.with(p.churning, 3)
         );
         if f.axial != 0.0 {
             md!(
                 out,
-                "Helical: each mesh's axial force F_a = {} N (on the sun n F_a = {} N, on the ring as much the other way; on the planet the two cancel into the tilting moment M = F_a (r_w,sp + r_w,pr) = {} N·m, which its bearings take and pass to the carrier: {}).\n",
-                fixed(f.axial, 2),
-                fixed(f64::from(p.planets) * f.axial, 2),
-                fixed(f.tilting, 4),
+                "Helical: each mesh's axial force F_a = {} (on the sun n F_a = {}, on the ring as much the other way; on the planet the two cancel into the tilting moment M = F_a (r_w,sp + r_w,pr) = {}, which its bearings take and pass to the carrier: {}).\n",
+                force.with(f.axial, 2),
+                force.with(f64::from(p.planets) * f.axial, 2),
+                u.units.torque().with(f.tilting, 4),
                 p.tilting_support
             );
         }

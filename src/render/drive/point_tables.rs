@@ -6,20 +6,22 @@
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DrivePointReport;
+use crate::report::units::Units;
 
 use super::shown_units::Shown;
 
 pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
     let (n, t) = (u.speed, u.torque);
+    let (f, w, len) = (u.units.force(), u.units.power(), u.units.length());
     let d = &p.point;
     md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
     md!(
         out,
-        "{}: {} W in at the input, {} W out at the output, {} W lost, η = {}; {}.\n",
+        "{}: {} in at the input, {} out at the output, {} lost, η = {}; {}.\n",
         d.flow.name(),
-        fixed(d.input_power, 3),
-        fixed(d.output_power, 3),
-        fixed(d.power_lost(), 3),
+        w.with(d.input_power, 3),
+        w.with(d.output_power, 3),
+        w.with(d.power_lost(), 3),
         if d.both_ends_deliver {
             "0 (both ends deliver)".into()
         } else {
@@ -39,12 +41,12 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
             &format!("T driving ({})", t.unit()),
             &format!("T driven ({})", t.unit()),
             &format!("n driving ({})", n.unit()),
-            "F_t (N)",
-            "F_r (N)",
-            "F_a (N)",
+            &format!("F_t ({})", f.unit),
+            &format!("F_r ({})", f.unit),
+            &format!("F_a ({})", f.unit),
             "η_mesh (%)",
-            "mesh loss (W)",
-            "no-load (W)",
+            &format!("mesh loss ({})", w.unit),
+            &format!("no-load ({})", w.unit),
             "law outside validity",
         ],
     );
@@ -58,12 +60,12 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
                 fixed(t.of_si(s.driving_torque), 4),
                 fixed(t.of_si(s.driven_torque), 4),
                 fixed(n.of_rad_s(s.driving_speed), 2),
-                fixed(s.tangential_force, 2),
-                fixed(s.radial_force, 2),
-                fixed(s.axial_force, 2),
+                f.cell(s.tangential_force, 2),
+                f.cell(s.radial_force, 2),
+                f.cell(s.axial_force, 2),
                 fixed(100.0 * s.mesh_efficiency, 4),
-                fixed(s.mesh_loss, 3),
-                fixed(s.no_load, 3),
+                w.cell(s.mesh_loss, 3),
+                w.cell(s.no_load, 3),
                 validity,
             ],
         );
@@ -77,11 +79,11 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
             &format!("n ({}, + ccw)", n.unit()),
             &format!("T received ({})", t.unit()),
             &format!("T passed ({})", t.unit()),
-            "P received (W)",
-            "P passed (W)",
-            "bearings (W)",
-            "seals (W)",
-            "gears no-load (W)",
+            &format!("P received ({})", w.unit),
+            &format!("P passed ({})", w.unit),
+            &format!("bearings ({})", w.unit),
+            &format!("seals ({})", w.unit),
+            &format!("gears no-load ({})", w.unit),
         ],
     );
     for s in &d.shafts {
@@ -93,11 +95,11 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
                 fixed(n.of_rad_s(s.speed), 2),
                 fixed(t.of_si(s.received_torque), 4),
                 fixed(t.of_si(s.passed_torque), 4),
-                fixed(s.received_power, 3),
-                fixed(s.passed_power, 3),
-                fixed(0.0 + bearings, 3),
-                fixed(s.seals, 3),
-                fixed(s.gear_no_load, 3),
+                w.cell(s.received_power, 3),
+                w.cell(s.passed_power, 3),
+                w.cell(0.0 + bearings, 3),
+                w.cell(s.seals, 3),
+                w.cell(s.gear_no_load, 3),
             ],
         );
     }
@@ -106,13 +108,13 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
         out,
         &[
             "shaft",
-            "place at (mm)",
+            &format!("place at ({})", len.unit),
             "type × count",
             "locating",
-            "F_r per bearing (N)",
-            "F_a per bearing (N)",
-            "P_0 (W)",
-            "P_1 (W)",
+            &format!("F_r per bearing ({})", f.unit),
+            &format!("F_a per bearing ({})", f.unit),
+            &format!("P_0 ({})", w.unit),
+            &format!("P_1 ({})", w.unit),
         ],
     );
     for s in &d.shafts {
@@ -121,20 +123,23 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
                 out,
                 &[
                     s.name.clone(),
-                    b.position.map_or_else(|| "—".into(), |x| fixed(x * 1e3, 2)),
+                    b.position.map_or_else(|| "—".into(), |x| len.cell(x, 2)),
                     format!("{} × {}", b.kind, b.count),
                     if b.locating { "yes".into() } else { String::new() },
-                    fixed(b.radial_load, 2),
-                    fixed(b.axial_load, 2),
-                    fixed(b.no_load, 3),
-                    fixed(b.load, 3),
+                    f.cell(b.radial_load, 2),
+                    f.cell(b.axial_load, 2),
+                    w.cell(b.no_load, 3),
+                    w.cell(b.load, 3),
                 ],
             );
         }
     }
     md!(out);
-    super::shaft_bending::point(out, d);
-    header(out, &["shaft", "gear", "point x, y, z (mm)", "force F_x, F_y, F_z (N)"]);
+    super::shaft_bending::point(out, d, u.units);
+    header(
+        out,
+        &["shaft", "gear", &format!("point x, y, z ({})", len.unit), &format!("force F_x, F_y, F_z ({})", f.unit)],
+    );
     for s in &d.shafts {
         for l in &s.gear_loads {
             row(
@@ -146,8 +151,8 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
                         d.stages.get(l.stage).map_or(l.member.name(), |x| x.member_name(l.member)),
                         d.stages.get(l.stage).map_or(String::new(), |x| x.name.clone())
                     ),
-                    l.point.iter().map(|x| fixed(x * 1e3, 3)).collect::<Vec<_>>().join(", "),
-                    l.force.iter().map(|x| fixed(*x, 2)).collect::<Vec<_>>().join(", "),
+                    l.point.iter().map(|x| len.cell(*x, 3)).collect::<Vec<_>>().join(", "),
+                    l.force.iter().map(|x| f.cell(*x, 2)).collect::<Vec<_>>().join(", "),
                 ],
             );
         }
@@ -155,22 +160,34 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
     md!(out);
 }
 
-/// The shafts as the scene gives them: role, bearing places (type × count at mm, or "(no `at`)"
-/// for a one-pair scene's shaft written without positions), the locating place, the seals.
-pub(super) fn shafts(out: &mut String, shafts: &[crate::report::drive_inputs::ShaftInputs]) {
+/// The shafts as the scene gives them: role, bearing places (type × count at a position, or "(no
+/// `at`)" for a one-pair scene's shaft written without positions), the locating place, the seals
+/// (the inputs keep millimetres; shown in the report's length unit).
+pub(super) fn shafts(out: &mut String, shafts: &[crate::report::drive_inputs::ShaftInputs], units: Units) {
+    let len = units.length();
+    let mm = |x: f64, decimals: usize| len.cell(x * 1e-3, decimals);
     md!(out, "\n## Shafts\n");
-    header(out, &["shaft", "role", "bearing places (type × count at mm)", "locating", "seals (mm × count)"]);
+    header(
+        out,
+        &[
+            "shaft",
+            "role",
+            &format!("bearing places (type × count at {})", len.unit),
+            "locating",
+            &format!("seals ({} × count)", len.unit),
+        ],
+    );
     for s in shafts {
-        let at = |at: f64| if s.without_at { " (no `at`)".to_string() } else { format!(" at {}", fixed(at, 2)) };
+        let at = |at: f64| if s.without_at { " (no `at`)".to_string() } else { format!(" at {}", mm(at, 2)) };
         let places: Vec<String> = s.bearings.iter().map(|(k, n, x, _)| format!("{k} × {n}{}", at(*x))).collect();
         let locating = s.bearings.iter().find(|b| b.3).map_or("—".into(), |b| {
             if s.without_at {
                 "the first".into()
             } else {
-                format!("at {}", fixed(b.2, 2))
+                format!("at {}", mm(b.2, 2))
             }
         });
-        let seals: Vec<String> = s.seals.iter().map(|(d, n)| format!("{} × {n}", fixed(*d, 1))).collect();
+        let seals: Vec<String> = s.seals.iter().map(|(d, n)| format!("{} × {n}", mm(*d, 1))).collect();
         row(out, &[s.name.clone(), s.role.clone(), places.join("; "), locating, seals.join("; ")]);
     }
 }

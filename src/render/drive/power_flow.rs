@@ -10,13 +10,15 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::drive::{DrivePoint, PowerFlow};
 use crate::render::svg::fitted;
 use crate::report::drive::{DrivePointReport, DriveReport};
+use crate::report::units::{Shown, Units};
 
 pub(crate) const FILE: &str = "power_flow.svg";
 
 /// The plot's width (px).
 const WIDTH: u32 = 1000;
 
-/// One step of the waterfall: its label, the power before and after it (W).
+/// One step of the waterfall: its label, the power before and after it (in the report's power
+/// unit, W or hp).
 struct Step {
     label: String,
     from: f64,
@@ -24,19 +26,23 @@ struct Step {
 }
 
 /// The steps of a point, from the source to the sink.
-fn steps(d: &DrivePoint) -> Vec<Step> {
+fn steps(d: &DrivePoint, w: Shown) -> Vec<Step> {
     let mut order: Vec<usize> = (0..d.shafts.len()).collect();
     order.sort_by(|a, b| d.shafts[*b].received_power.total_cmp(&d.shafts[*a].received_power));
     let mut out = Vec::new();
     for (i, &j) in order.iter().enumerate() {
         let s = &d.shafts[j];
-        out.push(Step { label: format!("shaft {}", s.name), from: s.received_power, to: s.passed_power });
+        out.push(Step {
+            label: format!("shaft {}", s.name),
+            from: w.value(s.received_power),
+            to: w.value(s.passed_power),
+        });
         if let Some(&next) = order.get(i + 1) {
             // The stage with a gear on both shafts.
             let joins =
                 s.gear_loads.iter().map(|l| l.stage).find(|k| d.shafts[next].gear_loads.iter().any(|l| l.stage == *k));
             let name = joins.and_then(|k| d.stages.get(k)).map_or("mesh".to_string(), |st| format!("mesh {}", st.name));
-            out.push(Step { label: name, from: s.passed_power, to: d.shafts[next].received_power });
+            out.push(Step { label: name, from: w.value(s.passed_power), to: w.value(d.shafts[next].received_power) });
         }
     }
     out
@@ -61,6 +67,7 @@ pub(crate) fn power_flow(r: &DriveReport) -> Result<Option<String>, String> {
     let chosen = chosen(r);
     let Some(first) = chosen.first() else { return Ok(None) };
     let (law, formulation) = (&first.law, &first.formulation);
+    let w = Units::of_system(r.unit_system).power();
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (WIDTH, 40 + 380 * chosen.len() as u32)).into_drawing_area();
@@ -69,14 +76,21 @@ pub(crate) fn power_flow(r: &DriveReport) -> Result<Option<String>, String> {
         let root = root.titled(&title, ("sans-serif", fitted(&title, WIDTH, 18.0))).map_err(|e| e.to_string())?;
         for (area, p) in root.split_evenly((chosen.len(), 1)).iter().zip(&chosen) {
             let caption = format!("{} — {} ({law} {formulation})", p.label, p.point.flow.name());
-            draw(area, &caption, &steps(&p.point))?;
+            draw(area, &caption, &steps(&p.point, w), w)?;
         }
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(Some(svg))
 }
 
-fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, steps: &[Step]) -> Result<(), String> {
+fn draw(
+    area: &DrawingArea<SVGBackend, plotters::coord::Shift>,
+    title: &str,
+    steps: &[Step],
+    w: Shown,
+) -> Result<(), String> {
+    // The labels' decimals: W's, and three more in hp.
+    let (d1, d2, unit) = (w.decimals(1), w.decimals(2), w.unit);
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let hi = steps.first().map_or(1.0, |s| s.from);
     let lo = steps.last().map_or(0.0, |s| s.to);
@@ -84,7 +98,7 @@ fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, ste
     let (y0, y1) = (lo - pad, hi + 1.6 * pad);
     // Bars: the source, one a step, the sink.
     let n = steps.len() + 2;
-    let caption = format!("{title}; the axis starts at {:.1} W", y0);
+    let caption = format!("{title}; the axis starts at {y0:.d1$} {unit}");
     let mut chart = ChartBuilder::on(area)
         .caption(&caption, ("sans-serif", fitted(&caption, WIDTH, 14.0)))
         .margin(12)
@@ -99,8 +113,8 @@ fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, ste
         .max_light_lines(0)
         .x_labels(0)
         .y_labels(6)
-        .y_desc("power (W)")
-        .y_label_formatter(&|y| format!("{y:.0}"))
+        .y_desc(format!("power ({unit})"))
+        .y_label_formatter(&|y| format!("{y:.0$}", w.decimals(0)))
         .draw()
         .map_err(e)?;
     let blue = RGBColor(70, 110, 180);
@@ -116,7 +130,7 @@ fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, ste
             .collect::<Vec<_>>()
     };
     chart.draw_series(std::iter::once(Rectangle::new([(0.1, y0), (0.9, hi)], blue.filled()))).map_err(e)?;
-    chart.draw_series(above(0.0, hi, &["source".into(), format!("{hi:.1} W")])).map_err(e)?;
+    chart.draw_series(above(0.0, hi, &["source".into(), format!("{hi:.d1$} {unit}")])).map_err(e)?;
     for (i, s) in steps.iter().enumerate() {
         let x = i as f64 + 1.0;
         chart
@@ -125,11 +139,13 @@ fn draw(area: &DrawingArea<SVGBackend, plotters::coord::Shift>, title: &str, ste
         chart
             .draw_series(std::iter::once(Rectangle::new([(x + 0.1, s.to), (x + 0.9, s.from)], red.filled())))
             .map_err(e)?;
-        chart.draw_series(above(x, s.from, &[s.label.clone(), format!("−{:.2} W", s.from - s.to)])).map_err(e)?;
+        chart
+            .draw_series(above(x, s.from, &[s.label.clone(), format!("−{:.d2$} {unit}", s.from - s.to)]))
+            .map_err(e)?;
     }
     let x = n as f64 - 1.0;
     chart.draw_series(std::iter::once(Rectangle::new([(x + 0.1, y0), (x + 0.9, lo)], blue.filled()))).map_err(e)?;
-    chart.draw_series(above(x, lo, &["sink".into(), format!("{lo:.1} W")])).map_err(e)?;
+    chart.draw_series(above(x, lo, &["sink".into(), format!("{lo:.d1$} {unit}")])).map_err(e)?;
     // The cut axis: two short slashes across the y axis just above its foot.
     let (columns, rows) = chart.plotting_area().get_pixel_range();
     let (ox, oy) = area.get_base_pixel();

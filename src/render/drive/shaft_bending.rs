@@ -9,6 +9,7 @@ use crate::render::markup::md;
 use crate::render::svg::{figure, Panel};
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
+use crate::report::units::Units;
 
 /// The bending moment plot's file.
 pub(crate) const FILE: &str = "shaft_moments.svg";
@@ -25,11 +26,15 @@ pub(crate) fn inputs(out: &mut String, r: &DriveReport) {
     if shafts.iter().all(|s| s.beam.is_none()) {
         return;
     }
+    let units = Units::of_system(r.unit_system);
+    let len = units.length();
+    let mm = |x: f64| len.cell(x * 1e-3, 2);
     md!(out, "\n## Shaft sections (elastic beams)\n");
-    header(out, &["shaft", "from (mm)", "to (mm)", "D (mm)", "bore (mm)"]);
+    let heading = |name: &str| format!("{name} ({})", len.unit);
+    header(out, &["shaft", &heading("from"), &heading("to"), &heading("D"), &heading("bore")]);
     for s in shafts {
         for x in s.beam.iter().flat_map(|b| &b.sections_mm) {
-            row(out, &[s.name.clone(), fixed(x[0], 2), fixed(x[1], 2), fixed(x[2], 2), fixed(x[3], 2)]);
+            row(out, &[s.name.clone(), mm(x[0]), mm(x[1]), mm(x[2]), mm(x[3])]);
         }
     }
     md!(out);
@@ -39,18 +44,18 @@ pub(crate) fn inputs(out: &mut String, r: &DriveReport) {
             .supports
             .iter()
             .map(|p| match p.radial_stiffness {
-                Some(k) => format!("{} mm ({} N/m)", fixed(p.at_mm, 2), crate::numerics::rounding::sig(k)),
-                None => format!("{} mm (rigid)", fixed(p.at_mm, 2)),
+                Some(k) => format!("{} {} ({} N/m)", mm(p.at_mm), len.unit, crate::numerics::rounding::sig(k)),
+                None => format!("{} {} (rigid)", mm(p.at_mm), len.unit),
             })
             .collect();
         let theory = if b.theory == "timoshenko" { "Timoshenko (bending and shear)" } else { "Euler–Bernoulli" };
         md!(
             out,
-            "- {}: {} beam, {} (E = {} GPa, ν = {}), on {}.",
+            "- {}: {} beam, {} (E = {}, ν = {}), on {}.",
             s.name,
             theory,
             b.material,
-            fixed(b.youngs_modulus_gpa, 1),
+            units.modulus().with(b.youngs_modulus_gpa * 1e9, 1),
             fixed(b.poisson_ratio, 3),
             supports.join(", ")
         );
@@ -63,20 +68,40 @@ pub(crate) fn inputs(out: &mut String, r: &DriveReport) {
 
 /// One point's bent shafts: reactions, deflections and slopes at the gears, largest stress, and
 /// the stages' mesh misalignment.
-pub(crate) fn point(out: &mut String, d: &DrivePoint) {
+pub(crate) fn point(out: &mut String, d: &DrivePoint, units: Units) {
     if d.shafts.iter().all(|s| s.bending.is_none()) {
         return;
     }
-    header(out, &["shaft (elastic)", "place at (mm)", "R_x (N)", "R_y (N)", "R_z (N)"]);
+    let (len, f, micro) = (units.length(), units.force(), units.micro());
+    let (stress, torque) = (units.pressure(), units.torque());
+    header(
+        out,
+        &[
+            "shaft (elastic)",
+            &format!("place at ({})", len.unit),
+            &format!("R_x ({})", f.unit),
+            &format!("R_y ({})", f.unit),
+            &format!("R_z ({})", f.unit),
+        ],
+    );
     for s in d.shafts.iter().filter(|s| s.bending.is_some()) {
         for b in &s.bearings {
             let r = b.reaction;
-            let at = b.position.map_or_else(|| "—".into(), |x| fixed(x * 1e3, 2));
-            row(out, &[s.name.clone(), at, fixed(r[0], 2), fixed(r[1], 2), fixed(r[2], 2)]);
+            let at = b.position.map_or_else(|| "—".into(), |x| len.cell(x, 2));
+            row(out, &[s.name.clone(), at, f.cell(r[0], 2), f.cell(r[1], 2), f.cell(r[2], 2)]);
         }
     }
     md!(out);
-    header(out, &["shaft (elastic)", "gear", "at (mm)", "w_x, w_y (µm)", "θ_x, θ_y (µrad)"]);
+    header(
+        out,
+        &[
+            "shaft (elastic)",
+            "gear",
+            &format!("at ({})", len.unit),
+            &format!("w_x, w_y ({})", micro.unit),
+            "θ_x, θ_y (µrad)",
+        ],
+    );
     for s in &d.shafts {
         for g in s.bending.iter().flat_map(|b| &b.gears) {
             let stage = d.stages.get(g.stage);
@@ -89,8 +114,8 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
                         stage.map_or(g.member.name(), |x| x.member_name(g.member)),
                         stage.map_or(String::new(), |x| x.name.clone())
                     ),
-                    fixed(g.at * 1e3, 2),
-                    format!("{}, {}", fixed(g.deflection[0] * 1e6, 3), fixed(g.deflection[1] * 1e6, 3)),
+                    len.cell(g.at, 2),
+                    format!("{}, {}", micro.cell(g.deflection[0], 3), micro.cell(g.deflection[1], 3)),
                     format!("{}, {}", fixed(g.slope[0] * 1e6, 3), fixed(g.slope[1] * 1e6, 3)),
                 ],
             );
@@ -101,12 +126,12 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
         out,
         &[
             "shaft (elastic)",
-            "largest σ_b (MPa)",
-            "at (mm)",
-            "|M| there (N·m)",
-            "D there (mm)",
-            "largest |w| (µm)",
-            "at (mm)",
+            &format!("largest σ_b ({})", stress.unit),
+            &format!("at ({})", len.unit),
+            &format!("|M| there ({})", torque.unit),
+            &format!("D there ({})", len.unit),
+            &format!("largest |w| ({})", micro.unit),
+            &format!("at ({})", len.unit),
         ],
     );
     for s in &d.shafts {
@@ -115,12 +140,12 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
             out,
             &[
                 s.name.clone(),
-                fixed(b.max_stress * 1e-6, 3),
-                fixed(b.max_stress_at * 1e3, 2),
-                fixed(b.max_stress_moment, 3),
-                fixed(b.max_stress_diameter * 1e3, 2),
-                fixed(b.max_deflection * 1e6, 3),
-                fixed(b.max_deflection_at * 1e3, 2),
+                stress.cell(b.max_stress, 3),
+                len.cell(b.max_stress_at, 2),
+                torque.cell(b.max_stress_moment, 3),
+                len.cell(b.max_stress_diameter, 2),
+                micro.cell(b.max_deflection, 3),
+                len.cell(b.max_deflection_at, 2),
             ],
         );
     }
@@ -128,7 +153,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint) {
     let misaligned: Vec<_> = d.stages.iter().filter_map(|s| s.mesh_misalignment.map(|f| (s, f))).collect();
     if !misaligned.is_empty() {
         let words: Vec<String> =
-            misaligned.iter().map(|(s, f)| format!("stage {} {} µm", s.name, fixed(f * 1e6, 3))).collect();
+            misaligned.iter().map(|(s, f)| format!("stage {} {}", s.name, micro.with(*f, 3))).collect();
         md!(
             out,
             "Mesh misalignment from the shafts' bending (b × the gears' relative tilt on the line of action; reported, not fed back into the mesh): {}.\n",
@@ -144,6 +169,8 @@ pub(crate) fn moments(r: &DriveReport) -> Option<Result<String, String>> {
         return None;
     }
     let first = r.points.first()?;
+    let units = Units::of_system(r.unit_system);
+    let (len, torque, stress) = (units.length(), units.torque(), units.pressure());
     let panels: Vec<Panel> = first
         .point
         .shafts
@@ -152,27 +179,23 @@ pub(crate) fn moments(r: &DriveReport) -> Option<Result<String, String>> {
             let b = s.bending.as_ref()?;
             let mut line = Vec::with_capacity(2 * b.moment.len());
             for m in &b.moment {
-                line.push((m[0] * 1e3, m[1]));
-                line.push((m[0] * 1e3, m[2]));
+                line.push((len.value(m[0]), torque.value(m[1])));
+                line.push((len.value(m[0]), torque.value(m[2])));
             }
             let mut marks: Vec<(String, f64)> = s
                 .bearings
                 .iter()
                 .enumerate()
-                .filter_map(|(i, p)| Some((format!("B{}", i + 1), p.position? * 1e3)))
+                .filter_map(|(i, p)| Some((format!("B{}", i + 1), len.value(p.position?))))
                 .collect();
-            marks.extend(b.gears.iter().map(|g| ("G".to_string(), g.at * 1e3)));
+            marks.extend(b.gears.iter().map(|g| ("G".to_string(), len.value(g.at))));
             Some(Panel {
-                y_label: format!("shaft {}: |M| (N·m)", s.name),
-                x_label: "z on the shaft (mm); B bearing places, G gears".into(),
+                y_label: format!("shaft {}: |M| ({})", s.name, torque.unit),
+                x_label: format!("z on the shaft ({}); B bearing places, G gears", len.unit),
                 xy: vec![(String::new(), line)],
                 points: vec![(
-                    format!(
-                        "largest σ_b {} MPa at {} mm",
-                        fixed(b.max_stress * 1e-6, 2),
-                        fixed(b.max_stress_at * 1e3, 2)
-                    ),
-                    vec![(b.max_stress_at * 1e3, b.max_stress_moment)],
+                    format!("largest σ_b {} at {}", stress.with(b.max_stress, 2), len.with(b.max_stress_at, 2)),
+                    vec![(len.value(b.max_stress_at), torque.value(b.max_stress_moment))],
                 )],
                 marks,
                 ..Panel::default()

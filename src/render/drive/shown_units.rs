@@ -4,6 +4,7 @@
 //! report.md always used (×30/π, or none), so such a scene's report reads as it did to the byte.
 
 use crate::report::number::DisplayUnit;
+use crate::report::units::Units;
 
 /// rad/s to rpm.
 const RPM: f64 = 30.0 / std::f64::consts::PI;
@@ -37,17 +38,19 @@ impl Speed<'_> {
     }
 }
 
-/// The units one report shows its speeds and torques in.
+/// The units one report shows its speeds and torques in (as the scene wrote them), and its
+/// forces, powers, lengths and temperatures in (SI, or inch–pound for a drive sized in inches).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Shown<'a> {
     pub(crate) speed: Speed<'a>,
     pub(crate) torque: Torque<'a>,
+    pub(crate) units: Units,
 }
 
 impl<'a> Shown<'a> {
     /// The units the drive's report was written in.
     pub(crate) fn of(r: &'a crate::report::drive::DriveReport) -> Shown<'a> {
-        Shown { speed: Speed(&r.speed_unit), torque: Torque(&r.torque_unit) }
+        Shown { speed: Speed(&r.speed_unit), torque: Torque(&r.torque_unit), units: Units::of_system(r.unit_system) }
     }
 }
 
