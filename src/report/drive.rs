@@ -173,7 +173,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
     let mut report = DriveReport {
         title: scene.title.clone(),
         slug: super::slug::slug(&scene.title),
-        stages: super::drive_inputs::stage_inputs(drive),
+        stages: super::drive_inputs::stage_inputs(drive, super::units::Units::of_system(drive_unit_system(drive))),
         shafts: super::drive_inputs::shaft_inputs(layout),
         overall_ratio: crate::drive::walk::overall_ratio(layout),
         oil: super::drive_inputs::oil_rows(scene),

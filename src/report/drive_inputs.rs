@@ -73,7 +73,7 @@ pub struct SupportInputs {
     pub radial_stiffness: Option<f64>,
 }
 
-pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
+pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Vec<StageInputs> {
     let layout = &drive.layout;
     layout
         .stages
@@ -104,15 +104,26 @@ pub(super) fn stage_inputs(drive: &SceneDrive) -> Vec<StageInputs> {
                 working_pressure_angle_deg: g.operating_pressure_angle.to_degrees(),
                 contact_ratio: g.contact_ratio,
                 overlap_ratio: g.overlap_ratio,
-                lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), lubrication_words),
+                lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), |l| lubrication_words(l, units)),
                 planetary: super::planetary_inputs::planetary_inputs(layout, s, ring_pair.as_ref()),
             }
         })
         .collect()
 }
 
-fn lubrication_words(l: &crate::losses::Lubrication) -> String {
+/// The stage's lubrication in words (a dip's sizes in in for a report in inch–pound units).
+fn lubrication_words(l: &crate::losses::Lubrication, units: super::units::Units) -> String {
     match *l {
+        crate::losses::Lubrication::Dip { immersion, axis_height, housing_width } if !units.is_si() => {
+            let len = units.length();
+            format!(
+                "dip: immersion {} / {}, axis height {}, housing width {}",
+                len.cell(immersion[0], 2),
+                len.with(immersion[1], 2),
+                len.with(axis_height, 2),
+                len.with(housing_width, 2)
+            )
+        }
         crate::losses::Lubrication::Dip { immersion, axis_height, housing_width } => format!(
             "dip: immersion {} / {} mm, axis height {} mm, housing width {} mm",
             immersion[0] * 1e3,

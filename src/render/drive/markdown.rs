@@ -215,10 +215,35 @@ fn inputs(out: &mut String, r: &DriveReport) {
     super::shaft_bending::inputs(out, r);
     md!(out, "\n## Oil (one sump)\n");
     header(out, &["value", "", "unit"]);
+    let units = Units::of_system(r.unit_system);
     for (what, v, unit) in &r.oil {
-        row(out, &[what.clone(), fixed(*v, 4), unit.clone()]);
+        let (v, unit) = input_shown(*v, unit, units);
+        row(out, &[what.clone(), v, unit]);
     }
     md!(out);
+}
+
+/// An input row's value (4 decimals) and unit as the report shows it: as the report holds it in SI,
+/// or converted to the inch–pound unit of its kind (a unit of no other kind stays as it is).
+fn input_shown(value: f64, unit: &str, units: Units) -> (String, String) {
+    let kind = match unit {
+        _ if units.is_si() => None,
+        "degC" => {
+            let t = units.temperature();
+            return (fixed(t.from_celsius(value), 4), t.unit.into());
+        }
+        "mPa*s" => Some((units.dynamic_viscosity(), 1e-3)),
+        "mm^2/s" => Some((units.kinematic_viscosity(), 1e-6)),
+        "kg/m^3" => Some((units.density(), 1.0)),
+        "m^2" => Some((units.area(), 1.0)),
+        "m/s" => Some((units.velocity(), 1.0)),
+        "W/K" => Some((units.conductance(), 1.0)),
+        _ => None,
+    };
+    match kind {
+        Some((shown, to_si)) => (fixed(shown.value(value * to_si), 4), shown.unit.into()),
+        None => (fixed(value, 4), unit.into()),
+    }
 }
 
 fn thermal(out: &mut String, r: &DriveReport) {
@@ -231,7 +256,8 @@ fn thermal(out: &mut String, r: &DriveReport) {
     md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed.\n");
     header(out, &["housing", "", "unit"]);
     for (what, v, unit) in &r.housing {
-        row(out, &[what.clone(), fixed(*v, 4), unit.clone()]);
+        let (v, unit) = input_shown(*v, unit, u.units);
+        row(out, &[what.clone(), v, unit]);
     }
     md!(out);
     header(
