@@ -103,6 +103,11 @@ impl Shown {
         format!("{} {}", self.cell(si, si_decimals), self.unit)
     }
 
+    /// A heading with its unit in brackets: `F_t (N)`, `F_t (lbf)`.
+    pub fn titled(&self, name: &str) -> String {
+        format!("{name} ({})", self.unit)
+    }
+
     /// A column heading: `d mm`, `d in`.
     pub fn heading(&self, name: &str) -> String {
         format!("{name} {}", self.unit)

@@ -82,7 +82,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
                 &format!("torques ({})", u.torque.unit()),
                 &format!("speeds ({})", u.speed.unit()),
                 "least η of the grid points (drive)",
-                &format!("most loss of the grid points ({})", w.unit),
+                &w.titled("most loss of the grid points"),
                 "most passes",
             ],
         );

@@ -31,11 +31,11 @@ pub(crate) fn inputs(out: &mut String, stages: &[StageInputs], units: Units) {
             "i₀",
             "ratio",
             "(z_s + z_r)/n",
-            &format!("neighbour gap ({})", len.unit),
+            &len.titled("neighbour gap"),
             "α_w ring mesh (°)",
             "ε_α ring mesh",
-            &format!("d_a ring ({})", len.unit),
-            &format!("planet mass ({})", mass.unit),
+            &len.titled("d_a ring"),
+            &mass.titled("planet mass"),
             "planet bearing",
         ],
     );
@@ -87,7 +87,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
                 "member",
                 &format!("n ({}, + ccw)", n.unit()),
                 &format!("T ({}, on the member)", t.unit()),
-                &format!("P in ({})", w.unit),
+                &w.titled("P in"),
             ],
         );
         for m in crate::drive::kinematics::planetary::PlanetaryMember::ALL {
@@ -110,7 +110,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, u: Shown) {
                 &format!("pinion T per planet ({})", t.unit()),
                 &format!("n in the carrier's frame ({})", n.unit()),
                 "η (%)",
-                &format!("loss, all planets ({})", w.unit),
+                &w.titled("loss, all planets"),
             ],
         );
         for (i, name) in ["sun–planet", "planet–ring"].iter().enumerate() {

@@ -41,12 +41,12 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
             &format!("T driving ({})", t.unit()),
             &format!("T driven ({})", t.unit()),
             &format!("n driving ({})", n.unit()),
-            &format!("F_t ({})", f.unit),
-            &format!("F_r ({})", f.unit),
-            &format!("F_a ({})", f.unit),
+            &f.titled("F_t"),
+            &f.titled("F_r"),
+            &f.titled("F_a"),
             "η_mesh (%)",
-            &format!("mesh loss ({})", w.unit),
-            &format!("no-load ({})", w.unit),
+            &w.titled("mesh loss"),
+            &w.titled("no-load"),
             "law outside validity",
         ],
     );
@@ -79,11 +79,11 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
             &format!("n ({}, + ccw)", n.unit()),
             &format!("T received ({})", t.unit()),
             &format!("T passed ({})", t.unit()),
-            &format!("P received ({})", w.unit),
-            &format!("P passed ({})", w.unit),
-            &format!("bearings ({})", w.unit),
-            &format!("seals ({})", w.unit),
-            &format!("gears no-load ({})", w.unit),
+            &w.titled("P received"),
+            &w.titled("P passed"),
+            &w.titled("bearings"),
+            &w.titled("seals"),
+            &w.titled("gears no-load"),
         ],
     );
     for s in &d.shafts {
@@ -108,13 +108,13 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
         out,
         &[
             "shaft",
-            &format!("place at ({})", len.unit),
+            &len.titled("place at"),
             "type × count",
             "locating",
-            &format!("F_r per bearing ({})", f.unit),
-            &format!("F_a per bearing ({})", f.unit),
-            &format!("P_0 ({})", w.unit),
-            &format!("P_1 ({})", w.unit),
+            &f.titled("F_r per bearing"),
+            &f.titled("F_a per bearing"),
+            &w.titled("P_0"),
+            &w.titled("P_1"),
         ],
     );
     for s in &d.shafts {
@@ -136,10 +136,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
     }
     md!(out);
     super::shaft_bending::point(out, d, u.units);
-    header(
-        out,
-        &["shaft", "gear", &format!("point x, y, z ({})", len.unit), &format!("force F_x, F_y, F_z ({})", f.unit)],
-    );
+    header(out, &["shaft", "gear", &len.titled("point x, y, z"), &f.titled("force F_x, F_y, F_z")]);
     for s in &d.shafts {
         for l in &s.gear_loads {
             row(

@@ -74,16 +74,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, units: Units) {
     }
     let (len, f, micro) = (units.length(), units.force(), units.micro());
     let (stress, torque) = (units.pressure(), units.torque());
-    header(
-        out,
-        &[
-            "shaft (elastic)",
-            &format!("place at ({})", len.unit),
-            &format!("R_x ({})", f.unit),
-            &format!("R_y ({})", f.unit),
-            &format!("R_z ({})", f.unit),
-        ],
-    );
+    header(out, &["shaft (elastic)", &len.titled("place at"), &f.titled("R_x"), &f.titled("R_y"), &f.titled("R_z")]);
     for s in d.shafts.iter().filter(|s| s.bending.is_some()) {
         for b in &s.bearings {
             let r = b.reaction;
@@ -92,16 +83,7 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, units: Units) {
         }
     }
     md!(out);
-    header(
-        out,
-        &[
-            "shaft (elastic)",
-            "gear",
-            &format!("at ({})", len.unit),
-            &format!("w_x, w_y ({})", micro.unit),
-            "θ_x, θ_y (µrad)",
-        ],
-    );
+    header(out, &["shaft (elastic)", "gear", &len.titled("at"), &micro.titled("w_x, w_y"), "θ_x, θ_y (µrad)"]);
     for s in &d.shafts {
         for g in s.bending.iter().flat_map(|b| &b.gears) {
             let stage = d.stages.get(g.stage);
@@ -126,12 +108,12 @@ pub(crate) fn point(out: &mut String, d: &DrivePoint, units: Units) {
         out,
         &[
             "shaft (elastic)",
-            &format!("largest σ_b ({})", stress.unit),
-            &format!("at ({})", len.unit),
-            &format!("|M| there ({})", torque.unit),
-            &format!("D there ({})", len.unit),
-            &format!("largest |w| ({})", micro.unit),
-            &format!("at ({})", len.unit),
+            &stress.titled("largest σ_b"),
+            &len.titled("at"),
+            &torque.titled("|M| there"),
+            &len.titled("D there"),
+            &micro.titled("largest |w|"),
+            &len.titled("at"),
         ],
     );
     for s in &d.shafts {

@@ -134,14 +134,14 @@ pub fn film(r: &Report) -> Result<String, String> {
     };
     let mut panels = vec![
         Panel {
-            y_label: format!("central film h_c ({})", micro.unit),
+            y_label: micro.titled("central film h_c"),
             x_label: along_label(r),
             xy: xy(&|f| Some(micro.value(f.central_film.si()))),
             marks: marks_mm(r),
             ..Default::default()
         },
         Panel {
-            y_label: format!("minimum film h_min ({})", micro.unit),
+            y_label: micro.titled("minimum film h_min"),
             x_label: along_label(r),
             xy: xy(&|f| Some(micro.value(f.minimum_film.si()))),
             marks: marks_mm(r),

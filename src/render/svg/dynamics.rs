@@ -24,16 +24,16 @@ pub fn dynamics_point(r: &Report, k: usize) -> Result<String, String> {
     let u = r.units();
     let (micro, force) = (u.micro(), u.force());
     let second = if c.oloa.is_empty() {
-        tau_panel(&format!("tooth force per pair ({})", force.unit), shown(&c.pair_force, force))
+        tau_panel(&force.titled("tooth force per pair"), shown(&c.pair_force, force))
     } else {
-        tau_panel(&format!("OLOA bearing force K_y y ({})", force.unit), shown(&c.oloa, force))
+        tau_panel(&force.titled("OLOA bearing force K_y y"), shown(&c.oloa, force))
     };
     let panels = [
-        tau_panel(&format!("DTE x ({})", micro.unit), shown(&c.dte, micro)),
+        tau_panel(&micro.titled("DTE x"), shown(&c.dte, micro)),
         second,
-        tau_panel(&format!("applied friction force Σ μ w N ({})", force.unit), shown(&c.friction_force, force)),
+        tau_panel(&force.titled("applied friction force Σ μ w N"), shown(&c.friction_force, force)),
         Panel {
-            y_label: format!("DTE harmonic amplitude ({})", micro.unit),
+            y_label: micro.titled("DTE harmonic amplitude"),
             x_label: "mesh order".into(),
             x: orders,
             series: c.spectrum.iter().map(|(l, v)| (l.clone(), v.iter().map(|x| micro.value(*x)).collect())).collect(),
@@ -74,13 +74,13 @@ pub fn free_response(r: &Report, k: usize) -> Result<String, String> {
         .collect();
     let panels = [
         Panel {
-            y_label: format!("free DTE ({})", micro.unit),
+            y_label: micro.titled("free DTE"),
             x_label: format!("time in mesh periods (the first {SHOWN})"),
             xy: first,
             ..Default::default()
         },
         Panel {
-            y_label: format!("largest |DTE| in the period ({})", micro.unit),
+            y_label: micro.titled("largest |DTE| in the period"),
             x_label: "mesh period (its middle)".into(),
             xy: envelope,
             ..Default::default()

@@ -43,8 +43,8 @@ fn plane(
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_desc(format!("u from T1 ({})", len.unit))
-        .y_desc(format!("z across the face ({})", len.unit))
+        .x_desc(len.titled("u from T1"))
+        .y_desc(len.titled("z across the face"))
         .draw()
         .map_err(e)?;
     if let Some((_, u, values)) = mu {
@@ -97,7 +97,7 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
     let len = r.units().length();
     let mm = |v: &Vec<f64>| v.iter().map(|x| len.value(*x)).collect::<Vec<_>>();
     let panel = Panel {
-        y_label: format!("contact length ({})", len.unit),
+        y_label: len.titled("contact length"),
         x_label: "τ (mesh periods)".into(),
         x: tau.clone(),
         series: vec![

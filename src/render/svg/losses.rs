@@ -62,7 +62,7 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
             .x_labels(bars.len().max(1))
             .x_label_formatter(&|x| format!("{}", x.round() as i64 + 1))
             .x_desc("bar (operating point and law, listed at right)")
-            .y_desc(format!("total power loss of the gearbox ({})", power.unit))
+            .y_desc(power.titled("total power loss of the gearbox"))
             .draw()
             .map_err(e)?;
         for (i, (_, parts)) in bars.iter().enumerate() {

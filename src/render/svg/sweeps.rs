@@ -69,7 +69,7 @@ pub fn sweep(r: &Report, by_speed: bool) -> Result<String, String> {
             ..Default::default()
         },
         Panel {
-            y_label: format!("mesh friction power loss, all contacts ({})", power.unit),
+            y_label: power.titled("mesh friction power loss, all contacts"),
             x_label,
             x: xs,
             series: loss,
@@ -214,7 +214,7 @@ pub fn sweep_mu(r: &Report) -> Result<String, String> {
             ..Default::default()
         },
         Panel {
-            y_label: format!("friction power loss ({})", power.unit),
+            y_label: power.titled("friction power loss"),
             x_label: "coefficient of friction μ".into(),
             x: xs.clone(),
             series: pick(2),

@@ -104,7 +104,7 @@ pub fn mesh_stiffness(r: &Report) -> Result<String, String> {
     lines(
         &format!("{}: mesh stiffness from the teeth", r.title),
         &position_label(u),
-        &format!("stiffness ({})", k_unit.unit),
+        &k_unit.titled("stiffness"),
         &curves,
         true,
     )
@@ -132,7 +132,7 @@ pub fn transmission_error(r: &Report) -> Result<String, String> {
     lines(
         &format!("{}: static transmission error", r.title),
         &position_label(u),
-        &format!("STE along the line of action ({})", micro.unit),
+        &micro.titled("STE along the line of action"),
         &curves,
         true,
     )

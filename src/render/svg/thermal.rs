@@ -39,12 +39,7 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
             .y_label_area_size(70)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(err)?;
-        chart
-            .configure_mesh()
-            .x_desc(format!("oil temperature θ ({})", deg.unit))
-            .y_desc(format!("power ({})", w.unit))
-            .draw()
-            .map_err(err)?;
+        chart.configure_mesh().x_desc(deg.titled("oil temperature θ")).y_desc(w.titled("power")).draw().map_err(err)?;
         let line = |v: &[f64]| t.iter().copied().zip(v.iter().copied()).filter(|p| p.1.is_finite()).collect::<Vec<_>>();
         chart
             .draw_series(LineSeries::new(line(p_v), PALETTE[0].stroke_width(2)))
@@ -119,12 +114,7 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
             .y_label_area_size(60)
             .build_cartesian_2d(0.0..end.max(1e-9), y0..y1)
             .map_err(err)?;
-        chart
-            .configure_mesh()
-            .x_desc("time (min)")
-            .y_desc(format!("oil temperature θ ({})", deg.unit))
-            .draw()
-            .map_err(err)?;
+        chart.configure_mesh().x_desc("time (min)").y_desc(deg.titled("oil temperature θ")).draw().map_err(err)?;
         let mut start = 0.0;
         for (k, step) in d.steps.iter().enumerate() {
             let stop = start + step.duration.si() / 60.0;
@@ -190,7 +180,7 @@ pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
             .x_labels(bars.len().min(30))
             .x_label_formatter(&|x| format!("{}", x.round() as i64))
             .x_desc("step")
-            .y_desc(format!("energy lost ({})", energy.unit))
+            .y_desc(energy.titled("energy lost"))
             .draw()
             .map_err(err)?;
         let series = [(0, -0.2, "transient from ambient"), (1, 0.2, "at the fixed oil temperature")];
