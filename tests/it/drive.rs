@@ -342,8 +342,9 @@ const ONE_STAGE: &str = r#"scene "one stage" {
     analyses { efficiency(formulations = [external]) }
 }"#;
 
-/// Stage kinds: each row names its file in `src/drive/kinematics/`, each entry file has a row, every
-/// row sits at its identity's index.
+/// Stage kinds: each row names its kinematics file in `src/drive/kinematics/` and has its model
+/// `src/drive/<name>_stage.rs` registered in `stage_kinds.rs`; each such file has a row; every row
+/// sits at its identity's index.
 #[test]
 fn stage_kinds_one_file_one_row() {
     use gearloss::drive::kinematics::STAGE_KINDS;
@@ -354,6 +355,20 @@ fn stage_kinds_one_file_one_row() {
         .collect();
     let rows: std::collections::BTreeSet<String> = STAGE_KINDS.iter().map(|k| k.file.to_string()).collect();
     assert_eq!(files, rows, "files in src/drive/kinematics/ and rows of STAGE_KINDS differ");
+    // Each kind's model (its StageModel, what the walk reads of it) is src/drive/<name>_stage.rs,
+    // registered in stage_kinds.rs.
+    let models: std::collections::BTreeSet<String> = std::fs::read_dir(crate::root().join("src/drive"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with("_stage.rs"))
+        .collect();
+    let named: std::collections::BTreeSet<String> =
+        STAGE_KINDS.iter().map(|k| format!("{}_stage.rs", k.name)).collect();
+    assert_eq!(models, named, "model files src/drive/*_stage.rs and rows of STAGE_KINDS differ");
+    let registry = std::fs::read_to_string(crate::root().join("src/drive/stage_kinds.rs")).unwrap();
+    for k in STAGE_KINDS {
+        assert!(registry.contains(&format!("StageKind::{:?}", k.id)), "stage_kinds.rs has no row for {}", k.name);
+    }
     for (i, k) in STAGE_KINDS.iter().enumerate() {
         assert_eq!(k.id as usize, i, "{}", k.name);
     }
