@@ -31,6 +31,13 @@ impl KindPoint {
         }
     }
 
+    /// The values of its kind's columns of drive_records.csv (`StageModel::record_columns`).
+    pub fn record_values(&self) -> Vec<f64> {
+        match self {
+            KindPoint::Planetary(p) => p.record_values(),
+        }
+    }
+
     /// The kind's meshes at the point, as the walk evaluated them.
     pub fn mesh_states(&self) -> Vec<MeshState> {
         match self {

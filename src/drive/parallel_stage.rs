@@ -77,4 +77,16 @@ impl StageModel for ParallelStage {
     fn one_pair_on_two_shafts(&self) -> bool {
         true
     }
+
+    fn mesh_gears(&self) -> &'static [[&'static str; 2]] {
+        &[["pinion", "wheel"]]
+    }
+
+    fn record_columns(&self) -> &'static [&'static str] {
+        &[]
+    }
+
+    fn shaft_notes(&self, _: &Stage, _: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)> {
+        Vec::new()
+    }
 }

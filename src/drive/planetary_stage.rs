@@ -10,7 +10,7 @@
 
 use super::forces::{GearLoad, MeshForceSizes};
 use super::kind_state::{KindPoint, KindState};
-use super::kinematics::planetary::PlanetaryLayout;
+use super::kinematics::planetary::{PlanetaryLayout, PlanetaryMember};
 use super::kinematics::StageKinematics;
 use super::layout::{Member, Stage};
 use super::mesh_efficiency::MeshEfficiency;
@@ -107,6 +107,67 @@ impl StageModel for PlanetaryLayout {
 
     fn one_pair_on_two_shafts(&self) -> bool {
         false
+    }
+
+    /// The sun–planet mesh (the sun the pinion) and the planet–ring mesh (the planet the pinion).
+    fn mesh_gears(&self) -> &'static [[&'static str; 2]] {
+        &[["sun", "planet"], ["planet", "ring"]]
+    }
+
+    /// Its members, its meshes, its planets.
+    fn record_columns(&self) -> &'static [&'static str] {
+        &[
+            "sun_speed_rpm",
+            "sun_torque_N_m",
+            "ring_speed_rpm",
+            "ring_torque_N_m",
+            "carrier_speed_rpm",
+            "carrier_torque_N_m",
+            "rolling_power_W",
+            "basic_efficiency",
+            "sun_planet_efficiency",
+            "planet_ring_efficiency",
+            "sun_planet_loss_W",
+            "planet_ring_loss_W",
+            "planet_bearing_load_N",
+            "planet_bearings_W",
+            "churning_W",
+        ]
+    }
+
+    /// A sun on a shaft of one bearing place: a floating sun.
+    fn shaft_notes(&self, stage: &Stage, bearing_places: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)> {
+        let sun = self.place_of(PlanetaryMember::Sun).map(|m| stage.places[m].shaft);
+        sun.filter(|j| bearing_places(*j) == 1)
+            .map(|j| {
+                (
+                    j,
+                    "a floating sun on one bearing place".to_string(),
+                    "its planets centre the sun, their forces cancel on it, so the place takes only what they leave (a helical sun's axial force)".to_string(),
+                )
+            })
+            .into_iter()
+            .collect()
+    }
+}
+
+impl PlanetaryPoint {
+    /// The values of [`StageModel::record_columns`] (speeds in rpm).
+    pub(crate) fn record_values(&self) -> Vec<f64> {
+        const RPM: f64 = 30.0 / std::f64::consts::PI;
+        let mut v = Vec::with_capacity(15);
+        for i in 0..3 {
+            v.extend([self.speeds[i] * RPM, self.torques[i]]);
+        }
+        v.extend([self.rolling_power, self.basic_efficiency, self.mesh_efficiency[0], self.mesh_efficiency[1]]);
+        v.extend([
+            self.mesh_loss[0],
+            self.mesh_loss[1],
+            self.forces.bearing,
+            self.planet_bearings[0] + self.planet_bearings[1],
+        ]);
+        v.push(self.churning);
+        v
     }
 }
 

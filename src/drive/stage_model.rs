@@ -72,4 +72,16 @@ pub(crate) trait StageModel {
 
     /// Whether the stage is one pair on two shafts, whose mesh misalignment their bending gives.
     fn one_pair_on_two_shafts(&self) -> bool;
+
+    /// The gears [in the pinion's place, in the wheel's] of each of its meshes, in mesh order (mesh
+    /// 0 the stage's own pair).
+    fn mesh_gears(&self) -> &'static [[&'static str; 2]];
+
+    /// The kind's own columns of drive_records.csv, after every stage's (the values are its
+    /// [`KindPoint::record_values`]).
+    fn record_columns(&self) -> &'static [&'static str];
+
+    /// What the report notes of the shafts the stage sits on: (shaft, what it carries, why that is
+    /// sound), e.g. a gear the kind centres on a shaft of one bearing place.
+    fn shaft_notes(&self, stage: &Stage, bearing_places: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)>;
 }

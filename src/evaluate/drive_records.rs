@@ -57,9 +57,7 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
         for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W", "validity_outside"] {
             cols.push(format!("stage_{}_{c}", s.name));
         }
-        if s.planetary().is_some() {
-            cols.extend(PLANETARY.iter().map(|c| format!("stage_{}_{c}", s.name)));
-        }
+        cols.extend(s.model().record_columns().iter().map(|c| format!("stage_{}_{c}", s.name)));
     }
     for s in &drive.layout.shafts {
         for i in 0..s.bearings.len() {
@@ -88,25 +86,6 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
 /// The whole-number and the text columns; every other column is a number.
 const INTS: &[&str] = &["row", "torque_index", "speed_index", "law_index", "passes"];
 const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver"];
-
-/// A planetary stage's columns: its members, its meshes, its planets.
-const PLANETARY: [&str; 15] = [
-    "sun_speed_rpm",
-    "sun_torque_N_m",
-    "ring_speed_rpm",
-    "ring_torque_N_m",
-    "carrier_speed_rpm",
-    "carrier_torque_N_m",
-    "rolling_power_W",
-    "basic_efficiency",
-    "sun_planet_efficiency",
-    "planet_ring_efficiency",
-    "sun_planet_loss_W",
-    "planet_ring_loss_W",
-    "planet_bearing_load_N",
-    "planet_bearings_W",
-    "churning_W",
-];
 
 /// One row, written as CSV (numbers in Rust's shortest round-trip form, as every file of the
 /// report writes them).
@@ -165,15 +144,8 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
         cells.push(Cell::Text(s.member_name(s.driving).to_string()));
         cells.extend(reals(&[s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load]));
         cells.push(int(outside.get(k).copied().unwrap_or(0)));
-        if let Some(p) = s.planetary() {
-            let mut v = Vec::with_capacity(PLANETARY.len());
-            for i in 0..3 {
-                v.extend([p.speeds[i] * RPM, p.torques[i]]);
-            }
-            v.extend([p.rolling_power, p.basic_efficiency, p.mesh_efficiency[0], p.mesh_efficiency[1]]);
-            v.extend([p.mesh_loss[0], p.mesh_loss[1], p.forces.bearing, p.planet_bearings[0] + p.planet_bearings[1]]);
-            v.push(p.churning);
-            cells.extend(reals(&v));
+        if let Some(kind) = &s.kind {
+            cells.extend(reals(&kind.record_values()));
         }
     }
     for s in &d.shafts {

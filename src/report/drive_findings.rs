@@ -33,23 +33,20 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: U
         });
     }
     out.extend(undercut_findings(drive));
-    let carries_a_sun = |j: usize| {
-        layout.stages.iter().any(|st| {
-            st.planetary().is_some_and(|p| {
-                p.place_of(crate::drive::kinematics::planetary::PlanetaryMember::Sun)
-                    .is_some_and(|m| st.places[m].shaft == j)
-            })
-        })
-    };
-    for (_, shaft) in layout.shafts.iter().enumerate().filter(|(j, s)| s.bearings.len() == 1 && carries_a_sun(*j)) {
-        out.push(Finding {
-            severity: Severity::Note,
-            message: format!(
-                "shaft `{}` carries a floating sun on one bearing place ({}): its planets centre the sun, their forces cancel on it, so the place takes only what they leave (a helical sun's axial force)",
-                shaft.name,
-                place_at(shaft.bearings[0].position, units)
-            ),
-        });
+    // What a stage's kind notes of the shafts it sits on (a floating sun on one bearing place).
+    let places = |j: usize| layout.shafts[j].bearings.len();
+    for stage in &layout.stages {
+        for (j, what, why) in stage.model().shaft_notes(stage, &places) {
+            let shaft = &layout.shafts[j];
+            out.push(Finding {
+                severity: Severity::Note,
+                message: format!(
+                    "shaft `{}` carries {what} ({}): {why}",
+                    shaft.name,
+                    place_at(shaft.bearings[0].position, units)
+                ),
+            });
+        }
     }
     let loads = points.iter().flat_map(|p| {
         layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
@@ -178,15 +175,10 @@ pub(super) fn unsettled_rows(
 fn undercut_findings(drive: &SceneDrive) -> Vec<Finding> {
     let mut out = Vec::new();
     for (k, stage) in drive.layout.stages.iter().enumerate() {
-        let planetary = stage.planetary().is_some();
-        let meshes = [
-            (drive.pairs.get(k), if planetary { ["sun", "planet"] } else { ["pinion", "wheel"] }),
-            (drive.ring_pairs.get(k).and_then(Option::as_ref), ["planet", "ring"]),
-        ];
-        for (pair, names) in meshes {
-            let Some(g) = pair.and_then(|p| p.geometry().ok()) else { continue };
+        for (mesh, names) in stage.model().mesh_gears().iter().enumerate() {
+            let Ok(g) = drive.mesh_pair(k, mesh).geometry() else { continue };
             out.extend(
-                super::undercut_notes::undercut_notes(&g, names)
+                super::undercut_notes::undercut_notes(&g, *names)
                     .into_iter()
                     .map(|m| Finding { severity: Severity::Warning, message: format!("stage `{}`: {m}", stage.name) }),
             );
