@@ -35,10 +35,11 @@
 //!                                 cycle's pieces with exact wheel energies (the box's losses over them
 //!                                 come in from evaluate/drive_cycle)
 //!  drive/                         a gearbox of several stages: its layout, the stage-kind catalogue
-//!                                 (kinematics/: parallel, planetary), the power walk and its fixed
-//!                                 point, mesh forces, shaft statics, a planetary stage's meshes,
-//!                                 planets and forces (planetary/; the mesh efficiency comes in from
-//!                                 evaluate/drive)
+//!                                 (kinematics/: each kind's data and kinematics; a kind's physics in
+//!                                 the walk one StageModel: parallel_stage, planetary_stage), the
+//!                                 power walk and its fixed point (never asking a stage's kind), mesh
+//!                                 forces, shaft statics, a planetary stage's meshes, planets and
+//!                                 forces (planetary/; the mesh efficiency comes in from evaluate/drive)
 //!  dynamics/                      the n-state periodic engine (PeriodicModel: propagators, Floquet,
 //!                                 trajectory, integrators, numerics study) and the model catalogue
 //!                                 (models/: SDOF, 6-DOF behind GearDynamics; generic analysis data)
@@ -58,7 +59,8 @@
 //! Where a new model goes (ARCHITECTURE.md, "Where a new model goes"): a friction law is one file in
 //! `friction/` and one row of [`friction::catalog::LAWS`]; a mesh stiffness model one file in
 //! `geometry/stiffness/` and one row of [`geometry::stiffness::MODELS`]; a stage kind of a drive one
-//! file in `drive/kinematics/` and one row of [`drive::kinematics::STAGE_KINDS`]; a dynamic model one file in
+//! file in `drive/kinematics/` and one row of [`drive::kinematics::STAGE_KINDS`] with its `StageModel` in
+//! `drive/<name>_stage.rs` (README, "Adding a stage kind"); a dynamic model one file in
 //! `dynamics/models/` (a [`dynamics::models::GearDynamics`], usually over a
 //! [`dynamics::PeriodicModel`] of its own) and one row of [`dynamics::models::MODELS`]; a loss part
 //! one file in `losses/parts/` and one row of [`losses::parts::PARTS`] (a new column, a row of

@@ -10,6 +10,10 @@
 //!                                        mesh forces (forces) ─statics─▶ bearing loads ─┘
 //! ```
 //!
+//! A stage kind is one `StageModel` (`stage_model.rs`) (`parallel_stage.rs`, `planetary_stage.rs`; one
+//! row of `Stage::model` in `stage_kinds.rs`): the walk reads every stage through it and never asks
+//! its kind.
+//!
 //! The mesh efficiency comes in from outside ([`mesh_efficiency::MeshEfficiency`]): the evaluation builds one per
 //! stage from the stage's own pair (a checked mesh, never the scene), with the driving member in
 //! the pinion's role.
