@@ -74,6 +74,10 @@ impl StageModel for ParallelStage {
         (sizes.magnitudes(driving, torque), None)
     }
 
+    fn centred_member(&self, _: Member) -> bool {
+        false
+    }
+
     fn one_pair_on_two_shafts(&self) -> bool {
         true
     }

@@ -105,6 +105,11 @@ impl StageModel for PlanetaryLayout {
         (forces, Some(Box::new(KindPoint::Planetary(point))))
     }
 
+    /// A sun among two planets or more: a floating sun.
+    fn centred_member(&self, m: Member) -> bool {
+        self.planets >= 2 && self.members[m.index()] == PlanetaryMember::Sun
+    }
+
     fn one_pair_on_two_shafts(&self) -> bool {
         false
     }

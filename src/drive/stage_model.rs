@@ -70,6 +70,10 @@ pub(crate) trait StageModel {
         parts: ([f64; 2], f64),
     ) -> ([f64; 3], Option<Box<KindPoint>>);
 
+    /// Whether the member on place `m` is centred by the kind's own bodies (a sun among two planets
+    /// or more: a floating sun), so that one bearing place may carry its shaft when it is alone there.
+    fn centred_member(&self, m: Member) -> bool;
+
     /// Whether the stage is one pair on two shafts, whose mesh misalignment their bending gives.
     fn one_pair_on_two_shafts(&self) -> bool;
 

@@ -71,18 +71,18 @@ pub(super) fn build_drive(
             );
             continue;
         }
-        let planetary = s.planetary.as_ref().and_then(|d| planetary_layout(&s.pair, d));
+        let (kind, teeth) = s
+            .kind
+            .lowered(&s.pair)
+            .unwrap_or((StageKind::Parallel, [s.pair.pinion.teeth.value, s.pair.wheel.teeth.value]));
         built.push(Stage {
             name: s.name.text.clone(),
             places: [GearPlace { shaft: p, at: s.places[0].1 }, GearPlace { shaft: w, at: s.places[1].1 }],
-            teeth: match &planetary {
-                Some(l) => [l.teeth[0], l.teeth[2]],
-                None => [s.pair.pinion.teeth.value, s.pair.wheel.teeth.value],
-            },
+            teeth,
             hand: s.hand,
             direction: s.direction.as_ref().map_or(0.0, |d| d.value.value),
             lubrication: s.lubrication,
-            kind: planetary.map_or(StageKind::Parallel, |l| StageKind::Planetary(Box::new(l))),
+            kind,
         });
     }
     if errors.len() > before {
@@ -233,19 +233,19 @@ fn check_layout(decls: &[StageDecl], stages: &[Stage], shafts: &[ShaftDecl], err
         let Ok(g) = d.pair.geometry() else { continue };
         let (dx, dy) = (w[0] - p[0], w[1] - p[1]);
         let distance = dx.hypot(dy);
-        if d.planetary.is_some() {
+        if let Some(what) = d.kind.coaxial() {
             if distance > CENTRE_TOLERANCE {
                 errors.push(
                     Diagnostic::new(
                         DiagnosticKind::Geometry,
                         span,
                         format!(
-                            "the shafts of planetary stage `{}` are {:.4} mm apart: its members turn about one axis",
+                            "the shafts of {what} `{}` are {:.4} mm apart: its members turn about one axis",
                             s.name,
                             distance * 1e3
                         ),
                     )
-                    .hint("give the shafts of a planetary stage's members the same `position`"),
+                    .hint(format!("give the shafts of a {what}'s members the same `position`")),
                 );
             }
             continue;
@@ -300,51 +300,21 @@ fn check_bearings_everywhere(shafts: &[ShaftDecl], errors: &mut Vec<Diagnostic>)
     }
 }
 
-/// Per shaft: whether its one gear is a planetary stage's sun among two planets or more (a
-/// floating sun: the planets centre it, so one bearing place may carry its shaft).
+/// Per shaft: whether its one gear is a member its stage's kind centres by its own bodies (a
+/// floating sun among two planets or more), so that one bearing place may carry its shaft.
 fn floating_suns(stages: &[crate::drive::Stage], shafts: usize) -> Vec<bool> {
-    use crate::drive::kinematics::planetary::PlanetaryMember;
     (0..shafts)
         .map(|j| {
-            let on: Vec<(&crate::drive::Stage, usize)> = stages
+            let on: Vec<(&crate::drive::Stage, crate::drive::Member)> = stages
                 .iter()
-                .flat_map(|st| (0..2).filter(move |m| st.places[*m].shaft == j).map(move |m| (st, m)))
+                .flat_map(|st| {
+                    [crate::drive::Member::Pinion, crate::drive::Member::Wheel]
+                        .into_iter()
+                        .filter(move |m| st.places[m.index()].shaft == j)
+                        .map(move |m| (st, m))
+                })
                 .collect();
-            matches!(on.as_slice(), [(st, m)] if st.planetary().is_some_and(|p| p.planets >= 2 && p.members[*m] == PlanetaryMember::Sun))
+            matches!(on.as_slice(), [(st, m)] if st.model().centred_member(*m))
         })
         .collect()
-}
-
-/// A planetary stage's layout from its sun–planet pair and its declaration.
-fn planetary_layout(
-    sun_pair: &crate::model::GearPair,
-    d: &super::lower_planetary::PlanetaryDecl,
-) -> Option<crate::drive::planetary::PlanetaryLayout> {
-    let (sp, pr) = (sun_pair.geometry().ok()?, d.ring_pair.geometry().ok()?);
-    Some(crate::drive::planetary::PlanetaryLayout {
-        planets: d.planets,
-        teeth: [sp.teeth[0], sp.teeth[1], pr.teeth[1]],
-        members: d.members,
-        center_distance: sp.center_distance,
-        working_pitch_radius: [
-            sp.working_pitch_radius[0],
-            sp.working_pitch_radius[1],
-            pr.working_pitch_radius[0],
-            pr.working_pitch_radius[1],
-        ],
-        working_pressure_angle: [sp.operating_pressure_angle, pr.operating_pressure_angle],
-        planet_tip_radius: sp.tip_radius[1],
-        face_width: sp.face_width,
-        planet_mass: d.planet_mass,
-        planet_bearing: d.planet_bearing,
-        load_sharing_factor: d.load_sharing_factor,
-        helix: d.sun_hand.filter(|_| sp.helix_angle != 0.0).map(|h| {
-            crate::drive::kinematics::planetary::PlanetaryHelix {
-                helix_angle: sp.helix_angle,
-                sun_hand: h.sign(),
-                sun_reference_radius: sp.pitch_radius[0],
-            }
-        }),
-        planet_bearing_spacing: d.planet_bearing_spacing,
-    })
 }

@@ -108,8 +108,8 @@ pub(super) fn lower_drive_scene(
     if !lubricant_failed {
         for s in &stages {
             super::lower_friction::check_friction_needs(&friction, &s.pair, lubricant.as_ref(), errors);
-            if let Some(p) = &s.planetary {
-                super::lower_friction::check_friction_needs(&friction, &p.ring_pair, lubricant.as_ref(), errors);
+            for pair in s.kind.further_pairs() {
+                super::lower_friction::check_friction_needs(&friction, pair, lubricant.as_ref(), errors);
             }
         }
     }
@@ -156,7 +156,7 @@ pub(super) fn lower_drive_scene(
             analyses,
             drive: Some(SceneDrive {
                 layout,
-                ring_pairs: stages.iter().map(|s| s.planetary.as_ref().map(|p| p.ring_pair.clone())).collect(),
+                ring_pairs: stages.iter().map(|s| s.kind.further_pairs().first().map(|p| (*p).clone())).collect(),
                 pairs: stages.into_iter().map(|s| s.pair).collect(),
                 cycle,
                 one_pair,
@@ -214,7 +214,7 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
 fn check_gear_faces(stages: &[super::lower_stage::StageDecl], errors: &mut Vec<Diagnostic>) {
     let faces: Vec<(&str, f64, f64, &str, crate::diagnostics::Span)> = stages
         .iter()
-        .filter(|s| s.planetary.is_none())
+        .filter(|s| s.kind.coaxial().is_none())
         .flat_map(|s| {
             let b = s.pair.face_width.value.value;
             s.places.iter().map(move |(shaft, at)| (shaft.text.as_str(), *at, b, s.name.text.as_str(), shaft.span))

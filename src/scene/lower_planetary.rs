@@ -303,3 +303,38 @@ fn lower_load_sharing_factor(f: &Fields, planets: u32, errors: &mut Vec<Diagnost
     }
     Some(k)
 }
+
+impl PlanetaryDecl {
+    /// The stage's layout (what the drive's physics reads) from its sun–planet pair and this
+    /// declaration; None where a pair's geometry fails (lowering reports that).
+    pub(super) fn layout(&self, sun_pair: &GearPair) -> Option<crate::drive::planetary::PlanetaryLayout> {
+        let d = self;
+        let (sp, pr) = (sun_pair.geometry().ok()?, d.ring_pair.geometry().ok()?);
+        Some(crate::drive::planetary::PlanetaryLayout {
+            planets: d.planets,
+            teeth: [sp.teeth[0], sp.teeth[1], pr.teeth[1]],
+            members: d.members,
+            center_distance: sp.center_distance,
+            working_pitch_radius: [
+                sp.working_pitch_radius[0],
+                sp.working_pitch_radius[1],
+                pr.working_pitch_radius[0],
+                pr.working_pitch_radius[1],
+            ],
+            working_pressure_angle: [sp.operating_pressure_angle, pr.operating_pressure_angle],
+            planet_tip_radius: sp.tip_radius[1],
+            face_width: sp.face_width,
+            planet_mass: d.planet_mass,
+            planet_bearing: d.planet_bearing,
+            load_sharing_factor: d.load_sharing_factor,
+            helix: d.sun_hand.filter(|_| sp.helix_angle != 0.0).map(|h| {
+                crate::drive::kinematics::planetary::PlanetaryHelix {
+                    helix_angle: sp.helix_angle,
+                    sun_hand: h.sign(),
+                    sun_reference_radius: sp.pitch_radius[0],
+                }
+            }),
+            planet_bearing_spacing: d.planet_bearing_spacing,
+        })
+    }
+}

@@ -36,8 +36,8 @@ pub(super) struct StageDecl {
     /// φ (rad) and where it was written.
     pub direction: Option<Given<Angle>>,
     pub lubrication: Option<Lubrication>,
-    /// A planetary stage: `pair` is its sun–planet pair, `places` its two turning members'.
-    pub planetary: Option<super::lower_planetary::PlanetaryDecl>,
+    /// Its kind (a planetary set: `pair` is its sun–planet pair, `places` its two turning members').
+    pub kind: super::stage_kind_decl::StageDeclKind,
 }
 
 pub(super) fn lower_stage(
@@ -78,7 +78,8 @@ pub(super) fn lower_stage(
         }
         let (pair, places, decl) = super::lower_planetary::lower_planetary(planetary, materials, errors)?;
         let hand = decl.sun_hand;
-        return Some(StageDecl { name, pair, places, hand, direction, lubrication, planetary: Some(decl) });
+        let kind = super::stage_kind_decl::StageDeclKind::Planetary(Box::new(decl));
+        return Some(StageDecl { name, pair, places, hand, direction, lubrication, kind });
     }
     let Some(gears) = f.blocks.iter().find(|b| b.kind.text == "gears") else {
         errors.push(
@@ -133,7 +134,7 @@ pub(super) fn lower_stage(
         hand,
         direction,
         lubrication,
-        planetary: None,
+        kind: super::stage_kind_decl::StageDeclKind::Parallel,
     })
 }
 

@@ -87,23 +87,21 @@ pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Dia
         super::lower_dynamics_blocks::check_dynamics_needs(span, i.dynamics_block.is_some(), None, i.dynamics, errors);
     }
     for stage in i.stages.iter().filter(|s| a.analyses_stage(&s.name.text)) {
-        let Some(p) = &stage.planetary else {
-            check_pair(&stage.pair, i, errors);
-            continue;
-        };
-        if let Some(span) = a.dynamics_span {
+        if let (Some((what, why)), Some(span)) = (stage.kind.off_fixed_axes(), a.dynamics_span) {
             errors.push(
                 Diagnostic::new(
                     DiagnosticKind::OutOfRange,
                     span,
-                    format!("the dynamic models are of one pair on fixed axes; planetary stage `{}` turns its planets on a moving carrier", stage.name.text),
+                    format!("the dynamic models are of one pair on fixed axes; {what} `{}` {why}", stage.name.text),
                 )
                 .hint("name the stages the dynamics run on without it: `stages = [...]` in `analyses`"),
             );
             continue;
         }
         check_pair(&stage.pair, i, errors);
-        check_pair(&p.ring_pair, i, errors);
+        for pair in stage.kind.further_pairs() {
+            check_pair(pair, i, errors);
+        }
     }
 }
 

@@ -33,6 +33,7 @@ pub(crate) mod pair_stage;
 pub mod parse;
 pub(crate) mod screen;
 pub mod source;
+pub(crate) mod stage_kind_decl;
 pub mod summary;
 pub(crate) mod sweeps;
 pub(crate) mod syntax_errors;
