@@ -27,10 +27,11 @@ pub struct StageInputs {
     pub contact_ratio: f64,
     pub overlap_ratio: f64,
     pub lubrication: String,
-    /// A planetary stage (its `shafts`, `at_mm`, `teeth` are its two turning members' and the
-    /// sun's and ring's; its sizes the sun–planet mesh's).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub planetary: Option<super::planetary_inputs::PlanetaryInputs>,
+    /// The stage kind's own inputs, for a kind that has them (a planetary stage: its `shafts`,
+    /// `at_mm`, `teeth` are its two turning members' and the sun's and ring's; its sizes the
+    /// sun–planet mesh's); in report.json under the kind's name.
+    #[serde(flatten, default)]
+    pub kind: Option<Box<super::kind_inputs::KindInputs>>,
 }
 
 /// A shaft as the scene gives it.
@@ -87,10 +88,8 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
                 shafts: s.places.map(|p| layout.shafts[p.shaft].name.clone()),
                 at_mm: s.places.map(|p| p.at * 1e3),
                 teeth: s.teeth,
-                // A planetary stage's: ω of its first turning member over its second's.
-                ratio: s.planetary().map_or(f64::from(s.teeth[1]) / f64::from(s.teeth[0]), |p| {
-                    crate::drive::kinematics::StageKinematics::torque_ratio(&p.kinematics(), 0)
-                }),
+                // |ω| of the member on its first place over its second's (z_wheel/z_pinion of a pair).
+                ratio: s.model().kinematics(s).torque_ratio(0),
                 normal_module_mm: g.module * 1e3,
                 helix_angle_deg: g.helix_angle.to_degrees(),
                 pinion_hand: match s.hand {
@@ -105,7 +104,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
                 contact_ratio: g.contact_ratio,
                 overlap_ratio: g.overlap_ratio,
                 lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), |l| lubrication_words(l, units)),
-                planetary: super::planetary_inputs::planetary_inputs(layout, s, ring_pair.as_ref()),
+                kind: super::kind_inputs::kind_inputs(layout, s, ring_pair.as_ref()),
             }
         })
         .collect()

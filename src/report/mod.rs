@@ -23,6 +23,7 @@ pub(crate) mod geometry;
 pub(crate) mod helical;
 mod housing_checks;
 pub(crate) mod input_row;
+pub(crate) mod kind_inputs;
 pub(crate) mod law_values;
 pub(crate) mod law_words;
 pub(crate) mod losses;

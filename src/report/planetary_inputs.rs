@@ -3,7 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::drive::kinematics::planetary::{stationary_ratio, PlanetaryMember};
+use crate::drive::kinematics::planetary::{stationary_ratio, PlanetaryLayout, PlanetaryMember};
 use crate::drive::{Drive, Stage};
 use crate::model::GearPair;
 
@@ -35,8 +35,12 @@ pub struct PlanetaryInputs {
     pub planet_bearing: String,
 }
 
-pub(super) fn planetary_inputs(layout: &Drive, stage: &Stage, ring_pair: Option<&GearPair>) -> Option<PlanetaryInputs> {
-    let p = stage.planetary()?;
+pub(super) fn planetary_inputs(
+    layout: &Drive,
+    stage: &Stage,
+    p: &PlanetaryLayout,
+    ring_pair: Option<&GearPair>,
+) -> Option<PlanetaryInputs> {
     let ring = ring_pair?.geometry().ok()?;
     let shaft_of = |m: PlanetaryMember| {
         p.place_of(m).map_or_else(|| "housing".to_string(), |i| layout.shafts[stage.places[i].shaft].name.clone())

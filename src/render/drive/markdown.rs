@@ -171,24 +171,10 @@ fn inputs(out: &mut String, r: &DriveReport) {
         ],
     );
     for s in &r.stages {
-        // A planetary stage: its two turning members' shafts, the teeth sun/planet/ring, i₀.
-        let (joins, teeth, ratio) = match &s.planetary {
-            Some(p) => (
-                p.members
-                    .iter()
-                    .filter(|(_, shaft)| shaft != "housing")
-                    .map(|(m, shaft)| format!("{} on {shaft}", m.name()))
-                    .collect::<Vec<_>>()
-                    .join(" → "),
-                format!("{}/{}/{}", p.teeth[0], p.teeth[1], p.teeth[2]),
-                format!("i₀ {}", fixed(p.stationary_ratio, 4)),
-            ),
-            None => (
-                format!("{} → {}", s.shafts[0], s.shafts[1]),
-                format!("{}/{}", s.teeth[0], s.teeth[1]),
-                fixed(s.ratio, 4),
-            ),
-        };
+        // A kind's own words (a planetary stage's members, teeth and i₀), else a pair's.
+        let (joins, teeth, ratio) = super::planetary::stage_words(s).unwrap_or_else(|| {
+            (format!("{} → {}", s.shafts[0], s.shafts[1]), format!("{}/{}", s.teeth[0], s.teeth[1]), fixed(s.ratio, 4))
+        });
         row(
             out,
             &[

@@ -6,15 +6,41 @@ use crate::drive::DrivePoint;
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_inputs::StageInputs;
+use crate::report::kind_inputs::KindInputs;
+use crate::report::planetary_inputs::PlanetaryInputs;
 use crate::report::units::Units;
 
 use super::shown_units::Shown;
+
+/// A planetary stage's own inputs; None for a stage of another kind.
+fn own_inputs(s: &StageInputs) -> Option<&PlanetaryInputs> {
+    match s.kind.as_deref() {
+        Some(KindInputs::Planetary(p)) => Some(p),
+        None => None,
+    }
+}
+
+/// A planetary stage's words in the stages' table: its two turning members' shafts, the teeth
+/// sun/planet/ring, i₀; None for a stage of another kind.
+pub(crate) fn stage_words(s: &StageInputs) -> Option<(String, String, String)> {
+    let p = own_inputs(s)?;
+    Some((
+        p.members
+            .iter()
+            .filter(|(_, shaft)| shaft != "housing")
+            .map(|(m, shaft)| format!("{} on {shaft}", m.name()))
+            .collect::<Vec<_>>()
+            .join(" → "),
+        format!("{}/{}/{}", p.teeth[0], p.teeth[1], p.teeth[2]),
+        format!("i₀ {}", fixed(p.stationary_ratio, 4)),
+    ))
+}
 
 /// The planetary stages' inputs, after the stages' table.
 pub(crate) fn inputs(out: &mut String, stages: &[StageInputs], units: Units) {
     let (len, mass) = (units.length(), units.mass());
     let mm = |x: f64| len.cell(x * 1e-3, 3);
-    let planetary: Vec<_> = stages.iter().filter_map(|s| s.planetary.as_ref().map(|p| (s, p))).collect();
+    let planetary: Vec<_> = stages.iter().filter_map(|s| own_inputs(s).map(|p| (s, p))).collect();
     if planetary.is_empty() {
         return;
     }

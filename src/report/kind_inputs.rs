@@ -1,0 +1,25 @@
+//! A stage kind's own inputs in a drive's report, one variant a kind that has them (a parallel
+//! stage's are every stage's): the report's part of the stage-kind catalogue.
+
+use serde::{Deserialize, Serialize};
+
+use super::planetary_inputs::PlanetaryInputs;
+use crate::drive::kinematics::StageKind;
+use crate::drive::{Drive, Stage};
+use crate::model::GearPair;
+
+/// A stage kind's own inputs (in report.json under the kind's name).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub enum KindInputs {
+    #[serde(rename = "planetary")]
+    Planetary(PlanetaryInputs),
+}
+
+/// The inputs of `stage`'s kind; `further` is the pair of its second mesh, where it has one.
+pub(super) fn kind_inputs(layout: &Drive, stage: &Stage, further: Option<&GearPair>) -> Option<Box<KindInputs>> {
+    match &stage.kind {
+        StageKind::Parallel => None,
+        StageKind::Planetary(p) => super::planetary_inputs::planetary_inputs(layout, stage, p, further)
+            .map(|i| Box::new(KindInputs::Planetary(i))),
+    }
+}
