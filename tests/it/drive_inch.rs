@@ -67,6 +67,14 @@ fn drives_sized_in_inches_are_reported_in_inch_units() {
     for si in ["(N)", "(W)", "(mm)", " W in at", "(N·m)", " mm", "degC"] {
         assert!(!md.contains(si), "an SI unit {si} left in the inch report");
     }
+    // A planetary stage sized in inches: its inputs and its planets' forces and losses too.
+    let planetary = std::fs::read_to_string(crate::root().join("specs/planetary_reducer.gear")).unwrap();
+    let (r, md) = report(&planetary.replace("face_width = 25 mm", "face_width = 0.984251968503937 in"));
+    assert_eq!(r.unit_system, UnitSystem::Inch);
+    assert!(md.contains("| neighbour gap (in) |") && md.contains("| planet mass (lb) |"), "{md}");
+    let p = r.points[0].point.stages[0].planetary().unwrap();
+    let shown = format!("F_t {:.3} lbf (sun mesh)", p.forces.tangential[0] / lbf);
+    assert!(md.contains(&shown), "{shown} missing");
     // The same drive sized in millimetres: SI.
     let metric = text
         .replace("diametral_pitch = 8 1/in", "module = 3.175 mm")
