@@ -25,6 +25,9 @@ pub(crate) struct DriveOilSweepReport {
     /// The shown rows' labels (point, law, formulation), the same in every run.
     pub rows: Vec<String>,
     pub runs: Vec<DriveOilRun>,
+    /// The units report.md shows powers in (the runs' own).
+    #[serde(default, skip_serializing_if = "super::number::UnitSystem::is_si")]
+    pub unit_system: super::number::UnitSystem,
 }
 
 /// The comparison of `runs`: (temperature as written, in K, its folder, its report).
@@ -50,5 +53,6 @@ pub(crate) fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)])
                     .collect(),
             })
             .collect(),
+        unit_system: first.unit_system,
     }
 }

@@ -75,6 +75,11 @@ fn drives_sized_in_inches_are_reported_in_inch_units() {
     let p = r.points[0].point.stages[0].planetary().unwrap();
     let shown = format!("F_t {:.3} lbf (sun mesh)", p.forces.tangential[0] / lbf);
     assert!(md.contains(&shown), "{shown} missing");
+    // At two oil temperatures: the comparison page's losses in hp too.
+    let swept = text.replace("oil_temperature = 160 degF", "oil_temperature = [140, 160] degF");
+    let files = gearloss::run_to_files("drive.gear", &swept).unwrap();
+    let top = &files.files.iter().find(|(name, _)| name == "report.md").unwrap().1;
+    assert!(top.contains("## Total loss (hp) and η (%)") && top.contains("## Meshes and bearings (hp)"), "{top}");
     // The same drive sized in millimetres: SI.
     let metric = text
         .replace("diametral_pitch = 8 1/in", "module = 3.175 mm")

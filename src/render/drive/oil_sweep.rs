@@ -5,10 +5,12 @@
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_oil_sweep::DriveOilSweepReport;
+use crate::report::units::Units;
 
 /// report.md and report.json of the comparison.
 pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, String)> {
     let mut out = String::new();
+    let w = Units::of_system(r.unit_system).power();
     md!(out, "# {} — oil temperatures\n", r.title);
     md!(
         out,
@@ -19,25 +21,25 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, St
         md!(out, "- [{}]({}/report.md)", run.label, run.folder);
     }
     md!(out);
-    md!(out, "## Total loss (W) and η (%)\n");
+    md!(out, "## Total loss ({}) and η (%)\n", w.unit);
     let mut head = vec!["row".to_string()];
-    head.extend(r.runs.iter().map(|run| format!("{}: loss (W) / η (%)", run.label)));
+    head.extend(r.runs.iter().map(|run| format!("{}: loss ({}) / η (%)", run.label, w.unit)));
     header(&mut out, &head);
     for (i, label) in r.rows.iter().enumerate() {
         let mut cells = vec![label.clone()];
         cells.extend(r.runs.iter().map(|run| {
             let (loss, eta, _, _) = run.rows[i];
-            format!("{} / {}", fixed(loss, 2), fixed(100.0 * eta, 4))
+            format!("{} / {}", w.cell(loss, 2), fixed(100.0 * eta, 4))
         }));
         row(&mut out, &cells);
     }
-    md!(out, "\n## Meshes and bearings (W)\n");
+    md!(out, "\n## Meshes and bearings ({})\n", w.unit);
     let mut head = vec!["row".to_string()];
     head.extend(r.runs.iter().map(|run| format!("{}: meshes / bearings", run.label)));
     header(&mut out, &head);
     for (i, label) in r.rows.iter().enumerate() {
         let mut cells = vec![label.clone()];
-        cells.extend(r.runs.iter().map(|run| format!("{} / {}", fixed(run.rows[i].2, 2), fixed(run.rows[i].3, 2))));
+        cells.extend(r.runs.iter().map(|run| format!("{} / {}", w.cell(run.rows[i].2, 2), w.cell(run.rows[i].3, 2))));
         row(&mut out, &cells);
     }
     let pretty = serde_json::to_string_pretty(r).expect("the comparison serialises");
