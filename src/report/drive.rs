@@ -170,10 +170,12 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         })
         .collect();
     let map = scene.analyses.efficiency_map.as_ref();
+    let unit_system = drive_unit_system(drive);
+    let units = super::units::Units::of_system(unit_system);
     let mut report = DriveReport {
         title: scene.title.clone(),
         slug: super::slug::slug(&scene.title),
-        stages: super::drive_inputs::stage_inputs(drive, super::units::Units::of_system(drive_unit_system(drive))),
+        stages: super::drive_inputs::stage_inputs(drive, units),
         shafts: super::drive_inputs::shaft_inputs(layout),
         overall_ratio: crate::drive::walk::overall_ratio(layout),
         oil: super::drive_inputs::oil_rows(scene),
@@ -189,12 +191,8 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         speed_at: layout.operating.speed_at,
         speed_unit: unit_written(&scene.operating.pinion_speed, map.map(|m| &m.1), DisplayUnit::rpm),
         torque_unit: unit_written(&scene.operating.pinion_torque, map.map(|m| &m.0), DisplayUnit::newton_metre),
-        unit_system: drive_unit_system(drive),
-        findings: super::drive_findings::findings(
-            drive,
-            &points,
-            super::units::Units::of_system(drive_unit_system(drive)),
-        ),
+        unit_system,
+        findings: super::drive_findings::findings(drive, &points, units),
         maps: super::drive_map::maps(scene, eval, &laws),
         housing: scene
             .housing
