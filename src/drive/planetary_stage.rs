@@ -17,7 +17,7 @@ use super::mesh_efficiency::MeshEfficiency;
 use super::planetary::flow::PlanetMesh;
 use super::planetary::flow::PlanetaryState;
 use super::planetary::loads::{lossless_torques, planet_forces};
-use super::planetary::point::PlanetaryPoint;
+use super::planetary::point::{PlanetaryPoint, MESH_GEARS};
 use super::point::{BearingPoint, StagePoint};
 use super::stage_model::StageModel;
 use crate::losses::gear_no_load::GearsRunning;
@@ -116,7 +116,7 @@ impl StageModel for PlanetaryLayout {
 
     /// The sun–planet mesh (the sun the pinion) and the planet–ring mesh (the planet the pinion).
     fn mesh_gears(&self) -> &'static [[&'static str; 2]] {
-        &[["sun", "planet"], ["planet", "ring"]]
+        &MESH_GEARS
     }
 
     /// Its members, its meshes, its planets.

@@ -132,9 +132,9 @@ impl<'a> Walk<'a> {
             .stages
             .iter()
             .zip(model.sizes)
-            .map(|(stage, sizes)| {
-                let (place, running) =
-                    stage.model().gears_running(stage, sizes, stage.places.map(|p| self.omega[p.shaft]));
+            .enumerate()
+            .map(|(k, (stage, sizes))| {
+                let (place, running) = stage.model().gears_running(stage, sizes, self.places(k));
                 let by_gear = stage.lubrication.as_ref().and_then(|l| l.power_loss_by_gear(&running, model.oil));
                 // The mesh's parts at `place`; the other gear's windage on its shaft.
                 let [own, other] = by_gear.unwrap_or([0.0; 2]);

@@ -46,6 +46,10 @@ pub struct PlanetaryPoint {
     pub tilting_support: String,
 }
 
+/// The gears [in the pinion's place, in the wheel's] of a planetary stage's meshes as the stage's
+/// pairs are written: the sun–planet mesh (mesh 0) and the planet–ring mesh (mesh 1).
+pub(crate) const MESH_GEARS: [[&str; 2]; 2] = [["sun", "planet"], ["planet", "ring"]];
+
 impl PlanetaryPoint {
     /// Its two meshes as the walk evaluates them: the sun–planet mesh (the stage's own pair, the sun
     /// its pinion) driven by the sun or the planet, whichever drives the meshes, and the
@@ -60,7 +64,7 @@ impl PlanetaryPoint {
                 mesh: 0,
                 name: Some("sun–planet"),
                 driving: if sun { Member::Pinion } else { Member::Wheel },
-                members: if sun { ["sun", "planet"] } else { ["planet", "sun"] },
+                members: if sun { MESH_GEARS[0] } else { [MESH_GEARS[0][1], MESH_GEARS[0][0]] },
                 torque: t0,
                 speed: w0,
                 efficiency: e0,
@@ -69,7 +73,7 @@ impl PlanetaryPoint {
                 mesh: 1,
                 name: Some("planet–ring"),
                 driving: Member::Pinion,
-                members: ["planet", "ring"],
+                members: MESH_GEARS[1],
                 torque: t1,
                 speed: w1,
                 efficiency: e1,
