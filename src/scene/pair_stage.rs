@@ -10,7 +10,7 @@
 //! | `gearbox { lubrication = ... }` | the stage's `lubrication` |
 //! | `gearbox { pinion_shaft { ... }  wheel_shaft { ... } }` | `gearbox { shaft pinion_shaft { input ... }  shaft wheel_shaft { output ... } }` (a shaft block not written is an empty one) |
 //! | bearings without `at` | places without positions: each bearing an equal share of the gear force, the pair's rule |
-//! | `pinion_torque`, `pinion_speed` | `input_torque`, `input_speed` (the pinion's shaft is the input) |
+//! | `pinion_torque`, `pinion_speed` | `input_torque`, `input_speed` (the pinion's shaft is the input), in `operating`, in a `duty_cycle`'s steps and on an `efficiency_map`'s axes |
 //!
 //! The housing, duty cycle, lubricant, friction laws, vehicle, drive cycle and analyses are taken
 //! as written.
@@ -47,6 +47,8 @@ pub(super) fn as_one_stage(ast: &SceneAst) -> SceneAst {
             Item::Block(b) if b.kind.text == "gears" => Item::Block(stage(b, lubrication.clone())),
             Item::Block(b) if b.kind.text == "gearbox" => Item::Block(gearbox(b)),
             Item::Block(b) if b.kind.text == "operating" => Item::Block(operating(b)),
+            Item::Block(b) if b.kind.text == "duty_cycle" => Item::Block(calls_at_input(b, "step")),
+            Item::Block(b) if b.kind.text == "analyses" => Item::Block(calls_at_input(b, "efficiency_map")),
             other => other.clone(),
         });
     }
@@ -141,14 +143,33 @@ fn operating(block: &Block) -> Block {
     let mut out = block.clone();
     for item in &mut out.items {
         if let Item::Assignment { key, .. } = item {
-            key.text = match key.text.as_str() {
-                "pinion_torque" => "input_torque".into(),
-                "pinion_speed" => "input_speed".into(),
-                other => other.into(),
-            };
+            at_input(key);
         }
     }
     out
+}
+
+/// The calls `call(...)` of a block (a duty cycle's `step`s, the `efficiency_map`) with their
+/// `pinion_torque` and `pinion_speed` as the input's.
+fn calls_at_input(block: &Block, call: &str) -> Block {
+    let mut out = block.clone();
+    for item in &mut out.items {
+        if let Item::Call(c) = item {
+            if c.name.text == call {
+                c.arguments.iter_mut().for_each(|(key, _)| at_input(key));
+            }
+        }
+    }
+    out
+}
+
+/// A pinion's key as the input end's (the pinion's shaft is the input).
+fn at_input(key: &mut Name) {
+    match key.text.as_str() {
+        "pinion_torque" => key.text = "input_torque".into(),
+        "pinion_speed" => key.text = "input_speed".into(),
+        _ => {}
+    }
 }
 
 #[cfg(test)]
@@ -165,12 +186,15 @@ mod tests {
                       pinion_shaft { seal(diameter = 30 mm) } }
             operating { pinion_torque = 100 N*m  oil_temperature = 60 degC }
             vehicle "v" { mass = 1500 kg }
+            duty_cycle "d" { step(duration = 2 min, pinion_torque = 50 N*m, pinion_speed = 900 rpm) }
+            analyses { efficiency_map(pinion_torque = 10..100 N*m count 3, pinion_speed = 100..900 rpm count 3)
+                       transmission_error(pinion_torque = [100] N*m) }
         }"#;
         let ast = crate::parse("p.gear", text).unwrap();
         assert!(is_pair_on_a_cycle(&ast));
         let drive = as_one_stage(&ast);
         let heads: Vec<&str> = drive.items.iter().map(|i| i.head().text.as_str()).collect();
-        assert_eq!(heads, ["stage", "gearbox", "operating", "vehicle"]);
+        assert_eq!(heads, ["stage", "gearbox", "operating", "vehicle", "duty_cycle", "analyses"]);
         let Item::Block(stage) = &drive.items[0] else { panic!() };
         assert_eq!(stage.label.as_ref().unwrap().text, STAGE);
         assert!(stage.items.iter().any(|i| is_key(i, "lubrication")));
@@ -192,5 +216,16 @@ mod tests {
         assert!(!gearbox.items.iter().any(|i| is_key(i, "lubrication")));
         let Item::Block(op) = &drive.items[2] else { panic!() };
         assert_eq!(op.items[0].head().text, "input_torque");
+        // A step's and the map's pinion keys are the input's; an analysis of the pair keeps its own.
+        let keys = |k: usize| -> Vec<Vec<String>> {
+            let Item::Block(b) = &drive.items[k] else { panic!() };
+            let call = |i: &Item| match i {
+                Item::Call(c) => c.arguments.iter().map(|(n, _)| n.text.clone()).collect(),
+                _ => Vec::new(),
+            };
+            b.items.iter().map(call).collect()
+        };
+        assert_eq!(keys(4), [["duration", "input_torque", "input_speed"]]);
+        assert_eq!(keys(5), [vec!["input_torque", "input_speed"], vec!["pinion_torque"]]);
     }
 }
