@@ -393,6 +393,13 @@ impl Analyses {
             || self.transmission_error.is_some()
     }
 
+    /// Whether a drive runs its analysed stages' meshes as pairs alone: it asks for an analysis of
+    /// one pair, or names `detail_points` and asks for `efficiency` (each mesh's efficiency along
+    /// its mesh cycle in full at those points, as the pair alone reports it).
+    pub fn runs_stage_pairs(&self, detail_points_named: bool) -> bool {
+        self.wants_pair_analyses() || (detail_points_named && self.efficiency.is_some())
+    }
+
     /// The formulation a drive's duty cycle and drive cycle run under: `efficiency`'s first, else external.
     pub fn first_formulation(&self) -> Formulation {
         self.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External)

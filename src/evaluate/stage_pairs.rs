@@ -52,7 +52,10 @@ pub struct StagePair {
 /// point-major; empty when the scene asks for no analysis of one pair.
 pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
     let a = &scene.analyses;
-    if !a.wants_pair_analyses() || scene.operating.count() == 0 || scene.friction.is_empty() {
+    if !a.runs_stage_pairs(!scene.operating.detail_points.is_empty())
+        || scene.operating.count() == 0
+        || scene.friction.is_empty()
+    {
         return Vec::new();
     }
     let setup = DriveSetup::new(scene, drive);

@@ -47,15 +47,15 @@ pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Dia
             );
         }
     }
-    let Some(asked) = first_asked(a) else {
+    let Some(asked) = first_asked(a, i.detail_points) else {
         if let Some(span) = i.detail_points {
             errors.push(
                 Diagnostic::new(
                     DiagnosticKind::MissingKey,
                     span,
-                    "a drive's `detail_points` are the points the analyses of one pair run at, and the scene asks for none",
+                    "a drive's `detail_points` are the points its stages' meshes are reported in full at, and the scene asks for neither `efficiency` nor an analysis of one pair",
                 )
-                .hint("add `friction_along_loa`, `film` or `dynamics` to `analyses`, or leave `detail_points` out (the report shows the drive's first points in full and drive_records.csv every point)"),
+                .hint("add `efficiency(formulations = [external])`, `friction_along_loa`, `film` or `dynamics` to `analyses`, or leave `detail_points` out"),
             );
         }
         if let Some((_, span)) = a.stages.as_ref().and_then(|s| s.first()) {
@@ -105,12 +105,17 @@ pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Dia
     }
 }
 
-/// Where the first analysis of one pair is asked for.
-fn first_asked(a: &Analyses) -> Option<Span> {
-    if !a.wants_pair_analyses() {
+/// Where the first analysis of one pair is asked for (the `detail_points` when those and
+/// `efficiency` ask for the meshes in full); None when the drive runs no stage's mesh as a pair.
+fn first_asked(a: &Analyses, detail_points: Option<Span>) -> Option<Span> {
+    if !a.runs_stage_pairs(detail_points.is_some()) {
         return None;
     }
-    a.friction_span.or(a.film_span).or(a.dynamics_span).or(a.transmission_error.as_ref().map(|t| t.span))
+    a.friction_span
+        .or(a.film_span)
+        .or(a.dynamics_span)
+        .or(a.transmission_error.as_ref().map(|t| t.span))
+        .or(detail_points)
 }
 
 /// One analysed pair: what the dynamics and the teeth need of it.

@@ -125,6 +125,8 @@ fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
     for (path, edit) in [
         (SPEC, None),
         ("specs/planetary_two_stage.gear", Some(("efficiency_map(", "friction_along_loa\n        efficiency_map("))),
+        // `efficiency` alone with `detail_points` (given below): each stage's mesh at every named point.
+        ("tests/specs/ok/drive_detail_points_in_full.gear", Some(("detail_points = [2]", ""))),
     ] {
         let scene = drive_scene(path, |s| match edit {
             Some((from, to)) => s.replacen(from, to, 1).replacen(
@@ -137,6 +139,10 @@ fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
         let drive = scene.drive.as_ref().unwrap();
         let (report, rendered) = gearloss::run_drive::drive_report_files(&scene, drive).unwrap();
         assert!(report.stage_pairs.len() >= 4, "{path}: {} meshes", report.stage_pairs.len());
+        if path.contains("detail_points") {
+            let points: Vec<usize> = report.stage_pairs.iter().map(|p| p.point).collect();
+            assert_eq!(points, [1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6]);
+        }
         for p in &report.stage_pairs {
             let charged = p.pair_charged_efficiency.expect("the scene asks for efficiency");
             assert!(
@@ -150,7 +156,7 @@ fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
             let folder = p.folder.as_ref().unwrap();
             assert!(rendered.files.iter().any(|(f, _)| *f == format!("{folder}/report.md")), "{folder}");
         }
-        if path != SPEC {
+        if path.contains("planetary") {
             assert!(report.stage_pairs.iter().any(|p| p.mesh.as_deref() == Some("planet–ring")));
         }
     }
