@@ -15,8 +15,9 @@ use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForc
 use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
 use crate::friction::LawContext;
 use crate::geometry::sharing::Sharing;
+use crate::geometry::teeth::load_sharing::LoadSharing as TeethSharing;
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{FrictionLawSpec, GearPair, LoadSharing, Scene, SceneDrive};
+use crate::model::{FrictionLawSpec, LoadSharing, Scene, SceneDrive};
 use crate::tribology::Tribology;
 
 /// One stage's mesh as each member driving sees it.
@@ -27,6 +28,9 @@ pub(crate) struct StageMesh {
     h_v: [f64; 2],
     tribology: Tribology,
     whole: bool,
+    /// `load_sharing = stiffness`: the pair's stiffness and reliefs as each member driving sees it
+    /// (the same model the pair alone reads, [`super::setup::Setup::sharing`]).
+    stiffness: std::sync::Arc<[Option<TeethSharing>; 2]>,
     /// A planetary stage's planet–ring mesh (internal, the planet as pinion).
     ring: Option<RingMesh>,
 }
@@ -70,11 +74,17 @@ impl StageMesh {
         let tribology = mesh.tribology(e_r);
         let geometry = std::sync::Arc::new([
             mesh.geometry(),
-            swapped(&drive.pairs[k]).geometry().expect("a pair's geometry holds with the roles swapped"),
+            drive.pairs[k].swapped().geometry().expect("a pair's geometry holds with the roles swapped"),
         ]);
         let whole = drive.pairs[k].load_sharing == LoadSharing::None;
+        let stiffness = std::sync::Arc::new([drive.pairs[k].clone(), drive.pairs[k].swapped()].map(|pair| {
+            (pair.load_sharing == LoadSharing::Stiffness).then(|| TeethSharing {
+                stiffness: pair.pair_stiffness().expect("lowering has built the teeth both ways (lower_stage.rs)"),
+                reliefs: pair.reliefs(),
+            })
+        }));
         let ring = RingMesh::of(drive, k, scene.lubricant.as_ref(), None);
-        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole, ring };
+        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole, stiffness, ring };
         for d in 0..2 {
             out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
         }
@@ -86,7 +96,11 @@ impl StageMesh {
             geometry: &self.geometry[d],
             state: OperatingState { pinion_torque: torque, pinion_speed: speed },
             tribology: self.tribology,
-            sharing: if self.whole { Sharing::Whole } else { Sharing::Equal },
+            sharing: match (self.whole, &self.stiffness[d]) {
+                (true, _) => Sharing::Whole,
+                (false, Some(model)) => Sharing::Stiffness(model),
+                (false, None) => Sharing::Equal,
+            },
         }
     }
 
@@ -116,11 +130,6 @@ impl StageMesh {
             face_width: g.face_width,
         }
     }
-}
-
-/// The pair with pinion and wheel exchanged (the wheel driving).
-pub(crate) fn swapped(pair: &GearPair) -> GearPair {
-    GearPair { pinion: pair.wheel.clone(), wheel: pair.pinion.clone(), ..pair.clone() }
 }
 
 /// The meshes of every stage under one law and formulation.
@@ -205,6 +214,7 @@ impl<'a> DriveSetup<'a> {
                     h_v: s.h_v,
                     tribology: mesh.tribology(mesh.reduced_modulus()),
                     whole: s.whole,
+                    stiffness: s.stiffness.clone(),
                     ring: RingMesh::of(self.drive, k, lubricant.as_ref(), s.ring.as_ref().map(|r| r.geometry.clone())),
                 }
             })

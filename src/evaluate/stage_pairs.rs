@@ -20,7 +20,7 @@
 //! stage's pair reports what the same pair written alone with `pinion_torque` and `pinion_speed` at
 //! those values reports (tests/it/stage_pairs.rs holds the two to 1e-12).
 
-use super::drive_setup::{swapped, DriveSetup};
+use super::drive_setup::DriveSetup;
 use crate::drive::{EndValue, Member};
 use crate::model::{Analyses, GearPair, Operating, Scene, SceneDrive, Sweep};
 
@@ -82,7 +82,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
                     point + 1
                 );
                 let pair = drive.mesh_pair(k, m.mesh);
-                let pair = if m.driving == Member::Pinion { pair.clone() } else { swapped(pair) };
+                let pair = if m.driving == Member::Pinion { pair.clone() } else { pair.swapped() };
                 let alone =
                     (m.torque > 0.0 && m.speed > 0.0).then(|| pair_scene(scene, title, pair, (m.torque, m.speed)));
                 out.push(StagePair {

@@ -32,6 +32,10 @@ pub struct StageInputs {
     /// sun–planet mesh's); in report.json under the kind's name.
     #[serde(flatten, default)]
     pub kind: Option<Box<super::kind_inputs::KindInputs>>,
+    /// How the mesh shares its load when not equally (`load_sharing = stiffness` with the reliefs
+    /// as written, or `none`); absent for equal sharing.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_sharing: Option<String>,
 }
 
 /// A shaft as the scene gives it.
@@ -105,9 +109,39 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
                 overlap_ratio: g.overlap_ratio,
                 lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), |l| lubrication_words(l, units)),
                 kind: super::kind_inputs::kind_inputs(layout, s, ring_pair.as_ref()),
+                load_sharing: sharing_words(pair),
             }
         })
         .collect()
+}
+
+/// A stage's load sharing in words when it is not the equal default: by the teeth's stiffness with
+/// each gear's tip relief as written, or the whole load on every contact.
+fn sharing_words(pair: &crate::model::GearPair) -> Option<String> {
+    match pair.load_sharing {
+        crate::model::LoadSharing::Equal => None,
+        crate::model::LoadSharing::None => Some("none: every contact carries the whole load".into()),
+        crate::model::LoadSharing::Stiffness => {
+            let relief = |name: &str, g: &crate::model::Gear| {
+                g.tip_relief.as_ref().map_or_else(
+                    || format!("the {name} unrelieved"),
+                    |r| {
+                        format!(
+                            "the {name}'s tip relief {} over {} ({})",
+                            r.amount.written,
+                            r.length.written,
+                            r.shape.name()
+                        )
+                    },
+                )
+            };
+            Some(format!(
+                "stiffness: the pairs in contact share by the teeth's stiffness; {}, {}",
+                relief("pinion", &pair.pinion),
+                relief("wheel", &pair.wheel)
+            ))
+        }
+    }
 }
 
 /// The stage's lubrication in words (a dip's sizes in in for a report in inch–pound units).

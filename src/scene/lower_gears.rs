@@ -267,6 +267,11 @@ impl GearPair {
     pub fn geometry(&self) -> Result<PairGeometry, Vec<GeometryProblem>> {
         PairGeometry::compute(&self.pair_input())
     }
+
+    /// The pair with pinion and wheel exchanged: the wheel driving, in the pinion's place.
+    pub fn swapped(&self) -> GearPair {
+        GearPair { pinion: self.wheel.clone(), wheel: self.pinion.clone(), ..self.clone() }
+    }
 }
 
 pub(super) fn check_geometry(pair: &GearPair, errors: &mut Vec<Diagnostic>) -> Option<()> {

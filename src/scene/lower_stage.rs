@@ -117,15 +117,10 @@ pub(super) fn lower_stage(
         return None;
     }
     if pair.load_sharing == crate::model::LoadSharing::Stiffness {
-        errors.push(
-            Diagnostic::new(
-                DiagnosticKind::OutOfRange,
-                pair_block.kind.span,
-                "`load_sharing = stiffness` is not available in a drive's stage in this version",
-            )
-            .hint("leave `load_sharing` out (equal sharing), or study the pair alone in a scene with a `gears` block"),
-        );
-        return None;
+        // The walk shares each mesh's load by the teeth's stiffness as either member drives: the
+        // teeth must be built with the pinion driving and with the wheel driving (coast).
+        super::lower_teeth::check_teeth(&pair, errors)?;
+        super::lower_teeth::check_teeth(&pair.swapped(), errors)?;
     }
     Some(StageDecl {
         name,

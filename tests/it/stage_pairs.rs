@@ -127,6 +127,8 @@ fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
         ("specs/planetary_two_stage.gear", Some(("efficiency_map(", "friction_along_loa\n        efficiency_map("))),
         // `efficiency` alone with `detail_points` (given below): each stage's mesh at every named point.
         ("tests/specs/ok/drive_detail_points_in_full.gear", Some(("detail_points = [2]", ""))),
+        // `load_sharing = stiffness` with tip relief, in drive and in coast.
+        (STIFFNESS_SHARED, None),
     ] {
         let scene = drive_scene(path, |s| match edit {
             Some((from, to)) => s.replacen(from, to, 1).replacen(
@@ -171,4 +173,42 @@ fn only_the_named_stages_are_analysed() {
     assert_eq!(pairs.len(), 2);
     assert!(pairs.iter().all(|p| p.stage_name == "second"));
     assert_eq!(pairs.iter().map(|p| p.point).collect::<Vec<_>>(), vec![1, 3]);
+}
+
+/// A one-stage drive whose pair shares its load by the teeth's stiffness (specs/fzg_c_tip_relief.gear's pair).
+const STIFFNESS_SHARED: &str = "tests/specs/ok/drive_stage_stiffness_sharing.gear";
+
+/// The walk's mesh efficiency of a stage shared by stiffness is the pair written alone's
+/// (specs/fzg_c_tip_relief.gear, benedict_kelley, external) at 50, 135 and 300 N·m to 1e-12, and
+/// not equal sharing's (they differ by more than 1e-5 at every point: the test can fail).
+#[test]
+fn a_stage_shared_by_stiffness_is_the_pair_alone() {
+    let shared = drive_scene(STIFFNESS_SHARED, |s| s);
+    let (report, _) = gearloss::run_drive::drive_report_files(&shared, shared.drive.as_ref().unwrap()).unwrap();
+    let pair = gearloss::report_of(&drive_scene("specs/fzg_c_tip_relief.gear", |s| s));
+    let mut checked = 0;
+    let external = gearloss::efficiency::Formulation::External;
+    for r in pair.efficiency.iter().filter(|r| r.label == "benedict_kelley" && r.formulation == external) {
+        let torque = r.pinion_torque.value.0;
+        let charged = 1.0 - r.power_loss.value.0 / (torque * r.pinion_speed.value.0);
+        let stage = report.stage_pairs.iter().find(|p| (p.pinion_torque - torque).abs() < 1e-9).unwrap();
+        assert!(
+            (stage.mesh_efficiency - charged).abs() <= 1e-12,
+            "{torque} N·m: {} vs {charged}",
+            stage.mesh_efficiency
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 3);
+    let equal = drive_scene(STIFFNESS_SHARED, |s| s.replace("load_sharing = stiffness", ""));
+    let (equal, _) = gearloss::run_drive::drive_report_files(&equal, equal.drive.as_ref().unwrap()).unwrap();
+    for (a, b) in report.stage_pairs.iter().zip(&equal.stage_pairs) {
+        assert!(
+            (a.mesh_efficiency - b.mesh_efficiency).abs() > 1e-5,
+            "point {}: {} vs {}",
+            a.point,
+            a.mesh_efficiency,
+            b.mesh_efficiency
+        );
+    }
 }

@@ -196,6 +196,9 @@ fn inputs(out: &mut String, r: &DriveReport) {
             ],
         );
     }
+    for s in r.stages.iter().filter(|s| s.load_sharing.is_some()) {
+        md!(out, "\nStage `{}`'s load sharing: {}.", s.name, s.load_sharing.as_deref().unwrap_or_default());
+    }
     super::planetary::inputs(out, &r.stages, Units::of_system(r.unit_system));
     super::point_tables::shafts(out, &r.shafts, Units::of_system(r.unit_system));
     super::shaft_bending::inputs(out, r);
