@@ -154,6 +154,16 @@ impl MeshEfficiency for LawMeshes<'_> {
     }
 }
 
+/// The meshes of a drive whose scene lists no friction law (it asks only for analyses of one
+/// pair): each passes its power whole, the bearings, seals and gears' no-load parts still charged.
+struct WholeMeshes;
+
+impl MeshEfficiency for WholeMeshes {
+    fn efficiency(&self, _: usize, _: usize, _: Member, _: f64, _: f64) -> f64 {
+        1.0
+    }
+}
+
 /// One operating point, law and formulation of a drive.
 #[derive(Debug, Clone)]
 pub struct DriveRow {
@@ -295,8 +305,21 @@ impl<'a> DriveSetup<'a> {
     /// The drive at `torque` and `speed` under law `law` and `formulation`.
     pub(crate) fn point(&self, law: usize, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
         let meshes = LawMeshes { stages: &self.stages, spec: &self.scene.friction[law], formulation };
+        self.solved(&meshes, torque, speed)
+    }
+
+    /// The drive at `torque` and `speed` under its first law and `formulation`; with no law (a
+    /// scene that asks only for analyses of one pair), its meshes passing their power whole.
+    pub(crate) fn first_law_point(&self, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
+        match self.scene.friction.is_empty() {
+            true => self.solved(&WholeMeshes, torque, speed),
+            false => self.point(0, formulation, torque, speed),
+        }
+    }
+
+    fn solved(&self, meshes: &dyn MeshEfficiency, torque: EndValue, speed: EndValue) -> DrivePoint {
         let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil, beams: &self.beams };
-        solve(&model, &meshes, torque, speed)
+        solve(&model, meshes, torque, speed)
     }
 
     /// The formulations each point is evaluated in, in the scene's order.

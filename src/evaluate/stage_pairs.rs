@@ -52,10 +52,7 @@ pub struct StagePair {
 /// point-major; empty when the scene asks for no analysis of one pair.
 pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
     let a = &scene.analyses;
-    if !a.runs_stage_pairs(!scene.operating.detail_points.is_empty())
-        || scene.operating.count() == 0
-        || scene.friction.is_empty()
-    {
+    if !a.runs_stage_pairs(!scene.operating.detail_points.is_empty()) || scene.operating.count() == 0 {
         return Vec::new();
     }
     let setup = DriveSetup::new(scene, drive);
@@ -68,7 +65,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
         let (torque_index, speed_index) = (point / speeds, point % speeds);
         let torque = EndValue { at: ends.torque_at, value: op.pinion_torque.values[torque_index].value };
         let speed = EndValue { at: ends.speed_at, value: op.pinion_speed.values[speed_index].value };
-        let solved = setup.point(0, a.first_formulation(), torque, speed);
+        let solved = setup.first_law_point(a.first_formulation(), torque, speed);
         for (k, s) in solved.stages.iter().enumerate() {
             if !a.analyses_stage(&s.name) {
                 continue;

@@ -188,7 +188,7 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
             )
             .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
         ),
-        (false, _) if a.drive_cycle.is_some() => {}
+        (false, _) if a.drive_cycle.is_some() || a.wants_pair_analyses() => {}
         (false, _) => errors.push(
             Diagnostic::new(
                 DiagnosticKind::MissingKey,

@@ -212,3 +212,24 @@ fn a_stage_shared_by_stiffness_is_the_pair_alone() {
         );
     }
 }
+
+/// A drive that lists no friction law and asks only for an analysis of one pair walks its meshes
+/// passing their power whole: with no bearings, each point's mesh is at the input's torque (the
+/// wheel's u × |T_in| in coast) and speed exactly (1e-12), and each is run as its pair alone.
+#[test]
+fn a_drive_without_laws_walks_its_meshes_whole() {
+    let scene = drive_scene("tests/specs/ok/drive_pair_analyses_only.gear", |s| s);
+    assert!(scene.friction.is_empty() && scene.analyses.efficiency.is_none());
+    let (report, rendered) = gearloss::run_drive::drive_report_files(&scene, scene.drive.as_ref().unwrap()).unwrap();
+    assert!(report.points.is_empty());
+    let expected = [(202.5, 2.0 / 3.0), (50.0, 1.0), (135.0, 1.0), (300.0, 1.0)];
+    assert_eq!(report.stage_pairs.len(), expected.len());
+    for (p, (torque, speed)) in report.stage_pairs.iter().zip(expected) {
+        assert!((p.pinion_torque - torque).abs() <= 1e-12 * torque, "point {}: {}", p.point, p.pinion_torque);
+        assert!((p.pinion_speed_rpm - 1000.0 * speed).abs() <= 1e-9, "point {}: {}", p.point, p.pinion_speed_rpm);
+        assert_eq!(p.mesh_efficiency, 1.0);
+        let folder = p.folder.as_ref().expect("run as its pair alone");
+        let md = &rendered.files.iter().find(|(f, _)| *f == format!("{folder}/report.md")).unwrap().1;
+        assert!(md.contains("ransmission error"), "{folder}");
+    }
+}

@@ -23,10 +23,12 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         r.shafts.iter().find(|s| s.role == "output").map_or("", |s| &s.name),
         r.torque_at.name(),
         r.speed_at.name(),
-        r.laws.join(", ")
+        if r.laws.is_empty() { "none (each mesh passes its power whole)".to_string() } else { r.laws.join(", ") }
     );
-    if r.points.is_empty() {
+    if r.points.is_empty() && r.cycle.is_some() {
         md!(out, "No operating points are given: the drive cycle below gives the box its load.\n");
+    } else if r.points.is_empty() {
+        md!(out, "The scene asks for no efficiency: the drive is walked only at the points its stages' meshes are analysed at, below.\n");
     } else {
         headline(&mut out, r);
     }

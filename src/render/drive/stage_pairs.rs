@@ -13,9 +13,12 @@ pub(crate) fn section(out: &mut String, r: &DriveReport) {
     md!(out, "## Stage meshes analysed as pairs\n");
     md!(
         out,
-        "Each analysed stage's mesh (each mesh of a planetary stage) is run as its pair alone at the state the drive's power walk gives it, the drive solved under {} ({}): the driving member in the pinion's place (the planet in a planet–ring mesh, as the walk evaluates it), the pinion's torque into the mesh (per planet for a planetary stage) and its speed (in the carrier's frame for a planetary stage), the scene's lubricant, laws and analyses. Its report (μ along the line of action, film, contact, dynamics as the scene asks) is a report of one pair, in the folder linked; the same pair written alone with `pinion_torque` and `pinion_speed` at these values gives the same numbers.\n",
-        first.law,
-        first.formulation
+        "Each analysed stage's mesh (each mesh of a planetary stage) is run as its pair alone at the state the drive's power walk gives it, the drive solved {}: the driving member in the pinion's place (the planet in a planet–ring mesh, as the walk evaluates it), the pinion's torque into the mesh (per planet for a planetary stage) and its speed (in the carrier's frame for a planetary stage), the scene's lubricant, laws and analyses. Its report (μ along the line of action, film, contact, dynamics as the scene asks) is a report of one pair, in the folder linked; the same pair written alone with `pinion_torque` and `pinion_speed` at these values gives the same numbers.\n",
+        if first.law.is_empty() {
+            "with its meshes passing their power whole (the scene lists no friction law; the bearings, seals and gears' no-load parts are charged)".to_string()
+        } else {
+            format!("under {} ({})", first.law, first.formulation)
+        }
     );
     header(
         out,
@@ -52,6 +55,10 @@ pub(crate) fn section(out: &mut String, r: &DriveReport) {
                 },
             ],
         );
+    }
+    if first.law.is_empty() {
+        md!(out, "\nη_mesh is what the walk charged: with no friction law, none (100 %); the pair alone reports no efficiency.\n");
+        return;
     }
     md!(out, "\nη_mesh is what the walk charged: 1 − P_mesh/(T ω) with the mesh loss a loss budget charges (for ISO/TR 14179-2 on a helical pair, P_in μ̄ H_V with Ohlendorf's H_V; else the contact-line integral). The pair alone's η as charged is the same loss read from its own report (`ohlendorf_power_loss` or `power_loss`), and equals η_mesh; its η̄ is the mean of η(t) along the mesh cycle of the contact-line integral, the pair report's headline.\n");
 }
