@@ -375,33 +375,3 @@ pub struct Analyses {
     /// None: every stage.
     pub stages: Option<Vec<(String, Span)>>,
 }
-
-impl Analyses {
-    /// Whether the analyses of one pair run on the drive's stage `name` (`stages = [...]` names it,
-    /// or it names none).
-    pub fn analyses_stage(&self, name: &str) -> bool {
-        self.stages.as_ref().is_none_or(|s| s.iter().any(|(n, _)| n == name))
-    }
-
-    /// Whether the scene asks for an analysis of one pair's mesh (run on each stage of a drive).
-    pub fn wants_pair_analyses(&self) -> bool {
-        self.friction_along_loa
-            || self.film
-            || self.dynamics
-            || self.numerics
-            || self.stability_map.is_some()
-            || self.transmission_error.is_some()
-    }
-
-    /// Whether a drive runs its analysed stages' meshes as pairs alone: it asks for an analysis of
-    /// one pair, or names `detail_points` and asks for `efficiency` (each mesh's efficiency along
-    /// its mesh cycle in full at those points, as the pair alone reports it).
-    pub fn runs_stage_pairs(&self, detail_points_named: bool) -> bool {
-        self.wants_pair_analyses() || (detail_points_named && self.efficiency.is_some())
-    }
-
-    /// The formulation a drive's duty cycle and drive cycle run under: `efficiency`'s first, else external.
-    pub fn first_formulation(&self) -> Formulation {
-        self.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External)
-    }
-}

@@ -163,3 +163,46 @@ fn stage_names(value: &Value, errors: &mut Vec<Diagnostic>) -> Option<Vec<(Strin
     }
     Some(names)
 }
+
+/// What the lowered analyses ask, as the evaluation reads them.
+impl crate::model::Analyses {
+    /// Whether the analyses of one pair run on the drive's stage `name` (`stages = [...]` names it,
+    /// or it names none).
+    pub fn analyses_stage(&self, name: &str) -> bool {
+        self.stages.as_ref().is_none_or(|s| s.iter().any(|(n, _)| n == name))
+    }
+
+    /// Whether the scene asks for an analysis of one pair's mesh (run on each stage of a drive).
+    pub fn wants_pair_analyses(&self) -> bool {
+        self.friction_along_loa
+            || self.film
+            || self.dynamics
+            || self.numerics
+            || self.stability_map.is_some()
+            || self.transmission_error.is_some()
+    }
+
+    /// Whether a drive runs its analysed stages' meshes as pairs alone: it asks for an analysis of
+    /// one pair, or names `detail_points` and asks for `efficiency` (each mesh's efficiency along
+    /// its mesh cycle in full at those points, as the pair alone reports it).
+    pub fn runs_stage_pairs(&self, detail_points_named: bool) -> bool {
+        self.wants_pair_analyses() || (detail_points_named && self.efficiency.is_some()) || self.asks_nothing()
+    }
+
+    /// A scene with no `analyses` (or an empty one): a pair reports its geometry and its contact
+    /// along the line of action, and a drive each stage's mesh as that pair alone.
+    pub fn asks_nothing(&self) -> bool {
+        self.efficiency.is_none()
+            && !self.wants_pair_analyses()
+            && self.drive_cycle.is_none()
+            && self.thermal_balance.is_none()
+            && self.duty_cycle.is_none()
+            && self.efficiency_map.is_none()
+            && self.map_ends.is_none()
+    }
+
+    /// The formulation a drive's duty cycle and drive cycle run under: `efficiency`'s first, else external.
+    pub fn first_formulation(&self) -> Formulation {
+        self.efficiency.as_ref().and_then(|f| f.first().copied()).unwrap_or(Formulation::External)
+    }
+}

@@ -176,8 +176,9 @@ fn step_keys(ends: crate::drive::DriveOperating) -> super::lower_thermal::StepKe
     }
 }
 
-/// A drive's analyses: `efficiency` (and its map), which need friction laws (the analyses of one
-/// pair on its stages: [`super::lower_stage_analyses`]).
+/// A drive's analyses: `efficiency` (and its map, the thermal balance, the duty cycle), which need
+/// friction laws; a drive that asks for nothing, or only for analyses of one pair, runs its stages'
+/// meshes as pairs alone ([`super::lower_stage_analyses`]).
 fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: bool, errors: &mut Vec<Diagnostic>) {
     match (a.efficiency.is_some(), a.friction_span) {
         (false, _) if a.drive_cycle.is_some() && no_laws => errors.push(
@@ -188,14 +189,14 @@ fn check_analyses(block: Option<&Block>, a: &Analyses, title: Span, no_laws: boo
             )
             .hint("add a block such as `friction { iso_14179_2(x_l = 0.75) }` (README lists the laws)"),
         ),
-        (false, _) if a.drive_cycle.is_some() || a.wants_pair_analyses() => {}
+        (false, _) if a.drive_cycle.is_some() || a.wants_pair_analyses() || a.asks_nothing() => {}
         (false, _) => errors.push(
             Diagnostic::new(
                 DiagnosticKind::MissingKey,
                 block.map_or(title, |b| b.kind.span),
-                "a drive's report is its efficiency: the scene asks for none",
+                "the thermal balance, the duty cycle and the efficiency map charge the drive's efficiency, and the scene asks for none",
             )
-            .hint("add `analyses { efficiency(formulations = [external]) }`"),
+            .hint("add `efficiency(formulations = [external])` to `analyses`"),
         ),
         (true, Some(span)) if no_laws => errors.push(
             Diagnostic::new(

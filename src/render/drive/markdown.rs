@@ -204,6 +204,10 @@ fn inputs(out: &mut String, r: &DriveReport) {
     super::planetary::inputs(out, &r.stages, Units::of_system(r.unit_system));
     super::point_tables::shafts(out, &r.shafts, Units::of_system(r.unit_system));
     super::shaft_bending::inputs(out, r);
+    if r.oil.is_empty() {
+        // (A drive without a lubricant: every analysis it asks for reads none.)
+        return;
+    }
     md!(out, "\n## Oil (one sump)\n");
     header(out, &["value", "", "unit"]);
     let units = Units::of_system(r.unit_system);
