@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use super::setup::law_at;
 use crate::drive::walk::DriveModel;
-use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes};
+use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes, ShaftEnd};
 use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
 use crate::friction::LawContext;
 use crate::geometry::sharing::Sharing;
@@ -163,6 +163,9 @@ impl MeshEfficiency for WholeMeshes {
         1.0
     }
 }
+
+/// Walks at most, beyond the first, to put a one-pair scene's torque at its pinion gear.
+const PINION_WALKS: usize = 8;
 
 /// One operating point, law and formulation of a drive.
 #[derive(Debug, Clone)]
@@ -317,9 +320,26 @@ impl<'a> DriveSetup<'a> {
         }
     }
 
+    /// The walk at the given ends. A scene of one pair (its one-stage drive) gives its
+    /// `pinion_torque` at the pinion gear, into the mesh, as the pair's budget reads it: the input's
+    /// torque is that plus the pinion shaft's own losses (bearings, seals, no-load parts), found by
+    /// walking again with the input raised by what the mesh missed until the mesh's driving torque
+    /// is the given one to [`crate::drive::walk::TOLERANCE`] (two or three walks: the shaft's losses
+    /// depend on the mesh's forces, which the given torque fixes).
     fn solved(&self, meshes: &dyn MeshEfficiency, torque: EndValue, speed: EndValue) -> DrivePoint {
         let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil, beams: &self.beams };
-        solve(&model, meshes, torque, speed)
+        let at_pinion = self.drive.one_pair && torque.at == ShaftEnd::Input && torque.value > 0.0;
+        let mut point = solve(&model, meshes, torque, speed);
+        let mut at_input = torque;
+        for _ in 0..PINION_WALKS {
+            let missed = torque.value - point.stages[0].driving_torque;
+            if !at_pinion || !missed.is_finite() || missed.abs() <= crate::drive::walk::TOLERANCE * torque.value {
+                break;
+            }
+            at_input.value += missed;
+            point = solve(&model, meshes, at_input, speed);
+        }
+        point
     }
 
     /// The formulations each point is evaluated in, in the scene's order.

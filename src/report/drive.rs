@@ -326,9 +326,11 @@ pub(crate) fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize
     let op = &scene.operating;
     let end = |e: ShaftEnd| if e == ShaftEnd::Input { "in" } else { "out" };
     let ends = drive.layout.operating;
+    // A scene of one pair gives its torque at the pinion gear (evaluate/drive_setup.rs).
+    let torque_at = if drive.one_pair && ends.torque_at == ShaftEnd::Input { "pinion" } else { end(ends.torque_at) };
     format!(
         "T_{} = {} {}, n_{} = {} {}",
-        end(ends.torque_at),
+        torque_at,
         op.pinion_torque.written_values[torque_index],
         crate::quantity::shown_written_unit(&op.pinion_torque.unit),
         end(ends.speed_at),

@@ -41,6 +41,19 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
     lower_any(ast, base_dir, false)
 }
 
+/// A scene of one pair lowered as the one-stage drive it is, whatever it asks for (the rewrite of
+/// [`super::pair_stage`]: stage `pair` on shafts `pinion_shaft` in and `wheel_shaft` out); a scene
+/// of stages as [`lower_scene_in`] lowers it. What the pipeline of one path reads for every scene;
+/// tests/it/one_stage.rs holds each pair's numbers against its one-stage drive's.
+pub fn lower_as_one_stage_drive(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Diagnostic>> {
+    let one_pair = ast.items.iter().any(|i| matches!(i, Item::Block(b) if b.kind.text == "gears"))
+        && !ast.items.iter().any(|i| matches!(i, Item::Block(b) if b.kind.text == "stage"));
+    match one_pair {
+        true => lower_any(&super::pair_stage::as_one_stage(ast), base_dir, true),
+        false => lower_scene_in(ast, base_dir),
+    }
+}
+
 /// A scene of one pair or of stages; `one_pair`: the stages are the one a pair on a drive cycle is
 /// ([`super::pair_stage`]).
 fn lower_any(ast: &SceneAst, base_dir: Option<&std::path::Path>, one_pair: bool) -> Result<Scene, Vec<Diagnostic>> {

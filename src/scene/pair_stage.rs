@@ -10,7 +10,7 @@
 //! | `gearbox { lubrication = ... }` | the stage's `lubrication` |
 //! | `gearbox { pinion_shaft { ... }  wheel_shaft { ... } }` | `gearbox { shaft pinion_shaft { input ... }  shaft wheel_shaft { output ... } }` (a shaft block not written is an empty one) |
 //! | bearings without `at` | places without positions: each bearing an equal share of the gear force, the pair's rule |
-//! | `pinion_torque`, `pinion_speed` | `input_torque`, `input_speed` (the pinion's shaft is the input), in `operating`, in a `duty_cycle`'s steps and on an `efficiency_map`'s axes |
+//! | `pinion_torque`, `pinion_speed` | `input_torque`, `input_speed` (the pinion's shaft is the input), in `operating`, in a `duty_cycle`'s steps and on an `efficiency_map`'s axes; the torque stays the pair's, at the pinion gear (into the mesh): the walk puts the input's torque at that plus the pinion shaft's own losses (`evaluate/drive_setup.rs`), and the report labels the points `T_pinion` |
 //!
 //! The housing, duty cycle, lubricant, friction laws, vehicle, drive cycle and analyses are taken
 //! as written.

@@ -22,6 +22,7 @@ mod internal_pair;
 mod load_sharing;
 mod losses;
 mod oil_sweep;
+mod one_stage;
 mod pair_cycle;
 mod planetary;
 mod planetary_helical;

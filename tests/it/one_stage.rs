@@ -1,0 +1,108 @@
+//! Every scene of one pair is the one-stage drive it is: lowered as that drive
+//! (`gearloss::scene::lower::lower_as_one_stage_drive`) and walked, it gives the pair's own numbers.
+
+use gearloss::efficiency::Formulation;
+
+/// The scenes of one pair that ask for efficiency, among the specs and the ok fixtures, but an
+/// internal pair's (a ring is not a parallel stage in this version).
+fn pair_scenes() -> Vec<std::path::PathBuf> {
+    let mut out = Vec::new();
+    for dir in ["specs", "tests/specs/ok"] {
+        for entry in std::fs::read_dir(crate::root().join(dir)).unwrap() {
+            let path = entry.unwrap().path();
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            let is_pair =
+                text.contains("gears {") && !text.contains("stage \"") && !text.contains("mesh           = internal");
+            if path.extension().is_some_and(|e| e == "gear") && is_pair && text.contains("efficiency(") {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// At every operating point, law and formulation the drive's mesh loss is the loss the pair's own
+/// report charges (ISO/TR 14179-2's P_in μ̄ H_V on a helical pair, else the contact-line integral),
+/// and where the pair describes its gearbox the drive's whole loss is the pair's budget: 1e-12
+/// relative (the walk's fixed point settles bearing loads to 1e-12). The mesh's driving torque is
+/// the pair's `pinion_torque` (1e-12), the drive's input torque that plus the pinion shaft's
+/// losses. At the scene's first oil temperature (a scene whose oil settles at the thermal balance
+/// is compared at its written temperature, both sides alike).
+#[test]
+fn every_pair_is_its_one_stage_drive() {
+    let mut compared = 0;
+    let mut budgets = 0;
+    let scenes = pair_scenes();
+    assert!(scenes.len() >= 15, "{} scenes", scenes.len());
+    for path in &scenes {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(path).unwrap();
+        let pair = gearloss::check(&name, &source).unwrap_or_else(|e| panic!("{e}"));
+        let ast = gearloss::parse(&name, &source).unwrap();
+        let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent())
+            .unwrap_or_else(|e| panic!("{name}: {:?}", e.iter().map(|d| &d.reason).collect::<Vec<_>>()));
+        let (pair, drive) = (pair.at_oil_temperature(0), drive.at_oil_temperature(0));
+        let pair_report = gearloss::report_of(&pair);
+        let mut csv = Vec::new();
+        gearloss::evaluate::evaluate_drive_into(&drive, drive.drive.as_ref().unwrap(), &mut csv).unwrap();
+        let csv = String::from_utf8(csv).unwrap();
+        let mut lines = csv.lines();
+        let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
+        let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+        let labels: Vec<String> = pair.friction.iter().map(|l| l.label()).collect();
+        for r in &pair_report.efficiency {
+            let t = r.pinion_torque.value.0;
+            let formulation = match r.formulation {
+                Formulation::External => "external",
+                Formulation::Internal => "internal",
+            };
+            let law = labels.iter().position(|l| *l == r.label).unwrap().to_string();
+            let key = [r.torque_index.to_string(), r.speed_index.to_string(), law, formulation.to_string()];
+            let row = rows
+                .iter()
+                .find(|row| {
+                    ["torque_index", "speed_index", "law_index", "formulation"]
+                        .iter()
+                        .zip(&key)
+                        .all(|(c, k)| row[col(c)] == k)
+                })
+                .unwrap_or_else(|| panic!("{name}: no drive row {key:?}"));
+            let value = |c: &str| row[col(c)].parse::<f64>().unwrap();
+            // `pinion_torque` is the torque into the mesh, the input's that plus the pinion shaft's losses.
+            let at_pinion = value("stage_pair_driving_torque_N_m");
+            assert!((at_pinion - t).abs() <= 1e-12 * t, "{name}: {key:?}: the mesh at {at_pinion} N·m");
+            assert!(value("input_torque_N_m") >= t * (1.0 - 1e-12), "{name}: {key:?}");
+            let charged = match (&r.ohlendorf, r.budget_charges_iso_mesh_loss || charges_iso(&pair, r)) {
+                (Some(o), true) => o.power_loss.value.0,
+                _ => r.power_loss.value.0,
+            };
+            let mesh = value("meshes_W");
+            assert!(
+                (mesh - charged).abs() <= 1e-12 * charged,
+                "{name}, {} {formulation} at {t} N·m: drive {mesh} W, pair {charged} W",
+                r.label
+            );
+            compared += 1;
+            if let Some(b) = &r.budget {
+                let total = b.total_loss.value.0;
+                assert!(
+                    (value("total_W") - total).abs() <= 1e-12 * total,
+                    "{name}, {} {formulation} at {t} N·m: drive loses {} W, the pair's budget {total} W",
+                    r.label,
+                    value("total_W")
+                );
+                budgets += 1;
+            }
+        }
+    }
+    eprintln!("{} scenes: {compared} points compared, {budgets} with a budget", scenes.len());
+    assert!(compared >= 100 && budgets >= 20, "{compared} points compared, {budgets} budgets");
+}
+
+/// Whether the pair's mesh loss as a budget charges it is ISO/TR 14179-2's own (the law on a helical pair).
+fn charges_iso(scene: &gearloss::Scene, r: &gearloss::report::friction::EfficiencyRecord) -> bool {
+    r.law == gearloss::friction::LawId::Iso14179_2
+        && scene.gears.helix_angle.as_ref().is_some_and(|b| b.value.value != 0.0)
+}
