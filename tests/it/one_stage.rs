@@ -106,3 +106,55 @@ fn charges_iso(scene: &gearloss::Scene, r: &gearloss::report::friction::Efficien
     r.law == gearloss::friction::LawId::Iso14179_2
         && scene.gears.helix_angle.as_ref().is_some_and(|b| b.value.value != 0.0)
 }
+
+/// The thermal balance of every pair that asks for one, as its one-stage drive finds it: at each
+/// point, law and formulation θ* and P_V(θ*) to 1e-12 relative (the same root search on the same
+/// P_V(θ)), the rating torque to 1e-9 (a root search of its own in the torque, settled to about
+/// 1e-11 relative, differs by 2.6e-11 in specs/fzg_c14_thermal.gear) where the pair has one.
+#[test]
+fn every_pair_balances_as_its_one_stage_drive() {
+    let (mut compared, mut ratings) = (0, 0);
+    for path in pair_scenes() {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        let pair = gearloss::check(&name, &source).unwrap();
+        if pair.analyses.thermal_balance.is_none() || pair.operating.oil_temperatures.is_some() {
+            continue;
+        }
+        let ast = gearloss::parse(&name, &source).unwrap();
+        let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+        let report = gearloss::report_of(&pair);
+        let eval = gearloss::evaluate::evaluate_drive(&drive, drive.drive.as_ref().unwrap());
+        let labels: Vec<String> = pair.friction.iter().map(|l| l.label()).collect();
+        let speeds = pair.operating.pinion_speed.values.len();
+        for b in &eval.balances {
+            let r = report
+                .thermal
+                .iter()
+                .find(|r| {
+                    r.case == b.torque_index * speeds + b.speed_index
+                        && r.label == labels[b.law_index]
+                        && r.formulation == b.formulation
+                })
+                .unwrap_or_else(|| panic!("{name}: no pair balance at row {:?}", (b.torque_index, b.speed_index)));
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
+            let theta = r.oil_temperature.as_ref().map(|q| q.value.0);
+            match (b.balance.temperature, theta) {
+                (Some(d), Some(p)) => assert!(close(d, p), "{name}: θ* {d} K vs the pair's {p} K"),
+                (None, None) => {}
+                other => panic!("{name}: {other:?}"),
+            }
+            if let Some(loss) = b.loss {
+                assert!(close(loss, r.power_loss.value.0), "{name}: P_V {loss} vs {}", r.power_loss.value.0);
+            }
+            if let (Some(d), Some(p)) = (b.rating, &r.thermal_rating) {
+                let t = p.torque.value.0;
+                assert!((d - t).abs() <= 1e-9 * t, "{name}: rating {d} N·m vs the pair's {}", p.torque.value.0);
+                ratings += 1;
+            }
+            compared += 1;
+        }
+    }
+    eprintln!("{compared} balances compared, {ratings} ratings");
+    assert!(compared >= 5 && ratings >= 3, "{compared} balances, {ratings} ratings");
+}
