@@ -19,6 +19,7 @@
 //! the pinion's role.
 
 pub(crate) mod forces;
+pub(crate) mod internal_stage;
 pub(crate) mod kind_state;
 pub mod kinematics;
 pub(crate) mod layout;

@@ -1,6 +1,7 @@
 //! The stage kinds as the drive's walk reads them: one row a kind, from the kind's data in the
 //! stage ([`crate::drive::kinematics::StageKind`]) to its [`StageModel`].
 
+use super::internal_stage::InternalStage;
 use super::kinematics::StageKind;
 use super::layout::{Member, Stage};
 use super::parallel_stage::ParallelStage;
@@ -12,6 +13,7 @@ impl Stage {
         match &self.kind {
             StageKind::Parallel => &ParallelStage,
             StageKind::Planetary(layout) => layout.as_ref(),
+            StageKind::Internal => &InternalStage,
         }
     }
 

@@ -72,9 +72,14 @@ impl StageMesh {
         let mesh = drive.mesh(k, scene.lubricant.as_ref());
         let e_r = mesh.reduced_modulus();
         let tribology = mesh.tribology(e_r);
+        // A ring is no pinion: an internal pair is evaluated with its pinion in the pinion's place
+        // whichever gear drives ([`StageMesh::law_context`]).
         let geometry = std::sync::Arc::new([
             mesh.geometry(),
-            drive.pairs[k].swapped().geometry().expect("a pair's geometry holds with the roles swapped"),
+            match drive.pairs[k].internal {
+                true => mesh.geometry(),
+                false => drive.pairs[k].swapped().geometry().expect("a pair's geometry holds with the roles swapped"),
+            },
         ]);
         let whole = drive.pairs[k].load_sharing == LoadSharing::None;
         let stiffness = std::sync::Arc::new([drive.pairs[k].clone(), drive.pairs[k].swapped()].map(|pair| {
@@ -108,6 +113,11 @@ impl StageMesh {
     /// pinion's place at its torque and speed, and that pair's loss factor H_V.
     fn law_context(&self, mesh: usize, driving: Member, torque: f64, speed: f64) -> (LawContext<'_>, f64) {
         match mesh {
+            // An internal stage's ring driving: the pinion in the pinion's place at the same power.
+            0 if driving == Member::Wheel && self.geometry[0].internal => {
+                let u = self.geometry[0].gear_ratio.abs();
+                (self.context(0, torque / u, speed * u), self.h_v[0])
+            }
             0 => {
                 let d = driving.index();
                 (self.context(d, torque, speed), self.h_v[d])

@@ -21,7 +21,7 @@
 //! those values reports (tests/it/stage_pairs.rs holds the two to 1e-12).
 
 use super::drive_setup::DriveSetup;
-use crate::drive::{EndValue, Member};
+use crate::drive::{EndValue, Member, MeshState};
 use crate::model::{Analyses, GearPair, Operating, Scene, SceneDrive, Sweep};
 
 /// One mesh of an analysed stage at one of the drive's operating points.
@@ -79,7 +79,17 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
                     point + 1
                 );
                 let pair = drive.mesh_pair(k, m.mesh);
-                let pair = if m.driving == Member::Pinion { pair.clone() } else { pair.swapped() };
+                // A ring is no pinion: an internal pair driven by its ring is the pinion's pair at
+                // the same power, as the walk evaluates it (drive/internal_stage.rs).
+                let (pair, m) = match (m.driving, pair.internal) {
+                    (Member::Pinion, _) => (pair.clone(), m),
+                    (Member::Wheel, true) => {
+                        let u = f64::from(pair.wheel.teeth.value) / f64::from(pair.pinion.teeth.value);
+                        let members = ["pinion", "wheel"];
+                        (pair.clone(), MeshState { torque: m.torque / u, speed: m.speed * u, members, ..m })
+                    }
+                    (Member::Wheel, false) => (pair.swapped(), m),
+                };
                 let alone =
                     (m.torque > 0.0 && m.speed > 0.0).then(|| pair_scene(scene, title, pair, (m.torque, m.speed)));
                 out.push(StagePair {

@@ -25,7 +25,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: U
         out.push(Finding {
             severity: Severity::Note,
             message: format!(
-                "the scene is one pair with a vehicle: it runs as the one-stage drive it is, stage `{}` from shaft `{}` (the pinion's, the input: `pinion_torque` and `pinion_speed` are the input's) to shaft `{}` (the wheel's, the output); a bearing's `at` is from the mesh mid-plane, and bearings written without `at` each carry an equal share of the gear force (README, \"One pair over a drive cycle\")",
+                "the scene is one pair with a vehicle: it runs as the one-stage drive it is, stage `{}` from shaft `{}` (the pinion's, the input: `pinion_torque` is the torque at the pinion gear, the input's that plus its shaft's losses, and `pinion_speed` the input's) to shaft `{}` (the wheel's, the output); a bearing's `at` is from the mesh mid-plane, and bearings written without `at` each carry an equal share of the gear force (README, \"One pair over a drive cycle\")",
                 crate::scene::pair_stage::STAGE,
                 layout.shafts[layout.input].name,
                 layout.shafts[layout.output].name

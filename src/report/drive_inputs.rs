@@ -36,6 +36,9 @@ pub struct StageInputs {
     /// as written, or `none`); absent for equal sharing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load_sharing: Option<String>,
+    /// An internal stage: its wheel is a ring gear.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub internal: bool,
 }
 
 /// A shaft as the scene gives it.
@@ -110,6 +113,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
                 lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), |l| lubrication_words(l, units)),
                 kind: super::kind_inputs::kind_inputs(layout, s, ring_pair.as_ref()),
                 load_sharing: sharing_words(pair),
+                internal: pair.internal,
             }
         })
         .collect()

@@ -18,7 +18,7 @@ pub enum KindInputs {
 /// The inputs of `stage`'s kind; `further` is the pair of its second mesh, where it has one.
 pub(super) fn kind_inputs(layout: &Drive, stage: &Stage, further: Option<&GearPair>) -> Option<Box<KindInputs>> {
     match &stage.kind {
-        StageKind::Parallel => None,
+        StageKind::Parallel | StageKind::Internal => None,
         StageKind::Planetary(p) => super::planetary_inputs::planetary_inputs(layout, stage, p, further)
             .map(|i| Box::new(KindInputs::Planetary(i))),
     }

@@ -102,19 +102,25 @@ pub(super) fn lower_stage(
         errors,
     );
     if pair.internal {
-        // A ring gear on its own shaft is a planetary stage's member (its own geometry, signs and
-        // forces); a parallel stage's walk, forces and statics are of two external gears.
-        let span = pair_block
-            .items
-            .iter()
-            .map(crate::scene::ast::Item::head)
-            .find(|k| k.text == "mesh")
-            .map_or(pair_block.kind.span, |k| k.span);
-        errors.push(
-            Diagnostic::new(DiagnosticKind::OutOfRange, span, "an internal pair (`mesh = internal`) is not a stage of a drive in this version")
-                .hint("a ring gear turns in a drive as a planetary stage's `ring` (`planetary { ... ring { teeth = 72  shaft = housing } ... }`); study an internal pair alone in a scene with a `gears` block and no vehicle (one pair with a vehicle runs as a drive's stage)"),
-        );
-        return None;
+        // A ring gear on its own shaft is an internal stage: the walk, forces and statics of
+        // `drive/internal_stage.rs`. Its churning and its teeth's stiffness are not modelled.
+        let before = errors.len();
+        if lubrication.is_some() {
+            let span = super::lower_gearbox::lubrication_span(block);
+            errors.push(
+                Diagnostic::new(DiagnosticKind::OutOfRange, span, "an internal stage's churning (a ring's oil) is not modelled")
+                    .hint("leave out the stage's `lubrication`: its mesh, bearings and seals are charged; a ring in oil is a planetary stage's (`planetary { ... ring { ... } }`)"),
+            );
+        }
+        let wants = super::lower_gears::InternalPairWants {
+            teeth: pair.load_sharing == crate::model::LoadSharing::Stiffness,
+            dynamics: None,
+            gearbox: None,
+        };
+        super::lower_gears::check_internal_pair(&pair, &wants, errors);
+        if errors.len() > before {
+            return None;
+        }
     }
     if pair.load_sharing == crate::model::LoadSharing::Stiffness {
         // The walk shares each mesh's load by the teeth's stiffness as either member drives: the

@@ -28,7 +28,10 @@ impl StageDeclKind {
     /// (lowering reports that where it checks the pairs).
     pub(super) fn lowered(&self, pair: &GearPair) -> Option<(StageKind, [u32; 2])> {
         match self {
-            StageDeclKind::Parallel => Some((StageKind::Parallel, [pair.pinion.teeth.value, pair.wheel.teeth.value])),
+            StageDeclKind::Parallel => {
+                let kind = if pair.internal { StageKind::Internal } else { StageKind::Parallel };
+                Some((kind, [pair.pinion.teeth.value, pair.wheel.teeth.value]))
+            }
             StageDeclKind::Planetary(d) => {
                 let layout = d.layout(pair)?;
                 let teeth = [layout.teeth[0], layout.teeth[2]];

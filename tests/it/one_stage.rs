@@ -3,16 +3,15 @@
 
 use gearloss::efficiency::Formulation;
 
-/// The scenes of one pair that ask for efficiency, among the specs and the ok fixtures, but an
-/// internal pair's (a ring is not a parallel stage in this version).
+/// The scenes of one pair that ask for efficiency, among the specs and the ok fixtures (an internal
+/// pair's an internal stage).
 fn pair_scenes() -> Vec<std::path::PathBuf> {
     let mut out = Vec::new();
     for dir in ["specs", "tests/specs/ok"] {
         for entry in std::fs::read_dir(crate::root().join(dir)).unwrap() {
             let path = entry.unwrap().path();
             let text = std::fs::read_to_string(&path).unwrap_or_default();
-            let is_pair =
-                text.contains("gears {") && !text.contains("stage \"") && !text.contains("mesh           = internal");
+            let is_pair = text.contains("gears {") && !text.contains("stage \"");
             if path.extension().is_some_and(|e| e == "gear") && is_pair && text.contains("efficiency(") {
                 out.push(path);
             }

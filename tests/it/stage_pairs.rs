@@ -129,6 +129,8 @@ fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
         ("tests/specs/ok/drive_detail_points_in_full.gear", Some(("detail_points = [2]", ""))),
         // `load_sharing = stiffness` with tip relief, in drive and in coast.
         (STIFFNESS_SHARED, None),
+        // An internal stage: in coast the ring drives, the pinion in the pinion's place.
+        ("tests/specs/ok/drive_internal_stage.gear", None),
     ] {
         let scene = drive_scene(path, |s| match edit {
             Some((from, to)) => s.replacen(from, to, 1).replacen(
@@ -140,7 +142,7 @@ fn the_walks_mesh_efficiency_is_the_pair_alones_charged_loss() {
         });
         let drive = scene.drive.as_ref().unwrap();
         let (report, rendered) = gearloss::run_drive::drive_report_files(&scene, drive).unwrap();
-        assert!(report.stage_pairs.len() >= 4, "{path}: {} meshes", report.stage_pairs.len());
+        assert!(report.stage_pairs.len() >= 2, "{path}: {} meshes", report.stage_pairs.len());
         if path.contains("detail_points") {
             let points: Vec<usize> = report.stage_pairs.iter().map(|p| p.point).collect();
             assert_eq!(points, [1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6]);

@@ -33,4 +33,10 @@ pub const STAGE_KINDS: &[StageKindEntry] = &[
         file: "planetary.rs",
         title: "sun, planets on a carrier, ring; one member held: Willis, n_s − i₀ n_r − (1 − i₀) n_c = 0",
     },
+    StageKindEntry {
+        id: StageKindId::Internal,
+        name: "internal",
+        file: "internal.rs",
+        title: "a pinion inside a ring gear on parallel shafts: ω_ring = ω_pinion z_pinion/z_ring",
+    },
 ];

@@ -8,6 +8,7 @@ use super::planetary::PlanetaryLayout;
 pub enum StageKindId {
     Parallel,
     Planetary,
+    Internal,
 }
 
 /// A stage's kind with what its physics reads beyond the stage's two places, teeth and hand: a
@@ -17,6 +18,8 @@ pub enum StageKindId {
 pub enum StageKind {
     Parallel,
     Planetary(Box<PlanetaryLayout>),
+    /// A pinion inside a ring gear on parallel shafts (the stage's wheel is the ring).
+    Internal,
 }
 
 impl StageKind {
@@ -25,6 +28,7 @@ impl StageKind {
         match self {
             StageKind::Parallel => StageKindId::Parallel,
             StageKind::Planetary(_) => StageKindId::Planetary,
+            StageKind::Internal => StageKindId::Internal,
         }
     }
 }

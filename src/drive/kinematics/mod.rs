@@ -3,6 +3,7 @@
 //! planetary stage (sun, planets, ring, carrier; one member held).
 
 pub(crate) mod catalog;
+pub mod internal;
 pub(crate) mod kind_id;
 pub mod parallel;
 pub mod planetary;

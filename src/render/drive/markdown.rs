@@ -198,6 +198,9 @@ fn inputs(out: &mut String, r: &DriveReport) {
             ],
         );
     }
+    for s in r.stages.iter().filter(|s| s.internal) {
+        md!(out, "\nStage `{}` is internal: its wheel is a ring gear with the pinion inside it, both turning the same way (a and u in size; the teeth push the pinion toward its own axis and the ring outward).", s.name);
+    }
     for s in r.stages.iter().filter(|s| s.load_sharing.is_some()) {
         md!(out, "\nStage `{}`'s load sharing: {}.", s.name, s.load_sharing.as_deref().unwrap_or_default());
     }
