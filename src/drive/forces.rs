@@ -10,7 +10,8 @@
 //! rotation and the radial part points to its centre; the driven gear receives the opposite force.
 //! Axial sense: on the driving gear with a right-hand helix turning counter-clockwise about +z the
 //! axial force points along +z; it flips with the hand and with the sense of rotation, and the
-//! driven gear (of the other hand) receives the opposite.
+//! driven gear (of the other hand) receives the opposite. An internal stage's forces
+//! ([`internal_mesh_forces`]): the contact beyond the pinion's axis, the ring pushed outward.
 
 use super::layout::{Hand, Member, Stage};
 
@@ -118,4 +119,38 @@ pub fn mesh_forces(
     let mut out = [load(0, 1.0), load(1, 1.0)];
     out[1 - d] = load(1 - d, -1.0);
     out
+}
+
+/// The mesh forces of an internal stage on [pinion, ring] (`internal_stage.rs` states the model) when member `driving` passes `torque`
+/// (N·m, ≥ 0) into the mesh turning at `omega` (rad/s, signed about +z; both gears turn that way).
+pub(crate) fn internal_mesh_forces(
+    (index, stage): (usize, &Stage),
+    sizes: &MeshForceSizes,
+    driving: Member,
+    torque: f64,
+    omega: f64,
+) -> [GearLoad; 2] {
+    let [f_t, f_r, f_a] = sizes.magnitudes(driving, torque);
+    let (s, c) = stage.direction.sin_cos();
+    let sense = if omega < 0.0 { -1.0 } else { 1.0 };
+    // +1 where the pinion drives (its rotation opposed), −1 where it is driven.
+    let role = if driving == Member::Pinion { 1.0 } else { -1.0 };
+    let hand = stage.hand.map_or(0.0, |h| h.sign());
+    let on_pinion = [
+        -role * sense * f_t * -s - f_r * c,
+        -role * sense * f_t * c - f_r * s,
+        if f_a == 0.0 { 0.0 } else { role * hand * sense * f_a },
+    ];
+    let load = |m: Member, sign: f64| {
+        let place = stage.places[m.index()];
+        let r = sizes.working_pitch_radius[m.index()];
+        GearLoad {
+            stage: index,
+            member: m,
+            shaft: place.shaft,
+            point: [r * c, r * s, place.at],
+            force: on_pinion.map(|x| sign * x),
+        }
+    };
+    [load(Member::Pinion, 1.0), load(Member::Wheel, -1.0)]
 }

@@ -14,139 +14,18 @@
 //! same power (a ring is no pinion): the pinion's torque T z_p/z_r and speed ω z_r/z_p
 //! (`evaluate/drive_setup.rs`), as a planetary stage's planet–ring mesh is.
 
-use super::forces::{GearLoad, MeshForceSizes};
-use super::kind_state::{KindPoint, KindState};
-use super::kinematics::{internal::Internal, StageKinematics};
-use super::layout::{Member, Stage};
-use super::mesh_efficiency::MeshEfficiency;
-use super::point::BearingPoint;
-use super::stage_model::StageModel;
-use crate::losses::gear_no_load::GearsRunning;
-use crate::losses::Oil;
+use super::parallel_stage::ParallelStage;
 
-/// The internal stage kind.
-pub(crate) struct InternalStage;
-
-impl StageModel for InternalStage {
-    fn kinematics(&self, stage: &Stage) -> Box<dyn StageKinematics> {
-        Box::new(Internal { teeth: stage.teeth })
-    }
-
-    fn member_name(&self, m: Member) -> &'static str {
-        m.name()
-    }
-
-    /// Both gears at their places' speeds (lowering refuses a lubrication method on an internal
-    /// stage: no churning is charged).
-    fn gears_running(&self, _: &Stage, sizes: &MeshForceSizes, places: [f64; 2]) -> (usize, GearsRunning) {
-        let running = GearsRunning {
-            omega: places.map(f64::abs),
-            pitch_radius: sizes.working_pitch_radius,
-            face_width: sizes.face_width,
-        };
-        (0, running)
-    }
-
-    /// The one mesh's η at the driving gear's torque and speed (1 at no torque or no speed).
-    fn efficiency(
-        &self,
-        (k, _): (usize, &Stage),
-        meshes: &dyn MeshEfficiency,
-        (driving, torque, speed): (Member, f64, f64),
-        _: [f64; 2],
-    ) -> (f64, Option<KindState>) {
-        if torque == 0.0 || speed == 0.0 {
-            (1.0, None)
-        } else {
-            (meshes.efficiency(k, 0, driving, torque.abs(), speed), None)
-        }
-    }
-
-    fn member_loads(
-        &self,
-        (k, stage): (usize, &Stage),
-        sizes: &MeshForceSizes,
-        (driving, torque): (Member, f64),
-        places: [f64; 2],
-    ) -> Vec<GearLoad> {
-        internal_mesh_forces((k, stage), sizes, driving, torque, places[driving.index()]).to_vec()
-    }
-
-    fn member_bearings(&self, _: &Stage, _: (Member, f64), _: [f64; 2], _: &Oil) -> Option<(usize, BearingPoint)> {
-        None
-    }
-
-    fn point(
-        &self,
-        _: &Stage,
-        sizes: &MeshForceSizes,
-        (driving, torque): (Member, f64),
-        _: Option<&KindState>,
-        _: ([f64; 2], f64),
-    ) -> ([f64; 3], Option<Box<KindPoint>>) {
-        (sizes.magnitudes(driving, torque), None)
-    }
-
-    fn centred_member(&self, _: Member) -> bool {
-        false
-    }
-
-    fn one_pair_on_two_shafts(&self) -> bool {
-        true
-    }
-
-    fn mesh_gears(&self) -> &'static [[&'static str; 2]] {
-        &[["pinion", "wheel"]]
-    }
-
-    fn record_columns(&self) -> &'static [&'static str] {
-        &[]
-    }
-
-    fn shaft_notes(&self, _: &Stage, _: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)> {
-        Vec::new()
-    }
-}
-
-/// The mesh forces of an internal stage on [pinion, ring] when member `driving` passes `torque`
-/// (N·m, ≥ 0) into the mesh turning at `omega` (rad/s, signed about +z; both gears turn that way).
-pub(crate) fn internal_mesh_forces(
-    (index, stage): (usize, &Stage),
-    sizes: &MeshForceSizes,
-    driving: Member,
-    torque: f64,
-    omega: f64,
-) -> [GearLoad; 2] {
-    let [f_t, f_r, f_a] = sizes.magnitudes(driving, torque);
-    let (s, c) = stage.direction.sin_cos();
-    let sense = if omega < 0.0 { -1.0 } else { 1.0 };
-    // +1 where the pinion drives (its rotation opposed), −1 where it is driven.
-    let role = if driving == Member::Pinion { 1.0 } else { -1.0 };
-    let hand = stage.hand.map_or(0.0, |h| h.sign());
-    let on_pinion = [
-        -role * sense * f_t * -s - f_r * c,
-        -role * sense * f_t * c - f_r * s,
-        if f_a == 0.0 { 0.0 } else { role * hand * sense * f_a },
-    ];
-    let load = |m: Member, sign: f64| {
-        let place = stage.places[m.index()];
-        let r = sizes.working_pitch_radius[m.index()];
-        GearLoad {
-            stage: index,
-            member: m,
-            shaft: place.shaft,
-            point: [r * c, r * s, place.at],
-            force: on_pinion.map(|x| sign * x),
-        }
-    };
-    [load(Member::Pinion, 1.0), load(Member::Wheel, -1.0)]
-}
+/// The internal stage kind: a parallel stage's model (its gears' no-load parts, its one mesh's η,
+/// its point) with the internal pair's kinematics and forces ([`super::forces::internal_mesh_forces`]).
+/// Lowering refuses a lubrication method on it (no ring churning is charged).
+pub(crate) const INTERNAL_STAGE: ParallelStage = ParallelStage { internal: true };
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::drive::forces::{internal_mesh_forces, GearLoad, MeshForceSizes};
     use crate::drive::kinematics::StageKind;
-    use crate::drive::layout::GearPlace;
+    use crate::drive::layout::{GearPlace, Member, Stage};
 
     fn stage(direction: f64) -> Stage {
         Stage {

@@ -1,9 +1,10 @@
 //! A parallel stage as the drive's walk reads it: one external pair on two shafts (spur or
-//! helical), its pinion and wheel on the stage's two places.
+//! helical), its pinion and wheel on the stage's two places. The same model, with its own
+//! kinematics and forces, is the internal stage's (`internal_stage.rs`).
 
-use super::forces::{mesh_forces, GearLoad, MeshForceSizes};
+use super::forces::{internal_mesh_forces, mesh_forces, GearLoad, MeshForceSizes};
 use super::kind_state::{KindPoint, KindState};
-use super::kinematics::{parallel::Parallel, StageKinematics};
+use super::kinematics::{internal::Internal, parallel::Parallel, StageKinematics};
 use super::layout::{Member, Stage};
 use super::mesh_efficiency::MeshEfficiency;
 use super::point::BearingPoint;
@@ -11,12 +12,21 @@ use super::stage_model::StageModel;
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
+/// A stage of one pair on two parallel shafts: external (the parallel kind) or internal (a pinion
+/// inside a ring gear, [`super::internal_stage::INTERNAL_STAGE`]).
+pub(crate) struct ParallelStage {
+    pub internal: bool,
+}
+
 /// The parallel stage kind.
-pub(crate) struct ParallelStage;
+pub(crate) const PARALLEL_STAGE: ParallelStage = ParallelStage { internal: false };
 
 impl StageModel for ParallelStage {
     fn kinematics(&self, stage: &Stage) -> Box<dyn StageKinematics> {
-        Box::new(Parallel { teeth: stage.teeth })
+        match self.internal {
+            true => Box::new(Internal { teeth: stage.teeth }),
+            false => Box::new(Parallel { teeth: stage.teeth }),
+        }
     }
 
     fn member_name(&self, m: Member) -> &'static str {
@@ -56,7 +66,8 @@ impl StageModel for ParallelStage {
         (driving, torque): (Member, f64),
         places: [f64; 2],
     ) -> Vec<GearLoad> {
-        mesh_forces((k, stage), sizes, driving, torque, places[driving.index()]).to_vec()
+        let forces = if self.internal { internal_mesh_forces } else { mesh_forces };
+        forces((k, stage), sizes, driving, torque, places[driving.index()]).to_vec()
     }
 
     fn member_bearings(&self, _: &Stage, _: (Member, f64), _: [f64; 2], _: &Oil) -> Option<(usize, BearingPoint)> {

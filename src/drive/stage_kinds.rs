@@ -1,19 +1,19 @@
 //! The stage kinds as the drive's walk reads them: one row a kind, from the kind's data in the
 //! stage ([`crate::drive::kinematics::StageKind`]) to its [`StageModel`].
 
-use super::internal_stage::InternalStage;
+use super::internal_stage::INTERNAL_STAGE;
 use super::kinematics::StageKind;
 use super::layout::{Member, Stage};
-use super::parallel_stage::ParallelStage;
+use super::parallel_stage::PARALLEL_STAGE;
 use super::stage_model::StageModel;
 
 impl Stage {
     /// The stage's kind as the walk reads it: one row a kind.
     pub(crate) fn model(&self) -> &dyn StageModel {
         match &self.kind {
-            StageKind::Parallel => &ParallelStage,
+            StageKind::Parallel => &PARALLEL_STAGE,
             StageKind::Planetary(layout) => layout.as_ref(),
-            StageKind::Internal => &InternalStage,
+            StageKind::Internal => &INTERNAL_STAGE,
         }
     }
 

@@ -157,3 +157,26 @@ fn every_pair_balances_as_its_one_stage_drive() {
     eprintln!("{compared} balances compared, {ratings} ratings");
     assert!(compared >= 5 && ratings >= 3, "{compared} balances, {ratings} ratings");
 }
+
+/// Every scene of one pair among the specs and the ok fixtures, whatever it asks for, lowers as its
+/// one-stage drive: one lowered form serves them all.
+#[test]
+fn every_pair_lowers_as_its_one_stage_drive() {
+    let mut lowered = 0;
+    for dir in ["specs", "tests/specs/ok"] {
+        for entry in std::fs::read_dir(crate::root().join(dir)).unwrap() {
+            let path = entry.unwrap().path();
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            if path.extension().is_none_or(|e| e != "gear") || !text.contains("gears {") || text.contains("stage \"") {
+                continue;
+            }
+            let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+            let ast = gearloss::parse(&name, &text).unwrap();
+            let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent())
+                .unwrap_or_else(|e| panic!("{name}: {:?}", e.iter().map(|d| &d.reason).collect::<Vec<_>>()));
+            assert!(drive.drive.as_ref().is_some_and(|d| d.one_pair && d.layout.stages.len() == 1), "{name}");
+            lowered += 1;
+        }
+    }
+    assert!(lowered >= 30, "{lowered} pairs");
+}

@@ -12,18 +12,11 @@ pub struct Internal {
 
 impl StageKinematics for Internal {
     fn speeds(&self, known: usize, omega: f64) -> Vec<f64> {
-        let z = self.teeth.map(f64::from);
-        let other = omega * z[known] / z[1 - known];
-        if known == 0 {
-            vec![omega, other]
-        } else {
-            vec![other, omega]
-        }
+        super::parallel::pair_speeds(self.teeth, known, omega, 1.0)
     }
 
     fn torque_ratio(&self, driving: usize) -> f64 {
-        let z = self.teeth.map(f64::from);
-        z[1 - driving] / z[driving]
+        super::parallel::pair_torque_ratio(self.teeth, driving)
     }
 }
 
