@@ -42,7 +42,7 @@ pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Res
 }
 
 /// A scene of one pair lowered as the one-stage drive it is, whatever it asks for (the rewrite of
-/// [`super::pair_stage`]: stage `pair` on shafts `pinion_shaft` in and `wheel_shaft` out); a scene
+/// `scene/pair_stage.rs`: stage `pair` on shafts `pinion_shaft` in and `wheel_shaft` out); a scene
 /// of stages as [`lower_scene_in`] lowers it. What the pipeline of one path reads for every scene;
 /// tests/it/one_stage.rs holds each pair's numbers against its one-stage drive's.
 pub fn lower_as_one_stage_drive(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Diagnostic>> {
