@@ -121,8 +121,9 @@ pub fn mesh_forces(
     out
 }
 
-/// The mesh forces of an internal stage on [pinion, ring] (`internal_stage.rs` states the model) when member `driving` passes `torque`
-/// (N·m, ≥ 0) into the mesh turning at `omega` (rad/s, signed about +z; both gears turn that way).
+/// The mesh forces of an internal stage on [pinion, ring] (`internal_stage.rs` states the model)
+/// when member `driving` passes `torque` (N·m, ≥ 0) into the mesh turning at `omega` (rad/s,
+/// signed about +z; both gears turn that way).
 pub(crate) fn internal_mesh_forces(
     (index, stage): (usize, &Stage),
     sizes: &MeshForceSizes,
