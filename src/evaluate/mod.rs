@@ -31,6 +31,7 @@ pub(crate) mod record_parquet;
 pub(crate) mod record_parquet_read;
 pub(crate) mod records;
 pub(crate) mod setup;
+pub(crate) mod stage_mesh;
 pub(crate) mod stage_pairs;
 pub(crate) mod stages;
 pub(crate) mod ste_row;

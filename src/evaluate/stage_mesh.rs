@@ -1,0 +1,168 @@
+//! One stage's mesh as the drive's walk evaluates it: its pair's geometry as each member driving
+//! sees it (the wheel's in the pinion's place in coast; a ring's pinion whichever drives), its
+//! tribology, its load sharing and Ohlendorf's H_V; a planetary stage's planet–ring mesh; and the
+//! meshes of a drive under one law and formulation (or passing their power whole, with no law).
+
+use super::setup::law_at;
+use crate::drive::{Member, MeshEfficiency, MeshForceSizes};
+use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
+use crate::friction::LawContext;
+use crate::geometry::sharing::Sharing;
+use crate::geometry::teeth::load_sharing::LoadSharing as TeethSharing;
+use crate::geometry::{OperatingState, PairGeometry};
+use crate::model::{FrictionLawSpec, LoadSharing, Scene, SceneDrive};
+use crate::tribology::Tribology;
+
+/// One stage's mesh as each member driving sees it.
+pub(crate) struct StageMesh {
+    /// [pinion driving, wheel driving]: the pair with the driving member as its pinion (shared by
+    /// the setups of one drive at several oil temperatures).
+    pub(super) geometry: std::sync::Arc<[PairGeometry; 2]>,
+    pub(super) h_v: [f64; 2],
+    pub(super) tribology: Tribology,
+    pub(super) whole: bool,
+    /// `load_sharing = stiffness`: the pair's stiffness and reliefs as each member driving sees it
+    /// (the same model the pair alone reads, [`super::setup::Setup::sharing`]).
+    pub(super) stiffness: std::sync::Arc<[Option<TeethSharing>; 2]>,
+    /// A planetary stage's planet–ring mesh (internal, the planet as pinion).
+    pub(super) ring: Option<RingMesh>,
+}
+
+/// A planetary stage's planet–ring mesh.
+pub(crate) struct RingMesh {
+    pub(super) geometry: std::sync::Arc<PairGeometry>,
+    pub(super) h_v: f64,
+    pub(super) tribology: Tribology,
+}
+
+impl RingMesh {
+    pub(super) fn of(
+        drive: &SceneDrive,
+        k: usize,
+        lubricant: Option<&crate::model::Lubricant>,
+        geometry: Option<std::sync::Arc<PairGeometry>>,
+    ) -> Option<RingMesh> {
+        let mesh = drive.ring_mesh(k, lubricant)?;
+        let tribology = mesh.tribology(mesh.reduced_modulus());
+        let geometry = geometry.unwrap_or_else(|| std::sync::Arc::new(mesh.geometry()));
+        let mut out = RingMesh { geometry, h_v: 0.0, tribology };
+        out.h_v = ohlendorf_loss_factor(&out.context(1.0, 1.0));
+        Some(out)
+    }
+
+    fn context(&self, torque: f64, speed: f64) -> LawContext<'_> {
+        LawContext {
+            geometry: &self.geometry,
+            state: OperatingState { pinion_torque: torque, pinion_speed: speed },
+            tribology: self.tribology,
+            sharing: Sharing::Equal,
+        }
+    }
+}
+
+impl StageMesh {
+    pub(super) fn of(drive: &SceneDrive, k: usize, scene: &Scene) -> StageMesh {
+        let mesh = drive.mesh(k, scene.lubricant.as_ref());
+        let e_r = mesh.reduced_modulus();
+        let tribology = mesh.tribology(e_r);
+        // A ring is no pinion: an internal pair is evaluated with its pinion in the pinion's place
+        // whichever gear drives ([`StageMesh::law_context`]).
+        let geometry = std::sync::Arc::new([
+            mesh.geometry(),
+            match drive.pairs[k].internal {
+                true => mesh.geometry(),
+                false => drive.pairs[k].swapped().geometry().expect("a pair's geometry holds with the roles swapped"),
+            },
+        ]);
+        let whole = drive.pairs[k].load_sharing == LoadSharing::None;
+        let stiffness = std::sync::Arc::new([drive.pairs[k].clone(), drive.pairs[k].swapped()].map(|pair| {
+            (pair.load_sharing == LoadSharing::Stiffness).then(|| TeethSharing {
+                stiffness: pair.pair_stiffness().expect("lowering has built the teeth both ways (lower_stage.rs)"),
+                reliefs: pair.reliefs(),
+            })
+        }));
+        let ring = RingMesh::of(drive, k, scene.lubricant.as_ref(), None);
+        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole, stiffness, ring };
+        for d in 0..2 {
+            out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
+        }
+        out
+    }
+
+    fn context(&self, d: usize, torque: f64, speed: f64) -> LawContext<'_> {
+        LawContext {
+            geometry: &self.geometry[d],
+            state: OperatingState { pinion_torque: torque, pinion_speed: speed },
+            tribology: self.tribology,
+            sharing: match (self.whole, &self.stiffness[d]) {
+                (true, _) => Sharing::Whole,
+                (false, Some(model)) => Sharing::Stiffness(model),
+                (false, None) => Sharing::Equal,
+            },
+        }
+    }
+
+    /// Mesh `mesh` (0 the stage's own pair, 1 its second) with the gear on place `driving` in the
+    /// pinion's place at its torque and speed, and that pair's loss factor H_V.
+    pub(super) fn law_context(&self, mesh: usize, driving: Member, torque: f64, speed: f64) -> (LawContext<'_>, f64) {
+        match mesh {
+            // An internal stage's ring driving: the pinion in the pinion's place at the same power.
+            0 if driving == Member::Wheel && self.geometry[0].internal => {
+                let u = self.geometry[0].gear_ratio.abs();
+                (self.context(0, torque / u, speed * u), self.h_v[0])
+            }
+            0 => {
+                let d = driving.index();
+                (self.context(d, torque, speed), self.h_v[d])
+            }
+            _ => {
+                let second = self.ring.as_ref().expect("a stage of two meshes has its second");
+                (second.context(torque, speed), second.h_v)
+            }
+        }
+    }
+
+    /// The sizes the mesh forces read (pinion and wheel as the stage names them).
+    pub(super) fn sizes(&self) -> MeshForceSizes {
+        let g = &self.geometry[0];
+        MeshForceSizes {
+            working_pitch_radius: g.working_pitch_radius,
+            pitch_radius: g.pitch_radius,
+            working_pressure_angle: g.operating_pressure_angle,
+            helix_angle: g.helix_angle,
+            face_width: g.face_width,
+        }
+    }
+}
+
+/// The meshes of every stage under one law and formulation.
+pub(super) struct LawMeshes<'a> {
+    pub(super) stages: &'a [StageMesh],
+    pub(super) spec: &'a FrictionLawSpec,
+    pub(super) formulation: Formulation,
+}
+
+impl LawMeshes<'_> {
+    /// η = 1 − P_mesh/(T ω) of the law on one mesh at the context's point (its pinion's T and ω).
+    pub(super) fn of(&self, ctx: &LawContext, h_v: f64) -> f64 {
+        let law = law_at(self.spec, ctx);
+        1.0 - charged_mesh_loss(ctx, &*law, self.formulation, h_v) / (ctx.state.pinion_torque * ctx.state.pinion_speed)
+    }
+}
+
+impl MeshEfficiency for LawMeshes<'_> {
+    fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64 {
+        let (ctx, h_v) = self.stages[stage].law_context(mesh, driving, torque, speed);
+        self.of(&ctx, h_v)
+    }
+}
+
+/// The meshes of a drive whose scene lists no friction law (it asks only for analyses of one
+/// pair): each passes its power whole, the bearings, seals and gears' no-load parts still charged.
+pub(super) struct WholeMeshes;
+
+impl MeshEfficiency for WholeMeshes {
+    fn efficiency(&self, _: usize, _: usize, _: Member, _: f64, _: f64) -> f64 {
+        1.0
+    }
+}
