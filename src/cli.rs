@@ -41,7 +41,7 @@ enum Command {
         #[arg(long, value_name = "K/N", value_parser = parse_shard)]
         shard: Option<gearloss::Shard>,
         /// The record files to write: a list of csv, jsonl, parquet (default csv,jsonl; parquet for
-        /// big sweeps: typed, compressed, fast to read). A drive writes its records as CSV.
+        /// big sweeps: typed, compressed, fast to read); a drive's are drive_records.*.
         #[arg(long, value_name = "FORMATS", default_value = "csv,jsonl")]
         records: gearloss::RecordFormats,
     },
@@ -341,12 +341,6 @@ fn run(path: &Path, out: &Path, shard: Option<gearloss::Shard>, records: gearlos
         Ok(s) => s,
         Err(e) => return report_errors(&e),
     };
-    if scene.drive.is_some() && !records.csv && !records.parquet {
-        errln!("warning: a drive writes its rows as CSV or Parquet; `--records jsonl` writes drive_records.csv");
-    }
-    if scene.drive.is_some() && records.parquet && scene.operating.oil_temperatures.is_some() {
-        errln!("warning: a drive at several oil temperatures writes each run's drive_records.csv; `--records parquet` is not written for it");
-    }
     let bar = Bar::new();
     let result = gearloss::run_into_with(&name, &source, &scene, (out, shard), records, &bar);
     drop(bar);

@@ -231,20 +231,22 @@ impl ShardSet {
         Ok(files)
     }
 
-    /// A drive's merged record files (those the first shard holds): drive_records.csv concatenated
-    /// in shard order (its header in the first shard only), drive_records.parquet's rows in shard
-    /// order into one file. Returns the files written.
+    /// A drive's merged record files (those the first shard holds): drive_records.csv and
+    /// drive_records.jsonl concatenated in shard order (the CSV's header in the first shard only),
+    /// drive_records.parquet's rows in shard order into one file. Returns the files written.
     pub(crate) fn concatenate_drive_records(
         &self,
         folder: &ReportFolder,
         progress: &dyn Progress,
     ) -> std::io::Result<Vec<String>> {
-        use crate::evaluate::drive_records::{FILE, PARQUET_FILE};
+        use crate::evaluate::drive_records::{FILE, JSONL_FILE, PARQUET_FILE};
         let first = &self.folders[0];
         let mut files = Vec::new();
-        if first.join(FILE).exists() {
-            self.concatenate_files(folder, &[(FILE, false)], progress)?;
-            files.push(FILE.to_string());
+        for text in [FILE, JSONL_FILE] {
+            if first.join(text).exists() {
+                self.concatenate_files(folder, &[(text, false)], progress)?;
+                files.push(text.to_string());
+            }
         }
         if first.join(PARQUET_FILE).exists() {
             self.merge_parquet(folder, PARQUET_FILE)?;

@@ -46,9 +46,9 @@ pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
 pub fn evaluate_drive_into(
     scene: &Scene,
     drive: &SceneDrive,
-    records: &mut dyn std::io::Write,
+    records: &mut (dyn std::io::Write + Send),
 ) -> std::io::Result<DriveEvaluation> {
-    let mut csv = DriveRecordFiles::csv(records);
+    let mut csv = DriveRecordFiles::csv(drive, records);
     evaluate_drive_into_with(scene, drive, &mut csv, &crate::progress::Quiet)
 }
 
@@ -96,7 +96,7 @@ pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: Dr
         &setup,
         scene,
         drive,
-        (0..n, &mut DriveRecordFiles::csv(std::io::sink())),
+        (0..n, &mut DriveRecordFiles::csv(drive, std::io::sink())),
         false,
         &crate::progress::Quiet,
     )

@@ -1,7 +1,12 @@
 //! drive_records.csv: one row per operating point, law and formulation of a drive, with every part
 //! of its loss: the ends (torque, speed, power), the loss parts, η and the passes, each stage's
 //! driving member, mesh efficiency and mesh loss, each bearing place's loads and losses, each
-//! shaft's speed (signed), torques received and passed on, gears' no-load parts and seals. SI but speeds in rpm; numbers in Rust's shortest round-trip form.
+//! shaft's speed (signed), torques received and passed on, gears' no-load parts and seals. SI but
+//! speeds in rpm. The same rows go to drive_records.jsonl (an object a row, keyed by the CSV's
+//! column names) and drive_records.parquet (typed columns) as `--records` asks, every file from
+//! one list of cells ([`cells`]) written as a pair's record files write theirs
+//! ([`super::record_cells::Cell`]: the shortest text that reads back to the same f64; a value that
+//! is not a finite number is an empty CSV cell, `null` in JSON Lines, a Parquet null).
 
 use std::io::Write;
 
@@ -13,16 +18,12 @@ use crate::model::SceneDrive;
 
 /// The file's name in the report folder.
 pub(crate) const FILE: &str = "drive_records.csv";
+/// The same rows as JSON Lines (`--records jsonl`; with the CSV by default).
+pub(crate) const JSONL_FILE: &str = "drive_records.jsonl";
 /// The same rows as typed Parquet columns (`--records parquet`).
 pub(crate) const PARQUET_FILE: &str = "drive_records.parquet";
 
 const RPM: f64 = 30.0 / std::f64::consts::PI;
-
-/// The header line: [`columns`]' names.
-pub(crate) fn header(out: &mut dyn Write, drive: &SceneDrive) -> std::io::Result<()> {
-    let cols: Vec<String> = columns(drive).into_iter().map(|(name, _)| name).collect();
-    writeln!(out, "{}", cols.join(","))
-}
 
 /// The columns, named and typed (drive_records.parquet's schema): the fixed columns, then per stage
 /// and per bearing place and shaft.
@@ -87,25 +88,28 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
 const INTS: &[&str] = &["row", "torque_index", "speed_index", "law_index", "passes"];
 const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver"];
 
-/// One row, written as CSV (numbers in Rust's shortest round-trip form, as every file of the
-/// report writes them).
-pub(crate) fn row(
-    out: &mut dyn Write,
-    i: usize,
-    flow: PowerFlow,
-    r: &DriveRow,
-    outside: &[usize],
-) -> std::io::Result<()> {
-    let text: Vec<String> = cells(i, flow, r, outside)
-        .into_iter()
-        .map(|c| match c {
-            Cell::Int(n) => n.to_string(),
-            Cell::Real(x) => x.to_string(),
-            Cell::Text(t) => t,
-            Cell::Empty => String::new(),
-        })
+/// One row's CSV line ([`cells`] as a pair's records.csv writes its cells).
+pub(crate) fn csv_line(cells: &[Cell]) -> String {
+    let mut line = cells.iter().map(Cell::csv).collect::<Vec<_>>().join(",");
+    line.push('\n');
+    line
+}
+
+/// One row's JSON Lines line: an object keyed by `names` (the columns), in their order; an empty
+/// cell and a value that is not a finite number are `null`.
+pub(crate) fn jsonl_line(names: &[String], cells: &[Cell]) -> String {
+    let value = |c: &Cell| match c {
+        Cell::Int(n) => n.to_string(),
+        Cell::Real(x) if x.is_finite() => serde_json::to_string(x).expect("a finite f64 serialises"),
+        Cell::Text(t) => serde_json::to_string(t).expect("a string serialises"),
+        Cell::Real(_) | Cell::Empty => "null".to_string(),
+    };
+    let pairs: Vec<String> = names
+        .iter()
+        .zip(cells)
+        .map(|(n, c)| format!("{}:{}", serde_json::to_string(n).expect("a string serialises"), value(c)))
         .collect();
-    writeln!(out, "{}", text.join(","))
+    format!("{{{}}}\n", pairs.join(","))
 }
 
 /// One row's cells in [`columns`]' order; `outside`: by stage, the law's contacts outside its
@@ -164,54 +168,72 @@ pub(crate) trait DriveRecordSink {
     fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()>;
 }
 
-/// drive_records.csv into `C`, drive_records.parquet (typed columns, row groups as the rows come,
-/// [`super::record_parquet`]) into `P`: either or both.
-pub(crate) struct DriveRecordFiles<C: Write, P: Write + Send> {
-    csv: Option<C>,
-    parquet: Option<super::record_parquet::ParquetRecords<P>>,
+/// The record files of a drive's rows as `--records` asks (drive_records.csv, .jsonl, .parquet:
+/// any of them), each into its `W`.
+pub(crate) struct DriveRecordFiles<W: Write + Send> {
+    names: Vec<String>,
+    csv: Option<W>,
+    jsonl: Option<W>,
+    parquet: Option<super::record_parquet::ParquetRecords<W>>,
 }
 
-impl<C: Write> DriveRecordFiles<C, Vec<u8>> {
-    /// drive_records.csv only.
-    pub(crate) fn csv(out: C) -> Self {
-        DriveRecordFiles { csv: Some(out), parquet: None }
+impl<W: Write + Send> DriveRecordFiles<W> {
+    /// The files of `formats` for `drive`'s rows, each opened by `open(its name)` (the Parquet
+    /// schema from [`columns`]).
+    pub(crate) fn new(
+        drive: &SceneDrive,
+        formats: super::record_files::RecordFormats,
+        mut open: impl FnMut(&str) -> std::io::Result<W>,
+    ) -> std::io::Result<Self> {
+        let columns = columns(drive);
+        let names = columns.iter().map(|(n, _)| n.clone()).collect();
+        let csv = formats.csv.then(|| open(FILE)).transpose()?;
+        let jsonl = formats.jsonl.then(|| open(JSONL_FILE)).transpose()?;
+        let parquet = formats
+            .parquet
+            .then(|| open(PARQUET_FILE).and_then(|w| super::record_parquet::ParquetRecords::with_columns(w, columns)))
+            .transpose()?;
+        Ok(DriveRecordFiles { names, csv, jsonl, parquet })
     }
-}
 
-impl<C: Write, P: Write + Send> DriveRecordFiles<C, P> {
-    /// The files of `drive`'s rows: the CSV into `csv`, the Parquet file (its schema from
-    /// [`columns`]) into `parquet`.
-    pub(crate) fn new(drive: &SceneDrive, csv: Option<C>, parquet: Option<P>) -> std::io::Result<Self> {
-        let parquet =
-            parquet.map(|out| super::record_parquet::ParquetRecords::with_columns(out, columns(drive))).transpose()?;
-        Ok(DriveRecordFiles { csv, parquet })
+    /// drive_records.csv only, into `out`.
+    pub(crate) fn csv(drive: &SceneDrive, out: W) -> Self {
+        let mut out = Some(out);
+        let formats = super::record_files::RecordFormats { csv: true, jsonl: false, parquet: false };
+        Self::new(drive, formats, |_| Ok(out.take().expect("one file"))).expect("opening a given writer cannot fail")
     }
 
-    /// Writes what is held and the Parquet footer; the two writers back, flushed.
-    pub(crate) fn finish(self) -> std::io::Result<(Option<C>, Option<P>)> {
-        let mut csv = self.csv;
-        if let Some(c) = &mut csv {
-            c.flush()?;
+    /// Writes what is held and the Parquet footer; the CSV and JSON Lines writers back, flushed.
+    pub(crate) fn finish(self) -> std::io::Result<(Option<W>, Option<W>)> {
+        let (mut csv, mut jsonl) = (self.csv, self.jsonl);
+        for w in [&mut csv, &mut jsonl].into_iter().flatten() {
+            w.flush()?;
         }
-        let parquet = self.parquet.map(|p| p.finish()).transpose()?;
-        Ok((csv, parquet))
+        if let Some(p) = self.parquet {
+            p.finish()?;
+        }
+        Ok((csv, jsonl))
     }
 }
 
-impl<C: Write, P: Write + Send> DriveRecordSink for DriveRecordFiles<C, P> {
-    fn header(&mut self, drive: &SceneDrive) -> std::io::Result<()> {
+impl<W: Write + Send> DriveRecordSink for DriveRecordFiles<W> {
+    fn header(&mut self, _: &SceneDrive) -> std::io::Result<()> {
         match &mut self.csv {
-            Some(c) => header(c, drive),
+            Some(c) => writeln!(c, "{}", self.names.join(",")),
             None => Ok(()),
         }
     }
 
     fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()> {
+        let cells = cells(i, flow, r, outside);
         if let Some(c) = &mut self.csv {
-            row(c, i, flow, r, outside)?;
+            c.write_all(csv_line(&cells).as_bytes())?;
+        }
+        if let Some(j) = &mut self.jsonl {
+            j.write_all(jsonl_line(&self.names, &cells).as_bytes())?;
         }
         if let Some(p) = &mut self.parquet {
-            p.write_cells([cells(i, flow, r, outside)])?;
+            p.write_cells([cells])?;
         }
         Ok(())
     }

@@ -198,8 +198,8 @@ fn oil_temperature_sweep_writes_one_folder_per_temperature() {
     std::fs::remove_dir_all(&out).unwrap();
 }
 
-/// `--records parquet` on a drive is said, not silently dropped: the drive writes its CSV and
-/// the run says the Parquet file is not written.
+/// A drive writes the record files `--records` names, as a pair does: drive_records.csv, .jsonl
+/// and .parquet, any of them, without a warning; the default is CSV and JSON Lines.
 #[test]
 fn records_of_a_drive_are_written_as_asked() {
     let out = std::env::temp_dir().join(format!("gearloss-drive-parquet-{}", std::process::id()));
@@ -219,9 +219,23 @@ fn records_of_a_drive_are_written_as_asked() {
     assert_eq!(run("parquet").0, vec!["drive_records.parquet"]);
     assert_eq!(run("csv,parquet").0, vec!["drive_records.csv", "drive_records.parquet"]);
     let (names, said) = run("jsonl");
-    assert_eq!(names, vec!["drive_records.csv"]);
-    assert!(said.contains("`--records jsonl` writes drive_records.csv"), "{said}");
+    assert_eq!(names, vec!["drive_records.jsonl"]);
+    assert!(!said.contains("warning"), "{said}");
+    assert_eq!(run("csv,jsonl,parquet").0, vec!["drive_records.csv", "drive_records.jsonl", "drive_records.parquet"]);
     let _ = std::fs::remove_dir_all(&out);
+    // At several oil temperatures each run's folder holds the formats asked for.
+    let swept = out.with_extension("gear");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    std::fs::write(&swept, text.replace("oil_temperature = 70 degC", "oil_temperature = [60, 80] degC")).unwrap();
+    let o = gearloss().arg("run").arg(&swept).arg("--out").arg(&out).args(["--records", "parquet"]).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
+    for run in ["oil_temperature_60degC", "oil_temperature_80degC"] {
+        assert!(dir.join(run).join("drive_records.parquet").is_file(), "{run}");
+        assert!(!dir.join(run).join("drive_records.csv").exists(), "{run}: only the formats asked for");
+    }
+    let _ = std::fs::remove_dir_all(&out);
+    let _ = std::fs::remove_file(&swept);
 }
 
 /// Ctrl-C during a run: the process exits 130 and leaves nothing in the output folder: neither the

@@ -136,9 +136,10 @@ fn shards_merge_into_the_single_runs_parquet() {
     let _ = std::fs::remove_dir_all(&out);
 }
 
-/// A drive's drive_records.parquet against its drive_records.csv (a parallel and a planetary
-/// drive): the same columns in order, every cell equal (floats to the bit, whole numbers and text
-/// as written); three shards with Parquet records merged are the single run's rows.
+/// A drive's drive_records.parquet and drive_records.jsonl against its drive_records.csv (a
+/// parallel and a planetary drive): the same columns (keys) in order, every cell equal (floats to
+/// the bit, whole numbers and text as written); three shards with Parquet and JSON Lines records
+/// merged are the single run's rows (the JSON Lines byte for byte).
 #[test]
 fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
     for (scene, slug) in [
@@ -146,7 +147,7 @@ fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
         ("specs/planetary_two_stage.gear", "e_axle_with_a_planetary_first_stage"),
     ] {
         let out = temp(&format!("drive-pq-{slug}"));
-        run(&["run", scene, "--records", "parquet,csv"], &out.join("single"));
+        run(&["run", scene, "--records", "parquet,csv,jsonl"], &out.join("single"));
         let dir = out.join("single").join(slug);
         let csv = std::fs::read_to_string(dir.join("drive_records.csv")).unwrap();
         let mut lines = csv.lines();
@@ -155,6 +156,22 @@ fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
         assert_eq!(columns.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>(), header, "{scene}");
         let lines: Vec<&str> = lines.collect();
         assert_eq!(rows.len(), lines.len(), "{scene}");
+        let jsonl = std::fs::read_to_string(dir.join("drive_records.jsonl")).unwrap();
+        assert_eq!(jsonl.lines().count(), lines.len(), "{scene}");
+        for (object, row) in jsonl.lines().zip(&rows) {
+            let object: serde_json::Value = serde_json::from_str(object).unwrap();
+            let object = object.as_object().unwrap();
+            assert_eq!(object.keys().collect::<Vec<_>>().len(), header.len(), "{scene}");
+            for ((name, _), cell) in columns.iter().zip(row) {
+                let value = &object[name];
+                match cell {
+                    Cell::Int(i) => assert_eq!(value.as_i64(), Some(*i), "{scene}: {name}"),
+                    Cell::Real(x) => assert_eq!(value.as_f64().map(f64::to_bits), Some(x.to_bits()), "{scene}: {name}"),
+                    Cell::Text(t) => assert_eq!(value.as_str(), Some(t.as_str()), "{scene}: {name}"),
+                    Cell::Empty => panic!("{scene}: {name} is null"),
+                }
+            }
+        }
         for (row, line) in rows.iter().zip(&lines) {
             for (k, text) in split_csv(line).iter().enumerate() {
                 match &row[k] {
@@ -167,7 +184,7 @@ fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
         }
         let mut shards = Vec::new();
         for k in 1..=3 {
-            run(&["run", scene, "--shard", &format!("{k}/3"), "--records", "parquet"], &out.join("shards"));
+            run(&["run", scene, "--shard", &format!("{k}/3"), "--records", "parquet,jsonl"], &out.join("shards"));
             shards.push(out.join("shards").join(format!("{slug}.shard-{k}-of-3")));
         }
         let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("merged")).output().unwrap();
@@ -175,6 +192,7 @@ fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
         let merged = out.join("merged").join(slug);
         assert_eq!(parquet_file(&merged.join("drive_records.parquet")), (columns, rows), "{scene}");
         assert!(!merged.join("drive_records.csv").exists(), "{scene}: only the formats asked for");
+        assert_eq!(std::fs::read_to_string(merged.join("drive_records.jsonl")).unwrap(), jsonl, "{scene}");
         let _ = std::fs::remove_dir_all(&out);
     }
 }

@@ -506,6 +506,16 @@ def test_drive_records_from_parquet_equal_the_csvs():
     assert len(parquet.stages) == 2 * len(from_csv)
 
 
+def test_drive_records_from_json_lines_equal_the_csvs():
+    """`records=["jsonl"]` on a drive: drive_records.jsonl alone, and `Report.drive_records` reads
+    it, the CSV's columns and values exactly."""
+    s = scene(ROOT / "specs/planetary_two_stage.gear")
+    from_csv = gearloss.run(s).drive_records
+    jsonl = gearloss.run(s, records=["jsonl"])
+    assert "drive_records.jsonl" in jsonl.files and "drive_records.csv" not in jsonl.files
+    pandas.testing.assert_frame_equal(jsonl.drive_records, from_csv, check_dtype=False, check_exact=True)
+
+
 @pytest.mark.parametrize("reader", ["polars", "duckdb"])
 def test_polars_and_duckdb_read_records_parquet(reader, tmp_path):
     """README's one-liners for polars and DuckDB, where the package is installed (skipped otherwise):

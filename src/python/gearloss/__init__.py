@@ -222,7 +222,7 @@ class Report:
     def _shape(self) -> str:
         """``"drive"`` (a drive of several stages), ``"pair"``, ``"runs"`` (several oil
         temperatures) or ``"shard"``."""
-        if "drive_records.csv" in self._files or "drive_records.parquet" in self._files:
+        if any(f.startswith("drive_records.") for f in self._files):
             return "drive"
         if any(f.startswith("records.") for f in self._files):
             return "pair"
@@ -326,10 +326,11 @@ class Report:
 
     @property
     def drive_records(self):
-        """``drive_records.csv`` (or ``drive_records.parquet`` when the run wrote Parquet only) of a
-        drive of several stages as a DataFrame: a row per operating point, law and formulation with
-        the ends' torque, speed and power, every loss part, η, the passes, and each stage's, bearing
-        place's and shaft's columns; empty for one pair."""
+        """``drive_records.csv`` (or ``drive_records.parquet``, else ``drive_records.jsonl``, when
+        the run wrote no CSV: the same columns and values) of a drive of several stages as a
+        DataFrame: a row per operating point, law and formulation with the ends' torque, speed and
+        power, every loss part, η, the passes, and each stage's, bearing place's and shaft's
+        columns; empty for one pair."""
         import pandas
 
         self._table_of("drive_records", "drive")
@@ -339,6 +340,10 @@ class Report:
             frame = pandas.read_parquet(self._source("drive_records.parquet"))
             # The file holds `both_ends_deliver` as the CSV writes it (text `true`/`false`); the
             # DataFrame gives it as the CSV reader does, a bool.
+            frame["both_ends_deliver"] = frame["both_ends_deliver"] == "true"
+            return frame
+        if "drive_records.jsonl" in self._files:
+            frame = pandas.read_json(self._source("drive_records.jsonl"), lines=True, dtype=False, precise_float=True)
             frame["both_ends_deliver"] = frame["both_ends_deliver"] == "true"
             return frame
         return pandas.DataFrame()
