@@ -5,7 +5,6 @@
 use serde::{Deserialize, Serialize};
 
 use super::layout::Member;
-use super::mesh_state::MeshState;
 use super::planetary::flow::PlanetaryState;
 use super::planetary::point::PlanetaryPoint;
 
@@ -35,13 +34,6 @@ impl KindPoint {
     pub fn record_values(&self) -> Vec<f64> {
         match self {
             KindPoint::Planetary(p) => p.record_values(),
-        }
-    }
-
-    /// The kind's meshes at the point, as the walk evaluated them.
-    pub fn mesh_states(&self) -> Vec<MeshState> {
-        match self {
-            KindPoint::Planetary(p) => p.mesh_states().to_vec(),
         }
     }
 }

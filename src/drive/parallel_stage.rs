@@ -7,7 +7,8 @@ use super::kind_state::{KindPoint, KindState};
 use super::kinematics::{internal::Internal, parallel::Parallel, StageKinematics};
 use super::layout::{Member, Stage};
 use super::mesh_efficiency::MeshEfficiency;
-use super::point::BearingPoint;
+use super::mesh_state::MeshState;
+use super::point::{BearingPoint, StagePoint};
 use super::stage_model::StageModel;
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
@@ -44,19 +45,19 @@ impl StageModel for ParallelStage {
     }
 
     /// The one mesh's η at the driving gear's torque and speed (1 at no torque or no speed, where
-    /// no mesh is evaluated).
+    /// no mesh is evaluated), the pair as [`Self::mesh_states`] gives it.
     fn efficiency(
         &self,
-        (k, _): (usize, &Stage),
+        (k, stage): (usize, &Stage),
         meshes: &dyn MeshEfficiency,
         (driving, torque, speed): (Member, f64, f64),
         _: [f64; 2],
     ) -> (f64, Option<KindState>) {
         if torque == 0.0 || speed == 0.0 {
-            (1.0, None)
-        } else {
-            (meshes.efficiency(k, 0, driving, torque.abs(), speed), None)
+            return (1.0, None);
         }
+        let (driving, torque, speed) = self.in_pinion_place(stage, (driving, torque.abs(), speed.abs()));
+        (meshes.efficiency(k, 0, driving, torque, speed), None)
     }
 
     fn member_loads(
@@ -103,5 +104,36 @@ impl StageModel for ParallelStage {
 
     fn shaft_notes(&self, _: &Stage, _: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)> {
         Vec::new()
+    }
+
+    /// The pair with the gear [`Self::in_pinion_place`] puts there in the pinion's place.
+    fn mesh_states(&self, stage: &Stage, point: &StagePoint) -> Vec<MeshState> {
+        let (driving, torque, speed) =
+            self.in_pinion_place(stage, (point.driving, point.driving_torque.abs(), point.driving_speed.abs()));
+        vec![MeshState {
+            mesh: 0,
+            name: None,
+            driving,
+            members: [driving.name(), driving.other().name()],
+            torque,
+            speed,
+            efficiency: point.mesh_efficiency,
+        }]
+    }
+}
+
+impl ParallelStage {
+    /// The gear evaluated in the pinion's place and its |T| and |ω| when `driving` drives at |T|
+    /// and |ω|: the driving gear (the wheel driving is the pair with its roles swapped), except that
+    /// a ring is no pinion: an internal pair driven by its ring is evaluated as the pinion's pair at
+    /// the same power, T/u and ω·u with u = z_ring/z_pinion (README, "An internal stage").
+    fn in_pinion_place(&self, stage: &Stage, (driving, torque, speed): (Member, f64, f64)) -> (Member, f64, f64) {
+        match (self.internal, driving) {
+            (true, Member::Wheel) => {
+                let u = f64::from(stage.teeth[1]) / f64::from(stage.teeth[0]);
+                (Member::Pinion, torque / u, speed * u)
+            }
+            _ => (driving, torque, speed),
+        }
     }
 }

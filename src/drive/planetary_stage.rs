@@ -105,6 +105,15 @@ impl StageModel for PlanetaryLayout {
         (forces, Some(Box::new(KindPoint::Planetary(point))))
     }
 
+    /// The sun–planet and planet–ring meshes as the point holds them (per planet, each at its
+    /// driving gear's torque and speed in the carrier's frame).
+    fn mesh_states(&self, _: &Stage, point: &StagePoint) -> Vec<super::mesh_state::MeshState> {
+        match point.kind.as_deref() {
+            Some(KindPoint::Planetary(p)) => p.mesh_states().to_vec(),
+            None => Vec::new(),
+        }
+    }
+
     /// A sun among two planets or more: a floating sun.
     fn centred_member(&self, m: Member) -> bool {
         self.planets >= 2 && self.members[m.index()] == PlanetaryMember::Sun

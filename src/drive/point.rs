@@ -6,7 +6,6 @@ use serde::{Deserialize, Serialize};
 
 use super::kind_state::KindPoint;
 use super::layout::Member;
-use super::mesh_state::MeshState;
 
 /// Which end delivers the power.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -116,23 +115,6 @@ impl StagePoint {
         match &self.kind {
             Some(k) => k.member_name(m, self.driving),
             None => m.name(),
-        }
-    }
-
-    /// The stage's meshes as the walk evaluated them: its kind's, or its one pair with the driving
-    /// gear in the pinion's place at |T| and |ω| of the driving gear.
-    pub fn mesh_states(&self) -> Vec<MeshState> {
-        match &self.kind {
-            Some(k) => k.mesh_states(),
-            None => vec![MeshState {
-                mesh: 0,
-                name: None,
-                driving: self.driving,
-                members: [self.driving.name(), self.driving.other().name()],
-                torque: self.driving_torque.abs(),
-                speed: self.driving_speed.abs(),
-                efficiency: self.mesh_efficiency,
-            }],
         }
     }
 }

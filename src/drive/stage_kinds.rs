@@ -21,4 +21,10 @@ impl Stage {
     pub fn member_name(&self, m: Member) -> &'static str {
         self.model().member_name(m)
     }
+
+    /// The stage's meshes at `point` as the walk evaluated them (its kind's
+    /// [`StageModel::mesh_states`]).
+    pub fn mesh_states(&self, point: &super::point::StagePoint) -> Vec<super::mesh_state::MeshState> {
+        self.model().mesh_states(self, point)
+    }
 }

@@ -9,7 +9,8 @@ use super::kind_state::{KindPoint, KindState};
 use super::kinematics::StageKinematics;
 use super::layout::{Member, Stage};
 use super::mesh_efficiency::MeshEfficiency;
-use super::point::BearingPoint;
+use super::mesh_state::MeshState;
+use super::point::{BearingPoint, StagePoint};
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
@@ -88,4 +89,19 @@ pub(crate) trait StageModel {
     /// What the report notes of the shafts the stage sits on: (shaft, what it carries, why that is
     /// sound), e.g. a gear the kind centres on a shaft of one bearing place.
     fn shaft_notes(&self, stage: &Stage, bearing_places: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)>;
+
+    /// The stage's meshes at `point` as the walk evaluated them, each with the gear it evaluated
+    /// in the pinion's place at that gear's |T| and |ω|: by default the one pair, its driving gear
+    /// in the pinion's place.
+    fn mesh_states(&self, _stage: &Stage, point: &StagePoint) -> Vec<MeshState> {
+        vec![MeshState {
+            mesh: 0,
+            name: None,
+            driving: point.driving,
+            members: [point.driving.name(), point.driving.other().name()],
+            torque: point.driving_torque.abs(),
+            speed: point.driving_speed.abs(),
+            efficiency: point.mesh_efficiency,
+        }]
+    }
 }

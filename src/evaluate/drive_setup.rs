@@ -137,7 +137,7 @@ impl<'a> DriveSetup<'a> {
                         &mesh.law_context(m.mesh, m.driving, m.torque.max(f64::MIN_POSITIVE), m.speed).0,
                     )
                 };
-                match s.mesh_states().as_slice() {
+                match self.drive.layout.stages[k].mesh_states(s).as_slice() {
                     [one] => at(one),
                     meshes => {
                         // A stage of several meshes: each at its pinion's load and rolling speed,

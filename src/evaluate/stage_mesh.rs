@@ -1,5 +1,5 @@
 //! One stage's mesh as the drive's walk evaluates it: its pair's geometry as each member driving
-//! sees it (the wheel's in the pinion's place in coast; a ring's pinion whichever drives), its
+//! sees it (the wheel's in the pinion's place in coast; a stage's model says which, `mesh_states`), its
 //! tribology, its load sharing and Ohlendorf's H_V; a planetary stage's planet–ring mesh; and the
 //! meshes of a drive under one law and formulation (or passing their power whole, with no law).
 
@@ -106,11 +106,6 @@ impl StageMesh {
     /// pinion's place at its torque and speed, and that pair's loss factor H_V.
     pub(super) fn law_context(&self, mesh: usize, driving: Member, torque: f64, speed: f64) -> (LawContext<'_>, f64) {
         match mesh {
-            // An internal stage's ring driving: the pinion in the pinion's place at the same power.
-            0 if driving == Member::Wheel && self.geometry[0].internal => {
-                let u = self.geometry[0].gear_ratio.abs();
-                (self.context(0, torque / u, speed * u), self.h_v[0])
-            }
             0 => {
                 let d = driving.index();
                 (self.context(d, torque, speed), self.h_v[d])

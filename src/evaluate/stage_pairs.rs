@@ -21,7 +21,7 @@
 //! those values reports (tests/it/stage_pairs.rs holds the two to 1e-12).
 
 use super::drive_setup::DriveSetup;
-use crate::drive::{EndValue, Member, MeshState};
+use crate::drive::{EndValue, Member};
 use crate::model::{Analyses, GearPair, Operating, Scene, SceneDrive, Sweep};
 
 /// One mesh of an analysed stage at one of the drive's operating points.
@@ -70,7 +70,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
             if !a.analyses_stage(&s.name) {
                 continue;
             }
-            for m in s.mesh_states() {
+            for m in drive.layout.stages[k].mesh_states(s) {
                 let title = format!(
                     "{}: {}{}, point {}",
                     scene.title,
@@ -78,17 +78,12 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
                     m.name.map_or_else(String::new, |name| format!(" {name}")),
                     point + 1
                 );
+                // The mesh's pair with the gear the walk evaluated in the pinion's place (a ring
+                // driving an internal pair: the pinion, at the same power; StageModel::mesh_states).
                 let pair = drive.mesh_pair(k, m.mesh);
-                // A ring is no pinion: an internal pair driven by its ring is the pinion's pair at
-                // the same power, as the walk evaluates it (drive/internal_stage.rs).
-                let (pair, m) = match (m.driving, pair.internal) {
-                    (Member::Pinion, _) => (pair.clone(), m),
-                    (Member::Wheel, true) => {
-                        let u = f64::from(pair.wheel.teeth.value) / f64::from(pair.pinion.teeth.value);
-                        let members = ["pinion", "wheel"];
-                        (pair.clone(), MeshState { torque: m.torque / u, speed: m.speed * u, members, ..m })
-                    }
-                    (Member::Wheel, false) => (pair.swapped(), m),
+                let pair = match m.driving {
+                    Member::Pinion => pair.clone(),
+                    Member::Wheel => pair.swapped(),
                 };
                 let alone =
                     (m.torque > 0.0 && m.speed > 0.0).then(|| pair_scene(scene, title, pair, (m.torque, m.speed)));
