@@ -164,7 +164,16 @@ pub struct DrivePoint {
     /// `BOOKS_TOLERANCE` of the larger of P_source and Σ parts, or not a finite number.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub books_gap: Option<f64>,
+    /// A one-pair scene's point whose walks did not bring the mesh's driving torque to the given
+    /// `pinion_torque` (to 1e-12 relative, in [`PINION_WALKS`] walks): by how much it is short
+    /// (N·m; not a finite number where a walk failed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pinion_torque_missed: Option<f64>,
 }
+
+/// Walks at most, beyond the first, to put a one-pair scene's torque at its pinion gear (they
+/// settle in two or three).
+pub(crate) const PINION_WALKS: usize = 8;
 
 /// The books of a point balance when P_source − P_sink equals the sum of the loss parts to this
 /// fraction of the larger of P_source and the parts (a settled point balances to about 1e-12).
@@ -176,7 +185,10 @@ pub(crate) const MAX_PASSES: usize = 100;
 impl DrivePoint {
     /// Whether the point's numbers can be trusted: the fixed point settled and the books balance.
     pub fn settled(&self) -> bool {
-        self.iterations < MAX_PASSES && !self.diverged && self.books_gap.is_none()
+        self.iterations < MAX_PASSES
+            && !self.diverged
+            && self.books_gap.is_none()
+            && self.pinion_torque_missed.is_none()
     }
 
     /// What is wrong with an unsettled point, in words (empty when it settled).
@@ -192,6 +204,11 @@ impl DrivePoint {
                 "the books do not balance: P_source − P_sink = {:.6e} W but the loss parts add up to {:.6e} W (a gap of {gap:.3e} W)",
                 self.source_power() - self.sink_power(),
                 self.losses.total()
+            ));
+        }
+        if let Some(missed) = self.pinion_torque_missed {
+            out.push(format!(
+                "the mesh's driving torque did not reach the given pinion_torque to 1e-12 in {PINION_WALKS} walks ({missed:.3e} N·m short); its numbers are the last walk's"
             ));
         }
         out.join("; ")

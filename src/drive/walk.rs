@@ -366,6 +366,7 @@ impl<'a> Walk<'a> {
             iterations: passes,
             diverged: false,
             books_gap: None,
+            pinion_torque_missed: None,
         }
     }
 }
