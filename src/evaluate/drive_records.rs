@@ -219,7 +219,10 @@ impl<W: Write + Send> DriveRecordFiles<W> {
 impl<W: Write + Send> DriveRecordSink for DriveRecordFiles<W> {
     fn header(&mut self, _: &SceneDrive) -> std::io::Result<()> {
         match &mut self.csv {
-            Some(c) => writeln!(c, "{}", self.names.join(",")),
+            // A stage's name is the scene's text: quoted in the header where it holds a comma.
+            Some(c) => {
+                writeln!(c, "{}", self.names.iter().map(|n| Cell::Text(n.clone()).csv()).collect::<Vec<_>>().join(","))
+            }
             None => Ok(()),
         }
     }

@@ -197,6 +197,25 @@ fn a_drives_parquet_holds_its_csv_and_merges_from_shards() {
     }
 }
 
+/// A stage named with a comma (a stage's name is free text): drive_records.csv's header quotes it,
+/// so the header has as many cells as every row and names the stage's columns whole.
+#[test]
+fn a_stage_name_with_a_comma_keeps_the_csv_whole() {
+    let out = temp("drive-comma");
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    std::fs::create_dir_all(&out).unwrap();
+    let scene = out.join("comma.gear");
+    std::fs::write(&scene, text.replace("stage \"first\"", "stage \"first, fast\"")).unwrap();
+    run(&["run", scene.to_str().unwrap()], &out);
+    let csv = std::fs::read_to_string(out.join("two_stage_ev_reducer/drive_records.csv")).unwrap();
+    let header = split_csv(csv.lines().next().unwrap());
+    assert!(header.contains(&"stage_first, fast_mesh_efficiency".to_string()), "{header:?}");
+    for line in csv.lines().skip(1) {
+        assert_eq!(split_csv(line).len(), header.len(), "{line}");
+    }
+    let _ = std::fs::remove_dir_all(&out);
+}
+
 /// `--records` takes a list of csv, jsonl, parquet; anything else is refused by name.
 #[test]
 fn the_record_formats_are_read_as_documented() {
