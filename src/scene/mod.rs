@@ -16,6 +16,7 @@ pub(crate) mod lower_dynamics_blocks;
 pub(crate) mod lower_friction;
 pub(crate) mod lower_gearbox;
 pub(crate) mod lower_gears;
+pub(crate) mod lower_gears_stage;
 pub(crate) mod lower_lubricant;
 pub(crate) mod lower_operating;
 pub(crate) mod lower_planetary;

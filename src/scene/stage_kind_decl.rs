@@ -3,9 +3,62 @@
 //! stage's own pair: its further meshes' pairs, the kind the drive's physics reads, how its
 //! members' shafts sit, whether the dynamic models (one pair on fixed axes) apply.
 
+use std::collections::BTreeMap;
+
+use super::ast::{Block, Name};
 use super::lower_planetary::PlanetaryDecl;
+use crate::diagnostics::Diagnostic;
 use crate::drive::kinematics::StageKind;
-use crate::model::GearPair;
+use crate::drive::Hand;
+use crate::losses::Lubrication;
+use crate::model::{GearPair, Material};
+
+/// A stage kind as the scene writes it: the block inside `stage` that makes a stage of this kind,
+/// what such a stage is (in words and as an example), and its lowering.
+pub(super) struct StageBlock {
+    pub block: &'static str,
+    pub is: &'static str,
+    pub example: &'static str,
+    /// Lowers the kind's block (the stage block, the kind's block) given the stage's lubrication.
+    pub lower: LowerKind,
+}
+
+/// A kind's lowering: of (the stage block, the kind's block), given the stage's lubrication.
+pub(super) type LowerKind =
+    fn((&Block, &Block), &BTreeMap<&str, Material>, Option<&Lubrication>, &mut Vec<Diagnostic>) -> Option<KindLowered>;
+
+/// What a kind's block lowers to: the stage's own pair, its two places [(shaft, at)], the pinion's
+/// (a planetary set's sun's) hand, and the kind.
+pub(super) struct KindLowered {
+    pub pair: GearPair,
+    pub places: [(Name, f64); 2],
+    pub hand: Option<Hand>,
+    pub kind: StageDeclKind,
+}
+
+/// The blocks a stage is written with, one row a kind (the parallel and the internal stage share
+/// `gears`: an internal pair's stage is internal).
+pub(super) const STAGE_BLOCKS: &[StageBlock] = &[
+    StageBlock {
+        block: "gears",
+        is: "one pair on parallel shafts",
+        example: "`gears { module = 2 mm ... pinion { teeth = 23  shaft = motor  at = 50 mm } wheel { ... } }`",
+        lower: |blocks, materials, lubrication, errors| {
+            let (pair, places, hand) =
+                super::lower_gears_stage::lower_gears_stage(blocks, materials, lubrication, errors)?;
+            Some(KindLowered { pair, places, hand, kind: StageDeclKind::Parallel })
+        },
+    },
+    StageBlock {
+        block: "planetary",
+        is: "one planetary set",
+        example: "a `planetary { ... }` block",
+        lower: |(_, block), materials, _, errors| {
+            let (pair, places, decl) = super::lower_planetary::lower_planetary(block, materials, errors)?;
+            Some(KindLowered { pair, places, hand: decl.sun_hand, kind: StageDeclKind::Planetary(Box::new(decl)) })
+        },
+    },
+];
 
 /// A stage's kind as written.
 pub(super) enum StageDeclKind {
