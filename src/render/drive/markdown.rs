@@ -173,8 +173,8 @@ fn inputs(out: &mut String, r: &DriveReport) {
         ],
     );
     for s in &r.stages {
-        // A kind's own words (a planetary stage's members, teeth and i₀), else a pair's.
-        let (joins, teeth, ratio) = super::planetary::stage_words(s).unwrap_or_else(|| {
+        // A kind's own words (kind_pieces.rs), else a pair's.
+        let (joins, teeth, ratio) = super::kind_pieces::stage_words(s).unwrap_or_else(|| {
             (format!("{} → {}", s.shafts[0], s.shafts[1]), format!("{}/{}", s.teeth[0], s.teeth[1]), fixed(s.ratio, 4))
         });
         row(
@@ -198,13 +198,11 @@ fn inputs(out: &mut String, r: &DriveReport) {
             ],
         );
     }
-    for s in r.stages.iter().filter(|s| s.internal) {
-        md!(out, "\nStage `{}` is internal: its wheel is a ring gear with the pinion inside it, both turning the same way (a and u in size; the teeth push the pinion toward its own axis and the ring outward).", s.name);
-    }
+    super::kind_pieces::notes(out, &r.stages);
     for s in r.stages.iter().filter(|s| s.load_sharing.is_some()) {
         md!(out, "\nStage `{}`'s load sharing: {}.", s.name, s.load_sharing.as_deref().unwrap_or_default());
     }
-    super::planetary::inputs(out, &r.stages, Units::of_system(r.unit_system));
+    super::kind_pieces::inputs(out, &r.stages, Units::of_system(r.unit_system));
     super::point_tables::shafts(out, &r.shafts, Units::of_system(r.unit_system));
     super::shaft_bending::inputs(out, r);
     if r.oil.is_empty() {

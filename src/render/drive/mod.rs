@@ -5,6 +5,7 @@
 
 pub(crate) mod cycle;
 pub(crate) mod cycle_plots;
+pub(crate) mod kind_pieces;
 pub(crate) mod loss_map;
 pub(crate) mod markdown;
 pub(crate) mod oil_sweep;

@@ -71,7 +71,7 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
         );
     }
     md!(out);
-    super::planetary::point(out, d, u);
+    super::kind_pieces::point(out, d, u);
     header(
         out,
         &[
