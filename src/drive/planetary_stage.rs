@@ -227,7 +227,7 @@ pub(crate) fn planet_bearings(
             axial_load: 0.0,
             no_load,
             load,
-            on_planets: true,
+            of_stage_members: true,
         },
     ))
 }

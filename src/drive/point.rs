@@ -45,10 +45,18 @@ pub struct BearingPoint {
     /// The place's powers (W): M_0 (or M_rr) and M_1 (or M_sl) × |ω| × count.
     pub no_load: f64,
     pub load: f64,
-    /// A planetary stage's planet bearings (on the planets' pins, charged to this shaft), not one of
-    /// the shaft's bearing places.
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub on_planets: bool,
+    /// Bearings a stage's own members carry (`StageModel::member_bearings`: a planetary stage's
+    /// planet bearings on the planets' pins), charged to this shaft, not one of the shaft's bearing
+    /// places. report.json keeps the key it has always had, `on_planets`.
+    #[serde(default, rename = "on_planets", skip_serializing_if = "std::ops::Not::not")]
+    pub of_stage_members: bool,
+}
+
+impl BearingPoint {
+    /// One of the shaft's own bearing places (not bearings a stage's members carry).
+    pub fn is_shaft_place(&self) -> bool {
+        !self.of_stage_members
+    }
 }
 
 /// One shaft at an operating point. Powers and torques along the power flow: `received` comes in

@@ -258,7 +258,7 @@ impl<'a> Walk<'a> {
                     axial_load: axial,
                     no_load,
                     load,
-                    on_planets: false,
+                    of_stage_members: false,
                 });
             }
         }

@@ -153,7 +153,7 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
         }
     }
     for s in &d.shafts {
-        for b in s.bearings.iter().filter(|b| !b.on_planets) {
+        for b in s.bearings.iter().filter(|b| b.is_shaft_place()) {
             cells.extend(reals(&[b.radial_load, b.axial_load, b.no_load, b.load]));
         }
         cells.extend(reals(&[s.speed * RPM, s.received_torque, s.passed_torque, s.gear_no_load, s.seals]));

@@ -50,7 +50,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: U
     }
     let loads = points.iter().flat_map(|p| {
         layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
-            s.bearings.iter().filter(|b| !b.on_planets).zip(&shaft.bearings).map(move |(b, bearing)| {
+            s.bearings.iter().filter(|b| b.is_shaft_place()).zip(&shaft.bearings).map(move |(b, bearing)| {
                 super::bearing_checks::BearingAtPoint {
                     place: format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind),
                     c0: bearing.static_load_rating,

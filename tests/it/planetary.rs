@@ -272,7 +272,7 @@ fn load_sharing_factor_loads_one_planet_more() {
                 p.shafts
                     .iter()
                     .flat_map(|s| &s.bearings)
-                    .filter(|b| b.on_planets)
+                    .filter(|b| b.of_stage_members)
                     .map(|b| [b.no_load, b.load])
                     .next()
                     .unwrap()

@@ -45,7 +45,7 @@ fn the_axial_forces_and_the_tilting_moment_follow_their_closed_forms() {
         let (b_t, b_r) = (f.tangential[0] + f.tangential[1], f.centrifugal + f.radial[0] - f.radial[1]);
         let m = f.tilting / 20e-3;
         let want = (0.5 * b_t).hypot(0.5 * b_r + m).max((0.5 * b_t).hypot(0.5 * b_r - m));
-        let planets = p.shafts[1].bearings.iter().find(|b| b.on_planets).unwrap();
+        let planets = p.shafts[1].bearings.iter().find(|b| b.of_stage_members).unwrap();
         assert!((planets.radial_load - want).abs() <= 1e-12 * want, "{} against {want}", planets.radial_load);
         checked += 1;
     }
