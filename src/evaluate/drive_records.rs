@@ -95,21 +95,24 @@ pub(crate) fn csv_line(cells: &[Cell]) -> String {
     line
 }
 
-/// One row's JSON Lines line: an object keyed by `names` (the columns), in their order; an empty
-/// cell and a value that is not a finite number are `null`.
-pub(crate) fn jsonl_line(names: &[String], cells: &[Cell]) -> String {
-    let value = |c: &Cell| match c {
-        Cell::Int(n) => n.to_string(),
-        Cell::Real(x) if x.is_finite() => serde_json::to_string(x).expect("a finite f64 serialises"),
-        Cell::Text(t) => serde_json::to_string(t).expect("a string serialises"),
-        Cell::Real(_) | Cell::Empty => "null".to_string(),
-    };
-    let pairs: Vec<String> = names
-        .iter()
-        .zip(cells)
-        .map(|(n, c)| format!("{}:{}", serde_json::to_string(n).expect("a string serialises"), value(c)))
-        .collect();
-    format!("{{{}}}\n", pairs.join(","))
+/// One row's JSON Lines line into `out`: an object keyed by `keys` (the columns' names as JSON
+/// strings, each with its colon), in their order; an empty cell and a value that is not a finite
+/// number are `null`.
+pub(crate) fn jsonl_line(keys: &[String], cells: &[Cell], out: &mut Vec<u8>) {
+    out.push(b'{');
+    for (i, (key, cell)) in keys.iter().zip(cells).enumerate() {
+        if i > 0 {
+            out.push(b',');
+        }
+        out.extend_from_slice(key.as_bytes());
+        match cell {
+            Cell::Int(n) => out.extend_from_slice(n.to_string().as_bytes()),
+            Cell::Real(x) if x.is_finite() => serde_json::to_writer(&mut *out, x).expect("a finite f64 serialises"),
+            Cell::Text(t) => serde_json::to_writer(&mut *out, t).expect("a string serialises"),
+            Cell::Real(_) | Cell::Empty => out.extend_from_slice(b"null"),
+        }
+    }
+    out.extend_from_slice(b"}\n");
 }
 
 /// One row's cells in [`columns`]' order; `outside`: by stage, the law's contacts outside its
@@ -172,6 +175,10 @@ pub(crate) trait DriveRecordSink {
 /// any of them), each into its `W`.
 pub(crate) struct DriveRecordFiles<W: Write + Send> {
     names: Vec<String>,
+    /// The names as JSON Lines keys (`"name":`).
+    keys: Vec<String>,
+    /// One JSON Lines line, its buffer kept from row to row.
+    line: Vec<u8>,
     csv: Option<W>,
     jsonl: Option<W>,
     parquet: Option<super::record_parquet::ParquetRecords<W>>,
@@ -186,14 +193,16 @@ impl<W: Write + Send> DriveRecordFiles<W> {
         mut open: impl FnMut(&str) -> std::io::Result<W>,
     ) -> std::io::Result<Self> {
         let columns = columns(drive);
-        let names = columns.iter().map(|(n, _)| n.clone()).collect();
+        let names: Vec<String> = columns.iter().map(|(n, _)| n.clone()).collect();
+        let keys =
+            names.iter().map(|n| format!("{}:", serde_json::to_string(n).expect("a string serialises"))).collect();
         let csv = formats.csv.then(|| open(FILE)).transpose()?;
         let jsonl = formats.jsonl.then(|| open(JSONL_FILE)).transpose()?;
         let parquet = formats
             .parquet
             .then(|| open(PARQUET_FILE).and_then(|w| super::record_parquet::ParquetRecords::with_columns(w, columns)))
             .transpose()?;
-        Ok(DriveRecordFiles { names, csv, jsonl, parquet })
+        Ok(DriveRecordFiles { names, keys, line: Vec::new(), csv, jsonl, parquet })
     }
 
     /// drive_records.csv only, into `out`.
@@ -233,7 +242,9 @@ impl<W: Write + Send> DriveRecordSink for DriveRecordFiles<W> {
             c.write_all(csv_line(&cells).as_bytes())?;
         }
         if let Some(j) = &mut self.jsonl {
-            j.write_all(jsonl_line(&self.names, &cells).as_bytes())?;
+            self.line.clear();
+            jsonl_line(&self.keys, &cells, &mut self.line);
+            j.write_all(&self.line)?;
         }
         if let Some(p) = &mut self.parquet {
             p.write_cells([cells])?;
