@@ -173,7 +173,7 @@ pub struct DrivePoint {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub books_gap: Option<f64>,
     /// A one-pair scene's point whose walks did not bring the mesh's driving torque to the given
-    /// `pinion_torque` (to 1e-12 relative, in [`PINION_WALKS`] walks): by how much it is short
+    /// `pinion_torque` (to 1e-12 relative, in eight walks): by how much it is short
     /// (N·m; not a finite number where a walk failed).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pinion_torque_missed: Option<f64>,

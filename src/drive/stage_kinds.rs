@@ -23,7 +23,7 @@ impl Stage {
     }
 
     /// The stage's meshes at `point` as the walk evaluated them (its kind's
-    /// [`StageModel::mesh_states`]).
+    /// `StageModel::mesh_states`).
     pub fn mesh_states(&self, point: &super::point::StagePoint) -> Vec<super::mesh_state::MeshState> {
         self.model().mesh_states(self, point)
     }
