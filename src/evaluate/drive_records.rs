@@ -116,7 +116,7 @@ pub(crate) fn jsonl_line(keys: &[String], cells: &[Cell], out: &mut Vec<u8>) {
 }
 
 /// One row's cells in [`columns`]' order; `outside`: by stage, the law's contacts outside its
-/// validity (of [`super::drive_setup::VALIDITY_SAMPLES`]).
+/// validity (of the contacts `super::setup::curve_positions` gives).
 pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> Vec<Cell> {
     let d = &r.point;
     let l = &d.losses;

@@ -27,9 +27,6 @@ pub struct DriveRow {
     pub point: DrivePoint,
 }
 
-/// Contacts along A–E at which a law's validity is read on each stage.
-pub(crate) const VALIDITY_SAMPLES: usize = 241;
-
 /// What every point of a drive reads.
 pub(crate) struct DriveSetup<'a> {
     scene: &'a Scene,
@@ -119,7 +116,7 @@ impl<'a> DriveSetup<'a> {
 
     /// Where law `law` leaves its validity range on each stage's mesh at `point` (the driving
     /// member's torque and speed, the pair as that member drives it): the law's verdict at
-    /// [`VALIDITY_SAMPLES`] contacts evenly from A to E, by stage.
+    /// the contacts a pair alone reads it at (`super::setup::curve_positions`), by stage.
     pub(crate) fn validity(&self, law: usize, point: &DrivePoint) -> Vec<super::laws::ValiditySummary> {
         point
             .stages
@@ -279,13 +276,11 @@ pub(crate) struct GridCell {
     pub(crate) speed: EndValue,
 }
 
-/// A law's validity at [`VALIDITY_SAMPLES`] contacts evenly from A to E of a mesh.
+/// A law's validity along A–E of a mesh, at the contacts a pair alone reads it at (241 evenly, the
+/// pitch point, and both sides of B and D: `super::setup::curve_positions`).
 fn validity_along(spec: &FrictionLawSpec, ctx: &LawContext) -> super::laws::ValiditySummary {
     let built = law_at(spec, ctx);
-    let p = ctx.geometry.points;
-    let contacts: Vec<_> = (0..VALIDITY_SAMPLES)
-        .map(|i| ctx.contact_at(p.a + (p.e - p.a) * i as f64 / (VALIDITY_SAMPLES - 1) as f64))
-        .collect();
+    let contacts: Vec<_> = super::setup::curve_positions(ctx.geometry).into_iter().map(|u| ctx.contact_at(u)).collect();
     super::laws::validity_summary(&*built, &contacts)
 }
 

@@ -66,24 +66,29 @@ impl Setup {
         self.law_context(*state).contact_at(u)
     }
 
-    /// Evenly spaced positions from A to E for curves, with every point where the number of pairs
-    /// changes (B and D for ε_α < 2) taken from both sides so that the jumps of the load share are
-    /// drawn vertical.
+    /// [`curve_positions`] of the pair's geometry.
     pub fn curve_positions(&self) -> Vec<f64> {
-        let p = &self.geometry.points;
-        let eps = 1e-9 * (p.e - p.a);
-        let mut u: Vec<f64> =
-            (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
-        u.push(p.p);
-        let g = &self.geometry;
-        for (_, c) in g.pair_change_points() {
-            u.push(c);
-            // The side on which the number of pairs differs from the point itself (B: before, D: after).
-            u.extend([c - eps, c + eps].into_iter().filter(|v| g.pairs_in_contact(*v) != g.pairs_in_contact(c)));
-        }
-        u.sort_by(f64::total_cmp);
-        u
+        curve_positions(&self.geometry)
     }
+}
+
+/// Evenly spaced positions from A to E ([`CURVE_SAMPLES`] of them) with the pitch point and every
+/// point where the number of pairs changes (B and D for ε_α < 2) taken from both sides: where a
+/// pair's curves are drawn (the jumps of the load share vertical) and a law's validity is read, on
+/// a pair alone and on every stage's mesh of a drive alike.
+pub(crate) fn curve_positions(g: &PairGeometry) -> Vec<f64> {
+    let p = &g.points;
+    let eps = 1e-9 * (p.e - p.a);
+    let mut u: Vec<f64> =
+        (0..CURVE_SAMPLES).map(|i| p.a + (p.e - p.a) * i as f64 / (CURVE_SAMPLES - 1) as f64).collect();
+    u.push(p.p);
+    for (_, c) in g.pair_change_points() {
+        u.push(c);
+        // The side on which the number of pairs differs from the point itself (B: before, D: after).
+        u.extend([c - eps, c + eps].into_iter().filter(|v| g.pairs_in_contact(*v) != g.pairs_in_contact(c)));
+    }
+    u.sort_by(f64::total_cmp);
+    u
 }
 
 /// The contact-state table of one operating point.

@@ -28,7 +28,7 @@ pub struct ValidityInterval {
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ValidityReport {
-    /// Points sampled evenly along A–E.
+    /// Contacts sampled along A–E: 241 evenly, the pitch point and both sides of B and D.
     pub samples: usize,
     /// How many of them lie outside the law's validity range.
     pub outside: usize,

@@ -430,7 +430,8 @@ fn drive_records_hold_every_part() {
 
 /// A law used outside its validity range on a stage is flagged: Drozdov–Gavrikov holds for rolling
 /// velocities of 3–20 m/s, so at 10 rpm at the output every contact of both stages is outside
-/// (241 of 241 in the report and in drive_records.csv) and a warning names each stage.
+/// (246 of 246 in the report and in drive_records.csv: the 241 even positions along A–E, the pitch
+/// point and both sides of B and D, where a pair alone reads it) and a warning names each stage.
 #[test]
 fn a_law_outside_its_validity_is_flagged_on_each_stage() {
     let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear"))
@@ -443,13 +444,13 @@ fn a_law_outside_its_validity_is_flagged_on_each_stage() {
     let r = gearloss::run_to_files("slow.gear", &text).unwrap_or_else(|e| panic!("{e}"));
     let json = &r.files.iter().find(|(f, _)| f == "report.json").unwrap().1;
     let report: gearloss::report::drive::DriveReport = serde_json::from_str(json).unwrap();
-    assert_eq!(report.points[0].validity.iter().map(|v| (v.0, v.1)).collect::<Vec<_>>(), vec![(241, 241); 2]);
+    assert_eq!(report.points[0].validity.iter().map(|v| (v.0, v.1)).collect::<Vec<_>>(), vec![(246, 246); 2]);
     let warned = |stage: &str| {
         report.findings.iter().any(|f| f.message.contains(&format!("stage `{stage}`: the law is outside")))
     };
     assert!(warned("first") && warned("second"));
     let csv = &r.files.iter().find(|(f, _)| f == "drive_records.csv").unwrap().1;
-    assert!(csv.lines().nth(1).unwrap().contains(",241,"));
+    assert!(csv.lines().nth(1).unwrap().contains(",246,"));
 }
 
 /// The thermal rating: with the rated output torque the drive's sump settles on the oil's limit

@@ -32,6 +32,7 @@ fn pair_scenes() -> Vec<std::path::PathBuf> {
 fn every_pair_is_its_one_stage_drive() {
     let mut compared = 0;
     let mut budgets = 0;
+    let mut validities = 0;
     let scenes = pair_scenes();
     assert!(scenes.len() >= 15, "{} scenes", scenes.len());
     for path in &scenes {
@@ -95,9 +96,31 @@ fn every_pair_is_its_one_stage_drive() {
                 budgets += 1;
             }
         }
+        // A law's validity on the stage's mesh is read at the contacts the pair alone reads it at:
+        // at each detail point of the pair the same count outside, under every law.
+        let speeds = pair.operating.pinion_speed.values.len();
+        for p in &pair_report.operating_points {
+            for (l, law) in p.friction.iter().enumerate() {
+                let key = [(p.index / speeds).to_string(), (p.index % speeds).to_string(), l.to_string()];
+                let Some(row) = rows.iter().find(|row| {
+                    ["torque_index", "speed_index", "law_index"].iter().zip(&key).all(|(c, k)| row[col(c)] == k)
+                }) else {
+                    continue;
+                };
+                assert_eq!(
+                    row[col("stage_pair_validity_outside")].parse::<usize>().unwrap(),
+                    law.validity.outside,
+                    "{name}: point {} {}",
+                    p.index + 1,
+                    law.label
+                );
+                validities += 1;
+            }
+        }
     }
-    eprintln!("{} scenes: {compared} points compared, {budgets} with a budget", scenes.len());
+    eprintln!("{} scenes: {compared} points compared, {budgets} with a budget, {validities} validities", scenes.len());
     assert!(compared >= 100 && budgets >= 20, "{compared} points compared, {budgets} budgets");
+    assert!(validities >= 20, "{validities} validities compared");
 }
 
 /// Whether the pair's mesh loss as a budget charges it is ISO/TR 14179-2's own (the law on a helical pair).
