@@ -71,6 +71,7 @@ impl<'a> DriveSetup<'a> {
                 let mesh = self.drive.mesh(k, lubricant.as_ref());
                 StageMesh {
                     geometry: s.geometry.clone(),
+                    positions: s.positions.clone(),
                     h_v: s.h_v,
                     tribology: mesh.tribology(mesh.reduced_modulus()),
                     whole: s.whole,
@@ -129,6 +130,7 @@ impl<'a> DriveSetup<'a> {
                     validity_along(
                         spec,
                         &mesh.law_context(m.mesh, m.driving, m.torque.max(f64::MIN_POSITIVE), m.speed).0,
+                        mesh.validity_positions(m.mesh, m.driving),
                     )
                 };
                 match self.drive.layout.stages[k].mesh_states(s).as_slice() {
@@ -276,11 +278,12 @@ pub(crate) struct GridCell {
     pub(crate) speed: EndValue,
 }
 
-/// A law's validity along A–E of a mesh, at the contacts a pair alone reads it at (241 evenly, the
-/// pitch point, and both sides of B and D: `super::setup::curve_positions`).
-fn validity_along(spec: &FrictionLawSpec, ctx: &LawContext) -> super::laws::ValiditySummary {
+/// A law's validity along A–E of a mesh at `positions`: the contacts a pair alone reads it at (241
+/// evenly, the pitch point, and both sides of B and D: `super::setup::curve_positions` of the
+/// mesh's geometry, [`StageMesh::validity_positions`]).
+fn validity_along(spec: &FrictionLawSpec, ctx: &LawContext, positions: &[f64]) -> super::laws::ValiditySummary {
     let built = law_at(spec, ctx);
-    let contacts: Vec<_> = super::setup::curve_positions(ctx.geometry).into_iter().map(|u| ctx.contact_at(u)).collect();
+    let contacts: Vec<_> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
     super::laws::validity_summary(&*built, &contacts)
 }
 

@@ -66,7 +66,7 @@ impl Setup {
         self.law_context(*state).contact_at(u)
     }
 
-    /// [`curve_positions`] of the pair's geometry.
+    /// `curve_positions` of the pair's geometry: where its curves are drawn and a law's validity is read.
     pub fn curve_positions(&self) -> Vec<f64> {
         curve_positions(&self.geometry)
     }

@@ -18,6 +18,9 @@ pub(crate) struct StageMesh {
     /// [pinion driving, wheel driving]: the pair with the driving member as its pinion (shared by
     /// the setups of one drive at several oil temperatures).
     pub(super) geometry: std::sync::Arc<[PairGeometry; 2]>,
+    /// The contacts along A–E at which a law's validity is read, for each geometry
+    /// ([`super::setup::curve_positions`], computed once).
+    pub(super) positions: std::sync::Arc<[Vec<f64>; 2]>,
     pub(super) h_v: [f64; 2],
     pub(super) tribology: Tribology,
     pub(super) whole: bool,
@@ -31,6 +34,8 @@ pub(crate) struct StageMesh {
 /// A planetary stage's planet–ring mesh.
 pub(crate) struct RingMesh {
     pub(super) geometry: std::sync::Arc<PairGeometry>,
+    /// [`super::setup::curve_positions`] of the geometry.
+    pub(super) positions: Vec<f64>,
     pub(super) h_v: f64,
     pub(super) tribology: Tribology,
 }
@@ -45,7 +50,8 @@ impl RingMesh {
         let mesh = drive.ring_mesh(k, lubricant)?;
         let tribology = mesh.tribology(mesh.reduced_modulus());
         let geometry = geometry.unwrap_or_else(|| std::sync::Arc::new(mesh.geometry()));
-        let mut out = RingMesh { geometry, h_v: 0.0, tribology };
+        let positions = super::setup::curve_positions(&geometry);
+        let mut out = RingMesh { geometry, positions, h_v: 0.0, tribology };
         out.h_v = ohlendorf_loss_factor(&out.context(1.0, 1.0));
         Some(out)
     }
@@ -66,7 +72,7 @@ impl StageMesh {
         let e_r = mesh.reduced_modulus();
         let tribology = mesh.tribology(e_r);
         // A ring is no pinion: an internal pair is evaluated with its pinion in the pinion's place
-        // whichever gear drives ([`StageMesh::law_context`]).
+        // whichever gear drives (the internal stage's model puts it there, `mesh_states`).
         let geometry = std::sync::Arc::new([
             mesh.geometry(),
             match drive.pairs[k].internal {
@@ -82,7 +88,8 @@ impl StageMesh {
             })
         }));
         let ring = RingMesh::of(drive, k, scene.lubricant.as_ref(), None);
-        let mut out = StageMesh { h_v: [0.0; 2], geometry, tribology, whole, stiffness, ring };
+        let positions = std::sync::Arc::new([0, 1].map(|d| super::setup::curve_positions(&geometry[d])));
+        let mut out = StageMesh { h_v: [0.0; 2], geometry, positions, tribology, whole, stiffness, ring };
         for d in 0..2 {
             out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
         }
@@ -114,6 +121,15 @@ impl StageMesh {
                 let second = self.ring.as_ref().expect("a stage of two meshes has its second");
                 (second.context(torque, speed), second.h_v)
             }
+        }
+    }
+
+    /// The contacts along A–E at which a law's validity is read on mesh `mesh` with the gear on
+    /// place `driving` in the pinion's place (as [`Self::law_context`] picks its geometry).
+    pub(super) fn validity_positions(&self, mesh: usize, driving: Member) -> &[f64] {
+        match mesh {
+            0 => &self.positions[driving.index()],
+            _ => &self.ring.as_ref().expect("a stage of two meshes has its second").positions,
         }
     }
 
