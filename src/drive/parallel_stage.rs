@@ -108,17 +108,8 @@ impl StageModel for ParallelStage {
 
     /// The pair with the gear [`Self::in_pinion_place`] puts there in the pinion's place.
     fn mesh_states(&self, stage: &Stage, point: &StagePoint) -> Vec<MeshState> {
-        let (driving, torque, speed) =
-            self.in_pinion_place(stage, (point.driving, point.driving_torque.abs(), point.driving_speed.abs()));
-        vec![MeshState {
-            mesh: 0,
-            name: None,
-            driving,
-            members: [driving.name(), driving.other().name()],
-            torque,
-            speed,
-            efficiency: point.mesh_efficiency,
-        }]
+        let driving = (point.driving, point.driving_torque.abs(), point.driving_speed.abs());
+        super::stage_model::one_mesh(point, self.in_pinion_place(stage, driving))
     }
 }
 

@@ -94,14 +94,20 @@ pub(crate) trait StageModel {
     /// in the pinion's place at that gear's |T| and |ω|: by default the one pair, its driving gear
     /// in the pinion's place.
     fn mesh_states(&self, _stage: &Stage, point: &StagePoint) -> Vec<MeshState> {
-        vec![MeshState {
-            mesh: 0,
-            name: None,
-            driving: point.driving,
-            members: [point.driving.name(), point.driving.other().name()],
-            torque: point.driving_torque.abs(),
-            speed: point.driving_speed.abs(),
-            efficiency: point.mesh_efficiency,
-        }]
+        one_mesh(point, (point.driving, point.driving_torque.abs(), point.driving_speed.abs()))
     }
+}
+
+/// The state of a stage of one mesh at `point`: its pair with the gear on place `driving` in the
+/// pinion's place at |T| `torque` and |ω| `speed`.
+pub(crate) fn one_mesh(point: &StagePoint, (driving, torque, speed): (Member, f64, f64)) -> Vec<MeshState> {
+    vec![MeshState {
+        mesh: 0,
+        name: None,
+        driving,
+        members: [driving.name(), driving.other().name()],
+        torque,
+        speed,
+        efficiency: point.mesh_efficiency,
+    }]
 }
