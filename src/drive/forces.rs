@@ -109,12 +109,9 @@ pub fn mesh_forces(
         -sense * f_t * u[0] - f_r * u[1],
         if f_a == 0.0 { 0.0 } else { hand * sense * f_a },
     ];
-    let load = |m: usize, sign: f64| GearLoad {
-        stage: index,
-        member: if m == 0 { Member::Pinion } else { Member::Wheel },
-        shaft: stage.places[m].shaft,
-        point: point(m),
-        force: on_driving.map(|x| sign * x),
+    let load = |m: usize, sign: f64| {
+        let member = if m == 0 { Member::Pinion } else { Member::Wheel };
+        gear_load((index, stage), member, point(m), on_driving.map(|x| sign * x))
     };
     let mut out = [load(0, 1.0), load(1, 1.0)];
     out[1 - d] = load(1 - d, -1.0);
@@ -143,15 +140,14 @@ pub(crate) fn internal_mesh_forces(
         if f_a == 0.0 { 0.0 } else { role * hand * sense * f_a },
     ];
     let load = |m: Member, sign: f64| {
-        let place = stage.places[m.index()];
         let r = sizes.working_pitch_radius[m.index()];
-        GearLoad {
-            stage: index,
-            member: m,
-            shaft: place.shaft,
-            point: [r * c, r * s, place.at],
-            force: on_pinion.map(|x| sign * x),
-        }
+        gear_load((index, stage), m, [r * c, r * s, stage.places[m.index()].at], on_pinion.map(|x| sign * x))
     };
     [load(Member::Pinion, 1.0), load(Member::Wheel, -1.0)]
+}
+
+/// The load `force` (N) at `point` (m, the shaft's frame) on `member` of stage `index`, on that
+/// member's shaft.
+fn gear_load((index, stage): (usize, &Stage), member: Member, point: [f64; 3], force: [f64; 3]) -> GearLoad {
+    GearLoad { stage: index, member, shaft: stage.places[member.index()].shaft, point, force }
 }
