@@ -18,9 +18,10 @@
 //!
 //! ```text
 //!  cli ─ lib                      the binary's commands; one function per stage
-//!  run, rerender                  the stages chained into a report folder; a folder redrawn from its json
-//!  run_drive, run_stage_pairs,    a drive's run; its stages' meshes run as pairs alone; one pair's run
-//!    run_pair                     in memory (what run and run_stage_pairs both call)
+//!  run, rerender                  the one run layer (folder, oil temperatures, shards, merge) for every
+//!                                 scene; a folder redrawn from its json
+//!  run_drive, run_pair,           each kind of scene's SceneRun (run_kind: a drive's; a pair's, also what
+//!    run_stage_pairs, run_kind    a drive's stage meshes run as pairs alone go through)
 //!  shard, folder                  shards and merge; a report folder written whole (concurrent-safe)
 //!  render/ (markdown, svg/)       formats the report; never computes
 //!  report/                        the serde report: numbers and series ready to draw, findings
@@ -91,6 +92,7 @@ pub mod rexs;
 pub(crate) mod run;
 pub mod run_drive;
 pub(crate) mod run_error;
+pub(crate) mod run_kind;
 pub(crate) mod run_pair;
 pub(crate) mod run_stage_pairs;
 pub mod scene;

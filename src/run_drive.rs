@@ -1,9 +1,7 @@
-//! A drive of several stages run into its report folder: whole (its records streamed), at several
-//! oil temperatures (a report each and their comparison), as a shard, and merged from its shards.
+//! A drive of several stages' part of the one run layer (`run.rs`): its evaluation streamed
+//! into its record files, reported and rendered (`DriveRun`), in memory or into a folder, as a
+//! shard, and merged from its shards.
 
-use std::path::{Path, PathBuf};
-
-use std::fs::File;
 use std::io::BufWriter;
 
 use crate::evaluate::drive_records::{self, DriveRecordFiles};
@@ -15,15 +13,9 @@ use crate::progress::Progress;
 use crate::render::RenderedReport;
 use crate::report;
 use crate::report::drive::DriveReport;
-use crate::run_error::RunError;
+use crate::run_error::{FailureKind, RunError};
+use crate::run_kind::{File, Labelled, OilRun, SceneRun};
 use crate::{render, shard};
-
-/// What a drive's run wrote: its folder, files and reports.
-pub(crate) struct DriveWritten {
-    pub folder: PathBuf,
-    pub files: Vec<String>,
-    pub drives: LabelledDrives,
-}
 
 /// Writes `files` into `folder`; their names.
 fn write_all(
@@ -77,119 +69,75 @@ pub fn drive_report_files(
 /// Drive reports with their labels (their folders at several oil temperatures, else empty).
 pub type LabelledDrives = Vec<(String, crate::report::drive::DriveReport)>;
 
-/// A drive scene at several oil temperatures in memory: each run's files under its folder, then the
-/// comparison's files at the top; with the runs' reports.
-pub(crate) fn drive_sweep_files(scene: &Scene) -> Result<(Vec<(String, String)>, LabelledDrives), RunError> {
-    let mut files = Vec::new();
-    let (top, reports) = each_oil_temperature(scene, |at, drive, dir| {
-        let (report, rendered) = drive_report_files(at, drive)?;
-        files.extend(rendered.files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
-        Ok(report)
-    })?;
-    Ok((top.into_iter().chain(files).collect(), reports))
+/// A drive of stages, as the one run layer runs it ([`crate::run`]).
+pub(crate) struct DriveRun;
+
+/// The drive of a drive's scene (at any of its oil temperatures).
+fn drive_of(scene: &Scene) -> &crate::model::SceneDrive {
+    scene.drive.as_ref().expect("a drive's run is of a drive scene, at every oil temperature")
 }
 
-/// Runs a drive scene at each of its oil temperatures by `run_one(scene at θ, its drive, its
-/// folder)`; the comparison's files (the top of the report folder) and the runs' reports.
-fn each_oil_temperature(
-    scene: &Scene,
-    mut run_one: impl FnMut(&Scene, &crate::model::SceneDrive, &str) -> Result<DriveReport, RunError>,
-) -> Result<(Vec<(String, String)>, LabelledDrives), RunError> {
-    let mut runs = Vec::new();
-    let kelvin: Vec<f64> =
-        scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
-    for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
-        let at = scene.at_oil_temperature(i);
-        let drive = at.drive.as_ref().expect("a drive scene at another temperature is a drive scene");
-        let dir = report::oil_sweep::run_folder(&label);
-        let report = run_one(&at, drive, &dir)?;
-        runs.push((label, kelvin, dir, report));
+impl SceneRun for DriveRun {
+    type Report = DriveReport;
+    const SHARDED_SWEEP: (FailureKind, &'static str) = (FailureKind::ShardedDrive, "the drive");
+
+    fn files(&self, scene: &Scene) -> Result<(DriveReport, Vec<File>), RunError> {
+        drive_report_files(scene, drive_of(scene)).map(|(report, rendered)| (report, rendered.files))
     }
-    let top = render::drive::oil_sweep::render_drive_oil_sweep(&report::drive_oil_sweep::build_drive_oil_sweep(&runs));
-    Ok((top, runs.into_iter().map(|(_, _, dir, r)| (dir, r)).collect()))
-}
 
-/// One shard of a drive into `out_dir/<slug>.shard-K-of-N/`: its rows of drive_records.csv and the
-/// manifest with their tally.
-pub(crate) fn run_drive_shard_into(
-    source_name: &str,
-    source: &str,
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    (shard, out_dir, formats): (Shard, &Path, RecordFormats),
-    progress: &dyn Progress,
-) -> Result<DriveWritten, RunError> {
-    let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
-    let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
-    let io = RunError::io("the record files");
-    let (mut records, mut files) = record_files((&folder, ""), drive, formats)?;
-    let tally = evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
-    records.finish().map_err(&io)?;
-    let manifest = shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally)
-        .with_digests(&folder, &files)
-        .map_err(&io)?;
-    folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
-    files.push(shard::MANIFEST.to_string());
-    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(DriveWritten { folder, files, drives: Vec::new() })
-}
-
-/// `gearloss merge` of a drive's shards: drive_records.csv concatenated in shard order (a single
-/// run's, byte for byte), the tallies folded, the report's rows, map, thermal balance and duty
-/// cycle evaluated again: the report a single run writes.
-pub(crate) fn merge_drive_into(
-    set: &shard::ShardSet,
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    out_dir: &Path,
-    progress: &dyn Progress,
-) -> Result<DriveWritten, RunError> {
-    let folder =
-        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
-    progress.stage("merge", set.folders.len() as u64);
-    let files = set.concatenate_drive_records(&folder, progress).map_err(RunError::io("the record files"))?;
-    let tally = set.drive_tally.unwrap_or_default();
-    let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
-    report_into((folder, files), scene, drive, &eval, progress)
-}
-
-/// The report of `eval` rendered into `folder` (which holds its record files `files`), committed.
-fn report_into(
-    (folder, mut files): (ReportFolder, Vec<String>),
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    eval: &evaluate::drive::DriveEvaluation,
-    progress: &dyn Progress,
-) -> Result<DriveWritten, RunError> {
-    let (report, rendered) = reported(scene, drive, eval)?;
-    files.extend(write_all(&folder, &rendered.files, progress)?);
-    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(DriveWritten { folder, files, drives: vec![(String::new(), report)] })
-}
-
-/// A drive scene into its report folder, written whole.
-pub(crate) fn run_drive_into(
-    scene: &Scene,
-    drive: &crate::model::SceneDrive,
-    (out_dir, formats): (&Path, RecordFormats),
-    progress: &dyn Progress,
-) -> Result<DriveWritten, RunError> {
-    let folder =
-        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
-    if scene.operating.oil_temperatures.is_some() {
-        let mut files = Vec::new();
-        let (top, drives) = each_oil_temperature(scene, |at, drive, dir| {
-            let (report, written) = run_one_into(at, drive, (&folder, dir), formats, progress)?;
-            files.extend(written);
-            Ok(report)
-        })?;
-        let files = write_all(&folder, &top, progress)?.into_iter().chain(files).collect();
-        let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-        return Ok(DriveWritten { folder, files, drives });
+    fn run_in_folder(
+        &self,
+        scene: &Scene,
+        at: (&ReportFolder, &str),
+        formats: RecordFormats,
+        progress: &dyn Progress,
+    ) -> Result<(DriveReport, Vec<String>), RunError> {
+        run_one_into(scene, drive_of(scene), at, formats, progress)
     }
-    let (report, files) = run_one_into(scene, drive, (&folder, ""), formats, progress)?;
-    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(DriveWritten { folder, files, drives: vec![(String::new(), report)] })
+
+    fn oil_sweep(&self, runs: &[OilRun<DriveReport>]) -> Result<Vec<File>, RunError> {
+        Ok(render::drive::oil_sweep::render_drive_oil_sweep(&report::drive_oil_sweep::build_drive_oil_sweep(runs)))
+    }
+
+    fn shard_into(
+        &self,
+        scene: &Scene,
+        (source_name, source): (&str, &str),
+        shard: Shard,
+        (folder, formats): (&ReportFolder, RecordFormats),
+        progress: &dyn Progress,
+    ) -> Result<(Vec<String>, shard::Manifest), RunError> {
+        let drive = drive_of(scene);
+        let io = RunError::io("the record files");
+        let (mut records, files) = record_files((folder, ""), drive, formats)?;
+        let tally =
+            evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
+        records.finish().map_err(&io)?;
+        Ok((files, shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally)))
+    }
+
+    /// drive_records.csv concatenated in shard order (a single run's, byte for byte), the
+    /// tallies folded, the report's rows, map, thermal balance and duty cycle evaluated again.
+    fn merge_into(
+        &self,
+        set: &shard::ShardSet,
+        scene: &Scene,
+        folder: &ReportFolder,
+        progress: &dyn Progress,
+    ) -> Result<(DriveReport, Vec<String>), RunError> {
+        let drive = drive_of(scene);
+        progress.stage("merge", set.folders.len() as u64);
+        let mut files = set.concatenate_drive_records(folder, progress).map_err(RunError::io("the record files"))?;
+        let tally = set.drive_tally.unwrap_or_default();
+        let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
+        let (report, rendered) = reported(scene, drive, &eval)?;
+        files.extend(write_all(folder, &rendered.files, progress)?);
+        Ok((report, files))
+    }
+
+    fn labelled(reports: Vec<(String, DriveReport)>) -> Labelled {
+        (Vec::new(), reports)
+    }
 }
 
 /// A drive scene (at one oil temperature) into `folder` under `dir` (`""`: the top): its record
@@ -213,7 +161,7 @@ fn run_one_into(
 }
 
 /// A drive's record files in a folder as they are written.
-type DriveFiles = DriveRecordFiles<BufWriter<File>>;
+type DriveFiles = DriveRecordFiles<BufWriter<std::fs::File>>;
 
 /// The record files `formats` ask for in `folder` (drive_records.csv, .jsonl, .parquet) and their
 /// names.

@@ -1,17 +1,21 @@
 //! One pair's scene (at one oil temperature) run after its sweep: the details evaluated, reported
 //! and rendered ([`finish`]), and the whole run in memory with its record files
 //! ([`run_scene_to_files`]). Both a scene of one pair and each stage analysed in a drive's run go
-//! through here.
+//! through here. [`PairRun`] is a pair's part of the one run layer ([`crate::run`]).
 
 use crate::evaluate::record_files::{RecordFiles, RecordFormats};
 use crate::evaluate::stages::{details, stream};
-use crate::evaluate::{self, Plan, Tally};
+use crate::evaluate::stream::Streamed;
+use crate::evaluate::{self, Plan, Shard, Tally};
+use crate::folder::ReportFolder;
 use crate::model::Scene;
 use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
 use crate::report::{self, Report};
 use crate::rerender;
-use crate::run_error::RunError;
+use crate::run_error::{FailureKind, RunError};
+use crate::run_kind::{File, Labelled, OilRun, SceneRun};
+use crate::shard::{self, Manifest, ShardSet};
 
 /// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
 pub fn has_records(scene: &Scene) -> bool {
@@ -81,4 +85,102 @@ pub(crate) fn run_scene_exact(scene: &Scene) -> Result<ExactRun, RunError> {
         rendered.files.push((report::sweep::RECORDS_JSONL.into(), text(jsonl)));
     }
     Ok((exact, report, rendered.files))
+}
+
+/// A scene of one pair, as the one run layer runs it ([`crate::run`]).
+pub(crate) struct PairRun;
+
+impl SceneRun for PairRun {
+    type Report = Report;
+    const SHARDED_SWEEP: (FailureKind, &'static str) = (FailureKind::ShardedOilSweep, "the scene");
+
+    fn files(&self, scene: &Scene) -> Result<(Report, Vec<File>), RunError> {
+        run_scene_to_files(scene)
+    }
+
+    fn run_in_folder(
+        &self,
+        scene: &Scene,
+        (folder, dir): (&ReportFolder, &str),
+        formats: RecordFormats,
+        progress: &dyn Progress,
+    ) -> Result<(Report, Vec<String>), RunError> {
+        let scene = &*evaluate::first_balance::at_first_balance(scene);
+        let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+        let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+        let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;
+        let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed, progress)?;
+        progress.stage("write", rendered.files.len() as u64);
+        for (file, content) in &rendered.files {
+            folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
+            files.push(path(file));
+            progress.advance(1);
+        }
+        Ok((report, files))
+    }
+
+    fn oil_sweep(&self, runs: &[OilRun<Report>]) -> Result<Vec<File>, RunError> {
+        let runs: Vec<(String, f64, Report)> = runs.iter().map(|(l, k, _, r)| (l.clone(), *k, r.clone())).collect();
+        crate::render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs))
+            .map_err(RunError::drawing)
+    }
+
+    fn shard_into(
+        &self,
+        scene: &Scene,
+        (source_name, source): (&str, &str),
+        shard: Shard,
+        (folder, formats): (&ReportFolder, RecordFormats),
+        progress: &dyn Progress,
+    ) -> Result<(Vec<String>, Manifest), RunError> {
+        let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
+        let (streamed, files) = stream_into(scene, &plan, (folder, ""), formats, progress)?;
+        Ok((files, Manifest::new(source_name, source, shard, &plan, streamed.tally)))
+    }
+
+    fn merge_into(
+        &self,
+        set: &ShardSet,
+        scene: &Scene,
+        folder: &ReportFolder,
+        progress: &dyn Progress,
+    ) -> Result<(Report, Vec<String>), RunError> {
+        let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+        let mut files = Vec::new();
+        if has_records(scene) {
+            progress.stage("merge", set.folders.len() as u64);
+            files.extend(set.concatenate(folder, progress).map_err(RunError::io("the record files"))?);
+        }
+        let (report, rendered) = finish(scene, &plan, &set.tally, &Default::default(), progress)?;
+        for (file, content) in &rendered.files {
+            folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
+            files.push(file.clone());
+        }
+        Ok((report, files))
+    }
+
+    fn labelled(reports: Vec<(String, Report)>) -> Labelled {
+        (reports, Vec::new())
+    }
+}
+
+/// The plan's points streamed into the record files of `folder` under `dir` (`""`: the top), when
+/// the scene writes records; returns the stream and the record files written.
+fn stream_into(
+    scene: &Scene,
+    plan: &Plan,
+    (folder, dir): (&ReportFolder, &str),
+    formats: RecordFormats,
+    progress: &dyn Progress,
+) -> Result<(Streamed, Vec<String>), RunError> {
+    let io = RunError::io("the record files");
+    if !has_records(scene) {
+        return Ok((stream(scene, plan, &mut evaluate::records::NoRecords, progress).map_err(io)?, Vec::new()));
+    }
+    let mut sink =
+        shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(scene), formats).map_err(&io)?;
+    let streamed = stream(scene, plan, &mut sink, progress).map_err(&io)?;
+    sink.finish().map_err(&io)?;
+    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    Ok((streamed, formats.files().into_iter().map(path).collect()))
 }
