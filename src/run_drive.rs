@@ -55,7 +55,8 @@ pub fn drive_report_files(
     drive: &crate::model::SceneDrive,
 ) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
     let io = RunError::io("records");
-    let mut records = DriveRecordFiles::new(drive, RecordFormats::default(), |_| Ok(Vec::new())).map_err(&io)?;
+    let mut records =
+        drive_records::drive_record_files(drive, RecordFormats::default(), |_| Ok(Vec::new())).map_err(&io)?;
     let eval =
         evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, &crate::progress::Quiet).map_err(&io)?;
     let (report, mut rendered) = reported(scene, drive, &eval)?;
@@ -172,7 +173,7 @@ fn record_files(
 ) -> Result<(DriveFiles, Vec<String>), RunError> {
     let io = RunError::io("the record files");
     let mut files = Vec::new();
-    let records = DriveRecordFiles::new(drive, formats, |file| {
+    let records = drive_records::drive_record_files(drive, formats, |file| {
         let file = if dir.is_empty() { file.to_string() } else { format!("{dir}/{file}") };
         let opened = folder.create_file(&file).map(BufWriter::new);
         files.push(file);

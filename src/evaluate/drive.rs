@@ -2,7 +2,7 @@
 //! formulation (rows streamed to the records, the first kept for the report), over the map's grid,
 //! and the thermal balance of the kept rows.
 
-use super::drive_records::{DriveRecordFiles, DriveRecordSink};
+use super::drive_records::{drive_records_csv, DriveRecordSink};
 use super::drive_setup::DriveSetup;
 use crate::drive::DrivePoint;
 use crate::model::{Scene, SceneDrive};
@@ -48,7 +48,7 @@ pub fn evaluate_drive_into(
     drive: &SceneDrive,
     records: &mut (dyn std::io::Write + Send),
 ) -> std::io::Result<DriveEvaluation> {
-    let mut csv = DriveRecordFiles::csv(drive, records);
+    let mut csv = drive_records_csv(drive, records);
     evaluate_drive_into_with(scene, drive, &mut csv, &crate::progress::Quiet)
 }
 
@@ -96,7 +96,7 @@ pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: Dr
         &setup,
         scene,
         drive,
-        (0..n, &mut DriveRecordFiles::csv(drive, std::io::sink())),
+        (0..n, &mut drive_records_csv(drive, std::io::sink())),
         false,
         &crate::progress::Quiet,
     )

@@ -4,14 +4,15 @@
 //! shaft's speed (signed), torques received and passed on, gears' no-load parts and seals. SI but
 //! speeds in rpm. The same rows go to drive_records.jsonl (an object a row, keyed by the CSV's
 //! column names) and drive_records.parquet (typed columns) as `--records` asks, every file from
-//! one list of cells ([`cells`]) written as a pair's record files write theirs
-//! ([`super::record_cells::Cell`]: the shortest text that reads back to the same f64; a value that
+//! one list of cells ([`cells`]) by the one record writer
+//! ([`super::record_files::RecordFiles`]: the shortest text that reads back to the same f64; a value that
 //! is not a finite number is an empty CSV cell, `null` in JSON Lines, a Parquet null).
 
 use std::io::Write;
 
 use super::drive_setup::DriveRow;
 use super::record_cells::Cell;
+use super::record_files::{RecordFiles, RecordFormats, RecordTable};
 use super::record_parquet::ColumnType;
 use crate::drive::PowerFlow;
 use crate::model::SceneDrive;
@@ -87,13 +88,6 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
 /// The whole-number and the text columns; every other column is a number.
 const INTS: &[&str] = &["row", "torque_index", "speed_index", "law_index", "passes"];
 const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver"];
-
-/// One row's CSV line ([`cells`] as a pair's records.csv writes its cells).
-pub(crate) fn csv_line(cells: &[Cell]) -> String {
-    let mut line = cells.iter().map(Cell::csv).collect::<Vec<_>>().join(",");
-    line.push('\n');
-    line
-}
 
 /// One row's JSON Lines line into `out`: an object keyed by `keys` (the columns' names as JSON
 /// strings, each with its colon), in their order; an empty cell and a value that is not a finite
@@ -171,84 +165,78 @@ pub(crate) trait DriveRecordSink {
     fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()>;
 }
 
-/// The record files of a drive's rows as `--records` asks (drive_records.csv, .jsonl, .parquet:
-/// any of them), each into its `W`.
-pub(crate) struct DriveRecordFiles<W: Write + Send> {
-    names: Vec<String>,
-    /// The names as JSON Lines keys (`"name":`).
-    keys: Vec<String>,
-    /// One JSON Lines line, its buffer kept from row to row.
-    line: Vec<u8>,
-    csv: Option<W>,
-    jsonl: Option<W>,
-    parquet: Option<super::record_parquet::ParquetRecords<W>>,
+/// One of a drive's rows as the record files take it: its index, flow, row and, by stage, the
+/// law's contacts outside its validity.
+pub(crate) struct DriveRecord<'a> {
+    i: usize,
+    flow: PowerFlow,
+    row: &'a DriveRow,
+    outside: &'a [usize],
 }
 
-impl<W: Write + Send> DriveRecordFiles<W> {
-    /// The files of `formats` for `drive`'s rows, each opened by `open(its name)` (the Parquet
-    /// schema from [`columns`]).
-    pub(crate) fn new(
-        drive: &SceneDrive,
-        formats: super::record_files::RecordFormats,
-        mut open: impl FnMut(&str) -> std::io::Result<W>,
-    ) -> std::io::Result<Self> {
-        let columns = columns(drive);
-        let names: Vec<String> = columns.iter().map(|(n, _)| n.clone()).collect();
-        let keys =
-            names.iter().map(|n| format!("{}:", serde_json::to_string(n).expect("a string serialises"))).collect();
-        let csv = formats.csv.then(|| open(FILE)).transpose()?;
-        let jsonl = formats.jsonl.then(|| open(JSONL_FILE)).transpose()?;
-        let parquet = formats
-            .parquet
-            .then(|| open(PARQUET_FILE).and_then(|w| super::record_parquet::ParquetRecords::with_columns(w, columns)))
-            .transpose()?;
-        Ok(DriveRecordFiles { names, keys, line: Vec::new(), csv, jsonl, parquet })
+/// A drive's rows as the one record writer writes them: the columns of [`columns`], each row's
+/// JSON Lines line an object keyed by them.
+pub(crate) struct DriveRecords {
+    columns: Vec<(String, ColumnType)>,
+    /// The names as JSON Lines keys (`"name":`).
+    keys: Vec<String>,
+}
+
+impl RecordTable for DriveRecords {
+    type Row<'a> = DriveRecord<'a>;
+    const FILES: [&'static str; 3] = [FILE, JSONL_FILE, PARQUET_FILE];
+
+    fn names(&self) -> Vec<String> {
+        self.columns.iter().map(|(n, _)| n.clone()).collect()
     }
 
-    /// drive_records.csv only, into `out`.
-    pub(crate) fn csv(drive: &SceneDrive, out: W) -> Self {
-        let mut out = Some(out);
-        let formats = super::record_files::RecordFormats { csv: true, jsonl: false, parquet: false };
-        Self::new(drive, formats, |_| Ok(out.take().expect("one file"))).expect("opening a given writer cannot fail")
+    fn cells(&self, r: &DriveRecord<'_>) -> Vec<Cell> {
+        cells(r.i, r.flow, r.row, r.outside)
     }
 
-    /// Writes what is held and the Parquet footer; the CSV and JSON Lines writers back, flushed.
-    pub(crate) fn finish(self) -> std::io::Result<(Option<W>, Option<W>)> {
-        let (mut csv, mut jsonl) = (self.csv, self.jsonl);
-        for w in [&mut csv, &mut jsonl].into_iter().flatten() {
-            w.flush()?;
-        }
-        if let Some(p) = self.parquet {
-            p.finish()?;
-        }
-        Ok((csv, jsonl))
+    fn jsonl_line(&self, _: &DriveRecord<'_>, cells: &[Cell], out: &mut Vec<u8>) {
+        jsonl_line(&self.keys, cells, out);
     }
+
+    fn parquet_columns(&self, _: &[DriveRecord<'_>]) -> Vec<(String, ColumnType)> {
+        self.columns.clone()
+    }
+
+    fn parquet_cells(&self, _: &DriveRecord<'_>, cells: Vec<Cell>, _: &[(String, ColumnType)]) -> Vec<Cell> {
+        cells
+    }
+}
+
+/// The record files of a drive's rows as `--records` asks (drive_records.csv, .jsonl, .parquet:
+/// any of them), each into its `W`.
+pub(crate) type DriveRecordFiles<W> = RecordFiles<W, DriveRecords>;
+
+/// A drive's record files.
+pub(crate) fn drive_record_files<W: Write + Send>(
+    drive: &SceneDrive,
+    formats: RecordFormats,
+    open: impl FnMut(&str) -> std::io::Result<W>,
+) -> std::io::Result<DriveRecordFiles<W>> {
+    let columns = columns(drive);
+    let keys =
+        columns.iter().map(|(n, _)| format!("{}:", serde_json::to_string(n).expect("a string serialises"))).collect();
+    RecordFiles::of(DriveRecords { columns, keys }, formats, open)
+}
+
+/// drive_records.csv only, into `out`.
+pub(crate) fn drive_records_csv<W: Write + Send>(drive: &SceneDrive, out: W) -> DriveRecordFiles<W> {
+    let mut out = Some(out);
+    let formats = RecordFormats { csv: true, jsonl: false, parquet: false };
+    drive_record_files(drive, formats, |_| Ok(out.take().expect("one file")))
+        .expect("opening a given writer cannot fail")
 }
 
 impl<W: Write + Send> DriveRecordSink for DriveRecordFiles<W> {
     fn header(&mut self, _: &SceneDrive) -> std::io::Result<()> {
-        match &mut self.csv {
-            // A stage's name is the scene's text: quoted in the header where it holds a comma.
-            Some(c) => {
-                writeln!(c, "{}", self.names.iter().map(|n| Cell::Text(n.clone()).csv()).collect::<Vec<_>>().join(","))
-            }
-            None => Ok(()),
-        }
+        RecordFiles::header(self)
     }
 
-    fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()> {
-        let cells = cells(i, flow, r, outside);
-        if let Some(c) = &mut self.csv {
-            c.write_all(csv_line(&cells).as_bytes())?;
-        }
-        if let Some(j) = &mut self.jsonl {
-            self.line.clear();
-            jsonl_line(&self.keys, &cells, &mut self.line);
-            j.write_all(&self.line)?;
-        }
-        if let Some(p) = &mut self.parquet {
-            p.write_cells([cells])?;
-        }
-        Ok(())
+    fn row(&mut self, i: usize, flow: PowerFlow, row: &DriveRow, outside: &[usize]) -> std::io::Result<()> {
+        self.write(&[DriveRecord { i, flow, row, outside }])
     }
 }

@@ -8,9 +8,9 @@
 
 use std::io::Write;
 
-use super::record_cells::csv_line;
-use super::record_parquet::ParquetRecords;
-use super::records::{csv_header, jsonl_line, ExtraColumns, RecordSink, SummaryRow};
+use super::record_cells::{Cell, PairRecords};
+use super::record_parquet::{ColumnType, ParquetRecords};
+use super::records::{ExtraColumns, RecordSink, SummaryRow};
 
 /// The record files of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -62,65 +62,146 @@ impl RecordFormats {
     }
 }
 
-/// The text record files.
+/// A scene of one pair's text record files.
 pub(crate) const RECORDS_CSV: &str = "records.csv";
 pub(crate) const RECORDS_JSONL: &str = "records.jsonl";
-/// The Parquet record file.
+/// Its Parquet record file.
 pub(crate) const RECORDS_PARQUET: &str = "records.parquet";
 
-/// The record files being written.
-pub struct RecordFiles<W: Write + Send> {
-    csv: Option<W>,
-    jsonl: Option<W>,
-    parquet: Option<ParquetRecords<W>>,
-    widths: [usize; 3],
+/// One kind of record as the one record writer ([`RecordFiles`]) writes it: a scene of one pair's
+/// summary rows (records.csv, .jsonl, .parquet) and a drive's rows (drive_records.csv, .jsonl,
+/// .parquet). Every file of a row comes from its one list of cells, written alike: the shortest
+/// text that reads back to the same f64, a value that is not a finite number an empty CSV cell,
+/// `null` in JSON Lines, a Parquet null.
+pub trait RecordTable {
+    /// One row as the evaluation gives it.
+    type Row<'a>;
+    /// The files' names: CSV, JSON Lines, Parquet.
+    const FILES: [&'static str; 3];
+    /// The columns' names, in the CSV's order.
+    fn names(&self) -> Vec<String>;
+    /// A row's cells, in the columns' order.
+    fn cells(&self, row: &Self::Row<'_>) -> Vec<Cell>;
+    /// A row's JSON Lines line appended to `out` (`cells`: its cells).
+    fn jsonl_line(&self, row: &Self::Row<'_>, cells: &[Cell], out: &mut Vec<u8>);
+    /// The Parquet file's columns, fixed by the table and the first rows written (a pair's law
+    /// parameters: a column each).
+    fn parquet_columns(&self, first: &[Self::Row<'_>]) -> Vec<(String, ColumnType)>;
+    /// A row's Parquet cells: its `cells` and the cells of the columns [`Self::parquet_columns`]
+    /// adds after them.
+    fn parquet_cells(&self, row: &Self::Row<'_>, cells: Vec<Cell>, columns: &[(String, ColumnType)]) -> Vec<Cell>;
 }
 
-impl<W: Write + Send> RecordFiles<W> {
-    /// The files `open` gives for each of the formats asked for (the CSV's header written).
+/// The record files being written, one writer for every kind of record (`T`): each format asked
+/// for into its `W`.
+pub struct RecordFiles<W: Write + Send, T: RecordTable = PairRecords> {
+    table: T,
+    csv: Option<W>,
+    jsonl: Option<W>,
+    /// The Parquet file: its writer before the first rows fix its columns, then the file.
+    parquet: Option<Parquet<W>>,
+    /// One JSON Lines line, its buffer kept from row to row.
+    line: Vec<u8>,
+}
+
+/// The Parquet file of [`RecordFiles`]: not started until the first rows, then writing.
+enum Parquet<W: Write + Send> {
+    Waiting(W),
+    Writing(Box<ParquetRecords<W>>),
+}
+
+impl<W: Write + Send> RecordFiles<W, PairRecords> {
+    /// A scene of one pair's record files (records.csv, .jsonl, .parquet as `formats` asks), each
+    /// opened by `open(its name)`; the CSV's header written.
     pub fn new(
         formats: RecordFormats,
         extra: &ExtraColumns,
+        open: impl FnMut(&str) -> std::io::Result<W>,
+    ) -> std::io::Result<Self> {
+        let mut files = RecordFiles::of(PairRecords::new(extra), formats, open)?;
+        files.header()?;
+        Ok(files)
+    }
+}
+
+impl<W: Write + Send, T: RecordTable> RecordFiles<W, T> {
+    /// The files of `formats` for `table`'s rows, each opened by `open(its name)`.
+    pub(crate) fn of(
+        table: T,
+        formats: RecordFormats,
         mut open: impl FnMut(&str) -> std::io::Result<W>,
     ) -> std::io::Result<Self> {
-        let mut csv = formats.csv.then(|| open(RECORDS_CSV)).transpose()?;
-        if let Some(c) = &mut csv {
-            c.write_all(csv_header(extra).as_bytes())?;
-        }
-        let jsonl = formats.jsonl.then(|| open(RECORDS_JSONL)).transpose()?;
-        let parquet =
-            formats.parquet.then(|| open(RECORDS_PARQUET).map(|w| ParquetRecords::new(w, extra))).transpose()?;
-        Ok(RecordFiles { csv, jsonl, parquet, widths: extra.widths() })
+        let [csv_file, jsonl_file, parquet_file] = T::FILES;
+        let csv = formats.csv.then(|| open(csv_file)).transpose()?;
+        let jsonl = formats.jsonl.then(|| open(jsonl_file)).transpose()?;
+        let parquet = formats.parquet.then(|| open(parquet_file).map(Parquet::Waiting)).transpose()?;
+        Ok(RecordFiles { table, csv, jsonl, parquet, line: Vec::new() })
     }
 
-    /// Flushes every file and writes the Parquet footer; the CSV and JSON Lines writers back (an
-    /// in-memory run reads its buffers).
+    /// Writes the CSV's header line (before any row; a drive's shard after the first writes none,
+    /// so that the shards' files concatenated are a single run's).
+    pub(crate) fn header(&mut self) -> std::io::Result<()> {
+        if let Some(c) = &mut self.csv {
+            // A name may be the scene's text (a stage's): quoted where it holds a comma.
+            let names: Vec<String> = self.table.names().into_iter().map(|n| Cell::Text(n).csv()).collect();
+            writeln!(c, "{}", names.join(","))?;
+        }
+        Ok(())
+    }
+
+    /// Writes `rows` (consecutive, in order) into every file.
+    pub(crate) fn write(&mut self, rows: &[T::Row<'_>]) -> std::io::Result<()> {
+        if let Some(Parquet::Waiting(_)) = &self.parquet {
+            let Some(Parquet::Waiting(w)) = self.parquet.take() else { unreachable!("just matched") };
+            let columns = self.table.parquet_columns(rows);
+            self.parquet = Some(Parquet::Writing(Box::new(ParquetRecords::with_columns(w, columns)?)));
+        }
+        for row in rows {
+            let cells = self.table.cells(row);
+            if let Some(c) = &mut self.csv {
+                c.write_all(csv_line(&cells).as_bytes())?;
+            }
+            if let Some(j) = &mut self.jsonl {
+                self.line.clear();
+                self.table.jsonl_line(row, &cells, &mut self.line);
+                j.write_all(&self.line)?;
+            }
+            if let Some(Parquet::Writing(p)) = &mut self.parquet {
+                let cells = self.table.parquet_cells(row, cells, p.columns());
+                p.write_cells([cells])?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Flushes every file and writes the Parquet footer (its columns those of no rows when none
+    /// came); the CSV and JSON Lines writers back (an in-memory run reads its buffers).
     pub fn finish(mut self) -> std::io::Result<(Option<W>, Option<W>)> {
         for w in [&mut self.csv, &mut self.jsonl].into_iter().flatten() {
             w.flush()?;
         }
-        if let Some(p) = self.parquet {
-            p.finish()?;
+        match self.parquet {
+            Some(Parquet::Waiting(w)) => {
+                ParquetRecords::with_columns(w, self.table.parquet_columns(&[]))?.finish()?;
+            }
+            Some(Parquet::Writing(p)) => {
+                p.finish()?;
+            }
+            None => {}
         }
         Ok((self.csv, self.jsonl))
     }
 }
 
-impl<W: Write + Send> RecordSink for RecordFiles<W> {
+/// A row's CSV line.
+fn csv_line(cells: &[Cell]) -> String {
+    let mut line = cells.iter().map(Cell::csv).collect::<Vec<_>>().join(",");
+    line.push('\n');
+    line
+}
+
+impl<W: Write + Send> RecordSink for RecordFiles<W, PairRecords> {
     fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
-        if let Some(c) = &mut self.csv {
-            for row in rows {
-                c.write_all(csv_line(row, self.widths).as_bytes())?;
-            }
-        }
-        if let Some(j) = &mut self.jsonl {
-            for row in rows {
-                j.write_all(jsonl_line(row).as_bytes())?;
-            }
-        }
-        if let Some(p) = &mut self.parquet {
-            p.write_rows(rows)?;
-        }
-        Ok(())
+        self.write(rows)
     }
 }

@@ -1,9 +1,9 @@
-//! records.parquet: the summary records as typed Parquet columns (Apache Parquet through the
-//! pure-Rust `parquet` crate, Snappy-compressed, text columns dictionary-encoded), written in row
-//! groups of [`ROW_GROUP`] rows as the sweep streams, so memory stays bounded. The columns are
-//! records.csv's, in its order and with its names (integers INT64, numbers DOUBLE, text UTF-8; a
-//! missing or non-finite value, and an empty text, is null, as an empty CSV cell reads), then one DOUBLE column per law parameter the run's first
-//! point reports, `param_<name>_<unit>` (the `parameters` text column keeps them all).
+//! The Parquet record files (records.parquet, drive_records.parquet): typed columns through the
+//! pure-Rust `parquet` crate, Snappy-compressed, text columns dictionary-encoded, written in row
+//! groups of [`ROW_GROUP`] rows as the sweep streams, so memory stays bounded. The columns are the
+//! CSV's, in its order and with its names (integers INT64, numbers DOUBLE, text UTF-8; a missing
+//! or non-finite value, and an empty text, is null, as an empty CSV cell reads); which columns a
+//! kind of record has is its `super::record_files::RecordTable`'s.
 
 use std::io::Write;
 use std::sync::Arc;
@@ -15,8 +15,7 @@ use parquet::file::properties::WriterProperties;
 use parquet::file::writer::SerializedFileWriter;
 use parquet::schema::types::Type;
 
-use super::record_cells::{cells, Cell};
-use super::records::{csv_header, ExtraColumns, RecordSink, SummaryRow};
+use super::record_cells::Cell;
 
 /// Rows held before they are written as a row group.
 pub(crate) const ROW_GROUP: usize = 8_192;
@@ -29,64 +28,18 @@ pub enum ColumnType {
     Text,
 }
 
-/// records.csv's integer and text columns; every other one is a number.
-const INTS: &[&str] = &["point", "torque_index", "speed_index", "law_index", "validity_samples", "validity_outside"];
-const TEXTS: &[&str] = &["kind", "law", "label", "formulation", "parameters", "thermal_status"];
-
-fn type_of(name: &str) -> ColumnType {
-    if INTS.contains(&name) {
-        ColumnType::Int
-    } else if TEXTS.contains(&name) {
-        ColumnType::Text
-    } else {
-        ColumnType::Real
-    }
-}
-
-/// A parameter's column name: `param_<name>_<unit>` (`_` for what a name cannot hold).
-fn parameter_column(name: &str, unit: &str) -> String {
-    let clean = |s: &str| s.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect::<String>();
-    if unit == "1" || unit.is_empty() {
-        format!("param_{}", clean(name))
-    } else {
-        format!("param_{}_{}", clean(name), clean(unit))
-    }
-}
-
-/// Writes records.parquet: the columns fixed by the scene and the first rows' parameters.
+/// Writes a Parquet record file of the given columns (`super::record_files::RecordTable::parquet_columns`).
 pub(crate) struct ParquetRecords<W: Write + Send> {
     out: Option<W>,
     writer: Option<SerializedFileWriter<W>>,
-    extra: ExtraColumns,
     columns: Vec<(String, ColumnType)>,
-    /// (name, unit) of the parameter columns.
-    parameters: Vec<(String, String)>,
     rows: Vec<Vec<Cell>>,
 }
 
 impl<W: Write + Send> ParquetRecords<W> {
-    /// A writer for a run with the scene's `extra` columns; the file starts with the first rows.
-    pub(crate) fn new(out: W, extra: &ExtraColumns) -> ParquetRecords<W> {
-        ParquetRecords {
-            out: Some(out),
-            writer: None,
-            extra: extra.clone(),
-            columns: Vec::new(),
-            parameters: Vec::new(),
-            rows: Vec::new(),
-        }
-    }
-
     /// A writer of the given columns (a merge, from its shards' schema).
     pub(crate) fn with_columns(out: W, columns: Vec<(String, ColumnType)>) -> std::io::Result<ParquetRecords<W>> {
-        let mut w = ParquetRecords {
-            out: Some(out),
-            writer: None,
-            extra: ExtraColumns::default(),
-            columns,
-            parameters: Vec::new(),
-            rows: Vec::new(),
-        };
+        let mut w = ParquetRecords { out: Some(out), writer: None, columns, rows: Vec::new() };
         w.open()?;
         Ok(w)
     }
@@ -178,28 +131,10 @@ impl<W: Write + Send> ParquetRecords<W> {
 
     /// Writes what is held and the footer; the inner writer flushed.
     pub(crate) fn finish(mut self) -> std::io::Result<W> {
-        if self.writer.is_none() {
-            self.start(&[])?;
-        }
         self.flush_group()?;
         let mut out = self.writer.take().expect("open").into_inner().map_err(io)?;
         out.flush()?;
         Ok(out)
-    }
-
-    /// Fixes the columns from the scene's and the first rows' parameters, and opens the file.
-    fn start(&mut self, first: &[SummaryRow]) -> std::io::Result<()> {
-        let header = csv_header(&self.extra);
-        self.columns = header.trim_end().split(',').map(|n| (n.to_string(), type_of(n))).collect();
-        for row in first {
-            for p in &row.parameters {
-                if !self.parameters.iter().any(|(n, u)| *n == p.name && *u == p.unit) {
-                    self.parameters.push((p.name.clone(), p.unit.clone()));
-                }
-            }
-        }
-        self.columns.extend(self.parameters.iter().map(|(n, u)| (parameter_column(n, u), ColumnType::Real)));
-        self.open()
     }
 }
 
@@ -214,24 +149,4 @@ fn present(c: &Cell) -> bool {
 
 fn io(e: impl std::fmt::Display) -> std::io::Error {
     std::io::Error::other(format!("records.parquet: {e}"))
-}
-
-impl<W: Write + Send> RecordSink for ParquetRecords<W> {
-    fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
-        if self.writer.is_none() {
-            self.start(rows)?;
-        }
-        let widths = self.extra.widths();
-        let params = self.parameters.clone();
-        self.write_cells(rows.iter().map(|row| {
-            let mut c = cells(row, widths);
-            c.extend(params.iter().map(|(n, u)| {
-                row.parameters
-                    .iter()
-                    .find(|p| p.name == *n && p.unit == *u)
-                    .map_or(Cell::Empty, |p| Cell::Real(p.value))
-            }));
-            c
-        }))
-    }
 }

@@ -222,24 +222,6 @@ impl ExtraColumns {
     }
 }
 
-/// The header line of `records.csv`: [`CSV_COLUMNS`], then the scene's [`ExtraColumns`].
-pub(crate) fn csv_header(extra: &ExtraColumns) -> String {
-    let mut s = CSV_COLUMNS.join(",");
-    for name in extra.names() {
-        s.push(',');
-        s.push_str(name);
-    }
-    s.push('\n');
-    s
-}
-
-/// One JSON Lines line of a row (non-finite numbers become `null`).
-pub(crate) fn jsonl_line(row: &SummaryRow) -> String {
-    let mut line = serde_json::to_string(row).expect("a row serialises");
-    line.push('\n');
-    line
-}
-
 /// Where the rows go as they are computed.
 pub trait RecordSink {
     /// Takes the rows of consecutive operating points, in order.
