@@ -128,7 +128,9 @@ impl SceneRun for DriveRun {
     ) -> Result<(DriveReport, Vec<String>), RunError> {
         let drive = drive_of(scene);
         progress.stage("merge", set.folders.len() as u64);
-        let mut files = set.concatenate_drive_records(folder, progress).map_err(RunError::io("the record files"))?;
+        let mut files = set
+            .concatenate::<drive_records::DriveRecords>(folder, progress)
+            .map_err(RunError::io("the record files"))?;
         let tally = set.drive_tally.unwrap_or_default();
         let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
         let (report, rendered) = reported(scene, drive, &eval)?;

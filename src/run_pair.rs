@@ -149,7 +149,10 @@ impl SceneRun for PairRun {
         let mut files = Vec::new();
         if has_records(scene) {
             progress.stage("merge", set.folders.len() as u64);
-            files.extend(set.concatenate(folder, progress).map_err(RunError::io("the record files"))?);
+            files.extend(
+                set.concatenate::<crate::evaluate::record_cells::PairRecords>(folder, progress)
+                    .map_err(RunError::io("the record files"))?,
+            );
         }
         let (report, rendered) = finish(scene, &plan, &set.tally, &Default::default(), progress)?;
         for (file, content) in &rendered.files {

@@ -12,12 +12,11 @@ use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
-use crate::evaluate::record_files::{RecordFiles, RecordFormats, RECORDS_PARQUET};
+use crate::evaluate::record_files::{RecordFiles, RecordFormats, RecordTable};
 use crate::evaluate::records::ExtraColumns;
 use crate::evaluate::{Plan, Shard, Tally};
 use crate::folder::ReportFolder;
 use crate::progress::Progress;
-use crate::report::sweep::{RECORDS_CSV, RECORDS_JSONL};
 use crate::run_error::{Failure, FailureKind};
 
 /// The manifest of a shard folder.
@@ -214,43 +213,25 @@ impl ShardSet {
         Ok(ShardSet { source_name, source, folders: dirs, tally, drive_tally })
     }
 
-    /// Writes the merged record files into `folder` (those the first shard holds; every shard must
-    /// hold them): CSV and JSON Lines each shard's in shard order, the CSV header once; Parquet the
+    /// Writes the merged record files of a kind of record `T` into `folder` (those of
+    /// `T::FILES` the first shard holds; every shard must hold them): the CSV and JSON Lines each
+    /// shard's in shard order, the CSV's header once (every shard's file has it); Parquet the
     /// shards' rows in shard order into one file (a shard's file that cannot be read is refused,
     /// named). Returns the files written.
-    pub(crate) fn concatenate(&self, folder: &ReportFolder, progress: &dyn Progress) -> std::io::Result<Vec<String>> {
-        let first = &self.folders[0];
-        let text: Vec<(&str, bool)> =
-            [(RECORDS_CSV, true), (RECORDS_JSONL, false)].into_iter().filter(|(f, _)| first.join(f).exists()).collect();
-        self.concatenate_files(folder, &text, progress)?;
-        let mut files: Vec<String> = text.iter().map(|(f, _)| f.to_string()).collect();
-        if first.join(RECORDS_PARQUET).exists() {
-            self.merge_parquet(folder, RECORDS_PARQUET)?;
-            files.push(RECORDS_PARQUET.to_string());
-        }
-        Ok(files)
-    }
-
-    /// A drive's merged record files (those the first shard holds): drive_records.csv and
-    /// drive_records.jsonl concatenated in shard order (the CSV's header in the first shard only),
-    /// drive_records.parquet's rows in shard order into one file. Returns the files written.
-    pub(crate) fn concatenate_drive_records(
+    pub(crate) fn concatenate<T: RecordTable>(
         &self,
         folder: &ReportFolder,
         progress: &dyn Progress,
     ) -> std::io::Result<Vec<String>> {
-        use crate::evaluate::drive_records::{FILE, JSONL_FILE, PARQUET_FILE};
+        let [csv, jsonl, parquet] = T::FILES;
         let first = &self.folders[0];
-        let mut files = Vec::new();
-        for text in [FILE, JSONL_FILE] {
-            if first.join(text).exists() {
-                self.concatenate_files(folder, &[(text, false)], progress)?;
-                files.push(text.to_string());
-            }
-        }
-        if first.join(PARQUET_FILE).exists() {
-            self.merge_parquet(folder, PARQUET_FILE)?;
-            files.push(PARQUET_FILE.to_string());
+        let text: Vec<(&str, bool)> =
+            [(csv, true), (jsonl, false)].into_iter().filter(|(f, _)| first.join(f).exists()).collect();
+        self.concatenate_files(folder, &text, progress)?;
+        let mut files: Vec<String> = text.iter().map(|(f, _)| f.to_string()).collect();
+        if first.join(parquet).exists() {
+            self.merge_parquet(folder, parquet)?;
+            files.push(parquet.to_string());
         }
         Ok(files)
     }
@@ -296,7 +277,7 @@ impl ShardSet {
             let mut out = BufWriter::new(folder.create_file(file)?);
             for (k, dir) in self.folders.iter().enumerate() {
                 let mut input = BufReader::new(File::open(dir.join(file))?);
-                if header && k > 0 && file == RECORDS_CSV {
+                if header && k > 0 {
                     let mut skipped = Vec::new();
                     input.read_until(b'\n', &mut skipped)?;
                 }

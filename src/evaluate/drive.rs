@@ -68,8 +68,8 @@ pub(crate) fn evaluate_drive_into_with(
 }
 
 /// One shard of a drive's run (`gearloss run --shard K/N`): the rows of its operating points
-/// ([`super::plan::Shard::range`] over the points) streamed to `records` (the header only in
-/// the first shard, so that the shards' files concatenated are a single run's), and their tally;
+/// ([`super::plan::Shard::range`] over the points) streamed to `records` (each shard's CSV with
+/// its header, as a pair's shards', which the merge keeps from the first shard only), and their tally;
 /// each block of rows announced to `progress` (stopping where it is cancelled).
 pub(crate) fn evaluate_drive_shard_with(
     scene: &Scene,
@@ -83,7 +83,7 @@ pub(crate) fn evaluate_drive_shard_with(
     let points = shard.range(scene.operating.count());
     let rows = points.start * per_point..points.end * per_point;
     progress.stage("evaluate", rows.len() as u64);
-    Ok(stream_rows(&setup, scene, drive, (rows, records), shard.index == 1, progress)?.2)
+    Ok(stream_rows(&setup, scene, drive, (rows, records), true, progress)?.2)
 }
 
 /// After the shards are merged: the report's rows (the first [`DETAIL_ROWS`]) evaluated again, the

@@ -160,7 +160,8 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
 
 /// Where a drive's rows go as they are computed.
 pub(crate) trait DriveRecordSink {
-    /// The header, written once before the rows (a CSV's first line; the first shard's only).
+    /// The header, written once before the rows (a CSV's first line; every shard's: the merge keeps
+    /// the first's).
     fn header(&mut self, drive: &SceneDrive) -> std::io::Result<()>;
     fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()>;
 }

@@ -138,8 +138,7 @@ impl<W: Write + Send, T: RecordTable> RecordFiles<W, T> {
         Ok(RecordFiles { table, csv, jsonl, parquet, line: Vec::new() })
     }
 
-    /// Writes the CSV's header line (before any row; a drive's shard after the first writes none,
-    /// so that the shards' files concatenated are a single run's).
+    /// Writes the CSV's header line (before any row).
     pub(crate) fn header(&mut self) -> std::io::Result<()> {
         if let Some(c) = &mut self.csv {
             // A name may be the scene's text (a stage's): quoted where it holds a comma.

@@ -542,6 +542,13 @@ fn shards_merge_to_the_single_run(spec: &str, tag: &str) {
             gearloss::run_into("ev.gear", &text, &scene, &base.join("shards"), shard, &gearloss::Quiet).unwrap().folder,
         );
     }
+    // Each shard's drive_records.csv stands alone, its header first (as a pair's shard's records.csv).
+    let header = |folder: &std::path::Path| {
+        std::fs::read_to_string(folder.join("drive_records.csv")).unwrap().lines().next().unwrap().to_string()
+    };
+    for folder in &folders {
+        assert_eq!(header(folder), header(&whole.folder), "{}", folder.display());
+    }
     let merged = gearloss::merge_into(&folders, &base.join("merged"), &gearloss::Quiet).unwrap();
     let mut names = whole.files.clone();
     names.sort();
