@@ -3,6 +3,7 @@
 //! shard, and merged from its shards.
 
 use std::io::BufWriter;
+use std::path::Path;
 
 use crate::evaluate::drive_records::{self, DriveRecordFiles};
 use crate::evaluate::record_files::RecordFormats;
@@ -14,7 +15,7 @@ use crate::render::RenderedReport;
 use crate::report;
 use crate::report::drive::DriveReport;
 use crate::run_error::{FailureKind, RunError};
-use crate::run_kind::{File, Labelled, OilRun, SceneRun};
+use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
 use crate::{render, shard};
 
 /// Writes `files` into `folder`; their names.
@@ -136,6 +137,23 @@ impl SceneRun for DriveRun {
         let (report, rendered) = reported(scene, drive, &eval)?;
         files.extend(write_all(folder, &rendered.files, progress)?);
         Ok((report, files))
+    }
+
+    const REPORT: (&'static str, &'static [&'static str]) = ("a drive's report", &["shafts"]);
+    const OIL_SWEEP: (&'static str, &'static [&'static str]) =
+        ("a drive's comparison of oil temperatures", &["runs", "rows"]);
+
+    /// Each stage mesh analysed as a pair alone has its report of one pair in its folder.
+    fn redraw(_: &Path, text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+        let drive: DriveReport = serde_json::from_str(text).map_err(bad)?;
+        let files = render::drive::render_drive(&drive).map_err(RunError::drawing)?.files;
+        Ok((files, drive.stage_pairs.iter().filter_map(|p| p.folder.clone()).collect()))
+    }
+
+    fn redraw_oil_sweep(text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+        let sweep: report::drive_oil_sweep::DriveOilSweepReport = serde_json::from_str(text).map_err(bad)?;
+        let files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep);
+        Ok((files, sweep.runs.iter().map(|r| r.folder.clone()).collect()))
     }
 
     fn labelled(reports: Vec<(String, DriveReport)>) -> Labelled {

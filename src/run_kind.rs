@@ -4,7 +4,9 @@
 //! both: the report folder written whole and renamed into place, a run at each of the scene's oil
 //! temperatures (a folder each and their comparison at the top), a shard's folder with its
 //! manifest and the digests of its record files, and the merge of shards into the report a single
-//! run writes.
+//! run writes; and `gearloss render` reading each kind's report.json back ([`crate::rerender`]).
+
+use std::path::Path;
 
 use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::Shard;
@@ -26,6 +28,10 @@ pub(crate) type OilRun<R> = (String, f64, String, R);
 /// The labelled reports a run wrote (by their oil temperature's folder, else empty): a pair's, a
 /// drive's (one of the two lists is empty).
 pub(crate) type Labelled = (Vec<(String, Report)>, Vec<(String, DriveReport)>);
+
+/// What a report.json read back draws: its files, and the folders inside its folder that hold
+/// reports of their own.
+pub(crate) type Redrawn = (Vec<File>, Vec<String>);
 
 /// A kind of scene's evaluation, report and record files, run by the one run layer.
 pub(crate) trait SceneRun {
@@ -74,6 +80,19 @@ pub(crate) trait SceneRun {
         folder: &ReportFolder,
         progress: &dyn Progress,
     ) -> Result<(Self::Report, Vec<String>), RunError>;
+
+    /// What this kind's report.json is called (`a pair's report`) and the top-level fields only
+    /// it has (a pair's `geometry`, a drive's `shafts`), read by `gearloss render`.
+    const REPORT: (&'static str, &'static [&'static str]);
+    /// The same of its comparison of oil temperatures (`runs`; a drive's with `rows`).
+    const OIL_SWEEP: (&'static str, &'static [&'static str]);
+
+    /// The files a report.json of this kind (`text`, in `dir`) draws again, and the folders in
+    /// `dir` that hold reports of their own (a drive's stage meshes analysed as pairs alone);
+    /// `bad` names what in the text is not this kind's report.
+    fn redraw(dir: &Path, text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError>;
+    /// The same for its comparison of oil temperatures (the runs' folders inside it).
+    fn redraw_oil_sweep(text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError>;
 
     /// The reports of a run, labelled (by their oil temperature's folder, else empty), as
     /// [`crate::run::Written`] holds them.

@@ -3,6 +3,8 @@
 //! ([`run_scene_to_files`]). Both a scene of one pair and each stage analysed in a drive's run go
 //! through here. [`PairRun`] is a pair's part of the one run layer ([`crate::run`]).
 
+use std::path::Path;
+
 use crate::evaluate::record_files::{RecordFiles, RecordFormats};
 use crate::evaluate::stages::{details, stream};
 use crate::evaluate::stream::Streamed;
@@ -11,10 +13,12 @@ use crate::folder::ReportFolder;
 use crate::model::Scene;
 use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
+use crate::render::TIMINGS_FILE;
+use crate::report::numerics::Timings;
+use crate::report::oil_sweep::OilSweepReport;
 use crate::report::{self, Report};
-use crate::rerender;
-use crate::run_error::{FailureKind, RunError};
-use crate::run_kind::{File, Labelled, OilRun, SceneRun};
+use crate::run_error::{Failure, FailureKind, RunError};
+use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
 use crate::shard::{self, Manifest, ShardSet};
 
 /// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
@@ -51,7 +55,7 @@ fn finish_exact(
     let report = report::build_report(scene, &eval, tally, plan);
     let timings = eval.dynamics.as_ref().and_then(report::dynamics::timings);
     progress.stage("render", 1);
-    let (written, mut rendered) = rerender::render_as_written(&report, timings.as_ref())?;
+    let (written, mut rendered) = render_as_written(&report, timings.as_ref())?;
     // The map's cells are data of the run, as the record files are: written beside the report.
     if let (Some(map), Some(m)) = (&eval.efficiency_map, &written.efficiency_map) {
         let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
@@ -150,7 +154,7 @@ impl SceneRun for PairRun {
         if has_records(scene) {
             progress.stage("merge", set.folders.len() as u64);
             files.extend(
-                set.concatenate::<crate::evaluate::record_cells::PairRecords>(folder, progress)
+                set.concatenate::<crate::evaluate::pair_records::PairRecords>(folder, progress)
                     .map_err(RunError::io("the record files"))?,
             );
         }
@@ -162,9 +166,56 @@ impl SceneRun for PairRun {
         Ok((report, files))
     }
 
+    const REPORT: (&'static str, &'static [&'static str]) = ("a pair's report", &["geometry"]);
+    const OIL_SWEEP: (&'static str, &'static [&'static str]) = ("a pair's comparison of oil temperatures", &["runs"]);
+
+    /// With its `timing_numerics.json`, when the run wrote one.
+    fn redraw(dir: &Path, text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+        let report: Report = serde_json::from_str(text).map_err(bad)?;
+        let timings = match std::fs::read_to_string(dir.join(TIMINGS_FILE)) {
+            Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| timings_bad(dir, e))?),
+            Err(_) => None,
+        };
+        Ok((crate::render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files, Vec::new()))
+    }
+
+    fn redraw_oil_sweep(text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+        let sweep: OilSweepReport = serde_json::from_str(text).map_err(bad)?;
+        let files = crate::render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
+        Ok((files, sweep.runs.iter().map(|r| r.folder.clone()).collect()))
+    }
+
     fn labelled(reports: Vec<(String, Report)>) -> Labelled {
         (reports, Vec::new())
     }
+}
+
+/// A `timing_numerics.json` that does not read back.
+fn timings_bad(dir: &Path, e: serde_json::Error) -> RunError {
+    RunError::Render(
+        Failure::new(
+            FailureKind::NotAReport,
+            format!("{} is not the timings gearloss wrote: {e}", dir.join(TIMINGS_FILE).display()),
+        )
+        .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
+    )
+}
+
+/// Stage 5 as a run does it: the files drawn from the report as report.json holds it (written,
+/// then read back), so that `gearloss render` of the folder gives the same files byte for byte and
+/// report.json is shown to hold everything the files show. report.json is the text the report was
+/// read back from: writing the read report again gives the same bytes (tested for every spec), so
+/// it is serialised once.
+pub(crate) fn render_as_written(
+    report: &Report,
+    timings: Option<&Timings>,
+) -> Result<(Report, RenderedReport), RunError> {
+    let json = crate::render::render_json(report);
+    let read: Report = serde_json::from_str(&json)
+        .map_err(|e| format!("report.json does not read back: {e}"))
+        .map_err(RunError::read_back)?;
+    let rendered = crate::render::render_report_with_json(&read, json, timings).map_err(RunError::drawing)?;
+    Ok((read, rendered))
 }
 
 /// The plan's points streamed into the record files of `folder` under `dir` (`""`: the top), when

@@ -30,7 +30,7 @@ pub(crate) fn record_files(
     dir: &str,
     extra: &ExtraColumns,
     formats: RecordFormats,
-) -> std::io::Result<RecordFiles<BufWriter<File>>> {
+) -> std::io::Result<RecordFiles<BufWriter<File>, crate::evaluate::pair_records::PairRecords>> {
     let at = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     RecordFiles::new(formats, extra, |f| Ok(BufWriter::new(folder.create_file(&at(f))?)))
 }

@@ -23,6 +23,7 @@ pub(crate) mod first_balance;
 pub(crate) mod laws;
 pub(crate) mod map;
 pub(crate) mod map_best;
+pub(crate) mod pair_records;
 pub(crate) mod plan;
 pub(crate) mod prepare;
 pub(crate) mod record_cells;

@@ -8,9 +8,8 @@
 
 use std::io::Write;
 
-use super::record_cells::{Cell, PairRecords};
+use super::record_cells::Cell;
 use super::record_parquet::{ColumnType, ParquetRecords};
-use super::records::{ExtraColumns, RecordSink, SummaryRow};
 
 /// The record files of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -69,7 +68,7 @@ pub(crate) const RECORDS_JSONL: &str = "records.jsonl";
 pub(crate) const RECORDS_PARQUET: &str = "records.parquet";
 
 /// One kind of record as the one record writer ([`RecordFiles`]) writes it: a scene of one pair's
-/// summary rows (records.csv, .jsonl, .parquet) and a drive's rows (drive_records.csv, .jsonl,
+/// summary rows (records.csv, .jsonl, .parquet; `super::pair_records`) and a drive's rows (drive_records.csv, .jsonl,
 /// .parquet). Every file of a row comes from its one list of cells, written alike: the shortest
 /// text that reads back to the same f64, a value that is not a finite number an empty CSV cell,
 /// `null` in JSON Lines, a Parquet null.
@@ -94,7 +93,7 @@ pub trait RecordTable {
 
 /// The record files being written, one writer for every kind of record (`T`): each format asked
 /// for into its `W`.
-pub struct RecordFiles<W: Write + Send, T: RecordTable = PairRecords> {
+pub struct RecordFiles<W: Write + Send, T: RecordTable> {
     table: T,
     csv: Option<W>,
     jsonl: Option<W>,
@@ -108,20 +107,6 @@ pub struct RecordFiles<W: Write + Send, T: RecordTable = PairRecords> {
 enum Parquet<W: Write + Send> {
     Waiting(W),
     Writing(Box<ParquetRecords<W>>),
-}
-
-impl<W: Write + Send> RecordFiles<W, PairRecords> {
-    /// A scene of one pair's record files (records.csv, .jsonl, .parquet as `formats` asks), each
-    /// opened by `open(its name)`; the CSV's header written.
-    pub fn new(
-        formats: RecordFormats,
-        extra: &ExtraColumns,
-        open: impl FnMut(&str) -> std::io::Result<W>,
-    ) -> std::io::Result<Self> {
-        let mut files = RecordFiles::of(PairRecords::new(extra), formats, open)?;
-        files.header()?;
-        Ok(files)
-    }
 }
 
 impl<W: Write + Send, T: RecordTable> RecordFiles<W, T> {
@@ -197,10 +182,4 @@ fn csv_line(cells: &[Cell]) -> String {
     let mut line = cells.iter().map(Cell::csv).collect::<Vec<_>>().join(",");
     line.push('\n');
     line
-}
-
-impl<W: Write + Send> RecordSink for RecordFiles<W, PairRecords> {
-    fn write_rows(&mut self, rows: &[SummaryRow]) -> std::io::Result<()> {
-        self.write(rows)
-    }
 }
