@@ -92,8 +92,9 @@ pub(super) fn check_record_rows(scene: &Scene, errors: &mut Vec<Diagnostic>) {
     }
 }
 
-/// `detail_points = [1, 57]`: operating points (1-based, torque-major, as in records.csv) reported in
-/// full besides the default ones; returned 0-based.
+/// `detail_points = [1, 57]`: operating points (1-based, torque-major: every speed of the first
+/// torque, then of the next; a pair's records.csv `point`) reported in full besides the default
+/// ones, a pair's or each of a drive's stage meshes'; returned 0-based.
 pub(super) fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnostic>) -> Option<Vec<usize>> {
     let Some((_, value)) = f.values.get("detail_points") else {
         return Some(Vec::new());
@@ -101,7 +102,7 @@ pub(super) fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnosti
     let (numbers, _, _, _) = super::sweeps::sweep_values("detail_points", value, Dimension::NONE, errors)?;
     let bad = |reason: String| {
         Diagnostic::new(DiagnosticKind::OutOfRange, value.span, reason).hint(format!(
-            "list up to {MAX_DETAIL_POINTS} point numbers from 1 to {count} (1-based, torque-major, as in records.csv), e.g. `detail_points = [1, {count}]`"
+            "list up to {MAX_DETAIL_POINTS} point numbers from 1 to {count} (1-based, torque-major: every speed of the first torque, then of the next), e.g. `detail_points = [1, {count}]`"
         ))
     };
     if numbers.len() > MAX_DETAIL_POINTS {
