@@ -2,7 +2,7 @@
 //! formulation (rows streamed to the records, the first kept for the report), over the map's grid,
 //! and the thermal balance of the kept rows.
 
-use super::drive_records::{drive_records_csv, DriveRecordSink};
+use super::drive_records::{drive_records_csv, DriveRecord, DriveRecordSink};
 use super::drive_setup::DriveSetup;
 use crate::drive::DrivePoint;
 use crate::model::{Scene, SceneDrive};
@@ -139,8 +139,11 @@ fn stream_rows(
         let checked: Vec<_> = block.par_iter().map(|r| setup.validity(r.law_index, &r.point)).collect();
         for (i, (row, valid)) in block.into_iter().zip(checked).enumerate() {
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
-            records.row(start + i, row.point.flow, &row, &outside)?;
+            let record = DriveRecord { i: start + i, flow: row.point.flow, row: &row, outside: &outside };
+            let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside);
             tally.add(start + i, &row.point);
+            tally.add_cells(start + i, &cells);
+            records.row(record, cells)?;
             if !row.point.settled() {
                 tally.unsettled_rows += 1;
                 tally.first_unsettled.get_or_insert(start + i);
@@ -213,6 +216,12 @@ pub struct DriveTally {
     pub unsettled_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_unsettled: Option<usize>,
+    /// Values of the record files that are not finite numbers (empty cells, JSON `null`), and the
+    /// first: its row and its column's index in `super::drive_records::columns`.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub non_finite: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_non_finite: Option<(usize, usize)>,
 }
 
 /// For serde: a count left out when it is zero.
@@ -229,6 +238,8 @@ impl DriveTally {
         self.first_outside = self.first_outside.or(next.first_outside);
         self.unsettled_rows += next.unsettled_rows;
         self.first_unsettled = self.first_unsettled.or(next.first_unsettled);
+        self.non_finite += next.non_finite;
+        self.first_non_finite = self.first_non_finite.or(next.first_non_finite);
         if let Some((e, i)) = next.least {
             if self.least.is_none_or(|(l, _)| e < l) {
                 self.least = Some((e, i));
@@ -237,6 +248,17 @@ impl DriveTally {
         if let Some((e, i)) = next.greatest {
             if self.greatest.is_none_or(|(g, _)| e > g) {
                 self.greatest = Some((e, i));
+            }
+        }
+    }
+
+    /// Counts row `i`'s cells that hold a number that is not finite (the record files write it as
+    /// an empty cell, `null`, a Parquet null: flagged in the report, never silent).
+    fn add_cells(&mut self, i: usize, cells: &[super::record_cells::Cell]) {
+        for (k, cell) in cells.iter().enumerate() {
+            if matches!(cell, super::record_cells::Cell::Real(x) if !x.is_finite()) {
+                self.non_finite += 1;
+                self.first_non_finite.get_or_insert((i, k));
             }
         }
     }
@@ -252,5 +274,27 @@ impl DriveTally {
         if self.greatest.is_none_or(|(e, _)| p.efficiency > e) {
             self.greatest = Some((p.efficiency, i));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::record_cells::Cell;
+    use super::DriveTally;
+
+    /// A value that is not a finite number is counted where it stands, and shards' tallies fold
+    /// to one run's (the first is the earlier shard's).
+    #[test]
+    fn non_finite_cells_are_counted_and_fold() {
+        let mut first = DriveTally::default();
+        first.add_cells(0, &[Cell::Int(1), Cell::Real(1.5), Cell::Text("a".into())]);
+        assert_eq!((first.non_finite, first.first_non_finite), (0, None));
+        first.add_cells(1, &[Cell::Int(2), Cell::Real(f64::NAN), Cell::Real(f64::INFINITY)]);
+        assert_eq!((first.non_finite, first.first_non_finite), (2, Some((1, 1))));
+        let mut next = DriveTally::default();
+        next.add_cells(2, &[Cell::Real(f64::NEG_INFINITY), Cell::Empty]);
+        assert_eq!(next.first_non_finite, Some((2, 0)));
+        first.absorb(next);
+        assert_eq!((first.non_finite, first.first_non_finite), (3, Some((1, 1))));
     }
 }

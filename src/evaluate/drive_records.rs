@@ -163,16 +163,17 @@ pub(crate) trait DriveRecordSink {
     /// The header, written once before the rows (a CSV's first line; every shard's: the merge keeps
     /// the first's).
     fn header(&mut self, drive: &SceneDrive) -> std::io::Result<()>;
-    fn row(&mut self, i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> std::io::Result<()>;
+    /// Row `i` and its cells ([`cells`] of it).
+    fn row(&mut self, record: DriveRecord<'_>, cells: Vec<Cell>) -> std::io::Result<()>;
 }
 
 /// One of a drive's rows as the record files take it: its index, flow, row and, by stage, the
 /// law's contacts outside its validity.
 pub(crate) struct DriveRecord<'a> {
-    i: usize,
-    flow: PowerFlow,
-    row: &'a DriveRow,
-    outside: &'a [usize],
+    pub i: usize,
+    pub flow: PowerFlow,
+    pub row: &'a DriveRow,
+    pub outside: &'a [usize],
 }
 
 /// A drive's rows as the one record writer writes them: the columns of [`columns`], each row's
@@ -237,7 +238,8 @@ impl<W: Write + Send> DriveRecordSink for DriveRecordFiles<W> {
         RecordFiles::header(self)
     }
 
-    fn row(&mut self, i: usize, flow: PowerFlow, row: &DriveRow, outside: &[usize]) -> std::io::Result<()> {
-        self.write(&[DriveRecord { i, flow, row, outside }])
+    fn row(&mut self, record: DriveRecord<'_>, cells: Vec<Cell>) -> std::io::Result<()> {
+        let block = std::slice::from_ref(&record);
+        self.write_made(&record, cells, block)
     }
 }

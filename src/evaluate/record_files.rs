@@ -135,25 +135,37 @@ impl<W: Write + Send, T: RecordTable> RecordFiles<W, T> {
 
     /// Writes `rows` (consecutive, in order) into every file.
     pub(crate) fn write(&mut self, rows: &[T::Row<'_>]) -> std::io::Result<()> {
-        if let Some(Parquet::Waiting(_)) = &self.parquet {
-            let Some(Parquet::Waiting(w)) = self.parquet.take() else { unreachable!("just matched") };
-            let columns = self.table.parquet_columns(rows);
-            self.parquet = Some(Parquet::Writing(Box::new(ParquetRecords::with_columns(w, columns)?)));
-        }
         for row in rows {
             let cells = self.table.cells(row);
-            if let Some(c) = &mut self.csv {
-                c.write_all(csv_line(&cells).as_bytes())?;
-            }
-            if let Some(j) = &mut self.jsonl {
-                self.line.clear();
-                self.table.jsonl_line(row, &cells, &mut self.line);
-                j.write_all(&self.line)?;
-            }
-            if let Some(Parquet::Writing(p)) = &mut self.parquet {
-                let cells = self.table.parquet_cells(row, cells, p.columns());
-                p.write_cells([cells])?;
-            }
+            self.write_made(row, cells, rows)?;
+        }
+        Ok(())
+    }
+
+    /// Writes one row whose cells are made (`cells`: the table's cells of `row`), the Parquet
+    /// file started by the block of rows it is the first of (`block`).
+    pub(crate) fn write_made(
+        &mut self,
+        row: &T::Row<'_>,
+        cells: Vec<Cell>,
+        block: &[T::Row<'_>],
+    ) -> std::io::Result<()> {
+        if let Some(Parquet::Waiting(_)) = &self.parquet {
+            let Some(Parquet::Waiting(w)) = self.parquet.take() else { unreachable!("just matched") };
+            let columns = self.table.parquet_columns(block);
+            self.parquet = Some(Parquet::Writing(Box::new(ParquetRecords::with_columns(w, columns)?)));
+        }
+        if let Some(c) = &mut self.csv {
+            c.write_all(csv_line(&cells).as_bytes())?;
+        }
+        if let Some(j) = &mut self.jsonl {
+            self.line.clear();
+            self.table.jsonl_line(row, &cells, &mut self.line);
+            j.write_all(&self.line)?;
+        }
+        if let Some(Parquet::Writing(p)) = &mut self.parquet {
+            let cells = self.table.parquet_cells(row, cells, p.columns());
+            p.write_cells([cells])?;
         }
         Ok(())
     }

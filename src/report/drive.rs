@@ -106,6 +106,12 @@ pub struct DriveReport {
     pub unsettled_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_unsettled: Option<String>,
+    /// Values of the record files that are not finite numbers, and the first: its row in words
+    /// and its column.
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
+    pub non_finite_values: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_non_finite: Option<(String, String)>,
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
     /// The unit the scene wrote its speeds in, which report.md shows every speed in (report.json
@@ -187,6 +193,11 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         outside_rows: eval.tally.outside_rows,
         unsettled_rows: eval.tally.unsettled_rows,
         first_unsettled: eval.tally.first_unsettled.map(|i| row_words(scene, drive, &laws, i)),
+        non_finite_values: eval.tally.non_finite,
+        first_non_finite: eval.tally.first_non_finite.map(|(i, k)| {
+            let column = crate::evaluate::drive_records::columns(drive).swap_remove(k).0;
+            (row_words(scene, drive, &laws, i), column)
+        }),
         torque_at: layout.operating.torque_at,
         speed_at: layout.operating.speed_at,
         speed_unit: unit_written(&scene.operating.pinion_speed, map.map(|m| &m.1), DisplayUnit::rpm),
@@ -271,6 +282,15 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         report.first_unsettled.as_ref(),
     );
     report.findings.extend(unsettled);
+    if let Some((row, column)) = &report.first_non_finite {
+        report.findings.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} values in the record files are not finite numbers (empty cells in drive_records.csv, null in drive_records.jsonl); the first at {row}, column {column}",
+                report.non_finite_values
+            ),
+        });
+    }
     for path in super::non_finite::non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }

@@ -186,3 +186,38 @@ fn undercut_findings(drive: &SceneDrive) -> Vec<Finding> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    /// Values of the record files that are not finite numbers reach the report as a warning
+    /// naming the first row in words and its column (the tally's count from the shards, as a merge
+    /// folds it).
+    #[test]
+    fn non_finite_record_values_are_a_finding() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/ev_two_stage_reducer.gear");
+        let scene = crate::check("ev.gear", &std::fs::read_to_string(path).unwrap()).unwrap();
+        let drive = scene.drive.as_ref().unwrap();
+        let tally = crate::evaluate::drive::DriveTally {
+            rows: 12,
+            non_finite: 3,
+            first_non_finite: Some((4, 6)),
+            ..Default::default()
+        };
+        let eval = crate::evaluate::drive::evaluate_drive_merged(&scene, drive, tally);
+        let report = super::super::drive::build_drive_report(&scene, drive, &eval);
+        let (row, column) = report.first_non_finite.clone().unwrap();
+        assert_eq!(column, "input_torque_N_m");
+        // Row 5 of torque-major rows (three torques at two speeds, one law, one formulation).
+        assert!(row.starts_with("T_out = 1000 N·m, n_out = 500 rpm"), "{row}");
+        let finding = report.findings.iter().find(|f| f.message.contains("not finite numbers")).unwrap();
+        assert!(finding.message.starts_with("3 values in the record files"), "{}", finding.message);
+        assert!(finding.message.contains(&format!("the first at {row}, column input_torque_N_m")));
+        // None without them: the report and its JSON as before.
+        let clean = super::super::drive::build_drive_report(
+            &scene,
+            drive,
+            &crate::evaluate::drive::evaluate_drive_merged(&scene, drive, Default::default()),
+        );
+        assert!(clean.first_non_finite.is_none() && !clean.findings.iter().any(|f| f.message.contains("not finite")));
+    }
+}
