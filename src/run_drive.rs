@@ -115,7 +115,8 @@ impl SceneRun for DriveRun {
         let tally =
             evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
         records.finish().map_err(&io)?;
-        Ok((files, shard::Manifest::of_drive(source_name, source, shard, scene.operating.count(), tally)))
+        let points = (scene.operating.count(), shard.range(scene.operating.count()));
+        Ok((files, shard::Manifest::new((source_name, source), shard, points, &tally)))
     }
 
     /// drive_records.csv concatenated in shard order (a single run's, byte for byte), the
@@ -132,7 +133,7 @@ impl SceneRun for DriveRun {
         let mut files = set
             .concatenate::<drive_records::DriveRecords>(folder, progress)
             .map_err(RunError::io("the record files"))?;
-        let tally = set.drive_tally.unwrap_or_default();
+        let tally = set.tally().map_err(RunError::Shards)?;
         let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
         let (report, rendered) = reported(scene, drive, &eval)?;
         files.extend(write_all(folder, &rendered.files, progress)?);

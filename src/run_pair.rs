@@ -139,7 +139,8 @@ impl SceneRun for PairRun {
     ) -> Result<(Vec<String>, Manifest), RunError> {
         let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
         let (streamed, files) = stream_into(scene, &plan, (folder, ""), formats, progress)?;
-        Ok((files, Manifest::new(source_name, source, shard, &plan, streamed.tally)))
+        let points = (plan.count(), plan.range.clone());
+        Ok((files, Manifest::new((source_name, source), shard, points, &streamed.tally)))
     }
 
     fn merge_into(
@@ -158,7 +159,8 @@ impl SceneRun for PairRun {
                     .map_err(RunError::io("the record files"))?,
             );
         }
-        let (report, rendered) = finish(scene, &plan, &set.tally, &Default::default(), progress)?;
+        let tally: Tally = set.tally().map_err(RunError::Shards)?;
+        let (report, rendered) = finish(scene, &plan, &tally, &Default::default(), progress)?;
         for (file, content) in &rendered.files {
             folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
             files.push(file.clone());

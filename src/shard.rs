@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::evaluate::record_files::{RecordFiles, RecordFormats, RecordTable};
 use crate::evaluate::records::ExtraColumns;
-use crate::evaluate::{Plan, Shard, Tally};
+use crate::evaluate::{Shard, Tally};
 use crate::folder::ReportFolder;
 use crate::progress::Progress;
 use crate::run_error::{Failure, FailureKind};
@@ -47,10 +47,9 @@ pub(crate) struct Manifest {
     /// Operating points of the whole sweep, and this shard's [from, to).
     pub operating_points: usize,
     pub range: (usize, usize),
-    pub tally: Tally,
-    /// A drive's shard: the tally of its rows (then `tally` is empty).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub drive_tally: Option<crate::evaluate::drive::DriveTally>,
+    /// The tally of the shard's points, as its kind of scene keeps it ([`ShardTally`]: a pair's
+    /// `Tally`, a drive's `DriveTally`).
+    pub tally: serde_json::Value,
     /// The CRC-32 of the scene's text and of each record file the shard wrote
     /// ([`crate::shard_digest`]), checked by `merge`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -59,32 +58,33 @@ pub(crate) struct Manifest {
     pub digests: BTreeMap<String, String>,
 }
 
+/// What a kind of scene tallies over a shard's points, written in its manifest and folded at the
+/// merge in shard order into exactly a single run's tally.
+pub(crate) trait ShardTally: Serialize + serde::de::DeserializeOwned + Default {
+    /// Folds the tally of the points that follow (the next shard's).
+    fn absorb(&mut self, next: Self);
+}
+
+impl ShardTally for Tally {
+    fn absorb(&mut self, next: Tally) {
+        Tally::absorb(self, next);
+    }
+}
+
+impl ShardTally for crate::evaluate::drive::DriveTally {
+    fn absorb(&mut self, next: Self) {
+        crate::evaluate::drive::DriveTally::absorb(self, next);
+    }
+}
+
 impl Manifest {
-    pub(crate) fn new(source_name: &str, source: &str, shard: Shard, plan: &Plan, tally: Tally) -> Manifest {
-        let range = (plan.range.start, plan.range.end);
-        Manifest { tally, ..Manifest::new_with(source_name, source, shard, plan.count(), range) }
-    }
-
-    /// The manifest of a drive's shard over `points` of its `operating_points`.
-    pub(crate) fn of_drive(
-        source_name: &str,
-        source: &str,
+    /// The manifest of `shard` of a sweep of `operating_points`, its points `range`, with their
+    /// `tally` (the digests of its record files added by [`Manifest::with_digests`]).
+    pub(crate) fn new(
+        (source_name, source): (&str, &str),
         shard: Shard,
-        operating_points: usize,
-        tally: crate::evaluate::drive::DriveTally,
-    ) -> Manifest {
-        let points = shard.range(operating_points);
-        let common = Manifest::new_with(source_name, source, shard, operating_points, (points.start, points.end));
-        Manifest { drive_tally: Some(tally), ..common }
-    }
-
-    /// The manifest's common fields, with empty tallies.
-    fn new_with(
-        source_name: &str,
-        source: &str,
-        shard: Shard,
-        operating_points: usize,
-        range: (usize, usize),
+        (operating_points, range): (usize, std::ops::Range<usize>),
+        tally: &impl ShardTally,
     ) -> Manifest {
         Manifest {
             format: FORMAT.into(),
@@ -93,9 +93,8 @@ impl Manifest {
             source: source.into(),
             shard,
             operating_points,
-            range,
-            tally: Tally::default(),
-            drive_tally: None,
+            range: (range.start, range.end),
+            tally: serde_json::to_value(tally).expect("a tally serialises"),
             source_digest: Some(crate::shard_digest::of_text(source.as_bytes())),
             digests: BTreeMap::new(),
         }
@@ -120,9 +119,8 @@ pub(crate) struct ShardSet {
     pub source_name: String,
     pub source: String,
     pub folders: Vec<PathBuf>,
-    pub tally: Tally,
-    /// A drive's shards: their tallies folded in shard order.
-    pub drive_tally: Option<crate::evaluate::drive::DriveTally>,
+    /// Each shard's tally as its manifest holds it, in shard order ([`ShardSet::tally`] folds them).
+    tallies: Vec<serde_json::Value>,
 }
 
 impl ShardSet {
@@ -197,20 +195,25 @@ impl ShardSet {
                 got.hint(format!("run `gearloss run --shard {}` and give its folder too", missing[0]))
             });
         }
-        let mut tally = Tally::default();
-        let mut drive_tally: Option<crate::evaluate::drive::DriveTally> = None;
-        let mut dirs = Vec::new();
-        for (dir, m) in manifests {
-            tally.absorb(m.tally);
-            if let Some(t) = m.drive_tally {
-                match &mut drive_tally {
-                    Some(d) => d.absorb(t),
-                    None => drive_tally = Some(t),
-                }
-            }
-            dirs.push(dir);
+        let (folders, tallies) = manifests.into_iter().map(|(dir, m)| (dir, m.tally)).unzip();
+        Ok(ShardSet { source_name, source, folders, tallies })
+    }
+
+    /// The shards' tallies folded in shard order: exactly a single run's. A tally that is not the
+    /// scene's kind's (a manifest edited by hand) is refused, its shard named.
+    pub(crate) fn tally<T: ShardTally>(&self) -> Result<T, Failure> {
+        let mut tally = T::default();
+        for (dir, value) in self.folders.iter().zip(&self.tallies) {
+            let next = T::deserialize(value).map_err(|e| {
+                Failure::new(
+                    FailureKind::NotAShard,
+                    format!("{}: the tally is not one this scene's run writes: {e}", dir.join(MANIFEST).display()),
+                )
+                .hint("run that shard again (`gearloss run --shard K/N`) and merge its new folder")
+            })?;
+            tally.absorb(next);
         }
-        Ok(ShardSet { source_name, source, folders: dirs, tally, drive_tally })
+        Ok(tally)
     }
 
     /// Writes the merged record files of a kind of record `T` into `folder` (those of

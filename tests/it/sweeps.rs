@@ -140,8 +140,18 @@ fn merge_refuses_shards_that_do_not_hold_what_they_wrote() {
     let mixed = vec![cut(1, "csv"), cut(2, "parquet"), cut(3, "csv")];
     let (_, err) = merge(&mixed);
     assert!(err.contains("shard-2-of-3 holds the record files") && err.contains("different `--records`"), "{err}");
-    // As they were written, they merge.
+    // A tally that is not the kind its scene's run writes (a drive's in a pair's shard).
     let good = vec![cut(1, "csv"), cut(2, "csv"), cut(3, "csv")];
+    let m = good[2].join("shard.json");
+    let kept = std::fs::read_to_string(&m).unwrap();
+    let mut manifest: serde_json::Value = serde_json::from_str(&kept).unwrap();
+    manifest["tally"] = serde_json::json!({ "rows": 4, "both_ends": 0, "outside_rows": 0 });
+    std::fs::write(&m, serde_json::to_string(&manifest).unwrap()).unwrap();
+    let (code, err) = merge(&good);
+    assert_eq!(code, Some(1));
+    assert!(err.contains("shard-3-of-3/shard.json: the tally is not one this scene's run writes"), "{err}");
+    std::fs::write(&m, kept).unwrap();
+    // As they were written, they merge.
     let o = gearloss().arg("merge").args(&good).arg("--out").arg(out.join("merged")).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     std::fs::remove_dir_all(&out).unwrap();
