@@ -22,10 +22,12 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: U
     let layout = &drive.layout;
     let mut out = Vec::new();
     if drive.one_pair {
+        // A pair on a drive cycle runs so; any scene of one pair lowers so for the one pipeline.
+        let vehicle = if drive.cycle.is_some() { " with a vehicle" } else { "" };
         out.push(Finding {
             severity: Severity::Note,
             message: format!(
-                "the scene is one pair with a vehicle: it runs as the one-stage drive it is, stage `{}` from shaft `{}` (the pinion's, the input: `pinion_torque` is the torque at the pinion gear, the input's that plus its shaft's losses, and `pinion_speed` the input's) to shaft `{}` (the wheel's, the output); a bearing's `at` is from the mesh mid-plane, and bearings written without `at` each carry an equal share of the gear force (README, \"One pair over a drive cycle\")",
+                "the scene is one pair{vehicle}: it runs as the one-stage drive it is, stage `{}` from shaft `{}` (the pinion's, the input: `pinion_torque` is the torque at the pinion gear, the input's that plus its shaft's losses, and `pinion_speed` the input's) to shaft `{}` (the wheel's, the output); a bearing's `at` is from the mesh mid-plane, and bearings written without `at` each carry an equal share of the gear force (README, \"One pair over a drive cycle\")",
                 crate::scene::pair_stage::STAGE,
                 layout.shafts[layout.input].name,
                 layout.shafts[layout.output].name
@@ -219,5 +221,20 @@ mod tests {
             &crate::evaluate::drive::evaluate_drive_merged(&scene, drive, Default::default()),
         );
         assert!(clean.first_non_finite.is_none() && !clean.findings.iter().any(|f| f.message.contains("not finite")));
+    }
+
+    /// A scene of one pair lowered as its one-stage drive says so, with a vehicle only when it has one.
+    #[test]
+    fn a_pair_as_its_one_stage_drive_is_noted_as_it_is() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_c14_gearbox.gear");
+        let source = std::fs::read_to_string(path).unwrap();
+        let ast = crate::parse("fzg.gear", &source).unwrap();
+        let dir = std::path::Path::new(path).parent();
+        let scene = crate::scene::lower::lower_as_one_stage_drive(&ast, dir).unwrap();
+        let drive = scene.drive.as_ref().unwrap();
+        let eval = crate::evaluate::drive::evaluate_drive_merged(&scene, drive, Default::default());
+        let report = super::super::drive::build_drive_report(&scene, drive, &eval);
+        let note = report.findings.iter().find(|f| f.message.contains("one-stage drive it is")).unwrap();
+        assert!(note.message.starts_with("the scene is one pair: it runs as"), "{}", note.message);
     }
 }
