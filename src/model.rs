@@ -68,6 +68,10 @@ pub struct SceneDrive {
     pub cycle: Option<DriveCycleSpec>,
     /// The scene is one pair (a `gears` block) read as its one-stage drive (`scene/pair_stage.rs`).
     pub one_pair: bool,
+    /// `oil_temperature = equilibrium`: each row of the sweep is evaluated at its own balance θ*
+    /// (its records then hold θ* and the sump's status).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub oil_at_balance: bool,
 }
 
 /// A `vehicle` over a `drive_cycle` as the scene gives them.
@@ -104,6 +108,16 @@ impl Scene {
         scene.lubricant = scene.lubricant.take().map(|l| l.at_temperature(&theta));
         scene.operating.oil_temperature = Some(theta);
         scene
+    }
+
+    /// At `oil_temperature = equilibrium` (written at `span`): the scene with its oil at `kelvin`,
+    /// the balance of its first operating point, which its oil table states.
+    pub(crate) fn at_balance_of_point_1(&self, kelvin: f64, span: Span) -> Scene {
+        self.at_temperature(Given {
+            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(kelvin),
+            written: format!("{:.2} degC (equilibrium of point 1)", kelvin - 273.15),
+            span,
+        })
     }
 
     /// The oil temperatures the scene runs at, as written (`90 degC`): one per run.

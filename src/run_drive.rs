@@ -55,6 +55,7 @@ pub fn drive_report_files(
     scene: &Scene,
     drive: &crate::model::SceneDrive,
 ) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
+    let scene = &*evaluate::drive_thermal::at_first_balance(scene, drive);
     let io = RunError::io("records");
     let mut records =
         drive_records::drive_record_files(drive, RecordFormats::default(), |_| Ok(Vec::new())).map_err(&io)?;
@@ -129,6 +130,7 @@ impl SceneRun for DriveRun {
         progress: &dyn Progress,
     ) -> Result<(DriveReport, Vec<String>), RunError> {
         let drive = drive_of(scene);
+        let scene = &*evaluate::drive_thermal::at_first_balance(scene, drive);
         progress.stage("merge", set.folders.len() as u64);
         let mut files = set
             .concatenate::<drive_records::DriveRecords>(folder, progress)
@@ -172,6 +174,7 @@ fn run_one_into(
     progress: &dyn Progress,
 ) -> Result<(DriveReport, Vec<String>), RunError> {
     let io = RunError::io("the record files");
+    let scene = &*evaluate::drive_thermal::at_first_balance(scene, drive);
     let (mut records, mut files) = record_files((folder, dir), drive, formats)?;
     let eval = evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, progress).map_err(&io)?;
     records.finish().map_err(&io)?;

@@ -136,13 +136,26 @@ fn stream_rows(
     for start in range.clone().step_by(BLOCK) {
         use rayon::prelude::*;
         let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(range.end));
-        let checked: Vec<_> = block.par_iter().map(|r| setup.validity(r.law_index, &r.point)).collect();
+        // At `oil_temperature = equilibrium` each row at its own balance, its validity read there.
+        let (block, checked): (Vec<DriveRow>, Vec<_>) = match (scene.operating.equilibrium, &scene.housing) {
+            (Some(_), Some(housing)) => {
+                block.into_par_iter().map(|r| super::drive_thermal::row_at_balance(setup, scene, housing, r)).unzip()
+            }
+            _ => {
+                let checked = block.par_iter().map(|r| setup.validity(r.law_index, &r.point)).collect();
+                (block, checked)
+            }
+        };
         for (i, (row, valid)) in block.into_iter().zip(checked).enumerate() {
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
             let record = DriveRecord { i: start + i, flow: row.point.flow, row: &row, outside: &outside };
             let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside);
             tally.add(start + i, &row.point);
             tally.add_cells(start + i, &cells);
+            if row.balance.is_some_and(|b| b.status != crate::thermal::BalanceStatus::Ok) {
+                tally.off_balance_rows += 1;
+                tally.first_off_balance.get_or_insert(start + i);
+            }
             records.row(record, cells)?;
             if !row.point.settled() {
                 tally.unsettled_rows += 1;
@@ -222,6 +235,12 @@ pub struct DriveTally {
     pub non_finite: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_non_finite: Option<(usize, usize)>,
+    /// At `oil_temperature = equilibrium`: rows whose sump settles above the oil's limit or finds no
+    /// balance, and the first of them.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub off_balance_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_off_balance: Option<usize>,
 }
 
 /// For serde: a count left out when it is zero.
@@ -240,6 +259,8 @@ impl DriveTally {
         self.first_unsettled = self.first_unsettled.or(next.first_unsettled);
         self.non_finite += next.non_finite;
         self.first_non_finite = self.first_non_finite.or(next.first_non_finite);
+        self.off_balance_rows += next.off_balance_rows;
+        self.first_off_balance = self.first_off_balance.or(next.first_off_balance);
         if let Some((e, i)) = next.least {
             if self.least.is_none_or(|(l, _)| e < l) {
                 self.least = Some((e, i));

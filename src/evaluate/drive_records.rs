@@ -55,6 +55,9 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
     .iter()
     .map(|c| c.to_string())
     .collect();
+    if drive.oil_at_balance {
+        cols.extend(BALANCE_COLUMNS.iter().map(|c| c.to_string()));
+    }
     for s in &drive.layout.stages {
         for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W", "validity_outside"] {
             cols.push(format!("stage_{}_{c}", s.name));
@@ -87,7 +90,11 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
 
 /// The whole-number and the text columns; every other column is a number.
 const INTS: &[&str] = &["row", "torque_index", "speed_index", "law_index", "passes"];
-const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver"];
+const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver", "thermal_status"];
+
+/// At `oil_temperature = equilibrium`: the row's balance θ* (K, as a pair's records.csv; empty
+/// without one) and the sump's status (`ok`, `above_limit`, `no_equilibrium`), after `passes`.
+const BALANCE_COLUMNS: [&str; 2] = ["oil_temperature_K", "thermal_status"];
 
 /// One row's JSON Lines line into `out`: an object keyed by `keys` (the columns' names as JSON
 /// strings, each with its colon), in their order; an empty cell and a value that is not a finite
@@ -141,6 +148,10 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
     ]));
     cells.push(Cell::Text(d.both_ends_deliver.to_string()));
     cells.push(int(d.iterations));
+    if let Some(b) = &r.balance {
+        cells.push(b.temperature.map_or(Cell::Empty, Cell::Real));
+        cells.push(Cell::Text(b.status.name().to_string()));
+    }
     for (k, s) in d.stages.iter().enumerate() {
         cells.push(Cell::Text(s.member_name(s.driving).to_string()));
         cells.extend(reals(&[s.driving_torque, s.mesh_efficiency, s.mesh_loss, s.no_load]));

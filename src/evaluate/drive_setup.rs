@@ -25,6 +25,9 @@ pub struct DriveRow {
     pub law_index: usize,
     pub formulation: Formulation,
     pub point: DrivePoint,
+    /// At `oil_temperature = equilibrium`: the row's own balance θ*, where it was evaluated (at
+    /// ambient when it has none); None at a given oil temperature.
+    pub balance: Option<crate::thermal::Balance>,
 }
 
 /// What every point of a drive reads.
@@ -239,6 +242,7 @@ impl<'a> DriveSetup<'a> {
                     law_index: c.law_index,
                     formulation: c.formulation,
                     point: self.point(c.law_index, c.formulation, c.torque, c.speed),
+                    balance: None,
                 }
             })
             .collect()

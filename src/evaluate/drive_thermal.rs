@@ -56,6 +56,50 @@ fn loss_at_point(
     setup.point(law, formulation, torque, speed).power_lost()
 }
 
+/// At `oil_temperature = equilibrium`: `row` (evaluated by `base`, at ambient) found again at its
+/// own balance θ* (the drive's whole loss at θ* equals what the housing gives off there), with the
+/// law's validity read at θ*; a row without a balance stays at ambient, its status saying so.
+pub(crate) fn row_at_balance(
+    base: &DriveSetup,
+    scene: &Scene,
+    housing: &Housing,
+    row: DriveRow,
+) -> (DriveRow, Vec<super::laws::ValiditySummary>) {
+    let balance = crate::thermal::balance(|theta| loss_at(base, scene, &row, theta), housing);
+    let Some(theta) = balance.temperature else {
+        let validity = base.validity(row.law_index, &row.point);
+        return (DriveRow { balance: Some(balance), ..row }, validity);
+    };
+    let setup = base.at_oil_temperature(theta);
+    let ends = base.operating_ends();
+    let torque = EndValue { at: ends.torque_at, value: scene.operating.pinion_torque.values[row.torque_index].value };
+    let speed = EndValue { at: ends.speed_at, value: scene.operating.pinion_speed.values[row.speed_index].value };
+    let point = setup.point(row.law_index, row.formulation, torque, speed);
+    let validity = setup.validity(row.law_index, &point);
+    (DriveRow { point, balance: Some(balance), ..row }, validity)
+}
+
+/// At `oil_temperature = equilibrium`: the scene with its oil at the balance of its first row (first
+/// operating point, law and formulation), where the map, the duty cycle, the thermal balance's rows
+/// and the stages' analyses of one pair are read (each row of the sweep at its own); the scene
+/// itself otherwise, or when that row finds no balance.
+pub(crate) fn at_first_balance<'s>(scene: &'s Scene, drive: &SceneDrive) -> std::borrow::Cow<'s, Scene> {
+    use std::borrow::Cow;
+    let (Some(span), Some(housing)) = (scene.operating.equilibrium, scene.housing.as_ref()) else {
+        return Cow::Borrowed(scene);
+    };
+    let setup = DriveSetup::new(scene, drive);
+    let torques: Vec<f64> = scene.operating.pinion_torque.values.iter().map(|t| t.value).collect();
+    let speeds: Vec<f64> = scene.operating.pinion_speed.values.iter().map(|w| w.value).collect();
+    let Some(first) = setup.grid_rows(&torques, &speeds, drive.layout.operating, 0..1).pop() else {
+        return Cow::Borrowed(scene);
+    };
+    let Some(t) = crate::thermal::balance(|theta| loss_at(&setup, scene, &first, theta), housing).temperature else {
+        return Cow::Borrowed(scene);
+    };
+    Cow::Owned(scene.at_balance_of_point_1(t, span))
+}
+
 /// A drive's duty cycle under its first law and formulation: each step's P_V at the scene's oil
 /// temperature and, with a heat capacity, the sump's transient from ambient
 /// ([`crate::thermal::transient`], C dθ/dt = P_V(θ) − P_Q(θ), standing steps without losses).

@@ -22,10 +22,5 @@ pub(crate) fn at_first_balance(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
     let Some(t) = crate::thermal::balance(|t| losses.at(spec, f, state, t).total(), housing).temperature else {
         return Cow::Borrowed(scene);
     };
-    let theta = crate::model::Given {
-        value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(t),
-        written: format!("{:.2} degC (equilibrium of point 1)", t - 273.15),
-        span,
-    };
-    Cow::Owned(scene.at_temperature(theta))
+    Cow::Owned(scene.at_balance_of_point_1(t, span))
 }

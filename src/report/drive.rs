@@ -112,6 +112,12 @@ pub struct DriveReport {
     pub non_finite_values: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_non_finite: Option<(String, String)>,
+    /// At `oil_temperature = equilibrium`: rows whose sump settles above the limit or finds no
+    /// balance, and the first in words.
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
+    pub off_balance_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_off_balance: Option<String>,
     pub torque_at: ShaftEnd,
     pub speed_at: ShaftEnd,
     /// The unit the scene wrote its speeds in, which report.md shows every speed in (report.json
@@ -173,6 +179,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 .iter()
                 .map(|s| (s.outside, s.samples, s.intervals.first().map_or_else(String::new, |i| i.2.to_string())))
                 .collect(),
+            balance: r.balance.map(|b| (b.temperature, b.status.words().to_string())),
         })
         .collect();
     let map = scene.analyses.efficiency_map.as_ref();
@@ -194,6 +201,8 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         unsettled_rows: eval.tally.unsettled_rows,
         first_unsettled: eval.tally.first_unsettled.map(|i| row_words(scene, drive, &laws, i)),
         non_finite_values: eval.tally.non_finite,
+        off_balance_rows: eval.tally.off_balance_rows,
+        first_off_balance: eval.tally.first_off_balance.map(|i| row_words(scene, drive, &laws, i)),
         first_non_finite: eval.tally.first_non_finite.map(|(i, k)| {
             let column = crate::evaluate::drive_records::columns(drive).swap_remove(k).0;
             (row_words(scene, drive, &laws, i), column)
@@ -282,6 +291,15 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         report.first_unsettled.as_ref(),
     );
     report.findings.extend(unsettled);
+    if let Some(first) = &report.first_off_balance {
+        report.findings.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "at `oil_temperature = equilibrium` {} of {} rows settle above the oil's limit or find no balance (drive_records.csv's `thermal_status`); the first: {first}",
+                report.off_balance_rows, report.rows
+            ),
+        });
+    }
     if let Some((row, column)) = &report.first_non_finite {
         report.findings.push(Finding {
             severity: Severity::Warning,

@@ -224,8 +224,22 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
 /// (what, value, unit) of the oil as the losses read it.
 pub(super) fn oil_rows(scene: &Scene) -> Vec<(String, f64, String)> {
     let mut out = Vec::new();
-    if let Some(t) = &scene.operating.oil_temperature {
-        out.push(("oil temperature".into(), t.value.value - 273.15, "degC".into()));
+    // At `oil_temperature = equilibrium` the oil is read at the first row's balance (at ambient when
+    // it has none); each row of the sweep at its own.
+    let ambient = scene.housing.as_ref().map(|h| h.ambient);
+    match (&scene.operating.oil_temperature, scene.operating.equilibrium, ambient) {
+        (Some(t), Some(_), _) => out.push((
+            "oil temperature (the balance of point 1; each row at its own θ*)".into(),
+            t.value.value - 273.15,
+            "degC".into(),
+        )),
+        (None, Some(_), Some(a)) => out.push((
+            "oil temperature (ambient: point 1 finds no balance; each row at its own θ*)".into(),
+            a - 273.15,
+            "degC".into(),
+        )),
+        (Some(t), None, _) => out.push(("oil temperature".into(), t.value.value - 273.15, "degC".into())),
+        _ => {}
     }
     if let Some(l) = &scene.lubricant {
         out.push(("dynamic viscosity η".into(), l.dynamic_viscosity.value.value * 1e3, "mPa*s".into()));

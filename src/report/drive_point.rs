@@ -20,4 +20,8 @@ pub struct DrivePointReport {
     /// By stage: the law's contacts outside its validity range of those read along A–E, and the
     /// first reason met (empty when inside).
     pub validity: Vec<(usize, usize, String)>,
+    /// At `oil_temperature = equilibrium`: the point's own balance θ* (K), where it was evaluated
+    /// (None when it finds none: then at the scene's oil), and the sump's status in words.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub balance: Option<(Option<f64>, String)>,
 }

@@ -4,7 +4,7 @@
 //! operating {
 //!     output_torque = [-500, 150, 1000] N*m    # or input_torque; negative: the output drives (coast)
 //!     output_speed  = [500, 1000] rpm          # or input_speed
-//!     oil_temperature = 80 degC
+//!     oil_temperature = 80 degC              # or `equilibrium`: each row at its own balance
 //!     detail_points = [1, 4]                   # where the analyses of one pair run on the stages
 //! }
 //! ```
@@ -84,7 +84,13 @@ pub(super) fn lower_drive_operating(
         );
         return None;
     }
-    let (oil_temperature, oil_temperatures) = super::lower_operating::oil_temperatures(&f, errors);
+    // At `oil_temperature = equilibrium` every row is evaluated at its own balance (a drive cycle's
+    // sump is held at a given temperature or follows the cycle: refused there).
+    let equilibrium = if cycle { None } else { super::lower_operating::equilibrium_of(&f) };
+    let (oil_temperature, oil_temperatures) = match equilibrium {
+        Some(_) => (None, None),
+        None => super::lower_operating::oil_temperatures(&f, errors),
+    };
     let mut detail_points = super::lower_operating::detail_points(&f, count, errors)?;
     detail_points.sort_unstable();
     detail_points.dedup();
@@ -94,7 +100,7 @@ pub(super) fn lower_drive_operating(
         oil_temperature,
         oil_temperatures,
         detail_points,
-        equilibrium: None,
+        equilibrium,
     };
     Some((operating, DriveOperating { torque_at, speed_at }))
 }

@@ -98,7 +98,7 @@ pub(super) fn lower_drive_scene(
             housing: housing.as_ref(),
             housing_failed: gearbox_block.is_some_and(|g| g.items.iter().any(|i| i.head().text == "housing")),
             duty_block: singles.get("duty_cycle").map(|b| b.kind.span),
-            equilibrium: None,
+            equilibrium: operating.as_ref().and_then(|o| o.0.equilibrium),
             moves_with_temperature: lubricant.as_ref().is_none_or(|l| l.oil.is_some()),
             lubricant_failed,
         },
@@ -134,6 +134,7 @@ pub(super) fn lower_drive_scene(
     };
     check_oil_needs(&shafts, &stages, lubricant.as_ref(), lubricant_failed, gearbox.kind.span, errors);
     check_gear_faces(&stages, errors);
+    let equilibrium = operating.equilibrium.is_some();
     let layout = super::lower_drive::build_drive(
         &stages,
         stages.len() == stage_blocks.len(),
@@ -160,6 +161,7 @@ pub(super) fn lower_drive_scene(
                 pairs: stages.into_iter().map(|s| s.pair).collect(),
                 cycle,
                 one_pair,
+                oil_at_balance: equilibrium,
             }),
         }),
         _ => Err(std::mem::take(errors)),

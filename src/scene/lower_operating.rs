@@ -51,10 +51,7 @@ pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Op
         return None;
     }
     let detail_points = detail_points(&f, count as usize, errors)?;
-    let equilibrium = f.values.get("oil_temperature").and_then(|(_, v)| match &v.kind {
-        ValueKind::Call(c) if c.name.text == "equilibrium" && c.arguments.is_empty() => Some(v.span),
-        _ => None,
-    });
+    let equilibrium = equilibrium_of(&f);
     let (oil_temperature, oil_temperatures) =
         if equilibrium.is_some() { (None, None) } else { oil_temperatures(&f, errors) };
     Some(Operating {
@@ -121,6 +118,14 @@ pub(super) fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnosti
     }
 }
 
+/// `oil_temperature = equilibrium`: where it is written (a pair's and a drive's alike).
+pub(super) fn equilibrium_of(f: &Fields) -> Option<crate::diagnostics::Span> {
+    f.values.get("oil_temperature").and_then(|(_, v)| match &v.kind {
+        ValueKind::Call(c) if c.name.text == "equilibrium" && c.arguments.is_empty() => Some(v.span),
+        _ => None,
+    })
+}
+
 /// `oil_temperature = 90 degC`, or a list or range of temperatures the scene runs at one after the
 /// other: the first value (at which the scene lowers) and, for two values or more, the sweep.
 pub(super) fn oil_temperatures(
@@ -130,15 +135,15 @@ pub(super) fn oil_temperatures(
     let Some((_, value)) = f.values.get("oil_temperature") else {
         return (None, None);
     };
-    // (One pair's `equilibrium` is read before this; here it is a drive's, which has none.)
+    // (`equilibrium` is read before this where a scene may have it; here it is a drive cycle's.)
     if matches!(&value.kind, ValueKind::Call(c) if c.name.text == "equilibrium") {
         errors.push(
             Diagnostic::new(
                 DiagnosticKind::OutOfRange,
                 value.span,
-                "`oil_temperature = equilibrium` is one pair's alone: a drive (also one pair on a drive cycle) is evaluated at a given oil temperature",
+                "`oil_temperature = equilibrium` puts each operating point at its own balance; over a drive cycle the sump is held at a given temperature or follows the cycle",
             )
-            .hint("write `oil_temperature = 80 degC`, and add `thermal_balance` to `analyses` for each point's balance θ* (or give the housing a `heat_capacity`: the sump then follows the drive cycle)"),
+            .hint("write `oil_temperature = 80 degC` (held over the cycle), or give the housing a `heat_capacity`: the sump then follows the drive cycle"),
         );
         return (None, None);
     }

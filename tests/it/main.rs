@@ -4,6 +4,7 @@ mod catalogues;
 mod cli;
 mod drive;
 mod drive_cycle;
+mod drive_equilibrium;
 mod drive_inch;
 mod dynamics;
 mod dynamics_closed_forms;

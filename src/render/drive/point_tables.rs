@@ -15,6 +15,17 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
     let (f, w, len) = (u.units.force(), u.units.power(), u.units.length());
     let d = &p.point;
     md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
+    match &p.balance {
+        Some((Some(theta), status)) => md!(
+            out,
+            "At its own balance (`oil_temperature = equilibrium`): θ* = {} °C, the sump {status}; every number below is read there.\n",
+            fixed(theta - 273.15, 3)
+        ),
+        Some((None, status)) => {
+            md!(out, "At `oil_temperature = equilibrium` the sump {status}: the point is read at the scene's oil.\n")
+        }
+        None => {}
+    }
     md!(
         out,
         "{}: {} in at the input, {} out at the output, {} lost, η = {}; {}.\n",

@@ -1,0 +1,101 @@
+//! `oil_temperature = equilibrium` in a drive: every row of the sweep at its own balance θ*, as a
+//! scene of one pair reads its records.
+
+/// The EV reducer spec with its oil at each row's balance, and as written (80 °C, its
+/// `thermal_balance` analysis finding each row's θ*).
+fn ev_scenes() -> (String, String) {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    (text.replace("oil_temperature = 80 degC", "oil_temperature = equilibrium"), text)
+}
+
+/// The columns and rows of a CSV.
+fn table(csv: &str) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut lines = csv.lines();
+    let head = lines.next().unwrap().split(',').map(str::to_string).collect();
+    (head, lines.map(|l| l.split(',').map(str::to_string).collect()).collect())
+}
+
+/// Each row's whole loss (`total_W`, every mesh, gear, bearing and seal at θ*) equals what the
+/// housing gives off at its θ* (1e-6 relative: the balance is located to 1e-10 K), and θ* is the
+/// one the `thermal_balance` analysis finds for that row at a given oil temperature (1e-8 K); a row
+/// without a balance says so and has no θ*.
+#[test]
+fn every_drive_row_is_at_its_own_balance() {
+    let (at_balance, written) = ev_scenes();
+    let scene = gearloss::check("eq.gear", &at_balance).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let housing = scene.housing.clone().unwrap();
+    let files = gearloss::run_to_files("eq.gear", &at_balance).unwrap().files;
+    let file = |name: &str| files.iter().find(|(f, _)| f == name).unwrap().1.clone();
+    let (head, rows) = table(&file("drive_records.csv"));
+    let col = |name: &str| head.iter().position(|h| h == name).unwrap();
+    let fixed = gearloss::check("ev.gear", &written).unwrap();
+    let (fixed_report, _) = gearloss::run_drive::drive_report_files(&fixed, fixed.drive.as_ref().unwrap()).unwrap();
+    assert_eq!(rows.len(), fixed_report.thermal.len());
+    let (mut balanced, mut without) = (0, 0);
+    for (row, analysed) in rows.iter().zip(&fixed_report.thermal) {
+        let status = &row[col("thermal_status")];
+        match analysed.temperature_c {
+            Some(theta_c) => {
+                let theta: f64 = row[col("oil_temperature_K")].parse().unwrap();
+                assert!((theta - (theta_c + 273.15)).abs() < 1e-8, "{theta} K vs {theta_c} °C");
+                let total: f64 = row[col("total_W")].parse().unwrap();
+                let q = housing.dissipation(theta).total;
+                assert!((total - q).abs() <= 1e-6 * q, "{total} W lost vs {q} W given off at {theta} K");
+                assert!(status == "ok" || status == "above_limit", "{status}");
+                balanced += 1;
+            }
+            None => {
+                assert_eq!(row[col("oil_temperature_K")], "");
+                assert_eq!(status, "no_equilibrium");
+                without += 1;
+            }
+        }
+    }
+    assert!(balanced >= 4 && without >= 1, "{balanced} balanced, {without} without");
+    // The report says where each point was read, and the oil table where the scene's oil is.
+    let md = file("report.md");
+    assert!(md.contains("oil temperature (the balance of point 1; each row at its own θ*)"), "{md}");
+    assert_eq!(md.matches("At its own balance (`oil_temperature = equilibrium`): θ* = ").count(), balanced);
+    assert!(md.contains("At `oil_temperature = equilibrium` the sump finds no balance"));
+    let off = rows.iter().filter(|r| r[col("thermal_status")] != "ok").count();
+    assert!(off >= 1);
+    assert!(
+        md.contains(&format!("at `oil_temperature = equilibrium` {off} of {} rows settle above", rows.len())),
+        "{md}"
+    );
+}
+
+/// A scene of one pair at `oil_temperature = equilibrium` and its one-stage drive find the same θ*
+/// at every point, law and formulation (1e-8 K: the same losses to 1e-12, each balance to 1e-10 K).
+#[test]
+fn a_pair_at_equilibrium_is_its_one_stage_drive() {
+    let path = crate::root().join("specs/fzg_c14_thermal.gear");
+    let text =
+        std::fs::read_to_string(&path).unwrap().replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
+    let pair = gearloss::check("eq.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let report = gearloss::report_of(&pair);
+    let ast = gearloss::parse("eq.gear", &text).unwrap();
+    let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+    let mut csv = Vec::new();
+    gearloss::evaluate::evaluate_drive_into(&drive, drive.drive.as_ref().unwrap(), &mut csv).unwrap();
+    let (head, rows) = table(&String::from_utf8(csv).unwrap());
+    let col = |name: &str| head.iter().position(|h| h == name).unwrap();
+    let mut compared = 0;
+    for (e, t) in report.efficiency.iter().zip(&report.thermal) {
+        let Some(theta) = t.oil_temperature else { continue };
+        let formulation = format!("{:?}", e.formulation).to_lowercase();
+        let row = rows
+            .iter()
+            .find(|r| {
+                r[col("torque_index")] == e.torque_index.to_string()
+                    && r[col("speed_index")] == e.speed_index.to_string()
+                    && r[col("formulation")] == formulation
+                    && pair.friction[r[col("law_index")].parse::<usize>().unwrap()].label() == e.label
+            })
+            .unwrap();
+        let drive_theta: f64 = row[col("oil_temperature_K")].parse().unwrap();
+        assert!((drive_theta - theta.si()).abs() < 1e-8, "{drive_theta} K vs the pair's {} K", theta.si());
+        compared += 1;
+    }
+    assert!(compared >= 4, "{compared} balances compared");
+}
