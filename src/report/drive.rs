@@ -179,7 +179,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 .iter()
                 .map(|s| (s.outside, s.samples, s.intervals.first().map_or_else(String::new, |i| i.2.to_string())))
                 .collect(),
-            balance: r.balance.map(|b| (b.temperature, b.status.words().to_string())),
+            balance: r.balance.map(|b| super::drive_point::PointBalance::of(scene, b)),
         })
         .collect();
     let map = scene.analyses.efficiency_map.as_ref();

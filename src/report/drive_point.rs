@@ -20,8 +20,43 @@ pub struct DrivePointReport {
     /// By stage: the law's contacts outside its validity range of those read along A–E, and the
     /// first reason met (empty when inside).
     pub validity: Vec<(usize, usize, String)>,
-    /// At `oil_temperature = equilibrium`: the point's own balance θ* (K), where it was evaluated
-    /// (None when it finds none: then at the scene's oil), and the sump's status in words.
+    /// At `oil_temperature = equilibrium`: the point's own balance, where it was evaluated.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub balance: Option<(Option<f64>, String)>,
+    pub balance: Option<PointBalance>,
+}
+
+/// A point's own balance at `oil_temperature = equilibrium`: θ* and the oil read there, which every
+/// loss of the point rests on.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct PointBalance {
+    /// θ* (K); None when the point finds no balance (then read at the scene's oil).
+    pub temperature: Option<f64>,
+    /// The sump's status in words.
+    pub status: String,
+    /// The oil at θ*: dynamic viscosity η (Pa·s) and kinematic viscosity ν (m²/s, where the oil
+    /// has a density).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dynamic_viscosity: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kinematic_viscosity: Option<f64>,
+}
+
+impl PointBalance {
+    /// A point's balance with the oil read at its θ* (the lubricant moved there as the walk moved it).
+    pub(crate) fn of(scene: &crate::model::Scene, b: crate::thermal::Balance) -> PointBalance {
+        let oil = b.temperature.and_then(|t| {
+            let theta = crate::model::Given {
+                value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(t),
+                written: String::new(),
+                span: Default::default(),
+            };
+            scene.lubricant.clone().map(|l| l.at_temperature(&theta))
+        });
+        PointBalance {
+            temperature: b.temperature,
+            status: b.status.words().to_string(),
+            dynamic_viscosity: oil.as_ref().map(|l| l.dynamic_viscosity.value.value),
+            kinematic_viscosity: oil.as_ref().and_then(|l| l.kinematic_viscosity_si()),
+        }
+    }
 }

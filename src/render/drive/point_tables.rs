@@ -15,16 +15,29 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
     let (f, w, len) = (u.units.force(), u.units.power(), u.units.length());
     let d = &p.point;
     md!(out, "### {} — {} {}\n", p.label, p.law, p.formulation);
-    match &p.balance {
-        Some((Some(theta), status)) => md!(
-            out,
-            "At its own balance (`oil_temperature = equilibrium`): θ* = {} °C, the sump {status}; every number below is read there.\n",
-            fixed(theta - 273.15, 3)
-        ),
-        Some((None, status)) => {
-            md!(out, "At `oil_temperature = equilibrium` the sump {status}: the point is read at the scene's oil.\n")
+    if let Some(b) = &p.balance {
+        let status = &b.status;
+        match b.temperature {
+            Some(theta) => {
+                let mut oil = Vec::new();
+                if let Some(nu) = b.kinematic_viscosity {
+                    oil.push(format!("ν = {} mm²/s", fixed(nu * 1e6, 4)));
+                }
+                if let Some(eta) = b.dynamic_viscosity {
+                    oil.push(format!("η = {} mPa·s", fixed(eta * 1e3, 4)));
+                }
+                let oil = if oil.is_empty() { String::new() } else { format!(" ({})", oil.join(", ")) };
+                md!(
+                    out,
+                    "At its own balance (`oil_temperature = equilibrium`): θ* = {} °C{oil}, the sump {status}; every number below is read there.\n",
+                    fixed(theta - 273.15, 3)
+                )
+            }
+            None => md!(
+                out,
+                "At `oil_temperature = equilibrium` the sump {status}: the point is read at the scene's oil.\n"
+            ),
         }
-        None => {}
     }
     md!(
         out,
