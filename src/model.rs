@@ -238,6 +238,15 @@ impl Lubricant {
     /// The lubricant at oil temperature θ: an oil given by grade or by ν40, ν100 and ρ15 moved
     /// there ([`Lubricant::of_oil`]); one given by its viscosity as it is (α kept unless it came from
     /// the base oil).
+    /// The lubricant read at `kelvin` (a temperature the run found, not one the scene wrote).
+    pub(crate) fn at_kelvin(self, kelvin: f64) -> Lubricant {
+        self.at_temperature(&Given {
+            value: ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(kelvin),
+            written: String::new(),
+            span: Default::default(),
+        })
+    }
+
     pub fn at_temperature(self, theta: &Given<ThermodynamicTemperature>) -> Lubricant {
         let alpha = if self.alpha_from_oil { None } else { self.pressure_viscosity };
         let span = self.dynamic_viscosity.span;

@@ -60,12 +60,7 @@ impl<'a> DriveSetup<'a> {
     /// The same drive with its oil at `kelvin`: the lubricant moved there, each mesh's tribology
     /// and the losses' oil read again, the geometry shared.
     pub(crate) fn at_oil_temperature(&self, kelvin: f64) -> DriveSetup<'a> {
-        let theta = crate::model::Given {
-            value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(kelvin),
-            written: String::new(),
-            span: Default::default(),
-        };
-        let lubricant = self.scene.lubricant.clone().map(|l| l.at_temperature(&theta));
+        let lubricant = self.scene.lubricant.clone().map(|l| l.at_kelvin(kelvin));
         let stages: Vec<StageMesh> = self
             .stages
             .iter()

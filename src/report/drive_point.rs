@@ -44,14 +44,7 @@ pub struct PointBalance {
 impl PointBalance {
     /// A point's balance with the oil read at its θ* (the lubricant moved there as the walk moved it).
     pub(crate) fn of(scene: &crate::model::Scene, b: crate::thermal::Balance) -> PointBalance {
-        let oil = b.temperature.and_then(|t| {
-            let theta = crate::model::Given {
-                value: crate::model::ThermodynamicTemperature::new::<uom::si::thermodynamic_temperature::kelvin>(t),
-                written: String::new(),
-                span: Default::default(),
-            };
-            scene.lubricant.clone().map(|l| l.at_temperature(&theta))
-        });
+        let oil = b.temperature.and_then(|t| scene.lubricant.clone().map(|l| l.at_kelvin(t)));
         PointBalance {
             temperature: b.temperature,
             status: b.status.words().to_string(),
