@@ -179,11 +179,10 @@ fn undercut_findings(drive: &SceneDrive) -> Vec<Finding> {
     for (k, stage) in drive.layout.stages.iter().enumerate() {
         for (mesh, names) in stage.model().mesh_gears().iter().enumerate() {
             let Ok(g) = drive.mesh_pair(k, mesh).geometry() else { continue };
-            out.extend(
-                super::undercut_notes::undercut_notes(&g, *names)
-                    .into_iter()
-                    .map(|m| Finding { severity: Severity::Warning, message: format!("stage `{}`: {m}", stage.name) }),
-            );
+            out.extend(super::mesh_checks::undercut_warnings(&g, *names).into_iter().map(|mut f| {
+                f.message = format!("stage `{}`: {}", stage.name, f.message);
+                f
+            }));
         }
     }
     out
