@@ -261,10 +261,15 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             });
         }
     }
-    let unused = crate::scene::summary::unused_blocks(scene)
+    // What a scene's inputs are warned of, as a pair's report warns: blocks nothing reads, the
+    // oil (its service limit, an implied density no oil has) and the housing's inputs.
+    let mut inputs: Vec<Finding> = crate::scene::summary::unused_blocks(scene)
         .into_iter()
-        .map(|message| Finding { severity: Severity::Warning, message });
-    report.findings.splice(0..0, unused);
+        .map(|message| Finding { severity: Severity::Warning, message })
+        .collect();
+    inputs.extend(super::oil_checks::oil_warnings(scene, units));
+    inputs.extend(super::housing_checks::housing_findings(scene, units));
+    report.findings.splice(0..0, inputs);
     if let Some(c) = &report.cycle {
         report.findings.extend(c.findings.iter().cloned());
     }

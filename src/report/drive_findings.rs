@@ -34,7 +34,7 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: U
             ),
         });
     }
-    out.extend(undercut_findings(drive));
+    out.extend(mesh_findings(drive, units));
     // What a stage's kind notes of the shafts it sits on (a floating sun on one bearing place).
     let places = |j: usize| layout.shafts[j].bearings.len();
     for stage in &layout.stages {
@@ -173,14 +173,19 @@ pub(super) fn unsettled_rows(
     })
 }
 
-/// Each stage's undercut gears whose undercut stays below the path of contact.
-fn undercut_findings(drive: &SceneDrive) -> Vec<Finding> {
+/// Every warning on each stage's meshes' geometry, as a pair's report gives it of its own mesh
+/// ([`super::mesh_checks::mesh_warnings`]), each naming its stage.
+fn mesh_findings(drive: &SceneDrive, units: Units) -> Vec<Finding> {
     let mut out = Vec::new();
     for (k, stage) in drive.layout.stages.iter().enumerate() {
-        for (mesh, names) in stage.model().mesh_gears().iter().enumerate() {
+        let meshes = stage.model().mesh_gears();
+        for (mesh, names) in meshes.iter().enumerate() {
             let Ok(g) = drive.mesh_pair(k, mesh).geometry() else { continue };
-            out.extend(super::mesh_checks::undercut_warnings(&g, *names).into_iter().map(|mut f| {
-                f.message = format!("stage `{}`: {}", stage.name, f.message);
+            // A stage of several meshes names the mesh (`sun–planet`).
+            let mesh_words =
+                if meshes.len() > 1 { format!(", {}–{} mesh", names[0], names[1]) } else { String::new() };
+            out.extend(super::mesh_checks::mesh_warnings(&g, *names, units.length()).into_iter().map(|mut f| {
+                f.message = format!("stage `{}`{mesh_words}: {}", stage.name, f.message);
                 f
             }));
         }

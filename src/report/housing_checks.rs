@@ -4,7 +4,6 @@
 //! trusted there), each naming the input, its value and the bound.
 
 use super::finding::{Finding, Severity};
-use super::scene::units;
 use crate::model::{LubricantType, Scene};
 
 /// The largest air speed the forced-convection part h_f = 3.26 v^0.89 is read at (m/s). MoWiTT's
@@ -19,9 +18,9 @@ pub(crate) const MAX_AIR_SPEED: f64 = 10.0;
 pub(crate) const LIMIT_MARGIN: f64 = 30.0;
 
 /// The warnings about the housing's inputs.
-pub(super) fn housing_findings(scene: &Scene) -> Vec<Finding> {
+/// `u`: the units the report shows values in.
+pub(super) fn housing_findings(scene: &Scene, u: super::units::Units) -> Vec<Finding> {
     let Some(h) = scene.housing.as_ref() else { return Vec::new() };
-    let u = units(scene);
     let deg = u.temperature();
     let warn = |message: String| Finding { severity: Severity::Warning, message };
     let mut out = Vec::new();

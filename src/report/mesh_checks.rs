@@ -12,6 +12,19 @@ fn warn(message: String) -> Finding {
     Finding { severity: Severity::Warning, message }
 }
 
+/// Every warning on the mesh `g` whose gears the report calls `names`, in the order a pair's
+/// report lists them: each gear's tip (thickness, root interference), the undercut gears, an
+/// internal pair's tooth gap, a helical pair's overlap and helix angle.
+pub(super) fn mesh_warnings(g: &PairGeometry, names: [&str; 2], len: Shown) -> Vec<Finding> {
+    let mut out: Vec<Finding> = (0..2).flat_map(|i| tip_warnings(g, i, names[i], len)).collect();
+    out.extend(undercut_warnings(g, names));
+    out.extend(internal_warning(g));
+    if g.is_helical() {
+        out.extend(helical_warnings(g));
+    }
+    out
+}
+
 /// Gear `i`'s tip: a tip thickness s_a below 0.2 m (a brittle tip; the usual design limit for
 /// hardened gears), and contact that starts below the flank's
 /// generated involute (root interference with a rack-cut flank: the path of contact's end A or E

@@ -182,7 +182,7 @@ fn with_thermal(
         report.duty_cycle.as_ref(),
         t.duty_cycle.as_ref(),
     ));
-    report.findings.extend(housing_checks::housing_findings(scene));
+    report.findings.extend(housing_checks::housing_findings(scene, scene::units(scene)));
     if report.heat_balance.is_some() {
         report.plots.push(PlotRef::new(
             PlotKind::HeatBalance,

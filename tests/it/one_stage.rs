@@ -203,3 +203,57 @@ fn every_pair_lowers_as_its_one_stage_drive() {
     }
     assert!(lowered >= 30, "{lowered} pairs");
 }
+
+/// The warnings a scene of one pair gives of its mesh's geometry (a brittle tip, root
+/// interference, an undercut gear, a ring close in teeth to its pinion, a helical overlap below 1,
+/// a helix above 30°), of its oil (above its service limit, an implied density no oil has) and of
+/// its housing's inputs are its one-stage drive's too: findings exist once for every scene. Each
+/// mesh warning of the pair is the drive's, naming stage `pair`, and each of the drive's warnings
+/// on stage `pair`'s mesh is the pair's (a drive of several stages warns of every stage's meshes
+/// alike, tests/specs/ok/planetary_helical.gear's snapshot); the oil's and the housing's are word
+/// for word the same.
+#[test]
+fn every_pair_warns_as_its_one_stage_drive() {
+    const MESH: [&str; 8] = [
+        "pinion tip thickness",
+        "wheel tip thickness",
+        "contact at ",
+        "the pinion is undercut",
+        "the wheel is undercut",
+        "the ring has only",
+        "overlap ratio",
+        "helix angle",
+    ];
+    const SCENE: [&str; 4] = ["oil temperature", "the lubricant's dynamic", "the housing's", "the oil cooler"];
+    let (mut mesh, mut scene) = (0, 0);
+    for path in pair_scenes() {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        let pair = gearloss::check(&name, &source).unwrap();
+        let ast = gearloss::parse(&name, &source).unwrap();
+        let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+        let (pair, drive) = (pair.at_oil_temperature(0), drive.at_oil_temperature(0));
+        let warnings = |f: &[gearloss::report::Finding]| -> Vec<String> {
+            f.iter().filter(|f| f.severity == gearloss::report::Severity::Warning).map(|f| f.message.clone()).collect()
+        };
+        let of_pair = warnings(&gearloss::report_of(&pair).findings);
+        let eval = gearloss::evaluate::evaluate_drive(&drive, drive.drive.as_ref().unwrap());
+        let of_drive = warnings(
+            &gearloss::report::drive::build_drive_report(&drive, drive.drive.as_ref().unwrap(), &eval).findings,
+        );
+        let stage = "stage `pair`: ";
+        for w in of_pair.iter().filter(|w| MESH.iter().any(|m| w.starts_with(m))) {
+            assert!(of_drive.contains(&format!("{stage}{w}")), "{name}: the drive does not warn: {w}\n{of_drive:#?}");
+            mesh += 1;
+        }
+        for w in of_drive.iter().filter_map(|w| w.strip_prefix(stage)) {
+            assert!(of_pair.iter().any(|p| p == w), "{name}: the pair does not warn: {w}");
+        }
+        for w in of_pair.iter().filter(|w| SCENE.iter().any(|m| w.starts_with(m))) {
+            assert!(of_drive.contains(w), "{name}: the drive does not warn: {w}\n{of_drive:#?}");
+            scene += 1;
+        }
+    }
+    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing");
+    assert!(mesh >= 2 && scene >= 3, "{mesh} mesh warnings, {scene} of the oil and the housing");
+}
