@@ -33,7 +33,7 @@ pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
         }));
         out.extend(tip_warnings(g, i, name, len));
     }
-    out.extend(mesh_checks::undercut_warnings(g, ["pinion", "wheel"]));
+    out.extend(mesh_checks::undercut_warnings(g, ["pinion", "wheel"], len));
     if !crate::geometry::loss_factor::closed_form_holds(g) {
         let [e1, e2] = g.addendum_contact_ratio;
         out.push(note(format!(

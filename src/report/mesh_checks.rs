@@ -17,7 +17,7 @@ fn warn(message: String) -> Finding {
 /// internal pair's tooth gap, a helical pair's overlap and helix angle.
 pub(super) fn mesh_warnings(g: &PairGeometry, names: [&str; 2], len: Shown) -> Vec<Finding> {
     let mut out: Vec<Finding> = (0..2).flat_map(|i| tip_warnings(g, i, names[i], len)).collect();
-    out.extend(undercut_warnings(g, names));
+    out.extend(undercut_warnings(g, names, len));
     out.extend(internal_warning(g));
     if g.is_helical() {
         out.extend(helical_warnings(g));
@@ -51,10 +51,25 @@ pub(super) fn tip_warnings(g: &PairGeometry, i: usize, name: &str, len: Shown) -
     out
 }
 
-/// Each undercut gear whose undercut stays below the path of contact (one that reaches it is
-/// refused while the geometry is built).
-pub(super) fn undercut_warnings(g: &PairGeometry, names: [&str; 2]) -> Vec<Finding> {
-    super::undercut_notes::undercut_notes(g, names).into_iter().map(warn).collect()
+/// Each undercut gear whose undercut stays below the path of contact (`geometry::undercut_radius`;
+/// one that reaches it is refused while the geometry is built): the diameter the generating rack
+/// cuts to, the diameter where contact starts on the flank, and x_min (DIN 3960's harmless
+/// undercut), in the report's length unit.
+pub(super) fn undercut_warnings(g: &PairGeometry, names: [&str; 2], len: Shown) -> Vec<Finding> {
+    let start = [g.base_radius[0].hypot(g.points.a), g.base_radius[1].hypot(g.line_of_action_length - g.points.e)];
+    (0..2)
+        .filter_map(|i| {
+            let ru = g.undercut_radius[i]?;
+            Some(warn(format!(
+                "the {} is undercut (x = {} below x_min = {:.4}): the generating rack cuts its involute up to d = {}, below the d = {} where contact starts on its flank, so the path of contact meets the involute only (DIN 3960's harmless undercut); its root is weakened",
+                names[i],
+                crate::numerics::rounding::sig(g.profile_shift[i]),
+                g.undercut_limit[i],
+                len.with(2.0 * ru, 4),
+                len.with(2.0 * start[i], 4)
+            )))
+        })
+        .collect()
 }
 
 /// An internal pair whose ring has fewer than 10 teeth more than its pinion: standard 20° teeth

@@ -43,7 +43,6 @@ pub(crate) mod sweep;
 pub(crate) mod teeth;
 mod teeth_validity;
 pub(crate) mod thermal;
-mod undercut_notes;
 pub mod units;
 
 pub use finding::{Finding, Severity};
