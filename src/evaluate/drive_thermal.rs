@@ -162,7 +162,7 @@ pub(crate) fn drive_balances(
                     .then(|| {
                         let given = scene.operating.pinion_torque.values[row.torque_index].value;
                         let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
-                        crate::thermal::rating_torque(p_v, housing, housing.max_oil_temperature, given.max(1.0))
+                        crate::thermal::ratings(p_v, housing, given.max(1.0)).at_limit
                     })
                     .flatten(),
             }

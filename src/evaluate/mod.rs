@@ -51,6 +51,7 @@ pub use details::evaluate_details;
 pub use evaluation::{Evaluation, PointEvaluation};
 pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 
+pub use crate::thermal::Ratings;
 pub use drive::{evaluate_drive, evaluate_drive_into, DriveEvaluation, DriveTally};
 pub use plan::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
 pub use plan::{Plan, Shard};
@@ -65,7 +66,7 @@ pub use stage_pairs::{stage_pairs, StagePair};
 pub use stream::{evaluate_records, implausible_efficiency};
 pub use tally::Tally;
 pub use teeth::{teeth_details, TeethDetails};
-pub use thermal::{duty_cycle, ratings, DutyCycleResult, Losses, Ratings};
+pub use thermal::{duty_cycle, ratings, DutyCycleResult, Losses};
 
 /// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
 /// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).

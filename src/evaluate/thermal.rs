@@ -12,12 +12,9 @@ use crate::friction::catalog::FrictionLawSpec;
 use crate::geometry::OperatingState;
 use crate::losses::{loss_budget, LossBudget};
 use crate::model::Scene;
-use crate::thermal::{self, Balance, DutyCycle, Housing};
+use crate::thermal::{self, Balance, DutyCycle, Housing, Ratings};
 use crate::tribology::lubricant::OilData;
 use crate::tribology::Tribology;
-
-/// The ISO/TR 14179-1 rating temperature (K): 95 °C.
-pub(crate) const RATING_TEMPERATURE: f64 = 368.15;
 
 /// The scene's losses as a function of the oil temperature.
 pub struct Losses<'a> {
@@ -129,13 +126,6 @@ pub(crate) fn thermal_point(
     }
 }
 
-/// The pinion torques (N·m) at which θ* is the oil's limit and 95 °C, at one speed.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Ratings {
-    pub at_limit: Option<f64>,
-    pub at_95: Option<f64>,
-}
-
 /// The ratings of law `spec`, formulation `f` at pinion speed `speed` (rad/s): they depend on the
 /// speed alone, not on the operating point's torque. `guess` (N·m) starts the bracket; a sweep gives
 /// every point the same (its largest torque), so that a speed's ratings are one number whichever
@@ -151,13 +141,7 @@ pub fn ratings(
     let at_torque = |torque: f64, t: f64| {
         losses.at(spec, f, OperatingState { pinion_torque: torque, pinion_speed: speed }, t).total()
     };
-    let guess = guess.max(1.0);
-    Ratings {
-        at_limit: thermal::rating_torque(at_torque, housing, housing.max_oil_temperature, guess),
-        at_95: (RATING_TEMPERATURE > housing.ambient)
-            .then(|| thermal::rating_torque(at_torque, housing, RATING_TEMPERATURE, guess))
-            .flatten(),
-    }
+    thermal::ratings(at_torque, housing, guess.max(1.0))
 }
 
 /// Each speed's ratings of a sweep, computed by the first point that asks (a 200 × 200 sweep

@@ -176,6 +176,29 @@ pub fn rating_torque(p_v: impl Fn(f64, f64) -> f64, housing: &Housing, limit: f6
     None
 }
 
+/// The ISO/TR 14179-1 rating temperature (K): 95 °C.
+const RATING_TEMPERATURE: f64 = 368.15;
+
+/// The torques (N·m, at the end the losses are given against) at which θ* is the oil's limit and
+/// 95 °C, at one speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ratings {
+    pub at_limit: Option<f64>,
+    pub at_95: Option<f64>,
+}
+
+/// The two thermal ratings of a gearbox whose losses at one speed are `p_v(torque, θ)`: the torque
+/// that puts θ* on the housing's `max_oil_temperature`, and ISO/TR 14179-1's at 95 °C (None when
+/// the ambient is not below 95 °C). Each is [`rating_torque`] from the bracket's start `guess`.
+pub fn ratings(p_v: impl Fn(f64, f64) -> f64 + Copy, housing: &Housing, guess: f64) -> Ratings {
+    Ratings {
+        at_limit: rating_torque(p_v, housing, housing.max_oil_temperature, guess),
+        at_95: (RATING_TEMPERATURE > housing.ambient)
+            .then(|| rating_torque(p_v, housing, RATING_TEMPERATURE, guess))
+            .flatten(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

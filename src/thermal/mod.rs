@@ -11,7 +11,7 @@ pub(crate) mod duty_cycle;
 pub(crate) mod housing;
 pub(crate) mod transient;
 
-pub use balance::{balance, rating_torque, Balance, BalanceStatus};
+pub use balance::{balance, rating_torque, ratings, Balance, BalanceStatus, Ratings};
 pub use duty_cycle::{DutyCycle, DutyStep};
 pub use housing::{Cooler, Dissipation, Housing};
 pub use transient::{transient, StepEnd, Transient};
