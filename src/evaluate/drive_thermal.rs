@@ -25,6 +25,9 @@ pub struct DriveBalanceRow {
     /// the oil's limit ([`crate::thermal::rating_torque`] at this point's speed); None in coast, or
     /// when no torque reaches the limit.
     pub rating: Option<f64>,
+    /// The same with the sump at ISO/TR 14179-1's 95 °C ([`crate::thermal::ratings`]); None also
+    /// when the ambient is not below 95 °C.
+    pub rating_95: Option<f64>,
 }
 
 /// P_V(θ) of the drive at `row`'s point, law and formulation (W).
@@ -150,6 +153,11 @@ pub(crate) fn drive_balances(
         .map(|row| {
             let balance = crate::thermal::balance(|theta| loss_at(&base, scene, row, theta), housing);
             let loss = balance.temperature.map(|t| loss_at(&base, scene, row, t));
+            let ratings = (row.point.flow == crate::drive::PowerFlow::Drive).then(|| {
+                let given = scene.operating.pinion_torque.values[row.torque_index].value;
+                let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
+                crate::thermal::ratings(p_v, housing, given.max(1.0))
+            });
             DriveBalanceRow {
                 torque_index: row.torque_index,
                 speed_index: row.speed_index,
@@ -158,13 +166,8 @@ pub(crate) fn drive_balances(
                 balance,
                 loss,
                 dissipation: balance.temperature.map(|t| housing.dissipation(t).total),
-                rating: (row.point.flow == crate::drive::PowerFlow::Drive)
-                    .then(|| {
-                        let given = scene.operating.pinion_torque.values[row.torque_index].value;
-                        let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
-                        crate::thermal::ratings(p_v, housing, given.max(1.0)).at_limit
-                    })
-                    .flatten(),
+                rating: ratings.and_then(|r| r.at_limit),
+                rating_95: ratings.and_then(|r| r.at_95),
             }
         })
         .collect()

@@ -33,6 +33,9 @@ pub struct DriveBalanceReport {
     /// limit, at this point's speed.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<f64>,
+    /// The same with the sump at 95 °C (ISO/TR 14179-1's rating temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating_95: Option<f64>,
 }
 
 /// A step of the duty cycle.
@@ -235,6 +238,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 dissipation: b.dissipation,
                 status: b.balance.status.words().to_string(),
                 rating: b.rating,
+                rating_95: b.rating_95,
             })
             .collect(),
         duty: duty_report(scene, eval, &laws),

@@ -249,7 +249,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
     }
     let (w, temp) = (u.units.power(), u.units.temperature());
     md!(out, "## Thermal balance (one sump)\n");
-    md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed.\n");
+    md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n");
     header(out, &["housing", "", "unit"]);
     for (what, v, unit) in &r.housing {
         let (v, unit) = input_shown(*v, unit, u.units);
@@ -267,6 +267,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
             &w.titled("P_Q(θ*)"),
             "the sump",
             &format!("thermal rating ({})", u.torque.unit()),
+            &format!("rating at 95 °C ({})", u.torque.unit()),
         ],
     );
     let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
@@ -283,6 +284,7 @@ fn thermal(out: &mut String, r: &DriveReport) {
                 watts(b.dissipation),
                 b.status.clone(),
                 opt(b.rating.map(|t| u.torque.of_si(t)), 2),
+                opt(b.rating_95.map(|t| u.torque.of_si(t)), 2),
             ],
         );
     }
