@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use super::drive_inputs::{ShaftInputs, StageInputs};
 pub use super::drive_map::{DriveMapBestReport, DriveMapReport};
-use super::finding::{Finding, Severity};
+use super::finding::Finding;
 use super::number::DisplayUnit;
 use crate::drive::ShaftEnd;
 use crate::evaluate::drive::{DriveEvaluation, DriveRow};
@@ -249,78 +249,9 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         stage_pairs: Vec::new(),
         points,
     };
-    if let (Some(d), Some(h)) = (&report.duty, &scene.housing) {
-        if h.heat_capacity.is_none() {
-            report.findings.push(Finding {
-                severity: Severity::Warning,
-                message: format!(
-                    "duty cycle \"{}\": the housing gives no `heat_capacity`, so the sump's transient (θ and the energies along it) is not computed; {}",
-                    d.name,
-                    if d.steps.iter().any(|s| s.energy_at_oil_temperature.is_some()) {
-                        "each step's energy at the scene's oil temperature is given"
-                    } else {
-                        "give `oil_temperature` in `operating` for each step's energy at a fixed temperature, or the housing's `heat_capacity`"
-                    }
-                ),
-            });
-        }
-    }
-    // What a scene's inputs are warned of, as a pair's report warns: blocks nothing reads, the
-    // oil (its service limit, an implied density no oil has) and the housing's inputs.
-    let mut inputs: Vec<Finding> = crate::scene::summary::unused_blocks(scene)
-        .into_iter()
-        .map(|message| Finding { severity: Severity::Warning, message })
-        .collect();
-    inputs.extend(super::oil_checks::oil_warnings(scene, units));
-    inputs.extend(super::housing_checks::housing_findings(scene, units));
+    let (inputs, rest) = super::drive_findings::report_findings(scene, drive, eval, &report, units);
     report.findings.splice(0..0, inputs);
-    if let Some(c) = &report.cycle {
-        report.findings.extend(c.findings.iter().cloned());
-    }
-    for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
-        report.findings.push(Finding {
-            severity: Severity::Warning,
-            message: format!("{} ({}, {}): the sump {}", b.label, b.law, b.formulation, b.status),
-        });
-    }
-    report.findings.extend(super::drive_findings::stage_notes(drive, &eval.rows, &eval.validity, &report.points));
-    let shown = report.points.iter().filter(|p| p.validity.iter().any(|v| v.0 > 0)).count();
-    if report.outside_rows > shown {
-        report.findings.push(Finding {
-            severity: Severity::Warning,
-            message: format!(
-                "{} of {} rows have a stage whose law is outside its validity range (drive_records.csv: `stage_<name>_validity_outside`)",
-                report.outside_rows, report.rows
-            ),
-        });
-    }
-    let unsettled = super::drive_findings::unsettled_rows(
-        &report.points,
-        (report.unsettled_rows, report.rows),
-        report.first_unsettled.as_ref(),
-    );
-    report.findings.extend(unsettled);
-    if let Some(first) = &report.first_off_balance {
-        report.findings.push(Finding {
-            severity: Severity::Warning,
-            message: format!(
-                "at `oil_temperature = equilibrium` {} of {} rows settle above the oil's limit or find no balance (drive_records.csv's `thermal_status`); the first: {first}",
-                report.off_balance_rows, report.rows
-            ),
-        });
-    }
-    if let Some((row, column)) = &report.first_non_finite {
-        report.findings.push(Finding {
-            severity: Severity::Warning,
-            message: format!(
-                "{} values in the record files are not finite numbers (empty cells in drive_records.csv, null in drive_records.jsonl); the first at {row}, column {column}",
-                report.non_finite_values
-            ),
-        });
-    }
-    for path in super::non_finite::non_finite_paths(&report) {
-        report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
-    }
+    report.findings.extend(rest);
     report
 }
 

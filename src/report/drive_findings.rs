@@ -3,11 +3,13 @@
 //! bearing beyond its static rating, and the laws' notes on each stage (an input read at a bound of
 //! its range).
 
+use super::drive::DriveReport;
 use super::drive_point::DrivePointReport;
 use super::finding::{Finding, Severity};
 use super::units::Units;
 use crate::drive::PowerFlow;
-use crate::model::SceneDrive;
+use crate::evaluate::drive::DriveEvaluation;
+use crate::model::{Scene, SceneDrive};
 
 /// Where a bearing place is: `at 30.00 mm` (in the report's length unit), or `without \`at\`` (a
 /// place of a one-pair scene).
@@ -191,6 +193,90 @@ fn mesh_findings(drive: &SceneDrive, units: Units) -> Vec<Finding> {
         }
     }
     out
+}
+
+/// The findings of a drive's report beyond [`findings`]: those on the scene's inputs (blocks
+/// nothing reads, the oil, the housing), which the report lists first, and the rest after
+/// [`findings`]: a duty cycle without heat capacity, the drive cycle's, each sump off its balance,
+/// the laws' notes by stage, the rows outside a law's validity, unsettled or off balance beyond
+/// those shown, values that are not finite numbers.
+pub(super) fn report_findings(
+    scene: &Scene,
+    drive: &SceneDrive,
+    eval: &DriveEvaluation,
+    report: &DriveReport,
+    units: Units,
+) -> (Vec<Finding>, Vec<Finding>) {
+    let mut rest = Vec::new();
+    if let (Some(d), Some(h)) = (&report.duty, &scene.housing) {
+        if h.heat_capacity.is_none() {
+            rest.push(Finding {
+                severity: Severity::Warning,
+                message: format!(
+                    "duty cycle \"{}\": the housing gives no `heat_capacity`, so the sump's transient (θ and the energies along it) is not computed; {}",
+                    d.name,
+                    if d.steps.iter().any(|s| s.energy_at_oil_temperature.is_some()) {
+                        "each step's energy at the scene's oil temperature is given"
+                    } else {
+                        "give `oil_temperature` in `operating` for each step's energy at a fixed temperature, or the housing's `heat_capacity`"
+                    }
+                ),
+            });
+        }
+    }
+    // What a scene's inputs are warned of, as a pair's report warns: blocks nothing reads, the
+    // oil (its service limit, an implied density no oil has) and the housing's inputs.
+    let mut inputs: Vec<Finding> = crate::scene::summary::unused_blocks(scene)
+        .into_iter()
+        .map(|message| Finding { severity: Severity::Warning, message })
+        .collect();
+    inputs.extend(super::oil_checks::oil_warnings(scene, units));
+    inputs.extend(super::housing_checks::housing_findings(scene, units));
+    if let Some(c) = &report.cycle {
+        rest.extend(c.findings.iter().cloned());
+    }
+    for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
+        rest.push(Finding {
+            severity: Severity::Warning,
+            message: format!("{} ({}, {}): the sump {}", b.label, b.law, b.formulation, b.status),
+        });
+    }
+    rest.extend(stage_notes(drive, &eval.rows, &eval.validity, &report.points));
+    let shown = report.points.iter().filter(|p| p.validity.iter().any(|v| v.0 > 0)).count();
+    if report.outside_rows > shown {
+        rest.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} of {} rows have a stage whose law is outside its validity range (drive_records.csv: `stage_<name>_validity_outside`)",
+                report.outside_rows, report.rows
+            ),
+        });
+    }
+    let unsettled =
+        unsettled_rows(&report.points, (report.unsettled_rows, report.rows), report.first_unsettled.as_ref());
+    rest.extend(unsettled);
+    if let Some(first) = &report.first_off_balance {
+        rest.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "at `oil_temperature = equilibrium` {} of {} rows settle above the oil's limit or find no balance (drive_records.csv's `thermal_status`); the first: {first}",
+                report.off_balance_rows, report.rows
+            ),
+        });
+    }
+    if let Some((row, column)) = &report.first_non_finite {
+        rest.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} values in the record files are not finite numbers (empty cells in drive_records.csv, null in drive_records.jsonl); the first at {row}, column {column}",
+                report.non_finite_values
+            ),
+        });
+    }
+    for path in super::non_finite::non_finite_paths(report) {
+        rest.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
+    }
+    (inputs, rest)
 }
 
 #[cfg(test)]
