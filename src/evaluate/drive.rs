@@ -146,7 +146,12 @@ fn stream_rows(
                 (block, checked)
             }
         };
-        for (i, (row, valid)) in block.into_iter().zip(checked).enumerate() {
+        let odd: Vec<_> = block.par_iter().map(|r| setup.implausible(&r.point)).collect();
+        for (i, ((row, valid), odd)) in block.into_iter().zip(checked).zip(odd).enumerate() {
+            if let Some(what) = odd {
+                tally.implausible_rows += 1;
+                tally.first_implausible.get_or_insert((start + i, what));
+            }
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
             let record = DriveRecord { i: start + i, flow: row.point.flow, row: &row, outside: &outside };
             let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside);
@@ -214,7 +219,7 @@ fn finish(
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the
 /// least and greatest efficiency (of rows where one end delivers) with their row index.
-#[derive(Debug, Clone, Copy, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, Default, serde::Serialize, serde::Deserialize)]
 pub struct DriveTally {
     pub rows: usize,
     pub both_ends: usize,
@@ -241,6 +246,13 @@ pub struct DriveTally {
     pub off_balance_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_off_balance: Option<usize>,
+    /// Rows with a stage result no gear mesh can have or whose formulas no longer hold (a mesh
+    /// efficiency outside [0, 1], a contact with b_H > R/10: `evaluate/drive_plausibility.rs`), and
+    /// the first of them with what.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub implausible_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_implausible: Option<(usize, super::drive_plausibility::StageImplausible)>,
 }
 
 /// For serde: a count left out when it is zero.
@@ -261,6 +273,8 @@ impl DriveTally {
         self.first_non_finite = self.first_non_finite.or(next.first_non_finite);
         self.off_balance_rows += next.off_balance_rows;
         self.first_off_balance = self.first_off_balance.or(next.first_off_balance);
+        self.implausible_rows += next.implausible_rows;
+        self.first_implausible = self.first_implausible.take().or(next.first_implausible);
         if let Some((e, i)) = next.least {
             if self.least.is_none_or(|(l, _)| e < l) {
                 self.least = Some((e, i));

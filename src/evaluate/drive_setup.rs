@@ -70,6 +70,7 @@ impl<'a> DriveSetup<'a> {
                 StageMesh {
                     geometry: s.geometry.clone(),
                     positions: s.positions.clone(),
+                    table: s.table.clone(),
                     h_v: s.h_v,
                     tribology: mesh.tribology(mesh.reduced_modulus()),
                     whole: s.whole,
@@ -111,6 +112,12 @@ impl<'a> DriveSetup<'a> {
     /// The ends the drive's operating block gives its torque and speed at.
     pub(crate) fn operating_ends(&self) -> crate::drive::DriveOperating {
         self.drive.layout.operating
+    }
+
+    /// The first stage with a result at `point` no gear mesh can have or whose formulas no longer
+    /// hold ([`super::drive_plausibility`]).
+    pub(crate) fn implausible(&self, point: &DrivePoint) -> Option<super::drive_plausibility::StageImplausible> {
+        super::drive_plausibility::implausible(self.drive, &self.stages, point)
     }
 
     /// Where law `law` leaves its validity range on each stage's mesh at `point` (the driving

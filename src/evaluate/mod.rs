@@ -14,6 +14,7 @@ pub(crate) mod drive;
 pub mod drive_cycle;
 pub(crate) mod drive_map_best;
 pub(crate) mod drive_map_cell;
+pub(crate) mod drive_plausibility;
 pub(crate) mod drive_records;
 pub(crate) mod drive_setup;
 pub(crate) mod drive_thermal;

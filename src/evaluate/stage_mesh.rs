@@ -13,6 +13,10 @@ use crate::geometry::{OperatingState, PairGeometry};
 use crate::model::{FrictionLawSpec, LoadSharing, Scene, SceneDrive};
 use crate::tribology::Tribology;
 
+/// A contact table's positions along the line of action from T1 (m), each with its name where it
+/// is a named point (`B`).
+pub(crate) type TablePositions = Vec<(Option<&'static str>, f64)>;
+
 /// One stage's mesh as each member driving sees it.
 pub(crate) struct StageMesh {
     /// [pinion driving, wheel driving]: the pair with the driving member as its pinion (shared by
@@ -21,6 +25,9 @@ pub(crate) struct StageMesh {
     /// The contacts along A–E at which a law's validity is read, for each geometry
     /// ([`super::setup::curve_positions`], computed once).
     pub(super) positions: std::sync::Arc<[Vec<f64>; 2]>,
+    /// The contact table's positions, named where a point is (`super::cases::table_positions`), for each
+    /// geometry: where a drive's contacts are checked for plausibility.
+    pub(super) table: std::sync::Arc<[TablePositions; 2]>,
     pub(super) h_v: [f64; 2],
     pub(super) tribology: Tribology,
     pub(super) whole: bool,
@@ -36,6 +43,7 @@ pub(crate) struct RingMesh {
     pub(super) geometry: std::sync::Arc<PairGeometry>,
     /// [`super::setup::curve_positions`] of the geometry.
     pub(super) positions: Vec<f64>,
+    pub(super) table: TablePositions,
     pub(super) h_v: f64,
     pub(super) tribology: Tribology,
 }
@@ -51,7 +59,8 @@ impl RingMesh {
         let tribology = mesh.tribology(mesh.reduced_modulus());
         let geometry = geometry.unwrap_or_else(|| std::sync::Arc::new(mesh.geometry()));
         let positions = super::setup::curve_positions(&geometry);
-        let mut out = RingMesh { geometry, positions, h_v: 0.0, tribology };
+        let table = super::cases::table_positions(&geometry);
+        let mut out = RingMesh { geometry, positions, table, h_v: 0.0, tribology };
         out.h_v = ohlendorf_loss_factor(&out.context(1.0, 1.0));
         Some(out)
     }
@@ -89,7 +98,8 @@ impl StageMesh {
         }));
         let ring = RingMesh::of(drive, k, scene.lubricant.as_ref(), None);
         let positions = std::sync::Arc::new([0, 1].map(|d| super::setup::curve_positions(&geometry[d])));
-        let mut out = StageMesh { h_v: [0.0; 2], geometry, positions, tribology, whole, stiffness, ring };
+        let table = std::sync::Arc::new([0, 1].map(|d| super::cases::table_positions(&geometry[d])));
+        let mut out = StageMesh { h_v: [0.0; 2], geometry, positions, table, tribology, whole, stiffness, ring };
         for d in 0..2 {
             out.h_v[d] = ohlendorf_loss_factor(&out.context(d, 1.0, 1.0));
         }
@@ -130,6 +140,15 @@ impl StageMesh {
         match mesh {
             0 => &self.positions[driving.index()],
             _ => &self.ring.as_ref().expect("a stage of two meshes has its second").positions,
+        }
+    }
+
+    /// The contact table's positions on mesh `mesh` with the gear on place `driving` in the
+    /// pinion's place (as [`Self::law_context`] picks its geometry).
+    pub(super) fn table_positions(&self, mesh: usize, driving: Member) -> &TablePositions {
+        match mesh {
+            0 => &self.table[driving.index()],
+            _ => &self.ring.as_ref().expect("a stage of two meshes has its second").table,
         }
     }
 

@@ -198,11 +198,17 @@ fn half_width_beyond_limit(table: &[(Option<&str>, ContactPoint)]) -> Option<Imp
 /// above 1 is not a law giving negative friction.
 pub(crate) const EFFICIENCY_ULPS: f64 = 4.0 * f64::EPSILON;
 
+/// Whether an efficiency lies outside [0, 1] by more than rounding (`EFFICIENCY_ULPS`): a pair's
+/// and a drive's stage meshes' alike.
+pub(crate) fn outside_unit_interval(eta: f64) -> bool {
+    !(-EFFICIENCY_ULPS..=1.0 + EFFICIENCY_ULPS).contains(&eta)
+}
+
 /// An efficiency outside [0, 1] (beyond `EFFICIENCY_ULPS`) or a power loss above the input power.
 pub fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
     let mut out = Vec::new();
     let f = e.formulation.name().to_string();
-    let bad = |x: f64| !(-EFFICIENCY_ULPS..=1.0 + EFFICIENCY_ULPS).contains(&x);
+    let bad = outside_unit_interval;
     if bad(e.mean.value) || bad(e.min) || bad(e.max) {
         out.push(Implausible::Efficiency {
             law: law.into(),

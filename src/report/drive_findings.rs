@@ -3,8 +3,8 @@
 //! bearing beyond its static rating, and the laws' notes on each stage (an input read at a bound of
 //! its range).
 
-use super::drive::DriveReport;
 use super::drive_point::DrivePointReport;
+use super::drive_report::DriveReport;
 use super::finding::{Finding, Severity};
 use super::units::Units;
 use crate::drive::PowerFlow;
@@ -264,6 +264,15 @@ pub(super) fn report_findings(
             ),
         });
     }
+    if let Some(first) = &report.first_implausible {
+        rest.push(Finding {
+            severity: Severity::Warning,
+            message: format!(
+                "{} of {} rows have a stage result no gear mesh can have or whose formulas no longer hold; the first, {first}",
+                report.implausible_rows, report.rows
+            ),
+        });
+    }
     if let Some((row, column)) = &report.first_non_finite {
         rest.push(Finding {
             severity: Severity::Warning,
@@ -277,6 +286,32 @@ pub(super) fn report_findings(
         rest.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
     (inputs, rest)
+}
+
+/// What is implausible on a stage, in the words a pair's report gives it of its own mesh
+/// (`super::plausibility`), naming the stage (and its mesh).
+pub(super) fn implausible_words(
+    drive: &SceneDrive,
+    at: &crate::evaluate::drive_plausibility::StageImplausible,
+    units: Units,
+) -> String {
+    use crate::evaluate::drive_plausibility::Implausibility;
+    let len = units.length();
+    let stage = &drive.layout.stages[at.stage].name;
+    let mesh = at.mesh.as_ref().map_or_else(String::new, |m| format!(", {m} mesh"));
+    let what = match &at.what {
+        Implausibility::Efficiency(eta) => format!(
+            "mesh efficiency η = {eta:.6} outside [0, 1] by more than rounding (4 ulps): the law gives friction no gear mesh can have here"
+        ),
+        Implausibility::HalfWidth { half_width, limit, u, named } => format!(
+            "Hertz half-width b_H = {} exceeds R/10 = {} at {} from T1{}: the line-contact formulas (pressure, film, every law that reads them) no longer hold",
+            len.with(*half_width, 4),
+            len.with(*limit, 4),
+            len.with(*u, 3),
+            named.as_ref().map_or(String::new(), |n| format!(" (point {n})"))
+        ),
+    };
+    format!("stage `{stage}`{mesh}: {what}")
 }
 
 #[cfg(test)]

@@ -11,6 +11,7 @@ pub(crate) mod drive_inputs;
 pub(crate) mod drive_map;
 pub(crate) mod drive_oil_sweep;
 pub(crate) mod drive_point;
+pub(crate) mod drive_report;
 pub(crate) mod drive_stage_pairs;
 pub(crate) mod dynamics;
 pub(crate) mod dynamics_findings;

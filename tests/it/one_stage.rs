@@ -260,3 +260,31 @@ fn every_pair_warns_as_its_one_stage_drive() {
     eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing");
     assert!(mesh >= 2 && scene >= 3, "{mesh} mesh warnings, {scene} of the oil and the housing");
 }
+
+/// A pair loaded past Hertz's line contact (FZG type C at 30 000 N·m: b_H > R/10 at B) is flagged
+/// alike as its one-stage drive: the drive counts every row at that torque (3 speeds × 2 laws × 2
+/// formulations) and names the first with the contact the pair's own finding names, in the same
+/// words and numbers (b_H, R/10 and the place, to the digits shown); at the rated torques nothing.
+#[test]
+fn a_pair_past_line_contact_is_flagged_as_its_one_stage_drive() {
+    let source = std::fs::read_to_string(crate::root().join("specs/fzg_type_c.gear"))
+        .unwrap()
+        .replace("pinion_torque = [239.3, 372.6] N*m", "pinion_torque = [239.3, 30000] N*m");
+    let pair = gearloss::check("c.gear", &source).unwrap();
+    let said = gearloss::report_of(&pair).findings.into_iter().map(|f| f.message).collect::<Vec<_>>();
+    let of_pair = said
+        .iter()
+        .find_map(|m| m.strip_prefix("operating point 4 (30000 N·m, 100 rpm): "))
+        .unwrap_or_else(|| panic!("{said:#?}"));
+    assert!(of_pair.starts_with("Hertz half-width b_H = "), "{of_pair}");
+    let drive =
+        gearloss::scene::lower::lower_as_one_stage_drive(&gearloss::parse("c.gear", &source).unwrap(), None).unwrap();
+    let d = drive.drive.as_ref().unwrap();
+    let report = gearloss::report::drive::build_drive_report(&drive, d, &gearloss::evaluate::evaluate_drive(&drive, d));
+    assert_eq!((report.implausible_rows, report.rows), (12, 24));
+    let first = report.first_implausible.as_deref().unwrap();
+    assert!(first.starts_with("T_pinion = 30000 N·m, n_in = 100 rpm"), "{first}");
+    assert!(first.ends_with(&format!("stage `pair`: {of_pair}")), "{first}\nvs the pair's\n{of_pair}");
+    let warned = report.findings.iter().filter(|f| f.message.contains("no gear mesh can have")).count();
+    assert_eq!(warned, 1);
+}

@@ -1,0 +1,157 @@
+//! The report of a drive of several stages as data: what the drive is made of (stages, shafts,
+//! oil, laws), every operating point's [`DrivePointReport`] (per law and formulation) with the
+//! readings it rests on, the thermal balance and duty cycle, the loss map over the ends' torque ×
+//! speed, and the findings. Serde data; `super::drive` builds it, the renderers read it.
+
+use serde::{Deserialize, Serialize};
+
+use super::drive_inputs::{ShaftInputs, StageInputs};
+use super::drive_map::DriveMapReport;
+use super::drive_point::DrivePointReport;
+use super::finding::Finding;
+use super::number::DisplayUnit;
+use crate::drive::ShaftEnd;
+
+/// The thermal balance of one operating point, law and formulation (one sump).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveBalanceReport {
+    pub label: String,
+    pub law: String,
+    pub formulation: String,
+    /// θ* (°C), P_V(θ*) = P_Q(θ*) (W); None (left out) without a balance up to 200 °C.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub loss: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dissipation: Option<f64>,
+    /// "ok", "above the limit" or "no balance up to 200 °C", in words.
+    pub status: String,
+    /// In drive: the torque at the given end (N·m) that the box carries with the sump at the oil's
+    /// limit, at this point's speed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<f64>,
+    /// The same with the sump at 95 °C (ISO/TR 14179-1's rating temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating_95: Option<f64>,
+}
+
+/// A step of the duty cycle.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveDutyStep {
+    /// `5 min, 1000 N*m, 1000 rpm`, as written.
+    pub label: String,
+    pub duration_s: f64,
+    /// P_V at the scene's oil temperature (W).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub loss_at_oil_temperature: Option<f64>,
+    /// P_V at the scene's oil temperature × the step's duration (J): the step's energy with the
+    /// sump held at that temperature.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_at_oil_temperature: Option<f64>,
+    /// With a heat capacity: θ at the step's end (°C), energy lost and given off in the step (J).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub end_temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_lost: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_dissipated: Option<f64>,
+}
+
+/// The duty cycle of a drive under its first law and formulation.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveDutyReport {
+    pub name: String,
+    pub law: String,
+    pub formulation: String,
+    pub steps: Vec<DriveDutyStep>,
+    /// The transient's highest θ (°C), its start (ambient, °C), the integrator's error estimate (K),
+    /// or why it failed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_temperature_c: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error_k: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub failure: Option<String>,
+}
+
+/// The report of a drive.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct DriveReport {
+    pub title: String,
+    pub slug: String,
+    pub stages: Vec<StageInputs>,
+    pub shafts: Vec<ShaftInputs>,
+    /// ω_in/ω_out of the chain (signed: negative when the output turns the other way).
+    pub overall_ratio: f64,
+    /// The oil: temperature (°C), ν (mm²/s), ρ (kg/m³), η (mPa·s) as the losses read them.
+    pub oil: Vec<(String, f64, String)>,
+    pub laws: Vec<String>,
+    /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
+    /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full.
+    pub rows: usize,
+    /// The least and greatest η over every row where one end delivers, with the row's label, law
+    /// and formulation; rows where both ends deliver.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub least_efficiency: Option<(f64, String)>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub greatest_efficiency: Option<(f64, String)>,
+    pub both_ends_rows: usize,
+    /// Rows where a stage's law leaves its validity range (drive_records.csv's
+    /// `stage_<name>_validity_outside` say where).
+    pub outside_rows: usize,
+    /// Rows whose fixed point did not settle or whose books do not balance, and the first in words.
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
+    pub unsettled_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_unsettled: Option<String>,
+    /// Values of the record files that are not finite numbers, and the first: its row in words
+    /// and its column.
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
+    pub non_finite_values: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_non_finite: Option<(String, String)>,
+    /// At `oil_temperature = equilibrium`: rows whose sump settles above the limit or finds no
+    /// balance, and the first in words.
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
+    pub off_balance_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_off_balance: Option<String>,
+    /// Rows with a stage result no gear mesh can have or whose formulas no longer hold (a mesh
+    /// efficiency outside [0, 1], a contact with b_H > R/10), and the first in words with what.
+    #[serde(default, skip_serializing_if = "crate::evaluate::drive::is_zero")]
+    pub implausible_rows: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_implausible: Option<String>,
+    pub torque_at: ShaftEnd,
+    pub speed_at: ShaftEnd,
+    /// The unit the scene wrote its speeds in, which report.md shows every speed in (report.json
+    /// keeps rad/s, and rpm in the fields so named); left out when rpm.
+    #[serde(default = "DisplayUnit::rpm", skip_serializing_if = "DisplayUnit::is_rpm")]
+    pub speed_unit: DisplayUnit,
+    /// The unit the scene wrote its torques in, likewise (report.json keeps N·m); left out when N·m.
+    #[serde(default = "DisplayUnit::newton_metre", skip_serializing_if = "DisplayUnit::is_newton_metre")]
+    pub torque_unit: DisplayUnit,
+    /// The units report.md shows forces, powers, lengths and temperatures in: inch–pound when every
+    /// stage's pair is sized in inches (as a pair's report), else SI; report.json stays SI.
+    #[serde(default, skip_serializing_if = "super::number::UnitSystem::is_si")]
+    pub unit_system: super::number::UnitSystem,
+    pub points: Vec<DrivePointReport>,
+    pub maps: Vec<DriveMapReport>,
+    /// The housing as a thermal node (what, value, unit) and each point's balance.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub housing: Vec<(String, f64, String)>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub thermal: Vec<DriveBalanceReport>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub duty: Option<DriveDutyReport>,
+    /// The vehicle over its drive cycle.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cycle: Option<super::drive_cycle::DriveCycleReport>,
+    /// The analyses of one pair on the drive's stages' meshes, each with its own report folder.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stage_pairs: Vec<super::drive_stage_pairs::StagePairReport>,
+    pub findings: Vec<Finding>,
+}
