@@ -100,37 +100,46 @@ pub(crate) fn headline_body(r: &Report) -> String {
 pub(crate) fn lubricant_section(r: &Report) -> String {
     let mut out = String::new();
     let Some(l) = &r.lubricant else { return out };
-    let u = r.units();
     md!(out, "\n## Lubricant\n");
-    header(&mut out, &["quantity", "value"]);
-    row(&mut out, &["name".into(), l.name.clone()]);
+    lubricant_table(&mut out, l, r.units());
+    out
+}
+
+/// The lubricant's table (quantity, value) and its source, in units `u`: a pair's Lubricant section
+/// and a drive's Oil section.
+pub(crate) fn lubricant_table(
+    out: &mut String,
+    l: &crate::report::losses::LubricantReport,
+    u: crate::report::units::Units,
+) {
+    header(out, &["quantity", "value"]);
+    row(out, &["name".into(), l.name.clone()]);
     if let Some(b) = &l.base {
-        row(&mut out, &["base oil".into(), b.clone()]);
+        row(out, &["base oil".into(), b.clone()]);
     }
     if let Some(t) = &l.temperature {
-        row(&mut out, &["oil temperature".into(), u.temperature().with(t.si(), 1)]);
+        row(out, &["oil temperature".into(), u.temperature().with(t.si(), 1)]);
     }
     let nu = u.kinematic_viscosity();
     if let Some(n) = &l.kinematic_viscosity {
-        row(&mut out, &["kinematic viscosity ν".into(), nu.with(n.si(), 3)]);
+        row(out, &["kinematic viscosity ν".into(), nu.with(n.si(), 3)]);
     }
-    row(&mut out, &["dynamic viscosity η".into(), u.dynamic_viscosity().with(l.dynamic_viscosity.si(), 3)]);
+    row(out, &["dynamic viscosity η".into(), u.dynamic_viscosity().with(l.dynamic_viscosity.si(), 3)]);
     if let Some(d) = &l.density {
-        row(&mut out, &["density ρ".into(), u.density().with(d.si(), 1)]);
+        row(out, &["density ρ".into(), u.density().with(d.si(), 1)]);
     }
     if let Some(a) = &l.pressure_viscosity {
-        row(&mut out, &["pressure–viscosity coefficient α".into(), u.pressure_viscosity().with(a.si(), 3)]);
+        row(out, &["pressure–viscosity coefficient α".into(), u.pressure_viscosity().with(a.si(), 3)]);
     }
-    row(&mut out, &["lubricant factor X_L (ISO/TR 14179-2)".into(), fixed(l.lubricant_factor.0, 3)]);
+    row(out, &["lubricant factor X_L (ISO/TR 14179-2)".into(), fixed(l.lubricant_factor.0, 3)]);
     if let (Some(a), Some(b), Some(d)) = (&l.nu_40, &l.nu_100, &l.density_15) {
-        row(&mut out, &["ν40 / ν100".into(), format!("{} / {}", nu.cell(a.si(), 2), nu.with(b.si(), 3))]);
-        row(&mut out, &["density at 15 °C".into(), u.density().with(d.si(), 1)]);
+        row(out, &["ν40 / ν100".into(), format!("{} / {}", nu.cell(a.si(), 2), nu.with(b.si(), 3))]);
+        row(out, &["density at 15 °C".into(), u.density().with(d.si(), 1)]);
     }
     if let Some(vi) = &l.viscosity_index {
-        row(&mut out, &["viscosity index (ASTM D2270)".into(), fixed(vi.0, 1)]);
+        row(out, &["viscosity index (ASTM D2270)".into(), fixed(vi.0, 1)]);
     }
     md!(out, "\nSource: {}.", l.source);
-    out
 }
 
 /// The loss budget of every efficiency record, in W and as shares of the total.

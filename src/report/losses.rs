@@ -39,16 +39,17 @@ pub struct LubricantReport {
     pub source: String,
 }
 
-pub(crate) fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<LubricantReport> {
-    let l = scene.lubricant.as_ref()?;
-    let t = &eval.tribology;
+/// The lubricant `l` as a mesh reads it (`t`: η, ν, ρ, α and X_L at the oil temperature, the
+/// same for every mesh of a drive, which share one sump), with its data sheet values and where its
+/// values come from: a pair's report and a drive's alike.
+pub(crate) fn lubricant_report(l: &crate::model::Lubricant, t: &crate::tribology::Tribology) -> LubricantReport {
     let source = match &l.oil {
         Some(oil) => {
             format!("{}; ν by ASTM D341 (Walther) through ν40 and ν100, ρ by thermal expansion 7e-4 1/K", oil.source)
         }
         None => "given at the oil temperature in the scene".to_string(),
     };
-    Some(LubricantReport {
+    LubricantReport {
         name: l.name.clone(),
         base: l.kind.map(|b| b.words().to_string()),
         temperature: l.temperature.as_ref().map(|g| Q::new(g.value.value, "K")),
@@ -62,7 +63,7 @@ pub(crate) fn lubricant_report(scene: &Scene, eval: &Evaluation) -> Option<Lubri
         density_15: l.oil.as_ref().map(|o| Q::new(o.density_15, "kg/m^3")),
         viscosity_index: l.oil.as_ref().and_then(|o| o.viscosity_index()).map(Num),
         source,
-    })
+    }
 }
 
 /// The budget beside an efficiency record's mesh loss, in W; parts the scene does not describe are absent.

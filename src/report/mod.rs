@@ -81,7 +81,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         records: sweep::records_report(tally, plan),
         sweep: sweep::sweep_report(tally, plan, &scene.operating),
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
-        lubricant: losses::lubricant_report(scene, eval),
+        lubricant: scene.lubricant.as_ref().map(|l| losses::lubricant_report(l, &eval.tribology)),
         loss_budget: scene.gearbox.is_some(),
         budget_readings: scene.gearbox.as_ref().map(losses::budget_readings).unwrap_or_default(),
         efficiency_map: eval.efficiency_map.as_ref().map(|m| losses::map_report(scene, m)),
