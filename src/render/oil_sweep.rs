@@ -7,6 +7,7 @@ use super::markup::md;
 use super::svg::{figure_with_legend, Panel};
 use super::table::{fixed, header, law_words, row};
 use crate::evaluate::plan::evenly;
+use crate::report::losses::LubricantReport;
 use crate::report::oil_sweep::{OilSweepReport, OilSweepRow};
 use crate::report::units::{Shown, Units};
 
@@ -54,28 +55,30 @@ fn markdown(r: &OilSweepReport) -> String {
     for x in &r.runs {
         md!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", x.label, x.folder, x.warnings, x.notes);
     }
-    lubricant_table(&mut out, r, u);
+    let runs: Vec<_> = r.runs.iter().map(|x| (x.label.as_str(), x.lubricant.as_ref())).collect();
+    lubricant_table(&mut out, &runs, u);
     efficiency_table(&mut out, r, u);
     out
 }
 
-/// The lubricant's values at each temperature.
-fn lubricant_table(out: &mut String, r: &OilSweepReport, u: Units) {
-    if r.runs.iter().any(|x| x.lubricant.is_some()) {
+/// The lubricant's values at each temperature (`runs`: each run's label and its lubricant): a
+/// pair's comparison and a drive's.
+pub(crate) fn lubricant_table(out: &mut String, runs: &[(&str, Option<&LubricantReport>)], u: Units) {
+    if runs.iter().any(|x| x.1.is_some()) {
         md!(out, "\n## Lubricant at each temperature\n");
         let (nu, eta, rho, alpha) =
             (u.kinematic_viscosity(), u.dynamic_viscosity(), u.density(), u.pressure_viscosity());
         let cols =
             ["oil temperature".to_string(), nu.heading("ν"), eta.heading("η"), rho.heading("ρ"), alpha.heading("α")];
         header(out, &cols);
-        for x in &r.runs {
-            let Some(l) = &x.lubricant else { continue };
+        for (label, l) in runs {
+            let Some(l) = l else { continue };
             let opt =
                 |q: Option<crate::report::number::Q>, s: Shown, d: usize| q.map_or("—".to_string(), |q| s.q(&q, d));
             row(
                 out,
                 &[
-                    x.label.clone(),
+                    label.to_string(),
                     opt(l.kinematic_viscosity, nu, 3),
                     eta.q(&l.dynamic_viscosity, 3),
                     opt(l.density, rho, 1),
@@ -83,7 +86,7 @@ fn lubricant_table(out: &mut String, r: &OilSweepReport, u: Units) {
                 ],
             );
         }
-        if let Some(l) = r.runs[0].lubricant.as_ref() {
+        if let Some(l) = runs[0].1 {
             md!(out, "\nSource: {}.", l.source);
         }
     }

@@ -53,6 +53,10 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         shafts: super::drive_inputs::shaft_inputs(layout),
         overall_ratio: crate::drive::walk::overall_ratio(layout),
         oil: super::drive_inputs::oil_rows(scene),
+        lubricant: scene.lubricant.as_ref().filter(|_| !drive.pairs.is_empty()).map(|l| {
+            let mesh = drive.mesh(0, Some(l));
+            super::losses::lubricant_report(l, &mesh.tribology(mesh.reduced_modulus()))
+        }),
         laws: laws.clone(),
         rows: eval.tally.rows,
         least_efficiency: eval.tally.least.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),

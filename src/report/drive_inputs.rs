@@ -221,7 +221,8 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
         .collect()
 }
 
-/// (what, value, unit) of the oil as the losses read it.
+/// (what, value, unit) of the sump's oil temperature (the lubricant's values are its
+/// [`super::losses::LubricantReport`]).
 pub(super) fn oil_rows(scene: &Scene) -> Vec<(String, f64, String)> {
     let mut out = Vec::new();
     // At `oil_temperature = equilibrium` the oil is read at the first row's balance (at ambient when
@@ -240,15 +241,6 @@ pub(super) fn oil_rows(scene: &Scene) -> Vec<(String, f64, String)> {
         )),
         (Some(t), None, _) => out.push(("oil temperature".into(), t.value.value - 273.15, "degC".into())),
         _ => {}
-    }
-    if let Some(l) = &scene.lubricant {
-        out.push(("dynamic viscosity η".into(), l.dynamic_viscosity.value.value * 1e3, "mPa*s".into()));
-        if let Some(nu) = l.kinematic_viscosity_si() {
-            out.push(("kinematic viscosity ν".into(), nu * 1e6, "mm^2/s".into()));
-        }
-        if let Some(rho) = &l.density {
-            out.push(("density ρ".into(), rho.value.value, "kg/m^3".into()));
-        }
     }
     out
 }

@@ -1,6 +1,6 @@
 //! A drive run at several oil temperatures: one drive report per temperature (in its own folder)
 //! and their comparison, row by row (operating point, law, formulation): the total loss and η at
-//! each temperature, and the loss parts.
+//! each temperature, and the loss parts; the lubricant read at each, as a pair's comparison gives it.
 
 use serde::{Deserialize, Serialize};
 
@@ -13,6 +13,9 @@ pub(crate) struct DriveOilRun {
     pub label: String,
     pub kelvin: f64,
     pub folder: String,
+    /// The lubricant read at this temperature (as the run's own report gives it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lubricant: Option<super::losses::LubricantReport>,
     /// Per shown row: (total loss W, η, meshes W, bearings W).
     pub rows: Vec<(f64, f64, f64, f64)>,
 }
@@ -43,6 +46,7 @@ pub(crate) fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)])
                 label: label.clone(),
                 kelvin: *kelvin,
                 folder: folder.clone(),
+                lubricant: r.lubricant.clone(),
                 rows: r
                     .points
                     .iter()

@@ -86,8 +86,12 @@ pub struct DriveReport {
     pub shafts: Vec<ShaftInputs>,
     /// ω_in/ω_out of the chain (signed: negative when the output turns the other way).
     pub overall_ratio: f64,
-    /// The oil: temperature (°C), ν (mm²/s), ρ (kg/m³), η (mPa·s) as the losses read them.
+    /// The sump's oil temperature (°C; at `equilibrium` the balance of point 1, said in words).
     pub oil: Vec<(String, f64, String)>,
+    /// The lubricant as every mesh, film and loss reads it at that temperature (η, ν, ρ, α, X_L),
+    /// its data sheet values and their source: the same report a pair's gives.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lubricant: Option<super::losses::LubricantReport>,
     pub laws: Vec<String>,
     /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
     /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full.

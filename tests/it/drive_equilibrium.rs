@@ -57,8 +57,8 @@ fn every_drive_row_is_at_its_own_balance() {
     assert!(md.contains("oil temperature (the balance of point 1; each row at its own θ*)"), "{md}");
     assert_eq!(md.matches("At its own balance (`oil_temperature = equilibrium`): θ* = ").count(), balanced);
     assert!(md.contains("At `oil_temperature = equilibrium` the sump finds no balance"));
-    // The oil each point rests on: read at its θ* (the first row's is the oil table's, at the first
-    // balance; 1e-12), thinner where θ* is higher.
+    // The oil each point rests on: read at its θ* (the first row's is the lubricant table's, at the
+    // first balance; 1e-9), thinner where θ* is higher.
     let json: serde_json::Value = serde_json::from_str(&file("report.json")).unwrap();
     let oil_row = |what: &str| {
         json["oil"].as_array().unwrap().iter().find(|r| r[0].as_str().unwrap().starts_with(what)).unwrap()[1]
@@ -68,7 +68,9 @@ fn every_drive_row_is_at_its_own_balance() {
     let points = json["points"].as_array().unwrap();
     let nu = |k: usize| points[k]["balance"]["kinematic_viscosity"].as_f64().unwrap();
     let theta = |k: usize| points[k]["balance"]["temperature"].as_f64().unwrap();
-    assert!((nu(0) * 1e6 - oil_row("kinematic viscosity")).abs() < 1e-12 * oil_row("kinematic viscosity"));
+    let oil_nu = json["lubricant"]["kinematic_viscosity"]["value"].as_f64().unwrap();
+    // (The lubricant's quantities are written to 10 significant digits.)
+    assert!((nu(0) - oil_nu).abs() < 1e-9 * oil_nu, "{} vs the oil table's {oil_nu}", nu(0));
     assert!((theta(0) - 273.15 - oil_row("oil temperature")).abs() < 1e-9);
     assert!(theta(1) > theta(0) && nu(1) < nu(0), "{} K: {}, {} K: {}", theta(0), nu(0), theta(1), nu(1));
     let off = rows.iter().filter(|r| r[col("thermal_status")] != "ok").count();

@@ -214,7 +214,8 @@ fn every_pair_lowers_as_its_one_stage_drive() {
 /// mesh warning of the pair is the drive's, naming stage `pair`, and each of the drive's warnings
 /// on stage `pair`'s mesh is the pair's (a drive of several stages warns of every stage's meshes
 /// alike, tests/specs/ok/planetary_helical.gear's snapshot); the oil's and the housing's are word
-/// for word the same.
+/// for word the same. And the drive's report reads the oil as the pair's does: its lubricant report
+/// (η, ν, ρ, α, X_L, the data sheet and the source) is the pair's, field for field.
 #[test]
 fn every_pair_warns_as_its_one_stage_drive() {
     const MESH: [&str; 8] = [
@@ -228,7 +229,7 @@ fn every_pair_warns_as_its_one_stage_drive() {
         "helix angle",
     ];
     const SCENE: [&str; 4] = ["oil temperature", "the lubricant's dynamic", "the housing's", "the oil cooler"];
-    let (mut mesh, mut scene) = (0, 0);
+    let (mut mesh, mut scene, mut oils) = (0, 0, 0);
     for path in pair_scenes() {
         let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
         let source = std::fs::read_to_string(&path).unwrap();
@@ -239,11 +240,17 @@ fn every_pair_warns_as_its_one_stage_drive() {
         let warnings = |f: &[gearloss::report::Finding]| -> Vec<String> {
             f.iter().filter(|f| f.severity == gearloss::report::Severity::Warning).map(|f| f.message.clone()).collect()
         };
-        let of_pair = warnings(&gearloss::report_of(&pair).findings);
+        let pair_report = gearloss::report_of(&pair);
+        let of_pair = warnings(&pair_report.findings);
         let eval = gearloss::evaluate::evaluate_drive(&drive, drive.drive.as_ref().unwrap());
-        let of_drive = warnings(
-            &gearloss::report::drive::build_drive_report(&drive, drive.drive.as_ref().unwrap(), &eval).findings,
-        );
+        let drive_report = gearloss::report::drive::build_drive_report(&drive, drive.drive.as_ref().unwrap(), &eval);
+        let of_drive = warnings(&drive_report.findings);
+        // The oil as every mesh reads it: the same lubricant report, field for field.
+        let json = |l| serde_json::to_string(&l).unwrap();
+        if pair.operating.equilibrium.is_none() {
+            assert_eq!(json(&pair_report.lubricant), json(&drive_report.lubricant), "{name}: the lubricant");
+            oils += usize::from(drive_report.lubricant.is_some());
+        }
         let stage = "stage `pair`: ";
         for w in of_pair.iter().filter(|w| MESH.iter().any(|m| w.starts_with(m))) {
             assert!(of_drive.contains(&format!("{stage}{w}")), "{name}: the drive does not warn: {w}\n{of_drive:#?}");
@@ -257,8 +264,8 @@ fn every_pair_warns_as_its_one_stage_drive() {
             scene += 1;
         }
     }
-    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing");
-    assert!(mesh >= 2 && scene >= 3, "{mesh} mesh warnings, {scene} of the oil and the housing");
+    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants");
+    assert!(mesh >= 2 && scene >= 3 && oils >= 15, "{mesh} mesh warnings, {scene} of the oil and the housing, {oils}");
 }
 
 /// A pair loaded past Hertz's line contact (FZG type C at 30 000 N·m: b_H > R/10 at B) is flagged

@@ -205,17 +205,26 @@ fn inputs(out: &mut String, r: &DriveReport) {
     super::kind_pieces::inputs(out, &r.stages, Units::of_system(r.unit_system));
     super::point_tables::shafts(out, &r.shafts, Units::of_system(r.unit_system));
     super::shaft_bending::inputs(out, r);
-    if r.oil.is_empty() {
+    let Some(l) = &r.lubricant else {
         // (A drive without a lubricant: every analysis it asks for reads none.)
         return;
-    }
+    };
     md!(out, "\n## Oil (one sump)\n");
-    header(out, &["value", "", "unit"]);
     let units = Units::of_system(r.unit_system);
-    for (what, v, unit) in &r.oil {
-        let (v, unit) = input_shown(*v, unit, units);
-        row(out, &[what.clone(), v, unit]);
+    // The oil temperature in words where the lubricant's table does not say it as it is (at
+    // `equilibrium`: the balance of point 1).
+    let said = |what: &String| what == "oil temperature" && l.temperature.is_some();
+    let oil: Vec<_> = r.oil.iter().filter(|(what, _, _)| !said(what)).collect();
+    if !oil.is_empty() {
+        header(out, &["value", "", "unit"]);
+        for (what, v, unit) in oil {
+            let (v, unit) = input_shown(*v, unit, units);
+            row(out, &[what.clone(), v, unit]);
+        }
+        md!(out);
     }
+    // The lubricant as a pair's report gives it: what every mesh, film and loss reads.
+    crate::render::markdown_losses::lubricant_table(out, l, units);
     md!(out);
 }
 

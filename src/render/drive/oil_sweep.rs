@@ -20,6 +20,8 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, St
     for run in &r.runs {
         md!(out, "- [{}]({}/report.md)", run.label, run.folder);
     }
+    let runs: Vec<_> = r.runs.iter().map(|x| (x.label.as_str(), x.lubricant.as_ref())).collect();
+    crate::render::oil_sweep::lubricant_table(&mut out, &runs, Units::of_system(r.unit_system));
     md!(out);
     md!(out, "## Total loss ({}) and η (%)\n", w.unit);
     let mut head = vec!["row".to_string()];
