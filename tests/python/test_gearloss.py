@@ -567,12 +567,37 @@ def test_tables_of_the_other_kind_of_report_raise_lookup_error():
     for table in ("drive_records", "stages", "shafts", "bearings", "planetary", "cycle"):
         with pytest.raises(LookupError, match="its tables are records"):
             getattr(pair, table)
-    for table in ("efficiency", "budget", "dynamics"):
-        with pytest.raises(LookupError, match="its tables are records, drive_records"):
-            getattr(drive, table)
+    with pytest.raises(LookupError, match="its tables are records, efficiency, budget, drive_records"):
+        drive.dynamics
     assert len(drive.stages) > 0 and len(pair.efficiency) > 0
     # `records` serves every report: a drive's are its drive_records.
     pandas.testing.assert_frame_equal(drive.records, drive.drive_records)
+
+
+def test_a_drives_efficiency_and_budget_are_the_pairs_tables():
+    """`efficiency` and `budget` serve a drive as they serve a pair: a row per operating point, law
+    and formulation, labelled by the law as the report labels it; the budget has a pair's columns
+    for the whole box (its parts add up to `total_loss_W`, 1e-9, which in drive is P_in − P_out)
+    beside each bearing place's, the efficiency each stage's η_mesh and the box's η."""
+    drive = gearloss.run(scene(ROOT / "specs/ev_two_stage_reducer.gear"))
+    pair = gearloss.run(scene(ROOT / "specs/fzg_c14_gearbox.gear"))
+    budget, records = drive.budget, drive.drive_records
+    assert len(budget) == len(records) > 0
+    shared = {"label", "formulation", "power_loss_W", "gear_no_load_W", "bearings_no_load_W", "bearings_load_W",
+              "seals_W", "total_loss_W", "total_efficiency"}
+    assert shared <= set(budget.columns) and shared <= set(pair.budget.columns)
+    parts = ["power_loss_W", "gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"]
+    for (_, b), (_, r) in zip(budget.iterrows(), records.iterrows()):
+        total = sum(b[p] for p in parts)
+        assert abs(total - b["total_loss_W"]) <= 1e-9 * b["total_loss_W"]
+        if r["flow"] == "drive" and not r["both_ends_deliver"]:
+            loss = r["input_power_W"] - r["output_power_W"]
+            assert abs(loss - b["total_loss_W"]) <= 1e-9 * abs(r["input_power_W"])
+    assert any(c.startswith("bearing_motor_1_") for c in budget.columns)
+    assert set(budget["label"]) == set(drive.data["laws"])
+    efficiency = drive.efficiency
+    assert {"first_mesh_efficiency", "second_mesh_efficiency", "total_efficiency", "label"} <= set(efficiency.columns)
+    assert (efficiency["total_efficiency"] == records["efficiency"]).all()
 
 
 def test_one_pair_on_a_drive_cycle_is_a_one_stage_drive():

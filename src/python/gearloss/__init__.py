@@ -300,7 +300,17 @@ class Report:
     @property
     def efficiency(self):
         """The efficiency rows: per point, law and formulation the mean efficiency, its error, the
-        power loss, and the loss budget's columns when the scene describes its gearbox."""
+        power loss, and the loss budget's columns when the scene describes its gearbox. Of a drive:
+        per operating point, law and formulation (a record row) both ends' torque, speed and power,
+        each stage's η_mesh (``<stage>_mesh_efficiency``) and the box's η (``total_efficiency``)."""
+        if self._shape() == "drive":
+            r = self.drive_records
+            if r.empty:
+                return r
+            ends = [c for c in r.columns if c.startswith(("input_", "output_"))]
+            stages = {c: c[len("stage_") :] for c in r.columns if c.startswith("stage_") and c.endswith("_mesh_efficiency")}
+            table = r[_DRIVE_KEYS + ends + list(stages) + ["efficiency"]].rename(columns=stages)
+            return self._drive_labelled(table.rename(columns={"efficiency": "total_efficiency"}))
         return self._kind("efficiency")
 
     @property
@@ -309,7 +319,25 @@ class Report:
         ``law``, ``label`` and ``formulation``, with the mesh loss the budget was given
         (``power_loss_W``), gears without load, bearings, seals, total and η total, and each
         bearing's loads and losses; empty without a gearbox. (The mesh loss and the total differ
-        between laws and formulations; the parts beside the mesh do not.)"""
+        between laws and formulations; the parts beside the mesh do not.) Of a drive: the same
+        columns for the whole box, a row per record row (``power_loss_W`` every mesh's,
+        ``total_loss_W``, ``total_efficiency``), and each bearing place's loads and losses
+        (``bearing_<shaft>_<n>_…``)."""
+        if self._shape() == "drive":
+            r = self.drive_records
+            if r.empty:
+                return r
+            parts = {
+                "meshes_W": "power_loss_W",
+                "gear_no_load_W": "gear_no_load_W",
+                "bearings_no_load_W": "bearings_no_load_W",
+                "bearings_load_W": "bearings_load_W",
+                "seals_W": "seals_W",
+                "total_W": "total_loss_W",
+            }
+            bearings = [c for c in r.columns if c.startswith("bearing_")]
+            table = r[_DRIVE_KEYS + list(parts) + bearings + ["efficiency"]]
+            return self._drive_labelled(table.rename(columns={**parts, "efficiency": "total_efficiency"}))
         self._table_of("budget", "pair")
         e = self.efficiency
         keys = ("point", "pinion_torque_N_m", "pinion_speed_rad_s", "law", "label", "formulation")
@@ -318,6 +346,13 @@ class Report:
         if not any(c.startswith("total_loss") for c in parts):
             return e.iloc[0:0, 0:0]
         return e[keep + parts + ["total_efficiency"]].reset_index(drop=True)
+
+    def _drive_labelled(self, table):
+        """A drive's table with each row's law as the report labels it (``label``) beside its index."""
+        labels = self.data.get("laws", [])
+        table = table.reset_index(drop=True)
+        table.insert(_DRIVE_KEYS.index("law_index") + 1, "label", [labels[int(i)] for i in table["law_index"]])
+        return table
 
     @property
     def dynamics(self):
@@ -440,9 +475,14 @@ class Report:
 _SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
 _TABLES = {
     "pair": ("records", "efficiency", "budget", "dynamics"),
-    "drive": ("records", "drive_records", "stages", "shafts", "bearings", "planetary", "cycle"),
+    "drive": ("records", "efficiency", "budget", "drive_records", "stages", "shafts", "bearings", "planetary", "cycle"),
     "runs": ("runs",),
 }
+
+
+# The columns that key a drive's record row: its index, the operating point's torque and speed
+# indices, the law's index, the formulation and the power's flow.
+_DRIVE_KEYS = ["row", "torque_index", "speed_index", "law_index", "formulation", "flow"]
 
 
 def _drive_long(report: "Report", prefix: str, names, columns, key: str):
@@ -451,7 +491,7 @@ def _drive_long(report: "Report", prefix: str, names, columns, key: str):
     import pandas
 
     wide = report.drive_records
-    keys = ["row", "torque_index", "speed_index", "law_index", "formulation", "flow"]
+    keys = _DRIVE_KEYS
     parts = []
     for name in names:
         cols = {f"{prefix}_{name}_{c}": c for c in columns}
