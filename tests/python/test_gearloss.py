@@ -564,11 +564,11 @@ def test_tables_of_the_other_kind_of_report_raise_lookup_error():
     """A pair's tables asked of a drive, and a drive's of a pair, say which tables the report has."""
     pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
     drive = gearloss.run(scene(ROOT / "specs/planetary_reducer.gear"))
-    for table in ("drive_records", "stages", "shafts", "bearings", "planetary", "cycle"):
+    for table in ("drive_records", "stages", "stage_pairs", "shafts", "bearings", "planetary", "cycle"):
         with pytest.raises(LookupError, match="its tables are records"):
             getattr(pair, table)
-    with pytest.raises(LookupError, match="its tables are records, efficiency, budget, drive_records"):
-        drive.dynamics
+    # Every table of a pair serves a drive too: its dynamics are its stage meshes' (none here).
+    assert drive.dynamics.empty and drive.stage_pairs == {}
     assert len(drive.stages) > 0 and len(pair.efficiency) > 0
     # `records` serves every report: a drive's are its drive_records.
     pandas.testing.assert_frame_equal(drive.records, drive.drive_records)
@@ -598,6 +598,22 @@ def test_a_drives_efficiency_and_budget_are_the_pairs_tables():
     efficiency = drive.efficiency
     assert {"first_mesh_efficiency", "second_mesh_efficiency", "total_efficiency", "label"} <= set(efficiency.columns)
     assert (efficiency["total_efficiency"] == records["efficiency"]).all()
+
+
+def test_a_drives_dynamics_are_its_stage_meshes():
+    """A drive's `dynamics` are the dynamics rows of every stage mesh its analyses ran as a pair
+    alone, keyed by stage, mesh and the drive's point; each is that mesh's own report's table
+    (`stage_pairs`), row for row."""
+    drive = gearloss.run(scene(ROOT / "specs/ev_reducer_stage_meshes.gear"))
+    pairs = drive.stage_pairs
+    assert set(pairs) == {r["folder"] for r in drive.data["stage_pairs"] if r.get("folder")} and len(pairs) == 4
+    dynamics = drive.dynamics
+    assert list(dynamics.columns[:3]) == ["stage", "mesh", "drive_point"]
+    assert len(dynamics) == sum(len(p.dynamics) for p in pairs.values()) > 0
+    for row in drive.data["stage_pairs"]:
+        own = pairs[row["folder"]].dynamics
+        mine = dynamics[(dynamics["stage"] == row["stage"]) & (dynamics["drive_point"] == row["point"])]
+        pandas.testing.assert_frame_equal(mine.iloc[:, 3:].reset_index(drop=True), own)
 
 
 def test_one_pair_on_a_drive_cycle_is_a_one_stage_drive():

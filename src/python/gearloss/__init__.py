@@ -262,15 +262,7 @@ class Report:
     def runs(self) -> Dict[str, "Report"]:
         """A scene at several oil temperatures: the report of each, by its folder's name."""
         names = sorted({f.split("/")[0] for f in self._files if "/" in f})
-        if isinstance(self._files, _Folder):
-            runs = {n: Report(n, _Folder(self._files.root / n)) for n in names}
-            for r in runs.values():
-                r._keep = self  # the temporary folder lives as long as a run read from it
-            return runs
-        return {
-            n: Report(n, [(f[len(n) + 1 :], b) for f, b in self._files.items() if f.startswith(n + "/")])
-            for n in names
-        }
+        return {n: self._sub(n) for n in names}
 
     @property
     def records(self):
@@ -356,8 +348,43 @@ class Report:
 
     @property
     def dynamics(self):
-        """The dynamics rows: per point and formulation ρ, DTE and the dynamic factor."""
+        """The dynamics rows: per point and formulation ρ, DTE and the dynamic factor. Of a drive:
+        those of every stage mesh its ``analyses`` ran as a pair alone (:attr:`stage_pairs`), with
+        the mesh's ``stage``, ``mesh`` (a planetary stage's) and the drive's operating point
+        (``drive_point``, 1-based) in front; empty where no stage mesh ran dynamics."""
+        if self._shape() == "drive":
+            import pandas
+
+            parts = []
+            for row in self.data.get("stage_pairs", []):
+                folder = row.get("folder")
+                if not folder:
+                    continue
+                table = self._sub(folder).dynamics
+                for k, (name, value) in enumerate(
+                    [("stage", row["stage"]), ("mesh", row.get("mesh", "")), ("drive_point", row["point"])]
+                ):
+                    table.insert(k, name, value)
+                parts.append(table)
+            return pandas.concat(parts, ignore_index=True) if parts else pandas.DataFrame()
         return self._kind("dynamics")
+
+    @property
+    def stage_pairs(self) -> Dict[str, "Report"]:
+        """A drive's stage meshes its ``analyses`` ran as pairs alone: each one's report (a pair's,
+        with all of a pair's tables) by its folder, ``stages/<stage>[_<mesh>]_point_<n>``; a mesh
+        listed as not run (report.json's ``stage_pairs[].not_run`` says why) has none."""
+        self._table_of("stage_pairs", "drive")
+        return {r["folder"]: self._sub(r["folder"]) for r in self.data.get("stage_pairs", []) if r.get("folder")}
+
+    def _sub(self, folder: str) -> "Report":
+        """The report in ``folder`` inside this one's."""
+        if isinstance(self._files, _Folder):
+            sub = Report(folder, _Folder(self._files.root / folder))
+            sub._keep = self  # the temporary folder lives as long as a report read from it
+            return sub
+        prefix = folder + "/"
+        return Report(folder, [(f[len(prefix) :], b) for f, b in self._files.items() if f.startswith(prefix)])
 
     @property
     def drive_records(self):
@@ -475,7 +502,19 @@ class Report:
 _SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
 _TABLES = {
     "pair": ("records", "efficiency", "budget", "dynamics"),
-    "drive": ("records", "efficiency", "budget", "drive_records", "stages", "shafts", "bearings", "planetary", "cycle"),
+    "drive": (
+        "records",
+        "efficiency",
+        "budget",
+        "dynamics",
+        "drive_records",
+        "stages",
+        "stage_pairs",
+        "shafts",
+        "bearings",
+        "planetary",
+        "cycle",
+    ),
     "runs": ("runs",),
 }
 
