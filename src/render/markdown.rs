@@ -6,17 +6,12 @@ use super::table::{fixed, header, row, sig};
 use crate::report::units::Units;
 use crate::report::{PlotKind, Report, Severity};
 
-pub fn render_markdown(r: &Report) -> String {
-    let mut out = String::new();
-    md!(out, "# {}\n", r.title);
-    md!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
-    out.push_str(&super::markdown_losses::headline(r));
-
-    md!(out, "## Scene\n");
-    header(&mut out, &["input", "as written", "SI"]);
-    for i in &r.inputs {
+/// The scene's inputs, each as written and in SI: a pair's Scene section and a drive's.
+pub(crate) fn inputs_table(out: &mut String, inputs: &[crate::report::InputRow]) {
+    header(out, &["input", "as written", "SI"]);
+    for i in inputs {
         row(
-            &mut out,
+            out,
             &[
                 format!("`{}`", i.key),
                 i.written.clone(),
@@ -24,6 +19,16 @@ pub fn render_markdown(r: &Report) -> String {
             ],
         );
     }
+}
+
+pub fn render_markdown(r: &Report) -> String {
+    let mut out = String::new();
+    md!(out, "# {}\n", r.title);
+    md!(out, "Report written by gearloss from the scene `{}`.\n", r.title);
+    out.push_str(&super::markdown_losses::headline(r));
+
+    md!(out, "## Scene\n");
+    inputs_table(&mut out, &r.inputs);
 
     out.push_str(&super::markdown_losses::lubricant_section(r));
 

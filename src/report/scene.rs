@@ -42,28 +42,7 @@ pub(super) fn units(scene: &Scene) -> super::units::Units {
 
 pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
     let mut rows = Vec::new();
-    let g = &scene.gears;
-    match &g.module_source {
-        ModuleSource::DiametralPitch(p) => input(&mut rows, "gears.diametral_pitch", p, "1/m"),
-        ModuleSource::TransverseDiametralPitch(p) => input(&mut rows, "gears.transverse_diametral_pitch", p, "1/m"),
-        ModuleSource::TransverseModule(m) => input(&mut rows, "gears.transverse_module", m, "m"),
-        ModuleSource::Module => {}
-    }
-    if let Some(b) = &g.helix_angle {
-        input(&mut rows, "gears.helix_angle", b, "rad");
-    }
-    input(&mut rows, "gears.module", &g.module, "m");
-    if let Some(a) = &g.transverse_pressure_angle {
-        input(&mut rows, "gears.transverse_pressure_angle", a, "rad");
-    }
-    input(&mut rows, "gears.pressure_angle", &g.pressure_angle, "rad");
-    if let Some(a) = &g.center_distance {
-        input(&mut rows, "gears.center_distance", a, "m");
-    }
-    input(&mut rows, "gears.face_width", &g.face_width, "m");
-    for (name, gear) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
-        gear_inputs(&mut rows, name, gear);
-    }
+    pair_inputs(&mut rows, &scene.gears, ("", ["pinion", "wheel"]));
     if let Some(l) = &scene.lubricant {
         lubricant_inputs(&mut rows, l);
     }
@@ -76,8 +55,36 @@ pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
     rows
 }
 
+/// A pair's inputs: its `gears` block (module or pitch, helix, pressure angle, centre distance,
+/// face width) and each gear's, keyed from `prefix` (`""` for a scene of one pair, `first.` for a
+/// drive's stage `first`) with the gears named `names` (`pinion`, `wheel`; `sun`, `planet`).
+pub(super) fn pair_inputs(rows: &mut Vec<InputRow>, g: &crate::model::GearPair, (prefix, names): (&str, [&str; 2])) {
+    let key = |k: &str| format!("{prefix}gears.{k}");
+    match &g.module_source {
+        ModuleSource::DiametralPitch(p) => input(rows, &key("diametral_pitch"), p, "1/m"),
+        ModuleSource::TransverseDiametralPitch(p) => input(rows, &key("transverse_diametral_pitch"), p, "1/m"),
+        ModuleSource::TransverseModule(m) => input(rows, &key("transverse_module"), m, "m"),
+        ModuleSource::Module => {}
+    }
+    if let Some(b) = &g.helix_angle {
+        input(rows, &key("helix_angle"), b, "rad");
+    }
+    input(rows, &key("module"), &g.module, "m");
+    if let Some(a) = &g.transverse_pressure_angle {
+        input(rows, &key("transverse_pressure_angle"), a, "rad");
+    }
+    input(rows, &key("pressure_angle"), &g.pressure_angle, "rad");
+    if let Some(a) = &g.center_distance {
+        input(rows, &key("center_distance"), a, "m");
+    }
+    input(rows, &key("face_width"), &g.face_width, "m");
+    for (name, gear) in names.into_iter().zip([&g.pinion, &g.wheel]) {
+        gear_inputs(rows, &format!("{prefix}{name}"), gear);
+    }
+}
+
 /// One gear's inputs: teeth, shift, tip, inertia, roughness, root and bore, relief, material.
-fn gear_inputs(rows: &mut Vec<InputRow>, name: &str, gear: &crate::model::Gear) {
+pub(super) fn gear_inputs(rows: &mut Vec<InputRow>, name: &str, gear: &crate::model::Gear) {
     rows.push(InputRow {
         key: format!("{name}.teeth"),
         written: gear.teeth.written.clone(),
@@ -123,7 +130,7 @@ fn gear_inputs(rows: &mut Vec<InputRow>, name: &str, gear: &crate::model::Gear) 
 }
 
 /// The lubricant's inputs as the scene gave them (or as the catalogue read them at temperature).
-fn lubricant_inputs(rows: &mut Vec<InputRow>, l: &crate::model::Lubricant) {
+pub(super) fn lubricant_inputs(rows: &mut Vec<InputRow>, l: &crate::model::Lubricant) {
     input(rows, "lubricant.dynamic_viscosity", &l.dynamic_viscosity, "Pa*s");
     if let Some(d) = &l.density {
         input(rows, "lubricant.density", d, "kg/m^3");
