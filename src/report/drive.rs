@@ -53,6 +53,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         shafts: super::drive_inputs::shaft_inputs(layout),
         overall_ratio: crate::drive::walk::overall_ratio(layout),
         oil: super::drive_inputs::oil_rows(scene),
+        inputs: super::drive_inputs::scene_inputs(scene, drive),
         lubricant: scene.lubricant.as_ref().filter(|_| !drive.pairs.is_empty()).map(|l| {
             let mesh = drive.mesh(0, Some(l));
             super::losses::lubricant_report(l, &mesh.tribology(mesh.reduced_modulus()))

@@ -3,6 +3,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::scene::InputRow;
 use crate::drive::{Drive, Hand};
 use crate::model::{Scene, SceneDrive};
 
@@ -219,6 +220,29 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
             }),
         })
         .collect()
+}
+
+/// Every input the drive's stages, oil and housing were given, as written and in SI, as a pair's
+/// Scene table lists its own (`super::scene::pair_inputs`): each stage's pair keyed from the
+/// stage's name (`first.gears.module`, `first.pinion.teeth`; a planetary stage's `sun`, `planet`
+/// and, from its second mesh, `ring`), then the lubricant and the housing.
+pub(super) fn scene_inputs(scene: &Scene, drive: &SceneDrive) -> Vec<InputRow> {
+    let mut rows = Vec::new();
+    for (k, stage) in drive.layout.stages.iter().enumerate() {
+        let meshes = stage.model().mesh_gears();
+        let prefix = format!("{}.", stage.name);
+        super::scene::pair_inputs(&mut rows, &drive.pairs[k], (&prefix, meshes[0]));
+        if let (Some(ring), Some(names)) = (&drive.ring_pairs[k], meshes.get(1)) {
+            super::scene::gear_inputs(&mut rows, &format!("{prefix}{}", names[1]), &ring.wheel);
+        }
+    }
+    if let Some(l) = &scene.lubricant {
+        super::scene::lubricant_inputs(&mut rows, l);
+    }
+    if let Some(h) = &scene.housing {
+        super::gearbox_inputs::housing_inputs(&mut rows, h);
+    }
+    rows
 }
 
 /// (what, value, unit) of the sump's oil temperature (the lubricant's values are its

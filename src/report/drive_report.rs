@@ -92,6 +92,10 @@ pub struct DriveReport {
     /// its data sheet values and their source: the same report a pair's gives.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubricant: Option<super::losses::LubricantReport>,
+    /// Every input of the stages, the oil and the housing as written and in SI (a pair's Scene
+    /// table, keyed by stage).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub inputs: Vec<super::scene::InputRow>,
     pub laws: Vec<String>,
     /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
     /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full.

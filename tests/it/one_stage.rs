@@ -215,7 +215,9 @@ fn every_pair_lowers_as_its_one_stage_drive() {
 /// on stage `pair`'s mesh is the pair's (a drive of several stages warns of every stage's meshes
 /// alike, tests/specs/ok/planetary_helical.gear's snapshot); the oil's and the housing's are word
 /// for word the same. And the drive's report reads the oil as the pair's does: its lubricant report
-/// (η, ν, ρ, α, X_L, the data sheet and the source) is the pair's, field for field.
+/// (η, ν, ρ, α, X_L, the data sheet and the source) is the pair's, field for field, and its Scene
+/// table lists every input of the pair's gears, oil and housing as the pair's does (as written and
+/// in SI), the gears' keyed from stage `pair`.
 #[test]
 fn every_pair_warns_as_its_one_stage_drive() {
     const MESH: [&str; 8] = [
@@ -229,7 +231,7 @@ fn every_pair_warns_as_its_one_stage_drive() {
         "helix angle",
     ];
     const SCENE: [&str; 4] = ["oil temperature", "the lubricant's dynamic", "the housing's", "the oil cooler"];
-    let (mut mesh, mut scene, mut oils) = (0, 0, 0);
+    let (mut mesh, mut scene, mut oils, mut inputs) = (0, 0, 0, 0);
     for path in pair_scenes() {
         let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
         let source = std::fs::read_to_string(&path).unwrap();
@@ -251,6 +253,22 @@ fn every_pair_warns_as_its_one_stage_drive() {
             assert_eq!(json(&pair_report.lubricant), json(&drive_report.lubricant), "{name}: the lubricant");
             oils += usize::from(drive_report.lubricant.is_some());
         }
+        // Every input the pair's Scene table lists of its gears, its oil and its housing is the
+        // drive's, as written and in SI (the gears' keyed from stage `pair`).
+        let row_json = |r: &gearloss::report::InputRow| serde_json::to_string(r).unwrap();
+        let drive_rows: Vec<String> = drive_report.inputs.iter().map(row_json).collect();
+        for r in &pair_report.inputs {
+            let gear = ["gears.", "pinion.", "wheel."].iter().any(|k| r.key.starts_with(k));
+            if !(gear || r.key.starts_with("lubricant.") || r.key.starts_with("housing.")) {
+                continue;
+            }
+            let mut mine = r.clone();
+            if gear {
+                mine.key = format!("pair.{}", r.key);
+            }
+            assert!(drive_rows.contains(&row_json(&mine)), "{name}: the drive does not list {}", row_json(&mine));
+            inputs += 1;
+        }
         let stage = "stage `pair`: ";
         for w in of_pair.iter().filter(|w| MESH.iter().any(|m| w.starts_with(m))) {
             assert!(of_drive.contains(&format!("{stage}{w}")), "{name}: the drive does not warn: {w}\n{of_drive:#?}");
@@ -264,8 +282,8 @@ fn every_pair_warns_as_its_one_stage_drive() {
             scene += 1;
         }
     }
-    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants");
-    assert!(mesh >= 2 && scene >= 3 && oils >= 15, "{mesh} mesh warnings, {scene} of the oil and the housing, {oils}");
+    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants, {inputs} inputs");
+    assert!(mesh >= 2 && scene >= 3 && oils >= 15 && inputs >= 200, "{mesh}, {scene}, {oils}, {inputs}");
 }
 
 /// A pair loaded past Hertz's line contact (FZG type C at 30 000 N·m: b_H > R/10 at B) is flagged

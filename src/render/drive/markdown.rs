@@ -50,6 +50,12 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         md!(out);
     }
     inputs(&mut out, r);
+    if !r.inputs.is_empty() {
+        md!(out, "## Scene\n");
+        md!(out, "Every input of the stages, the oil and the housing, as written and in SI.\n");
+        crate::render::markdown::inputs_table(&mut out, &r.inputs);
+        md!(out);
+    }
     thermal(&mut out, r);
     duty(&mut out, r);
     if let Some(c) = &r.cycle {
