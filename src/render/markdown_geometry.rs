@@ -4,17 +4,24 @@
 use super::markup::md;
 
 use super::table::{fixed, header, row, scaled};
-use crate::report::Report;
+use crate::report::units::Units;
+use crate::report::{GeometryReport, Report};
 
 /// The geometry section.
 pub(super) fn geometry_section(out: &mut String, r: &Report) {
     md!(out, "\n## Geometry\n");
-    pair_table(out, r);
-    md!(out);
-    gears_table(out, r);
+    geometry_tables(out, &r.geometry, r.units(), ["pinion", "wheel"]);
     if let Some(h) = &r.geometry.helical {
         super::markdown_helical::plane_of_action(out, h, &r.plots, r.units());
     }
+}
+
+/// The pair's table and its gears' (named `names`), in units `u`: a pair's Geometry section and
+/// each stage mesh's of a drive.
+pub(crate) fn geometry_tables(out: &mut String, g: &GeometryReport, u: Units, names: [&str; 2]) {
+    pair_table(out, g, u);
+    md!(out);
+    gears_table(out, g, u, names);
 }
 
 /// A row of the pair's table: quantity, symbol, value.
@@ -22,14 +29,14 @@ type PairRow = (&'static str, &'static str, String);
 
 /// The pair's quantities, with the points of the path of contact in their order from T1 after the
 /// line of action.
-fn pair_table(out: &mut String, r: &Report) {
+fn pair_table(out: &mut String, g: &GeometryReport, u: Units) {
     header(out, &["quantity", "symbol", "value"]);
-    let rows = pair_rows(r);
+    let rows = pair_rows(g, u);
     let (before, after) = rows.split_at(rows.iter().position(|r| r.1 == "T1T2").map_or(rows.len(), |i| i + 1));
     for (q, s, v) in before {
         row(out, &[q.to_string(), s.to_string(), v.clone()]);
     }
-    for (_, q, s, v) in contact_points(r) {
+    for (_, q, s, v) in contact_points(g, u) {
         row(out, &[q, s, v]);
     }
     for (q, s, v) in after {
@@ -39,10 +46,10 @@ fn pair_table(out: &mut String, r: &Report) {
 
 /// The points of the path of contact (A, B, P, D, E and where 3 ↔ 2 pairs change), sorted from T1:
 /// (distance, quantity, symbol, value).
-fn contact_points(r: &Report) -> Vec<(f64, String, String, String)> {
-    let len = r.units().length();
+fn contact_points(g: &GeometryReport, u: Units) -> Vec<(f64, String, String, String)> {
+    let len = u.length();
     let mm = |q: &crate::report::number::Q| len.with(q.si(), 4);
-    let pts = &r.geometry.points_from_t1;
+    let pts = &g.points_from_t1;
     let mut rows: Vec<(f64, String, String, String)> =
         vec![(pts.A.si(), "start of contact".into(), "T1A".into(), mm(&pts.A))];
     if let Some(b) = &pts.B {
@@ -63,10 +70,8 @@ fn contact_points(r: &Report) -> Vec<(f64, String, String, String)> {
 
 /// The pair's quantities: a spur pair's, a helical pair's normal and transverse values in their
 /// place, the diametral pitch of an inch pair.
-fn pair_rows(r: &Report) -> Vec<PairRow> {
-    let g = &r.geometry;
+fn pair_rows(g: &GeometryReport, u: Units) -> Vec<PairRow> {
     let deg = 180.0 / std::f64::consts::PI;
-    let u = r.units();
     let len = u.length();
     let mut rows: Vec<PairRow> = vec![
         ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
@@ -118,9 +123,8 @@ fn pair_rows(r: &Report) -> Vec<PairRow> {
 }
 
 /// Each gear's numbers, diameters and tip.
-fn gears_table(out: &mut String, r: &Report) {
-    let g = &r.geometry;
-    let len = r.units().length();
+fn gears_table(out: &mut String, g: &GeometryReport, u: Units, names: [&str; 2]) {
+    let len = u.length();
     let cols = [
         "gear".to_string(),
         "z".into(),
@@ -135,14 +139,14 @@ fn gears_table(out: &mut String, r: &Report) {
         "x_min".into(),
     ];
     header(out, &cols);
-    for (name, gr) in [("pinion", &g.pinion), ("wheel", &g.wheel)] {
+    for (k, (name, gr)) in names.into_iter().zip([&g.pinion, &g.wheel]).enumerate() {
         // A ring is cut by a pinion-type cutter: a rack's undercut limit says nothing of it.
-        let ring = g.internal && name == "wheel";
-        let name = if ring { "wheel (ring)" } else { name };
+        let ring = g.internal && k == 1;
+        let name = if ring && name == "wheel" { "wheel (ring)".to_string() } else { name.to_string() };
         row(
             out,
             &[
-                name.into(),
+                name,
                 gr.teeth.to_string(),
                 fixed(gr.profile_shift.0, 4),
                 len.q(&gr.pitch_diameter, 4),

@@ -100,7 +100,21 @@ pub(super) fn gear_report(g: &PairGeometry, i: usize) -> GearReport {
 }
 
 pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
-    let g = &eval.geometry;
+    let helical = super::helical::helical_report(&eval.geometry, super::helical::axial_forces(eval));
+    pair_geometry_report(&eval.geometry, helical, eval.ohlendorf_loss_factor, eval.reduced_modulus, eval.sharing)
+}
+
+/// The geometry report of pair `g` (with its helical report, `helical`, for a helical pair) and
+/// what its evaluation reads beside it: Ohlendorf's H_V (as
+/// the pair's load sharing integrates it), E' and the load sharing. A pair's report and each stage
+/// mesh of a drive's.
+pub(super) fn pair_geometry_report(
+    g: &PairGeometry,
+    helical: Option<super::helical::HelicalReport>,
+    h_v: f64,
+    e_r: f64,
+    sharing: LoadSharing,
+) -> GeometryReport {
     let p = &g.points;
     GeometryReport {
         module: m(g.module),
@@ -137,10 +151,10 @@ pub(super) fn geometry_report(eval: &Evaluation) -> GeometryReport {
         transverse_contact_ratio: Num(g.contact_ratio),
         overlap_ratio: Num(g.overlap_ratio),
         total_contact_ratio: Num(g.total_contact_ratio),
-        helical: super::helical::helical_report(eval),
-        ohlendorf_loss_factor: Num(eval.ohlendorf_loss_factor),
-        reduced_modulus: pa(eval.reduced_modulus),
-        load_sharing: eval.sharing,
+        helical,
+        ohlendorf_loss_factor: Num(h_v),
+        reduced_modulus: pa(e_r),
+        load_sharing: sharing,
         internal: g.internal,
         pinion: gear_report(g, 0),
         wheel: gear_report(g, 1),

@@ -55,8 +55,19 @@ pub struct HelicalReport {
 /// Instants at which the plot draws the contact lines.
 pub(crate) const PLOTTED_INSTANTS: [f64; 4] = [0.0, 0.25, 0.5, 0.75];
 
-pub(super) fn helical_report(eval: &Evaluation) -> Option<HelicalReport> {
+/// F_a = F_t tan β of pair `g` at each of a pair's operating points.
+pub(super) fn axial_forces(eval: &Evaluation) -> Vec<AxialForce> {
     let g = &eval.geometry;
+    eval.cases
+        .iter()
+        .map(|c| AxialForce {
+            operating_point: c.label.clone(),
+            value: Q::new(g.axial_force(c.state.pinion_torque), "N"),
+        })
+        .collect()
+}
+
+pub(super) fn helical_report(g: &crate::geometry::PairGeometry, axial_force: Vec<AxialForce>) -> Option<HelicalReport> {
     if !g.is_helical() {
         return None;
     }
@@ -95,14 +106,7 @@ pub(super) fn helical_report(eval: &Evaluation) -> Option<HelicalReport> {
         contact_length_max: LengthAt { value: m(max.1), tau: Num(max.0) },
         lines_in_contact: [counts.clone().min().unwrap_or(0), counts.max().unwrap_or(0)],
         regions,
-        axial_force: eval
-            .cases
-            .iter()
-            .map(|c| AxialForce {
-                operating_point: c.label.clone(),
-                value: Q::new(g.axial_force(c.state.pinion_torque), "N"),
-            })
-            .collect(),
+        axial_force,
         path: [g.points.a, g.points.p, g.points.e, 0.5 * g.face_width],
         lines_at,
         length_curve,
