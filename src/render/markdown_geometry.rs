@@ -74,7 +74,7 @@ fn pair_rows(g: &GeometryReport, u: Units) -> Vec<PairRow> {
     let deg = 180.0 / std::f64::consts::PI;
     let len = u.length();
     let mut rows: Vec<PairRow> = vec![
-        ("module", "m", format!("{} mm", scaled(&g.module, 1e3, 4))),
+        ("module", "m", len.with(g.module.si(), 4)),
         ("pressure angle", "α", format!("{}°", scaled(&g.pressure_angle, deg, 4))),
         ("gear ratio", "u = z2/z1", fixed(g.gear_ratio.0, 4)),
         (
@@ -98,7 +98,7 @@ fn pair_rows(g: &GeometryReport, u: Units) -> Vec<PairRow> {
         let helical_rows: Vec<PairRow> = vec![
             ("helix angle (reference circle)", "β", format!("{}°", scaled(&g.helix_angle, deg, 4))),
             ("base helix angle", "β_b", format!("{}°", scaled(&h.base_helix_angle, deg, 4))),
-            ("transverse module", "m_t", format!("{} mm", scaled(&h.transverse_module, 1e3, 4))),
+            ("transverse module", "m_t", len.with(h.transverse_module.si(), 4)),
             ("transverse pressure angle", "α_t", format!("{}°", scaled(&h.transverse_pressure_angle, deg, 4))),
         ];
         rows.splice(at..at, helical_rows);

@@ -254,7 +254,7 @@ fn inch_scenes_are_reported_in_inch_units() {
     assert!((r.geometry.face_width.si() - 0.03175).abs() < 1e-15);
     let md = gearloss::render::markdown::render_markdown(&r);
     for cell in
-        ["| face width | b | 1.2500 in |", "| diametral pitch | P = 1/m | 8.0000 1/in |", "| module | m | 3.1750 mm |"]
+        ["| face width | b | 1.2500 in |", "| diametral pitch | P = 1/m | 8.0000 1/in |", "| module | m | 0.12500 in |"]
     {
         assert!(md.contains(cell), "{cell} missing");
     }
