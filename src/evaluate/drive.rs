@@ -26,6 +26,8 @@ pub struct DriveEvaluation {
     /// The vehicle's drive cycle, when the scene asks for it.
     pub cycle: Option<super::drive_cycle::CycleEvaluation>,
     pub tally: DriveTally,
+    /// Each stage's meshes' H_V as the walk integrates them (`DriveSetup::loss_factors`).
+    pub loss_factors: Vec<Vec<f64>>,
 }
 
 /// Operating points (rows) a drive's report shows in full; the records hold every one.
@@ -214,7 +216,7 @@ fn finish(
         .as_ref()
         .filter(|_| scene.analyses.drive_cycle.is_some())
         .map(|spec| super::drive_cycle::evaluate_cycle(scene, drive, spec));
-    DriveEvaluation { rows, map, map_best, validity, balances, duty, cycle, tally }
+    DriveEvaluation { rows, map, map_best, validity, balances, duty, cycle, tally, loss_factors: setup.loss_factors() }
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the

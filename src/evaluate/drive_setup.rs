@@ -114,6 +114,12 @@ impl<'a> DriveSetup<'a> {
         self.drive.layout.operating
     }
 
+    /// Each stage's meshes' H_V as the walk integrates them, the pinion driving (a planetary
+    /// stage's planet–ring mesh after its sun–planet mesh).
+    pub(crate) fn loss_factors(&self) -> Vec<Vec<f64>> {
+        self.stages.iter().map(|s| std::iter::once(s.h_v[0]).chain(s.ring.as_ref().map(|r| r.h_v)).collect()).collect()
+    }
+
     /// The first stage with a result at `point` no gear mesh can have or whose formulas no longer
     /// hold ([`super::drive_plausibility`]).
     pub(crate) fn implausible(&self, point: &DrivePoint) -> Option<super::drive_plausibility::StageImplausible> {

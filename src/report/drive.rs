@@ -54,6 +54,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         overall_ratio: crate::drive::walk::overall_ratio(layout),
         oil: super::drive_inputs::oil_rows(scene),
         inputs: super::drive_inputs::scene_inputs(scene, drive),
+        stage_geometry: super::drive_geometry::stage_geometry(drive, scene.lubricant.as_ref(), &eval.loss_factors),
         lubricant: scene.lubricant.as_ref().filter(|_| !drive.pairs.is_empty()).map(|l| {
             let mesh = drive.mesh(0, Some(l));
             super::losses::lubricant_report(l, &mesh.tribology(mesh.reduced_modulus()))

@@ -96,6 +96,10 @@ pub struct DriveReport {
     /// table, keyed by stage).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub inputs: Vec<super::scene::InputRow>,
+    /// Each stage mesh's geometry, as a pair's report gives its own (not `geometry`: that key
+    /// marks a pair's report.json when `gearloss render` reads one back).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stage_geometry: Vec<super::drive_geometry::StageGeometryReport>,
     pub laws: Vec<String>,
     /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
     /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full.

@@ -7,6 +7,7 @@ pub(crate) mod drive_cycle;
 pub(crate) mod drive_cycle_series;
 pub(crate) mod drive_cycle_totals;
 pub(crate) mod drive_findings;
+pub(crate) mod drive_geometry;
 pub(crate) mod drive_inputs;
 pub(crate) mod drive_map;
 pub(crate) mod drive_oil_sweep;

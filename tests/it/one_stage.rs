@@ -217,7 +217,8 @@ fn every_pair_lowers_as_its_one_stage_drive() {
 /// for word the same. And the drive's report reads the oil as the pair's does: its lubricant report
 /// (η, ν, ρ, α, X_L, the data sheet and the source) is the pair's, field for field, and its Scene
 /// table lists every input of the pair's gears, oil and housing as the pair's does (as written and
-/// in SI), the gears' keyed from stage `pair`.
+/// in SI), the gears' keyed from stage `pair`, and its stage geometry is the pair's (H_V, E', every
+/// diameter and point of the path of contact) field for field.
 #[test]
 fn every_pair_warns_as_its_one_stage_drive() {
     const MESH: [&str; 8] = [
@@ -231,7 +232,7 @@ fn every_pair_warns_as_its_one_stage_drive() {
         "helix angle",
     ];
     const SCENE: [&str; 4] = ["oil temperature", "the lubricant's dynamic", "the housing's", "the oil cooler"];
-    let (mut mesh, mut scene, mut oils, mut inputs) = (0, 0, 0, 0);
+    let (mut mesh, mut scene, mut oils, mut inputs, mut geometries) = (0, 0, 0, 0, 0);
     for path in pair_scenes() {
         let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
         let source = std::fs::read_to_string(&path).unwrap();
@@ -253,6 +254,20 @@ fn every_pair_warns_as_its_one_stage_drive() {
             assert_eq!(json(&pair_report.lubricant), json(&drive_report.lubricant), "{name}: the lubricant");
             oils += usize::from(drive_report.lubricant.is_some());
         }
+        // The stage's geometry is the pair's, field for field (H_V as the walk integrates it), but
+        // for what a drive's report leaves to each point's table or draws nowhere.
+        let lean = |g: &gearloss::report::GeometryReport| {
+            let mut v = serde_json::to_value(g).unwrap();
+            if let Some(h) = v.get_mut("helical").and_then(|h| h.as_object_mut()) {
+                for k in ["axial_force", "lines_at", "length_curve"] {
+                    h.remove(k);
+                }
+            }
+            v
+        };
+        assert_eq!(drive_report.stage_geometry.len(), 1, "{name}");
+        assert_eq!(lean(&pair_report.geometry), lean(&drive_report.stage_geometry[0].geometry), "{name}: the geometry");
+        geometries += 1;
         // Every input the pair's Scene table lists of its gears, its oil and its housing is the
         // drive's, as written and in SI (the gears' keyed from stage `pair`).
         let row_json = |r: &gearloss::report::InputRow| serde_json::to_string(r).unwrap();
@@ -282,8 +297,11 @@ fn every_pair_warns_as_its_one_stage_drive() {
             scene += 1;
         }
     }
-    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants, {inputs} inputs");
-    assert!(mesh >= 2 && scene >= 3 && oils >= 15 && inputs >= 200, "{mesh}, {scene}, {oils}, {inputs}");
+    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants, {inputs} inputs, {geometries} geometries");
+    assert!(
+        mesh >= 2 && scene >= 3 && oils >= 15 && inputs >= 200 && geometries >= 15,
+        "{mesh}, {scene}, {oils}, {inputs}"
+    );
 }
 
 /// A pair loaded past Hertz's line contact (FZG type C at 30 000 N·m: b_H > R/10 at B) is flagged

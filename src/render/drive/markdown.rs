@@ -56,6 +56,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         crate::render::markdown::inputs_table(&mut out, &r.inputs);
         md!(out);
     }
+    stage_geometry(&mut out, r);
     thermal(&mut out, r);
     duty(&mut out, r);
     if let Some(c) = &r.cycle {
@@ -304,6 +305,22 @@ fn thermal(out: &mut String, r: &DriveReport) {
         );
     }
     md!(out);
+}
+
+/// Each stage mesh's geometry, in the pair's tables.
+fn stage_geometry(out: &mut String, r: &DriveReport) {
+    if r.stage_geometry.is_empty() {
+        return;
+    }
+    md!(out, "## Stage geometry\n");
+    md!(out, "Each stage's mesh as a pair's report gives its own: the pair with its pinion in the pinion's place, H_V as the walk integrates it.\n");
+    for s in &r.stage_geometry {
+        let mesh = s.mesh.as_ref().map_or_else(String::new, |m| format!(", {m} mesh"));
+        md!(out, "### Stage `{}`{mesh}\n", s.stage);
+        let names = [s.gears[0].as_str(), s.gears[1].as_str()];
+        crate::render::markdown_geometry::geometry_tables(out, &s.geometry, Units::of_system(r.unit_system), names);
+        md!(out);
+    }
 }
 
 fn duty(out: &mut String, r: &DriveReport) {
