@@ -179,18 +179,13 @@ pub(super) fn unsettled_rows(
 /// ([`super::mesh_checks::mesh_warnings`]), each naming its stage.
 fn mesh_findings(drive: &SceneDrive, units: Units) -> Vec<Finding> {
     let mut out = Vec::new();
-    for (k, stage) in drive.layout.stages.iter().enumerate() {
-        let meshes = stage.model().mesh_gears();
-        for (mesh, names) in meshes.iter().enumerate() {
-            let Ok(g) = drive.mesh_pair(k, mesh).geometry() else { continue };
-            // A stage of several meshes names the mesh (`sun–planet`).
-            let mesh_words =
-                if meshes.len() > 1 { format!(", {}–{} mesh", names[0], names[1]) } else { String::new() };
-            out.extend(super::mesh_checks::mesh_warnings(&g, *names, units.length()).into_iter().map(|mut f| {
-                f.message = format!("stage `{}`{mesh_words}: {}", stage.name, f.message);
-                f
-            }));
-        }
+    for m in super::drive_geometry::stage_meshes(drive) {
+        // A stage of several meshes names the mesh (`sun–planet`).
+        let mesh_words = m.label.map_or_else(String::new, |l| format!(", {l} mesh"));
+        out.extend(super::mesh_checks::mesh_warnings(&m.geometry, m.gears, units.length()).into_iter().map(|mut f| {
+            f.message = format!("stage `{}`{mesh_words}: {}", m.stage, f.message);
+            f
+        }));
     }
     out
 }

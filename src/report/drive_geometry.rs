@@ -8,6 +8,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::geometry::GeometryReport;
+use crate::geometry::PairGeometry;
 use crate::model::{LoadSharing, Lubricant, SceneDrive};
 
 /// One stage mesh's geometry.
@@ -22,6 +23,33 @@ pub struct StageGeometryReport {
     pub geometry: GeometryReport,
 }
 
+/// One mesh of a drive's stage with its pair's geometry (the pinion in the pinion's place).
+pub(super) struct StageMeshGeometry<'a> {
+    /// The stage's index and name, and the mesh's index in its stage.
+    pub k: usize,
+    pub stage: &'a str,
+    pub mesh: usize,
+    /// The mesh's name where its stage has several (`sun–planet`), and its gears.
+    pub label: Option<String>,
+    pub gears: [&'static str; 2],
+    pub geometry: PairGeometry,
+}
+
+/// Every stage mesh of `drive` whose pair has a geometry (lowering has built each), in the
+/// drive's order: what its geometry warnings and its geometry report are read from.
+pub(super) fn stage_meshes(drive: &SceneDrive) -> Vec<StageMeshGeometry<'_>> {
+    let mut out = Vec::new();
+    for (k, stage) in drive.layout.stages.iter().enumerate() {
+        let meshes = stage.model().mesh_gears();
+        for (mesh, names) in meshes.iter().enumerate() {
+            let Ok(geometry) = drive.mesh_pair(k, mesh).geometry() else { continue };
+            let label = (meshes.len() > 1).then(|| format!("{}–{}", names[0], names[1]));
+            out.push(StageMeshGeometry { k, stage: &stage.name, mesh, label, gears: *names, geometry });
+        }
+    }
+    out
+}
+
 /// Every stage mesh's geometry; `loss_factors` are each stage's meshes' H_V as the evaluation's
 /// walk integrates them (the pinion driving; a planetary stage's second mesh after its first).
 pub(super) fn stage_geometry(
@@ -30,29 +58,24 @@ pub(super) fn stage_geometry(
     loss_factors: &[Vec<f64>],
 ) -> Vec<StageGeometryReport> {
     let mut out = Vec::new();
-    for (k, stage) in drive.layout.stages.iter().enumerate() {
-        let meshes = stage.model().mesh_gears();
-        for (mesh, names) in meshes.iter().enumerate() {
-            let (Ok(g), Some(h_v)) = (drive.mesh_pair(k, mesh).geometry(), loss_factors[k].get(mesh)) else {
-                continue;
-            };
-            // The stage's own pair reads its load sharing; a planet–ring mesh shares equally.
-            let (e_r, sharing) = match mesh {
-                0 => (drive.mesh(k, lubricant).reduced_modulus(), drive.pairs[k].load_sharing),
-                _ => (drive.ring_mesh(k, lubricant).map_or(0.0, |m| m.reduced_modulus()), LoadSharing::Equal),
-            };
-            let helical = super::helical::helical_report(&g, Vec::new()).map(|mut h| {
-                h.lines_at.clear();
-                h.length_curve = Default::default();
-                h
-            });
-            out.push(StageGeometryReport {
-                stage: stage.name.clone(),
-                mesh: (meshes.len() > 1).then(|| format!("{}–{}", names[0], names[1])),
-                gears: names.map(str::to_string),
-                geometry: super::geometry::pair_geometry_report(&g, helical, *h_v, e_r, sharing),
-            });
-        }
+    for m in stage_meshes(drive) {
+        let Some(h_v) = loss_factors[m.k].get(m.mesh) else { continue };
+        // The stage's own pair reads its load sharing; a planet–ring mesh shares equally.
+        let (e_r, sharing) = match m.mesh {
+            0 => (drive.mesh(m.k, lubricant).reduced_modulus(), drive.pairs[m.k].load_sharing),
+            _ => (drive.ring_mesh(m.k, lubricant).map_or(0.0, |r| r.reduced_modulus()), LoadSharing::Equal),
+        };
+        let helical = super::helical::helical_report(&m.geometry, Vec::new()).map(|mut h| {
+            h.lines_at.clear();
+            h.length_curve = Default::default();
+            h
+        });
+        out.push(StageGeometryReport {
+            stage: m.stage.to_string(),
+            mesh: m.label,
+            gears: m.gears.map(str::to_string),
+            geometry: super::geometry::pair_geometry_report(&m.geometry, helical, *h_v, e_r, sharing),
+        });
     }
     out
 }
