@@ -4,11 +4,9 @@
 
 pub(crate) mod catalog;
 pub mod internal;
-pub(crate) mod kind_id;
 pub mod parallel;
 pub mod planetary;
 pub(crate) mod stage_kinematics;
 
-pub use catalog::{StageKindEntry, STAGE_KINDS};
-pub use kind_id::{StageKind, StageKindId};
+pub use catalog::{StageKind, StageKindEntry, StageKindId, STAGE_KINDS};
 pub use stage_kinematics::StageKinematics;
