@@ -84,7 +84,7 @@ fn plane(
     Ok(())
 }
 
-/// The figure; Err when the report has no helical geometry.
+/// The figure of a pair's report; Err when the report has no helical geometry.
 pub fn plane_of_action(r: &Report) -> Result<String, String> {
     let Some(h) = &r.geometry.helical else { return Err("the pair is not helical".into()) };
     let mu = r
@@ -93,8 +93,19 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
         .first()
         .and_then(|p| p.mu.first())
         .map(|(l, v)| (l.as_str(), r.curves.u.as_slice(), v.as_slice()));
+    figure(&format!("{}: contact lines and their length", r.title), h, mu, r.units().length())
+}
+
+/// The figure of a helical mesh `h` titled `title`: the plane of action (coloured by `mu`, the
+/// law's label, u and μ(u), where given) above L(t); a pair's plot and each helical stage mesh's
+/// of a drive.
+pub(crate) fn figure(
+    title: &str,
+    h: &HelicalReport,
+    mu: Option<(&str, &[f64], &[f64])>,
+    len: crate::report::units::Shown,
+) -> Result<String, String> {
     let [tau, total, approach, recess] = &h.length_curve;
-    let len = r.units().length();
     let mm = |v: &Vec<f64>| v.iter().map(|x| len.value(*x)).collect::<Vec<_>>();
     let panel = Panel {
         y_label: len.titled("contact length"),
@@ -112,7 +123,7 @@ pub fn plane_of_action(r: &Report) -> Result<String, String> {
         let root = SVGBackend::with_string(&mut svg, (1040, 620)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let root = root
-            .titled(&format!("{}: contact lines and their length", r.title), ("sans-serif", 18))
+            .titled(title, ("sans-serif", super::panel::fitted(title, 1040, 18.0)))
             .map_err(|e| e.to_string())?;
         let (top, bottom) = root.split_vertically(340);
         let (top, top_legend) = top.split_horizontally(880);
