@@ -12,7 +12,7 @@ pub(super) fn geometry_section(out: &mut String, r: &Report) {
     md!(out, "\n## Geometry\n");
     geometry_tables(out, &r.geometry, r.units(), ["pinion", "wheel"]);
     if let Some(h) = &r.geometry.helical {
-        super::markdown_helical::plane_of_action(out, h, &r.plots, r.units());
+        super::markdown_helical::plane_of_action(out, "### Plane of action (helical pair)", h, &r.plots, r.units());
     }
 }
 

@@ -24,9 +24,16 @@ fn side(s: PitchSide) -> &'static str {
     }
 }
 
-pub(super) fn plane_of_action(out: &mut String, h: &HelicalReport, plots: &[PlotRef], u: crate::report::units::Units) {
-    md!(out, "\n### Plane of action (helical pair)\n");
-    for p in plots.iter().filter(|p| p.kind == crate::report::PlotKind::PlaneOfAction) {
+/// The section under `heading` (`### Plane of action (helical pair)`), its figure from `plots`.
+pub(crate) fn plane_of_action<'a>(
+    out: &mut String,
+    heading: &str,
+    h: &HelicalReport,
+    plots: impl IntoIterator<Item = &'a PlotRef>,
+    u: crate::report::units::Units,
+) {
+    md!(out, "\n{heading}\n");
+    for p in plots.into_iter().filter(|p| p.kind == crate::report::PlotKind::PlaneOfAction) {
         md!(out, "![{}]({})\n", p.title, p.file);
     }
     md!(

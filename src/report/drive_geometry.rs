@@ -1,13 +1,14 @@
 //! Each stage mesh's geometry in a drive's report, as a pair's report gives its own
 //! (`super::geometry::pair_geometry_report`): the pair with the pinion in the pinion's place (a
 //! planetary stage's sun–planet and planet–ring meshes each), its H_V as the walk integrates it,
-//! E' and the load sharing the walk reads. A helical mesh's numbers without the plot data of a
-//! pair's plane of action (a drive draws none) and without axial forces by point (each point's
-//! stage table has F_a).
+//! E' and the load sharing the walk reads. A helical mesh's plane of action is drawn as a pair's
+//! is (its own plot, named in [`StageGeometryReport::plot`]); its axial forces by point are left to
+//! each point's stage table, which has F_a.
 
 use serde::{Deserialize, Serialize};
 
 use super::geometry::GeometryReport;
+use super::scene_report::{PlotKind, PlotRef};
 use crate::geometry::PairGeometry;
 use crate::model::{LoadSharing, Lubricant, SceneDrive};
 
@@ -21,6 +22,9 @@ pub struct StageGeometryReport {
     /// The gears in the pinion's and the wheel's places.
     pub gears: [String; 2],
     pub geometry: GeometryReport,
+    /// A helical mesh's plane of action: its plot's file and title.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PlotRef>,
 }
 
 /// One mesh of a drive's stage with its pair's geometry (the pinion in the pinion's place).
@@ -65,17 +69,26 @@ pub(super) fn stage_geometry(
             0 => (drive.mesh(m.k, lubricant).reduced_modulus(), drive.pairs[m.k].load_sharing),
             _ => (drive.ring_mesh(m.k, lubricant).map_or(0.0, |r| r.reduced_modulus()), LoadSharing::Equal),
         };
-        let helical = super::helical::helical_report(&m.geometry, Vec::new()).map(|mut h| {
-            h.lines_at.clear();
-            h.length_curve = Default::default();
-            h
-        });
+        let helical = super::helical::helical_report(&m.geometry, Vec::new());
+        let plot = helical.is_some().then(|| plane_of_action_plot(m.stage, m.label.as_deref()));
         out.push(StageGeometryReport {
             stage: m.stage.to_string(),
             mesh: m.label,
             gears: m.gears.map(str::to_string),
             geometry: super::geometry::pair_geometry_report(&m.geometry, helical, *h_v, e_r, sharing),
+            plot,
         });
     }
     out
+}
+
+/// The plane-of-action plot of a helical stage mesh: `plane_of_action_<stage>[_<mesh>].svg`.
+fn plane_of_action_plot(stage: &str, mesh: Option<&str>) -> PlotRef {
+    let slug = super::slug::slug;
+    let file = match mesh {
+        Some(m) => format!("plane_of_action_{}_{}.svg", slug(stage), slug(&m.replace('–', " "))),
+        None => format!("plane_of_action_{}.svg", slug(stage)),
+    };
+    let mesh = mesh.map_or_else(String::new, |m| format!(", {m} mesh"));
+    PlotRef { kind: PlotKind::PlaneOfAction, file, title: format!("Stage `{stage}`{mesh}: contact lines and their length") }
 }

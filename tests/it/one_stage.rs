@@ -232,7 +232,7 @@ fn every_pair_warns_as_its_one_stage_drive() {
         "helix angle",
     ];
     const SCENE: [&str; 4] = ["oil temperature", "the lubricant's dynamic", "the housing's", "the oil cooler"];
-    let (mut mesh, mut scene, mut oils, mut inputs, mut geometries) = (0, 0, 0, 0, 0);
+    let (mut mesh, mut scene, mut oils, mut inputs, mut geometries, mut helical_plots) = (0, 0, 0, 0, 0, 0);
     for path in pair_scenes() {
         let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
         let source = std::fs::read_to_string(&path).unwrap();
@@ -254,20 +254,29 @@ fn every_pair_warns_as_its_one_stage_drive() {
             assert_eq!(json(&pair_report.lubricant), json(&drive_report.lubricant), "{name}: the lubricant");
             oils += usize::from(drive_report.lubricant.is_some());
         }
-        // The stage's geometry is the pair's, field for field (H_V as the walk integrates it), but
-        // for what a drive's report leaves to each point's table or draws nowhere.
+        // The stage's geometry is the pair's, field for field (H_V as the walk integrates it; a
+        // helical mesh's plane of action with the data its plot draws), but for the axial forces
+        // by point, which a drive's report leaves to each point's table.
         let lean = |g: &gearloss::report::GeometryReport| {
             let mut v = serde_json::to_value(g).unwrap();
             if let Some(h) = v.get_mut("helical").and_then(|h| h.as_object_mut()) {
-                for k in ["axial_force", "lines_at", "length_curve"] {
-                    h.remove(k);
-                }
+                h.remove("axial_force");
             }
             v
         };
         assert_eq!(drive_report.stage_geometry.len(), 1, "{name}");
-        assert_eq!(lean(&pair_report.geometry), lean(&drive_report.stage_geometry[0].geometry), "{name}: the geometry");
+        let stage = &drive_report.stage_geometry[0];
+        assert_eq!(lean(&pair_report.geometry), lean(&stage.geometry), "{name}: the geometry");
         geometries += 1;
+        // A helical pair's plane of action is drawn for its stage, as the pair's report draws it.
+        let plot = stage.plot.as_ref().map(|p| p.file.as_str());
+        assert_eq!(plot.is_some(), pair_report.geometry.helical.is_some(), "{name}: a plot iff helical");
+        if let Some(file) = plot {
+            let (_, drawn) = gearloss::run_drive::drive_report_files(&drive, drive.drive.as_ref().unwrap()).unwrap();
+            let svg = &drawn.files.iter().find(|(f, _)| f == file).unwrap_or_else(|| panic!("{name}: {file}")).1;
+            assert!(svg.contains("plane of action: contact lines at τ = 0, ¼, ½, ¾"), "{name}");
+            helical_plots += 1;
+        }
         // Every input the pair's Scene table lists of its gears, its oil and its housing is the
         // drive's, as written and in SI (the gears' keyed from stage `pair`).
         let row_json = |r: &gearloss::report::InputRow| serde_json::to_string(r).unwrap();
@@ -297,9 +306,9 @@ fn every_pair_warns_as_its_one_stage_drive() {
             scene += 1;
         }
     }
-    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants, {inputs} inputs, {geometries} geometries");
+    eprintln!("{mesh} mesh warnings, {scene} of the oil and the housing, {oils} lubricants, {inputs} inputs, {geometries} geometries, {helical_plots} planes of action");
     assert!(
-        mesh >= 2 && scene >= 3 && oils >= 15 && inputs >= 200 && geometries >= 15,
+        mesh >= 2 && scene >= 3 && oils >= 15 && inputs >= 200 && geometries >= 15 && helical_plots >= 3,
         "{mesh}, {scene}, {oils}, {inputs}"
     );
 }

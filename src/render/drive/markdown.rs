@@ -318,7 +318,11 @@ fn stage_geometry(out: &mut String, r: &DriveReport) {
         let mesh = s.mesh.as_ref().map_or_else(String::new, |m| format!(", {m} mesh"));
         md!(out, "### Stage `{}`{mesh}\n", s.stage);
         let names = [s.gears[0].as_str(), s.gears[1].as_str()];
-        crate::render::markdown_geometry::geometry_tables(out, &s.geometry, Units::of_system(r.unit_system), names);
+        let units = Units::of_system(r.unit_system);
+        crate::render::markdown_geometry::geometry_tables(out, &s.geometry, units, names);
+        if let Some(h) = &s.geometry.helical {
+            crate::render::markdown_helical::plane_of_action(out, "#### Plane of action", h, &s.plot, units);
+        }
         md!(out);
     }
 }

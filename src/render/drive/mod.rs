@@ -1,5 +1,6 @@
 //! The files of a drive's report folder: report.md ([`markdown`]), report.json (the serde data),
 //! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off),
+//! each helical stage mesh's plane_of_action_<stage>.svg (the figure of a helical pair's report),
 //! with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
 //! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
 
@@ -41,6 +42,13 @@ pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, Strin
     }
     if let Some(svg) = shaft_bending::moments(report) {
         files.push((shaft_bending::FILE.to_string(), svg?));
+    }
+    for s in &report.stage_geometry {
+        if let (Some(h), Some(p)) = (&s.geometry.helical, &s.plot) {
+            let len = crate::report::units::Units::of_system(report.unit_system).length();
+            let title = format!("{}: {}", report.title, p.title.replace('`', ""));
+            files.push((p.file.clone(), crate::render::svg::plane_of_action_figure(&title, h, None, len)?));
+        }
     }
     if let Some(c) = &report.cycle {
         files.push((crate::report::drive_cycle_series::FILE.to_string(), c.series.to_csv()));

@@ -18,6 +18,7 @@ pub use contact::{contact_state, film, point_friction};
 pub(crate) use contours::Field;
 pub use dynamics::{dynamics_point, free_response, stability_map, work_precision};
 pub use helical::plane_of_action;
+pub(crate) use helical::figure as plane_of_action_figure;
 pub(crate) use losses::draw_field;
 pub use losses::{efficiency_map as efficiency_contours, loss_budget};
 pub use maps::efficiency_map;
