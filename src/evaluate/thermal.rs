@@ -301,6 +301,29 @@ pub struct HeatBalanceCurve {
     pub balance: Balance,
 }
 
+/// The curve of `p_v` (W at θ in K) against what `housing` gives off, from ambient to the balance
+/// search's limit, at (operating point, law index, formulation): a pair's first detail point and a
+/// drive's first row.
+pub(crate) fn heat_balance_curve(
+    p_v: impl Fn(f64) -> f64,
+    housing: &Housing,
+    (case, law_index, formulation): (usize, usize, Formulation),
+) -> HeatBalanceCurve {
+    let top = thermal::balance::SEARCH_LIMIT;
+    let temperatures: Vec<f64> = (0..CURVE_POINTS)
+        .map(|i| housing.ambient + (top - housing.ambient) * i as f64 / (CURVE_POINTS - 1) as f64)
+        .collect();
+    HeatBalanceCurve {
+        case,
+        law_index,
+        formulation,
+        losses: temperatures.iter().map(|t| p_v(*t)).collect(),
+        dissipation: temperatures.iter().map(|t| housing.dissipation(*t).total).collect(),
+        temperatures,
+        balance: thermal::balance(p_v, housing),
+    }
+}
+
 /// The thermal results of the detail evaluation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThermalDetails {
@@ -316,20 +339,7 @@ pub(crate) fn thermal_details(scene: &Scene, setup: &Setup) -> Option<ThermalDet
     let f = setup.formulations.first().copied().unwrap_or(Formulation::External);
     let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
     let curve = setup.cases.first().filter(|_| wants_balance).map(|case| {
-        let top = thermal::balance::SEARCH_LIMIT;
-        let temperatures: Vec<f64> = (0..CURVE_POINTS)
-            .map(|i| housing.ambient + (top - housing.ambient) * i as f64 / (CURVE_POINTS - 1) as f64)
-            .collect();
-        let p_v = |t: f64| losses.at(spec, f, case.state, t).total();
-        HeatBalanceCurve {
-            case: case.index,
-            law_index: 0,
-            formulation: f,
-            losses: temperatures.iter().map(|t| p_v(*t)).collect(),
-            dissipation: temperatures.iter().map(|t| housing.dissipation(*t).total).collect(),
-            temperatures,
-            balance: thermal::balance(p_v, housing),
-        }
+        heat_balance_curve(|t: f64| losses.at(spec, f, case.state, t).total(), housing, (case.index, 0, f))
     });
     let fixed = if scene.operating.equilibrium.is_some() {
         None

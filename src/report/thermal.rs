@@ -207,6 +207,7 @@ fn law_words(scene: &Scene, law_index: usize, f: Formulation) -> String {
     format!("{}, {}", scene.friction[law_index].label(), f.name())
 }
 
+/// The heat balance of a pair's first detail point.
 pub(crate) fn heat_balance_report(
     scene: &Scene,
     eval: &Evaluation,
@@ -214,8 +215,14 @@ pub(crate) fn heat_balance_report(
     h: &Housing,
 ) -> HeatBalanceReport {
     let case = eval.cases.iter().find(|k| k.index == c.case).map_or_else(String::new, |k| k.label.clone());
+    heat_balance_at(format!("{case}, {}", law_words(scene, c.law_index, c.formulation)), c, h)
+}
+
+/// The heat balance of curve `c`, at the point, law and formulation `label` names (a pair's, a
+/// drive's).
+pub(crate) fn heat_balance_at(label: String, c: &HeatBalanceCurve, h: &Housing) -> HeatBalanceReport {
     HeatBalanceReport {
-        label: format!("{case}, {}", law_words(scene, c.law_index, c.formulation)),
+        label,
         temperature: c.temperatures.clone(),
         power_loss: c.losses.clone(),
         dissipation: c.dissipation.clone(),

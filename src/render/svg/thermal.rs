@@ -6,18 +6,24 @@
 use plotters::prelude::*;
 
 use super::panel::{plottable, PALETTE};
+use crate::report::thermal::{DutyCycleReport, HeatBalanceReport};
+use crate::report::units::Units;
 use crate::report::Report;
 
 fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
     e.to_string()
 }
 
-/// heat_balance.svg.
+/// heat_balance.svg of a pair's report.
 pub fn heat_balance(r: &Report) -> Result<String, String> {
     let h = r.heat_balance.as_ref().ok_or("the report has no heat balance")?;
+    heat_balance_figure(&r.title, h, r.units())
+}
+
+/// heat_balance.svg of the balance `h` in a report titled `title`, in units `u` (a pair's, a drive's).
+pub(crate) fn heat_balance_figure(title: &str, h: &HeatBalanceReport, u: Units) -> Result<String, String> {
     // Drawn up to 30 K beyond the limit or the balance, whichever is higher (the curve in report.json
     // runs to 200 °C).
-    let u = r.units();
     let (deg, w) = (u.temperature(), u.power());
     let limit = deg.value(h.max_oil_temperature.si());
     let right = limit.max(h.oil_temperature.as_ref().map_or(limit, |b| deg.value(b.si()))) + 30.0 * deg.per_kelvin();
@@ -33,7 +39,7 @@ pub fn heat_balance(r: &Report) -> Result<String, String> {
         let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let mut chart = ChartBuilder::on(&root)
-            .caption(format!("{}: heat balance at {}", r.title, h.label), ("sans-serif", 15))
+            .caption(format!("{title}: heat balance at {}", h.label), ("sans-serif", 15))
             .margin(14)
             .x_label_area_size(40)
             .y_label_area_size(70)
@@ -89,12 +95,17 @@ fn interpolate(x: &[f64], y: &[f64], at: f64) -> f64 {
     y[i - 1] + w * (y[i] - y[i - 1])
 }
 
-/// duty_cycle_temperature.svg.
+/// duty_cycle_temperature.svg of a pair's report.
 pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
     let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
+    duty_temperature_figure(&r.title, d, r.units())
+}
+
+/// duty_cycle_temperature.svg of the duty cycle `d` in a report titled `title`, in units `u`.
+pub(crate) fn duty_temperature_figure(title: &str, d: &DutyCycleReport, u: Units) -> Result<String, String> {
     let s = d.samples.as_ref().ok_or("the duty cycle has no transient")?;
     let minutes: Vec<f64> = s.time.iter().map(|t| t / 60.0).collect();
-    let deg = r.units().temperature();
+    let deg = u.temperature();
     let theta: Vec<f64> = s.oil_temperature.iter().map(|t| deg.value(*t)).collect();
     let limit = deg.value(d.max_oil_temperature.si());
     let lo = theta.iter().copied().fold(deg.value(d.ambient_temperature.si()), f64::min);
@@ -108,7 +119,7 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
         let root = SVGBackend::with_string(&mut svg, (900, 520)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let mut chart = ChartBuilder::on(&root)
-            .caption(format!("{}: sump temperature over \"{}\"", r.title, d.name), ("sans-serif", 15))
+            .caption(format!("{title}: sump temperature over \"{}\"", d.name), ("sans-serif", 15))
             .margin(14)
             .x_label_area_size(40)
             .y_label_area_size(60)
@@ -153,10 +164,15 @@ pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
     Ok(svg)
 }
 
-/// duty_cycle_energy.svg.
+/// duty_cycle_energy.svg of a pair's report.
 pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
     let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
-    let energy = r.units().energy();
+    duty_energy_figure(&r.title, d, r.units())
+}
+
+/// duty_cycle_energy.svg of the duty cycle `d` in a report titled `title`, in units `u`.
+pub(crate) fn duty_energy_figure(title: &str, d: &DutyCycleReport, u: Units) -> Result<String, String> {
+    let energy = u.energy();
     let kj = |q: &Option<crate::report::number::Q>| q.as_ref().map(|q| energy.value(q.si()));
     let bars: Vec<(Option<f64>, Option<f64>)> =
         d.steps.iter().map(|s| (kj(&s.energy_lost), kj(&s.energy_lost_fixed))).collect();
@@ -168,7 +184,7 @@ pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
         let root = SVGBackend::with_string(&mut svg, (900, 480)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let mut chart = ChartBuilder::on(&root)
-            .caption(format!("{}: energy lost per step of \"{}\"", r.title, d.name), ("sans-serif", 15))
+            .caption(format!("{title}: energy lost per step of \"{}\"", d.name), ("sans-serif", 15))
             .margin(14)
             .x_label_area_size(40)
             .y_label_area_size(60)
