@@ -200,11 +200,14 @@ impl<'a> DriveSetup<'a> {
         walks: usize,
     ) -> DrivePoint {
         let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil, beams: &self.beams };
-        let at_pinion = self.drive.one_pair && torque.at == ShaftEnd::Input && torque.value > 0.0;
+        // Zero torque at the pinion gear too (an idle step): the mesh carries nothing, the input
+        // gives the pinion shaft its own losses, as a pair's budget reads them.
+        let at_pinion = self.drive.one_pair && torque.at == ShaftEnd::Input && torque.value >= 0.0;
         let mut point = solve(&model, meshes, torque, speed);
         let mut at_input = torque;
         let missed = |p: &DrivePoint| torque.value - p.stages[0].driving_torque;
-        let settled = |missed: f64| missed.is_finite() && missed.abs() <= crate::drive::walk::TOLERANCE * torque.value;
+        let settled =
+            |missed: f64| missed.is_finite() && missed.abs() <= crate::drive::walk::TOLERANCE * torque.value.max(1.0);
         if !at_pinion {
             return point;
         }
