@@ -21,6 +21,9 @@ pub struct DriveEvaluation {
     pub validity: Vec<Vec<super::laws::ValiditySummary>>,
     /// The thermal balance of every kept row, when the scene asks for it.
     pub balances: Vec<super::drive_thermal::DriveBalanceRow>,
+    /// P_V(θ) and P_Q(θ) at the first row, when the scene asks for the thermal balance or the
+    /// oil at its balance.
+    pub heat_balance: Option<super::thermal::HeatBalanceCurve>,
     /// The duty cycle, when the scene asks for it.
     pub duty: Option<super::thermal::DutyCycleResult>,
     /// The vehicle's drive cycle, when the scene asks for it.
@@ -207,6 +210,13 @@ fn finish(
         (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
         _ => Vec::new(),
     };
+    let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
+    let heat_balance = match (&scene.housing, rows.first()) {
+        (Some(h), Some(first)) if wants_balance => {
+            Some(super::drive_thermal::heat_balance_curve(scene, drive, h, first))
+        }
+        _ => None,
+    };
     let duty = match (&scene.housing, &scene.duty_cycle, scene.analyses.duty_cycle) {
         (Some(h), Some(c), Some(_)) => Some(super::drive_thermal::drive_duty(scene, drive, h, c)),
         _ => None,
@@ -216,7 +226,8 @@ fn finish(
         .as_ref()
         .filter(|_| scene.analyses.drive_cycle.is_some())
         .map(|spec| super::drive_cycle::evaluate_cycle(scene, drive, spec));
-    DriveEvaluation { rows, map, map_best, validity, balances, duty, cycle, tally, loss_factors: setup.loss_factors() }
+    let loss_factors = setup.loss_factors();
+    DriveEvaluation { rows, map, map_best, validity, balances, heat_balance, duty, cycle, tally, loss_factors }
 }
 
 /// Over every row of the operating points: the count, the rows where both ends deliver, and the

@@ -140,6 +140,20 @@ pub(crate) fn drive_duty(
     }
 }
 
+/// P_V(θ) of the drive at `row`'s point, law and formulation against what `housing` gives off,
+/// from ambient to the balance search's limit (the pair's curve, [`super::thermal::heat_balance_curve`]).
+pub(crate) fn heat_balance_curve(
+    scene: &Scene,
+    drive: &SceneDrive,
+    housing: &Housing,
+    row: &DriveRow,
+) -> super::thermal::HeatBalanceCurve {
+    let base = DriveSetup::new(scene, drive);
+    let point = row.torque_index * scene.operating.pinion_speed.values.len() + row.speed_index;
+    let p_v = |theta: f64| loss_at(&base, scene, row, theta);
+    super::thermal::heat_balance_curve(p_v, housing, (point, row.law_index, row.formulation))
+}
+
 /// The balance at every row of the operating points.
 pub(crate) fn drive_balances(
     scene: &Scene,

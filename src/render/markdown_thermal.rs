@@ -46,7 +46,7 @@ pub(crate) fn thermal_section(r: &Report) -> String {
     balance_table(&mut out, r);
     plots_of(&mut out, r, PlotKind::HeatBalance);
     if let Some(d) = &r.duty_cycle {
-        duty_cycle_lines(&mut out, d, u);
+        duty_cycle_lines(&mut out, "### Duty cycle", d, u);
         plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
         plots_of(&mut out, r, PlotKind::DutyCycleEnergy);
     }
@@ -105,22 +105,31 @@ fn balance_table(out: &mut String, r: &Report) {
     }
 }
 
-/// The duty cycle's steps, energies and efficiency, transient and at the fixed oil temperature.
-fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleReport, u: Units) {
-    let (deg, kj) = (u.temperature(), u.energy());
+/// The duty cycle's steps, energies and efficiency, transient and at the fixed oil temperature,
+/// under `heading` (`### Duty cycle`): a pair's and a drive's.
+pub(crate) fn duty_cycle_lines(out: &mut String, heading: &str, d: &crate::report::thermal::DutyCycleReport, u: Units) {
+    let (deg, kj, w) = (u.temperature(), u.energy(), u.power());
     let celsius = |q: &Q| deg.q(q, 1);
-    md!(out, "\n### Duty cycle \"{}\"\n", d.name);
-    md!(
-        out,
-        "The losses of {} at each step; the transient C dθ/dt = P_V(θ) − P_Q(θ) from ambient, θ continuous across the steps (DOP853, error estimate {} K from two tolerances).\n",
-        super::table::law_words(&d.label),
-        d.error_estimate.as_ref().map_or("—".to_string(), |e| format!("{:.1e}", e.si()))
-    );
+    md!(out, "\n{heading} \"{}\"\n", d.name);
+    let law = super::table::law_words(&d.label);
+    match &d.error_estimate {
+        Some(e) => md!(
+            out,
+            "The losses of {law} at each step; the transient C dθ/dt = P_V(θ) − P_Q(θ) from ambient, θ continuous across the steps (DOP853, error estimate {:.1e} K from two tolerances).\n",
+            e.si()
+        ),
+        None => md!(
+            out,
+            "The losses of {law} at each step; no transient of the sump (it needs the housing's `heat_capacity`).\n"
+        ),
+    }
     let cols = [
         "step".to_string(),
         "duration, torque, speed".into(),
         deg.heading("θ at end"),
         kj.heading("energy lost"),
+        kj.heading("given off"),
+        w.heading("P_V at fixed θ"),
         kj.heading("energy lost at fixed θ"),
     ];
     header(out, &cols);
@@ -132,31 +141,40 @@ fn duty_cycle_lines(out: &mut String, d: &crate::report::thermal::DutyCycleRepor
                 s.label.clone(),
                 opt(s.oil_temperature_end.as_ref(), celsius),
                 opt(s.energy_lost.as_ref(), |e| kj.q(e, 2)),
+                opt(s.energy_dissipated.as_ref(), |e| kj.q(e, 2)),
+                opt(s.power_loss_fixed.as_ref(), |p| w.q(p, 2)),
                 opt(s.energy_lost_fixed.as_ref(), |e| kj.q(e, 2)),
             ],
         );
     }
+    // The cycle's efficiency needs the energy in (a drive given at its output has none).
     let pct =
         |x: Option<crate::report::number::Num>| x.map_or("—".to_string(), |x| format!("{} %", fixed(100.0 * x.0, 3)));
+    let efficiency = |x| match d.energy_in {
+        Some(_) => format!(", cycle efficiency {}", pct(x)),
+        None => String::new(),
+    };
     md!(out);
-    md!(out, "- Energy in: {}.", kj.with(d.energy_in.si(), 2));
+    if let Some(e) = &d.energy_in {
+        md!(out, "- Energy in: {}.", kj.with(e.si(), 2));
+    }
     if let (Some(lost), Some(given)) = (&d.energy_lost, &d.energy_dissipated) {
         md!(
             out,
-            "- Transient: θ_max {}, energy lost {}, given off {}, cycle efficiency {}.",
+            "- Transient: θ_max {}, energy lost {}, given off {}{}.",
             opt(d.oil_temperature_max.as_ref(), |q| deg.with(q.si(), 1)),
             kj.with(lost.si(), 2),
             kj.with(given.si(), 2),
-            pct(d.efficiency)
+            efficiency(d.efficiency)
         );
     }
     if let Some(f) = &d.fixed_temperature {
         md!(
             out,
-            "- At the fixed oil temperature {}: energy lost {}, cycle efficiency {}.",
+            "- At the fixed oil temperature {}: energy lost {}{}.",
             deg.with(f.oil_temperature.si(), 1),
             kj.with(f.energy_lost.si(), 2),
-            pct(f.efficiency)
+            efficiency(f.efficiency)
         );
     }
 }

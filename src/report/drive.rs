@@ -8,7 +8,7 @@ use crate::evaluate::drive::{DriveEvaluation, DriveRow};
 use crate::model::{Scene, SceneDrive, Sweep};
 
 pub use super::drive_point::DrivePointReport;
-pub use super::drive_report::{DriveBalanceReport, DriveDutyReport, DriveDutyStep, DriveReport};
+pub use super::drive_report::{DriveBalanceReport, DriveReport};
 
 /// Inch–pound when every stage's pair is sized in inches, else SI.
 fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
@@ -26,6 +26,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
     let layout = &drive.layout;
     let label = |r: &DriveRow| point_words(scene, drive, r.torque_index, r.speed_index);
     let laws: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
+    let (heat_balance, duty_cycle) = thermal_parts(scene, drive, eval, &laws);
     let points: Vec<DrivePointReport> = eval
         .rows
         .iter()
@@ -113,7 +114,8 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
                 rating_95: b.rating_95,
             })
             .collect(),
-        duty: duty_report(scene, eval, &laws),
+        heat_balance,
+        duty_cycle,
         cycle: match (&drive.cycle, &eval.cycle) {
             (Some(spec), Some(c)) => Some(super::drive_cycle::build_cycle_report(scene, drive, spec, c)),
             _ => None,
@@ -127,34 +129,24 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
     report
 }
 
-/// The duty cycle's steps with their losses and, with a heat capacity, the transient.
-fn duty_report(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Option<DriveDutyReport> {
-    let (d, cycle, housing) = (eval.duty.as_ref()?, scene.duty_cycle.as_ref()?, scene.housing.as_ref()?);
-    let transient = d.transient.as_ref().and_then(|t| t.as_ref().ok());
-    let c = |k: f64| k - 273.15;
-    Some(DriveDutyReport {
-        name: cycle.name.clone(),
-        law: laws[d.law_index].clone(),
-        formulation: d.formulation.name().to_string(),
-        steps: cycle
-            .steps
-            .iter()
-            .enumerate()
-            .map(|(k, s)| DriveDutyStep {
-                label: s.label.clone(),
-                duration_s: s.duration,
-                loss_at_oil_temperature: d.fixed.as_ref().map(|f| f[k]),
-                energy_at_oil_temperature: d.fixed.as_ref().map(|f| f[k] * s.duration),
-                end_temperature_c: transient.map(|t| c(t.steps[k].temperature)),
-                energy_lost: transient.map(|t| t.steps[k].energy_lost),
-                energy_dissipated: transient.map(|t| t.steps[k].energy_dissipated),
-            })
-            .collect(),
-        max_temperature_c: transient.map(|t| c(t.max_temperature(housing.ambient))),
-        start_temperature_c: transient.map(|_| c(housing.ambient)),
-        error_k: transient.map(|t| t.error),
-        failure: d.transient.as_ref().and_then(|t| t.as_ref().err().cloned()),
-    })
+/// The heat balance at the first row and the duty cycle, in a pair's report types; a duty cycle's
+/// energy in and efficiency only where its steps give the input's torque and speed.
+fn thermal_parts(
+    scene: &Scene,
+    drive: &SceneDrive,
+    eval: &DriveEvaluation,
+    laws: &[String],
+) -> (Option<super::thermal::HeatBalanceReport>, Option<super::thermal::DutyCycleReport>) {
+    let Some(housing) = scene.housing.as_ref() else { return (None, None) };
+    let balance = eval.heat_balance.as_ref().map(|c| {
+        let n = scene.operating.pinion_speed.values.len();
+        let at = point_words(scene, drive, c.case / n, c.case % n);
+        super::thermal::heat_balance_at(format!("{at}, {}, {}", laws[c.law_index], c.formulation.name()), c, housing)
+    });
+    let ends = drive.layout.operating;
+    let at_input = ends.torque_at == ShaftEnd::Input && ends.speed_at == ShaftEnd::Input;
+    let duty = eval.duty.as_ref().and_then(|d| super::thermal::duty_cycle_report(scene, d, housing, at_input));
+    (balance, duty)
 }
 
 /// Row `i` of the operating points in words: its point, law and formulation.

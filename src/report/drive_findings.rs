@@ -192,7 +192,8 @@ fn mesh_findings(drive: &SceneDrive, units: Units) -> Vec<Finding> {
 
 /// The findings of a drive's report beyond [`findings`]: those on the scene's inputs (blocks
 /// nothing reads, the oil, the housing), which the report lists first, and the rest after
-/// [`findings`]: a duty cycle without heat capacity, the drive cycle's, each sump off its balance,
+/// [`findings`]: the duty cycle's (as a pair's: no heat capacity, a failed transient, the limit
+/// passed), the drive cycle's, each sump off its balance,
 /// the laws' notes by stage, the rows outside a law's validity, unsettled or off balance beyond
 /// those shown, values that are not finite numbers.
 pub(super) fn report_findings(
@@ -203,22 +204,12 @@ pub(super) fn report_findings(
     units: Units,
 ) -> (Vec<Finding>, Vec<Finding>) {
     let mut rest = Vec::new();
-    if let (Some(d), Some(h)) = (&report.duty, &scene.housing) {
-        if h.heat_capacity.is_none() {
-            rest.push(Finding {
-                severity: Severity::Warning,
-                message: format!(
-                    "duty cycle \"{}\": the housing gives no `heat_capacity`, so the sump's transient (θ and the energies along it) is not computed; {}",
-                    d.name,
-                    if d.steps.iter().any(|s| s.energy_at_oil_temperature.is_some()) {
-                        "each step's energy at the scene's oil temperature is given"
-                    } else {
-                        "give `oil_temperature` in `operating` for each step's energy at a fixed temperature, or the housing's `heat_capacity`"
-                    }
-                ),
-            });
-        }
-    }
+    rest.extend(super::thermal::duty_findings(
+        scene,
+        report.duty_cycle.as_ref(),
+        eval.duty.as_ref(),
+        units.temperature(),
+    ));
     // What a scene's inputs are warned of, as a pair's report warns: blocks nothing reads, the
     // oil (its service limit, an implied density no oil has) and the housing's inputs.
     let mut inputs: Vec<Finding> = crate::scene::summary::unused_blocks(scene)

@@ -90,5 +90,9 @@ fn plane_of_action_plot(stage: &str, mesh: Option<&str>) -> PlotRef {
         None => format!("plane_of_action_{}.svg", slug(stage)),
     };
     let mesh = mesh.map_or_else(String::new, |m| format!(", {m} mesh"));
-    PlotRef { kind: PlotKind::PlaneOfAction, file, title: format!("Stage `{stage}`{mesh}: contact lines and their length") }
+    PlotRef {
+        kind: PlotKind::PlaneOfAction,
+        file,
+        title: format!("Stage `{stage}`{mesh}: contact lines and their length"),
+    }
 }

@@ -36,47 +36,6 @@ pub struct DriveBalanceReport {
     pub rating_95: Option<f64>,
 }
 
-/// A step of the duty cycle.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct DriveDutyStep {
-    /// `5 min, 1000 N*m, 1000 rpm`, as written.
-    pub label: String,
-    pub duration_s: f64,
-    /// P_V at the scene's oil temperature (W).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub loss_at_oil_temperature: Option<f64>,
-    /// P_V at the scene's oil temperature × the step's duration (J): the step's energy with the
-    /// sump held at that temperature.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub energy_at_oil_temperature: Option<f64>,
-    /// With a heat capacity: θ at the step's end (°C), energy lost and given off in the step (J).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub end_temperature_c: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub energy_lost: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub energy_dissipated: Option<f64>,
-}
-
-/// The duty cycle of a drive under its first law and formulation.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct DriveDutyReport {
-    pub name: String,
-    pub law: String,
-    pub formulation: String,
-    pub steps: Vec<DriveDutyStep>,
-    /// The transient's highest θ (°C), its start (ambient, °C), the integrator's error estimate (K),
-    /// or why it failed.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub max_temperature_c: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub start_temperature_c: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub error_k: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub failure: Option<String>,
-}
-
 /// The report of a drive.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DriveReport {
@@ -157,8 +116,12 @@ pub struct DriveReport {
     pub housing: Vec<(String, f64, String)>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub thermal: Vec<DriveBalanceReport>,
+    /// P_V(θ) and P_Q(θ) at the first row: a pair's heat balance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub duty: Option<DriveDutyReport>,
+    pub heat_balance: Option<super::thermal::HeatBalanceReport>,
+    /// The duty cycle under the first law and formulation: a pair's duty cycle report.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub duty_cycle: Option<super::thermal::DutyCycleReport>,
     /// The vehicle over its drive cycle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cycle: Option<super::drive_cycle::DriveCycleReport>,

@@ -176,7 +176,7 @@ fn with_thermal(
     h: &crate::thermal::Housing,
 ) {
     report.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
-    report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h));
+    report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h, true));
     report.findings.extend(thermal::thermal_findings(
         scene,
         &report.thermal,
@@ -185,16 +185,13 @@ fn with_thermal(
     ));
     report.findings.extend(housing_checks::housing_findings(scene, scene::units(scene)));
     if report.heat_balance.is_some() {
-        report.plots.push(PlotRef::new(
-            PlotKind::HeatBalance,
-            "Heat balance: the losses P_V and what the housing gives off P_Q against the oil temperature",
-        ));
+        report.plots.push(PlotRef::new(PlotKind::HeatBalance, thermal::HEAT_BALANCE_TITLE));
     }
     if report.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
-        report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, "Sump temperature over the duty cycle"));
+        report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, thermal::DUTY_TEMPERATURE_TITLE));
     }
     if report.duty_cycle.is_some() {
-        report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, "Energy lost in each step of the duty cycle"));
+        report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, thermal::DUTY_ENERGY_TITLE));
     }
 }
 

@@ -12,6 +12,12 @@ use crate::evaluate::{Evaluation, Tally};
 use crate::model::{Formulation, Scene};
 use crate::thermal::{BalanceStatus, Housing};
 
+/// The heat balance's and the duty cycle's plots' titles (a pair's report and a drive's).
+pub(crate) const HEAT_BALANCE_TITLE: &str =
+    "Heat balance: the losses P_V and what the housing gives off P_Q against the oil temperature";
+pub(crate) const DUTY_TEMPERATURE_TITLE: &str = "Sump temperature over the duty cycle";
+pub(crate) const DUTY_ENERGY_TITLE: &str = "Energy lost in each step of the duty cycle";
+
 /// The housing as the scene gives it (defaults filled in), in SI.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct HousingReport {
@@ -105,6 +111,12 @@ pub struct DutyStepReport {
     /// The energy lost in the step at the scene's fixed oil temperature.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub energy_lost_fixed: Option<Q>,
+    /// The loss P_V at the scene's fixed oil temperature (the step's energy there over its duration).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub power_loss_fixed: Option<Q>,
+    /// What the housing gives off in the step along the transient.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_dissipated: Option<Q>,
 }
 
 /// A cycle's energy at the fixed oil temperature.
@@ -131,7 +143,10 @@ pub struct DutyCycleReport {
     pub label: String,
     pub formulation: Formulation,
     pub steps: Vec<DutyStepReport>,
-    pub energy_in: Q,
+    /// E_in = Σ T ω Δt at the input: a pair's, or a drive's whose torque and speed are both given
+    /// at its input and no step coasts; absent otherwise (no cycle efficiency then).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy_in: Option<Q>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub oil_temperature_max: Option<Q>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -232,10 +247,18 @@ pub(crate) fn heat_balance_at(label: String, c: &HeatBalanceCurve, h: &Housing) 
     }
 }
 
-pub(crate) fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing) -> Option<DutyCycleReport> {
+/// The duty cycle's report; `at_input`: its steps' torque and speed are the input's (a pair's; a
+/// drive's when its operating block gives both at the input), which gives the energy in and the
+/// cycle's efficiency.
+pub(crate) fn duty_cycle_report(
+    scene: &Scene,
+    d: &DutyCycleResult,
+    h: &Housing,
+    at_input: bool,
+) -> Option<DutyCycleReport> {
     let cycle = scene.duty_cycle.as_ref()?;
-    let e_in = cycle.energy_in();
-    let efficiency = |lost: f64| (e_in > 0.0).then(|| Num((e_in - lost) / e_in));
+    let e_in = (at_input && cycle.steps.iter().all(|s| s.pinion_torque >= 0.0)).then(|| cycle.energy_in());
+    let efficiency = |lost: f64| e_in.filter(|e| *e > 0.0).map(|e| Num((e - lost) / e));
     let transient = d.transient.as_ref().and_then(|t| t.as_ref().ok());
     let steps = cycle
         .steps
@@ -249,6 +272,8 @@ pub(crate) fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing)
             oil_temperature_end: transient.map(|t| Q::new(t.steps[k].temperature, "K")),
             energy_lost: transient.map(|t| Q::new(t.steps[k].energy_lost, "J")),
             energy_lost_fixed: d.fixed.as_ref().map(|p| Q::new(p[k] * s.duration, "J")),
+            power_loss_fixed: d.fixed.as_ref().map(|p| Q::new(p[k], "W")),
+            energy_dissipated: transient.map(|t| Q::new(t.steps[k].energy_dissipated, "J")),
         })
         .collect();
     let lost = transient.map(|t| t.steps.iter().map(|s| s.energy_lost).sum::<f64>());
@@ -258,7 +283,7 @@ pub(crate) fn duty_cycle_report(scene: &Scene, d: &DutyCycleResult, h: &Housing)
         label: law_words(scene, d.law_index, d.formulation),
         formulation: d.formulation,
         steps,
-        energy_in: Q::new(e_in, "J"),
+        energy_in: e_in.map(|e| Q::new(e, "J")),
         oil_temperature_max: transient.map(|t| Q::new(t.max_temperature(h.ambient), "K")),
         energy_lost: lost.map(|e| Q::new(e, "J")),
         energy_dissipated: transient.map(|t| Q::new(t.steps.iter().map(|s| s.energy_dissipated).sum(), "J")),
@@ -314,32 +339,45 @@ pub(crate) fn thermal_findings(
             _ => {}
         }
     }
-    if let (Some(_), Some(h)) =
-        (scene.duty_cycle.as_ref().filter(|_| scene.analyses.duty_cycle.is_some()), scene.housing.as_ref())
-    {
-        if h.heat_capacity.is_none() {
-            out.push(warn("the duty cycle's transient needs the housing's `heat_capacity`: only the energy at the fixed oil temperature is given".into()));
-        }
+    out.extend(duty_findings(scene, duty, d, deg));
+    out
+}
+
+/// Warnings of a duty cycle (a pair's, a drive's): a housing without heat capacity (no transient),
+/// a transient that failed, a transient that crosses the oil's limit (when, in which step).
+pub(crate) fn duty_findings(
+    scene: &Scene,
+    duty: Option<&DutyCycleReport>,
+    d: Option<&DutyCycleResult>,
+    deg: super::units::Shown,
+) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let warn = |m: String| Finding { severity: Severity::Warning, message: m };
+    let Some(duty) = duty else { return out };
+    if scene.housing.as_ref().is_some_and(|h| h.heat_capacity.is_none()) {
+        out.push(warn(format!(
+            "duty cycle \"{}\": the housing gives no `heat_capacity`, so the sump's transient (θ and the energies along it) is not computed; {}",
+            duty.name,
+            if duty.steps.iter().any(|s| s.energy_lost_fixed.is_some()) {
+                "each step's energy at the scene's oil temperature is given"
+            } else {
+                "give `oil_temperature` in `operating` for each step's energy at a fixed temperature, or the housing's `heat_capacity`"
+            }
+        )));
     }
     if let Some(Some(Err(e))) = d.map(|d| &d.transient) {
-        out.push(warn(format!("the duty cycle's transient failed: {e}")));
+        out.push(warn(format!("duty cycle \"{}\": {e}", duty.name)));
     }
-    if let Some(duty) = duty {
-        let limit = duty.max_oil_temperature.si();
-        for (k, s) in duty.steps.iter().enumerate() {
-            if let Some(end) = &s.oil_temperature_end {
-                if end.si() > limit {
-                    out.push(warn(format!(
-                        "the sump passes the oil's limit ({}) in step {} ({}) of the duty cycle and ends that step at {}",
-                        deg.with(limit, 1),
-                        k + 1,
-                        s.label,
-                        celsius(end)
-                    )));
-                    break;
-                }
-            }
-        }
+    let limit = duty.max_oil_temperature.si();
+    let ends = duty.steps.iter().enumerate().filter_map(|(k, s)| Some((k, s, s.oil_temperature_end.as_ref()?)));
+    if let Some((k, s, end)) = ends.into_iter().find(|(_, _, end)| end.si() > limit) {
+        out.push(warn(format!(
+            "the sump passes the oil's limit ({}) in step {} ({}) of the duty cycle and ends that step at {}",
+            deg.with(limit, 1),
+            k + 1,
+            s.label,
+            deg.with(end.si(), 1)
+        )));
     }
     out
 }

@@ -184,6 +184,79 @@ fn every_pair_balances_as_its_one_stage_drive() {
     assert!(compared >= 5 && ratings >= 6, "{compared} balances, {ratings} ratings");
 }
 
+/// The heat balance's curve and the duty cycle of every pair that has them, as its one-stage drive's
+/// report gives them, in the same report types: the curve's temperatures and P_Q exactly, its P_V(θ)
+/// and θ* to 1e-12 relative (the walk's loss is the pair's to that); the duty cycle's energy in
+/// exactly, each step's P_V at the fixed temperature to 1e-12 and the transient (θ at each step's
+/// end, energies lost and given off, θ_max, the cycle's efficiency) to 1e-9 relative: the same
+/// DOP853 integration of functions equal to 1e-12 (the largest difference seen is printed).
+#[test]
+fn every_pair_duty_cycle_and_heat_balance_as_its_one_stage_drive() {
+    let (mut curves, mut cycles, mut worst) = (0, 0, 0.0_f64);
+    for path in pair_scenes() {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        let pair = gearloss::check(&name, &source).unwrap();
+        let first_point = pair.operating.detail_points.first().is_none_or(|p| *p == 0);
+        if pair.housing.is_none() || pair.operating.oil_temperatures.is_some() || !first_point {
+            continue;
+        }
+        let ast = gearloss::parse(&name, &source).unwrap();
+        let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+        let report = gearloss::report_of(&pair);
+        let d = drive.drive.as_ref().unwrap();
+        let drive_report =
+            gearloss::report::drive::build_drive_report(&drive, d, &gearloss::evaluate::evaluate_drive(&drive, d));
+        let close = |a: f64, b: f64, tol: f64| (a - b).abs() <= tol * b.abs().max(1.0);
+        let q = |q: &Option<gearloss::report::number::Q>| q.as_ref().map(|q| q.value.0);
+        assert_eq!(report.heat_balance.is_some(), drive_report.heat_balance.is_some(), "{name}: a curve on one side");
+        if let (Some(p), Some(h)) = (&report.heat_balance, &drive_report.heat_balance) {
+            assert_eq!((&p.temperature, &p.dissipation), (&h.temperature, &h.dissipation), "{name}");
+            for (a, b) in h.power_loss.iter().zip(&p.power_loss) {
+                assert!(close(*a, *b, 1e-12), "{name}: P_V {a} W vs the pair's {b} W");
+            }
+            match (q(&h.oil_temperature), q(&p.oil_temperature)) {
+                (Some(a), Some(b)) => assert!(close(a, b, 1e-12), "{name}: θ* {a} vs {b}"),
+                (a, b) => assert_eq!(a, b, "{name}"),
+            }
+            curves += 1;
+        }
+        assert_eq!(report.duty_cycle.is_some(), drive_report.duty_cycle.is_some(), "{name}: a duty cycle on one side");
+        if let (Some(p), Some(h)) = (&report.duty_cycle, &drive_report.duty_cycle) {
+            assert_eq!(q(&h.energy_in), q(&p.energy_in), "{name}: the energy in");
+            assert_eq!(h.steps.len(), p.steps.len());
+            let mut pairs: Vec<(Option<f64>, Option<f64>, f64)> = Vec::new();
+            for (a, b) in h.steps.iter().zip(&p.steps) {
+                pairs.push((q(&a.power_loss_fixed), q(&b.power_loss_fixed), 1e-12));
+                pairs.push((q(&a.energy_lost_fixed), q(&b.energy_lost_fixed), 1e-12));
+            }
+            for (a, b) in h.steps.iter().zip(&p.steps) {
+                pairs.push((q(&a.oil_temperature_end), q(&b.oil_temperature_end), 1e-9));
+                pairs.push((q(&a.energy_lost), q(&b.energy_lost), 1e-9));
+                pairs.push((q(&a.energy_dissipated), q(&b.energy_dissipated), 1e-9));
+            }
+            pairs.extend([
+                (q(&h.oil_temperature_max), q(&p.oil_temperature_max), 1e-9),
+                (q(&h.energy_lost), q(&p.energy_lost), 1e-9),
+                (q(&h.energy_dissipated), q(&p.energy_dissipated), 1e-9),
+                (h.efficiency.map(|e| e.0), p.efficiency.map(|e| e.0), 1e-9),
+            ]);
+            for (a, b, tol) in pairs {
+                match (a, b) {
+                    (Some(a), Some(b)) => {
+                        assert!(close(a, b, tol), "{name}: {a} vs the pair's {b}\n{:#?}\n{:#?}", h.steps, p.steps);
+                        worst = worst.max((a - b).abs() / b.abs().max(1.0));
+                    }
+                    (a, b) => assert_eq!(a, b, "{name}: a value on one side only"),
+                }
+            }
+            cycles += 1;
+        }
+    }
+    eprintln!("{curves} heat balance curves, {cycles} duty cycles; largest relative difference {worst:.1e}");
+    assert!(curves >= 3 && cycles >= 2, "{curves} curves, {cycles} duty cycles");
+}
+
 /// Every scene of one pair among the specs and the ok fixtures, whatever it asks for, lowers as its
 /// one-stage drive: one lowered form serves them all.
 #[test]

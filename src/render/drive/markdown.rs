@@ -5,7 +5,9 @@
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
+use crate::report::thermal;
 use crate::report::units::Units;
+use crate::report::PlotKind;
 
 use super::shown_units::Shown;
 
@@ -260,7 +262,7 @@ fn input_shown(value: f64, unit: &str, units: Units) -> (String, String) {
 
 fn thermal(out: &mut String, r: &DriveReport) {
     let u = Shown::of(r);
-    if r.thermal.is_empty() {
+    if r.thermal.is_empty() && r.heat_balance.is_none() {
         return;
     }
     let (w, temp) = (u.units.power(), u.units.temperature());
@@ -272,6 +274,12 @@ fn thermal(out: &mut String, r: &DriveReport) {
         row(out, &[what.clone(), v, unit]);
     }
     md!(out);
+    if r.heat_balance.is_some() {
+        image(out, PlotKind::HeatBalance, thermal::HEAT_BALANCE_TITLE);
+    }
+    if r.thermal.is_empty() {
+        return;
+    }
     header(
         out,
         &[
@@ -327,56 +335,19 @@ fn stage_geometry(out: &mut String, r: &DriveReport) {
     }
 }
 
+fn image(out: &mut String, kind: PlotKind, title: &str) {
+    md!(out, "![{title}]({})\n", kind.file());
+}
+
+/// The duty cycle as a pair's report gives it, and its plots.
 fn duty(out: &mut String, r: &DriveReport) {
-    let Some(d) = &r.duty else { return };
-    let units = Units::of_system(r.unit_system);
-    let (w, temp) = (units.power(), units.temperature());
-    // Energies in J (SI) or Btu.
-    let (joule, energy_unit) = if units.is_si() { (1.0, "J") } else { (crate::report::units::BTU, "Btu") };
-    md!(out, "## Duty cycle \"{}\" ({} {})\n", d.name, d.law, d.formulation);
-    md!(out, "Each step's whole-drive loss at the scene's oil temperature and, with the housing's heat capacity, the sump's transient from ambient: C dθ/dt = P_V(θ) − P_Q(θ), integrated to 1e-12 and again to 1e-10 (the difference is the error estimate); a step without speed loses nothing.\n");
-    header(
-        out,
-        &[
-            "step",
-            "duration (s)",
-            &w.titled("P_V at the oil temperature"),
-            &format!("energy at the oil temperature ({energy_unit})"),
-            &temp.titled("θ at its end"),
-            &format!("energy lost ({energy_unit})"),
-            &format!("energy given off ({energy_unit})"),
-        ],
-    );
-    let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
-    let energy = |x: Option<f64>| opt(x.map(|e| e / joule), 1);
-    for s in &d.steps {
-        row(
-            out,
-            &[
-                s.label.clone(),
-                fixed(s.duration_s, 1),
-                s.loss_at_oil_temperature.map_or_else(|| "—".to_string(), |v| w.cell(v, 3)),
-                energy(s.energy_at_oil_temperature),
-                opt(s.end_temperature_c.map(|c| temp.from_celsius(c)), 3),
-                energy(s.energy_lost),
-                energy(s.energy_dissipated),
-            ],
-        );
-    }
+    let Some(d) = &r.duty_cycle else { return };
+    crate::render::markdown_thermal::duty_cycle_lines(out, "## Duty cycle", d, Units::of_system(r.unit_system));
     md!(out);
-    if let (Some(max), Some(start), Some(e)) = (d.max_temperature_c, d.start_temperature_c, d.error_k) {
-        md!(
-            out,
-            "From {} the sump reaches at most {} (integration error {} {}).\n",
-            format!("{} {}", fixed(temp.from_celsius(start), 2), temp.unit),
-            format!("{} {}", fixed(temp.from_celsius(max), 3), temp.unit),
-            crate::render::table::sig(e * temp.per_kelvin()),
-            if units.is_si() { "K" } else { "°F" }
-        );
+    if d.samples.is_some() {
+        image(out, PlotKind::DutyCycleTemperature, thermal::DUTY_TEMPERATURE_TITLE);
     }
-    if let Some(f) = &d.failure {
-        md!(out, "The transient failed: {f}\n");
-    }
+    image(out, PlotKind::DutyCycleEnergy, thermal::DUTY_ENERGY_TITLE);
 }
 
 fn model(out: &mut String, r: &DriveReport) {

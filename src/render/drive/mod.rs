@@ -1,7 +1,8 @@
 //! The files of a drive's report folder: report.md ([`markdown`]), report.json (the serde data),
 //! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off),
 //! each helical stage mesh's plane_of_action_<stage>.svg (the figure of a helical pair's report),
-//! with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
+//! with a thermal balance or a duty cycle a pair's heat_balance.svg, duty_cycle_temperature.svg and
+//! duty_cycle_energy.svg, with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
 //! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
 
 pub(crate) mod cycle;
@@ -49,6 +50,19 @@ pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, Strin
             let title = format!("{}: {}", report.title, p.title.replace('`', ""));
             files.push((p.file.clone(), crate::render::svg::plane_of_action_figure(&title, h, None, len)?));
         }
+    }
+    let units = crate::report::units::Units::of_system(report.unit_system);
+    if let Some(h) = &report.heat_balance {
+        let svg = crate::render::svg::heat_balance_figure(&report.title, h, units)?;
+        files.push((crate::report::PlotKind::HeatBalance.file().to_string(), svg));
+    }
+    if let Some(d) = &report.duty_cycle {
+        if d.samples.is_some() {
+            let svg = crate::render::svg::duty_temperature_figure(&report.title, d, units)?;
+            files.push((crate::report::PlotKind::DutyCycleTemperature.file().to_string(), svg));
+        }
+        let svg = crate::render::svg::duty_energy_figure(&report.title, d, units)?;
+        files.push((crate::report::PlotKind::DutyCycleEnergy.file().to_string(), svg));
     }
     if let Some(c) = &report.cycle {
         files.push((crate::report::drive_cycle_series::FILE.to_string(), c.series.to_csv()));

@@ -122,9 +122,8 @@ pub(crate) fn figure(
     {
         let root = SVGBackend::with_string(&mut svg, (1040, 620)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root
-            .titled(title, ("sans-serif", super::panel::fitted(title, 1040, 18.0)))
-            .map_err(|e| e.to_string())?;
+        let root =
+            root.titled(title, ("sans-serif", super::panel::fitted(title, 1040, 18.0))).map_err(|e| e.to_string())?;
         let (top, bottom) = root.split_vertically(340);
         let (top, top_legend) = top.split_horizontally(880);
         plane(&top, &top_legend, h, mu, len)?;
