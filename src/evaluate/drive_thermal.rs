@@ -10,7 +10,7 @@ use crate::model::{Scene, SceneDrive};
 use crate::thermal::{Balance, Housing};
 
 /// The balance of one operating point, law and formulation, with the drive's loss and the housing's
-/// dissipation at θ*.
+/// dissipation at θ* (at the search's limit without a balance, as a pair's).
 #[derive(Debug, Clone)]
 pub struct DriveBalanceRow {
     pub torque_index: usize,
@@ -18,9 +18,10 @@ pub struct DriveBalanceRow {
     pub law_index: usize,
     pub formulation: crate::efficiency::Formulation,
     pub balance: Balance,
-    /// P_V(θ*) and P_Q(θ*) (W); None without a balance.
-    pub loss: Option<f64>,
-    pub dissipation: Option<f64>,
+    /// P_V(θ*) and P_Q(θ*) by path (W), and the wall's convective h_c (W/(m² K)) there.
+    pub loss: f64,
+    pub dissipation: crate::thermal::Dissipation,
+    pub heat_transfer_coefficient: f64,
     /// In drive: the torque at the given end (N·m) the box carries continuously with the sump at
     /// the oil's limit ([`crate::thermal::rating_torque`] at this point's speed); None in coast, or
     /// when no torque reaches the limit.
@@ -166,7 +167,7 @@ pub(crate) fn drive_balances(
     rows.par_iter()
         .map(|row| {
             let balance = crate::thermal::balance(|theta| loss_at(&base, scene, row, theta), housing);
-            let loss = balance.temperature.map(|t| loss_at(&base, scene, row, t));
+            let t = balance.temperature.unwrap_or(crate::thermal::balance::SEARCH_LIMIT);
             let ratings = (row.point.flow == crate::drive::PowerFlow::Drive).then(|| {
                 let given = scene.operating.pinion_torque.values[row.torque_index].value;
                 let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
@@ -178,8 +179,9 @@ pub(crate) fn drive_balances(
                 law_index: row.law_index,
                 formulation: row.formulation,
                 balance,
-                loss,
-                dissipation: balance.temperature.map(|t| housing.dissipation(t).total),
+                loss: loss_at(&base, scene, row, t),
+                dissipation: housing.dissipation(t),
+                heat_transfer_coefficient: housing.heat_transfer_coefficient(t),
                 rating: ratings.and_then(|r| r.at_limit),
                 rating_95: ratings.and_then(|r| r.at_95),
             }

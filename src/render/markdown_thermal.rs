@@ -8,6 +8,7 @@ use crate::report::PlotKind;
 
 use super::table::{fixed, header, row};
 use crate::report::number::Q;
+use crate::report::thermal::{HousingReport, ThermalRecord};
 use crate::report::units::Units;
 use crate::report::Report;
 
@@ -24,8 +25,23 @@ pub(crate) fn thermal_section(r: &Report) -> String {
         out,
         "One thermal node: the housing wall at the oil temperature θ gives off P_Q(θ) = h_c A Δθ + ε σ A (T⁴ − T_a⁴) + G_f Δθ + G_c max(0, θ − θ_set), h_c = √(h_n² + h_f²) with h_n = 1.31 |Δθ|^(1/3) and h_f = 3.26 v^0.89 W/(m² K) (the DOE-2 exterior convection model). The balance θ* is the lowest oil temperature above ambient where the losses P_V(θ) (mesh and budget, the oil read at θ) equal P_Q(θ). The thermal rating is the pinion torque at this speed whose balance is the oil's limit; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n"
     );
-    header(&mut out, &["housing", "value"]);
     let u = r.units();
+    housing_table(&mut out, h, u);
+    let point = |t: &ThermalRecord| super::headline::point_at(r, &t.pinion_torque, &t.pinion_speed);
+    balance_table(&mut out, &r.thermal, u, &point);
+    plots_of(&mut out, r, PlotKind::HeatBalance);
+    if let Some(d) = &r.duty_cycle {
+        duty_cycle_lines(&mut out, "### Duty cycle", d, u);
+        plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
+        plots_of(&mut out, r, PlotKind::DutyCycleEnergy);
+    }
+    out.push('\n');
+    out
+}
+
+/// The housing's inputs (defaults filled in), in units `u`: a pair's and a drive's.
+pub(crate) fn housing_table(out: &mut String, h: &HousingReport, u: Units) {
+    header(out, &["housing", "value"]);
     let (deg, g) = (u.temperature(), u.conductance());
     let cooler = h.oil_cooler.as_ref().map_or_else(
         || "none".to_string(),
@@ -41,27 +57,22 @@ pub(crate) fn thermal_section(r: &Report) -> String {
         ("oil cooler", cooler),
         ("oil limit", deg.with(h.max_oil_temperature.si(), 1)),
     ] {
-        row(&mut out, &[name.to_string(), value]);
+        row(out, &[name.to_string(), value]);
     }
-    balance_table(&mut out, r);
-    plots_of(&mut out, r, PlotKind::HeatBalance);
-    if let Some(d) = &r.duty_cycle {
-        duty_cycle_lines(&mut out, "### Duty cycle", d, u);
-        plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
-        plots_of(&mut out, r, PlotKind::DutyCycleEnergy);
-    }
-    out.push('\n');
-    out
 }
 
 /// Per operating point, law and formulation: the balance θ*, what the housing gives off there and
-/// the thermal ratings.
-fn balance_table(out: &mut String, r: &Report) {
-    if r.thermal.is_empty() {
+/// the thermal ratings; each point in its record's words, else `point`'s (a pair's torque and speed).
+pub(crate) fn balance_table(
+    out: &mut String,
+    records: &[ThermalRecord],
+    u: Units,
+    point: &dyn Fn(&ThermalRecord) -> String,
+) {
+    if records.is_empty() {
         return;
     }
     md!(out);
-    let u = r.units();
     let (deg, w, torque, kw) = (u.temperature(), u.power(), u.torque(), u.kilowatt());
     let rating_heading = |what: &str| format!("{what} {} ({})", torque.unit, kw.unit);
     let cols = [
@@ -83,11 +94,11 @@ fn balance_table(out: &mut String, r: &Report) {
     let rating = |x: Option<&crate::report::thermal::Rating>| {
         x.map_or_else(|| "—".into(), |x| format!("{} ({})", torque.q(&x.torque, 1), kw.q(&x.power, 2)))
     };
-    for t in &r.thermal {
+    for t in records {
         row(
             out,
             &[
-                super::headline::point_at(r, &t.pinion_torque, &t.pinion_speed),
+                t.point.clone().unwrap_or_else(|| point(t)),
                 super::table::law_words(&t.label),
                 t.formulation.name().to_string(),
                 opt(t.oil_temperature.as_ref(), |q| deg.q(q, 1)),

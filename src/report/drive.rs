@@ -8,7 +8,7 @@ use crate::evaluate::drive::{DriveEvaluation, DriveRow};
 use crate::model::{Scene, SceneDrive, Sweep};
 
 pub use super::drive_point::DrivePointReport;
-pub use super::drive_report::{DriveBalanceReport, DriveReport};
+pub use super::drive_report::DriveReport;
 
 /// Inch–pound when every stage's pair is sized in inches, else SI.
 fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
@@ -93,27 +93,9 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         housing: scene
             .housing
             .as_ref()
-            .filter(|_| !eval.balances.is_empty())
-            .map_or_else(Vec::new, super::drive_inputs::housing_rows),
-        thermal: eval
-            .balances
-            .iter()
-            .map(|b| DriveBalanceReport {
-                label: points
-                    .iter()
-                    .zip(&eval.rows)
-                    .find(|(_, r)| (r.torque_index, r.speed_index) == (b.torque_index, b.speed_index))
-                    .map_or_else(String::new, |(p, _)| p.label.clone()),
-                law: laws[b.law_index].clone(),
-                formulation: b.formulation.name().to_string(),
-                temperature_c: b.balance.temperature.map(|t| t - 273.15),
-                loss: b.loss,
-                dissipation: b.dissipation,
-                status: b.balance.status.words().to_string(),
-                rating: b.rating,
-                rating_95: b.rating_95,
-            })
-            .collect(),
+            .filter(|_| !eval.balances.is_empty() || eval.heat_balance.is_some())
+            .map(super::thermal::housing_report),
+        thermal: thermal_records(scene, drive, eval),
         heat_balance,
         duty_cycle,
         cycle: match (&drive.cycle, &eval.cycle) {
@@ -147,6 +129,51 @@ fn thermal_parts(
     let at_input = ends.torque_at == ShaftEnd::Input && ends.speed_at == ShaftEnd::Input;
     let duty = eval.duty.as_ref().and_then(|d| super::thermal::duty_cycle_report(scene, d, housing, at_input));
     (balance, duty)
+}
+
+/// Each balance of the shown rows as a pair's report gives a point's: the given ends' torque and
+/// speed, the point in words, the ratings' power at the torque's end.
+fn thermal_records(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) -> Vec<super::thermal::ThermalRecord> {
+    use super::number::Q;
+    let op = &scene.operating;
+    let torque_at = drive.layout.operating.torque_at;
+    eval.balances
+        .iter()
+        .map(|b| {
+            let row = eval.rows.iter().find(|r| (r.torque_index, r.speed_index) == (b.torque_index, b.speed_index));
+            // The speed of the end the torque is given at (the ratings' power).
+            let omega = row.map_or(0.0, |r| match torque_at {
+                ShaftEnd::Input => r.point.input_speed.abs(),
+                ShaftEnd::Output => r.point.output_speed.abs(),
+            });
+            let rating = |t: Option<f64>| {
+                t.map(|t| super::thermal::Rating { torque: Q::new(t, "N*m"), power: Q::new(t * omega, "W") })
+            };
+            let d = &b.dissipation;
+            super::thermal::ThermalRecord {
+                case: b.torque_index * op.pinion_speed.values.len() + b.speed_index,
+                point: Some(point_words(scene, drive, b.torque_index, b.speed_index)),
+                law: scene.friction[b.law_index].law,
+                label: scene.friction[b.law_index].label(),
+                formulation: b.formulation,
+                pinion_torque: Q::new(op.pinion_torque.values[b.torque_index].value, "N*m"),
+                pinion_speed: Q::new(op.pinion_speed.values[b.speed_index].value, "rad/s"),
+                oil_temperature: b.balance.temperature.map(|t| Q::new(t, "K")),
+                status: b.balance.status,
+                power_loss: Q::new(b.loss, "W"),
+                dissipation: super::thermal::DissipationReport {
+                    convection: Q::new(d.convection, "W"),
+                    radiation: Q::new(d.radiation, "W"),
+                    foundation: Q::new(d.foundation, "W"),
+                    cooler: Q::new(d.cooler, "W"),
+                    total: Q::new(d.total, "W"),
+                },
+                heat_transfer_coefficient: Q::new(b.heat_transfer_coefficient, "W/(m^2*K)"),
+                thermal_rating: rating(b.rating),
+                thermal_rating_95: rating(b.rating_95),
+            }
+        })
+        .collect()
 }
 
 /// Row `i` of the operating points in words: its point, law and formulation.

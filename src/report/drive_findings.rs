@@ -204,12 +204,9 @@ pub(super) fn report_findings(
     units: Units,
 ) -> (Vec<Finding>, Vec<Finding>) {
     let mut rest = Vec::new();
-    rest.extend(super::thermal::duty_findings(
-        scene,
-        report.duty_cycle.as_ref(),
-        eval.duty.as_ref(),
-        units.temperature(),
-    ));
+    // The balances' and the duty cycle's warnings, as a pair's report gives them.
+    let (records, duty) = (&report.thermal, report.duty_cycle.as_ref());
+    rest.extend(super::thermal::thermal_findings(scene, records, duty, eval.duty.as_ref()));
     // What a scene's inputs are warned of, as a pair's report warns: blocks nothing reads, the
     // oil (its service limit, an implied density no oil has) and the housing's inputs.
     let mut inputs: Vec<Finding> = crate::scene::summary::unused_blocks(scene)
@@ -220,12 +217,6 @@ pub(super) fn report_findings(
     inputs.extend(super::housing_checks::housing_findings(scene, units));
     if let Some(c) = &report.cycle {
         rest.extend(c.findings.iter().cloned());
-    }
-    for b in report.thermal.iter().filter(|b| b.status != crate::thermal::BalanceStatus::Ok.words()) {
-        rest.push(Finding {
-            severity: Severity::Warning,
-            message: format!("{} ({}, {}): the sump {}", b.label, b.law, b.formulation, b.status),
-        });
     }
     rest.extend(stage_notes(drive, &eval.rows, &eval.validity, &report.points));
     let shown = report.points.iter().filter(|p| p.validity.iter().any(|v| v.0 > 0)).count();

@@ -268,20 +268,3 @@ pub(super) fn oil_rows(scene: &Scene) -> Vec<(String, f64, String)> {
     }
     out
 }
-
-/// (what, value, unit) of the housing as a thermal node.
-pub(super) fn housing_rows(h: &crate::thermal::Housing) -> Vec<(String, f64, String)> {
-    let mut out = vec![
-        ("surface area A".to_string(), h.area, "m^2".to_string()),
-        ("ambient temperature".into(), h.ambient - 273.15, "degC".into()),
-        ("air speed".into(), h.air_speed, "m/s".into()),
-        ("emissivity".into(), h.emissivity, "".into()),
-        ("foundation conductance".into(), h.foundation_conductance, "W/K".into()),
-        ("oil temperature limit".into(), h.max_oil_temperature - 273.15, "degC".into()),
-    ];
-    if let Some(c) = &h.cooler {
-        out.push(("cooler conductance".into(), c.conductance, "W/K".into()));
-        out.push(("cooler works above".into(), c.above - 273.15, "degC".into()));
-    }
-    out
-}

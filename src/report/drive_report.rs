@@ -12,30 +12,6 @@ use super::finding::Finding;
 use super::number::DisplayUnit;
 use crate::drive::ShaftEnd;
 
-/// The thermal balance of one operating point, law and formulation (one sump).
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct DriveBalanceReport {
-    pub label: String,
-    pub law: String,
-    pub formulation: String,
-    /// θ* (°C), P_V(θ*) = P_Q(θ*) (W); None (left out) without a balance up to 200 °C.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub temperature_c: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub loss: Option<f64>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub dissipation: Option<f64>,
-    /// "ok", "above the limit" or "no balance up to 200 °C", in words.
-    pub status: String,
-    /// In drive: the torque at the given end (N·m) that the box carries with the sump at the oil's
-    /// limit, at this point's speed.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub rating: Option<f64>,
-    /// The same with the sump at 95 °C (ISO/TR 14179-1's rating temperature).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub rating_95: Option<f64>,
-}
-
 /// The report of a drive.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct DriveReport {
@@ -112,10 +88,13 @@ pub struct DriveReport {
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
     /// The housing as a thermal node (what, value, unit) and each point's balance.
+    /// The housing as a pair's report gives it, when the drive's thermal balance is asked for.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub housing: Option<super::thermal::HousingReport>,
+    /// The balance of every shown row, as a pair's report gives each point's (the torque and speed
+    /// the given ends', the point in words; in drive the ratings at the given end).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub housing: Vec<(String, f64, String)>,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub thermal: Vec<DriveBalanceReport>,
+    pub thermal: Vec<super::thermal::ThermalRecord>,
     /// P_V(θ) and P_Q(θ) at the first row: a pair's heat balance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub heat_balance: Option<super::thermal::HeatBalanceReport>,

@@ -60,6 +60,10 @@ pub struct Rating {
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ThermalRecord {
     pub case: usize,
+    /// A drive's operating point in words (`T_out = 150 N·m, n_out = 500 rpm`): its torque and
+    /// speed below are the given ends', not a pinion's. None for a pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub point: Option<String>,
     pub law: crate::friction::catalog::LawId,
     pub label: String,
     pub formulation: Formulation,
@@ -195,6 +199,7 @@ pub(crate) fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord
             let t = r.thermal.as_ref()?;
             Some(ThermalRecord {
                 case: r.point - 1,
+                point: None,
                 law: scene.friction[r.law_index?].law,
                 label: r.label.clone(),
                 formulation: if r.formulation == "internal" { Formulation::Internal } else { Formulation::External },
@@ -322,12 +327,10 @@ pub(crate) fn thermal_findings(
         super::number::DisplayUnit::of(&scene.operating.pinion_speed),
     );
     for r in records {
-        let at = format!(
-            "{}, {} ({})",
-            super::number::operating_point_words(&torque, &speed, &r.pinion_torque, &r.pinion_speed),
-            r.label,
-            r.formulation.name()
-        );
+        let point = r.point.clone().unwrap_or_else(|| {
+            super::number::operating_point_words(&torque, &speed, &r.pinion_torque, &r.pinion_speed)
+        });
+        let at = format!("{point}, {} ({})", r.label, r.formulation.name());
         match (r.status, &r.oil_temperature) {
             (BalanceStatus::AboveLimit, Some(t)) => {
                 out.push(warn(format!("the sump settles at {}, above the oil's limit, at {at}", celsius(t))))

@@ -34,10 +34,10 @@ fn every_drive_row_is_at_its_own_balance() {
     let (mut balanced, mut without) = (0, 0);
     for (row, analysed) in rows.iter().zip(&fixed_report.thermal) {
         let status = &row[col("thermal_status")];
-        match analysed.temperature_c {
-            Some(theta_c) => {
+        match analysed.oil_temperature.as_ref().map(|q| q.value.0) {
+            Some(theta_k) => {
                 let theta: f64 = row[col("oil_temperature_K")].parse().unwrap();
-                assert!((theta - (theta_c + 273.15)).abs() < 1e-8, "{theta} K vs {theta_c} °C");
+                assert!((theta - theta_k).abs() < 1e-8, "{theta} K vs {theta_k} K");
                 let total: f64 = row[col("total_W")].parse().unwrap();
                 let q = housing.dissipation(theta).total;
                 assert!((total - q).abs() <= 1e-6 * q, "{total} W lost vs {q} W given off at {theta} K");

@@ -131,7 +131,7 @@ fn charges_iso(scene: &gearloss::Scene, r: &gearloss::report::friction::Efficien
 
 /// The thermal balance of every pair that asks for one, as its one-stage drive finds it: at each
 /// point, law and formulation θ* and P_V(θ*) to 1e-12 relative (the same root search on the same
-/// P_V(θ)), both rating torques (θ* on the oil's limit, at 95 °C) to 1e-9 (a root search of its own in the torque, settled to about
+/// P_V(θ)), what the housing gives off there by path to 1e-10, both rating torques (θ* on the oil's limit, at 95 °C) to 1e-9 (a root search of its own in the torque, settled to about
 /// 1e-11 relative, differs by 2.6e-11 in specs/fzg_c14_thermal.gear) where the pair has one.
 #[test]
 fn every_pair_balances_as_its_one_stage_drive() {
@@ -166,8 +166,19 @@ fn every_pair_balances_as_its_one_stage_drive() {
                 (None, None) => {}
                 other => panic!("{name}: {other:?}"),
             }
-            if let Some(loss) = b.loss {
-                assert!(close(loss, r.power_loss.value.0), "{name}: P_V {loss} vs {}", r.power_loss.value.0);
+            // P_V at θ* (at the search's limit without a balance, as the pair's) and what the housing
+            // gives off there by path.
+            assert!(close(b.loss, r.power_loss.value.0), "{name}: P_V {} vs {}", b.loss, r.power_loss.value.0);
+            let d = &r.dissipation;
+            let paths = [d.convection.value.0, d.radiation.value.0, d.foundation.value.0, d.cooler.value.0];
+            let mine =
+                [b.dissipation.convection, b.dissipation.radiation, b.dissipation.foundation, b.dissipation.cooler];
+            // A path of θ's excess over a threshold (the cooler's) scales θ*'s 1e-12 by θ*/(θ* − θ_set).
+            for (a, p) in mine.iter().zip(paths) {
+                assert!(
+                    (a - p).abs() <= 1e-10 * p.abs().max(1.0),
+                    "{name}: a dissipation path {a} W vs the pair's {p} W"
+                );
             }
             for (d, p) in [(b.rating, &r.thermal_rating), (b.rating_95, &r.thermal_rating_95)] {
                 assert_eq!(d.is_some(), p.is_some(), "{name}: a rating on one side only");

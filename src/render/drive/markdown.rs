@@ -261,58 +261,17 @@ fn input_shown(value: f64, unit: &str, units: Units) -> (String, String) {
 }
 
 fn thermal(out: &mut String, r: &DriveReport) {
-    let u = Shown::of(r);
-    if r.thermal.is_empty() && r.heat_balance.is_none() {
-        return;
-    }
-    let (w, temp) = (u.units.power(), u.units.temperature());
+    let Some(h) = &r.housing else { return };
+    let units = Units::of_system(r.unit_system);
     md!(out, "## Thermal balance (one sump)\n");
     md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n");
-    header(out, &["housing", "", "unit"]);
-    for (what, v, unit) in &r.housing {
-        let (v, unit) = input_shown(*v, unit, u.units);
-        row(out, &[what.clone(), v, unit]);
-    }
+    crate::render::markdown_thermal::housing_table(out, h, units);
+    // Every record names its point (a drive's ends).
+    crate::render::markdown_thermal::balance_table(out, &r.thermal, units, &|_| String::new());
     md!(out);
     if r.heat_balance.is_some() {
         image(out, PlotKind::HeatBalance, thermal::HEAT_BALANCE_TITLE);
     }
-    if r.thermal.is_empty() {
-        return;
-    }
-    header(
-        out,
-        &[
-            "point",
-            "law",
-            "formulation",
-            &temp.titled("θ*"),
-            &w.titled("P_V(θ*)"),
-            &w.titled("P_Q(θ*)"),
-            "the sump",
-            &format!("thermal rating ({})", u.torque.unit()),
-            &format!("rating at 95 °C ({})", u.torque.unit()),
-        ],
-    );
-    let opt = |x: Option<f64>, d: usize| x.map_or_else(|| "—".to_string(), |v| fixed(v, d));
-    let watts = |x: Option<f64>| x.map_or_else(|| "—".to_string(), |v| w.cell(v, 3));
-    for b in &r.thermal {
-        row(
-            out,
-            &[
-                b.label.clone(),
-                b.law.clone(),
-                b.formulation.clone(),
-                opt(b.temperature_c.map(|c| temp.from_celsius(c)), 3),
-                watts(b.loss),
-                watts(b.dissipation),
-                b.status.clone(),
-                opt(b.rating.map(|t| u.torque.of_si(t)), 2),
-                opt(b.rating_95.map(|t| u.torque.of_si(t)), 2),
-            ],
-        );
-    }
-    md!(out);
 }
 
 /// Each stage mesh's geometry, in the pair's tables.
