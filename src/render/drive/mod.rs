@@ -1,6 +1,6 @@
 //! The files of a drive's report folder: report.md ([`markdown`]), report.json (the serde data),
 //! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off),
-//! each helical stage mesh's plane_of_action_<stage>.svg (the figure of a helical pair's report),
+//! each helical stage mesh's `plane_of_action_<stage>.svg` (the figure of a helical pair's report),
 //! with a thermal balance or a duty cycle a pair's heat_balance.svg, duty_cycle_temperature.svg and
 //! duty_cycle_energy.svg, with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
 //! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
