@@ -99,7 +99,8 @@ impl SceneRun for DriveRun {
     }
 
     fn oil_sweep(&self, runs: &[OilRun<DriveReport>]) -> Result<Vec<File>, RunError> {
-        Ok(render::drive::oil_sweep::render_drive_oil_sweep(&report::drive_oil_sweep::build_drive_oil_sweep(runs)))
+        let sweep = report::drive_oil_sweep::build_drive_oil_sweep(runs);
+        render::drive::oil_sweep::render_drive_oil_sweep(&sweep).map_err(RunError::drawing)
     }
 
     fn shard_into(
@@ -155,7 +156,7 @@ impl SceneRun for DriveRun {
 
     fn redraw_oil_sweep(text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
         let sweep: report::drive_oil_sweep::DriveOilSweepReport = serde_json::from_str(text).map_err(bad)?;
-        let files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep);
+        let files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep).map_err(RunError::drawing)?;
         Ok((files, sweep.runs.iter().map(|r| r.folder.clone()).collect()))
     }
 

@@ -17,7 +17,7 @@ pub(crate) const OIL_SWEEP_PLOT: &str = "efficiency_vs_oil_temperature.svg";
 /// holds every row.
 const TABLE_ROWS: usize = 96;
 /// Curves of the plot: evenly picked rows.
-const PLOTTED_ROWS: usize = 8;
+pub(crate) const PLOTTED_ROWS: usize = 8;
 
 /// report.md, report.json and the plot.
 pub(crate) fn render_oil_sweep(r: &OilSweepReport) -> Result<Vec<(String, String)>, String> {

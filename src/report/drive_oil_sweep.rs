@@ -18,6 +18,11 @@ pub(crate) struct DriveOilRun {
     pub lubricant: Option<super::losses::LubricantReport>,
     /// Per shown row: (total loss W, η, meshes W, bearings W).
     pub rows: Vec<(f64, f64, f64, f64)>,
+    /// The run's report's warnings and notes, counted as a pair's comparison counts them.
+    #[serde(default)]
+    pub warnings: usize,
+    #[serde(default)]
+    pub notes: usize,
 }
 
 /// The comparison.
@@ -47,6 +52,8 @@ pub(crate) fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)])
                 kelvin: *kelvin,
                 folder: folder.clone(),
                 lubricant: r.lubricant.clone(),
+                warnings: r.findings.iter().filter(|f| f.severity == super::finding::Severity::Warning).count(),
+                notes: r.findings.iter().filter(|f| f.severity != super::finding::Severity::Warning).count(),
                 rows: r
                     .points
                     .iter()

@@ -492,7 +492,23 @@ fn a_drive_at_several_oil_temperatures() {
     let alone = gearloss::run_to_files("ev.gear", &text).unwrap();
     let alone_json = &alone.files.iter().find(|(f, _)| f == "report.json").unwrap().1;
     assert_eq!(file("oil_temperature_80degC/report.json"), alone_json);
-    assert!(file("report.md").contains("[60 degC](oil_temperature_60degC/report.md)"));
+    // Each run listed with its own report's warnings and notes, as a pair's comparison lists them,
+    // and the efficiency against the temperature drawn (the plot's values are report.json's rows).
+    for t in ["60", "80"] {
+        let report: serde_json::Value =
+            serde_json::from_str(file(&format!("oil_temperature_{t}degC/report.json"))).unwrap();
+        let findings = report["findings"].as_array().unwrap();
+        let warnings = findings.iter().filter(|f| f["severity"] == "warning").count();
+        let line = format!(
+            "[{t} degC](oil_temperature_{t}degC/report.md): {warnings} warning(s), {} note(s)",
+            findings.len() - warnings
+        );
+        assert!(file("report.md").contains(&line), "{line}");
+    }
+    assert!(file("report.md").contains("![efficiency against oil temperature](efficiency_vs_oil_temperature.svg)"));
+    let plot = file("efficiency_vs_oil_temperature.svg");
+    assert!(plot.contains("efficiency of the drive η (%)"));
+    assert_eq!(crate::plot_text::outside(plot), Vec::new(), "text past the canvas");
     let dir = std::env::temp_dir().join(format!("gearloss-drive-oil-{}", std::process::id()));
     for (name, content) in &r.files {
         let path = dir.join(name);

@@ -1,14 +1,19 @@
 //! The top of a drive's report folder at several oil temperatures: report.md comparing the runs
-//! (total loss and η of every shown row at each temperature, meshes and bearings beside) and
-//! report.json; each run's own report is in its folder.
+//! (total loss and η of every shown row at each temperature, meshes and bearings beside),
+//! report.json and efficiency_vs_oil_temperature.svg (as a pair's comparison draws it: η of the
+//! drive, its total loss and its meshes' against the temperature); each run's own report is in its
+//! folder.
 
+use crate::evaluate::plan::evenly;
 use crate::render::markup::md;
+use crate::render::oil_sweep::{OIL_SWEEP_PLOT, PLOTTED_ROWS};
+use crate::render::svg::{figure_with_legend, Panel};
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_oil_sweep::DriveOilSweepReport;
 use crate::report::units::Units;
 
-/// report.md and report.json of the comparison.
-pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, String)> {
+/// report.md, report.json and the plot of the comparison.
+pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Result<Vec<(String, String)>, String> {
     let mut out = String::new();
     let w = Units::of_system(r.unit_system).power();
     md!(out, "# {} — oil temperatures\n", r.title);
@@ -18,7 +23,7 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, St
         r.runs.len()
     );
     for run in &r.runs {
-        md!(out, "- [{}]({}/report.md)", run.label, run.folder);
+        md!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", run.label, run.folder, run.warnings, run.notes);
     }
     let runs: Vec<_> = r.runs.iter().map(|x| (x.label.as_str(), x.lubricant.as_ref())).collect();
     crate::render::oil_sweep::lubricant_table(&mut out, &runs, Units::of_system(r.unit_system));
@@ -44,8 +49,41 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Vec<(String, St
         cells.extend(r.runs.iter().map(|run| format!("{} / {}", w.cell(run.rows[i].2, 2), w.cell(run.rows[i].3, 2))));
         row(&mut out, &cells);
     }
+    let mut files = Vec::new();
+    if !r.rows.is_empty() {
+        md!(out, "\n![efficiency against oil temperature]({OIL_SWEEP_PLOT})");
+        files.push((OIL_SWEEP_PLOT.to_string(), plot(r)?));
+    }
     let pretty = serde_json::to_string_pretty(r).expect("the comparison serialises");
     let mut json = crate::render::inline_plain_arrays(&pretty);
     json.push('\n');
-    vec![("report.md".into(), out), ("report.json".into(), json)]
+    files.splice(0..0, [("report.md".into(), out), ("report.json".into(), json)]);
+    Ok(files)
+}
+
+/// One value of a run's row (total loss W, η, meshes W, bearings W).
+type RowValue<'a> = dyn Fn(&(f64, f64, f64, f64)) -> f64 + 'a;
+
+/// The drive's η, total loss and meshes' loss against the oil temperature (°C), one curve per
+/// evenly picked row, as a pair's comparison draws its own.
+fn plot(r: &DriveOilSweepReport) -> Result<String, String> {
+    let w = Units::of_system(r.unit_system).power();
+    let x: Vec<f64> = r.runs.iter().map(|run| run.kelvin - 273.15).collect();
+    let picked = evenly(r.rows.len(), PLOTTED_ROWS);
+    let series = |f: &RowValue<'_>| -> Vec<(String, Vec<f64>)> {
+        picked.iter().map(|&i| (r.rows[i].clone(), r.runs.iter().map(|run| f(&run.rows[i])).collect())).collect()
+    };
+    let panel = |y_label: String, f: &RowValue<'_>| Panel {
+        y_label,
+        x_label: "oil temperature (°C)".into(),
+        x: x.clone(),
+        series: series(f),
+        ..Default::default()
+    };
+    let panels = [
+        panel("efficiency of the drive η (%)".into(), &|v| 100.0 * v.1),
+        panel(w.titled("total loss"), &|v| w.value(v.0)),
+        panel(w.titled("meshes' loss"), &|v| w.value(v.2)),
+    ];
+    figure_with_legend(&format!("{}: efficiency against oil temperature", r.title), &panels, 420)
 }
