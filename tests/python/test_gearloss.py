@@ -600,6 +600,33 @@ def test_a_drives_efficiency_and_budget_are_the_pairs_tables():
     assert (efficiency["total_efficiency"] == records["efficiency"]).all()
 
 
+def test_thermal_and_duty_cycle_tables_serve_a_pair_and_a_drive():
+    """`thermal` and `duty_cycle` read a pair's and a drive's report alike (the same report types,
+    the same columns): every balance at θ* gives off what it loses (1e-9) by paths that add up
+    (1e-9); the EV reducer's drive rows carry their ratings (691.8 N·m at 500 rpm out, 36.22 kW);
+    the duty cycle's steps add up to its totals (1e-9)."""
+    drive = gearloss.Report.from_folder(ROOT / "reports/two_stage_ev_reducer")
+    pair = gearloss.Report.from_folder(ROOT / "reports/fzg_c14_gearbox_thermal")
+    for report in (drive, pair):
+        thermal = report.thermal
+        assert len(thermal) == len(report.data["thermal"]) > 0
+        assert list(thermal.columns) == list(pair.thermal.columns)
+        paths = thermal[[f"dissipation_{k}_W" for k in ("convection", "radiation", "foundation", "cooler")]].sum(axis=1)
+        assert ((paths - thermal["dissipation_total_W"]).abs() <= 1e-9 * thermal["dissipation_total_W"]).all()
+        settled = thermal[thermal["oil_temperature_K"].notna()]
+        assert len(settled) > 0
+        assert ((settled["power_loss_W"] - settled["dissipation_total_W"]).abs() <= 1e-9 * settled["power_loss_W"]).all()
+        duty = report.duty_cycle
+        assert list(duty.columns) == list(pair.duty_cycle.columns) and len(duty) > 0
+        totals = report.data["duty_cycle"]
+        for column, key in (("energy_lost_J", "energy_lost"), ("energy_dissipated_J", "energy_dissipated")):
+            total = totals[key]["value"]
+            assert abs(duty[column].sum() - total) <= 1e-9 * total
+    rated = drive.thermal[drive.thermal["point"] == "T_out = 150 N·m, n_out = 500 rpm"].iloc[0]
+    assert round(rated["thermal_rating_N_m"], 1) == 691.8 and round(rated["thermal_rating_W"] / 1e3, 2) == 36.22
+    assert len(pair.duty_cycle) == 9 and len(drive.duty_cycle) == 4
+
+
 def test_a_drives_dynamics_are_its_stage_meshes():
     """A drive's `dynamics` are the dynamics rows of every stage mesh its analyses ran as a pair
     alone, keyed by stage, mesh and the drive's point; each is that mesh's own report's table

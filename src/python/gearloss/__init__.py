@@ -370,6 +370,75 @@ class Report:
         return self._kind("dynamics")
 
     @property
+    def thermal(self):
+        """The thermal balance of every shown point, law and formulation (report.json's
+        ``thermal``), a pair's and a drive's alike: ``point`` (a pair's 1-based point, a drive's row
+        in words), ``law``, ``label``, ``formulation``, the torque and speed (a pair's pinion's, a
+        drive's given ends'), θ* (``oil_temperature_K``, empty without a balance), ``status``, P_V at
+        θ* and what the housing gives off there by path (W), ``heat_transfer_coefficient_W_m2_K``
+        and both ratings (N·m and W; empty in coast or where none is found); empty without a
+        thermal balance."""
+        import pandas
+
+        self._table_of("thermal", self._shape() if self._shape() in ("pair", "drive") else "pair")
+        q = lambda x: None if x is None else x["value"]  # noqa: E731
+        rows = []
+        for t in self.data.get("thermal", []):
+            d = t["dissipation"]
+            ratings = [(t.get(k) or {}) for k in ("thermal_rating", "thermal_rating_95")]
+            rows.append(
+                {
+                    "point": t.get("point", t["case"] + 1),
+                    "law": t["law"],
+                    "label": t["label"],
+                    "formulation": t["formulation"],
+                    "torque_N_m": q(t["pinion_torque"]),
+                    "speed_rad_s": q(t["pinion_speed"]),
+                    "oil_temperature_K": q(t.get("oil_temperature")),
+                    "status": t["status"],
+                    "power_loss_W": q(t["power_loss"]),
+                    **{f"dissipation_{k}_W": q(d[k]) for k in ("convection", "radiation", "foundation", "cooler", "total")},
+                    "heat_transfer_coefficient_W_m2_K": q(t["heat_transfer_coefficient"]),
+                    "thermal_rating_N_m": q(ratings[0].get("torque")),
+                    "thermal_rating_W": q(ratings[0].get("power")),
+                    "thermal_rating_95_N_m": q(ratings[1].get("torque")),
+                    "thermal_rating_95_W": q(ratings[1].get("power")),
+                }
+            )
+        return pandas.DataFrame(rows)
+
+    @property
+    def duty_cycle(self):
+        """The duty cycle's steps (report.json's ``duty_cycle``), a pair's and a drive's alike: each
+        step's ``label`` as written, ``duration_s``, torque and speed, and where computed the
+        transient's θ at its end (K), the energy lost and given off in it (J), and P_V and the energy
+        at the scene's fixed oil temperature (W, J); empty without a duty cycle."""
+        import pandas
+
+        self._table_of("duty_cycle", self._shape() if self._shape() in ("pair", "drive") else "pair")
+        duty = self.data.get("duty_cycle") or {"steps": []}
+        q = lambda x: None if x is None else x["value"]  # noqa: E731
+        keys = {
+            "oil_temperature_end": "oil_temperature_end_K",
+            "energy_lost": "energy_lost_J",
+            "energy_dissipated": "energy_dissipated_J",
+            "power_loss_fixed": "power_loss_fixed_W",
+            "energy_lost_fixed": "energy_lost_fixed_J",
+        }
+        rows = [
+            {
+                "step": k + 1,
+                "label": s["label"],
+                "duration_s": q(s["duration"]),
+                "torque_N_m": q(s["pinion_torque"]),
+                "speed_rad_s": q(s["pinion_speed"]),
+                **{name: q(s.get(key)) for key, name in keys.items()},
+            }
+            for k, s in enumerate(duty["steps"])
+        ]
+        return pandas.DataFrame(rows)
+
+    @property
     def stage_pairs(self) -> Dict[str, "Report"]:
         """A drive's stage meshes its ``analyses`` ran as pairs alone: each one's report (a pair's,
         with all of a pair's tables) by its folder, ``stages/<stage>[_<mesh>]_point_<n>``; a mesh
@@ -501,12 +570,14 @@ class Report:
 
 _SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
 _TABLES = {
-    "pair": ("records", "efficiency", "budget", "dynamics"),
+    "pair": ("records", "efficiency", "budget", "dynamics", "thermal", "duty_cycle"),
     "drive": (
         "records",
         "efficiency",
         "budget",
         "dynamics",
+        "thermal",
+        "duty_cycle",
         "drive_records",
         "stages",
         "stage_pairs",
