@@ -601,7 +601,7 @@ def test_a_drives_efficiency_and_budget_are_the_pairs_tables():
 
 
 def test_thermal_and_duty_cycle_tables_serve_a_pair_and_a_drive():
-    """`thermal` and `duty_cycle` read a pair's and a drive's report alike (the same report types,
+    """`thermal`, `heat_balance` and `duty_cycle` read a pair's and a drive's report alike (the same report types,
     the same columns): every balance at θ* gives off what it loses (1e-9) by paths that add up
     (1e-9); the EV reducer's drive rows carry their ratings (691.8 N·m at 500 rpm out, 36.22 kW);
     the duty cycle's steps add up to its totals (1e-9)."""
@@ -625,6 +625,15 @@ def test_thermal_and_duty_cycle_tables_serve_a_pair_and_a_drive():
     rated = drive.thermal[drive.thermal["point"] == "T_out = 150 N·m, n_out = 500 rpm"].iloc[0]
     assert round(rated["thermal_rating_N_m"], 1) == 691.8 and round(rated["thermal_rating_W"] / 1e3, 2) == 36.22
     assert len(pair.duty_cycle) == 9 and len(drive.duty_cycle) == 4
+    # The heat balance's curve: P_V − P_Q changes sign where the located θ* is (the curve is for
+    # the plot; θ* itself is located, not read from it).
+    for report in (drive, pair):
+        curve = report.heat_balance
+        assert list(curve.columns) == ["oil_temperature_K", "power_loss_W", "dissipation_W"] and len(curve) == 120
+        theta = report.data["heat_balance"]["oil_temperature"]["value"]
+        gap = curve["power_loss_W"] - curve["dissipation_W"]
+        below, above = curve[curve["oil_temperature_K"] < theta], curve[curve["oil_temperature_K"] > theta]
+        assert (gap[below.index] > 0).all() and gap[above.index[0]] < 0
 
 
 def test_a_drives_dynamics_are_its_stage_meshes():

@@ -408,6 +408,23 @@ class Report:
         return pandas.DataFrame(rows)
 
     @property
+    def heat_balance(self):
+        """The heat balance's curve (report.json's ``heat_balance``: a pair's first point, a
+        drive's first row), a pair's and a drive's alike: ``oil_temperature_K`` from ambient to
+        200 °C, the losses ``power_loss_W`` and what the housing gives off ``dissipation_W``
+        there; the located balance θ* is ``data["heat_balance"]["oil_temperature"]``. Empty
+        without one."""
+        import pandas
+
+        self._table_of("heat_balance", self._shape() if self._shape() in ("pair", "drive") else "pair")
+        h = self.data.get("heat_balance")
+        if not h:
+            return pandas.DataFrame()
+        return pandas.DataFrame(
+            {"oil_temperature_K": h["temperature"], "power_loss_W": h["power_loss"], "dissipation_W": h["dissipation"]}
+        )
+
+    @property
     def duty_cycle(self):
         """The duty cycle's steps (report.json's ``duty_cycle``), a pair's and a drive's alike: each
         step's ``label`` as written, ``duration_s``, torque and speed, and where computed the
@@ -570,13 +587,14 @@ class Report:
 
 _SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
 _TABLES = {
-    "pair": ("records", "efficiency", "budget", "dynamics", "thermal", "duty_cycle"),
+    "pair": ("records", "efficiency", "budget", "dynamics", "thermal", "heat_balance", "duty_cycle"),
     "drive": (
         "records",
         "efficiency",
         "budget",
         "dynamics",
         "thermal",
+        "heat_balance",
         "duty_cycle",
         "drive_records",
         "stages",
