@@ -164,14 +164,22 @@ pub(crate) fn drive_balances(
 ) -> Vec<DriveBalanceRow> {
     use rayon::prelude::*;
     let base = DriveSetup::new(scene, drive);
+    // A speed's ratings do not depend on the row's torque: located once per law, formulation and
+    // speed, from the sweep's largest torque, as a pair's `RatingTable` locates them.
+    let speeds = scene.operating.pinion_speed.values.len();
+    let guess = scene.operating.pinion_torque.values.iter().map(|t| t.value).fold(1.0, f64::max);
+    let slots: Vec<std::sync::OnceLock<crate::thermal::Ratings>> =
+        (0..scene.friction.len() * 2 * speeds).map(|_| std::sync::OnceLock::new()).collect();
     rows.par_iter()
         .map(|row| {
             let balance = crate::thermal::balance(|theta| loss_at(&base, scene, row, theta), housing);
             let t = balance.temperature.unwrap_or(crate::thermal::balance::SEARCH_LIMIT);
             let ratings = (row.point.flow == crate::drive::PowerFlow::Drive).then(|| {
-                let given = scene.operating.pinion_torque.values[row.torque_index].value;
-                let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
-                crate::thermal::ratings(p_v, housing, given.max(1.0))
+                let slot = &slots[(row.law_index * 2 + row.formulation.index()) * speeds + row.speed_index];
+                *slot.get_or_init(|| {
+                    let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
+                    crate::thermal::ratings(p_v, housing, guess)
+                })
             });
             DriveBalanceRow {
                 torque_index: row.torque_index,
