@@ -424,3 +424,44 @@ fn a_pair_past_line_contact_is_flagged_as_its_one_stage_drive() {
     let warned = report.findings.iter().filter(|f| f.message.contains("no gear mesh can have")).count();
     assert_eq!(warned, 1);
 }
+
+/// A pair's efficiency map and its one-stage drive's loss map are the same numbers: at every cell,
+/// law and formulation of `specs/fzg_c14_gearbox.gear`'s 40 × 40 map the drive's whole loss is the
+/// pair's budget total to 1e-12 relative (the walk's loss is the budget's; the pinion's torque
+/// given at the pinion gear, as the pair's), over the same grid.
+#[test]
+fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
+    let path = crate::root().join("specs/fzg_c14_gearbox.gear");
+    let source = std::fs::read_to_string(&path).unwrap();
+    let pair = gearloss::check("c14.gear", &source).unwrap();
+    let ast = gearloss::parse("c14.gear", &source).unwrap();
+    let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+    let d = drive.drive.as_ref().unwrap();
+    let report = gearloss::report::drive::build_drive_report(&drive, d, &gearloss::evaluate::evaluate_drive(&drive, d));
+    let map = gearloss::evaluate(&pair).efficiency_map.expect("the pair's map");
+    let labels: Vec<String> = pair.friction.iter().map(|l| l.label()).collect();
+    let mut compared = 0;
+    for c in &map.cells {
+        let drive_map = report
+            .maps
+            .iter()
+            .find(|m| m.law == labels[c.law_index] && m.formulation == c.formulation.name())
+            .unwrap_or_else(|| panic!("no drive map of {}", labels[c.law_index]));
+        let (t, s) = (c.torque_index, c.speed_index);
+        assert_eq!(drive_map.torques[t], map.torques[t]);
+        assert!(
+            (drive_map.speeds_rpm[s] - map.speeds[s] * 30.0 / std::f64::consts::PI).abs()
+                <= 1e-12 * drive_map.speeds_rpm[s]
+        );
+        let pair_loss = c.budget.as_ref().expect("a budget").total_loss;
+        let drive_loss = drive_map.loss[t][s];
+        assert!(
+            (drive_loss - pair_loss).abs() <= 1e-12 * pair_loss,
+            "{} at ({t}, {s}): {drive_loss} W vs {pair_loss} W",
+            labels[c.law_index]
+        );
+        compared += 1;
+    }
+    eprintln!("{compared} map cells compared");
+    assert!(compared >= 6000, "{compared}");
+}
