@@ -464,4 +464,34 @@ fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
     }
     eprintln!("{compared} map cells compared");
     assert!(compared >= 6000, "{compared}");
+    // And as data: the drive's loss_map.csv holds the pair's efficiency_map.csv's cells, the same
+    // torques, speeds, laws and formulations with the same whole loss (both written to 10 digits).
+    let drive_csv = gearloss::run_drive::drive_report_files(&drive, d).unwrap().1.files;
+    let drive_csv = &drive_csv.iter().find(|(f, _)| f == "loss_map.csv").expect("loss_map.csv").1;
+    let pair_files = gearloss::run_to_files("c14.gear", &source).unwrap().files;
+    let pair_csv = &pair_files.iter().find(|(f, _)| f == "efficiency_map.csv").unwrap().1;
+    let cells = |text: &str, names: [&str; 5]| -> Vec<(String, f64)> {
+        let mut lines = text.lines();
+        let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let at: Vec<usize> = names.iter().map(|n| head.iter().position(|h| h == n).unwrap()).collect();
+        let mut out: Vec<(String, f64)> = lines
+            .map(|l| {
+                // The law's label is quoted and holds commas only inside its quotes.
+                let (before, rest) = l.split_once(",\"").unwrap();
+                let (label, after) = rest.split_once("\",").unwrap();
+                let c: Vec<&str> = before.split(',').chain([label]).chain(after.split(',')).collect();
+                let key = format!("{} {} {} {}", c[at[0]], c[at[1]], c[at[2]], c[at[3]]);
+                (key, c[at[4]].parse::<f64>().unwrap())
+            })
+            .collect();
+        out.sort_by(|a, b| a.0.cmp(&b.0));
+        out
+    };
+    let of_drive = cells(drive_csv, ["input_torque_N_m", "input_speed_rad_s", "law", "formulation", "total_loss_W"]);
+    let of_pair = cells(pair_csv, ["pinion_torque_N_m", "pinion_speed_rad_s", "law", "formulation", "total_loss_W"]);
+    assert_eq!(of_drive.len(), of_pair.len());
+    for ((kd, vd), (kp, vp)) in of_drive.iter().zip(&of_pair) {
+        assert_eq!(kd, kp);
+        assert!((vd - vp).abs() <= 1e-9 * vp, "{kd}: {vd} vs {vp}");
+    }
 }

@@ -636,6 +636,25 @@ def test_thermal_and_duty_cycle_tables_serve_a_pair_and_a_drive():
         assert (gap[below.index] > 0).all() and gap[above.index[0]] < 0
 
 
+def test_a_map_is_a_table_of_a_pair_and_of_a_drive():
+    """`map` reads a pair's efficiency_map.csv and a drive's loss_map.csv: a row per grid point, law
+    and formulation, with the whole loss and η; the drive's cells are report.json's (1e-9: the CSV
+    holds 10 digits)."""
+    drive = gearloss.Report.from_folder(ROOT / "reports/two_stage_ev_reducer")
+    pair = gearloss.Report.from_folder(ROOT / "reports/fzg_c14_gearbox")
+    for report in (drive, pair):
+        assert {"law", "formulation", "total_loss_W", "total_efficiency"} <= set(report.map.columns)
+    table, maps = drive.map, drive.data["maps"]
+    assert len(table) == sum(len(m["torques"]) * len(m["speeds_rpm"]) for m in maps)
+    first = maps[0]
+    cells = table[(table["law"] == first["law"]) & (table["formulation"] == first["formulation"])]
+    losses = [v for row in first["loss"] for v in row]
+    assert len(cells) == len(losses)
+    for a, b in zip(cells["total_loss_W"], losses):
+        assert abs(a - b) <= 1e-9 * abs(b)
+    assert len(pair.map) == 40 * 40 * 4
+
+
 def test_a_drives_dynamics_are_its_stage_meshes():
     """A drive's `dynamics` are the dynamics rows of every stage mesh its analyses ran as a pair
     alone, keyed by stage, mesh and the drive's point; each is that mesh's own report's table

@@ -408,6 +408,22 @@ class Report:
         return pandas.DataFrame(rows)
 
     @property
+    def map(self):
+        """The efficiency map's cells as a DataFrame, a pair's and a drive's alike: a pair's
+        ``efficiency_map.csv`` (per grid point, law and formulation the pinion's torque and speed,
+        the mesh's η and loss, the budget's parts, ``total_loss_W`` and ``total_efficiency``), a
+        drive's ``loss_map.csv`` (the torque and speed at the ends the map is given at —
+        ``output_torque_N_m`` —, ``total_loss_W`` and ``total_efficiency``); SI units in the
+        column names; empty without a map."""
+        import pandas
+
+        self._table_of("map", self._shape() if self._shape() in ("pair", "drive") else "pair")
+        for name in ("efficiency_map.csv", "loss_map.csv"):
+            if name in self._files:
+                return pandas.read_csv(self._source(name))
+        return pandas.DataFrame()
+
+    @property
     def heat_balance(self):
         """The heat balance's curve (report.json's ``heat_balance``: a pair's first point, a
         drive's first row), a pair's and a drive's alike: ``oil_temperature_K`` from ambient to
@@ -587,12 +603,13 @@ class Report:
 
 _SHAPES = {"pair": "one gear pair", "drive": "a drive of several stages", "runs": "several oil temperatures"}
 _TABLES = {
-    "pair": ("records", "efficiency", "budget", "dynamics", "thermal", "heat_balance", "duty_cycle"),
+    "pair": ("records", "efficiency", "budget", "dynamics", "map", "thermal", "heat_balance", "duty_cycle"),
     "drive": (
         "records",
         "efficiency",
         "budget",
         "dynamics",
+        "map",
         "thermal",
         "heat_balance",
         "duty_cycle",

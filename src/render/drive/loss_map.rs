@@ -16,6 +16,8 @@ use super::shown_units::Shown;
 
 /// The map's file.
 pub(crate) const FILE: &str = "loss_map.svg";
+/// Its cells as data, as a pair's efficiency_map.csv.
+pub(crate) const CSV_FILE: &str = "loss_map.csv";
 
 /// The plot's width (px): a loss panel and an η panel side by side.
 const WIDTH: u32 = 1000;
@@ -74,6 +76,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
     if !r.maps.is_empty() {
         md!(out, "## Loss map\n");
         md!(out, "![total loss and efficiency over torque and speed]({})\n", super::loss_map::FILE);
+        md!(out, "Every cell of every law and formulation is in [{CSV_FILE}]({CSV_FILE}) (SI: N·m, rad/s, W).\n");
         header(
             out,
             &[
@@ -159,4 +162,39 @@ pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
             md!(out, "");
         }
     }
+}
+
+/// loss_map.csv: one row per grid point, law and formulation, as a pair's efficiency_map.csv
+/// writes its cells (SI, numbers to 10 significant digits): the torque and speed at the ends the
+/// map is given at (named by them: `output_torque_N_m`), the law and formulation, the whole loss
+/// P_source − P_sink and η (0 where both ends deliver).
+pub(crate) fn csv(r: &DriveReport) -> String {
+    use std::fmt::Write;
+    let end = |e: crate::drive::ShaftEnd| match e {
+        crate::drive::ShaftEnd::Input => "input",
+        crate::drive::ShaftEnd::Output => "output",
+    };
+    let num = |x: f64| format!("{:e}", crate::numerics::rounding::round_sig(x));
+    let mut out = String::new();
+    for (k, m) in r.maps.iter().enumerate() {
+        if k == 0 {
+            let (t, s) = (end(m.torque_at), end(m.speed_at));
+            let _ = writeln!(out, "{t}_torque_N_m,{s}_speed_rad_s,law,formulation,total_loss_W,total_efficiency");
+        }
+        for (i, torque) in m.torques.iter().enumerate() {
+            for (j, rpm) in m.speeds_rpm.iter().enumerate() {
+                let _ = writeln!(
+                    out,
+                    "{},{},\"{}\",{},{},{}",
+                    num(*torque),
+                    num(rpm * std::f64::consts::PI / 30.0),
+                    m.law.replace('"', "\"\""),
+                    m.formulation,
+                    num(m.loss[i][j]),
+                    num(m.efficiency[i][j])
+                );
+            }
+        }
+    }
+    out
 }

@@ -2,8 +2,10 @@
 //! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off),
 //! each helical stage mesh's `plane_of_action_<stage>.svg` (the figure of a helical pair's report),
 //! with a thermal balance or a duty cycle a pair's heat_balance.svg, duty_cycle_temperature.svg and
-//! duty_cycle_energy.svg, with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and, with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
-//! torque, coast below). Renderers read the [`DriveReport`]; they never compute physics.
+//! duty_cycle_energy.svg, with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and,
+//! with a map, loss_map.svg (total loss and η over the ends' torque × speed, drive above zero
+//! torque, coast below) and loss_map.csv (its cells as data). Renderers read the [`DriveReport`];
+//! they never compute physics.
 
 pub(crate) mod cycle;
 pub(crate) mod cycle_plots;
@@ -40,6 +42,7 @@ pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, Strin
     }
     if !report.maps.is_empty() {
         files.push((loss_map::FILE.to_string(), loss_map::loss_map(report)?));
+        files.push((loss_map::CSV_FILE.to_string(), loss_map::csv(report)));
     }
     if let Some(svg) = shaft_bending::moments(report) {
         files.push((shaft_bending::FILE.to_string(), svg?));
