@@ -87,8 +87,8 @@ pub struct DriveReport {
     pub unit_system: super::number::UnitSystem,
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
-    /// The housing as a thermal node (what, value, unit) and each point's balance.
-    /// The housing as a pair's report gives it, when the drive's thermal balance is asked for.
+    /// The housing as a pair's report gives it, when the drive's thermal balance (or the oil at its
+    /// balance) is asked for.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub housing: Option<super::thermal::HousingReport>,
     /// The balance of every shown row, as a pair's report gives each point's (the torque and speed
