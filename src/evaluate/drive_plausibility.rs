@@ -10,7 +10,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::stage_mesh::StageMesh;
-use super::stream::outside_unit_interval;
+use super::stream::{furthest_beyond_half_width, outside_unit_interval};
 use super::tally::HALF_WIDTH_LIMIT;
 use crate::drive::DrivePoint;
 use crate::model::SceneDrive;
@@ -49,14 +49,8 @@ pub(crate) fn implausible(drive: &SceneDrive, stages: &[StageMesh], point: &Driv
             }
             let mesh = &stages[k];
             let (ctx, _) = mesh.law_context(m.mesh, m.driving, m.torque, m.speed);
-            let worst = mesh
-                .table_positions(m.mesh, m.driving)
-                .iter()
-                .map(|(name, u)| (name, ctx.contact_at(*u)))
-                .filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius)
-                .max_by(|a, b| {
-                    (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
-                });
+            let contacts = mesh.table_positions(m.mesh, m.driving).iter().map(|(name, u)| (*name, ctx.contact_at(*u)));
+            let worst = furthest_beyond_half_width(contacts);
             if let Some((name, c)) = worst {
                 return Some(at(Implausibility::HalfWidth {
                     half_width: c.hertz_half_width,

@@ -103,7 +103,12 @@ fn point_summary(
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
-    implausible.extend(half_width_beyond_limit(&table));
+    implausible.extend(furthest_beyond_half_width(table.iter().copied()).map(|(name, c)| Implausible::HalfWidth {
+        half_width: c.hertz_half_width,
+        limit: HALF_WIDTH_LIMIT * c.reduced_radius,
+        u: c.u,
+        named: name.map(str::to_string),
+    }));
     if eval.wants_friction {
         let input = state.pinion_torque * state.pinion_speed;
         for (i, spec) in scene.friction.iter().enumerate() {
@@ -178,18 +183,14 @@ fn point_summary(
     (rows, tally, dynamics_point)
 }
 
-/// The contact whose Hertzian half-width is furthest beyond its limit (a fraction of the reduced
-/// radius), if any is beyond it.
-fn half_width_beyond_limit(table: &[(Option<&str>, ContactPoint)]) -> Option<Implausible> {
-    let (name, c) =
-        table.iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
-            (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
-        })?;
-    Some(Implausible::HalfWidth {
-        half_width: c.hertz_half_width,
-        limit: HALF_WIDTH_LIMIT * c.reduced_radius,
-        u: c.u,
-        named: name.map(str::to_string),
+/// Of `contacts` (each with its name, `B`, where it has one), the one whose Hertzian half-width is
+/// furthest beyond its limit (a fraction of the reduced radius), if any is beyond it: a pair's
+/// contact table at each point and each stage mesh's of a drive's row.
+pub(crate) fn furthest_beyond_half_width<'a>(
+    contacts: impl IntoIterator<Item = (Option<&'a str>, ContactPoint)>,
+) -> Option<(Option<&'a str>, ContactPoint)> {
+    contacts.into_iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
+        (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
     })
 }
 

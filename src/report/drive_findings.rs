@@ -280,13 +280,9 @@ pub(super) fn implausible_words(
         Implausibility::Efficiency(eta) => format!(
             "mesh efficiency η = {eta:.6} outside [0, 1] by more than rounding (4 ulps): the law gives friction no gear mesh can have here"
         ),
-        Implausibility::HalfWidth { half_width, limit, u, named } => format!(
-            "Hertz half-width b_H = {} exceeds R/10 = {} at {} from T1{}: the line-contact formulas (pressure, film, every law that reads them) no longer hold",
-            len.with(*half_width, 4),
-            len.with(*limit, 4),
-            len.with(*u, 3),
-            named.as_ref().map_or(String::new(), |n| format!(" (point {n})"))
-        ),
+        Implausibility::HalfWidth { half_width, limit, u, named } => {
+            super::plausibility::half_width_words((*half_width, *limit, *u), named, len)
+        }
     };
     format!("stage `{stage}`{mesh}: {what}")
 }
