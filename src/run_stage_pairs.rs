@@ -24,15 +24,18 @@ pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<Stag
         let mut row = StagePairReport {
             stage: p.stage_name.clone(),
             mesh: p.mesh.map(str::to_string),
-            point: p.point + 1,
-            point_words: crate::report::drive::point_words(scene, drive, p.torque_index, p.speed_index),
+            point: p.at.map(|at| at.point + 1),
+            point_words: p.at.map_or_else(
+                || "every operating point (the scene's own sweep)".to_string(),
+                |at| crate::report::drive::point_words(scene, drive, at.torque_index, at.speed_index),
+            ),
             law: law.clone(),
             formulation: formulation.name().to_string(),
             pinion: p.members[0].to_string(),
             wheel: p.members[1].to_string(),
-            pinion_torque: p.pinion_torque,
-            pinion_speed_rpm: p.pinion_speed * 30.0 / std::f64::consts::PI,
-            mesh_efficiency: p.mesh_efficiency,
+            pinion_torque: p.at.map(|at| at.pinion_torque),
+            pinion_speed_rpm: p.at.map(|at| at.pinion_speed * 30.0 / std::f64::consts::PI),
+            mesh_efficiency: p.at.map(|at| at.mesh_efficiency),
             pair_mean_efficiency: None,
             pair_charged_efficiency: None,
             folder: None,
@@ -43,9 +46,10 @@ pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<Stag
             if let Some(d) = refused.first() {
                 row.not_run = Some(d.reason.clone());
             } else {
-                let dir = folder(&p.stage_name, p.mesh, p.point);
+                let dir = folder(&p.stage_name, p.mesh, p.at.map(|at| at.point));
                 let (report, _, run_files) = crate::run_pair::run_scene_exact(alone)?;
-                if let Some(r) = report.efficiency.iter().find(|r| r.formulation == formulation) {
+                let one_point = p.at.is_some();
+                if let Some(r) = report.efficiency.iter().find(|r| one_point && r.formulation == formulation) {
                     let charged = match &r.ohlendorf {
                         Some(o) if charges_iso_mesh_loss(r.law, &alone.mesh().geometry()) => o.power_loss.value.0,
                         _ => r.power_loss.value.0,

@@ -63,7 +63,7 @@ pub use record_parquet_read::read_parquet_records;
 pub use records::{ExtraColumns, NoRecords};
 pub use records::{RecordSink, SummaryRow};
 pub use setup::{contact_table, Setup};
-pub use stage_pairs::{stage_pairs, StagePair};
+pub use stage_pairs::{stage_pairs, MeshAtPoint, StagePair};
 pub use stream::{evaluate_records, implausible_efficiency};
 pub use tally::Tally;
 pub use teeth::{teeth_details, TeethDetails};

@@ -12,8 +12,10 @@ pub struct StagePairReport {
     /// A planetary stage's mesh (`sun–planet`, `planet–ring`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mesh: Option<String>,
-    /// The drive's operating point, 1-based (torque-major), and in words.
-    pub point: usize,
+    /// The drive's operating point, 1-based (torque-major), and in words; None for the stage of a
+    /// scene of one pair, analysed over the scene's whole sweep (`point_words` says so).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub point: Option<usize>,
     pub point_words: String,
     /// The law and formulation the drive was solved under to give this state.
     pub law: String,
@@ -21,11 +23,15 @@ pub struct StagePairReport {
     /// The gears in the pinion's and in the wheel's places.
     pub pinion: String,
     pub wheel: String,
-    /// The pinion's torque (N·m) and speed (rpm).
-    pub pinion_torque: f64,
-    pub pinion_speed_rpm: f64,
-    /// The mesh efficiency the drive's walk charged.
-    pub mesh_efficiency: f64,
+    /// The pinion's torque (N·m) and speed (rpm); None over the whole sweep (the scene's own).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pinion_torque: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pinion_speed_rpm: Option<f64>,
+    /// The mesh efficiency the drive's walk charged; None over the whole sweep (each row's is in
+    /// the drive's points).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mesh_efficiency: Option<f64>,
     /// The pair alone's η̄ under the same law and formulation (its report's line integral; absent
     /// when the scene asks for no `efficiency`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -44,8 +50,10 @@ pub struct StagePairReport {
     pub not_run: Option<String>,
 }
 
-/// The folder of an analysed mesh's report: `stages/<stage>[_<mesh>]_point_<n>`.
-pub(crate) fn folder(stage: &str, mesh: Option<&str>, point: usize) -> String {
+/// The folder of an analysed mesh's report: `stages/<stage>[_<mesh>]_point_<n>` at point n (0-based
+/// `point`), `stages/<stage>[_<mesh>]` over the whole sweep.
+pub(crate) fn folder(stage: &str, mesh: Option<&str>, point: Option<usize>) -> String {
     let mesh = mesh.map_or_else(String::new, |m| format!("_{}", super::slug::slug(&m.replace('–', " "))));
-    format!("stages/{}{mesh}_point_{}", super::slug::slug(stage), point + 1)
+    let point = point.map_or_else(String::new, |p| format!("_point_{}", p + 1));
+    format!("stages/{}{mesh}{point}", super::slug::slug(stage))
 }

@@ -24,6 +24,7 @@ mod load_sharing;
 mod losses;
 mod oil_sweep;
 mod one_stage;
+mod one_stage_pair;
 mod pair_cycle;
 mod planetary;
 mod planetary_helical;

@@ -1,0 +1,128 @@
+//! A scene of one pair read as its one-stage drive analyses its stage's mesh as the pair alone over
+//! the scene's whole sweep (`stages/pair`): that pair alone is the scene's own pair, oil, laws,
+//! operating block and analyses of one pair, without what the drive evaluates itself (budget,
+//! thermal balance, duty cycle, map), so its mesh sections are the pair's own report's.
+
+use gearloss::report::Report;
+
+/// Every scene of one pair in specs/ and tests/specs/ok/ (not on a drive cycle).
+fn pair_scenes() -> Vec<std::path::PathBuf> {
+    let mut out = Vec::new();
+    for dir in ["specs", "tests/specs/ok"] {
+        for entry in std::fs::read_dir(crate::root().join(dir)).unwrap() {
+            let path = entry.unwrap().path();
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            let is_pair = text.contains("gears {") && !text.contains("stage \"") && !text.contains("vehicle");
+            if path.extension().is_some_and(|e| e == "gear") && is_pair {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The same JSON but for numbers that agree to `tol` relative (of the larger magnitude); the
+/// numbers compared.
+fn agree(at: &str, a: &serde_json::Value, b: &serde_json::Value, tol: f64) -> usize {
+    use serde_json::Value;
+    match (a, b) {
+        (Value::Number(x), Value::Number(y)) => {
+            let (x, y) = (x.as_f64().unwrap(), y.as_f64().unwrap());
+            assert!((x - y).abs() <= tol * x.abs().max(y.abs()), "{at}: {x} vs {y}");
+            1
+        }
+        (Value::Array(x), Value::Array(y)) => {
+            assert_eq!(x.len(), y.len(), "{at}: lengths");
+            x.iter().zip(y).enumerate().map(|(k, (x, y))| agree(&format!("{at}[{k}]"), x, y, tol)).sum()
+        }
+        (Value::Object(x), Value::Object(y)) => {
+            assert_eq!(x.keys().collect::<Vec<_>>(), y.keys().collect::<Vec<_>>(), "{at}: keys");
+            x.iter().map(|(k, v)| agree(&format!("{at}.{k}"), v, &y[k], tol)).sum()
+        }
+        _ => {
+            assert_eq!(a, b, "{at}");
+            0
+        }
+    }
+}
+
+/// The sections of a pair's report that are its mesh's (not the drive's): the geometry, every
+/// point in full (contact, μ along the line of action, film), each law's efficiency record without
+/// the budget, the dynamics, the stiffness from the teeth, the transmission error and the
+/// composite law's mean |μ|.
+fn mesh_sections(r: &Report) -> serde_json::Value {
+    let mut efficiency = serde_json::to_value(&r.efficiency).unwrap();
+    for record in efficiency.as_array_mut().unwrap() {
+        let record = record.as_object_mut().unwrap();
+        record.remove("budget");
+        record.remove("budget_charges_iso_mesh_loss");
+    }
+    serde_json::json!({
+        "geometry": r.geometry,
+        "operating_points": r.operating_points,
+        "efficiency": efficiency,
+        "dynamics": r.dynamics,
+        "stiffness": r.stiffness,
+        "transmission_error": r.transmission_error,
+        "composite_mu": r.composite_mu,
+    })
+}
+
+/// Every pair scene's one-stage drive analyses one mesh, its stage `pair`, over the whole sweep
+/// (not at a point), and the pair alone's report has the pair's own geometry, points in full,
+/// efficiency records, dynamics, stiffness, transmission error and composite μ: every number to
+/// 1e-12 relative (the same evaluation of the same pair: they are in fact equal).
+#[test]
+fn a_pairs_stage_is_the_pair_alone_over_its_sweep() {
+    let (mut scenes, mut numbers) = (0, 0);
+    for path in pair_scenes() {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        let Ok(pair) = gearloss::check(&name, &source) else { continue };
+        let ast = gearloss::parse(&name, &source).unwrap();
+        let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+        let (pair, drive) = (pair.at_oil_temperature(0), drive.at_oil_temperature(0));
+        let stages = gearloss::evaluate::stage_pairs(&drive, drive.drive.as_ref().unwrap());
+        assert_eq!(stages.len(), 1, "{name}");
+        assert!(stages[0].at.is_none() && stages[0].stage_name == "pair", "{name}");
+        let alone = stages[0].scene.as_ref().expect("the pair alone");
+        assert!(alone.gearbox.is_none() && alone.housing.is_none() && alone.duty_cycle.is_none(), "{name}");
+        assert_eq!(alone.operating.detail_points, pair.operating.detail_points, "{name}");
+        let (a, p) = (gearloss::report_of(alone), gearloss::report_of(&pair));
+        assert_eq!(a.efficiency.len(), p.efficiency.len(), "{name}");
+        numbers += agree(&name, &mesh_sections(&a), &mesh_sections(&p), 1e-12);
+        scenes += 1;
+    }
+    assert!(scenes >= 25, "{scenes} scenes");
+    assert!(numbers > 10_000, "{numbers} numbers");
+}
+
+/// Run as a drive, the one-pair scene writes its stage's report into `stages/pair/`, and that
+/// report.md is the pair's own from its Scene table on, but for what the drive evaluates itself:
+/// a scene with no gearbox, housing or map (specs/fzg_type_c.gear) byte for byte, and so are its
+/// plots but for their titles (`FZG type C: pair`).
+#[test]
+fn a_pairs_stage_report_is_the_pairs_own() {
+    let path = crate::root().join("specs/fzg_type_c.gear");
+    let source = std::fs::read_to_string(&path).unwrap();
+    let ast = gearloss::parse("fzg_type_c.gear", &source).unwrap();
+    let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+    let (report, rendered) = gearloss::run_drive::drive_report_files(&drive, drive.drive.as_ref().unwrap()).unwrap();
+    assert_eq!(report.stage_pairs.len(), 1);
+    let row = &report.stage_pairs[0];
+    assert_eq!((row.point, row.folder.as_deref()), (None, Some("stages/pair")));
+    let file = |files: &[(String, String)], name: &str| files.iter().find(|(f, _)| f == name).unwrap().1.clone();
+    let stage = file(&rendered.files, "stages/pair/report.md");
+    let alone = gearloss::run_to_files("fzg_type_c.gear", &source).unwrap();
+    let own = file(&alone.files, "report.md");
+    let from_scene = |md: &str| md[md.find("## Scene").unwrap()..].to_string();
+    assert_eq!(from_scene(&stage), from_scene(&own));
+    assert!(stage.starts_with("# FZG type C: pair\n"), "{}", &stage[..40]);
+    let top = file(&rendered.files, "report.md");
+    assert!(top.contains("[stages/pair/report.md](stages/pair/report.md)"));
+    for plot in ["sweep_mu.svg", "sweep_speed.svg", "point_6_friction.svg"] {
+        let stage = file(&rendered.files, &format!("stages/pair/{plot}")).replace("FZG type C: pair", "FZG type C");
+        assert!(stage == file(&alone.files, plot), "{plot} differs from the pair's own but for its title");
+    }
+}
