@@ -19,6 +19,14 @@ impl Scene {
     pub fn mesh(&self) -> Mesh<'_> {
         Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
     }
+
+    /// Whether the run evaluates, reports and renders the scene with a pair's modules: a scene of
+    /// one pair not on a drive cycle (lowered with its one-stage drive beside its blocks, which
+    /// its run does not yet read), or a scene built without a drive (a drive's stage mesh as its
+    /// pair alone). Every other scene runs as its drive.
+    pub fn runs_as_pair(&self) -> bool {
+        self.drive.as_ref().is_none_or(|d| d.one_pair && d.cycle.is_none())
+    }
 }
 
 impl SceneDrive {

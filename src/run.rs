@@ -33,10 +33,11 @@ pub fn report_of(scene: &Scene) -> Report {
     report::build_report(scene, &eval, &streamed.tally, &plan)
 }
 
-/// Runs `$body` with `$kind` bound to the scene's [`SceneRun`]: a drive's, else a pair's.
+/// Runs `$body` with `$kind` bound to the scene's [`SceneRun`]: a pair's where the scene
+/// [`Scene::runs_as_pair`], else a drive's.
 macro_rules! by_kind {
     ($scene:expr, $kind:ident => $body:expr) => {
-        if $scene.drive.is_some() {
+        if !$scene.runs_as_pair() {
             let $kind = &DriveRun;
             $body
         } else {

@@ -34,11 +34,25 @@ pub fn lower_scene(ast: &SceneAst) -> Result<Scene, Vec<Diagnostic>> {
 }
 
 /// As [`lower_scene`], with the folder of the scene file, where files it names (a stiffness CSV) are read.
+///
+/// Every scene lowers to one form: a scene of stages to its drive, a scene of one pair to its
+/// blocks as written (read by the pair's analyses) with its one-stage drive beside them
+/// (`Scene::drive`, `one_pair`; the rewrite of `scene/pair_stage.rs`, lowered after the pair's own
+/// lowering has passed, so a pair's errors are worded for a pair), and a pair on a drive cycle to
+/// its one-stage drive alone.
 pub fn lower_scene_in(ast: &SceneAst, base_dir: Option<&std::path::Path>) -> Result<Scene, Vec<Diagnostic>> {
     if super::pair_stage::is_pair_on_a_cycle(ast) {
         return lower_any(&super::pair_stage::as_one_stage(ast), base_dir, true);
     }
-    lower_any(ast, base_dir, false)
+    let mut scene = lower_any(ast, base_dir, false)?;
+    if scene.drive.is_none() {
+        // Only the drive and its map's ends differ from the pair's own lowering: the pair's blocks
+        // (its gearbox as the budget reads it among them) stay as the pair lowered them.
+        let one_stage = lower_any(&super::pair_stage::as_one_stage(ast), base_dir, true)?;
+        scene.drive = one_stage.drive;
+        scene.analyses.map_ends = one_stage.analyses.map_ends;
+    }
+    Ok(scene)
 }
 
 /// A scene of one pair lowered as the one-stage drive it is, whatever it asks for (the rewrite of

@@ -3,8 +3,9 @@
 //!
 //! It is the checked [`Scene`] as JSON: every quantity in SI base units (m, kg, s, N, Pa, K, rad,
 //! rad/s: uom's own serialisation of its values), each next to the text the user `written` where
-//! the scene keeps it; the drive of a scene of stages (or of one pair on a drive cycle, read as its
-//! one-stage drive) with its shafts, bearing places and stages; the friction laws, analyses and,
+//! the scene keeps it; the drive of every scene (a scene of one pair's is its one-stage drive,
+//! `one_pair`: stage `pair` from `pinion_shaft` to `wheel_shaft`) with its shafts, bearing places
+//! and stages; the friction laws, analyses and,
 //! for a cycle, the vehicle and its trace. Source spans are left out (they change with every
 //! comment above them, and the diagnostics already carry them); a value that is not a finite
 //! number prints as `null`.

@@ -126,3 +126,35 @@ fn a_pairs_stage_report_is_the_pairs_own() {
         assert!(stage == file(&alone.files, plot), "{plot} differs from the pair's own but for its title");
     }
 }
+
+/// The lowered form of every scene of one pair carries its one-stage drive beside its blocks: the
+/// drive `lower_as_one_stage_drive` gives (the same lowered JSON), with `one_pair` set, and the
+/// drive walked on the scene as checked writes the same drive records byte for byte (the pair's
+/// own blocks beside it change nothing the walk reads). A scene of one pair still runs as a pair.
+#[test]
+fn a_pairs_lowered_form_carries_its_one_stage_drive() {
+    let mut scenes = 0;
+    for path in pair_scenes() {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        let Ok(checked) = gearloss::check(&name, &source) else { continue };
+        let ast = gearloss::parse(&name, &source).unwrap();
+        let alone = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
+        let drive = checked.drive.as_ref().expect("a pair's lowered form has its drive");
+        assert!(drive.one_pair && checked.runs_as_pair(), "{name}");
+        let json = |s: &gearloss::Scene| serde_json::from_str::<serde_json::Value>(&gearloss::lowered(s)).unwrap();
+        assert_eq!(json(&checked)["drive"], json(&alone)["drive"], "{name}");
+        assert_eq!(json(&checked)["gears"], json(&checked)["drive"]["pairs"][0], "{name}");
+        if checked.analyses.efficiency.is_some() {
+            let walk = |s: &gearloss::Scene| {
+                let s = s.at_oil_temperature(0);
+                let mut csv = Vec::new();
+                gearloss::evaluate::evaluate_drive_into(&s, s.drive.as_ref().unwrap(), &mut csv).unwrap();
+                csv
+            };
+            assert!(walk(&checked) == walk(&alone), "{name}: the drive records differ");
+        }
+        scenes += 1;
+    }
+    assert!(scenes >= 25, "{scenes} scenes");
+}
