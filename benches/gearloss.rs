@@ -587,6 +587,34 @@ mod several_stages {
     }
 }
 
+/// A scene of one pair's map evaluated as the pair and as its one-stage drive (issue 53: the pair's
+/// run is to become its drive's): specs/fzg_c14_gearbox.gear (bearings, seals, dip lubrication,
+/// two laws, both formulations) with a 40 × 40 map over pinion torque × speed. Target: the drive's
+/// map within 1.5× of the pair's (its pair's mesh is integrated once a cell and formulation, at the
+/// given pinion torque, not once a pass of the fixed point).
+mod one_pair {
+    fn scene() -> gearloss::Scene {
+        super::drive_spec(
+            "fzg_c14_gearbox.gear",
+            "    operating { pinion_torque = 94.1 N*m  pinion_speed = 500 rpm  oil_temperature = 90 degC }\n    gearbox {\n        lubrication = dip(pinion_immersion = 41.2 mm, wheel_immersion = 59.2 mm, axis_height = 100 mm, housing_width = 200 mm)\n        pinion_shaft { bearing(type = cylindrical_roller, bore = 30 mm, outside = 90 mm, count = 2)  seal(diameter = 30 mm) }\n        wheel_shaft { bearing(type = cylindrical_roller, bore = 30 mm, outside = 90 mm, count = 2)  seal(diameter = 30 mm) }\n    }\n    friction { iso_14179_2(x_l = 0.846)  iso_14179_2 }\n    analyses { efficiency(formulations = [external, internal])  efficiency_map(pinion_torque = 10..400 N*m count 40, pinion_speed = 100..6000 rpm count 40) }\n",
+        )
+    }
+
+    /// The map as the pair evaluates it (its report, whose map is nearly all of its work).
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn map_40_by_40_as_the_pair(b: divan::Bencher) {
+        let scene = scene();
+        b.bench(|| gearloss::report_of(&scene).efficiency_map.map(|m| m.ranges.len()));
+    }
+
+    /// The same map as its one-stage drive evaluates it.
+    #[divan::bench(sample_count = 5, sample_size = 1)]
+    fn map_40_by_40_as_its_one_stage_drive(b: divan::Bencher) {
+        let scene = scene();
+        b.bench(|| gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).map.len());
+    }
+}
+
 mod planetary {
     use gearloss::evaluate::evaluate_drive_into;
 

@@ -12,7 +12,7 @@ use rayon::prelude::*;
 use super::setup::law_at;
 use super::stage_mesh::{LawMeshes, RingMesh, StageMesh, WholeMeshes};
 use crate::drive::walk::DriveModel;
-use crate::drive::{solve, DrivePoint, EndValue, MeshEfficiency, MeshForceSizes, ShaftEnd};
+use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes, ShaftEnd};
 use crate::efficiency::Formulation;
 use crate::friction::LawContext;
 use crate::model::{FrictionLawSpec, Scene, SceneDrive};
@@ -167,7 +167,7 @@ impl<'a> DriveSetup<'a> {
 
     /// The drive at `torque` and `speed` under law `law` and `formulation`.
     pub(crate) fn point(&self, law: usize, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
-        let meshes = LawMeshes { stages: &self.stages, spec: &self.scene.friction[law], formulation };
+        let meshes = LawMeshes::new(&self.stages, &self.scene.friction[law], formulation);
         self.solved(&meshes, torque, speed)
     }
 
@@ -203,6 +203,8 @@ impl<'a> DriveSetup<'a> {
         // Zero torque at the pinion gear too (an idle step): the mesh carries nothing, the input
         // gives the pinion shaft its own losses, as a pair's budget reads them.
         let at_pinion = self.drive.one_pair && torque.at == ShaftEnd::Input && torque.value >= 0.0;
+        let given = AtGivenPinion { meshes, torque: torque.value };
+        let meshes: &dyn MeshEfficiency = if at_pinion { &given } else { meshes };
         let mut point = solve(&model, meshes, torque, speed);
         let mut at_input = torque;
         let missed = |p: &DrivePoint| torque.value - p.stages[0].driving_torque;
@@ -296,6 +298,27 @@ pub(crate) struct GridCell {
 /// A law's validity along A–E of a mesh at `positions`: the contacts a pair alone reads it at (241
 /// evenly, the pitch point, and both sides of B and D: `super::setup::curve_positions` of the
 /// mesh's geometry, [`StageMesh::validity_positions`]).
+/// A one-pair drive's meshes with its pair's mesh at the given pinion torque: the torque the walks
+/// of [`DriveSetup::solved`] bring the mesh to (the input's raised by the pinion shaft's losses until
+/// the mesh has it), so each walk reads the mesh where the solution has it, and the law's mesh
+/// cycle is integrated once a point (`LawMeshes` reads back a state it has met) instead of once a
+/// pass at torques that differ from it in the last digits.
+struct AtGivenPinion<'a> {
+    meshes: &'a dyn MeshEfficiency,
+    torque: f64,
+}
+
+impl MeshEfficiency for AtGivenPinion<'_> {
+    fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64 {
+        match (stage, mesh, driving) {
+            (0, 0, Member::Pinion) if self.torque > 0.0 => {
+                self.meshes.efficiency(0, 0, Member::Pinion, self.torque, speed)
+            }
+            _ => self.meshes.efficiency(stage, mesh, driving, torque, speed),
+        }
+    }
+}
+
 fn validity_along(spec: &FrictionLawSpec, ctx: &LawContext, positions: &[f64]) -> super::laws::ValiditySummary {
     let built = law_at(spec, ctx);
     let contacts: Vec<_> = positions.iter().map(|u| ctx.contact_at(*u)).collect();
@@ -317,7 +340,7 @@ mod tests {
         let ast = crate::parse("fzg_c14_gearbox.gear", &source).unwrap();
         let scene = crate::scene::lower::lower_as_one_stage_drive(&ast, None).unwrap();
         let setup = DriveSetup::new(&scene, scene.drive.as_ref().unwrap());
-        let meshes = LawMeshes { stages: &setup.stages, spec: &scene.friction[0], formulation: Formulation::External };
+        let meshes = LawMeshes::new(&setup.stages, &scene.friction[0], Formulation::External);
         let ends = (
             EndValue { at: ShaftEnd::Input, value: 94.1 },
             EndValue { at: ShaftEnd::Input, value: 500.0 * std::f64::consts::PI / 30.0 },

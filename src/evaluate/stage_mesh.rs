@@ -170,9 +170,22 @@ pub(super) struct LawMeshes<'a> {
     pub(super) stages: &'a [StageMesh],
     pub(super) spec: &'a FrictionLawSpec,
     pub(super) formulation: Formulation,
+    /// The η already found in this walk, by mesh and its exact state (stage, mesh, driving member,
+    /// the bits of T and ω): a pass of the fixed point that puts a mesh at the same state as an
+    /// earlier pass (a one-pair drive's mesh at its given pinion torque, each pass) reads it back
+    /// instead of integrating the same mesh cycle again. The same number either way.
+    memo: std::cell::RefCell<Vec<(MeshState, f64)>>,
 }
 
-impl LawMeshes<'_> {
+/// A mesh's exact state in a walk: stage, mesh, driving member, T and ω as bits.
+type MeshState = (usize, usize, Member, u64, u64);
+
+impl<'a> LawMeshes<'a> {
+    /// The meshes of `stages` under law `spec` and `formulation`, for one walk.
+    pub(super) fn new(stages: &'a [StageMesh], spec: &'a FrictionLawSpec, formulation: Formulation) -> LawMeshes<'a> {
+        LawMeshes { stages, spec, formulation, memo: Default::default() }
+    }
+
     /// η = 1 − P_mesh/(T ω) of the law on one mesh at the context's point (its pinion's T and ω).
     pub(super) fn of(&self, ctx: &LawContext, h_v: f64) -> f64 {
         let law = law_at(self.spec, ctx);
@@ -182,8 +195,14 @@ impl LawMeshes<'_> {
 
 impl MeshEfficiency for LawMeshes<'_> {
     fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64 {
+        let key = (stage, mesh, driving, torque.to_bits(), speed.to_bits());
+        if let Some((_, eta)) = self.memo.borrow().iter().find(|(k, _)| *k == key) {
+            return *eta;
+        }
         let (ctx, h_v) = self.stages[stage].law_context(mesh, driving, torque, speed);
-        self.of(&ctx, h_v)
+        let eta = self.of(&ctx, h_v);
+        self.memo.borrow_mut().push((key, eta));
+        eta
     }
 }
 
