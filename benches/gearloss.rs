@@ -590,8 +590,8 @@ mod several_stages {
 /// A scene of one pair's map evaluated as the pair and as its one-stage drive (issue 53: the pair's
 /// run is to become its drive's): specs/fzg_c14_gearbox.gear (bearings, seals, dip lubrication,
 /// two laws, both formulations) with a 40 × 40 map over pinion torque × speed. Target: the drive's
-/// map within 1.5× of the pair's (its pair's mesh is integrated once a cell and formulation, at the
-/// given pinion torque, not once a pass of the fixed point).
+/// map within 1.5× of the pair's (its pair's mesh is integrated once a cell and law, at the given
+/// pinion torque, not once a pass of the fixed point and a formulation).
 mod one_pair {
     fn scene() -> gearloss::Scene {
         super::drive_spec(

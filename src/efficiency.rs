@@ -285,6 +285,16 @@ pub fn charged_mesh_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: F
     }
 }
 
+/// [`charged_mesh_loss`] in both formulations, [external, internal], from one integration of the
+/// mesh cycle (the line integral gives both at once; ISO/TR 14179-2's own loss is the same in both).
+pub fn charged_mesh_losses(ctx: &LawContext, law: &dyn FrictionLaw, h_v: f64) -> [f64; 2] {
+    if charges_iso_mesh_loss(law.id(), ctx.geometry) {
+        [iso_mesh_loss_at(ctx, law, h_v); 2]
+    } else {
+        mean_efficiencies(ctx, law).map(|m| power_loss(ctx, m.value))
+    }
+}
+
 /// P = (1 − η̄) T_p ω_p (W) at the context's operating point.
 fn power_loss(ctx: &LawContext, mean_efficiency: f64) -> f64 {
     (1.0 - mean_efficiency) * ctx.state.pinion_torque * ctx.state.pinion_speed

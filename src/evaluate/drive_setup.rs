@@ -10,7 +10,7 @@
 use rayon::prelude::*;
 
 use super::setup::law_at;
-use super::stage_mesh::{LawMeshes, RingMesh, StageMesh, WholeMeshes};
+use super::stage_mesh::{LawMeshes, MeshMemo, RingMesh, StageMesh, WholeMeshes};
 use crate::drive::walk::DriveModel;
 use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes, ShaftEnd};
 use crate::efficiency::Formulation;
@@ -167,7 +167,20 @@ impl<'a> DriveSetup<'a> {
 
     /// The drive at `torque` and `speed` under law `law` and `formulation`.
     pub(crate) fn point(&self, law: usize, formulation: Formulation, torque: EndValue, speed: EndValue) -> DrivePoint {
-        let meshes = LawMeshes::new(&self.stages, &self.scene.friction[law], formulation);
+        self.point_in(&MeshMemo::default(), law, formulation, torque, speed)
+    }
+
+    /// [`Self::point`] with the meshes' η read from and kept in `memo` (one memo for one law at one
+    /// point: its formulations' walks share their meshes' integrals).
+    pub(crate) fn point_in(
+        &self,
+        memo: &MeshMemo,
+        law: usize,
+        formulation: Formulation,
+        torque: EndValue,
+        speed: EndValue,
+    ) -> DrivePoint {
+        let meshes = LawMeshes::new(&self.stages, &self.scene.friction[law], formulation, memo);
         self.solved(&meshes, torque, speed)
     }
 
@@ -245,18 +258,28 @@ impl<'a> DriveSetup<'a> {
         range: std::ops::Range<usize>,
     ) -> Vec<DriveRow> {
         let formulations = self.formulations();
-        range
+        let nf = formulations.len().max(1);
+        // A point's rows under one law (its formulations, consecutive) are walked together, sharing
+        // their meshes' integrals; the rows of `range` are kept.
+        (range.start / nf..range.end.div_ceil(nf))
             .into_par_iter()
-            .map(|i| {
-                let c = self.grid_cell(i, (torques, speeds), ends, &formulations);
-                DriveRow {
-                    torque_index: c.torque_index,
-                    speed_index: c.speed_index,
-                    law_index: c.law_index,
-                    formulation: c.formulation,
-                    point: self.point(c.law_index, c.formulation, c.torque, c.speed),
-                    balance: None,
-                }
+            .flat_map_iter(|group| {
+                let memo = MeshMemo::default();
+                let rows: Vec<DriveRow> = (group * nf..(group + 1) * nf)
+                    .filter(|i| range.contains(i))
+                    .map(|i| {
+                        let c = self.grid_cell(i, (torques, speeds), ends, &formulations);
+                        DriveRow {
+                            torque_index: c.torque_index,
+                            speed_index: c.speed_index,
+                            law_index: c.law_index,
+                            formulation: c.formulation,
+                            point: self.point_in(&memo, c.law_index, c.formulation, c.torque, c.speed),
+                            balance: None,
+                        }
+                    })
+                    .collect();
+                rows
             })
             .collect()
     }
@@ -340,7 +363,8 @@ mod tests {
         let ast = crate::parse("fzg_c14_gearbox.gear", &source).unwrap();
         let scene = crate::scene::lower::lower_as_one_stage_drive(&ast, None).unwrap();
         let setup = DriveSetup::new(&scene, scene.drive.as_ref().unwrap());
-        let meshes = LawMeshes::new(&setup.stages, &scene.friction[0], Formulation::External);
+        let memo = MeshMemo::default();
+        let meshes = LawMeshes::new(&setup.stages, &scene.friction[0], Formulation::External, &memo);
         let ends = (
             EndValue { at: ShaftEnd::Input, value: 94.1 },
             EndValue { at: ShaftEnd::Input, value: 500.0 * std::f64::consts::PI / 30.0 },

@@ -5,7 +5,7 @@
 
 use super::setup::law_at;
 use crate::drive::{Member, MeshEfficiency, MeshForceSizes};
-use crate::efficiency::{charged_mesh_loss, ohlendorf_loss_factor, Formulation};
+use crate::efficiency::{charged_mesh_losses, ohlendorf_loss_factor, Formulation};
 use crate::friction::LawContext;
 use crate::geometry::sharing::Sharing;
 use crate::geometry::teeth::load_sharing::LoadSharing as TeethSharing;
@@ -170,39 +170,51 @@ pub(super) struct LawMeshes<'a> {
     pub(super) stages: &'a [StageMesh],
     pub(super) spec: &'a FrictionLawSpec,
     pub(super) formulation: Formulation,
-    /// The η already found in this walk, by mesh and its exact state (stage, mesh, driving member,
-    /// the bits of T and ω): a pass of the fixed point that puts a mesh at the same state as an
-    /// earlier pass (a one-pair drive's mesh at its given pinion torque, each pass) reads it back
-    /// instead of integrating the same mesh cycle again. The same number either way.
-    memo: std::cell::RefCell<Vec<(MeshState, f64)>>,
+    memo: &'a MeshMemo,
 }
+
+/// The meshes' η already found under one law at one point, by mesh and its exact state, in both
+/// formulations: a pass of the fixed point that puts a mesh at a state met before (a one-pair
+/// drive's mesh at its given pinion torque, each pass), or the walk of the point's other
+/// formulation there, reads it back instead of integrating the same mesh cycle again (the line
+/// integral gives both formulations at once). The same numbers either way.
+#[derive(Default)]
+pub(crate) struct MeshMemo(std::cell::RefCell<Vec<(MeshState, [f64; 2])>>);
 
 /// A mesh's exact state in a walk: stage, mesh, driving member, T and ω as bits.
 type MeshState = (usize, usize, Member, u64, u64);
 
 impl<'a> LawMeshes<'a> {
-    /// The meshes of `stages` under law `spec` and `formulation`, for one walk.
-    pub(super) fn new(stages: &'a [StageMesh], spec: &'a FrictionLawSpec, formulation: Formulation) -> LawMeshes<'a> {
-        LawMeshes { stages, spec, formulation, memo: Default::default() }
+    /// The meshes of `stages` under law `spec` and `formulation`, reading and filling `memo` (one
+    /// memo serves one law at one point).
+    pub(super) fn new(
+        stages: &'a [StageMesh],
+        spec: &'a FrictionLawSpec,
+        formulation: Formulation,
+        memo: &'a MeshMemo,
+    ) -> LawMeshes<'a> {
+        LawMeshes { stages, spec, formulation, memo }
     }
 
-    /// η = 1 − P_mesh/(T ω) of the law on one mesh at the context's point (its pinion's T and ω).
-    pub(super) fn of(&self, ctx: &LawContext, h_v: f64) -> f64 {
+    /// η = 1 − P_mesh/(T ω) of the law on one mesh at the context's point (its pinion's T and ω), in
+    /// both formulations.
+    fn of(&self, ctx: &LawContext, h_v: f64) -> [f64; 2] {
         let law = law_at(self.spec, ctx);
-        1.0 - charged_mesh_loss(ctx, &*law, self.formulation, h_v) / (ctx.state.pinion_torque * ctx.state.pinion_speed)
+        charged_mesh_losses(ctx, &*law, h_v).map(|p| 1.0 - p / (ctx.state.pinion_torque * ctx.state.pinion_speed))
     }
 }
 
 impl MeshEfficiency for LawMeshes<'_> {
     fn efficiency(&self, stage: usize, mesh: usize, driving: Member, torque: f64, speed: f64) -> f64 {
         let key = (stage, mesh, driving, torque.to_bits(), speed.to_bits());
-        if let Some((_, eta)) = self.memo.borrow().iter().find(|(k, _)| *k == key) {
-            return *eta;
+        let f = self.formulation.index();
+        if let Some((_, eta)) = self.memo.0.borrow().iter().find(|(k, _)| *k == key) {
+            return eta[f];
         }
         let (ctx, h_v) = self.stages[stage].law_context(mesh, driving, torque, speed);
         let eta = self.of(&ctx, h_v);
-        self.memo.borrow_mut().push((key, eta));
-        eta
+        self.memo.0.borrow_mut().push((key, eta));
+        eta[f]
     }
 }
 
