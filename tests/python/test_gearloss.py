@@ -671,6 +671,40 @@ def test_a_drives_dynamics_are_its_stage_meshes():
         pandas.testing.assert_frame_equal(mine.iloc[:, 3:].reset_index(drop=True), own)
 
 
+def test_a_one_pair_drives_stage_is_its_pair_over_the_sweep(tmp_path):
+    """A pair on a drive cycle analyses its stage as the pair alone over the scene's whole sweep
+    (`stages/pair`, no drive point of its own): `dynamics` keys each row by its pair's own point,
+    which is the drive's, and the rows are those of the same pair run alone (specs/fzg_dynamics.gear:
+    ρ and the dynamic factor to 1e-12)."""
+    text = (ROOT / "specs/fzg_dynamics.gear").read_text()
+    text = text.replace(
+        'scene "FZG type C dynamics" {',
+        'scene "FZG C dynamics on a cycle" {\n'
+        '    lubricant "oil" { dynamic_viscosity = 95 mPa*s  density = 880 kg/m^3  pressure_viscosity = 2e-8 1/Pa }\n'
+        '    vehicle "car" { mass = 1976 kg  rotating_mass_factor = 1.07  wheel_radius = 0.335 m\n'
+        '        road_load(f0 = 130 N, f1 = 1.2 N*s/m, f2 = 0.36 N*s^2/m^2)  final_ratio = 3.9 }\n'
+        f'    drive_cycle "UDDS" {{ trace = "{(ROOT / "specs/cycles/udds.csv").as_posix()}" }}\n'
+        "    friction { coulomb(mu = 0.08) }",
+    )
+    text = text.replace("rpm\n    }", "rpm\n        oil_temperature = 80 degC\n    }", 1)
+    text = text[: text.index("    analyses {")] + "    analyses { efficiency(formulations = [external])  drive_cycle  dynamics }\n}\n"
+    path = tmp_path / "cycle.gear"
+    path.write_text(text)
+    drive = gearloss.run(gearloss.Scene.from_file(path))
+    (row,) = drive.data["stage_pairs"]
+    assert row["folder"] == "stages/pair" and "point" not in row
+    dynamics = drive.dynamics
+    own = drive.stage_pairs["stages/pair"].dynamics
+    assert len(dynamics) == len(own) == 6 * 3
+    assert list(dynamics["drive_point"]) == list(own["point"])
+    alone = gearloss.run(scene(ROOT / "specs/fzg_dynamics.gear")).dynamics
+    numbers = [c for c in alone.columns if alone[c].dtype.kind == "f"]
+    assert numbers
+    for c in numbers:
+        for x, y in zip(dynamics[c], alone[c]):
+            assert x == y or abs(x - y) <= 1e-12 * max(abs(x), abs(y)), c
+
+
 def test_one_pair_on_a_drive_cycle_is_a_one_stage_drive():
     """One pair with a vehicle runs as its one-stage drive: its records are a drive's (stage `pair`
     from `pinion_shaft` to `wheel_shaft`), its cycle a table, and its four points' P_in are

@@ -351,7 +351,8 @@ class Report:
         """The dynamics rows: per point and formulation ρ, DTE and the dynamic factor. Of a drive:
         those of every stage mesh its ``analyses`` ran as a pair alone (:attr:`stage_pairs`), with
         the mesh's ``stage``, ``mesh`` (a planetary stage's) and the drive's operating point
-        (``drive_point``, 1-based) in front; empty where no stage mesh ran dynamics."""
+        (``drive_point``, 1-based; a one-pair drive's stage, analysed over the whole sweep, gives its
+        pair's own points, which are the drive's) in front; empty where no stage mesh ran dynamics."""
         if self._shape() == "drive":
             import pandas
 
@@ -361,8 +362,13 @@ class Report:
                 if not folder:
                     continue
                 table = self._sub(folder).dynamics
+                # A one-pair drive's stage analysed over the whole sweep has no drive point of its
+                # own: its pair's points are the drive's (the same grid, torque-major).
+                point = row.get("point")
+                if point is None and "point" in table.columns:
+                    point = table["point"]
                 for k, (name, value) in enumerate(
-                    [("stage", row["stage"]), ("mesh", row.get("mesh", "")), ("drive_point", row["point"])]
+                    [("stage", row["stage"]), ("mesh", row.get("mesh", "")), ("drive_point", point)]
                 ):
                     table.insert(k, name, value)
                 parts.append(table)
