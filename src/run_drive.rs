@@ -44,7 +44,13 @@ fn reported(
     let mut report = report::drive::build_drive_report(scene, drive, eval);
     let (rows, files) = crate::run_stage_pairs::stage_pair_files(scene, drive)?;
     report.stage_pairs = rows;
-    let mut rendered = render::drive::render_drive(&report).map_err(RunError::drawing)?;
+    // Drawn from the report as report.json reads back, as `gearloss render` draws it (and a pair's
+    // run, `run_pair::render_as_written`): a number report.json rounds is shown as it reads back.
+    let json = render::drive::render_drive_json(&report);
+    let read: DriveReport = serde_json::from_str(&json)
+        .map_err(|e| format!("report.json does not read back: {e}"))
+        .map_err(RunError::read_back)?;
+    let mut rendered = render::drive::render_drive(&read).map_err(RunError::drawing)?;
     rendered.files.extend(files);
     Ok((report, rendered))
 }
