@@ -251,14 +251,15 @@ fn map_ranges(
 /// those that settle above the oil's limit or find no balance.
 pub(crate) fn thermal(out: &mut String, r: &Report) {
     let mut keys: Vec<(&str, &str)> = Vec::new();
-    for t in &r.thermal {
+    for t in &r.heat.thermal {
         let k = (t.label.as_str(), t.formulation.name());
         if !keys.contains(&k) {
             keys.push(k);
         }
     }
     for (label, formulation) in keys {
-        let of: Vec<_> = r.thermal.iter().filter(|t| t.label == label && t.formulation.name() == formulation).collect();
+        let of: Vec<_> =
+            r.heat.thermal.iter().filter(|t| t.label == label && t.formulation.name() == formulation).collect();
         let deg = r.units().temperature();
         let theta: Vec<f64> = of.iter().filter_map(|t| t.oil_temperature.map(|q| deg.value(q.si()))).collect();
         let (lo, hi) = (theta.iter().copied().reduce(f64::min), theta.iter().copied().reduce(f64::max));
@@ -283,7 +284,7 @@ pub(crate) fn thermal(out: &mut String, r: &Report) {
             of.len()
         );
     }
-    if !r.thermal.is_empty() {
+    if !r.heat.thermal.is_empty() {
         md!(out);
     }
 }

@@ -19,7 +19,7 @@ fn opt(q: Option<&Q>, f: impl Fn(&Q) -> String) -> String {
 /// The section, empty without a housing.
 pub(crate) fn thermal_section(r: &Report) -> String {
     let mut out = String::new();
-    let Some(h) = &r.housing else { return out };
+    let Some(h) = &r.heat.housing else { return out };
     md!(out, "\n## Thermal balance\n");
     md!(
         out,
@@ -28,9 +28,9 @@ pub(crate) fn thermal_section(r: &Report) -> String {
     let u = r.units();
     housing_table(&mut out, h, u);
     let point = |t: &ThermalRecord| super::headline::point_at(r, &t.pinion_torque, &t.pinion_speed);
-    balance_table(&mut out, &r.thermal, u, &point);
+    balance_table(&mut out, &r.heat.thermal, u, &point);
     plots_of(&mut out, r, PlotKind::HeatBalance);
-    if let Some(d) = &r.duty_cycle {
+    if let Some(d) = &r.heat.duty_cycle {
         duty_cycle_lines(&mut out, "### Duty cycle", d, u);
         plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
         plots_of(&mut out, r, PlotKind::DutyCycleEnergy);

@@ -90,14 +90,16 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         unit_system,
         findings: super::drive_findings::findings(drive, &points, units),
         maps: super::drive_map::maps(scene, eval, &laws),
-        housing: scene
-            .housing
-            .as_ref()
-            .filter(|_| !eval.balances.is_empty() || eval.heat_balance.is_some())
-            .map(super::thermal::housing_report),
-        thermal: thermal_records(scene, drive, eval),
-        heat_balance,
-        duty_cycle,
+        heat: super::thermal_sections::ThermalSections {
+            housing: scene
+                .housing
+                .as_ref()
+                .filter(|_| !eval.balances.is_empty() || eval.heat_balance.is_some())
+                .map(super::thermal::housing_report),
+            thermal: thermal_records(scene, drive, eval),
+            heat_balance,
+            duty_cycle,
+        },
         cycle: match (&drive.cycle, &eval.cycle) {
             (Some(spec), Some(c)) => Some(super::drive_cycle::build_cycle_report(scene, drive, spec, c)),
             _ => None,

@@ -205,7 +205,7 @@ pub(super) fn report_findings(
 ) -> (Vec<Finding>, Vec<Finding>) {
     let mut rest = Vec::new();
     // The balances' and the duty cycle's warnings, as a pair's report gives them.
-    let (records, duty) = (&report.thermal, report.duty_cycle.as_ref());
+    let (records, duty) = (&report.heat.thermal, report.heat.duty_cycle.as_ref());
     rest.extend(super::thermal::thermal_findings(scene, records, duty, eval.duty.as_ref()));
     // What a scene's inputs are warned of, as a pair's report warns: blocks nothing reads, the
     // oil (its service limit, an implied density no oil has) and the housing's inputs.

@@ -87,20 +87,12 @@ pub struct DriveReport {
     pub unit_system: super::number::UnitSystem,
     pub points: Vec<DrivePointReport>,
     pub maps: Vec<DriveMapReport>,
-    /// The housing as a pair's report gives it, when the drive's thermal balance (or the oil at its
-    /// balance) is asked for.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub housing: Option<super::thermal::HousingReport>,
-    /// The balance of every shown row, as a pair's report gives each point's (the torque and speed
-    /// the given ends', the point in words; in drive the ratings at the given end).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub thermal: Vec<super::thermal::ThermalRecord>,
-    /// P_V(θ) and P_Q(θ) at the first row: a pair's heat balance.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub heat_balance: Option<super::thermal::HeatBalanceReport>,
-    /// The duty cycle under the first law and formulation: a pair's duty cycle report.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub duty_cycle: Option<super::thermal::DutyCycleReport>,
+    /// The housing, the balance of every shown row (the torque and speed the given ends', the point
+    /// in words; the ratings at the given end), the heat-balance curve at the first row and the duty
+    /// cycle under the first law and formulation: a pair's report's own (report.json's `housing`,
+    /// `thermal`, `heat_balance`, `duty_cycle`).
+    #[serde(flatten)]
+    pub heat: super::thermal_sections::ThermalSections,
     /// The vehicle over its drive cycle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cycle: Option<super::drive_cycle::DriveCycleReport>,

@@ -45,6 +45,7 @@ pub(crate) mod sweep;
 pub(crate) mod teeth;
 mod teeth_validity;
 pub(crate) mod thermal;
+pub(crate) mod thermal_sections;
 pub mod units;
 
 pub use finding::{Finding, Severity};
@@ -101,10 +102,12 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             let (t, s) = plan.map_grid();
             (t.to_vec(), s.to_vec())
         }),
-        housing: scene.housing.as_ref().map(thermal::housing_report),
-        thermal: thermal::thermal_records(scene, tally),
-        heat_balance: None,
-        duty_cycle: None,
+        heat: thermal_sections::ThermalSections {
+            housing: scene.housing.as_ref().map(thermal::housing_report),
+            thermal: thermal::thermal_records(scene, tally),
+            heat_balance: None,
+            duty_cycle: None,
+        },
         stiffness: None,
         transmission_error: Vec::new(),
     };
@@ -175,22 +178,22 @@ fn with_thermal(
     t: &crate::evaluate::thermal::ThermalDetails,
     h: &crate::thermal::Housing,
 ) {
-    report.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
-    report.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h, true));
+    report.heat.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
+    report.heat.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h, true));
     report.findings.extend(thermal::thermal_findings(
         scene,
-        &report.thermal,
-        report.duty_cycle.as_ref(),
+        &report.heat.thermal,
+        report.heat.duty_cycle.as_ref(),
         t.duty_cycle.as_ref(),
     ));
     report.findings.extend(housing_checks::housing_findings(scene, scene::units(scene)));
-    if report.heat_balance.is_some() {
+    if report.heat.heat_balance.is_some() {
         report.plots.push(PlotRef::new(PlotKind::HeatBalance, thermal::HEAT_BALANCE_TITLE));
     }
-    if report.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
+    if report.heat.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
         report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, thermal::DUTY_TEMPERATURE_TITLE));
     }
-    if report.duty_cycle.is_some() {
+    if report.heat.duty_cycle.is_some() {
         report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, thermal::DUTY_ENERGY_TITLE));
     }
 }

@@ -63,16 +63,10 @@ pub struct Report {
     /// label, mean |μ|), in sweep order, one per point and law.
     #[serde(with = "super::floats")]
     pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
-    /// The housing as a thermal node, when the scene gives one.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub housing: Option<super::thermal::HousingReport>,
-    /// One thermal balance per kept efficiency record, when the scene asks for it.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub thermal: Vec<super::thermal::ThermalRecord>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub heat_balance: Option<super::thermal::HeatBalanceReport>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub duty_cycle: Option<super::thermal::DutyCycleReport>,
+    /// The housing, the thermal balances, the heat-balance curve and the duty cycle (report.json's
+    /// `housing`, `thermal`, `heat_balance`, `duty_cycle`), as a drive's report holds them.
+    #[serde(flatten)]
+    pub heat: super::thermal_sections::ThermalSections,
     /// The mesh stiffness from the teeth, when the scene asks for it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stiffness: Option<super::teeth::TeethStiffnessReport>,

@@ -30,9 +30,9 @@ fn every_drive_row_is_at_its_own_balance() {
     let col = |name: &str| head.iter().position(|h| h == name).unwrap();
     let fixed = gearloss::check("ev.gear", &written).unwrap();
     let (fixed_report, _) = gearloss::run_drive::drive_report_files(&fixed, fixed.drive.as_ref().unwrap()).unwrap();
-    assert_eq!(rows.len(), fixed_report.thermal.len());
+    assert_eq!(rows.len(), fixed_report.heat.thermal.len());
     let (mut balanced, mut without) = (0, 0);
-    for (row, analysed) in rows.iter().zip(&fixed_report.thermal) {
+    for (row, analysed) in rows.iter().zip(&fixed_report.heat.thermal) {
         let status = &row[col("thermal_status")];
         match analysed.oil_temperature.as_ref().map(|q| q.value.0) {
             Some(theta_k) => {
@@ -97,7 +97,7 @@ fn a_pair_at_equilibrium_is_its_one_stage_drive() {
     let (head, rows) = table(&String::from_utf8(csv).unwrap());
     let col = |name: &str| head.iter().position(|h| h == name).unwrap();
     let mut compared = 0;
-    for (e, t) in report.efficiency.iter().zip(&report.thermal) {
+    for (e, t) in report.efficiency.iter().zip(&report.heat.thermal) {
         let Some(theta) = t.oil_temperature else { continue };
         let formulation = format!("{:?}", e.formulation).to_lowercase();
         let row = rows

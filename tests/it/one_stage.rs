@@ -151,6 +151,7 @@ fn every_pair_balances_as_its_one_stage_drive() {
         let speeds = pair.operating.pinion_speed.values.len();
         for b in &eval.balances {
             let r = report
+                .heat
                 .thermal
                 .iter()
                 .find(|r| {
@@ -220,8 +221,12 @@ fn every_pair_duty_cycle_and_heat_balance_as_its_one_stage_drive() {
             gearloss::report::drive::build_drive_report(&drive, d, &gearloss::evaluate::evaluate_drive(&drive, d));
         let close = |a: f64, b: f64, tol: f64| (a - b).abs() <= tol * b.abs().max(1.0);
         let q = |q: &Option<gearloss::report::number::Q>| q.as_ref().map(|q| q.value.0);
-        assert_eq!(report.heat_balance.is_some(), drive_report.heat_balance.is_some(), "{name}: a curve on one side");
-        if let (Some(p), Some(h)) = (&report.heat_balance, &drive_report.heat_balance) {
+        assert_eq!(
+            report.heat.heat_balance.is_some(),
+            drive_report.heat.heat_balance.is_some(),
+            "{name}: a curve on one side"
+        );
+        if let (Some(p), Some(h)) = (&report.heat.heat_balance, &drive_report.heat.heat_balance) {
             assert_eq!((&p.temperature, &p.dissipation), (&h.temperature, &h.dissipation), "{name}");
             for (a, b) in h.power_loss.iter().zip(&p.power_loss) {
                 assert!(close(*a, *b, 1e-12), "{name}: P_V {a} W vs the pair's {b} W");
@@ -232,8 +237,12 @@ fn every_pair_duty_cycle_and_heat_balance_as_its_one_stage_drive() {
             }
             curves += 1;
         }
-        assert_eq!(report.duty_cycle.is_some(), drive_report.duty_cycle.is_some(), "{name}: a duty cycle on one side");
-        if let (Some(p), Some(h)) = (&report.duty_cycle, &drive_report.duty_cycle) {
+        assert_eq!(
+            report.heat.duty_cycle.is_some(),
+            drive_report.heat.duty_cycle.is_some(),
+            "{name}: a duty cycle on one side"
+        );
+        if let (Some(p), Some(h)) = (&report.heat.duty_cycle, &drive_report.heat.duty_cycle) {
             assert_eq!(q(&h.energy_in), q(&p.energy_in), "{name}: the energy in");
             assert_eq!(h.steps.len(), p.steps.len());
             let mut pairs: Vec<(Option<f64>, Option<f64>, f64)> = Vec::new();

@@ -16,7 +16,7 @@ fn thermal_scene() -> gearloss::Scene {
 fn duty_cycle_energy_is_conserved() {
     let scene = thermal_scene();
     let report = gearloss::report_of(&scene);
-    let d = report.duty_cycle.as_ref().expect("the scene asks for its duty cycle");
+    let d = report.heat.duty_cycle.as_ref().expect("the scene asks for its duty cycle");
     let c = scene.housing.as_ref().unwrap().heat_capacity.unwrap();
     let end = d.steps.last().unwrap().oil_temperature_end.unwrap().si();
     let lost = d.energy_lost.unwrap().si();
@@ -51,6 +51,7 @@ fn rating_torque_puts_the_balance_on_the_limit() {
     let report = gearloss::report_of(&scene);
     let by_speed = |speed: f64| {
         let mut at: Vec<_> = report
+            .heat
             .thermal
             .iter()
             .filter(|t| t.pinion_speed.si() == speed)
@@ -94,7 +95,7 @@ fn equilibrium_records_balance_the_heat() {
     let report = gearloss::report_of(&scene);
     let housing = scene.housing.as_ref().unwrap();
     assert!(!report.efficiency.is_empty());
-    for (e, t) in report.efficiency.iter().zip(&report.thermal) {
+    for (e, t) in report.efficiency.iter().zip(&report.heat.thermal) {
         let Some(theta) = t.oil_temperature else { continue };
         let total = e.budget.as_ref().unwrap().total_loss.si();
         let q = housing.dissipation(theta.si()).total;

@@ -261,15 +261,15 @@ fn input_shown(value: f64, unit: &str, units: Units) -> (String, String) {
 }
 
 fn thermal(out: &mut String, r: &DriveReport) {
-    let Some(h) = &r.housing else { return };
+    let Some(h) = &r.heat.housing else { return };
     let units = Units::of_system(r.unit_system);
     md!(out, "## Thermal balance (one sump)\n");
     md!(out, "The oil temperature θ* where the whole drive's loss P_V(θ) (every mesh, gear, bearing and seal, the oil read at θ) equals what the housing gives off, P_Q(θ): the lowest root above ambient, bracketed in 5 K steps and located by Brent's method to 1e-10 K. In drive, the thermal rating is the torque at the given end that puts θ* on the oil's limit at the point's speed; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n");
     crate::render::markdown_thermal::housing_table(out, h, units);
     // Every record names its point (a drive's ends).
-    crate::render::markdown_thermal::balance_table(out, &r.thermal, units, &|_| String::new());
+    crate::render::markdown_thermal::balance_table(out, &r.heat.thermal, units, &|_| String::new());
     md!(out);
-    if r.heat_balance.is_some() {
+    if r.heat.heat_balance.is_some() {
         image(out, PlotKind::HeatBalance, thermal::HEAT_BALANCE_TITLE);
     }
 }
@@ -300,7 +300,7 @@ fn image(out: &mut String, kind: PlotKind, title: &str) {
 
 /// The duty cycle as a pair's report gives it, and its plots.
 fn duty(out: &mut String, r: &DriveReport) {
-    let Some(d) = &r.duty_cycle else { return };
+    let Some(d) = &r.heat.duty_cycle else { return };
     crate::render::markdown_thermal::duty_cycle_lines(out, "## Duty cycle", d, Units::of_system(r.unit_system));
     md!(out);
     if d.samples.is_some() {

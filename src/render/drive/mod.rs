@@ -55,11 +55,11 @@ pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, Strin
         }
     }
     let units = crate::report::units::Units::of_system(report.unit_system);
-    if let Some(h) = &report.heat_balance {
+    if let Some(h) = &report.heat.heat_balance {
         let svg = crate::render::svg::heat_balance_figure(&report.title, h, units)?;
         files.push((crate::report::PlotKind::HeatBalance.file().to_string(), svg));
     }
-    if let Some(d) = &report.duty_cycle {
+    if let Some(d) = &report.heat.duty_cycle {
         if d.samples.is_some() {
             let svg = crate::render::svg::duty_temperature_figure(&report.title, d, units)?;
             files.push((crate::report::PlotKind::DutyCycleTemperature.file().to_string(), svg));

@@ -16,7 +16,7 @@ fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String
 
 /// heat_balance.svg of a pair's report.
 pub fn heat_balance(r: &Report) -> Result<String, String> {
-    let h = r.heat_balance.as_ref().ok_or("the report has no heat balance")?;
+    let h = r.heat.heat_balance.as_ref().ok_or("the report has no heat balance")?;
     heat_balance_figure(&r.title, h, r.units())
 }
 
@@ -97,7 +97,7 @@ fn interpolate(x: &[f64], y: &[f64], at: f64) -> f64 {
 
 /// duty_cycle_temperature.svg of a pair's report.
 pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
-    let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
+    let d = r.heat.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
     duty_temperature_figure(&r.title, d, r.units())
 }
 
@@ -166,7 +166,7 @@ pub(crate) fn duty_temperature_figure(title: &str, d: &DutyCycleReport, u: Units
 
 /// duty_cycle_energy.svg of a pair's report.
 pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
-    let d = r.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
+    let d = r.heat.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
     duty_energy_figure(&r.title, d, r.units())
 }
 
