@@ -6,13 +6,19 @@ use gearloss::efficiency::Formulation;
 /// The scenes of one pair that ask for efficiency, among the specs and the ok fixtures (an internal
 /// pair's an internal stage).
 fn pair_scenes() -> Vec<std::path::PathBuf> {
+    pair_scene_files(|text| text.contains("efficiency("))
+}
+
+/// The scenes of one pair (a `gears` block, no `stage`) in specs/ and tests/specs/ok/ whose text
+/// `wanted` accepts, sorted.
+pub(crate) fn pair_scene_files(wanted: impl Fn(&str) -> bool) -> Vec<std::path::PathBuf> {
     let mut out = Vec::new();
     for dir in ["specs", "tests/specs/ok"] {
         for entry in std::fs::read_dir(crate::root().join(dir)).unwrap() {
             let path = entry.unwrap().path();
             let text = std::fs::read_to_string(&path).unwrap_or_default();
             let is_pair = text.contains("gears {") && !text.contains("stage \"");
-            if path.extension().is_some_and(|e| e == "gear") && is_pair && text.contains("efficiency(") {
+            if path.extension().is_some_and(|e| e == "gear") && is_pair && wanted(&text) {
                 out.push(path);
             }
         }

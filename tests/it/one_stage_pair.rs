@@ -7,19 +7,7 @@ use gearloss::report::Report;
 
 /// Every scene of one pair in specs/ and tests/specs/ok/ (not on a drive cycle).
 fn pair_scenes() -> Vec<std::path::PathBuf> {
-    let mut out = Vec::new();
-    for dir in ["specs", "tests/specs/ok"] {
-        for entry in std::fs::read_dir(crate::root().join(dir)).unwrap() {
-            let path = entry.unwrap().path();
-            let text = std::fs::read_to_string(&path).unwrap_or_default();
-            let is_pair = text.contains("gears {") && !text.contains("stage \"") && !text.contains("vehicle");
-            if path.extension().is_some_and(|e| e == "gear") && is_pair {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
+    crate::one_stage::pair_scene_files(|text| !text.contains("vehicle"))
 }
 
 /// The same JSON but for numbers that agree to `tol` relative (of the larger magnitude); the
