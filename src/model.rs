@@ -66,8 +66,7 @@ pub struct SceneDrive {
     pub ring_pairs: Vec<Option<GearPair>>,
     /// A vehicle over a drive cycle, with the box as its drive.
     pub cycle: Option<DriveCycleSpec>,
-    /// The scene is one pair (a `gears` block) read as its one-stage drive (`scene/pair_stage.rs`):
-    /// its `pinion_torque` is the torque at the pinion gear (the input's that plus the pinion shaft's losses).
+    /// One pair (a `gears` block) as its one-stage drive, `pinion_torque` at the pinion gear (`scene/pair_stage.rs`).
     pub one_pair: bool,
     /// `oil_temperature = equilibrium`: each row of the sweep is evaluated at its own balance θ*
     /// (its records then hold θ* and the sump's status).
