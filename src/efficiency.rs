@@ -278,11 +278,7 @@ pub fn iso_mesh_loss_at(ctx: &LawContext, law: &dyn FrictionLaw, h_v: f64) -> f6
 /// The mesh loss the budget charges at the context's point (W): [`iso_mesh_loss_at`] where
 /// [`charges_iso_mesh_loss`] says so, else the law's line integral [`mean_power_loss`].
 pub fn charged_mesh_loss(ctx: &LawContext, law: &dyn FrictionLaw, formulation: Formulation, h_v: f64) -> f64 {
-    if charges_iso_mesh_loss(law.id(), ctx.geometry) {
-        iso_mesh_loss_at(ctx, law, h_v)
-    } else {
-        mean_power_loss(ctx, law, formulation)
-    }
+    charged_mesh_losses(ctx, law, h_v)[formulation.index()]
 }
 
 /// [`charged_mesh_loss`] in both formulations, [external, internal], from one integration of the

@@ -3,10 +3,7 @@
 //! the passes), the point itself dropped. The map's memory is then a few numbers a cell, not a
 //! whole `DrivePoint` (its shafts, bearings and forces) a cell.
 
-use rayon::prelude::*;
-
 use super::drive_setup::DriveSetup;
-use super::stage_mesh::MeshMemo;
 use crate::drive::DriveOperating;
 use crate::efficiency::Formulation;
 
@@ -34,30 +31,15 @@ pub(crate) fn map_cells(
     speeds: &[f64],
     ends: DriveOperating,
 ) -> Vec<DriveMapCell> {
-    let formulations = setup.formulations();
-    let nf = formulations.len().max(1);
-    // A cell's rows under one law (its formulations) share their meshes' integrals.
-    (0..torques.len() * speeds.len() * setup.rows_per_point() / nf)
-        .into_par_iter()
-        .flat_map_iter(|group| {
-            let memo = MeshMemo::default();
-            let cells: Vec<DriveMapCell> = (group * nf..(group + 1) * nf)
-                .map(|i| {
-                    let c = setup.grid_cell(i, (torques, speeds), ends, &formulations);
-                    let p = setup.point_in(&memo, c.law_index, c.formulation, c.torque, c.speed);
-                    DriveMapCell {
-                        torque_index: c.torque_index,
-                        speed_index: c.speed_index,
-                        law_index: c.law_index,
-                        formulation: c.formulation,
-                        efficiency: p.efficiency,
-                        power_lost: p.power_lost(),
-                        both_ends_deliver: p.both_ends_deliver,
-                        iterations: p.iterations,
-                    }
-                })
-                .collect();
-            cells
-        })
-        .collect()
+    let rows = torques.len() * speeds.len() * setup.rows_per_point();
+    setup.grid_points((torques, speeds), ends, 0..rows, |c, p| DriveMapCell {
+        torque_index: c.torque_index,
+        speed_index: c.speed_index,
+        law_index: c.law_index,
+        formulation: c.formulation,
+        efficiency: p.efficiency,
+        power_lost: p.power_lost(),
+        both_ends_deliver: p.both_ends_deliver,
+        iterations: p.iterations,
+    })
 }

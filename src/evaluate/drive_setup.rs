@@ -257,29 +257,41 @@ impl<'a> DriveSetup<'a> {
         ends: crate::drive::DriveOperating,
         range: std::ops::Range<usize>,
     ) -> Vec<DriveRow> {
+        self.grid_points((torques, speeds), ends, range, |c, point| DriveRow {
+            torque_index: c.torque_index,
+            speed_index: c.speed_index,
+            law_index: c.law_index,
+            formulation: c.formulation,
+            point,
+            balance: None,
+        })
+    }
+
+    /// The rows `range` of a grid walked in parallel, each reduced at once by `keep` to what the
+    /// caller holds of it. A point's rows under one law (its formulations, consecutive) are walked
+    /// together, sharing their meshes' integrals (`MeshMemo`).
+    pub(crate) fn grid_points<T: Send>(
+        &self,
+        grid: (&[f64], &[f64]),
+        ends: crate::drive::DriveOperating,
+        range: std::ops::Range<usize>,
+        keep: impl Fn(&GridCell, DrivePoint) -> T + Sync,
+    ) -> Vec<T> {
         let formulations = self.formulations();
         let nf = formulations.len().max(1);
-        // A point's rows under one law (its formulations, consecutive) are walked together, sharing
-        // their meshes' integrals; the rows of `range` are kept.
         (range.start / nf..range.end.div_ceil(nf))
             .into_par_iter()
             .flat_map_iter(|group| {
                 let memo = MeshMemo::default();
-                let rows: Vec<DriveRow> = (group * nf..(group + 1) * nf)
+                let kept: Vec<T> = (group * nf..(group + 1) * nf)
                     .filter(|i| range.contains(i))
                     .map(|i| {
-                        let c = self.grid_cell(i, (torques, speeds), ends, &formulations);
-                        DriveRow {
-                            torque_index: c.torque_index,
-                            speed_index: c.speed_index,
-                            law_index: c.law_index,
-                            formulation: c.formulation,
-                            point: self.point_in(&memo, c.law_index, c.formulation, c.torque, c.speed),
-                            balance: None,
-                        }
+                        let c = self.grid_cell(i, grid, ends, &formulations);
+                        let point = self.point_in(&memo, c.law_index, c.formulation, c.torque, c.speed);
+                        keep(&c, point)
                     })
                     .collect();
-                rows
+                kept
             })
             .collect()
     }
