@@ -68,10 +68,9 @@ fn a_pairs_stage_is_the_pair_alone_over_its_sweep() {
         let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
         let source = std::fs::read_to_string(&path).unwrap();
         let Ok(pair) = gearloss::check(&name, &source) else { continue };
-        let ast = gearloss::parse(&name, &source).unwrap();
-        let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
-        let (pair, drive) = (pair.at_oil_temperature(0), drive.at_oil_temperature(0));
-        let stages = gearloss::evaluate::stage_pairs(&drive, drive.drive.as_ref().unwrap());
+        // The checked scene carries its one-stage drive (`lower_as_one_stage_drive`'s, below).
+        let pair = pair.at_oil_temperature(0);
+        let stages = gearloss::evaluate::stage_pairs(&pair, pair.drive.as_ref().unwrap());
         assert_eq!(stages.len(), 1, "{name}");
         assert!(stages[0].at.is_none() && stages[0].stage_name == "pair", "{name}");
         let alone = stages[0].scene.as_ref().expect("the pair alone");
