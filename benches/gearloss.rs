@@ -587,11 +587,12 @@ mod several_stages {
     }
 }
 
-/// A scene of one pair's map evaluated as the pair and as its one-stage drive (issue 53: the pair's
-/// run is to become its drive's): specs/fzg_c14_gearbox.gear (bearings, seals, dip lubrication,
-/// two laws, both formulations) with a 40 × 40 map over pinion torque × speed. Target: the drive's
-/// map within 1.5× of the pair's (its pair's mesh is integrated once a cell and law, at the given
-/// pinion torque, not once a pass of the fixed point and a formulation).
+/// A scene of one pair's map, in the pair's report and as its one-stage drive's map:
+/// specs/fzg_c14_gearbox.gear (bearings, seals, dip lubrication, two laws, both formulations) with
+/// a 40 × 40 map over pinion torque × speed. The pair's map is its one-stage drive's walk (issue
+/// 53), read as the pair's budget; its report adds the points and the best points' searches, each
+/// evaluation a walk. Target: the pair's report within 1.5× of the drive's map alone (its pair's
+/// mesh is integrated once a cell and law, at the given pinion torque).
 mod one_pair {
     fn scene() -> gearloss::Scene {
         super::drive_spec(
@@ -600,7 +601,7 @@ mod one_pair {
         )
     }
 
-    /// The map as the pair evaluates it (its report, whose map is nearly all of its work).
+    /// The pair's report (its map nearly all of its work).
     #[divan::bench(sample_count = 5, sample_size = 1)]
     fn map_40_by_40_as_the_pair(b: divan::Bencher) {
         let scene = scene();

@@ -1,18 +1,19 @@
 //! `efficiency_map`: mean mesh efficiency, the loss budget and total efficiency over a torque × speed
 //! grid of its own (not the scene's operating points), for every law and formulation; the cells go
-//! to efficiency_map.csv, the report keeps the grid and the ranges over it.
+//! to efficiency_map.csv, the report keeps the grid and the ranges over it. A pair's map is its
+//! one-stage drive's: each cell the drive's walk (as a drive's map walks it), read as the pair's
+//! budget reads a point.
 
 use std::fmt::Write;
 
-use rayon::prelude::*;
 use serde::Serialize;
 
-use super::cases::state_at;
-use super::laws::evaluate_law;
-use super::setup::{contact_table, Setup};
-use crate::losses::parts::COLUMNS;
+use super::drive_setup::{DriveSetup, GridCell};
+use super::setup::Setup;
+use crate::drive::{DriveOperating, DrivePoint, ShaftEnd};
+use crate::losses::parts::{LossColumn, COLUMNS};
 use crate::losses::BudgetParts;
-use crate::model::{Formulation, Operating, Scene};
+use crate::model::{Formulation, Scene};
 
 /// One grid point, one law, one formulation.
 #[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
@@ -43,49 +44,27 @@ pub struct EfficiencyMap {
     pub best: Vec<super::map_best::MapBest>,
 }
 
-/// Evaluates the scene's `efficiency_map`, if it asks for one.
+/// Evaluates the scene's `efficiency_map`, if it asks for one: every cell is the scene's one-stage
+/// drive walked at the cell's pinion torque (at the pinion gear) and speed under each law and
+/// formulation (`DriveSetup::grid_points`, the walk a drive's map takes), read as the pair's map
+/// reads it: the mesh's η̄ and loss as the budget charges them, and with a gearbox the parts beside
+/// the mesh, the whole loss and the total efficiency 1 − P_total/(T_1 ω_1).
 pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap> {
     let (torques, speeds) = scene.analyses.efficiency_map.as_ref()?;
-    let grid = Operating {
-        pinion_torque: torques.clone(),
-        pinion_speed: speeds.clone(),
-        oil_temperature: scene.operating.oil_temperature.clone(),
-        oil_temperatures: None,
-        detail_points: Vec::new(),
-        equilibrium: None,
-    };
-    let n = grid.count();
-    let cells: Vec<Vec<MapCell>> = (0..n)
-        .into_par_iter()
-        .map(|k| {
-            let state = state_at(&grid, k);
-            let table = contact_table(eval, &state);
-            let budget = eval.loss_budget(scene, &state);
-            let input = state.pinion_torque * state.pinion_speed;
-            let mut out = Vec::new();
-            for (i, spec) in scene.friction.iter().enumerate() {
-                let law = evaluate_law(eval, spec, state, &table, false, false);
-                for e in &law.efficiency {
-                    let (mesh, mesh_efficiency) = law.charged_mesh(e, eval, input);
-                    out.push(MapCell {
-                        torque_index: k / speeds.values.len(),
-                        speed_index: k % speeds.values.len(),
-                        law_index: i,
-                        formulation: e.formulation,
-                        mesh_efficiency,
-                        mesh_loss: mesh,
-                        budget: budget.as_ref().map(|b| b.with_mesh(mesh, input)),
-                    });
-                }
-            }
-            out
-        })
-        .collect();
-    let cells: Vec<MapCell> = cells.into_iter().flatten().collect();
+    // Every scene of one pair carries its one-stage drive (lowering attaches it).
+    let drive = scene.drive.as_ref()?;
+    let setup = DriveSetup::new(scene, drive);
     let (t, s) = (
         torques.values.iter().map(|t| t.value).collect::<Vec<_>>(),
         speeds.values.iter().map(|s| s.value).collect::<Vec<_>>(),
     );
+    let columns = scene.gearbox.as_ref().map(crate::losses::parts::catalog::columns_of);
+    let ends = DriveOperating { torque_at: ShaftEnd::Input, speed_at: ShaftEnd::Input };
+    let rows = t.len() * s.len() * setup.rows_per_point();
+    let cells = setup.grid_points((&t, &s), ends, 0..rows, |c, p| {
+        let input = c.torque.value * c.speed.value;
+        map_cell(c, &p, input, columns.as_deref())
+    });
     let mut fields = Vec::new();
     for law in 0..scene.friction.len() {
         for f in eval.formulations.iter().copied() {
@@ -99,7 +78,7 @@ pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap>
             fields.push((law, f, total, values));
         }
     }
-    let best = super::map_best::best_points(scene, eval, &t, &s, &fields);
+    let best = super::map_best::best_points(&setup, &t, &s, &fields, columns.as_deref());
     Some(EfficiencyMap {
         torques: t,
         speeds: s,
@@ -108,6 +87,45 @@ pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap>
         cells,
         best,
     })
+}
+
+/// One cell of the pair's map from its one-stage drive's point `p` at input power `input` = T_1 ω_1
+/// (W): the stage's mesh η̄ and loss, and with a gearbox (`columns`: the parts it describes) its
+/// budget ([`budget_of`]).
+fn map_cell(c: &GridCell, p: &DrivePoint, input: f64, columns: Option<&[LossColumn]>) -> MapCell {
+    MapCell {
+        torque_index: c.torque_index,
+        speed_index: c.speed_index,
+        law_index: c.law_index,
+        formulation: c.formulation,
+        mesh_efficiency: p.stages[0].mesh_efficiency,
+        mesh_loss: p.stages[0].mesh_loss,
+        budget: columns.map(|columns| budget_of(p, input, columns)),
+    }
+}
+
+/// A one-pair drive's point `p` as the pair's budget at input power `input` = T_1 ω_1 (W): the parts
+/// `columns` the gearbox describes, the whole loss mesh + Σ parts and the pair's total efficiency
+/// 1 − P_total/(T_1 ω_1), taken at the pinion gear (not the drive's P_out/P_in, whose input also
+/// pays the pinion shaft's own losses). The map keeps no bearing loads. A point whose walk did not
+/// settle (not seen: at a given pinion torque the bearing loads do not feed back into the torque
+/// that loads them) has no whole loss and no total efficiency (NaN, which the report flags).
+pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> BudgetParts {
+    let l = &p.losses;
+    let parts: Vec<(LossColumn, f64)> = columns
+        .iter()
+        .map(|c| {
+            let power = match c {
+                LossColumn::GearNoLoad => l.gear_no_load,
+                LossColumn::BearingsNoLoad => l.bearings_no_load,
+                LossColumn::BearingsLoad => l.bearings_load,
+                LossColumn::Seals => l.seals,
+            };
+            (*c, power)
+        })
+        .collect();
+    let total = if p.settled() { p.stages[0].mesh_loss + parts.iter().map(|(_, p)| p).sum::<f64>() } else { f64::NAN };
+    BudgetParts { parts, total_loss: total, total_efficiency: 1.0 - total / input, bearings: Vec::new() }
 }
 
 impl EfficiencyMap {
@@ -138,5 +156,74 @@ impl EfficiencyMap {
             );
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::evaluate::cases::state_at;
+    use crate::evaluate::laws::evaluate_law;
+    use crate::evaluate::setup::contact_table;
+
+    /// The map's cells are the pair's own budget: at every cell, law and formulation of
+    /// `specs/fzg_c14_gearbox.gear`'s 40 × 40 map (bearings, seals, dip churning; four laws, both
+    /// formulations) the mesh's η̄ is the pair's law as its budget charges it (to 1e-15) and the
+    /// mesh loss, each part beside the mesh and the whole loss are the pair's loss budget at the
+    /// cell's pinion torque and speed (`Setup::loss_budget`, the parts catalogue on the pair's own
+    /// statics, not the drive's walk) to 1e-12 relative; the total efficiency follows to 1e-12.
+    #[test]
+    fn cells_are_the_pairs_own_budget() {
+        let source =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_c14_gearbox.gear")).unwrap();
+        let scene = crate::scene::check::check("fzg_c14_gearbox.gear", &source).unwrap();
+        let plan = crate::evaluate::Plan::new(&scene.operating, None, &scene.operating.detail_points);
+        let eval = crate::evaluate::prepare(&scene, &plan);
+        let map = evaluate_map(&scene, &eval).expect("the scene asks for a map");
+        let (torques, speeds) = scene.analyses.efficiency_map.as_ref().unwrap();
+        let grid = crate::model::Operating {
+            pinion_torque: torques.clone(),
+            pinion_speed: speeds.clone(),
+            oil_temperature: scene.operating.oil_temperature.clone(),
+            oil_temperatures: None,
+            detail_points: Vec::new(),
+            equilibrium: None,
+        };
+        let close = |a: f64, b: f64, tol: f64| (a - b).abs() <= tol * b.abs().max(1e-300);
+        let mut compared = 0;
+        for k in 0..grid.count() {
+            let state = state_at(&grid, k);
+            let table = contact_table(&eval, &state);
+            let budget = eval.loss_budget(&scene, &state).expect("a gearbox");
+            let input = state.pinion_torque * state.pinion_speed;
+            let (t, s) = (k / speeds.values.len(), k % speeds.values.len());
+            for (i, spec) in scene.friction.iter().enumerate() {
+                let law = evaluate_law(&eval, spec, state, &table, false, false);
+                for e in &law.efficiency {
+                    let (mesh, eta) = law.charged_mesh(e, &eval, input);
+                    let want = budget.with_mesh(mesh, input);
+                    let c = map
+                        .cells
+                        .iter()
+                        .find(|c| {
+                            (c.torque_index, c.speed_index, c.law_index, c.formulation) == (t, s, i, e.formulation)
+                        })
+                        .expect("every cell");
+                    let got = c.budget.as_ref().expect("a budget");
+                    assert!(close(c.mesh_efficiency, eta, 1e-15), "η̄ {} vs {eta}", c.mesh_efficiency);
+                    assert!(close(c.mesh_loss, mesh, 1e-12), "mesh loss {} vs {mesh}", c.mesh_loss);
+                    assert_eq!(got.parts.len(), want.parts.len());
+                    for ((col, p), (want_col, w)) in got.parts.iter().zip(&want.parts) {
+                        assert_eq!(col, want_col);
+                        assert!(close(*p, *w, 1e-12), "{col:?} at ({t}, {s}): {p} vs {w}");
+                    }
+                    assert!(close(got.total_loss, want.total_loss, 1e-12));
+                    assert!(close(got.total_efficiency, want.total_efficiency, 1e-12));
+                    compared += 1;
+                }
+            }
+        }
+        assert_eq!(compared, map.cells.len());
+        assert!(compared >= 6000, "{compared}");
     }
 }

@@ -5,15 +5,15 @@
 //! searched by coordinate ascent: a golden-section maximisation along torque at the current speed,
 //! then along speed at the current torque, the box's ends included (the best point of a gearbox is
 //! often at the map's highest torque), until a sweep moves the point by less than
-//! [`POINT_TOLERANCE`] of the box in both directions. Each evaluation is the mean efficiency (to
-//! its 1e-10) and the budget at that point, computed afresh: the located point is a point of the
-//! model, not of the grid. A local maximum next to the grid's best cell: with another peak between
+//! [`POINT_TOLERANCE`] of the box in both directions. Each evaluation is the scene's one-stage
+//! drive walked afresh at that pinion torque and speed (the mesh's η̄ to its 1e-10, the budget
+//! beside it): the located point is a point of the model, not of the grid. A local maximum next to the grid's best cell: with another peak between
 //! grid points elsewhere, the grid must be finer to see it.
 
-use super::setup::{law_at, Setup};
-use crate::efficiency::{mean_efficiency, Formulation};
-use crate::geometry::OperatingState;
-use crate::model::Scene;
+use super::drive_setup::DriveSetup;
+use crate::drive::{DriveOperating, EndValue, ShaftEnd};
+use crate::efficiency::Formulation;
+use crate::losses::parts::LossColumn;
 
 /// The search stops when a sweep moves the point by less than this fraction of the box.
 pub(crate) const POINT_TOLERANCE: f64 = 1e-7;
@@ -33,26 +33,6 @@ pub struct MapBest {
     pub grid: (usize, usize, f64),
     /// Efficiency evaluations the search used.
     pub evaluations: usize,
-}
-
-/// The efficiency of law `law_index` and formulation `f` at `state`: total with a gearbox.
-fn efficiency_at(scene: &Scene, eval: &Setup, law_index: usize, f: Formulation, state: OperatingState) -> f64 {
-    let ctx = eval.law_context(state);
-    let law = law_at(&scene.friction[law_index], &ctx);
-    let input = state.pinion_torque * state.pinion_speed;
-    // The mesh efficiency and loss the budget charges (ISO/TR 14179-2's own for iso_14179_2 on a
-    // helical pair).
-    let (mesh_efficiency, mesh_loss) = if crate::efficiency::charges_iso_mesh_loss(law.id(), &eval.geometry) {
-        let loss = crate::efficiency::iso_mesh_loss_at(&ctx, law.as_ref(), eval.ohlendorf_loss_factor);
-        (1.0 - loss / input, loss)
-    } else {
-        let eta = mean_efficiency(&ctx, law.as_ref(), f).value;
-        (eta, (1.0 - eta) * input)
-    };
-    match eval.loss_budget(scene, &state) {
-        Some(b) => b.with_mesh(mesh_loss, input).total_efficiency,
-        None => mesh_efficiency,
-    }
 }
 
 /// The maximum (x, f(x)) of `f` on [a, b] by golden sections, the ends included.
@@ -86,17 +66,21 @@ fn golden_max(f: impl Fn(f64) -> f64, a: f64, b: f64, count: &mut usize) -> (f64
 }
 
 /// The best point of every entry of `fields` — (law index, formulation, whether the values are
-/// total efficiencies, values[torque][speed]) — over the grid `torques` × `speeds` (SI).
+/// total efficiencies, values[torque][speed]) — over the grid `torques` × `speeds` (SI), each
+/// evaluation the scene's one-stage drive walked afresh at that pinion torque and speed (`setup`),
+/// read as the map's cells are: the total efficiency 1 − P_total/(T_1 ω_1) with a gearbox (the
+/// parts it describes, `columns`), else the mesh's η̄ as the budget charges it.
 pub(crate) fn best_points(
-    scene: &Scene,
-    eval: &Setup,
+    setup: &DriveSetup,
     torques: &[f64],
     speeds: &[f64],
     fields: &[(usize, Formulation, bool, Vec<Vec<f64>>)],
+    columns: Option<&[LossColumn]>,
 ) -> Vec<MapBest> {
+    let ends = DriveOperating { torque_at: ShaftEnd::Input, speed_at: ShaftEnd::Input };
     fields
         .iter()
-        .map(|(law_index, f, total, values)| {
+        .map(|(law_index, f, is_total, values)| {
             let mut grid = (0, 0, f64::NEG_INFINITY);
             for (i, row) in values.iter().enumerate() {
                 for (j, v) in row.iter().enumerate() {
@@ -106,10 +90,16 @@ pub(crate) fn best_points(
                 }
             }
             let eta = |t: f64, n: f64| {
-                efficiency_at(scene, eval, *law_index, *f, OperatingState { pinion_torque: t, pinion_speed: n })
+                let torque = EndValue { at: ends.torque_at, value: t };
+                let speed = EndValue { at: ends.speed_at, value: n };
+                let p = setup.point(*law_index, *f, torque, speed);
+                match columns {
+                    Some(columns) => super::map::budget_of(&p, t * n, columns).total_efficiency,
+                    None => p.stages[0].mesh_efficiency,
+                }
             };
             let (located, evaluations) = locate_max(torques, speeds, (grid.0, grid.1), eta);
-            MapBest { law_index: *law_index, formulation: *f, total: *total, located, grid, evaluations }
+            MapBest { law_index: *law_index, formulation: *f, total: *is_total, located, grid, evaluations }
         })
         .collect()
 }

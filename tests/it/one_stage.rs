@@ -440,10 +440,12 @@ fn a_pair_past_line_contact_is_flagged_as_its_one_stage_drive() {
     assert_eq!(warned, 1);
 }
 
-/// A pair's efficiency map and its one-stage drive's loss map are the same numbers: at every cell,
-/// law and formulation of `specs/fzg_c14_gearbox.gear`'s 40 × 40 map the drive's whole loss is the
-/// pair's budget total to 1e-12 relative (the walk's loss is the budget's; the pinion's torque
-/// given at the pinion gear, as the pair's), over the same grid.
+/// A pair's efficiency map and its one-stage drive's loss map are the same map: the pair's report
+/// walks its one-stage drive at each cell (`evaluate::map`, whose unit test holds every cell to the
+/// pair's own loss budget), so at every cell, law and formulation of `specs/fzg_c14_gearbox.gear`'s
+/// 40 × 40 map the drive's report finds the same grid, law and formulation with the same whole loss
+/// (1e-12 relative; the pinion's torque given at the pinion gear in both), and the two CSV writers
+/// write the same cells.
 #[test]
 fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
     let path = crate::root().join("specs/fzg_c14_gearbox.gear");
