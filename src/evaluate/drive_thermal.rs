@@ -131,14 +131,8 @@ pub(crate) fn drive_duty(
         let s = &cycle.steps[k];
         loss_at_point(&base, (0, f), (s.pinion_torque, s.pinion_speed), theta)
     };
-    let durations: Vec<f64> = cycle.steps.iter().map(|s| s.duration).collect();
     let fixed = scene.operating.oil_temperature.as_ref().map(|t| t.value.value);
-    super::thermal::DutyCycleResult {
-        law_index: 0,
-        formulation: f,
-        fixed: fixed.map(|t| (0..cycle.steps.len()).map(|k| p_v(k, t)).collect()),
-        transient: housing.heat_capacity.map(|c| crate::thermal::transient(p_v, housing, c, &durations)),
-    }
+    super::thermal::duty_cycle_of(p_v, housing, cycle, (fixed, f))
 }
 
 /// P_V(θ) of the drive at `row`'s point, law and formulation against what `housing` gives off,
@@ -165,21 +159,15 @@ pub(crate) fn drive_balances(
     use rayon::prelude::*;
     let base = DriveSetup::new(scene, drive);
     // A speed's ratings do not depend on the row's torque: located once per law, formulation and
-    // speed, from the sweep's largest torque, as a pair's `RatingTable` locates them.
-    let speeds = scene.operating.pinion_speed.values.len();
-    let guess = scene.operating.pinion_torque.values.iter().map(|t| t.value).fold(1.0, f64::max);
-    let slots: Vec<std::sync::OnceLock<crate::thermal::Ratings>> =
-        (0..scene.friction.len() * 2 * speeds).map(|_| std::sync::OnceLock::new()).collect();
+    // speed, from the sweep's largest torque, as a pair's sweep locates them.
+    let table = super::thermal::RatingTable::new(scene);
     rows.par_iter()
         .map(|row| {
             let balance = crate::thermal::balance(|theta| loss_at(&base, scene, row, theta), housing);
             let t = balance.temperature.unwrap_or(crate::thermal::balance::SEARCH_LIMIT);
             let ratings = (row.point.flow == crate::drive::PowerFlow::Drive).then(|| {
-                let slot = &slots[(row.law_index * 2 + row.formulation.index()) * speeds + row.speed_index];
-                *slot.get_or_init(|| {
-                    let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
-                    crate::thermal::ratings(p_v, housing, guess)
-                })
+                let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
+                table.get((row.law_index, row.formulation, row.speed_index), housing, p_v)
             });
             DriveBalanceRow {
                 torque_index: row.torque_index,

@@ -131,7 +131,8 @@ fn point_summary(
                 row.budget = budget.as_ref().map(|b| b.with_mesh(law.charged_mesh(e, eval, input).0, input));
                 let mut at_balance = None;
                 if let Some((housing, losses)) = &thermal {
-                    let rating = ratings.get(losses, housing, i, e.formulation, si);
+                    let p_v = super::thermal::loss_at_torque(losses, spec, e.formulation, state.pinion_speed);
+                    let rating = ratings.get((i, e.formulation, si), housing, p_v);
                     let point = thermal_point(losses, housing, spec, e.formulation, state, rating);
                     row.thermal = Some(ThermalRow::of(&point));
                     if let (Some(t), Some(_)) = (point.balance.temperature, scene.operating.equilibrium) {

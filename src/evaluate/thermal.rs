@@ -126,10 +126,44 @@ pub(crate) fn thermal_point(
     }
 }
 
-/// The ratings of law `spec`, formulation `f` at pinion speed `speed` (rad/s): they depend on the
-/// speed alone, not on the operating point's torque. `guess` (N·m) starts the bracket; a sweep gives
-/// every point the same (its largest torque), so that a speed's ratings are one number whichever
-/// point asks first (`RatingTable`).
+/// Each speed's ratings of a sweep, computed by the first point that asks (a 200 × 200 sweep
+/// locates 200 speeds' ratings, not 40 000 points'): they depend on the speed alone, not on the
+/// point's torque. Keyed by law, formulation and speed index; every speed's bracket starts at the
+/// sweep's largest torque, so that a speed's ratings are one number whichever point asks first. A
+/// pair's sweep and a drive's rows read it alike, each with its own P_V(torque, θ).
+pub(crate) struct RatingTable {
+    slots: Vec<std::sync::OnceLock<Ratings>>,
+    speeds: usize,
+    /// The bracket's start for every speed: the sweep's largest torque (at least 1 N·m).
+    guess: f64,
+}
+
+impl RatingTable {
+    /// The table of `scene`'s sweep: its laws, both formulations and its speeds.
+    pub(crate) fn new(scene: &Scene) -> RatingTable {
+        let speeds = scene.operating.pinion_speed.values.len();
+        let guess = scene.operating.pinion_torque.values.iter().map(|v| v.value).fold(1.0, f64::max);
+        let slots = (0..scene.friction.len() * 2 * speeds).map(|_| std::sync::OnceLock::new()).collect();
+        RatingTable { slots, speeds, guess }
+    }
+
+    /// The ratings of law `law` (index in the scene), formulation `f` at speed index `speed_index`,
+    /// located on `p_v(torque, θ)` (W) the first time they are asked for
+    /// ([`crate::thermal::ratings`]).
+    pub(crate) fn get(
+        &self,
+        (law, f, speed_index): (usize, Formulation, usize),
+        housing: &Housing,
+        p_v: impl Fn(f64, f64) -> f64 + Copy,
+    ) -> Ratings {
+        *self.slots[(law * 2 + f.index()) * self.speeds + speed_index]
+            .get_or_init(|| thermal::ratings(p_v, housing, self.guess))
+    }
+}
+
+/// The ratings of law `spec`, formulation `f` at pinion speed `speed` (rad/s): the pinion torques
+/// (N·m) that put the balance on the oil's limit and on 95 °C ([`crate::thermal::ratings`]); `guess`
+/// (N·m) starts the bracket. They depend on the speed alone, not on an operating point's torque.
 pub fn ratings(
     losses: &Losses,
     housing: &Housing,
@@ -138,42 +172,19 @@ pub fn ratings(
     speed: f64,
     guess: f64,
 ) -> Ratings {
-    let at_torque = |torque: f64, t: f64| {
+    thermal::ratings(loss_at_torque(losses, spec, f, speed), housing, guess.max(1.0))
+}
+
+/// P_V(torque, θ) of law `spec` and formulation `f` at pinion speed `speed` (rad/s): what a speed's
+/// ratings are located on.
+pub(crate) fn loss_at_torque<'l>(
+    losses: &'l Losses,
+    spec: &'l FrictionLawSpec,
+    f: Formulation,
+    speed: f64,
+) -> impl Fn(f64, f64) -> f64 + Copy + 'l {
+    move |torque: f64, t: f64| {
         losses.at(spec, f, OperatingState { pinion_torque: torque, pinion_speed: speed }, t).total()
-    };
-    thermal::ratings(at_torque, housing, guess.max(1.0))
-}
-
-/// Each speed's ratings of a sweep, computed by the first point that asks (a 200 × 200 sweep
-/// locates 200 speeds' ratings, not 40 000 points'). Keyed by law, formulation and speed index.
-pub(crate) struct RatingTable {
-    slots: Vec<std::sync::OnceLock<Ratings>>,
-    speeds: usize,
-    /// The bracket's start for every speed: the sweep's largest torque.
-    guess: f64,
-}
-
-impl RatingTable {
-    pub(crate) fn new(scene: &Scene) -> RatingTable {
-        let speeds = scene.operating.pinion_speed.values.len();
-        let guess = scene.operating.pinion_torque.values.iter().map(|v| v.value).fold(1.0, f64::max);
-        let slots = (0..scene.friction.len() * 2 * speeds).map(|_| std::sync::OnceLock::new()).collect();
-        RatingTable { slots, speeds, guess }
-    }
-
-    /// The ratings of law `law` (index in the scene), formulation `f` at speed index `speed_index`.
-    pub(crate) fn get(
-        &self,
-        losses: &Losses,
-        housing: &Housing,
-        law: usize,
-        f: Formulation,
-        speed_index: usize,
-    ) -> Ratings {
-        let speed = losses.scene.operating.pinion_speed.values[speed_index].value;
-        let spec = &losses.scene.friction[law];
-        *self.slots[(law * 2 + f.index()) * self.speeds + speed_index]
-            .get_or_init(|| ratings(losses, housing, spec, f, speed, self.guess))
     }
 }
 
@@ -191,14 +202,24 @@ pub struct DutyCycleResult {
 
 /// The scene's duty cycle with its first law and first formulation.
 pub fn duty_cycle(losses: &Losses, housing: &Housing, cycle: &DutyCycle, fixed: Option<f64>) -> DutyCycleResult {
-    let scene = losses.scene;
-    let spec = &scene.friction[0];
+    let spec = &losses.scene.friction[0];
     let f = losses.setup.formulations.first().copied().unwrap_or(Formulation::External);
-    let state = |k: usize| OperatingState {
-        pinion_torque: cycle.steps[k].pinion_torque,
-        pinion_speed: cycle.steps[k].pinion_speed,
+    let p_v = |k: usize, t: f64| {
+        let s = &cycle.steps[k];
+        losses.at(spec, f, OperatingState { pinion_torque: s.pinion_torque, pinion_speed: s.pinion_speed }, t).total()
     };
-    let p_v = |k: usize, t: f64| losses.at(spec, f, state(k), t).total();
+    duty_cycle_of(p_v, housing, cycle, (fixed, f))
+}
+
+/// A duty cycle on `p_v(step, θ)` (W) under the scene's first law and formulation `f`: each step's
+/// P_V at the fixed oil temperature, when there is one, and with a heat capacity the sump's
+/// transient from ambient ([`crate::thermal::transient`]); a pair's and a drive's alike.
+pub(crate) fn duty_cycle_of(
+    p_v: impl Fn(usize, f64) -> f64 + Copy,
+    housing: &Housing,
+    cycle: &DutyCycle,
+    (fixed, f): (Option<f64>, Formulation),
+) -> DutyCycleResult {
     let durations: Vec<f64> = cycle.steps.iter().map(|s| s.duration).collect();
     DutyCycleResult {
         law_index: 0,
