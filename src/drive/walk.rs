@@ -84,6 +84,18 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     point
 }
 
+/// Each shaft's own losses (W: its bearings, its seals, its gears' no-load parts) when the stages'
+/// driving members (in drive, from the input) put `driving_torques` (N·m, in stage order) into
+/// their meshes at `speed`: what a walk that reached those torques charges each shaft, without
+/// walking (the losses depend on the mesh forces, which the driving torques fix).
+pub(crate) fn shaft_losses_at(model: &DriveModel, speed: EndValue, driving_torques: &[f64]) -> Vec<f64> {
+    let omega = shaft_speeds(model.drive, speed);
+    let walk = Walk::new(model, &omega, PowerFlow::Drive);
+    let fixed = walk.fixed_losses(model);
+    let bearings = walk.bearing_powers(model, driving_torques, false).powers;
+    (0..omega.len()).map(|j| bearings[j] + fixed.seals[j] + fixed.gear_no_load[j]).collect()
+}
+
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
 /// its driving member.
 struct Walk<'a> {
