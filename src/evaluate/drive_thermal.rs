@@ -58,7 +58,7 @@ fn loss_at_point(
 
 /// The drive of `base` with its oil moved to θ, and its point under (law, formulation) with
 /// `torque` and `speed` at the ends its operating block names.
-fn walk_at<'a>(
+pub(crate) fn walk_at<'a>(
     base: &DriveSetup<'a>,
     (law, formulation): (usize, crate::efficiency::Formulation),
     (torque, speed): (f64, f64),

@@ -111,19 +111,7 @@ fn map_cell(c: &GridCell, p: &DrivePoint, input: f64, columns: Option<&[LossColu
 /// settle (not seen: at a given pinion torque the bearing loads do not feed back into the torque
 /// that loads them) has no whole loss and no total efficiency (NaN, which the report flags).
 pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> BudgetParts {
-    let l = &p.losses;
-    let parts: Vec<(LossColumn, f64)> = columns
-        .iter()
-        .map(|c| {
-            let power = match c {
-                LossColumn::GearNoLoad => l.gear_no_load,
-                LossColumn::BearingsNoLoad => l.bearings_no_load,
-                LossColumn::BearingsLoad => l.bearings_load,
-                LossColumn::Seals => l.seals,
-            };
-            (*c, power)
-        })
-        .collect();
+    let parts = super::pair_budget::parts_of(p, columns);
     let total = if p.settled() { p.stages[0].mesh_loss + parts.iter().map(|(_, p)| p).sum::<f64>() } else { f64::NAN };
     BudgetParts { parts, total_loss: total, total_efficiency: 1.0 - total / input, bearings: Vec::new() }
 }
@@ -171,7 +159,7 @@ mod tests {
     /// formulations) the mesh's η̄ is the pair's law as its budget charges it (to 1e-15) and the
     /// mesh loss, each part beside the mesh and the whole loss are the pair's loss budget at the
     /// cell's pinion torque and speed (`Setup::loss_budget`, the parts catalogue on the pair's own
-    /// statics, not the drive's walk) to 1e-12 relative; the total efficiency follows to 1e-12.
+    /// statics, not the drive's walk) to 1e-13 relative; the total efficiency follows to 1e-13.
     #[test]
     fn cells_are_the_pairs_own_budget() {
         let source =
@@ -211,14 +199,14 @@ mod tests {
                         .expect("every cell");
                     let got = c.budget.as_ref().expect("a budget");
                     assert!(close(c.mesh_efficiency, eta, 1e-15), "η̄ {} vs {eta}", c.mesh_efficiency);
-                    assert!(close(c.mesh_loss, mesh, 1e-12), "mesh loss {} vs {mesh}", c.mesh_loss);
+                    assert!(close(c.mesh_loss, mesh, 1e-13), "mesh loss {} vs {mesh}", c.mesh_loss);
                     assert_eq!(got.parts.len(), want.parts.len());
                     for ((col, p), (want_col, w)) in got.parts.iter().zip(&want.parts) {
                         assert_eq!(col, want_col);
-                        assert!(close(*p, *w, 1e-12), "{col:?} at ({t}, {s}): {p} vs {w}");
+                        assert!(close(*p, *w, 1e-13), "{col:?} at ({t}, {s}): {p} vs {w}");
                     }
-                    assert!(close(got.total_loss, want.total_loss, 1e-12));
-                    assert!(close(got.total_efficiency, want.total_efficiency, 1e-12));
+                    assert!(close(got.total_loss, want.total_loss, 1e-13));
+                    assert!(close(got.total_efficiency, want.total_efficiency, 1e-13));
                     compared += 1;
                 }
             }

@@ -24,6 +24,7 @@ pub(crate) mod first_balance;
 pub(crate) mod laws;
 pub(crate) mod map;
 pub(crate) mod map_best;
+pub(crate) mod pair_budget;
 pub(crate) mod pair_records;
 pub(crate) mod plan;
 pub(crate) mod prepare;

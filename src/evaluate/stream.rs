@@ -46,6 +46,14 @@ pub fn evaluate_records(
     let dynamics =
         DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
     let ratings = RatingTable::new(scene);
+    // The losses at an oil temperature, prepared once for the sweep (the scene's one-stage drive).
+    let losses = Losses::new(scene, eval);
+    let thermal = scene
+        .housing
+        .as_ref()
+        .zip(losses.as_ref())
+        .filter(|_| scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some())
+        .map(|(housing, losses)| SweepThermal { housing, losses, ratings: &ratings });
     let mut out = Streamed::default();
     // The transmission error's rows come first, from the run (or shard) that holds point 1.
     if plan.range.start == 0 && scene.analyses.transmission_error.is_some() {
@@ -59,7 +67,7 @@ pub fn evaluate_records(
         let end = (start + BLOCK).min(plan.range.end);
         let block: Vec<Summary> = (start..end)
             .into_par_iter()
-            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), &ratings, k))
+            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), thermal.as_ref(), k))
             .collect();
         for (k, (rows, t, d)) in (start..end).zip(block) {
             sink.write_rows(&rows)?;
@@ -79,6 +87,14 @@ pub fn evaluate_records(
 /// A point's rows, tally and dynamics (when the scene asks for them).
 type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
 
+/// What each point's thermal balance reads, when the scene asks for it: the housing, the losses at
+/// an oil temperature and the speeds' ratings.
+struct SweepThermal<'a> {
+    housing: &'a crate::thermal::Housing,
+    losses: &'a Losses<'a>,
+    ratings: &'a RatingTable,
+}
+
 /// The rows and the tally of point `k`.
 fn point_summary(
     scene: &Scene,
@@ -86,7 +102,7 @@ fn point_summary(
     plan: &Plan,
     labels: &[String],
     dynamics: Option<&DynamicsSetup>,
-    ratings: &RatingTable,
+    thermal: Option<&SweepThermal>,
     k: usize,
 ) -> Summary {
     let op = &scene.operating;
@@ -95,11 +111,6 @@ fn point_summary(
     let table = contact_table(eval, &state);
     let blank = SummaryRow::blank(k + 1, (ti, si), state);
     let budget = eval.loss_budget(scene, &state);
-    let thermal = scene
-        .housing
-        .as_ref()
-        .zip(Losses::new(scene, eval))
-        .filter(|_| scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some());
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
@@ -130,7 +141,7 @@ fn point_summary(
                 let mut row = efficiency_row(&law_row, e);
                 row.budget = budget.as_ref().map(|b| b.with_mesh(law.charged_mesh(e, eval, input).0, input));
                 let mut at_balance = None;
-                if let Some((housing, losses)) = &thermal {
+                if let Some(SweepThermal { housing, losses, ratings }) = thermal {
                     let p_v = super::thermal::loss_at_torque(losses, spec, e.formulation, state.pinion_speed);
                     let rating = ratings.get((i, e.formulation, si), housing, p_v);
                     let point = thermal_point(losses, housing, spec, e.formulation, state, rating);

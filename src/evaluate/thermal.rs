@@ -1,16 +1,20 @@
 //! The losses at an oil temperature, and the thermal balance, rating and duty cycle they give
 //! ([`crate::thermal`] holds the housing and the solvers; this file supplies P_V(θ)).
 //!
-//! P_V(θ) is the mesh loss of one law and formulation with the lubricant read at θ (ν by ASTM D341,
-//! ρ by thermal expansion, η = ρν, α from the base oil where the scene does not give it) plus the
-//! loss budget beside the mesh in that oil. At zero speed nothing turns and nothing is lost; at zero
-//! torque the mesh carries nothing and only the no-load losses remain (no law is read without a load).
+//! P_V(θ) is the scene's one-stage drive walked with its oil read at θ (ν by ASTM D341, ρ by thermal
+//! expansion, η = ρν, α from the base oil where the scene does not give it;
+//! `DriveSetup::at_oil_temperature`) at the pinion's torque, at the pinion gear, and speed, as a
+//! drive's thermal balance walks its rows (`super::drive_thermal::walk_at`), and read as the pair's
+//! budget (`super::pair_budget`): the mesh loss of one law and formulation as the budget charges it
+//! plus the parts beside the mesh. At zero speed nothing turns and nothing is lost; at zero torque
+//! the mesh carries nothing and only the no-load losses remain (no law is read without a load).
 
+use super::drive_setup::DriveSetup;
 use super::setup::Setup;
-use crate::efficiency::{self, Formulation};
+use crate::efficiency::Formulation;
 use crate::friction::catalog::FrictionLawSpec;
 use crate::geometry::OperatingState;
-use crate::losses::{loss_budget, LossBudget};
+use crate::losses::LossBudget;
 use crate::model::Scene;
 use crate::thermal::{self, Balance, DutyCycle, Housing, Ratings};
 use crate::tribology::lubricant::OilData;
@@ -20,6 +24,8 @@ use crate::tribology::Tribology;
 pub struct Losses<'a> {
     scene: &'a Scene,
     setup: &'a Setup,
+    /// The scene's one-stage drive, walked at each temperature.
+    drive: DriveSetup<'a>,
     oil: OilData,
     /// α given in the scene (kept at every temperature), or `None` to take the base oil's.
     alpha: Option<f64>,
@@ -40,12 +46,13 @@ impl LossesAt {
 
 impl<'a> Losses<'a> {
     /// `None` when the lubricant cannot be read at other temperatures (lowering refuses the thermal
-    /// analyses then).
+    /// analyses then), or the scene carries no one-stage drive (a stage's pair analysed alone).
     pub fn new(scene: &'a Scene, setup: &'a Setup) -> Option<Losses<'a>> {
         let l = scene.lubricant.as_ref()?;
         let oil = l.oil.clone()?;
         let alpha = if l.alpha_from_oil { None } else { setup.tribology.pressure_viscosity };
-        Some(Losses { scene, setup, oil, alpha })
+        let drive = DriveSetup::new(scene, scene.drive.as_ref()?);
+        Some(Losses { scene, setup, drive, oil, alpha })
     }
 
     /// The tribology of the setup with the oil at `t` (K).
@@ -64,27 +71,20 @@ impl<'a> Losses<'a> {
         Setup { tribology: self.tribology_at(t), formulations: formulations.to_vec(), ..self.setup.clone() }
     }
 
-    /// P_V at oil temperature `t` (K) of law `spec` and formulation `f` at `state`.
+    /// P_V at oil temperature `t` (K) of law `spec` (one of the scene's) and formulation `f` at
+    /// `state`: the one-stage drive's walk at `state` with its oil at `t`, read as the pair's budget.
     pub fn at(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> LossesAt {
         if state.pinion_speed <= 0.0 {
             return LossesAt { mesh: 0.0, budget: self.scene.gearbox.as_ref().map(|_| LossBudget::default()) };
         }
-        let tribology = self.tribology_at(t);
-        let mesh = if state.pinion_torque > 0.0 {
-            let ctx = crate::friction::LawContext {
-                geometry: &self.setup.geometry,
-                state,
-                tribology,
-                sharing: self.setup.sharing(),
-            };
-            let law = super::setup::law_at(spec, &ctx);
-            efficiency::charged_mesh_loss(&ctx, law.as_ref(), f, self.setup.ohlendorf_loss_factor)
-        } else {
-            0.0
-        };
+        let law = self.scene.friction.iter().position(|s| s == spec).expect("a law of the scene");
+        let ends = (state.pinion_torque, state.pinion_speed);
+        let (setup, p) = super::drive_thermal::walk_at(&self.drive, (law, f), ends, t);
+        let mesh = if state.pinion_torque > 0.0 { p.stages[0].mesh_loss } else { 0.0 };
         let budget = self.scene.gearbox.as_ref().map(|g| {
-            let oil = self.scene.mesh().budget_oil(&tribology);
-            loss_budget(g, &self.setup.geometry, state.pinion_torque, state.pinion_speed, &oil)
+            let columns = crate::losses::parts::catalog::columns_of(g);
+            let drive = self.scene.drive.as_ref().expect("Losses::new took the scene's drive");
+            super::pair_budget::one_pair_budget(drive, &p, setup.oil(), &columns)
         });
         LossesAt { mesh, budget }
     }

@@ -135,9 +135,11 @@ fn charges_iso(scene: &gearloss::Scene, r: &gearloss::report::friction::Efficien
         && scene.gears.helix_angle.as_ref().is_some_and(|b| b.value.value != 0.0)
 }
 
-/// The thermal balance of every pair that asks for one, as its one-stage drive finds it: at each
-/// point, law and formulation θ* and P_V(θ*) to 1e-12 relative (the same root search on the same
-/// P_V(θ)), what the housing gives off there by path to 1e-10, both rating torques (θ* on the oil's limit, at 95 °C) to 1e-9 (a root search of its own in the torque, settled to about
+/// The thermal balance of every pair that asks for one, as its one-stage drive's report finds it
+/// (a pair's P_V(θ) is its one-stage drive's walk, `evaluate::pair_budget`'s unit test holds it to
+/// the pair's own budget; here the pair's report, which locates each balance in its sweep, and the
+/// drive's, which locates its rows', agree): at each point, law and formulation θ* and P_V(θ*) to
+/// 1e-12 relative (the same root search on the same P_V(θ)), what the housing gives off there by path to 1e-10, both rating torques (θ* on the oil's limit, at 95 °C) to 1e-9 (a root search of its own in the torque, settled to about
 /// 1e-11 relative, differs by 2.6e-11 in specs/fzg_c14_thermal.gear) where the pair has one.
 #[test]
 fn every_pair_balances_as_its_one_stage_drive() {
@@ -204,7 +206,7 @@ fn every_pair_balances_as_its_one_stage_drive() {
 
 /// The heat balance's curve and the duty cycle of every pair that has them, as its one-stage drive's
 /// report gives them, in the same report types: the curve's temperatures and P_Q exactly, its P_V(θ)
-/// and θ* to 1e-12 relative (the walk's loss is the pair's to that); the duty cycle's energy in
+/// and θ* to 1e-12 relative (both the drive's walk); the duty cycle's energy in
 /// exactly, each step's P_V at the fixed temperature to 1e-12 and the transient (θ at each step's
 /// end, energies lost and given off, θ_max, the cycle's efficiency) to 1e-9 relative: the same
 /// DOP853 integration of functions equal to 1e-12 (the largest difference seen is printed).
