@@ -234,9 +234,9 @@ impl<'a> Walk<'a> {
             .collect()
     }
 
-    /// Each shaft's bearing losses (W), its places, its gears' loads and (with `bent`) its bending
-    /// at the driving torques `torques`.
-    fn bearing_powers(&self, model: &DriveModel, torques: &[f64], bent: bool) -> Supported {
+    /// Each shaft's bearing losses (W), its gears' loads and, for the point (`point`), its places
+    /// and its bending at the driving torques `torques` (a pass needs the powers alone).
+    fn bearing_powers(&self, model: &DriveModel, torques: &[f64], point: bool) -> Supported {
         let loads = self.gear_loads(model, torques);
         let mut powers = vec![0.0; model.drive.shafts.len()];
         let mut places = vec![Vec::new(); model.drive.shafts.len()];
@@ -247,7 +247,7 @@ impl<'a> Walk<'a> {
             }
             let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
             let beam = model.beams.get(j).and_then(Option::as_ref);
-            let (reactions, bent_shaft) = support_reactions(shaft, &on, bent, beam);
+            let (reactions, bent_shaft) = support_reactions(shaft, &on, point, beam);
             bending[j] = bent_shaft;
             let speed = self.omega[j].abs();
             for (i, bearing) in shaft.bearings.iter().enumerate() {
@@ -260,6 +260,9 @@ impl<'a> Walk<'a> {
                 };
                 let (no_load, load) = (m0 * speed * n, m1.unwrap_or(0.0) * speed * n);
                 powers[j] += no_load + load;
+                if !point {
+                    continue;
+                }
                 places[j].push(BearingPoint {
                     kind: bearing.kind.name().to_string(),
                     count: bearing.count,
@@ -278,7 +281,9 @@ impl<'a> Walk<'a> {
             let stage = &model.drive.stages[k];
             if let Some((j, b)) = stage.model().member_bearings(stage, (m, torques[k]), self.places(k), model.oil) {
                 powers[j] += b.no_load + b.load;
-                places[j].push(b);
+                if point {
+                    places[j].push(b);
+                }
             }
         }
         Supported { powers, places, loads, bending }
