@@ -81,6 +81,7 @@ pub mod losses;
 pub(crate) mod mesh;
 pub mod model;
 pub mod numerics;
+pub(crate) mod oil_temperature;
 pub(crate) mod progress;
 #[cfg(feature = "python")]
 mod python;

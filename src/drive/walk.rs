@@ -48,6 +48,20 @@ pub struct DriveModel<'a> {
 /// The drive at one operating point: speeds by the kinematics, the power walked through until the
 /// bearing loads settle.
 pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, speed: EndValue) -> DrivePoint {
+    solve_from(model, meshes, (torque, speed), None)
+}
+
+/// [`solve`] with the first pass's bearing losses (W, per shaft) `seed` where they are known (else
+/// none): a one-pair drive at a given pinion torque knows them (`shaft_losses_at` at that torque,
+/// the input raised by the pinion shaft's own losses), and its first pass, which puts that torque
+/// on the mesh but for rounding, is then its fixed point: the bearings' loads are the mesh's forces
+/// at that torque, which the pass does not move. The point says it took one pass.
+pub(crate) fn solve_from(
+    model: &DriveModel,
+    meshes: &dyn MeshEfficiency,
+    (torque, speed): (EndValue, EndValue),
+    seed: Option<Seed>,
+) -> DrivePoint {
     let drive = model.drive;
     let omega = shaft_speeds(drive, speed);
     let flow = if torque.value < 0.0 { PowerFlow::Coast } else { PowerFlow::Drive };
@@ -55,13 +69,16 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     let from_source = (flow == PowerFlow::Drive) == (torque.at == ShaftEnd::Input);
     let given_shaft = if torque.at == ShaftEnd::Input { drive.input } else { drive.output };
     let given_power = torque.value.abs() * omega[given_shaft].abs();
-    let fixed = walk.fixed_losses(model);
-    let mut loads = vec![0.0; drive.shafts.len()];
+    let seeded = seed.is_some();
+    let (fixed, mut loads) = match seed {
+        Some(Seed { fixed, bearings, .. }) => (fixed, bearings),
+        None => (walk.fixed_losses(model), vec![0.0; drive.shafts.len()]),
+    };
     let mut state = walk.pass(meshes, from_source, given_power, &fixed, &loads, None);
     let first = state.largest_torque();
     let mut passes = 1;
     let mut diverged = false;
-    loop {
+    while !(seeded && state.is_finite()) {
         loads = walk.bearing_powers(model, &state.driving_torque, false).powers;
         let next = walk.pass(meshes, from_source, given_power, &fixed, &loads, Some(&state.driving_torque));
         passes += 1;
@@ -84,16 +101,29 @@ pub fn solve(model: &DriveModel, meshes: &dyn MeshEfficiency, torque: EndValue, 
     point
 }
 
-/// Each shaft's own losses (W: its bearings, its seals, its gears' no-load parts) when the stages'
-/// driving members (in drive, from the input) put `driving_torques` (N·m, in stage order) into
-/// their meshes at `speed`: what a walk that reached those torques charges each shaft, without
-/// walking (the losses depend on the mesh forces, which the driving torques fix).
-pub(crate) fn shaft_losses_at(model: &DriveModel, speed: EndValue, driving_torques: &[f64]) -> Vec<f64> {
+/// What a walk that reached given driving torques charges each shaft, found without walking (the
+/// losses depend on the mesh forces, which the driving torques fix): its bearings' losses, its
+/// seals' and its gears' no-load parts ([`shaft_losses_at`]); [`solve_from`] starts from it.
+pub(crate) struct Seed {
+    fixed: FixedLosses,
+    bearings: Vec<f64>,
+}
+
+impl Seed {
+    /// Shaft `j`'s own losses (W): its bearings, its seals, its gears' no-load parts.
+    pub(crate) fn own(&self, j: usize) -> f64 {
+        self.bearings[j] + self.fixed.seals[j] + self.fixed.gear_no_load[j]
+    }
+}
+
+/// Each shaft's losses when the stages' driving members (in drive, from the input) put
+/// `driving_torques` (N·m, in stage order) into their meshes at `speed`.
+pub(crate) fn shaft_losses_at(model: &DriveModel, speed: EndValue, driving_torques: &[f64]) -> Seed {
     let omega = shaft_speeds(model.drive, speed);
     let walk = Walk::new(model, &omega, PowerFlow::Drive);
     let fixed = walk.fixed_losses(model);
     let bearings = walk.bearing_powers(model, driving_torques, false).powers;
-    (0..omega.len()).map(|j| bearings[j] + fixed.seals[j] + fixed.gear_no_load[j]).collect()
+    Seed { fixed, bearings }
 }
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with

@@ -60,7 +60,7 @@ impl<'a> DriveSetup<'a> {
     /// The same drive with its oil at `kelvin`: the lubricant moved there, each mesh's tribology
     /// and the losses' oil read again, the geometry shared.
     pub(crate) fn at_oil_temperature(&self, kelvin: f64) -> DriveSetup<'a> {
-        let lubricant = self.scene.lubricant.clone().map(|l| l.at_kelvin(kelvin));
+        let lubricant = self.scene.lubricant.as_ref().map(|l| l.at_kelvin(kelvin));
         let stages: Vec<StageMesh> = self
             .stages
             .iter()
@@ -225,15 +225,17 @@ impl<'a> DriveSetup<'a> {
         let given = AtGivenPinion { meshes, torque: torque.value };
         let meshes: &dyn MeshEfficiency = if at_pinion { &given } else { meshes };
         let mut at_input = torque;
+        let mut seed = None;
         if at_pinion {
-            let own = crate::drive::walk::shaft_losses_at(&model, speed, &[torque.value]);
+            let losses = crate::drive::walk::shaft_losses_at(&model, speed, &[torque.value]);
             let input = self.drive.layout.input;
             let omega = crate::drive::walk::shaft_speeds(&self.drive.layout, speed)[input].abs();
             if omega > 0.0 {
-                at_input.value += own[input] / omega;
+                at_input.value += losses.own(input) / omega;
             }
+            seed = Some(losses);
         }
-        let mut point = solve(&model, meshes, at_input, speed);
+        let mut point = crate::drive::walk::solve_from(&model, meshes, (at_input, speed), seed);
         let missed = |p: &DrivePoint| torque.value - p.stages[0].driving_torque;
         let settled =
             |missed: f64| missed.is_finite() && missed.abs() <= crate::drive::walk::TOLERANCE * torque.value.max(1.0);

@@ -26,6 +26,8 @@ pub struct Losses<'a> {
     setup: &'a Setup,
     /// The scene's one-stage drive, walked at each temperature.
     drive: DriveSetup<'a>,
+    /// The budget's columns the gearbox fills (None without a gearbox).
+    columns: Option<Vec<crate::losses::parts::LossColumn>>,
     oil: OilData,
     /// α given in the scene (kept at every temperature), or `None` to take the base oil's.
     alpha: Option<f64>,
@@ -52,7 +54,8 @@ impl<'a> Losses<'a> {
         let oil = l.oil.clone()?;
         let alpha = if l.alpha_from_oil { None } else { setup.tribology.pressure_viscosity };
         let drive = DriveSetup::new(scene, scene.drive.as_ref()?);
-        Some(Losses { scene, setup, drive, oil, alpha })
+        let columns = scene.gearbox.as_ref().map(crate::losses::parts::catalog::columns_of);
+        Some(Losses { scene, setup, drive, columns, oil, alpha })
     }
 
     /// The tribology of the setup with the oil at `t` (K).
@@ -74,19 +77,49 @@ impl<'a> Losses<'a> {
     /// P_V at oil temperature `t` (K) of law `spec` (one of the scene's) and formulation `f` at
     /// `state`: the one-stage drive's walk at `state` with its oil at `t`, read as the pair's budget.
     pub fn at(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> LossesAt {
-        if state.pinion_speed <= 0.0 {
+        let Some((setup, p)) = self.walked(spec, f, state, t) else {
             return LossesAt { mesh: 0.0, budget: self.scene.gearbox.as_ref().map(|_| LossBudget::default()) };
+        };
+        let budget = self.columns.as_ref().map(|columns| {
+            let drive = self.scene.drive.as_ref().expect("Losses::new took the scene's drive");
+            super::pair_budget::one_pair_budget(drive, &p, setup.oil(), columns)
+        });
+        LossesAt { mesh: Self::mesh_of(&p, state), budget }
+    }
+
+    /// [`Self::at`]'s total P_V (W), what the balance, the ratings, the curve and the duty cycle
+    /// read: the same sum, without the bearing places' loads.
+    pub fn total(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> f64 {
+        let Some((_, p)) = self.walked(spec, f, state, t) else { return 0.0 };
+        let beside = self
+            .columns
+            .as_ref()
+            .map_or(0.0, |c| super::pair_budget::parts_of(&p, c).iter().map(|(_, p)| p).sum::<f64>());
+        Self::mesh_of(&p, state) + beside
+    }
+
+    /// The walk at `state` with the oil at `t`; None standing (nothing turns, nothing is lost).
+    fn walked(
+        &self,
+        spec: &FrictionLawSpec,
+        f: Formulation,
+        state: OperatingState,
+        t: f64,
+    ) -> Option<(DriveSetup<'a>, crate::drive::DrivePoint)> {
+        if state.pinion_speed <= 0.0 {
+            return None;
         }
         let law = self.scene.friction.iter().position(|s| s == spec).expect("a law of the scene");
-        let ends = (state.pinion_torque, state.pinion_speed);
-        let (setup, p) = super::drive_thermal::walk_at(&self.drive, (law, f), ends, t);
-        let mesh = if state.pinion_torque > 0.0 { p.stages[0].mesh_loss } else { 0.0 };
-        let budget = self.scene.gearbox.as_ref().map(|g| {
-            let columns = crate::losses::parts::catalog::columns_of(g);
-            let drive = self.scene.drive.as_ref().expect("Losses::new took the scene's drive");
-            super::pair_budget::one_pair_budget(drive, &p, setup.oil(), &columns)
-        });
-        LossesAt { mesh, budget }
+        Some(super::drive_thermal::walk_at(&self.drive, (law, f), (state.pinion_torque, state.pinion_speed), t))
+    }
+
+    /// The mesh loss of the walk's point: none at zero torque (no law is read without a load).
+    fn mesh_of(p: &crate::drive::DrivePoint, state: OperatingState) -> f64 {
+        if state.pinion_torque > 0.0 {
+            p.stages[0].mesh_loss
+        } else {
+            0.0
+        }
     }
 }
 
@@ -114,7 +147,7 @@ pub(crate) fn thermal_point(
     state: OperatingState,
     ratings: Ratings,
 ) -> ThermalPoint {
-    let balance = thermal::balance(|t: f64| losses.at(spec, f, state, t).total(), housing);
+    let balance = thermal::balance(|t: f64| losses.total(spec, f, state, t), housing);
     let t = balance.temperature.unwrap_or(thermal::balance::SEARCH_LIMIT);
     ThermalPoint {
         balance,
@@ -183,9 +216,7 @@ pub(crate) fn loss_at_torque<'l>(
     f: Formulation,
     speed: f64,
 ) -> impl Fn(f64, f64) -> f64 + Copy + 'l {
-    move |torque: f64, t: f64| {
-        losses.at(spec, f, OperatingState { pinion_torque: torque, pinion_speed: speed }, t).total()
-    }
+    move |torque: f64, t: f64| losses.total(spec, f, OperatingState { pinion_torque: torque, pinion_speed: speed }, t)
 }
 
 /// A duty cycle evaluated at the scene's fixed oil temperature and, with a heat capacity, as a
@@ -206,7 +237,7 @@ pub fn duty_cycle(losses: &Losses, housing: &Housing, cycle: &DutyCycle, fixed: 
     let f = losses.setup.formulations.first().copied().unwrap_or(Formulation::External);
     let p_v = |k: usize, t: f64| {
         let s = &cycle.steps[k];
-        losses.at(spec, f, OperatingState { pinion_torque: s.pinion_torque, pinion_speed: s.pinion_speed }, t).total()
+        losses.total(spec, f, OperatingState { pinion_torque: s.pinion_torque, pinion_speed: s.pinion_speed }, t)
     };
     duty_cycle_of(p_v, housing, cycle, (fixed, f))
 }
@@ -359,9 +390,11 @@ pub(crate) fn thermal_details(scene: &Scene, setup: &Setup) -> Option<ThermalDet
     let spec = scene.friction.first()?;
     let f = setup.formulations.first().copied().unwrap_or(Formulation::External);
     let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
-    let curve = setup.cases.first().filter(|_| wants_balance).map(|case| {
-        heat_balance_curve(|t: f64| losses.at(spec, f, case.state, t).total(), housing, (case.index, 0, f))
-    });
+    let curve = setup
+        .cases
+        .first()
+        .filter(|_| wants_balance)
+        .map(|case| heat_balance_curve(|t: f64| losses.total(spec, f, case.state, t), housing, (case.index, 0, f)));
     let fixed = if scene.operating.equilibrium.is_some() {
         None
     } else {

@@ -44,7 +44,7 @@ pub struct PointBalance {
 impl PointBalance {
     /// A point's balance with the oil read at its θ* (the lubricant moved there as the walk moved it).
     pub(crate) fn of(scene: &crate::model::Scene, b: crate::thermal::Balance) -> PointBalance {
-        let oil = b.temperature.and_then(|t| scene.lubricant.clone().map(|l| l.at_kelvin(t)));
+        let oil = b.temperature.and_then(|t| scene.lubricant.as_ref().map(|l| l.at_kelvin(t)));
         PointBalance {
             temperature: b.temperature,
             status: b.status.words().to_string(),

@@ -52,7 +52,10 @@ pub(crate) fn point(out: &mut String, p: &DrivePointReport, u: Shown) {
             format!("{} %", fixed(100.0 * d.efficiency, 4))
         },
         if d.settled() {
-            format!("the bearing losses settled in {} passes", d.iterations)
+            match d.iterations {
+                1 => "the bearing losses settled in one pass".to_string(),
+                n => format!("the bearing losses settled in {n} passes"),
+            }
         } else {
             format!("**not settled**: {}", d.unsettled_words())
         }
