@@ -37,6 +37,7 @@ pub(crate) mod stage_kinds;
 pub(crate) mod stage_model;
 pub mod statics;
 pub mod walk;
+mod walk_point;
 
 pub use forces::{mesh_forces, GearLoad, MeshForceSizes};
 pub use kind_state::KindPoint;

@@ -14,7 +14,7 @@ use super::forces::{GearLoad, MeshForceSizes};
 use super::layout::{Drive, Member, ShaftEnd};
 use super::mesh_efficiency::MeshEfficiency;
 use super::pass::Pass;
-use super::point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
+use super::point::{BearingPoint, DrivePoint, PowerFlow};
 use super::shaft_bending::{support_reactions, ShaftBending};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use crate::losses::Oil;
@@ -28,11 +28,11 @@ const DIVERGED: f64 = 1e3;
 
 /// What the supports of every shaft carry at one pass: each shaft's bearing losses (W), its
 /// places, every gear's load and each shaft's bending (when asked and it has sections).
-struct Supported {
-    powers: Vec<f64>,
-    places: Vec<Vec<BearingPoint>>,
-    loads: Vec<GearLoad>,
-    bending: Vec<Option<ShaftBending>>,
+pub(super) struct Supported {
+    pub(super) powers: Vec<f64>,
+    pub(super) places: Vec<Vec<BearingPoint>>,
+    pub(super) loads: Vec<GearLoad>,
+    pub(super) bending: Vec<Option<ShaftBending>>,
 }
 
 /// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
@@ -128,20 +128,20 @@ pub(crate) fn shaft_losses_at(model: &DriveModel, speed: EndValue, driving_torqu
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
 /// its driving member.
-struct Walk<'a> {
-    drive: &'a Drive,
-    omega: &'a [f64],
-    flow: PowerFlow,
-    shafts: Vec<usize>,
-    steps: Vec<(usize, Member)>,
+pub(super) struct Walk<'a> {
+    pub(super) drive: &'a Drive,
+    pub(super) omega: &'a [f64],
+    pub(super) flow: PowerFlow,
+    pub(super) shafts: Vec<usize>,
+    pub(super) steps: Vec<(usize, Member)>,
 }
 
 /// Load-independent losses of each shaft (W): seals, and the gears' no-load parts (churning and
 /// jet impulse on the pinion's shaft, each gear's windage on its own); and those parts by stage.
-struct FixedLosses {
-    seals: Vec<f64>,
-    gear_no_load: Vec<f64>,
-    stage_no_load: Vec<f64>,
+pub(super) struct FixedLosses {
+    pub(super) seals: Vec<f64>,
+    pub(super) gear_no_load: Vec<f64>,
+    pub(super) stage_no_load: Vec<f64>,
 }
 
 impl<'a> Walk<'a> {
@@ -157,7 +157,7 @@ impl<'a> Walk<'a> {
     }
 
     /// The speeds of stage `k`'s two places (rad/s, signed).
-    fn places(&self, k: usize) -> [f64; 2] {
+    pub(super) fn places(&self, k: usize) -> [f64; 2] {
         self.drive.stages[k].places.map(|p| self.omega[p.shaft])
     }
 
@@ -266,7 +266,7 @@ impl<'a> Walk<'a> {
 
     /// Each shaft's bearing losses (W), its gears' loads and, for the point (`point`), its places
     /// and its bending at the driving torques `torques` (a pass needs the powers alone).
-    fn bearing_powers(&self, model: &DriveModel, torques: &[f64], point: bool) -> Supported {
+    pub(super) fn bearing_powers(&self, model: &DriveModel, torques: &[f64], point: bool) -> Supported {
         let loads = self.gear_loads(model, torques);
         let mut powers = vec![0.0; model.drive.shafts.len()];
         let mut places = vec![Vec::new(); model.drive.shafts.len()];
@@ -317,103 +317,5 @@ impl<'a> Walk<'a> {
             }
         }
         Supported { powers, places, loads, bending }
-    }
-
-    /// The drive point of the settled pass `p`.
-    fn point(&self, model: &DriveModel, p: &Pass, fixed: &FixedLosses, passes: usize) -> DrivePoint {
-        let drive = model.drive;
-        let Supported { places, loads, bending, .. } = self.bearing_powers(model, &p.driving_torque, true);
-        let torque = |power: f64, j: usize| if self.omega[j] == 0.0 { 0.0 } else { power / self.omega[j].abs() };
-        let shafts: Vec<ShaftPoint> = drive
-            .shafts
-            .iter()
-            .enumerate()
-            .zip(places.into_iter().zip(bending))
-            .map(|((j, s), (bearings, bending))| ShaftPoint {
-                name: s.name.clone(),
-                speed: self.omega[j],
-                received_torque: torque(p.received[j], j),
-                passed_torque: torque(p.passed[j], j),
-                received_power: p.received[j],
-                passed_power: p.passed[j],
-                bearings,
-                gear_loads: loads.iter().filter(|l| l.shaft == j).copied().collect(),
-                seals: fixed.seals[j],
-                gear_no_load: fixed.gear_no_load[j],
-                bending,
-            })
-            .collect();
-        let bent: Vec<_> = shafts.iter().map(|s| s.bending.as_ref()).collect();
-        let mut steps = self.steps.clone();
-        steps.sort_by_key(|(k, _)| *k);
-        let stages: Vec<StagePoint> = steps
-            .iter()
-            .map(|&(k, m)| {
-                let stage = &drive.stages[k];
-                let sizes = &model.sizes[k];
-                let kind = stage.model();
-                let t = p.driving_torque[k];
-                let d = m.index();
-                let bearings = kind
-                    .member_bearings(stage, (m, t), self.places(k), model.oil)
-                    .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
-                let parts = (bearings, fixed.stage_no_load[k]);
-                let ([f_t, f_r, f_a], kind_point) = kind.point(stage, sizes, (m, t), p.kind_state[k].as_ref(), parts);
-                StagePoint {
-                    name: stage.name.clone(),
-                    driving: m,
-                    driving_torque: t,
-                    driven_torque: t * kind.kinematics(stage).torque_ratio(d) * p.efficiency[k],
-                    driving_speed: self.omega[stage.places[d].shaft].abs(),
-                    mesh_efficiency: p.efficiency[k],
-                    mesh_loss: p.mesh_loss[k],
-                    no_load: fixed.stage_no_load[k],
-                    tangential_force: f_t,
-                    radial_force: f_r,
-                    axial_force: f_a,
-                    mesh_misalignment: super::shaft_bending::stage_misalignment(
-                        &bent,
-                        &loads,
-                        (k, stage),
-                        sizes.face_width,
-                    ),
-                    kind: kind_point,
-                }
-            })
-            .collect();
-        let source = *self.shafts.first().expect("a drive has shafts");
-        let sink = *self.shafts.last().expect("a drive has shafts");
-        let (p_source, p_sink) = (p.received[source], p.passed[sink]);
-        let (input_power, output_power) = match self.flow {
-            PowerFlow::Drive => (p_source, p_sink),
-            PowerFlow::Coast => (-p_sink, -p_source),
-        };
-        let losses = LossParts {
-            meshes: p.mesh_loss.iter().sum(),
-            gear_no_load: fixed.stage_no_load.iter().sum(),
-            bearings_no_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.no_load).sum(),
-            bearings_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.load).sum(),
-            seals: fixed.seals.iter().sum(),
-        };
-        let both_ends_deliver = p_sink < 0.0 || p_source < 0.0;
-        let efficiency = if both_ends_deliver || p_source == 0.0 { 0.0 } else { p_sink / p_source };
-        DrivePoint {
-            flow: self.flow,
-            input_torque: torque(input_power, drive.input),
-            input_speed: self.omega[drive.input].abs(),
-            input_power,
-            output_torque: torque(output_power, drive.output),
-            output_speed: self.omega[drive.output].abs(),
-            output_power,
-            shafts,
-            stages,
-            losses,
-            efficiency,
-            both_ends_deliver,
-            iterations: passes,
-            diverged: false,
-            books_gap: None,
-            pinion_torque_missed: None,
-        }
     }
 }

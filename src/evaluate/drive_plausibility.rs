@@ -10,8 +10,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::stage_mesh::StageMesh;
-use super::stream::{furthest_beyond_half_width, outside_unit_interval};
 use super::tally::HALF_WIDTH_LIMIT;
+use super::tally::{furthest_beyond_half_width, outside_unit_interval};
 use crate::drive::DrivePoint;
 use crate::model::SceneDrive;
 

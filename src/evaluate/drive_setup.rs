@@ -7,8 +7,6 @@
 //! in ε₁, ε₂); the efficiency of a law at a driving torque T and speed ω is 1 − P_mesh/(T ω), with
 //! P_mesh the mesh loss the budget of one pair charges ([`crate::efficiency::charged_mesh_loss`]).
 
-use rayon::prelude::*;
-
 use super::setup::law_at;
 use super::stage_mesh::{LawMeshes, MeshMemo, RingMesh, StageMesh, WholeMeshes};
 use crate::drive::walk::DriveModel;
@@ -88,6 +86,23 @@ impl<'a> DriveSetup<'a> {
             oil,
             beams: self.beams.clone(),
         }
+    }
+
+    /// This drive with its oil moved to θ (K), and its point under (law, formulation) with `torque`
+    /// and `speed` at the ends its operating block names: what every P_V(θ) of a balance, a rating,
+    /// a heat-balance curve and a duty cycle walks, a drive's and a pair's (its one-stage drive's).
+    pub(crate) fn walked_at(
+        &self,
+        (law, formulation): (usize, Formulation),
+        (torque, speed): (f64, f64),
+        theta: f64,
+    ) -> (DriveSetup<'a>, DrivePoint) {
+        let setup = self.at_oil_temperature(theta);
+        let ends = self.operating_ends();
+        let torque = EndValue { at: ends.torque_at, value: torque };
+        let speed = EndValue { at: ends.speed_at, value: speed };
+        let point = setup.point(law, formulation, torque, speed);
+        (setup, point)
     }
 
     /// The output speeds (rad/s, magnitudes) at which a bearing's model changes form on its shaft at
@@ -264,96 +279,13 @@ impl<'a> DriveSetup<'a> {
     pub(crate) fn rows_per_point(&self) -> usize {
         self.scene.friction.len() * self.scene.analyses.efficiency.as_ref().map_or(0, Vec::len)
     }
-
-    /// The rows `range` of a grid (torque-major, then law, then formulation), in parallel.
-    pub(crate) fn grid_rows(
-        &self,
-        torques: &[f64],
-        speeds: &[f64],
-        ends: crate::drive::DriveOperating,
-        range: std::ops::Range<usize>,
-    ) -> Vec<DriveRow> {
-        self.grid_points((torques, speeds), ends, range, |c, point| DriveRow {
-            torque_index: c.torque_index,
-            speed_index: c.speed_index,
-            law_index: c.law_index,
-            formulation: c.formulation,
-            point,
-            balance: None,
-        })
-    }
-
-    /// The rows `range` of a grid walked in parallel, each reduced at once by `keep` to what the
-    /// caller holds of it. A point's rows under one law (its formulations, consecutive) are walked
-    /// together, sharing their meshes' integrals (`MeshMemo`).
-    pub(crate) fn grid_points<T: Send>(
-        &self,
-        grid: (&[f64], &[f64]),
-        ends: crate::drive::DriveOperating,
-        range: std::ops::Range<usize>,
-        keep: impl Fn(&GridCell, DrivePoint) -> T + Sync,
-    ) -> Vec<T> {
-        let formulations = self.formulations();
-        let nf = formulations.len().max(1);
-        (range.start / nf..range.end.div_ceil(nf))
-            .into_par_iter()
-            .flat_map_iter(|group| {
-                let memo = MeshMemo::default();
-                let kept: Vec<T> = (group * nf..(group + 1) * nf)
-                    .filter(|i| range.contains(i))
-                    .map(|i| {
-                        let c = self.grid_cell(i, grid, ends, &formulations);
-                        let point = self.point_in(&memo, c.law_index, c.formulation, c.torque, c.speed);
-                        keep(&c, point)
-                    })
-                    .collect();
-                kept
-            })
-            .collect()
-    }
-
-    /// The grid's `i`-th row (torque-major, then law, then formulation): its indices and the ends'
-    /// values it is evaluated at.
-    pub(crate) fn grid_cell(
-        &self,
-        i: usize,
-        (torques, speeds): (&[f64], &[f64]),
-        ends: crate::drive::DriveOperating,
-        formulations: &[Formulation],
-    ) -> GridCell {
-        let per_point = self.rows_per_point();
-        let (point, rest) = (i / per_point, i % per_point);
-        let (law_index, f) = (rest / formulations.len(), rest % formulations.len());
-        let (torque_index, speed_index) = (point / speeds.len(), point % speeds.len());
-        GridCell {
-            torque_index,
-            speed_index,
-            law_index,
-            formulation: formulations[f],
-            torque: EndValue { at: ends.torque_at, value: torques[torque_index] },
-            speed: EndValue { at: ends.speed_at, value: speeds[speed_index] },
-        }
-    }
 }
 
-/// One row of a grid: its torque, speed and law indices, its formulation and the ends' values.
-pub(crate) struct GridCell {
-    pub(crate) torque_index: usize,
-    pub(crate) speed_index: usize,
-    pub(crate) law_index: usize,
-    pub(crate) formulation: Formulation,
-    pub(crate) torque: EndValue,
-    pub(crate) speed: EndValue,
-}
-
-/// A law's validity along A–E of a mesh at `positions`: the contacts a pair alone reads it at (241
-/// evenly, the pitch point, and both sides of B and D: `super::setup::curve_positions` of the
-/// mesh's geometry, [`StageMesh::validity_positions`]).
-/// A one-pair drive's meshes with its pair's mesh at the given pinion torque: the torque the walks
-/// of [`DriveSetup::solved`] bring the mesh to (the input's raised by the pinion shaft's losses until
-/// the mesh has it), so each walk reads the mesh where the solution has it, and the law's mesh
-/// cycle is integrated once a point (`LawMeshes` reads back a state it has met) instead of once a
-/// pass at torques that differ from it in the last digits.
+/// A one-pair drive's meshes with its pair's mesh at the given pinion torque: the torque the walk
+/// of [`DriveSetup::solved`] puts on the mesh (the input raised by the pinion shaft's losses at it),
+/// so the walk reads the mesh where the solution has it, and the law's mesh cycle is integrated
+/// once a point (`LawMeshes` reads back a state it has met) instead of at torques that differ from
+/// it in the last digits.
 struct AtGivenPinion<'a> {
     meshes: &'a dyn MeshEfficiency,
     torque: f64,
@@ -370,6 +302,9 @@ impl MeshEfficiency for AtGivenPinion<'_> {
     }
 }
 
+/// A law's validity along A–E of a mesh at `positions`: the contacts a pair alone reads it at (241
+/// evenly, the pitch point, and both sides of B and D: `super::setup::curve_positions` of the
+/// mesh's geometry, [`StageMesh::validity_positions`]).
 fn validity_along(spec: &FrictionLawSpec, ctx: &LawContext, positions: &[f64]) -> super::laws::ValiditySummary {
     let built = law_at(spec, ctx);
     let contacts: Vec<_> = positions.iter().map(|u| ctx.contact_at(*u)).collect();

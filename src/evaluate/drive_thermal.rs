@@ -5,7 +5,6 @@
 //! in drive, the thermal rating: the torque at the given end that puts θ* on the oil's limit.
 
 use super::drive_setup::{DriveRow, DriveSetup};
-use crate::drive::EndValue;
 use crate::model::{Scene, SceneDrive};
 use crate::thermal::{Balance, Housing};
 
@@ -53,23 +52,7 @@ fn loss_at_point(
     if speed == 0.0 {
         return 0.0;
     }
-    walk_at(base, (law, formulation), (torque, speed), theta).1.power_lost()
-}
-
-/// The drive of `base` with its oil moved to θ, and its point under (law, formulation) with
-/// `torque` and `speed` at the ends its operating block names.
-pub(crate) fn walk_at<'a>(
-    base: &DriveSetup<'a>,
-    (law, formulation): (usize, crate::efficiency::Formulation),
-    (torque, speed): (f64, f64),
-    theta: f64,
-) -> (DriveSetup<'a>, crate::drive::DrivePoint) {
-    let setup = base.at_oil_temperature(theta);
-    let ends = base.operating_ends();
-    let torque = EndValue { at: ends.torque_at, value: torque };
-    let speed = EndValue { at: ends.speed_at, value: speed };
-    let point = setup.point(law, formulation, torque, speed);
-    (setup, point)
+    base.walked_at((law, formulation), (torque, speed), theta).1.power_lost()
 }
 
 /// At `oil_temperature = equilibrium`: `row` (evaluated by `base`, at ambient) found again at its
@@ -90,7 +73,7 @@ pub(crate) fn row_at_balance(
         scene.operating.pinion_torque.values[row.torque_index].value,
         scene.operating.pinion_speed.values[row.speed_index].value,
     );
-    let (setup, point) = walk_at(base, (row.law_index, row.formulation), ends, theta);
+    let (setup, point) = base.walked_at((row.law_index, row.formulation), ends, theta);
     let validity = setup.validity(row.law_index, &point);
     (DriveRow { point, balance: Some(balance), ..row }, validity)
 }

@@ -8,7 +8,8 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::drive_setup::{DriveSetup, GridCell};
+use super::drive_grid::GridCell;
+use super::drive_setup::DriveSetup;
 use super::setup::Setup;
 use crate::drive::{DriveOperating, DrivePoint, ShaftEnd};
 use crate::losses::parts::{LossColumn, COLUMNS};
@@ -91,7 +92,7 @@ pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap>
 
 /// One cell of the pair's map from its one-stage drive's point `p` at input power `input` = T_1 ω_1
 /// (W): the stage's mesh η̄ and loss, and with a gearbox (`columns`: the parts it describes) its
-/// budget ([`budget_of`]).
+/// budget (`super::pair_budget::budget_of`).
 fn map_cell(c: &GridCell, p: &DrivePoint, input: f64, columns: Option<&[LossColumn]>) -> MapCell {
     MapCell {
         torque_index: c.torque_index,
@@ -100,20 +101,8 @@ fn map_cell(c: &GridCell, p: &DrivePoint, input: f64, columns: Option<&[LossColu
         formulation: c.formulation,
         mesh_efficiency: p.stages[0].mesh_efficiency,
         mesh_loss: p.stages[0].mesh_loss,
-        budget: columns.map(|columns| budget_of(p, input, columns)),
+        budget: columns.map(|columns| super::pair_budget::budget_of(p, input, columns)),
     }
-}
-
-/// A one-pair drive's point `p` as the pair's budget at input power `input` = T_1 ω_1 (W): the parts
-/// `columns` the gearbox describes, the whole loss mesh + Σ parts and the pair's total efficiency
-/// 1 − P_total/(T_1 ω_1), taken at the pinion gear (not the drive's P_out/P_in, whose input also
-/// pays the pinion shaft's own losses). The map keeps no bearing loads. A point whose walk did not
-/// settle (not seen: at a given pinion torque the bearing loads do not feed back into the torque
-/// that loads them) has no whole loss and no total efficiency (NaN, which the report flags).
-pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> BudgetParts {
-    let parts = super::pair_budget::parts_of(p, columns);
-    let total = if p.settled() { p.stages[0].mesh_loss + parts.iter().map(|(_, p)| p).sum::<f64>() } else { f64::NAN };
-    BudgetParts { parts, total_loss: total, total_efficiency: 1.0 - total / input, bearings: Vec::new() }
 }
 
 impl EfficiencyMap {

@@ -94,7 +94,7 @@ pub(crate) fn best_points(
                 let speed = EndValue { at: ends.speed_at, value: n };
                 let p = setup.point(*law_index, *f, torque, speed);
                 match columns {
-                    Some(columns) => super::map::budget_of(&p, t * n, columns).total_efficiency,
+                    Some(columns) => super::pair_budget::budget_of(&p, t * n, columns).total_efficiency,
                     None => p.stages[0].mesh_efficiency,
                 }
             };

@@ -12,6 +12,7 @@ pub(crate) mod cycle_transient;
 pub(crate) mod details;
 pub(crate) mod drive;
 pub mod drive_cycle;
+pub(crate) mod drive_grid;
 pub(crate) mod drive_map_best;
 pub(crate) mod drive_map_cell;
 pub(crate) mod drive_plausibility;
@@ -42,6 +43,7 @@ pub(crate) mod stream;
 pub(crate) mod tally;
 pub(crate) mod teeth;
 pub(crate) mod thermal;
+pub(crate) mod thermal_row;
 
 use crate::model::Scene;
 
@@ -65,7 +67,8 @@ pub use records::{ExtraColumns, NoRecords};
 pub use records::{RecordSink, SummaryRow};
 pub use setup::{contact_table, Setup};
 pub use stage_pairs::{stage_pairs, MeshAtPoint, StagePair};
-pub use stream::{evaluate_records, implausible_efficiency};
+pub use stream::evaluate_records;
+pub use tally::implausible_efficiency;
 pub use tally::Tally;
 pub use teeth::{teeth_details, TeethDetails};
 pub use thermal::{duty_cycle, ratings, DutyCycleResult, Losses};

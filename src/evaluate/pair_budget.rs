@@ -6,7 +6,7 @@
 
 use crate::drive::DrivePoint;
 use crate::losses::parts::LossColumn;
-use crate::losses::{BearingLoads, BearingLoss, LossBudget, Oil};
+use crate::losses::{BearingLoads, BearingLoss, BudgetParts, LossBudget, Oil};
 use crate::model::SceneDrive;
 
 /// The power of each of `columns` (the parts the pair's gearbox describes, in column order) at the
@@ -57,6 +57,18 @@ pub(crate) fn one_pair_budget(drive: &SceneDrive, p: &DrivePoint, oil: &Oil, col
         }
     }
     LossBudget { parts: parts_of(p, columns), bearings }
+}
+
+/// A one-pair drive's point `p` as the pair's budget at input power `input` = T_1 ω_1 (W): the parts
+/// `columns` the gearbox describes, the whole loss mesh + Σ parts and the pair's total efficiency
+/// 1 − P_total/(T_1 ω_1), taken at the pinion gear (not the drive's P_out/P_in, whose input also
+/// pays the pinion shaft's own losses). The map keeps no bearing loads. A point whose walk did not
+/// settle (not seen: at a given pinion torque the bearing loads do not feed back into the torque
+/// that loads them) has no whole loss and no total efficiency (NaN, which the report flags).
+pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> BudgetParts {
+    let parts = parts_of(p, columns);
+    let total = if p.settled() { p.stages[0].mesh_loss + parts.iter().map(|(_, p)| p).sum::<f64>() } else { f64::NAN };
+    BudgetParts { parts, total_loss: total, total_efficiency: 1.0 - total / input, bearings: Vec::new() }
 }
 
 #[cfg(test)]

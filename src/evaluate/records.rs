@@ -86,7 +86,7 @@ pub struct SummaryRow {
     pub budget: Option<crate::losses::BudgetParts>,
     /// The thermal balance of an efficiency row, when the scene asks for it.
     #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
-    pub thermal: Option<super::thermal::ThermalRow>,
+    pub thermal: Option<super::thermal_row::ThermalRow>,
     /// The static transmission error of a `transmission_error` row.
     #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
     pub ste: Option<super::ste_row::SteRow>,
@@ -184,7 +184,7 @@ pub(crate) const CSV_COLUMNS: [&str; 23] = [
 
 /// The columns of `records.csv` after `CSV_COLUMNS`, in groups each present as the scene asks:
 /// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
-/// balance's (`super::thermal::ThermalRow::COLUMNS`), then the static transmission error's
+/// balance's (`super::thermal_row::ThermalRow::COLUMNS`), then the static transmission error's
 /// (`super::ste_row::SteRow::COLUMNS`). A row fills the groups it has and leaves the others' cells
 /// empty.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -199,7 +199,7 @@ impl ExtraColumns {
     pub fn of(scene: &crate::model::Scene) -> ExtraColumns {
         let budget = scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default();
         let thermal = if scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some() {
-            super::thermal::ThermalRow::COLUMNS.iter().map(|c| c.to_string()).collect()
+            super::thermal_row::ThermalRow::COLUMNS.iter().map(|c| c.to_string()).collect()
         } else {
             Vec::new()
         };

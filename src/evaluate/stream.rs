@@ -11,10 +11,10 @@ use super::laws::{evaluate_law, LawEvaluation};
 use super::plan::Plan;
 use super::records::{RecordSink, RowKind, SummaryRow};
 use super::setup::{contact_table, Setup};
+use super::tally::{furthest_beyond_half_width, implausible_efficiency};
 use super::tally::{Implausible, ImplausibleAt, LawNote, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
-use super::thermal::{thermal_point, Losses, RatingTable, ThermalRow};
+use super::thermal::{thermal_point, Losses, RatingTable};
 use crate::efficiency::EfficiencyResult;
-use crate::geometry::ContactPoint;
 use crate::model::Scene;
 
 /// Points evaluated together before their rows are written.
@@ -145,7 +145,7 @@ fn point_summary(
                     let p_v = super::thermal::loss_at_torque(losses, spec, e.formulation, state.pinion_speed);
                     let rating = ratings.get((i, e.formulation, si), housing, p_v);
                     let point = thermal_point(losses, housing, spec, e.formulation, state, rating);
-                    row.thermal = Some(ThermalRow::of(&point));
+                    row.thermal = Some(point.row());
                     if let (Some(t), Some(_)) = (point.balance.temperature, scene.operating.equilibrium) {
                         // The record at the balance: the law read in the oil at θ*.
                         let setup = losses.setup_at(t, &[e.formulation]);
@@ -193,48 +193,6 @@ fn point_summary(
         implausible.into_iter().map(|what| ImplausibleAt { point: k, label: case_at(op, k).label, what }).collect();
     let tally = Tally::of_point(k, &rows, plan.kept(k), laws, implausible);
     (rows, tally, dynamics_point)
-}
-
-/// Of `contacts` (each with its name, `B`, where it has one), the one whose Hertzian half-width is
-/// furthest beyond its limit (a fraction of the reduced radius), if any is beyond it: a pair's
-/// contact table at each point and each stage mesh's of a drive's row.
-pub(crate) fn furthest_beyond_half_width<'a>(
-    contacts: impl IntoIterator<Item = (Option<&'a str>, ContactPoint)>,
-) -> Option<(Option<&'a str>, ContactPoint)> {
-    contacts.into_iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
-        (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
-    })
-}
-
-/// How far past [0, 1] an efficiency may lie and still be rounding: 4 units in the last place of
-/// 1 (8.9e-16). η = 1 − P/P_in is computed from integrals whose last bits are rounding; one step
-/// above 1 is not a law giving negative friction.
-pub(crate) const EFFICIENCY_ULPS: f64 = 4.0 * f64::EPSILON;
-
-/// Whether an efficiency lies outside [0, 1] by more than rounding (`EFFICIENCY_ULPS`): a pair's
-/// and a drive's stage meshes' alike.
-pub(crate) fn outside_unit_interval(eta: f64) -> bool {
-    !(-EFFICIENCY_ULPS..=1.0 + EFFICIENCY_ULPS).contains(&eta)
-}
-
-/// An efficiency outside [0, 1] (beyond `EFFICIENCY_ULPS`) or a power loss above the input power.
-pub fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
-    let mut out = Vec::new();
-    let f = e.formulation.name().to_string();
-    let bad = outside_unit_interval;
-    if bad(e.mean.value) || bad(e.min) || bad(e.max) {
-        out.push(Implausible::Efficiency {
-            law: law.into(),
-            formulation: f.clone(),
-            mean: e.mean.value,
-            min: e.min,
-            max: e.max,
-        });
-    }
-    if e.power_loss > input {
-        out.push(Implausible::PowerLoss { law: law.into(), formulation: f, loss: e.power_loss, input });
-    }
-    out
 }
 
 fn efficiency_row(law_row: &SummaryRow, e: &EfficiencyResult) -> SummaryRow {

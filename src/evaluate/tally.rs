@@ -6,6 +6,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::records::{RowKind, SummaryRow};
+use crate::efficiency::EfficiencyResult;
+use crate::geometry::ContactPoint;
 
 /// b_H / R above which the half-space (line-contact) assumption of Hertz's formulas fails.
 pub(crate) const HALF_WIDTH_LIMIT: f64 = 0.1;
@@ -243,4 +245,46 @@ impl Tally {
         t.implausible.truncate(LISTED_FINDINGS);
         t
     }
+}
+
+/// Of `contacts` (each with its name, `B`, where it has one), the one whose Hertzian half-width is
+/// furthest beyond its limit (a fraction of the reduced radius), if any is beyond it: a pair's
+/// contact table at each point and each stage mesh's of a drive's row.
+pub(crate) fn furthest_beyond_half_width<'a>(
+    contacts: impl IntoIterator<Item = (Option<&'a str>, ContactPoint)>,
+) -> Option<(Option<&'a str>, ContactPoint)> {
+    contacts.into_iter().filter(|(_, c)| c.hertz_half_width > HALF_WIDTH_LIMIT * c.reduced_radius).max_by(|a, b| {
+        (a.1.hertz_half_width / a.1.reduced_radius).total_cmp(&(b.1.hertz_half_width / b.1.reduced_radius))
+    })
+}
+
+/// How far past [0, 1] an efficiency may lie and still be rounding: 4 units in the last place of
+/// 1 (8.9e-16). η = 1 − P/P_in is computed from integrals whose last bits are rounding; one step
+/// above 1 is not a law giving negative friction.
+pub(crate) const EFFICIENCY_ULPS: f64 = 4.0 * f64::EPSILON;
+
+/// Whether an efficiency lies outside [0, 1] by more than rounding (`EFFICIENCY_ULPS`): a pair's
+/// and a drive's stage meshes' alike.
+pub(crate) fn outside_unit_interval(eta: f64) -> bool {
+    !(-EFFICIENCY_ULPS..=1.0 + EFFICIENCY_ULPS).contains(&eta)
+}
+
+/// An efficiency outside [0, 1] (beyond `EFFICIENCY_ULPS`) or a power loss above the input power.
+pub fn implausible_efficiency(law: &str, e: &EfficiencyResult, input: f64) -> Vec<Implausible> {
+    let mut out = Vec::new();
+    let f = e.formulation.name().to_string();
+    let bad = outside_unit_interval;
+    if bad(e.mean.value) || bad(e.min) || bad(e.max) {
+        out.push(Implausible::Efficiency {
+            law: law.into(),
+            formulation: f.clone(),
+            mean: e.mean.value,
+            min: e.min,
+            max: e.max,
+        });
+    }
+    if e.power_loss > input {
+        out.push(Implausible::PowerLoss { law: law.into(), formulation: f, loss: e.power_loss, input });
+    }
+    out
 }

@@ -4,7 +4,7 @@
 //! P_V(θ) is the scene's one-stage drive walked with its oil read at θ (ν by ASTM D341, ρ by thermal
 //! expansion, η = ρν, α from the base oil where the scene does not give it;
 //! `DriveSetup::at_oil_temperature`) at the pinion's torque, at the pinion gear, and speed, as a
-//! drive's thermal balance walks its rows (`super::drive_thermal::walk_at`), and read as the pair's
+//! drive's thermal balance walks its rows (`DriveSetup::walked_at`), and read as the pair's
 //! budget (`super::pair_budget`): the mesh loss of one law and formulation as the budget charges it
 //! plus the parts beside the mesh. At zero speed nothing turns and nothing is lost; at zero torque
 //! the mesh carries nothing and only the no-load losses remain (no law is read without a load).
@@ -19,6 +19,8 @@ use crate::model::Scene;
 use crate::thermal::{self, Balance, DutyCycle, Housing, Ratings};
 use crate::tribology::lubricant::OilData;
 use crate::tribology::Tribology;
+
+use super::thermal_row::ThermalRow;
 
 /// The scene's losses as a function of the oil temperature.
 pub struct Losses<'a> {
@@ -110,7 +112,7 @@ impl<'a> Losses<'a> {
             return None;
         }
         let law = self.scene.friction.iter().position(|s| s == spec).expect("a law of the scene");
-        Some(super::drive_thermal::walk_at(&self.drive, (law, f), (state.pinion_torque, state.pinion_speed), t))
+        Some(self.drive.walked_at((law, f), (state.pinion_torque, state.pinion_speed), t))
     }
 
     /// The mesh loss of the walk's point: none at zero torque (no law is read without a load).
@@ -125,7 +127,7 @@ impl<'a> Losses<'a> {
 
 /// The balance of one operating point, law and formulation, with what it rests on.
 #[derive(Debug, Clone, PartialEq)]
-pub struct ThermalPoint {
+pub(crate) struct ThermalPoint {
     pub balance: Balance,
     /// At θ* (or at the search's end without a balance).
     pub dissipation: thermal::Dissipation,
@@ -135,6 +137,27 @@ pub struct ThermalPoint {
     /// Pinion torque (N·m) at which θ* is the limit, and at which it is 95 °C.
     pub rating: Option<f64>,
     pub rating_95: Option<f64>,
+}
+
+impl ThermalPoint {
+    /// The balance as the record files carry it.
+    pub(crate) fn row(&self) -> ThermalRow {
+        let p = self;
+        let d = &p.dissipation;
+        ThermalRow {
+            oil_temperature: p.balance.temperature,
+            thermal_status: p.balance.status,
+            loss_at_balance: p.losses.total(),
+            convection: d.convection,
+            radiation: d.radiation,
+            foundation: d.foundation,
+            cooler: d.cooler,
+            dissipation: d.total,
+            heat_transfer_coefficient: p.heat_transfer_coefficient,
+            rating: p.rating,
+            rating_95: p.rating_95,
+        }
+    }
 }
 
 /// The balance and the losses at it of law `spec`, formulation `f` at `state`, with the two ratings
@@ -257,83 +280,6 @@ pub(crate) fn duty_cycle_of(
         formulation: f,
         fixed: fixed.map(|t| (0..cycle.steps.len()).map(|k| p_v(k, t)).collect()),
         transient: housing.heat_capacity.map(|c| thermal::transient(p_v, housing, c, &durations)),
-    }
-}
-
-/// The balance of an efficiency record as the record files carry it (flat columns).
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct ThermalRow {
-    /// θ* (K), absent without a balance up to 200 °C.
-    #[serde(rename = "oil_temperature_K")]
-    pub oil_temperature: Option<f64>,
-    pub thermal_status: thermal::BalanceStatus,
-    /// P_V at θ* (W).
-    #[serde(rename = "loss_at_balance_W")]
-    pub loss_at_balance: f64,
-    #[serde(rename = "dissipation_convection_W")]
-    pub convection: f64,
-    #[serde(rename = "dissipation_radiation_W")]
-    pub radiation: f64,
-    #[serde(rename = "dissipation_foundation_W")]
-    pub foundation: f64,
-    #[serde(rename = "dissipation_cooler_W")]
-    pub cooler: f64,
-    #[serde(rename = "dissipation_W")]
-    pub dissipation: f64,
-    #[serde(rename = "heat_transfer_coefficient_W_m2_K")]
-    pub heat_transfer_coefficient: f64,
-    #[serde(rename = "thermal_rating_N_m")]
-    pub rating: Option<f64>,
-    #[serde(rename = "thermal_rating_95_N_m")]
-    pub rating_95: Option<f64>,
-}
-
-impl ThermalRow {
-    /// The record files' column names, in order.
-    pub const COLUMNS: [&'static str; 11] = [
-        "oil_temperature_K",
-        "thermal_status",
-        "loss_at_balance_W",
-        "dissipation_convection_W",
-        "dissipation_radiation_W",
-        "dissipation_foundation_W",
-        "dissipation_cooler_W",
-        "dissipation_W",
-        "heat_transfer_coefficient_W_m2_K",
-        "thermal_rating_N_m",
-        "thermal_rating_95_N_m",
-    ];
-
-    pub fn of(p: &ThermalPoint) -> ThermalRow {
-        let d = &p.dissipation;
-        ThermalRow {
-            oil_temperature: p.balance.temperature,
-            thermal_status: p.balance.status,
-            loss_at_balance: p.losses.total(),
-            convection: d.convection,
-            radiation: d.radiation,
-            foundation: d.foundation,
-            cooler: d.cooler,
-            dissipation: d.total,
-            heat_transfer_coefficient: p.heat_transfer_coefficient,
-            rating: p.rating,
-            rating_95: p.rating_95,
-        }
-    }
-
-    /// The numbers after the status, in [`Self::COLUMNS`] order.
-    pub fn numbers(&self) -> [Option<f64>; 9] {
-        [
-            Some(self.loss_at_balance),
-            Some(self.convection),
-            Some(self.radiation),
-            Some(self.foundation),
-            Some(self.cooler),
-            Some(self.dissipation),
-            Some(self.heat_transfer_coefficient),
-            self.rating,
-            self.rating_95,
-        ]
     }
 }
 
