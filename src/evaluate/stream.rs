@@ -46,14 +46,15 @@ pub fn evaluate_records(
     let dynamics =
         DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
     let ratings = RatingTable::new(scene);
-    // The losses at an oil temperature, prepared once for the sweep (the scene's one-stage drive).
-    let losses = Losses::new(scene, eval);
-    let thermal = scene
-        .housing
-        .as_ref()
-        .zip(losses.as_ref())
-        .filter(|_| scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some())
-        .map(|(housing, losses)| SweepThermal { housing, losses, ratings: &ratings });
+    // The losses at an oil temperature (the scene's one-stage drive), prepared once for the sweep
+    // and only where the scene asks for its balance.
+    let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
+    let losses = scene.housing.as_ref().filter(|_| wants_balance).and_then(|_| Losses::new(scene, eval));
+    let thermal = scene.housing.as_ref().zip(losses.as_ref()).map(|(housing, losses)| SweepThermal {
+        housing,
+        losses,
+        ratings: &ratings,
+    });
     let mut out = Streamed::default();
     // The transmission error's rows come first, from the run (or shard) that holds point 1.
     if plan.range.start == 0 && scene.analyses.transmission_error.is_some() {
