@@ -112,7 +112,7 @@ pub(crate) struct Seed {
 impl Seed {
     /// Shaft `j`'s own losses (W): its bearings, its seals, its gears' no-load parts.
     pub(crate) fn own(&self, j: usize) -> f64 {
-        self.bearings[j] + self.fixed.seals[j] + self.fixed.gear_no_load[j]
+        self.fixed.own(j, self.bearings[j])
     }
 }
 
@@ -142,6 +142,14 @@ pub(super) struct FixedLosses {
     pub(super) seals: Vec<f64>,
     pub(super) gear_no_load: Vec<f64>,
     pub(super) stage_no_load: Vec<f64>,
+}
+
+impl FixedLosses {
+    /// Shaft `j`'s own losses (W) with its bearings' `bearings`: bearings, then its gears' no-load
+    /// parts and seals.
+    pub(super) fn own(&self, j: usize, bearings: f64) -> f64 {
+        bearings + (self.gear_no_load[j] + self.seals[j])
+    }
 }
 
 impl<'a> Walk<'a> {
@@ -209,7 +217,7 @@ impl<'a> Walk<'a> {
             mesh_loss: vec![0.0; stages],
             kind_state: vec![None; stages],
         };
-        let own = |j: usize| bearings[j] + fixed.seals[j] + fixed.gear_no_load[j];
+        let own = |j: usize| fixed.own(j, bearings[j]);
         // What the stage's kind keeps of the pass is kept for the report's point.
         let mut eta = |k: usize, m: Member, torque: f64, speed: f64| {
             let stage = &self.drive.stages[k];
@@ -280,6 +288,7 @@ impl<'a> Walk<'a> {
             let (reactions, bent_shaft) = support_reactions(shaft, &on, point, beam);
             bending[j] = bent_shaft;
             let speed = self.omega[j].abs();
+            let mut column = [0.0; 2];
             for (i, bearing) in shaft.bearings.iter().enumerate() {
                 let n = bearing.count as f64;
                 let r = reactions[i];
@@ -289,7 +298,8 @@ impl<'a> Walk<'a> {
                     None => (0.0, None),
                 };
                 let (no_load, load) = (m0 * speed * n, m1.unwrap_or(0.0) * speed * n);
-                powers[j] += no_load + load;
+                column[0] += no_load;
+                column[1] += load;
                 if !point {
                     continue;
                 }
@@ -306,6 +316,7 @@ impl<'a> Walk<'a> {
                     of_stage_members: false,
                 });
             }
+            powers[j] = column[0] + column[1];
         }
         for &(k, m) in &self.steps {
             let stage = &model.drive.stages[k];

@@ -93,7 +93,7 @@ impl Lubrication {
     /// P_VZ0 (W) of the two gears in `oil`; `None` for injection lubrication of an oil without a
     /// density (lowering refuses that scene).
     pub fn power_loss(&self, g: &GearsRunning, oil: &super::oil::Oil) -> Option<f64> {
-        self.parts(g, oil).map(|(mesh, windage)| mesh + (windage[0] + windage[1]))
+        self.power_loss_by_gear(g, oil).map(|[own, other]| own + other)
     }
 
     /// P_VZ0 (W) split by where it acts, [pinion's shaft, wheel's shaft]: Mauz's T_H and the jet's
