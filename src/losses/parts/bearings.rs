@@ -51,13 +51,15 @@ impl LossPart for Bearings<'_> {
         let Some(nu) = oil.nu else { return };
         for (s, places) in self.0.iter().enumerate().filter(|(_, p)| !p.is_empty()) {
             let loads = place_loads(places, force(s), f_bt);
+            // The shaft's columns, then added to the budget's shaft by shaft.
+            let mut shaft = PartLosses::default();
             for (b, (fr, fa)) in places.iter().zip(loads) {
                 let n = b.count as f64;
                 let (m0, m1) = b.moments(fr, fa, nu, at.omega[s], oil.mineral);
                 let p0 = m0 * at.omega[s] * n;
                 let p1 = m1.map(|m| m * at.omega[s] * n);
-                out.add(LossColumn::BearingsNoLoad, p0);
-                out.add(LossColumn::BearingsLoad, p1.unwrap_or(0.0));
+                shaft.add(LossColumn::BearingsNoLoad, p0);
+                shaft.add(LossColumn::BearingsLoad, p1.unwrap_or(0.0));
                 out.bearings.push(BearingLoss {
                     shaft: ["pinion", "wheel"][s],
                     kind: b.kind.name(),
@@ -66,6 +68,9 @@ impl LossPart for Bearings<'_> {
                     position: b.position,
                     loads: BearingLoads { radial_load: fr, axial_load: fa, no_load: p0, load: p1 },
                 });
+            }
+            for (c, p) in shaft.powers {
+                out.add(c, p);
             }
         }
     }

@@ -22,7 +22,7 @@ impl LossPart for Seals<'_> {
     }
 
     fn losses(&self, at: &PartState, _oil: &Oil, out: &mut PartLosses) {
-        let p = self.0.iter().zip(at.omega).flat_map(|(seals, w)| seals.iter().map(move |s| s.power_loss(w))).sum();
+        let p = self.0.iter().zip(at.omega).map(|(seals, w)| seals.iter().map(|s| s.power_loss(w)).sum::<f64>()).sum();
         out.add(LossColumn::Seals, p);
     }
 }
