@@ -17,6 +17,8 @@ use super::pass::Pass;
 use super::point::{BearingPoint, DrivePoint, PowerFlow};
 use super::shaft_bending::{support_reactions, ShaftBending};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
+use crate::losses::parts::catalog::add_parts;
+use crate::losses::parts::{LossColumn, PartLosses, PartState, ShaftParts, StageGears};
 use crate::losses::Oil;
 
 /// The fixed point stops when no torque moves by more than this, relative to the largest.
@@ -136,20 +138,45 @@ pub(super) struct Walk<'a> {
     pub(super) steps: Vec<(usize, Member)>,
 }
 
-/// Load-independent losses of each shaft (W): seals, and the gears' no-load parts (churning and
-/// jet impulse on the pinion's shaft, each gear's windage on its own); and those parts by stage.
-pub(super) struct FixedLosses {
-    pub(super) seals: Vec<f64>,
-    pub(super) gear_no_load: Vec<f64>,
-    pub(super) stage_no_load: Vec<f64>,
+/// Load-independent losses (W) of each shaft and stage: the catalogue's parts that do not read the
+/// bearing loads (seals; the gears' no-load parts, churning and jet impulse on the shaft the stage
+/// charges them to, each gear's windage on its own).
+pub(super) struct FixedLosses(PartLosses);
+impl FixedLosses {
+    /// Shaft `j`'s own losses (W) with its bearings' `bearings`: bearings, then its columns of the
+    /// load-independent parts.
+    pub(super) fn own(&self, j: usize, bearings: f64) -> f64 {
+        bearings + self.0.shaft_total(j)
+    }
+
+    pub(super) fn seals(&self, j: usize) -> f64 {
+        self.0.shaft(j)[LossColumn::Seals as usize]
+    }
+
+    pub(super) fn gear_no_load(&self, j: usize) -> f64 {
+        self.0.shaft(j)[LossColumn::GearNoLoad as usize]
+    }
+
+    /// Stage `k`'s no-load parts (W).
+    pub(super) fn stage_no_load(&self) -> &[f64] {
+        &self.0.stages
+    }
 }
 
-impl FixedLosses {
-    /// Shaft `j`'s own losses (W) with its bearings' `bearings`: bearings, then its gears' no-load
-    /// parts and seals.
-    pub(super) fn own(&self, j: usize, bearings: f64) -> f64 {
-        bearings + (self.gear_no_load[j] + self.seals[j])
-    }
+/// Every shaft of `drive` at the speeds `omega` as the loss parts read it, with the loads `loads`
+/// on one bearing of each place (none: the parts that read no loads).
+fn shaft_parts<'a>(drive: &'a Drive, omega: &[f64], loads: &'a [Vec<[f64; 2]>]) -> Vec<ShaftParts<'a>> {
+    drive
+        .shafts
+        .iter()
+        .enumerate()
+        .map(|(j, s)| ShaftParts {
+            speed: omega[j].abs(),
+            bearings: &s.bearings,
+            loads: loads.get(j).map_or(&[], Vec::as_slice),
+            seals: &s.seals,
+        })
+        .collect()
 }
 
 impl<'a> Walk<'a> {
@@ -171,29 +198,21 @@ impl<'a> Walk<'a> {
 
     fn fixed_losses(&self, model: &DriveModel) -> FixedLosses {
         let drive = model.drive;
-        let seals = drive
-            .shafts
-            .iter()
-            .enumerate()
-            .map(|(j, s)| 0.0 + s.seals.iter().map(|seal| seal.power_loss(self.omega[j].abs())).sum::<f64>())
-            .collect();
-        let mut gear_no_load = vec![0.0; drive.shafts.len()];
-        let stage_no_load: Vec<f64> = drive
+        let shafts = shaft_parts(drive, self.omega, &[]);
+        let stages: Vec<StageGears> = drive
             .stages
             .iter()
             .zip(model.sizes)
             .enumerate()
             .map(|(k, (stage, sizes))| {
                 let (place, running) = stage.model().gears_running(stage, sizes, self.places(k));
-                let by_gear = stage.lubrication.as_ref().and_then(|l| l.power_loss_by_gear(&running, model.oil));
-                // The mesh's parts at `place`; the other gear's windage on its shaft.
-                let [own, other] = by_gear.unwrap_or([0.0; 2]);
-                gear_no_load[stage.places[place].shaft] += own;
-                gear_no_load[stage.places[1 - place].shaft] += other;
-                own + other
+                let shafts = [stage.places[place].shaft, stage.places[1 - place].shaft];
+                StageGears { lubrication: stage.lubrication.as_ref(), running, shafts }
             })
             .collect();
-        FixedLosses { seals, gear_no_load, stage_no_load }
+        let mut out = PartLosses::new(shafts.len(), stages.len(), false);
+        add_parts(&PartState { shafts: &shafts, stages: &stages }, model.oil, false, &mut out);
+        FixedLosses(out)
     }
 
     /// One walk with the shafts' bearing losses `bearings` (W): from the source when the source's
@@ -208,7 +227,7 @@ impl<'a> Walk<'a> {
         previous: Option<&[f64]>,
     ) -> Pass {
         let n = self.omega.len();
-        let stages = fixed.stage_no_load.len();
+        let stages = fixed.stage_no_load().len();
         let mut p = Pass {
             received: vec![0.0; n],
             passed: vec![0.0; n],
@@ -275,49 +294,53 @@ impl<'a> Walk<'a> {
     /// Each shaft's bearing losses (W), its gears' loads and, for the point (`point`), its places
     /// and its bending at the driving torques `torques` (a pass needs the powers alone).
     pub(super) fn bearing_powers(&self, model: &DriveModel, torques: &[f64], point: bool) -> Supported {
+        let drive = model.drive;
         let loads = self.gear_loads(model, torques);
-        let mut powers = vec![0.0; model.drive.shafts.len()];
-        let mut places = vec![Vec::new(); model.drive.shafts.len()];
-        let mut bending = vec![None; model.drive.shafts.len()];
-        for (j, shaft) in model.drive.shafts.iter().enumerate() {
-            if shaft.bearings.is_empty() {
-                continue;
-            }
+        let n = drive.shafts.len();
+        let mut reactions = vec![Vec::new(); n];
+        let mut bending = vec![None; n];
+        let mut place_loads = vec![Vec::new(); n];
+        for (j, shaft) in drive.shafts.iter().enumerate().filter(|(_, s)| !s.bearings.is_empty()) {
             let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
             let beam = model.beams.get(j).and_then(Option::as_ref);
-            let (reactions, bent_shaft) = support_reactions(shaft, &on, point, beam);
+            let (r, bent_shaft) = support_reactions(shaft, &on, point, beam);
+            place_loads[j] = shaft
+                .bearings
+                .iter()
+                .zip(&r)
+                .map(|(b, r)| [r[0].hypot(r[1]) / b.count as f64, r[2].abs() / b.count as f64])
+                .collect();
+            reactions[j] = r;
             bending[j] = bent_shaft;
-            let speed = self.omega[j].abs();
-            let mut column = [0.0; 2];
-            for (i, bearing) in shaft.bearings.iter().enumerate() {
-                let n = bearing.count as f64;
-                let r = reactions[i];
-                let (radial, axial) = (r[0].hypot(r[1]) / n, r[2].abs() / n);
-                let (m0, m1) = match model.oil.nu {
-                    Some(nu) => bearing.moments(radial, axial, nu, speed, model.oil.mineral),
-                    None => (0.0, None),
-                };
-                let (no_load, load) = (m0 * speed * n, m1.unwrap_or(0.0) * speed * n);
-                column[0] += no_load;
-                column[1] += load;
-                if !point {
-                    continue;
-                }
-                places[j].push(BearingPoint {
-                    kind: bearing.kind.name().to_string(),
-                    count: bearing.count,
-                    position: bearing.position,
-                    locating: i == shaft.locating,
-                    reaction: r,
-                    radial_load: radial,
-                    axial_load: axial,
-                    no_load,
-                    load,
-                    of_stage_members: false,
-                });
-            }
-            powers[j] = column[0] + column[1];
         }
+        let shafts = shaft_parts(drive, self.omega, &place_loads);
+        let mut out = PartLosses::new(n, 0, point);
+        add_parts(&PartState { shafts: &shafts, stages: &[] }, model.oil, true, &mut out);
+        let mut powers: Vec<f64> = (0..n).map(|j| out.shaft_total(j)).collect();
+        let mut places: Vec<Vec<BearingPoint>> = match out.places {
+            Some(kept) => drive
+                .shafts
+                .iter()
+                .zip(kept.into_iter().zip(reactions))
+                .map(|(shaft, (kept, reactions))| {
+                    (shaft.bearings.iter().enumerate().zip(kept.into_iter().zip(reactions)))
+                        .map(|((i, bearing), (l, reaction))| BearingPoint {
+                            kind: bearing.kind.name().to_string(),
+                            count: bearing.count,
+                            position: bearing.position,
+                            locating: i == shaft.locating,
+                            reaction,
+                            radial_load: l.radial_load,
+                            axial_load: l.axial_load,
+                            no_load: l.no_load,
+                            load: l.load.unwrap_or(0.0),
+                            of_stage_members: false,
+                        })
+                        .collect()
+                })
+                .collect(),
+            None => vec![Vec::new(); n],
+        };
         for &(k, m) in &self.steps {
             let stage = &model.drive.stages[k];
             if let Some((j, b)) = stage.model().member_bearings(stage, (m, torques[k]), self.places(k), model.oil) {

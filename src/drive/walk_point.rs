@@ -26,8 +26,8 @@ impl Walk<'_> {
                 passed_power: p.passed[j],
                 bearings,
                 gear_loads: loads.iter().filter(|l| l.shaft == j).copied().collect(),
-                seals: fixed.seals[j],
-                gear_no_load: fixed.gear_no_load[j],
+                seals: fixed.seals(j),
+                gear_no_load: fixed.gear_no_load(j),
                 bending,
             })
             .collect();
@@ -45,7 +45,7 @@ impl Walk<'_> {
                 let bearings = kind
                     .member_bearings(stage, (m, t), self.places(k), model.oil)
                     .map_or([0.0; 2], |(_, b)| [b.no_load, b.load]);
-                let parts = (bearings, fixed.stage_no_load[k]);
+                let parts = (bearings, fixed.stage_no_load()[k]);
                 let ([f_t, f_r, f_a], kind_point) = kind.point(stage, sizes, (m, t), p.kind_state[k].as_ref(), parts);
                 StagePoint {
                     name: stage.name.clone(),
@@ -55,7 +55,7 @@ impl Walk<'_> {
                     driving_speed: self.omega[stage.places[d].shaft].abs(),
                     mesh_efficiency: p.efficiency[k],
                     mesh_loss: p.mesh_loss[k],
-                    no_load: fixed.stage_no_load[k],
+                    no_load: fixed.stage_no_load()[k],
                     tangential_force: f_t,
                     radial_force: f_r,
                     axial_force: f_a,
@@ -78,10 +78,10 @@ impl Walk<'_> {
         };
         let losses = LossParts {
             meshes: p.mesh_loss.iter().sum(),
-            gear_no_load: fixed.stage_no_load.iter().sum(),
+            gear_no_load: fixed.stage_no_load().iter().sum(),
             bearings_no_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.no_load).sum(),
             bearings_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.load).sum(),
-            seals: fixed.seals.iter().sum(),
+            seals: (0..drive.shafts.len()).map(|j| fixed.seals(j)).sum(),
         };
         let both_ends_deliver = p_sink < 0.0 || p_source < 0.0;
         let efficiency = if both_ends_deliver || p_source == 0.0 { 0.0 } else { p_sink / p_source };

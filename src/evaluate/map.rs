@@ -59,7 +59,7 @@ pub(crate) fn evaluate_map(scene: &Scene, eval: &Setup) -> Option<EfficiencyMap>
         torques.values.iter().map(|t| t.value).collect::<Vec<_>>(),
         speeds.values.iter().map(|s| s.value).collect::<Vec<_>>(),
     );
-    let columns = scene.gearbox.as_ref().map(crate::losses::parts::catalog::columns_of);
+    let columns = scene.gearbox.as_ref().map(crate::losses::Gearbox::columns);
     let ends = DriveOperating { torque_at: ShaftEnd::Input, speed_at: ShaftEnd::Input };
     let rows = t.len() * s.len() * setup.rows_per_point();
     let cells = setup.grid_points((&t, &s), ends, 0..rows, |c, p| {

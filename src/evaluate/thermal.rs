@@ -56,7 +56,7 @@ impl<'a> Losses<'a> {
         let oil = l.oil.clone()?;
         let alpha = if l.alpha_from_oil { None } else { setup.tribology.pressure_viscosity };
         let drive = DriveSetup::new(scene, scene.drive.as_ref()?);
-        let columns = scene.gearbox.as_ref().map(crate::losses::parts::catalog::columns_of);
+        let columns = scene.gearbox.as_ref().map(crate::losses::Gearbox::columns);
         Some(Losses { scene, setup, drive, columns, oil, alpha })
     }
 

@@ -6,9 +6,12 @@
 use serde::Serialize;
 
 pub use super::bearing_loss::{BearingLoads, BearingLoss};
+use super::gear_no_load::GearsRunning;
 use super::gearbox::Gearbox;
 use super::oil::Oil;
-use super::parts::{LossColumn, PartLosses, PartState, PARTS};
+use super::pair_statics::{place_loads, GearForce};
+use super::parts::catalog::{add_parts, columns_of};
+use super::parts::{LossColumn, PartLosses, PartState, ShaftParts, StageGears};
 use crate::geometry::PairGeometry;
 
 /// Everything but the mesh at one operating point (W); parts the scene does not describe are `None`.
@@ -67,21 +70,43 @@ impl BudgetParts {
 }
 
 /// The budget at pinion torque T_1 (N·m) and speed ω_1 (rad/s) in `oil`: every part of the
-/// catalogue ([`super::parts::PARTS`]) the gearbox describes.
+/// catalogue ([`super::parts::PARTS`]) the gearbox describes, on the pinion's and the wheel's shaft
+/// at ω_1 and ω_1/u, their bearing places loaded by the mesh force ([`super::pair_statics`]).
 pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f64, oil: &Oil) -> LossBudget {
-    let at = PartState {
-        pinion_torque: torque,
-        omega: [omega_1, omega_1 / g.gear_ratio],
-        pitch_radius: g.working_pitch_radius,
-        face_width: g.face_width,
-        transverse_force: torque / g.base_radius[0],
-        pressure_angle: g.operating_pressure_angle,
-        axial_force: g.axial_force(torque),
+    let omega = [omega_1, omega_1 / g.gear_ratio];
+    let f_bt = torque / g.base_radius[0];
+    let axial = g.axial_force(torque);
+    let force = |s: usize| GearForce {
+        tangential: f_bt * g.operating_pressure_angle.cos(),
+        radial: f_bt * g.operating_pressure_angle.sin(),
+        axial: if s == 0 { axial } else { -axial },
+        radius: g.working_pitch_radius[s],
     };
-    let mut out = PartLosses::default();
-    for part in PARTS.iter().filter_map(|p| (p.of)(gearbox)) {
-        part.losses(&at, oil, &mut out);
-    }
-    out.powers.sort_by_key(|(c, _)| *c);
-    LossBudget { parts: out.powers, bearings: out.bearings }
+    let loads: [Vec<[f64; 2]>; 2] = [0, 1].map(|s| place_loads(&gearbox.bearings[s], force(s), f_bt));
+    let shafts: [ShaftParts; 2] = [0, 1].map(|s| ShaftParts {
+        speed: omega[s],
+        bearings: &gearbox.bearings[s],
+        loads: &loads[s],
+        seals: &gearbox.seals[s],
+    });
+    let running = GearsRunning { omega, pitch_radius: g.working_pitch_radius, face_width: g.face_width };
+    let stages = [StageGears { lubrication: gearbox.lubrication.as_ref(), running, shafts: [0, 1] }];
+    let on = PartState { shafts: &shafts, stages: &stages };
+    let mut out = PartLosses::new(2, 1, true);
+    add_parts(&on, oil, false, &mut out);
+    add_parts(&on, oil, true, &mut out);
+    let parts = columns_of(&on).into_iter().map(|c| (c, out.column(c))).collect();
+    let places = out.places.unwrap_or_default();
+    let bearings = (0..2)
+        .flat_map(|s| gearbox.bearings[s].iter().zip(&places[s]).map(move |(b, loads)| (s, b, *loads)))
+        .map(|(s, b, loads)| BearingLoss {
+            shaft: ["pinion", "wheel"][s],
+            kind: b.kind.name(),
+            model: b.model_name(),
+            count: b.count,
+            position: b.position,
+            loads,
+        })
+        .collect();
+    LossBudget { parts, bearings }
 }

@@ -18,7 +18,6 @@ use serde::{Deserialize, Serialize};
 
 use super::budget::{BearingLoads, BudgetParts};
 use super::gearbox::Gearbox;
-use super::parts::catalog::columns_of;
 use super::parts::LossColumn;
 
 /// The four columns of bearing place `i` (1-based), after its prefix `bearing_{i}_`.
@@ -36,7 +35,7 @@ fn column_names(present: impl Iterator<Item = LossColumn>, places: usize) -> Vec
 
 /// The budget columns of a scene with this gearbox, in the order [`values`] gives their values.
 pub fn names(g: &Gearbox) -> Vec<String> {
-    column_names(columns_of(g).into_iter(), g.bearings.iter().map(Vec::len).sum())
+    column_names(g.columns().into_iter(), g.bearings.iter().map(Vec::len).sum())
 }
 
 /// The budget's values in the order of [`names`] for the gearbox that gave them (no names built:

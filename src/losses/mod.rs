@@ -17,6 +17,7 @@ pub mod columns;
 pub(crate) mod gear_no_load;
 pub(crate) mod gearbox;
 pub(crate) mod oil;
+pub mod pair_statics;
 pub mod parts;
 pub(crate) mod seals;
 pub(crate) mod skf_bearing;

@@ -212,7 +212,7 @@ fn lever_rule_and_axial_moment() {
 /// unloads its first place where the pinion's loads it (by hand: lever · F_r + F_a r_w2 / span).
 #[test]
 fn both_shafts_balance_forces_and_moments() {
-    use gearloss::losses::parts::bearings::{shaft_reactions, GearForce};
+    use gearloss::losses::pair_statics::{shaft_reactions, GearForce};
     let scene = spec("metric_helical.gear");
     let g = scene.gears.geometry().unwrap();
     let place = |at: f64, count: usize| bearing_at(BearingType::TaperedRoller, at, count);

@@ -1,11 +1,11 @@
 //! The catalogue of loss parts: each part's typed identity, its name, its file, the columns it
-//! fills and how it is read off a scene's gearbox.
+//! fills and the part itself.
 
 use super::loss_column::LossColumn;
-use super::loss_part::LossPart;
+use super::loss_part::{LossPart, PartLosses, PartState};
 pub use super::part_id::LossPartId;
 use super::{bearings, gear_no_load, seals};
-use crate::losses::gearbox::Gearbox;
+use crate::losses::oil::Oil;
 
 impl LossPartId {
     pub fn entry(self) -> &'static LossPartEntry {
@@ -23,8 +23,8 @@ pub struct LossPartEntry {
     pub title: &'static str,
     /// The columns it fills, in [`super::COLUMNS`] order.
     pub columns: &'static [LossColumn],
-    /// The part as the scene's gearbox describes it; None when the gearbox has none of it.
-    pub of: for<'a> fn(&'a Gearbox) -> Option<Box<dyn LossPart + 'a>>,
+    /// The part.
+    pub part: &'static (dyn LossPart + Sync),
 }
 
 /// Every loss part, in the budget's column order.
@@ -35,7 +35,7 @@ pub const PARTS: &[LossPartEntry] = &[
         file: "gear_no_load.rs",
         title: "gears without load: churning (dip) or jet impulse and windage (injection), ISO/TR 14179-2",
         columns: &[LossColumn::GearNoLoad],
-        of: gear_no_load::of,
+        part: &gear_no_load::GearNoLoad,
     },
     LossPartEntry {
         id: LossPartId::Bearings,
@@ -43,7 +43,7 @@ pub const PARTS: &[LossPartEntry] = &[
         file: "bearings.rs",
         title: "rolling bearings on the mesh force's reactions: Palmgren's M_0 and M_1, or the SKF model",
         columns: &[LossColumn::BearingsNoLoad, LossColumn::BearingsLoad],
-        of: bearings::of,
+        part: &bearings::Bearings,
     },
     LossPartEntry {
         id: LossPartId::Seals,
@@ -51,14 +51,22 @@ pub const PARTS: &[LossPartEntry] = &[
         file: "seals.rs",
         title: "radial lip seals, ISO/TR 14179-2 after Linke",
         columns: &[LossColumn::Seals],
-        of: seals::of,
+        part: &seals::Seals,
     },
 ];
 
-/// The columns a gearbox fills, in order.
-pub(crate) fn columns_of(gearbox: &Gearbox) -> Vec<LossColumn> {
+/// The columns the drive `on` fills, in order.
+pub(crate) fn columns_of(on: &PartState) -> Vec<LossColumn> {
     let mut out: Vec<LossColumn> =
-        PARTS.iter().filter(|p| (p.of)(gearbox).is_some()).flat_map(|p| p.columns.iter().copied()).collect();
+        PARTS.iter().filter(|p| p.part.present(on)).flat_map(|p| p.columns.iter().copied()).collect();
     out.sort();
     out
+}
+
+/// Every part of the catalogue the drive `on` has that reads the bearing places' loads
+/// (`loaded`) or not, its powers on `on` in `oil` added to `out`.
+pub(crate) fn add_parts(on: &PartState, oil: &Oil, loaded: bool, out: &mut PartLosses) {
+    for p in PARTS.iter().filter(|p| p.part.reads_loads() == loaded && p.part.present(on)) {
+        p.part.losses(on, oil, out);
+    }
 }
