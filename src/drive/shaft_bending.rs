@@ -245,3 +245,15 @@ pub(crate) fn stage_misalignment(
     let ((pinion, force), (wheel, _)) = (gear(0)?, gear(1)?);
     Some(mesh_misalignment(face_width, pinion, wheel, force))
 }
+
+/// Each shaft of `drive` with its beam made ready ([`shaft_beam_of`] at the places its stages put
+/// gears on it).
+pub(crate) fn prepared_beams(drive: &super::layout::Drive) -> Vec<Option<PreparedBeam>> {
+    (0..drive.shafts.len())
+        .map(|j| {
+            let at: Vec<f64> =
+                drive.stages.iter().flat_map(|s| s.places).filter(|p| p.shaft == j).map(|p| p.at).collect();
+            shaft_beam_of(&drive.shafts[j], &at)
+        })
+        .collect()
+}

@@ -37,6 +37,14 @@ pub(super) struct Supported {
     pub(super) bending: Vec<Option<ShaftBending>>,
 }
 
+/// What the load-dependent parts rest on at one pass: each shaft's support reactions [x, y, z] at
+/// its places (N), its bending (at the point, a shaft with sections) and every gear's load.
+struct Statics {
+    reactions: Vec<Vec<[f64; 3]>>,
+    bending: Vec<Option<ShaftBending>>,
+    loads: Vec<GearLoad>,
+}
+
 /// The drive with what its walk reads: the stages' sizes (in stage order) and the oil.
 pub struct DriveModel<'a> {
     pub drive: &'a Drive,
@@ -126,6 +134,19 @@ pub(crate) fn shaft_losses_at(model: &DriveModel, speed: EndValue, driving_torqu
     let fixed = walk.fixed_losses(model);
     let bearings = walk.bearing_powers(model, driving_torques, false).powers;
     Seed { fixed, bearings }
+}
+
+/// The catalogue's parts (README, "Loss budget") on every shaft and stage when the stages' driving
+/// members (in drive, from the input) put `driving_torques` (N·m, in stage order) into their meshes
+/// at `speed`, found without walking: [the parts that read no loads, with each stage's no-load
+/// power; the parts that do, with every bearing place's loads and losses on the shafts' statics].
+/// A one-pair drive's budget at a given pinion torque is these (`evaluate::pair_budget`).
+pub(crate) fn parts_at(model: &DriveModel, speed: EndValue, driving_torques: &[f64]) -> [PartLosses; 2] {
+    let omega = shaft_speeds(model.drive, speed);
+    let walk = Walk::new(model, &omega, PowerFlow::Drive);
+    let FixedLosses(fixed) = walk.fixed_losses(model);
+    let (loaded, ..) = walk.loaded_parts(model, driving_torques, true);
+    [fixed, loaded]
 }
 
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
@@ -295,27 +316,8 @@ impl<'a> Walk<'a> {
     /// and its bending at the driving torques `torques` (a pass needs the powers alone).
     pub(super) fn bearing_powers(&self, model: &DriveModel, torques: &[f64], point: bool) -> Supported {
         let drive = model.drive;
-        let loads = self.gear_loads(model, torques);
         let n = drive.shafts.len();
-        let mut reactions = vec![Vec::new(); n];
-        let mut bending = vec![None; n];
-        let mut place_loads = vec![Vec::new(); n];
-        for (j, shaft) in drive.shafts.iter().enumerate().filter(|(_, s)| !s.bearings.is_empty()) {
-            let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
-            let beam = model.beams.get(j).and_then(Option::as_ref);
-            let (r, bent_shaft) = support_reactions(shaft, &on, point, beam);
-            place_loads[j] = shaft
-                .bearings
-                .iter()
-                .zip(&r)
-                .map(|(b, r)| [r[0].hypot(r[1]) / b.count as f64, r[2].abs() / b.count as f64])
-                .collect();
-            reactions[j] = r;
-            bending[j] = bent_shaft;
-        }
-        let shafts = shaft_parts(drive, self.omega, &place_loads);
-        let mut out = PartLosses::new(n, 0, point);
-        add_parts(&PartState { shafts: &shafts, stages: &[] }, model.oil, true, &mut out);
+        let (out, Statics { reactions, bending, loads }) = self.loaded_parts(model, torques, point);
         let mut powers: Vec<f64> = (0..n).map(|j| out.shaft_total(j)).collect();
         let mut places: Vec<Vec<BearingPoint>> = match out.places {
             Some(kept) => drive
@@ -351,5 +353,33 @@ impl<'a> Walk<'a> {
             }
         }
         Supported { powers, places, loads, bending }
+    }
+
+    /// The catalogue's parts that read loads on every shaft at the driving torques `torques`, each
+    /// bearing place kept (`point`) or not, with the statics they rest on.
+    fn loaded_parts(&self, model: &DriveModel, torques: &[f64], point: bool) -> (PartLosses, Statics) {
+        let drive = model.drive;
+        let loads = self.gear_loads(model, torques);
+        let n = drive.shafts.len();
+        let mut reactions = vec![Vec::new(); n];
+        let mut bending = vec![None; n];
+        let mut place_loads = vec![Vec::new(); n];
+        for (j, shaft) in drive.shafts.iter().enumerate().filter(|(_, s)| !s.bearings.is_empty()) {
+            let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
+            let beam = model.beams.get(j).and_then(Option::as_ref);
+            let (r, bent_shaft) = support_reactions(shaft, &on, point, beam);
+            place_loads[j] = shaft
+                .bearings
+                .iter()
+                .zip(&r)
+                .map(|(b, r)| [r[0].hypot(r[1]) / b.count as f64, r[2].abs() / b.count as f64])
+                .collect();
+            reactions[j] = r;
+            bending[j] = bent_shaft;
+        }
+        let shafts = shaft_parts(drive, self.omega, &place_loads);
+        let mut out = PartLosses::new(n, 0, point);
+        add_parts(&PartState { shafts: &shafts, stages: &[] }, model.oil, true, &mut out);
+        (out, Statics { reactions, bending, loads })
     }
 }

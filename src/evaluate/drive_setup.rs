@@ -44,14 +44,7 @@ impl<'a> DriveSetup<'a> {
         let stages: Vec<StageMesh> = (0..drive.pairs.len()).map(|k| StageMesh::of(drive, k, scene)).collect();
         let sizes = stages.iter().map(StageMesh::sizes).collect();
         let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
-        let layout = &drive.layout;
-        let beams = (0..layout.shafts.len())
-            .map(|j| {
-                let at: Vec<f64> =
-                    layout.stages.iter().flat_map(|s| s.places).filter(|p| p.shaft == j).map(|p| p.at).collect();
-                crate::drive::shaft_bending::shaft_beam_of(&layout.shafts[j], &at)
-            })
-            .collect();
+        let beams = crate::drive::shaft_bending::prepared_beams(&drive.layout);
         DriveSetup { scene, drive, stages, sizes, oil, beams }
     }
 

@@ -147,8 +147,9 @@ mod tests {
     /// `specs/fzg_c14_gearbox.gear`'s 40 × 40 map (bearings, seals, dip churning; four laws, both
     /// formulations) the mesh's η̄ is the pair's law as its budget charges it (to 1e-15) and the
     /// mesh loss, each part beside the mesh and the whole loss are the pair's loss budget at the
-    /// cell's pinion torque and speed (`Setup::loss_budget`, the parts catalogue on the pair's own
-    /// statics, not the drive's walk) to 1e-13 relative; the total efficiency follows to 1e-13.
+    /// cell's pinion torque and speed on the pair's own two shafts (`losses::loss_budget`: the
+    /// parts catalogue on the pair's statics, `losses::pair_statics`, not the drive's walk or its
+    /// statics) to 1e-13 relative; the total efficiency follows to 1e-13.
     #[test]
     fn cells_are_the_pairs_own_budget() {
         let source =
@@ -171,7 +172,10 @@ mod tests {
         for k in 0..grid.count() {
             let state = state_at(&grid, k);
             let table = contact_table(&eval, &state);
-            let budget = eval.loss_budget(&scene, &state).expect("a gearbox");
+            let oil = scene.mesh().budget_oil(&eval.tribology);
+            let gearbox = scene.gearbox.as_ref().expect("a gearbox");
+            let budget =
+                crate::losses::loss_budget(gearbox, &eval.geometry, state.pinion_torque, state.pinion_speed, &oil);
             let input = state.pinion_torque * state.pinion_speed;
             let (t, s) = (k / speeds.values.len(), k % speeds.values.len());
             for (i, spec) in scene.friction.iter().enumerate() {

@@ -31,6 +31,8 @@ pub struct Setup {
     pub ohlendorf_loss_factor: f64,
     /// Formulations evaluated (empty when the scene asks for no efficiency).
     pub formulations: Vec<Formulation>,
+    /// What the budget beside the mesh reads, when the scene describes its gearbox.
+    pub(crate) parts: Option<super::pair_budget::PairParts>,
     /// Film-thickness inputs when the film is computed (α known and asked for or needed).
     pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
 }
@@ -52,10 +54,10 @@ impl Setup {
 
     /// The loss budget beside the mesh at an operating point, when the scene describes its gearbox
     /// (lowering has checked that it has a lubricant then).
+    /// It is the catalogue's parts on the scene's one-stage drive at the given pinion torque and
+    /// speed ([`super::pair_budget::PairParts`]).
     pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
-        let gearbox = scene.gearbox.as_ref()?;
-        let oil = scene.mesh().budget_oil(&self.tribology);
-        Some(crate::losses::loss_budget(gearbox, &self.geometry, state.pinion_torque, state.pinion_speed, &oil))
+        Some(self.parts.as_ref()?.at(scene.drive.as_ref()?, state))
     }
 
     /// The contact state at `u` for an operating point, as the friction laws and the efficiency read

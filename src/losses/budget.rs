@@ -71,7 +71,10 @@ impl BudgetParts {
 
 /// The budget at pinion torque T_1 (N·m) and speed ω_1 (rad/s) in `oil`: every part of the
 /// catalogue ([`super::parts::PARTS`]) the gearbox describes, on the pinion's and the wheel's shaft
-/// at ω_1 and ω_1/u, their bearing places loaded by the mesh force ([`super::pair_statics`]).
+/// at ω_1 and ω_1/u, their bearing places loaded by the mesh force ([`super::pair_statics`]). A run
+/// charges a pair's budget on its one-stage drive (the same parts on the drive's shafts and
+/// statics); this is the gearbox on its own, for a library user without a scene and the independent
+/// calculation the run's budget is tested against (1e-14).
 pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f64, oil: &Oil) -> LossBudget {
     let omega = [omega_1, omega_1 / g.gear_ratio];
     let f_bt = torque / g.base_radius[0];
