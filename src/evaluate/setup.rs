@@ -55,7 +55,7 @@ impl Setup {
     /// The loss budget beside the mesh at an operating point, when the scene describes its gearbox
     /// (lowering has checked that it has a lubricant then).
     /// It is the catalogue's parts on the scene's one-stage drive at the given pinion torque and
-    /// speed ([`super::pair_budget::PairParts`]).
+    /// speed (`evaluate::pair_budget::PairParts`).
     pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
         Some(self.parts.as_ref()?.at(scene.drive.as_ref()?, state))
     }
