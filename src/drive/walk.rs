@@ -72,17 +72,12 @@ pub(crate) fn solve_from(
     (torque, speed): (EndValue, EndValue),
     seed: Option<Seed>,
 ) -> DrivePoint {
-    let drive = model.drive;
-    let omega = shaft_speeds(drive, speed);
-    let flow = if torque.value < 0.0 { PowerFlow::Coast } else { PowerFlow::Drive };
-    let walk = Walk::new(model, &omega, flow);
-    let from_source = (flow == PowerFlow::Drive) == (torque.at == ShaftEnd::Input);
-    let given_shaft = if torque.at == ShaftEnd::Input { drive.input } else { drive.output };
-    let given_power = torque.value.abs() * omega[given_shaft].abs();
+    let omega = shaft_speeds(model.drive, speed);
+    let (walk, from_source, given_power) = Walk::given(model, &omega, torque);
     let seeded = seed.is_some();
     let (fixed, mut loads) = match seed {
         Some(Seed { fixed, bearings, .. }) => (fixed, bearings),
-        None => (walk.fixed_losses(model), vec![0.0; drive.shafts.len()]),
+        None => (walk.fixed_losses(model), vec![0.0; model.drive.shafts.len()]),
     };
     let mut state = walk.pass(meshes, from_source, given_power, &fixed, &loads, None);
     let first = state.largest_torque();
@@ -115,8 +110,8 @@ pub(crate) fn solve_from(
 /// losses depend on the mesh forces, which the driving torques fix): its bearings' losses, its
 /// seals' and its gears' no-load parts ([`shaft_losses_at`]); [`solve_from`] starts from it.
 pub(crate) struct Seed {
-    fixed: FixedLosses,
-    bearings: Vec<f64>,
+    pub(super) fixed: FixedLosses,
+    pub(super) bearings: Vec<f64>,
 }
 
 impl Seed {
@@ -201,6 +196,18 @@ fn shaft_parts<'a>(drive: &'a Drive, omega: &[f64], loads: &'a [Vec<[f64; 2]>]) 
 }
 
 impl<'a> Walk<'a> {
+    /// The walk with `torque` given at an end, at the shafts' speeds `omega`: its direction
+    /// (coast when the torque is negative), whether it starts from the source, and the power given
+    /// (W).
+    pub(super) fn given(model: &DriveModel<'a>, omega: &'a [f64], torque: EndValue) -> (Walk<'a>, bool, f64) {
+        let drive = model.drive;
+        let flow = if torque.value < 0.0 { PowerFlow::Coast } else { PowerFlow::Drive };
+        let from_source = (flow == PowerFlow::Drive) == (torque.at == ShaftEnd::Input);
+        let given_shaft = if torque.at == ShaftEnd::Input { drive.input } else { drive.output };
+        let given_power = torque.value.abs() * omega[given_shaft].abs();
+        (Walk::new(model, omega, flow), from_source, given_power)
+    }
+
     fn new(model: &DriveModel<'a>, omega: &'a [f64], flow: PowerFlow) -> Walk<'a> {
         let drive = model.drive;
         let mut shafts = drive.shaft_order();
@@ -238,7 +245,7 @@ impl<'a> Walk<'a> {
 
     /// One walk with the shafts' bearing losses `bearings` (W): from the source when the source's
     /// power is given, else back from the sink (η at `previous` driving torques when known).
-    fn pass(
+    pub(super) fn pass(
         &self,
         meshes: &dyn MeshEfficiency,
         from_source: bool,

@@ -9,7 +9,7 @@
 
 use super::setup::law_at;
 use super::stage_mesh::{LawMeshes, MeshMemo, RingMesh, StageMesh, WholeMeshes};
-use crate::drive::walk::DriveModel;
+use crate::drive::walk::{DriveModel, Seed};
 use crate::drive::{solve, DrivePoint, EndValue, Member, MeshEfficiency, MeshForceSizes, ShaftEnd};
 use crate::efficiency::Formulation;
 use crate::friction::LawContext;
@@ -226,41 +226,52 @@ impl<'a> DriveSetup<'a> {
         (torque, speed): (EndValue, EndValue),
         walks: usize,
     ) -> DrivePoint {
-        let model = DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil, beams: &self.beams };
-        // Zero torque at the pinion gear too (an idle step): the mesh carries nothing, the input
-        // gives the pinion shaft its own losses, as a pair's budget reads them.
-        let at_pinion = self.drive.one_pair && torque.at == ShaftEnd::Input && torque.value >= 0.0;
+        let model = self.model();
         let given = AtGivenPinion { meshes, torque: torque.value };
+        let start = self.pinion_start(&model, torque, speed);
+        let at_pinion = start.is_some();
         let meshes: &dyn MeshEfficiency = if at_pinion { &given } else { meshes };
-        let mut at_input = torque;
-        let mut seed = None;
-        if at_pinion {
-            let losses = crate::drive::walk::shaft_losses_at(&model, speed, &[torque.value]);
-            let input = self.drive.layout.input;
-            let omega = crate::drive::walk::shaft_speeds(&self.drive.layout, speed)[input].abs();
-            if omega > 0.0 {
-                at_input.value += losses.own(input) / omega;
-            }
-            seed = Some(losses);
-        }
+        let (mut at_input, seed) = start.map_or((torque, None), |(at, seed)| (at, Some(seed)));
         let mut point = crate::drive::walk::solve_from(&model, meshes, (at_input, speed), seed);
         let missed = |p: &DrivePoint| torque.value - p.stages[0].driving_torque;
-        let settled =
-            |missed: f64| missed.is_finite() && missed.abs() <= crate::drive::walk::TOLERANCE * torque.value.max(1.0);
         if !at_pinion {
             return point;
         }
         for _ in 0..walks {
             let missed = missed(&point);
-            if !missed.is_finite() || settled(missed) {
+            if !missed.is_finite() || settled(missed, torque.value) {
                 break;
             }
             at_input.value += missed;
             point = solve(&model, meshes, at_input, speed);
         }
         let left = missed(&point);
-        point.pinion_torque_missed = (!settled(left)).then_some(left);
+        point.pinion_torque_missed = (!settled(left, torque.value)).then_some(left);
         point
+    }
+
+    /// The walk's model: the layout, the stages' sizes, the oil and the shafts' beams.
+    fn model(&self) -> DriveModel<'_> {
+        DriveModel { drive: &self.drive.layout, sizes: &self.sizes, oil: &self.oil, beams: &self.beams }
+    }
+
+    /// Where a one-pair drive's walk at a given pinion torque starts (None for any other walk): the
+    /// input at that torque plus the pinion shaft's own losses over its speed, and those losses, the
+    /// walk's seed. Zero torque at the pinion gear too (an idle step): the mesh carries nothing,
+    /// the input gives the pinion shaft its own losses, as a pair's budget reads them.
+    fn pinion_start(&self, model: &DriveModel, torque: EndValue, speed: EndValue) -> Option<(EndValue, Seed)> {
+        let at_pinion = self.drive.one_pair && torque.at == ShaftEnd::Input && torque.value >= 0.0;
+        if !at_pinion {
+            return None;
+        }
+        let losses = crate::drive::walk::shaft_losses_at(model, speed, &[torque.value]);
+        let input = self.drive.layout.input;
+        let omega = crate::drive::walk::shaft_speeds(&self.drive.layout, speed)[input].abs();
+        let mut at_input = torque;
+        if omega > 0.0 {
+            at_input.value += losses.own(input) / omega;
+        }
+        Some((at_input, losses))
     }
 
     /// The formulations each point is evaluated in, in the scene's order.
@@ -279,6 +290,12 @@ impl<'a> DriveSetup<'a> {
 /// so the walk reads the mesh where the solution has it, and the law's mesh cycle is integrated
 /// once a point (`LawMeshes` reads back a state it has met) instead of at torques that differ from
 /// it in the last digits.
+/// Whether a one-pair walk's mesh missed its given pinion torque `torque` (N·m) by no more than
+/// the walk's tolerance.
+fn settled(missed: f64, torque: f64) -> bool {
+    missed.is_finite() && missed.abs() <= crate::drive::walk::TOLERANCE * torque.max(1.0)
+}
+
 struct AtGivenPinion<'a> {
     meshes: &'a dyn MeshEfficiency,
     torque: f64,
