@@ -415,14 +415,15 @@ mod thermal {
         gearloss::check("thermal", &text).unwrap()
     }
 
-    /// One P_V(θ): the budget's own cost, against which the balance is measured.
+    /// One P_V(θ) as the balance reads it (`Losses::total`): the budget's own cost, against which
+    /// the balance is measured.
     #[divan::bench]
     fn losses_at_one_temperature(b: divan::Bencher) {
         let scene = scene();
         let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
         let losses = Losses::new(&scene, &eval).unwrap();
         let state = state_at(&scene.operating, 0);
-        b.bench(|| losses.at(&scene.friction[0], Formulation::External, state, 350.0).total());
+        b.bench(|| losses.total(&scene.friction[0], Formulation::External, state, 350.0));
     }
 
     /// θ* of one operating point (the P_Q-led secant, about eight P_V). Target: < 50 µs beyond the budget's own cost.
@@ -434,7 +435,7 @@ mod thermal {
         let housing = scene.housing.clone().unwrap();
         let state = state_at(&scene.operating, 0);
         let spec = &scene.friction[0];
-        b.bench(|| gearloss::thermal::balance(|t| losses.at(spec, Formulation::External, state, t).total(), &housing));
+        b.bench(|| gearloss::thermal::balance(|t| losses.total(spec, Formulation::External, state, t), &housing));
     }
 
     /// The 51-minute, 9-step cycle's transient at two tolerances and its fixed-temperature energy.

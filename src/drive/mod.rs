@@ -30,6 +30,7 @@ pub(crate) mod pass;
 pub(crate) mod planetary;
 pub(crate) mod planetary_stage;
 pub(crate) mod point;
+pub(crate) mod seeded_losses;
 pub mod shaft_beam;
 pub mod shaft_bending;
 pub(crate) mod speeds;

@@ -274,6 +274,33 @@ impl<'a> DriveSetup<'a> {
         Some((at_input, losses))
     }
 
+    /// A one-pair drive's losses under (law, formulation) with its pinion torque and speed given at
+    /// the input, in this setup's oil: [the mesh's loss, every loss beside it] (W), from the
+    /// walk's first pass alone when it settles there (the seeded walk does: its point's losses
+    /// are these but for rounding), else from the walk's point. What P_V(θ) reads, a balance's,
+    /// a rating's, a duty cycle's, without building the point.
+    pub(crate) fn one_pair_losses(
+        &self,
+        law: usize,
+        formulation: Formulation,
+        torque: EndValue,
+        speed: EndValue,
+    ) -> [f64; 2] {
+        let model = self.model();
+        let memo = MeshMemo::default();
+        let meshes = LawMeshes::new(&self.stages, &self.scene.friction[law], formulation, &memo);
+        let given = AtGivenPinion { meshes: &meshes, torque: torque.value };
+        if let Some((at_input, seed)) = self.pinion_start(&model, torque, speed) {
+            let pass = crate::drive::seeded_losses::seeded_losses(&model, &given, (at_input, speed), &seed);
+            if pass.finite && settled(torque.value - pass.driving_torque[0], torque.value) {
+                return [pass.mesh_loss[0], pass.beside_meshes];
+            }
+        }
+        let p = self.point(law, formulation, torque, speed);
+        let l = &p.losses;
+        [p.stages[0].mesh_loss, l.gear_no_load + l.bearings_no_load + l.bearings_load + l.seals]
+    }
+
     /// The formulations each point is evaluated in, in the scene's order.
     pub(crate) fn formulations(&self) -> Vec<Formulation> {
         self.scene.analyses.efficiency.clone().unwrap_or_default()

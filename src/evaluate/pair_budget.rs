@@ -218,7 +218,8 @@ mod tests {
     /// (`losses::loss_budget`, the parts catalogue on the pair's statics): the mesh, every part
     /// and every bearing place's loads and losses to 1e-13 relative (the largest difference seen is
     /// 9e-15: the walk starts with the input at T_1 plus the pinion shaft's own losses, so the mesh
-    /// has T_1 but for rounding).
+    /// has T_1 but for rounding); and the total P_V the balance reads (`Losses::total`, the walk's
+    /// one pass without its point) is the mesh loss plus that budget to 1e-13.
     #[test]
     fn losses_at_an_oil_temperature_are_the_pairs_own_budget() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -269,6 +270,10 @@ mod tests {
                             let got = losses.at(spec, f, state, t);
                             let name = path.display();
                             assert!(close(got.mesh, mesh), "{name} {k} {celsius} °C: mesh {} vs {mesh}", got.mesh);
+                            // P_V as the balance reads it, from the walk's one pass without its point.
+                            let total = losses.total(spec, f, state, t);
+                            let want_total = mesh + want_budget.beside_mesh();
+                            assert!(close(total, want_total), "{name} {k} {celsius} °C: P_V {total} vs {want_total}");
                             let b = got.budget.expect("a budget");
                             assert_eq!(b.parts.len(), want_budget.parts.len(), "{name}");
                             for ((c, p), (wc, w)) in b.parts.iter().zip(&want_budget.parts) {

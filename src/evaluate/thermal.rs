@@ -90,14 +90,15 @@ impl<'a> Losses<'a> {
     }
 
     /// [`Self::at`]'s total P_V (W), what the balance, the ratings, the curve and the duty cycle
-    /// read: the same sum, without the bearing places' loads.
+    /// read: the same walk's losses added up, from its one pass without building its point
+    /// (`DriveSetup::one_pair_losses`; the bearings at the loads the pinion torque fixes).
     pub fn total(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> f64 {
-        let Some((_, p)) = self.walked(spec, f, state, t) else { return 0.0 };
-        let beside = self
-            .columns
-            .as_ref()
-            .map_or(0.0, |c| super::pair_budget::parts_of(&p, c).iter().map(|(_, p)| p).sum::<f64>());
-        Self::mesh_of(&p, state) + beside
+        if state.pinion_speed <= 0.0 {
+            return 0.0;
+        }
+        let (torque, speed) = self.ends(state);
+        let [mesh, beside] = self.drive.at_oil_temperature(t).one_pair_losses(self.law(spec), f, torque, speed);
+        Self::mesh_or_none(mesh, state) + beside
     }
 
     /// The walk at `state` with the oil at `t`; None standing (nothing turns, nothing is lost).
@@ -111,14 +112,30 @@ impl<'a> Losses<'a> {
         if state.pinion_speed <= 0.0 {
             return None;
         }
-        let law = self.scene.friction.iter().position(|s| s == spec).expect("a law of the scene");
-        Some(self.drive.walked_at((law, f), (state.pinion_torque, state.pinion_speed), t))
+        Some(self.drive.walked_at((self.law(spec), f), (state.pinion_torque, state.pinion_speed), t))
+    }
+
+    /// The index of the scene's law `spec`.
+    fn law(&self, spec: &FrictionLawSpec) -> usize {
+        self.scene.friction.iter().position(|s| s == spec).expect("a law of the scene")
+    }
+
+    /// The pinion torque and speed of `state` at the ends the one-stage drive's operating block
+    /// names.
+    fn ends(&self, state: OperatingState) -> (crate::drive::EndValue, crate::drive::EndValue) {
+        let ends = self.drive.operating_ends();
+        let at = |at, value| crate::drive::EndValue { at, value };
+        (at(ends.torque_at, state.pinion_torque), at(ends.speed_at, state.pinion_speed))
     }
 
     /// The mesh loss of the walk's point: none at zero torque (no law is read without a load).
     fn mesh_of(p: &crate::drive::DrivePoint, state: OperatingState) -> f64 {
+        Self::mesh_or_none(p.stages[0].mesh_loss, state)
+    }
+
+    fn mesh_or_none(mesh: f64, state: OperatingState) -> f64 {
         if state.pinion_torque > 0.0 {
-            p.stages[0].mesh_loss
+            mesh
         } else {
             0.0
         }
