@@ -118,11 +118,6 @@ impl<'a> DriveSetup<'a> {
     }
 
     /// The ends the drive's operating block gives its torque and speed at.
-    /// The oil the walk reads (the budget's: ν, ρ, η at the oil's temperature).
-    pub(crate) fn oil(&self) -> &crate::losses::Oil {
-        &self.oil
-    }
-
     pub(crate) fn operating_ends(&self) -> crate::drive::DriveOperating {
         self.drive.layout.operating
     }
@@ -272,6 +267,13 @@ impl<'a> DriveSetup<'a> {
             at_input.value += losses.own(input) / omega;
         }
         Some((at_input, losses))
+    }
+
+    /// A one-pair drive's loss parts with its pinion torque and speed given at the input, in this
+    /// setup's oil: [load-independent, load-dependent with every bearing place]
+    /// ([`crate::drive::walk::parts_at`]; what its seeded walk charges).
+    pub(crate) fn one_pair_parts(&self, torque: EndValue, speed: EndValue) -> [crate::losses::parts::PartLosses; 2] {
+        crate::drive::walk::parts_at(&self.model(), speed, &[torque.value])
     }
 
     /// A one-pair drive's losses under (law, formulation) with its pinion torque and speed given at

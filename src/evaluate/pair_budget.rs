@@ -1,8 +1,9 @@
-//! A one-pair drive's point read as the pair's loss budget: the parts beside the mesh in the
-//! budget's columns, and every bearing place of the pinion's shaft, then the wheel's, with the loads
-//! and losses the drive's statics and bearing models gave it. A pair's efficiency map and its
-//! losses at an oil temperature (thermal balance, ratings, duty cycle) are its one-stage drive's
-//! walk read this way.
+//! A one-pair drive read as the pair's loss budget: the parts beside the mesh in the budget's
+//! columns, and every bearing place of the pinion's shaft, then the wheel's, with the loads and
+//! losses the drive's statics and bearing models give it. A pair's budget at each point of its
+//! sweep and at an oil temperature (thermal balance, ratings, duty cycle) is its one-stage drive's
+//! loss parts at the given pinion torque (`parts_budget`); a pair's efficiency map reads each
+//! cell's walked point (`budget_of`).
 
 use crate::drive::forces::MeshForceSizes;
 use crate::drive::shaft_beam::PreparedBeam;
@@ -10,7 +11,7 @@ use crate::drive::walk::{parts_at, DriveModel};
 use crate::drive::{DrivePoint, EndValue};
 use crate::geometry::{OperatingState, PairGeometry};
 use crate::losses::parts::{LossColumn, PartLosses};
-use crate::losses::{BearingLoads, BearingLoss, BudgetParts, LossBudget, Oil};
+use crate::losses::{BearingLoss, BudgetParts, LossBudget, Oil};
 use crate::model::{Scene, SceneDrive};
 
 /// What a pair's budget beside the mesh reads at each point of its sweep: its one-stage drive's
@@ -54,7 +55,11 @@ impl PairParts {
 /// The catalogue's parts `[load-independent, load-dependent]` on a one-pair drive read as the pair's
 /// budget: the power of each of `columns` over both shafts, and each bearing place of the pinion's
 /// shaft, then the wheel's, as written.
-fn parts_budget(drive: &SceneDrive, [fixed, loaded]: &[PartLosses; 2], columns: &[LossColumn]) -> LossBudget {
+pub(crate) fn parts_budget(
+    drive: &SceneDrive,
+    [fixed, loaded]: &[PartLosses; 2],
+    columns: &[LossColumn],
+) -> LossBudget {
     let parts = columns.iter().map(|&c| (c, fixed.column(c) + loaded.column(c))).collect();
     let places = drive.layout.stages[0].places;
     let kept = loaded.places.as_deref().unwrap_or_default();
@@ -91,38 +96,6 @@ pub(crate) fn parts_of(p: &DrivePoint, columns: &[LossColumn]) -> Vec<(LossColum
             (*c, power)
         })
         .collect()
-}
-
-/// The pair's budget beside the mesh at its one-stage drive's point `p` in `oil` (the oil the walk
-/// read): the parts of `columns` and each bearing place's loads and losses, the pinion's shaft
-/// first, each shaft's places as written. A place's load-dependent loss is absent (as a pair's
-/// budget gives it) where its model has no load moment (a bearing without the C_0 its f_1 needs).
-pub(crate) fn one_pair_budget(drive: &SceneDrive, p: &DrivePoint, oil: &Oil, columns: &[LossColumn]) -> LossBudget {
-    let places = drive.layout.stages[0].places;
-    let mut bearings = Vec::new();
-    for (name, place) in ["pinion", "wheel"].into_iter().zip(places) {
-        let (shaft, at) = (&drive.layout.shafts[place.shaft], &p.shafts[place.shaft]);
-        let speed = at.speed.abs();
-        for (b, point) in shaft.bearings.iter().zip(at.bearings.iter().filter(|b| b.is_shaft_place())) {
-            let modelled = oil
-                .nu
-                .is_some_and(|nu| b.moments(point.radial_load, point.axial_load, nu, speed, oil.mineral).1.is_some());
-            bearings.push(BearingLoss {
-                shaft: name,
-                kind: b.kind.name(),
-                model: b.model_name(),
-                count: b.count,
-                position: b.position,
-                loads: BearingLoads {
-                    radial_load: point.radial_load,
-                    axial_load: point.axial_load,
-                    no_load: point.no_load,
-                    load: modelled.then_some(point.load),
-                },
-            });
-        }
-    }
-    LossBudget { parts: parts_of(p, columns), bearings }
 }
 
 /// A one-pair drive's point `p` as the pair's budget at input power `input` = T_1 ω_1 (W): the parts

@@ -4,9 +4,9 @@
 //! P_V(θ) is the scene's one-stage drive walked with its oil read at θ (ν by ASTM D341, ρ by thermal
 //! expansion, η = ρν, α from the base oil where the scene does not give it;
 //! `DriveSetup::at_oil_temperature`) at the pinion's torque, at the pinion gear, and speed, as a
-//! drive's thermal balance walks its rows (`DriveSetup::walked_at`), and read as the pair's
-//! budget (`super::pair_budget`): the mesh loss of one law and formulation as the budget charges it
-//! plus the parts beside the mesh. At zero speed nothing turns and nothing is lost; at zero torque
+//! drive's thermal balance walks its rows, its one pass added up (`DriveSetup::one_pair_losses`),
+//! and read as the pair's budget (`super::pair_budget`): the mesh loss of one law and formulation
+//! as the budget charges it plus the parts beside the mesh. At zero speed nothing turns and nothing is lost; at zero torque
 //! the mesh carries nothing and only the no-load losses remain (no law is read without a load).
 
 use super::drive_setup::DriveSetup;
@@ -77,16 +77,21 @@ impl<'a> Losses<'a> {
     }
 
     /// P_V at oil temperature `t` (K) of law `spec` (one of the scene's) and formulation `f` at
-    /// `state`: the one-stage drive's walk at `state` with its oil at `t`, read as the pair's budget.
+    /// `state`: the one-stage drive's walk at `state` with its oil at `t` ([`Self::total`]'s mesh
+    /// loss), and the pair's budget beside the mesh the same walk charges, with every bearing place
+    /// (the loss parts on the drive's shafts at the pinion torque, `pair_budget::parts_budget`).
     pub fn at(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> LossesAt {
-        let Some((setup, p)) = self.walked(spec, f, state, t) else {
+        if state.pinion_speed <= 0.0 {
             return LossesAt { mesh: 0.0, budget: self.scene.gearbox.as_ref().map(|_| LossBudget::default()) };
-        };
+        }
+        let (torque, speed) = self.ends(state);
+        let setup = self.drive.at_oil_temperature(t);
+        let [mesh, _] = setup.one_pair_losses(self.law(spec), f, torque, speed);
         let budget = self.columns.as_ref().map(|columns| {
             let drive = self.scene.drive.as_ref().expect("Losses::new took the scene's drive");
-            super::pair_budget::one_pair_budget(drive, &p, setup.oil(), columns)
+            super::pair_budget::parts_budget(drive, &setup.one_pair_parts(torque, speed), columns)
         });
-        LossesAt { mesh: Self::mesh_of(&p, state), budget }
+        LossesAt { mesh: Self::mesh_or_none(mesh, state), budget }
     }
 
     /// [`Self::at`]'s total P_V (W), what the balance, the ratings, the curve and the duty cycle
@@ -99,20 +104,6 @@ impl<'a> Losses<'a> {
         let (torque, speed) = self.ends(state);
         let [mesh, beside] = self.drive.at_oil_temperature(t).one_pair_losses(self.law(spec), f, torque, speed);
         Self::mesh_or_none(mesh, state) + beside
-    }
-
-    /// The walk at `state` with the oil at `t`; None standing (nothing turns, nothing is lost).
-    fn walked(
-        &self,
-        spec: &FrictionLawSpec,
-        f: Formulation,
-        state: OperatingState,
-        t: f64,
-    ) -> Option<(DriveSetup<'a>, crate::drive::DrivePoint)> {
-        if state.pinion_speed <= 0.0 {
-            return None;
-        }
-        Some(self.drive.walked_at((self.law(spec), f), (state.pinion_torque, state.pinion_speed), t))
     }
 
     /// The index of the scene's law `spec`.
@@ -128,11 +119,7 @@ impl<'a> Losses<'a> {
         (at(ends.torque_at, state.pinion_torque), at(ends.speed_at, state.pinion_speed))
     }
 
-    /// The mesh loss of the walk's point: none at zero torque (no law is read without a load).
-    fn mesh_of(p: &crate::drive::DrivePoint, state: OperatingState) -> f64 {
-        Self::mesh_or_none(p.stages[0].mesh_loss, state)
-    }
-
+    /// The mesh loss: none at zero torque (no law is read without a load).
     fn mesh_or_none(mesh: f64, state: OperatingState) -> f64 {
         if state.pinion_torque > 0.0 {
             mesh
