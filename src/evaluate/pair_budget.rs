@@ -114,6 +114,7 @@ pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> B
 mod tests {
     use crate::efficiency::Formulation;
     use crate::evaluate::thermal::Losses;
+    use crate::losses::LossBudget;
 
     /// Every scene of one pair with a gearbox among the specs and the ok fixtures, checked.
     fn pair_scenes_with_a_gearbox() -> Vec<(std::path::PathBuf, crate::model::Scene)> {
@@ -132,6 +133,28 @@ mod tests {
                 (scene.gearbox.is_some() && scene.runs_as_pair()).then_some((path, scene))
             })
             .collect()
+    }
+
+    /// Asserts `got` is `want` (`close` on every number), naming `at`; the number of bearing places.
+    fn assert_same_budget(got: &LossBudget, want: &LossBudget, close: &dyn Fn(f64, f64) -> bool, at: &str) -> usize {
+        assert_eq!(got.parts.len(), want.parts.len(), "{at}");
+        for ((c, p), (wc, w)) in got.parts.iter().zip(&want.parts) {
+            assert!(c == wc && close(*p, *w), "{at}: {c:?} {p} vs {w}");
+        }
+        assert_eq!(got.bearings.len(), want.bearings.len(), "{at}");
+        for (x, w) in got.bearings.iter().zip(&want.bearings) {
+            assert_eq!(
+                (x.shaft, x.kind, x.model, x.count, x.position),
+                (w.shaft, w.kind, w.model, w.count, w.position)
+            );
+            let (l, m) = (x.loads, w.loads);
+            for (a, e) in [(l.radial_load, m.radial_load), (l.axial_load, m.axial_load), (l.no_load, m.no_load)] {
+                assert!(close(a, e), "{at} bearing: {a} vs {e}");
+            }
+            assert_eq!(l.load.is_some(), m.load.is_some(), "{at}");
+            assert!(close(l.load.unwrap_or(0.0), m.load.unwrap_or(0.0)), "{at}: {:?} vs {:?}", l.load, m.load);
+        }
+        got.bearings.len()
     }
 
     /// A pair's budget at each point of its sweep (`Setup::loss_budget`: the parts catalogue on its
@@ -155,28 +178,7 @@ mod tests {
                 let got = eval.loss_budget(&scene, &state).expect("a budget");
                 let want =
                     crate::losses::loss_budget(gearbox, &eval.geometry, state.pinion_torque, state.pinion_speed, &oil);
-                let name = path.display();
-                assert_eq!(got.parts.len(), want.parts.len(), "{name}");
-                for ((c, p), (wc, w)) in got.parts.iter().zip(&want.parts) {
-                    assert!(c == wc && close(*p, *w), "{name} point {k}: {c:?} {p} vs {w}");
-                }
-                assert_eq!(got.bearings.len(), want.bearings.len(), "{name}");
-                for (x, w) in got.bearings.iter().zip(&want.bearings) {
-                    assert_eq!((x.shaft, x.kind, x.count, x.position), (w.shaft, w.kind, w.count, w.position));
-                    let (l, m) = (x.loads, w.loads);
-                    for (a, e) in [(l.radial_load, m.radial_load), (l.axial_load, m.axial_load), (l.no_load, m.no_load)]
-                    {
-                        assert!(close(a, e), "{name} point {k} bearing: {a} vs {e}");
-                    }
-                    assert_eq!(l.load.is_some(), m.load.is_some(), "{name}");
-                    assert!(
-                        close(l.load.unwrap_or(0.0), m.load.unwrap_or(0.0)),
-                        "{name}: {:?} vs {:?}",
-                        l.load,
-                        m.load
-                    );
-                    places += 1;
-                }
+                places += assert_same_budget(&got, &want, &close, &format!("{} point {k}", path.display()));
                 compared += 1;
             }
         }
@@ -195,13 +197,6 @@ mod tests {
     /// one pass without its point) is the mesh loss plus that budget to 1e-13.
     #[test]
     fn losses_at_an_oil_temperature_are_the_pairs_own_budget() {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-        let mut files: Vec<_> = ["specs", "tests/specs/ok"]
-            .iter()
-            .flat_map(|d| std::fs::read_dir(root.join(d)).unwrap().map(|e| e.unwrap().path()))
-            .filter(|p| p.extension().is_some_and(|e| e == "gear"))
-            .collect();
-        files.sort();
         let worst = std::cell::Cell::new(0.0f64);
         let close = |a: f64, b: f64| {
             let scale = a.abs().max(b.abs());
@@ -211,12 +206,8 @@ mod tests {
             (a - b).abs() <= 1e-13 * scale
         };
         let (mut scenes, mut compared, mut places) = (0, 0, 0);
-        for path in files {
-            let source = std::fs::read_to_string(&path).unwrap();
-            let Ok(scene) = crate::scene::check::check(&path.display().to_string(), &source) else {
-                continue;
-            };
-            let Some(g) = scene.gearbox.as_ref().filter(|_| scene.runs_as_pair()) else { continue };
+        for (path, scene) in pair_scenes_with_a_gearbox() {
+            let g = scene.gearbox.as_ref().expect("a gearbox");
             let plan = crate::evaluate::Plan::new(&scene.operating, None, &[]);
             let eval = crate::evaluate::prepare(&scene, &plan);
             let Some(losses) = Losses::new(&scene, &eval) else { continue };
@@ -248,33 +239,7 @@ mod tests {
                             let want_total = mesh + want_budget.beside_mesh();
                             assert!(close(total, want_total), "{name} {k} {celsius} °C: P_V {total} vs {want_total}");
                             let b = got.budget.expect("a budget");
-                            assert_eq!(b.parts.len(), want_budget.parts.len(), "{name}");
-                            for ((c, p), (wc, w)) in b.parts.iter().zip(&want_budget.parts) {
-                                assert!(c == wc && close(*p, *w), "{name} {k} {celsius} °C: {c:?} {p} vs {w}");
-                            }
-                            assert_eq!(b.bearings.len(), want_budget.bearings.len(), "{name}");
-                            for (x, w) in b.bearings.iter().zip(&want_budget.bearings) {
-                                assert_eq!(
-                                    (x.shaft, x.kind, x.model, x.count, x.position),
-                                    (w.shaft, w.kind, w.model, w.count, w.position)
-                                );
-                                let (l, m) = (x.loads, w.loads);
-                                for (a, e) in [
-                                    (l.radial_load, m.radial_load),
-                                    (l.axial_load, m.axial_load),
-                                    (l.no_load, m.no_load),
-                                ] {
-                                    assert!(close(a, e), "{name} {k} {celsius} °C bearing: {a} vs {e}");
-                                }
-                                assert_eq!(l.load.is_some(), m.load.is_some());
-                                assert!(
-                                    close(l.load.unwrap_or(0.0), m.load.unwrap_or(0.0)),
-                                    "{name}: {:?} vs {:?}",
-                                    l.load,
-                                    m.load
-                                );
-                                places += 1;
-                            }
+                            places += assert_same_budget(&b, &want_budget, &close, &format!("{name} {k} {celsius} °C"));
                             compared += 1;
                         }
                     }
