@@ -78,7 +78,7 @@ impl Walk<'_> {
         };
         let losses = LossParts {
             meshes: p.mesh_loss.iter().sum(),
-            gear_no_load: fixed.stage_no_load().iter().sum(),
+            gear_no_load: (0..drive.shafts.len()).map(|j| fixed.gear_no_load(j)).sum(),
             bearings_no_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.no_load).sum(),
             bearings_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.load).sum(),
             seals: (0..drive.shafts.len()).map(|j| fixed.seals(j)).sum(),
