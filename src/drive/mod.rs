@@ -23,6 +23,7 @@ pub(crate) mod internal_stage;
 pub(crate) mod kind_state;
 pub mod kinematics;
 pub(crate) mod layout;
+mod loss_parts_serde;
 pub(crate) mod mesh_efficiency;
 pub(crate) mod mesh_state;
 pub(crate) mod parallel_stage;

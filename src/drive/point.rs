@@ -4,6 +4,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::losses::parts::{LossColumn, COLUMN_COUNT};
+
 use super::kind_state::KindPoint;
 use super::layout::Member;
 
@@ -127,19 +129,29 @@ impl StagePoint {
     }
 }
 
-/// The parts of the total loss (W).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+/// The parts of the total loss (W): the meshes' and each column of the loss-part catalogue's
+/// (`crate::losses::parts::COLUMNS`), in report.json under `meshes` and each column's key.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct LossParts {
     pub meshes: f64,
-    pub gear_no_load: f64,
-    pub bearings_no_load: f64,
-    pub bearings_load: f64,
-    pub seals: f64,
+    /// Each column's power, in column order.
+    pub parts: [f64; COLUMN_COUNT],
 }
 
 impl LossParts {
+    /// One column's power (W).
+    pub fn part(&self, column: LossColumn) -> f64 {
+        self.parts[column as usize]
+    }
+
+    /// The meshes' loss and every column's, added in that order.
     pub fn total(&self) -> f64 {
-        self.meshes + self.gear_no_load + self.bearings_no_load + self.bearings_load + self.seals
+        self.parts.iter().fold(self.meshes, |total, p| total + p)
+    }
+
+    /// Every loss beside the meshes, added in column order.
+    pub fn beside_meshes(&self) -> f64 {
+        self.parts.iter().sum()
     }
 }
 

@@ -14,11 +14,11 @@ use super::forces::{GearLoad, MeshForceSizes};
 use super::layout::{Drive, Member, ShaftEnd};
 use super::mesh_efficiency::MeshEfficiency;
 use super::pass::Pass;
-use super::point::{BearingPoint, DrivePoint, PowerFlow};
+use super::point::{BearingPoint, DrivePoint, PowerFlow, ShaftPoint};
 use super::shaft_bending::{support_reactions, ShaftBending};
 pub use super::speeds::{overall_ratio, shaft_speeds, EndValue};
 use crate::losses::parts::catalog::add_parts;
-use crate::losses::parts::{LossColumn, PartLosses, PartState, ShaftParts, StageGears};
+use crate::losses::parts::{LossColumn, PartLosses, PartState, ShaftParts, StageGears, COLUMNS, COLUMN_COUNT};
 use crate::losses::Oil;
 
 /// The fixed point stops when no torque moves by more than this, relative to the largest.
@@ -171,6 +171,19 @@ impl FixedLosses {
 
     pub(super) fn gear_no_load(&self, j: usize) -> f64 {
         self.0.shaft(j)[LossColumn::GearNoLoad as usize]
+    }
+
+    /// A point's loss parts by column (W): each column over every shaft, the bearing columns over
+    /// every bearing place of `shafts` (a stage's own members' included), as the point lists them.
+    pub(super) fn point_parts(&self, shafts: &[ShaftPoint]) -> [f64; COLUMN_COUNT] {
+        let mut parts = [0.0; COLUMN_COUNT];
+        for (p, c) in parts.iter_mut().zip(COLUMNS) {
+            *p = self.0.column(c.column);
+        }
+        let places = || shafts.iter().flat_map(|s| &s.bearings);
+        parts[LossColumn::BearingsNoLoad as usize] = places().map(|b| b.no_load).sum();
+        parts[LossColumn::BearingsLoad as usize] = places().map(|b| b.load).sum();
+        parts
     }
 
     /// Stage `k`'s no-load parts (W).

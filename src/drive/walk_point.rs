@@ -76,13 +76,7 @@ impl Walk<'_> {
             PowerFlow::Drive => (p_source, p_sink),
             PowerFlow::Coast => (-p_sink, -p_source),
         };
-        let losses = LossParts {
-            meshes: p.mesh_loss.iter().sum(),
-            gear_no_load: (0..drive.shafts.len()).map(|j| fixed.gear_no_load(j)).sum(),
-            bearings_no_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.no_load).sum(),
-            bearings_load: shafts.iter().flat_map(|s| &s.bearings).map(|b| b.load).sum(),
-            seals: (0..drive.shafts.len()).map(|j| fixed.seals(j)).sum(),
-        };
+        let losses = LossParts { meshes: p.mesh_loss.iter().sum(), parts: fixed.point_parts(&shafts) };
         let both_ends_deliver = p_sink < 0.0 || p_source < 0.0;
         let efficiency = if both_ends_deliver || p_source == 0.0 { 0.0 } else { p_sink / p_source };
         DrivePoint {

@@ -3,6 +3,7 @@
 //! and their integrals over a piece by Gauss–Legendre at two orders (README, "Vehicles and drive
 //! cycles"); at a fixed oil temperature every piece on its own, in parallel.
 
+use crate::losses::parts::{COLUMNS, COLUMN_COUNT};
 use rayon::prelude::*;
 
 use super::drive_setup::DriveSetup;
@@ -15,30 +16,40 @@ use crate::vehicle::{Mode, Piece};
 pub const LOW_ORDER: usize = 3;
 pub const HIGH_ORDER: usize = 5;
 
-/// What is integrated over a piece (J, and rad for the motor's angle), in this order.
-pub const QUANTITIES: [&str; 8] =
-    ["meshes", "gear_no_load", "bearings_no_load", "bearings_load", "seals", "motor", "output", "motor_angle"];
-pub const N: usize = QUANTITIES.len();
+/// The loss parts: the meshes' and each loss-part column's (`crate::losses::parts::COLUMNS`),
+/// the first quantities.
+pub const PARTS: usize = 1 + COLUMN_COUNT;
 /// Index of the motor's energy ∫ P_in dt, the output's ∫ P_out dt, and the motor's angle ∫ |ω_in| dt.
-pub const MOTOR: usize = 5;
-pub const OUTPUT: usize = 6;
-pub const ANGLE: usize = 7;
-/// The loss parts: the first five quantities.
-pub const PARTS: usize = 5;
+pub const MOTOR: usize = PARTS;
+pub const OUTPUT: usize = PARTS + 1;
+pub const ANGLE: usize = PARTS + 2;
+pub const N: usize = PARTS + 3;
+/// What is integrated over a piece (J, and rad for the motor's angle), in this order: `meshes`,
+/// each column's key, `motor`, `output`, `motor_angle`.
+pub const QUANTITIES: [&str; N] = quantities();
+
+const fn quantities() -> [&'static str; N] {
+    let mut q = [""; N];
+    q[0] = "meshes";
+    let mut i = 0;
+    while i < COLUMN_COUNT {
+        q[1 + i] = COLUMNS[i].key;
+        i += 1;
+    }
+    q[MOTOR] = "motor";
+    q[OUTPUT] = "output";
+    q[ANGLE] = "motor_angle";
+    q
+}
 
 /// The integrands at one point of the drive.
 pub(crate) fn integrands(p: &DrivePoint) -> [f64; N] {
     let l = &p.losses;
-    [
-        l.meshes,
-        l.gear_no_load,
-        l.bearings_no_load,
-        l.bearings_load,
-        l.seals,
-        p.input_power,
-        p.output_power,
-        p.input_speed,
-    ]
+    let mut v = [0.0; N];
+    v[0] = l.meshes;
+    v[1..PARTS].copy_from_slice(&l.parts);
+    (v[MOTOR], v[OUTPUT], v[ANGLE]) = (p.input_power, p.output_power, p.input_speed);
+    v
 }
 
 /// One piece's integrals: the higher order's value and |high − low|.

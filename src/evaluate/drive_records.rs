@@ -8,6 +8,7 @@
 //! ([`super::record_files::RecordFiles`]: the shortest text that reads back to the same f64; a value that
 //! is not a finite number is an empty CSV cell, `null` in JSON Lines, a Parquet null).
 
+use crate::losses::parts::COLUMNS;
 use std::io::Write;
 
 use super::drive_setup::DriveRow;
@@ -43,17 +44,11 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
         "output_speed_rpm",
         "output_power_W",
         "meshes_W",
-        "gear_no_load_W",
-        "bearings_no_load_W",
-        "bearings_load_W",
-        "seals_W",
-        "total_W",
-        "efficiency",
-        "both_ends_deliver",
-        "passes",
     ]
     .iter()
     .map(|c| c.to_string())
+    .chain(COLUMNS.iter().map(|c| format!("{}_W", c.key)))
+    .chain(["total_W", "efficiency", "both_ends_deliver", "passes"].map(String::from))
     .collect();
     if drive.oil_at_balance {
         cols.extend(BALANCE_COLUMNS.iter().map(|c| c.to_string()));
@@ -139,13 +134,9 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
         d.output_speed * RPM,
         d.output_power,
         l.meshes,
-        l.gear_no_load,
-        l.bearings_no_load,
-        l.bearings_load,
-        l.seals,
-        l.total(),
-        d.efficiency,
     ]));
+    cells.extend(reals(&l.parts));
+    cells.extend(reals(&[l.total(), d.efficiency]));
     cells.push(Cell::Text(d.both_ends_deliver.to_string()));
     cells.push(int(d.iterations));
     if let Some(b) = &r.balance {

@@ -299,8 +299,7 @@ impl<'a> DriveSetup<'a> {
             }
         }
         let p = self.point(law, formulation, torque, speed);
-        let l = &p.losses;
-        [p.stages[0].mesh_loss, l.gear_no_load + l.bearings_no_load + l.bearings_load + l.seals]
+        [p.stages[0].mesh_loss, p.losses.beside_meshes()]
     }
 
     /// The formulations each point is evaluated in, in the scene's order.

@@ -83,19 +83,7 @@ pub(crate) fn parts_budget(
 /// The power of each of `columns` (the parts the pair's gearbox describes, in column order) at the
 /// drive's point `p` (W): the gears' no-load parts, the bearings' no-load and load parts, the seals.
 pub(crate) fn parts_of(p: &DrivePoint, columns: &[LossColumn]) -> Vec<(LossColumn, f64)> {
-    let l = &p.losses;
-    columns
-        .iter()
-        .map(|c| {
-            let power = match c {
-                LossColumn::GearNoLoad => l.gear_no_load,
-                LossColumn::BearingsNoLoad => l.bearings_no_load,
-                LossColumn::BearingsLoad => l.bearings_load,
-                LossColumn::Seals => l.seals,
-            };
-            (*c, power)
-        })
-        .collect()
+    columns.iter().map(|&c| (c, p.losses.part(c))).collect()
 }
 
 /// A one-pair drive's point `p` as the pair's budget at input power `input` = T_1 ω_1 (W): the parts

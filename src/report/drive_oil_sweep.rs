@@ -2,6 +2,7 @@
 //! and their comparison, row by row (operating point, law, formulation): the total loss and η at
 //! each temperature, and the loss parts; the lubricant read at each, as a pair's comparison gives it.
 
+use crate::losses::parts::LossColumn;
 use serde::{Deserialize, Serialize};
 
 use super::drive::DriveReport;
@@ -59,7 +60,12 @@ pub(crate) fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)])
                     .iter()
                     .map(|p| {
                         let l = &p.point.losses;
-                        (l.total(), p.point.efficiency, l.meshes, l.bearings_no_load + l.bearings_load)
+                        (
+                            l.total(),
+                            p.point.efficiency,
+                            l.meshes,
+                            l.part(LossColumn::BearingsNoLoad) + l.part(LossColumn::BearingsLoad),
+                        )
                     })
                     .collect(),
             })

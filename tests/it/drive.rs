@@ -130,7 +130,10 @@ fn a_drive_without_bearings_says_so() {
     let drive = scene.drive.as_ref().unwrap();
     let report = gearloss::report::drive::build_drive_report(&scene, drive, &evaluate_drive(&scene, drive));
     assert!(report.findings.iter().any(|f| f.message.starts_with("no shaft of the drive has bearings")));
-    assert!(report.points.iter().all(|p| p.point.losses.bearings_load == 0.0 && p.point.settled()));
+    assert!(report
+        .points
+        .iter()
+        .all(|p| p.point.losses.part(gearloss::losses::parts::LossColumn::BearingsLoad) == 0.0 && p.point.settled()));
 }
 
 /// The EV reducer's text with `edits` (find, replace) applied.
@@ -301,8 +304,16 @@ pub(crate) fn assert_the_pair_budget(pair: &gearloss::Scene, drive: &gearloss::S
             close(d.load, b.loads.load.unwrap(), "P_1");
         }
         let column = |c| budget.parts.iter().find(|(k, _)| *k == c).unwrap().1;
-        close(p.losses.seals, column(gearloss::losses::parts::LossColumn::Seals), "seals");
-        close(p.losses.gear_no_load, column(gearloss::losses::parts::LossColumn::GearNoLoad), "no-load");
+        close(
+            p.losses.part(gearloss::losses::parts::LossColumn::Seals),
+            column(gearloss::losses::parts::LossColumn::Seals),
+            "seals",
+        );
+        close(
+            p.losses.part(gearloss::losses::parts::LossColumn::GearNoLoad),
+            column(gearloss::losses::parts::LossColumn::GearNoLoad),
+            "no-load",
+        );
         let state = gearloss::geometry::OperatingState { pinion_torque: t, pinion_speed: w };
         let ctx = gearloss::friction::LawContext { geometry: &g, state, tribology, sharing: Sharing::Equal };
         let law = pair.friction[0].build(&ctx).unwrap();

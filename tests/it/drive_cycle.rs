@@ -206,10 +206,10 @@ fn a_constant_speed_loses_the_steady_points_loss_times_the_time() {
     assert_eq!(e.pieces.len(), 1);
     let parts = [
         point.losses.meshes,
-        point.losses.gear_no_load,
-        point.losses.bearings_no_load,
-        point.losses.bearings_load,
-        point.losses.seals,
+        point.losses.part(gearloss::losses::parts::LossColumn::GearNoLoad),
+        point.losses.part(gearloss::losses::parts::LossColumn::BearingsNoLoad),
+        point.losses.part(gearloss::losses::parts::LossColumn::BearingsLoad),
+        point.losses.part(gearloss::losses::parts::LossColumn::Seals),
     ];
     for (k, p) in parts.iter().enumerate() {
         let cycle = e.integrals[0].value[k];

@@ -2,6 +2,7 @@
 //! findings, the stages and shafts as given, the oil, then each operating point in full (stages,
 //! shafts, bearing places with their loads, the mesh forces the statics read) and the model.
 
+use crate::losses::parts::LossColumn;
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
@@ -120,9 +121,9 @@ fn headline(out: &mut String, r: &DriveReport) {
                 fixed(u.speed.of_rad_s(d.output_speed), 2),
                 w.cell(d.output_power, 2),
                 w.cell(l.meshes, 3),
-                w.cell(l.gear_no_load, 3),
-                w.cell(l.bearings_no_load + l.bearings_load, 3),
-                w.cell(l.seals, 3),
+                w.cell(l.part(LossColumn::GearNoLoad), 3),
+                w.cell(l.part(LossColumn::BearingsNoLoad) + l.part(LossColumn::BearingsLoad), 3),
+                w.cell(l.part(LossColumn::Seals), 3),
                 w.cell(l.total(), 3),
                 if d.both_ends_deliver { "0 (both ends deliver)".into() } else { fixed(100.0 * d.efficiency, 4) },
                 if d.settled() { d.iterations.to_string() } else { format!("{} (not settled)", d.iterations) },
