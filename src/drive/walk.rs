@@ -140,7 +140,7 @@ pub(crate) fn parts_at(model: &DriveModel, speed: EndValue, driving_torques: &[f
     let omega = shaft_speeds(model.drive, speed);
     let walk = Walk::new(model, &omega, PowerFlow::Drive);
     let FixedLosses(fixed) = walk.fixed_losses(model);
-    let (loaded, ..) = walk.loaded_parts(model, driving_torques, true);
+    let (loaded, ..) = walk.loaded_parts(model, driving_torques, (true, false));
     [fixed, loaded]
 }
 
@@ -158,6 +158,7 @@ pub(super) struct Walk<'a> {
 /// bearing loads (seals; the gears' no-load parts, churning and jet impulse on the shaft the stage
 /// charges them to, each gear's windage on its own).
 pub(super) struct FixedLosses(PartLosses);
+
 impl FixedLosses {
     /// Shaft `j`'s own losses (W) with its bearings' `bearings`: bearings, then its columns of the
     /// load-independent parts.
@@ -337,7 +338,7 @@ impl<'a> Walk<'a> {
     pub(super) fn bearing_powers(&self, model: &DriveModel, torques: &[f64], point: bool) -> Supported {
         let drive = model.drive;
         let n = drive.shafts.len();
-        let (out, Statics { reactions, bending, loads }) = self.loaded_parts(model, torques, point);
+        let (out, Statics { reactions, bending, loads }) = self.loaded_parts(model, torques, (point, point));
         let mut powers: Vec<f64> = (0..n).map(|j| out.shaft_total(j)).collect();
         let mut places: Vec<Vec<BearingPoint>> = match out.places {
             Some(kept) => drive
@@ -376,8 +377,9 @@ impl<'a> Walk<'a> {
     }
 
     /// The catalogue's parts that read loads on every shaft at the driving torques `torques`, each
-    /// bearing place kept (`point`) or not, with the statics they rest on.
-    fn loaded_parts(&self, model: &DriveModel, torques: &[f64], point: bool) -> (PartLosses, Statics) {
+    /// bearing place kept (`keep`) or not, with the statics they rest on (each shaft's bending
+    /// with them: `bent`).
+    fn loaded_parts(&self, model: &DriveModel, torques: &[f64], (keep, bent): (bool, bool)) -> (PartLosses, Statics) {
         let drive = model.drive;
         let loads = self.gear_loads(model, torques);
         let n = drive.shafts.len();
@@ -387,7 +389,7 @@ impl<'a> Walk<'a> {
         for (j, shaft) in drive.shafts.iter().enumerate().filter(|(_, s)| !s.bearings.is_empty()) {
             let on: Vec<GearLoad> = loads.iter().filter(|l| l.shaft == j).copied().collect();
             let beam = model.beams.get(j).and_then(Option::as_ref);
-            let (r, bent_shaft) = support_reactions(shaft, &on, point, beam);
+            let (r, bent_shaft) = support_reactions(shaft, &on, bent, beam);
             place_loads[j] = shaft
                 .bearings
                 .iter()
@@ -398,7 +400,7 @@ impl<'a> Walk<'a> {
             bending[j] = bent_shaft;
         }
         let shafts = shaft_parts(drive, self.omega, &place_loads);
-        let mut out = PartLosses::new(n, 0, point);
+        let mut out = PartLosses::new(n, 0, keep);
         add_parts(&PartState { shafts: &shafts, stages: &[] }, model.oil, true, &mut out);
         (out, Statics { reactions, bending, loads })
     }

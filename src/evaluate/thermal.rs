@@ -6,8 +6,9 @@
 //! `DriveSetup::at_oil_temperature`) at the pinion's torque, at the pinion gear, and speed, as a
 //! drive's thermal balance walks its rows, its one pass added up (`DriveSetup::one_pair_losses`),
 //! and read as the pair's budget (`super::pair_budget`): the mesh loss of one law and formulation
-//! as the budget charges it plus the parts beside the mesh. At zero speed nothing turns and nothing is lost; at zero torque
-//! the mesh carries nothing and only the no-load losses remain (no law is read without a load).
+//! as the budget charges it plus the parts beside the mesh. At zero speed nothing turns and
+//! nothing is lost; at zero torque the mesh carries nothing and only the no-load losses remain (no
+//! law is read without a load).
 
 use super::drive_setup::DriveSetup;
 use super::setup::Setup;
