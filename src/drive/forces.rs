@@ -31,6 +31,17 @@ pub struct MeshForceSizes {
 }
 
 impl MeshForceSizes {
+    /// The sizes of the pair `g`.
+    pub(crate) fn of(g: &crate::geometry::PairGeometry) -> MeshForceSizes {
+        MeshForceSizes {
+            working_pitch_radius: g.working_pitch_radius,
+            pitch_radius: g.pitch_radius,
+            working_pressure_angle: g.operating_pressure_angle,
+            helix_angle: g.helix_angle,
+            face_width: g.face_width,
+        }
+    }
+
     /// [F_t, F_r, F_a] (N) when member `driving` puts `torque` (N·m) into the mesh.
     pub fn magnitudes(&self, driving: Member, torque: f64) -> [f64; 3] {
         let d = driving.index();

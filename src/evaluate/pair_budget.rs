@@ -32,13 +32,7 @@ impl PairParts {
     /// `g` and the budget's oil `oil`.
     pub(crate) fn new(scene: &Scene, g: &PairGeometry, oil: Oil) -> Option<PairParts> {
         let (gearbox, drive) = (scene.gearbox.as_ref()?, scene.drive.as_ref().filter(|d| d.one_pair)?);
-        let sizes = [MeshForceSizes {
-            working_pitch_radius: g.working_pitch_radius,
-            pitch_radius: g.pitch_radius,
-            working_pressure_angle: g.operating_pressure_angle,
-            helix_angle: g.helix_angle,
-            face_width: g.face_width,
-        }];
+        let sizes = [MeshForceSizes::of(g)];
         let beams = crate::drive::shaft_bending::prepared_beams(&drive.layout);
         Some(PairParts { sizes, beams, oil, columns: gearbox.columns() })
     }

@@ -154,14 +154,7 @@ impl StageMesh {
 
     /// The sizes the mesh forces read (pinion and wheel as the stage names them).
     pub(super) fn sizes(&self) -> MeshForceSizes {
-        let g = &self.geometry[0];
-        MeshForceSizes {
-            working_pitch_radius: g.working_pitch_radius,
-            pitch_radius: g.pitch_radius,
-            working_pressure_angle: g.operating_pressure_angle,
-            helix_angle: g.helix_angle,
-            face_width: g.face_width,
-        }
+        MeshForceSizes::of(&self.geometry[0])
     }
 }
 
