@@ -39,6 +39,7 @@ pub(crate) mod stage_kinds;
 pub(crate) mod stage_model;
 pub mod statics;
 pub mod walk;
+mod walk_parts;
 mod walk_point;
 
 pub use forces::{mesh_forces, GearLoad, MeshForceSizes};

@@ -4,7 +4,8 @@
 
 use super::pass::Pass;
 use super::point::{DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
-use super::walk::{DriveModel, FixedLosses, Supported, Walk};
+use super::walk::{DriveModel, Supported, Walk};
+use super::walk_parts::FixedLosses;
 
 impl Walk<'_> {
     /// The drive point of the settled pass `p`.
