@@ -615,6 +615,29 @@ mod one_pair {
         let scene = scene();
         b.bench(|| gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).map.len());
     }
+
+    /// The budget beside the mesh at one point of a pair's sweep, its one-stage drive's loss parts
+    /// at the pinion torque (what every point of a sweep pays for its gearbox).
+    #[divan::bench]
+    fn budget_at_a_point(b: divan::Bencher) {
+        let scene = scene();
+        let eval = gearloss::evaluate::prepare(&scene, &gearloss::evaluate::Plan::new(&scene.operating, None, &[]));
+        let state = gearloss::evaluate::state_at(&scene.operating, 0);
+        b.bench(|| eval.loss_budget(&scene, &state).map(|b| b.beside_mesh()));
+    }
+
+    /// The same budget on the pair's own two-shaft statics (`losses::loss_budget`), for scale.
+    #[divan::bench]
+    fn budget_at_a_point_on_the_pairs_own_statics(b: divan::Bencher) {
+        let scene = scene();
+        let eval = gearloss::evaluate::prepare(&scene, &gearloss::evaluate::Plan::new(&scene.operating, None, &[]));
+        let state = gearloss::evaluate::state_at(&scene.operating, 0);
+        let (g, gearbox) = (&eval.geometry, scene.gearbox.as_ref().unwrap());
+        let oil = scene.mesh().budget_oil(&eval.tribology);
+        b.bench(|| {
+            gearloss::losses::loss_budget(gearbox, g, state.pinion_torque, state.pinion_speed, &oil).beside_mesh()
+        });
+    }
 }
 
 mod planetary {
