@@ -11,7 +11,7 @@ use super::gearbox::Gearbox;
 use super::oil::Oil;
 use super::pair_statics::{place_loads, GearForce};
 use super::parts::catalog::{add_parts, columns_of};
-use super::parts::{LossColumn, PartLosses, PartState, ShaftParts, StageGears};
+use super::parts::{LossColumn, PartLosses, PartState};
 use crate::geometry::PairGeometry;
 
 /// Everything but the mesh at one operating point (W); parts the scene does not describe are `None`.
@@ -86,14 +86,8 @@ pub fn loss_budget(gearbox: &Gearbox, g: &PairGeometry, torque: f64, omega_1: f6
         radius: g.working_pitch_radius[s],
     };
     let loads: [Vec<[f64; 2]>; 2] = [0, 1].map(|s| place_loads(&gearbox.bearings[s], force(s), f_bt));
-    let shafts: [ShaftParts; 2] = [0, 1].map(|s| ShaftParts {
-        speed: omega[s],
-        bearings: &gearbox.bearings[s],
-        loads: &loads[s],
-        seals: &gearbox.seals[s],
-    });
     let running = GearsRunning { omega, pitch_radius: g.working_pitch_radius, face_width: g.face_width };
-    let stages = [StageGears { lubrication: gearbox.lubrication.as_ref(), running, shafts: [0, 1] }];
+    let (shafts, stages) = gearbox.parts_on(running, &[&loads[0], &loads[1]]);
     let on = PartState { shafts: &shafts, stages: &stages };
     let mut out = PartLosses::new(2, 1, true);
     add_parts(&on, oil, false, &mut out);

@@ -16,16 +16,31 @@ pub struct Gearbox {
 }
 
 impl Gearbox {
-    /// Whether the scene gives anything beyond the mesh.
     /// The budget's columns its parts fill, in order.
     pub fn columns(&self) -> Vec<LossColumn> {
-        let shafts: [ShaftParts; 2] =
-            [0, 1].map(|s| ShaftParts { speed: 0.0, bearings: &self.bearings[s], loads: &[], seals: &self.seals[s] });
         let running = GearsRunning { omega: [0.0; 2], pitch_radius: [0.0; 2], face_width: 0.0 };
-        let stages = [StageGears { lubrication: self.lubrication.as_ref(), running, shafts: [0, 1] }];
+        let (shafts, stages) = self.parts_on(running, &[&[], &[]]);
         columns_of(&PartState { shafts: &shafts, stages: &stages })
     }
 
+    /// Its two shafts and one stage as the loss parts read them: the shafts at the gears' speeds
+    /// `running.omega`, `loads` on one bearing of each place of [pinion shaft, wheel shaft] (empty:
+    /// read without loads).
+    pub(crate) fn parts_on<'a>(
+        &'a self,
+        running: GearsRunning,
+        loads: &[&'a [[f64; 2]]; 2],
+    ) -> ([ShaftParts<'a>; 2], [StageGears<'a>; 1]) {
+        let shafts = [0, 1].map(|s| ShaftParts {
+            speed: running.omega[s],
+            bearings: &self.bearings[s],
+            loads: loads[s],
+            seals: &self.seals[s],
+        });
+        (shafts, [StageGears { lubrication: self.lubrication.as_ref(), running, shafts: [0, 1] }])
+    }
+
+    /// Whether the scene gives anything beyond the mesh.
     pub fn is_empty(&self) -> bool {
         self.lubrication.is_none() && self.bearings.iter().all(Vec::is_empty) && self.seals.iter().all(Vec::is_empty)
     }
