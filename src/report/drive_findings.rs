@@ -219,6 +219,16 @@ pub(super) fn report_findings(
         rest.extend(c.findings.iter().cloned());
     }
     rest.extend(stage_notes(drive, &eval.rows, &eval.validity, &report.points));
+    // A stage's churning read beyond the speeds its model was tested at, as a pair's report warns.
+    let cycle_speeds: Vec<f64> = match (&drive.cycle, &eval.cycle) {
+        (Some(spec), Some(c)) => c
+            .pieces
+            .iter()
+            .flat_map(|p| [p.from, p.to].map(|t| crate::evaluate::cycle_pieces::box_load(spec, p, t).1))
+            .collect(),
+        _ => Vec::new(),
+    };
+    rest.extend(super::churning_checks::churning_findings(scene, &cycle_speeds));
     let shown = report.points.iter().filter(|p| p.validity.iter().any(|v| v.0 > 0)).count();
     if report.outside_rows > shown {
         rest.push(Finding {

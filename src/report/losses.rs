@@ -2,10 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
 use crate::evaluate::map::{EfficiencyMap, MapCell};
-use crate::evaluate::Evaluation;
 use crate::losses::parts::LossColumn;
 use crate::losses::{Bearing, BudgetParts, Gearbox};
 use crate::model::{Formulation, Scene};
@@ -353,14 +351,4 @@ pub(crate) fn map_report(scene: &Scene, map: &EfficiencyMap) -> MapReport {
             })
             .collect(),
     }
-}
-
-/// A warning where the scene's fastest operating point or map speed takes a loss model beyond its
-/// tested range (Mauz's dip churning above 60 m/s pitch-line speed).
-pub(crate) fn loss_findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
-    let Some(l) = scene.gearbox.as_ref().and_then(|g| g.lubrication.as_ref()) else { return Vec::new() };
-    let map_speeds = scene.analyses.efficiency_map.iter().flat_map(|(_, s)| s.values.iter());
-    let fastest = scene.operating.pinion_speed.values.iter().chain(map_speeds).map(|w| w.value).fold(0.0, f64::max);
-    let v_t = fastest * eval.geometry.working_pitch_radius[0];
-    l.note(v_t).map(|message| Finding { severity: Severity::Warning, message }).into_iter().collect()
 }

@@ -2,6 +2,7 @@
 
 pub(crate) mod bearing_checks;
 pub(crate) mod checks;
+mod churning_checks;
 pub mod drive;
 pub(crate) mod drive_cycle;
 pub(crate) mod drive_cycle_series;
@@ -72,7 +73,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
     findings.extend(friction::law_findings(scene, eval, tally));
     findings.extend(plausibility::plausibility_findings(tally, scene::units(scene)));
     findings.extend(sweep::sweep_findings(tally, plan));
-    findings.extend(losses::loss_findings(scene, eval));
+    findings.extend(churning_checks::churning_findings(scene, &[]));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),

@@ -318,6 +318,42 @@ fn churning_beyond_its_tested_speed_is_flagged() {
     assert_eq!(warnings(&fast), 1);
 }
 
+/// A drive's stage is warned as a pair is, by its name, at the fastest speed the scene turns it
+/// at. The EV reducer with both stages dip-lubricated: at most 1000 rpm out (the map's 1500 rpm:
+/// the first pinion at v_t = 34.5 m/s) nothing; at 3000 rpm out the first stage's pinion runs at
+/// v_t = ω_out (68/23)(78/20) m_n z_1/(2 cos β) = 68.9 m/s (no profile shift, so r_w = r) and is
+/// warned at that speed (to the 0.1 m/s printed), the second's at 32.7 m/s is not.
+#[test]
+fn a_drives_churning_beyond_its_tested_speed_is_flagged_by_stage() {
+    let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
+    let injection = "lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)";
+    let dip = "lubrication = dip(pinion_immersion = 5 mm, wheel_immersion = 20 mm, axis_height = 80 mm, housing_width = 150 mm)";
+    assert_eq!(text.matches(injection).count(), 2);
+    let dipped = text.replace(injection, dip);
+    let warnings = |src: &str| -> Vec<String> {
+        let scene = gearloss::check("ev.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false)));
+        let drive = scene.drive.as_ref().unwrap();
+        let eval = gearloss::evaluate::evaluate_drive(&scene, drive);
+        let report = gearloss::report::drive::build_drive_report(&scene, drive, &eval);
+        report.findings.into_iter().filter(|f| f.message.contains("Mauz")).map(|f| f.message).collect()
+    };
+    assert_eq!(warnings(&dipped), Vec::<String>::new());
+    let fast = dipped.replace("output_speed  = [500, 1000] rpm", "output_speed  = [500, 3000] rpm");
+    assert_ne!(fast, dipped);
+    let found = warnings(&fast);
+    let omega_out = 3000.0 * std::f64::consts::PI / 30.0;
+    let r_1 = 1.5177e-3 * 23.0 / (2.0 * 23.4f64.to_radians().cos());
+    let v_t = omega_out * (68.0 / 23.0) * (78.0 / 20.0) * r_1;
+    assert!((v_t - 68.9).abs() < 0.05, "{v_t}");
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(
+        found[0]
+            .starts_with(&format!("stage `first`: gear churning: the fastest pitch-line speed, v_t = {v_t:.1} m/s")),
+        "{}",
+        found[0]
+    );
+}
+
 /// The map's best point is located on the model, not read off the grid: for the spec gearbox (its
 /// first law, external) the located total η is at least the grid's best; evaluated again as the
 /// scene's own operating points, the located point gives the same η (1e-9) and its neighbours
