@@ -14,8 +14,10 @@ use crate::progress::Progress;
 use crate::render::RenderedReport;
 use crate::report;
 use crate::report::drive::DriveReport;
+use crate::report::drive_stage_pairs::StagePairReport;
 use crate::run_error::{FailureKind, RunError};
 use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
+use crate::run_stage_pairs::stage_pairs_into;
 use crate::{render, shard};
 
 /// Writes `files` into `folder`; their names.
@@ -34,24 +36,23 @@ fn write_all(
     Ok(out)
 }
 
-/// The report of `eval` with the analyses of one pair on its stages, rendered; the stages' pair
-/// reports among the files.
+/// The report of `eval` with the rows of the analyses of one pair on its stages (`stage_pairs`, run
+/// by the caller), rendered.
 fn reported(
     scene: &Scene,
     drive: &crate::model::SceneDrive,
     eval: &evaluate::drive::DriveEvaluation,
+    stage_pairs: Vec<StagePairReport>,
 ) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
     let mut report = report::drive::build_drive_report(scene, drive, eval);
-    let (rows, files) = crate::run_stage_pairs::stage_pair_files(scene, drive)?;
-    report.stage_pairs = rows;
+    report.stage_pairs = stage_pairs;
     // Drawn from the report as report.json reads back, as `gearloss render` draws it (and a pair's
     // run, `run_pair::render_as_written`): a number report.json rounds is shown as it reads back.
     let json = render::drive::render_drive_json(&report);
     let read: DriveReport = serde_json::from_str(&json)
         .map_err(|e| format!("report.json does not read back: {e}"))
         .map_err(RunError::read_back)?;
-    let mut rendered = render::drive::render_drive(&read).map_err(RunError::drawing)?;
-    rendered.files.extend(files);
+    let rendered = render::drive::render_drive(&read).map_err(RunError::drawing)?;
     Ok((report, rendered))
 }
 
@@ -67,7 +68,9 @@ pub fn drive_report_files(
         drive_records::drive_record_files(drive, RecordFormats::default(), |_| Ok(Vec::new())).map_err(&io)?;
     let eval =
         evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, &crate::progress::Quiet).map_err(&io)?;
-    let (report, mut rendered) = reported(scene, drive, &eval)?;
+    let (rows, pair_files) = crate::run_stage_pairs::stage_pair_files(scene, drive)?;
+    let (report, mut rendered) = reported(scene, drive, &eval, rows)?;
+    rendered.files.extend(pair_files);
     let (csv, jsonl) = records.finish().map_err(&io)?;
     let text = |b: Option<Vec<u8>>| String::from_utf8(b.expect("the default formats")).expect("records are UTF-8");
     rendered.files.push((drive_records::FILE.to_string(), text(csv)));
@@ -144,8 +147,10 @@ impl SceneRun for DriveRun {
             .map_err(RunError::io("the record files"))?;
         let tally = set.tally().map_err(RunError::Shards)?;
         let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
-        let (report, rendered) = reported(scene, drive, &eval)?;
+        let (rows, pair_files) = stage_pairs_into(scene, drive, (folder, ""), RecordFormats::default(), progress)?;
+        let (report, rendered) = reported(scene, drive, &eval, rows)?;
         files.extend(write_all(folder, &rendered.files, progress)?);
+        files.extend(pair_files);
         Ok((report, files))
     }
 
@@ -185,10 +190,12 @@ fn run_one_into(
     let (mut records, mut files) = record_files((folder, dir), drive, formats)?;
     let eval = evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, progress).map_err(&io)?;
     records.finish().map_err(&io)?;
-    let (report, rendered) = reported(scene, drive, &eval)?;
+    let (rows, pair_files) = stage_pairs_into(scene, drive, (folder, dir), formats, progress)?;
+    let (report, rendered) = reported(scene, drive, &eval, rows)?;
     let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
     let named: Vec<(String, String)> = rendered.files.into_iter().map(|(f, c)| (path(&f), c)).collect();
     files.extend(write_all(folder, &named, progress)?);
+    files.extend(pair_files);
     Ok((report, files))
 }
 

@@ -91,6 +91,28 @@ pub(crate) fn run_scene_exact(scene: &Scene) -> Result<ExactRun, RunError> {
     Ok((exact, report, rendered.files))
 }
 
+/// A pair's run into `folder` under `dir` (`""`: the top), its record files of `formats` streamed
+/// as its sweep runs: the report as built, as report.json reads it back, and the files written.
+pub(crate) fn run_in_folder_exact(
+    scene: &Scene,
+    (folder, dir): (&ReportFolder, &str),
+    formats: RecordFormats,
+    progress: &dyn Progress,
+) -> Result<(Report, Report, Vec<String>), RunError> {
+    let scene = &*evaluate::first_balance::at_first_balance(scene);
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;
+    let (exact, report, rendered) = finish_exact(scene, &plan, &streamed.tally, &streamed, progress)?;
+    progress.stage("write", rendered.files.len() as u64);
+    for (file, content) in &rendered.files {
+        folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(path(file));
+        progress.advance(1);
+    }
+    Ok((exact, report, files))
+}
+
 /// A scene of one pair, as the one run layer runs it ([`crate::run`]).
 pub(crate) struct PairRun;
 
@@ -105,22 +127,11 @@ impl SceneRun for PairRun {
     fn run_in_folder(
         &self,
         scene: &Scene,
-        (folder, dir): (&ReportFolder, &str),
+        at: (&ReportFolder, &str),
         formats: RecordFormats,
         progress: &dyn Progress,
     ) -> Result<(Report, Vec<String>), RunError> {
-        let scene = &*evaluate::first_balance::at_first_balance(scene);
-        let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-        let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
-        let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;
-        let (report, rendered) = finish(scene, &plan, &streamed.tally, &streamed, progress)?;
-        progress.stage("write", rendered.files.len() as u64);
-        for (file, content) in &rendered.files {
-            folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
-            files.push(path(file));
-            progress.advance(1);
-        }
-        Ok((report, files))
+        run_in_folder_exact(scene, at, formats, progress).map(|(_, report, files)| (report, files))
     }
 
     fn oil_sweep(&self, runs: &[OilRun<Report>]) -> Result<Vec<File>, RunError> {

@@ -1,25 +1,65 @@
 //! The analyses of one pair on a drive's stages, run: each analysed mesh's scene of one pair
 //! ([`crate::evaluate::stage_pairs`]) run as a pair alone runs ([`crate::run_pair`]), its files
 //! under `stages/…` in the drive's report folder, and the drive report's rows that say what each
-//! ran at and where its report is.
+//! ran at and where its report is. In memory ([`stage_pair_files`]) or into the run's folder
+//! ([`stage_pairs_into`]: each pair's record files streamed in the run's formats as its sweep runs,
+//! so a one-pair drive's whole sweep is never held in memory).
 
 use crate::efficiency::charges_iso_mesh_loss;
+use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::stage_pairs::stage_pairs;
+use crate::folder::ReportFolder;
 use crate::model::{Scene, SceneDrive};
+use crate::progress::Progress;
 use crate::report::drive_stage_pairs::{folder, StagePairReport};
+use crate::report::Report;
 use crate::run_error::RunError;
 
 /// The rows for the drive's report and the files of every analysed mesh's report (paths under the
 /// drive's folder).
 pub(crate) type StagePairFiles = (Vec<StagePairReport>, Vec<(String, String)>);
 
-/// Every analysed mesh run as a pair alone; a mesh whose pair a scene of one pair would refuse at
-/// that state (dynamics at too low a speed, too many record rows) is listed with the reason, not run.
+/// Every analysed mesh run as a pair alone, in memory: the rows and the files.
 pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<StagePairFiles, RunError> {
+    let mut files = Vec::new();
+    let rows = stage_pair_rows(scene, drive, |alone, dir| {
+        let (report, _, run_files) = crate::run_pair::run_scene_exact(alone)?;
+        files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
+        Ok(report)
+    })?;
+    Ok((rows, files))
+}
+
+/// Every analysed mesh run as a pair alone into `folder` under the run's `dir` (`""`: the top),
+/// its record files of `formats` streamed: the rows and the files written.
+pub(crate) fn stage_pairs_into(
+    scene: &Scene,
+    drive: &SceneDrive,
+    (folder, dir): (&ReportFolder, &str),
+    formats: RecordFormats,
+    progress: &dyn Progress,
+) -> Result<(Vec<StagePairReport>, Vec<String>), RunError> {
+    let mut files = Vec::new();
+    let rows = stage_pair_rows(scene, drive, |alone, pair_dir| {
+        let at = if dir.is_empty() { pair_dir.to_string() } else { format!("{dir}/{pair_dir}") };
+        let (report, _, written) = crate::run_pair::run_in_folder_exact(alone, (folder, &at), formats, progress)?;
+        files.extend(written);
+        Ok(report)
+    })?;
+    Ok((rows, files))
+}
+
+/// The drive report's rows of every analysed mesh, each mesh's pair run by `run(its scene, its
+/// folder)`, which gives its report as built; a mesh whose pair a scene of one pair would refuse at
+/// that state (dynamics at too low a speed, too many record rows) is listed with the reason, not run.
+fn stage_pair_rows(
+    scene: &Scene,
+    drive: &SceneDrive,
+    mut run: impl FnMut(&Scene, &str) -> Result<Report, RunError>,
+) -> Result<Vec<StagePairReport>, RunError> {
     let formulation = scene.analyses.first_formulation();
     let law = scene.friction.first().map_or_else(String::new, |l| l.label());
     let mut rows = Vec::new();
-    let mut files = Vec::new();
     for p in stage_pairs(scene, drive) {
         let mut row = StagePairReport {
             stage: p.stage_name.clone(),
@@ -47,7 +87,7 @@ pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<Stag
                 row.not_run = Some(d.reason.clone());
             } else {
                 let dir = folder(&p.stage_name, p.mesh, p.at.map(|at| at.point));
-                let (report, _, run_files) = crate::run_pair::run_scene_exact(alone)?;
+                let report = run(alone, &dir)?;
                 let one_point = p.at.is_some();
                 if let Some(r) = report.efficiency.iter().find(|r| one_point && r.formulation == formulation) {
                     let charged = match &r.ohlendorf {
@@ -58,11 +98,10 @@ pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<Stag
                     row.pair_charged_efficiency =
                         Some(1.0 - charged / (r.pinion_torque.value.0 * r.pinion_speed.value.0));
                 }
-                files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
                 row.folder = Some(dir);
             }
         }
         rows.push(row);
     }
-    Ok((rows, files))
+    Ok(rows)
 }

@@ -63,45 +63,77 @@ fn parquet_holds_the_csvs_values_to_the_bit() {
         run(&["run", scene, "--records", "parquet,csv"], &out);
         let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
         assert!(!dir.join("records.jsonl").exists(), "{scene}: only the formats asked for");
-        let csv = std::fs::read_to_string(dir.join("records.csv")).unwrap();
-        let mut lines = csv.lines();
-        let header: Vec<String> = split_csv(lines.next().unwrap());
-        let (columns, rows) = parquet(&dir);
-        let names: Vec<&str> = columns.iter().map(|(n, _)| n.as_str()).collect();
-        assert_eq!(&names[..header.len()], header.iter().map(String::as_str).collect::<Vec<_>>().as_slice(), "{scene}");
-        let lines: Vec<&str> = lines.collect();
-        assert_eq!(rows.len(), lines.len(), "{scene}: rows");
-        assert!(!rows.is_empty());
-        for (row, line) in rows.iter().zip(&lines) {
-            let cells = split_csv(line);
-            for (k, text) in cells.iter().enumerate() {
-                match &row[k] {
-                    Cell::Int(i) => assert_eq!(i.to_string(), *text, "{scene}: {}", header[k]),
-                    Cell::Real(x) => {
-                        assert_eq!(x.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{scene}: {}", header[k])
-                    }
-                    Cell::Text(t) => assert_eq!(t, text, "{scene}: {}", header[k]),
-                    Cell::Empty => assert!(text.is_empty(), "{scene}: {} is null in Parquet, {text} in CSV", header[k]),
+        assert_parquet_is_the_csv(&dir, scene);
+        let _ = std::fs::remove_dir_all(&out);
+    }
+}
+
+/// `dir`'s records.parquet against its records.csv: the same columns (the CSV's, then the
+/// parameters' own), and on every row the same cells: integers equal, floats equal to the bit (the
+/// CSV's shortest text parsed), text equal, an empty CSV cell a null; each parameter column holds
+/// the value the `parameters` cell writes.
+fn assert_parquet_is_the_csv(dir: &Path, scene: &str) {
+    let csv = std::fs::read_to_string(dir.join("records.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<String> = split_csv(lines.next().unwrap());
+    let (columns, rows) = parquet(&dir);
+    let names: Vec<&str> = columns.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(&names[..header.len()], header.iter().map(String::as_str).collect::<Vec<_>>().as_slice(), "{scene}");
+    let lines: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), lines.len(), "{scene}: rows");
+    assert!(!rows.is_empty());
+    for (row, line) in rows.iter().zip(&lines) {
+        let cells = split_csv(line);
+        for (k, text) in cells.iter().enumerate() {
+            match &row[k] {
+                Cell::Int(i) => assert_eq!(i.to_string(), *text, "{scene}: {}", header[k]),
+                Cell::Real(x) => {
+                    assert_eq!(x.to_bits(), text.parse::<f64>().unwrap().to_bits(), "{scene}: {}", header[k])
                 }
-            }
-            for (k, (name, _)) in columns.iter().enumerate().skip(header.len()) {
-                let parameters = &cells[header.iter().position(|h| h == "parameters").unwrap()];
-                if let Cell::Real(x) = row[k] {
-                    let short = name.trim_start_matches("param_");
-                    assert!(
-                        parameters.split("; ").any(|p| p.split('=').nth(1).is_some_and(|v| v
-                            .split(' ')
-                            .next()
-                            .unwrap()
-                            .parse::<f64>()
-                            .unwrap()
-                            == x)
-                            && short.starts_with(p.split('=').next().unwrap())),
-                        "{scene}: {name} = {x} not in `{parameters}`"
-                    );
-                }
+                Cell::Text(t) => assert_eq!(t, text, "{scene}: {}", header[k]),
+                Cell::Empty => assert!(text.is_empty(), "{scene}: {} is null in Parquet, {text} in CSV", header[k]),
             }
         }
+        for (k, (name, _)) in columns.iter().enumerate().skip(header.len()) {
+            let parameters = &cells[header.iter().position(|h| h == "parameters").unwrap()];
+            if let Cell::Real(x) = row[k] {
+                let short = name.trim_start_matches("param_");
+                assert!(
+                    parameters.split("; ").any(|p| p.split('=').nth(1).is_some_and(|v| v
+                        .split(' ')
+                        .next()
+                        .unwrap()
+                        .parse::<f64>()
+                        .unwrap()
+                        == x)
+                        && short.starts_with(p.split('=').next().unwrap())),
+                    "{scene}: {name} = {x} not in `{parameters}`"
+                );
+            }
+        }
+    }
+}
+
+/// A drive's stage meshes analysed as pairs write their record files in the formats the run asks
+/// for, each streamed into its folder: the EV reducer's stage meshes (one point each) and a pair
+/// on a drive cycle (its stage analysed over the scene's whole sweep, `stages/pair/`), each
+/// records.parquet the bits of its records.csv, and no records.jsonl where it was not asked for.
+#[test]
+fn stage_pairs_write_the_formats_the_run_asks_for() {
+    for (scene, folders) in [("specs/ev_reducer_stage_meshes.gear", 2), ("tests/specs/ok/cycle_pair_udds.gear", 1)] {
+        let out = temp(&format!("pq-stages-{}", scene.replace('/', "_")));
+        run(&["run", scene, "--records", "parquet,csv"], &out);
+        let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
+        let mut analysed = 0;
+        for stage in std::fs::read_dir(dir.join("stages")).unwrap() {
+            let stage = stage.unwrap().path();
+            if stage.join("records.csv").exists() {
+                assert!(!stage.join("records.jsonl").exists(), "{}: only the formats asked for", stage.display());
+                assert_parquet_is_the_csv(&stage, scene);
+                analysed += 1;
+            }
+        }
+        assert!(analysed >= folders, "{scene}: {analysed} stage folders with records");
         let _ = std::fs::remove_dir_all(&out);
     }
 }
