@@ -17,7 +17,7 @@ use crate::report::drive::DriveReport;
 use crate::report::drive_stage_pairs::StagePairReport;
 use crate::run_error::{FailureKind, RunError};
 use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
-use crate::run_stage_pairs::stage_pairs_into;
+use crate::run_stage_pairs::{stage_pair_shard, stage_pairs_into, stage_pairs_merged};
 use crate::{render, shard};
 
 /// Writes `files` into `folder`; their names.
@@ -122,16 +122,20 @@ impl SceneRun for DriveRun {
     ) -> Result<(Vec<String>, shard::Manifest), RunError> {
         let drive = drive_of(scene);
         let io = RunError::io("the record files");
-        let (mut records, files) = record_files((folder, ""), drive, formats)?;
+        let (mut records, mut files) = record_files((folder, ""), drive, formats)?;
         let tally =
             evaluate::drive::evaluate_drive_shard_with(scene, drive, shard, &mut records, progress).map_err(&io)?;
         records.finish().map_err(&io)?;
+        let (stage_pair, pair_files) = stage_pair_shard(scene, drive, shard, (folder, formats), progress)?;
+        files.extend(pair_files);
         let points = (scene.operating.count(), shard.range(scene.operating.count()));
-        Ok((files, shard::Manifest::new((source_name, source), shard, points, &tally)))
+        Ok((files, shard::Manifest::new((source_name, source), shard, points, &tally).with_stage_pair(stage_pair)))
     }
 
     /// drive_records.csv concatenated in shard order (a single run's, byte for byte), the
-    /// tallies folded, the report's rows, map, thermal balance and duty cycle evaluated again.
+    /// tallies folded, the report's rows, map, thermal balance and duty cycle evaluated again; a
+    /// one-pair drive's stage analysed over the sweep merged from the shards' as a pair's shards
+    /// merge, the stages analysed at the drive's points run again.
     fn merge_into(
         &self,
         set: &shard::ShardSet,
@@ -147,7 +151,7 @@ impl SceneRun for DriveRun {
             .map_err(RunError::io("the record files"))?;
         let tally = set.tally().map_err(RunError::Shards)?;
         let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
-        let (rows, pair_files) = stage_pairs_into(scene, drive, (folder, ""), RecordFormats::default(), progress)?;
+        let (rows, pair_files) = stage_pairs_merged(scene, drive, set, folder, progress)?;
         let (report, rendered) = reported(scene, drive, &eval, rows)?;
         files.extend(write_all(folder, &rendered.files, progress)?);
         files.extend(pair_files);

@@ -1,5 +1,5 @@
 //! One pair's scene (at one oil temperature) run after its sweep: the details evaluated, reported
-//! and rendered ([`finish`]), and the whole run in memory with its record files
+//! and rendered (`finish_exact`), and the whole run in memory with its record files
 //! ([`run_scene_to_files`]). Both a scene of one pair and each stage analysed in a drive's run go
 //! through here. [`PairRun`] is a pair's part of the one run layer ([`crate::run`]).
 
@@ -30,19 +30,9 @@ pub fn has_records(scene: &Scene) -> bool {
         || a.transmission_error.is_some()
 }
 
-/// Stages 3 to 5 after the sweep: details (reusing the dynamics the stream computed), report, render;
-/// the report as report.json reads back.
-pub(crate) fn finish(
-    scene: &Scene,
-    plan: &Plan,
-    tally: &Tally,
-    known: &evaluate::stream::Streamed,
-    progress: &dyn Progress,
-) -> Result<(Report, RenderedReport), RunError> {
-    finish_exact(scene, plan, tally, known, progress).map(|(_, report, rendered)| (report, rendered))
-}
-
-/// [`finish`] with the report as built, before report.json rounds its numbers.
+/// Stages 3 to 5 after the sweep: details (reusing the dynamics the stream computed), report,
+/// render; the report as built, before report.json rounds its numbers, and as report.json reads
+/// it back.
 fn finish_exact(
     scene: &Scene,
     plan: &Plan,
@@ -113,6 +103,48 @@ pub(crate) fn run_in_folder_exact(
     Ok((exact, report, files))
 }
 
+/// A shard of a pair's sweep into `folder` under `dir` (`""`: the top): its points' tally and the
+/// record files of `formats` written.
+pub(crate) fn shard_in_folder(
+    scene: &Scene,
+    shard: Shard,
+    at: (&ReportFolder, &str),
+    formats: RecordFormats,
+    progress: &dyn Progress,
+) -> Result<(Tally, Vec<String>), RunError> {
+    let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
+    let (streamed, files) = stream_into(scene, &plan, at, formats, progress)?;
+    Ok((streamed.tally, files))
+}
+
+/// A pair's shards (`set`) merged into `folder` under `dir` (`""`: the top): the record files
+/// concatenated in shard order, the tallies folded, the details evaluated, reported and rendered.
+/// The report as built, as report.json reads it back, and the files written.
+pub(crate) fn merge_in_folder(
+    set: &ShardSet,
+    scene: &Scene,
+    (folder, dir): (&ReportFolder, &str),
+    progress: &dyn Progress,
+) -> Result<(Report, Report, Vec<String>), RunError> {
+    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let mut files = Vec::new();
+    if has_records(scene) {
+        progress.stage("merge", set.folders.len() as u64);
+        files.extend(
+            set.concatenate_into::<crate::evaluate::pair_records::PairRecords>((folder, dir), progress)
+                .map_err(RunError::io("the record files"))?,
+        );
+    }
+    let tally: Tally = set.tally().map_err(RunError::Shards)?;
+    let (exact, report, rendered) = finish_exact(scene, &plan, &tally, &Default::default(), progress)?;
+    for (file, content) in &rendered.files {
+        folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
+        files.push(path(file));
+    }
+    Ok((exact, report, files))
+}
+
 /// A scene of one pair, as the one run layer runs it ([`crate::run`]).
 pub(crate) struct PairRun;
 
@@ -149,9 +181,9 @@ impl SceneRun for PairRun {
         progress: &dyn Progress,
     ) -> Result<(Vec<String>, Manifest), RunError> {
         let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
-        let (streamed, files) = stream_into(scene, &plan, (folder, ""), formats, progress)?;
+        let (tally, files) = shard_in_folder(scene, shard, (folder, ""), formats, progress)?;
         let points = (plan.count(), plan.range.clone());
-        Ok((files, Manifest::new((source_name, source), shard, points, &streamed.tally)))
+        Ok((files, Manifest::new((source_name, source), shard, points, &tally)))
     }
 
     fn merge_into(
@@ -161,22 +193,7 @@ impl SceneRun for PairRun {
         folder: &ReportFolder,
         progress: &dyn Progress,
     ) -> Result<(Report, Vec<String>), RunError> {
-        let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-        let mut files = Vec::new();
-        if has_records(scene) {
-            progress.stage("merge", set.folders.len() as u64);
-            files.extend(
-                set.concatenate::<crate::evaluate::pair_records::PairRecords>(folder, progress)
-                    .map_err(RunError::io("the record files"))?,
-            );
-        }
-        let tally: Tally = set.tally().map_err(RunError::Shards)?;
-        let (report, rendered) = finish(scene, &plan, &tally, &Default::default(), progress)?;
-        for (file, content) in &rendered.files {
-            folder.write(file, content.as_bytes()).map_err(RunError::io("the report folder"))?;
-            files.push(file.clone());
-        }
-        Ok((report, files))
+        merge_in_folder(set, scene, (folder, ""), progress).map(|(_, report, files)| (report, files))
     }
 
     const REPORT: (&'static str, &'static [&'static str]) = ("a pair's report", &["geometry"]);

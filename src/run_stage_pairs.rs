@@ -7,13 +7,16 @@
 
 use crate::efficiency::charges_iso_mesh_loss;
 use crate::evaluate::record_files::RecordFormats;
-use crate::evaluate::stage_pairs::stage_pairs;
+use crate::evaluate::stage_pairs::{one_pair_sweep, stage_pairs};
+use crate::evaluate::{Shard, Tally};
 use crate::folder::ReportFolder;
 use crate::model::{Scene, SceneDrive};
 use crate::progress::Progress;
-use crate::report::drive_stage_pairs::{folder, StagePairReport};
+use crate::report::drive_stage_pairs::{folder as folder_of, StagePairReport};
 use crate::report::Report;
 use crate::run_error::RunError;
+use crate::scene::lower_stage_analyses::check_pair_at_state;
+use crate::shard::ShardSet;
 
 /// The rows for the drive's report and the files of every analysed mesh's report (paths under the
 /// drive's folder).
@@ -43,6 +46,50 @@ pub(crate) fn stage_pairs_into(
     let rows = stage_pair_rows(scene, drive, |alone, pair_dir| {
         let at = if dir.is_empty() { pair_dir.to_string() } else { format!("{dir}/{pair_dir}") };
         let (report, _, written) = crate::run_pair::run_in_folder_exact(alone, (folder, &at), formats, progress)?;
+        files.extend(written);
+        Ok(report)
+    })?;
+    Ok((rows, files))
+}
+
+/// A scene of one pair run as its one-stage drive, sharded: its stage's pair, analysed over the
+/// scene's whole sweep, run as a pair's shard into the shard's folder. Its folder and tally (for
+/// the manifest) and its record files; none where the stage is not analysed so (another stage
+/// analysis runs at the merge, on the drive's points).
+pub(crate) fn stage_pair_shard(
+    scene: &Scene,
+    drive: &SceneDrive,
+    shard: Shard,
+    (folder, formats): (&ReportFolder, RecordFormats),
+    progress: &dyn Progress,
+) -> Result<(Option<(String, Tally)>, Vec<String>), RunError> {
+    let Some(p) = one_pair_sweep(scene, drive) else { return Ok((None, Vec::new())) };
+    let Some(alone) = p.scene.as_ref().filter(|a| check_pair_at_state(a).is_empty()) else {
+        return Ok((None, Vec::new()));
+    };
+    let dir = folder_of(&p.stage_name, p.mesh, None);
+    let (tally, files) = crate::run_pair::shard_in_folder(alone, shard, (folder, &dir), formats, progress)?;
+    Ok((Some((dir, tally)), files))
+}
+
+/// Every analysed mesh run as a pair alone into the merged `folder`: the stage the shards analysed
+/// ([`stage_pair_shard`]) merged from theirs, every other run here in the formats the shards wrote
+/// the drive's records in. The rows and the files written.
+pub(crate) fn stage_pairs_merged(
+    scene: &Scene,
+    drive: &SceneDrive,
+    set: &ShardSet,
+    folder: &ReportFolder,
+    progress: &dyn Progress,
+) -> Result<(Vec<StagePairReport>, Vec<String>), RunError> {
+    let sharded = set.stage_pair();
+    let formats = set.formats::<crate::evaluate::drive_records::DriveRecords>();
+    let mut files = Vec::new();
+    let rows = stage_pair_rows(scene, drive, |alone, dir| {
+        let (report, _, written) = match &sharded {
+            Some((shards, d)) if *d == dir => crate::run_pair::merge_in_folder(shards, alone, (folder, dir), progress)?,
+            _ => crate::run_pair::run_in_folder_exact(alone, (folder, dir), formats, progress)?,
+        };
         files.extend(written);
         Ok(report)
     })?;
@@ -82,11 +129,11 @@ fn stage_pair_rows(
             not_run: None,
         };
         if let Some(alone) = &p.scene {
-            let refused = crate::scene::lower_stage_analyses::check_pair_at_state(alone);
+            let refused = check_pair_at_state(alone);
             if let Some(d) = refused.first() {
                 row.not_run = Some(d.reason.clone());
             } else {
-                let dir = folder(&p.stage_name, p.mesh, p.at.map(|at| at.point));
+                let dir = folder_of(&p.stage_name, p.mesh, p.at.map(|at| at.point));
                 let report = run(alone, &dir)?;
                 let one_point = p.at.is_some();
                 if let Some(r) = report.efficiency.iter().find(|r| one_point && r.formulation == formulation) {

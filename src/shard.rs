@@ -56,6 +56,11 @@ pub(crate) struct Manifest {
     pub source_digest: Option<String>,
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub digests: BTreeMap<String, String>,
+    /// A scene of one pair run as its one-stage drive: its stage's pair, analysed over the scene's
+    /// whole sweep, as this shard's points tally it (its record files in [`Self::stage_pair`]'s
+    /// folder, `stages/pair/`, their digests among `digests`); merged as a pair's shards are.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stage_pair: Option<(String, serde_json::Value)>,
 }
 
 /// What a kind of scene tallies over a shard's points, written in its manifest and folded at the
@@ -97,7 +102,15 @@ impl Manifest {
             tally: serde_json::to_value(tally).expect("a tally serialises"),
             source_digest: Some(crate::shard_digest::of_text(source.as_bytes())),
             digests: BTreeMap::new(),
+            stage_pair: None,
         }
+    }
+
+    /// The manifest with the tally of the stage's pair analysed over the sweep in folder `dir`.
+    pub(crate) fn with_stage_pair(mut self, stage_pair: Option<(String, Tally)>) -> Manifest {
+        self.stage_pair =
+            stage_pair.map(|(dir, tally)| (dir, serde_json::to_value(tally).expect("a tally serialises")));
+        self
     }
 
     /// The manifest with the digests of the record files `files` of the shard's folder.
@@ -121,6 +134,9 @@ pub(crate) struct ShardSet {
     pub folders: Vec<PathBuf>,
     /// Each shard's tally as its manifest holds it, in shard order ([`ShardSet::tally`] folds them).
     tallies: Vec<serde_json::Value>,
+    /// The folder and each shard's tally of a one-pair drive's stage analysed over the sweep
+    /// ([`Manifest::stage_pair`]), where the first shard has one.
+    stage_pair: Option<(String, Vec<serde_json::Value>)>,
 }
 
 impl ShardSet {
@@ -195,8 +211,34 @@ impl ShardSet {
                 got.hint(format!("run `gearloss run --shard {}` and give its folder too", missing[0]))
             });
         }
+        let stage_pair = match manifests[0].1.stage_pair.as_ref() {
+            Some((dir, _)) => {
+                let tallies = manifests.iter().map(|(shard, m)| match &m.stage_pair {
+                    Some((d, t)) if d == dir => Ok(t.clone()),
+                    _ => Err(mismatch(format!("{} holds no records of the stage's pair in {dir}", shard.display()))
+                        .hint("run that shard again (`gearloss run --shard K/N`) and merge its new folder")),
+                });
+                Some((dir.clone(), tallies.collect::<Result<Vec<_>, _>>()?))
+            }
+            None => None,
+        };
         let (folders, tallies) = manifests.into_iter().map(|(dir, m)| (dir, m.tally)).unzip();
-        Ok(ShardSet { source_name, source, folders, tallies })
+        Ok(ShardSet { source_name, source, folders, tallies, stage_pair })
+    }
+
+    /// The shards of a one-pair drive's stage analysed over the sweep, as a pair's shards: its
+    /// folder in each shard's and their tallies, and the folder's name; None where the shards hold
+    /// none.
+    pub(crate) fn stage_pair(&self) -> Option<(ShardSet, &str)> {
+        let (dir, tallies) = self.stage_pair.as_ref()?;
+        let set = ShardSet {
+            source_name: self.source_name.clone(),
+            source: self.source.clone(),
+            folders: self.folders.iter().map(|f| f.join(dir)).collect(),
+            tallies: tallies.clone(),
+            stage_pair: None,
+        };
+        Some((set, dir))
     }
 
     /// The shards' tallies folded in shard order: exactly a single run's. A tally that is not the
@@ -226,22 +268,39 @@ impl ShardSet {
         folder: &ReportFolder,
         progress: &dyn Progress,
     ) -> std::io::Result<Vec<String>> {
+        self.concatenate_into::<T>((folder, ""), progress)
+    }
+
+    /// The formats the first shard wrote its records of kind `T` in (a merge writes what else it
+    /// runs in the same).
+    pub(crate) fn formats<T: RecordTable>(&self) -> RecordFormats {
+        let [csv, jsonl, parquet] = T::FILES.map(|f| self.folders[0].join(f).exists());
+        RecordFormats { csv, jsonl, parquet }
+    }
+
+    /// [`Self::concatenate`] into `folder` under `dir` (`""`: the top).
+    pub(crate) fn concatenate_into<T: RecordTable>(
+        &self,
+        (folder, dir): (&ReportFolder, &str),
+        progress: &dyn Progress,
+    ) -> std::io::Result<Vec<String>> {
         let [csv, jsonl, parquet] = T::FILES;
         let first = &self.folders[0];
         let text: Vec<(&str, bool)> =
             [(csv, true), (jsonl, false)].into_iter().filter(|(f, _)| first.join(f).exists()).collect();
-        self.concatenate_files(folder, &text, progress)?;
-        let mut files: Vec<String> = text.iter().map(|(f, _)| f.to_string()).collect();
+        let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+        self.concatenate_files((folder, dir), &text, progress)?;
+        let mut files: Vec<String> = text.iter().map(|(f, _)| path(f)).collect();
         if first.join(parquet).exists() {
-            self.merge_parquet(folder, parquet)?;
-            files.push(parquet.to_string());
+            self.merge_parquet(folder, parquet, &path(parquet))?;
+            files.push(path(parquet));
         }
         Ok(files)
     }
 
     /// The shards' Parquet record files `file`, rows in shard order, into one file of the first
     /// shard's columns.
-    fn merge_parquet(&self, folder: &ReportFolder, file: &str) -> std::io::Result<()> {
+    fn merge_parquet(&self, folder: &ReportFolder, file: &str, into: &str) -> std::io::Result<()> {
         use crate::evaluate::record_parquet::ParquetRecords;
         use crate::evaluate::record_parquet_read::read_parquet_records;
         let mut out: Option<ParquetRecords<BufWriter<File>>> = None;
@@ -252,7 +311,7 @@ impl ShardSet {
             let writer = match &mut out {
                 Some(w) => w,
                 None => out
-                    .insert(ParquetRecords::with_columns(BufWriter::new(folder.create_file(file)?), columns.clone())?),
+                    .insert(ParquetRecords::with_columns(BufWriter::new(folder.create_file(into)?), columns.clone())?),
             };
             if writer.columns() != columns.as_slice() {
                 return Err(std::io::Error::new(
@@ -268,16 +327,18 @@ impl ShardSet {
         Ok(())
     }
 
-    /// Writes the merged `files` (name, whether it has a header line) into `folder`, each shard's in
-    /// shard order (a header, where a shard's file has one, kept from the first shard only).
+    /// Writes the merged `files` (name, whether it has a header line) into `folder` under `dir`
+    /// (`""`: the top), each shard's in shard order (a header, where a shard's file has one, kept
+    /// from the first shard only).
     pub(crate) fn concatenate_files(
         &self,
-        folder: &ReportFolder,
+        (folder, dir): (&ReportFolder, &str),
         files: &[(&str, bool)],
         progress: &dyn Progress,
     ) -> std::io::Result<()> {
         for &(file, header) in files {
-            let mut out = BufWriter::new(folder.create_file(file)?);
+            let into = if dir.is_empty() { file.to_string() } else { format!("{dir}/{file}") };
+            let mut out = BufWriter::new(folder.create_file(&into)?);
             for (k, dir) in self.folders.iter().enumerate() {
                 let mut input = BufReader::new(File::open(dir.join(file))?);
                 if header && k > 0 {

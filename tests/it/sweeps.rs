@@ -188,6 +188,67 @@ fn four_shards_merged_equal_one_run() {
     std::fs::remove_dir_all(&out).unwrap();
 }
 
+/// Every file under `dir`, as paths relative to it, sorted.
+fn tree(dir: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let path = e.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if path.is_dir() {
+            out.extend(tree(&path).into_iter().map(|f| format!("{name}/{f}")));
+        } else {
+            out.push(name);
+        }
+    }
+    out.sort();
+    out
+}
+
+/// A pair on a drive cycle runs as its one-stage drive, its stage's pair analysed over the whole
+/// sweep in `stages/pair/`. Sharded, each shard runs its points of that pair too (its records in
+/// the shard's `stages/pair/`, its tally in the manifest), and the merge folds them as a pair's
+/// shards: every file of the merged folder, the stage's among them, equals the single run's byte
+/// for byte (CSV and Parquet records). A shard whose stage records were edited is refused, named.
+#[test]
+fn a_one_pair_drives_stage_is_sharded_with_it() {
+    let out = temp("stage-shards");
+    let scene = "tests/specs/ok/cycle_pair_udds.gear";
+    let records = ["--records", "csv,parquet"];
+    run(&["run", scene, records[0], records[1]], &out.join("single"));
+    let mut shards = Vec::new();
+    for k in 1..=2 {
+        run(&["run", scene, "--shard", &format!("{k}/2"), records[0], records[1]], &out.join("shards"));
+        let shard = out.join("shards").join(format!("one_pair_on_the_udds.shard-{k}-of-2"));
+        let pair_rows = std::fs::read_to_string(shard.join("stages/pair/records.csv")).unwrap().lines().count() - 1;
+        assert!(pair_rows > 0, "shard {k} ran its points of the stage's pair");
+        shards.push(shard);
+    }
+    let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("merged")).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let single = out.join("single/one_pair_on_the_udds");
+    let merged = out.join("merged/one_pair_on_the_udds");
+    let files = tree(&single);
+    assert!(
+        files.contains(&"stages/pair/records.parquet".to_string())
+            && files.contains(&"stages/pair/report.md".to_string())
+    );
+    assert_eq!(files, tree(&merged));
+    for f in &files {
+        assert!(std::fs::read(single.join(f)).unwrap() == std::fs::read(merged.join(f)).unwrap(), "{f} differs");
+    }
+    let edited = shards[1].join("stages/pair/records.csv");
+    let text = std::fs::read_to_string(&edited).unwrap();
+    std::fs::write(&edited, text.replacen(',', ";", 1)).unwrap();
+    let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("bad")).output().unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("stages/pair/records.csv"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
 /// Many runs writing the same folder at once all succeed and leave only the final folder.
 #[test]
 fn concurrent_runs_into_one_folder_all_succeed() {
