@@ -1,7 +1,8 @@
 //! report.md's bearing tables: every bearing place of the budget at each operating point (its
 //! shaft, type, model, position, the loads of one bearing and the losses of all of them), so that a
 //! bearing loss can be audited from the loads behind it. Loads do not depend on the law, so a point
-//! is shown once; a sweep of more than [`ALL_POINTS_UP_TO`] points shows its detail points only.
+//! is shown once; a sweep of more than [`super::budget_points::ALL_POINTS_UP_TO`] points shows its
+//! detail points only.
 
 use super::markup::md;
 
@@ -9,28 +10,18 @@ use super::table::{header, row};
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
 
-/// Sweeps up to this many points show the bearings at every point.
-pub(crate) const ALL_POINTS_UP_TO: usize = 100;
-
 /// The section, empty when no record has bearings.
 pub(crate) fn bearings_section(r: &Report) -> String {
     let mut out = String::new();
+    let (shown, all) = super::budget_points::shown_budgets(r);
     let mut points: Vec<&EfficiencyRecord> = Vec::new();
-    for e in r.efficiency.iter().filter(|e| e.budget.as_ref().is_some_and(|b| !b.bearings.is_empty())) {
+    for e in shown.into_iter().filter(|e| e.budget.as_ref().is_some_and(|b| !b.bearings.is_empty())) {
         if !points.iter().any(|p| same_point(p, e)) {
             points.push(e);
         }
     }
     if points.is_empty() {
         return out;
-    }
-    let all = points.len() <= ALL_POINTS_UP_TO;
-    if !all {
-        points.retain(|e| {
-            r.operating_points
-                .iter()
-                .any(|p| p.pinion_torque.si() == e.pinion_torque.si() && p.pinion_speed.si() == e.pinion_speed.si())
-        });
     }
     let u = r.units();
     md!(out, "\n### Bearings\n");

@@ -178,7 +178,8 @@ pub(crate) fn budget_section(r: &Report) -> String {
     cols.extend([power.heading("total"), "mesh %".into(), "η total %".into()]);
     header(&mut out, &cols);
     let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| power.q(&q, 2));
-    for e in &r.efficiency {
+    let (shown, all) = super::budget_points::shown_budgets(r);
+    for e in shown {
         let Some(b) = &e.budget else { continue };
         let mesh = e.budget_mesh_loss();
         let mark = if helical && !e.budget_charges_iso_mesh_loss { "*" } else { "" };
@@ -196,6 +197,9 @@ pub(crate) fn budget_section(r: &Report) -> String {
             fixed(100.0 * b.total_efficiency.0, 3),
         ]);
         row(&mut out, &cells);
+    }
+    if !all {
+        md!(out, "\nAt the detail operating points only (the sweep has more than {} points); records.csv has the budget of every point.", super::budget_points::ALL_POINTS_UP_TO);
     }
     plots_of(&mut out, r, PlotKind::LossBudget);
     out

@@ -1,5 +1,6 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
+pub(crate) mod budget_points;
 pub(crate) mod drive;
 pub(crate) mod headline;
 pub mod markdown;

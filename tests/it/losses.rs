@@ -300,6 +300,42 @@ fn report_budget_and_map() {
     assert!(file("loss_budget.svg").contains("<svg") && file("efficiency_map.svg").contains("<svg"));
 }
 
+/// A sweep of more than 100 points shows its budget at the detail points only, as its efficiency
+/// and bearing tables do: the spec at 20 torques × 10 speeds (200 points, its map left out) keeps
+/// hundreds of points for its sweep plots, but report.md's budget table has a row per detail point
+/// (3 × 3), law (2) and formulation (2), 36, and loss_budget.svg a bar per detail point and law (its
+/// height is 420 px + 18 px a bar: 18 bars); the spec as written (9 points) shows all 9 × 2 × 2.
+#[test]
+fn a_large_sweeps_budget_is_shown_at_its_detail_points() {
+    let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
+    let budget = |src: &str| -> (usize, usize, usize) {
+        let out = gearloss::run_to_files("s.gear", src).unwrap_or_else(|e| panic!("{e:?}"));
+        let file = |name: &str| out.files.iter().find(|(f, _)| f == name).map(|(_, c)| c.clone()).unwrap();
+        let md = file("report.md");
+        let section = &md[md.find("## Loss budget").unwrap()..];
+        let section = &section[..section[3..].find("\n## ").map_or(section.len(), |k| k + 3)];
+        let table = section.split("\n### ").next().unwrap();
+        let rows = table.lines().filter(|l| l.starts_with("| ") && l.contains(" N·m, ")).count();
+        let svg = file("loss_budget.svg");
+        let height: usize = svg.split("height=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap();
+        let json: serde_json::Value = serde_json::from_str(&file("report.json")).unwrap();
+        let kept = json["efficiency"].as_array().unwrap().iter().filter(|e| !e["budget"].is_null()).count();
+        (rows, (height - 420) / 18, kept)
+    };
+    let (rows, bars, _) = budget(&source);
+    assert_eq!((rows, bars), (36, 18));
+    let large = source
+        .replace("pinion_torque   = [94.1, 239.3, 372.6] N*m", "pinion_torque   = 20..300 N*m count 20")
+        .replace("pinion_speed    = [500, 1500, 3000] rpm", "pinion_speed    = 500..3000 rpm count 10")
+        .lines()
+        .filter(|l| !l.contains("efficiency_map("))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let (rows, bars, kept) = budget(&large);
+    assert!(kept > 36 * 4, "the report keeps {kept} budgets for its plots");
+    assert_eq!((rows, bars), (36, 18));
+}
+
 /// Mauz's dip churning was tested up to 60 m/s pitch-line speed: a scene whose fastest point is
 /// beyond (20 000 rpm: v_t = 76.7 m/s on the FZG C pinion) gets one warning; the spec (at most
 /// 6000 rpm, 23 m/s) none.

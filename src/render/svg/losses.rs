@@ -14,15 +14,15 @@ fn parts() -> Vec<&'static str> {
     std::iter::once("mesh (load-dependent)").chain(COLUMNS.iter().map(|c| c.bar)).collect()
 }
 
-/// loss_budget.svg: one bar per operating point and law (the first formulation of each law),
-/// stacked by part; the legend stands beside the plot area.
+/// loss_budget.svg: one bar per operating point and law (the first formulation of each law; the
+/// points of `render::budget_points`), stacked by part; the legend stands beside the plot area.
 pub fn loss_budget(r: &Report) -> Result<String, String> {
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let first = r.efficiency.first().map(|x| x.formulation);
     let power = r.units().power();
-    let bars: Vec<(String, Vec<f64>)> = r
-        .efficiency
-        .iter()
+    let bars: Vec<(String, Vec<f64>)> = crate::render::budget_points::shown_budgets(r)
+        .0
+        .into_iter()
         .filter(|x| Some(x.formulation) == first)
         .filter_map(|x| {
             let b = x.budget.as_ref()?;
