@@ -52,6 +52,10 @@ pub(crate) fn stage_pairs_into(
     Ok((rows, files))
 }
 
+/// A shard's part of a one-pair drive's stage analysed over the sweep: its folder and tally (None
+/// where there is none) and its record files.
+pub(crate) type ShardedStage = (Option<(String, Tally)>, Vec<String>);
+
 /// A scene of one pair run as its one-stage drive, sharded: its stage's pair, analysed over the
 /// scene's whole sweep, run as a pair's shard into the shard's folder. Its folder and tally (for
 /// the manifest) and its record files; none where the stage is not analysed so (another stage
@@ -62,7 +66,7 @@ pub(crate) fn stage_pair_shard(
     shard: Shard,
     (folder, formats): (&ReportFolder, RecordFormats),
     progress: &dyn Progress,
-) -> Result<(Option<(String, Tally)>, Vec<String>), RunError> {
+) -> Result<ShardedStage, RunError> {
     let Some(p) = one_pair_sweep(scene, drive) else { return Ok((None, Vec::new())) };
     let Some(alone) = p.scene.as_ref().filter(|a| check_pair_at_state(a).is_empty()) else {
         return Ok((None, Vec::new()));
