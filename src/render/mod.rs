@@ -3,6 +3,7 @@
 pub(crate) mod budget_points;
 pub(crate) mod drive;
 pub(crate) mod headline;
+pub(crate) mod json_text;
 pub mod markdown;
 pub(crate) mod markdown_bearings;
 pub(crate) mod markdown_dynamics;
@@ -36,12 +37,9 @@ pub struct RenderedReport {
 }
 
 /// report.json: the report's serde data, pretty-printed, each array of plain values (numbers,
-/// strings, `null`) on one line so that a plot's series stays readable.
+/// strings, `null`) on one line so that a plot's series stays readable ([`json_text`]).
 pub fn render_json(report: &Report) -> String {
-    let pretty = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
-    let mut s = inline_plain_arrays(&pretty);
-    s.push('\n');
-    s
+    json_text::json_text(report, "the report")
 }
 
 /// Joins every array of serde_json's pretty output whose elements are all plain values onto the
@@ -54,47 +52,9 @@ pub fn render_json(report: &Report) -> String {
 /// assert_eq!(joined, "{\n  \"x\": [1.5, null],\n  \"y\": [\n    [1, 2]\n  ]\n}");
 /// ```
 pub fn inline_plain_arrays(pretty: &str) -> String {
-    // Written into one string as it goes: no line or joined array is allocated on its own.
-    let lines: Vec<&str> = pretty.lines().collect();
-    let mut out = String::with_capacity(pretty.len());
-    let mut i = 0;
-    while i < lines.len() {
-        if i > 0 {
-            out.push('\n');
-        }
-        let line = lines[i];
-        if line.ends_with('[') {
-            // The elements up to the matching `]`, if each is a plain value on a line of its own.
-            let mut j = i + 1;
-            let closed = loop {
-                let Some(next) = lines.get(j) else { break None };
-                let t = next.trim_start();
-                if t == "]" || t == "]," {
-                    break Some(t);
-                }
-                let plain = !(t.ends_with('[') || t.ends_with('{') || t.starts_with(']') || t.starts_with('}'));
-                if !plain {
-                    break None;
-                }
-                j += 1;
-            };
-            if let Some(close) = closed {
-                out.push_str(line);
-                for (k, item) in lines[i + 1..j].iter().enumerate() {
-                    if k > 0 {
-                        out.push_str(", ");
-                    }
-                    out.push_str(item.trim_start().trim_end_matches(','));
-                }
-                out.push_str(close);
-                i = j + 1;
-                continue;
-            }
-        }
-        out.push_str(line);
-        i += 1;
-    }
-    out
+    let mut bytes = pretty.as_bytes().to_vec();
+    json_text::join_plain_arrays(&mut bytes);
+    String::from_utf8(bytes).expect("joining whole lines and elements keeps the text UTF-8")
 }
 
 /// Renders every file of the report folder; `timings`, the numerics study's run times (not part of

@@ -25,10 +25,7 @@ use crate::report::drive::DriveReport;
 
 /// report.json of a drive: pretty, plain arrays on one line.
 pub(crate) fn render_drive_json(report: &DriveReport) -> String {
-    let pretty = serde_json::to_string_pretty(report).expect("the report serialises: all keys are strings");
-    let mut s = crate::render::inline_plain_arrays(&pretty);
-    s.push('\n');
-    s
+    crate::render::json_text::json_text(report, "the report")
 }
 
 /// Every file of a drive's report folder.

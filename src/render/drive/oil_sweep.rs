@@ -54,9 +54,7 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Result<Vec<(Str
         md!(out, "\n![efficiency against oil temperature]({OIL_SWEEP_PLOT})");
         files.push((OIL_SWEEP_PLOT.to_string(), plot(r)?));
     }
-    let pretty = serde_json::to_string_pretty(r).expect("the comparison serialises");
-    let mut json = crate::render::inline_plain_arrays(&pretty);
-    json.push('\n');
+    let json = crate::render::json_text::json_text(r, "the comparison");
     files.splice(0..0, [("report.md".into(), out), ("report.json".into(), json)]);
     Ok(files)
 }
