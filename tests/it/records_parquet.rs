@@ -76,7 +76,7 @@ fn assert_parquet_is_the_csv(dir: &Path, scene: &str) {
     let csv = std::fs::read_to_string(dir.join("records.csv")).unwrap();
     let mut lines = csv.lines();
     let header: Vec<String> = split_csv(lines.next().unwrap());
-    let (columns, rows) = parquet(&dir);
+    let (columns, rows) = parquet(dir);
     let names: Vec<&str> = columns.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(&names[..header.len()], header.iter().map(String::as_str).collect::<Vec<_>>().as_slice(), "{scene}");
     let lines: Vec<&str> = lines.collect();
