@@ -88,7 +88,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         speed_unit: unit_written(&scene.operating.pinion_speed, map.map(|m| &m.1), DisplayUnit::rpm),
         torque_unit: unit_written(&scene.operating.pinion_torque, map.map(|m| &m.0), DisplayUnit::newton_metre),
         unit_system,
-        findings: super::drive_findings::findings(drive, &points, units),
+        findings: super::drive_findings::findings((drive, scene.gearbox.is_some()), &points, units),
         maps: super::drive_map::maps(scene, eval, &laws),
         heat: super::thermal_sections::ThermalSections {
             housing: scene

@@ -17,10 +17,16 @@ fn place_at(position: Option<f64>, units: Units) -> String {
     position.map_or_else(|| "without `at`".into(), |x| format!("at {}", units.length().with(x, 2)))
 }
 
-/// What the reader must know: how one pair on a drive cycle was read as its one-stage drive, a
-/// shaft whose axial force goes to its first place by default, points where both ends deliver, a
-/// fixed point that did not settle, a bearing beyond its static rating.
-pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: Units) -> Vec<Finding> {
+/// What the reader must know (`described_gearbox`: whether the scene has a `gearbox` block): how one
+/// pair on a drive cycle was read as its one-stage drive, a drive without bearings (a note where one
+/// pair was written without a gearbox), a shaft whose axial force goes to its first place by
+/// default, points where both ends deliver, a fixed point that did not settle, a bearing beyond its
+/// static rating.
+pub(super) fn findings(
+    (drive, described_gearbox): (&SceneDrive, bool),
+    points: &[DrivePointReport],
+    units: Units,
+) -> Vec<Finding> {
     let layout = &drive.layout;
     let mut out = Vec::new();
     if drive.one_pair {
@@ -105,9 +111,17 @@ pub(super) fn findings(drive: &SceneDrive, points: &[DrivePointReport], units: U
         }
     }
     if layout.shafts.iter().all(|s| s.bearings.is_empty()) {
-        out.push(Finding {
-            severity: Severity::Warning,
-            message: "no shaft of the drive has bearings: its losses are the meshes', the seals' and the gears' no-load parts only (no bearing loads, no bearing losses, no shaft statics)".to_string(),
+        out.push(if drive.one_pair && !described_gearbox {
+            // One pair written without a gearbox: what its own report always was, not an omission.
+            Finding {
+                severity: Severity::Note,
+                message: "the scene describes no gearbox: the drive's losses are its mesh's only (no bearings, seals or churning; a `gearbox` block adds them)".to_string(),
+            }
+        } else {
+            Finding {
+                severity: Severity::Warning,
+                message: "no shaft of the drive has bearings: its losses are the meshes', the seals' and the gears' no-load parts only (no bearing loads, no bearing losses, no shaft statics)".to_string(),
+            }
         });
     }
     for p in points.iter().filter(|p| !p.point.settled()) {
