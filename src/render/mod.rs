@@ -37,7 +37,7 @@ pub struct RenderedReport {
 }
 
 /// report.json: the report's serde data, pretty-printed, each array of plain values (numbers,
-/// strings, `null`) on one line so that a plot's series stays readable ([`json_text`]).
+/// strings, `null`) on one line so that a plot's series stays readable (`render/json_text.rs`).
 pub fn render_json(report: &Report) -> String {
     json_text::json_text(report, "the report")
 }
