@@ -28,6 +28,14 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         r.speed_at.name(),
         if r.laws.is_empty() { "none (each mesh passes its power whole)".to_string() } else { r.laws.join(", ") }
     );
+    // A scene of one pair: its mesh's own report first, where the reader of one pair looks for it.
+    if let Some(dir) = r.stage_pairs.iter().find(|p| p.point.is_none()).and_then(|p| p.folder.as_ref()) {
+        md!(
+            out,
+            "The scene is one pair, run as its one-stage drive: the pair's own report — its geometry, the contact along the line of action, each law's efficiency along the mesh cycle and every analysis of one pair the scene asks for, over the whole sweep — is [{dir}/report.md]({dir}/report.md). This report is the drive's: its power at both ends, its losses part by part{}.\n",
+            if r.cycle.is_some() { ", its drive cycle" } else { "" }
+        );
+    }
     if r.points.is_empty() && r.cycle.is_some() {
         md!(out, "No operating points are given: the drive cycle below gives the box its load.\n");
     } else if r.points.is_empty() {
