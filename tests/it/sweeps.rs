@@ -208,7 +208,8 @@ fn tree(dir: &Path) -> Vec<String> {
 /// sweep in `stages/pair/`. Sharded, each shard runs its points of that pair too (its records in
 /// the shard's `stages/pair/`, its tally in the manifest), and the merge folds them as a pair's
 /// shards: every file of the merged folder, the stage's among them, equals the single run's byte
-/// for byte (CSV and Parquet records). A shard whose stage records were edited is refused, named.
+/// for byte (CSV and Parquet records). A shard whose manifest lost the stage's tally, or whose stage
+/// records were edited, is refused, named.
 #[test]
 fn a_one_pair_drives_stage_is_sharded_with_it() {
     let out = temp("stage-shards");
@@ -236,6 +237,17 @@ fn a_one_pair_drives_stage_is_sharded_with_it() {
     for f in &files {
         assert!(std::fs::read(single.join(f)).unwrap() == std::fs::read(merged.join(f)).unwrap(), "{f} differs");
     }
+    // A shard whose manifest lost the stage's tally (written by hand) is refused, named.
+    let manifest = shards[1].join("shard.json");
+    let kept = std::fs::read_to_string(&manifest).unwrap();
+    let mut m: serde_json::Value = serde_json::from_str(&kept).unwrap();
+    m.as_object_mut().unwrap().remove("stage_pair").expect("the shard's manifest holds the stage's tally");
+    std::fs::write(&manifest, serde_json::to_string(&m).unwrap()).unwrap();
+    let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("bad")).output().unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("shard-2-of-2 holds no records of the stage's pair in stages/pair"), "{err}");
+    std::fs::write(&manifest, kept).unwrap();
     let edited = shards[1].join("stages/pair/records.csv");
     let text = std::fs::read_to_string(&edited).unwrap();
     std::fs::write(&edited, text.replacen(',', ";", 1)).unwrap();
