@@ -229,29 +229,16 @@ fn a_constant_speed_loses_the_steady_points_loss_times_the_time() {
 /// cycle turns the drive.
 #[test]
 fn a_cycle_that_spins_a_dipped_stage_past_its_tested_speed_is_warned() {
-    let dip = "lubrication = dip(pinion_immersion = 5 mm, wheel_immersion = 20 mm, axis_height = 80 mm, housing_width = 150 mm)";
+    use crate::losses::{assert_first_stage_warned, churning_warnings, ev_first_pinion_v_t, EV_DIP};
     let warned = |top: f64| -> Vec<String> {
         let trace = format!("time [s], speed [m/s]\n0, 0\n60, {top}\n120, 0\n");
         let edits = [
-            ("lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)", dip),
+            ("lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)", EV_DIP),
             ("wheel_radius = 0.335 m", "wheel_radius = 0.1 m"),
         ];
-        let scene = cycle_scene(&trace, false, &edits);
-        let drive = scene.drive.as_ref().unwrap();
-        let eval = gearloss::evaluate::evaluate_drive(&scene, drive);
-        let report = gearloss::report::drive::build_drive_report(&scene, drive, &eval);
-        report.findings.into_iter().filter(|f| f.message.contains("Mauz")).map(|f| f.message).collect()
+        churning_warnings(&cycle_scene(&trace, false, &edits))
     };
-    let r_1 = 1.5177e-3 * 23.0 / (2.0 * 23.4f64.to_radians().cos());
-    let v_t = 30.0 / 0.1 * (68.0 / 23.0) * (78.0 / 20.0) * r_1;
-    let found = warned(30.0);
-    assert_eq!(found.len(), 1, "{found:?}");
-    assert!(
-        found[0]
-            .starts_with(&format!("stage `first`: gear churning: the fastest pitch-line speed, v_t = {v_t:.1} m/s")),
-        "{}",
-        found[0]
-    );
+    assert_first_stage_warned(&warned(30.0), ev_first_pinion_v_t(30.0 / 0.1));
     assert_eq!(warned(25.0), Vec::<String>::new());
 }
 

@@ -363,31 +363,43 @@ fn churning_beyond_its_tested_speed_is_flagged() {
 fn a_drives_churning_beyond_its_tested_speed_is_flagged_by_stage() {
     let text = std::fs::read_to_string(crate::root().join("specs/ev_two_stage_reducer.gear")).unwrap();
     let injection = "lubrication = injection(flow = 2.5 l/min, jet_speed = 0.4 m/s)";
-    let dip = "lubrication = dip(pinion_immersion = 5 mm, wheel_immersion = 20 mm, axis_height = 80 mm, housing_width = 150 mm)";
     assert_eq!(text.matches(injection).count(), 2);
-    let dipped = text.replace(injection, dip);
-    let warnings = |src: &str| -> Vec<String> {
-        let scene = gearloss::check("ev.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false)));
-        let drive = scene.drive.as_ref().unwrap();
-        let eval = gearloss::evaluate::evaluate_drive(&scene, drive);
-        let report = gearloss::report::drive::build_drive_report(&scene, drive, &eval);
-        report.findings.into_iter().filter(|f| f.message.contains("Mauz")).map(|f| f.message).collect()
+    let dipped = text.replace(injection, EV_DIP);
+    let warnings = |src: &str| {
+        churning_warnings(&gearloss::check("ev.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false))))
     };
     assert_eq!(warnings(&dipped), Vec::<String>::new());
     let fast = dipped.replace("output_speed  = [500, 1000] rpm", "output_speed  = [500, 3000] rpm");
     assert_ne!(fast, dipped);
-    let found = warnings(&fast);
-    let omega_out = 3000.0 * std::f64::consts::PI / 30.0;
-    let r_1 = 1.5177e-3 * 23.0 / (2.0 * 23.4f64.to_radians().cos());
-    let v_t = omega_out * (68.0 / 23.0) * (78.0 / 20.0) * r_1;
+    let v_t = ev_first_pinion_v_t(3000.0 * std::f64::consts::PI / 30.0);
     assert!((v_t - 68.9).abs() < 0.05, "{v_t}");
+    assert_first_stage_warned(&warnings(&fast), v_t);
+}
+
+/// Dip lubrication of the EV reducer's stages, for the churning checks.
+pub(crate) const EV_DIP: &str =
+    "lubrication = dip(pinion_immersion = 5 mm, wheel_immersion = 20 mm, axis_height = 80 mm, housing_width = 150 mm)";
+
+/// The EV reducer's first pinion's pitch-line speed (m/s) at the output's ω_out (rad/s):
+/// ω_out (68/23)(78/20) m_n z_1/(2 cos β), no profile shift (r_w = r).
+pub(crate) fn ev_first_pinion_v_t(omega_out: f64) -> f64 {
+    let r_1 = 1.5177e-3 * 23.0 / (2.0 * 23.4f64.to_radians().cos());
+    omega_out * (68.0 / 23.0) * (78.0 / 20.0) * r_1
+}
+
+/// A drive scene's warnings of churning read beyond Mauz's tested speed.
+pub(crate) fn churning_warnings(scene: &gearloss::Scene) -> Vec<String> {
+    let drive = scene.drive.as_ref().unwrap();
+    let eval = gearloss::evaluate::evaluate_drive(scene, drive);
+    let report = gearloss::report::drive::build_drive_report(scene, drive, &eval);
+    report.findings.into_iter().filter(|f| f.message.contains("Mauz")).map(|f| f.message).collect()
+}
+
+/// `found` is one warning: stage `first`'s, at `v_t` (m/s, to the 0.1 printed).
+pub(crate) fn assert_first_stage_warned(found: &[String], v_t: f64) {
     assert_eq!(found.len(), 1, "{found:?}");
-    assert!(
-        found[0]
-            .starts_with(&format!("stage `first`: gear churning: the fastest pitch-line speed, v_t = {v_t:.1} m/s")),
-        "{}",
-        found[0]
-    );
+    let words = format!("stage `first`: gear churning: the fastest pitch-line speed, v_t = {v_t:.1} m/s");
+    assert!(found[0].starts_with(&words), "{}", found[0]);
 }
 
 /// The map's best point is located on the model, not read off the grid: for the spec gearbox (its
