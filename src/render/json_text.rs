@@ -29,7 +29,7 @@ pub(crate) fn join_plain_arrays(pretty: &mut Vec<u8>) {
             write += 1;
         }
         let end = line_end(pretty, read);
-        if pretty[..end].ends_with(b"[") {
+        if pretty[read..end].ends_with(b"[") {
             if let Some((close, after)) = plain_elements_end(pretty, end) {
                 write = copy(pretty, read..end, write);
                 let mut item = end + 1;
@@ -177,6 +177,12 @@ mod tests {
         assert_eq!(joined, joined_by_lines(&pretty));
         assert!(joined.contains("\"x\": [1.5, null, \"a, b [c]\", \"µ ≥ 0\"]"), "{joined}");
         assert!(joined.contains("[1, 2],"), "{joined}");
+        // Text serde_json does not write (an empty line, an array left open) reads as the reference reads it.
+        for text in ["{\n  \"a\": [\n    1\n  ],\n\n  \"b\": [\n\n    2\n  ]\n}", "[\n  1,\n  2"] {
+            let mut bytes = text.as_bytes().to_vec();
+            join_plain_arrays(&mut bytes);
+            assert_eq!(String::from_utf8(bytes).unwrap(), joined_by_lines(text), "{text:?}");
+        }
         let array = serde_json::to_string_pretty(&serde_json::json!([1, [2, 3]])).unwrap();
         let mut bytes = array.clone().into_bytes();
         join_plain_arrays(&mut bytes);

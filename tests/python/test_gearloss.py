@@ -705,6 +705,25 @@ def test_a_one_pair_drives_stage_is_its_pair_over_the_sweep(tmp_path):
             assert x == y or abs(x - y) <= 1e-12 * max(abs(x), abs(y)), c
 
 
+def test_pair_is_the_scenes_pair_however_it_ran():
+    """`pair` is a pair's report itself, the one-pair drive's `stages/pair` report for a pair on a
+    drive cycle (its efficiency table the pair's own: a row per point, law and formulation), and a
+    LookupError naming `stage_pairs` for a drive of several stages."""
+    alone = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    assert alone.pair is alone
+    cycle = gearloss.run(scene(ROOT / "tests/specs/ok/cycle_pair_udds.gear"))
+    pair = cycle.pair
+    assert pair.data["geometry"] and len(pair.efficiency) == len(cycle.drive_records) == 4
+    assert set(pair.efficiency["pinion_torque_N_m"]) == {20.0, 100.0}
+    drive = gearloss.run(scene(ROOT / "specs/ev_two_stage_reducer.gear"))
+    try:
+        drive.pair
+    except LookupError as e:
+        assert "stage_pairs" in str(e)
+    else:
+        raise AssertionError("a drive of two stages has no one pair")
+
+
 def test_one_pair_on_a_drive_cycle_is_a_one_stage_drive():
     """One pair with a vehicle runs as its one-stage drive: its records are a drive's (stage `pair`
     from `pinion_shaft` to `wheel_shaft`), its cycle a table, and its four points' P_in are

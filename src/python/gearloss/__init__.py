@@ -485,6 +485,29 @@ class Report:
         self._table_of("stage_pairs", "drive")
         return {r["folder"]: self._sub(r["folder"]) for r in self.data.get("stage_pairs", []) if r.get("folder")}
 
+    @property
+    def pair(self) -> "Report":
+        """The report of the scene's one pair, with all of a pair's tables, however the scene ran:
+        this report for a scene of one pair reported as a pair, its pair's own report
+        (``stages/pair``, over the scene's whole sweep) for one run as its one-stage drive (a pair on
+        a drive cycle). ``LookupError`` for a drive of several stages (its stage meshes are
+        :attr:`stage_pairs`) and for a report of several oil temperatures (``runs[name].pair``)."""
+        shape = self._shape()
+        if shape in ("pair", "shard"):
+            return self
+        sweep = [r for r in self.data.get("stage_pairs", []) if r.get("folder") and "point" not in r]
+        if shape == "drive" and sweep:
+            return self._sub(sweep[0]["folder"])
+        if shape == "runs":
+            raise LookupError(
+                f"this report holds runs at several oil temperatures: read the pair of one of them, "
+                f"report.runs[name].pair ({', '.join(self.runs)})"
+            )
+        raise LookupError(
+            "`pair` is the report of a scene of one pair; this drive has several stages (or its one stage was not "
+            "analysed over its sweep): its stage meshes analysed as pairs are report.stage_pairs"
+        )
+
     def _sub(self, folder: str) -> "Report":
         """The report in ``folder`` inside this one's."""
         if isinstance(self._files, _Folder):
