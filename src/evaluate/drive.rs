@@ -161,6 +161,7 @@ fn stream_rows(
             let record = DriveRecord { i: start + i, flow: row.point.flow, row: &row, outside: &outside };
             let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside);
             tally.add(start + i, &row.point);
+            tally.static_loads.add(setup.layout(), start + i, &row.point);
             tally.add_cells(start + i, &cells);
             if row.balance.is_some_and(|b| b.status != crate::thermal::BalanceStatus::Ok) {
                 tally.off_balance_rows += 1;
@@ -266,6 +267,9 @@ pub struct DriveTally {
     pub implausible_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_implausible: Option<(usize, super::drive_plausibility::StageImplausible)>,
+    /// Each bearing place's worst P_0/C_0 over the rows and the first row it is met at.
+    #[serde(default, skip_serializing_if = "super::drive_static_loads::StaticLoads::is_empty")]
+    pub(crate) static_loads: super::drive_static_loads::StaticLoads,
 }
 
 /// For serde: a count left out when it is zero.
@@ -288,6 +292,7 @@ impl DriveTally {
         self.first_off_balance = self.first_off_balance.or(next.first_off_balance);
         self.implausible_rows += next.implausible_rows;
         self.first_implausible = self.first_implausible.take().or(next.first_implausible);
+        self.static_loads.absorb(next.static_loads);
         if let Some((e, i)) = next.least {
             if self.least.is_none_or(|(l, _)| e < l) {
                 self.least = Some((e, i));

@@ -117,6 +117,11 @@ impl<'a> DriveSetup<'a> {
             .collect()
     }
 
+    /// The drive's layout: its shafts, stages and chain.
+    pub(crate) fn layout(&self) -> &'a crate::drive::Drive {
+        &self.drive.layout
+    }
+
     /// The ends the drive's operating block gives its torque and speed at.
     pub(crate) fn operating_ends(&self) -> crate::drive::DriveOperating {
         self.drive.layout.operating

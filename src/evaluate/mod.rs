@@ -18,6 +18,7 @@ pub(crate) mod drive_map_cell;
 pub(crate) mod drive_plausibility;
 pub(crate) mod drive_records;
 pub(crate) mod drive_setup;
+pub(crate) mod drive_static_loads;
 pub(crate) mod drive_thermal;
 pub(crate) mod dynamics;
 pub(crate) mod evaluation;

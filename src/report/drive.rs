@@ -88,7 +88,11 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         speed_unit: unit_written(&scene.operating.pinion_speed, map.map(|m| &m.1), DisplayUnit::rpm),
         torque_unit: unit_written(&scene.operating.pinion_torque, map.map(|m| &m.0), DisplayUnit::newton_metre),
         unit_system,
-        findings: super::drive_findings::findings((drive, scene.gearbox.is_some()), &points, units),
+        findings: super::drive_findings::findings(
+            (drive, scene.gearbox.is_some()),
+            (&points, &eval.tally.static_loads, &|i| row_point(scene, drive, &laws, i)),
+            units,
+        ),
         maps: super::drive_map::maps(scene, eval, &laws),
         heat: super::thermal_sections::ThermalSections {
             housing: scene
@@ -179,6 +183,14 @@ fn thermal_records(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) ->
 }
 
 /// Row `i` of the operating points in words: its point, law and formulation.
+/// The operating point of row `i` (torque-major, then law, then formulation), in words.
+fn row_point(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> String {
+    let per_point = laws.len() * scene.analyses.efficiency.as_ref().map_or(0, Vec::len);
+    let point = i / per_point.max(1);
+    let n = scene.operating.pinion_speed.values.len();
+    point_words(scene, drive, point / n, point % n)
+}
+
 fn row_words(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> String {
     let formulations = scene.analyses.efficiency.clone().unwrap_or_default();
     let per_point = laws.len() * formulations.len();

@@ -9,6 +9,7 @@ use super::finding::{Finding, Severity};
 use super::units::Units;
 use crate::drive::PowerFlow;
 use crate::evaluate::drive::DriveEvaluation;
+use crate::evaluate::drive_static_loads::StaticLoads;
 use crate::model::{Scene, SceneDrive};
 
 /// Where a bearing place is: `at 30.00 mm` (in the report's length unit), or `without \`at\`` (a
@@ -21,10 +22,10 @@ fn place_at(position: Option<f64>, units: Units) -> String {
 /// pair on a drive cycle was read as its one-stage drive, a drive without bearings (a note where one
 /// pair was written without a gearbox), a shaft whose axial force goes to its first place by
 /// default, points where both ends deliver, a fixed point that did not settle, a bearing beyond its
-/// static rating.
+/// static rating at any row (`static_loads`, the tally's; `row_point` names a row's operating point).
 pub(super) fn findings(
     (drive, described_gearbox): (&SceneDrive, bool),
-    points: &[DrivePointReport],
+    (points, static_loads, row_point): (&[DrivePointReport], &StaticLoads, &dyn Fn(usize) -> String),
     units: Units,
 ) -> Vec<Finding> {
     let layout = &drive.layout;
@@ -58,20 +59,15 @@ pub(super) fn findings(
             });
         }
     }
-    let loads = points.iter().flat_map(|p| {
-        layout.shafts.iter().zip(&p.point.shafts).flat_map(move |(shaft, s)| {
-            s.bearings.iter().filter(|b| b.is_shaft_place()).zip(&shaft.bearings).map(move |(b, bearing)| {
-                super::bearing_checks::BearingAtPoint {
-                    place: format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind),
-                    c0: bearing.static_load_rating,
-                    radial: b.radial_load,
-                    axial: b.axial_load,
-                    point: &p.label,
-                }
-            })
-        })
-    });
-    out.extend(super::bearing_checks::overloaded(loads));
+    // Every row's loads, from the tally: the worst row of each place beyond its static rating.
+    let places = layout.shafts.iter().flat_map(|shaft| shaft.bearings.iter().map(move |b| (shaft, b)));
+    for ((shaft, b), worst) in places.zip(&static_loads.0) {
+        let (Some((ratio, row)), Some(c0)) = (*worst, b.static_load_rating) else { continue };
+        if ratio > crate::losses::bearing_type::MAX_STATIC_LOAD_RATIO {
+            let place = format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind.name());
+            out.push(super::bearing_checks::overload_finding(&place, ratio, c0, &row_point(row)));
+        }
+    }
     for (j, shaft) in layout.shafts.iter().enumerate() {
         let helical = layout.stages.iter().any(|s| s.hand.is_some() && s.member_on(j).is_some());
         if helical && !shaft.locating_given && !shaft.bearings.is_empty() {

@@ -735,3 +735,33 @@ fn each_gears_windage_acts_on_its_own_shaft() {
         assert!(motor.gear_no_load < p.stages[0].no_load);
     }
 }
+
+/// A bearing beyond its static rating is found over every row of the sweep, not only the rows the
+/// report keeps (the first 12): the lay shaft's C_0 = 1.5 kN fixture at 11 output torques × 2
+/// speeds (22 rows) passes P_0/C_0 = 1 only at its top torques, beyond the kept rows, and warns at
+/// its worst row in the very words and numbers of the same scene run at that torque alone (whose 2
+/// rows are all kept); at 10–60 N·m alone, nothing.
+#[test]
+fn a_bearing_beyond_its_rating_is_found_past_the_kept_rows() {
+    let text = std::fs::read_to_string(crate::root().join("tests/specs/ok/bearing_beyond_static_rating.gear")).unwrap();
+    let torques = "output_torque = [50, 100] N*m";
+    assert!(text.contains(torques));
+    let warnings = |t: &str| -> Vec<String> {
+        let scene = gearloss::check("b.gear", &text.replace(torques, &format!("output_torque = {t} N*m")))
+            .unwrap_or_else(|e| panic!("{}", e.render(false)));
+        let drive = scene.drive.as_ref().unwrap();
+        let eval = evaluate_drive(&scene, drive);
+        assert!(eval.tally.rows <= 12 || eval.rows.len() == 12, "the report keeps the first 12 rows");
+        let report = gearloss::report::drive::build_drive_report(&scene, drive, &eval);
+        report
+            .findings
+            .into_iter()
+            .filter(|f| f.message.contains("beyond its static rating"))
+            .map(|f| f.message)
+            .collect()
+    };
+    let all = warnings("[10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110]");
+    assert!(!all.is_empty() && all.iter().all(|w| w.contains("T_out = 110 N·m")), "{all:?}");
+    assert_eq!(all, warnings("[110]"));
+    assert_eq!(warnings("[10, 20, 30, 40, 50, 60]"), Vec::<String>::new());
+}
