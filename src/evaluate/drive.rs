@@ -161,7 +161,7 @@ fn stream_rows(
             let record = DriveRecord { i: start + i, flow: row.point.flow, row: &row, outside: &outside };
             let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside);
             tally.add(start + i, &row.point);
-            tally.static_loads.add(setup.layout(), start + i, &row.point);
+            tally.static_loads.add_drive_row(setup.layout(), start + i, &row.point);
             tally.add_cells(start + i, &cells);
             if row.balance.is_some_and(|b| b.status != crate::thermal::BalanceStatus::Ok) {
                 tally.off_balance_rows += 1;
@@ -267,9 +267,9 @@ pub struct DriveTally {
     pub implausible_rows: usize,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub first_implausible: Option<(usize, super::drive_plausibility::StageImplausible)>,
-    /// Each bearing place's worst P_0/C_0 over the rows and the first row it is met at.
-    #[serde(default, skip_serializing_if = "super::drive_static_loads::StaticLoads::is_empty")]
-    pub(crate) static_loads: super::drive_static_loads::StaticLoads,
+    /// Each bearing place's worst static equivalent load P_0 over the rows and its first row.
+    #[serde(default, skip_serializing_if = "super::static_loads::StaticLoads::is_empty")]
+    pub(crate) static_loads: super::static_loads::StaticLoads,
 }
 
 /// For serde: a count left out when it is zero.

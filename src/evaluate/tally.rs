@@ -156,6 +156,10 @@ pub struct Tally {
     pub implausible: Vec<ImplausibleAt>,
     pub extremes: Vec<SweepExtremes>,
     pub dynamics: Vec<DynamicsTally>,
+    /// Each bearing place of the budget: its worst static equivalent load P_0 over the points and
+    /// the first point (0-based) it is met at.
+    #[serde(default, skip_serializing_if = "super::static_loads::StaticLoads::is_empty")]
+    pub(crate) static_loads: super::static_loads::StaticLoads,
 }
 
 impl Tally {
@@ -189,6 +193,7 @@ impl Tally {
                 None => self.extremes.push(e),
             }
         }
+        self.static_loads.absorb(o.static_loads);
         for d in o.dynamics {
             match self.dynamics.iter_mut().find(|x| x.formulation == d.formulation) {
                 Some(x) => {
@@ -217,6 +222,9 @@ impl Tally {
                 if t.first_non_finite.is_none() {
                     t.first_non_finite = Some((point, column.to_string()));
                 }
+            }
+            if let Some(b) = row.budget.as_ref().filter(|_| row.kind == RowKind::Efficiency) {
+                t.static_loads.add(point, b.bearings.iter().map(|l| Some((l.radial_load, l.axial_load))));
             }
             match row.kind {
                 RowKind::Efficiency => t.extremes.push(SweepExtremes {

@@ -9,7 +9,7 @@ use super::finding::{Finding, Severity};
 use super::units::Units;
 use crate::drive::PowerFlow;
 use crate::evaluate::drive::DriveEvaluation;
-use crate::evaluate::drive_static_loads::StaticLoads;
+use crate::evaluate::static_loads::StaticLoads;
 use crate::model::{Scene, SceneDrive};
 
 /// Where a bearing place is: `at 30.00 mm` (in the report's length unit), or `without \`at\`` (a
@@ -62,7 +62,8 @@ pub(super) fn findings(
     // Every row's loads, from the tally: the worst row of each place beyond its static rating.
     let places = layout.shafts.iter().flat_map(|shaft| shaft.bearings.iter().map(move |b| (shaft, b)));
     for ((shaft, b), worst) in places.zip(&static_loads.0) {
-        let (Some((ratio, row)), Some(c0)) = (*worst, b.static_load_rating) else { continue };
+        let (Some((p0, row)), Some(c0)) = (*worst, b.static_load_rating.filter(|c| *c > 0.0)) else { continue };
+        let ratio = p0 / c0;
         if ratio > crate::losses::bearing_type::MAX_STATIC_LOAD_RATIO {
             let place = format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind.name());
             out.push(super::bearing_checks::overload_finding(&place, ratio, c0, &row_point(row)));

@@ -113,7 +113,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         transmission_error: Vec::new(),
     };
     if let Some(g) = &scene.gearbox {
-        report.findings.extend(pair_bearing_findings(scene, g, &report.efficiency));
+        report.findings.extend(pair_bearing_findings(scene, g, &tally.static_loads));
     }
     if let Some(t) = &eval.teeth {
         with_teeth(&mut report, scene, eval, t);
@@ -254,26 +254,22 @@ fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Pla
 
 pub use non_finite::non_finite_paths;
 
-/// The pair's bearings beyond their static rating at a reported point (one warning a bearing).
+/// The pair's bearings beyond their static rating at any point of the sweep (one warning a bearing,
+/// at its worst point: the tally's, every point's loads).
 fn pair_bearing_findings(
     scene: &Scene,
     g: &crate::losses::Gearbox,
-    records: &[friction::EfficiencyRecord],
+    static_loads: &crate::evaluate::static_loads::StaticLoads,
 ) -> Vec<finding::Finding> {
-    let labels: Vec<String> =
-        records.iter().map(|r| crate::evaluate::cases::case_at(&scene.operating, r.case).label).collect();
-    let loads = records.iter().zip(&labels).filter_map(|(r, label)| Some((r.budget.as_ref()?, label))).flat_map(
-        |(budget, label)| {
-            losses::bearing_places(g).enumerate().zip(&budget.bearings).map(move |((k, (shaft, b)), l)| {
-                bearing_checks::BearingAtPoint {
-                    place: format!("{shaft} shaft, bearing {} ({})", k + 1, b.kind.name()),
-                    c0: b.static_load_rating,
-                    radial: l.radial_load.si(),
-                    axial: l.axial_load.si(),
-                    point: label,
-                }
-            })
-        },
-    );
-    bearing_checks::overloaded(loads)
+    let mut out = Vec::new();
+    for ((k, (shaft, b)), worst) in losses::bearing_places(g).enumerate().zip(&static_loads.0) {
+        let (Some((p0, point)), Some(c0)) = (*worst, b.static_load_rating.filter(|c| *c > 0.0)) else { continue };
+        let ratio = p0 / c0;
+        if ratio > crate::losses::bearing_type::MAX_STATIC_LOAD_RATIO {
+            let place = format!("{shaft} shaft, bearing {} ({})", k + 1, b.kind.name());
+            let at = crate::evaluate::cases::case_at(&scene.operating, point).label;
+            out.push(bearing_checks::overload_finding(&place, ratio, c0, &at));
+        }
+    }
+    out
 }

@@ -336,6 +336,53 @@ fn a_large_sweeps_budget_is_shown_at_its_detail_points() {
     assert_eq!((rows, bars), (36, 18));
 }
 
+/// A pair's bearing beyond its static rating is found at any point of its sweep, not only at the
+/// points its report keeps for its plots: the spec with C_0 = 4 kN on the pinion shaft's bearings,
+/// 401 pinion torques at 500 rpm from 50 to 250 N·m (P_0/C_0 ≤ 0.9) but for one point the report
+/// does not keep set to 372.6 N·m, warns at that point in the very words and numbers of the same
+/// pair run at 372.6 N·m alone; without it, nothing.
+#[test]
+fn a_pairs_bearing_beyond_its_rating_is_found_at_any_point() {
+    let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
+    let rated = source.replacen(
+        "bearing(type = cylindrical_roller, bore = 30 mm, outside = 90 mm, count = 2)",
+        "bearing(type = cylindrical_roller, bore = 30 mm, outside = 90 mm, count = 2, static_load_rating = 4 kN)",
+        1,
+    );
+    let at = |torques: &[f64]| -> String {
+        let list: Vec<String> = torques.iter().map(|t| format!("{t}")).collect();
+        rated
+            .replace(
+                "pinion_torque   = [94.1, 239.3, 372.6] N*m",
+                &format!("pinion_torque   = [{}] N*m", list.join(", ")),
+            )
+            .replace("pinion_speed    = [500, 1500, 3000] rpm", "pinion_speed    = [500] rpm")
+            .lines()
+            .filter(|l| !l.contains("efficiency_map("))
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let warnings = |src: &str| -> Vec<String> {
+        let report =
+            gearloss::report_of(&gearloss::check("s.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false))));
+        report
+            .findings
+            .into_iter()
+            .filter(|f| f.message.contains("beyond its static rating"))
+            .map(|f| f.message)
+            .collect()
+    };
+    let mut torques: Vec<f64> = (0..401).map(|k| 50.0 + 0.5 * f64::from(k)).collect();
+    let scene = gearloss::check("s.gear", &at(&torques)).unwrap();
+    let plan = gearloss::Plan::new(&scene.operating, None, &[]);
+    let hidden = (100..300).find(|k| !plan.kept(*k)).expect("a point the report does not keep");
+    assert_eq!(warnings(&at(&torques)), Vec::<String>::new());
+    torques[hidden] = 372.6;
+    let found = warnings(&at(&torques));
+    assert!(!found.is_empty() && found.iter().all(|w| w.contains("372.6 N·m, 500 rpm")), "{found:?}");
+    assert_eq!(found, warnings(&at(&[372.6])));
+}
+
 /// Mauz's dip churning was tested up to 60 m/s pitch-line speed: a scene whose fastest point is
 /// beyond (20 000 rpm: v_t = 76.7 m/s on the FZG C pinion) gets one warning; the spec (at most
 /// 6000 rpm, 23 m/s) none.
