@@ -182,7 +182,6 @@ fn thermal_records(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) ->
         .collect()
 }
 
-/// Row `i` of the operating points in words: its point, law and formulation.
 /// The operating point of row `i` (torque-major, then law, then formulation), in words.
 fn row_point(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> String {
     let per_point = laws.len() * scene.analyses.efficiency.as_ref().map_or(0, Vec::len);
@@ -191,6 +190,7 @@ fn row_point(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> St
     point_words(scene, drive, point / n, point % n)
 }
 
+/// Row `i` of the operating points in words: its point, law and formulation.
 fn row_words(scene: &Scene, drive: &SceneDrive, laws: &[String], i: usize) -> String {
     let formulations = scene.analyses.efficiency.clone().unwrap_or_default();
     let per_point = laws.len() * formulations.len();
