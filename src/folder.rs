@@ -30,6 +30,16 @@ pub(crate) struct ReportFolder {
     unfinished: Unfinished,
 }
 
+/// The name of `file` inside the folder's subfolder `dir` (`""`: the top), as a run writes it:
+/// `dir/file`.
+pub(crate) fn in_dir(dir: &str, file: &str) -> String {
+    if dir.is_empty() {
+        file.to_string()
+    } else {
+        format!("{dir}/{file}")
+    }
+}
+
 impl ReportFolder {
     /// Starts `out_dir/name/`, creating `out_dir` if needed. `out_dir` naming a file is an error.
     pub(crate) fn create(out_dir: &Path, name: &str) -> std::io::Result<ReportFolder> {

@@ -196,7 +196,7 @@ fn run_one_into(
     records.finish().map_err(&io)?;
     let (rows, pair_files) = stage_pairs_into(scene, drive, (folder, dir), formats, progress)?;
     let (report, rendered) = reported(scene, drive, &eval, rows)?;
-    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let path = |f: &str| crate::folder::in_dir(dir, f);
     let named: Vec<(String, String)> = rendered.files.into_iter().map(|(f, c)| (path(&f), c)).collect();
     files.extend(write_all(folder, &named, progress)?);
     files.extend(pair_files);
@@ -216,7 +216,7 @@ fn record_files(
     let io = RunError::io("the record files");
     let mut files = Vec::new();
     let records = drive_records::drive_record_files(drive, formats, |file| {
-        let file = if dir.is_empty() { file.to_string() } else { format!("{dir}/{file}") };
+        let file = crate::folder::in_dir(dir, file);
         let opened = folder.create_file(&file).map(BufWriter::new);
         files.push(file);
         opened

@@ -91,7 +91,7 @@ pub(crate) fn run_in_folder_exact(
 ) -> Result<(Report, Report, Vec<String>), RunError> {
     let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let path = |f: &str| crate::folder::in_dir(dir, f);
     let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;
     let (exact, report, rendered) = finish_exact(scene, &plan, &streamed.tally, &streamed, progress)?;
     progress.stage("write", rendered.files.len() as u64);
@@ -127,7 +127,7 @@ pub(crate) fn merge_in_folder(
     progress: &dyn Progress,
 ) -> Result<(Report, Report, Vec<String>), RunError> {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let path = |f: &str| crate::folder::in_dir(dir, f);
     let mut files = Vec::new();
     if has_records(scene) {
         progress.stage("merge", set.folders.len() as u64);
@@ -265,6 +265,6 @@ fn stream_into(
         shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(scene), formats).map_err(&io)?;
     let streamed = stream(scene, plan, &mut sink, progress).map_err(&io)?;
     sink.finish().map_err(&io)?;
-    let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let path = |f: &str| crate::folder::in_dir(dir, f);
     Ok((streamed, formats.files().into_iter().map(path).collect()))
 }

@@ -44,7 +44,7 @@ pub(crate) fn stage_pairs_into(
 ) -> Result<(Vec<StagePairReport>, Vec<String>), RunError> {
     let mut files = Vec::new();
     let rows = stage_pair_rows(scene, drive, |alone, pair_dir| {
-        let at = if dir.is_empty() { pair_dir.to_string() } else { format!("{dir}/{pair_dir}") };
+        let at = crate::folder::in_dir(dir, pair_dir);
         let (report, _, written) = crate::run_pair::run_in_folder_exact(alone, (folder, &at), formats, progress)?;
         files.extend(written);
         Ok(report)

@@ -31,7 +31,7 @@ pub(crate) fn record_files(
     extra: &ExtraColumns,
     formats: RecordFormats,
 ) -> std::io::Result<RecordFiles<BufWriter<File>, crate::evaluate::pair_records::PairRecords>> {
-    let at = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+    let at = |f: &str| crate::folder::in_dir(dir, f);
     RecordFiles::new(formats, extra, |f| Ok(BufWriter::new(folder.create_file(&at(f))?)))
 }
 
@@ -288,7 +288,7 @@ impl ShardSet {
         let first = &self.folders[0];
         let text: Vec<(&str, bool)> =
             [(csv, true), (jsonl, false)].into_iter().filter(|(f, _)| first.join(f).exists()).collect();
-        let path = |f: &str| if dir.is_empty() { f.to_string() } else { format!("{dir}/{f}") };
+        let path = |f: &str| crate::folder::in_dir(dir, f);
         self.concatenate_files((folder, dir), &text, progress)?;
         let mut files: Vec<String> = text.iter().map(|(f, _)| path(f)).collect();
         if first.join(parquet).exists() {
@@ -337,7 +337,7 @@ impl ShardSet {
         progress: &dyn Progress,
     ) -> std::io::Result<()> {
         for &(file, header) in files {
-            let into = if dir.is_empty() { file.to_string() } else { format!("{dir}/{file}") };
+            let into = crate::folder::in_dir(dir, file);
             let mut out = BufWriter::new(folder.create_file(&into)?);
             for (k, dir) in self.folders.iter().enumerate() {
                 let mut input = BufReader::new(File::open(dir.join(file))?);

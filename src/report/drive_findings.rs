@@ -60,15 +60,13 @@ pub(super) fn findings(
         }
     }
     // Every row's loads, from the tally: the worst row of each place beyond its static rating.
-    let places = layout.shafts.iter().flat_map(|shaft| shaft.bearings.iter().map(move |b| (shaft, b)));
-    for ((shaft, b), worst) in places.zip(&static_loads.0) {
-        let (Some((p0, row)), Some(c0)) = (*worst, b.static_load_rating.filter(|c| *c > 0.0)) else { continue };
-        let ratio = p0 / c0;
-        if ratio > crate::losses::bearing_type::MAX_STATIC_LOAD_RATIO {
+    let places = layout.shafts.iter().flat_map(|shaft| {
+        shaft.bearings.iter().map(move |b| {
             let place = format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind.name());
-            out.push(super::bearing_checks::overload_finding(&place, ratio, c0, &row_point(row)));
-        }
-    }
+            (place, b.static_load_rating)
+        })
+    });
+    out.extend(super::bearing_checks::overloaded(places, static_loads, row_point));
     for (j, shaft) in layout.shafts.iter().enumerate() {
         let helical = layout.stages.iter().any(|s| s.hand.is_some() && s.member_on(j).is_some());
         if helical && !shaft.locating_given && !shaft.bearings.is_empty() {

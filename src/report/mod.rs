@@ -261,15 +261,10 @@ fn pair_bearing_findings(
     g: &crate::losses::Gearbox,
     static_loads: &crate::evaluate::static_loads::StaticLoads,
 ) -> Vec<finding::Finding> {
-    let mut out = Vec::new();
-    for ((k, (shaft, b)), worst) in losses::bearing_places(g).enumerate().zip(&static_loads.0) {
-        let (Some((p0, point)), Some(c0)) = (*worst, b.static_load_rating.filter(|c| *c > 0.0)) else { continue };
-        let ratio = p0 / c0;
-        if ratio > crate::losses::bearing_type::MAX_STATIC_LOAD_RATIO {
-            let place = format!("{shaft} shaft, bearing {} ({})", k + 1, b.kind.name());
-            let at = crate::evaluate::cases::case_at(&scene.operating, point).label;
-            out.push(bearing_checks::overload_finding(&place, ratio, c0, &at));
-        }
-    }
-    out
+    let places = losses::bearing_places(g)
+        .enumerate()
+        .map(|(k, (shaft, b))| (format!("{shaft} shaft, bearing {} ({})", k + 1, b.kind.name()), b.static_load_rating));
+    bearing_checks::overloaded(places, static_loads, &|point| {
+        crate::evaluate::cases::case_at(&scene.operating, point).label
+    })
 }
