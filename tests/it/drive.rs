@@ -753,12 +753,7 @@ fn a_bearing_beyond_its_rating_is_found_past_the_kept_rows() {
         let eval = evaluate_drive(&scene, drive);
         assert!(eval.tally.rows <= 12 || eval.rows.len() == 12, "the report keeps the first 12 rows");
         let report = gearloss::report::drive::build_drive_report(&scene, drive, &eval);
-        report
-            .findings
-            .into_iter()
-            .filter(|f| f.message.contains("beyond its static rating"))
-            .map(|f| f.message)
-            .collect()
+        crate::messages_with(report.findings, "beyond its static rating")
     };
     let all = warnings("[10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110]");
     assert!(!all.is_empty() && all.iter().all(|w| w.contains("T_out = 110 N·m")), "{all:?}");

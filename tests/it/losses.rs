@@ -365,12 +365,7 @@ fn a_pairs_bearing_beyond_its_rating_is_found_at_any_point() {
     let warnings = |src: &str| -> Vec<String> {
         let report =
             gearloss::report_of(&gearloss::check("s.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false))));
-        report
-            .findings
-            .into_iter()
-            .filter(|f| f.message.contains("beyond its static rating"))
-            .map(|f| f.message)
-            .collect()
+        crate::messages_with(report.findings, "beyond its static rating")
     };
     let mut torques: Vec<f64> = (0..401).map(|k| 50.0 + 0.5 * f64::from(k)).collect();
     let scene = gearloss::check("s.gear", &at(&torques)).unwrap();
@@ -439,7 +434,7 @@ pub(crate) fn churning_warnings(scene: &gearloss::Scene) -> Vec<String> {
     let drive = scene.drive.as_ref().unwrap();
     let eval = gearloss::evaluate::evaluate_drive(scene, drive);
     let report = gearloss::report::drive::build_drive_report(scene, drive, &eval);
-    report.findings.into_iter().filter(|f| f.message.contains("Mauz")).map(|f| f.message).collect()
+    crate::messages_with(report.findings, "Mauz")
 }
 
 /// `found` is one warning: stage `first`'s, at `v_t` (m/s, to the 0.1 printed).

@@ -53,6 +53,11 @@ pub fn root() -> PathBuf {
 }
 
 /// Reads a scene and lowers it, panicking with the rendered diagnostics if it fails.
+/// The messages of `findings` that contain `words`.
+pub fn messages_with(findings: Vec<gearloss::report::Finding>, words: &str) -> Vec<String> {
+    findings.into_iter().filter(|f| f.message.contains(words)).map(|f| f.message).collect()
+}
+
 pub fn scene(path: &Path) -> gearloss::Scene {
     let source = std::fs::read_to_string(path).unwrap();
     gearloss::check(&path.display().to_string(), &source).unwrap_or_else(|e| panic!("{}", e.render(false)))
