@@ -28,7 +28,14 @@ pub(crate) fn bearings_section(r: &Report) -> String {
     md!(
         out,
         "Each bearing place in the scene's order (pinion shaft, then wheel shaft): the radial and axial load of one bearing from the mesh force (with positions `at`, by the statics of the shaft on its two places; without, F_bt shared equally), and the no-load and load-dependent losses of all `count` bearings of the place. {}\n",
-        if all { "Every operating point." } else { "The detail operating points only (the sweep has more than 100); records.csv has every point." }
+        if all {
+            "Every operating point.".to_string()
+        } else {
+            format!(
+                "The detail operating points only (the sweep has more than {}); records.csv has every point.",
+                super::budget_points::ALL_POINTS_UP_TO
+            )
+        }
     );
     for e in points {
         let Some(b) = &e.budget else { continue };

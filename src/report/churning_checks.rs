@@ -18,16 +18,19 @@ use crate::model::{Scene, SceneDrive};
 /// The warnings of the stages whose dip churning is read above 60 m/s, each at its fastest v_t;
 /// `cycle_output_speeds` (rad/s): the output's speeds a drive cycle reaches (empty without one).
 pub(crate) fn churning_findings(scene: &Scene, cycle_output_speeds: &[f64]) -> Vec<Finding> {
-    let Some(drive) = scene.drive.as_ref() else { return Vec::new() };
+    let Some(drive) = scene.drive.as_ref().filter(|d| d.layout.stages.iter().any(|s| s.lubrication.is_some())) else {
+        return Vec::new();
+    };
     let at = drive.layout.operating.speed_at;
     let map_speeds = scene.analyses.efficiency_map.iter().flat_map(|(_, s)| s.values.iter());
     let given = scene.operating.pinion_speed.values.iter().chain(map_speeds).map(|w| EndValue { at, value: w.value });
     let cycle = cycle_output_speeds.iter().map(|&value| EndValue { at: ShaftEnd::Output, value });
-    let ends: Vec<EndValue> = given.chain(cycle).collect();
+    // Every shaft's speed at each of those ends, found once for all stages.
+    let omegas: Vec<Vec<f64>> = given.chain(cycle).map(|end| shaft_speeds(&drive.layout, end)).collect();
     let mut out = Vec::new();
     for (k, stage) in drive.layout.stages.iter().enumerate() {
         let Some(lubrication) = stage.lubrication.as_ref() else { continue };
-        let v_t = fastest_pitch_line_speed(drive, k, &ends);
+        let v_t = fastest_pitch_line_speed(drive, k, &omegas);
         if let Some(note) = lubrication.note(v_t) {
             let message = if drive.one_pair { note } else { format!("stage `{}`: {note}", stage.name) };
             out.push(Finding { severity: Severity::Warning, message });
@@ -36,13 +39,14 @@ pub(crate) fn churning_findings(scene: &Scene, cycle_output_speeds: &[f64]) -> V
     out
 }
 
-/// The largest v_t = ω r (m/s) stage `k`'s churning is read at over the drive's speeds `ends`.
-fn fastest_pitch_line_speed(drive: &SceneDrive, k: usize, ends: &[EndValue]) -> f64 {
+/// The largest v_t = ω r (m/s) stage `k`'s churning is read at over the shafts' speeds `omegas`
+/// (rad/s, one set a speed the scene turns the drive at).
+fn fastest_pitch_line_speed(drive: &SceneDrive, k: usize, omegas: &[Vec<f64>]) -> f64 {
     let stage = &drive.layout.stages[k];
     let sizes = MeshForceSizes::of(&drive.mesh(k, None).geometry());
-    ends.iter()
-        .map(|&end| {
-            let omega = shaft_speeds(&drive.layout, end);
+    omegas
+        .iter()
+        .map(|omega| {
             let (_, running) = stage.model().gears_running(stage, &sizes, stage.places.map(|p| omega[p.shaft]));
             running.omega[0].abs() * running.pitch_radius[0]
         })
