@@ -53,6 +53,15 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
             which.join(" and ")
         );
     }
+    if let Some(rows) = super::loss_budget::drawn(r) {
+        md!(out, "![the loss budget of each point, part by part]({})\n", super::loss_budget::FILE);
+        md!(
+            out,
+            "The loss budget of the {} row(s) above under the {} formulation, one bar a point and law: the meshes, the gears' no-load losses, the bearings' and the seals'.\n",
+            rows.len(),
+            rows[0].formulation
+        );
+    }
     if !r.findings.is_empty() {
         md!(out, "## Findings\n");
         for f in &r.findings {

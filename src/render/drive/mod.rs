@@ -1,5 +1,6 @@
 //! The files of a drive's report folder: report.md ([`markdown`]), report.json (the serde data),
 //! power_flow.svg ([`power_flow`]: the power from input to output with every loss branching off),
+//! with a gearbox loss_budget.svg ([`loss_budget`]: each kept point's losses part by part),
 //! each helical stage mesh's `plane_of_action_<stage>.svg` (the figure of a helical pair's report),
 //! with a thermal balance or a duty cycle a pair's heat_balance.svg, duty_cycle_temperature.svg and
 //! duty_cycle_energy.svg, with shafts that have sections shaft_moments.svg ([`shaft_bending`]) and,
@@ -10,6 +11,7 @@
 pub(crate) mod cycle;
 pub(crate) mod cycle_plots;
 pub(crate) mod kind_pieces;
+pub(crate) mod loss_budget;
 pub(crate) mod loss_map;
 pub(crate) mod markdown;
 pub(crate) mod oil_sweep;
@@ -36,6 +38,9 @@ pub(crate) fn render_drive(report: &DriveReport) -> Result<RenderedReport, Strin
     ];
     if let Some(svg) = power_flow::power_flow(report)? {
         files.push((power_flow::FILE.to_string(), svg));
+    }
+    if let Some(svg) = loss_budget::loss_budget(report) {
+        files.push((loss_budget::FILE.to_string(), svg?));
     }
     if !report.maps.is_empty() {
         files.push((loss_map::FILE.to_string(), loss_map::loss_map(report)?));

@@ -7,17 +7,18 @@ use super::contours::{bilinear, iso_lines, levels, Field};
 use super::maps::colour;
 use super::panel::{plottable, PALETTE};
 use crate::losses::parts::COLUMNS;
+use crate::report::units::Shown;
 use crate::report::Report;
 
-/// The parts of a budget bar, bottom to top: the mesh, then the budget's columns.
-fn parts() -> Vec<&'static str> {
-    std::iter::once("mesh (load-dependent)").chain(COLUMNS.iter().map(|c| c.bar)).collect()
+/// The parts of a budget bar, bottom to top: the mesh or meshes (`meshes`, their name), then the
+/// budget's columns.
+fn parts(meshes: &'static str) -> Vec<&'static str> {
+    std::iter::once(meshes).chain(COLUMNS.iter().map(|c| c.bar)).collect()
 }
 
 /// loss_budget.svg: one bar per operating point and law (the first formulation of each law; the
 /// points of `render::budget_points`), stacked by part; the legend stands beside the plot area.
 pub fn loss_budget(r: &Report) -> Result<String, String> {
-    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let first = r.efficiency.first().map(|x| x.formulation);
     let power = r.units().power();
     let bars: Vec<(String, Vec<f64>)> = crate::render::budget_points::shown_budgets(r)
@@ -37,6 +38,20 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
             Some((label, powers.collect::<Vec<f64>>()))
         })
         .collect();
+    let caption = format!("{}: loss budget ({} formulation)", r.title, first.map_or("", |f| f.name()));
+    budget_bars(&caption, "mesh (load-dependent)", power, &bars)
+}
+
+/// A budget figure: one bar per labelled entry (`bars`: the label and the parts' powers in `power`'s
+/// unit, bottom to top: the mesh or meshes, named `meshes`, then the budget's columns), stacked by
+/// part, the legend and the bars' labels beside the plot area. A pair's and a drive's loss_budget.svg.
+pub(crate) fn budget_bars(
+    caption: &str,
+    meshes: &'static str,
+    power: Shown,
+    bars: &[(String, Vec<f64>)],
+) -> Result<String, String> {
+    let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     let top = bars.iter().map(|(_, p)| p.iter().sum::<f64>()).fold(0.0, f64::max);
     let Some((y0, y1)) = plottable(0.0, 1.08 * top.max(1e-9)) else { return Err("no finite loss to draw".into()) };
     let mut svg = String::new();
@@ -47,10 +62,7 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
         let (plot, legend) = root.split_horizontally(720);
         let n = bars.len().max(1) as f64;
         let mut chart = ChartBuilder::on(&plot)
-            .caption(
-                format!("{}: loss budget ({} formulation)", r.title, first.map_or("", |f| f.name())),
-                ("sans-serif", 16),
-            )
+            .caption(caption, ("sans-serif", 16))
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(70)
@@ -79,7 +91,7 @@ pub fn loss_budget(r: &Report) -> Result<String, String> {
             }
         }
         let style = ("sans-serif", 13).into_font();
-        for (k, name) in parts().iter().enumerate() {
+        for (k, name) in parts(meshes).iter().enumerate() {
             let y = 40 + 20 * k as i32;
             legend.draw(&Rectangle::new([(10, y), (24, y + 12)], PALETTE[k].filled())).map_err(e)?;
             legend.draw(&Text::new(name.to_string(), (30, y), style.clone())).map_err(e)?;

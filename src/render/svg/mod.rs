@@ -19,7 +19,7 @@ pub(crate) use contours::Field;
 pub use dynamics::{dynamics_point, free_response, stability_map, work_precision};
 pub(crate) use helical::figure as plane_of_action_figure;
 pub use helical::plane_of_action;
-pub(crate) use losses::draw_field;
+pub(crate) use losses::{budget_bars, draw_field};
 pub use losses::{efficiency_map as efficiency_contours, loss_budget};
 pub use maps::efficiency_map;
 pub(crate) use panel::fitted;
