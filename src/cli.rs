@@ -314,15 +314,16 @@ fn finished(result: Result<(PathBuf, Vec<String>), gearloss::RunError>) -> ExitC
     }
 }
 
-/// After `run` or `merge`: each report's headline and first warnings, then the folder.
+/// After `run` or `merge`: each drive report's headline and first warnings, then each of its stage
+/// meshes' reports' (labelled by their folders), then the folder.
 fn written(result: Result<gearloss::Written, gearloss::RunError>) -> ExitCode {
     match result {
         Ok(w) => {
-            for (label, report) in &w.reports {
-                say!(out, "{}\n", gearloss::render::terminal::run_summary(report, label));
-            }
             for (label, drive) in &w.drives {
                 say!(out, "{}\n", gearloss::render::terminal::drive_summary(drive, label));
+            }
+            for (label, report) in &w.reports {
+                say!(out, "{}\n", gearloss::render::terminal::run_summary(report, label));
             }
             outln!("wrote {} ({} files: report.md is the report)", w.folder.display(), w.files.len());
             ExitCode::SUCCESS

@@ -114,7 +114,7 @@ pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
-pub use run::{merge_into, report_of, run_into, run_into_with, run_to_files, Written};
+pub use run::{merge_into, pair_files, report_of, run_into, run_into_with, run_to_files, Written};
 pub use run_error::{Failure, FailureKind, RunError};
 pub use run_pair::has_records;
 pub use scene::ast::SceneAst;

@@ -20,12 +20,12 @@ impl Scene {
         Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
     }
 
-    /// Whether the run evaluates, reports and renders the scene with a pair's modules: a scene of
-    /// one pair not on a drive cycle (lowered with its one-stage drive beside its blocks, which
-    /// its run does not yet read), or a scene built without a drive (a drive's stage mesh as its
-    /// pair alone). Every other scene runs as its drive.
+    /// Whether the run evaluates, reports and renders the scene with a pair's modules: only a
+    /// scene built without a drive (a drive's stage mesh as its pair alone, the per-mesh
+    /// evaluation). Every scene a user writes is lowered with its drive (a scene of one pair with
+    /// its one-stage drive) and runs as that drive.
     pub fn runs_as_pair(&self) -> bool {
-        self.drive.as_ref().is_none_or(|d| d.one_pair && d.cycle.is_none())
+        self.drive.is_none()
     }
 }
 

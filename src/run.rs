@@ -33,6 +33,17 @@ pub fn report_of(scene: &Scene) -> Report {
     report::build_report(scene, &eval, &streamed.tally, &plan)
 }
 
+/// The per-mesh evaluation alone, in memory: the scene's pair (`scene.gears`) evaluated, reported
+/// and rendered as a pair, with every block the scene gives it (its gearbox's budget, housing,
+/// efficiency map) — the report a drive's stage mesh gets, without the drive around it. Its record
+/// files (the default formats) are among the files. `gearloss run` writes a scene as its drive
+/// ([`run_to_files`]); this is the stage beneath it, for a library user or a test of the pair's own
+/// modules.
+pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
+    let (_, files) = crate::run_pair::run_scene_to_files(scene)?;
+    Ok(RenderedReport { slug: report::slug(&scene.title), files })
+}
+
 /// Runs `$body` with `$kind` bound to the scene's [`SceneRun`]: a pair's where the scene
 /// [`Scene::runs_as_pair`], else a drive's.
 macro_rules! by_kind {
@@ -98,14 +109,16 @@ fn each_oil_temperature<K: SceneRun>(
     Ok((top, runs.into_iter().map(|(_, _, dir, r)| (dir, r)).collect()))
 }
 
-/// What a run wrote: the report folder, its files, and the report of each run it holds (one; one
-/// per oil temperature, labelled; none for a shard's part).
+/// What a run wrote: the report folder, its files, the report of each drive it holds (one; one per
+/// oil temperature, labelled by its folder; none for a shard's part) and the reports of the stage
+/// meshes analysed as pairs alone (labelled by their folders: `stages/pair`,
+/// `oil_temperature_90degC/stages/pair`).
 #[derive(Debug)]
 pub struct Written {
     pub folder: PathBuf,
     pub files: Vec<String>,
+    /// The reports of one pair: the stage meshes' (a scene built without a drive: its own).
     pub reports: Vec<(String, Report)>,
-    /// The reports of a drive of several stages, labelled as `reports` are (then `reports` is empty).
     pub drives: LabelledDrives,
 }
 

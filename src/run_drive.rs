@@ -17,7 +17,7 @@ use crate::report::drive::DriveReport;
 use crate::report::drive_stage_pairs::StagePairReport;
 use crate::run_error::{FailureKind, RunError};
 use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
-use crate::run_stage_pairs::{stage_pair_shard, stage_pairs_into, stage_pairs_merged};
+use crate::run_stage_pairs::{stage_pair_shard, stage_pairs_into, stage_pairs_merged, StagePairReports};
 use crate::{render, shard};
 
 /// Writes `files` into `folder`; their names.
@@ -62,20 +62,28 @@ pub fn drive_report_files(
     scene: &Scene,
     drive: &crate::model::SceneDrive,
 ) -> Result<(crate::report::drive::DriveReport, RenderedReport), RunError> {
+    report_files(scene, drive).map(|(report, rendered, _)| (report, rendered))
+}
+
+/// [`drive_report_files`] with the reports of the stage meshes analysed as pairs alone.
+fn report_files(
+    scene: &Scene,
+    drive: &crate::model::SceneDrive,
+) -> Result<(DriveReport, RenderedReport, StagePairReports), RunError> {
     let scene = &*evaluate::drive_thermal::at_first_balance(scene, drive);
     let io = RunError::io("records");
     let mut records =
         drive_records::drive_record_files(drive, RecordFormats::default(), |_| Ok(Vec::new())).map_err(&io)?;
     let eval =
         evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, &crate::progress::Quiet).map_err(&io)?;
-    let (rows, pair_files) = crate::run_stage_pairs::stage_pair_files(scene, drive)?;
+    let ((rows, pair_files), pairs) = crate::run_stage_pairs::stage_pair_files(scene, drive)?;
     let (report, mut rendered) = reported(scene, drive, &eval, rows)?;
     rendered.files.extend(pair_files);
     let (csv, jsonl) = records.finish().map_err(&io)?;
     let text = |b: Option<Vec<u8>>| String::from_utf8(b.expect("the default formats")).expect("records are UTF-8");
     rendered.files.push((drive_records::FILE.to_string(), text(csv)));
     rendered.files.push((drive_records::JSONL_FILE.to_string(), text(jsonl)));
-    Ok((report, rendered))
+    Ok((report, rendered, pairs))
 }
 
 /// Drive reports with their labels (their folders at several oil temperatures, else empty).
@@ -84,17 +92,26 @@ pub type LabelledDrives = Vec<(String, crate::report::drive::DriveReport)>;
 /// A drive of stages, as the one run layer runs it ([`crate::run`]).
 pub(crate) struct DriveRun;
 
+/// A drive's run at one oil temperature: its report and the reports of its stages' meshes analysed
+/// as pairs alone, labelled by their folders (`stages/pair`).
+#[derive(Debug, Clone)]
+pub(crate) struct DriveRunReports {
+    pub drive: DriveReport,
+    pub pairs: StagePairReports,
+}
+
 /// The drive of a drive's scene (at any of its oil temperatures).
 fn drive_of(scene: &Scene) -> &crate::model::SceneDrive {
     scene.drive.as_ref().expect("a drive's run is of a drive scene, at every oil temperature")
 }
 
 impl SceneRun for DriveRun {
-    type Report = DriveReport;
+    type Report = DriveRunReports;
     const SHARDED_SWEEP: (FailureKind, &'static str) = (FailureKind::ShardedDrive, "the drive");
 
-    fn files(&self, scene: &Scene) -> Result<(DriveReport, Vec<File>), RunError> {
-        drive_report_files(scene, drive_of(scene)).map(|(report, rendered)| (report, rendered.files))
+    fn files(&self, scene: &Scene) -> Result<(DriveRunReports, Vec<File>), RunError> {
+        let (drive, rendered, pairs) = report_files(scene, drive_of(scene))?;
+        Ok((DriveRunReports { drive, pairs }, rendered.files))
     }
 
     fn run_in_folder(
@@ -103,12 +120,14 @@ impl SceneRun for DriveRun {
         at: (&ReportFolder, &str),
         formats: RecordFormats,
         progress: &dyn Progress,
-    ) -> Result<(DriveReport, Vec<String>), RunError> {
+    ) -> Result<(DriveRunReports, Vec<String>), RunError> {
         run_one_into(scene, drive_of(scene), at, formats, progress)
     }
 
-    fn oil_sweep(&self, runs: &[OilRun<DriveReport>]) -> Result<Vec<File>, RunError> {
-        let sweep = report::drive_oil_sweep::build_drive_oil_sweep(runs);
+    fn oil_sweep(&self, runs: &[OilRun<DriveRunReports>]) -> Result<Vec<File>, RunError> {
+        let runs: Vec<OilRun<DriveReport>> =
+            runs.iter().map(|(l, k, f, r)| (l.clone(), *k, f.clone(), r.drive.clone())).collect();
+        let sweep = report::drive_oil_sweep::build_drive_oil_sweep(&runs);
         render::drive::oil_sweep::render_drive_oil_sweep(&sweep).map_err(RunError::drawing)
     }
 
@@ -142,7 +161,7 @@ impl SceneRun for DriveRun {
         scene: &Scene,
         folder: &ReportFolder,
         progress: &dyn Progress,
-    ) -> Result<(DriveReport, Vec<String>), RunError> {
+    ) -> Result<(DriveRunReports, Vec<String>), RunError> {
         let drive = drive_of(scene);
         let scene = &*evaluate::drive_thermal::at_first_balance(scene, drive);
         progress.stage("merge", set.folders.len() as u64);
@@ -151,11 +170,11 @@ impl SceneRun for DriveRun {
             .map_err(RunError::io("the record files"))?;
         let tally = set.tally().map_err(RunError::Shards)?;
         let eval = evaluate::drive::evaluate_drive_merged(scene, drive, tally);
-        let (rows, pair_files) = stage_pairs_merged(scene, drive, set, folder, progress)?;
+        let (rows, pair_files, pairs) = stage_pairs_merged(scene, drive, set, folder, progress)?;
         let (report, rendered) = reported(scene, drive, &eval, rows)?;
         files.extend(write_all(folder, &rendered.files, progress)?);
         files.extend(pair_files);
-        Ok((report, files))
+        Ok((DriveRunReports { drive: report, pairs }, files))
     }
 
     const REPORT: (&'static str, &'static [&'static str]) = ("a drive's report", &["shafts"]);
@@ -175,32 +194,40 @@ impl SceneRun for DriveRun {
         Ok((files, sweep.runs.iter().map(|r| r.folder.clone()).collect()))
     }
 
-    fn labelled(reports: Vec<(String, DriveReport)>) -> Labelled {
-        (Vec::new(), reports)
+    /// The stage meshes' reports labelled by their folders in the report folder
+    /// (`oil_temperature_90degC/stages/pair`), the drives' by theirs.
+    fn labelled(reports: Vec<(String, DriveRunReports)>) -> Labelled {
+        let mut pairs = Vec::new();
+        let mut drives = Vec::new();
+        for (label, r) in reports {
+            pairs.extend(r.pairs.into_iter().map(|(dir, p)| (crate::folder::in_dir(&label, &dir), p)));
+            drives.push((label, r.drive));
+        }
+        (pairs, drives)
     }
 }
 
 /// A drive scene (at one oil temperature) into `folder` under `dir` (`""`: the top): its record
-/// files of `formats` as the rows stream, then its report; the report and the files written.
+/// files of `formats` as the rows stream, then its report; the reports and the files written.
 fn run_one_into(
     scene: &Scene,
     drive: &crate::model::SceneDrive,
     (folder, dir): (&ReportFolder, &str),
     formats: RecordFormats,
     progress: &dyn Progress,
-) -> Result<(DriveReport, Vec<String>), RunError> {
+) -> Result<(DriveRunReports, Vec<String>), RunError> {
     let io = RunError::io("the record files");
     let scene = &*evaluate::drive_thermal::at_first_balance(scene, drive);
     let (mut records, mut files) = record_files((folder, dir), drive, formats)?;
     let eval = evaluate::drive::evaluate_drive_into_with(scene, drive, &mut records, progress).map_err(&io)?;
     records.finish().map_err(&io)?;
-    let (rows, pair_files) = stage_pairs_into(scene, drive, (folder, dir), formats, progress)?;
+    let (rows, pair_files, pairs) = stage_pairs_into(scene, drive, (folder, dir), formats, progress)?;
     let (report, rendered) = reported(scene, drive, &eval, rows)?;
     let path = |f: &str| crate::folder::in_dir(dir, f);
     let named: Vec<(String, String)> = rendered.files.into_iter().map(|(f, c)| (path(&f), c)).collect();
     files.extend(write_all(folder, &named, progress)?);
     files.extend(pair_files);
-    Ok((report, files))
+    Ok((DriveRunReports { drive: report, pairs }, files))
 }
 
 /// A drive's record files in a folder as they are written.

@@ -22,34 +22,40 @@ use crate::shard::ShardSet;
 /// drive's folder).
 pub(crate) type StagePairFiles = (Vec<StagePairReport>, Vec<(String, String)>);
 
+/// The analysed meshes' reports, labelled by their folders (`stages/pair`).
+pub(crate) type StagePairReports = Vec<(String, Report)>;
+
 /// Every analysed mesh run as a pair alone, in memory: the rows and the files.
-pub(crate) fn stage_pair_files(scene: &Scene, drive: &SceneDrive) -> Result<StagePairFiles, RunError> {
+pub(crate) fn stage_pair_files(
+    scene: &Scene,
+    drive: &SceneDrive,
+) -> Result<(StagePairFiles, StagePairReports), RunError> {
     let mut files = Vec::new();
-    let rows = stage_pair_rows(scene, drive, |alone, dir| {
+    let (rows, reports) = stage_pair_rows(scene, drive, |alone, dir| {
         let (report, _, run_files) = crate::run_pair::run_scene_exact(alone)?;
         files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
         Ok(report)
     })?;
-    Ok((rows, files))
+    Ok(((rows, files), reports))
 }
 
 /// Every analysed mesh run as a pair alone into `folder` under the run's `dir` (`""`: the top),
-/// its record files of `formats` streamed: the rows and the files written.
+/// its record files of `formats` streamed: the rows, the files written and the reports.
 pub(crate) fn stage_pairs_into(
     scene: &Scene,
     drive: &SceneDrive,
     (folder, dir): (&ReportFolder, &str),
     formats: RecordFormats,
     progress: &dyn Progress,
-) -> Result<(Vec<StagePairReport>, Vec<String>), RunError> {
+) -> Result<(Vec<StagePairReport>, Vec<String>, StagePairReports), RunError> {
     let mut files = Vec::new();
-    let rows = stage_pair_rows(scene, drive, |alone, pair_dir| {
+    let (rows, reports) = stage_pair_rows(scene, drive, |alone, pair_dir| {
         let at = crate::folder::in_dir(dir, pair_dir);
         let (report, _, written) = crate::run_pair::run_in_folder_exact(alone, (folder, &at), formats, progress)?;
         files.extend(written);
         Ok(report)
     })?;
-    Ok((rows, files))
+    Ok((rows, files, reports))
 }
 
 /// A shard's part of a one-pair drive's stage analysed over the sweep: its folder and tally (None
@@ -78,18 +84,18 @@ pub(crate) fn stage_pair_shard(
 
 /// Every analysed mesh run as a pair alone into the merged `folder`: the stage the shards analysed
 /// ([`stage_pair_shard`]) merged from theirs, every other run here in the formats the shards wrote
-/// the drive's records in. The rows and the files written.
+/// the drive's records in. The rows, the files written and the reports.
 pub(crate) fn stage_pairs_merged(
     scene: &Scene,
     drive: &SceneDrive,
     set: &ShardSet,
     folder: &ReportFolder,
     progress: &dyn Progress,
-) -> Result<(Vec<StagePairReport>, Vec<String>), RunError> {
+) -> Result<(Vec<StagePairReport>, Vec<String>, StagePairReports), RunError> {
     let sharded = set.stage_pair();
     let formats = set.formats::<crate::evaluate::drive_records::DriveRecords>();
     let mut files = Vec::new();
-    let rows = stage_pair_rows(scene, drive, |alone, dir| {
+    let (rows, reports) = stage_pair_rows(scene, drive, |alone, dir| {
         let (report, _, written) = match &sharded {
             Some((shards, d)) if *d == dir => crate::run_pair::merge_in_folder(shards, alone, (folder, dir), progress)?,
             _ => crate::run_pair::run_in_folder_exact(alone, (folder, dir), formats, progress)?,
@@ -97,20 +103,21 @@ pub(crate) fn stage_pairs_merged(
         files.extend(written);
         Ok(report)
     })?;
-    Ok((rows, files))
+    Ok((rows, files, reports))
 }
 
 /// The drive report's rows of every analysed mesh, each mesh's pair run by `run(its scene, its
 /// folder)`, which gives its report as built; a mesh whose pair a scene of one pair would refuse at
 /// that state (dynamics at too low a speed, too many record rows) is listed with the reason, not run.
+/// The rows and the reports run, labelled by their folders.
 fn stage_pair_rows(
     scene: &Scene,
     drive: &SceneDrive,
     mut run: impl FnMut(&Scene, &str) -> Result<Report, RunError>,
-) -> Result<Vec<StagePairReport>, RunError> {
+) -> Result<(Vec<StagePairReport>, StagePairReports), RunError> {
     let formulation = scene.analyses.first_formulation();
     let law = scene.friction.first().map_or_else(String::new, |l| l.label());
-    let mut rows = Vec::new();
+    let (mut rows, mut reports) = (Vec::new(), Vec::new());
     for p in stage_pairs(scene, drive) {
         let mut row = StagePairReport {
             stage: p.stage_name.clone(),
@@ -149,10 +156,11 @@ fn stage_pair_rows(
                     row.pair_charged_efficiency =
                         Some(1.0 - charged / (r.pinion_torque.value.0 * r.pinion_speed.value.0));
                 }
-                row.folder = Some(dir);
+                row.folder = Some(dir.clone());
+                reports.push((dir, report));
             }
         }
         rows.push(row);
     }
-    Ok(rows)
+    Ok((rows, reports))
 }

@@ -112,7 +112,8 @@ mod tests {
             .filter_map(|path| {
                 let source = std::fs::read_to_string(&path).unwrap();
                 let scene = crate::scene::check::check(&path.display().to_string(), &source).ok()?;
-                (scene.gearbox.is_some() && scene.runs_as_pair()).then_some((path, scene))
+                (scene.gearbox.is_some() && scene.drive.as_ref().is_some_and(|d| d.one_pair && d.cycle.is_none()))
+                    .then_some((path, scene))
             })
             .collect()
     }

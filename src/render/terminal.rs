@@ -35,15 +35,19 @@ fn warnings_tail(out: &mut String, findings: &[crate::report::Finding]) {
     }
 }
 
-/// The terminal summary of a drive's run: each operating point's ends, total loss and η, then the
-/// number of warnings and the first of them.
+/// The terminal summary of a drive's run: each operating point's ends, total loss and η (where the
+/// scene asks for none, that its stage meshes' analyses follow), then the number of warnings and
+/// the first of them.
 pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) -> String {
     let at = if label.is_empty() { String::new() } else { format!(" ({label})") };
     let mut out = format!("{}{at}\n\n", report.title);
+    if report.points.is_empty() && report.cycle.is_none() && !report.stage_pairs.is_empty() {
+        out.push_str("  The scene asks for no efficiency: its stages' meshes are analysed as pairs alone, below.\n");
+    }
     for p in &report.points {
         let d = &p.point;
         out.push_str(&format!(
-            "  {} ({} {}): {} in {:.1} W, out {:.1} W, lost {:.2} W, η = {}{}\n",
+            "  {} ({} {}): {} in {:.1} W, out {:.1} W, lost {:.2} W, η = {}{}{}\n",
             p.label,
             p.law,
             p.formulation,
@@ -55,6 +59,10 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
                 "0 (both ends deliver)".to_string()
             } else {
                 format!("{:.4} %", 100.0 * d.efficiency)
+            },
+            match p.pinion_efficiency().filter(|_| report.one_pair) {
+                Some(e) => format!(" (at the pinion {:.4} %)", 100.0 * e),
+                None => String::new(),
             },
             if d.settled() { "" } else { " — NOT SETTLED (see the warnings)" }
         ));

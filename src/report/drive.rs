@@ -109,6 +109,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
             _ => None,
         },
         stage_pairs: Vec::new(),
+        one_pair: drive.one_pair,
         points,
     };
     let (inputs, rest) = super::drive_findings::report_findings(scene, drive, eval, &report, units);

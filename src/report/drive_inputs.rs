@@ -225,7 +225,8 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
 /// Every input the drive's stages, oil and housing were given, as written and in SI, as a pair's
 /// Scene table lists its own (`super::scene::pair_inputs`): each stage's pair keyed from the
 /// stage's name (`first.gears.module`, `first.pinion.teeth`; a planetary stage's `sun`, `planet`
-/// and, from its second mesh, `ring`), then the lubricant and the housing.
+/// and, from its second mesh, `ring`), then the lubricant, each stage's lubrication (a scene of one
+/// pair's as `gearbox.lubrication`), each shaft's bearing places and seals, and the housing.
 pub(super) fn scene_inputs(scene: &Scene, drive: &SceneDrive) -> Vec<InputRow> {
     let mut rows = Vec::new();
     for (k, stage) in drive.layout.stages.iter().enumerate() {
@@ -238,6 +239,19 @@ pub(super) fn scene_inputs(scene: &Scene, drive: &SceneDrive) -> Vec<InputRow> {
     }
     if let Some(l) = &scene.lubricant {
         super::scene::lubricant_inputs(&mut rows, l);
+    }
+    // Each stage's lubrication and each shaft's bearing places and seals, as the drive holds them
+    // (a scene of one pair's keyed `gearbox.lubrication`, as the pair's own report keys them).
+    let inch = !drive.pairs.is_empty()
+        && drive.pairs.iter().all(|p| super::scene::pair_unit_system(p) == super::number::UnitSystem::Inch);
+    for stage in &drive.layout.stages {
+        if let Some(l) = &stage.lubrication {
+            let owner = if drive.one_pair { "gearbox" } else { stage.name.as_str() };
+            super::gearbox_inputs::lubrication_inputs(&mut rows, owner, l, inch);
+        }
+    }
+    for shaft in &drive.layout.shafts {
+        super::gearbox_inputs::shaft_inputs(&mut rows, &shaft.name, (&shaft.bearings, &shaft.seals), inch);
     }
     if let Some(h) = &scene.housing {
         super::gearbox_inputs::housing_inputs(&mut rows, h);

@@ -25,6 +25,20 @@ pub struct DrivePointReport {
     pub balance: Option<PointBalance>,
 }
 
+impl DrivePointReport {
+    /// A scene of one pair's total efficiency as its own report has always defined it: the whole
+    /// loss over the power at the pinion gear, η = 1 − P_V/(T_1 ω_1), where the drive's η is
+    /// P_out/P_in at the box's ends (P_in is T_1 ω_1 plus the pinion shaft's own losses). The same
+    /// P_V; None unless the one stage's pinion drives (a point in coast, a drive of several stages).
+    pub fn pinion_efficiency(&self) -> Option<f64> {
+        let d = &self.point;
+        let [s] = d.stages.as_slice() else { return None };
+        let power = s.driving_torque * s.driving_speed;
+        (s.driving == crate::drive::Member::Pinion && !d.both_ends_deliver && power > 0.0)
+            .then(|| 1.0 - self.total_loss / power)
+    }
+}
+
 /// A point's own balance at `oil_temperature = equilibrium`: θ* and the oil read there, which every
 /// loss of the point rests on.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]

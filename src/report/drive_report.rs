@@ -27,8 +27,8 @@ pub struct DriveReport {
     /// its data sheet values and their source: the same report a pair's gives.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubricant: Option<super::losses::LubricantReport>,
-    /// Every input of the stages, the oil and the housing as written and in SI (a pair's Scene
-    /// table, keyed by stage).
+    /// Every input of the stages, the oil, the lubrication, the bearing places and seals and the
+    /// housing as written and in SI (a pair's Scene table, keyed by stage and shaft).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub inputs: Vec<super::scene::InputRow>,
     /// Each stage mesh's geometry, as a pair's report gives its own (not `geometry`: that key
@@ -96,6 +96,10 @@ pub struct DriveReport {
     /// The vehicle over its drive cycle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cycle: Option<super::drive_cycle::DriveCycleReport>,
+    /// The scene is one pair run as its one-stage drive: report.md adds the pair's own total
+    /// efficiency beside the drive's ([`super::drive_point::DrivePointReport::pinion_efficiency`]).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub one_pair: bool,
     /// The analyses of one pair on the drive's stages' meshes, each with its own report folder.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stage_pairs: Vec<super::drive_stage_pairs::StagePairReport>,

@@ -13,7 +13,7 @@ use serde::de::{DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess,
 /// ```
 /// # use gearloss::report::non_finite_paths;
 /// # let report: gearloss::Report = serde_json::from_str(&std::fs::read_to_string(
-/// #     concat!(env!("CARGO_MANIFEST_DIR"), "/reports/fzg_type_c/report.json")).unwrap()).unwrap();
+/// #     concat!(env!("CARGO_MANIFEST_DIR"), "/reports/fzg_type_c/stages/pair/report.json")).unwrap()).unwrap();
 /// assert!(non_finite_paths(&report).is_empty());
 /// ```
 pub fn non_finite_paths<T: serde::Serialize>(report: &T) -> Vec<String> {

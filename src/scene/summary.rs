@@ -104,11 +104,7 @@ pub fn unused_blocks(scene: &Scene) -> Vec<String> {
         out.push("the `gearbox` block's lubrication, bearings and seals are not used: no analysis asks for the loss budget (add `efficiency` to `analyses`)".to_string());
     }
     if scene.housing.is_some() && !thermal {
-        out.push(if !scene.runs_as_pair() {
-            "the `housing` block is not used: no analysis asks for the thermal balance (add `thermal_balance` or `duty_cycle` to `analyses`, or give the housing a `heat_capacity` and run a `drive_cycle`)".to_string()
-        } else {
-            "the `housing` block is not used: no analysis asks for the thermal balance (add `thermal_balance` to `analyses`, or write `oil_temperature = equilibrium`)".to_string()
-        });
+        out.push("the `housing` block is not used: no analysis asks for the thermal balance (add `thermal_balance` or `duty_cycle` to `analyses`, write `oil_temperature = equilibrium`, or give the housing a `heat_capacity` and run a `drive_cycle`)".to_string());
     }
     if cycle && a.drive_cycle.is_none() {
         out.push("the `vehicle` and `drive_cycle` blocks are not used: add `drive_cycle` to `analyses`".to_string());

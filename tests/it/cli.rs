@@ -18,7 +18,7 @@ fn run_writes_a_complete_report_folder() {
         .output()
         .unwrap();
     assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
-    for f in ["report.md", "report.json", "contact_state.svg"] {
+    for f in ["report.md", "report.json", "power_flow.svg", "stages/pair/report.md", "stages/pair/contact_state.svg"] {
         assert!(out.join("fzg_type_c").join(f).is_file(), "{f} missing");
     }
     // No temporary folder is left behind; running again replaces the folder.
@@ -45,12 +45,15 @@ fn render_redraws_a_report_folder() {
     assert!(run.unwrap().status.success());
     let dir = out.join("fzg_type_c");
     let md = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    let pair_md = std::fs::read_to_string(dir.join("stages/pair/report.md")).unwrap();
     std::fs::remove_file(dir.join("report.md")).unwrap();
-    std::fs::remove_file(dir.join("contact_state.svg")).unwrap();
+    std::fs::remove_file(dir.join("stages/pair/report.md")).unwrap();
+    std::fs::remove_file(dir.join("stages/pair/contact_state.svg")).unwrap();
     let o = gearloss().arg("render").arg(&dir).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(std::fs::read_to_string(dir.join("report.md")).unwrap(), md);
-    assert!(dir.join("contact_state.svg").is_file());
+    assert_eq!(std::fs::read_to_string(dir.join("stages/pair/report.md")).unwrap(), pair_md);
+    assert!(dir.join("stages/pair/contact_state.svg").is_file());
     let o = gearloss().arg("render").arg(out.join("nothing")).output().unwrap();
     assert_eq!(o.status.code(), Some(3));
     let err = String::from_utf8_lossy(&o.stderr);
@@ -179,7 +182,7 @@ fn oil_temperature_sweep_writes_one_folder_per_temperature() {
         assert!(dir.join(f).is_file(), "{f} missing");
     }
     for t in [40, 60, 80, 100, 120] {
-        for f in ["report.md", "records.csv", "loss_budget.svg"] {
+        for f in ["report.md", "drive_records.csv", "loss_budget.svg", "stages/pair/records.csv"] {
             assert!(dir.join(format!("oil_temperature_{t}degC")).join(f).is_file(), "{t}: {f} missing");
         }
     }

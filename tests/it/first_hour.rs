@@ -165,7 +165,8 @@ fn findings_are_grouped_and_name_their_points() {
     assert!(!warm.findings.iter().any(|f| f.message.starts_with("oil temperature")));
 }
 
-/// records.csv and records.jsonl carry the same columns: every key a JSON line writes is a CSV
+/// records.csv and records.jsonl carry the same columns (a stage's pair's, and the drive's
+/// drive_records.csv and .jsonl): every key a JSON line writes is a CSV
 /// column, and every CSV column that holds a value in some row is a key of the JSON lines (the CSV
 /// keeps its fixed columns, empty where the scene has no such rows). The gearbox's inputs are
 /// echoed in the report (md and json).
@@ -174,47 +175,55 @@ fn records_agree_and_the_gearbox_is_echoed() {
     for spec in ["specs/fzg_c14_gearbox.gear", "specs/fzg_bearings.gear", "specs/fzg_c14_thermal.gear"] {
         let text = std::fs::read_to_string(crate::root().join(spec)).unwrap();
         let r = gearloss::run_to_files(spec, &text).unwrap();
-        let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap().1;
-        let csv = file("records.csv");
-        let names: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
-        let filled: std::collections::BTreeSet<&str> = csv
-            .lines()
-            .skip(1)
-            .flat_map(|l| {
-                // No quoted commas in these scenes' rows except the parameters cell, which is last
-                // before the budget: split on commas outside quotes.
-                let mut cells = Vec::new();
-                let (mut quoted, mut start) = (false, 0);
-                for (i, c) in l.char_indices() {
-                    match c {
-                        '"' => quoted = !quoted,
-                        ',' if !quoted => {
-                            cells.push(&l[start..i]);
-                            start = i + 1;
+        let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap_or_else(|| panic!("{spec}: no {n}")).1;
+        for (csv, jsonl) in
+            [("stages/pair/records.csv", "stages/pair/records.jsonl"), ("drive_records.csv", "drive_records.jsonl")]
+        {
+            let csv = file(csv);
+            let names: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+            let filled: std::collections::BTreeSet<&str> = csv
+                .lines()
+                .skip(1)
+                .flat_map(|l| {
+                    // No quoted commas in these scenes' rows except the parameters cell, which is last
+                    // before the budget: split on commas outside quotes.
+                    let mut cells = Vec::new();
+                    let (mut quoted, mut start) = (false, 0);
+                    for (i, c) in l.char_indices() {
+                        match c {
+                            '"' => quoted = !quoted,
+                            ',' if !quoted => {
+                                cells.push(&l[start..i]);
+                                start = i + 1;
+                            }
+                            _ => {}
                         }
-                        _ => {}
                     }
-                }
-                cells.push(&l[start..]);
-                cells.into_iter().zip(names.iter().copied()).filter(|(c, _)| !c.is_empty()).map(|(_, n)| n)
-            })
-            .collect();
-        let header: std::collections::BTreeSet<&str> = names.iter().copied().collect();
-        let mut keys = std::collections::BTreeSet::new();
-        for line in file("records.jsonl").lines() {
-            let v: serde_json::Value = serde_json::from_str(line).unwrap();
-            keys.extend(v.as_object().unwrap().keys().cloned());
+                    cells.push(&l[start..]);
+                    cells.into_iter().zip(names.iter().copied()).filter(|(c, _)| !c.is_empty()).map(|(_, n)| n)
+                })
+                .collect();
+            let header: std::collections::BTreeSet<&str> = names.iter().copied().collect();
+            let mut keys = std::collections::BTreeSet::new();
+            for line in file(jsonl).lines() {
+                let v: serde_json::Value = serde_json::from_str(line).unwrap();
+                keys.extend(v.as_object().unwrap().keys().cloned());
+            }
+            let keys: std::collections::BTreeSet<&str> = keys.iter().map(String::as_str).collect();
+            assert!(keys.is_subset(&header), "{spec}: {:?} not in the CSV", keys.difference(&header));
+            assert_eq!(filled, keys, "{spec}");
         }
-        let keys: std::collections::BTreeSet<&str> = keys.iter().map(String::as_str).collect();
-        assert!(keys.is_subset(&header), "{spec}: {:?} not in the CSV", keys.difference(&header));
-        assert_eq!(filled, keys, "{spec}");
     }
+    // The run's report (the one-stage drive's) echoes the gearbox as the pair's own report does.
     let text = std::fs::read_to_string(crate::root().join("specs/fzg_c14_thermal.gear")).unwrap();
-    let report = gearloss::report_of(&gearloss::check("t.gear", &text).unwrap());
+    let scene = gearloss::check("t.gear", &text).unwrap();
+    let (drive, _) = gearloss::run_drive::drive_report_files(&scene, scene.drive.as_ref().unwrap()).unwrap();
+    let pair = gearloss::report_of(&scene);
     for key in ["gearbox.lubrication (dip).wheel_immersion", "pinion_shaft.seal 1.diameter", "gearbox.housing.area"] {
-        assert!(report.inputs.iter().any(|i| i.key == key), "{key} not echoed");
+        assert!(drive.inputs.iter().any(|i| i.key == key), "{key} not echoed");
+        assert!(pair.inputs.iter().any(|i| i.key == key), "{key} not echoed by the pair");
     }
-    let immersion = report.inputs.iter().find(|i| i.key.ends_with("wheel_immersion")).unwrap();
+    let immersion = drive.inputs.iter().find(|i| i.key.ends_with("wheel_immersion")).unwrap();
     assert_eq!((immersion.written.as_str(), immersion.si.si()), ("59.2 mm", 0.0592));
 }
 
@@ -225,7 +234,7 @@ fn records_agree_and_the_gearbox_is_echoed() {
 fn many_curves_get_a_colour_scale() {
     let text = std::fs::read_to_string(crate::root().join("tests/specs/ok/large_sweep.gear")).unwrap();
     let r = gearloss::run_to_files("large_sweep.gear", &text).unwrap();
-    let svg = &r.files.iter().find(|(f, _)| f == "sweep_speed.svg").unwrap().1;
+    let svg = &r.files.iter().find(|(f, _)| f == "stages/pair/sweep_speed.svg").unwrap().1;
     assert!(svg.contains("pinion torque (N·m)"), "colour bar label missing");
     assert!(!svg.contains("external @ 20.0 N·m"), "per-curve legend entries where a colour scale belongs");
     assert!(svg.contains("Benedict–Kelley (He–Cho–Singh eq 14) external"));
@@ -234,7 +243,7 @@ fn many_curves_get_a_colour_scale() {
         &std::fs::read_to_string(crate::root().join("specs/fzg_type_c.gear")).unwrap(),
     )
     .unwrap();
-    let svg = &few.files.iter().find(|(f, _)| f == "sweep_speed.svg").unwrap().1;
+    let svg = &few.files.iter().find(|(f, _)| f == "stages/pair/sweep_speed.svg").unwrap().1;
     assert!(svg.contains("Coulomb μ = 0.04 external @ 239.3 N·m"), "eight curves keep their labels");
 }
 

@@ -92,7 +92,8 @@ fn contact_length_is_exact_and_its_mean_is_eps_alpha_b_over_cos_beta_b() {
 /// records and the dynamics records with their located numbers.
 #[test]
 fn helical_report_carries_the_required_fields() {
-    let text = std::fs::read_to_string(root().join("reports/nasa_art_helical_pair_he_singh/report.json")).unwrap();
+    let text =
+        std::fs::read_to_string(root().join("reports/nasa_art_helical_pair_he_singh/stages/pair/report.json")).unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     let g = &v["geometry"];
     assert_eq!(g["helix_angle"]["unit"], "rad");

@@ -152,7 +152,7 @@ fn helical_scene_shares_by_stiffness_end_to_end() {
     assert!(a.is_some() && b.is_some() && a != b, "{a:?} vs {b:?}");
 }
 
-/// records.csv and records.jsonl carry the static transmission error: one `transmission_error` row
+/// The pair's records.csv and records.jsonl (stages/pair/) carry the static transmission error: one `transmission_error` row
 /// per torque of the analysis, before the operating points, with the report's peak-to-peak and
 /// mean (report.json rounds to 10 digits: 1e-9 relative). Run as two shards and merged, the record
 /// files equal a single run's byte for byte (the rows come from the shard holding point 1).
@@ -164,12 +164,13 @@ fn transmission_error_rows_in_the_records() {
     let out = std::env::temp_dir().join(format!("gearloss-te-records-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
     let single = gearloss::run_into("tip.gear", &source, &scene, &out.join("single"), None, &gearloss::Quiet).unwrap();
-    let csv = std::fs::read_to_string(single.folder.join("records.csv")).unwrap();
+    let pair = single.folder.join("stages/pair");
+    let csv = std::fs::read_to_string(pair.join("records.csv")).unwrap();
     let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
     let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(single.folder.join("report.json")).unwrap()).unwrap();
+        serde_json::from_str(&std::fs::read_to_string(pair.join("report.json")).unwrap()).unwrap();
     let te = report["transmission_error"].as_array().unwrap();
     assert_eq!(te.len(), 3);
     for (i, t) in te.iter().enumerate() {
@@ -187,7 +188,7 @@ fn transmission_error_rows_in_the_records() {
         close(r[col("ste_mean_m")], &t["mean"]);
     }
     assert!(rows[3..].iter().all(|r| r[col("kind")] != "transmission_error" && r[col("ste_mean_m")].is_empty()));
-    let jsonl = std::fs::read_to_string(single.folder.join("records.jsonl")).unwrap();
+    let jsonl = std::fs::read_to_string(pair.join("records.jsonl")).unwrap();
     assert_eq!(jsonl.lines().count(), rows.len());
     assert!(jsonl.lines().next().unwrap().contains("\"kind\":\"transmission_error\",\"law\":\"\""));
     let mut shards = Vec::new();
@@ -200,7 +201,7 @@ fn transmission_error_rows_in_the_records() {
         );
     }
     let merged = gearloss::merge_into(&shards, &out.join("merged"), &gearloss::Quiet).unwrap();
-    for f in ["records.csv", "records.jsonl"] {
+    for f in ["stages/pair/records.csv", "stages/pair/records.jsonl", "drive_records.csv"] {
         assert!(std::fs::read(single.folder.join(f)).unwrap() == std::fs::read(merged.folder.join(f)).unwrap(), "{f}");
     }
     std::fs::remove_dir_all(&out).unwrap();

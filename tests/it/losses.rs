@@ -275,13 +275,15 @@ fn loss_limits() {
     assert_eq!(loss_budget(&empty, &g, 100.0, 100.0, &OIL).beside_mesh(), 0.0);
 }
 
-/// The report: the budget rows of report.json add up, the map's CSV has a row per grid point, law
+/// The pair's own report (the per-mesh evaluation with its gearbox, `pair_files`): the budget rows
+/// of report.json add up, the map's CSV has a row per grid point, law
 /// and formulation, and the headline leads report.md.
 #[test]
 fn report_budget_and_map() {
     let path = crate::root().join("specs/fzg_c14_gearbox.gear");
     let source = std::fs::read_to_string(&path).unwrap();
-    let out = gearloss::run_to_files("fzg_c14_gearbox.gear", &source).unwrap_or_else(|_| panic!("the spec runs"));
+    let scene = gearloss::check("fzg_c14_gearbox.gear", &source).unwrap();
+    let out = gearloss::pair_files(&scene).unwrap_or_else(|_| panic!("the spec runs"));
     let file = |name: &str| out.files.iter().find(|(f, _)| f == name).map(|(_, c)| c.clone()).unwrap();
     let json: serde_json::Value = serde_json::from_str(&file("report.json")).unwrap();
     for rec in json["efficiency"].as_array().unwrap() {
@@ -309,7 +311,7 @@ fn report_budget_and_map() {
 fn a_large_sweeps_budget_is_shown_at_its_detail_points() {
     let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
     let budget = |src: &str| -> (usize, usize, usize) {
-        let out = gearloss::run_to_files("s.gear", src).unwrap_or_else(|e| panic!("{e:?}"));
+        let out = gearloss::pair_files(&gearloss::check("s.gear", src).unwrap()).unwrap_or_else(|e| panic!("{e:?}"));
         let file = |name: &str| out.files.iter().find(|(f, _)| f == name).map(|(_, c)| c.clone()).unwrap();
         let md = file("report.md");
         let section = &md[md.find("## Loss budget").unwrap()..];

@@ -378,15 +378,13 @@ fn every_pair_warns_as_its_one_stage_drive() {
             assert!(svg.contains("plane of action: contact lines at τ = 0, ¼, ½, ¾"), "{name}");
             helical_plots += 1;
         }
-        // Every input the pair's Scene table lists of its gears, its oil and its housing is the
-        // drive's, as written and in SI (the gears' keyed from stage `pair`).
+        // Every input the pair's Scene table lists — its gears, its oil, its gearbox's lubrication,
+        // bearing places and seals, its housing — is the drive's, as written and in SI (the gears'
+        // keyed from stage `pair`).
         let row_json = |r: &gearloss::report::InputRow| serde_json::to_string(r).unwrap();
         let drive_rows: Vec<String> = drive_report.inputs.iter().map(row_json).collect();
         for r in &pair_report.inputs {
             let gear = ["gears.", "pinion.", "wheel."].iter().any(|k| r.key.starts_with(k));
-            if !(gear || r.key.starts_with("lubricant.") || r.key.starts_with("housing.")) {
-                continue;
-            }
             let mut mine = r.clone();
             if gear {
                 mine.key = format!("pair.{}", r.key);
@@ -487,7 +485,7 @@ fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
     // torques, speeds, laws and formulations with the same whole loss (both written to 10 digits).
     let drive_csv = gearloss::run_drive::drive_report_files(&drive, d).unwrap().1.files;
     let drive_csv = &drive_csv.iter().find(|(f, _)| f == "loss_map.csv").expect("loss_map.csv").1;
-    let pair_files = gearloss::run_to_files("c14.gear", &source).unwrap().files;
+    let pair_files = gearloss::pair_files(&gearloss::check("c14.gear", &source).unwrap()).unwrap().files;
     let pair_csv = &pair_files.iter().find(|(f, _)| f == "efficiency_map.csv").unwrap().1;
     let cells = |text: &str, names: [&str; 5]| -> Vec<(String, f64)> {
         let mut lines = text.lines();

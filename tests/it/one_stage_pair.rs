@@ -101,7 +101,7 @@ fn a_pairs_stage_report_is_the_pairs_own() {
     assert_eq!((row.point, row.folder.as_deref()), (None, Some("stages/pair")));
     let file = |files: &[(String, String)], name: &str| files.iter().find(|(f, _)| f == name).unwrap().1.clone();
     let stage = file(&rendered.files, "stages/pair/report.md");
-    let alone = gearloss::run_to_files("fzg_type_c.gear", &source).unwrap();
+    let alone = gearloss::pair_files(&gearloss::check("fzg_type_c.gear", &source).unwrap()).unwrap();
     let own = file(&alone.files, "report.md");
     let from_scene = |md: &str| md[md.find("## Scene").unwrap()..].to_string();
     assert_eq!(from_scene(&stage), from_scene(&own));
@@ -117,7 +117,7 @@ fn a_pairs_stage_report_is_the_pairs_own() {
 /// The lowered form of every scene of one pair carries its one-stage drive beside its blocks: the
 /// drive `lower_as_one_stage_drive` gives (the same lowered JSON), with `one_pair` set, and the
 /// drive walked on the scene as checked writes the same drive records byte for byte (the pair's
-/// own blocks beside it change nothing the walk reads). A scene of one pair still runs as a pair.
+/// own blocks beside it change nothing the walk reads). A scene of one pair runs as that drive.
 #[test]
 fn a_pairs_lowered_form_carries_its_one_stage_drive() {
     let mut scenes = 0;
@@ -128,7 +128,7 @@ fn a_pairs_lowered_form_carries_its_one_stage_drive() {
         let ast = gearloss::parse(&name, &source).unwrap();
         let alone = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
         let drive = checked.drive.as_ref().expect("a pair's lowered form has its drive");
-        assert!(drive.one_pair && checked.runs_as_pair(), "{name}");
+        assert!(drive.one_pair && !checked.runs_as_pair(), "{name}");
         let json = |s: &gearloss::Scene| serde_json::from_str::<serde_json::Value>(&gearloss::lowered(s)).unwrap();
         assert_eq!(json(&checked)["drive"], json(&alone)["drive"], "{name}");
         assert_eq!(json(&checked)["gears"], json(&checked)["drive"]["pairs"][0], "{name}");
@@ -144,4 +144,45 @@ fn a_pairs_lowered_form_carries_its_one_stage_drive() {
         scenes += 1;
     }
     assert!(scenes >= 25, "{scenes} scenes");
+}
+
+/// A scene of one pair run as its drive keeps the total efficiency its own report has always
+/// given: each headline row's "η at the pinion", 1 − P_V/(T_1 ω_1), is the pair's own budget's
+/// η total at the same point, law and formulation, to 1e-12 (the same loss P_V over the power at
+/// the pinion gear), for every pair spec with a gearbox whose points the drive's report keeps; the
+/// drive's own η (P_out/P_in at the box's ends) differs where the pinion shaft loses power.
+#[test]
+fn a_pairs_drive_report_keeps_its_total_efficiency() {
+    let (mut compared, mut differs) = (0, 0);
+    for path in pair_scenes() {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        let Ok(scene) = gearloss::check(&name, &source) else { continue };
+        if scene.gearbox.is_none() || scene.analyses.efficiency.is_none() || scene.operating.oil_temperatures.is_some()
+        {
+            continue;
+        }
+        let pair = gearloss::report_of(&scene);
+        let (drive, _) = gearloss::run_drive::drive_report_files(&scene, scene.drive.as_ref().unwrap()).unwrap();
+        assert!(drive.one_pair, "{name}");
+        for p in &drive.points {
+            let Some(eta) = p.pinion_efficiency() else { continue };
+            let s = &p.point.stages[0];
+            let own = pair
+                .efficiency
+                .iter()
+                .find(|r| {
+                    r.label == p.law
+                        && r.formulation.name() == p.formulation
+                        && (r.pinion_torque.si() - s.driving_torque).abs() <= 1e-12 * s.driving_torque
+                        && (r.pinion_speed.si() - s.driving_speed).abs() <= 1e-12 * s.driving_speed
+                })
+                .unwrap_or_else(|| panic!("{name}: {} has no row of the pair's", p.label));
+            let want = own.budget.as_ref().expect("a budget").total_efficiency.0;
+            assert!((eta - want).abs() <= 1e-12, "{name} {}: {eta} vs {want}", p.label);
+            differs += usize::from((p.point.efficiency - want).abs() > 1e-9);
+            compared += 1;
+        }
+    }
+    assert!(compared >= 20 && differs > 0, "{compared} rows compared, {differs} where the drive's η differs");
 }

@@ -62,6 +62,6 @@ fn a_pair_on_a_cycle_keeps_the_pair_budget() {
     text.replace_range(from..to, "");
     text = text.replacen("        drive_cycle\n", "", 1);
     let pair = crate::scene_from_text(&text);
-    assert!(pair.runs_as_pair() && !drive.runs_as_pair());
+    assert!(pair.drive.as_ref().unwrap().cycle.is_none() && drive.drive.as_ref().unwrap().cycle.is_some());
     crate::drive::assert_the_pair_budget(&pair, &drive);
 }

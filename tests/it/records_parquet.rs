@@ -61,7 +61,8 @@ fn parquet_holds_the_csvs_values_to_the_bit() {
     {
         let out = temp(&format!("pq-{}", scene.replace('/', "_")));
         run(&["run", scene, "--records", "parquet,csv"], &out);
-        let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path();
+        // The pair's records, in its stage's folder (the drive's are checked below).
+        let dir = std::fs::read_dir(&out).unwrap().next().unwrap().unwrap().path().join("stages/pair");
         assert!(!dir.join("records.jsonl").exists(), "{scene}: only the formats asked for");
         assert_parquet_is_the_csv(&dir, scene);
         let _ = std::fs::remove_dir_all(&out);
@@ -152,18 +153,23 @@ fn shards_merge_into_the_single_runs_parquet() {
     }
     let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("merged")).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let single = parquet(&out.join("single/large_sweep"));
-    let merged = parquet(&out.join("merged/large_sweep"));
-    assert!(single.1.len() > 100);
-    assert_eq!(single, merged);
-    assert!(!out.join("merged/large_sweep/records.csv").exists());
+    for records in ["stages/pair/records.parquet", "drive_records.parquet"] {
+        let single = parquet_file(&out.join("single/large_sweep").join(records));
+        let merged = parquet_file(&out.join("merged/large_sweep").join(records));
+        assert!(single.1.len() > 100, "{records}");
+        assert_eq!(single, merged, "{records}");
+    }
+    assert!(!out.join("merged/large_sweep/stages/pair/records.csv").exists());
     // Cut the second shard's file in half.
-    let bad = shards[1].join("records.parquet");
+    let bad = shards[1].join("stages/pair/records.parquet");
     let bytes = std::fs::read(&bad).unwrap();
     std::fs::write(&bad, &bytes[..bytes.len() / 2]).unwrap();
     let o = gearloss().arg("merge").args(&shards).arg("--out").arg(out.join("broken")).output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(!o.status.success() && err.contains("shard-2-of-3") && err.contains("records.parquet"), "{err}");
+    assert!(
+        !o.status.success() && err.contains("shard-2-of-3") && err.contains("stages/pair/records.parquet"),
+        "{err}"
+    );
     assert!(!out.join("broken/large_sweep").exists(), "nothing written");
     let _ = std::fs::remove_dir_all(&out);
 }

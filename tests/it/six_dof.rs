@@ -211,7 +211,8 @@ mod response {
 /// {"value", "unit"}.
 #[test]
 fn six_dof_report_carries_the_required_fields() {
-    let text = std::fs::read_to_string(crate::root().join("reports/fzg_type_c_on_bearings/report.json")).unwrap();
+    let text =
+        std::fs::read_to_string(crate::root().join("reports/fzg_type_c_on_bearings/stages/pair/report.json")).unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     let d = &v["dynamics"];
     assert_eq!(d["model"], "six_dof");

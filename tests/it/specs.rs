@@ -39,7 +39,11 @@ fn example_scenes_render() {
         if let Ok(read) = serde_json::from_str::<gearloss::Report>(json) {
             assert_eq!(gearloss::render::render_json(&read), json, "report.json does not write back the same");
         }
-        if let Some((_, csv)) = r.files.iter().find(|(n, _)| n == "records.csv") {
+        // A scene of one pair: its stage's report of one pair and its records.
+        if let Some((_, md)) = r.files.iter().find(|(n, _)| n == "stages/pair/report.md") {
+            insta::assert_snapshot!("pair_md", md);
+        }
+        if let Some((_, csv)) = r.files.iter().find(|(n, _)| n == "stages/pair/records.csv") {
             insta::assert_snapshot!("csv", csv);
         }
     });
@@ -113,7 +117,8 @@ fn committed_reports_are_up_to_date() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "gear") {
             let r = render(&path);
-            for (name, content) in r.files.iter().filter(|(n, _)| !n.starts_with(gearloss::render::TIMING_PREFIX)) {
+            let timing = |n: &str| n.rsplit('/').next().unwrap_or(n).starts_with(gearloss::render::TIMING_PREFIX);
+            for (name, content) in r.files.iter().filter(|(n, _)| !timing(n)) {
                 let committed = crate::root().join("reports").join(&r.slug).join(name);
                 if std::fs::read_to_string(&committed).ok().as_deref() != Some(content.as_str()) {
                     stale.push(committed.display().to_string());
@@ -127,7 +132,7 @@ fn committed_reports_are_up_to_date() {
 #[test]
 fn report_json_has_the_named_geometry_keys() {
     let r = render(&crate::root().join("specs/fzg_type_c.gear"));
-    let v: serde_json::Value = serde_json::from_str(file(&r, "report.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(file(&r, "stages/pair/report.json")).unwrap();
     let eps = v["geometry"]["contact_ratio"].as_f64().unwrap();
     assert!((eps - 1.4362).abs() < 1e-4);
     let aw = &v["geometry"]["operating_pressure_angle"];

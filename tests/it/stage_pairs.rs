@@ -242,7 +242,8 @@ fn a_drive_without_laws_walks_its_meshes_whole() {
 }
 
 /// A drive that asks for nothing runs each stage's mesh as its pair alone at its first point: that
-/// report, from its geometry on, is tests/specs/ok/minimal.gear's (the same pair alone) byte for byte.
+/// report, from its geometry on, is tests/specs/ok/minimal.gear's stage's (the same pair alone) byte
+/// for byte.
 #[test]
 fn a_drive_that_asks_nothing_reports_its_meshes_as_pairs() {
     let scene = drive_scene("tests/specs/ok/drive_nothing_asked.gear", |s| s);
@@ -253,7 +254,7 @@ fn a_drive_that_asks_nothing_reports_its_meshes_as_pairs() {
     let stage = &rendered.files.iter().find(|(f, _)| *f == format!("{folder}/report.md")).unwrap().1;
     let source = std::fs::read_to_string(crate::root().join("tests/specs/ok/minimal.gear")).unwrap();
     let alone = gearloss::run_to_files("minimal.gear", &source).unwrap();
-    let alone = &alone.files.iter().find(|(f, _)| f == "report.md").unwrap().1;
+    let alone = &alone.files.iter().find(|(f, _)| f == "stages/pair/report.md").unwrap().1;
     let from_geometry = |md: &str| md[md.find("## Geometry").unwrap()..].to_string();
     assert_eq!(from_geometry(stage), from_geometry(alone));
 }

@@ -30,6 +30,21 @@ fn names(dir: &Path) -> Vec<String> {
     v
 }
 
+/// Every file under `dir` (its subfolders' too), by its path from `dir`, sorted.
+fn files_under(dir: &Path) -> Vec<String> {
+    let mut v = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let (path, name) = (e.as_ref().unwrap().path(), e.unwrap().file_name().to_string_lossy().into_owned());
+        if path.is_dir() {
+            v.extend(files_under(&path).into_iter().map(|f| format!("{name}/{f}")));
+        } else {
+            v.push(name);
+        }
+    }
+    v.sort();
+    v
+}
+
 /// Shards cover every point exactly once, in order, for any N (including N above the point count).
 #[test]
 fn shards_partition_the_points_in_order() {
@@ -78,7 +93,8 @@ fn a_large_sweep_reports_a_bounded_set_and_records_every_point() {
     let path = crate::root().join("tests/specs/ok/large_sweep.gear");
     let source = std::fs::read_to_string(&path).unwrap();
     let r = gearloss::run_to_files("large_sweep.gear", &source).unwrap();
-    let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap().1;
+    // The pair's files, in its stage's folder.
+    let file = |n: &str| &r.files.iter().find(|(f, _)| *f == format!("stages/pair/{n}")).unwrap().1;
     let csv: Vec<&str> = file("records.csv").lines().collect();
     assert_eq!(csv.len(), 1 + 144 * 2);
     let points: Vec<usize> = csv[1..].iter().map(|l| l.split(',').next().unwrap().parse().unwrap()).collect();
@@ -89,7 +105,7 @@ fn a_large_sweep_reports_a_bounded_set_and_records_every_point() {
     let report: serde_json::Value = serde_json::from_str(file("report.json")).unwrap();
     assert_eq!(report["operating_points"].as_array().unwrap().len(), 9 + 2);
     assert_eq!(report["records"]["rows"], 288);
-    assert!(r.files.iter().any(|(f, _)| f == "map_efficiency.svg"));
+    assert!(r.files.iter().any(|(f, _)| f == "stages/pair/map_efficiency.svg"));
     // The extremes over the sweep are those of the records (exact over the evaluated points).
     let rows: Vec<serde_json::Value> = jsonl.iter().map(|l| serde_json::from_str(l).unwrap()).collect();
     let bk: Vec<&serde_json::Value> = rows.iter().filter(|x| x["law"] == "benedict_kelley").collect();
@@ -122,12 +138,12 @@ fn merge_refuses_shards_that_do_not_hold_what_they_wrote() {
     };
     let shards: Vec<_> = (1..=3).map(|k| cut(k, "csv")).collect();
     // A record file with a row fewer.
-    let csv = shards[1].join("records.csv");
+    let csv = shards[1].join("stages/pair/records.csv");
     let text = std::fs::read_to_string(&csv).unwrap();
     std::fs::write(&csv, &text[..text[..text.len() - 1].rfind('\n').unwrap() + 1]).unwrap();
     let (code, err) = merge(&shards);
     assert_eq!(code, Some(1));
-    assert!(err.contains("shard-2-of-3/records.csv is not the file its shard wrote"), "{err}");
+    assert!(err.contains("shard-2-of-3/stages/pair/records.csv is not the file its shard wrote"), "{err}");
     std::fs::write(&csv, &text).unwrap();
     // The scene in a manifest edited (μ 0.05 → 0.09 in every shard's, the shards still of one scene).
     for s in &shards {
@@ -140,12 +156,12 @@ fn merge_refuses_shards_that_do_not_hold_what_they_wrote() {
     let mixed = vec![cut(1, "csv"), cut(2, "parquet"), cut(3, "csv")];
     let (_, err) = merge(&mixed);
     assert!(err.contains("shard-2-of-3 holds the record files") && err.contains("different `--records`"), "{err}");
-    // A tally that is not the kind its scene's run writes (a drive's in a pair's shard).
+    // A tally that is not the kind its scene's run writes (its stage pair's in the drive's place).
     let good = vec![cut(1, "csv"), cut(2, "csv"), cut(3, "csv")];
     let m = good[2].join("shard.json");
     let kept = std::fs::read_to_string(&m).unwrap();
     let mut manifest: serde_json::Value = serde_json::from_str(&kept).unwrap();
-    manifest["tally"] = serde_json::json!({ "rows": 4, "both_ends": 0, "outside_rows": 0 });
+    manifest["tally"] = manifest["stage_pair"][1].clone();
     std::fs::write(&m, serde_json::to_string(&manifest).unwrap()).unwrap();
     let (code, err) = merge(&good);
     assert_eq!(code, Some(1));
@@ -176,8 +192,8 @@ fn four_shards_merged_equal_one_run() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let single = out.join("single/large_sweep");
     let merged = out.join("merged/large_sweep");
-    assert_eq!(names(&single), names(&merged));
-    for f in names(&single) {
+    assert_eq!(files_under(&single), files_under(&merged));
+    for f in files_under(&single) {
         assert!(std::fs::read(single.join(&f)).unwrap() == std::fs::read(merged.join(&f)).unwrap(), "{f} differs");
     }
     // A missing shard is an error that names it.
@@ -343,7 +359,7 @@ fn the_headline_range_covers_every_point() {
         .replace("count 12", "count 50")
         .replace("detail_points = [17, 100]", "");
     let r = gearloss::run_to_files("large_sweep.gear", &source).unwrap();
-    let file = |n: &str| &r.files.iter().find(|(f, _)| f == n).unwrap().1;
+    let file = |n: &str| &r.files.iter().find(|(f, _)| *f == format!("stages/pair/{n}")).unwrap().1;
     let report: serde_json::Value = serde_json::from_str(file("report.json")).unwrap();
     let kept = report["efficiency"].as_array().unwrap().len();
     assert!(kept < 2 * 2500 * 2, "the report keeps a bounded set ({kept} rows)");

@@ -84,8 +84,8 @@ def test_replace_equals_the_text_edited_by_hand():
     by_hand = base.text.replace("pinion_speed  = [100, 1000, 3000] rpm", "pinion_speed  = 500..1500 rpm count 3")
     assert by_hand != base.text
     by_hand = by_hand.replace("pinion_speed  = 500..1500 rpm count 3", "pinion_speed  = 500..1500 rpm count 3")
-    a = gearloss.run(replaced).efficiency
-    b = gearloss.run(gearloss.Scene(by_hand, name=base.name)).efficiency
+    a = gearloss.run(replaced).pair.efficiency
+    b = gearloss.run(gearloss.Scene(by_hand, name=base.name)).pair.efficiency
     pandas.testing.assert_frame_equal(a, b)
     assert sorted(a["pinion_speed_rad_s"].round(4).unique()) == [52.3599, 104.7198, 157.0796]
 
@@ -117,7 +117,7 @@ def test_write_gives_the_cli_folder(tmp_path):
     report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
     out = report.write(tmp_path)
     assert out == tmp_path / "fzg_type_c"
-    for name in ("report.md", "report.json", "records.csv", "contact_state.svg"):
+    for name in ("report.md", "report.json", "drive_records.csv", "stages/pair/records.csv", "stages/pair/contact_state.svg"):
         assert (out / name).read_bytes() == (ROOT / "reports/fzg_type_c" / name).read_bytes(), name
     assert gearloss.Report.from_folder(out).data == report.data
     report.write(tmp_path)  # again, in place of the first
@@ -125,12 +125,13 @@ def test_write_gives_the_cli_folder(tmp_path):
 
 
 def test_tidy_tables():
+    # A scene of one pair runs as its one-stage drive: the budget is the drive's, a row per record row.
     gearbox = gearloss.run(scene(ROOT / "specs/fzg_c14_gearbox.gear"))
     budget = gearbox.budget
     assert {"total_loss_W", "bearings_load_W", "seals_W", "label", "formulation"} <= set(budget.columns)
     # Every law and formulation (issue 46: it used to keep the first of each point only).
-    assert len(budget) == len(gearbox.efficiency)
-    keyed = budget.set_index(["point", "label", "formulation"])
+    assert len(budget) == len(gearbox.efficiency) == 9 * 2 * 2
+    keyed = budget.set_index(["torque_index", "speed_index", "label", "formulation"])
     assert keyed.index.is_unique
     assert budget["label"].nunique() == 2 and budget["formulation"].nunique() == 2
     for _, row in budget.iterrows():
@@ -138,7 +139,7 @@ def test_tidy_tables():
         assert abs(row["power_loss_W"] + parts - row["total_loss_W"]) <= 1e-9 * row["total_loss_W"]
     dynamics = gearloss.run(scene(ROOT / "specs/fzg_dynamics.gear")).dynamics
     assert {"spectral_radius", "pinion_speed_rad_s"} <= set(dynamics.columns) and len(dynamics) > 0
-    assert gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).budget.empty
+    assert gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).pair.budget.empty
 
 
 def test_oil_temperature_runs():
@@ -341,7 +342,7 @@ def test_a_shard_that_does_not_exist_is_a_value_error(shard):
 
 
 def test_svg_of_a_missing_plot_lists_the_plots():
-    report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    report = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).pair
     with pytest.raises(KeyError, match="contact_state.svg") as e:
         report.svg("nope.svg")
     assert "no plot 'nope.svg'" in str(e.value)
@@ -397,7 +398,7 @@ def test_a_drive_as_tables():
         assert abs(b["no_load_W"].sum() + b["load_W"].sum() - r["bearings_no_load_W"] - r["bearings_load_W"]) <= 1e-9 * r["total_W"]
         s = shafts[shafts["row"] == row]
         assert abs(s["seals_W"].sum() - r["seals_W"]) <= 1e-9 * r["total_W"]
-    pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).pair
     for table in ("drive_records", "stages", "bearings"):
         with pytest.raises(LookupError, match="one gear pair"):
             getattr(pair, table)
@@ -446,7 +447,7 @@ def test_a_drive_cycle_as_a_table():
     parts = cycle[["meshes_J", "gear_no_load_J", "bearings_no_load_J", "bearings_load_J", "seals_J"]].sum(axis=1)
     assert ((parts - cycle["loss_J"]).abs() <= 1e-8 * (cycle["loss_J"].abs() + 1.0)).all()
     with pytest.raises(LookupError, match="one gear pair"):
-        gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).cycle
+        gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).pair.cycle
     assert gearloss.run(scene(ROOT / "specs/planetary_reducer.gear")).cycle.empty  # a drive without a cycle
 
 
@@ -486,8 +487,8 @@ def test_records_from_parquet_equal_the_csvs(spec):
     """`records=["parquet"]`: `Report.records` reads records.parquet, and its columns (the CSV's,
     then the parameters') hold the CSV's DataFrame's values exactly."""
     s = scene(ROOT / "specs" / spec)
-    from_csv = gearloss.run(s).records
-    parquet = gearloss.run(s, records=["parquet"])
+    from_csv = gearloss.run(s).pair.records
+    parquet = gearloss.run(s, records=["parquet"]).pair
     assert "records.parquet" in parquet.files and "records.csv" not in parquet.files
     from_parquet = parquet.records
     assert list(from_parquet.columns[: len(from_csv.columns)]) == list(from_csv.columns)
@@ -562,7 +563,7 @@ def test_a_bare_negative_output_speed_of_a_drive_is_said_to_be_negative():
 
 def test_tables_of_the_other_kind_of_report_raise_lookup_error():
     """A pair's tables asked of a drive, and a drive's of a pair, say which tables the report has."""
-    pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
+    pair = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).pair
     drive = gearloss.run(scene(ROOT / "specs/planetary_reducer.gear"))
     for table in ("drive_records", "stages", "stage_pairs", "shafts", "bearings", "planetary", "cycle"):
         with pytest.raises(LookupError, match="its tables are records"):
@@ -706,11 +707,11 @@ def test_a_one_pair_drives_stage_is_its_pair_over_the_sweep(tmp_path):
 
 
 def test_pair_is_the_scenes_pair_however_it_ran():
-    """`pair` is a pair's report itself, the one-pair drive's `stages/pair` report for a pair on a
-    drive cycle (its efficiency table the pair's own: a row per point, law and formulation), and a
-    LookupError naming `stage_pairs` for a drive of several stages."""
-    alone = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear"))
-    assert alone.pair is alone
+    """`pair` is a pair's report itself, the one-pair drive's `stages/pair` report for a scene of
+    one pair (on a drive cycle or not: its efficiency table the pair's own, a row per point, law and
+    formulation), and a LookupError naming `stage_pairs` for a drive of several stages."""
+    alone = gearloss.run(scene(ROOT / "specs/fzg_type_c.gear")).pair
+    assert alone.pair is alone and len(alone.efficiency) == 2 * 3 * 2 * 2
     cycle = gearloss.run(scene(ROOT / "tests/specs/ok/cycle_pair_udds.gear"))
     pair = cycle.pair
     assert pair.data["geometry"] and len(pair.efficiency) == len(cycle.drive_records) == 4

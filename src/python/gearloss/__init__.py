@@ -7,10 +7,16 @@ The same library as the ``gearloss`` command runs underneath (the computation re
 >>> scene.title
 'FZG type C'
 >>> report = gearloss.run(scene.replace(pinion_speed="[1000, 2000] rpm"))
->>> sorted(report.efficiency["pinion_speed_rad_s"].round(3).unique().tolist())
-[104.72, 209.44]
 >>> report.data["title"]
 'FZG type C'
+
+A scene of one pair runs as its one-stage drive: ``report`` is the drive's (power at both ends,
+losses part by part), ``report.pair`` the pair's own report (``stages/pair``):
+
+>>> sorted(report.pair.efficiency["pinion_speed_rad_s"].round(3).unique().tolist())
+[104.72, 209.44]
+>>> len(report.efficiency) == len(report.pair.efficiency)
+True
 
 A scene that does not lower raises :class:`SceneError` with the CLI's diagnostics:
 
@@ -269,8 +275,8 @@ class Report:
         """The records as a pandas DataFrame (every operating point, every law and formulation):
         ``records.csv``, or ``records.parquet`` when the run wrote Parquet only (the same columns
         and values, then each law parameter's ``param_…`` column; reading it needs pyarrow). Of a
-        drive (one pair on a drive cycle included, which runs as its one-stage drive) its rows,
-        :attr:`drive_records`."""
+        drive (every scene run: one of one pair runs as its one-stage drive, whose pair's own
+        records are ``report.pair.records``) its rows, :attr:`drive_records`."""
         import pandas
 
         if self._shape() == "drive":
@@ -487,10 +493,10 @@ class Report:
 
     @property
     def pair(self) -> "Report":
-        """The report of the scene's one pair, with all of a pair's tables, however the scene ran:
-        this report for a scene of one pair reported as a pair, its pair's own report
-        (``stages/pair``, over the scene's whole sweep) for one run as its one-stage drive (a pair on
-        a drive cycle). ``LookupError`` for a drive of several stages (its stage meshes are
+        """The report of the scene's one pair, with all of a pair's tables: its pair's own report
+        (``stages/pair``, over the scene's whole sweep) for a scene of one pair, which runs as its
+        one-stage drive (on a drive cycle or not); this report itself where it is a pair's (a stage
+        folder's, a report folder written before). ``LookupError`` for a drive of several stages (its stage meshes are
         :attr:`stage_pairs`) and for a report of several oil temperatures (``runs[name].pair``)."""
         shape = self._shape()
         if shape in ("pair", "shard"):

@@ -72,7 +72,7 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     inputs(&mut out, r);
     if !r.inputs.is_empty() {
         md!(out, "## Scene\n");
-        md!(out, "Every input of the stages, the oil and the housing, as written and in SI.\n");
+        md!(out, "Every input of the stages, the oil, the lubrication, the shafts' bearing places and seals and the housing, as written and in SI.\n");
         crate::render::markdown::inputs_table(&mut out, &r.inputs);
         md!(out);
     }
@@ -99,28 +99,29 @@ fn headline(out: &mut String, r: &DriveReport) {
     let w = u.units.power();
     let watts = |name: &str| format!("{name} ({})", w.unit);
     md!(out, "## Headline\n");
-    header(
-        out,
-        &[
-            "point",
-            "law",
-            "formulation",
-            "flow",
-            &format!("T_in ({})", u.torque.unit()),
-            &format!("n_in ({})", u.speed.unit()),
-            &watts("P_in"),
-            &format!("T_out ({})", u.torque.unit()),
-            &format!("n_out ({})", u.speed.unit()),
-            &watts("P_out"),
-            &watts("meshes"),
-            &watts("gears no-load"),
-            &watts("bearings"),
-            &watts("seals"),
-            &watts("total"),
-            "η (%)",
-            "passes",
-        ],
-    );
+    let mut columns = vec![
+        "point".to_string(),
+        "law".to_string(),
+        "formulation".to_string(),
+        "flow".to_string(),
+        format!("T_in ({})", u.torque.unit()),
+        format!("n_in ({})", u.speed.unit()),
+        watts("P_in"),
+        format!("T_out ({})", u.torque.unit()),
+        format!("n_out ({})", u.speed.unit()),
+        watts("P_out"),
+        watts("meshes"),
+        watts("gears no-load"),
+        watts("bearings"),
+        watts("seals"),
+        watts("total"),
+        "η (%)".to_string(),
+        "passes".to_string(),
+    ];
+    if r.one_pair {
+        columns.push("η at the pinion (%)".to_string());
+    }
+    header(out, &columns);
     for p in &r.points {
         let d = &p.point;
         let l = &d.losses;
@@ -144,7 +145,10 @@ fn headline(out: &mut String, r: &DriveReport) {
                 w.cell(l.total(), 3),
                 if d.both_ends_deliver { "0 (both ends deliver)".into() } else { fixed(100.0 * d.efficiency, 4) },
                 if d.settled() { d.iterations.to_string() } else { format!("{} (not settled)", d.iterations) },
-            ],
+            ]
+            .into_iter()
+            .chain(r.one_pair.then(|| p.pinion_efficiency().map_or_else(|| "—".into(), |e| fixed(100.0 * e, 4))))
+            .collect::<Vec<String>>(),
         );
     }
     if r.rows > r.points.len() {
@@ -170,6 +174,9 @@ fn headline(out: &mut String, r: &DriveReport) {
         );
     }
     md!(out, "\nη = P_sink/P_source: P_out/P_in in drive, P_in/P_out (power received by the motor over power the output delivers) in coast; T_in is the torque into the box at the input shaft's end, T_out the torque the output passes to the load (negative in coast). Total = P_in − P_out = meshes + gears' no-load + bearings + seals.\n");
+    if r.one_pair {
+        md!(out, "η at the pinion = 1 − total/(T_pinion ω_pinion): the same loss over the power at the pinion gear, the total efficiency a scene of one pair has always reported (η above takes the input's power, the pinion's plus its shaft's own losses).\n");
+    }
 }
 
 fn inputs(out: &mut String, r: &DriveReport) {

@@ -83,5 +83,9 @@ fn plot(r: &DriveOilSweepReport) -> Result<String, String> {
         panel(w.titled("total loss"), &|v| w.value(v.0)),
         panel(w.titled("meshes' loss"), &|v| w.value(v.2)),
     ];
-    figure_with_legend(&format!("{}: efficiency against oil temperature", r.title), &panels, 420)
+    // The legend as wide as its longest label (a drive's row names its ends, law and formulation):
+    // about 5.5 px a character at the legend's font, and its margins.
+    let longest = picked.iter().map(|&i| r.rows[i].chars().count()).max().unwrap_or(0);
+    let legend = 420.max((5.5 * longest as f64) as u32 + 60);
+    figure_with_legend(&format!("{}: efficiency against oil temperature", r.title), &panels, legend)
 }
