@@ -47,5 +47,5 @@ pub use kind_state::KindPoint;
 pub use layout::{Drive, DriveOperating, GearPlace, Hand, Member, Shaft, ShaftEnd, Stage};
 pub use mesh_efficiency::MeshEfficiency;
 pub use mesh_state::MeshState;
-pub use point::{BearingPoint, DrivePoint, PowerFlow, ShaftPoint, StagePoint};
+pub use point::{BearingPoint, DrivePoint, LossParts, PowerFlow, ShaftPoint, StagePoint};
 pub use walk::{solve, EndValue, TOLERANCE};

@@ -1,6 +1,6 @@
 //! A drive's efficiency map, cell by cell: each grid point walked through and at once reduced to
-//! what the map's report and its best-point search read (η, the loss, whether both ends deliver,
-//! the passes), the point itself dropped. The map's memory is then a few numbers a cell, not a
+//! what the map's report and its best-point search read (η, the loss and its parts, whether both
+//! ends deliver, the passes), the point itself dropped. The map's memory is then a few numbers a cell, not a
 //! whole `DrivePoint` (its shafts, bearings and forces) a cell.
 
 use super::drive_setup::DriveSetup;
@@ -18,6 +18,8 @@ pub struct DriveMapCell {
     pub efficiency: f64,
     /// P_source − P_sink (W).
     pub power_lost: f64,
+    /// The loss by part (W): the meshes', then each budget column's.
+    pub losses: crate::drive::LossParts,
     pub both_ends_deliver: bool,
     /// Passes of the power walk's fixed point.
     pub iterations: usize,
@@ -39,6 +41,7 @@ pub(crate) fn map_cells(
         formulation: c.formulation,
         efficiency: p.efficiency,
         power_lost: p.power_lost(),
+        losses: p.losses,
         both_ends_deliver: p.both_ends_deliver,
         iterations: p.iterations,
     })

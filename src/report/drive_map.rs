@@ -22,11 +22,29 @@ pub struct DriveMapReport {
     pub loss: Vec<Vec<f64>>,
     #[serde(with = "super::floats")]
     pub efficiency: Vec<Vec<f64>>,
+    /// `[torque][speed]` of each part of the loss (W): `meshes`, then each budget column by its key
+    /// (`gear_no_load`, `bearings_no_load`, `bearings_load`, `seals`); they add up to `loss` where the
+    /// cell's books balance. What a pair's efficiency map gave by cell.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub parts: Vec<MapPart>,
+    /// A scene of one pair's map (its torque and speed the pinion's): `[torque][speed]` of the
+    /// pair's own total efficiency, 1 − P_V/(T_1 ω_1), as its efficiency map always gave it (the
+    /// drive's η, `efficiency`, takes the input's power: the pinion's plus its shaft's losses).
+    #[serde(default, skip_serializing_if = "Vec::is_empty", with = "super::floats")]
+    pub pinion_efficiency: Vec<Vec<f64>>,
     /// The largest passes of the fixed point over the grid.
     pub most_passes: usize,
     /// Where η peaks on the drive half and on the coast half, located (not the grid's best cell).
     #[serde(default)]
     pub best: Vec<DriveMapBestReport>,
+}
+
+/// One part of a map's loss over the grid: its key and `[torque][speed]` values (W).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct MapPart {
+    pub key: String,
+    #[serde(with = "super::floats")]
+    pub values: Vec<Vec<f64>>,
 }
 
 /// The located best point of one half of a drive's map.
@@ -58,12 +76,26 @@ pub(super) fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Ve
             let cells = eval.map.iter().filter(|r| r.law_index == law_index && r.formulation == *f);
             let mut loss = vec![vec![f64::NAN; s.values.len()]; t.values.len()];
             let mut efficiency = loss.clone();
+            let keys = std::iter::once("meshes").chain(crate::losses::parts::COLUMNS.iter().map(|c| c.key));
+            let mut parts: Vec<MapPart> = keys.map(|key| MapPart { key: key.into(), values: loss.clone() }).collect();
             let mut most_passes = 0;
             for c in cells {
                 loss[c.torque_index][c.speed_index] = c.power_lost;
                 efficiency[c.torque_index][c.speed_index] = c.efficiency;
+                let by_part = std::iter::once(c.losses.meshes).chain(c.losses.parts);
+                for (part, w) in parts.iter_mut().zip(by_part) {
+                    part.values[c.torque_index][c.speed_index] = w;
+                }
                 most_passes = most_passes.max(c.iterations);
             }
+            let one_pair = scene.drive.as_ref().is_some_and(|d| d.one_pair);
+            let pinion_efficiency = if one_pair {
+                let power = |i: usize, j: usize| t.values[i].value * s.values[j].value;
+                let at = |i: usize, row: &Vec<f64>| (0..row.len()).map(|j| 1.0 - row[j] / power(i, j)).collect();
+                loss.iter().enumerate().map(|(i, row)| at(i, row)).collect()
+            } else {
+                Vec::new()
+            };
             let rpm = 30.0 / std::f64::consts::PI;
             let best = eval
                 .map_best
@@ -90,6 +122,8 @@ pub(super) fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Ve
                 speeds_rpm: s.values.iter().map(|w| w.value * 30.0 / std::f64::consts::PI).collect(),
                 loss,
                 efficiency,
+                parts,
+                pinion_efficiency,
                 most_passes,
             });
         }

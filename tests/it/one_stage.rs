@@ -445,7 +445,7 @@ fn a_pair_past_line_contact_is_flagged_as_its_one_stage_drive() {
 /// pair's own loss budget), so at every cell, law and formulation of `specs/fzg_c14_gearbox.gear`'s
 /// 40 × 40 map the drive's report finds the same grid, law and formulation with the same whole loss
 /// (1e-12 relative; the pinion's torque given at the pinion gear in both), and the two CSV writers
-/// write the same cells.
+/// write the same cells: the whole loss, each of its parts and the pair's η total (1e-9).
 #[test]
 fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
     let path = crate::root().join("specs/fzg_c14_gearbox.gear");
@@ -482,7 +482,8 @@ fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
     eprintln!("{compared} map cells compared");
     assert!(compared >= 6000, "{compared}");
     // And as data: the drive's loss_map.csv holds the pair's efficiency_map.csv's cells, the same
-    // torques, speeds, laws and formulations with the same whole loss (both written to 10 digits).
+    // torques, speeds, laws and formulations with the same whole loss, parts and pair's η total
+    // (both written to 10 digits: 1e-9).
     let drive_csv = gearloss::run_drive::drive_report_files(&drive, d).unwrap().1.files;
     let drive_csv = &drive_csv.iter().find(|(f, _)| f == "loss_map.csv").expect("loss_map.csv").1;
     let pair_files = gearloss::pair_files(&gearloss::check("c14.gear", &source).unwrap()).unwrap().files;
@@ -504,11 +505,24 @@ fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
         out.sort_by(|a, b| a.0.cmp(&b.0));
         out
     };
-    let of_drive = cells(drive_csv, ["input_torque_N_m", "input_speed_rad_s", "law", "formulation", "total_loss_W"]);
-    let of_pair = cells(pair_csv, ["pinion_torque_N_m", "pinion_speed_rad_s", "law", "formulation", "total_loss_W"]);
-    assert_eq!(of_drive.len(), of_pair.len());
-    for ((kd, vd), (kp, vp)) in of_drive.iter().zip(&of_pair) {
-        assert_eq!(kd, kp);
-        assert!((vd - vp).abs() <= 1e-9 * vp, "{kd}: {vd} vs {vp}");
+    // Each part of the loss and the pair's own total efficiency too (the drive's columns named as
+    // the pair's: its meshes' loss is the pair's mesh loss, its η at the pinion the pair's η total).
+    for (drive_column, pair_column) in [
+        ("total_loss_W", "total_loss_W"),
+        ("meshes_W", "mesh_loss_W"),
+        ("gear_no_load_W", "gear_no_load_W"),
+        ("bearings_no_load_W", "bearings_no_load_W"),
+        ("bearings_load_W", "bearings_load_W"),
+        ("seals_W", "seals_W"),
+        ("pinion_efficiency", "total_efficiency"),
+    ] {
+        let of_drive =
+            cells(drive_csv, ["pinion_torque_N_m", "pinion_speed_rad_s", "law", "formulation", drive_column]);
+        let of_pair = cells(pair_csv, ["pinion_torque_N_m", "pinion_speed_rad_s", "law", "formulation", pair_column]);
+        assert_eq!(of_drive.len(), of_pair.len());
+        for ((kd, vd), (kp, vp)) in of_drive.iter().zip(&of_pair) {
+            assert_eq!(kd, kp);
+            assert!((vd - vp).abs() <= 1e-9 * vp.abs().max(1e-9), "{drive_column} at {kd}: {vd} vs {vp}");
+        }
     }
 }

@@ -178,14 +178,22 @@ pub(crate) fn csv(r: &DriveReport) -> String {
     let mut out = String::new();
     for (k, m) in r.maps.iter().enumerate() {
         if k == 0 {
-            let (t, s) = (end(m.torque_at), end(m.speed_at));
-            let _ = writeln!(out, "{t}_torque_N_m,{s}_speed_rad_s,law,formulation,total_loss_W,total_efficiency");
+            // A scene of one pair's map is given at its pinion, and gives its own η beside the drive's.
+            let (t, s) = if r.one_pair { ("pinion", "pinion") } else { (end(m.torque_at), end(m.speed_at)) };
+            let parts: String = m.parts.iter().map(|p| format!("{}_W,", p.key)).collect();
+            let pinion = if m.pinion_efficiency.is_empty() { "" } else { ",pinion_efficiency" };
+            let _ = writeln!(
+                out,
+                "{t}_torque_N_m,{s}_speed_rad_s,law,formulation,{parts}total_loss_W,total_efficiency{pinion}"
+            );
         }
         for (i, torque) in m.torques.iter().enumerate() {
             for (j, rpm) in m.speeds_rpm.iter().enumerate() {
+                let parts: String = m.parts.iter().map(|p| format!("{},", num(p.values[i][j]))).collect();
+                let pinion = m.pinion_efficiency.get(i).map_or_else(String::new, |row| format!(",{}", num(row[j])));
                 let _ = writeln!(
                     out,
-                    "{},{},\"{}\",{},{},{}",
+                    "{},{},\"{}\",{},{parts}{},{}{pinion}",
                     num(*torque),
                     num(rpm * std::f64::consts::PI / 30.0),
                     m.law.replace('"', "\"\""),
