@@ -67,6 +67,17 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
             if d.settled() { "" } else { " — NOT SETTLED (see the warnings)" }
         ));
     }
+    if report.rows > report.points.len() {
+        out.push_str(&format!(
+            "  … {} more row(s) in drive_records.csv (η {} over all {}: report.md, \"Headline\")\n",
+            report.rows - report.points.len(),
+            match (&report.least_efficiency, &report.greatest_efficiency) {
+                (Some((lo, _)), Some((hi, _))) => format!("from {:.4} % to {:.4} %", 100.0 * lo, 100.0 * hi),
+                _ => "ranges".to_string(),
+            },
+            report.rows
+        ));
+    }
     if let Some(c) = &report.cycle {
         let w = &c.whole;
         out.push_str(&format!(

@@ -10,6 +10,15 @@ fn pair_scenes() -> Vec<std::path::PathBuf> {
     crate::one_stage::pair_scene_files(|text| !text.contains("vehicle"))
 }
 
+/// Every pair scene that checks, with its name from the project root.
+fn checked_pair_scenes() -> impl Iterator<Item = (String, gearloss::Scene)> {
+    pair_scenes().into_iter().filter_map(|path| {
+        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
+        let source = std::fs::read_to_string(&path).unwrap();
+        gearloss::check(&name, &source).ok().map(|scene| (name, scene))
+    })
+}
+
 /// The same JSON but for numbers that agree to `tol` relative (of the larger magnitude); the
 /// numbers compared.
 fn agree(at: &str, a: &serde_json::Value, b: &serde_json::Value, tol: f64) -> usize {
@@ -154,10 +163,7 @@ fn a_pairs_lowered_form_carries_its_one_stage_drive() {
 #[test]
 fn a_pairs_drive_report_keeps_its_total_efficiency() {
     let (mut compared, mut differs) = (0, 0);
-    for path in pair_scenes() {
-        let name = path.strip_prefix(crate::root()).unwrap().display().to_string();
-        let source = std::fs::read_to_string(&path).unwrap();
-        let Ok(scene) = gearloss::check(&name, &source) else { continue };
+    for (name, scene) in checked_pair_scenes() {
         if scene.gearbox.is_none() || scene.analyses.efficiency.is_none() || scene.operating.oil_temperatures.is_some()
         {
             continue;
