@@ -202,7 +202,7 @@ fn finish(
         (Some((t, s)), Some(ends)) => {
             let (torques, speeds) = (si(&t.values), s.values.iter().map(|w| w.value).collect::<Vec<_>>());
             let map = super::drive_map_cell::map_cells(setup, &torques, &speeds, ends);
-            let best = super::drive_map_best::drive_map_best(setup, (&torques, &speeds), ends, &map);
+            let best = super::drive_map_best::drive_map_best(setup, (&torques, &speeds), (ends, drive.one_pair), &map);
             (map, best)
         }
         _ => (Vec::new(), Vec::new()),

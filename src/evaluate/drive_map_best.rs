@@ -19,7 +19,8 @@ pub struct DriveMapBest {
     pub formulation: Formulation,
     /// Drive (torque > 0) or coast (torque < 0).
     pub flow: PowerFlow,
-    /// The located point: torque (N·m) and speed (rad/s) at the map's ends, and η there.
+    /// The located point: torque (N·m) and speed (rad/s) at the map's ends, and η there
+    /// ([`map_objective`]'s: a scene of one pair's own η total).
     pub located: (f64, f64, f64),
     /// The half's best grid cell: torque index, speed index, η.
     pub grid: (usize, usize, f64),
@@ -27,15 +28,30 @@ pub struct DriveMapBest {
     pub evaluations: usize,
 }
 
+/// The η a map's best point maximises at torque `t` and speed `n` (the map's ends): the drive's
+/// P_sink/P_source (`efficiency`); for a scene of one pair (`one_pair`: its map given at the pinion
+/// gear) its own total efficiency 1 − P_V/(T_1 ω_1) from the loss `lost`, as its map has always
+/// located its best point. 0 where no power passes.
+pub(crate) fn map_objective(one_pair: bool, (efficiency, lost): (f64, f64), (t, n): (f64, f64)) -> f64 {
+    if one_pair {
+        1.0 - lost / (t * n)
+    } else {
+        efficiency
+    }
+}
+
 /// The best point of each half of the map (`torques` × `speeds` in SI at `ends`, the map's rows
-/// `map`) for every law and formulation the rows hold; a half without a cell that passes power
-/// has none.
+/// `map`) for every law and formulation the rows hold, of η by [`map_objective`]; a half without a
+/// cell that passes power has none.
 pub(crate) fn drive_map_best(
     setup: &DriveSetup,
     (torques, speeds): (&[f64], &[f64]),
-    ends: DriveOperating,
+    (ends, one_pair): (DriveOperating, bool),
     map: &[DriveMapCell],
 ) -> Vec<DriveMapBest> {
+    let cell_eta = |r: &DriveMapCell| {
+        map_objective(one_pair, (r.efficiency, r.power_lost), (torques[r.torque_index], speeds[r.speed_index]))
+    };
     let mut keys: Vec<(usize, Formulation)> = Vec::new();
     for r in map {
         if !keys.contains(&(r.law_index, r.formulation)) {
@@ -53,7 +69,7 @@ pub(crate) fn drive_map_best(
             let cells = map.iter().filter(|r| r.law_index == law_index && r.formulation == formulation);
             let best = cells
                 .filter(|r| half.contains(&r.torque_index) && !r.both_ends_deliver && r.efficiency > 0.0)
-                .max_by(|a, b| a.efficiency.total_cmp(&b.efficiency));
+                .max_by(|a, b| cell_eta(a).total_cmp(&cell_eta(b)));
             let Some(best) = best else { continue };
             let half_torques: Vec<f64> = half.iter().map(|i| torques[*i]).collect();
             let at = |index: &[usize], i: usize| index.iter().position(|k| *k == i).unwrap_or(0);
@@ -62,14 +78,15 @@ pub(crate) fn drive_map_best(
                 let torque = EndValue { at: ends.torque_at, value: t };
                 let speed = EndValue { at: ends.speed_at, value: n };
                 let p = setup.point(law_index, formulation, torque, speed);
-                if p.both_ends_deliver || !p.efficiency.is_finite() {
+                let eta = map_objective(one_pair, (p.efficiency, p.power_lost()), (t, n));
+                if p.both_ends_deliver || !eta.is_finite() {
                     0.0
                 } else {
-                    p.efficiency
+                    eta
                 }
             };
             let (located, evaluations) = locate_max(&half_torques, &sorted_speeds, start, eta);
-            let grid = (best.torque_index, best.speed_index, best.efficiency);
+            let grid = (best.torque_index, best.speed_index, cell_eta(best));
             out.push(DriveMapBest { law_index, formulation, flow, located, grid, evaluations });
         }
     }

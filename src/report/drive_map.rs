@@ -52,7 +52,8 @@ pub struct MapPart {
 pub struct DriveMapBestReport {
     /// "drive" or "coast".
     pub flow: String,
-    /// The located point: torque (N·m) and speed (rpm) at the map's ends, and η.
+    /// The located point: torque (N·m) and speed (rpm) at the map's ends, and η (a scene of one
+    /// pair's: its own η total, 1 − P_V/(T_1 ω_1), the map's `pinion_efficiency`).
     pub torque: f64,
     pub speed_rpm: f64,
     pub efficiency: f64,

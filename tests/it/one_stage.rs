@@ -526,3 +526,40 @@ fn a_pairs_efficiency_map_is_its_one_stage_drives_loss_map() {
         }
     }
 }
+
+/// A scene of one pair's map locates its best point as the pair's own map does: on its own η total
+/// 1 − P_V/(T_1 ω_1) (`pinion_efficiency`), not the drive's P_out/P_in. At each law and formulation
+/// of `specs/fzg_c14_gearbox.gear`'s map the drive's located best (torque, speed, η) and its grid
+/// cell's η are the pair's own map's (`pair_files`' report.json, ten digits: 1e-9; the speed of a
+/// flat maximum 1e-6), in as many walks.
+#[test]
+fn a_pairs_map_best_is_located_on_its_own_efficiency() {
+    let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
+    let scene = gearloss::check("c14.gear", &source).unwrap();
+    let (drive, _) = gearloss::run_drive::drive_report_files(&scene, scene.drive.as_ref().unwrap()).unwrap();
+    let files = gearloss::pair_files(&scene).unwrap().files;
+    let json = &files.iter().find(|(f, _)| f == "report.json").unwrap().1;
+    let pair: serde_json::Value = serde_json::from_str(json).unwrap();
+    let close = |a: f64, b: f64, what: &str| assert!((a - b).abs() <= 1e-9 * b.abs(), "{what}: {a} vs {b}");
+    let mut compared = 0;
+    for m in &drive.maps {
+        let best = m.best.iter().find(|b| b.flow == "drive").expect("the drive half's best");
+        let own = pair["efficiency_map"]["best"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|b| b["label"] == m.law.as_str() && b["formulation"] == m.formulation.as_str())
+            .expect("the pair's best");
+        let rpm = 30.0 / std::f64::consts::PI;
+        close(best.torque, own["pinion_torque"]["value"].as_f64().unwrap(), "torque");
+        // Where a flat maximum lies moves by about √ of the two walks' last-bit differences in η:
+        // the speed to 1e-6 (both searches stop at 1e-7 of a box some 300 rpm wide).
+        let speed = own["pinion_speed"]["value"].as_f64().unwrap() * rpm;
+        assert!((best.speed_rpm - speed).abs() <= 1e-6 * speed, "speed: {} vs {speed}", best.speed_rpm);
+        close(best.efficiency, own["efficiency"].as_f64().unwrap(), "η");
+        close(best.grid_efficiency, own["grid_efficiency"].as_f64().unwrap(), "the grid's η");
+        assert_eq!(best.evaluations as u64, own["evaluations"].as_u64().unwrap());
+        compared += 1;
+    }
+    assert_eq!(compared, 4);
+}

@@ -42,7 +42,10 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
             let torques: Vec<f64> = m.torques.iter().map(|x| t.of_si(*x)).collect();
             // η is 0 where no power goes through (zero torque, or both ends deliver): the limit
             // of P_out/P_in as the torque falls to zero with the no-load losses still there.
-            let eta = m.efficiency.iter().map(|row| row.iter().map(|e| 100.0 * e.max(0.0)).collect()).collect();
+            // A scene of one pair's map draws its own η total, whose best point is located.
+            let shown = if m.pinion_efficiency.is_empty() { &m.efficiency } else { &m.pinion_efficiency };
+            let eta = shown.iter().map(|row| row.iter().map(|e| 100.0 * e.max(0.0)).collect()).collect();
+            let eta_name = if m.pinion_efficiency.is_empty() { "η" } else { "η at the pinion" };
             let loss = Field {
                 title: format!("total loss — {} {}", m.law, m.formulation),
                 speeds: &speeds,
@@ -51,7 +54,7 @@ pub(crate) fn loss_map(r: &DriveReport) -> Result<String, String> {
                 unit: w.unit,
             };
             let efficiency = Field {
-                title: format!("η, ○ best located — {} {}", m.law, m.formulation),
+                title: format!("{eta_name}, ○ best located — {} {}", m.law, m.formulation),
                 speeds: &speeds,
                 torques: &torques,
                 values: eta,
@@ -132,7 +135,7 @@ pub(crate) fn section(out: &mut String, r: &DriveReport, u: Shown) {
                     "half",
                     &format!("torque ({})", u.torque.unit()),
                     &format!("speed ({})", u.speed.unit()),
-                    "η",
+                    if r.one_pair { "η at the pinion" } else { "η" },
                     &format!("grid's best ({}, {}, η)", u.torque.unit(), u.speed.unit()),
                     "drives solved",
                 ],
