@@ -1,10 +1,11 @@
 //! The whole run, one path for every scene: a scene (at each of its oil temperatures) streamed
 //! into its record files, evaluated, reported and rendered into a report folder written whole
 //! ([`run_into`]); the same in memory ([`run_to_files`], [`report_of`]); a shard's part and the
-//! merge of shards ([`merge_into`]). What differs between a scene of one pair and a drive of
-//! stages (their evaluation, report and record files) is each one's [`SceneRun`]
-//! ([`crate::run_pair::PairRun`], [`crate::run_drive::DriveRun`]); everything here is the same
-//! for both.
+//! merge of shards ([`merge_into`]). Every scene a user writes runs as its drive
+//! ([`crate::run_drive::DriveRun`]: a scene of one pair as its one-stage drive, its pair's own
+//! report in `stages/pair/`); a scene built without a drive (a stage's pair alone, which the drive's
+//! run analyses through `run_pair.rs` directly) is the one a [`crate::run_pair::PairRun`] serves.
+//! Both are a [`SceneRun`]; everything here is the same for both.
 
 use std::path::{Path, PathBuf};
 

@@ -1,6 +1,7 @@
-//! What a kind of scene gives the one run layer ([`crate::run`]): a scene of one pair
-//! ([`crate::run_pair::PairRun`]) and a drive of stages ([`crate::run_drive::DriveRun`]) are each
-//! one [`SceneRun`]. The run layer owns everything around a scene's own evaluation, the same for
+//! What a kind of scene gives the one run layer ([`crate::run`]): a drive
+//! ([`crate::run_drive::DriveRun`], every scene a user writes: one pair is a one-stage drive) and a
+//! pair alone ([`crate::run_pair::PairRun`], a scene built without a drive) are each one
+//! [`SceneRun`]. The run layer owns everything around a scene's own evaluation, the same for
 //! both: the report folder written whole and renamed into place, a run at each of the scene's oil
 //! temperatures (a folder each and their comparison at the top), a shard's folder with its
 //! manifest and the digests of its record files, and the merge of shards into the report a single

@@ -1,7 +1,8 @@
 //! One pair's scene (at one oil temperature) run after its sweep: the details evaluated, reported
 //! and rendered (`finish_exact`), and the whole run in memory with its record files
-//! ([`run_scene_to_files`]). Both a scene of one pair and each stage analysed in a drive's run go
-//! through here. [`PairRun`] is a pair's part of the one run layer ([`crate::run`]).
+//! ([`run_scene_to_files`]): the per-mesh evaluation each stage mesh a drive's run analyses goes
+//! through (a scene of one pair's, `stages/pair/`, among them). [`PairRun`] is a pair alone's part
+//! of the one run layer ([`crate::run`]): a scene built without a drive.
 
 use std::path::Path;
 
