@@ -34,7 +34,7 @@ pub struct DriveMapBest {
 /// located its best point. 0 where no power passes.
 pub(crate) fn map_objective(one_pair: bool, (efficiency, lost): (f64, f64), (t, n): (f64, f64)) -> f64 {
     if one_pair {
-        1.0 - lost / (t * n)
+        crate::losses::total_efficiency(lost, t * n)
     } else {
         efficiency
     }

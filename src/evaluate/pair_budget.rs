@@ -89,7 +89,12 @@ pub(crate) fn parts_of(p: &DrivePoint, columns: &[LossColumn]) -> Vec<(LossColum
 pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> BudgetParts {
     let parts = parts_of(p, columns);
     let total = if p.settled() { p.stages[0].mesh_loss + parts.iter().map(|(_, p)| p).sum::<f64>() } else { f64::NAN };
-    BudgetParts { parts, total_loss: total, total_efficiency: 1.0 - total / input, bearings: Vec::new() }
+    BudgetParts {
+        parts,
+        total_loss: total,
+        total_efficiency: crate::losses::total_efficiency(total, input),
+        bearings: Vec::new(),
+    }
 }
 
 #[cfg(test)]

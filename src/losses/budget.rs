@@ -49,6 +49,14 @@ pub struct BudgetParts {
     pub bearings: Vec<BearingLoads>,
 }
 
+/// The total efficiency of a pair with its gearbox, ISO/TR 14179-2's: η = 1 − P_V/P_in, the whole
+/// loss `loss` (W) over the power `input` (W) at the pinion gear, T_1 ω_1 — a scene of one pair's
+/// η total in its budget, its map and, run as its one-stage drive, "η at the pinion" (the drive's
+/// own η, P_out/P_in, takes the input's power, the pinion's plus its shaft's losses).
+pub fn total_efficiency(loss: f64, input: f64) -> f64 {
+    1.0 - loss / input
+}
+
 impl LossBudget {
     /// The parts with a mesh loss `mesh` (W) at input power `input` (W).
     pub fn with_mesh(&self, mesh: f64, input: f64) -> BudgetParts {
@@ -56,7 +64,7 @@ impl LossBudget {
         BudgetParts {
             parts: self.parts.clone(),
             total_loss: total,
-            total_efficiency: 1.0 - total / input,
+            total_efficiency: total_efficiency(total, input),
             bearings: self.bearings.iter().map(|b| b.loads).collect(),
         }
     }

@@ -23,7 +23,7 @@ pub(crate) mod seals;
 pub(crate) mod skf_bearing;
 
 pub use bearings::{Bearing, BearingType};
-pub use budget::{loss_budget, BearingLoads, BearingLoss, BudgetParts, LossBudget};
+pub use budget::{loss_budget, total_efficiency, BearingLoads, BearingLoss, BudgetParts, LossBudget};
 pub use gear_no_load::Lubrication;
 pub use gear_no_load::{mauz_dip_torque, windage_loss, GearsRunning};
 pub use gearbox::Gearbox;

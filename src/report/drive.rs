@@ -11,7 +11,7 @@ pub use super::drive_point::DrivePointReport;
 pub use super::drive_report::DriveReport;
 
 /// Inch–pound when every stage's pair is sized in inches, else SI.
-fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
+pub(super) fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
     use super::number::UnitSystem;
     let inch = |g: &crate::model::GearPair| super::scene::pair_unit_system(g) == UnitSystem::Inch;
     if !drive.pairs.is_empty() && drive.pairs.iter().all(inch) {

@@ -242,8 +242,7 @@ pub(super) fn scene_inputs(scene: &Scene, drive: &SceneDrive) -> Vec<InputRow> {
     }
     // Each stage's lubrication and each shaft's bearing places and seals, as the drive holds them
     // (a scene of one pair's keyed `gearbox.lubrication`, as the pair's own report keys them).
-    let inch = !drive.pairs.is_empty()
-        && drive.pairs.iter().all(|p| super::scene::pair_unit_system(p) == super::number::UnitSystem::Inch);
+    let inch = !super::drive::drive_unit_system(drive).is_si();
     for stage in &drive.layout.stages {
         if let Some(l) = &stage.lubrication {
             let owner = if drive.one_pair { "gearbox" } else { stage.name.as_str() };

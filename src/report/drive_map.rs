@@ -92,7 +92,9 @@ pub(super) fn maps(scene: &Scene, eval: &DriveEvaluation, laws: &[String]) -> Ve
             let one_pair = scene.drive.as_ref().is_some_and(|d| d.one_pair);
             let pinion_efficiency = if one_pair {
                 let power = |i: usize, j: usize| t.values[i].value * s.values[j].value;
-                let at = |i: usize, row: &Vec<f64>| (0..row.len()).map(|j| 1.0 - row[j] / power(i, j)).collect();
+                let at = |i: usize, row: &Vec<f64>| {
+                    (0..row.len()).map(|j| crate::losses::total_efficiency(row[j], power(i, j))).collect()
+                };
                 loss.iter().enumerate().map(|(i, row)| at(i, row)).collect()
             } else {
                 Vec::new()

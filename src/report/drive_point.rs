@@ -35,7 +35,7 @@ impl DrivePointReport {
         let [s] = d.stages.as_slice() else { return None };
         let power = s.driving_torque * s.driving_speed;
         (s.driving == crate::drive::Member::Pinion && !d.both_ends_deliver && power > 0.0)
-            .then(|| 1.0 - self.total_loss / power)
+            .then(|| crate::losses::total_efficiency(self.total_loss, power))
     }
 }
 
