@@ -10,17 +10,6 @@ use crate::model::{Scene, SceneDrive, Sweep};
 pub use super::drive_point::DrivePointReport;
 pub use super::drive_report::DriveReport;
 
-/// Inch–pound when every stage's pair is sized in inches, else SI.
-pub(super) fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
-    use super::number::UnitSystem;
-    let inch = |g: &crate::model::GearPair| super::scene::pair_unit_system(g) == UnitSystem::Inch;
-    if !drive.pairs.is_empty() && drive.pairs.iter().all(inch) {
-        UnitSystem::Inch
-    } else {
-        UnitSystem::Si
-    }
-}
-
 /// The report of an evaluated drive scene.
 pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) -> DriveReport {
     let layout = &drive.layout;
@@ -45,7 +34,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         })
         .collect();
     let map = scene.analyses.efficiency_map.as_ref();
-    let unit_system = drive_unit_system(drive);
+    let unit_system = super::drive_inputs::drive_unit_system(drive);
     let units = super::units::Units::of_system(unit_system);
     let mut report = DriveReport {
         title: scene.title.clone(),

@@ -222,6 +222,17 @@ pub(super) fn shaft_inputs(layout: &Drive) -> Vec<ShaftInputs> {
         .collect()
 }
 
+/// Inch–pound when every stage's pair is sized in inches, else SI.
+pub(super) fn drive_unit_system(drive: &SceneDrive) -> super::number::UnitSystem {
+    use super::number::UnitSystem;
+    let inch = |g: &crate::model::GearPair| super::scene::pair_unit_system(g) == UnitSystem::Inch;
+    if !drive.pairs.is_empty() && drive.pairs.iter().all(inch) {
+        UnitSystem::Inch
+    } else {
+        UnitSystem::Si
+    }
+}
+
 /// Every input the drive's stages, oil and housing were given, as written and in SI, as a pair's
 /// Scene table lists its own (`super::scene::pair_inputs`): each stage's pair keyed from the
 /// stage's name (`first.gears.module`, `first.pinion.teeth`; a planetary stage's `sun`, `planet`
@@ -242,7 +253,7 @@ pub(super) fn scene_inputs(scene: &Scene, drive: &SceneDrive) -> Vec<InputRow> {
     }
     // Each stage's lubrication and each shaft's bearing places and seals, as the drive holds them
     // (a scene of one pair's keyed `gearbox.lubrication`, as the pair's own report keys them).
-    let inch = !super::drive::drive_unit_system(drive).is_si();
+    let inch = !drive_unit_system(drive).is_si();
     for stage in &drive.layout.stages {
         if let Some(l) = &stage.lubrication {
             let owner = if drive.one_pair { "gearbox" } else { stage.name.as_str() };
