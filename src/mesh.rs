@@ -35,18 +35,20 @@ impl SceneDrive {
         Mesh { gears: &self.pairs[k], lubricant }
     }
 
-    /// Mesh `mesh` of stage `k` as a pair: 0 the stage's own pair, 1 the second mesh of a stage of
-    /// two (a planetary stage's planet–ring pair).
+    /// Mesh `mesh` of stage `k` as a pair: 0 the stage's own pair, 1, 2, … its further meshes (a
+    /// planetary stage's planet–ring pair is its mesh 1). The mesh numbers are the stage kind's
+    /// (`StageModel::mesh_gears`), which lowering gave a pair each.
     pub fn mesh_pair(&self, k: usize, mesh: usize) -> &GearPair {
         match mesh {
             0 => &self.pairs[k],
-            _ => self.ring_pairs[k].as_ref().expect("a stage of two meshes has its second pair"),
+            n => &self.further_pairs[k][n - 1],
         }
     }
 
-    /// Planetary stage `k`'s planet–ring mesh in `lubricant`, if stage `k` is planetary.
-    pub fn ring_mesh<'a>(&'a self, k: usize, lubricant: Option<&'a Lubricant>) -> Option<Mesh<'a>> {
-        self.ring_pairs[k].as_ref().map(|gears| Mesh { gears, lubricant })
+    /// Stage `k`'s further mesh `n` (1, 2, …) in `lubricant`, if the stage has it.
+    pub fn further_mesh<'a>(&'a self, k: usize, n: usize, lubricant: Option<&'a Lubricant>) -> Option<Mesh<'a>> {
+        let gears = self.further_pairs[k].get(n.checked_sub(1)?)?;
+        Some(Mesh { gears, lubricant })
     }
 }
 

@@ -62,8 +62,10 @@ pub struct SceneDrive {
     pub layout: crate::drive::Drive,
     /// Each stage's pair: a planetary stage's sun–planet pair (the sun as pinion).
     pub pairs: Vec<GearPair>,
-    /// A planetary stage's planet–ring pair (internal, the planet as pinion); None for a parallel stage.
-    pub ring_pairs: Vec<Option<GearPair>>,
+    /// Each stage's meshes beyond its own pair, numbered 1, 2, … as its kind's `StageModel` numbers
+    /// them (a planetary stage's planet–ring pair, internal, the planet as pinion); empty for a
+    /// stage of one mesh.
+    pub further_pairs: Vec<Vec<GearPair>>,
     /// A vehicle over a drive cycle, with the box as its drive.
     pub cycle: Option<DriveCycleSpec>,
     /// One pair (a `gears` block) as its one-stage drive, `pinion_torque` at the pinion gear (`scene/pair_stage.rs`).

@@ -55,7 +55,7 @@ impl RingMesh {
         lubricant: Option<&crate::model::Lubricant>,
         geometry: Option<std::sync::Arc<PairGeometry>>,
     ) -> Option<RingMesh> {
-        let mesh = drive.ring_mesh(k, lubricant)?;
+        let mesh = drive.further_mesh(k, 1, lubricant)?;
         let tribology = mesh.tribology(mesh.reduced_modulus());
         let geometry = geometry.unwrap_or_else(|| std::sync::Arc::new(mesh.geometry()));
         let positions = super::setup::curve_positions(&geometry);

@@ -67,7 +67,7 @@ pub(super) fn stage_geometry(
         // The stage's own pair reads its load sharing; a planet–ring mesh shares equally.
         let (e_r, sharing) = match m.mesh {
             0 => (drive.mesh(m.k, lubricant).reduced_modulus(), drive.pairs[m.k].load_sharing),
-            _ => (drive.ring_mesh(m.k, lubricant).map_or(0.0, |r| r.reduced_modulus()), LoadSharing::Equal),
+            n => (drive.further_mesh(m.k, n, lubricant).map_or(0.0, |r| r.reduced_modulus()), LoadSharing::Equal),
         };
         let helical = super::helical::helical_report(&m.geometry, Vec::new());
         let plot = helical.is_some().then(|| plane_of_action_plot(m.stage, m.label.as_deref()));

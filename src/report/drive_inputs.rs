@@ -88,8 +88,8 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
         .stages
         .iter()
         .zip(&drive.pairs)
-        .zip(&drive.ring_pairs)
-        .map(|((s, pair), ring_pair)| {
+        .zip(&drive.further_pairs)
+        .map(|((s, pair), further)| {
             let g = pair.geometry().expect("lowering checked the pair");
             StageInputs {
                 name: s.name.clone(),
@@ -112,7 +112,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
                 contact_ratio: g.contact_ratio,
                 overlap_ratio: g.overlap_ratio,
                 lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), |l| lubrication_words(l, units)),
-                kind: super::kind_inputs::kind_inputs(layout, s, ring_pair.as_ref()),
+                kind: super::kind_inputs::kind_inputs(layout, s, further),
                 load_sharing: sharing_words(pair),
                 internal: pair.internal,
             }
@@ -244,8 +244,10 @@ pub(super) fn scene_inputs(scene: &Scene, drive: &SceneDrive) -> Vec<InputRow> {
         let meshes = stage.model().mesh_gears();
         let prefix = format!("{}.", stage.name);
         super::scene::pair_inputs(&mut rows, &drive.pairs[k], (&prefix, meshes[0]));
-        if let (Some(ring), Some(names)) = (&drive.ring_pairs[k], meshes.get(1)) {
-            super::scene::gear_inputs(&mut rows, &format!("{prefix}{}", names[1]), &ring.wheel);
+        // A further mesh adds its wheel (its pinion is a gear of the stage's own pair or of an
+        // earlier mesh): a planetary stage's ring.
+        for (pair, names) in drive.further_pairs[k].iter().zip(meshes.iter().skip(1)) {
+            super::scene::gear_inputs(&mut rows, &format!("{prefix}{}", names[1]), &pair.wheel);
         }
     }
     if let Some(l) = &scene.lubricant {

@@ -15,11 +15,11 @@ pub enum KindInputs {
     Planetary(PlanetaryInputs),
 }
 
-/// The inputs of `stage`'s kind; `further` is the pair of its second mesh, where it has one.
-pub(super) fn kind_inputs(layout: &Drive, stage: &Stage, further: Option<&GearPair>) -> Option<Box<KindInputs>> {
+/// The inputs of `stage`'s kind; `further` are the pairs of its meshes beyond its own pair.
+pub(super) fn kind_inputs(layout: &Drive, stage: &Stage, further: &[GearPair]) -> Option<Box<KindInputs>> {
     match &stage.kind {
         StageKind::Parallel | StageKind::Internal => None,
-        StageKind::Planetary(p) => super::planetary_inputs::planetary_inputs(layout, stage, p, further)
+        StageKind::Planetary(p) => super::planetary_inputs::planetary_inputs(layout, stage, p, further.first())
             .map(|i| Box::new(KindInputs::Planetary(i))),
     }
 }

@@ -157,7 +157,7 @@ pub(super) fn lower_drive_scene(
             analyses,
             drive: Some(SceneDrive {
                 layout,
-                ring_pairs: stages.iter().map(|s| s.kind.further_pairs().first().map(|p| (*p).clone())).collect(),
+                further_pairs: stages.iter().map(|s| s.kind.further_pairs().into_iter().cloned().collect()).collect(),
                 pairs: stages.into_iter().map(|s| s.pair).collect(),
                 cycle,
                 one_pair,
