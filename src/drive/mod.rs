@@ -43,7 +43,7 @@ mod walk_parts;
 mod walk_point;
 
 pub use forces::{mesh_forces, GearLoad, MeshForceSizes};
-pub use kind_state::KindPoint;
+pub use kind_state::{KindInputs, KindPoint};
 pub use layout::{Drive, DriveOperating, GearPlace, Hand, Member, Shaft, ShaftEnd, Stage};
 pub use mesh_efficiency::MeshEfficiency;
 pub use mesh_state::MeshState;

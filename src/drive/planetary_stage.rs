@@ -9,7 +9,7 @@
 //! the planets; they join the fixed point of the walk with the shafts' bearings.
 
 use super::forces::{GearLoad, MeshForceSizes};
-use super::kind_state::{KindPoint, KindState};
+use super::kind_state::{KindInputs, KindPoint, KindState};
 use super::kinematics::planetary::{PlanetaryLayout, PlanetaryMember};
 use super::kinematics::StageKinematics;
 use super::layout::{Member, Stage};
@@ -20,6 +20,7 @@ use super::planetary::loads::{lossless_torques, planet_forces};
 use super::planetary::point::{PlanetaryPoint, MESH_GEARS};
 use super::point::{BearingPoint, StagePoint};
 use super::stage_model::StageModel;
+use crate::geometry::PairGeometry;
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
@@ -34,6 +35,11 @@ impl StagePoint {
 }
 
 impl StageModel for PlanetaryLayout {
+    fn inputs(&self, layout: &super::layout::Drive, stage: &Stage, further: &[&PairGeometry]) -> Option<KindInputs> {
+        super::planetary::inputs::planetary_inputs(layout, stage, self, further.first().copied())
+            .map(KindInputs::Planetary)
+    }
+
     fn kinematics(&self, _: &Stage) -> Box<dyn StageKinematics> {
         Box::new(PlanetaryLayout::kinematics(self))
     }

@@ -5,12 +5,13 @@
 //! of the report's point.
 
 use super::forces::{GearLoad, MeshForceSizes};
-use super::kind_state::{KindPoint, KindState};
+use super::kind_state::{KindInputs, KindPoint, KindState};
 use super::kinematics::StageKinematics;
 use super::layout::{Member, Stage};
 use super::mesh_efficiency::MeshEfficiency;
 use super::mesh_state::MeshState;
 use super::point::{BearingPoint, StagePoint};
+use crate::geometry::PairGeometry;
 use crate::losses::gear_no_load::GearsRunning;
 use crate::losses::Oil;
 
@@ -89,6 +90,13 @@ pub(crate) trait StageModel {
     /// What the report notes of the shafts the stage sits on: (shaft, what it carries, why that is
     /// sound), e.g. a gear the kind centres on a shaft of one bearing place.
     fn shaft_notes(&self, stage: &Stage, bearing_places: &dyn Fn(usize) -> usize) -> Vec<(usize, String, String)>;
+
+    /// The kind's own inputs for the report's table of stages (`layout` the drive the stage sits
+    /// in, `further` the geometries of its meshes beyond its own pair, mesh 1 first): none by
+    /// default, every stage's inputs being in the stage's row.
+    fn inputs(&self, _layout: &super::layout::Drive, _stage: &Stage, _further: &[&PairGeometry]) -> Option<KindInputs> {
+        None
+    }
 
     /// The stage's meshes at `point` as the walk evaluated them, each with the gear it evaluated
     /// in the pinion's place at that gear's |T| and |ω|: by default the one pair, its driving gear

@@ -32,7 +32,7 @@ pub struct StageInputs {
     /// `at_mm`, `teeth` are its two turning members' and the sun's and ring's; its sizes the
     /// sun–planet mesh's); in report.json under the kind's name.
     #[serde(flatten, default)]
-    pub kind: Option<Box<super::kind_inputs::KindInputs>>,
+    pub kind: Option<Box<crate::drive::KindInputs>>,
     /// How the mesh shares its load when not equally (`load_sharing = stiffness` with the reliefs
     /// as written, or `none`); absent for equal sharing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -91,6 +91,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
         .zip(&drive.further_pairs)
         .map(|((s, pair), further)| {
             let g = pair.geometry().expect("lowering checked the pair");
+            let further_geometry: Vec<_> = further.iter().filter_map(|p| p.geometry().ok()).collect();
             StageInputs {
                 name: s.name.clone(),
                 shafts: s.places.map(|p| layout.shafts[p.shaft].name.clone()),
@@ -112,7 +113,7 @@ pub(super) fn stage_inputs(drive: &SceneDrive, units: super::units::Units) -> Ve
                 contact_ratio: g.contact_ratio,
                 overlap_ratio: g.overlap_ratio,
                 lubrication: s.lubrication.as_ref().map_or_else(|| "none".to_string(), |l| lubrication_words(l, units)),
-                kind: super::kind_inputs::kind_inputs(layout, s, further),
+                kind: s.model().inputs(layout, s, &further_geometry.iter().collect::<Vec<_>>()).map(Box::new),
                 load_sharing: sharing_words(pair),
                 internal: pair.internal,
             }

@@ -5,6 +5,7 @@
 use super::error::describe;
 use super::error::RexsError;
 use super::model::{Component, RexsModel};
+use super::planetary_stages::PlanetaryStages;
 pub(crate) use super::stage_data::{GearData, StageData};
 use super::units::{quantity, Kind};
 
@@ -16,8 +17,6 @@ const READ: &[&str] = &[
     "gear_casing",
     "shaft",
     "cylindrical_stage",
-    "planetary_stage",
-    "planet_carrier",
     "ring_gear",
     "cylindrical_gear",
     "cylindrical_gear_flank",
@@ -48,7 +47,8 @@ pub(crate) struct GearUnit {
     pub version: String,
     pub application: String,
     pub stages: Vec<StageData>,
-    pub planetary: Vec<super::planetary::PlanetaryData>,
+    /// Its planetary stages (their meshes are not among `stages`).
+    pub planetary: PlanetaryStages,
     pub shafts: Vec<super::shafts::ShaftData>,
     pub lubricant: Option<super::cases::LubricantData>,
     pub cases: Vec<super::cases::CaseData>,
@@ -85,13 +85,8 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
     let mut unit =
         GearUnit { version: model.version.clone(), application: model.application.clone(), ..Default::default() };
     let mut errors = Vec::new();
-    for c in model.of_kind("planetary_stage") {
-        match super::planetary::read_planetary(model, c, &mut unit.warnings) {
-            Ok(stage) => unit.planetary.push(stage),
-            Err(e) => errors.push(e),
-        }
-    }
-    let holds = super::planetary_hold::member_joints(model);
+    unit.planetary = PlanetaryStages::read(model, &mut unit.warnings, &mut errors);
+    let holds = PlanetaryStages::holds(model);
     let unmodelled: Vec<String> = model
         .components
         .values()
@@ -106,8 +101,7 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
             "gearloss imports gear units of cylindrical stages on parallel shafts and simple planetary stages",
         ));
     }
-    let in_planetary: Vec<u64> =
-        model.of_kind("planetary_stage").flat_map(|p| super::planetary::meshes_of(model, p.id)).collect();
+    let in_planetary = PlanetaryStages::meshes_in(model);
     for c in model.of_kind("cylindrical_stage").filter(|c| !in_planetary.contains(&c.id)) {
         match read_stage(model, c, &mut unit.warnings) {
             Ok(stage) => unit.stages.push(stage),
@@ -123,27 +117,15 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
             "gearloss imports gear units of cylindrical stages and simple planetary stages",
         ));
     }
-    let cheeks: Vec<(u64, Vec<u64>)> =
-        unit.planetary.iter().filter_map(|p| p.carrier.as_ref().map(|(s, others, _)| (*s, others.clone()))).collect();
+    let cheeks = unit.planetary.carrier_cheeks();
     let sleeves = super::joined_shafts::groups(model)?;
     for (groups, joint) in [(&cheeks, "the carrier's other cheek"), (&sleeves, "a shaft–hub connection")] {
-        let gears = unit
-            .stages
-            .iter_mut()
-            .flat_map(|s| s.gears.iter_mut())
-            .chain(unit.planetary.iter_mut().flat_map(|p| [&mut p.sun, &mut p.ring]));
+        let gears = unit.stages.iter_mut().flat_map(|s| s.gears.iter_mut()).chain(unit.planetary.gears_on_shafts());
         super::joined_shafts::onto_the_kept_shaft(model, groups, joint, gears, &mut unit.warnings);
     }
-    let places: Vec<(u64, f64)> = unit.planetary.iter().flat_map(|p| p.places()).collect();
+    let places = unit.planetary.places();
     let joined: Vec<(u64, Vec<u64>)> = cheeks.into_iter().chain(sleeves).collect();
-    // A sun among two planets or more, alone on its shaft, floats: one bearing place carries it.
-    let floating: Vec<u64> = unit
-        .planetary
-        .iter()
-        .filter(|p| p.planet_ids.len() >= 2 && p.held != super::planetary::Member::Sun)
-        .map(|p| p.sun.shaft)
-        .filter(|s| !unit.stages.iter().any(|st| st.gears.iter().any(|g| g.shaft == *s)))
-        .collect();
+    let floating = unit.planetary.floating_suns(&unit.stages);
     unit.shafts = super::shafts::read_shafts(model, &unit.stages, &places, &joined, &floating, &mut unit.warnings)?;
     let lubricant = super::cases::read_lubricant(model, &mut unit.warnings);
     let cases = super::cases::read_cases(model, &unit.shafts, &mut unit.warnings);
@@ -161,6 +143,7 @@ pub(crate) fn read_gear_unit(model: &RexsModel) -> Result<GearUnit, RexsError> {
         .values()
         .filter(|c| {
             !READ.contains(&c.kind.as_str())
+                && !super::planetary_stages::READ.contains(&c.kind.as_str())
                 && !super::shafts::HUB_CONNECTIONS.contains(&c.kind.as_str())
                 && c.kind != "shaft_section"
                 && !holds.contains(&c.id)

@@ -21,6 +21,7 @@ pub(crate) mod joined_shafts;
 pub(crate) mod model;
 pub(crate) mod planetary;
 pub(crate) mod planetary_hold;
+pub(crate) mod planetary_stages;
 pub(crate) mod profile_shift;
 pub(crate) mod scene_text;
 pub(crate) mod shaft_sections;

@@ -47,9 +47,7 @@ pub(crate) fn write_scene(file_name: &str, model: &RexsModel, unit: &GearUnit) -
         );
         let _ = writeln!(w, "    lubricant = iso_vg(220, mineral)");
     }
-    for p in &unit.planetary {
-        super::write_planetary::planetary_stage(w, p);
-    }
+    unit.planetary.write(w);
     for st in &unit.stages {
         stage(w, st);
     }

@@ -5,6 +5,7 @@
 //! (`super::planetary_stage`).
 
 pub(crate) mod flow;
+pub(crate) mod inputs;
 pub(crate) mod loads;
 pub(crate) mod point;
 

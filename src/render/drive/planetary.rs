@@ -2,12 +2,12 @@
 //! the assembly and neighbour conditions), and at each operating point its members' speeds and
 //! torques, the rolling power, both meshes, η₀ and η, the planets' forces and bearings.
 
+use crate::drive::planetary::inputs::PlanetaryInputs;
 use crate::drive::DrivePoint;
+use crate::drive::KindInputs;
 use crate::render::markup::md;
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_inputs::StageInputs;
-use crate::report::kind_inputs::KindInputs;
-use crate::report::planetary_inputs::PlanetaryInputs;
 use crate::report::units::Units;
 
 use super::shown_units::Shown;

@@ -1,11 +1,12 @@
-//! A planetary stage's inputs in the report: its members and where they sit, the planets, the
-//! ratios, both meshes' sizes, the assembly and neighbour conditions with their numbers.
+//! A planetary stage's inputs in the report (its `StageModel::inputs`): its members and where they
+//! sit, the planets, the ratios, both meshes' sizes, the assembly and neighbour conditions with
+//! their numbers.
 
 use serde::{Deserialize, Serialize};
 
 use crate::drive::kinematics::planetary::{stationary_ratio, PlanetaryLayout, PlanetaryMember};
 use crate::drive::{Drive, Stage};
-use crate::model::GearPair;
+use crate::geometry::PairGeometry;
 
 /// A planetary stage as the scene gives it.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -35,13 +36,15 @@ pub struct PlanetaryInputs {
     pub planet_bearing: String,
 }
 
-pub(super) fn planetary_inputs(
+/// The inputs of planetary stage `stage` (`p` its layout) on `layout`'s shafts; `ring` is its
+/// planet–ring mesh's geometry (its mesh 1).
+pub(crate) fn planetary_inputs(
     layout: &Drive,
     stage: &Stage,
     p: &PlanetaryLayout,
-    ring_pair: Option<&GearPair>,
+    ring: Option<&PairGeometry>,
 ) -> Option<PlanetaryInputs> {
-    let ring = ring_pair?.geometry().ok()?;
+    let ring = ring?;
     let shaft_of = |m: PlanetaryMember| {
         p.place_of(m).map_or_else(|| "housing".to_string(), |i| layout.shafts[stage.places[i].shaft].name.clone())
     };
