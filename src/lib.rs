@@ -20,8 +20,9 @@
 //!  cli ─ lib                      the binary's commands; one function per stage
 //!  run, rerender                  the one run layer (folder, oil temperatures, shards, merge) for every
 //!                                 scene; a folder redrawn from its json
-//!  run_drive, run_pair,           each kind of scene's SceneRun (run_kind: a drive's; a pair's, also what
-//!    run_stage_pairs, run_kind    a drive's stage meshes run as pairs alone go through)
+//!  run_drive, run_pair,           a scene's run (every scene a drive: run_drive), the stage meshes run
+//!    run_stage_pairs, run_kind    as pairs alone beneath it (run_stage_pairs → run_pair); run_kind the
+//!                                 shapes they pass
 //!  shard, folder                  shards and merge; a report folder written whole (concurrent-safe)
 //!  render/ (markdown, svg/)       formats the report; never computes
 //!  report/                        the serde report: numbers and series ready to draw, findings

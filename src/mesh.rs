@@ -19,14 +19,6 @@ impl Scene {
     pub fn mesh(&self) -> Mesh<'_> {
         Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
     }
-
-    /// Whether the run evaluates, reports and renders the scene with a pair's modules: only a
-    /// scene built without a drive (a drive's stage mesh as its pair alone, the per-mesh
-    /// evaluation). Every scene a user writes is lowered with its drive (a scene of one pair with
-    /// its one-stage drive) and runs as that drive.
-    pub fn runs_as_pair(&self) -> bool {
-        self.drive.is_none()
-    }
 }
 
 impl SceneDrive {

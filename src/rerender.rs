@@ -1,6 +1,6 @@
 //! `gearloss render DIR`: a report folder's report.md and plots drawn again from its report.json
-//! alone (and its `timing_numerics.json`, when the run wrote one), for every kind of report through
-//! its kind's `SceneRun`. `run` renders the same way: the report is written as report.json and
+//! alone (and its `timing_numerics.json`, when the run wrote one): a drive's report (every scene's),
+//! its comparison of oil temperatures, and a pair's report (a stage mesh's, in its folder). `run` renders the same way: the report is written as report.json and
 //! read back before the other files are drawn, so the two give the same files byte for byte, and
 //! report.json is shown to hold everything the files show.
 
@@ -8,27 +8,34 @@ use std::path::Path;
 
 use crate::run_drive::DriveRun;
 use crate::run_error::{Failure, FailureKind, RunError};
-use crate::run_kind::SceneRun;
-use crate::run_pair::PairRun;
+use crate::run_pair;
 
 /// The files `render` draws for the report folder `dir` (a scene's, or a comparison of oil
-/// temperatures with one such folder per temperature), as (path inside `dir`, content): each
-/// kind's report read back by its `SceneRun`, the folders inside it that hold reports of their
-/// own drawn in turn.
+/// temperatures with one such folder per temperature), as (path inside `dir`, content): the
+/// report read back as its kind, the folders inside it that hold reports of their own drawn in turn.
 pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
     let text = read(dir, "report.json")?;
     let value: Option<serde_json::Value> = serde_json::from_str(&text).ok();
     let has = |keys: &[&str]| value.as_ref().is_some_and(|v| keys.iter().all(|k| v.get(k).is_some()));
     // Which report `text` is, by the top-level fields only its kind has; an edited or damaged
     // report is then read as its own kind, and the error names that kind's field.
-    let (files, inner) = if has(PairRun::REPORT.1) {
-        PairRun::redraw(dir, &text, &|e| bad(dir, PairRun::REPORT.0, e))?
+    let (files, inner) = if has(run_pair::REPORT.1) {
+        run_pair::redraw(dir, &text, &|e| bad(dir, run_pair::REPORT.0, e))?
     } else if has(DriveRun::REPORT.1) {
         DriveRun::redraw(dir, &text, &|e| bad(dir, DriveRun::REPORT.0, e))?
     } else if has(DriveRun::OIL_SWEEP.1) {
         DriveRun::redraw_oil_sweep(&text, &|e| bad(dir, DriveRun::OIL_SWEEP.0, e))?
-    } else if has(PairRun::OIL_SWEEP.1) {
-        PairRun::redraw_oil_sweep(&text, &|e| bad(dir, PairRun::OIL_SWEEP.0, e))?
+    } else if has(&["runs"]) {
+        return Err(RunError::Render(
+            Failure::new(
+                FailureKind::NotAReport,
+                format!(
+                    "{} is a comparison of one pair's runs at several oil temperatures, which gearloss no longer writes: a pair's scene runs as its one-stage drive, whose comparison has `rows`",
+                    dir.join("report.json").display()
+                ),
+            )
+            .hint("run the scene again: `gearloss run` writes the comparison and each temperature's folder whole"),
+        ));
     } else {
         return Err(RunError::Render(
             Failure::new(

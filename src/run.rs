@@ -1,11 +1,10 @@
 //! The whole run, one path for every scene: a scene (at each of its oil temperatures) streamed
 //! into its record files, evaluated, reported and rendered into a report folder written whole
 //! ([`run_into`]); the same in memory ([`run_to_files`], [`report_of`]); a shard's part and the
-//! merge of shards ([`merge_into`]). Every scene a user writes runs as its drive
+//! merge of shards ([`merge_into`]). Every scene runs as its drive
 //! ([`crate::run_drive::DriveRun`]: a scene of one pair as its one-stage drive, its pair's own
-//! report in `stages/pair/`); a scene built without a drive (a stage's pair alone, which the drive's
-//! run analyses through `run_pair.rs` directly) is the one a [`crate::run_pair::PairRun`] serves.
-//! Both are a [`SceneRun`]; everything here is the same for both.
+//! report in `stages/pair/`); the meshes of its stages analysed as pairs alone go through
+//! `run_pair.rs` beneath it (`run_stage_pairs.rs`).
 
 use std::path::{Path, PathBuf};
 
@@ -17,10 +16,9 @@ use crate::model::Scene;
 use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
 use crate::report::{self, Report};
-use crate::run_drive::{DriveRun, LabelledDrives};
-use crate::run_error::{Failure, RunError};
-use crate::run_kind::{OilRun, SceneRun};
-use crate::run_pair::PairRun;
+use crate::run_drive::{DriveRun, DriveRunReports, LabelledDrives};
+use crate::run_error::{Failure, FailureKind, RunError};
+use crate::run_kind::OilRun;
 use crate::scene::check::check;
 use crate::shard;
 
@@ -45,34 +43,20 @@ pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
     Ok(RenderedReport { slug: report::slug(&scene.title), files })
 }
 
-/// Runs `$body` with `$kind` bound to the scene's [`SceneRun`]: a pair's where the scene
-/// [`Scene::runs_as_pair`], else a drive's.
-macro_rules! by_kind {
-    ($scene:expr, $kind:ident => $body:expr) => {
-        if !$scene.runs_as_pair() {
-            let $kind = &DriveRun;
-            $body
-        } else {
-            let $kind = &PairRun;
-            $body
-        }
-    };
-}
-
 /// Everything `gearloss run` does, in memory: check, evaluate (records into buffers), report,
 /// render; the record files are among the files returned. A scene with several oil temperatures
 /// gives one report per temperature in its folder (`oil_temperature_90degC/report.md`) and their
-/// comparison at the top (`report::oil_sweep`).
+/// comparison at the top (`report::drive_oil_sweep`).
 pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let slug = report::slug(&scene.title);
-    let files = by_kind!(scene, kind => in_memory(kind, &scene))?;
+    let files = in_memory(&DriveRun, &scene)?;
     Ok(RenderedReport { slug, files })
 }
 
 /// A scene's files in memory, at each of its oil temperatures when it has several (the
 /// comparison's files first, then each run's under its folder).
-fn in_memory<K: SceneRun>(kind: &K, scene: &Scene) -> Result<Vec<(String, String)>, RunError> {
+fn in_memory(kind: &DriveRun, scene: &Scene) -> Result<Vec<(String, String)>, RunError> {
     if scene.operating.oil_temperatures.is_none() {
         return Ok(kind.files(scene)?.1);
     }
@@ -91,18 +75,18 @@ type Swept<R> = (Vec<(String, String)>, Vec<(String, R)>);
 /// Runs a scene at each of its oil temperatures by `run_one(scene at θ, its folder)` and renders
 /// the comparison of the runs: the files at the top of the report folder, and the runs' reports
 /// labelled by their folders.
-fn each_oil_temperature<K: SceneRun>(
-    kind: &K,
+fn each_oil_temperature(
+    kind: &DriveRun,
     scene: &Scene,
-    mut run_one: impl FnMut(&Scene, &str) -> Result<K::Report, RunError>,
-) -> Result<Swept<K::Report>, RunError> {
-    let mut runs: Vec<OilRun<K::Report>> = Vec::new();
+    mut run_one: impl FnMut(&Scene, &str) -> Result<DriveRunReports, RunError>,
+) -> Result<Swept<DriveRunReports>, RunError> {
+    let mut runs: Vec<OilRun<DriveRunReports>> = Vec::new();
     // The sweep's own temperatures (K): each run is at one of them.
     let kelvin: Vec<f64> =
         scene.operating.oil_temperatures.iter().flat_map(|s| s.values.iter().map(|t| t.value)).collect();
     for ((i, label), kelvin) in scene.oil_temperature_labels().into_iter().enumerate().zip(kelvin) {
         let at = scene.at_oil_temperature(i);
-        let dir = report::oil_sweep::run_folder(&label);
+        let dir = report::drive_oil_sweep::run_folder(&label);
         let report = run_one(&at, &dir)?;
         runs.push((label, kelvin, dir, report));
     }
@@ -124,9 +108,9 @@ pub struct Written {
 }
 
 impl Written {
-    /// What a run of `K` wrote.
-    fn of<K: SceneRun>(_: &K, folder: PathBuf, files: Vec<String>, reports: Vec<(String, K::Report)>) -> Written {
-        let (reports, drives) = K::labelled(reports);
+    /// What a run wrote.
+    fn of(folder: PathBuf, files: Vec<String>, reports: Vec<(String, DriveRunReports)>) -> Written {
+        let (reports, drives) = DriveRun::labelled(reports);
         Written { folder, files, reports, drives }
     }
 }
@@ -155,15 +139,21 @@ pub fn run_into_with(
     formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<Written, RunError> {
-    by_kind!(scene, kind => match shard {
-        None => whole_into(kind, scene, out_dir, formats, progress),
-        Some(shard) => shard_into(kind, (source_name, source), scene, (out_dir, shard), formats, progress),
-    })
+    if scene.drive.is_none() {
+        return Err(RunError::Render(
+            Failure::new(FailureKind::NotLowered, format!("`{}` has no drive: it was not built by lowering", scene.title))
+                .hint("give `run` the scene `gearloss::check` lowers from its text (a pair is lowered as its one-stage drive)"),
+        ));
+    }
+    match shard {
+        None => whole_into(&DriveRun, scene, out_dir, formats, progress),
+        Some(shard) => shard_into(&DriveRun, (source_name, source), scene, (out_dir, shard), formats, progress),
+    }
 }
 
 /// A scene into its report folder, whole: at each of its oil temperatures when it has several.
-fn whole_into<K: SceneRun>(
-    kind: &K,
+fn whole_into(
+    kind: &DriveRun,
     scene: &Scene,
     out_dir: &Path,
     formats: RecordFormats,
@@ -174,7 +164,7 @@ fn whole_into<K: SceneRun>(
     if scene.operating.oil_temperatures.is_none() {
         let (report, files) = kind.run_in_folder(scene, (&folder, ""), formats, progress)?;
         let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-        return Ok(Written::of(kind, folder, files, vec![(String::new(), report)]));
+        return Ok(Written::of(folder, files, vec![(String::new(), report)]));
     }
     let mut files = Vec::new();
     let (top, reports) = each_oil_temperature(kind, scene, |at, dir| {
@@ -189,13 +179,13 @@ fn whole_into<K: SceneRun>(
         progress.advance(1);
     }
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written::of(kind, folder, files, reports))
+    Ok(Written::of(folder, files, reports))
 }
 
 /// One shard of a scene's sweep into `out_dir/<slug>.shard-K-of-N/`: its record files and the
 /// manifest with their tally and digests. A scene of several oil temperatures is refused.
-fn shard_into<K: SceneRun>(
-    kind: &K,
+fn shard_into(
+    kind: &DriveRun,
     source: (&str, &str),
     scene: &Scene,
     (out_dir, shard): (&Path, Shard),
@@ -204,11 +194,10 @@ fn shard_into<K: SceneRun>(
 ) -> Result<Written, RunError> {
     let labels = scene.oil_temperature_labels();
     if !labels.is_empty() {
-        let (failure, noun) = K::SHARDED_SWEEP;
         return Err(RunError::Shards(
             Failure::new(
-                failure,
-                format!("{noun} runs at {} oil temperatures, and a shard holds one scene's points", labels.len()),
+                FailureKind::ShardedDrive,
+                format!("the drive runs at {} oil temperatures, and a shard holds one scene's points", labels.len()),
             )
             .hint("run it whole, or write one scene per oil temperature and shard each"),
         ));
@@ -220,7 +209,7 @@ fn shard_into<K: SceneRun>(
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
     let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-    Ok(Written::of(kind, folder, files, Vec::new()))
+    Ok(Written::of(folder, files, Vec::new()))
 }
 
 /// `gearloss merge`: combines the shard folders of one scene into the report a single run gives
@@ -228,11 +217,9 @@ fn shard_into<K: SceneRun>(
 pub fn merge_into(shards: &[PathBuf], out_dir: &Path, progress: &dyn Progress) -> Result<Written, RunError> {
     let set = shard::ShardSet::read(shards).map_err(RunError::Shards)?;
     let scene = check(&set.source_name, &set.source).map_err(RunError::Scene)?;
-    by_kind!(scene, kind => {
-        let folder =
-            ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
-        let (report, files) = kind.merge_into(&set, &scene, &folder, progress)?;
-        let folder = folder.commit().map_err(RunError::io("the report folder"))?;
-        Ok(Written::of(kind, folder, files, vec![(String::new(), report)]))
-    })
+    let folder =
+        ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
+    let (report, files) = DriveRun.merge_into(&set, &scene, &folder, progress)?;
+    let folder = folder.commit().map_err(RunError::io("the report folder"))?;
+    Ok(Written::of(folder, files, vec![(String::new(), report)]))
 }

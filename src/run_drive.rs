@@ -1,6 +1,7 @@
-//! A drive of several stages' part of the one run layer (`run.rs`): its evaluation streamed
-//! into its record files, reported and rendered (`DriveRun`), in memory or into a folder, as a
-//! shard, and merged from its shards.
+//! A scene's own part of the one run layer (`run.rs`), every scene being a drive (one pair its
+//! one-stage drive): its evaluation streamed into its record files, reported and rendered
+//! (`DriveRun`), in memory or into a folder, as a shard, and merged from its shards; the meshes of
+//! its stages analysed as pairs alone (`run_stage_pairs.rs`) with it.
 
 use std::io::BufWriter;
 use std::path::Path;
@@ -15,8 +16,8 @@ use crate::render::RenderedReport;
 use crate::report;
 use crate::report::drive::DriveReport;
 use crate::report::drive_stage_pairs::StagePairReport;
-use crate::run_error::{FailureKind, RunError};
-use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
+use crate::run_error::RunError;
+use crate::run_kind::{File, OilRun, Redrawn};
 use crate::run_stage_pairs::{stage_pair_shard, stage_pairs_into, stage_pairs_merged, StagePairReports};
 use crate::{render, shard};
 
@@ -105,16 +106,21 @@ fn drive_of(scene: &Scene) -> &crate::model::SceneDrive {
     scene.drive.as_ref().expect("a drive's run is of a drive scene, at every oil temperature")
 }
 
-impl SceneRun for DriveRun {
-    type Report = DriveRunReports;
-    const SHARDED_SWEEP: (FailureKind, &'static str) = (FailureKind::ShardedDrive, "the drive");
+/// The reports of one pair a run wrote (the stage meshes'), labelled by their folders, and its
+/// drives' reports, labelled by theirs.
+pub(crate) type Labelled = (Vec<(String, crate::report::Report)>, LabelledDrives);
 
-    fn files(&self, scene: &Scene) -> Result<(DriveRunReports, Vec<File>), RunError> {
+impl DriveRun {
+    /// The scene (at one oil temperature) in memory: its reports and its files, the record files
+    /// of the default formats among them.
+    pub(crate) fn files(&self, scene: &Scene) -> Result<(DriveRunReports, Vec<File>), RunError> {
         let (drive, rendered, pairs) = report_files(scene, drive_of(scene))?;
         Ok((DriveRunReports { drive, pairs }, rendered.files))
     }
 
-    fn run_in_folder(
+    /// The scene (at one oil temperature) into `folder` under `dir` (`""`: the top): its record
+    /// files of `formats` as its sweep streams, then its report. The reports and the files written.
+    pub(crate) fn run_in_folder(
         &self,
         scene: &Scene,
         at: (&ReportFolder, &str),
@@ -124,14 +130,18 @@ impl SceneRun for DriveRun {
         run_one_into(scene, drive_of(scene), at, formats, progress)
     }
 
-    fn oil_sweep(&self, runs: &[OilRun<DriveRunReports>]) -> Result<Vec<File>, RunError> {
+    /// The comparison of the runs at the scene's oil temperatures: the files at the top of the
+    /// report folder.
+    pub(crate) fn oil_sweep(&self, runs: &[OilRun<DriveRunReports>]) -> Result<Vec<File>, RunError> {
         let runs: Vec<OilRun<DriveReport>> =
             runs.iter().map(|(l, k, f, r)| (l.clone(), *k, f.clone(), r.drive.clone())).collect();
         let sweep = report::drive_oil_sweep::build_drive_oil_sweep(&runs);
         render::drive::oil_sweep::render_drive_oil_sweep(&sweep).map_err(RunError::drawing)
     }
 
-    fn shard_into(
+    /// The shard's part of the sweep: its record files of `formats` written into `folder` (their
+    /// names) and its manifest (without the digests, which the run layer adds).
+    pub(crate) fn shard_into(
         &self,
         scene: &Scene,
         (source_name, source): (&str, &str),
@@ -155,7 +165,7 @@ impl SceneRun for DriveRun {
     /// tallies folded, the report's rows, map, thermal balance and duty cycle evaluated again; a
     /// one-pair drive's stage analysed over the sweep merged from the shards' as a pair's shards
     /// merge, the stages analysed at the drive's points run again.
-    fn merge_into(
+    pub(crate) fn merge_into(
         &self,
         set: &shard::ShardSet,
         scene: &Scene,
@@ -177,18 +187,27 @@ impl SceneRun for DriveRun {
         Ok((DriveRunReports { drive: report, pairs }, files))
     }
 
-    const REPORT: (&'static str, &'static [&'static str]) = ("a drive's report", &["shafts"]);
-    const OIL_SWEEP: (&'static str, &'static [&'static str]) =
+    /// What its report.json is called and the top-level fields only it has, read by `gearloss render`.
+    pub(crate) const REPORT: (&'static str, &'static [&'static str]) = ("a drive's report", &["shafts"]);
+    /// The same of its comparison of oil temperatures.
+    pub(crate) const OIL_SWEEP: (&'static str, &'static [&'static str]) =
         ("a drive's comparison of oil temperatures", &["runs", "rows"]);
 
     /// Each stage mesh analysed as a pair alone has its report of one pair in its folder.
-    fn redraw(_: &Path, text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+    pub(crate) fn redraw(
+        _: &Path,
+        text: &str,
+        bad: &dyn Fn(serde_json::Error) -> RunError,
+    ) -> Result<Redrawn, RunError> {
         let drive: DriveReport = serde_json::from_str(text).map_err(bad)?;
         let files = render::drive::render_drive(&drive).map_err(RunError::drawing)?.files;
         Ok((files, drive.stage_pairs.iter().filter_map(|p| p.folder.clone()).collect()))
     }
 
-    fn redraw_oil_sweep(text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+    pub(crate) fn redraw_oil_sweep(
+        text: &str,
+        bad: &dyn Fn(serde_json::Error) -> RunError,
+    ) -> Result<Redrawn, RunError> {
         let sweep: report::drive_oil_sweep::DriveOilSweepReport = serde_json::from_str(text).map_err(bad)?;
         let files = render::drive::oil_sweep::render_drive_oil_sweep(&sweep).map_err(RunError::drawing)?;
         Ok((files, sweep.runs.iter().map(|r| r.folder.clone()).collect()))
@@ -196,7 +215,7 @@ impl SceneRun for DriveRun {
 
     /// The stage meshes' reports labelled by their folders in the report folder
     /// (`oil_temperature_90degC/stages/pair`), the drives' by theirs.
-    fn labelled(reports: Vec<(String, DriveRunReports)>) -> Labelled {
+    pub(crate) fn labelled(reports: Vec<(String, DriveRunReports)>) -> Labelled {
         let mut pairs = Vec::new();
         let mut drives = Vec::new();
         for (label, r) in reports {

@@ -32,10 +32,10 @@ pub enum FailureKind {
     NotAShard,
     /// The shard folders given to `merge` do not belong together or do not cover the scene.
     ShardsDoNotMatch,
-    /// `--shard` on a scene that runs at several oil temperatures.
-    ShardedOilSweep,
-    /// `--shard` on a drive at several oil temperatures.
+    /// `--shard` on a scene (a drive, one pair a one-stage drive) at several oil temperatures.
     ShardedDrive,
+    /// A scene given to `run` that lowering did not build: it has no drive.
+    NotLowered,
 }
 
 /// A failure after lowering: its kind, the reason (one line) and what to do about it.

@@ -1,8 +1,9 @@
 //! One pair's scene (at one oil temperature) run after its sweep: the details evaluated, reported
 //! and rendered (`finish_exact`), and the whole run in memory with its record files
 //! ([`run_scene_to_files`]): the per-mesh evaluation each stage mesh a drive's run analyses goes
-//! through (a scene of one pair's, `stages/pair/`, among them). [`PairRun`] is a pair alone's part
-//! of the one run layer ([`crate::run`]): a scene built without a drive.
+//! through (a scene of one pair's, `stages/pair/`, among them): into a folder, as a shard's part and
+//! merged from shards, as the drive's run ([`crate::run_stage_pairs`]) asks; and a pair's
+//! report.json drawn again ([`redraw`], for `gearloss render`).
 
 use std::path::Path;
 
@@ -16,11 +17,10 @@ use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
 use crate::render::TIMINGS_FILE;
 use crate::report::numerics::Timings;
-use crate::report::oil_sweep::OilSweepReport;
 use crate::report::{self, Report};
 use crate::run_error::{Failure, FailureKind, RunError};
-use crate::run_kind::{File, Labelled, OilRun, Redrawn, SceneRun};
-use crate::shard::{self, Manifest, ShardSet};
+use crate::run_kind::Redrawn;
+use crate::shard::{self, ShardSet};
 
 /// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
 pub fn has_records(scene: &Scene) -> bool {
@@ -146,79 +146,19 @@ pub(crate) fn merge_in_folder(
     Ok((exact, report, files))
 }
 
-/// A scene of one pair, as the one run layer runs it ([`crate::run`]).
-pub(crate) struct PairRun;
+/// What a pair's report.json is called and the top-level fields only it has, read by
+/// `gearloss render`.
+pub(crate) const REPORT: (&str, &[&str]) = ("a pair's report", &["geometry"]);
 
-impl SceneRun for PairRun {
-    type Report = Report;
-    const SHARDED_SWEEP: (FailureKind, &'static str) = (FailureKind::ShardedOilSweep, "the scene");
-
-    fn files(&self, scene: &Scene) -> Result<(Report, Vec<File>), RunError> {
-        run_scene_to_files(scene)
-    }
-
-    fn run_in_folder(
-        &self,
-        scene: &Scene,
-        at: (&ReportFolder, &str),
-        formats: RecordFormats,
-        progress: &dyn Progress,
-    ) -> Result<(Report, Vec<String>), RunError> {
-        run_in_folder_exact(scene, at, formats, progress).map(|(_, report, files)| (report, files))
-    }
-
-    fn oil_sweep(&self, runs: &[OilRun<Report>]) -> Result<Vec<File>, RunError> {
-        let runs: Vec<(String, f64, Report)> = runs.iter().map(|(l, k, _, r)| (l.clone(), *k, r.clone())).collect();
-        crate::render::oil_sweep::render_oil_sweep(&report::oil_sweep::build_oil_sweep(&runs))
-            .map_err(RunError::drawing)
-    }
-
-    fn shard_into(
-        &self,
-        scene: &Scene,
-        (source_name, source): (&str, &str),
-        shard: Shard,
-        (folder, formats): (&ReportFolder, RecordFormats),
-        progress: &dyn Progress,
-    ) -> Result<(Vec<String>, Manifest), RunError> {
-        let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
-        let (tally, files) = shard_in_folder(scene, shard, (folder, ""), formats, progress)?;
-        let points = (plan.count(), plan.range.clone());
-        Ok((files, Manifest::new((source_name, source), shard, points, &tally)))
-    }
-
-    fn merge_into(
-        &self,
-        set: &ShardSet,
-        scene: &Scene,
-        folder: &ReportFolder,
-        progress: &dyn Progress,
-    ) -> Result<(Report, Vec<String>), RunError> {
-        merge_in_folder(set, scene, (folder, ""), progress).map(|(_, report, files)| (report, files))
-    }
-
-    const REPORT: (&'static str, &'static [&'static str]) = ("a pair's report", &["geometry"]);
-    const OIL_SWEEP: (&'static str, &'static [&'static str]) = ("a pair's comparison of oil temperatures", &["runs"]);
-
-    /// With its `timing_numerics.json`, when the run wrote one.
-    fn redraw(dir: &Path, text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
-        let report: Report = serde_json::from_str(text).map_err(bad)?;
-        let timings = match std::fs::read_to_string(dir.join(TIMINGS_FILE)) {
-            Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| timings_bad(dir, e))?),
-            Err(_) => None,
-        };
-        Ok((crate::render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files, Vec::new()))
-    }
-
-    fn redraw_oil_sweep(text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
-        let sweep: OilSweepReport = serde_json::from_str(text).map_err(bad)?;
-        let files = crate::render::oil_sweep::render_oil_sweep(&sweep).map_err(RunError::drawing)?;
-        Ok((files, sweep.runs.iter().map(|r| r.folder.clone()).collect()))
-    }
-
-    fn labelled(reports: Vec<(String, Report)>) -> Labelled {
-        (reports, Vec::new())
-    }
+/// The files a pair's report.json (`text`, in `dir`) draws again, with its `timing_numerics.json`
+/// when the run wrote one; `bad` names what in the text is not a pair's report.
+pub(crate) fn redraw(dir: &Path, text: &str, bad: &dyn Fn(serde_json::Error) -> RunError) -> Result<Redrawn, RunError> {
+    let report: Report = serde_json::from_str(text).map_err(bad)?;
+    let timings = match std::fs::read_to_string(dir.join(TIMINGS_FILE)) {
+        Ok(t) => Some(serde_json::from_str::<Timings>(&t).map_err(|e| timings_bad(dir, e))?),
+        Err(_) => None,
+    };
+    Ok((crate::render::render_report(&report, timings.as_ref()).map_err(RunError::drawing)?.files, Vec::new()))
 }
 
 /// A `timing_numerics.json` that does not read back.

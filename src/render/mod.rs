@@ -15,7 +15,6 @@ pub(crate) mod markdown_sweep;
 pub(crate) mod markdown_teeth;
 pub(crate) mod markdown_thermal;
 pub(crate) mod markup;
-pub(crate) mod oil_sweep;
 pub mod svg;
 pub(crate) mod table;
 pub mod terminal;

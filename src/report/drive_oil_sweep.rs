@@ -1,6 +1,6 @@
 //! A drive run at several oil temperatures: one drive report per temperature (in its own folder)
 //! and their comparison, row by row (operating point, law, formulation): the total loss and η at
-//! each temperature, and the loss parts; the lubricant read at each, as a pair's comparison gives it.
+//! each temperature, and the loss parts; the lubricant read at each.
 
 use crate::losses::parts::LossColumn;
 use serde::{Deserialize, Serialize};
@@ -72,4 +72,11 @@ pub(crate) fn build_drive_oil_sweep(runs: &[(String, f64, String, DriveReport)])
             .collect(),
         unit_system: first.unit_system,
     }
+}
+
+/// The folder of one temperature's report: `oil_temperature_90degC` (characters other than
+/// letters, digits, `.` and `-` left out).
+pub(crate) fn run_folder(label: &str) -> String {
+    let kept: String = label.chars().filter(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-')).collect();
+    format!("oil_temperature_{kept}")
 }

@@ -34,7 +34,6 @@ mod non_finite;
 pub mod number;
 pub(crate) mod numerics;
 mod oil_checks;
-pub(crate) mod oil_sweep;
 pub(crate) mod plausibility;
 pub(crate) mod points;
 pub(crate) mod scene;

@@ -85,3 +85,33 @@ fn the_temperature_moves_viscosity_and_friction_as_the_laws_say() {
     }
     assert_eq!(checked, 6);
 }
+
+/// Every scene's comparison of oil temperatures is its drive's (`rows` beside `runs`); a folder
+/// written before a pair's scene ran as its one-stage drive holds a pair's comparison (`runs`
+/// alone), which `render` names and refuses with what to do rather than failing to parse it.
+#[test]
+fn render_names_a_pairs_comparison_it_no_longer_draws() {
+    let dir = std::env::temp_dir().join(format!("gearloss-old-pair-sweep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("report.json"), r#"{"title": "old", "runs": []}"#).unwrap();
+    let e = gearloss::rerender::render_folder(&dir).unwrap_err();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let f = e.failure().expect("a failure with a kind");
+    assert_eq!(f.kind, gearloss::FailureKind::NotAReport);
+    assert!(f.reason.contains("comparison of one pair's runs"), "{}", f.reason);
+    assert!(f.hints.iter().any(|h| h.contains("run the scene again")), "{:?}", f.hints);
+}
+
+/// `run` takes the scene lowering built, which always has its drive (one pair its one-stage
+/// drive); a scene assembled without one is refused with the kind `NotLowered`, not a panic.
+#[test]
+fn run_refuses_a_scene_lowering_did_not_build() {
+    let mut scene = gearloss::check("c14.gear", &c14("90 degC")).unwrap();
+    assert!(scene.drive.is_some(), "lowering gives every scene its drive");
+    scene.drive = None;
+    let out = std::env::temp_dir().join(format!("gearloss-not-lowered-{}", std::process::id()));
+    let e = gearloss::run_into("c14.gear", "", &scene, &out, None, &gearloss::Quiet).unwrap_err();
+    assert_eq!(e.failure().expect("a failure").kind, gearloss::FailureKind::NotLowered);
+    assert!(!out.exists() || std::fs::read_dir(&out).unwrap().next().is_none(), "nothing written");
+    let _ = std::fs::remove_dir_all(&out);
+}

@@ -1,16 +1,21 @@
 //! The top of a drive's report folder at several oil temperatures: report.md comparing the runs
 //! (total loss and η of every shown row at each temperature, meshes and bearings beside),
-//! report.json and efficiency_vs_oil_temperature.svg (as a pair's comparison draws it: η of the
-//! drive, its total loss and its meshes' against the temperature); each run's own report is in its
+//! report.json and efficiency_vs_oil_temperature.svg (η of the drive, its total loss and its
+//! meshes' against the temperature); each run's own report is in its
 //! folder.
 
 use crate::evaluate::plan::evenly;
 use crate::render::markup::md;
-use crate::render::oil_sweep::{OIL_SWEEP_PLOT, PLOTTED_ROWS};
 use crate::render::svg::{figure_with_legend, Panel};
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_oil_sweep::DriveOilSweepReport;
-use crate::report::units::Units;
+use crate::report::losses::LubricantReport;
+use crate::report::units::{Shown, Units};
+
+/// The plot of the efficiency against the oil temperature.
+pub(crate) const OIL_SWEEP_PLOT: &str = "efficiency_vs_oil_temperature.svg";
+/// Curves of the plot: evenly picked rows.
+const PLOTTED_ROWS: usize = 8;
 
 /// report.md, report.json and the plot of the comparison.
 pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Result<Vec<(String, String)>, String> {
@@ -26,7 +31,7 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Result<Vec<(Str
         md!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", run.label, run.folder, run.warnings, run.notes);
     }
     let runs: Vec<_> = r.runs.iter().map(|x| (x.label.as_str(), x.lubricant.as_ref())).collect();
-    crate::render::oil_sweep::lubricant_table(&mut out, &runs, Units::of_system(r.unit_system));
+    lubricant_table(&mut out, &runs, Units::of_system(r.unit_system));
     md!(out);
     md!(out, "## Total loss ({}) and η (%)\n", w.unit);
     let mut head = vec!["row".to_string()];
@@ -88,4 +93,35 @@ fn plot(r: &DriveOilSweepReport) -> Result<String, String> {
     let longest = picked.iter().map(|&i| r.rows[i].chars().count()).max().unwrap_or(0);
     let legend = 420.max((5.5 * longest as f64) as u32 + 60);
     figure_with_legend(&format!("{}: efficiency against oil temperature", r.title), &panels, legend)
+}
+
+/// The lubricant's values at each temperature (`runs`: each run's label and its lubricant): the
+/// comparison's.
+pub(crate) fn lubricant_table(out: &mut String, runs: &[(&str, Option<&LubricantReport>)], u: Units) {
+    if runs.iter().any(|x| x.1.is_some()) {
+        md!(out, "\n## Lubricant at each temperature\n");
+        let (nu, eta, rho, alpha) =
+            (u.kinematic_viscosity(), u.dynamic_viscosity(), u.density(), u.pressure_viscosity());
+        let cols =
+            ["oil temperature".to_string(), nu.heading("ν"), eta.heading("η"), rho.heading("ρ"), alpha.heading("α")];
+        header(out, &cols);
+        for (label, l) in runs {
+            let Some(l) = l else { continue };
+            let opt =
+                |q: Option<crate::report::number::Q>, s: Shown, d: usize| q.map_or("—".to_string(), |q| s.q(&q, d));
+            row(
+                out,
+                &[
+                    label.to_string(),
+                    opt(l.kinematic_viscosity, nu, 3),
+                    eta.q(&l.dynamic_viscosity, 3),
+                    opt(l.density, rho, 1),
+                    opt(l.pressure_viscosity, alpha, 3),
+                ],
+            );
+        }
+        if let Some(l) = runs[0].1 {
+            md!(out, "\nSource: {}.", l.source);
+        }
+    }
 }
