@@ -70,6 +70,9 @@ pub struct CycleEvaluation {
     /// By stage: the pieces whose middle finds the law outside its validity range on that stage's
     /// mesh, their time (s), and the first one's time and reason.
     pub validity: Vec<StageValidity>,
+    /// The bearing places' static loads at the cycle's two torque extremes (in drive, in
+    /// recuperation), for the check of their static ratings.
+    pub bearings: super::cycle_bearings::CycleBearingLoads,
     /// The box's map for the plot (output torque N·m × output speed rad/s at the fixed or start
     /// temperature): torques, speeds, `[torque][speed]` η (NaN where both ends deliver).
     pub map: (Vec<f64>, Vec<f64>, Vec<Vec<f64>>),
@@ -125,7 +128,20 @@ pub fn evaluate_cycle(scene: &Scene, drive: &SceneDrive, spec: &DriveCycleSpec) 
     };
     let map = cycle_map(&map_setup, spec, row, &pieces);
     let validity = validity(&map_setup, spec, row, &pieces, &thermal);
-    CycleEvaluation { law_index: 0, formulation, oil, pieces, integrals, switches, thermal, failure, validity, map }
+    let bearings = super::cycle_bearings::cycle_bearing_loads(&map_setup, (drive, spec), row, &pieces, &thermal);
+    CycleEvaluation {
+        law_index: 0,
+        formulation,
+        oil,
+        pieces,
+        integrals,
+        switches,
+        thermal,
+        failure,
+        validity,
+        bearings,
+        map,
+    }
 }
 
 /// The law's validity on each stage at the middle of every moving piece (the oil at the piece's

@@ -7,6 +7,7 @@
 
 pub(crate) mod cases;
 pub(crate) mod contact_curves;
+pub(crate) mod cycle_bearings;
 pub(crate) mod cycle_pieces;
 pub(crate) mod cycle_transient;
 pub(crate) mod details;

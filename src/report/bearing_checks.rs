@@ -6,8 +6,32 @@
 //! bearing itself is overloaded (ISO 76: static safety s_0 = C_0/P_0 < 1).
 
 use super::finding::{Finding, Severity};
+use super::units::Units;
+use crate::drive::Drive;
 use crate::evaluate::static_loads::StaticLoads;
 use crate::losses::bearing_type::MAX_STATIC_LOAD_RATIO;
+
+/// Where a bearing place is: `at 30.00 mm` (in the report's length unit), or `without \`at\`` (a
+/// place of a one-pair scene).
+pub(super) fn place_at(position: Option<f64>, units: Units) -> String {
+    position.map_or_else(|| "without `at`".into(), |x| format!("at {}", units.length().with(x, 2)))
+}
+
+/// Every bearing place of a drive in words with its C_0 (N) where given, shaft after shaft in the
+/// layout's order (the order of a drive's [`StaticLoads`]).
+pub(super) fn drive_places(layout: &Drive, units: Units) -> Vec<(String, Option<f64>)> {
+    layout
+        .shafts
+        .iter()
+        .flat_map(|shaft| {
+            shaft.bearings.iter().map(move |b| {
+                let place =
+                    format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind.name());
+                (place, b.static_load_rating)
+            })
+        })
+        .collect()
+}
 
 /// The warnings of the bearing places beyond their static rating: `places`, each in words with
 /// its C_0 (N) where given, in the order of `loads` (the sweep's tally), each at the row or point

@@ -10,6 +10,7 @@ use super::drive_cycle_series::{series, CycleSeries};
 use super::drive_cycle_totals::{temperature, totals};
 pub(crate) use super::drive_cycle_totals::{CyclePart, CycleTemperature, CycleTotals, Peak};
 use super::finding::{Finding, Severity};
+use crate::evaluate::cycle_bearings::CycleBearingLoads;
 use crate::evaluate::drive_cycle::{CycleEvaluation, CycleOil, PARTS, QUANTITIES};
 use crate::model::{DriveCycleSpec, Scene, SceneDrive};
 use crate::vehicle::Mode;
@@ -195,7 +196,28 @@ pub(crate) fn build_cycle_report(
         speed: trace.speed[fastest] / car.wheel_radius * car.final_ratio,
     };
     report.findings = cycle_findings(&report, &ranges(scene, drive), at_box);
+    report.findings.extend(overloaded_on_the_cycle(drive, &eval.bearings));
     report
+}
+
+/// The bearing places beyond their static rating at the cycle's torque extremes (the cycle's own
+/// states, which its operating points and map need not reach; `evaluate/cycle_bearings.rs`).
+fn overloaded_on_the_cycle(drive: &SceneDrive, c: &CycleBearingLoads) -> Vec<Finding> {
+    let units = super::units::Units::of_system(super::drive_inputs::drive_unit_system(drive));
+    let places = super::bearing_checks::drive_places(&drive.layout, units);
+    let words = |i: usize| {
+        let (t, torque) = c.peaks[i].unwrap_or_default();
+        format!(
+            "the drive cycle's {} output torque ({} at {} s)",
+            ["greatest", "most negative (recuperation)"][i.min(1)],
+            units.torque().with(torque, 1),
+            crate::numerics::rounding::fixed(t, 2)
+        )
+    };
+    super::bearing_checks::overloaded(places, &c.loads, &words)
+        .into_iter()
+        .map(|f| Finding { message: format!("drive cycle: {}", f.message), ..f })
+        .collect()
 }
 
 /// The output torques and speeds (N·m, rad/s at the box's output) the scene defines besides the

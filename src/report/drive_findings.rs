@@ -12,11 +12,7 @@ use crate::evaluate::drive::DriveEvaluation;
 use crate::evaluate::static_loads::StaticLoads;
 use crate::model::{Scene, SceneDrive};
 
-/// Where a bearing place is: `at 30.00 mm` (in the report's length unit), or `without \`at\`` (a
-/// place of a one-pair scene).
-fn place_at(position: Option<f64>, units: Units) -> String {
-    position.map_or_else(|| "without `at`".into(), |x| format!("at {}", units.length().with(x, 2)))
-}
+use super::bearing_checks::place_at;
 
 /// What the reader must know (`described_gearbox`: whether the scene has a `gearbox` block): how one
 /// pair on a drive cycle was read as its one-stage drive, a drive without bearings (a note where one
@@ -60,12 +56,7 @@ pub(super) fn findings(
         }
     }
     // Every row's loads, from the tally: the worst row of each place beyond its static rating.
-    let places = layout.shafts.iter().flat_map(|shaft| {
-        shaft.bearings.iter().map(move |b| {
-            let place = format!("shaft `{}`, bearing {} ({})", shaft.name, place_at(b.position, units), b.kind.name());
-            (place, b.static_load_rating)
-        })
-    });
+    let places = super::bearing_checks::drive_places(layout, units);
     out.extend(super::bearing_checks::overloaded(places, static_loads, row_point));
     for (j, shaft) in layout.shafts.iter().enumerate() {
         let helical = layout.stages.iter().any(|s| s.hand.is_some() && s.member_on(j).is_some());

@@ -353,3 +353,41 @@ fn a_cycle_run_prints_its_energies() {
     );
     assert!(stdout.contains("drive cycle") && stdout.contains(&said), "{stdout}\nwanted: {said}");
 }
+
+/// The bearings' static ratings are checked along the cycle, not only at the operating points: on
+/// the shipped WLTC reducer the lay shaft's second bearing (C_0 = 10.2 kN) is loaded beyond its
+/// rating at the cycle's greatest output torque, which the report names at the time of the located
+/// peak wheel torque; the place's other bearings and the shafts' stay inside theirs. With that
+/// bearing's C_0 raised to 20 kN the warning goes (P_0/C_0 ≈ 0.55).
+#[test]
+fn a_bearing_overloaded_on_the_cycle_is_named_at_the_cycles_peak() {
+    let path = crate::root().join("specs/ev_reducer_wltc.gear");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let run = |text: &str| {
+        let r = gearloss::run_to_files(&path.display().to_string(), text).unwrap();
+        let json = &r.files.iter().find(|(f, _)| f == "report.json").unwrap().1;
+        serde_json::from_str::<serde_json::Value>(json).unwrap()
+    };
+    let report = run(&text);
+    let peak = &report["cycle"]["peak_wheel_torque"];
+    let at = format!("at {:.2} s)", peak["time_s"].as_f64().unwrap());
+    let overloaded: Vec<&str> = report["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|f| f["message"].as_str())
+        .filter(|m| m.starts_with("drive cycle:") && m.contains("beyond its static rating"))
+        .collect();
+    assert_eq!(overloaded.len(), 1, "{overloaded:?}");
+    assert!(overloaded[0].contains("shaft `lay`, bearing at 136.24 mm"), "{}", overloaded[0]);
+    assert!(
+        overloaded[0].contains("greatest output torque") && overloaded[0].contains(&at),
+        "{} vs {at}",
+        overloaded[0]
+    );
+    let raised =
+        text.replacen("static_load_rating = 10.2 kN, at = 136.24 mm", "static_load_rating = 20 kN, at = 136.24 mm", 1);
+    assert_ne!(raised, text);
+    let findings = run(&raised)["findings"].to_string();
+    assert!(!findings.contains("beyond its static rating"), "{findings}");
+}
