@@ -26,26 +26,16 @@ pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
     } else if has(DriveRun::OIL_SWEEP.1) {
         DriveRun::redraw_oil_sweep(&text, &|e| bad(dir, DriveRun::OIL_SWEEP.0, e))?
     } else if has(&["runs"]) {
-        return Err(RunError::Render(
-            Failure::new(
-                FailureKind::NotAReport,
-                format!(
-                    "{} is a comparison of one pair's runs at several oil temperatures, which gearloss no longer writes: a pair's scene runs as its one-stage drive, whose comparison has `rows`",
-                    dir.join("report.json").display()
-                ),
-            )
-            .hint("run the scene again: `gearloss run` writes the comparison and each temperature's folder whole"),
+        return Err(not_a_report(
+            dir,
+            "a comparison of one pair's runs at several oil temperatures, which gearloss no longer writes: a pair's scene runs as its one-stage drive, whose comparison has `rows`",
+            "run the scene again: `gearloss run` writes the comparison and each temperature's folder whole",
         ));
     } else {
-        return Err(RunError::Render(
-            Failure::new(
-                FailureKind::NotAReport,
-                format!(
-                    "{} is not a report gearloss wrote: it is not JSON, or none of its kinds (a pair's, a drive's, a comparison of oil temperatures)",
-                    dir.join("report.json").display()
-                ),
-            )
-            .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
+        return Err(not_a_report(
+            dir,
+            "not a report gearloss wrote: it is not JSON, or none of its kinds (a pair's, a drive's, a comparison of oil temperatures)",
+            "give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole",
         ));
     };
     let mut files = files;
@@ -87,5 +77,12 @@ fn bad(dir: &Path, kind: &str, e: serde_json::Error) -> RunError {
             format!("{} is {kind} that gearloss did not write as it is: {e}", dir.join("report.json").display()),
         )
         .hint("give the folder `gearloss run` wrote, unedited; `gearloss run` again rewrites it whole"),
+    )
+}
+
+/// `dir`'s report.json refused as `what` it is, with `hint`.
+fn not_a_report(dir: &Path, what: &str, hint: &str) -> RunError {
+    RunError::Render(
+        Failure::new(FailureKind::NotAReport, format!("{} is {what}", dir.join("report.json").display())).hint(hint),
     )
 }
