@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::drive::kinematics::planetary::{stationary_ratio, PlanetaryLayout, PlanetaryMember};
-use crate::drive::{Drive, Stage};
+use crate::drive::layout::{Drive, Stage};
 use crate::geometry::PairGeometry;
 
 /// A planetary stage as the scene gives it.
