@@ -19,7 +19,13 @@ pub fn render_folder(dir: &Path) -> Result<Vec<(String, String)>, RunError> {
     let has = |keys: &[&str]| value.as_ref().is_some_and(|v| keys.iter().all(|k| v.get(k).is_some()));
     // Which report `text` is, by the top-level fields only its kind has; an edited or damaged
     // report is then read as its own kind, and the error names that kind's field.
-    let (files, inner) = if has(run_pair::REPORT.1) {
+    let (files, inner) = if has(&["geometry", "efficiency_map"]) {
+        return Err(not_a_report(
+            dir,
+            "a pair's report with its own efficiency map, which gearloss no longer writes: a pair's scene runs as its one-stage drive, whose loss map holds the map",
+            "run the scene again: `gearloss run` writes the drive's report with its loss map and the pair's in `stages/pair/`",
+        ));
+    } else if has(run_pair::REPORT.1) {
         run_pair::redraw(dir, &text, &|e| bad(dir, run_pair::REPORT.0, e))?
     } else if has(DriveRun::REPORT.1) {
         DriveRun::redraw(dir, &text, &|e| bad(dir, DriveRun::REPORT.0, e))?

@@ -46,12 +46,7 @@ fn finish_exact(
     let report = report::build_report(scene, &eval, tally, plan);
     let timings = eval.dynamics.as_ref().and_then(report::dynamics::timings);
     progress.stage("render", 1);
-    let (written, mut rendered) = render_as_written(&report, timings.as_ref())?;
-    // The map's cells are data of the run, as the record files are: written beside the report.
-    if let (Some(map), Some(m)) = (&eval.efficiency_map, &written.efficiency_map) {
-        let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
-        rendered.files.push((m.csv.clone(), map.csv(&labels)));
-    }
+    let (written, rendered) = render_as_written(&report, timings.as_ref())?;
     Ok((report, written, rendered))
 }
 

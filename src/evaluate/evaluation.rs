@@ -5,7 +5,6 @@ use serde::Serialize;
 use super::contact_curves::ContactCurves;
 use super::dynamics::DynamicsEvaluation;
 use super::laws::LawEvaluation;
-use super::map::EfficiencyMap;
 use super::setup::Setup;
 use crate::geometry::{ContactPoint, OperatingState};
 use crate::tribology::Film;
@@ -19,8 +18,6 @@ pub struct Evaluation {
     pub contact_curves: ContactCurves,
     /// The dynamics, when the scene asks for them.
     pub dynamics: Option<DynamicsEvaluation>,
-    /// The efficiency map, when the scene asks for one.
-    pub efficiency_map: Option<EfficiencyMap>,
     /// The heat-balance curve and the duty cycle, when the scene asks for them.
     pub thermal: Option<super::thermal::ThermalDetails>,
     /// The teeth's stiffness and transmission error, when the scene asks for them.

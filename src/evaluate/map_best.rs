@@ -1,39 +1,19 @@
-//! The efficiency map's best operating point, located: where the total efficiency (the mesh's η̄
-//! without a gearbox) peaks over the map's torque × speed rectangle, per law and formulation.
+//! A map's best operating point, located (`drive_map_best.rs` reads it for each law and
+//! formulation of a drive's map): where the efficiency peaks over the map's torque × speed
+//! rectangle.
 //!
 //! The grid's best cell starts the search; the box of its neighbouring cells (clipped to the map) is
 //! searched by coordinate ascent: a golden-section maximisation along torque at the current speed,
 //! then along speed at the current torque, the box's ends included (the best point of a gearbox is
 //! often at the map's highest torque), until a sweep moves the point by less than
-//! [`POINT_TOLERANCE`] of the box in both directions. Each evaluation is the scene's one-stage
-//! drive walked afresh at that pinion torque and speed (the mesh's η̄ to its 1e-10, the budget
-//! beside it): the located point is a point of the model, not of the grid. A local maximum next to the grid's best cell: with another peak between
+//! [`POINT_TOLERANCE`] of the box in both directions. Each evaluation is the drive walked afresh at
+//! that torque and speed: the located point is a point of the model, not of the grid. A local maximum next to the grid's best cell: with another peak between
 //! grid points elsewhere, the grid must be finer to see it.
-
-use super::drive_setup::DriveSetup;
-use crate::drive::{DriveOperating, EndValue, ShaftEnd};
-use crate::efficiency::Formulation;
-use crate::losses::parts::LossColumn;
 
 /// The search stops when a sweep moves the point by less than this fraction of the box.
 pub(crate) const POINT_TOLERANCE: f64 = 1e-7;
 /// The golden-section search along one direction stops at this fraction of its interval.
 const LINE_TOLERANCE: f64 = 1e-8;
-
-/// The best point of one law and formulation.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MapBest {
-    pub law_index: usize,
-    pub formulation: Formulation,
-    /// Whether the efficiency is the total (with the gearbox's budget) or the mesh's.
-    pub total: bool,
-    /// The located point: pinion torque (N·m), speed (rad/s), efficiency.
-    pub located: (f64, f64, f64),
-    /// The grid's best cell: torque index, speed index, efficiency.
-    pub grid: (usize, usize, f64),
-    /// Efficiency evaluations the search used.
-    pub evaluations: usize,
-}
 
 /// The maximum (x, f(x)) of `f` on [a, b] by golden sections, the ends included.
 fn golden_max(f: impl Fn(f64) -> f64, a: f64, b: f64, count: &mut usize) -> (f64, f64) {
@@ -63,45 +43,6 @@ fn golden_max(f: impl Fn(f64) -> f64, a: f64, b: f64, count: &mut usize) -> (f64
         }
     }
     best
-}
-
-/// The best point of every entry of `fields` — (law index, formulation, whether the values are
-/// total efficiencies, values[torque][speed]) — over the grid `torques` × `speeds` (SI), each
-/// evaluation the scene's one-stage drive walked afresh at that pinion torque and speed (`setup`),
-/// read as the map's cells are: the total efficiency 1 − P_total/(T_1 ω_1) with a gearbox (the
-/// parts it describes, `columns`), else the mesh's η̄ as the budget charges it.
-pub(crate) fn best_points(
-    setup: &DriveSetup,
-    torques: &[f64],
-    speeds: &[f64],
-    fields: &[(usize, Formulation, bool, Vec<Vec<f64>>)],
-    columns: Option<&[LossColumn]>,
-) -> Vec<MapBest> {
-    let ends = DriveOperating { torque_at: ShaftEnd::Input, speed_at: ShaftEnd::Input };
-    fields
-        .iter()
-        .map(|(law_index, f, is_total, values)| {
-            let mut grid = (0, 0, f64::NEG_INFINITY);
-            for (i, row) in values.iter().enumerate() {
-                for (j, v) in row.iter().enumerate() {
-                    if *v > grid.2 {
-                        grid = (i, j, *v);
-                    }
-                }
-            }
-            let eta = |t: f64, n: f64| {
-                let torque = EndValue { at: ends.torque_at, value: t };
-                let speed = EndValue { at: ends.speed_at, value: n };
-                let p = setup.point(*law_index, *f, torque, speed);
-                match columns {
-                    Some(columns) => super::pair_budget::budget_of(&p, t * n, columns).total_efficiency,
-                    None => p.stages[0].mesh_efficiency,
-                }
-            };
-            let (located, evaluations) = locate_max(torques, speeds, (grid.0, grid.1), eta);
-            MapBest { law_index: *law_index, formulation: *f, total: *is_total, located, grid, evaluations }
-        })
-        .collect()
 }
 
 /// The maximum of `eta(torque, speed)` next to the grid cell `grid` (indices into `torques` and

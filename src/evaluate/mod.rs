@@ -24,7 +24,6 @@ pub(crate) mod dynamics;
 pub(crate) mod evaluation;
 pub(crate) mod first_balance;
 pub(crate) mod laws;
-pub(crate) mod map;
 pub(crate) mod map_best;
 pub(crate) mod pair_budget;
 pub(crate) mod pair_records;

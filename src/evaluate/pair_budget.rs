@@ -2,16 +2,15 @@
 //! columns, and every bearing place of the pinion's shaft, then the wheel's, with the loads and
 //! losses the drive's statics and bearing models give it. A pair's budget at each point of its
 //! sweep and at an oil temperature (thermal balance, ratings, duty cycle) is its one-stage drive's
-//! loss parts at the given pinion torque (`parts_budget`); a pair's efficiency map reads each
-//! cell's walked point (`budget_of`).
+//! loss parts at the given pinion torque (`parts_budget`).
 
 use crate::drive::forces::MeshForceSizes;
 use crate::drive::shaft_beam::PreparedBeam;
 use crate::drive::walk::{parts_at, DriveModel};
-use crate::drive::{DrivePoint, EndValue};
+use crate::drive::EndValue;
 use crate::geometry::{OperatingState, PairGeometry};
 use crate::losses::parts::{LossColumn, PartLosses};
-use crate::losses::{BearingLoss, BudgetParts, LossBudget, Oil};
+use crate::losses::{BearingLoss, LossBudget, Oil};
 use crate::model::{Scene, SceneDrive};
 
 /// What a pair's budget beside the mesh reads at each point of its sweep: its one-stage drive's
@@ -72,29 +71,6 @@ pub(crate) fn parts_budget(
         }
     }
     LossBudget { parts, bearings }
-}
-
-/// The power of each of `columns` (the parts the pair's gearbox describes, in column order) at the
-/// drive's point `p` (W): the gears' no-load parts, the bearings' no-load and load parts, the seals.
-pub(crate) fn parts_of(p: &DrivePoint, columns: &[LossColumn]) -> Vec<(LossColumn, f64)> {
-    columns.iter().map(|&c| (c, p.losses.part(c))).collect()
-}
-
-/// A one-pair drive's point `p` as the pair's budget at input power `input` = T_1 ω_1 (W): the parts
-/// `columns` the gearbox describes, the whole loss mesh + Σ parts and the pair's total efficiency
-/// 1 − P_total/(T_1 ω_1), taken at the pinion gear (not the drive's P_out/P_in, whose input also
-/// pays the pinion shaft's own losses). The map keeps no bearing loads. A point whose walk did not
-/// settle (not seen: at a given pinion torque the bearing loads do not feed back into the torque
-/// that loads them) has no whole loss and no total efficiency (NaN, which the report flags).
-pub(crate) fn budget_of(p: &DrivePoint, input: f64, columns: &[LossColumn]) -> BudgetParts {
-    let parts = parts_of(p, columns);
-    let total = if p.settled() { p.stages[0].mesh_loss + parts.iter().map(|(_, p)| p).sum::<f64>() } else { f64::NAN };
-    BudgetParts {
-        parts,
-        total_loss: total,
-        total_efficiency: crate::losses::total_efficiency(total, input),
-        bearings: Vec::new(),
-    }
 }
 
 #[cfg(test)]

@@ -59,7 +59,6 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
         points: Vec::new(),
         contact_curves: ContactCurves::default(),
         dynamics: None,
-        efficiency_map: None,
         thermal: None,
         teeth: None,
     }

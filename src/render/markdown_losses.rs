@@ -65,27 +65,6 @@ pub(crate) fn headline_body(r: &Report) -> String {
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
     );
     super::headline::efficiency(&mut out, r);
-    if let Some(m) = &r.efficiency_map {
-        for x in &m.ranges {
-            let total = x.total_efficiency.map_or(String::new(), |t| {
-                format!("; total η {}–{} %", fixed(100.0 * t[0].0, 2), fixed(100.0 * t[1].0, 2))
-            });
-            md!(
-                out,
-                "- Map, {} ({}): mesh η̄ {}–{} %{total} over its {} × {} grid points.",
-                law_words(&x.label),
-                x.formulation.name(),
-                fixed(100.0 * x.mesh_efficiency[0].0, 2),
-                fixed(100.0 * x.mesh_efficiency[1].0, 2),
-                m.pinion_torques.len(),
-                m.pinion_speeds.len()
-            );
-        }
-        for b in &m.best {
-            md!(out, "- Map, {}: {}", law_words(&b.label), best_words(r, b));
-        }
-        md!(out);
-    }
     if !r.loss_budget && !r.efficiency.is_empty() {
         md!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
     }
@@ -202,56 +181,6 @@ pub(crate) fn budget_section(r: &Report) -> String {
         md!(out, "\nAt the detail operating points only (the sweep has more than {} points); records.csv has the budget of every point.", super::budget_points::ALL_POINTS_UP_TO);
     }
     plots_of(&mut out, r, PlotKind::LossBudget);
-    out
-}
-
-/// `best total η 98.912 % at 372.6 N·m, 3000 rpm (located; best grid point 98.901 % at …)`.
-pub(crate) fn best_words(r: &Report, b: &crate::report::losses::MapBestReport) -> String {
-    let at = |t, n| super::headline::point_at(r, t, n);
-    format!(
-        "best {} η {} % at {} ({}; located from the best grid point, {} % at {}, in {} evaluations)",
-        b.efficiency_of,
-        fixed(100.0 * b.efficiency.0, 3),
-        at(&b.pinion_torque, &b.pinion_speed),
-        b.formulation.name(),
-        fixed(100.0 * b.grid_efficiency.0, 3),
-        at(&b.grid_pinion_torque, &b.grid_pinion_speed),
-        b.evaluations
-    )
-}
-
-/// The map's section: what it is, its ranges, its files.
-pub(crate) fn map_section(r: &Report) -> String {
-    let mut out = String::new();
-    let Some(m) = &r.efficiency_map else { return out };
-    md!(out, "\n## Efficiency map\n");
-    md!(
-        out,
-        "{} torques × {} speeds, every law and formulation; every cell is in `{}` (one row per grid point, law and formulation). Ranges over the grid points:\n",
-        m.pinion_torques.len(),
-        m.pinion_speeds.len(),
-        m.csv
-    );
-    let power = r.units().power();
-    header(&mut out, &["law", "formulation", "mesh η̄ %", "total η %", &power.heading("total loss")]);
-    for x in &m.ranges {
-        row(
-            &mut out,
-            &[
-                law_words(&x.label),
-                x.formulation.name().to_string(),
-                format!("{} – {}", fixed(100.0 * x.mesh_efficiency[0].0, 3), fixed(100.0 * x.mesh_efficiency[1].0, 3)),
-                x.total_efficiency
-                    .map_or("—".into(), |t| format!("{} – {}", fixed(100.0 * t[0].0, 3), fixed(100.0 * t[1].0, 3))),
-                x.total_loss.map_or("—".into(), |t| format!("{} – {}", power.q(&t[0], 1), power.q(&t[1], 1))),
-            ],
-        );
-    }
-    md!(out);
-    for b in &m.best {
-        md!(out, "- {}: {}.", law_words(&b.label), best_words(r, b));
-    }
-    plots_of(&mut out, r, PlotKind::EfficiencyMap);
     out
 }
 

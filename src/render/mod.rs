@@ -82,7 +82,6 @@ pub fn render_report_with_json(
             PlotKind::MapEfficiency => svg::efficiency_map(report)?,
             PlotKind::LossBudget => svg::loss_budget(report)?,
             PlotKind::Film => svg::film(report)?,
-            PlotKind::EfficiencyMap => svg::efficiency_contours(report)?,
             PlotKind::CompositeMuVsSpeed => svg::composite_mu_vs_speed(report)?,
             PlotKind::StabilityMap => svg::stability_map(report)?,
             PlotKind::HeatBalance => svg::heat_balance(report)?,

@@ -84,7 +84,6 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         lubricant: scene.lubricant.as_ref().map(|l| losses::lubricant_report(l, &eval.tribology)),
         loss_budget: scene.gearbox.is_some(),
         budget_readings: scene.gearbox.as_ref().map(losses::budget_readings).unwrap_or_default(),
-        efficiency_map: eval.efficiency_map.as_ref().map(|m| losses::map_report(scene, m)),
         findings,
         plots: vec![PlotRef::new(
             PlotKind::ContactState,
@@ -239,12 +238,6 @@ fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Pla
         report.plots.push(PlotRef::new(
             PlotKind::LossBudget,
             "Loss budget at each operating point: mesh, gears without load, bearings, seals",
-        ));
-    }
-    if report.efficiency_map.is_some() {
-        report.plots.push(PlotRef::new(
-            PlotKind::EfficiencyMap,
-            "Efficiency map: total and mesh efficiency and total loss over torque × speed",
         ));
     }
 }

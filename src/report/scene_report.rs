@@ -39,8 +39,6 @@ pub struct Report {
     /// constants), for the parts the scene describes.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub budget_readings: Vec<String>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub efficiency_map: Option<losses::MapReport>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
     /// Sampled curves for the plots (they repeat the tables at finer spacing).
@@ -112,7 +110,6 @@ pub enum PlotKind {
     CompositeMuVsSpeed,
     Film,
     LossBudget,
-    EfficiencyMap,
     HeatBalance,
     DutyCycleTemperature,
     DutyCycleEnergy,
@@ -136,7 +133,6 @@ impl PlotKind {
             PlotKind::CompositeMuVsSpeed => "composite_mu_vs_speed.svg",
             PlotKind::Film => "film.svg",
             PlotKind::LossBudget => "loss_budget.svg",
-            PlotKind::EfficiencyMap => "efficiency_map.svg",
             PlotKind::HeatBalance => "heat_balance.svg",
             PlotKind::DutyCycleTemperature => "duty_cycle_temperature.svg",
             PlotKind::DutyCycleEnergy => "duty_cycle_energy.svg",

@@ -303,7 +303,7 @@ fn iso_total_of_a_helical_pair_is_the_standards_own() {
 }
 
 /// Issue 46: the efficiency map of a helical gearbox with `iso_14179_2` charges the standard's mesh
-/// loss too: every cell of `efficiency_map.csv` has mesh loss = P_in μ_mZ H_V (μ_mZ from the law
+/// loss too: every cell of its `loss_map.csv` has mesh loss = P_in μ_mZ H_V (μ_mZ from the law
 /// built here at the cell's point) and total = mesh + parts, both to the CSV's ten digits (1e-9).
 #[test]
 fn helical_iso_map_charges_the_standards_mesh_loss() {
@@ -313,15 +313,15 @@ fn helical_iso_map_charges_the_standards_mesh_loss() {
         "efficiency(formulations = [external])\n        efficiency_map(pinion_torque = 50..400 N*m count 4, pinion_speed = 500..3000 rpm count 4)",
     );
     let scene = gearloss::check("specs/helical_gearbox.gear", &text).unwrap();
-    // The pair's own map (its drive's loss_map.csv has the same totals, tests/it/one_stage.rs).
-    let files = gearloss::pair_files(&scene).unwrap().files;
-    let csv = &files.iter().find(|(n, _)| n == "efficiency_map.csv").expect("a map").1;
+    // The scene's map: its one-stage drive's loss map (its meshes' loss is the pair's mesh loss).
+    let files = gearloss::run_to_files("specs/helical_gearbox.gear", &text).unwrap().files;
+    let csv = &files.iter().find(|(n, _)| n == "loss_map.csv").expect("a map").1;
     let g = scene.gears.geometry().unwrap();
     let e_r = scene_modulus(&scene);
     let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
     let (t_at, n_at, mesh_at, total_at) =
-        (col("pinion_torque_N_m"), col("pinion_speed_rad_s"), col("mesh_loss_W"), col("total_loss_W"));
+        (col("pinion_torque_N_m"), col("pinion_speed_rad_s"), col("meshes_W"), col("total_loss_W"));
     let parts: Vec<usize> = ["gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"]
         .iter()
         .filter_map(|p| header.iter().position(|h| h == p))

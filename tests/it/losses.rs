@@ -276,8 +276,8 @@ fn loss_limits() {
 }
 
 /// The pair's own report (the per-mesh evaluation with its gearbox, `pair_files`): the budget rows
-/// of report.json add up, the map's CSV has a row per grid point, law
-/// and formulation, and the headline leads report.md.
+/// of report.json add up and the headline leads report.md; the scene's map is its one-stage
+/// drive's (`run`: loss_map.csv a row per grid point, law and formulation, and loss_map.svg).
 #[test]
 fn report_budget_and_map() {
     let path = crate::root().join("specs/fzg_c14_gearbox.gear");
@@ -295,11 +295,14 @@ fn report_budget_and_map() {
             + rec["power_loss"]["value"].as_f64().unwrap();
         assert!((parts / b["total_loss"]["value"].as_f64().unwrap() - 1.0).abs() < 1e-8);
     }
-    let csv = file("efficiency_map.csv");
-    assert_eq!(csv.lines().count(), 1 + 40 * 40 * 2 * 2);
     let md = file("report.md");
     assert!(md.find("## Headline").unwrap() < md.find("## Scene").unwrap());
-    assert!(file("loss_budget.svg").contains("<svg") && file("efficiency_map.svg").contains("<svg"));
+    assert!(file("loss_budget.svg").contains("<svg"));
+    assert!(!out.files.iter().any(|(f, _)| f.starts_with("efficiency_map")), "a pair's report has no map of its own");
+    let run = gearloss::run_to_files("fzg_c14_gearbox.gear", &source).unwrap().files;
+    let drive_file = |name: &str| &run.iter().find(|(f, _)| f == name).unwrap_or_else(|| panic!("no {name}")).1;
+    assert_eq!(drive_file("loss_map.csv").lines().count(), 1 + 40 * 40 * 2 * 2);
+    assert!(drive_file("loss_map.svg").contains("<svg"));
 }
 
 /// A sweep of more than 100 points shows its budget at the detail points only, as its efficiency
@@ -446,19 +449,25 @@ pub(crate) fn assert_first_stage_warned(found: &[String], v_t: f64) {
     assert!(found[0].starts_with(&words), "{}", found[0]);
 }
 
-/// The map's best point is located on the model, not read off the grid: for the spec gearbox (its
-/// first law, external) the located total η is at least the grid's best; evaluated again as the
-/// scene's own operating points, the located point gives the same η (1e-9) and its neighbours
-/// (±0.5 % in speed, −0.5 % in torque: 400 N·m is the map's top) give no more (1e-12).
+/// The map's best point is located on the model, not read off the grid: for the spec gearbox (a
+/// scene of one pair: its one-stage drive's loss map, η at the pinion 1 − P_V/(T_1 ω_1); its first
+/// law, external) the located η is at least the grid's best; evaluated again as the scene's own
+/// operating points, the located point gives the same η (1e-9) and its neighbours (±0.5 % in speed,
+/// −0.5 % in torque: 400 N·m is the map's top) give no more (1e-12).
 #[test]
 fn map_best_point_is_located() {
     let path = crate::root().join("specs/fzg_c14_gearbox.gear");
     let text = std::fs::read_to_string(&path).unwrap();
     let scene = gearloss::check("map.gear", &text).unwrap();
-    let map = gearloss::report_of(&scene).efficiency_map.unwrap();
-    let b = map.best.iter().find(|b| b.formulation == gearloss::model::Formulation::External).unwrap();
-    assert!(b.efficiency.0 >= b.grid_efficiency.0 - 1e-12, "{} < grid {}", b.efficiency.0, b.grid_efficiency.0);
-    let (t, n) = (b.pinion_torque.si(), b.pinion_speed.si() * 30.0 / std::f64::consts::PI);
+    let drive_report = |s: &gearloss::Scene| {
+        gearloss::run_drive::drive_report_files(s, s.drive.as_ref().unwrap()).expect("the spec runs").0
+    };
+    let report = drive_report(&scene);
+    let law = scene.friction[0].label();
+    let m = report.maps.iter().find(|m| m.law == law && m.formulation == "external").expect("the map");
+    let b = m.best.iter().find(|b| b.flow == "drive").expect("its best point");
+    assert!(b.efficiency >= b.grid_efficiency - 1e-12, "{} < grid {}", b.efficiency, b.grid_efficiency);
+    let (t, n) = (b.torque, b.speed_rpm);
     let points = format!(
         "pinion_torque   = [{:.9}, {:.9}] N*m\n        pinion_speed    = [{:.9}, {:.9}, {:.9}] rpm",
         0.995 * t,
@@ -472,18 +481,34 @@ fn map_best_point_is_located() {
         &points,
     );
     assert_ne!(again, text);
-    let report = gearloss::report_of(&gearloss::check("again.gear", &again).unwrap());
-    let eta: Vec<(f64, f64, f64)> = report
-        .efficiency
-        .iter()
-        .filter(|e| e.label == b.label && e.formulation == b.formulation)
-        .map(|e| (e.pinion_torque.si(), e.pinion_speed.si(), e.budget.as_ref().unwrap().total_efficiency.0))
+    let rpm = 30.0 / std::f64::consts::PI;
+    // Every row of the sweep is in drive_records.csv (the report keeps the first 12): η at the pinion
+    // 1 − P_V/(T_1 ω_1) from its pinion torque, speed and whole loss.
+    let again = gearloss::check("again.gear", &again).unwrap();
+    let files = gearloss::run_drive::drive_report_files(&again, again.drive.as_ref().unwrap()).unwrap().1.files;
+    let csv = &files.iter().find(|(f, _)| f == "drive_records.csv").expect("drive_records.csv").1;
+    let mut lines = csv.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| head.iter().position(|h| *h == n).unwrap_or_else(|| panic!("no column {n}"));
+    let (law_at, f_at, t_at, n_at, loss_at) = (
+        col("law_index"),
+        col("formulation"),
+        col("stage_pair_driving_torque_N_m"),
+        col("input_speed_rpm"),
+        col("total_W"),
+    );
+    let eta: Vec<(f64, f64, f64)> = lines
+        .map(|l| l.split(',').collect::<Vec<_>>())
+        .filter(|v| v[law_at] == "0" && v[f_at] == "external")
+        .map(|v| {
+            let x = |i: usize| v[i].parse::<f64>().unwrap();
+            (x(t_at), x(n_at), 1.0 - x(loss_at) / (x(t_at) * x(n_at) / rpm))
+        })
         .collect();
     assert_eq!(eta.len(), 6);
-    let w0 = b.pinion_speed.si();
-    let located = eta.iter().find(|(tq, w, _)| (tq - t).abs() < 1e-6 && (w - w0).abs() < 1e-6 * w0).unwrap().2;
-    assert!((located - b.efficiency.0).abs() < 1e-9, "{located} vs {}", b.efficiency.0);
+    let located = eta.iter().find(|(tq, w, _)| (tq - t).abs() < 1e-6 && (w - n).abs() < 1e-6 * n).unwrap().2;
+    assert!((located - b.efficiency).abs() < 1e-9, "{located} vs {}", b.efficiency);
     for (tq, w, e) in &eta {
-        assert!(*e <= located + 1e-12, "{tq} N·m, {w} rad/s: {e} above the located {located}");
+        assert!(*e <= located + 1e-12, "{tq} N·m, {w} rpm: {e} above the located {located}");
     }
 }

@@ -102,6 +102,20 @@ fn render_names_a_pairs_comparison_it_no_longer_draws() {
     assert!(f.hints.iter().any(|h| h.contains("run the scene again")), "{:?}", f.hints);
 }
 
+/// A pair's report.json of that time with its own efficiency map is named and refused the same way
+/// (a pair's report today has no map: its scene's map is the one-stage drive's loss map).
+#[test]
+fn render_names_a_pairs_report_with_its_own_map() {
+    let dir = std::env::temp_dir().join(format!("gearloss-old-pair-map-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("report.json"), r#"{"title": "old", "geometry": {}, "efficiency_map": {}}"#).unwrap();
+    let e = gearloss::rerender::render_folder(&dir).unwrap_err();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let f = e.failure().expect("a failure with a kind");
+    assert_eq!(f.kind, gearloss::FailureKind::NotAReport);
+    assert!(f.reason.contains("its own efficiency map"), "{}", f.reason);
+}
+
 /// `run` takes the scene lowering built, which always has its drive (one pair its one-stage
 /// drive); a scene assembled without one is refused with the kind `NotLowered`, not a panic.
 #[test]

@@ -638,9 +638,9 @@ def test_thermal_and_duty_cycle_tables_serve_a_pair_and_a_drive():
 
 
 def test_a_map_is_a_table_of_a_pair_and_of_a_drive():
-    """`map` reads a pair's efficiency_map.csv and a drive's loss_map.csv: a row per grid point, law
-    and formulation, with the whole loss and η; the drive's cells are report.json's (1e-9: the CSV
-    holds 10 digits)."""
+    """`map` reads a drive's loss_map.csv, a scene of one pair's (its one-stage drive's) too: a row
+    per grid point, law and formulation, with the whole loss and η; the drive's cells are
+    report.json's (1e-9: the CSV holds 10 digits)."""
     drive = gearloss.Report.from_folder(ROOT / "reports/two_stage_ev_reducer")
     pair = gearloss.Report.from_folder(ROOT / "reports/fzg_c14_gearbox")
     for report in (drive, pair):

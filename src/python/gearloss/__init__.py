@@ -421,11 +421,11 @@ class Report:
 
     @property
     def map(self):
-        """The efficiency map's cells as a DataFrame, a pair's and a drive's alike: a pair's
-        ``efficiency_map.csv`` (per grid point, law and formulation the pinion's torque and speed,
-        the mesh's η and loss, the budget's parts, ``total_loss_W`` and ``total_efficiency``), a
-        drive's ``loss_map.csv`` (the torque and speed at the ends the map is given at —
-        ``output_torque_N_m`` —, ``total_loss_W`` and ``total_efficiency``); SI units in the
+        """The efficiency map's cells as a DataFrame: ``loss_map.csv`` (per grid point, law and
+        formulation the torque and speed at the ends the map is given at — ``output_torque_N_m``,
+        a scene of one pair's ``pinion_torque_N_m`` —, each loss part, ``total_loss_W``,
+        ``total_efficiency`` and, of one pair, ``pinion_efficiency``), or the ``efficiency_map.csv``
+        of a pair's folder written before a pair ran as its one-stage drive; SI units in the
         column names; empty without a map."""
         import pandas
 
