@@ -50,19 +50,19 @@ pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
 pub fn run_to_files(source_name: &str, source: &str) -> Result<RenderedReport, RunError> {
     let scene = check(source_name, source).map_err(RunError::Scene)?;
     let slug = report::slug(&scene.title);
-    let files = in_memory(&DriveRun, &scene)?;
+    let files = in_memory(&scene)?;
     Ok(RenderedReport { slug, files })
 }
 
 /// A scene's files in memory, at each of its oil temperatures when it has several (the
 /// comparison's files first, then each run's under its folder).
-fn in_memory(kind: &DriveRun, scene: &Scene) -> Result<Vec<(String, String)>, RunError> {
+fn in_memory(scene: &Scene) -> Result<Vec<(String, String)>, RunError> {
     if scene.operating.oil_temperatures.is_none() {
-        return Ok(kind.files(scene)?.1);
+        return Ok(DriveRun.files(scene)?.1);
     }
     let mut files = Vec::new();
-    let (top, _) = each_oil_temperature(kind, scene, |at, dir| {
-        let (report, run_files) = kind.files(at)?;
+    let (top, _) = each_oil_temperature(scene, |at, dir| {
+        let (report, run_files) = DriveRun.files(at)?;
         files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
         Ok(report)
     })?;
@@ -76,7 +76,6 @@ type Swept<R> = (Vec<(String, String)>, Vec<(String, R)>);
 /// the comparison of the runs: the files at the top of the report folder, and the runs' reports
 /// labelled by their folders.
 fn each_oil_temperature(
-    kind: &DriveRun,
     scene: &Scene,
     mut run_one: impl FnMut(&Scene, &str) -> Result<DriveRunReports, RunError>,
 ) -> Result<Swept<DriveRunReports>, RunError> {
@@ -90,7 +89,7 @@ fn each_oil_temperature(
         let report = run_one(&at, &dir)?;
         runs.push((label, kelvin, dir, report));
     }
-    let top = kind.oil_sweep(&runs)?;
+    let top = DriveRun.oil_sweep(&runs)?;
     Ok((top, runs.into_iter().map(|(_, _, dir, r)| (dir, r)).collect()))
 }
 
@@ -146,14 +145,13 @@ pub fn run_into_with(
         ));
     }
     match shard {
-        None => whole_into(&DriveRun, scene, out_dir, formats, progress),
-        Some(shard) => shard_into(&DriveRun, (source_name, source), scene, (out_dir, shard), formats, progress),
+        None => whole_into(scene, out_dir, formats, progress),
+        Some(shard) => shard_into((source_name, source), scene, (out_dir, shard), formats, progress),
     }
 }
 
 /// A scene into its report folder, whole: at each of its oil temperatures when it has several.
 fn whole_into(
-    kind: &DriveRun,
     scene: &Scene,
     out_dir: &Path,
     formats: RecordFormats,
@@ -162,13 +160,13 @@ fn whole_into(
     let folder =
         ReportFolder::create(out_dir, &report::slug(&scene.title)).map_err(RunError::io("the report folder"))?;
     if scene.operating.oil_temperatures.is_none() {
-        let (report, files) = kind.run_in_folder(scene, (&folder, ""), formats, progress)?;
+        let (report, files) = DriveRun.run_in_folder(scene, (&folder, ""), formats, progress)?;
         let folder = folder.commit().map_err(RunError::io("the report folder"))?;
         return Ok(Written::of(folder, files, vec![(String::new(), report)]));
     }
     let mut files = Vec::new();
-    let (top, reports) = each_oil_temperature(kind, scene, |at, dir| {
-        let (report, written) = kind.run_in_folder(at, (&folder, dir), formats, progress)?;
+    let (top, reports) = each_oil_temperature(scene, |at, dir| {
+        let (report, written) = DriveRun.run_in_folder(at, (&folder, dir), formats, progress)?;
         files.extend(written);
         Ok(report)
     })?;
@@ -185,7 +183,6 @@ fn whole_into(
 /// One shard of a scene's sweep into `out_dir/<slug>.shard-K-of-N/`: its record files and the
 /// manifest with their tally and digests. A scene of several oil temperatures is refused.
 fn shard_into(
-    kind: &DriveRun,
     source: (&str, &str),
     scene: &Scene,
     (out_dir, shard): (&Path, Shard),
@@ -204,7 +201,7 @@ fn shard_into(
     }
     let name = format!("{}.shard-{}-of-{}", report::slug(&scene.title), shard.index, shard.count);
     let folder = ReportFolder::create(out_dir, &name).map_err(RunError::io("the report folder"))?;
-    let (mut files, manifest) = kind.shard_into(scene, source, shard, (&folder, formats), progress)?;
+    let (mut files, manifest) = DriveRun.shard_into(scene, source, shard, (&folder, formats), progress)?;
     let manifest = manifest.with_digests(&folder, &files).map_err(RunError::io("the record files"))?;
     folder.write(shard::MANIFEST, &manifest.to_json()).map_err(RunError::io("the shard manifest"))?;
     files.push(shard::MANIFEST.into());
