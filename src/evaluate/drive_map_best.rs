@@ -1,7 +1,7 @@
 //! A drive's loss map's best points, located: per law and formulation, where η peaks on the drive
 //! half of the map (torque > 0 at the end the map names) and on the coast half (torque < 0), each
-//! found as the pair's map finds its best point ([`super::map_best::locate_max`]: coordinate ascent
-//! by golden sections over the box of the half's best grid cell's neighbours), every evaluation the
+//! by [`super::map_best::locate_max`] (coordinate ascent by golden sections over the box of the
+//! half's best grid cell's neighbours), every evaluation the
 //! drive walked afresh at that torque and speed — a point of the model, not of the grid. The box
 //! stays inside its half (the grid's torques of one sign), where η is smooth; zero torque, where no
 //! power passes and η is 0, is never a candidate.

@@ -24,12 +24,12 @@ pub struct DriveMapReport {
     pub efficiency: Vec<Vec<f64>>,
     /// `[torque][speed]` of each part of the loss (W): `meshes`, then each budget column by its key
     /// (`gear_no_load`, `bearings_no_load`, `bearings_load`, `seals`); they add up to `loss` where the
-    /// cell's books balance. What a pair's efficiency map gave by cell.
+    /// cell's books balance.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub parts: Vec<MapPart>,
     /// A scene of one pair's map (its torque and speed the pinion's): `[torque][speed]` of the
-    /// pair's own total efficiency, 1 − P_V/(T_1 ω_1), as its efficiency map always gave it (the
-    /// drive's η, `efficiency`, takes the input's power: the pinion's plus its shaft's losses).
+    /// pair's own total efficiency, 1 − P_V/(T_1 ω_1), at the pinion gear (the drive's η,
+    /// `efficiency`, takes the input's power: the pinion's plus its shaft's losses).
     #[serde(default, skip_serializing_if = "Vec::is_empty", with = "super::floats")]
     pub pinion_efficiency: Vec<Vec<f64>>,
     /// The largest passes of the fixed point over the grid.

@@ -19,7 +19,7 @@ pub(crate) struct DriveOilRun {
     pub lubricant: Option<super::losses::LubricantReport>,
     /// Per shown row: (total loss W, η, meshes W, bearings W).
     pub rows: Vec<(f64, f64, f64, f64)>,
-    /// The run's report's warnings and notes, counted as a pair's comparison counts them.
+    /// The run's report's warnings and notes, counted.
     #[serde(default)]
     pub warnings: usize,
     #[serde(default)]
