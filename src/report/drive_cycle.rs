@@ -208,8 +208,8 @@ fn overloaded_on_the_cycle(drive: &SceneDrive, c: &CycleBearingLoads) -> Vec<Fin
     let words = |i: usize| {
         let (t, torque) = c.peaks[i].unwrap_or_default();
         format!(
-            "the drive cycle's {} output torque ({} at {} s)",
-            ["greatest", "most negative (recuperation)"][i.min(1)],
+            "the cycle's {} ({} at {} s)",
+            ["greatest output torque", "greatest recuperation torque"][i.min(1)],
             units.torque().with(torque, 1),
             crate::numerics::rounding::fixed(t, 2)
         )

@@ -3,6 +3,7 @@
 //! bearing beyond its static rating, and the laws' notes on each stage (an input read at a bound of
 //! its range).
 
+use super::bearing_checks::place_at;
 use super::drive_point::DrivePointReport;
 use super::drive_report::DriveReport;
 use super::finding::{Finding, Severity};
@@ -11,8 +12,6 @@ use crate::drive::PowerFlow;
 use crate::evaluate::drive::DriveEvaluation;
 use crate::evaluate::static_loads::StaticLoads;
 use crate::model::{Scene, SceneDrive};
-
-use super::bearing_checks::place_at;
 
 /// What the reader must know (`described_gearbox`: whether the scene has a `gearbox` block): how one
 /// pair on a drive cycle was read as its one-stage drive, a drive without bearings (a note where one
