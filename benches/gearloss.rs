@@ -406,7 +406,7 @@ mod six_dof {
 /// The thermal balance (issue 27) on `specs/fzg_c14_thermal.gear`: P_V(θ) is its mesh loss and
 /// loss budget with the oil read at θ.
 mod thermal {
-    use gearloss::evaluate::{duty_cycle, Losses};
+    use gearloss::evaluate::{drive_duty, Losses};
     use gearloss::evaluate::{prepare, state_at, Plan};
     use gearloss::model::Formulation;
 
@@ -438,16 +438,15 @@ mod thermal {
         b.bench(|| gearloss::thermal::balance(|t| losses.total(spec, Formulation::External, state, t), &housing));
     }
 
-    /// The 51-minute, 9-step cycle's transient at two tolerances and its fixed-temperature energy.
+    /// The 51-minute, 9-step cycle's transient at two tolerances and its fixed-temperature energy,
+    /// each P_V(θ) the scene's one-stage drive walked (the duty cycle a scene of one pair reports).
     /// Target < 5 ms.
     #[divan::bench(sample_count = 10, sample_size = 1)]
     fn duty_cycle_transient(b: divan::Bencher) {
         let scene = scene();
-        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
-        let losses = Losses::new(&scene, &eval).unwrap();
         let housing = scene.housing.clone().unwrap();
         let cycle = scene.duty_cycle.clone().unwrap();
-        b.bench(|| duty_cycle(&losses, &housing, &cycle, Some(363.15)));
+        b.bench(|| drive_duty(&scene, scene.drive.as_ref().unwrap(), &housing, &cycle));
     }
 
     /// Issue 40: one step of 10⁶ h (120 N·m, 2500 rpm) with the scene's own P_V(θ): the step settles
@@ -455,12 +454,10 @@ mod thermal {
     #[divan::bench(sample_count = 10, sample_size = 1)]
     fn duty_cycle_settled_million_hours(b: divan::Bencher) {
         let scene = scene();
-        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
-        let losses = Losses::new(&scene, &eval).unwrap();
         let housing = scene.housing.clone().unwrap();
         let mut cycle = scene.duty_cycle.clone().unwrap();
         cycle.steps = vec![gearloss::thermal::DutyStep { duration: 3.6e9, ..cycle.steps[1].clone() }];
-        b.bench(|| duty_cycle(&losses, &housing, &cycle, Some(363.15)));
+        b.bench(|| drive_duty(&scene, scene.drive.as_ref().unwrap(), &housing, &cycle));
     }
 }
 

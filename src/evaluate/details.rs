@@ -6,7 +6,7 @@ use rayon::prelude::*;
 use super::evaluation::{Evaluation, PointEvaluation};
 use super::plan::Plan;
 use super::setup::contact_table;
-use super::{contact_curves, dynamics, laws, teeth, thermal};
+use super::{contact_curves, dynamics, laws, teeth};
 use crate::model::Scene;
 
 /// The detail points of the plan in full (tables, film, laws, curves), the contact curves and the
@@ -44,6 +44,5 @@ pub fn evaluate_details(
     eval.contact_curves = contact_curves::contact_curves(scene, eval);
     eval.dynamics =
         dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), &known.detail_dynamics);
-    eval.thermal = thermal::thermal_details(scene, eval);
     eval.teeth = known.teeth.clone().or_else(|| teeth::teeth_details(scene, &eval.geometry));
 }

@@ -102,7 +102,7 @@ pub(crate) fn at_first_balance<'s>(scene: &'s Scene, drive: &SceneDrive) -> std:
 /// A drive's duty cycle under its first law and formulation: each step's P_V at the scene's oil
 /// temperature and, with a heat capacity, the sump's transient from ambient
 /// ([`crate::thermal::transient`], C dθ/dt = P_V(θ) − P_Q(θ), standing steps without losses).
-pub(crate) fn drive_duty(
+pub fn drive_duty(
     scene: &Scene,
     drive: &SceneDrive,
     housing: &Housing,

@@ -18,8 +18,6 @@ pub struct Evaluation {
     pub contact_curves: ContactCurves,
     /// The dynamics, when the scene asks for them.
     pub dynamics: Option<DynamicsEvaluation>,
-    /// The heat-balance curve and the duty cycle, when the scene asks for them.
-    pub thermal: Option<super::thermal::ThermalDetails>,
     /// The teeth's stiffness and transmission error, when the scene asks for them.
     pub teeth: Option<super::teeth::TeethDetails>,
 }

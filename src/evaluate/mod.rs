@@ -58,6 +58,7 @@ pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 
 pub use crate::thermal::Ratings;
 pub use drive::{evaluate_drive, evaluate_drive_into, DriveEvaluation, DriveTally};
+pub use drive_thermal::drive_duty;
 pub use plan::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
 pub use plan::{Plan, Shard};
 pub use prepare::prepare;
@@ -72,7 +73,7 @@ pub use stream::evaluate_records;
 pub use tally::implausible_efficiency;
 pub use tally::Tally;
 pub use teeth::{teeth_details, TeethDetails};
-pub use thermal::{duty_cycle, ratings, DutyCycleResult, Losses};
+pub use thermal::{ratings, DutyCycleResult, Losses};
 
 /// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
 /// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).

@@ -54,12 +54,5 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
     setup.parts = PairParts::new(scene, &setup.geometry, scene.mesh().budget_oil(&setup.tribology));
     setup.ohlendorf_loss_factor =
         efficiency::ohlendorf_loss_factor(&setup.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
-    Evaluation {
-        setup,
-        points: Vec::new(),
-        contact_curves: ContactCurves::default(),
-        dynamics: None,
-        thermal: None,
-        teeth: None,
-    }
+    Evaluation { setup, points: Vec::new(), contact_curves: ContactCurves::default(), dynamics: None, teeth: None }
 }

@@ -1,5 +1,7 @@
-//! The losses at an oil temperature, and the thermal balance, rating and duty cycle they give
-//! ([`crate::thermal`] holds the housing and the solvers; this file supplies P_V(θ)).
+//! A pair's losses at an oil temperature and the balance and ratings of each point of its sweep;
+//! the speeds' ratings, the heat-balance curve and a duty cycle over any P_V, which a drive's
+//! thermal balance reads (`super::drive_thermal`; [`crate::thermal`] holds the housing and the
+//! solvers).
 //!
 //! P_V(θ) is the scene's one-stage drive walked with its oil read at θ (ν by ASTM D341, ρ by thermal
 //! expansion, η = ρν, α from the base oil where the scene does not give it;
@@ -95,7 +97,7 @@ impl<'a> Losses<'a> {
         LossesAt { mesh: Self::mesh_or_none(mesh, state), budget }
     }
 
-    /// [`Self::at`]'s total P_V (W), what the balance, the ratings, the curve and the duty cycle
+    /// [`Self::at`]'s total P_V (W), what each point's balance and its speed's ratings
     /// read: the same walk's losses added up, from its one pass without building its point
     /// (`DriveSetup::one_pair_losses`; the bearings at the loads the pinion torque fixes).
     pub fn total(&self, spec: &FrictionLawSpec, f: Formulation, state: OperatingState, t: f64) -> f64 {
@@ -259,20 +261,9 @@ pub struct DutyCycleResult {
     pub transient: Option<Result<thermal::Transient, String>>,
 }
 
-/// The scene's duty cycle with its first law and first formulation.
-pub fn duty_cycle(losses: &Losses, housing: &Housing, cycle: &DutyCycle, fixed: Option<f64>) -> DutyCycleResult {
-    let spec = &losses.scene.friction[0];
-    let f = losses.setup.formulations.first().copied().unwrap_or(Formulation::External);
-    let p_v = |k: usize, t: f64| {
-        let s = &cycle.steps[k];
-        losses.total(spec, f, OperatingState { pinion_torque: s.pinion_torque, pinion_speed: s.pinion_speed }, t)
-    };
-    duty_cycle_of(p_v, housing, cycle, (fixed, f))
-}
-
 /// A duty cycle on `p_v(step, θ)` (W) under the scene's first law and formulation `f`: each step's
 /// P_V at the fixed oil temperature, when there is one, and with a heat capacity the sump's
-/// transient from ambient ([`crate::thermal::transient`]); a pair's and a drive's alike.
+/// transient from ambient ([`crate::thermal::transient`]); a drive's (`drive_thermal::drive_duty`).
 pub(crate) fn duty_cycle_of(
     p_v: impl Fn(usize, f64) -> f64 + Copy,
     housing: &Housing,
@@ -305,8 +296,7 @@ pub struct HeatBalanceCurve {
 }
 
 /// The curve of `p_v` (W at θ in K) against what `housing` gives off, from ambient to the balance
-/// search's limit, at (operating point, law index, formulation): a pair's first detail point and a
-/// drive's first row.
+/// search's limit, at (operating point, law index, formulation): a drive's first row.
 pub(crate) fn heat_balance_curve(
     p_v: impl Fn(f64) -> f64,
     housing: &Housing,
@@ -325,36 +315,4 @@ pub(crate) fn heat_balance_curve(
         temperatures,
         balance: thermal::balance(p_v, housing),
     }
-}
-
-/// The thermal results of the detail evaluation.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ThermalDetails {
-    pub curve: Option<HeatBalanceCurve>,
-    pub duty_cycle: Option<DutyCycleResult>,
-}
-
-/// The heat-balance curve of the first detail point and the duty cycle, as the scene asks.
-pub(crate) fn thermal_details(scene: &Scene, setup: &Setup) -> Option<ThermalDetails> {
-    let housing = scene.housing.as_ref()?;
-    let losses = Losses::new(scene, setup)?;
-    let spec = scene.friction.first()?;
-    let f = setup.formulations.first().copied().unwrap_or(Formulation::External);
-    let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
-    let curve = setup
-        .cases
-        .first()
-        .filter(|_| wants_balance)
-        .map(|case| heat_balance_curve(|t: f64| losses.total(spec, f, case.state, t), housing, (case.index, 0, f)));
-    let fixed = if scene.operating.equilibrium.is_some() {
-        None
-    } else {
-        scene.operating.oil_temperature.as_ref().map(|t| t.value.value)
-    };
-    let duty = scene
-        .duty_cycle
-        .as_ref()
-        .filter(|_| scene.analyses.duty_cycle.is_some())
-        .map(|c| duty_cycle(&losses, housing, c, fixed));
-    Some(ThermalDetails { curve, duty_cycle: duty })
 }

@@ -114,8 +114,11 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
     if let Some(t) = &eval.teeth {
         with_teeth(&mut report, scene, eval, t);
     }
-    if let (Some(t), Some(h)) = (&eval.thermal, &scene.housing) {
-        with_thermal(&mut report, scene, eval, t, h);
+    if scene.housing.is_some() {
+        // Each point's balance (the sweep's records); the heat-balance curve and the duty cycle
+        // are the scene's one-stage drive's (its report, `report::drive`).
+        report.findings.extend(thermal::thermal_findings(scene, &report.heat.thermal, None, None));
+        report.findings.extend(housing_checks::housing_findings(scene, scene::units(scene)));
     }
     if report.geometry.helical.is_some() {
         report.plots.push(PlotRef::new(
@@ -164,34 +167,6 @@ fn with_teeth(report: &mut Report, scene: &Scene, eval: &Evaluation, t: &crate::
     if !report.transmission_error.is_empty() {
         report.plots.push(PlotRef::new(PlotKind::TransmissionError, "Static transmission error over one mesh cycle"));
         report.plots.push(PlotRef::new(PlotKind::LoadShare, "Load share of one tooth pair along the path of contact"));
-    }
-}
-
-/// The heat balance and the duty cycle: their records, findings and plots.
-fn with_thermal(
-    report: &mut Report,
-    scene: &Scene,
-    eval: &Evaluation,
-    t: &crate::evaluate::thermal::ThermalDetails,
-    h: &crate::thermal::Housing,
-) {
-    report.heat.heat_balance = t.curve.as_ref().map(|c| thermal::heat_balance_report(scene, eval, c, h));
-    report.heat.duty_cycle = t.duty_cycle.as_ref().and_then(|d| thermal::duty_cycle_report(scene, d, h, true));
-    report.findings.extend(thermal::thermal_findings(
-        scene,
-        &report.heat.thermal,
-        report.heat.duty_cycle.as_ref(),
-        t.duty_cycle.as_ref(),
-    ));
-    report.findings.extend(housing_checks::housing_findings(scene, scene::units(scene)));
-    if report.heat.heat_balance.is_some() {
-        report.plots.push(PlotRef::new(PlotKind::HeatBalance, thermal::HEAT_BALANCE_TITLE));
-    }
-    if report.heat.duty_cycle.as_ref().is_some_and(|d| d.samples.is_some()) {
-        report.plots.push(PlotRef::new(PlotKind::DutyCycleTemperature, thermal::DUTY_TEMPERATURE_TITLE));
-    }
-    if report.heat.duty_cycle.is_some() {
-        report.plots.push(PlotRef::new(PlotKind::DutyCycleEnergy, thermal::DUTY_ENERGY_TITLE));
     }
 }
 

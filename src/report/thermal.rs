@@ -8,7 +8,7 @@ use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
 use crate::evaluate::records::RowKind;
 use crate::evaluate::thermal::{DutyCycleResult, HeatBalanceCurve};
-use crate::evaluate::{Evaluation, Tally};
+use crate::evaluate::Tally;
 use crate::model::{Formulation, Scene};
 use crate::thermal::{BalanceStatus, Housing};
 
@@ -225,17 +225,6 @@ pub(crate) fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord
 
 fn law_words(scene: &Scene, law_index: usize, f: Formulation) -> String {
     format!("{}, {}", scene.friction[law_index].label(), f.name())
-}
-
-/// The heat balance of a pair's first detail point.
-pub(crate) fn heat_balance_report(
-    scene: &Scene,
-    eval: &Evaluation,
-    c: &HeatBalanceCurve,
-    h: &Housing,
-) -> HeatBalanceReport {
-    let case = eval.cases.iter().find(|k| k.index == c.case).map_or_else(String::new, |k| k.label.clone());
-    heat_balance_at(format!("{case}, {}", law_words(scene, c.law_index, c.formulation)), c, h)
 }
 
 /// The heat balance of curve `c`, at the point, law and formulation `label` names (a pair's, a

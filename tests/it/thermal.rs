@@ -10,12 +10,17 @@ fn thermal_scene() -> gearloss::Scene {
     crate::scene(&crate::root().join("specs/fzg_c14_thermal.gear"))
 }
 
+/// The scene's report: its one-stage drive's, which holds the duty cycle and the heat balance.
+fn thermal_report(scene: &gearloss::Scene) -> gearloss::report::drive::DriveReport {
+    gearloss::run_drive::drive_report_files(scene, scene.drive.as_ref().unwrap()).expect("the spec runs").0
+}
+
 /// The report's duty cycle keeps its books: C (θ_end − θ_0) = E_lost − E_dissipated to 1e-9 of
 /// E_lost, and the sum of the step energies is the cycle's. Its error estimate is below 1e-9 K.
 #[test]
 fn duty_cycle_energy_is_conserved() {
     let scene = thermal_scene();
-    let report = gearloss::report_of(&scene);
+    let report = thermal_report(&scene);
     let d = report.heat.duty_cycle.as_ref().expect("the scene asks for its duty cycle");
     let c = scene.housing.as_ref().unwrap().heat_capacity.unwrap();
     let end = d.steps.last().unwrap().oil_temperature_end.unwrap().si();
@@ -29,6 +34,34 @@ fn duty_cycle_energy_is_conserved() {
     // Standing still, the first step stays at ambient and loses nothing.
     assert_eq!(d.steps[0].oil_temperature_end.unwrap().si(), start);
     assert_eq!(d.steps[0].energy_lost.unwrap().si(), 0.0);
+}
+
+/// The heat balance's curve (the plot's, at the first row): from ambient past the oil's limit in
+/// ascending steps, P_Q at each temperature the housing's own dissipation there (exact),
+/// P_V − P_Q positive below the located θ* and negative above it (θ* is located, not read off the
+/// curve), and θ* the first row's own balance (its thermal record, 1e-12 K).
+#[test]
+fn heat_balance_curve_brackets_the_located_balance() {
+    let scene = thermal_scene();
+    let housing = scene.housing.clone().unwrap();
+    let report = thermal_report(&scene);
+    let c = report.heat.heat_balance.as_ref().expect("the scene asks for its heat balance");
+    assert_eq!(c.temperature[0], housing.ambient);
+    assert!(*c.temperature.last().unwrap() > housing.max_oil_temperature, "the curve runs past the limit");
+    assert!(c.temperature.windows(2).all(|w| w[1] > w[0]));
+    for (t, q) in c.temperature.iter().zip(&c.dissipation) {
+        assert_eq!(*q, housing.dissipation(*t).total, "P_Q at {t} K");
+    }
+    let theta = c.oil_temperature.as_ref().expect("a balance").si();
+    for ((t, p), q) in c.temperature.iter().zip(&c.power_loss).zip(&c.dissipation) {
+        if *t < theta {
+            assert!(p > q, "{t} K below θ* = {theta} K: P_V {p} ≤ P_Q {q}");
+        } else if *t > theta {
+            assert!(p < q, "{t} K above θ* = {theta} K: P_V {p} ≥ P_Q {q}");
+        }
+    }
+    let first = report.heat.thermal.first().expect("the first row's balance");
+    assert!((first.oil_temperature.as_ref().unwrap().si() - theta).abs() < 1e-12, "{theta} K");
 }
 
 /// At the rating torque the balance is the limit (to 1e-6 K), and at the 95 °C rating it is 95 °C.

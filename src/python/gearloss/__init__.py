@@ -437,8 +437,8 @@ class Report:
 
     @property
     def heat_balance(self):
-        """The heat balance's curve (report.json's ``heat_balance``: a pair's first point, a
-        drive's first row), a pair's and a drive's alike: ``oil_temperature_K`` from ambient to
+        """The heat balance's curve (report.json's ``heat_balance``: the drive's first row, a
+        scene of one pair's one-stage drive's too): ``oil_temperature_K`` from ambient to
         200 °C, the losses ``power_loss_W`` and what the housing gives off ``dissipation_W``
         there; the located balance θ* is ``data["heat_balance"]["oil_temperature"]``. Empty
         without one."""
