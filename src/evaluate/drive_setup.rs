@@ -281,11 +281,14 @@ impl<'a> DriveSetup<'a> {
         crate::drive::walk::parts_at(&self.model(), speed, &[torque.value])
     }
 
-    /// A one-pair drive's losses under (law, formulation) with its pinion torque and speed given at
-    /// the input, in this setup's oil: [the mesh's loss, every loss beside it] (W), from the
-    /// walk's first pass alone when it settles there (the seeded walk does: its point's losses
-    /// are these but for rounding), else from the walk's point. What P_V(θ) reads, a balance's,
-    /// a rating's, a duty cycle's, without building the point.
+    /// Whether the drive is a scene of one pair's one-stage drive.
+    pub(crate) fn is_one_pair(&self) -> bool {
+        self.drive.one_pair
+    }
+
+    /// A one-pair drive's losses under (law, formulation), its pinion torque and speed given at the input, in this
+    /// setup's oil: [the mesh's loss, every loss beside it] (W), from the walk's first pass when it settles there (the
+    /// seeded walk does: the point's losses but for rounding), else from its point: P_V(θ) without building the point.
     pub(crate) fn one_pair_losses(
         &self,
         law: usize,
