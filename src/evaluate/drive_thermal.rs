@@ -55,13 +55,7 @@ fn loss_at_point(
     if base.is_one_pair() {
         // A scene of one pair: its walk's first pass settles at the given pinion torque, whose
         // losses are the point's but for rounding, without building the point.
-        let ends = base.operating_ends();
-        let at = |at, value| crate::drive::EndValue { at, value };
-        let setup = base.at_oil_temperature(theta);
-        return setup
-            .one_pair_losses(law, formulation, at(ends.torque_at, torque), at(ends.speed_at, speed))
-            .iter()
-            .sum();
+        return super::thermal::one_pair_losses_at(base, (law, formulation), (torque, speed), theta).iter().sum();
     }
     base.walked_at((law, formulation), (torque, speed), theta).1.power_lost()
 }

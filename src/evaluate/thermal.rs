@@ -87,7 +87,7 @@ impl<'a> Losses<'a> {
         if state.pinion_speed <= 0.0 {
             return LossesAt { mesh: 0.0, budget: self.scene.gearbox.as_ref().map(|_| LossBudget::default()) };
         }
-        let (torque, speed) = self.ends(state);
+        let (torque, speed) = end_values(&self.drive, (state.pinion_torque, state.pinion_speed));
         let setup = self.drive.at_oil_temperature(t);
         let [mesh, _] = setup.one_pair_losses(self.law(spec), f, torque, speed);
         let budget = self.columns.as_ref().map(|columns| {
@@ -104,22 +104,14 @@ impl<'a> Losses<'a> {
         if state.pinion_speed <= 0.0 {
             return 0.0;
         }
-        let (torque, speed) = self.ends(state);
-        let [mesh, beside] = self.drive.at_oil_temperature(t).one_pair_losses(self.law(spec), f, torque, speed);
+        let [mesh, beside] =
+            one_pair_losses_at(&self.drive, (self.law(spec), f), (state.pinion_torque, state.pinion_speed), t);
         Self::mesh_or_none(mesh, state) + beside
     }
 
     /// The index of the scene's law `spec`.
     fn law(&self, spec: &FrictionLawSpec) -> usize {
         self.scene.friction.iter().position(|s| s == spec).expect("a law of the scene")
-    }
-
-    /// The pinion torque and speed of `state` at the ends the one-stage drive's operating block
-    /// names.
-    fn ends(&self, state: OperatingState) -> (crate::drive::EndValue, crate::drive::EndValue) {
-        let ends = self.drive.operating_ends();
-        let at = |at, value| crate::drive::EndValue { at, value };
-        (at(ends.torque_at, state.pinion_torque), at(ends.speed_at, state.pinion_speed))
     }
 
     /// The mesh loss: none at zero torque (no law is read without a load).
@@ -130,6 +122,28 @@ impl<'a> Losses<'a> {
             0.0
         }
     }
+}
+
+/// A torque and a speed at the ends `drive`'s operating block names (a one-pair drive's: the
+/// pinion's).
+fn end_values(drive: &DriveSetup, (torque, speed): (f64, f64)) -> (crate::drive::EndValue, crate::drive::EndValue) {
+    let ends = drive.operating_ends();
+    let at = |at, value| crate::drive::EndValue { at, value };
+    (at(ends.torque_at, torque), at(ends.speed_at, speed))
+}
+
+/// A one-pair drive's [mesh loss, every loss beside it] (W) under (law, formulation) at `torque`
+/// and `speed` (the pinion's) with its oil at `theta` (K): its walk's first pass
+/// (`DriveSetup::one_pair_losses`), without building the point. A pair's P_V(θ) ([`Losses::total`])
+/// and a scene of one pair's drive rows' (`drive_thermal`) read it.
+pub(crate) fn one_pair_losses_at(
+    drive: &DriveSetup,
+    (law, f): (usize, Formulation),
+    torque_speed: (f64, f64),
+    theta: f64,
+) -> [f64; 2] {
+    let (torque, speed) = end_values(drive, torque_speed);
+    drive.at_oil_temperature(theta).one_pair_losses(law, f, torque, speed)
 }
 
 /// The balance of one operating point, law and formulation, with what it rests on.
