@@ -81,36 +81,37 @@ fn every_drive_row_is_at_its_own_balance() {
     );
 }
 
-/// A scene of one pair at `oil_temperature = equilibrium` and its one-stage drive find the same θ*
-/// at every point, law and formulation (1e-8 K: the same losses to 1e-12, each balance to 1e-10 K).
+/// A scene of one pair at `oil_temperature = equilibrium` (specs/fzg_c14_thermal.gear) reads every
+/// row at its own balance, as a drive does: θ* is the balance its `thermal_balance` analysis finds
+/// for that row at the written oil temperature (1e-8 K), its whole loss `total_W` is what the
+/// housing gives off at θ* (1e-6 relative: θ* located to 1e-10 K), and its mesh and its whole loss
+/// are the pair's own with the oil moved to θ* (`pair_alone`: its law's charged mesh loss and its
+/// gearbox's budget on its own two shafts; 1e-12 relative).
 #[test]
-fn a_pair_at_equilibrium_is_its_one_stage_drive() {
-    let path = crate::root().join("specs/fzg_c14_thermal.gear");
-    let text =
-        std::fs::read_to_string(&path).unwrap().replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
-    let pair = gearloss::check("eq.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
-    let report = gearloss::report_of(&pair);
-    let ast = gearloss::parse("eq.gear", &text).unwrap();
-    let drive = gearloss::scene::lower::lower_as_one_stage_drive(&ast, path.parent()).unwrap();
-    let mut csv = Vec::new();
-    gearloss::evaluate::evaluate_drive_into(&drive, drive.drive.as_ref().unwrap(), &mut csv).unwrap();
-    let (head, rows) = table(&String::from_utf8(csv).unwrap());
-    let col = |name: &str| head.iter().position(|h| h == name).unwrap();
+fn a_pair_at_equilibrium_reads_each_row_at_its_own_balance() {
+    let text = std::fs::read_to_string(crate::root().join("specs/fzg_c14_thermal.gear")).unwrap();
+    let at_balance = text.replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
+    let pair = gearloss::check("eq.gear", &at_balance).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let housing = pair.housing.as_ref().unwrap();
+    let rows = crate::pair_alone::DriveRows::of(&pair);
+    let written = gearloss::check("fixed.gear", &text).unwrap();
+    let fixed = gearloss::evaluate::evaluate_drive(&written, written.drive.as_ref().unwrap());
+    let op = &pair.operating;
     let mut compared = 0;
-    for (e, t) in report.efficiency.iter().zip(&report.heat.thermal) {
-        let Some(theta) = t.oil_temperature else { continue };
-        let formulation = format!("{:?}", e.formulation).to_lowercase();
-        let row = rows
-            .iter()
-            .find(|r| {
-                r[col("torque_index")] == e.torque_index.to_string()
-                    && r[col("speed_index")] == e.speed_index.to_string()
-                    && r[col("formulation")] == formulation
-                    && pair.friction[r[col("law_index")].parse::<usize>().unwrap()].label() == e.label
-            })
-            .unwrap();
-        let drive_theta: f64 = row[col("oil_temperature_K")].parse().unwrap();
-        assert!((drive_theta - theta.si()).abs() < 1e-8, "{drive_theta} K vs the pair's {} K", theta.si());
+    for b in &fixed.balances {
+        let Some(theta) = b.balance.temperature else { continue };
+        let k = rows.find((b.torque_index, b.speed_index), b.law_index, b.formulation);
+        let drive_theta = rows.value(k, "oil_temperature_K");
+        assert!((drive_theta - theta).abs() < 1e-8, "{drive_theta} K vs the analysis's {theta} K");
+        let total = rows.value(k, "total_W");
+        let q = housing.dissipation(drive_theta).total;
+        assert!((total - q).abs() <= 1e-6 * q, "{total} W lost vs {q} W given off at {drive_theta} K");
+        let hot = crate::pair_alone::at_kelvin(&pair, drive_theta);
+        let state = (op.pinion_torque.values[b.torque_index].value, op.pinion_speed.values[b.speed_index].value);
+        let [mesh, beside] = crate::pair_alone::PairAlone::new(&hot).losses((b.law_index, b.formulation), state);
+        let meshes = rows.value(k, "meshes_W");
+        assert!((meshes - mesh).abs() <= 1e-12 * mesh, "mesh {meshes} W vs the pair's own {mesh} W");
+        assert!((total - (mesh + beside)).abs() <= 1e-12 * total, "{total} W vs the pair's own {} W", mesh + beside);
         compared += 1;
     }
     assert!(compared >= 4, "{compared} balances compared");

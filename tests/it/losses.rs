@@ -93,8 +93,9 @@ fn c14_mesh_loss_matches_the_peer_with_the_load_at_the_wheel() {
 }
 
 /// The budget by hand at 239.3 N·m, 1500 rpm: Mauz churning, Palmgren bearings (two NJ 406 per
-/// shaft sharing F_bt equally), seals 7.69e-6 d² n; and the record's total is mesh + the parts
-/// (to 1e-9 relative).
+/// shaft sharing F_bt equally), seals 7.69e-6 d² n, each the scene's drive row's (drive_records.csv,
+/// first law, external; to 1e-9 relative); and the row's total is its mesh loss plus the parts
+/// (1e-12 relative).
 #[test]
 fn budget_by_hand() {
     let scene = spec("fzg_c14_gearbox.gear");
@@ -103,7 +104,9 @@ fn budget_by_hand() {
     let (t, w1) = (239.3, rpm(1500.0));
     let w2 = w1 / g.gear_ratio;
     let nu = eval.tribology.kinematic_viscosity.unwrap();
-    let b = eval.loss_budget(&scene, &OperatingState { pinion_torque: t, pinion_speed: w1 }).unwrap();
+    let rows = crate::pair_alone::DriveRows::of(&scene);
+    let k = rows.find((1, 1), 0, gearloss::efficiency::Formulation::External);
+    let part = |c: &str| rows.value(k, c);
 
     let v_t = w1 * g.working_pitch_radius[0];
     let (e1, e2, h_c, l_h, width): (f64, f64, f64, f64, f64) = (41.2, 59.2, 100.0, 200.0, 14.0);
@@ -111,7 +114,7 @@ fn budget_by_hand() {
     let c1 = 0.063 * (e1 + e2) / 10.0 + 0.0128 * (width / 10.0f64).powi(3);
     let c2 = (e1 + e2) / 800.0 + 0.2;
     let churning = c_sp * c1 * (c2 * v_t / 10.0).exp() * w1;
-    assert!((b.part(LossColumn::GearNoLoad).unwrap() / churning - 1.0).abs() < 1e-9);
+    assert!((part("gear_no_load_W") / churning - 1.0).abs() < 1e-9);
 
     let dm = 60.0;
     let m0 = |w: f64| {
@@ -119,29 +122,33 @@ fn budget_by_hand() {
         1e-7 * 2.5 * nn.powf(2.0 / 3.0) * dm * dm * dm * 1e-3
     };
     let no_load = 2.0 * (m0(w1) * w1 + m0(w2) * w2);
-    assert!((b.part(LossColumn::BearingsNoLoad).unwrap() / no_load - 1.0).abs() < 1e-9);
+    assert!((part("bearings_no_load_W") / no_load - 1.0).abs() < 1e-9);
     let fr = t / g.base_radius[0] / 2.0;
     let load = 2.0 * 0.0003 * fr * dm * 1e-3 * (w1 + w2);
-    assert!((b.part(LossColumn::BearingsLoad).unwrap() / load - 1.0).abs() < 1e-9);
+    assert!((part("bearings_load_W") / load - 1.0).abs() < 1e-9);
     let seals = 7.69e-6 * 900.0 * (1500.0 + 1000.0);
-    assert!((b.part(LossColumn::Seals).unwrap() / seals - 1.0).abs() < 1e-9);
+    assert!((part("seals_W") / seals - 1.0).abs() < 1e-9);
+    assert!((rows.value(k, "stage_pair_driving_torque_N_m") - t).abs() <= 1e-12 * t);
 
-    let parts = b.with_mesh(100.0, t * w1);
-    assert!((parts.total_loss - (100.0 + churning + no_load + load + seals)).abs() < 1e-9 * parts.total_loss);
-    assert!((parts.total_efficiency - (1.0 - parts.total_loss / (t * w1))).abs() < 1e-15);
+    let parts = ["meshes_W", "gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"].map(part);
+    let total = part("total_W");
+    assert!((parts.iter().sum::<f64>() - total).abs() <= 1e-12 * total, "{parts:?} vs {total}");
 }
 
 /// The injection gearbox on SKF-model bearings by hand at 239.3 N·m, 3000 rpm: the jet's impulse
 /// ρ Q v_t (v_t + v_j) plus both gears' Anderson–Loewenthal windage; each 16006 bearing (two per
 /// shaft, F_r = F_bt/2, F_a = 0) with M_rr = φ_ish φ_rs R1 d_m^1.96 F_r^0.54 (νn)^0.6 and
-/// M_sl = μ_sl S1 d_m^-0.26 F_r^(5/3), written out here in N·mm, rpm and mm²/s (to 1e-9 relative).
+/// M_sl = μ_sl S1 d_m^-0.26 F_r^(5/3), written out here in N·mm, rpm and mm²/s, each the scene's drive
+/// row's (drive_records.csv, first law, external; to 1e-9 relative).
 #[test]
 fn injection_and_skf_budget_by_hand() {
     let scene = spec("fzg_c14_injection.gear");
     let eval = evaluate_scene(&scene);
     let g = &eval.geometry;
     let (t, w1) = (239.3, rpm(3000.0));
-    let b = eval.loss_budget(&scene, &OperatingState { pinion_torque: t, pinion_speed: w1 }).unwrap();
+    let rows = crate::pair_alone::DriveRows::of(&scene);
+    let k = rows.find((1, 1), 0, gearloss::efficiency::Formulation::External);
+    let part = |c: &str| rows.value(k, c);
     let nu = eval.tribology.kinematic_viscosity.unwrap() * 1e6;
     let eta_cp = eval.tribology.dynamic_viscosity * 1e3;
     let rho = eval.tribology.density().unwrap();
@@ -160,7 +167,7 @@ fn injection_and_skf_budget_by_hand() {
                 * 1e3
         })
         .sum();
-    assert!((b.part(LossColumn::GearNoLoad).unwrap() / (impulse + windage) - 1.0).abs() < 1e-9);
+    assert!((part("gear_no_load_W") / (impulse + windage) - 1.0).abs() < 1e-9);
     assert!(windage > 1.0 && windage < impulse, "windage {windage} W, impulse {impulse} W");
 
     let (d, big_d) = (30.0, 55.0);
@@ -177,8 +184,8 @@ fn injection_and_skf_budget_by_hand() {
         rolling += 2.0 * m_rr * 1e-3 * w;
         sliding += 2.0 * m_sl * 1e-3 * w;
     }
-    assert!((b.part(LossColumn::BearingsNoLoad).unwrap() / rolling - 1.0).abs() < 1e-9, "{:?} vs {rolling}", b.parts);
-    assert!((b.part(LossColumn::BearingsLoad).unwrap() / sliding - 1.0).abs() < 1e-9, "{:?} vs {sliding}", b.parts);
+    assert!((part("bearings_no_load_W") / rolling - 1.0).abs() < 1e-9, "{} vs {rolling}", part("bearings_no_load_W"));
+    assert!((part("bearings_load_W") / sliding - 1.0).abs() < 1e-9, "{} vs {sliding}", part("bearings_load_W"));
 }
 
 /// The lever rule: bearings at −40 and +60 mm carry 60 % and 40 % of F_bt; a helical pair's axial
@@ -275,74 +282,35 @@ fn loss_limits() {
     assert_eq!(loss_budget(&empty, &g, 100.0, 100.0, &OIL).beside_mesh(), 0.0);
 }
 
-/// The pair's own report (the per-mesh evaluation with its gearbox, `pair_files`): the budget rows
-/// of report.json add up and the headline leads report.md; the scene's map is its one-stage
-/// drive's (`run`: loss_map.csv a row per grid point, law and formulation, and loss_map.svg).
+/// The scene's report (its one-stage drive's): every row's parts add up to its whole loss in
+/// drive_records.csv (meshes, gears' no-load, both bearing columns and seals; 1e-12 relative), the
+/// headline leads report.md and loss_budget.svg is drawn; the map is the drive's (loss_map.csv a
+/// row per grid point, law and formulation, and loss_map.svg).
 #[test]
 fn report_budget_and_map() {
-    let path = crate::root().join("specs/fzg_c14_gearbox.gear");
-    let source = std::fs::read_to_string(&path).unwrap();
-    let scene = gearloss::check("fzg_c14_gearbox.gear", &source).unwrap();
-    let out = gearloss::pair_files(&scene).unwrap_or_else(|_| panic!("the spec runs"));
-    let file = |name: &str| out.files.iter().find(|(f, _)| f == name).map(|(_, c)| c.clone()).unwrap();
-    let json: serde_json::Value = serde_json::from_str(&file("report.json")).unwrap();
-    for rec in json["efficiency"].as_array().unwrap() {
-        let b = &rec["budget"];
-        let parts: f64 = ["gear_no_load", "bearings_no_load", "bearings_load", "seals"]
+    let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
+    let run = gearloss::run_to_files("fzg_c14_gearbox.gear", &source).unwrap().files;
+    let file = |name: &str| &run.iter().find(|(f, _)| f == name).unwrap_or_else(|| panic!("no {name}")).1;
+    let rows = crate::pair_alone::DriveRows::parse(file("drive_records.csv"));
+    assert_eq!(rows.len(), 9 * 2 * 2);
+    for k in 0..rows.len() {
+        let parts: f64 = ["meshes_W", "gear_no_load_W", "bearings_no_load_W", "bearings_load_W", "seals_W"]
             .iter()
-            .map(|k| b[k]["value"].as_f64().unwrap())
-            .sum::<f64>()
-            + rec["power_loss"]["value"].as_f64().unwrap();
-        assert!((parts / b["total_loss"]["value"].as_f64().unwrap() - 1.0).abs() < 1e-8);
+            .map(|c| rows.value(k, c))
+            .sum();
+        let total = rows.value(k, "total_W");
+        assert!((parts - total).abs() <= 1e-12 * total, "row {k}: {parts} W vs {total} W");
+        assert!(rows.value(k, "gear_no_load_W") > 0.0 && rows.value(k, "bearings_load_W") > 0.0, "row {k}");
     }
     let md = file("report.md");
     assert!(md.find("## Headline").unwrap() < md.find("## Scene").unwrap());
     assert!(file("loss_budget.svg").contains("<svg"));
-    assert!(!out.files.iter().any(|(f, _)| f.starts_with("efficiency_map")), "a pair's report has no map of its own");
-    let run = gearloss::run_to_files("fzg_c14_gearbox.gear", &source).unwrap().files;
-    let drive_file = |name: &str| &run.iter().find(|(f, _)| f == name).unwrap_or_else(|| panic!("no {name}")).1;
-    assert_eq!(drive_file("loss_map.csv").lines().count(), 1 + 40 * 40 * 2 * 2);
-    assert!(drive_file("loss_map.svg").contains("<svg"));
-}
-
-/// A sweep of more than 100 points shows its budget at the detail points only, as its efficiency
-/// and bearing tables do: the spec at 20 torques × 10 speeds (200 points, its map left out) keeps
-/// hundreds of points for its sweep plots, but report.md's budget table has a row per detail point
-/// (3 × 3), law (2) and formulation (2), 36, and loss_budget.svg a bar per detail point and law (its
-/// height is 420 px + 18 px a bar: 18 bars); the spec as written (9 points) shows all 9 × 2 × 2.
-#[test]
-fn a_large_sweeps_budget_is_shown_at_its_detail_points() {
-    let source = std::fs::read_to_string(crate::root().join("specs/fzg_c14_gearbox.gear")).unwrap();
-    let budget = |src: &str| -> (usize, usize, usize) {
-        let out = gearloss::pair_files(&gearloss::check("s.gear", src).unwrap()).unwrap_or_else(|e| panic!("{e:?}"));
-        let file = |name: &str| out.files.iter().find(|(f, _)| f == name).map(|(_, c)| c.clone()).unwrap();
-        let md = file("report.md");
-        let section = &md[md.find("## Loss budget").unwrap()..];
-        let section = &section[..section[3..].find("\n## ").map_or(section.len(), |k| k + 3)];
-        let table = section.split("\n### ").next().unwrap();
-        let rows = table.lines().filter(|l| l.starts_with("| ") && l.contains(" N·m, ")).count();
-        let svg = file("loss_budget.svg");
-        let height: usize = svg.split("height=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap();
-        let json: serde_json::Value = serde_json::from_str(&file("report.json")).unwrap();
-        let kept = json["efficiency"].as_array().unwrap().iter().filter(|e| !e["budget"].is_null()).count();
-        (rows, (height - 420) / 18, kept)
-    };
-    let (rows, bars, _) = budget(&source);
-    assert_eq!((rows, bars), (36, 18));
-    let large = source
-        .replace("pinion_torque   = [94.1, 239.3, 372.6] N*m", "pinion_torque   = 20..300 N*m count 20")
-        .replace("pinion_speed    = [500, 1500, 3000] rpm", "pinion_speed    = 500..3000 rpm count 10")
-        .lines()
-        .filter(|l| !l.contains("efficiency_map("))
-        .collect::<Vec<_>>()
-        .join("\n");
-    let (rows, bars, kept) = budget(&large);
-    assert!(kept > 36 * 4, "the report keeps {kept} budgets for its plots");
-    assert_eq!((rows, bars), (36, 18));
+    assert_eq!(file("loss_map.csv").lines().count(), 1 + 40 * 40 * 2 * 2);
+    assert!(file("loss_map.svg").contains("<svg"));
 }
 
 /// A pair's bearing beyond its static rating is found at any point of its sweep, not only at the
-/// points its report keeps for its plots: the spec with C_0 = 4 kN on the pinion shaft's bearings,
+/// rows its report keeps: the spec with C_0 = 4 kN on the pinion shaft's bearings,
 /// 401 pinion torques at 500 rpm from 50 to 250 N·m (P_0/C_0 ≤ 0.9) but for one point the report
 /// does not keep set to 372.6 N·m, warns at that point in the very words and numbers of the same
 /// pair run at 372.6 N·m alone; without it, nothing.
@@ -367,19 +335,19 @@ fn a_pairs_bearing_beyond_its_rating_is_found_at_any_point() {
             .collect::<Vec<_>>()
             .join("\n")
     };
-    let warnings = |src: &str| -> Vec<String> {
-        let report =
-            gearloss::report_of(&gearloss::check("s.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false))));
-        crate::messages_with(report.findings, "beyond its static rating")
+    let report = |src: &str| {
+        let scene = gearloss::check("s.gear", src).unwrap_or_else(|e| panic!("{}", e.render(false)));
+        gearloss::run_drive::drive_report_files(&scene, scene.drive.as_ref().unwrap()).unwrap().0
     };
+    let warnings = |src: &str| crate::messages_with(report(src).findings, "beyond its static rating");
     let mut torques: Vec<f64> = (0..401).map(|k| 50.0 + 0.5 * f64::from(k)).collect();
-    let scene = gearloss::check("s.gear", &at(&torques)).unwrap();
-    let plan = gearloss::Plan::new(&scene.operating, None, &[]);
-    let hidden = (100..300).find(|k| !plan.kept(*k)).expect("a point the report does not keep");
     assert_eq!(warnings(&at(&torques)), Vec::<String>::new());
+    let hidden = 150;
     torques[hidden] = 372.6;
+    let kept = report(&at(&torques));
+    assert!(kept.points.iter().all(|p| !p.label.contains("372.6")), "the report keeps the point");
     let found = warnings(&at(&torques));
-    assert!(!found.is_empty() && found.iter().all(|w| w.contains("372.6 N·m, 500 rpm")), "{found:?}");
+    assert!(!found.is_empty() && found.iter().all(|w| w.contains("372.6 N·m, n_in = 500 rpm")), "{found:?}");
     assert_eq!(found, warnings(&at(&[372.6])));
 }
 

@@ -25,6 +25,7 @@ mod losses;
 mod oil_sweep;
 mod one_stage;
 mod one_stage_pair;
+mod pair_alone;
 mod pair_cycle;
 mod planetary;
 mod planetary_helical;

@@ -3,6 +3,7 @@
 //! operating block and analyses of one pair, without what the drive evaluates itself (budget,
 //! thermal balance, duty cycle, map), so its mesh sections are the pair's own report's.
 
+use gearloss::efficiency::Formulation;
 use gearloss::report::Report;
 
 /// Every scene of one pair in specs/ and tests/specs/ok/ (not on a drive cycle).
@@ -156,10 +157,11 @@ fn a_pairs_lowered_form_carries_its_one_stage_drive() {
 }
 
 /// A scene of one pair run as its drive keeps the total efficiency its own report has always
-/// given: each headline row's "η at the pinion", 1 − P_V/(T_1 ω_1), is the pair's own budget's
-/// η total at the same point, law and formulation, to 1e-12 (the same loss P_V over the power at
-/// the pinion gear), for every pair spec with a gearbox whose points the drive's report keeps; the
-/// drive's own η (P_out/P_in at the box's ends) differs where the pinion shaft loses power.
+/// given: each headline row's "η at the pinion", 1 − P_V/(T_1 ω_1), is the pair's own total
+/// efficiency at the same point, law and formulation — its law's charged mesh loss and its
+/// gearbox's budget on its own two shafts (`pair_alone`) over the power at the pinion gear — to
+/// 1e-12, for every pair spec with a gearbox whose points the drive's report keeps; the drive's own
+/// η (P_out/P_in at the box's ends) differs where the pinion shaft loses power.
 #[test]
 fn a_pairs_drive_report_keeps_its_total_efficiency() {
     let (mut compared, mut differs) = (0, 0);
@@ -168,23 +170,18 @@ fn a_pairs_drive_report_keeps_its_total_efficiency() {
         {
             continue;
         }
-        let pair = gearloss::report_of(&scene);
+        let alone = crate::pair_alone::PairAlone::new(&scene);
         let (drive, _) = gearloss::run_drive::drive_report_files(&scene, scene.drive.as_ref().unwrap()).unwrap();
         assert!(drive.one_pair, "{name}");
         for p in &drive.points {
             let Some(eta) = p.pinion_efficiency() else { continue };
             let s = &p.point.stages[0];
-            let own = pair
-                .efficiency
-                .iter()
-                .find(|r| {
-                    r.label == p.law
-                        && r.formulation.name() == p.formulation
-                        && (r.pinion_torque.si() - s.driving_torque).abs() <= 1e-12 * s.driving_torque
-                        && (r.pinion_speed.si() - s.driving_speed).abs() <= 1e-12 * s.driving_speed
-                })
-                .unwrap_or_else(|| panic!("{name}: {} has no row of the pair's", p.label));
-            let want = own.budget.as_ref().expect("a budget").total_efficiency.0;
+            let law = scene.friction.iter().position(|l| l.label() == p.law).unwrap();
+            let f =
+                [Formulation::External, Formulation::Internal].into_iter().find(|f| f.name() == p.formulation).unwrap();
+            let (t, w) = (s.driving_torque, s.driving_speed);
+            let [mesh, beside] = alone.losses((law, f), (t, w));
+            let want = 1.0 - (mesh + beside) / (t * w);
             assert!((eta - want).abs() <= 1e-12, "{name} {}: {eta} vs {want}", p.label);
             differs += usize::from((p.point.efficiency - want).abs() > 1e-9);
             compared += 1;

@@ -1,9 +1,7 @@
-//! The thermal balance end to end: the duty cycle's books, the rating on the limit, the balance at
-//! `oil_temperature = equilibrium`, the zero-speed and zero-torque steps, the step limit.
+//! The thermal balance end to end: the duty cycle's books, the heat-balance curve, the rating on
+//! the limit, the zero-speed and zero-torque steps, the step limit (the balance at
+//! `oil_temperature = equilibrium`: drive_equilibrium.rs).
 
-use gearloss::evaluate::{prepare, state_at, Plan};
-use gearloss::evaluate::{ratings, Losses};
-use gearloss::geometry::OperatingState;
 use gearloss::model::Formulation;
 
 fn thermal_scene() -> gearloss::Scene {
@@ -64,24 +62,32 @@ fn heat_balance_curve_brackets_the_located_balance() {
     assert!((first.oil_temperature.as_ref().unwrap().si() - theta).abs() < 1e-12, "{theta} K");
 }
 
-/// At the rating torque the balance is the limit (to 1e-6 K), and at the 95 °C rating it is 95 °C.
-/// A rating is the speed's: the report gives every torque at one speed the same two ratings.
+/// At the rating torque the balance is the limit (to 1e-6 K), and at the 95 °C rating it is 95 °C:
+/// the scene run at each row's rating torques and speed alone finds its sump there. A rating is the
+/// speed's: the report gives every torque at one speed the same two ratings.
 #[test]
 fn rating_torque_puts_the_balance_on_the_limit() {
     let scene = thermal_scene();
-    let plan = Plan::new(&scene.operating, None, &[]);
-    let eval = prepare(&scene, &plan);
-    let losses = Losses::new(&scene, &eval).unwrap();
     let housing = scene.housing.as_ref().unwrap();
-    let spec = &scene.friction[0];
-    let state = state_at(&scene.operating, 1);
-    let r = ratings(&losses, housing, spec, Formulation::External, state.pinion_speed, state.pinion_torque);
-    for (rating, target) in [(r.at_limit.unwrap(), housing.max_oil_temperature), (r.at_95.unwrap(), 368.15)] {
-        let at = OperatingState { pinion_torque: rating, ..state };
-        let b = gearloss::thermal::balance(|t| losses.at(spec, Formulation::External, at, t).total(), housing);
-        assert!((b.temperature.unwrap() - target).abs() < 1e-6, "{rating} N·m: {b:?}");
+    let text = std::fs::read_to_string(crate::root().join("specs/fzg_c14_thermal.gear")).unwrap();
+    let eval = gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap());
+    let mut rated = 0;
+    for b in eval.balances.iter().filter(|b| b.law_index == 0 && b.formulation == Formulation::External) {
+        let rpm = ["1500", "3000"][b.speed_index];
+        for (rating, target) in [(b.rating, housing.max_oil_temperature), (b.rating_95, 368.15)] {
+            let torque = rating.expect("a rating at each speed");
+            let alone = text
+                .replace("pinion_torque   = [94.1, 239.3] N*m", &format!("pinion_torque = {torque:?} N*m"))
+                .replace("pinion_speed    = [1500, 3000] rpm", &format!("pinion_speed = {rpm} rpm"));
+            let at = gearloss::check("rated.gear", &alone).unwrap();
+            let row = &gearloss::evaluate::evaluate_drive(&at, at.drive.as_ref().unwrap()).balances[0];
+            let theta = row.balance.temperature.unwrap();
+            assert!((theta - target).abs() < 1e-6, "{torque} N·m at {rpm} rpm: θ* = {theta} K, not {target} K");
+            rated += 1;
+        }
     }
-    let report = gearloss::report_of(&scene);
+    assert_eq!(rated, 8);
+    let report = thermal_report(&scene);
     let by_speed = |speed: f64| {
         let mut at: Vec<_> = report
             .heat
@@ -96,45 +102,23 @@ fn rating_torque_puts_the_balance_on_the_limit() {
         at.dedup();
         at.len()
     };
-    assert_eq!(by_speed(state.pinion_speed), 1);
+    assert_eq!(by_speed(scene.operating.pinion_speed.values[1].value), 1);
 }
 
-/// Zero speed loses nothing; zero torque loses only the no-load parts (the mesh carries nothing).
+/// Zero speed loses nothing; zero torque loses only the losses beside the mesh, the pair's own
+/// (`pair_alone`: its gearbox's budget on its own two shafts at no load, 1e-12 relative): the duty
+/// cycle's standing first step and its idling fifth (0 N·m at 2000 rpm) at the fixed oil temperature.
 #[test]
 fn standing_and_idling_steps() {
     let scene = thermal_scene();
-    let plan = Plan::new(&scene.operating, None, &[]);
-    let eval = prepare(&scene, &plan);
-    let losses = Losses::new(&scene, &eval).unwrap();
-    let spec = &scene.friction[0];
-    let standing =
-        losses.at(spec, Formulation::External, OperatingState { pinion_torque: 100.0, pinion_speed: 0.0 }, 350.0);
-    assert_eq!(standing.total(), 0.0);
-    let idling =
-        losses.at(spec, Formulation::External, OperatingState { pinion_torque: 0.0, pinion_speed: 200.0 }, 350.0);
-    assert_eq!(idling.mesh, 0.0);
-    assert!(idling.total() > 0.0 && idling.total().is_finite());
-}
-
-/// At `oil_temperature = equilibrium` each efficiency record is read at its own balance: its total
-/// loss (mesh and budget) equals what the housing gives off at θ* (to 1e-6 relative), and the mesh
-/// loss is the law's at θ*.
-#[test]
-fn equilibrium_records_balance_the_heat() {
-    let path = crate::root().join("specs/fzg_c14_thermal.gear");
-    let text =
-        std::fs::read_to_string(&path).unwrap().replace("oil_temperature = 90 degC", "oil_temperature = equilibrium");
-    let scene = gearloss::check("equilibrium.gear", &text).unwrap_or_else(|e| panic!("{}", e.render(false)));
-    let report = gearloss::report_of(&scene);
-    let housing = scene.housing.as_ref().unwrap();
-    assert!(!report.efficiency.is_empty());
-    for (e, t) in report.efficiency.iter().zip(&report.heat.thermal) {
-        let Some(theta) = t.oil_temperature else { continue };
-        let total = e.budget.as_ref().unwrap().total_loss.si();
-        let q = housing.dissipation(theta.si()).total;
-        assert!((total - q).abs() < 1e-6 * q, "{total} vs {q} at {} K", theta.si());
-        assert!((t.power_loss.si() - total).abs() < 1e-9 * total);
-    }
+    let report = thermal_report(&scene);
+    let steps = &report.heat.duty_cycle.as_ref().expect("the scene's duty cycle").steps;
+    let p_v = |k: usize| steps[k].power_loss_fixed.as_ref().expect("the loss at the fixed oil temperature").si();
+    assert_eq!(p_v(0), 0.0);
+    let idle = 2000.0 * std::f64::consts::PI / 30.0;
+    let [mesh, beside] = crate::pair_alone::PairAlone::new(&scene).losses((0, Formulation::External), (0.0, idle));
+    assert_eq!(mesh, 0.0);
+    assert!(beside > 0.0 && (p_v(4) - beside).abs() <= 1e-12 * beside, "{} W vs {beside} W", p_v(4));
 }
 
 /// A duty cycle of more than 10 000 steps is refused at its step 10 001.
