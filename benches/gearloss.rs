@@ -403,11 +403,10 @@ mod six_dof {
     }
 }
 
-/// The thermal balance (issue 27) on `specs/fzg_c14_thermal.gear`: P_V(θ) is its mesh loss and
-/// loss budget with the oil read at θ.
+/// The thermal balance (issue 27) on `specs/fzg_c14_thermal.gear`: P_V(θ) is its one-stage drive's
+/// whole loss with the oil read at θ (`evaluate::DriveLosses`).
 mod thermal {
-    use gearloss::evaluate::{drive_duty, Losses};
-    use gearloss::evaluate::{prepare, state_at, Plan};
+    use gearloss::evaluate::{drive_duty, DriveLosses};
     use gearloss::model::Formulation;
 
     fn scene() -> gearloss::Scene {
@@ -415,27 +414,29 @@ mod thermal {
         gearloss::check("thermal", &text).unwrap()
     }
 
-    /// One P_V(θ) as the balance reads it (`Losses::total`): the budget's own cost, against which
-    /// the balance is measured.
+    /// The spec's first point: its pinion torque and speed.
+    fn first_point(scene: &gearloss::Scene) -> (f64, f64) {
+        (scene.operating.pinion_torque.values[0].value, scene.operating.pinion_speed.values[0].value)
+    }
+
+    /// One P_V(θ) as the balance reads it (`DriveLosses::total`): the losses' own cost, against
+    /// which the balance is measured.
     #[divan::bench]
     fn losses_at_one_temperature(b: divan::Bencher) {
         let scene = scene();
-        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
-        let losses = Losses::new(&scene, &eval).unwrap();
-        let state = state_at(&scene.operating, 0);
-        b.bench(|| losses.total(&scene.friction[0], Formulation::External, state, 350.0));
+        let losses = DriveLosses::new(&scene, scene.drive.as_ref().unwrap());
+        let point = first_point(&scene);
+        b.bench(|| losses.total(0, Formulation::External, point, 350.0));
     }
 
     /// θ* of one operating point (the P_Q-led secant, about eight P_V). Target: < 50 µs beyond the budget's own cost.
     #[divan::bench]
     fn balance_of_one_point(b: divan::Bencher) {
         let scene = scene();
-        let eval = prepare(&scene, &Plan::new(&scene.operating, None, &[]));
-        let losses = Losses::new(&scene, &eval).unwrap();
+        let losses = DriveLosses::new(&scene, scene.drive.as_ref().unwrap());
         let housing = scene.housing.clone().unwrap();
-        let state = state_at(&scene.operating, 0);
-        let spec = &scene.friction[0];
-        b.bench(|| gearloss::thermal::balance(|t| losses.total(spec, Formulation::External, state, t), &housing));
+        let point = first_point(&scene);
+        b.bench(|| gearloss::thermal::balance(|t| losses.total(0, Formulation::External, point, t), &housing));
     }
 
     /// The 51-minute, 9-step cycle's transient at two tolerances and its fixed-temperature energy,
@@ -604,17 +605,8 @@ mod one_pair {
         b.bench(|| gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap()).map.len());
     }
 
-    /// The budget beside the mesh at one point of a pair's sweep, its one-stage drive's loss parts
-    /// at the pinion torque (what every point of a sweep pays for its gearbox).
-    #[divan::bench]
-    fn budget_at_a_point(b: divan::Bencher) {
-        let scene = scene();
-        let eval = gearloss::evaluate::prepare(&scene, &gearloss::evaluate::Plan::new(&scene.operating, None, &[]));
-        let state = gearloss::evaluate::state_at(&scene.operating, 0);
-        b.bench(|| eval.loss_budget(&scene, &state).map(|b| b.beside_mesh()));
-    }
-
-    /// The same budget on the pair's own two-shaft statics (`losses::loss_budget`), for scale.
+    /// The budget beside the mesh at one point on the pair's own two-shaft statics
+    /// (`losses::loss_budget`), the reference the one-stage drive's losses are tested against.
     #[divan::bench]
     fn budget_at_a_point_on_the_pairs_own_statics(b: divan::Bencher) {
         let scene = scene();

@@ -22,9 +22,11 @@ use crate::run_kind::OilRun;
 use crate::scene::check::check;
 use crate::shard;
 
-/// Stages 3 and 4 in memory, the record rows dropped: the report of a checked scene (tests, benches).
+/// Stages 3 and 4 of the per-mesh evaluation in memory, the record rows dropped: the report of a
+/// checked scene's pair alone (its oil at the first balance at `oil_temperature = equilibrium`), the
+/// report a drive's stage mesh gets (tests, benches).
 pub fn report_of(scene: &Scene) -> Report {
-    let scene = &*evaluate::first_balance::at_first_balance(scene);
+    let scene = &evaluate::stage_pairs::pair_alone(&evaluate::first_balance::at_first_balance(scene));
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
         .expect("records that go nowhere cannot fail to be written");
@@ -32,14 +34,14 @@ pub fn report_of(scene: &Scene) -> Report {
     report::build_report(scene, &eval, &streamed.tally, &plan)
 }
 
-/// The per-mesh evaluation alone, in memory: the scene's pair (`scene.gears`) evaluated, reported
-/// and rendered as a pair, with every block the scene gives it (its gearbox's budget, housing,
-/// efficiency map) — the report a drive's stage mesh gets, without the drive around it. Its record
-/// files (the default formats) are among the files. `gearloss run` writes a scene as its drive
-/// ([`run_to_files`]); this is the stage beneath it, for a library user or a test of the pair's own
-/// modules.
+/// The per-mesh evaluation alone, in memory: the scene's pair (`scene.gears`) alone evaluated,
+/// reported and rendered as a pair — the report a drive's stage mesh gets, without the drive around
+/// it (its budget, thermal balance, duty cycle and map are the drive's, [`run_to_files`]). Its record
+/// files (the default formats) are among the files. `gearloss run` writes a scene as its drive;
+/// this is the stage beneath it, for a library user or a test of the pair's own modules.
 pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
-    let (_, files) = crate::run_pair::run_scene_to_files(scene)?;
+    let scene = &evaluate::first_balance::at_first_balance(scene);
+    let (_, files) = crate::run_pair::run_scene_to_files(&evaluate::stage_pairs::pair_alone(scene))?;
     Ok(RenderedReport { slug: report::slug(&scene.title), files })
 }
 

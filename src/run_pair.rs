@@ -61,7 +61,6 @@ pub(crate) type ExactRun = (Report, Report, Vec<(String, String)>);
 
 /// [`run_scene_to_files`] with the report as built, its numbers unrounded, first.
 pub(crate) fn run_scene_exact(scene: &Scene) -> Result<ExactRun, RunError> {
-    let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let extra = evaluate::records::ExtraColumns::of(scene);
     let mut sink =
@@ -85,7 +84,6 @@ pub(crate) fn run_in_folder_exact(
     formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<(Report, Report, Vec<String>), RunError> {
-    let scene = &*evaluate::first_balance::at_first_balance(scene);
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let path = |f: &str| crate::folder::in_dir(dir, f);
     let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;

@@ -124,19 +124,6 @@ pub(crate) fn shaft_losses_at(model: &DriveModel, speed: EndValue, driving_torqu
     Seed { fixed, bearings }
 }
 
-/// The catalogue's parts (README, "Loss budget") on every shaft and stage when the stages' driving
-/// members (in drive, from the input) put `driving_torques` (N·m, in stage order) into their meshes
-/// at `speed`, found without walking: [the parts that read no loads, with each stage's no-load
-/// power; the parts that do, with every bearing place's loads and losses on the shafts' statics].
-/// A one-pair drive's budget at a given pinion torque is these (`evaluate::pair_budget`).
-pub(crate) fn parts_at(model: &DriveModel, speed: EndValue, driving_torques: &[f64]) -> [PartLosses; 2] {
-    let omega = shaft_speeds(model.drive, speed);
-    let walk = Walk::new(model, &omega, PowerFlow::Drive);
-    let FixedLosses(fixed) = walk.fixed_losses(model);
-    let (loaded, ..) = walk.loaded_parts(model, driving_torques, (true, false));
-    [fixed, loaded]
-}
-
 /// The order of the power flow: shafts from source to sink, and between each two the stage with
 /// its driving member.
 pub(super) struct Walk<'a> {

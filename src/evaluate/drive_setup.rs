@@ -274,13 +274,6 @@ impl<'a> DriveSetup<'a> {
         Some((at_input, losses))
     }
 
-    /// A one-pair drive's loss parts with its pinion torque and speed given at the input, in this
-    /// setup's oil: [load-independent, load-dependent with every bearing place]
-    /// ([`crate::drive::walk::parts_at`]; what its seeded walk charges).
-    pub(crate) fn one_pair_parts(&self, torque: EndValue, speed: EndValue) -> [crate::losses::parts::PartLosses; 2] {
-        crate::drive::walk::parts_at(&self.model(), speed, &[torque.value])
-    }
-
     /// Whether the drive is a scene of one pair's one-stage drive.
     pub(crate) fn is_one_pair(&self) -> bool {
         self.drive.one_pair

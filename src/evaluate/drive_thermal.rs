@@ -60,6 +60,26 @@ fn loss_at_point(
     base.walked_at((law, formulation), (torque, speed), theta).1.power_lost()
 }
 
+/// A drive's whole loss P_V(θ) as its thermal balance, ratings and duty cycle read it, for a library
+/// user or a bench: the drive walked with its oil moved to θ (a scene of one pair's, its walk's first
+/// pass), its meshes' geometry prepared once.
+pub struct DriveLosses<'a> {
+    setup: DriveSetup<'a>,
+}
+
+impl<'a> DriveLosses<'a> {
+    /// The losses of `scene`'s drive `drive`.
+    pub fn new(scene: &'a Scene, drive: &'a SceneDrive) -> DriveLosses<'a> {
+        DriveLosses { setup: DriveSetup::new(scene, drive) }
+    }
+
+    /// P_V (W) under law `law` (index in the scene) and formulation `f` with `torque` (N·m) and
+    /// `speed` (rad/s) at the ends the operating block names, the oil at `theta` (K); 0 standing.
+    pub fn total(&self, law: usize, f: crate::efficiency::Formulation, torque_speed: (f64, f64), theta: f64) -> f64 {
+        loss_at_point(&self.setup, (law, f), torque_speed, theta)
+    }
+}
+
 /// At `oil_temperature = equilibrium`: `row` (evaluated by `base`, at ambient) found again at its
 /// own balance θ* (the drive's whole loss at θ* equals what the housing gives off there), with the
 /// law's validity read at θ*; a row without a balance stays at ambient, its status saying so.
@@ -124,7 +144,7 @@ pub fn drive_duty(
 }
 
 /// P_V(θ) of the drive at `row`'s point, law and formulation against what `housing` gives off,
-/// from ambient to the balance search's limit (the pair's curve, [`super::thermal::heat_balance_curve`]).
+/// from ambient to the balance search's limit ([`super::thermal::heat_balance_curve`]).
 pub(crate) fn heat_balance_curve(
     scene: &Scene,
     drive: &SceneDrive,

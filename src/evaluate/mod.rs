@@ -25,7 +25,6 @@ pub(crate) mod evaluation;
 pub(crate) mod first_balance;
 pub(crate) mod laws;
 pub(crate) mod map_best;
-pub(crate) mod pair_budget;
 pub(crate) mod pair_records;
 pub(crate) mod plan;
 pub(crate) mod prepare;
@@ -44,7 +43,6 @@ pub(crate) mod stream;
 pub(crate) mod tally;
 pub(crate) mod teeth;
 pub(crate) mod thermal;
-pub(crate) mod thermal_row;
 
 use crate::model::Scene;
 
@@ -58,7 +56,7 @@ pub use laws::{LawCurves, LawEvaluation, ValiditySummary};
 
 pub use crate::thermal::Ratings;
 pub use drive::{evaluate_drive, evaluate_drive_into, DriveEvaluation, DriveTally};
-pub use drive_thermal::drive_duty;
+pub use drive_thermal::{drive_duty, DriveLosses};
 pub use plan::{evenly, ALL_IN_DETAIL, MAP_VALUES, PLOTTED_VALUES};
 pub use plan::{Plan, Shard};
 pub use prepare::prepare;
@@ -73,7 +71,7 @@ pub use stream::evaluate_records;
 pub use tally::implausible_efficiency;
 pub use tally::Tally;
 pub use teeth::{teeth_details, TeethDetails};
-pub use thermal::{ratings, DutyCycleResult, Losses};
+pub use thermal::DutyCycleResult;
 
 /// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
 /// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).

@@ -35,7 +35,7 @@ impl RecordTable for PairRecords {
     }
 
     fn cells(&self, row: &SummaryRow) -> Vec<Cell> {
-        cells(row, self.extra.widths())
+        cells(row, self.extra.width())
     }
 
     fn jsonl_line(&self, row: &SummaryRow, _: &[Cell], out: &mut Vec<u8>) {
@@ -70,7 +70,7 @@ impl RecordTable for PairRecords {
 
 /// records.csv's integer and text columns; every other one is a number.
 const INTS: &[&str] = &["point", "torque_index", "speed_index", "law_index", "validity_samples", "validity_outside"];
-const TEXTS: &[&str] = &["kind", "law", "label", "formulation", "parameters", "thermal_status"];
+const TEXTS: &[&str] = &["kind", "law", "label", "formulation", "parameters"];
 
 fn type_of(name: &str) -> ColumnType {
     if INTS.contains(&name) {

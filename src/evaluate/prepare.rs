@@ -3,7 +3,6 @@
 use super::cases::table_positions;
 use super::contact_curves::ContactCurves;
 use super::evaluation::Evaluation;
-use super::pair_budget::PairParts;
 use super::plan::Plan;
 use super::setup::Setup;
 use crate::efficiency;
@@ -48,10 +47,8 @@ pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
         formulations: analyses.efficiency.clone().unwrap_or_default(),
         film_inputs,
         wants_friction: analyses.friction_along_loa || analyses.efficiency.is_some(),
-        parts: None,
     };
     setup.positions = setup.curve_positions();
-    setup.parts = PairParts::new(scene, &setup.geometry, scene.mesh().budget_oil(&setup.tribology));
     setup.ohlendorf_loss_factor =
         efficiency::ohlendorf_loss_factor(&setup.law_context(OperatingState { pinion_torque: 1.0, pinion_speed: 1.0 }));
     Evaluation { setup, points: Vec::new(), contact_curves: ContactCurves::default(), dynamics: None, teeth: None }

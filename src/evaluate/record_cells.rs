@@ -72,10 +72,9 @@ pub(crate) fn parameters_text(row: &SummaryRow) -> String {
     parameters.join("; ")
 }
 
-/// A row's cells, with the cells of each group of [`super::records::ExtraColumns`] after the
-/// fixed ones (`widths` of them; empty where the row has not that group: friction and dynamics
-/// rows have no budget).
-pub(crate) fn cells(row: &SummaryRow, widths: [usize; 3]) -> Vec<Cell> {
+/// A row's cells, with the cells of [`super::records::ExtraColumns`] after the fixed ones (`width`
+/// of them; empty where the row has none: only a transmission-error row has them).
+pub(crate) fn cells(row: &SummaryRow, width: usize) -> Vec<Cell> {
     let kind = match row.kind {
         RowKind::Efficiency => "efficiency",
         RowKind::Friction => "friction",
@@ -107,22 +106,10 @@ pub(crate) fn cells(row: &SummaryRow, widths: [usize; 3]) -> Vec<Cell> {
         Cell::of_real(row.dynamic_factor),
         Cell::Text(parameters_text(row)),
     ];
-    let mut group = |values: Vec<Cell>, width: usize| {
-        debug_assert!(values.len() <= width, "a row's cells match the scene's columns");
-        let start = cells.len();
-        cells.extend(values);
-        cells.resize(start + width, Cell::Empty);
-    };
-    group(
-        row.budget.as_ref().map_or_else(Vec::new, |b| crate::losses::columns::values(b).map(Cell::of_real).collect()),
-        widths[0],
-    );
-    let thermal = row.thermal.as_ref().map_or_else(Vec::new, |t| {
-        let mut v = vec![Cell::of_real(t.oil_temperature), Cell::Text(t.thermal_status.name().to_string())];
-        v.extend(t.numbers().map(Cell::of_real));
-        v
-    });
-    group(thermal, widths[1]);
-    group(row.ste.as_ref().map_or_else(Vec::new, |s| s.numbers().map(Cell::Real).to_vec()), widths[2]);
+    let ste = row.ste.as_ref().map_or_else(Vec::new, |s| s.numbers().map(Cell::Real).to_vec());
+    debug_assert!(ste.len() <= width, "a row's cells match the scene's columns");
+    let start = cells.len();
+    cells.extend(ste);
+    cells.resize(start + width, Cell::Empty);
     cells
 }

@@ -81,12 +81,6 @@ pub struct SummaryRow {
     pub dynamic_factor: Option<f64>,
     #[serde(skip_serializing_if = "Vec::is_empty", default)]
     pub parameters: Vec<ParameterValue>,
-    /// The loss budget of an efficiency row, when the scene describes its gearbox (records.jsonl only).
-    #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
-    pub budget: Option<crate::losses::BudgetParts>,
-    /// The thermal balance of an efficiency row, when the scene asks for it.
-    #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
-    pub thermal: Option<super::thermal_row::ThermalRow>,
     /// The static transmission error of a `transmission_error` row.
     #[serde(flatten, skip_serializing_if = "Option::is_none", default)]
     pub ste: Option<super::ste_row::SteRow>,
@@ -119,8 +113,6 @@ impl SummaryRow {
             dte_mean: None,
             dynamic_factor: None,
             parameters: Vec::new(),
-            budget: None,
-            thermal: None,
             ste: None,
         }
     }
@@ -182,43 +174,34 @@ pub(crate) const CSV_COLUMNS: [&str; 23] = [
     "parameters",
 ];
 
-/// The columns of `records.csv` after `CSV_COLUMNS`, in groups each present as the scene asks:
-/// the loss budget ([`crate::losses::columns::names`]; none without a gearbox), then the thermal
-/// balance's (`super::thermal_row::ThermalRow::COLUMNS`), then the static transmission error's
-/// (`super::ste_row::SteRow::COLUMNS`). A row fills the groups it has and leaves the others' cells
-/// empty.
+/// The columns of `records.csv` after `CSV_COLUMNS`, present as the scene asks: the static
+/// transmission error's (`super::ste_row::SteRow::COLUMNS`). A row fills them where it has them and
+/// leaves their cells empty otherwise. (A pair's loss budget and thermal balance are its one-stage
+/// drive's: drive_records.csv.)
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ExtraColumns {
-    pub budget: Vec<String>,
-    pub thermal: Vec<String>,
     pub ste: Vec<String>,
 }
 
 impl ExtraColumns {
-    /// The scene's groups.
+    /// The scene's columns.
     pub fn of(scene: &crate::model::Scene) -> ExtraColumns {
-        let budget = scene.gearbox.as_ref().map(crate::losses::columns::names).unwrap_or_default();
-        let thermal = if scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some() {
-            super::thermal_row::ThermalRow::COLUMNS.iter().map(|c| c.to_string()).collect()
-        } else {
-            Vec::new()
-        };
         let ste = if scene.analyses.transmission_error.is_some() {
             super::ste_row::SteRow::COLUMNS.iter().map(|c| c.to_string()).collect()
         } else {
             Vec::new()
         };
-        ExtraColumns { budget, thermal, ste }
+        ExtraColumns { ste }
     }
 
     /// The names in the order the CSV writes them.
     pub fn names(&self) -> impl Iterator<Item = &String> {
-        self.budget.iter().chain(&self.thermal).chain(&self.ste)
+        self.ste.iter()
     }
 
-    /// How many cells each group holds.
-    pub fn widths(&self) -> [usize; 3] {
-        [self.budget.len(), self.thermal.len(), self.ste.len()]
+    /// How many cells the group holds.
+    pub fn width(&self) -> usize {
+        self.ste.len()
     }
 }
 

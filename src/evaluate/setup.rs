@@ -4,7 +4,7 @@ use super::cases::{Case, CURVE_SAMPLES};
 use crate::friction::LawContext;
 use crate::geometry::contact::Sharing;
 use crate::geometry::{ContactPoint, OperatingState, PairGeometry};
-use crate::model::{Formulation, LoadSharing, Scene};
+use crate::model::{Formulation, LoadSharing};
 use crate::tribology::{FilmInputs, Tribology};
 
 /// What every operating point of a scene reads: geometry, materials, lubricant, the fixed sample
@@ -31,8 +31,6 @@ pub struct Setup {
     pub ohlendorf_loss_factor: f64,
     /// Formulations evaluated (empty when the scene asks for no efficiency).
     pub formulations: Vec<Formulation>,
-    /// What the budget beside the mesh reads, when the scene describes its gearbox.
-    pub(crate) parts: Option<super::pair_budget::PairParts>,
     /// Film-thickness inputs when the film is computed (α known and asked for or needed).
     pub film_inputs: Option<(FilmInputs, Option<(f64, f64)>)>,
 }
@@ -50,14 +48,6 @@ impl Setup {
     /// The friction-law context at an operating point.
     pub fn law_context(&self, state: OperatingState) -> LawContext<'_> {
         LawContext { geometry: &self.geometry, state, tribology: self.tribology, sharing: self.sharing() }
-    }
-
-    /// The loss budget beside the mesh at an operating point, when the scene describes its gearbox
-    /// (lowering has checked that it has a lubricant then).
-    /// It is the catalogue's parts on the scene's one-stage drive at the given pinion torque and
-    /// speed (`evaluate::pair_budget::PairParts`).
-    pub fn loss_budget(&self, scene: &Scene, state: &OperatingState) -> Option<crate::losses::LossBudget> {
-        Some(self.parts.as_ref()?.at(scene.drive.as_ref()?, state))
     }
 
     /// The contact state at `u` for an operating point, as the friction laws and the efficiency read

@@ -153,6 +153,14 @@ pub(crate) fn one_pair_sweep(scene: &Scene, drive: &SceneDrive) -> Option<StageP
     })
 }
 
+/// The scene's pair alone, as a drive's stage mesh is analysed: what its one-stage drive evaluates
+/// itself (the gearbox's budget, the housing's balance, the duty cycle, the drive) left out, the oil
+/// where the scene has it (`gearloss::report_of`, `gearloss::pair_files`).
+pub(crate) fn pair_alone(scene: &Scene) -> Scene {
+    let operating = Operating { equilibrium: None, ..scene.operating.clone() };
+    Scene { gearbox: None, housing: None, duty_cycle: None, drive: None, operating, ..scene.clone() }
+}
+
 /// The scene of `pair` alone at the pinion's torque (N·m) and speed (rad/s), shown in the units the
 /// drive's operating block writes its speeds in; None: over the scene's own operating block.
 fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, f64)>) -> Scene {

@@ -13,7 +13,6 @@ use super::records::{RecordSink, RowKind, SummaryRow};
 use super::setup::{contact_table, Setup};
 use super::tally::{furthest_beyond_half_width, implausible_efficiency};
 use super::tally::{Implausible, ImplausibleAt, LawNote, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
-use super::thermal::{thermal_point, Losses, RatingTable};
 use crate::efficiency::EfficiencyResult;
 use crate::model::Scene;
 
@@ -45,16 +44,6 @@ pub fn evaluate_records(
     let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
     let dynamics =
         DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
-    let ratings = RatingTable::new(scene);
-    // The losses at an oil temperature (the scene's one-stage drive), prepared once for the sweep
-    // and only where the scene asks for its balance.
-    let wants_balance = scene.analyses.thermal_balance.is_some() || scene.operating.equilibrium.is_some();
-    let losses = scene.housing.as_ref().filter(|_| wants_balance).and_then(|_| Losses::new(scene, eval));
-    let thermal = scene.housing.as_ref().zip(losses.as_ref()).map(|(housing, losses)| SweepThermal {
-        housing,
-        losses,
-        ratings: &ratings,
-    });
     let mut out = Streamed::default();
     // The transmission error's rows come first, from the run (or shard) that holds point 1.
     if plan.range.start == 0 && scene.analyses.transmission_error.is_some() {
@@ -68,7 +57,7 @@ pub fn evaluate_records(
         let end = (start + BLOCK).min(plan.range.end);
         let block: Vec<Summary> = (start..end)
             .into_par_iter()
-            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), thermal.as_ref(), k))
+            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), k))
             .collect();
         for (k, (rows, t, d)) in (start..end).zip(block) {
             sink.write_rows(&rows)?;
@@ -88,14 +77,6 @@ pub fn evaluate_records(
 /// A point's rows, tally and dynamics (when the scene asks for them).
 type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
 
-/// What each point's thermal balance reads, when the scene asks for it: the housing, the losses at
-/// an oil temperature and the speeds' ratings.
-struct SweepThermal<'a> {
-    housing: &'a crate::thermal::Housing,
-    losses: &'a Losses<'a>,
-    ratings: &'a RatingTable,
-}
-
 /// The rows and the tally of point `k`.
 fn point_summary(
     scene: &Scene,
@@ -103,7 +84,6 @@ fn point_summary(
     plan: &Plan,
     labels: &[String],
     dynamics: Option<&DynamicsSetup>,
-    thermal: Option<&SweepThermal>,
     k: usize,
 ) -> Summary {
     let op = &scene.operating;
@@ -111,7 +91,6 @@ fn point_summary(
     let (ti, si) = (k / plan.speeds, k % plan.speeds);
     let table = contact_table(eval, &state);
     let blank = SummaryRow::blank(k + 1, (ti, si), state);
-    let budget = eval.loss_budget(scene, &state);
     let mut rows = Vec::new();
     let mut laws = Vec::new();
     let mut implausible: Vec<Implausible> = Vec::new();
@@ -139,31 +118,7 @@ fn point_summary(
                 rows.push(law_row.clone());
             }
             for e in &law.efficiency {
-                let mut row = efficiency_row(&law_row, e);
-                row.budget = budget.as_ref().map(|b| b.with_mesh(law.charged_mesh(e, eval, input).0, input));
-                let mut at_balance = None;
-                if let Some(SweepThermal { housing, losses, ratings }) = thermal {
-                    let p_v = super::thermal::loss_at_torque(losses, spec, e.formulation, state.pinion_speed);
-                    let rating = ratings.get((i, e.formulation, si), housing, p_v);
-                    let point = thermal_point(losses, housing, spec, e.formulation, state, rating);
-                    row.thermal = Some(point.row());
-                    if let (Some(t), Some(_)) = (point.balance.temperature, scene.operating.equilibrium) {
-                        // The record at the balance: the law read in the oil at θ*.
-                        let setup = losses.setup_at(t, &[e.formulation]);
-                        let law = evaluate_law(&setup, spec, state, &table, false, false);
-                        if let Some(e) = law.efficiency.first() {
-                            let thermal = row.thermal.take();
-                            let law_row = SummaryRow { mean_abs_mu: Some(law.mean_abs_mu.value), ..law_row.clone() };
-                            row = efficiency_row(&law_row, e);
-                            let (mesh, _) = law.charged_mesh(e, &setup, input);
-                            row.budget = point.losses.budget.as_ref().map(|b| b.with_mesh(mesh, input));
-                            row.thermal = thermal;
-                            at_balance = Some(e.clone());
-                        }
-                    }
-                }
-                let e = at_balance.as_ref().unwrap_or(e);
-                rows.push(row);
+                rows.push(efficiency_row(&law_row, e));
                 implausible.extend(implausible_efficiency(law.id.name(), e, input));
             }
             laws.push(law_tally(k, &law));

@@ -111,11 +111,6 @@ pub struct SweepExtremes {
     pub min_efficiency: Option<AtPoint>,
     pub max_efficiency: Option<AtPoint>,
     pub max_power_loss: Option<AtPoint>,
-    /// The total efficiency's (with a gearbox: mesh and the parts beside it).
-    #[serde(default)]
-    pub min_total_efficiency: Option<AtPoint>,
-    #[serde(default)]
-    pub max_total_efficiency: Option<AtPoint>,
 }
 
 fn lower(a: &mut Option<AtPoint>, b: Option<AtPoint>, below: bool) {
@@ -156,10 +151,6 @@ pub struct Tally {
     pub implausible: Vec<ImplausibleAt>,
     pub extremes: Vec<SweepExtremes>,
     pub dynamics: Vec<DynamicsTally>,
-    /// Each bearing place of the budget: its worst static equivalent load P_0 over the points and
-    /// the first point (0-based) it is met at.
-    #[serde(default, skip_serializing_if = "super::static_loads::StaticLoads::is_empty")]
-    pub(crate) static_loads: super::static_loads::StaticLoads,
 }
 
 impl Tally {
@@ -187,13 +178,10 @@ impl Tally {
                     lower(&mut x.min_efficiency, e.min_efficiency, true);
                     lower(&mut x.max_efficiency, e.max_efficiency, false);
                     lower(&mut x.max_power_loss, e.max_power_loss, false);
-                    lower(&mut x.min_total_efficiency, e.min_total_efficiency, true);
-                    lower(&mut x.max_total_efficiency, e.max_total_efficiency, false);
                 }
                 None => self.extremes.push(e),
             }
         }
-        self.static_loads.absorb(o.static_loads);
         for d in o.dynamics {
             match self.dynamics.iter_mut().find(|x| x.formulation == d.formulation) {
                 Some(x) => {
@@ -223,9 +211,6 @@ impl Tally {
                     t.first_non_finite = Some((point, column.to_string()));
                 }
             }
-            if let Some(b) = row.budget.as_ref().filter(|_| row.kind == RowKind::Efficiency) {
-                t.static_loads.add(point, b.bearings.iter().map(|l| Some((l.radial_load, l.axial_load))));
-            }
             match row.kind {
                 RowKind::Efficiency => t.extremes.push(SweepExtremes {
                     label: row.label.clone(),
@@ -233,8 +218,6 @@ impl Tally {
                     min_efficiency: at(row.mean_efficiency),
                     max_efficiency: at(row.mean_efficiency),
                     max_power_loss: at(row.power_loss),
-                    min_total_efficiency: at(row.budget.as_ref().map(|b| b.total_efficiency)),
-                    max_total_efficiency: at(row.budget.as_ref().map(|b| b.total_efficiency)),
                 }),
                 RowKind::Dynamics => t.dynamics.push(DynamicsTally {
                     formulation: row.formulation.clone(),

@@ -1,13 +1,12 @@
-//! The headline: the answer first, in report.md and on the terminal after `run`. Per analysis:
-//! efficiency and the loss budget (input power, load-dependent and no-load losses, total and η per
-//! operating point, or the sweep's corners and ranges when it has many points), the efficiency
-//! map's ranges, and the dynamics (per formulation: stability verdict at the operating points,
+//! The headline of a pair's report: the answer first, in its report.md and on the terminal. Per
+//! analysis: the mesh efficiency (input power, mesh loss and η̄ per operating point, or the sweep's
+//! corners and ranges when it has many points; the loss budget, the thermal balance and the map
+//! are its one-stage drive's), and the dynamics (per formulation: stability verdict at the operating points,
 //! unstable speed ranges of the map, peak dynamic factor and where, DTE peak-to-peak).
 
 use super::markup::{md, put};
 
 use super::table::{fixed, header, law_words, row, sig};
-use crate::losses::parts::COLUMNS;
 use crate::report::dynamics::{DynamicsReport, FormulationReport};
 use crate::report::friction::EfficiencyRecord;
 use crate::report::Report;
@@ -25,7 +24,7 @@ pub(crate) fn point_at(r: &Report, torque: &crate::report::number::Q, speed: &cr
     crate::report::number::operating_point_words(&r.torque_unit, &r.speed_unit, torque, speed)
 }
 
-/// Efficiency and budget: a row per operating point and law (the first formulation), or when there
+/// Efficiency: a row per operating point and law (the first formulation), or when there
 /// are more than [`HEADLINE_ROWS`] the sweep's four corners per law and each law's range.
 pub(crate) fn efficiency(out: &mut String, r: &Report) {
     let Some(first) = r.efficiency.first().map(|e| e.formulation) else { return };
@@ -34,11 +33,8 @@ pub(crate) fn efficiency(out: &mut String, r: &Report) {
     let shown: Vec<&EfficiencyRecord> = if recs.len() <= HEADLINE_ROWS { recs.clone() } else { corners(&recs) };
     let u = r.units();
     let (kw, w) = (u.kilowatt(), u.power());
-    let mut cols =
+    let cols =
         vec!["operating point".to_string(), kw.heading("P_in"), "law".into(), "η̄ mesh %".into(), w.heading("P mesh")];
-    if r.loss_budget {
-        cols.extend([w.heading("P no-load"), w.heading("P load-dependent"), w.heading("P total"), "η total %".into()]);
-    }
     md!(
         out,
         "Efficiency, {} formulation{}{}:\n",
@@ -48,43 +44,16 @@ pub(crate) fn efficiency(out: &mut String, r: &Report) {
     );
     header(out, &cols);
     for e in &shown {
-        // The mesh loss the total charges (ISO/TR 14179-2's own for iso_14179_2 on a helical pair).
-        let mesh = e.budget_mesh_loss();
-        let eta = e.budget_mesh_efficiency();
-        let mut cells = vec![
+        let cells = [
             point_label(r, e),
             kw.cell(e.pinion_torque.si() * e.pinion_speed.si(), 3),
             law_words(&e.label),
-            fixed(100.0 * eta, 3),
-            w.q(&mesh, 2),
+            fixed(100.0 * e.mean_efficiency.0, 3),
+            w.q(&e.power_loss, 2),
         ];
-        if let Some(b) = &e.budget {
-            let sum = |load: bool| -> f64 {
-                COLUMNS
-                    .iter()
-                    .filter(|c| c.load_dependent == load)
-                    .filter_map(|c| b.part(c.column))
-                    .map(|q| q.si())
-                    .sum()
-            };
-            cells.extend([
-                w.cell(sum(false), 2),
-                w.cell(mesh.si() + sum(true), 2),
-                w.q(&b.total_loss, 2),
-                fixed(100.0 * b.total_efficiency.0, 3),
-            ]);
-        }
         row(out, &cells);
     }
     md!(out);
-    if let Some(e) = shown.iter().find(|e| e.budget_charges_iso_mesh_loss) {
-        let ratio = e.ohlendorf.map_or(1.0, |o| o.line_integral_ratio.0);
-        md!(
-            out,
-            "ISO/TR 14179-2 on a helical pair: η̄ mesh, P mesh and the total are the standard's own P_VZP = P_in μ_mZ H_V (Ohlendorf's H_V); the contact-line integral with a constant stiffness density reads {} × that (both under Loss budget, the line integral's η̄ under Efficiency).\n",
-            fixed(ratio, 4)
-        );
-    }
     if shown.len() < recs.len() {
         ranges(out, r, &recs);
     }
@@ -117,21 +86,17 @@ fn corners<'a>(recs: &[&'a EfficiencyRecord]) -> Vec<&'a EfficiencyRecord> {
     out
 }
 
-/// Per law the lowest and highest total (or mesh) efficiency with their points: over every
-/// operating point of the sweep (its extremes, located as the points were computed), else over the
-/// records the report keeps.
+/// Per law the lowest and highest mesh efficiency with their points: over every operating point of
+/// the sweep (its extremes, located as the points were computed), else over the records the report
+/// keeps.
 fn ranges(out: &mut String, r: &Report, recs: &[&EfficiencyRecord]) {
-    let eta = |e: &EfficiencyRecord| e.budget.as_ref().map_or(e.mean_efficiency.0, |b| b.total_efficiency.0);
-    let what = if r.loss_budget { "η total" } else { "η̄ mesh" };
+    let eta = |e: &EfficiencyRecord| e.mean_efficiency.0;
+    let what = "η̄ mesh";
     let formulation = recs.first().map(|e| e.formulation.name()).unwrap_or_default();
     for label in laws_in_order(recs) {
         let swept = r.sweep.as_ref().and_then(|s| {
             let x = s.efficiency.iter().find(|x| x.label == label && x.formulation == formulation)?;
-            let (lo, hi) = if r.loss_budget {
-                (x.min_total_efficiency.as_ref()?, x.max_total_efficiency.as_ref()?)
-            } else {
-                (x.min_efficiency.as_ref()?, x.max_efficiency.as_ref()?)
-            };
+            let (lo, hi) = (x.min_efficiency.as_ref()?, x.max_efficiency.as_ref()?);
             let at = |v: &crate::report::sweep::ValueAt<crate::report::number::Num>| {
                 Some((v.value.0, point_at(r, v.pinion_torque.as_ref()?, v.pinion_speed.as_ref()?)))
             };
@@ -245,46 +210,4 @@ fn map_ranges(
         );
     }
     md!(out);
-}
-
-/// The thermal balance: per law and formulation, the range of θ* over the operating points and
-/// those that settle above the oil's limit or find no balance.
-pub(crate) fn thermal(out: &mut String, r: &Report) {
-    let mut keys: Vec<(&str, &str)> = Vec::new();
-    for t in &r.heat.thermal {
-        let k = (t.label.as_str(), t.formulation.name());
-        if !keys.contains(&k) {
-            keys.push(k);
-        }
-    }
-    for (label, formulation) in keys {
-        let of: Vec<_> =
-            r.heat.thermal.iter().filter(|t| t.label == label && t.formulation.name() == formulation).collect();
-        let deg = r.units().temperature();
-        let theta: Vec<f64> = of.iter().filter_map(|t| t.oil_temperature.map(|q| deg.value(q.si()))).collect();
-        let (lo, hi) = (theta.iter().copied().reduce(f64::min), theta.iter().copied().reduce(f64::max));
-        let range = match (lo, hi) {
-            (Some(lo), Some(hi)) => format!("θ* {}–{} {}", fixed(lo, 1), fixed(hi, 1), deg.unit),
-            _ => "no balance".to_string(),
-        };
-        let bad: Vec<String> = of
-            .iter()
-            .filter(|t| t.status != crate::thermal::BalanceStatus::Ok)
-            .map(|t| {
-                let words = crate::report::units::balance_words(t.status, r.units());
-                format!("{}: {words}", point_at(r, &t.pinion_torque, &t.pinion_speed))
-            })
-            .collect();
-        let verdict =
-            if bad.is_empty() { "every point settles below the oil's limit".to_string() } else { bad.join("; ") };
-        md!(
-            out,
-            "- Thermal balance, {} ({formulation}): {range} over {} operating point(s); {verdict}.",
-            law_words(label),
-            of.len()
-        );
-    }
-    if !r.heat.thermal.is_empty() {
-        md!(out);
-    }
 }

@@ -35,9 +35,6 @@ pub fn render_markdown(r: &Report) -> String {
     super::markdown_geometry::geometry_section(&mut out, r);
     contact_section(&mut out, r);
     super::markdown_friction::sweep(&mut out, r);
-    out.push_str(&super::markdown_losses::budget_section(r));
-    out.push_str(&super::markdown_bearings::bearings_section(r));
-    out.push_str(&super::markdown_thermal::thermal_section(r));
     out.push_str(&super::markdown_teeth::teeth_section(r));
     super::markdown_dynamics::dynamics(&mut out, r);
     super::markdown_sweep::sweep_summary(&mut out, r);

@@ -3,11 +3,8 @@
 
 use super::markup::md;
 
-use super::table::{fixed, header, law_words, row};
-use crate::losses::parts::COLUMNS;
-use crate::report::{PlotKind, Report, Severity};
-
-use super::headline::point_label;
+use super::table::{fixed, header, row};
+use crate::report::{Report, Severity};
 
 /// The headline block: the scene in one line, per law and operating point η̄ and the loss (and the
 /// budget's total where given), the map's range, and the count of warnings and notes.
@@ -65,10 +62,9 @@ pub(crate) fn headline_body(r: &Report) -> String {
         r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
     );
     super::headline::efficiency(&mut out, r);
-    if !r.loss_budget && !r.efficiency.is_empty() {
+    if !r.efficiency.is_empty() {
         md!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
     }
-    super::headline::thermal(&mut out, r);
     if let Some(d) = &r.dynamics {
         super::headline::dynamics(&mut out, d, r.units());
     }
@@ -119,74 +115,4 @@ pub(crate) fn lubricant_table(
         row(out, &["viscosity index (ASTM D2270)".into(), fixed(vi.0, 1)]);
     }
     md!(out, "\nSource: {}.", l.source);
-}
-
-/// The loss budget of every efficiency record, in W and as shares of the total.
-pub(crate) fn budget_section(r: &Report) -> String {
-    let mut out = String::new();
-    if !r.loss_budget || r.efficiency.is_empty() {
-        return out;
-    }
-    md!(out, "\n## Loss budget\n");
-    md!(
-        out,
-        "ISO/TR 14179-2 method: P_V = P_VZP (mesh, by the law) + P_VZ0 (gears without load: churning for dip lubrication; jet impulse and windage for injection) + P_VL (bearings: Palmgren's M_0 and M_1 in the no-load and load columns, or for a bearing given with SKF constants the SKF model's rolling M_rr and sliding M_sl) + P_VD (seals). Shares in % of the total; η total = 1 − P_V/P_in.\n"
-    );
-    if !r.budget_readings.is_empty() {
-        md!(out, "Readings behind the parts:\n");
-        for x in &r.budget_readings {
-            md!(out, "- {x}");
-        }
-        md!(out);
-    }
-    let helical = r.efficiency.iter().any(|e| e.ohlendorf.is_some());
-    if helical {
-        md!(
-            out,
-            "Helical pair: the line-integral column is the contact-line integral of |μ| F v_s with a constant stiffness per unit length of contact line; beside it, ISO/TR 14179-2's own P_VZP = P_in μ̄ H_V with Ohlendorf's loss factor H_V and the record's mean |μ|, and the ratio of the two. The total charges the standard's own for the law `iso_14179_2`, whose μ_mZ was fitted with H_V (its slice model: each transverse slice shares its load equally between its own pairs), and the line integral for every other law (marked * in the mesh column).\n"
-        );
-    }
-    let power = r.units().power();
-    // The parts' headings name W; shown in another unit, the heading says so.
-    let in_unit = |h: &str| h.strip_suffix(" W").map_or(h.to_string(), |n| power.heading(n));
-    let mut cols = vec!["operating point".to_string(), "law".into(), "formulation".into(), power.heading("mesh")];
-    if helical {
-        cols.extend([power.heading("line integral"), power.heading("ISO P_in μ̄ H_V"), "ratio".into()]);
-    }
-    cols.extend(COLUMNS.iter().map(|c| in_unit(c.heading)));
-    cols.extend([power.heading("total"), "mesh %".into(), "η total %".into()]);
-    header(&mut out, &cols);
-    let w = |q: Option<crate::report::number::Q>| q.map_or("—".to_string(), |q| power.q(&q, 2));
-    let (shown, all) = super::budget_points::shown_budgets(r);
-    for e in shown {
-        let Some(b) = &e.budget else { continue };
-        let mesh = e.budget_mesh_loss();
-        let mark = if helical && !e.budget_charges_iso_mesh_loss { "*" } else { "" };
-        let mut cells =
-            vec![point_label(r, e), law_words(&e.label), e.formulation.name().to_string(), power.q(&mesh, 2) + mark];
-        if helical {
-            cells.push(power.q(&e.power_loss, 2));
-            cells.push(w(e.ohlendorf.map(|o| o.power_loss)));
-            cells.push(e.ohlendorf.map_or("—".into(), |o| fixed(o.line_integral_ratio.0, 4)));
-        }
-        cells.extend(COLUMNS.iter().map(|c| w(b.part(c.column))));
-        cells.extend([
-            power.q(&b.total_loss, 2),
-            fixed(100.0 * mesh.si() / b.total_loss.si(), 1),
-            fixed(100.0 * b.total_efficiency.0, 3),
-        ]);
-        row(&mut out, &cells);
-    }
-    if !all {
-        md!(out, "\nAt the detail operating points only (the sweep has more than {} points); records.csv has the budget of every point.", super::budget_points::ALL_POINTS_UP_TO);
-    }
-    plots_of(&mut out, r, PlotKind::LossBudget);
-    out
-}
-
-/// Links to the report's plots of `kind`.
-pub(crate) fn plots_of(out: &mut String, r: &Report, kind: PlotKind) {
-    for p in r.plots.iter().filter(|p| p.kind == kind) {
-        md!(out, "\n![{}]({})", p.title, p.file);
-    }
 }

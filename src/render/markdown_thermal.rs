@@ -1,42 +1,15 @@
-//! report.md's thermal section: the housing, the balance of each kept record (θ*, status in words,
-//! what the housing gives off, the ratings) and the duty cycle's table.
+//! The thermal section's tables of a drive's report.md: the housing, the balance of each kept row
+//! (θ*, status in words, what the housing gives off, the ratings) and the duty cycle's table.
 
 use super::markup::md;
-
-use super::markdown_losses::plots_of;
-use crate::report::PlotKind;
 
 use super::table::{fixed, header, row};
 use crate::report::number::Q;
 use crate::report::thermal::{HousingReport, ThermalRecord};
 use crate::report::units::Units;
-use crate::report::Report;
 
 fn opt(q: Option<&Q>, f: impl Fn(&Q) -> String) -> String {
     q.map_or_else(|| "—".to_string(), f)
-}
-
-/// The section, empty without a housing.
-pub(crate) fn thermal_section(r: &Report) -> String {
-    let mut out = String::new();
-    let Some(h) = &r.heat.housing else { return out };
-    md!(out, "\n## Thermal balance\n");
-    md!(
-        out,
-        "One thermal node: the housing wall at the oil temperature θ gives off P_Q(θ) = h_c A Δθ + ε σ A (T⁴ − T_a⁴) + G_f Δθ + G_c max(0, θ − θ_set), h_c = √(h_n² + h_f²) with h_n = 1.31 |Δθ|^(1/3) and h_f = 3.26 v^0.89 W/(m² K) (the DOE-2 exterior convection model). The balance θ* is the lowest oil temperature above ambient where the losses P_V(θ) (mesh and budget, the oil read at θ) equal P_Q(θ). The thermal rating is the pinion torque at this speed whose balance is the oil's limit; the second at 95 °C, ISO/TR 14179-1's rating temperature.\n"
-    );
-    let u = r.units();
-    housing_table(&mut out, h, u);
-    let point = |t: &ThermalRecord| super::headline::point_at(r, &t.pinion_torque, &t.pinion_speed);
-    balance_table(&mut out, &r.heat.thermal, u, &point);
-    plots_of(&mut out, r, PlotKind::HeatBalance);
-    if let Some(d) = &r.heat.duty_cycle {
-        duty_cycle_lines(&mut out, "### Duty cycle", d, u);
-        plots_of(&mut out, r, PlotKind::DutyCycleTemperature);
-        plots_of(&mut out, r, PlotKind::DutyCycleEnergy);
-    }
-    out.push('\n');
-    out
 }
 
 /// The housing's inputs (defaults filled in), in units `u`: a pair's and a drive's.

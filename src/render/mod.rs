@@ -1,11 +1,9 @@
 //! Stage 5, render: report → files (report.md, report.json, SVG plots). Renderers only read the report.
 
-pub(crate) mod budget_points;
 pub(crate) mod drive;
 pub(crate) mod headline;
 pub(crate) mod json_text;
 pub mod markdown;
-pub(crate) mod markdown_bearings;
 pub(crate) mod markdown_dynamics;
 pub(crate) mod markdown_friction;
 pub(crate) mod markdown_geometry;
@@ -80,16 +78,16 @@ pub fn render_report_with_json(
             PlotKind::SweepTorque => svg::sweep(report, false)?,
             PlotKind::SweepMu => svg::sweep_mu(report)?,
             PlotKind::MapEfficiency => svg::efficiency_map(report)?,
-            PlotKind::LossBudget => svg::loss_budget(report)?,
             PlotKind::Film => svg::film(report)?,
             PlotKind::CompositeMuVsSpeed => svg::composite_mu_vs_speed(report)?,
             PlotKind::StabilityMap => svg::stability_map(report)?,
-            PlotKind::HeatBalance => svg::heat_balance(report)?,
-            PlotKind::DutyCycleTemperature => svg::duty_cycle_temperature(report)?,
-            PlotKind::DutyCycleEnergy => svg::duty_cycle_energy(report)?,
             PlotKind::MeshStiffness => svg::mesh_stiffness(report)?,
             PlotKind::TransmissionError => svg::transmission_error(report)?,
             PlotKind::LoadShare => svg::load_share(report)?,
+            // A drive's plots (its thermal balance and duty cycle), which its own renderer draws.
+            PlotKind::HeatBalance | PlotKind::DutyCycleTemperature | PlotKind::DutyCycleEnergy => {
+                return Err(format!("{} is a drive's plot, not a pair's", plot.file))
+            }
             PlotKind::WorkPrecision => match timings {
                 Some(t) => svg::work_precision(report, t)?,
                 None => continue,

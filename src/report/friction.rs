@@ -100,35 +100,6 @@ pub struct EfficiencyRecord {
     /// and `line_integral_ratio` in report.json).
     #[serde(default, flatten)]
     pub ohlendorf: Option<OhlendorfLoss>,
-    /// The loss budget at this point with this record's mesh loss, when the scene describes its gearbox.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub budget: Option<super::losses::BudgetRecord>,
-    /// True when the budget charges ISO/TR 14179-2's own P_in μ̄ H_V (`ohlendorf_power_loss`) as the
-    /// mesh loss instead of `power_loss`, the line integral: the law `iso_14179_2` on a helical pair
-    /// with a gearbox ([`crate::efficiency::charges_iso_mesh_loss`]).
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub budget_charges_iso_mesh_loss: bool,
-}
-
-impl EfficiencyRecord {
-    /// The mesh loss the budget's total charges: ISO/TR 14179-2's own where
-    /// [`EfficiencyRecord::budget_charges_iso_mesh_loss`], else the law's line integral.
-    pub fn budget_mesh_loss(&self) -> Q {
-        match self.ohlendorf {
-            Some(o) if self.budget_charges_iso_mesh_loss => o.power_loss,
-            _ => self.power_loss,
-        }
-    }
-
-    /// The mesh efficiency the budget's total rests on: 1 − [`Self::budget_mesh_loss`]/P_in where it
-    /// charges ISO/TR 14179-2's own, else the law's η̄.
-    pub fn budget_mesh_efficiency(&self) -> f64 {
-        if self.budget_charges_iso_mesh_loss {
-            1.0 - self.budget_mesh_loss().si() / (self.pinion_torque.si() * self.pinion_speed.si())
-        } else {
-            self.mean_efficiency.0
-        }
-    }
 }
 
 /// ISO/TR 14179-2's mesh loss beside the contact-line integral.
@@ -238,9 +209,6 @@ pub fn efficiency_records(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Ve
                 power_loss: Q::new(r.power_loss?, "W"),
                 parameters: Parameters(r.parameters.clone()),
                 ohlendorf: ohlendorf_loss(helical, r, eval.ohlendorf_loss_factor),
-                budget: r.budget.as_ref().map(|b| super::losses::budget_record(b, scene.gearbox.as_ref())),
-                budget_charges_iso_mesh_loss: r.budget.is_some()
-                    && crate::efficiency::charges_iso_mesh_loss(spec.law, &eval.geometry),
             })
         })
         .collect()

@@ -70,7 +70,6 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
     findings.extend(friction::law_findings(scene, eval, tally));
     findings.extend(plausibility::plausibility_findings(tally, scene::units(scene)));
     findings.extend(sweep::sweep_findings(tally, plan));
-    findings.extend(churning_checks::churning_findings(scene, &[]));
     let mut report = Report {
         title: scene.title.clone(),
         slug: slug(&scene.title),
@@ -82,8 +81,6 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
         sweep: sweep::sweep_report(tally, plan, &scene.operating),
         dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
         lubricant: scene.lubricant.as_ref().map(|l| losses::lubricant_report(l, &eval.tribology)),
-        loss_budget: scene.gearbox.is_some(),
-        budget_readings: scene.gearbox.as_ref().map(losses::budget_readings).unwrap_or_default(),
         findings,
         plots: vec![PlotRef::new(
             PlotKind::ContactState,
@@ -99,26 +96,11 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
             let (t, s) = plan.map_grid();
             (t.to_vec(), s.to_vec())
         }),
-        heat: thermal_sections::ThermalSections {
-            housing: scene.housing.as_ref().map(thermal::housing_report),
-            thermal: thermal::thermal_records(scene, tally),
-            heat_balance: None,
-            duty_cycle: None,
-        },
         stiffness: None,
         transmission_error: Vec::new(),
     };
-    if let Some(g) = &scene.gearbox {
-        report.findings.extend(pair_bearing_findings(scene, g, &tally.static_loads));
-    }
     if let Some(t) = &eval.teeth {
         with_teeth(&mut report, scene, eval, t);
-    }
-    if scene.housing.is_some() {
-        // Each point's balance (the sweep's records); the heat-balance curve and the duty cycle
-        // are the scene's one-stage drive's (its report, `report::drive`).
-        report.findings.extend(thermal::thermal_findings(scene, &report.heat.thermal, None, None));
-        report.findings.extend(housing_checks::housing_findings(scene, scene::units(scene)));
     }
     if report.geometry.helical.is_some() {
         report.plots.push(PlotRef::new(
@@ -209,27 +191,6 @@ fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Pla
     if report.operating_points.iter().any(|o| o.film.is_some()) {
         report.plots.push(PlotRef::new(PlotKind::Film, "Film thickness and Λ_HCS along the line of action"));
     }
-    if report.loss_budget && !report.efficiency.is_empty() {
-        report.plots.push(PlotRef::new(
-            PlotKind::LossBudget,
-            "Loss budget at each operating point: mesh, gears without load, bearings, seals",
-        ));
-    }
 }
 
 pub use non_finite::non_finite_paths;
-
-/// The pair's bearings beyond their static rating at any point of the sweep (one warning a bearing,
-/// at its worst point: the tally's, every point's loads).
-fn pair_bearing_findings(
-    scene: &Scene,
-    g: &crate::losses::Gearbox,
-    static_loads: &crate::evaluate::static_loads::StaticLoads,
-) -> Vec<finding::Finding> {
-    let places = losses::bearing_places(g)
-        .enumerate()
-        .map(|(k, (shaft, b))| (format!("{shaft} shaft, bearing {} ({})", k + 1, b.kind.name()), b.static_load_rating));
-    bearing_checks::overloaded(places, static_loads, &|point| {
-        crate::evaluate::cases::case_at(&scene.operating, point).label
-    })
-}

@@ -32,13 +32,6 @@ pub struct Report {
     /// The lubricant at the oil temperature, when the scene has one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lubricant: Option<losses::LubricantReport>,
-    /// Whether the efficiency records carry a loss budget (the scene describes its gearbox).
-    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    pub loss_budget: bool,
-    /// The readings the budget's models rest on, in words (which radius, which direction, which
-    /// constants), for the parts the scene describes.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub budget_readings: Vec<String>,
     pub findings: Vec<Finding>,
     pub plots: Vec<PlotRef>,
     /// Sampled curves for the plots (they repeat the tables at finer spacing).
@@ -61,10 +54,6 @@ pub struct Report {
     /// label, mean |μ|), in sweep order, one per point and law.
     #[serde(with = "super::floats")]
     pub composite_mu: Vec<(usize, f64, f64, String, f64)>,
-    /// The housing, the thermal balances, the heat-balance curve and the duty cycle (report.json's
-    /// `housing`, `thermal`, `heat_balance`, `duty_cycle`), as a drive's report holds them.
-    #[serde(flatten)]
-    pub heat: super::thermal_sections::ThermalSections,
     /// The mesh stiffness from the teeth, when the scene asks for it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stiffness: Option<super::teeth::TeethStiffnessReport>,
@@ -109,7 +98,6 @@ pub enum PlotKind {
     MapEfficiency,
     CompositeMuVsSpeed,
     Film,
-    LossBudget,
     HeatBalance,
     DutyCycleTemperature,
     DutyCycleEnergy,
@@ -132,7 +120,6 @@ impl PlotKind {
             PlotKind::MapEfficiency => "map_efficiency.svg",
             PlotKind::CompositeMuVsSpeed => "composite_mu_vs_speed.svg",
             PlotKind::Film => "film.svg",
-            PlotKind::LossBudget => "loss_budget.svg",
             PlotKind::HeatBalance => "heat_balance.svg",
             PlotKind::DutyCycleTemperature => "duty_cycle_temperature.svg",
             PlotKind::DutyCycleEnergy => "duty_cycle_energy.svg",

@@ -42,11 +42,6 @@ pub struct SweepExtremesReport {
     pub min_efficiency: Option<ValueAt<Num>>,
     pub max_efficiency: Option<ValueAt<Num>>,
     pub max_power_loss: Option<ValueAt<Q>>,
-    /// With a gearbox: the total efficiency's extremes over every point.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub min_total_efficiency: Option<ValueAt<Num>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub max_total_efficiency: Option<ValueAt<Num>>,
 }
 
 /// One dynamic formulation over every operating point.
@@ -114,8 +109,6 @@ pub(crate) fn sweep_report(tally: &Tally, plan: &Plan, op: &crate::model::Operat
                     pinion_torque: None,
                     pinion_speed: None,
                 }),
-                min_total_efficiency: efficiency_at(op, e.min_total_efficiency),
-                max_total_efficiency: efficiency_at(op, e.max_total_efficiency),
             })
             .collect(),
         dynamics: tally

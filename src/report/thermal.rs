@@ -6,9 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use super::finding::{Finding, Severity};
 use super::number::{Num, Q};
-use crate::evaluate::records::RowKind;
 use crate::evaluate::thermal::{DutyCycleResult, HeatBalanceCurve};
-use crate::evaluate::Tally;
 use crate::model::{Formulation, Scene};
 use crate::thermal::{BalanceStatus, Housing};
 
@@ -184,43 +182,6 @@ pub(crate) fn housing_report(h: &Housing) -> HousingReport {
             .map(|c| CoolerReport { conductance: Q::new(c.conductance, "W/K"), above: Q::new(c.above, "K") }),
         max_oil_temperature: Q::new(h.max_oil_temperature, "K"),
     }
-}
-
-/// The thermal records of the kept efficiency rows.
-pub(crate) fn thermal_records(scene: &Scene, tally: &Tally) -> Vec<ThermalRecord> {
-    let rating = |torque: Option<f64>, omega: f64| {
-        torque.map(|t| Rating { torque: Q::new(t, "N*m"), power: Q::new(t * omega, "W") })
-    };
-    tally
-        .kept
-        .iter()
-        .filter(|r| r.kind == RowKind::Efficiency)
-        .filter_map(|r| {
-            let t = r.thermal.as_ref()?;
-            Some(ThermalRecord {
-                case: r.point - 1,
-                point: None,
-                law: scene.friction[r.law_index?].law,
-                label: r.label.clone(),
-                formulation: if r.formulation == "internal" { Formulation::Internal } else { Formulation::External },
-                pinion_torque: Q::new(r.pinion_torque, "N*m"),
-                pinion_speed: Q::new(r.pinion_speed, "rad/s"),
-                oil_temperature: t.oil_temperature.map(|x| Q::new(x, "K")),
-                status: t.thermal_status,
-                power_loss: Q::new(t.loss_at_balance, "W"),
-                dissipation: DissipationReport {
-                    convection: Q::new(t.convection, "W"),
-                    radiation: Q::new(t.radiation, "W"),
-                    foundation: Q::new(t.foundation, "W"),
-                    cooler: Q::new(t.cooler, "W"),
-                    total: Q::new(t.dissipation, "W"),
-                },
-                heat_transfer_coefficient: Q::new(t.heat_transfer_coefficient, "W/(m^2*K)"),
-                thermal_rating: rating(t.rating, r.pinion_speed),
-                thermal_rating_95: rating(t.rating_95, r.pinion_speed),
-            })
-        })
-        .collect()
 }
 
 fn law_words(scene: &Scene, law_index: usize, f: Formulation) -> String {

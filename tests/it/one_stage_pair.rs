@@ -45,21 +45,14 @@ fn agree(at: &str, a: &serde_json::Value, b: &serde_json::Value, tol: f64) -> us
     }
 }
 
-/// The sections of a pair's report that are its mesh's (not the drive's): the geometry, every
-/// point in full (contact, μ along the line of action, film), each law's efficiency record without
-/// the budget, the dynamics, the stiffness from the teeth, the transmission error and the
-/// composite law's mean |μ|.
+/// The sections of a pair's report that are its mesh's: the geometry, every point in full (contact,
+/// μ along the line of action, film), each law's efficiency record, the dynamics, the stiffness
+/// from the teeth, the transmission error and the composite law's mean |μ|.
 fn mesh_sections(r: &Report) -> serde_json::Value {
-    let mut efficiency = serde_json::to_value(&r.efficiency).unwrap();
-    for record in efficiency.as_array_mut().unwrap() {
-        let record = record.as_object_mut().unwrap();
-        record.remove("budget");
-        record.remove("budget_charges_iso_mesh_loss");
-    }
     serde_json::json!({
         "geometry": r.geometry,
         "operating_points": r.operating_points,
-        "efficiency": efficiency,
+        "efficiency": r.efficiency,
         "dynamics": r.dynamics,
         "stiffness": r.stiffness,
         "transmission_error": r.transmission_error,

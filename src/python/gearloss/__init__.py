@@ -297,8 +297,8 @@ class Report:
 
     @property
     def efficiency(self):
-        """The efficiency rows: per point, law and formulation the mean efficiency, its error, the
-        power loss, and the loss budget's columns when the scene describes its gearbox. Of a drive:
+        """The efficiency rows: per point, law and formulation the mean efficiency, its error and the
+        mesh's power loss (a pair alone's: the whole budget is its one-stage drive's). Of a drive:
         per operating point, law and formulation (a record row) both ends' torque, speed and power,
         each stage's η_mesh (``<stage>_mesh_efficiency``) and the box's η (``total_efficiency``)."""
         if self._shape() == "drive":
@@ -313,14 +313,12 @@ class Report:
 
     @property
     def budget(self):
-        """The loss budget (W) of every point, law and formulation: a row each, keyed by ``point``,
-        ``law``, ``label`` and ``formulation``, with the mesh loss the budget was given
-        (``power_loss_W``), gears without load, bearings, seals, total and η total, and each
-        bearing's loads and losses; empty without a gearbox. (The mesh loss and the total differ
-        between laws and formulations; the parts beside the mesh do not.) Of a drive: the same
-        columns for the whole box, a row per record row (``power_loss_W`` every mesh's,
-        ``total_loss_W``, ``total_efficiency``), and each bearing place's loads and losses
-        (``bearing_<shaft>_<n>_…``)."""
+        """The loss budget (W) of a drive (every scene's, a scene of one pair's its one-stage
+        drive's): a row per record row, keyed by ``torque_index``, ``speed_index``, ``law_index``,
+        ``label`` and ``formulation``, with every mesh's loss (``power_loss_W``), gears without
+        load, bearings, seals, ``total_loss_W`` and ``total_efficiency``, and each bearing place's
+        loads and losses (``bearing_<shaft>_<n>_…``). Of a pair alone (a stage mesh's report,
+        ``.pair``): empty, its budget is the drive's."""
         if self._shape() == "drive":
             r = self.drive_records
             if r.empty:
@@ -337,13 +335,9 @@ class Report:
             table = r[_DRIVE_KEYS + list(parts) + bearings + ["efficiency"]]
             return self._drive_labelled(table.rename(columns={**parts, "efficiency": "total_efficiency"}))
         self._table_of("budget", "pair")
-        e = self.efficiency
-        keys = ("point", "pinion_torque_N_m", "pinion_speed_rad_s", "law", "label", "formulation")
-        keep = [c for c in keys if c in e.columns]
-        parts = [c for c in e.columns if c.endswith("_W") or c.endswith("_N")]
-        if not any(c.startswith("total_loss") for c in parts):
-            return e.iloc[0:0, 0:0]
-        return e[keep + parts + ["total_efficiency"]].reset_index(drop=True)
+        import pandas
+
+        return pandas.DataFrame()
 
     def _drive_labelled(self, table):
         """A drive's table with each row's law as the report labels it (``label``) beside its index."""
@@ -384,9 +378,9 @@ class Report:
     @property
     def thermal(self):
         """The thermal balance of every shown point, law and formulation (report.json's
-        ``thermal``), a pair's and a drive's alike: ``point`` (a pair's 1-based point, a drive's row
-        in words), ``law``, ``label``, ``formulation``, the torque and speed (a pair's pinion's, a
-        drive's given ends'), θ* (``oil_temperature_K``, empty without a balance), ``status``, P_V at
+        ``thermal``) of a drive (a scene of one pair's its one-stage drive's; a pair alone's report
+        has none): ``point`` (the row in words), ``law``, ``label``, ``formulation``, the torque and
+        speed at the given ends, θ* (``oil_temperature_K``, empty without a balance), ``status``, P_V at
         θ* and what the housing gives off there by path (W), ``heat_transfer_coefficient_W_m2_K``
         and both ratings (N·m and W; empty in coast or where none is found); empty without a
         thermal balance."""

@@ -1,4 +1,4 @@
-//! loss_budget.svg (stacked bars of the budget at each operating point) and efficiency_map.svg
+//! A drive's loss_budget.svg bars (stacked, a bar a kept row and law) and every map panel
 //! (filled contours with labelled iso-lines over torque × speed).
 
 use plotters::prelude::*;
@@ -8,38 +8,11 @@ use super::maps::colour;
 use super::panel::{plottable, PALETTE};
 use crate::losses::parts::COLUMNS;
 use crate::report::units::Shown;
-use crate::report::Report;
 
 /// The parts of a budget bar, bottom to top: the mesh or meshes (`meshes`, their name), then the
 /// budget's columns.
 fn parts(meshes: &'static str) -> Vec<&'static str> {
     std::iter::once(meshes).chain(COLUMNS.iter().map(|c| c.bar)).collect()
-}
-
-/// loss_budget.svg: one bar per operating point and law (the first formulation of each law; the
-/// points of `render::budget_points`), stacked by part; the legend stands beside the plot area.
-pub fn loss_budget(r: &Report) -> Result<String, String> {
-    let first = r.efficiency.first().map(|x| x.formulation);
-    let power = r.units().power();
-    let bars: Vec<(String, Vec<f64>)> = crate::render::budget_points::shown_budgets(r)
-        .0
-        .into_iter()
-        .filter(|x| Some(x.formulation) == first)
-        .filter_map(|x| {
-            let b = x.budget.as_ref()?;
-            let w = |q: Option<crate::report::number::Q>| q.map_or(0.0, |q| power.value(q.si()));
-            let label = format!(
-                "{}: {}",
-                crate::render::headline::point_at(r, &x.pinion_torque, &x.pinion_speed),
-                crate::render::table::law_words(&x.label)
-            );
-            let powers = std::iter::once(power.value(x.budget_mesh_loss().si()))
-                .chain(COLUMNS.iter().map(|c| w(b.part(c.column))));
-            Some((label, powers.collect::<Vec<f64>>()))
-        })
-        .collect();
-    let caption = format!("{}: loss budget ({} formulation)", r.title, first.map_or("", |f| f.name()));
-    budget_bars(&caption, "mesh (load-dependent)", power, &bars)
 }
 
 /// A budget figure: one bar per labelled entry (`bars`: the label and the parts' powers in `power`'s

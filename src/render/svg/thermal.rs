@@ -8,19 +8,12 @@ use plotters::prelude::*;
 use super::panel::{plottable, PALETTE};
 use crate::report::thermal::{DutyCycleReport, HeatBalanceReport};
 use crate::report::units::Units;
-use crate::report::Report;
 
 fn err<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> String {
     e.to_string()
 }
 
-/// heat_balance.svg of a pair's report.
-pub fn heat_balance(r: &Report) -> Result<String, String> {
-    let h = r.heat.heat_balance.as_ref().ok_or("the report has no heat balance")?;
-    heat_balance_figure(&r.title, h, r.units())
-}
-
-/// heat_balance.svg of the balance `h` in a report titled `title`, in units `u` (a pair's, a drive's).
+/// heat_balance.svg of the balance `h` in a drive's report titled `title`, in units `u`.
 pub(crate) fn heat_balance_figure(title: &str, h: &HeatBalanceReport, u: Units) -> Result<String, String> {
     // Drawn up to 30 K beyond the limit or the balance, whichever is higher (the curve in report.json
     // runs to 200 °C).
@@ -95,12 +88,6 @@ fn interpolate(x: &[f64], y: &[f64], at: f64) -> f64 {
     y[i - 1] + w * (y[i] - y[i - 1])
 }
 
-/// duty_cycle_temperature.svg of a pair's report.
-pub fn duty_cycle_temperature(r: &Report) -> Result<String, String> {
-    let d = r.heat.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
-    duty_temperature_figure(&r.title, d, r.units())
-}
-
 /// duty_cycle_temperature.svg of the duty cycle `d` in a report titled `title`, in units `u`.
 pub(crate) fn duty_temperature_figure(title: &str, d: &DutyCycleReport, u: Units) -> Result<String, String> {
     let s = d.samples.as_ref().ok_or("the duty cycle has no transient")?;
@@ -162,12 +149,6 @@ pub(crate) fn duty_temperature_figure(title: &str, d: &DutyCycleReport, u: Units
         root.present().map_err(err)?;
     }
     Ok(svg)
-}
-
-/// duty_cycle_energy.svg of a pair's report.
-pub fn duty_cycle_energy(r: &Report) -> Result<String, String> {
-    let d = r.heat.duty_cycle.as_ref().ok_or("the report has no duty cycle")?;
-    duty_energy_figure(&r.title, d, r.units())
 }
 
 /// duty_cycle_energy.svg of the duty cycle `d` in a report titled `title`, in units `u`.
