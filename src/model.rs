@@ -74,6 +74,10 @@ pub struct SceneDrive {
     /// (its records then hold θ* and the sump's status).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub oil_at_balance: bool,
+    /// `analyses { thermal_balance }` with a housing at a given oil temperature: every row's
+    /// balance θ*, what the housing gives off there and the speed's ratings in its records.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub balance_rows: bool,
 }
 
 /// A `vehicle` over a `drive_cycle` as the scene gives them.

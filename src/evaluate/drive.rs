@@ -138,6 +138,9 @@ fn stream_rows(
         records.header(drive)?;
     }
     let mut validity = Vec::new();
+    // Every row's balance, when the drive's rows carry theirs; its speeds' ratings located once.
+    let table = super::thermal::RatingTable::new(scene);
+    let heat = scene.housing.as_ref().filter(|_| drive.balance_rows).map(|h| (h, &table));
     for start in range.clone().step_by(BLOCK) {
         use rayon::prelude::*;
         let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(range.end));
@@ -152,14 +155,26 @@ fn stream_rows(
             }
         };
         let odd: Vec<_> = block.par_iter().map(|r| setup.implausible(&r.point)).collect();
-        for (i, ((row, valid), odd)) in block.into_iter().zip(checked).zip(odd).enumerate() {
+        let balances: Vec<_> = match heat {
+            Some(heat) => {
+                block.par_iter().map(|r| Some(super::drive_thermal::row_balance(setup, scene, heat, r))).collect()
+            }
+            None => vec![None; block.len()],
+        };
+        for (i, (((row, valid), odd), balance)) in block.into_iter().zip(checked).zip(odd).zip(balances).enumerate() {
             if let Some(what) = odd {
                 tally.implausible_rows += 1;
                 tally.first_implausible.get_or_insert((start + i, what));
             }
             let outside: Vec<usize> = valid.iter().map(|v| v.outside).collect();
-            let record = DriveRecord { i: start + i, flow: row.point.flow, row: &row, outside: &outside };
-            let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside);
+            let record = DriveRecord {
+                i: start + i,
+                flow: row.point.flow,
+                row: &row,
+                outside: &outside,
+                heat: balance.as_ref(),
+            };
+            let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside, record.heat);
             tally.add(start + i, &row.point);
             tally.static_loads.add_drive_row(setup.layout(), start + i, &row.point);
             tally.add_cells(start + i, &cells);

@@ -12,6 +12,7 @@ use crate::losses::parts::COLUMNS;
 use std::io::Write;
 
 use super::drive_setup::DriveRow;
+use super::drive_thermal::DriveBalanceRow;
 use super::record_cells::Cell;
 use super::record_files::{RecordFiles, RecordFormats, RecordTable};
 use super::record_parquet::ColumnType;
@@ -53,6 +54,9 @@ pub(crate) fn columns(drive: &SceneDrive) -> Vec<(String, ColumnType)> {
     if drive.oil_at_balance {
         cols.extend(BALANCE_COLUMNS.iter().map(|c| c.to_string()));
     }
+    if drive.balance_rows {
+        cols.extend(ROW_BALANCE_COLUMNS.iter().map(|c| c.to_string()));
+    }
     for s in &drive.layout.stages {
         for c in ["driving", "driving_torque_N_m", "mesh_efficiency", "mesh_loss_W", "no_load_W", "validity_outside"] {
             cols.push(format!("stage_{}_{c}", s.name));
@@ -91,6 +95,24 @@ const TEXTS: &[&str] = &["formulation", "flow", "both_ends_deliver", "thermal_st
 /// without one) and the sump's status (`ok`, `above_limit`, `no_equilibrium`), after `passes`.
 const BALANCE_COLUMNS: [&str; 2] = ["oil_temperature_K", "thermal_status"];
 
+/// With `analyses { thermal_balance }` at a given oil temperature: the row's balance θ* (K, empty
+/// without one), the sump's status, P_V at θ* and what the housing gives off there by path and in
+/// all (W; at the search's limit, 200 °C, without a balance), the wall's h_c and, in drive, the
+/// speed's two rating torques at the given end (N·m; empty in coast or where none is found).
+const ROW_BALANCE_COLUMNS: [&str; 11] = [
+    "oil_temperature_K",
+    "thermal_status",
+    "loss_at_balance_W",
+    "dissipation_convection_W",
+    "dissipation_radiation_W",
+    "dissipation_foundation_W",
+    "dissipation_cooler_W",
+    "dissipation_W",
+    "heat_transfer_coefficient_W_m2_K",
+    "thermal_rating_N_m",
+    "thermal_rating_95_N_m",
+];
+
 /// One row's JSON Lines line into `out`: an object keyed by `keys` (the columns' names as JSON
 /// strings, each with its colon), in their order; an empty cell and a value that is not a finite
 /// number are `null`.
@@ -112,8 +134,15 @@ pub(crate) fn jsonl_line(keys: &[String], cells: &[Cell], out: &mut Vec<u8>) {
 }
 
 /// One row's cells in [`columns`]' order; `outside`: by stage, the law's contacts outside its
-/// validity (of the contacts `super::setup::curve_positions` gives).
-pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) -> Vec<Cell> {
+/// validity (of the contacts `super::setup::curve_positions` gives); `heat`: the row's balance at
+/// a given oil temperature, when the drive's rows carry theirs.
+pub(crate) fn cells(
+    i: usize,
+    flow: PowerFlow,
+    r: &DriveRow,
+    outside: &[usize],
+    heat: Option<&DriveBalanceRow>,
+) -> Vec<Cell> {
     let d = &r.point;
     let l = &d.losses;
     let int = |n: usize| Cell::Int(n as i64);
@@ -142,6 +171,14 @@ pub(crate) fn cells(i: usize, flow: PowerFlow, r: &DriveRow, outside: &[usize]) 
     if let Some(b) = &r.balance {
         cells.push(b.temperature.map_or(Cell::Empty, Cell::Real));
         cells.push(Cell::Text(b.status.name().to_string()));
+    }
+    if let Some(h) = heat {
+        cells.push(h.balance.temperature.map_or(Cell::Empty, Cell::Real));
+        cells.push(Cell::Text(h.balance.status.name().to_string()));
+        let d = &h.dissipation;
+        let paths = [h.loss, d.convection, d.radiation, d.foundation, d.cooler, d.total, h.heat_transfer_coefficient];
+        cells.extend(reals(&paths));
+        cells.extend([h.rating, h.rating_95].map(|r| r.map_or(Cell::Empty, Cell::Real)));
     }
     for (k, s) in d.stages.iter().enumerate() {
         cells.push(Cell::Text(s.member_name(s.driving).to_string()));
@@ -176,6 +213,8 @@ pub(crate) struct DriveRecord<'a> {
     pub flow: PowerFlow,
     pub row: &'a DriveRow,
     pub outside: &'a [usize],
+    /// The row's balance, when the drive's rows carry theirs (`SceneDrive::balance_rows`).
+    pub heat: Option<&'a DriveBalanceRow>,
 }
 
 /// A drive's rows as the one record writer writes them: the columns of [`columns`], each row's
@@ -195,7 +234,7 @@ impl RecordTable for DriveRecords {
     }
 
     fn cells(&self, r: &DriveRecord<'_>) -> Vec<Cell> {
-        cells(r.i, r.flow, r.row, r.outside)
+        cells(r.i, r.flow, r.row, r.outside, r.heat)
     }
 
     fn jsonl_line(&self, _: &DriveRecord<'_>, cells: &[Cell], out: &mut Vec<u8>) {

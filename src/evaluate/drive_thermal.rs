@@ -157,7 +157,7 @@ pub(crate) fn heat_balance_curve(
     super::thermal::heat_balance_curve(p_v, housing, (point, row.law_index, row.formulation))
 }
 
-/// The balance at every row of the operating points.
+/// The balance of the report's kept rows.
 pub(crate) fn drive_balances(
     scene: &Scene,
     drive: &SceneDrive,
@@ -166,29 +166,36 @@ pub(crate) fn drive_balances(
 ) -> Vec<DriveBalanceRow> {
     use rayon::prelude::*;
     let base = DriveSetup::new(scene, drive);
-    // A speed's ratings do not depend on the row's torque: located once per law, formulation and
-    // speed, from the sweep's largest torque, as a pair's sweep locates them.
     let table = super::thermal::RatingTable::new(scene);
-    rows.par_iter()
-        .map(|row| {
-            let balance = crate::thermal::balance(|theta| loss_at(&base, scene, row, theta), housing);
-            let t = balance.temperature.unwrap_or(crate::thermal::balance::SEARCH_LIMIT);
-            let ratings = (row.point.flow == crate::drive::PowerFlow::Drive).then(|| {
-                let p_v = |torque: f64, theta: f64| loss_at_torque(&base, scene, row, torque, theta);
-                table.get((row.law_index, row.formulation, row.speed_index), housing, p_v)
-            });
-            DriveBalanceRow {
-                torque_index: row.torque_index,
-                speed_index: row.speed_index,
-                law_index: row.law_index,
-                formulation: row.formulation,
-                balance,
-                loss: loss_at(&base, scene, row, t),
-                dissipation: housing.dissipation(t),
-                heat_transfer_coefficient: housing.heat_transfer_coefficient(t),
-                rating: ratings.and_then(|r| r.at_limit),
-                rating_95: ratings.and_then(|r| r.at_95),
-            }
-        })
-        .collect()
+    rows.par_iter().map(|row| row_balance(&base, scene, (housing, &table), row)).collect()
+}
+
+/// The balance of `row`, what the housing gives off at θ* and, in drive, its speed's ratings from
+/// `table` (a speed's ratings do not depend on the row's torque: located once per law, formulation
+/// and speed, from the sweep's largest torque): the same numbers whether the row is streamed into
+/// the record files (`super::drive`) or kept for the report ([`drive_balances`]).
+pub(crate) fn row_balance(
+    base: &DriveSetup,
+    scene: &Scene,
+    (housing, table): (&Housing, &super::thermal::RatingTable),
+    row: &DriveRow,
+) -> DriveBalanceRow {
+    let balance = crate::thermal::balance(|theta| loss_at(base, scene, row, theta), housing);
+    let t = balance.temperature.unwrap_or(crate::thermal::balance::SEARCH_LIMIT);
+    let ratings = (row.point.flow == crate::drive::PowerFlow::Drive).then(|| {
+        let p_v = |torque: f64, theta: f64| loss_at_torque(base, scene, row, torque, theta);
+        table.get((row.law_index, row.formulation, row.speed_index), housing, p_v)
+    });
+    DriveBalanceRow {
+        torque_index: row.torque_index,
+        speed_index: row.speed_index,
+        law_index: row.law_index,
+        formulation: row.formulation,
+        balance,
+        loss: loss_at(base, scene, row, t),
+        dissipation: housing.dissipation(t),
+        heat_transfer_coefficient: housing.heat_transfer_coefficient(t),
+        rating: ratings.and_then(|r| r.at_limit),
+        rating_95: ratings.and_then(|r| r.at_95),
+    }
 }

@@ -143,6 +143,7 @@ pub(super) fn lower_drive_scene(
         (gearbox.kind.span, one_pair),
         errors,
     );
+    let balance_rows = analyses.thermal_balance.is_some() && housing.is_some() && !equilibrium;
     match layout {
         Some(layout) if errors.is_empty() => Ok(Scene {
             title: ast.title.clone(),
@@ -162,6 +163,7 @@ pub(super) fn lower_drive_scene(
                 cycle,
                 one_pair,
                 oil_at_balance: equilibrium,
+                balance_rows,
             }),
         }),
         _ => Err(std::mem::take(errors)),

@@ -132,3 +132,55 @@ fn too_many_duty_steps() {
     let err = gearloss::check("steps.gear", &text).unwrap_err().render(false);
     assert!(err.contains("above the limit of 10000"), "{err}");
 }
+
+/// With `analyses { thermal_balance }` every row of a drive's records carries its balance, not only
+/// the rows its report keeps: the spec at 10 torques × 2 speeds (20 rows, the report keeps 12). At
+/// every row P_V at θ* (`loss_at_balance_W`) is what the housing gives off there
+/// (`dissipation_W`, 1e-6 relative: θ* located to 1e-10 K) and the sum of its paths (1e-12); a
+/// kept row's columns are the report's balance (θ* to 1e-12 K, the ratings to 1e-12 relative: the
+/// same code); a row past the kept ones is the balance of the scene run at that row's torque and
+/// speed alone (θ* to 1e-9 K), and its ratings are its speed's, every row at that speed alike.
+#[test]
+fn every_drive_row_carries_its_balance() {
+    let text = std::fs::read_to_string(crate::root().join("specs/fzg_c14_thermal.gear")).unwrap();
+    let swept = text.replace("pinion_torque   = [94.1, 239.3] N*m", "pinion_torque = 50..300 N*m count 10");
+    let scene = gearloss::check("swept.gear", &swept).unwrap_or_else(|e| panic!("{}", e.render(false)));
+    let rows = crate::pair_alone::DriveRows::of(&scene);
+    assert_eq!(rows.len(), 20);
+    let report = thermal_report(&scene);
+    let housing = scene.housing.as_ref().unwrap();
+    let close =
+        |a: f64, b: f64, tol: f64, what: &str| assert!((a - b).abs() <= tol * b.abs().max(1.0), "{what}: {a} vs {b}");
+    let mut ratings_at = std::collections::HashMap::new();
+    for k in 0..rows.len() {
+        let theta = rows.value(k, "oil_temperature_K");
+        let p_v = rows.value(k, "loss_at_balance_W");
+        close(p_v, housing.dissipation(theta).total, 1e-6, "P_V = P_Q");
+        let paths: f64 = ["convection", "radiation", "foundation", "cooler"]
+            .iter()
+            .map(|p| rows.value(k, &format!("dissipation_{p}_W")))
+            .sum();
+        close(paths, rows.value(k, "dissipation_W"), 1e-12, "the paths");
+        let rating = (rows.value(k, "thermal_rating_N_m"), rows.value(k, "thermal_rating_95_N_m"));
+        let speed = rows.cell(k, "speed_index").to_string();
+        assert_eq!(*ratings_at.entry(speed).or_insert(rating), rating, "row {k}: a speed's ratings");
+        if let Some(kept) = report.heat.thermal.get(k) {
+            close(theta, kept.oil_temperature.as_ref().unwrap().si(), 1e-12, "a kept row's θ*");
+            close(rating.0, kept.thermal_rating.as_ref().unwrap().torque.si(), 1e-12, "a kept row's rating");
+        }
+    }
+    assert!(report.heat.thermal.len() < rows.len());
+    let k = 17;
+    let (torque, rpm) = (rows.value(k, "stage_pair_driving_torque_N_m"), rows.value(k, "input_speed_rpm"));
+    let alone = text
+        .replace("pinion_torque   = [94.1, 239.3] N*m", &format!("pinion_torque = {torque:?} N*m"))
+        .replace("pinion_speed    = [1500, 3000] rpm", &format!("pinion_speed = {rpm:?} rpm"));
+    let at = gearloss::check("alone.gear", &alone).unwrap();
+    let first = &thermal_report(&at).heat.thermal[0];
+    close(
+        rows.value(k, "oil_temperature_K"),
+        first.oil_temperature.as_ref().unwrap().si(),
+        1e-9 / 400.0,
+        "row 18 alone",
+    );
+}
