@@ -99,6 +99,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         },
         stage_pairs: Vec::new(),
         one_pair: drive.one_pair,
+        loss_readings: super::loss_readings::loss_readings(&drive.layout),
         points,
     };
     let (inputs, rest) = super::drive_findings::report_findings(scene, drive, eval, &report, units);

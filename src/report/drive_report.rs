@@ -100,6 +100,10 @@ pub struct DriveReport {
     /// efficiency beside the drive's ([`super::drive_point::DrivePointReport::pinion_efficiency`]).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub one_pair: bool,
+    /// The readings the loss parts rest on, in words, for the parts the drive uses
+    /// (`super::loss_readings`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub loss_readings: Vec<String>,
     /// The analyses of one pair on the drive's stages' meshes, each with its own report folder.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stage_pairs: Vec<super::drive_stage_pairs::StagePairReport>,

@@ -28,6 +28,7 @@ mod housing_checks;
 pub(crate) mod input_row;
 pub(crate) mod law_values;
 pub(crate) mod law_words;
+pub(crate) mod loss_readings;
 pub(crate) mod losses;
 mod mesh_checks;
 mod non_finite;

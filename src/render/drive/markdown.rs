@@ -344,4 +344,7 @@ fn model(out: &mut String, r: &DriveReport) {
         md!(out, "- **Elastic shafts**: a shaft with sections is a beam (Euler–Bernoulli, or Timoshenko with Cowper's shear coefficient) bent in both transverse planes by its gears' forces and the couples of their axial forces, on rigid or sprung places; on two places its reactions are the rigid beam's statics, on more the beam's (the outer two from equilibrium); the bending moment comes from the loads and reactions, the largest σ_b = |M|/W at one-sided limits at every node; the mesh misalignment is b × the gears' relative tilt on the line of action (reported, not fed back).");
     }
     md!(out, "- **Fixed point**: the walk is repeated with the bearing loads of the previous pass until no driving torque moves by more than 1e-12 relative (the passes are reported).");
+    for reading in &r.loss_readings {
+        md!(out, "- **Loss parts**: {reading}.");
+    }
 }
