@@ -1,10 +1,10 @@
-//! The gearbox's inputs for the report's first table: lubrication, every bearing place and seal of
-//! both shafts, the housing. The lowered gearbox keeps SI values only, so "as written" shows each
+//! A drive's gearbox inputs for its report's Scene table: each stage's lubrication, every shaft's
+//! bearing places and seals, the housing. The lowered gearbox keeps SI values only, so "as written" shows each
 //! value in the unit it is usually written in (mm, kN, °C).
 
 use super::input_row::{InputRow, SiValue};
 use super::number::{Num, Q};
-use crate::losses::{Bearing, Gearbox, Lubrication, Seal};
+use crate::losses::{Bearing, Lubrication, Seal};
 use crate::thermal::Housing;
 
 /// A dimensional row: `key`, SI value and unit, and the value shown as `scale × SI` in `shown`.
@@ -15,20 +15,6 @@ fn q(rows: &mut Vec<InputRow>, key: String, si: f64, unit: &'static str, scale: 
 
 fn plain(rows: &mut Vec<InputRow>, key: String, x: f64) {
     rows.push(InputRow { key, written: crate::numerics::rounding::sig(x), si: SiValue::Plain(Num(x)) });
-}
-
-/// The gearbox's rows: `gearbox.lubrication.*`, `pinion_shaft.bearing 1 (type).*`, `….seal 1.*`.
-///
-/// Lengths read in mm, or in inches (`in`) for a scene whose pair is sized in inches.
-pub(super) fn gearbox_inputs(rows: &mut Vec<InputRow>, g: &Gearbox, inch: bool) {
-    if let Some(l) = &g.lubrication {
-        lubrication_inputs(rows, "gearbox", l, inch);
-    }
-    for (shaft, places, seals) in
-        [("pinion_shaft", &g.bearings[0], &g.seals[0]), ("wheel_shaft", &g.bearings[1], &g.seals[1])]
-    {
-        shaft_inputs(rows, shaft, (places, seals), inch);
-    }
 }
 
 /// Lengths per metre and their unit: mm, or inches for a scene sized in inches.

@@ -40,17 +40,13 @@ pub(super) fn units(scene: &Scene) -> super::units::Units {
     super::units::Units::of_system(unit_system(scene))
 }
 
+/// The Scene table of a pair's report (the per-mesh evaluation's): its gears and its oil (a scene
+/// of one pair's gearbox and housing are its one-stage drive's, `super::drive_inputs`).
 pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
     let mut rows = Vec::new();
     pair_inputs(&mut rows, &scene.gears, ("", ["pinion", "wheel"]));
     if let Some(l) = &scene.lubricant {
         lubricant_inputs(&mut rows, l);
-    }
-    if let Some(g) = &scene.gearbox {
-        super::gearbox_inputs::gearbox_inputs(&mut rows, g, !unit_system(scene).is_si());
-    }
-    if let Some(h) = &scene.housing {
-        super::gearbox_inputs::housing_inputs(&mut rows, h);
     }
     rows
 }
