@@ -9,7 +9,7 @@ use crate::model::{Scene, SceneDrive};
 use crate::thermal::{Balance, Housing};
 
 /// The balance of one operating point, law and formulation, with the drive's loss and the housing's
-/// dissipation at θ* (at the search's limit without a balance, as a pair's).
+/// dissipation at θ* (at the search's limit, 200 °C, without a balance).
 #[derive(Debug, Clone)]
 pub struct DriveBalanceRow {
     pub torque_index: usize,

@@ -6,7 +6,7 @@ use crate::model::Scene;
 /// operating point (first law, first formulation), where its tables, curves, film and dynamics are
 /// read; the scene itself otherwise, or when that point finds no balance. A scene of one pair finds
 /// it as its one-stage drive does (`super::drive_thermal::at_first_balance`: the drive's walk at
-/// the first point with the oil moved to θ, as every P_V(θ) of a pair is found).
+/// the first point with the oil moved to θ).
 pub(crate) fn at_first_balance(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
     match &scene.drive {
         Some(drive) => super::drive_thermal::at_first_balance(scene, drive),

@@ -12,7 +12,7 @@ fn opt(q: Option<&Q>, f: impl Fn(&Q) -> String) -> String {
     q.map_or_else(|| "—".to_string(), f)
 }
 
-/// The housing's inputs (defaults filled in), in units `u`: a pair's and a drive's.
+/// The housing's inputs (defaults filled in), in units `u`.
 pub(crate) fn housing_table(out: &mut String, h: &HousingReport, u: Units) {
     header(out, &["housing", "value"]);
     let (deg, g) = (u.temperature(), u.conductance());
@@ -35,7 +35,7 @@ pub(crate) fn housing_table(out: &mut String, h: &HousingReport, u: Units) {
 }
 
 /// Per operating point, law and formulation: the balance θ*, what the housing gives off there and
-/// the thermal ratings; each point in its record's words, else `point`'s (a pair's torque and speed).
+/// the thermal ratings; each row in its record's words, else `point`'s.
 pub(crate) fn balance_table(
     out: &mut String,
     records: &[ThermalRecord],
@@ -90,7 +90,7 @@ pub(crate) fn balance_table(
 }
 
 /// The duty cycle's steps, energies and efficiency, transient and at the fixed oil temperature,
-/// under `heading` (`### Duty cycle`): a pair's and a drive's.
+/// under `heading` (`## Duty cycle`).
 pub(crate) fn duty_cycle_lines(out: &mut String, heading: &str, d: &crate::report::thermal::DutyCycleReport, u: Units) {
     let (deg, kj, w) = (u.temperature(), u.energy(), u.power());
     let celsius = |q: &Q| deg.q(q, 1);

@@ -10,7 +10,7 @@ use crate::evaluate::thermal::{DutyCycleResult, HeatBalanceCurve};
 use crate::model::{Formulation, Scene};
 use crate::thermal::{BalanceStatus, Housing};
 
-/// The heat balance's and the duty cycle's plots' titles (a pair's report and a drive's).
+/// The heat balance's and the duty cycle's plots' titles.
 pub(crate) const HEAT_BALANCE_TITLE: &str =
     "Heat balance: the losses P_V and what the housing gives off P_Q against the oil temperature";
 pub(crate) const DUTY_TEMPERATURE_TITLE: &str = "Sump temperature over the duty cycle";
@@ -59,7 +59,7 @@ pub struct Rating {
 pub struct ThermalRecord {
     pub case: usize,
     /// A drive's operating point in words (`T_out = 150 N·m, n_out = 500 rpm`): its torque and
-    /// speed below are the given ends', not a pinion's. None for a pair.
+    /// speed below are the given ends', not a pinion's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub point: Option<String>,
     pub law: crate::friction::catalog::LawId,
@@ -145,7 +145,7 @@ pub struct DutyCycleReport {
     pub label: String,
     pub formulation: Formulation,
     pub steps: Vec<DutyStepReport>,
-    /// E_in = Σ T ω Δt at the input: a pair's, or a drive's whose torque and speed are both given
+    /// E_in = Σ T ω Δt at the input: a drive's whose torque and speed are both given
     /// at its input and no step coasts; absent otherwise (no cycle efficiency then).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub energy_in: Option<Q>,
@@ -188,8 +188,7 @@ fn law_words(scene: &Scene, law_index: usize, f: Formulation) -> String {
     format!("{}, {}", scene.friction[law_index].label(), f.name())
 }
 
-/// The heat balance of curve `c`, at the point, law and formulation `label` names (a pair's, a
-/// drive's).
+/// The heat balance of curve `c`, at the row, law and formulation `label` names.
 pub(crate) fn heat_balance_at(label: String, c: &HeatBalanceCurve, h: &Housing) -> HeatBalanceReport {
     HeatBalanceReport {
         label,
@@ -202,9 +201,9 @@ pub(crate) fn heat_balance_at(label: String, c: &HeatBalanceCurve, h: &Housing) 
     }
 }
 
-/// The duty cycle's report; `at_input`: its steps' torque and speed are the input's (a pair's; a
-/// drive's when its operating block gives both at the input), which gives the energy in and the
-/// cycle's efficiency.
+/// The duty cycle's report; `at_input`: its steps' torque and speed are the input's (a drive's
+/// whose operating block gives both at the input: a scene of one pair's), which gives the energy in
+/// and the cycle's efficiency.
 pub(crate) fn duty_cycle_report(
     scene: &Scene,
     d: &DutyCycleResult,
@@ -296,7 +295,7 @@ pub(crate) fn thermal_findings(
     out
 }
 
-/// Warnings of a duty cycle (a pair's, a drive's): a housing without heat capacity (no transient),
+/// Warnings of a drive's duty cycle: a housing without heat capacity (no transient),
 /// a transient that failed, a transient that crosses the oil's limit (when, in which step).
 pub(crate) fn duty_findings(
     scene: &Scene,
