@@ -68,8 +68,8 @@ pub(crate) fn evaluate_drive_into_with(
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup);
     progress.stage("evaluate", n as u64);
-    let (rows, validity, tally) = stream_rows(&setup, scene, drive, (0..n, records), true, progress)?;
-    Ok(finish(&setup, scene, drive, (rows, validity), tally))
+    let (kept, tally) = stream_rows(&setup, scene, drive, (0..n, records), true, progress)?;
+    Ok(finish(&setup, scene, drive, kept, tally))
 }
 
 /// One shard of a drive's run (`gearloss run --shard K/N`): the rows of its operating points
@@ -88,7 +88,7 @@ pub(crate) fn evaluate_drive_shard_with(
     let points = shard.range(scene.operating.count());
     let rows = points.start * per_point..points.end * per_point;
     progress.stage("evaluate", rows.len() as u64);
-    Ok(stream_rows(&setup, scene, drive, (rows, records), true, progress)?.2)
+    Ok(stream_rows(&setup, scene, drive, (rows, records), true, progress)?.1)
 }
 
 /// After the shards are merged: the report's rows (the first [`DETAIL_ROWS`]) evaluated again, the
@@ -97,7 +97,7 @@ pub(crate) fn evaluate_drive_shard_with(
 pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup).min(DETAIL_ROWS);
-    let (rows, validity, _) = stream_rows(
+    let (kept, _) = stream_rows(
         &setup,
         scene,
         drive,
@@ -106,7 +106,7 @@ pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: Dr
         &crate::progress::Quiet,
     )
     .expect("a sink takes every row");
-    finish(&setup, scene, drive, (rows, validity), tally)
+    finish(&setup, scene, drive, kept, tally)
 }
 
 /// Rows of the operating points: points × laws × formulations.
@@ -114,8 +114,9 @@ fn row_count(scene: &Scene, setup: &DriveSetup) -> usize {
     scene.operating.count() * setup.rows_per_point()
 }
 
-/// The kept rows and their validity by stage.
-type Kept = (Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>);
+/// The kept rows, their validity by stage and, where the drive's rows carry their balance
+/// (`SceneDrive::balance_rows`), the kept rows' balances as streamed (else none).
+type Kept = (Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, Vec<super::drive_thermal::DriveBalanceRow>);
 
 /// Rows `range` of the operating points in blocks, each written to `records` (after the header,
 /// when `header`) and tallied; the first [`DETAIL_ROWS`] kept with their validity. After each block
@@ -127,7 +128,7 @@ fn stream_rows(
     (range, records): (std::ops::Range<usize>, &mut dyn DriveRecordSink),
     header: bool,
     progress: &dyn Progress,
-) -> std::io::Result<(Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, DriveTally)> {
+) -> std::io::Result<(Kept, DriveTally)> {
     let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
     let op = &scene.operating;
     let speeds: Vec<f64> = op.pinion_speed.values.iter().map(|w| w.value).collect();
@@ -138,6 +139,7 @@ fn stream_rows(
         records.header(drive)?;
     }
     let mut validity = Vec::new();
+    let mut balanced = Vec::new();
     // Every row's balance, when the drive's rows carry theirs; its speeds' ratings located once.
     let table = super::thermal::RatingTable::new(scene);
     let heat = scene.housing.as_ref().filter(|_| drive.balance_rows).map(|h| (h, &table));
@@ -194,6 +196,7 @@ fn stream_rows(
             if rows.len() < DETAIL_ROWS {
                 rows.push(row);
                 validity.push(valid);
+                balanced.extend(balance);
             }
         }
         progress.advance(BLOCK.min(range.end - start) as u64);
@@ -201,7 +204,7 @@ fn stream_rows(
             return Err(std::io::Error::new(std::io::ErrorKind::Interrupted, "the run was interrupted"));
         }
     }
-    Ok((rows, validity, tally))
+    Ok(((rows, validity, balanced), tally))
 }
 
 /// The evaluation around the kept rows: the map, the thermal balance of the kept rows, the duty cycle.
@@ -209,7 +212,7 @@ fn finish(
     setup: &DriveSetup,
     scene: &Scene,
     drive: &SceneDrive,
-    (rows, validity): Kept,
+    (rows, validity, balanced): Kept,
     tally: DriveTally,
 ) -> DriveEvaluation {
     let si = |v: &[crate::model::Torque]| v.iter().map(|t| t.value).collect::<Vec<_>>();
@@ -222,7 +225,9 @@ fn finish(
         }
         _ => (Vec::new(), Vec::new()),
     };
+    // The kept rows' balances: as streamed where every row carries its own, else located here.
     let balances = match (&scene.housing, scene.analyses.thermal_balance) {
+        (Some(_), Some(_)) if drive.balance_rows => balanced,
         (Some(h), Some(_)) => super::drive_thermal::drive_balances(scene, drive, h, &rows),
         _ => Vec::new(),
     };
