@@ -111,11 +111,12 @@ pub use evaluate::record_files::RecordFormats;
 pub use evaluate::records::RecordSink;
 pub use evaluate::{Evaluation, Plan, Shard, Tally};
 pub use folder::write_new_file;
+pub use mesh::MeshProblem;
 pub use model::Scene;
 pub use progress::{Progress, Quiet};
 pub use render::RenderedReport;
 pub use report::Report;
-pub use run::{merge_into, pair_files, report_of, run_into, run_into_with, run_to_files, Written};
+pub use run::{merge_into, mesh_report, pair_files, report_of, run_into, run_into_with, run_to_files, Written};
 pub use run_error::{Failure, FailureKind, RunError};
 pub use run_pair::has_records;
 pub use scene::ast::SceneAst;
@@ -144,14 +145,14 @@ pub fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
 
 /// Stage 3's detail points in memory: every point of a sweep of up to 100 points in full (tests and
 /// benches); a larger sweep's detail points only — its every point goes through [`evaluate_sweep`].
-pub fn evaluate(scene: &Scene) -> Evaluation {
+pub fn evaluate(scene: &MeshProblem) -> Evaluation {
     evaluate::evaluate_scene(scene)
 }
 
 /// Stage 3, the sweep: the plan's points streamed, their summary rows written to `sink` in sweep
 /// order, their tally returned. Memory does not grow with the sweep.
 pub fn evaluate_sweep(
-    scene: &Scene,
+    scene: &MeshProblem,
     plan: &Plan,
     sink: &mut dyn RecordSink,
     progress: &dyn Progress,
@@ -160,12 +161,12 @@ pub fn evaluate_sweep(
 }
 
 /// Stage 3, the details: the plan's detail points in full, the contact curves and the dynamics.
-pub fn evaluate_details(scene: &Scene, plan: &Plan, progress: &dyn Progress) -> Evaluation {
+pub fn evaluate_details(scene: &MeshProblem, plan: &Plan, progress: &dyn Progress) -> Evaluation {
     evaluate::stages::details(scene, plan, &Default::default(), progress)
 }
 
 /// Stage 4: the serde report data, from the detail points and the tally of every point.
-pub fn report(scene: &Scene, evaluation: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
+pub fn report(scene: &MeshProblem, evaluation: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
     report::build_report(scene, evaluation, tally, plan)
 }
 

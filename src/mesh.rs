@@ -1,24 +1,90 @@
-//! A checked mesh: one gear pair with the lubricant it runs in, what a per-mesh evaluation reads
-//! (its geometry, its bodies' elasticity, its surfaces and oil). The evaluation of a pair takes a
-//! mesh, never the scene: a drive's stages are meshes of their own ([`crate::model::SceneDrive`]).
+//! A checked mesh: one gear pair with the lubricant it runs in (its geometry, its bodies'
+//! elasticity, its surfaces and oil), and the problem of one mesh the per-mesh evaluation reads:
+//! the mesh over its grid of operating states with the laws, the dynamics and the analyses asked of
+//! it. The evaluation of a pair takes a mesh, never the scene: a drive's stages are meshes of their
+//! own ([`crate::model::SceneDrive`]), each analysed as a [`MeshProblem`] at the state the drive's
+//! power walk gives it (`evaluate::stage_pairs`), a scene of one pair's stage over the scene's grid
+//! ([`Scene::pair_alone`]).
 
 use crate::geometry::contact::reduced_modulus;
 use crate::geometry::PairGeometry;
-use crate::model::{GearPair, Lubricant, LubricantType, Scene, SceneDrive};
+use crate::model::{
+    Analyses, DynamicsSpec, FrictionLawSpec, GearPair, Lubricant, LubricantType, Operating, Scene, SceneDrive,
+};
 use crate::tribology::Tribology;
+
+/// One mesh's analysis, what the per-mesh evaluation (`evaluate::prepare`, the stream, the details,
+/// the pair's report) reads: the pair with the driving gear in the pinion's place, its oil at the
+/// oil temperature, the grid of the pinion's torques and speeds (with the detail points to see in
+/// full), the friction laws to compare, the dynamics block and the analyses of one pair.
+///
+/// What a drive evaluates itself is not here: the gearbox's loss budget, the housing's balance, the
+/// duty cycle, the efficiency map, the oil at its balance or over a sweep of temperatures
+/// (`operating.oil_temperatures` and `operating.equilibrium` are always None).
+///
+/// ```
+/// let scene = gearloss::check("s.gear", r#"scene "s" {
+///     gears { module = 2 mm  pressure_angle = 20 deg  face_width = 20 mm
+///             pinion { teeth = 20  material = steel }  wheel { teeth = 40  material = steel } }
+///     material steel { youngs_modulus = 210 GPa  poisson_ratio = 0.3 }
+///     operating { pinion_torque = [50, 100] N*m  pinion_speed = 1000 rpm }
+/// }"#).unwrap();
+/// let mesh = scene.pair_alone();
+/// assert_eq!(mesh.operating.count(), 2);
+/// assert_eq!(mesh.gears.wheel.teeth.value, 40);
+/// let eval = gearloss::evaluate(&mesh);
+/// assert_eq!(eval.points.len(), 2);
+/// ```
+#[derive(Debug, Clone)]
+pub struct MeshProblem {
+    /// What the mesh's report is titled (the scene's title; a drive's stage mesh adds its stage,
+    /// mesh and point).
+    pub title: String,
+    pub gears: GearPair,
+    pub lubricant: Option<Lubricant>,
+    pub operating: Operating,
+    pub friction: Vec<FrictionLawSpec>,
+    pub dynamics: Option<DynamicsSpec>,
+    /// The analyses asked: the per-mesh evaluation reads those of one pair and of efficiency.
+    pub analyses: Analyses,
+}
+
+impl MeshProblem {
+    /// The pair with its lubricant: the mesh the evaluation reads.
+    pub fn mesh(&self) -> Mesh<'_> {
+        Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
+    }
+}
+
+impl Scene {
+    /// The scene's pair with its lubricant (a drive's: its first stage's pair).
+    pub fn mesh(&self) -> Mesh<'_> {
+        Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
+    }
+
+    /// The scene's pair alone, as a drive's stage mesh is analysed (what `gearloss::report_of`
+    /// reports): its gears, oil at the scene's oil temperature, operating grid and detail points,
+    /// laws, dynamics and every analysis; what its one-stage drive evaluates itself (the gearbox's
+    /// budget, the housing's balance, the duty cycle, the oil at its balance or over a sweep) left
+    /// to the drive.
+    pub fn pair_alone(&self) -> MeshProblem {
+        MeshProblem {
+            title: self.title.clone(),
+            gears: self.gears.clone(),
+            lubricant: self.lubricant.clone(),
+            operating: Operating { oil_temperatures: None, equilibrium: None, ..self.operating.clone() },
+            friction: self.friction.clone(),
+            dynamics: self.dynamics.clone(),
+            analyses: self.analyses.clone(),
+        }
+    }
+}
 
 /// One pair and its lubricant.
 #[derive(Debug, Clone, Copy)]
 pub struct Mesh<'a> {
     pub gears: &'a GearPair,
     pub lubricant: Option<&'a Lubricant>,
-}
-
-impl Scene {
-    /// The scene's pair with its lubricant: the mesh the pair's evaluation reads.
-    pub fn mesh(&self) -> Mesh<'_> {
-        Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
-    }
 }
 
 impl SceneDrive {

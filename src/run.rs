@@ -12,6 +12,7 @@ use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::stages::{details, stream};
 use crate::evaluate::{self, Plan, Shard};
 use crate::folder::ReportFolder;
+use crate::mesh::MeshProblem;
 use crate::model::Scene;
 use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
@@ -26,7 +27,13 @@ use crate::shard;
 /// checked scene's pair alone (its oil at the first balance at `oil_temperature = equilibrium`), the
 /// report a drive's stage mesh gets (tests, benches).
 pub fn report_of(scene: &Scene) -> Report {
-    let scene = &evaluate::stage_pairs::pair_alone(&evaluate::first_balance::at_first_balance(scene));
+    mesh_report(&evaluate::first_balance::at_first_balance(scene).pair_alone())
+}
+
+/// Stages 3 and 4 of the per-mesh evaluation in memory, the record rows dropped: the report of one
+/// mesh's problem (a scene's pair alone, [`Scene::pair_alone`], or a drive's stage mesh at its
+/// operating state, `evaluate::stage_pairs`).
+pub fn mesh_report(scene: &MeshProblem) -> Report {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
         .expect("records that go nowhere cannot fail to be written");
@@ -41,7 +48,7 @@ pub fn report_of(scene: &Scene) -> Report {
 /// this is the stage beneath it, for a library user or a test of the pair's own modules.
 pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
     let scene = &evaluate::first_balance::at_first_balance(scene);
-    let (_, files) = crate::run_pair::run_scene_to_files(&evaluate::stage_pairs::pair_alone(scene))?;
+    let (_, files) = crate::run_pair::run_scene_to_files(&scene.pair_alone())?;
     Ok(RenderedReport { slug: report::slug(&scene.title), files })
 }
 

@@ -12,7 +12,7 @@ use crate::evaluate::stages::{details, stream};
 use crate::evaluate::stream::Streamed;
 use crate::evaluate::{self, Plan, Shard, Tally};
 use crate::folder::ReportFolder;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 use crate::progress::{Progress, Quiet};
 use crate::render::RenderedReport;
 use crate::render::TIMINGS_FILE;
@@ -23,7 +23,7 @@ use crate::run_kind::Redrawn;
 use crate::shard::{self, ShardSet};
 
 /// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
-pub fn has_records(scene: &Scene) -> bool {
+pub fn has_records(scene: &MeshProblem) -> bool {
     let a = &scene.analyses;
     a.friction_along_loa
         || a.efficiency.is_some()
@@ -35,7 +35,7 @@ pub fn has_records(scene: &Scene) -> bool {
 /// render; the report as built, before report.json rounds its numbers, and as report.json reads
 /// it back.
 fn finish_exact(
-    scene: &Scene,
+    scene: &MeshProblem,
     plan: &Plan,
     tally: &Tally,
     known: &evaluate::stream::Streamed,
@@ -52,7 +52,7 @@ fn finish_exact(
 
 /// One scene (at one oil temperature) run in memory: its report (as report.json reads back) and
 /// files, the record files included.
-pub(crate) fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, String)>), RunError> {
+pub(crate) fn run_scene_to_files(scene: &MeshProblem) -> Result<(Report, Vec<(String, String)>), RunError> {
     run_scene_exact(scene).map(|(_, report, files)| (report, files))
 }
 
@@ -60,7 +60,7 @@ pub(crate) fn run_scene_to_files(scene: &Scene) -> Result<(Report, Vec<(String, 
 pub(crate) type ExactRun = (Report, Report, Vec<(String, String)>);
 
 /// [`run_scene_to_files`] with the report as built, its numbers unrounded, first.
-pub(crate) fn run_scene_exact(scene: &Scene) -> Result<ExactRun, RunError> {
+pub(crate) fn run_scene_exact(scene: &MeshProblem) -> Result<ExactRun, RunError> {
     let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
     let extra = evaluate::records::ExtraColumns::of(scene);
     let mut sink =
@@ -79,7 +79,7 @@ pub(crate) fn run_scene_exact(scene: &Scene) -> Result<ExactRun, RunError> {
 /// A pair's run into `folder` under `dir` (`""`: the top), its record files of `formats` streamed
 /// as its sweep runs: the report as built, as report.json reads it back, and the files written.
 pub(crate) fn run_in_folder_exact(
-    scene: &Scene,
+    scene: &MeshProblem,
     (folder, dir): (&ReportFolder, &str),
     formats: RecordFormats,
     progress: &dyn Progress,
@@ -100,7 +100,7 @@ pub(crate) fn run_in_folder_exact(
 /// A shard of a pair's sweep into `folder` under `dir` (`""`: the top): its points' tally and the
 /// record files of `formats` written.
 pub(crate) fn shard_in_folder(
-    scene: &Scene,
+    scene: &MeshProblem,
     shard: Shard,
     at: (&ReportFolder, &str),
     formats: RecordFormats,
@@ -116,7 +116,7 @@ pub(crate) fn shard_in_folder(
 /// The report as built, as report.json reads it back, and the files written.
 pub(crate) fn merge_in_folder(
     set: &ShardSet,
-    scene: &Scene,
+    scene: &MeshProblem,
     (folder, dir): (&ReportFolder, &str),
     progress: &dyn Progress,
 ) -> Result<(Report, Report, Vec<String>), RunError> {
@@ -185,7 +185,7 @@ pub(crate) fn render_as_written(
 /// The plan's points streamed into the record files of `folder` under `dir` (`""`: the top), when
 /// the scene writes records; returns the stream and the record files written.
 fn stream_into(
-    scene: &Scene,
+    scene: &MeshProblem,
     plan: &Plan,
     (folder, dir): (&ReportFolder, &str),
     formats: RecordFormats,

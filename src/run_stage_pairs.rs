@@ -10,6 +10,7 @@ use crate::evaluate::record_files::RecordFormats;
 use crate::evaluate::stage_pairs::{one_pair_sweep, stage_pairs};
 use crate::evaluate::{Shard, Tally};
 use crate::folder::ReportFolder;
+use crate::mesh::MeshProblem;
 use crate::model::{Scene, SceneDrive};
 use crate::progress::Progress;
 use crate::report::drive_stage_pairs::{folder as folder_of, StagePairReport};
@@ -113,7 +114,7 @@ pub(crate) fn stage_pairs_merged(
 fn stage_pair_rows(
     scene: &Scene,
     drive: &SceneDrive,
-    mut run: impl FnMut(&Scene, &str) -> Result<Report, RunError>,
+    mut run: impl FnMut(&MeshProblem, &str) -> Result<Report, RunError>,
 ) -> Result<(Vec<StagePairReport>, StagePairReports), RunError> {
     let formulation = scene.analyses.first_formulation();
     let law = scene.friction.first().map_or_else(String::new, |l| l.label());

@@ -3,7 +3,7 @@
 use super::cases::pick;
 use super::setup::Setup;
 use crate::geometry::{ContactPoint, OperatingState};
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 /// Contact quantities along the line of action for the contact-state plot: v_s at each plotted speed
 /// (first torque), p_H at each plotted torque (first speed), SR at the first operating point.
@@ -21,7 +21,7 @@ pub struct ContactCurves {
 }
 
 /// The contact curves of the contact-state plot.
-pub(super) fn contact_curves(scene: &Scene, eval: &Setup) -> ContactCurves {
+pub(super) fn contact_curves(scene: &MeshProblem, eval: &Setup) -> ContactCurves {
     let u = eval.curve_positions();
     let op = &scene.operating;
     let torque0 = op.pinion_torque.values[0].value;

@@ -7,14 +7,14 @@ use super::evaluation::{Evaluation, PointEvaluation};
 use super::plan::Plan;
 use super::setup::contact_table;
 use super::{contact_curves, dynamics, laws, teeth};
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 /// The detail points of the plan in full (tables, film, laws, curves), the contact curves and the
 /// dynamics; `tick` is called once per detail point.
 /// `known` is what the sweep's stream already computed (dynamics by point number, the teeth),
 /// reused as it is.
 pub fn evaluate_details(
-    scene: &Scene,
+    scene: &MeshProblem,
     eval: &mut Evaluation,
     plan: &Plan,
     known: &super::stream::Streamed,

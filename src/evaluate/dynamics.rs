@@ -14,7 +14,8 @@ use crate::friction::{FrictionLaw, LawContext};
 use crate::geometry::stiffness::{iso_6336, StiffnessId};
 use crate::geometry::teeth::iso_6336_method_b::IsoStiffness;
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{DynamicsSpec, Scene, Solver, StiffnessSpec};
+use crate::mesh::MeshProblem;
+use crate::model::{DynamicsSpec, Solver, StiffnessSpec};
 use crate::numerics::roots::brent;
 
 #[derive(Debug, Clone, Serialize)]
@@ -66,11 +67,11 @@ pub struct DynamicsEvaluation {
     pub numerics: Option<(DynamicFormulation, usize, Study)>,
 }
 
-fn stiffness_model(scene: &Scene, spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
+fn stiffness_model(scene: &MeshProblem, spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
     (spec.stiffness.build(g, &scene.gears.bodies()), spec.stiffness.source())
 }
 
-fn inertia(scene: &Scene) -> Option<[f64; 2]> {
+fn inertia(scene: &MeshProblem) -> Option<[f64; 2]> {
     let j = |g: &crate::model::Gear| g.inertia.as_ref().map(|j| j.value.value);
     Some([j(&scene.gears.pinion)?, j(&scene.gears.wheel)?])
 }
@@ -139,7 +140,7 @@ impl<'a> DynamicsSetup<'a> {
     /// inertias, and masses and bearings on bearings: lowering refuses a scene that asks for dynamics
     /// without them); `base` is the law context of the scene's pair (its state is replaced by each
     /// operating point's).
-    pub(crate) fn new(scene: &'a Scene, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
+    pub(crate) fn new(scene: &'a MeshProblem, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
         let spec = scene.dynamics.as_ref()?;
         let inertia = inertia(scene)?;
         let mass = |g: &crate::model::Gear| g.mass.as_ref().map(|m| m.value.value);
@@ -210,7 +211,7 @@ impl<'a> DynamicsSetup<'a> {
 /// `known` holds dynamics already computed by the sweep's stream, by point number (0-based); the
 /// cases among them are not computed again.
 pub(crate) fn evaluate_dynamics(
-    scene: &Scene,
+    scene: &MeshProblem,
     cases: &[Case],
     base: LawContext,
     known: &[(usize, DynamicsPoint)],

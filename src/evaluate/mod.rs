@@ -44,7 +44,7 @@ pub(crate) mod tally;
 pub(crate) mod teeth;
 pub(crate) mod thermal;
 
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 pub use cases::{
     case_at, cycle_times, pick, state_at, table_positions, Case, CURVE_SAMPLES, MAX_CURVES, TABLE_INTERVALS,
@@ -75,7 +75,7 @@ pub use thermal::DutyCycleResult;
 
 /// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
 /// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).
-pub fn evaluate_scene(scene: &Scene) -> Evaluation {
+pub fn evaluate_scene(scene: &MeshProblem) -> Evaluation {
     let plan = Plan::new(&scene.operating, None, &[]);
     let mut eval = prepare(scene, &plan);
     evaluate_details(scene, &mut eval, &plan, &Default::default(), &|| {});

@@ -7,12 +7,12 @@ use super::plan::Plan;
 use super::setup::Setup;
 use crate::efficiency;
 use crate::geometry::OperatingState;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 use crate::tribology::FilmInputs;
 
 /// Everything but the operating points: geometry, materials, lubricant, the fixed sample positions.
 /// Lowering has checked the geometry, so this cannot fail on a lowered scene.
-pub fn prepare(scene: &Scene, plan: &Plan) -> Evaluation {
+pub fn prepare(scene: &MeshProblem, plan: &Plan) -> Evaluation {
     let mesh = scene.mesh();
     let geometry = mesh.geometry();
     let e_r = mesh.reduced_modulus();

@@ -185,7 +185,7 @@ pub struct ExtraColumns {
 
 impl ExtraColumns {
     /// The scene's columns.
-    pub fn of(scene: &crate::model::Scene) -> ExtraColumns {
+    pub fn of(scene: &crate::mesh::MeshProblem) -> ExtraColumns {
         let ste = if scene.analyses.transmission_error.is_some() {
             super::ste_row::SteRow::COLUMNS.iter().map(|c| c.to_string()).collect()
         } else {

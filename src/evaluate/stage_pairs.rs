@@ -22,6 +22,7 @@
 
 use super::drive_setup::DriveSetup;
 use crate::drive::{EndValue, Member};
+use crate::mesh::MeshProblem;
 use crate::model::{Analyses, GearPair, Operating, Scene, SceneDrive, Sweep};
 
 /// One mesh of an analysed stage at one of the drive's operating points, or over the whole sweep
@@ -40,7 +41,7 @@ pub struct StagePair {
     /// `ring` for the planet–ring mesh whichever drives, as the walk evaluates it).
     pub members: [&'static str; 2],
     /// The pair alone at that state; None where no torque or no speed goes through the mesh.
-    pub scene: Option<Scene>,
+    pub scene: Option<MeshProblem>,
 }
 
 /// A mesh's state at one of the drive's operating points, from the drive's walk.
@@ -153,17 +154,9 @@ pub(crate) fn one_pair_sweep(scene: &Scene, drive: &SceneDrive) -> Option<StageP
     })
 }
 
-/// The scene's pair alone, as a drive's stage mesh is analysed: what its one-stage drive evaluates
-/// itself (the gearbox's budget, the housing's balance, the duty cycle, the drive) left out, the oil
-/// where the scene has it (`gearloss::report_of`, `gearloss::pair_files`).
-pub(crate) fn pair_alone(scene: &Scene) -> Scene {
-    let operating = Operating { equilibrium: None, ..scene.operating.clone() };
-    Scene { gearbox: None, housing: None, duty_cycle: None, drive: None, operating, ..scene.clone() }
-}
-
-/// The scene of `pair` alone at the pinion's torque (N·m) and speed (rad/s), shown in the units the
+/// The problem of `pair` alone at the pinion's torque (N·m) and speed (rad/s), shown in the units the
 /// drive's operating block writes its speeds in; None: over the scene's own operating block.
-fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, f64)>) -> Scene {
+fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, f64)>) -> MeshProblem {
     let op = &scene.operating;
     let (pinion_torque, pinion_speed, detail_points) = match state {
         Some(state) => {
@@ -173,7 +166,7 @@ fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, 
         None => (op.pinion_torque.clone(), op.pinion_speed.clone(), op.detail_points.clone()),
     };
     let a = &scene.analyses;
-    Scene {
+    MeshProblem {
         title,
         gears: pair,
         lubricant: scene.lubricant.clone(),
@@ -187,9 +180,6 @@ fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, 
         },
         friction: scene.friction.clone(),
         dynamics: scene.dynamics.clone(),
-        gearbox: None,
-        housing: None,
-        duty_cycle: None,
         analyses: Analyses {
             efficiency: a.efficiency.clone(),
             friction_along_loa: a.friction_along_loa,
@@ -203,7 +193,6 @@ fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, 
             transmission_error: a.transmission_error.clone(),
             ..Analyses::default()
         },
-        drive: None,
     }
 }
 

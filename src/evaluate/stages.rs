@@ -5,13 +5,13 @@ use super::evaluation::Evaluation;
 use super::plan::Plan;
 use super::records::RecordSink;
 use super::stream::{evaluate_records, Streamed};
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 use crate::progress::Progress;
 
 /// The plan's points streamed: summary rows to `sink` in sweep order, the tally and the detail
 /// points' dynamics returned.
 pub(crate) fn stream(
-    scene: &Scene,
+    scene: &MeshProblem,
     plan: &Plan,
     sink: &mut dyn RecordSink,
     progress: &dyn Progress,
@@ -25,7 +25,7 @@ pub(crate) fn stream(
 }
 
 /// The plan's detail points in full, reusing what the stream computed (`known`).
-pub(crate) fn details(scene: &Scene, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
+pub(crate) fn details(scene: &MeshProblem, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
     let mut eval = super::prepare::prepare(scene, plan);
     progress.stage("details", plan.detail.len() as u64);
     super::details::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));

@@ -14,7 +14,7 @@ use super::setup::{contact_table, Setup};
 use super::tally::{furthest_beyond_half_width, implausible_efficiency};
 use super::tally::{Implausible, ImplausibleAt, LawNote, LawTally, Tally, WorstValidity, HALF_WIDTH_LIMIT};
 use crate::efficiency::EfficiencyResult;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 /// Points evaluated together before their rows are written.
 pub(crate) const BLOCK: usize = 1024;
@@ -35,7 +35,7 @@ pub struct Streamed {
 /// `tick(n)` is called after each block with the number of points it held; when it answers false
 /// the run stops there with an `Interrupted` error.
 pub fn evaluate_records(
-    scene: &Scene,
+    scene: &MeshProblem,
     eval: &Setup,
     plan: &Plan,
     sink: &mut dyn RecordSink,
@@ -79,7 +79,7 @@ type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
 
 /// The rows and the tally of point `k`.
 fn point_summary(
-    scene: &Scene,
+    scene: &MeshProblem,
     eval: &Setup,
     plan: &Plan,
     labels: &[String],

@@ -8,7 +8,7 @@ use crate::geometry::teeth::iso_6336_method_b::IsoStiffness;
 use crate::geometry::teeth::load_sharing::LoadSharing;
 use crate::geometry::teeth::transmission_error::TransmissionError;
 use crate::geometry::PairGeometry;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 use crate::numerics::roots::extrema;
 
 /// What the report's stiffness and transmission-error sections read.
@@ -22,7 +22,7 @@ pub struct TeethDetails {
 }
 
 /// The details, when the scene asks for them (lowering has checked that they can be computed).
-pub fn teeth_details(scene: &Scene, g: &PairGeometry) -> Option<TeethDetails> {
+pub fn teeth_details(scene: &MeshProblem, g: &PairGeometry) -> Option<TeethDetails> {
     if !scene.gears.wants_teeth(&scene.analyses, scene.dynamics.as_ref()) {
         return None;
     }

@@ -4,17 +4,26 @@ use super::finding::{Finding, Severity};
 use super::mesh_checks::{self, tip_warnings};
 use crate::evaluate::Evaluation;
 use crate::geometry::TipSource;
-use crate::model::{LoadSharing, Scene};
+use crate::mesh::MeshProblem;
+use crate::model::LoadSharing;
 
-pub(super) fn findings(scene: &Scene, eval: &Evaluation) -> Vec<Finding> {
+pub(super) fn findings(scene: &MeshProblem, eval: &Evaluation) -> Vec<Finding> {
     let g = &eval.geometry;
     let units = super::scene::units(scene);
     let len = units.length();
     let mut out = Vec::new();
     let note = |m: String| Finding { severity: Severity::Note, message: m };
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
-    out.extend(crate::scene::summary::unused_blocks(scene).into_iter().map(warn));
-    out.extend(super::oil_checks::oil_warnings(scene, units));
+    out.extend(
+        crate::scene::summary::unused_mesh_blocks(
+            &scene.analyses,
+            scene.dynamics.is_some(),
+            !scene.friction.is_empty(),
+        )
+        .into_iter()
+        .map(warn),
+    );
+    out.extend(super::oil_checks::oil_warnings(scene.lubricant.as_ref(), &scene.operating, units));
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {}", len.with(2.0 * g.tip_radius[i], 4)),

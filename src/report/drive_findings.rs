@@ -212,7 +212,7 @@ pub(super) fn report_findings(
         .into_iter()
         .map(|message| Finding { severity: Severity::Warning, message })
         .collect();
-    inputs.extend(super::oil_checks::oil_warnings(scene, units));
+    inputs.extend(super::oil_checks::oil_warnings(scene.lubricant.as_ref(), &scene.operating, units));
     inputs.extend(super::housing_checks::housing_findings(scene, units));
     if let Some(c) = &report.cycle {
         rest.extend(c.findings.iter().cloned());

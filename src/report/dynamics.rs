@@ -9,7 +9,7 @@ use crate::dynamics::DynamicFormulation;
 use crate::evaluate::dynamics::DynamicsEvaluation;
 use crate::evaluate::Evaluation;
 use crate::geometry::stiffness::StiffnessShape;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 use super::dynamics_records::formulation_report;
 pub(crate) use super::dynamics_records::{FormulationReport, Located};
@@ -144,7 +144,7 @@ pub(crate) fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
     })
 }
 
-pub(crate) fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
+pub(crate) fn dynamics_report(scene: &MeshProblem, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
     let shape = d.stiffness.shape();
     let stiffness = stiffness_report(&shape);
     let g = &eval.geometry;
@@ -200,7 +200,7 @@ pub(crate) fn dynamics_report(scene: &Scene, eval: &Evaluation, d: &DynamicsEval
 }
 
 /// The stability map over speed at the first torque: ρ and K_v per formulation, the unstable ranges.
-fn stability_map_report(scene: &Scene, d: &DynamicsEvaluation) -> Option<StabilityMapReport> {
+fn stability_map_report(scene: &MeshProblem, d: &DynamicsEvaluation) -> Option<StabilityMapReport> {
     d.stability_map.as_ref().map(|rows| {
         let unstable_ranges = d
             .unstable_ranges

@@ -8,7 +8,8 @@ use super::number::{m, Num, Q};
 use crate::evaluate::records::RowKind;
 use crate::evaluate::{Evaluation, LawEvaluation, PointEvaluation, Tally};
 use crate::friction::Regime;
-use crate::model::{Formulation, FrictionLawSpec, Scene};
+use crate::mesh::MeshProblem;
+use crate::model::{Formulation, FrictionLawSpec};
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct MuRow {
@@ -187,7 +188,7 @@ pub fn film_rows(pe: &PointEvaluation) -> Option<Vec<FilmRow>> {
 
 /// The efficiency records the report keeps (every point of a small sweep; the plotted ones of a
 /// large one), from the run's tally.
-pub fn efficiency_records(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<EfficiencyRecord> {
+pub fn efficiency_records(scene: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Vec<EfficiencyRecord> {
     let helical = eval.geometry.helix_angle != 0.0;
     tally
         .kept
@@ -237,7 +238,7 @@ fn note_at_points(note: &crate::evaluate::tally::LawNote, points: usize) -> Stri
 }
 
 /// Findings about the laws: their notes, validity, divergence handling, over every point of the run.
-pub fn law_findings(scene: &Scene, eval: &Evaluation, tally: &Tally) -> Vec<Finding> {
+pub fn law_findings(scene: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Vec<Finding> {
     let mut out: Vec<Finding> = Vec::new();
     let push = |out: &mut Vec<Finding>, severity, message: String| {
         if !out.iter().any(|f| f.message == message) {

@@ -55,7 +55,7 @@ pub use scene_report::{PlotKind, PlotRef, Report};
 pub use slug::slug;
 
 use crate::evaluate::{Evaluation, Plan, Tally};
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 pub use crate::evaluate::{pick, MAX_CURVES};
 
@@ -66,7 +66,7 @@ pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
 
 /// Builds the report of an evaluated scene: the detail points from `eval`, everything over the
 /// sweep from the run's `tally`.
-pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
+pub fn build_report(scene: &MeshProblem, eval: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
     let mut findings = checks::findings(scene, eval);
     findings.extend(friction::law_findings(scene, eval, tally));
     findings.extend(plausibility::plausibility_findings(tally, scene::units(scene)));
@@ -137,7 +137,7 @@ pub fn build_report(scene: &Scene, eval: &Evaluation, tally: &Tally, plan: &Plan
 }
 
 /// The mesh stiffness from the teeth and the transmission error: their records, findings and plots.
-fn with_teeth(report: &mut Report, scene: &Scene, eval: &Evaluation, t: &crate::evaluate::teeth::TeethDetails) {
+fn with_teeth(report: &mut Report, scene: &MeshProblem, eval: &Evaluation, t: &crate::evaluate::teeth::TeethDetails) {
     let s = teeth::stiffness_report(scene, t);
     report.findings.extend(teeth::teeth_findings(scene, &s));
     report.stiffness = Some(s);
@@ -155,7 +155,7 @@ fn with_teeth(report: &mut Report, scene: &Scene, eval: &Evaluation, t: &crate::
 
 /// The plots of the sweeps, the map, the composite law, the film and the loss budget, as the
 /// report's records call for them.
-fn sweep_plots(report: &mut Report, scene: &Scene, eval: &Evaluation, plan: &Plan) {
+fn sweep_plots(report: &mut Report, scene: &MeshProblem, eval: &Evaluation, plan: &Plan) {
     let sweeps = &scene.operating;
     if !report.efficiency.is_empty() {
         if sweeps.pinion_speed.values.len() > 1 {

@@ -3,24 +3,29 @@
 //! cannot be one oil's at one temperature.
 
 use super::finding::{Finding, Severity};
-use crate::model::Scene;
+use crate::model::{Lubricant, Operating};
 
 /// Densities of oils (kg/m³): gear oils are 800–1100 (mineral ≈ 885, PAO ≈ 850, PAG ≈ 1000–1060 at
 /// 15 °C); outside this band the η and ν a scene gives cannot both be one oil's at one temperature.
 pub(crate) const OIL_DENSITY_RANGE: [f64; 2] = [700.0, 1200.0];
 
 /// Both warnings, in the order a report lists them.
-pub(super) fn oil_warnings(scene: &Scene, u: super::units::Units) -> Vec<Finding> {
+/// The oil is `lubricant` at the operating block's oil temperature.
+pub(super) fn oil_warnings(lubricant: Option<&Lubricant>, op: &Operating, u: super::units::Units) -> Vec<Finding> {
     let warn = |message: String| Finding { severity: Severity::Warning, message };
-    oil_temperature_warning(scene, u).into_iter().chain(implied_density_warning(scene, u)).map(warn).collect()
+    oil_temperature_warning(lubricant, op, u)
+        .into_iter()
+        .chain(implied_density_warning(lubricant, u))
+        .map(warn)
+        .collect()
 }
 
 /// A warning when the oil temperature is above its base oil's typical service limit
 /// ([`crate::tribology::lubricant::service_limit_celsius`]).
-fn oil_temperature_warning(scene: &Scene, u: super::units::Units) -> Option<String> {
-    let l = scene.lubricant.as_ref()?;
+fn oil_temperature_warning(lubricant: Option<&Lubricant>, op: &Operating, u: super::units::Units) -> Option<String> {
+    let l = lubricant?;
     let base = l.oil.as_ref()?.base;
-    let kelvin = scene.operating.oil_temperature.as_ref()?.value.value;
+    let kelvin = op.oil_temperature.as_ref()?.value.value;
     let limit = crate::tribology::lubricant::service_limit_celsius(base)?;
     let deg = u.temperature();
     (kelvin - 273.15 > limit).then(|| {
@@ -39,8 +44,8 @@ fn oil_temperature_warning(scene: &Scene, u: super::units::Units) -> Option<Stri
 /// two viscosities are then most likely at different temperatures or one is in a mistaken unit,
 /// and every film thickness and law that reads η is off by that factor. An oil given by grade or by
 /// ν40, ν100 and ρ15 is one oil by construction.
-fn implied_density_warning(scene: &Scene, u: super::units::Units) -> Option<String> {
-    let l = scene.lubricant.as_ref()?;
+fn implied_density_warning(lubricant: Option<&Lubricant>, u: super::units::Units) -> Option<String> {
+    let l = lubricant?;
     if l.oil.is_some() {
         return None;
     }

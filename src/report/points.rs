@@ -7,7 +7,7 @@ use super::friction;
 use super::number::{m, mps, pa, Num, Q};
 use crate::evaluate::{Evaluation, PointEvaluation};
 use crate::geometry::ContactPoint;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct OperatingPointReport {
@@ -120,7 +120,11 @@ pub(super) fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> Cont
     }
 }
 
-pub(super) fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &PointEvaluation) -> OperatingPointReport {
+pub(super) fn operating_point_report(
+    scene: &MeshProblem,
+    eval: &Evaluation,
+    pe: &PointEvaluation,
+) -> OperatingPointReport {
     let g = &eval.geometry;
     let label = eval.cases[pe.case].label.clone();
     OperatingPointReport {
@@ -139,7 +143,7 @@ pub(super) fn operating_point_report(scene: &Scene, eval: &Evaluation, pe: &Poin
     }
 }
 
-pub(super) fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
+pub(super) fn curves(scene: &MeshProblem, eval: &Evaluation) -> Curves {
     let c = &eval.contact_curves;
     Curves {
         u: c.u.clone(),
@@ -153,7 +157,7 @@ pub(super) fn curves(scene: &Scene, eval: &Evaluation) -> Curves {
     }
 }
 
-pub(super) fn point_curves(scene: &Scene, eval: &Evaluation) -> Vec<PointCurves> {
+pub(super) fn point_curves(scene: &MeshProblem, eval: &Evaluation) -> Vec<PointCurves> {
     let mut out = Vec::new();
     for pe in &eval.points {
         if !pe.has_curves || pe.laws.is_empty() {

@@ -2,7 +2,8 @@
 
 pub use super::input_row::{InputRow, SiValue};
 use super::number::{Num, Q};
-use crate::model::{Given, ModuleSource, Scene};
+use crate::mesh::MeshProblem;
+use crate::model::{Given, ModuleSource};
 use crate::scene::units::SiQuantity;
 
 pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Given<T>, unit: &'static str) {
@@ -15,7 +16,7 @@ pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Give
 
 /// The unit system report.md shows results in: inch–pound when the pair is sized in inches (a
 /// diametral pitch, or the module, transverse module or face width written in an inch length).
-pub(super) fn unit_system(scene: &Scene) -> super::number::UnitSystem {
+pub(super) fn unit_system(scene: &MeshProblem) -> super::number::UnitSystem {
     pair_unit_system(&scene.gears)
 }
 
@@ -36,13 +37,13 @@ pub(super) fn pair_unit_system(g: &crate::model::GearPair) -> super::number::Uni
 }
 
 /// The units findings and tables show this scene's results in.
-pub(super) fn units(scene: &Scene) -> super::units::Units {
+pub(super) fn units(scene: &MeshProblem) -> super::units::Units {
     super::units::Units::of_system(unit_system(scene))
 }
 
 /// The Scene table of a pair's report (the per-mesh evaluation's): its gears and its oil (a scene
 /// of one pair's gearbox and housing are its one-stage drive's, `super::drive_inputs`).
-pub(super) fn inputs(scene: &Scene) -> Vec<InputRow> {
+pub(super) fn inputs(scene: &MeshProblem) -> Vec<InputRow> {
     let mut rows = Vec::new();
     pair_inputs(&mut rows, &scene.gears, ("", ["pinion", "wheel"]));
     if let Some(l) = &scene.lubricant {

@@ -159,7 +159,7 @@ pub(crate) fn sweep_findings(tally: &Tally, plan: &Plan) -> Vec<Finding> {
 
 /// Mean |μ| of every composite law at the kept points, one per point and law (the efficiency rows of
 /// one law repeat it per formulation), for the composite plot.
-pub(crate) fn composite_mu(scene: &crate::model::Scene, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
+pub(crate) fn composite_mu(scene: &crate::mesh::MeshProblem, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
     let mut out: Vec<(usize, f64, f64, String, f64)> = Vec::new();
     let mut last: Option<(usize, usize)> = None;
     for r in &tally.kept {

@@ -10,7 +10,7 @@ use super::number::{Num, Q};
 use crate::evaluate::teeth::TeethDetails;
 use crate::geometry::teeth::iso_6336_method_b::{IsoStiffness, C_M};
 use crate::geometry::teeth::transmission_error::series_positions;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 /// A series of values in one SI unit.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -149,7 +149,7 @@ fn located(value: f64, unit: &'static str, position: f64) -> Located {
 }
 
 /// The stiffness section.
-pub(crate) fn stiffness_report(scene: &Scene, t: &TeethDetails) -> TeethStiffnessReport {
+pub(crate) fn stiffness_report(scene: &MeshProblem, t: &TeethDetails) -> TeethStiffnessReport {
     let k = &t.sharing.stiffness;
     let [lo, hi] = k.engagement();
     let pair_s = series_positions(lo, hi, &k.contact_ends());
@@ -230,7 +230,7 @@ pub(crate) fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionEr
 
 /// A relief above a tenth of the module; a body outside the range of Sainsot's fit; a dynamic
 /// model that reads the unrelieved teeth.
-pub(crate) fn teeth_findings(scene: &Scene, s: &TeethStiffnessReport) -> Vec<Finding> {
+pub(crate) fn teeth_findings(scene: &MeshProblem, s: &TeethStiffnessReport) -> Vec<Finding> {
     let mut out = Vec::new();
     let m_n = scene.gears.module.value.value;
     let micro = super::scene::units(scene).micro();

@@ -8,7 +8,7 @@ use super::teeth::TransmissionErrorReport;
 use crate::evaluate::Evaluation;
 use crate::geometry::contact::Sharing;
 use crate::geometry::OperatingState;
-use crate::model::Scene;
+use crate::mesh::MeshProblem;
 
 /// The largest static transmission error the linear model is read at, as a fraction of the normal
 /// module: the potential-energy method treats the tooth as a beam under small deflections (Yang &
@@ -27,7 +27,7 @@ pub(crate) const MAX_HERTZ_PRESSURE: f64 = 2.0e9;
 /// The warnings for every asked torque whose STE peak or single-pair Hertzian pressure at the
 /// pitch point (the whole normal load on one pair: F_bn / b) leaves the linear range.
 pub(super) fn linear_range_findings(
-    scene: &Scene,
+    scene: &MeshProblem,
     eval: &Evaluation,
     reports: &[TransmissionErrorReport],
 ) -> Vec<Finding> {

@@ -269,7 +269,7 @@ pub(crate) fn thermal_findings(
 ) -> Vec<Finding> {
     let mut out = Vec::new();
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
-    let deg = super::scene::units(scene).temperature();
+    let deg = super::units::Units::of_system(super::scene::pair_unit_system(&scene.gears)).temperature();
     let celsius = |q: &Q| deg.with(q.si(), 1);
     let (torque, speed) = (
         super::number::DisplayUnit::of(&scene.operating.pinion_torque),

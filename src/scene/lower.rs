@@ -8,7 +8,7 @@ use super::ast::*;
 use super::fields::{checked_scale, Fields};
 use super::lower_friction::{check_friction_needs, lower_friction};
 use super::lower_gears::{block_label, lower_gears, lower_material};
-use super::lower_operating::{check_oil_sweep, check_record_rows, lower_operating};
+use super::lower_operating::{check_oil_sweep, lower_operating};
 pub use super::lower_operating::{MAX_DETAIL_POINTS, MAX_RECORD_ROWS};
 use super::units::Dimension;
 use crate::diagnostics::{Diagnostic, DiagnosticKind};
@@ -212,8 +212,7 @@ fn lower_any(ast: &SceneAst, base_dir: Option<&std::path::Path>, one_pair: bool)
                 analyses,
                 drive: None,
             };
-            super::lower_dynamics::check_frequency_ratio(&scene, &mut errors);
-            check_record_rows(&scene, &mut errors);
+            errors.extend(super::lower_stage_analyses::check_pair_at_state(&scene.pair_alone()));
             if errors.is_empty() {
                 Ok(scene)
             } else {

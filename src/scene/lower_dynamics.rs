@@ -11,7 +11,7 @@ use crate::dynamics::models::catalog::{entry, MODELS};
 use crate::dynamics::DynamicFormulation;
 use crate::geometry::stiffness::catalog::named_models;
 use crate::geometry::stiffness::StiffnessId;
-use crate::model::{DynamicModel, DynamicsSpec, Gear, Scene, Solver, StiffnessSpec};
+use crate::model::{DynamicModel, DynamicsSpec, Gear, Solver, StiffnessSpec};
 
 const KEYS: &[&str] =
     &["model", "formulations", "mesh_stiffness", "damping_ratio", "friction", "solver", "transmission_error"];
@@ -325,7 +325,7 @@ pub(crate) const MAX_FREQUENCY_RATIO: f64 = 5_000.0;
 
 /// Refuses dynamics at speeds so low that f_n/f_mesh exceeds [`MAX_FREQUENCY_RATIO`] (f_n from the
 /// stiffest mesh state, an upper bound), naming the lowest speed allowed.
-pub(super) fn check_frequency_ratio(scene: &Scene, errors: &mut Vec<Diagnostic>) {
+pub(super) fn check_frequency_ratio(scene: &crate::mesh::MeshProblem, errors: &mut Vec<Diagnostic>) {
     let (Some(spec), a) = (scene.dynamics.as_ref(), &scene.analyses) else { return };
     if !(a.dynamics || a.numerics || a.stability_map.is_some()) {
         return;

@@ -68,7 +68,7 @@ pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Op
 /// 20 GB of records.csv.
 pub const MAX_RECORD_ROWS: u128 = 100_000_000;
 
-pub(super) fn check_record_rows(scene: &Scene, errors: &mut Vec<Diagnostic>) {
+pub(super) fn check_record_rows(scene: &crate::mesh::MeshProblem, errors: &mut Vec<Diagnostic>) {
     let a = &scene.analyses;
     let per_law = a.efficiency.as_ref().map_or(usize::from(a.friction_along_loa), |f| f.len().max(1));
     let dynamics = if a.dynamics { scene.dynamics.as_ref().map_or(0, |d| d.formulations.len()) } else { 0 };

@@ -17,7 +17,7 @@
 use super::ast::Block;
 use super::lower_stage::StageDecl;
 use crate::diagnostics::{Diagnostic, DiagnosticKind, Span};
-use crate::model::{Analyses, DynamicsSpec, GearPair, Lubricant, Operating, Scene};
+use crate::model::{Analyses, DynamicsSpec, GearPair, Lubricant, Operating};
 
 /// What a drive's analyses of one pair are checked against.
 pub(super) struct StageAnalysesInputs<'a> {
@@ -142,9 +142,9 @@ fn check_pair(pair: &GearPair, i: &StageAnalysesInputs, errors: &mut Vec<Diagnos
     }
 }
 
-/// The checks of a scene of one pair that read its operating speeds and counts, on a scene of one
-/// pair built from a drive's stage at its operating state: every problem found.
-pub(crate) fn check_pair_at_state(scene: &Scene) -> Vec<Diagnostic> {
+/// The checks of one mesh's problem that read its operating speeds and counts (a scene of one
+/// pair's, a drive's stage mesh at its operating state): every problem found.
+pub(crate) fn check_pair_at_state(scene: &crate::mesh::MeshProblem) -> Vec<Diagnostic> {
     let mut errors = Vec::new();
     super::lower_dynamics::check_frequency_ratio(scene, &mut errors);
     super::lower_operating::check_record_rows(scene, &mut errors);

@@ -1,7 +1,7 @@
 //! What a checked scene will run, in words (`gearloss check`), and the blocks no analysis reads
 //! (a `dynamics` block without a dynamics analysis is otherwise ignored without a word).
 
-use crate::model::Scene;
+use crate::model::{Analyses, Scene};
 
 /// One line per analysis the scene asks for, with its size.
 pub fn would_run(scene: &Scene) -> Vec<String> {
@@ -96,9 +96,7 @@ pub fn unused_blocks(scene: &Scene) -> Vec<String> {
         || scene.operating.equilibrium.is_some()
         || cycle_transient;
     let mut out = Vec::new();
-    if scene.dynamics.is_some() && !(a.dynamics || a.stability_map.is_some() || a.numerics) {
-        out.push("the `dynamics` block is not used: no analysis asks for dynamics (add `dynamics`, `stability_map(...)` or `numerics` to `analyses`)".to_string());
-    }
+    out.extend(unused_dynamics(a, scene.dynamics.is_some()));
     let budget = a.efficiency.is_some() || a.efficiency_map.is_some() || thermal;
     if scene.gearbox.as_ref().is_some_and(|g| !g.is_empty()) && !budget {
         out.push("the `gearbox` block's lubrication, bearings and seals are not used: no analysis asks for the loss budget (add `efficiency` to `analyses`)".to_string());
@@ -112,13 +110,27 @@ pub fn unused_blocks(scene: &Scene) -> Vec<String> {
     if scene.duty_cycle.is_some() && a.duty_cycle.is_none() {
         out.push("the `duty_cycle` block is not used: add `duty_cycle` to `analyses`".to_string());
     }
+    out.extend(unused_laws(a, !scene.friction.is_empty(), thermal));
+    out
+}
+
+/// The blocks of one mesh's problem that no analysis it asks for reads: its `dynamics` block (when
+/// `dynamics` is given) and its friction laws (when `laws` are), as [`unused_blocks`] says them.
+pub(crate) fn unused_mesh_blocks(a: &Analyses, dynamics: bool, laws: bool) -> Vec<String> {
+    let thermal = a.thermal_balance.is_some() || a.duty_cycle.is_some();
+    unused_dynamics(a, dynamics).into_iter().chain(unused_laws(a, laws, thermal)).collect()
+}
+
+fn unused_dynamics(a: &Analyses, given: bool) -> Option<String> {
+    (given && !(a.dynamics || a.stability_map.is_some() || a.numerics)).then(|| "the `dynamics` block is not used: no analysis asks for dynamics (add `dynamics`, `stability_map(...)` or `numerics` to `analyses`)".to_string())
+}
+
+/// `thermal`: the scene asks for a thermal balance (each of its analyses reads the laws).
+fn unused_laws(a: &Analyses, given: bool, thermal: bool) -> Option<String> {
     let laws = a.efficiency.is_some()
         || a.efficiency_map.is_some()
         || a.friction_along_loa
         || a.drive_cycle.is_some()
         || thermal;
-    if !scene.friction.is_empty() && !laws {
-        out.push("the friction laws are not used: no analysis asks for friction (add `efficiency` or `friction_along_loa` to `analyses`)".to_string());
-    }
-    out
+    (given && !laws).then(|| "the friction laws are not used: no analysis asks for friction (add `efficiency` or `friction_along_loa` to `analyses`)".to_string())
 }

@@ -111,7 +111,7 @@ fn each_stage_mesh_reports_what_its_pair_alone_reports() {
         let gears = format!("    gears {{\n        {head}\n        pinion {pinion}\n        wheel {wheel}\n    }}");
         let source = pair_alone_source(p, &stage.title, &gears, rpm);
         let alone = gearloss::check("alone.gear", &source).unwrap_or_else(|e| panic!("{e}\n{source}"));
-        let (a, b) = (gearloss::report_of(stage), gearloss::report_of(&alone));
+        let (a, b) = (gearloss::mesh_report(stage), gearloss::report_of(&alone));
         assert!(a.dynamics.is_some() && !a.efficiency.is_empty(), "the stage's report holds the analyses asked for");
         let numbers = assert_reports_agree(&format!("{a:?}"), &format!("{b:?}"), 1e-12);
         assert!(numbers > 1000, "only {numbers} numbers compared");
