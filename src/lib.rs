@@ -2,11 +2,19 @@
 //! gearloss: gear mesh friction, efficiency and dynamics from a `.gear` scene.
 //!
 //! ```text
-//!  scene.gear ─parse─▶ SceneAst ─lower─▶ Scene ─evaluate─▶ Evaluation ─report─▶ Report ─render─▶ report folder
-//!   (text)     pest    (syntax)  units,  (uom,   cases,     (SI f64)    serde   (data)  md, json,  (written to a
-//!                                names,  checked) only what                              svg        temp folder,
-//!                                checks           is asked                                          then renamed)
+//!  scene.gear ─parse─▶ SceneAst ─lower─▶ Scene ─────▶ MeshProblem ─evaluate─▶ Evaluation ─report─▶ Report ─render─▶ report folder
+//!   (text)     pest    (syntax)  units,  (uom,        each mesh at  cases,     (SI f64)    serde   (data)  md, json,  (written to a
+//!                                names,  checked,     its state:    only what                              svg        temp folder,
+//!                                checks  its drive)   pair_alone,   is asked                                          then renamed)
+//!                                          │          stage_pairs
+//!                                          └─evaluate_drive─▶ DriveEvaluation ─report─▶ DriveReport ─render─▶ (the folder's top)
 //! ```
+//!
+//! Every scene runs as its drive (a scene of one pair as its one-stage drive): the power walk over
+//! its stages, shafts and bearings gives the drive's report at the top of the folder. Each mesh it
+//! analyses goes through the stage functions below as a [`MeshProblem`] (the pair at the state the
+//! walk gives it, its oil, laws, dynamics and analyses; a scene's own pair: [`Scene::pair_alone`]):
+//! the per-mesh evaluation never reads the scene.
 //!
 //! One public function per stage: [`parse`], [`lower`] (its output printed by [`lowered`]), [`evaluate_sweep`] (the sweep streamed, its
 //! summary rows to the record files, its tally returned) with [`evaluate_details`] (the detail points in
@@ -31,7 +39,8 @@
 //!    dynamics, cases)             efficiency and dynamics at each point, only what the scene asks for
 //!  scene/                         the language: grammar, parse, units, lowering to the model
 //!  model, mesh                    the lowered scene (uom quantities, what the user wrote); a checked
-//!                                 mesh (one pair and its lubricant), what a pair's evaluation reads
+//!                                 mesh (one pair and its lubricant) and a MeshProblem (the mesh over
+//!                                 its states, laws, dynamics, analyses), what a mesh's evaluation reads
 //!  rexs/                          REXS gear-unit models (XML, JSON, zip) read into a commented scene
 //!  vehicle/                       a vehicle over a drive cycle: the speed trace, the road load, the
 //!                                 cycle's pieces with exact wheel energies (the box's losses over them
@@ -145,29 +154,29 @@ pub fn check(source_name: &str, source: &str) -> Result<Scene, SceneErrors> {
 
 /// Stage 3's detail points in memory: every point of a sweep of up to 100 points in full (tests and
 /// benches); a larger sweep's detail points only — its every point goes through [`evaluate_sweep`].
-pub fn evaluate(scene: &MeshProblem) -> Evaluation {
-    evaluate::evaluate_scene(scene)
+pub fn evaluate(problem: &MeshProblem) -> Evaluation {
+    evaluate::evaluate_mesh(problem)
 }
 
 /// Stage 3, the sweep: the plan's points streamed, their summary rows written to `sink` in sweep
 /// order, their tally returned. Memory does not grow with the sweep.
 pub fn evaluate_sweep(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     plan: &Plan,
     sink: &mut dyn RecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<Tally> {
-    Ok(evaluate::stages::stream(scene, plan, sink, progress)?.tally)
+    Ok(evaluate::stages::stream(problem, plan, sink, progress)?.tally)
 }
 
 /// Stage 3, the details: the plan's detail points in full, the contact curves and the dynamics.
-pub fn evaluate_details(scene: &MeshProblem, plan: &Plan, progress: &dyn Progress) -> Evaluation {
-    evaluate::stages::details(scene, plan, &Default::default(), progress)
+pub fn evaluate_details(problem: &MeshProblem, plan: &Plan, progress: &dyn Progress) -> Evaluation {
+    evaluate::stages::details(problem, plan, &Default::default(), progress)
 }
 
 /// Stage 4: the serde report data, from the detail points and the tally of every point.
-pub fn report(scene: &MeshProblem, evaluation: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
-    report::build_report(scene, evaluation, tally, plan)
+pub fn report(problem: &MeshProblem, evaluation: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
+    report::build_report(problem, evaluation, tally, plan)
 }
 
 /// Stage 5: the files of the report folder (the record files are written as the sweep runs).

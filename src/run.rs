@@ -33,12 +33,12 @@ pub fn report_of(scene: &Scene) -> Report {
 /// Stages 3 and 4 of the per-mesh evaluation in memory, the record rows dropped: the report of one
 /// mesh's problem (a scene's pair alone, [`Scene::pair_alone`], or a drive's stage mesh at its
 /// operating state, `evaluate::stage_pairs`).
-pub fn mesh_report(scene: &MeshProblem) -> Report {
-    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let streamed = stream(scene, &plan, &mut evaluate::records::NoRecords, &Quiet)
+pub fn mesh_report(problem: &MeshProblem) -> Report {
+    let plan = Plan::new(&problem.operating, None, &problem.operating.detail_points);
+    let streamed = stream(problem, &plan, &mut evaluate::records::NoRecords, &Quiet)
         .expect("records that go nowhere cannot fail to be written");
-    let eval = details(scene, &plan, &streamed, &Quiet);
-    report::build_report(scene, &eval, &streamed.tally, &plan)
+    let eval = details(problem, &plan, &streamed, &Quiet);
+    report::build_report(problem, &eval, &streamed.tally, &plan)
 }
 
 /// The per-mesh evaluation alone, in memory: the scene's pair (`scene.gears`) alone evaluated,
@@ -48,7 +48,7 @@ pub fn mesh_report(scene: &MeshProblem) -> Report {
 /// this is the stage beneath it, for a library user or a test of the pair's own modules.
 pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
     let scene = &evaluate::first_balance::at_first_balance(scene);
-    let (_, files) = crate::run_pair::run_scene_to_files(&scene.pair_alone())?;
+    let (_, files) = crate::run_pair::run_mesh_to_files(&scene.pair_alone())?;
     Ok(RenderedReport { slug: report::slug(&scene.title), files })
 }
 

@@ -1,6 +1,6 @@
-//! One pair's scene (at one oil temperature) run after its sweep: the details evaluated, reported
+//! One mesh's problem ([`MeshProblem`]) run after its sweep: the details evaluated, reported
 //! and rendered (`finish_exact`), and the whole run in memory with its record files
-//! ([`run_scene_to_files`]): the per-mesh evaluation each stage mesh a drive's run analyses goes
+//! ([`run_mesh_to_files`]): the per-mesh evaluation each stage mesh a drive's run analyses goes
 //! through (a scene of one pair's, `stages/pair/`, among them): into a folder, as a shard's part and
 //! merged from shards, as the drive's run ([`crate::run_stage_pairs`]) asks; and a pair's
 //! report.json drawn again ([`redraw`], for `gearloss render`).
@@ -22,12 +22,12 @@ use crate::run_error::{Failure, FailureKind, RunError};
 use crate::run_kind::Redrawn;
 use crate::shard::{self, ShardSet};
 
-/// Whether the scene's run writes record files (it asks for friction or per-point dynamics).
-pub fn has_records(scene: &MeshProblem) -> bool {
-    let a = &scene.analyses;
+/// Whether the mesh's run writes record files (it asks for friction or per-point dynamics).
+pub fn has_records(problem: &MeshProblem) -> bool {
+    let a = &problem.analyses;
     a.friction_along_loa
         || a.efficiency.is_some()
-        || (a.dynamics && scene.dynamics.is_some())
+        || (a.dynamics && problem.dynamics.is_some())
         || a.transmission_error.is_some()
 }
 
@@ -35,39 +35,39 @@ pub fn has_records(scene: &MeshProblem) -> bool {
 /// render; the report as built, before report.json rounds its numbers, and as report.json reads
 /// it back.
 fn finish_exact(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     plan: &Plan,
     tally: &Tally,
     known: &evaluate::stream::Streamed,
     progress: &dyn Progress,
 ) -> Result<(Report, Report, RenderedReport), RunError> {
-    let eval = details(scene, plan, known, progress);
+    let eval = details(problem, plan, known, progress);
     progress.stage("report", 1);
-    let report = report::build_report(scene, &eval, tally, plan);
+    let report = report::build_report(problem, &eval, tally, plan);
     let timings = eval.dynamics.as_ref().and_then(report::dynamics::timings);
     progress.stage("render", 1);
     let (written, rendered) = render_as_written(&report, timings.as_ref())?;
     Ok((report, written, rendered))
 }
 
-/// One scene (at one oil temperature) run in memory: its report (as report.json reads back) and
+/// One mesh's problem run in memory: its report (as report.json reads back) and
 /// files, the record files included.
-pub(crate) fn run_scene_to_files(scene: &MeshProblem) -> Result<(Report, Vec<(String, String)>), RunError> {
-    run_scene_exact(scene).map(|(_, report, files)| (report, files))
+pub(crate) fn run_mesh_to_files(problem: &MeshProblem) -> Result<(Report, Vec<(String, String)>), RunError> {
+    run_mesh_exact(problem).map(|(_, report, files)| (report, files))
 }
 
 /// A pair's run in memory: the report as built, as report.json reads it back, and the files.
 pub(crate) type ExactRun = (Report, Report, Vec<(String, String)>);
 
-/// [`run_scene_to_files`] with the report as built, its numbers unrounded, first.
-pub(crate) fn run_scene_exact(scene: &MeshProblem) -> Result<ExactRun, RunError> {
-    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
-    let extra = evaluate::records::ExtraColumns::of(scene);
+/// [`run_mesh_to_files`] with the report as built, its numbers unrounded, first.
+pub(crate) fn run_mesh_exact(problem: &MeshProblem) -> Result<ExactRun, RunError> {
+    let plan = Plan::new(&problem.operating, None, &problem.operating.detail_points);
+    let extra = evaluate::records::ExtraColumns::of(problem);
     let mut sink =
         RecordFiles::new(RecordFormats::default(), &extra, |_| Ok(Vec::new())).map_err(RunError::io("records"))?;
-    let streamed = stream(scene, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
-    let (exact, report, mut rendered) = finish_exact(scene, &plan, &streamed.tally, &streamed, &Quiet)?;
-    if has_records(scene) {
+    let streamed = stream(problem, &plan, &mut sink, &Quiet).map_err(RunError::io("records"))?;
+    let (exact, report, mut rendered) = finish_exact(problem, &plan, &streamed.tally, &streamed, &Quiet)?;
+    if has_records(problem) {
         let (csv, jsonl) = sink.finish().map_err(RunError::io("records"))?;
         let text = |b: Option<Vec<u8>>| String::from_utf8(b.expect("the default formats")).expect("records are UTF-8");
         rendered.files.push((report::sweep::RECORDS_CSV.into(), text(csv)));
@@ -79,15 +79,15 @@ pub(crate) fn run_scene_exact(scene: &MeshProblem) -> Result<ExactRun, RunError>
 /// A pair's run into `folder` under `dir` (`""`: the top), its record files of `formats` streamed
 /// as its sweep runs: the report as built, as report.json reads it back, and the files written.
 pub(crate) fn run_in_folder_exact(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     (folder, dir): (&ReportFolder, &str),
     formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<(Report, Report, Vec<String>), RunError> {
-    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let plan = Plan::new(&problem.operating, None, &problem.operating.detail_points);
     let path = |f: &str| crate::folder::in_dir(dir, f);
-    let (streamed, mut files) = stream_into(scene, &plan, (folder, dir), formats, progress)?;
-    let (exact, report, rendered) = finish_exact(scene, &plan, &streamed.tally, &streamed, progress)?;
+    let (streamed, mut files) = stream_into(problem, &plan, (folder, dir), formats, progress)?;
+    let (exact, report, rendered) = finish_exact(problem, &plan, &streamed.tally, &streamed, progress)?;
     progress.stage("write", rendered.files.len() as u64);
     for (file, content) in &rendered.files {
         folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
@@ -100,14 +100,14 @@ pub(crate) fn run_in_folder_exact(
 /// A shard of a pair's sweep into `folder` under `dir` (`""`: the top): its points' tally and the
 /// record files of `formats` written.
 pub(crate) fn shard_in_folder(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     shard: Shard,
     at: (&ReportFolder, &str),
     formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<(Tally, Vec<String>), RunError> {
-    let plan = Plan::new(&scene.operating, Some(shard), &scene.operating.detail_points);
-    let (streamed, files) = stream_into(scene, &plan, at, formats, progress)?;
+    let plan = Plan::new(&problem.operating, Some(shard), &problem.operating.detail_points);
+    let (streamed, files) = stream_into(problem, &plan, at, formats, progress)?;
     Ok((streamed.tally, files))
 }
 
@@ -116,14 +116,14 @@ pub(crate) fn shard_in_folder(
 /// The report as built, as report.json reads it back, and the files written.
 pub(crate) fn merge_in_folder(
     set: &ShardSet,
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     (folder, dir): (&ReportFolder, &str),
     progress: &dyn Progress,
 ) -> Result<(Report, Report, Vec<String>), RunError> {
-    let plan = Plan::new(&scene.operating, None, &scene.operating.detail_points);
+    let plan = Plan::new(&problem.operating, None, &problem.operating.detail_points);
     let path = |f: &str| crate::folder::in_dir(dir, f);
     let mut files = Vec::new();
-    if has_records(scene) {
+    if has_records(problem) {
         progress.stage("merge", set.folders.len() as u64);
         files.extend(
             set.concatenate_into::<crate::evaluate::pair_records::PairRecords>((folder, dir), progress)
@@ -131,7 +131,7 @@ pub(crate) fn merge_in_folder(
         );
     }
     let tally: Tally = set.tally().map_err(RunError::Shards)?;
-    let (exact, report, rendered) = finish_exact(scene, &plan, &tally, &Default::default(), progress)?;
+    let (exact, report, rendered) = finish_exact(problem, &plan, &tally, &Default::default(), progress)?;
     for (file, content) in &rendered.files {
         folder.write(&path(file), content.as_bytes()).map_err(RunError::io("the report folder"))?;
         files.push(path(file));
@@ -183,21 +183,21 @@ pub(crate) fn render_as_written(
 }
 
 /// The plan's points streamed into the record files of `folder` under `dir` (`""`: the top), when
-/// the scene writes records; returns the stream and the record files written.
+/// the problem writes records; returns the stream and the record files written.
 fn stream_into(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     plan: &Plan,
     (folder, dir): (&ReportFolder, &str),
     formats: RecordFormats,
     progress: &dyn Progress,
 ) -> Result<(Streamed, Vec<String>), RunError> {
     let io = RunError::io("the record files");
-    if !has_records(scene) {
-        return Ok((stream(scene, plan, &mut evaluate::records::NoRecords, progress).map_err(io)?, Vec::new()));
+    if !has_records(problem) {
+        return Ok((stream(problem, plan, &mut evaluate::records::NoRecords, progress).map_err(io)?, Vec::new()));
     }
     let mut sink =
-        shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(scene), formats).map_err(&io)?;
-    let streamed = stream(scene, plan, &mut sink, progress).map_err(&io)?;
+        shard::record_files(folder, dir, &evaluate::records::ExtraColumns::of(problem), formats).map_err(&io)?;
+    let streamed = stream(problem, plan, &mut sink, progress).map_err(&io)?;
     sink.finish().map_err(&io)?;
     let path = |f: &str| crate::folder::in_dir(dir, f);
     Ok((streamed, formats.files().into_iter().map(path).collect()))

@@ -33,7 +33,7 @@ pub(crate) fn stage_pair_files(
 ) -> Result<(StagePairFiles, StagePairReports), RunError> {
     let mut files = Vec::new();
     let (rows, reports) = stage_pair_rows(scene, drive, |alone, dir| {
-        let (report, _, run_files) = crate::run_pair::run_scene_exact(alone)?;
+        let (report, _, run_files) = crate::run_pair::run_mesh_exact(alone)?;
         files.extend(run_files.into_iter().map(|(f, c)| (format!("{dir}/{f}"), c)));
         Ok(report)
     })?;

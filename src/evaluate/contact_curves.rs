@@ -21,9 +21,9 @@ pub struct ContactCurves {
 }
 
 /// The contact curves of the contact-state plot.
-pub(super) fn contact_curves(scene: &MeshProblem, eval: &Setup) -> ContactCurves {
+pub(super) fn contact_curves(problem: &MeshProblem, eval: &Setup) -> ContactCurves {
     let u = eval.curve_positions();
-    let op = &scene.operating;
+    let op = &problem.operating;
     let torque0 = op.pinion_torque.values[0].value;
     let speed0 = op.pinion_speed.values[0].value;
     let at = |t: f64, n: f64| -> Vec<ContactPoint> {

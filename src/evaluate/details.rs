@@ -14,7 +14,7 @@ use crate::mesh::MeshProblem;
 /// `known` is what the sweep's stream already computed (dynamics by point number, the teeth),
 /// reused as it is.
 pub fn evaluate_details(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     eval: &mut Evaluation,
     plan: &Plan,
     known: &super::stream::Streamed,
@@ -31,7 +31,11 @@ pub fn evaluate_details(
                 eval.film_inputs.map(|(inputs, lambda)| table.iter().map(|(_, c)| inputs.film(c, lambda)).collect());
             let curves = plan.curves.binary_search(&case.index).is_ok();
             let laws = if eval.wants_friction {
-                scene.friction.iter().map(|spec| laws::evaluate_law(eval, spec, state, &table, true, curves)).collect()
+                problem
+                    .friction
+                    .iter()
+                    .map(|spec| laws::evaluate_law(eval, spec, state, &table, true, curves))
+                    .collect()
             } else {
                 Vec::new()
             };
@@ -41,8 +45,12 @@ pub fn evaluate_details(
         })
         .collect();
     eval.points = points;
-    eval.contact_curves = contact_curves::contact_curves(scene, eval);
-    eval.dynamics =
-        dynamics::evaluate_dynamics(scene, &eval.cases, eval.law_context(eval.cases[0].state), &known.detail_dynamics);
-    eval.teeth = known.teeth.clone().or_else(|| teeth::teeth_details(scene, &eval.geometry));
+    eval.contact_curves = contact_curves::contact_curves(problem, eval);
+    eval.dynamics = dynamics::evaluate_dynamics(
+        problem,
+        &eval.cases,
+        eval.law_context(eval.cases[0].state),
+        &known.detail_dynamics,
+    );
+    eval.teeth = known.teeth.clone().or_else(|| teeth::teeth_details(problem, &eval.geometry));
 }

@@ -67,13 +67,13 @@ pub struct DynamicsEvaluation {
     pub numerics: Option<(DynamicFormulation, usize, Study)>,
 }
 
-fn stiffness_model(scene: &MeshProblem, spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
-    (spec.stiffness.build(g, &scene.gears.bodies()), spec.stiffness.source())
+fn stiffness_model(problem: &MeshProblem, spec: &DynamicsSpec, g: &PairGeometry) -> (StiffnessModel, &'static str) {
+    (spec.stiffness.build(g, &problem.gears.bodies()), spec.stiffness.source())
 }
 
-fn inertia(scene: &MeshProblem) -> Option<[f64; 2]> {
+fn inertia(problem: &MeshProblem) -> Option<[f64; 2]> {
     let j = |g: &crate::model::Gear| g.inertia.as_ref().map(|j| j.value.value);
-    Some([j(&scene.gears.pinion)?, j(&scene.gears.wheel)?])
+    Some([j(&problem.gears.pinion)?, j(&problem.gears.wheel)?])
 }
 
 fn system<'a>(
@@ -136,18 +136,20 @@ pub(crate) struct DynamicsSetup<'a> {
 }
 
 impl<'a> DynamicsSetup<'a> {
-    /// The setup when the scene has a `dynamics` block and the inputs its model needs (the gears'
+    /// The setup when the mesh's problem has a `dynamics` block and the inputs its model needs (the gears'
     /// inertias, and masses and bearings on bearings: lowering refuses a scene that asks for dynamics
-    /// without them); `base` is the law context of the scene's pair (its state is replaced by each
+    /// without them); `base` is the law context of the problem's pair (its state is replaced by each
     /// operating point's).
-    pub(crate) fn new(scene: &'a MeshProblem, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
-        let spec = scene.dynamics.as_ref()?;
-        let inertia = inertia(scene)?;
+    pub(crate) fn new(problem: &'a MeshProblem, base: LawContext<'a>) -> Option<DynamicsSetup<'a>> {
+        let spec = problem.dynamics.as_ref()?;
+        let inertia = inertia(problem)?;
         let mass = |g: &crate::model::Gear| g.mass.as_ref().map(|m| m.value.value);
-        let inputs =
-            ModelInputs { mass: [mass(&scene.gears.pinion), mass(&scene.gears.wheel)], bearings: spec.model.bearings };
+        let inputs = ModelInputs {
+            mass: [mass(&problem.gears.pinion), mass(&problem.gears.wheel)],
+            bearings: spec.model.bearings,
+        };
         let model = (spec.model.id.entry().build)(&inputs)?;
-        let (stiffness, source) = stiffness_model(scene, spec, base.geometry);
+        let (stiffness, source) = stiffness_model(problem, spec, base.geometry);
         Some(DynamicsSetup { base, spec, stiffness, source, inertia, model })
     }
 
@@ -205,19 +207,19 @@ impl<'a> DynamicsSetup<'a> {
     }
 }
 
-/// Evaluates the dynamics the scene asks for at the given cases (the detail points), the stability
+/// Evaluates the dynamics the mesh's problem asks for at the given cases (the detail points), the stability
 /// map and the numerics study; None when it asks for none.
-/// `base` is the law context of the scene's pair (its state is replaced by each operating point's).
+/// `base` is the law context of the problem's pair (its state is replaced by each operating point's).
 /// `known` holds dynamics already computed by the sweep's stream, by point number (0-based); the
 /// cases among them are not computed again.
 pub(crate) fn evaluate_dynamics(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     cases: &[Case],
     base: LawContext,
     known: &[(usize, DynamicsPoint)],
 ) -> Option<DynamicsEvaluation> {
-    let setup = DynamicsSetup::new(scene, base)?;
-    let a = &scene.analyses;
+    let setup = DynamicsSetup::new(problem, base)?;
+    let a = &problem.analyses;
     if !(a.dynamics || a.stability_map.is_some() || a.numerics) {
         return None;
     }
@@ -293,7 +295,7 @@ pub(crate) fn evaluate_dynamics(
         stiffness: setup.stiffness.clone(),
         stiffness_source: setup.source,
         iso_6336: matches!(spec.stiffness, StiffnessSpec::Named(StiffnessId::Iso6336))
-            .then(|| iso_6336::method_b(setup.base.geometry, &scene.gears.bodies())),
+            .then(|| iso_6336::method_b(setup.base.geometry, &problem.gears.bodies())),
         damping_ratio: spec.damping_ratio,
         equivalent_mass: probe.equivalent_mass,
         damping: probe.damping,

@@ -73,11 +73,11 @@ pub use tally::Tally;
 pub use teeth::{teeth_details, TeethDetails};
 pub use thermal::DutyCycleResult;
 
-/// Evaluates a lowered scene in full: every operating point in detail (small scenes, tests and
+/// Evaluates one mesh's problem in full: every operating point in detail (small scenes, tests and
 /// benches; a run over a sweep uses [`prepare`], [`stream::evaluate_records`] and [`evaluate_details`]).
-pub fn evaluate_scene(scene: &MeshProblem) -> Evaluation {
-    let plan = Plan::new(&scene.operating, None, &[]);
-    let mut eval = prepare(scene, &plan);
-    evaluate_details(scene, &mut eval, &plan, &Default::default(), &|| {});
+pub fn evaluate_mesh(problem: &MeshProblem) -> Evaluation {
+    let plan = Plan::new(&problem.operating, None, &[]);
+    let mut eval = prepare(problem, &plan);
+    evaluate_details(problem, &mut eval, &plan, &Default::default(), &|| {});
     eval
 }

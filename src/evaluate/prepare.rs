@@ -11,35 +11,35 @@ use crate::mesh::MeshProblem;
 use crate::tribology::FilmInputs;
 
 /// Everything but the operating points: geometry, materials, lubricant, the fixed sample positions.
-/// Lowering has checked the geometry, so this cannot fail on a lowered scene.
-pub fn prepare(scene: &MeshProblem, plan: &Plan) -> Evaluation {
-    let mesh = scene.mesh();
+/// Lowering has checked the geometry, so this cannot fail on a lowered mesh.
+pub fn prepare(problem: &MeshProblem, plan: &Plan) -> Evaluation {
+    let mesh = problem.mesh();
     let geometry = mesh.geometry();
     let e_r = mesh.reduced_modulus();
     let tribology = mesh.tribology(e_r);
-    let analyses = &scene.analyses;
+    let analyses = &problem.analyses;
     let film_inputs = tribology.pressure_viscosity.filter(|_| analyses.film).map(|alpha| {
         let inputs = FilmInputs {
             dynamic_viscosity: tribology.dynamic_viscosity,
             pressure_viscosity: alpha,
             reduced_modulus: e_r,
         };
-        let cutoff = scene.friction.iter().find_map(|l| l.argument("filter_cutoff")).unwrap_or(0.8e-3);
+        let cutoff = problem.friction.iter().find_map(|l| l.argument("filter_cutoff")).unwrap_or(0.8e-3);
         (inputs, tribology.rq_composite.map(|rq| (rq, cutoff)))
     });
     let mut setup = Setup {
-        cases: plan.detail_cases(&scene.operating),
+        cases: plan.detail_cases(&problem.operating),
         ohlendorf_loss_factor: 0.0,
         table_rows: table_positions(&geometry),
         positions: Vec::new(),
         geometry,
         reduced_modulus: e_r,
-        sharing: scene.gears.load_sharing,
-        stiffness_sharing: (scene.gears.load_sharing == crate::model::LoadSharing::Stiffness)
+        sharing: problem.gears.load_sharing,
+        stiffness_sharing: (problem.gears.load_sharing == crate::model::LoadSharing::Stiffness)
             .then(|| {
-                scene.gears.pair_stiffness().map(|stiffness| crate::geometry::teeth::load_sharing::LoadSharing {
+                problem.gears.pair_stiffness().map(|stiffness| crate::geometry::teeth::load_sharing::LoadSharing {
                     stiffness,
-                    reliefs: scene.gears.reliefs(),
+                    reliefs: problem.gears.reliefs(),
                 })
             })
             .flatten(),

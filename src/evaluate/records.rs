@@ -184,9 +184,9 @@ pub struct ExtraColumns {
 }
 
 impl ExtraColumns {
-    /// The scene's columns.
-    pub fn of(scene: &crate::mesh::MeshProblem) -> ExtraColumns {
-        let ste = if scene.analyses.transmission_error.is_some() {
+    /// The mesh problem's columns.
+    pub fn of(problem: &crate::mesh::MeshProblem) -> ExtraColumns {
+        let ste = if problem.analyses.transmission_error.is_some() {
             super::ste_row::SteRow::COLUMNS.iter().map(|c| c.to_string()).collect()
         } else {
             Vec::new()

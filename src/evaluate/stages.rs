@@ -11,23 +11,23 @@ use crate::progress::Progress;
 /// The plan's points streamed: summary rows to `sink` in sweep order, the tally and the detail
 /// points' dynamics returned.
 pub(crate) fn stream(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     plan: &Plan,
     sink: &mut dyn RecordSink,
     progress: &dyn Progress,
 ) -> std::io::Result<Streamed> {
-    let eval = super::prepare::prepare(scene, plan);
+    let eval = super::prepare::prepare(problem, plan);
     progress.stage("evaluate", plan.range.len() as u64);
-    evaluate_records(scene, &eval, plan, sink, &|n| {
+    evaluate_records(problem, &eval, plan, sink, &|n| {
         progress.advance(n as u64);
         !progress.cancelled()
     })
 }
 
 /// The plan's detail points in full, reusing what the stream computed (`known`).
-pub(crate) fn details(scene: &MeshProblem, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
-    let mut eval = super::prepare::prepare(scene, plan);
+pub(crate) fn details(problem: &MeshProblem, plan: &Plan, known: &Streamed, progress: &dyn Progress) -> Evaluation {
+    let mut eval = super::prepare::prepare(problem, plan);
     progress.stage("details", plan.detail.len() as u64);
-    super::details::evaluate_details(scene, &mut eval, plan, known, &|| progress.advance(1));
+    super::details::evaluate_details(problem, &mut eval, plan, known, &|| progress.advance(1));
     eval
 }

@@ -35,19 +35,19 @@ pub struct Streamed {
 /// `tick(n)` is called after each block with the number of points it held; when it answers false
 /// the run stops there with an `Interrupted` error.
 pub fn evaluate_records(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     eval: &Setup,
     plan: &Plan,
     sink: &mut dyn RecordSink,
     tick: &(dyn Fn(usize) -> bool + Sync),
 ) -> std::io::Result<Streamed> {
-    let labels: Vec<String> = scene.friction.iter().map(|l| l.label()).collect();
-    let dynamics =
-        DynamicsSetup::new(scene, eval.law_context(state_at(&scene.operating, 0))).filter(|_| scene.analyses.dynamics);
+    let labels: Vec<String> = problem.friction.iter().map(|l| l.label()).collect();
+    let dynamics = DynamicsSetup::new(problem, eval.law_context(state_at(&problem.operating, 0)))
+        .filter(|_| problem.analyses.dynamics);
     let mut out = Streamed::default();
     // The transmission error's rows come first, from the run (or shard) that holds point 1.
-    if plan.range.start == 0 && scene.analyses.transmission_error.is_some() {
-        out.teeth = super::teeth::teeth_details(scene, &eval.geometry);
+    if plan.range.start == 0 && problem.analyses.transmission_error.is_some() {
+        out.teeth = super::teeth::teeth_details(problem, &eval.geometry);
         if let Some(teeth) = &out.teeth {
             sink.write_rows(&transmission_error_rows(teeth))?;
         }
@@ -57,7 +57,7 @@ pub fn evaluate_records(
         let end = (start + BLOCK).min(plan.range.end);
         let block: Vec<Summary> = (start..end)
             .into_par_iter()
-            .map(|k| point_summary(scene, eval, plan, &labels, dynamics.as_ref(), k))
+            .map(|k| point_summary(problem, eval, plan, &labels, dynamics.as_ref(), k))
             .collect();
         for (k, (rows, t, d)) in (start..end).zip(block) {
             sink.write_rows(&rows)?;
@@ -79,14 +79,14 @@ type Summary = (Vec<SummaryRow>, Tally, Option<DynamicsPoint>);
 
 /// The rows and the tally of point `k`.
 fn point_summary(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     eval: &Setup,
     plan: &Plan,
     labels: &[String],
     dynamics: Option<&DynamicsSetup>,
     k: usize,
 ) -> Summary {
-    let op = &scene.operating;
+    let op = &problem.operating;
     let state = state_at(op, k);
     let (ti, si) = (k / plan.speeds, k % plan.speeds);
     let table = contact_table(eval, &state);
@@ -102,7 +102,7 @@ fn point_summary(
     }));
     if eval.wants_friction {
         let input = state.pinion_torque * state.pinion_speed;
-        for (i, spec) in scene.friction.iter().enumerate() {
+        for (i, spec) in problem.friction.iter().enumerate() {
             let law = evaluate_law(eval, spec, state, &table, false, false);
             let law_row = SummaryRow {
                 law_index: Some(i),
@@ -127,7 +127,7 @@ fn point_summary(
     let mut dynamics_point = None;
     if let Some(setup) = dynamics {
         let point = setup.point(k, state);
-        let law = scene.dynamics.as_ref().and_then(|d| d.friction.as_ref());
+        let law = problem.dynamics.as_ref().and_then(|d| d.friction.as_ref());
         for r in &point.results {
             let friction = law.filter(|_| r.formulation != crate::dynamics::DynamicFormulation::Base);
             let resp = r.response.as_ref();

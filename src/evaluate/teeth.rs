@@ -21,18 +21,18 @@ pub struct TeethDetails {
     pub transmission_error: Vec<TransmissionError>,
 }
 
-/// The details, when the scene asks for them (lowering has checked that they can be computed).
-pub fn teeth_details(scene: &MeshProblem, g: &PairGeometry) -> Option<TeethDetails> {
-    if !scene.gears.wants_teeth(&scene.analyses, scene.dynamics.as_ref()) {
+/// The details, when the mesh's problem asks for them (lowering has checked that they can be computed).
+pub fn teeth_details(problem: &MeshProblem, g: &PairGeometry) -> Option<TeethDetails> {
+    if !problem.gears.wants_teeth(&problem.analyses, problem.dynamics.as_ref()) {
         return None;
     }
-    let stiffness = scene.gears.pair_stiffness()?;
-    let iso = iso_6336::method_b(g, &scene.gears.bodies());
+    let stiffness = problem.gears.pair_stiffness()?;
+    let iso = iso_6336::method_b(g, &problem.gears.bodies());
     let xtol = 1e-13 * stiffness.path;
     let scale = stiffness.per_width(0.5 * stiffness.path);
     let (_, (k, at)) = extrema(|s| stiffness.per_width(s) / scale, &[0.0, stiffness.path], 32, xtol);
-    let sharing = LoadSharing { stiffness, reliefs: scene.gears.reliefs() };
-    let torques = scene.analyses.transmission_error.as_ref().map_or(&[][..], |t| &t.values[..]);
+    let sharing = LoadSharing { stiffness, reliefs: problem.gears.reliefs() };
+    let torques = problem.analyses.transmission_error.as_ref().map_or(&[][..], |t| &t.values[..]);
     let transmission_error =
         torques.iter().map(|t| sharing.transmission_error(t.value, g.base_radius[0])).collect::<Vec<_>>();
     Some(TeethDetails { sharing, iso, max_single: (k * scale, at), transmission_error })

@@ -7,23 +7,23 @@ use crate::geometry::TipSource;
 use crate::mesh::MeshProblem;
 use crate::model::LoadSharing;
 
-pub(super) fn findings(scene: &MeshProblem, eval: &Evaluation) -> Vec<Finding> {
+pub(super) fn findings(problem: &MeshProblem, eval: &Evaluation) -> Vec<Finding> {
     let g = &eval.geometry;
-    let units = super::scene::units(scene);
+    let units = super::scene::units(problem);
     let len = units.length();
     let mut out = Vec::new();
     let note = |m: String| Finding { severity: Severity::Note, message: m };
     let warn = |m: String| Finding { severity: Severity::Warning, message: m };
     out.extend(
         crate::scene::summary::unused_mesh_blocks(
-            &scene.analyses,
-            scene.dynamics.is_some(),
-            !scene.friction.is_empty(),
+            &problem.analyses,
+            problem.dynamics.is_some(),
+            !problem.friction.is_empty(),
         )
         .into_iter()
         .map(warn),
     );
-    out.extend(super::oil_checks::oil_warnings(scene.lubricant.as_ref(), &scene.operating, units));
+    out.extend(super::oil_checks::oil_warnings(problem.lubricant.as_ref(), &problem.operating, units));
     for (i, name) in [(0, "pinion"), (1, "wheel")] {
         out.push(note(match g.tip_source[i] {
             TipSource::Given => format!("{name} tip diameter as given: {}", len.with(2.0 * g.tip_radius[i], 4)),
@@ -70,7 +70,7 @@ pub(super) fn findings(scene: &MeshProblem, eval: &Evaluation) -> Vec<Finding> {
             len.with(g.center_distance, 4)
         )));
     }
-    let by_stiffness = scene.gears.load_sharing == LoadSharing::Stiffness;
+    let by_stiffness = problem.gears.load_sharing == LoadSharing::Stiffness;
     if by_stiffness && eval.stiffness_sharing.is_none() {
         out.push(warn(
             "`load_sharing = stiffness`: the teeth's stiffness could not be computed, so the load is shared equally"
@@ -81,7 +81,7 @@ pub(super) fn findings(scene: &MeshProblem, eval: &Evaluation) -> Vec<Finding> {
         out.extend(helical_findings(g, by_stiffness && eval.stiffness_sharing.is_some(), len));
         return out;
     }
-    out.push(note(match scene.gears.load_sharing {
+    out.push(note(match problem.gears.load_sharing {
         LoadSharing::Equal => "load sharing: equal (1/n of the normal load on each of n pairs in contact)".into(),
         LoadSharing::None => "load sharing: none (every contact carries the whole normal load)".into(),
         LoadSharing::Stiffness => "load sharing: by stiffness (pair j carries k_j max(0, δ − e_j) of the potential-energy stiffness and tip relief, δ closing the balance at each torque)".into(),

@@ -144,7 +144,7 @@ pub(crate) fn timings(d: &DynamicsEvaluation) -> Option<Timings> {
     })
 }
 
-pub(crate) fn dynamics_report(scene: &MeshProblem, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
+pub(crate) fn dynamics_report(problem: &MeshProblem, eval: &Evaluation, d: &DynamicsEvaluation) -> DynamicsReport {
     let shape = d.stiffness.shape();
     let stiffness = stiffness_report(&shape);
     let g = &eval.geometry;
@@ -171,7 +171,7 @@ pub(crate) fn dynamics_report(scene: &MeshProblem, eval: &Evaluation, d: &Dynami
             }
         })
         .collect();
-    let stability_map = stability_map_report(scene, d);
+    let stability_map = stability_map_report(problem, d);
     let numerics = numerics_report(d);
     DynamicsReport {
         model: d.model.into(),
@@ -190,7 +190,7 @@ pub(crate) fn dynamics_report(scene: &MeshProblem, eval: &Evaluation, d: &Dynami
         natural_frequency: Q::new(d.natural_frequency, "Hz"),
         natural_frequencies: d.natural_frequencies.iter().map(|f| Q::new(*f, "Hz")).collect(),
         stiffness_ratio: d.stiffness_ratio.map(Num),
-        friction: scene.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
+        friction: problem.dynamics.as_ref().and_then(|s| s.friction.as_ref()).map(super::friction::law_label),
         friction_diverges_at_pitch: d.friction_diverges_at_pitch,
         points,
         stability_map,
@@ -200,7 +200,7 @@ pub(crate) fn dynamics_report(scene: &MeshProblem, eval: &Evaluation, d: &Dynami
 }
 
 /// The stability map over speed at the first torque: ρ and K_v per formulation, the unstable ranges.
-fn stability_map_report(scene: &MeshProblem, d: &DynamicsEvaluation) -> Option<StabilityMapReport> {
+fn stability_map_report(problem: &MeshProblem, d: &DynamicsEvaluation) -> Option<StabilityMapReport> {
     d.stability_map.as_ref().map(|rows| {
         let unstable_ranges = d
             .unstable_ranges
@@ -208,10 +208,10 @@ fn stability_map_report(scene: &MeshProblem, d: &DynamicsEvaluation) -> Option<S
             .map(|ranges| ranges.iter().map(|(a, b)| [Q::new(*a, "rad/s"), Q::new(*b, "rad/s")]).collect())
             .collect();
         StabilityMapReport {
-            pinion_torque: Q::new(scene.operating.pinion_torque.values[0].value, "N*m"),
+            pinion_torque: Q::new(problem.operating.pinion_torque.values[0].value, "N*m"),
             formulations: d.formulations.clone(),
             unstable_ranges,
-            speed_unit: scene.analyses.stability_map.as_ref().map(DisplayUnit::of).unwrap_or_default(),
+            speed_unit: problem.analyses.stability_map.as_ref().map(DisplayUnit::of).unwrap_or_default(),
             points: rows
                 .iter()
                 .map(|r| StabilityRow {

@@ -188,14 +188,14 @@ pub fn film_rows(pe: &PointEvaluation) -> Option<Vec<FilmRow>> {
 
 /// The efficiency records the report keeps (every point of a small sweep; the plotted ones of a
 /// large one), from the run's tally.
-pub fn efficiency_records(scene: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Vec<EfficiencyRecord> {
+pub fn efficiency_records(problem: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Vec<EfficiencyRecord> {
     let helical = eval.geometry.helix_angle != 0.0;
     tally
         .kept
         .iter()
         .filter(|r| r.kind == RowKind::Efficiency)
         .filter_map(|r| {
-            let spec = &scene.friction[r.law_index?];
+            let spec = &problem.friction[r.law_index?];
             Some(EfficiencyRecord {
                 case: r.point - 1,
                 torque_index: r.torque_index,
@@ -238,7 +238,7 @@ fn note_at_points(note: &crate::evaluate::tally::LawNote, points: usize) -> Stri
 }
 
 /// Findings about the laws: their notes, validity, divergence handling, over every point of the run.
-pub fn law_findings(scene: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Vec<Finding> {
+pub fn law_findings(problem: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Vec<Finding> {
     let mut out: Vec<Finding> = Vec::new();
     let push = |out: &mut Vec<Finding>, severity, message: String| {
         if !out.iter().any(|f| f.message == message) {
@@ -249,8 +249,8 @@ pub fn law_findings(scene: &MeshProblem, eval: &Evaluation, tally: &Tally) -> Ve
         // Laws no analysis reads are a scene check's warning (`crate::scene::summary::unused_blocks`).
         return out;
     }
-    let len = super::scene::units(scene).length();
-    for (spec, law) in scene.friction.iter().zip(&tally.laws) {
+    let len = super::scene::units(problem).length();
+    for (spec, law) in problem.friction.iter().zip(&tally.laws) {
         let label = law_label(spec);
         for note in &law.notes {
             let severity = if note.text.contains("LOW CONFIDENCE") || note.text.contains("underestimated") {

@@ -64,35 +64,35 @@ pub fn formulation_name(f: crate::model::Formulation) -> &'static str {
     f.name()
 }
 
-/// Builds the report of an evaluated scene: the detail points from `eval`, everything over the
+/// Builds the report of an evaluated mesh problem: the detail points from `eval`, everything over the
 /// sweep from the run's `tally`.
-pub fn build_report(scene: &MeshProblem, eval: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
-    let mut findings = checks::findings(scene, eval);
-    findings.extend(friction::law_findings(scene, eval, tally));
-    findings.extend(plausibility::plausibility_findings(tally, scene::units(scene)));
+pub fn build_report(problem: &MeshProblem, eval: &Evaluation, tally: &Tally, plan: &Plan) -> Report {
+    let mut findings = checks::findings(problem, eval);
+    findings.extend(friction::law_findings(problem, eval, tally));
+    findings.extend(plausibility::plausibility_findings(tally, scene::units(problem)));
     findings.extend(sweep::sweep_findings(tally, plan));
     let mut report = Report {
-        title: scene.title.clone(),
-        slug: slug(&scene.title),
-        inputs: scene::inputs(scene),
+        title: problem.title.clone(),
+        slug: slug(&problem.title),
+        inputs: scene::inputs(problem),
         geometry: geometry::geometry_report(eval),
-        operating_points: eval.points.iter().map(|p| points::operating_point_report(scene, eval, p)).collect(),
-        efficiency: friction::efficiency_records(scene, eval, tally),
+        operating_points: eval.points.iter().map(|p| points::operating_point_report(problem, eval, p)).collect(),
+        efficiency: friction::efficiency_records(problem, eval, tally),
         records: sweep::records_report(tally, plan),
-        sweep: sweep::sweep_report(tally, plan, &scene.operating),
-        dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(scene, eval, d)),
-        lubricant: scene.lubricant.as_ref().map(|l| losses::lubricant_report(l, &eval.tribology)),
+        sweep: sweep::sweep_report(tally, plan, &problem.operating),
+        dynamics: eval.dynamics.as_ref().map(|d| dynamics::dynamics_report(problem, eval, d)),
+        lubricant: problem.lubricant.as_ref().map(|l| losses::lubricant_report(l, &eval.tribology)),
         findings,
         plots: vec![PlotRef::new(
             PlotKind::ContactState,
             "Sliding velocity, slide-to-roll ratio and Hertzian pressure along the line of action",
         )],
-        curves: points::curves(scene, eval),
-        speed_unit: number::DisplayUnit::of(&scene.operating.pinion_speed),
-        torque_unit: number::DisplayUnit::of(&scene.operating.pinion_torque),
-        unit_system: scene::unit_system(scene),
+        curves: points::curves(problem, eval),
+        speed_unit: number::DisplayUnit::of(&problem.operating.pinion_speed),
+        torque_unit: number::DisplayUnit::of(&problem.operating.pinion_torque),
+        unit_system: scene::unit_system(problem),
         sweep_curves: (plan.curve_indices().0.to_vec(), plan.curve_indices().1.to_vec()),
-        composite_mu: sweep::composite_mu(scene, tally),
+        composite_mu: sweep::composite_mu(problem, tally),
         map_grid: sweep::has_map(plan).then(|| {
             let (t, s) = plan.map_grid();
             (t.to_vec(), s.to_vec())
@@ -101,7 +101,7 @@ pub fn build_report(scene: &MeshProblem, eval: &Evaluation, tally: &Tally, plan:
         transmission_error: Vec::new(),
     };
     if let Some(t) = &eval.teeth {
-        with_teeth(&mut report, scene, eval, t);
+        with_teeth(&mut report, problem, eval, t);
     }
     if report.geometry.helical.is_some() {
         report.plots.push(PlotRef::new(
@@ -129,7 +129,7 @@ pub fn build_report(scene: &MeshProblem, eval: &Evaluation, tally: &Tally, plan:
             op.plot = Some(pc.file.clone());
         }
     }
-    sweep_plots(&mut report, scene, eval, plan);
+    sweep_plots(&mut report, problem, eval, plan);
     for path in non_finite_paths(&report) {
         report.findings.push(Finding { severity: Severity::Warning, message: format!("not a finite number: {path}") });
     }
@@ -137,12 +137,12 @@ pub fn build_report(scene: &MeshProblem, eval: &Evaluation, tally: &Tally, plan:
 }
 
 /// The mesh stiffness from the teeth and the transmission error: their records, findings and plots.
-fn with_teeth(report: &mut Report, scene: &MeshProblem, eval: &Evaluation, t: &crate::evaluate::teeth::TeethDetails) {
-    let s = teeth::stiffness_report(scene, t);
-    report.findings.extend(teeth::teeth_findings(scene, &s));
+fn with_teeth(report: &mut Report, problem: &MeshProblem, eval: &Evaluation, t: &crate::evaluate::teeth::TeethDetails) {
+    let s = teeth::stiffness_report(problem, t);
+    report.findings.extend(teeth::teeth_findings(problem, &s));
     report.stiffness = Some(s);
     report.transmission_error = teeth::transmission_error_reports(t);
-    report.findings.extend(teeth_validity::linear_range_findings(scene, eval, &report.transmission_error));
+    report.findings.extend(teeth_validity::linear_range_findings(problem, eval, &report.transmission_error));
     report.plots.push(PlotRef::new(
         PlotKind::MeshStiffness,
         "Mesh stiffness from the teeth over two mesh cycles, one pair's stiffness, and ISO 6336-1's c_γα",
@@ -155,8 +155,8 @@ fn with_teeth(report: &mut Report, scene: &MeshProblem, eval: &Evaluation, t: &c
 
 /// The plots of the sweeps, the map, the composite law, the film and the loss budget, as the
 /// report's records call for them.
-fn sweep_plots(report: &mut Report, scene: &MeshProblem, eval: &Evaluation, plan: &Plan) {
-    let sweeps = &scene.operating;
+fn sweep_plots(report: &mut Report, problem: &MeshProblem, eval: &Evaluation, plan: &Plan) {
+    let sweeps = &problem.operating;
     if !report.efficiency.is_empty() {
         if sweeps.pinion_speed.values.len() > 1 {
             report
@@ -181,7 +181,7 @@ fn sweep_plots(report: &mut Report, scene: &MeshProblem, eval: &Evaluation, plan
             .push(PlotRef::new(PlotKind::MapEfficiency, "Mean efficiency and power loss over the torque × speed map"));
     }
     if sweeps.pinion_speed.values.len() > 1
-        && scene.friction.iter().any(|l| l.law == crate::friction::catalog::LawId::Composite)
+        && problem.friction.iter().any(|l| l.law == crate::friction::catalog::LawId::Composite)
         && eval.wants_friction
     {
         report.plots.push(PlotRef::new(

@@ -121,7 +121,7 @@ pub(super) fn contact_row(point: Option<&'static str>, c: &ContactPoint) -> Cont
 }
 
 pub(super) fn operating_point_report(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     eval: &Evaluation,
     pe: &PointEvaluation,
 ) -> OperatingPointReport {
@@ -138,12 +138,17 @@ pub(super) fn operating_point_report(
         pitch_line_velocity: mps(pe.state.pinion_speed * g.working_pitch_radius[0]),
         contact: pe.table.iter().map(|(n, c)| contact_row(*n, c)).collect(),
         film: friction::film_rows(pe),
-        friction: scene.friction.iter().zip(&pe.laws).map(|(spec, law)| friction::law_report(spec, pe, law)).collect(),
+        friction: problem
+            .friction
+            .iter()
+            .zip(&pe.laws)
+            .map(|(spec, law)| friction::law_report(spec, pe, law))
+            .collect(),
         plot: None,
     }
 }
 
-pub(super) fn curves(scene: &MeshProblem, eval: &Evaluation) -> Curves {
+pub(super) fn curves(problem: &MeshProblem, eval: &Evaluation) -> Curves {
     let c = &eval.contact_curves;
     Curves {
         u: c.u.clone(),
@@ -152,12 +157,12 @@ pub(super) fn curves(scene: &MeshProblem, eval: &Evaluation) -> Curves {
         hertz_pressure: c.hertz_pressure.clone(),
         load_share: c.load_share.clone(),
         marks: eval.geometry.named_points().into_iter().map(|(n, u)| (n.to_string(), u)).collect(),
-        points: point_curves(scene, eval),
+        points: point_curves(problem, eval),
         tau: crate::evaluate::cycle_times(),
     }
 }
 
-pub(super) fn point_curves(scene: &MeshProblem, eval: &Evaluation) -> Vec<PointCurves> {
+pub(super) fn point_curves(problem: &MeshProblem, eval: &Evaluation) -> Vec<PointCurves> {
     let mut out = Vec::new();
     for pe in &eval.points {
         if !pe.has_curves || pe.laws.is_empty() {
@@ -168,7 +173,7 @@ pub(super) fn point_curves(scene: &MeshProblem, eval: &Evaluation) -> Vec<PointC
             label: eval.cases[pe.case].label.clone(),
             ..Default::default()
         };
-        for (spec, law) in scene.friction.iter().zip(&pe.laws) {
+        for (spec, law) in problem.friction.iter().zip(&pe.laws) {
             let Some(c) = &law.curves else { continue };
             let label = friction::law_label(spec);
             pc.mu.push((label.clone(), c.mu.clone()));

@@ -16,8 +16,8 @@ pub(super) fn input<T: SiQuantity>(rows: &mut Vec<InputRow>, key: &str, g: &Give
 
 /// The unit system report.md shows results in: inch–pound when the pair is sized in inches (a
 /// diametral pitch, or the module, transverse module or face width written in an inch length).
-pub(super) fn unit_system(scene: &MeshProblem) -> super::number::UnitSystem {
-    pair_unit_system(&scene.gears)
+pub(super) fn unit_system(problem: &MeshProblem) -> super::number::UnitSystem {
+    pair_unit_system(&problem.gears)
 }
 
 /// [`unit_system`] of one pair: inch–pound when it is sized in inches.
@@ -36,17 +36,17 @@ pub(super) fn pair_unit_system(g: &crate::model::GearPair) -> super::number::Uni
     }
 }
 
-/// The units findings and tables show this scene's results in.
-pub(super) fn units(scene: &MeshProblem) -> super::units::Units {
-    super::units::Units::of_system(unit_system(scene))
+/// The units findings and tables show this mesh's results in.
+pub(super) fn units(problem: &MeshProblem) -> super::units::Units {
+    super::units::Units::of_system(unit_system(problem))
 }
 
 /// The Scene table of a pair's report (the per-mesh evaluation's): its gears and its oil (a scene
 /// of one pair's gearbox and housing are its one-stage drive's, `super::drive_inputs`).
-pub(super) fn inputs(scene: &MeshProblem) -> Vec<InputRow> {
+pub(super) fn inputs(problem: &MeshProblem) -> Vec<InputRow> {
     let mut rows = Vec::new();
-    pair_inputs(&mut rows, &scene.gears, ("", ["pinion", "wheel"]));
-    if let Some(l) = &scene.lubricant {
+    pair_inputs(&mut rows, &problem.gears, ("", ["pinion", "wheel"]));
+    if let Some(l) = &problem.lubricant {
         lubricant_inputs(&mut rows, l);
     }
     rows

@@ -159,12 +159,12 @@ pub(crate) fn sweep_findings(tally: &Tally, plan: &Plan) -> Vec<Finding> {
 
 /// Mean |μ| of every composite law at the kept points, one per point and law (the efficiency rows of
 /// one law repeat it per formulation), for the composite plot.
-pub(crate) fn composite_mu(scene: &crate::mesh::MeshProblem, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
+pub(crate) fn composite_mu(problem: &crate::mesh::MeshProblem, tally: &Tally) -> Vec<(usize, f64, f64, String, f64)> {
     let mut out: Vec<(usize, f64, f64, String, f64)> = Vec::new();
     let mut last: Option<(usize, usize)> = None;
     for r in &tally.kept {
         let Some(i) = r.law_index else { continue };
-        if scene.friction[i].law != crate::friction::catalog::LawId::Composite || last == Some((r.point, i)) {
+        if problem.friction[i].law != crate::friction::catalog::LawId::Composite || last == Some((r.point, i)) {
             continue;
         }
         last = Some((r.point, i));

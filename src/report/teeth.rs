@@ -149,13 +149,13 @@ fn located(value: f64, unit: &'static str, position: f64) -> Located {
 }
 
 /// The stiffness section.
-pub(crate) fn stiffness_report(scene: &MeshProblem, t: &TeethDetails) -> TeethStiffnessReport {
+pub(crate) fn stiffness_report(problem: &MeshProblem, t: &TeethDetails) -> TeethStiffnessReport {
     let k = &t.sharing.stiffness;
     let [lo, hi] = k.engagement();
     let pair_s = series_positions(lo, hi, &k.contact_ends());
     let s0 = k.position_at(0.0);
     let mesh_s = series_positions(s0, s0 + k.base_pitch, &k.contact_changes(s0));
-    let gears = [&scene.gears.pinion, &scene.gears.wheel];
+    let gears = [&problem.gears.pinion, &problem.gears.wheel];
     let bodies = ["pinion", "wheel"]
         .iter()
         .enumerate()
@@ -230,10 +230,10 @@ pub(crate) fn transmission_error_reports(t: &TeethDetails) -> Vec<TransmissionEr
 
 /// A relief above a tenth of the module; a body outside the range of Sainsot's fit; a dynamic
 /// model that reads the unrelieved teeth.
-pub(crate) fn teeth_findings(scene: &MeshProblem, s: &TeethStiffnessReport) -> Vec<Finding> {
+pub(crate) fn teeth_findings(problem: &MeshProblem, s: &TeethStiffnessReport) -> Vec<Finding> {
     let mut out = Vec::new();
-    let m_n = scene.gears.module.value.value;
-    let micro = super::scene::units(scene).micro();
+    let m_n = problem.gears.module.value.value;
+    let micro = super::scene::units(problem).micro();
     for b in &s.bodies {
         if let Some(r) = &b.tip_relief {
             if r.amount.si() > 0.1 * m_n {
@@ -273,7 +273,7 @@ pub(crate) fn teeth_findings(scene: &MeshProblem, s: &TeethStiffnessReport) -> V
         }
     }
     let relieved = s.bodies.iter().any(|b| b.tip_relief.is_some());
-    if relieved && scene.dynamics.as_ref().is_some_and(|d| d.stiffness.is_potential_energy()) {
+    if relieved && problem.dynamics.as_ref().is_some_and(|d| d.stiffness.is_potential_energy()) {
         out.push(Finding {
             severity: Severity::Note,
             message: "the dynamic model reads the stiffness of the unmodified teeth: the tip relief changes the load sharing and the transmission error here, not the dynamics".into(),

@@ -27,13 +27,13 @@ pub(crate) const MAX_HERTZ_PRESSURE: f64 = 2.0e9;
 /// The warnings for every asked torque whose STE peak or single-pair Hertzian pressure at the
 /// pitch point (the whole normal load on one pair: F_bn / b) leaves the linear range.
 pub(super) fn linear_range_findings(
-    scene: &MeshProblem,
+    problem: &MeshProblem,
     eval: &Evaluation,
     reports: &[TransmissionErrorReport],
 ) -> Vec<Finding> {
     let (g, e_r) = (&eval.geometry, eval.reduced_modulus);
-    let u = units(scene);
-    let m_n = scene.gears.module.value.value;
+    let u = units(problem);
+    let m_n = problem.gears.module.value.value;
     let mut out = Vec::new();
     for te in reports {
         let torque = te.pinion_torque.si();

@@ -325,21 +325,21 @@ pub(crate) const MAX_FREQUENCY_RATIO: f64 = 5_000.0;
 
 /// Refuses dynamics at speeds so low that f_n/f_mesh exceeds [`MAX_FREQUENCY_RATIO`] (f_n from the
 /// stiffest mesh state, an upper bound), naming the lowest speed allowed.
-pub(super) fn check_frequency_ratio(scene: &crate::mesh::MeshProblem, errors: &mut Vec<Diagnostic>) {
-    let (Some(spec), a) = (scene.dynamics.as_ref(), &scene.analyses) else { return };
+pub(super) fn check_frequency_ratio(problem: &crate::mesh::MeshProblem, errors: &mut Vec<Diagnostic>) {
+    let (Some(spec), a) = (problem.dynamics.as_ref(), &problem.analyses) else { return };
     if !(a.dynamics || a.numerics || a.stability_map.is_some()) {
         return;
     }
-    let Ok(g) = scene.gears.geometry() else { return };
+    let Ok(g) = problem.gears.geometry() else { return };
     let j = |gear: &Gear| gear.inertia.as_ref().map(|j| j.value.value);
-    let (Some(j1), Some(j2)) = (j(&scene.gears.pinion), j(&scene.gears.wheel)) else { return };
-    let k_max = spec.stiffness.build(&g, &scene.gears.bodies()).upper_bound(&g);
+    let (Some(j1), Some(j2)) = (j(&problem.gears.pinion), j(&problem.gears.wheel)) else { return };
+    let k_max = spec.stiffness.build(&g, &problem.gears.bodies()).upper_bound(&g);
     let (rp, rw) = (g.base_radius[0], g.base_radius[1]);
     let m_e = j1 * j2 / (j1 * rw * rw + j2 * rp * rp);
     let f_n = (k_max / m_e).sqrt() / (2.0 * std::f64::consts::PI);
     let z1 = g.teeth[0] as f64;
     let lowest_allowed = f_n / MAX_FREQUENCY_RATIO / z1 * 2.0 * std::f64::consts::PI; // rad/s
-    let mut sweeps = vec![&scene.operating.pinion_speed];
+    let mut sweeps = vec![&problem.operating.pinion_speed];
     sweeps.extend(a.stability_map.as_ref());
     for sweep in sweeps {
         let lowest = sweep.values.iter().map(|w| w.value).fold(f64::INFINITY, f64::min);

@@ -68,20 +68,20 @@ pub(super) fn lower_operating(block: &Block, errors: &mut Vec<Diagnostic>) -> Op
 /// 20 GB of records.csv.
 pub const MAX_RECORD_ROWS: u128 = 100_000_000;
 
-pub(super) fn check_record_rows(scene: &crate::mesh::MeshProblem, errors: &mut Vec<Diagnostic>) {
-    let a = &scene.analyses;
+pub(super) fn check_record_rows(problem: &crate::mesh::MeshProblem, errors: &mut Vec<Diagnostic>) {
+    let a = &problem.analyses;
     let per_law = a.efficiency.as_ref().map_or(usize::from(a.friction_along_loa), |f| f.len().max(1));
-    let dynamics = if a.dynamics { scene.dynamics.as_ref().map_or(0, |d| d.formulations.len()) } else { 0 };
-    let per_point = (scene.friction.len() * per_law + dynamics) as u128;
-    let rows = scene.operating.count() as u128 * per_point;
+    let dynamics = if a.dynamics { problem.dynamics.as_ref().map_or(0, |d| d.formulations.len()) } else { 0 };
+    let per_point = (problem.friction.len() * per_law + dynamics) as u128;
+    let rows = problem.operating.count() as u128 * per_point;
     if rows > MAX_RECORD_ROWS {
         errors.push(
             Diagnostic::new(
                 DiagnosticKind::OutOfRange,
-                scene.operating.pinion_speed.span,
+                problem.operating.pinion_speed.span,
                 format!(
                     "{} operating points × {per_point} rows each (laws × formulations, dynamics) = {rows} summary rows, above the limit of {MAX_RECORD_ROWS}",
-                    scene.operating.count()
+                    problem.operating.count()
                 ),
             )
             .hint("fewer operating points or fewer laws; or split the study into several scenes"),

@@ -144,9 +144,9 @@ fn check_pair(pair: &GearPair, i: &StageAnalysesInputs, errors: &mut Vec<Diagnos
 
 /// The checks of one mesh's problem that read its operating speeds and counts (a scene of one
 /// pair's, a drive's stage mesh at its operating state): every problem found.
-pub(crate) fn check_pair_at_state(scene: &crate::mesh::MeshProblem) -> Vec<Diagnostic> {
+pub(crate) fn check_pair_at_state(problem: &crate::mesh::MeshProblem) -> Vec<Diagnostic> {
     let mut errors = Vec::new();
-    super::lower_dynamics::check_frequency_ratio(scene, &mut errors);
-    super::lower_operating::check_record_rows(scene, &mut errors);
+    super::lower_dynamics::check_frequency_ratio(problem, &mut errors);
+    super::lower_operating::check_record_rows(problem, &mut errors);
     errors
 }
