@@ -75,7 +75,7 @@ pub(crate) fn stage_pair_shard(
     progress: &dyn Progress,
 ) -> Result<ShardedStage, RunError> {
     let Some(p) = one_pair_sweep(scene, drive) else { return Ok((None, Vec::new())) };
-    let Some(alone) = p.scene.as_ref().filter(|a| check_pair_at_state(a).is_empty()) else {
+    let Some(alone) = p.problem.as_ref().filter(|a| check_pair_at_state(a).is_empty()) else {
         return Ok((None, Vec::new()));
     };
     let dir = folder_of(&p.stage_name, p.mesh, None);
@@ -140,7 +140,7 @@ fn stage_pair_rows(
             folder: None,
             not_run: None,
         };
-        if let Some(alone) = &p.scene {
+        if let Some(alone) = &p.problem {
             let refused = check_pair_at_state(alone);
             if let Some(d) = refused.first() {
                 row.not_run = Some(d.reason.clone());

@@ -176,7 +176,7 @@ fn stream_rows(
                 outside: &outside,
                 heat: balance.as_ref(),
             };
-            let cells = super::drive_records::cells(record.i, record.flow, record.row, record.outside, record.heat);
+            let cells = super::drive_records::cells(&record);
             tally.add(start + i, &row.point);
             tally.static_loads.add_drive_row(setup.layout(), start + i, &row.point);
             tally.add_cells(start + i, &cells);

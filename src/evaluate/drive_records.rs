@@ -133,16 +133,12 @@ pub(crate) fn jsonl_line(keys: &[String], cells: &[Cell], out: &mut Vec<u8>) {
     out.extend_from_slice(b"}\n");
 }
 
-/// One row's cells in [`columns`]' order; `outside`: by stage, the law's contacts outside its
-/// validity (of the contacts `super::setup::curve_positions` gives); `heat`: the row's balance at
-/// a given oil temperature, when the drive's rows carry theirs.
-pub(crate) fn cells(
-    i: usize,
-    flow: PowerFlow,
-    r: &DriveRow,
-    outside: &[usize],
-    heat: Option<&DriveBalanceRow>,
-) -> Vec<Cell> {
+/// One row's cells in [`columns`]' order: the record's row `i` (0-based) and its flow, its
+/// `outside` (by stage, the law's contacts outside its validity, of the contacts
+/// `super::setup::curve_positions` gives) and its `heat` (the row's balance at a given oil
+/// temperature, when the drive's rows carry theirs).
+pub(crate) fn cells(record: &DriveRecord<'_>) -> Vec<Cell> {
+    let DriveRecord { i, flow, row: r, outside, heat } = *record;
     let d = &r.point;
     let l = &d.losses;
     let int = |n: usize| Cell::Int(n as i64);
@@ -234,7 +230,7 @@ impl RecordTable for DriveRecords {
     }
 
     fn cells(&self, r: &DriveRecord<'_>) -> Vec<Cell> {
-        cells(r.i, r.flow, r.row, r.outside, r.heat)
+        cells(r)
     }
 
     fn jsonl_line(&self, _: &DriveRecord<'_>, cells: &[Cell], out: &mut Vec<u8>) {

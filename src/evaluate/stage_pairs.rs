@@ -41,7 +41,7 @@ pub struct StagePair {
     /// `ring` for the planet–ring mesh whichever drives, as the walk evaluates it).
     pub members: [&'static str; 2],
     /// The pair alone at that state; None where no torque or no speed goes through the mesh.
-    pub scene: Option<MeshProblem>,
+    pub problem: Option<MeshProblem>,
 }
 
 /// A mesh's state at one of the drive's operating points, from the drive's walk.
@@ -116,7 +116,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
                         mesh_efficiency: m.efficiency,
                     }),
                     members: m.members,
-                    scene: alone,
+                    problem: alone,
                 });
             }
         }
@@ -150,7 +150,7 @@ pub(crate) fn one_pair_sweep(scene: &Scene, drive: &SceneDrive) -> Option<StageP
         mesh: None,
         at: None,
         members: ["pinion", "wheel"],
-        scene: Some(alone),
+        problem: Some(alone),
     })
 }
 

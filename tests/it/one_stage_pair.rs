@@ -76,7 +76,7 @@ fn a_pairs_stage_is_the_pair_alone_over_its_sweep() {
         let stages = gearloss::evaluate::stage_pairs(&pair, pair.drive.as_ref().unwrap());
         assert_eq!(stages.len(), 1, "{name}");
         assert!(stages[0].at.is_none() && stages[0].stage_name == "pair", "{name}");
-        let alone = stages[0].scene.as_ref().expect("the pair alone");
+        let alone = stages[0].problem.as_ref().expect("the pair alone");
         assert_eq!(alone.operating.detail_points, pair.operating.detail_points, "{name}");
         let (a, p) = (gearloss::mesh_report(alone), gearloss::report_of(&pair));
         assert_eq!(a.efficiency.len(), p.efficiency.len(), "{name}");

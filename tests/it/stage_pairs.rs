@@ -92,7 +92,7 @@ fn each_stage_mesh_reports_what_its_pair_alone_reports() {
         |teeth: u32, rest: &str| format!("{{ teeth = {teeth}  material = steel  roughness_ra = 0.5 um  {rest} }}");
     let mut checked = 0;
     for p in &pairs {
-        let stage = p.scene.as_ref().expect("load goes through every mesh at these points");
+        let stage = p.problem.as_ref().expect("load goes through every mesh at these points");
         let (head, small, big) = if p.stage == 0 {
             (
                 "module = 1.5177 mm  pressure_angle = 20 deg  helix_angle = 23.4 deg  face_width = 35.44 mm",
