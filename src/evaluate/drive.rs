@@ -1,6 +1,6 @@
 //! A drive's evaluation: the drive walked through at every operating point, friction law and
-//! formulation (rows streamed to the records, the first kept for the report), over the map's grid,
-//! and the thermal balance of the kept rows.
+//! formulation (rows streamed to the records, the first and the detail points' kept for the
+//! report), over the map's grid, and the thermal balance of the kept rows.
 
 use super::drive_records::{drive_records_csv, DriveRecord, DriveRecordSink};
 use super::drive_setup::DriveSetup;
@@ -33,19 +33,20 @@ pub struct DriveEvaluation {
     pub loss_factors: Vec<Vec<f64>>,
 }
 
-/// Operating points (rows) a drive's report shows in full; the records hold every one.
+/// Operating points (rows) a drive's report shows in full from the first on, beside the rows of its
+/// detail points ([`kept_rows`]); the records hold every one.
 pub(crate) const DETAIL_ROWS: usize = 12;
 /// Rows evaluated together before they are written.
 const BLOCK: usize = 4096;
 
-/// Evaluates a drive scene in memory (its records dropped): its operating points (the first
-/// `DETAIL_ROWS` rows), its map and its thermal balance.
+/// Evaluates a drive scene in memory (its records dropped): its operating points (the kept rows:
+/// the first `DETAIL_ROWS` and the detail points'), its map and its thermal balance.
 pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
     evaluate_drive_into(scene, drive, &mut std::io::sink()).expect("a sink takes every row")
 }
 
 /// Evaluates a drive scene, every row of its operating points written to `records` as it goes
-/// (`super::drive_records`); the first `DETAIL_ROWS` rows are kept for the report, with the
+/// (`super::drive_records`); the [`kept_rows`] are kept for the report, with the
 /// count and the least and greatest efficiency over every row (exact: the rows are the points
 /// asked for).
 pub fn evaluate_drive_into(
@@ -68,7 +69,8 @@ pub(crate) fn evaluate_drive_into_with(
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup);
     progress.stage("evaluate", n as u64);
-    let (kept, tally) = stream_rows(&setup, scene, drive, (0..n, records), true, progress)?;
+    let keep = kept_rows(scene, &setup);
+    let (kept, tally) = stream_rows(&setup, (scene, drive, &keep), (0..n, records), true, progress)?;
     Ok(finish(&setup, scene, drive, kept, tally))
 }
 
@@ -88,25 +90,45 @@ pub(crate) fn evaluate_drive_shard_with(
     let points = shard.range(scene.operating.count());
     let rows = points.start * per_point..points.end * per_point;
     progress.stage("evaluate", rows.len() as u64);
-    Ok(stream_rows(&setup, scene, drive, (rows, records), true, progress)?.1)
+    Ok(stream_rows(&setup, (scene, drive, &[]), (rows, records), true, progress)?.1)
 }
 
-/// After the shards are merged: the report's rows (the first [`DETAIL_ROWS`]) evaluated again, the
-/// map, thermal balance and duty cycle, with `tally` folded from the shards (exactly a single
-/// run's).
+/// After the shards are merged: the report's rows (the [`kept_rows`]) evaluated again, the map,
+/// thermal balance and duty cycle, with `tally` folded from the shards (exactly a single run's).
 pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
     let setup = DriveSetup::new(scene, drive);
-    let n = row_count(scene, &setup).min(DETAIL_ROWS);
-    let (kept, _) = stream_rows(
-        &setup,
-        scene,
-        drive,
-        (0..n, &mut drive_records_csv(drive, std::io::sink())),
-        false,
-        &crate::progress::Quiet,
-    )
-    .expect("a sink takes every row");
+    let keep = kept_rows(scene, &setup);
+    let mut kept: Kept = Default::default();
+    for range in &keep {
+        let sink = &mut drive_records_csv(drive, std::io::sink());
+        let (rows, validity, balanced) =
+            stream_rows(&setup, (scene, drive, &keep), (range.clone(), sink), false, &crate::progress::Quiet)
+                .expect("a sink takes every row")
+                .0;
+        kept.0.extend(rows);
+        kept.1.extend(validity);
+        kept.2.extend(balanced);
+    }
     finish(&setup, scene, drive, kept, tally)
+}
+
+/// The rows a drive's report shows in full, as sorted disjoint ranges: the first [`DETAIL_ROWS`]
+/// and every row (law and formulation) of each of the scene's detail points.
+fn kept_rows(scene: &Scene, setup: &DriveSetup) -> Vec<std::ops::Range<usize>> {
+    let per_point = setup.rows_per_point();
+    let first = 0..row_count(scene, setup).min(DETAIL_ROWS);
+    let mut ranges: Vec<_> = std::iter::once(first)
+        .chain(scene.operating.detail_points.iter().map(|p| p * per_point..(p + 1) * per_point))
+        .collect();
+    ranges.sort_by_key(|r| r.start);
+    let mut out: Vec<std::ops::Range<usize>> = Vec::new();
+    for r in ranges.into_iter().filter(|r| !r.is_empty()) {
+        match out.last_mut() {
+            Some(last) if r.start <= last.end => last.end = last.end.max(r.end),
+            _ => out.push(r),
+        }
+    }
+    out
 }
 
 /// Rows of the operating points: points × laws × formulations.
@@ -119,12 +141,11 @@ fn row_count(scene: &Scene, setup: &DriveSetup) -> usize {
 type Kept = (Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, Vec<super::drive_thermal::DriveBalanceRow>);
 
 /// Rows `range` of the operating points in blocks, each written to `records` (after the header,
-/// when `header`) and tallied; the first [`DETAIL_ROWS`] kept with their validity. After each block
+/// when `header`) and tallied; those in `keep` ([`kept_rows`]) kept with their validity. After each block
 /// `progress` advances; where it is cancelled the rows stop with an `Interrupted` error.
 fn stream_rows(
     setup: &DriveSetup,
-    scene: &Scene,
-    drive: &SceneDrive,
+    (scene, drive, keep): (&Scene, &SceneDrive, &[std::ops::Range<usize>]),
     (range, records): (std::ops::Range<usize>, &mut dyn DriveRecordSink),
     header: bool,
     progress: &dyn Progress,
@@ -193,7 +214,7 @@ fn stream_rows(
                 tally.outside_rows += 1;
                 tally.first_outside.get_or_insert(start + i);
             }
-            if rows.len() < DETAIL_ROWS {
+            if keep.iter().any(|k| k.contains(&(start + i))) {
                 rows.push(row);
                 validity.push(valid);
                 balanced.extend(balance);

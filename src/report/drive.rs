@@ -10,6 +10,16 @@ use crate::model::{Scene, SceneDrive, Sweep};
 pub use super::drive_point::DrivePointReport;
 pub use super::drive_report::DriveReport;
 
+/// The rows shown beyond the first [`crate::evaluate::drive::DETAIL_ROWS`]: every row of each
+/// detail point that has one there ([`super::drive_report::ShownRows`]); None where there are none.
+fn shown_rows(scene: &Scene, rows: usize) -> Option<super::drive_report::ShownRows> {
+    let first = rows.min(crate::evaluate::drive::DETAIL_ROWS);
+    let per_point = rows.checked_div(scene.operating.count())?;
+    let detail_points: Vec<usize> =
+        scene.operating.detail_points.iter().filter(|p| (*p + 1) * per_point > first).map(|p| p + 1).collect();
+    (!detail_points.is_empty()).then_some(super::drive_report::ShownRows { first, detail_points })
+}
+
 /// The report of an evaluated drive scene.
 pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluation) -> DriveReport {
     let layout = &drive.layout;
@@ -51,6 +61,7 @@ pub fn build_drive_report(scene: &Scene, drive: &SceneDrive, eval: &DriveEvaluat
         }),
         laws: laws.clone(),
         rows: eval.tally.rows,
+        shown_rows: shown_rows(scene, eval.tally.rows),
         least_efficiency: eval.tally.least.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
         greatest_efficiency: eval.tally.greatest.map(|(e, i)| (e, row_words(scene, drive, &laws, i))),
         both_ends_rows: eval.tally.both_ends,

@@ -37,8 +37,13 @@ pub struct DriveReport {
     pub stage_geometry: Vec<super::drive_geometry::StageGeometryReport>,
     pub laws: Vec<String>,
     /// Rows of the operating points (points × laws × formulations), all in drive_records.csv; the
-    /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full.
+    /// report shows the first `crate::evaluate::drive::DETAIL_ROWS` in full and every row of its
+    /// detail points.
     pub rows: usize,
+    /// Where the shown rows go beyond the first: how many first rows and the detail points
+    /// (1-based) whose rows follow them; None when the shown rows are the first alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shown_rows: Option<ShownRows>,
     /// The least and greatest η over every row where one end delivers, with the row's label, law
     /// and formulation; rows where both ends deliver.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -108,4 +113,14 @@ pub struct DriveReport {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stage_pairs: Vec<super::drive_stage_pairs::StagePairReport>,
     pub findings: Vec<Finding>,
+}
+
+/// The rows a drive's report shows beyond its first rows: those of its detail points.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ShownRows {
+    /// The first rows shown (`crate::evaluate::drive::DETAIL_ROWS`, or every row of a shorter run).
+    pub first: usize,
+    /// The detail points (1-based, torque-major) with a row beyond the first, every row of each
+    /// (law × formulation) shown.
+    pub detail_points: Vec<usize>,
 }

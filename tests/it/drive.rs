@@ -561,10 +561,52 @@ fn duty_cycle_of_the_drive_balances_its_energy() {
 #[test]
 fn a_drive_in_shards_merges_to_the_single_run() {
     shards_merge_to_the_single_run("specs/ev_reducer_three_bearing_lay_shaft.gear", "elastic");
-    shards_merge_to_the_single_run("specs/ev_two_stage_reducer.gear", "rigid");
+    let (text, base) = shards_merge_to_the_single_run("specs/ev_two_stage_reducer.gear", "rigid");
+    let swept = text.replace("oil_temperature = 80 degC", "oil_temperature = [60, 80] degC");
+    let scene = gearloss::check("swept.gear", &swept).unwrap();
+    let shard = Some(gearloss::Shard { index: 1, count: 2 });
+    let e = gearloss::run_into("swept.gear", &swept, &scene, &base.join("no"), shard, &gearloss::Quiet).unwrap_err();
+    assert_eq!(e.failure().unwrap().kind, gearloss::FailureKind::ShardedDrive);
+    std::fs::remove_dir_all(&base).unwrap();
 }
 
-fn shards_merge_to_the_single_run(spec: &str, tag: &str) {
+/// A drive's report shows its first 12 rows and every row of each detail point beyond them: the
+/// large sweep (144 points × 2 laws, one formulation) with detail points 17 and 100 shows rows
+/// 1–12, 33–34 and 199–200 of drive_records.csv, each that row (its total loss to 1e-12, relative),
+/// and report.md says which; run in three shards and merged (the kept rows evaluated again, range by
+/// range), every file of its folder is the single run's.
+#[test]
+fn a_drives_report_shows_its_detail_points_rows() {
+    let spec = "tests/specs/ok/large_sweep.gear";
+    let scene = crate::scene(&crate::root().join(spec));
+    let eval = gearloss::evaluate::evaluate_drive(&scene, scene.drive.as_ref().unwrap());
+    let rows = crate::pair_alone::DriveRows::of(&scene);
+    let kept: Vec<usize> =
+        eval.rows.iter().map(|r| rows.find((r.torque_index, r.speed_index), r.law_index, r.formulation)).collect();
+    assert_eq!(kept, (0..12).chain([32, 33, 198, 199]).collect::<Vec<_>>());
+    for (r, &k) in eval.rows.iter().zip(&kept) {
+        let total = rows.value(k, "total_W");
+        assert!(
+            (r.point.power_lost() - total).abs() <= 1e-12 * total,
+            "row {}: {} vs {total}",
+            k + 1,
+            r.point.power_lost()
+        );
+    }
+    assert_eq!(eval.validity.len(), kept.len());
+    let (_, base) = shards_merge_to_the_single_run(spec, "detail");
+    let whole = std::fs::read_dir(base.join("whole")).unwrap().next().unwrap().unwrap().path();
+    let md = std::fs::read_to_string(whole.join("report.md")).unwrap();
+    assert!(
+        md.contains("16 of 288 rows (operating points × laws × formulations): the first 12 and every row of detail points 17, 100;"),
+        "{md}"
+    );
+    std::fs::remove_dir_all(&base).unwrap();
+}
+
+/// `spec` run whole and in three shards, merged: every file the same. The scene's text and the
+/// folder it ran in (`whole/`, `shards/`, `merged/`).
+fn shards_merge_to_the_single_run(spec: &str, tag: &str) -> (String, std::path::PathBuf) {
     let text = std::fs::read_to_string(crate::root().join(spec)).unwrap();
     let scene = gearloss::check("ev.gear", &text).unwrap();
     let base = std::env::temp_dir().join(format!("gearloss-drive-shards-{tag}-{}", std::process::id()));
@@ -594,12 +636,7 @@ fn shards_merge_to_the_single_run(spec: &str, tag: &str) {
         let b = std::fs::read(merged.folder.join(name)).unwrap();
         assert!(a == b, "{name} differs");
     }
-    let swept = text.replace("oil_temperature = 80 degC", "oil_temperature = [60, 80] degC");
-    let scene = gearloss::check("swept.gear", &swept).unwrap();
-    let shard = Some(gearloss::Shard { index: 1, count: 2 });
-    let e = gearloss::run_into("swept.gear", &swept, &scene, &base.join("no"), shard, &gearloss::Quiet).unwrap_err();
-    assert_eq!(e.failure().unwrap().kind, gearloss::FailureKind::ShardedDrive);
-    std::fs::remove_dir_all(&base).unwrap();
+    (text, base)
 }
 
 /// Any number of stages in a chain: the EV reducer with a third, spur stage on a fourth shaft at

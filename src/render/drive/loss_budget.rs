@@ -1,5 +1,5 @@
 //! A drive's loss_budget.svg: the loss budget of every operating point the report keeps (its first
-//! [`crate::evaluate::drive::DETAIL_ROWS`] rows) under the first formulation, one stacked bar per
+//! [`crate::evaluate::drive::DETAIL_ROWS`] rows and every row of its detail points) under the first formulation, one stacked bar per
 //! point and law: the meshes, then the gears' no-load losses, the bearings' and the seals' (the
 //! headline's columns, the parts a pair's budget has). Drawn where the drive has a loss beside its
 //! meshes (a gearbox), as a pair's report draws its own.

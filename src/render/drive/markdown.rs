@@ -151,13 +151,23 @@ fn headline(out: &mut String, r: &DriveReport) {
             .collect::<Vec<String>>(),
         );
     }
-    if r.rows > r.points.len() {
-        md!(
+    match &r.shown_rows {
+        Some(shown) => md!(
+            out,
+            "\n{} of {} rows (operating points × laws × formulations): the first {} and every row of detail point{} {}; `drive_records.csv` holds every one.",
+            r.points.len(),
+            r.rows,
+            shown.first,
+            if shown.detail_points.len() == 1 { "" } else { "s" },
+            shown.detail_points.iter().map(|p| p.to_string()).collect::<Vec<_>>().join(", ")
+        ),
+        None if r.rows > r.points.len() => md!(
             out,
             "\nThe first {} of {} rows (operating points × laws × formulations); `drive_records.csv` holds every one.",
             r.points.len(),
             r.rows
-        );
+        ),
+        None => {}
     }
     if let (Some((lo, lo_at)), Some((hi, hi_at)), true) = (&r.least_efficiency, &r.greatest_efficiency, r.rows > 1) {
         md!(
