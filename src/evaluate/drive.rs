@@ -112,23 +112,10 @@ pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: Dr
     finish(&setup, scene, drive, kept, tally)
 }
 
-/// The rows a drive's report shows in full, as sorted disjoint ranges: the first [`DETAIL_ROWS`]
-/// and every row (law and formulation) of each of the scene's detail points.
+/// The rows a drive's report shows in full (`super::plan::drive_kept_rows`).
 fn kept_rows(scene: &Scene, setup: &DriveSetup) -> Vec<std::ops::Range<usize>> {
-    let per_point = setup.rows_per_point();
-    let first = 0..row_count(scene, setup).min(DETAIL_ROWS);
-    let mut ranges: Vec<_> = std::iter::once(first)
-        .chain(scene.operating.detail_points.iter().map(|p| p * per_point..(p + 1) * per_point))
-        .collect();
-    ranges.sort_by_key(|r| r.start);
-    let mut out: Vec<std::ops::Range<usize>> = Vec::new();
-    for r in ranges.into_iter().filter(|r| !r.is_empty()) {
-        match out.last_mut() {
-            Some(last) if r.start <= last.end => last.end = last.end.max(r.end),
-            _ => out.push(r),
-        }
-    }
-    out
+    let (rows, per_point) = (row_count(scene, setup), setup.rows_per_point());
+    super::plan::drive_kept_rows((rows, per_point), DETAIL_ROWS, &scene.operating.detail_points)
 }
 
 /// Rows of the operating points: points × laws × formulations.

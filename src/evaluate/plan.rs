@@ -163,3 +163,45 @@ impl Plan {
         self.detail.iter().map(|k| case_at(op, *k)).collect()
     }
 }
+
+/// The rows a drive's report shows in full, as sorted disjoint ranges of row indices: the first
+/// `first` of its `rows` and every row (`per_point` of them, laws × formulations, point-major) of
+/// each detail point (0-based).
+pub(crate) fn drive_kept_rows(
+    (rows, per_point): (usize, usize),
+    first: usize,
+    detail_points: &[usize],
+) -> Vec<std::ops::Range<usize>> {
+    let first = 0..rows.min(first);
+    let points = detail_points.iter().map(|p| (p * per_point).min(rows)..((p + 1) * per_point).min(rows));
+    let mut ranges: Vec<_> = std::iter::once(first).chain(points).filter(|r| !r.is_empty()).collect();
+    ranges.sort_by_key(|r| r.start);
+    let mut out: Vec<std::ops::Range<usize>> = Vec::new();
+    for r in ranges {
+        match out.last_mut() {
+            Some(last) if r.start <= last.end => last.end = last.end.max(r.end),
+            _ => out.push(r),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::drive_kept_rows;
+
+    /// The first rows and each detail point's rows, joined where they touch or overlap, in order
+    /// whatever order the points come in; nothing past the last row.
+    #[test]
+    fn a_drives_kept_rows_are_its_first_and_its_detail_points() {
+        assert_eq!(drive_kept_rows((288, 2), 12, &[]), vec![0..12]);
+        assert_eq!(drive_kept_rows((288, 2), 12, &[99, 16]), vec![0..12, 32..34, 198..200]);
+        // Point 5 (rows 10..12) lies in the first rows; point 6 (12..14) touches them; 7 follows.
+        assert_eq!(drive_kept_rows((288, 2), 12, &[5, 6, 7]), vec![0..16]);
+        // Five rows a point: point 2's rows 10..15 straddle the first 12.
+        assert_eq!(drive_kept_rows((100, 5), 12, &[2, 19]), vec![0..15, 95..100]);
+        // Fewer rows than the first: every row, once.
+        assert_eq!(drive_kept_rows((6, 3), 12, &[1]), vec![0..6]);
+        assert_eq!(drive_kept_rows((0, 3), 12, &[]), Vec::<std::ops::Range<usize>>::new());
+    }
+}
