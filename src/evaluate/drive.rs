@@ -46,7 +46,7 @@ pub fn evaluate_drive(scene: &Scene, drive: &SceneDrive) -> DriveEvaluation {
 }
 
 /// Evaluates a drive scene, every row of its operating points written to `records` as it goes
-/// (`super::drive_records`); the [`kept_rows`] are kept for the report, with the
+/// (`super::drive_records`); the kept rows (`kept_rows`) are kept for the report, with the
 /// count and the least and greatest efficiency over every row (exact: the rows are the points
 /// asked for).
 pub fn evaluate_drive_into(
