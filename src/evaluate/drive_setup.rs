@@ -41,7 +41,8 @@ pub(crate) struct DriveSetup<'a> {
 
 impl<'a> DriveSetup<'a> {
     pub(crate) fn new(scene: &'a Scene, drive: &'a SceneDrive) -> DriveSetup<'a> {
-        let stages: Vec<StageMesh> = (0..drive.pairs.len()).map(|k| StageMesh::of(drive, k, scene)).collect();
+        let stages: Vec<StageMesh> =
+            (0..drive.pairs.len()).map(|k| StageMesh::of(drive, k, scene.lubricant.as_ref())).collect();
         let sizes = stages.iter().map(StageMesh::sizes).collect();
         let oil = drive.mesh(0, scene.lubricant.as_ref()).budget_oil(&stages[0].tribology);
         let beams = crate::drive::shaft_bending::prepared_beams(&drive.layout);

@@ -10,7 +10,7 @@ use crate::friction::LawContext;
 use crate::geometry::sharing::Sharing;
 use crate::geometry::teeth::load_sharing::LoadSharing as TeethSharing;
 use crate::geometry::{OperatingState, PairGeometry};
-use crate::model::{FrictionLawSpec, LoadSharing, Scene, SceneDrive};
+use crate::model::{FrictionLawSpec, LoadSharing, Lubricant, SceneDrive};
 use crate::tribology::Tribology;
 
 /// A contact table's positions along the line of action from T1 (m), each with its name where it
@@ -52,7 +52,7 @@ impl RingMesh {
     pub(super) fn of(
         drive: &SceneDrive,
         k: usize,
-        lubricant: Option<&crate::model::Lubricant>,
+        lubricant: Option<&Lubricant>,
         geometry: Option<std::sync::Arc<PairGeometry>>,
     ) -> Option<RingMesh> {
         let mesh = drive.further_mesh(k, 1, lubricant)?;
@@ -76,8 +76,9 @@ impl RingMesh {
 }
 
 impl StageMesh {
-    pub(super) fn of(drive: &SceneDrive, k: usize, scene: &Scene) -> StageMesh {
-        let mesh = drive.mesh(k, scene.lubricant.as_ref());
+    /// Stage `k`'s mesh in `lubricant` (the scene's oil at its temperature).
+    pub(super) fn of(drive: &SceneDrive, k: usize, lubricant: Option<&Lubricant>) -> StageMesh {
+        let mesh = drive.mesh(k, lubricant);
         let e_r = mesh.reduced_modulus();
         let tribology = mesh.tribology(e_r);
         // A ring is no pinion: an internal pair is evaluated with its pinion in the pinion's place
@@ -96,7 +97,7 @@ impl StageMesh {
                 reliefs: pair.reliefs(),
             })
         }));
-        let ring = RingMesh::of(drive, k, scene.lubricant.as_ref(), None);
+        let ring = RingMesh::of(drive, k, lubricant, None);
         let positions = std::sync::Arc::new([0, 1].map(|d| super::setup::curve_positions(&geometry[d])));
         let table = std::sync::Arc::new([0, 1].map(|d| super::cases::table_positions(&geometry[d])));
         let mut out = StageMesh { h_v: [0.0; 2], geometry, positions, table, tribology, whole, stiffness, ring };
