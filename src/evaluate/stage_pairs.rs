@@ -1,6 +1,6 @@
 //! The analyses of one pair on a drive's stages: each analysed stage's mesh (each mesh of a
-//! planetary stage) becomes a scene of one pair at the operating state the drive's power walk gives
-//! it, and runs as that pair alone runs.
+//! planetary stage) becomes the problem of one mesh ([`MeshProblem`]) at the operating state the
+//! drive's power walk gives it, and runs as that pair alone runs.
 //!
 //! At each analysed operating point the drive is solved under its first friction law and first
 //! efficiency formulation (the row drive_records.csv holds first for that point). Each mesh is then
@@ -102,7 +102,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
                     Member::Wheel => pair.swapped(),
                 };
                 let alone = (m.torque > 0.0 && m.speed > 0.0)
-                    .then(|| pair_scene(scene, title, pair, Some((m.torque, m.speed))));
+                    .then(|| mesh_problem(scene, title, pair, Some((m.torque, m.speed))));
                 out.push(StagePair {
                     stage: k,
                     stage_name: s.name.clone(),
@@ -128,7 +128,7 @@ pub fn stage_pairs(scene: &Scene, drive: &SceneDrive) -> Vec<StagePair> {
 /// scene's whole sweep: at every operating point the stage's pinion drives at the scene's own torque
 /// and speed (the walk raises only the input's torque by the pinion shaft's losses,
 /// [`super::drive_setup`]), so the states of its mesh are the scene's own grid and its pair alone
-/// is one scene over that grid: the scene's pair, oil, laws, operating block (its points in full
+/// is one mesh problem over that grid: the scene's pair, oil, laws, operating block (its points in full
 /// and its detail points as written) and analyses of one pair and of efficiency, without what the
 /// drive evaluates itself (the gearbox's loss budget, the housing's thermal balance, the duty cycle,
 /// the efficiency map, the oil at its balance, a sweep of oil temperatures). It is run whatever the
@@ -143,7 +143,7 @@ pub(crate) fn one_pair_sweep(scene: &Scene, drive: &SceneDrive) -> Option<StageP
     if drive.layout.stages.len() != 1 || !scene.analyses.analyses_stage(name) || op.count() == 0 || !positive {
         return None;
     }
-    let alone = pair_scene(scene, format!("{}: {name}", scene.title), drive.mesh_pair(0, 0).clone(), None);
+    let alone = mesh_problem(scene, format!("{}: {name}", scene.title), drive.mesh_pair(0, 0).clone(), None);
     Some(StagePair {
         stage: 0,
         stage_name: name.clone(),
@@ -156,7 +156,7 @@ pub(crate) fn one_pair_sweep(scene: &Scene, drive: &SceneDrive) -> Option<StageP
 
 /// The problem of `pair` alone at the pinion's torque (N·m) and speed (rad/s), shown in the units the
 /// drive's operating block writes its speeds in; None: over the scene's own operating block.
-fn pair_scene(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, f64)>) -> MeshProblem {
+fn mesh_problem(scene: &Scene, title: String, pair: GearPair, state: Option<(f64, f64)>) -> MeshProblem {
     let op = &scene.operating;
     let (pinion_torque, pinion_speed, detail_points) = match state {
         Some(state) => {
