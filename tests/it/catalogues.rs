@@ -169,3 +169,53 @@ fn no_file_imports_its_folders_mod_rs() {
     walk(&crate::root().join("src"), &mut out);
     assert!(out.is_empty(), "files that reach into their folder's mod.rs:\n{}", out.join("\n"));
 }
+
+/// The per-mesh evaluation reads a `MeshProblem`, never the scene (ARCHITECTURE.md, "One path"):
+/// no code line of its files (comments and test modules aside) names the type `Scene`, and the files
+/// that take one mesh's problem name `MeshProblem`. A new per-mesh file joins the list.
+#[test]
+fn the_per_mesh_evaluation_never_reads_the_scene() {
+    let takes_a_problem = [
+        "evaluate/prepare.rs",
+        "evaluate/stages.rs",
+        "evaluate/stream.rs",
+        "evaluate/details.rs",
+        "evaluate/dynamics.rs",
+        "evaluate/teeth.rs",
+        "evaluate/contact_curves.rs",
+        "evaluate/records.rs",
+        "report/mod.rs",
+        "report/scene.rs",
+        "report/friction.rs",
+        "report/points.rs",
+        "report/dynamics.rs",
+        "report/teeth.rs",
+        "report/teeth_validity.rs",
+        "report/checks.rs",
+        "report/sweep.rs",
+        "run_pair.rs",
+    ];
+    let beneath =
+        ["evaluate/laws.rs", "evaluate/setup.rs", "evaluate/tally.rs", "evaluate/cases.rs", "evaluate/plan.rs"];
+    let mut out = Vec::new();
+    for file in takes_a_problem.iter().chain(&beneath) {
+        let text = std::fs::read_to_string(crate::root().join("src").join(file)).unwrap();
+        let code: Vec<&str> =
+            text.split("#[cfg(test)]").next().unwrap().lines().filter(|l| !l.trim_start().starts_with("//")).collect();
+        let names = |word: &str| {
+            code.iter().any(|l| {
+                l.match_indices(word).any(|(at, _)| {
+                    let edge = |c: Option<char>| !c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+                    edge(l[..at].chars().last()) && edge(l[at + word.len()..].chars().next())
+                })
+            })
+        };
+        if names("Scene") {
+            out.push(format!("{file} names Scene"));
+        }
+        if takes_a_problem.contains(file) && !names("MeshProblem") {
+            out.push(format!("{file} does not take a MeshProblem"));
+        }
+    }
+    assert!(out.is_empty(), "{}", out.join("\n"));
+}
