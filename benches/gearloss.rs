@@ -46,7 +46,7 @@ const EVERY_LAW: &str = "coulomb(mu = 0.05) benedict_kelley benedict_kelley_bern
 /// Every law at one operating point: build, η̄ of both formulations (tolerance 1e-10) and, when asked,
 /// the mean |μ| over A–E.
 fn one_point(bencher: divan::Bencher, with_mean_mu: bool) {
-    let scene = scene("302 N*m", "1500 rpm", EVERY_LAW).pair_alone();
+    let scene = scene("302 N*m", "1500 rpm", EVERY_LAW).pair_alone().unwrap();
     let eval = gearloss::evaluate(&scene);
     let ctx = eval.law_context(eval.points[0].state);
     bencher.bench(|| {
@@ -80,7 +80,8 @@ fn one_point_all_laws_with_mean_mu(bencher: divan::Bencher) {
 #[divan::bench(sample_count = 3, sample_size = 1)]
 fn sweep_10000_points_three_laws(bencher: divan::Bencher) {
     let scene = scene("50..500 N*m count 100", "100..10000 rpm count 100", "coulomb(mu = 0.05) xu benedict_kelley")
-        .pair_alone();
+        .pair_alone()
+        .unwrap();
     let plan = gearloss::Plan::new(&scene.operating, None, &[]);
     bencher.bench(|| {
         let tally = gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::NoRecords, &gearloss::Quiet);
@@ -133,7 +134,7 @@ mod plain_sweep {
     /// located, the summary rows built and the tally folded; the rows go nowhere), as items.
     #[divan::bench(sample_count = 10, sample_size = 1)]
     fn per_point_coulomb_both_formulations(bencher: divan::Bencher) {
-        let scene = plain("50..400 N*m count 20", "100..3000 rpm count 20").pair_alone();
+        let scene = plain("50..400 N*m count 20", "100..3000 rpm count 20").pair_alone().unwrap();
         let plan = gearloss::Plan::new(&scene.operating, None, &[]);
         bencher.counter(divan::counter::ItemsCount::new(400usize)).bench(|| {
             let tally = gearloss::evaluate_sweep(&scene, &plan, &mut gearloss::evaluate::NoRecords, &gearloss::Quiet);
@@ -173,7 +174,7 @@ mod dynamics {
     }
 
     fn with_system<R>(rpm: f64, f: impl FnOnce(&SdofSystem) -> R) -> R {
-        let scene = fzg().pair_alone();
+        let scene = fzg().pair_alone().unwrap();
         let eval = gearloss::evaluate(&scene);
         let law = Coulomb { mu: 0.08 };
         let ctx =
@@ -278,7 +279,7 @@ mod dynamics {
     /// Spectral radius at 1000 speeds (external formulation). Target < 50 ms.
     #[divan::bench(sample_count = 10)]
     fn stability_map_1000_speeds(bencher: divan::Bencher) {
-        let scene = fzg().pair_alone();
+        let scene = fzg().pair_alone().unwrap();
         let eval = gearloss::evaluate(&scene);
         let law = Coulomb { mu: 0.08 };
         bencher.bench(|| {
@@ -321,7 +322,7 @@ mod six_dof {
 
     fn with_system<R>(rpm: f64, bearing: f64, f: impl FnOnce(&SixDofSystem) -> R) -> R {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
-        let scene = gearloss::check("fzg", &text).unwrap().pair_alone();
+        let scene = gearloss::check("fzg", &text).unwrap().pair_alone().unwrap();
         let eval = gearloss::evaluate(&scene);
         let law = Coulomb { mu: 0.08 };
         let ctx =
@@ -342,7 +343,7 @@ mod six_dof {
     #[divan::bench]
     fn floquet_one_point_base(bencher: divan::Bencher) {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
-        let scene = gearloss::check("fzg", &text).unwrap().pair_alone();
+        let scene = gearloss::check("fzg", &text).unwrap().pair_alone().unwrap();
         let eval = gearloss::evaluate(&scene);
         let ctx = eval
             .law_context(OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 });
@@ -356,7 +357,7 @@ mod six_dof {
     #[divan::bench(sample_count = 3)]
     fn stability_map_1000_speeds(bencher: divan::Bencher) {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear")).unwrap();
-        let scene = gearloss::check("fzg", &text).unwrap().pair_alone();
+        let scene = gearloss::check("fzg", &text).unwrap().pair_alone().unwrap();
         let eval = gearloss::evaluate(&scene);
         let law = Coulomb { mu: 0.08 };
         let b = Bearing { loa: 5e8, oloa: 5e8, damping_ratio: 0.02 };
@@ -612,7 +613,7 @@ mod one_pair {
     fn budget_at_a_point_on_the_pairs_own_statics(b: divan::Bencher) {
         let scene = scene();
         let eval = gearloss::evaluate::prepare(
-            &scene.pair_alone(),
+            &scene.pair_alone().unwrap(),
             &gearloss::evaluate::Plan::new(&scene.operating, None, &[]),
         );
         let state = gearloss::evaluate::state_at(&scene.operating, 0);
@@ -707,7 +708,7 @@ mod record_files {
             .replace("OP_SPEED", "100..3000 rpm count 100")
             .replace("LAWS", "coulomb(mu = 0.05)")
             .replace("efficiency  friction_along_loa", "efficiency(formulations = [external, internal])");
-        let scene = gearloss::check("plain.gear", &text).unwrap_or_else(|e| panic!("{e}")).pair_alone();
+        let scene = gearloss::check("plain.gear", &text).unwrap_or_else(|e| panic!("{e}")).pair_alone().unwrap();
         let plan = gearloss::Plan::new(&scene.operating, None, &[]);
         let mut keep = Keep(Vec::new());
         gearloss::evaluate_sweep(&scene, &plan, &mut keep, &gearloss::Quiet).unwrap();

@@ -29,11 +29,15 @@ use crate::tribology::Tribology;
 ///     material steel { youngs_modulus = 210 GPa  poisson_ratio = 0.3 }
 ///     operating { pinion_torque = [50, 100] N*m  pinion_speed = 1000 rpm }
 /// }"#).unwrap();
-/// let mesh = scene.pair_alone();
-/// assert_eq!(mesh.operating.count(), 2);
-/// assert_eq!(mesh.gears.wheel.teeth.value, 40);
-/// let eval = gearloss::evaluate(&mesh);
+/// let problem = scene.pair_alone().expect("a scene of one pair");
+/// assert_eq!(problem.operating.count(), 2);
+/// assert_eq!(problem.gears.wheel.teeth.value, 40);
+/// assert!(problem.operating.oil_temperatures.is_none() && problem.operating.equilibrium.is_none());
+/// let eval = gearloss::evaluate(&problem);
 /// assert_eq!(eval.points.len(), 2);
+/// // The same numbers as the scene's own report of its pair (`gearloss::report_of`).
+/// let (a, b) = (gearloss::mesh_report(&problem), gearloss::report_of(&scene));
+/// assert_eq!(format!("{:?}", a.operating_points), format!("{:?}", b.operating_points));
 /// ```
 #[derive(Debug, Clone)]
 pub struct MeshProblem {
@@ -62,13 +66,18 @@ impl Scene {
         Mesh { gears: &self.gears, lubricant: self.lubricant.as_ref() }
     }
 
-    /// The scene's pair alone, as a drive's stage mesh is analysed (what `gearloss::report_of`
-    /// reports): its gears, oil at the scene's oil temperature, operating grid and detail points,
-    /// laws, dynamics and every analysis; what its one-stage drive evaluates itself (the gearbox's
-    /// budget, the housing's balance, the duty cycle, the oil at its balance or over a sweep) left
-    /// to the drive.
-    pub fn pair_alone(&self) -> MeshProblem {
-        MeshProblem {
+    /// A scene of one pair's pair alone, as a drive's stage mesh is analysed (what
+    /// `gearloss::report_of` reports): its gears, oil at the scene's oil temperature, operating
+    /// grid and detail points, laws, dynamics and every analysis; what its one-stage drive
+    /// evaluates itself (the gearbox's budget, the housing's balance, the duty cycle, the oil at its
+    /// balance or over a sweep) left to the drive. None for a drive written with `stage` blocks:
+    /// its operating block is at the drive's ends, and each of its meshes is analysed at the state
+    /// the drive's walk gives it (`gearloss::evaluate::stage_pairs`).
+    pub fn pair_alone(&self) -> Option<MeshProblem> {
+        if self.drive.as_ref().is_some_and(|d| !d.one_pair) {
+            return None;
+        }
+        Some(MeshProblem {
             title: self.title.clone(),
             gears: self.gears.clone(),
             lubricant: self.lubricant.clone(),
@@ -76,7 +85,7 @@ impl Scene {
             friction: self.friction.clone(),
             dynamics: self.dynamics.clone(),
             analyses: self.analyses.clone(),
-        }
+        })
     }
 }
 

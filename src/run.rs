@@ -26,8 +26,13 @@ use crate::shard;
 /// Stages 3 and 4 of the per-mesh evaluation in memory, the record rows dropped: the report of a
 /// checked scene's pair alone (its oil at the first balance at `oil_temperature = equilibrium`), the
 /// report a drive's stage mesh gets (tests, benches).
+///
+/// # Panics
+/// On a drive written with `stage` blocks, which has no pair alone ([`Scene::pair_alone`]: its
+/// meshes are reported at the states its walk gives them, [`run_to_files`]).
 pub fn report_of(scene: &Scene) -> Report {
-    mesh_report(&evaluate::first_balance::at_first_balance(scene).pair_alone())
+    let problem = evaluate::first_balance::at_first_balance(scene).pair_alone();
+    mesh_report(&problem.expect("report_of takes a scene of one pair, not a drive of stages"))
 }
 
 /// Stages 3 and 4 of the per-mesh evaluation in memory, the record rows dropped: the report of one
@@ -48,7 +53,13 @@ pub fn mesh_report(problem: &MeshProblem) -> Report {
 /// this is the stage beneath it, for a library user or a test of the pair's own modules.
 pub fn pair_files(scene: &Scene) -> Result<RenderedReport, RunError> {
     let scene = &evaluate::first_balance::at_first_balance(scene);
-    let (_, files) = crate::run_pair::run_mesh_to_files(&scene.pair_alone())?;
+    let problem = scene.pair_alone().ok_or_else(|| {
+        RunError::Render(
+            Failure::new(FailureKind::NotOnePair, format!("`{}` is a drive of stages, not one pair", scene.title))
+                .hint("run it whole (`gearloss::run_to_files`): each analysed stage mesh's report is in its `stages/…/` folder"),
+        )
+    })?;
+    let (_, files) = crate::run_pair::run_mesh_to_files(&problem)?;
     Ok(RenderedReport { slug: report::slug(&scene.title), files })
 }
 

@@ -36,6 +36,9 @@ pub enum FailureKind {
     ShardedDrive,
     /// A scene given to `run` that lowering did not build: it has no drive.
     NotLowered,
+    /// A drive written with `stage` blocks given where a scene of one pair is asked for
+    /// (`gearloss::pair_files`).
+    NotOnePair,
 }
 
 /// A failure after lowering: its kind, the reason (one line) and what to do about it.

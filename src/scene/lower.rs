@@ -212,7 +212,9 @@ fn lower_any(ast: &SceneAst, base_dir: Option<&std::path::Path>, one_pair: bool)
                 analyses,
                 drive: None,
             };
-            errors.extend(super::lower_stage_analyses::check_pair_at_state(&scene.pair_alone()));
+            if let Some(problem) = scene.pair_alone() {
+                errors.extend(super::lower_stage_analyses::check_pair_at_state(&problem));
+            }
             if errors.is_empty() {
                 Ok(scene)
             } else {

@@ -98,7 +98,7 @@ fn instability_tongue_matches_the_meissner_closed_form() {
     let mut scene = crate::scene(&crate::root().join("specs/fzg_dynamics.gear"));
     scene.analyses.dynamics = false;
     scene.analyses.numerics = false;
-    let eval = gearloss::evaluate(&scene.pair_alone());
+    let eval = gearloss::evaluate(&scene.pair_alone().unwrap());
     let d = eval.dynamics.as_ref().unwrap();
     let g = &eval.geometry;
     let base = d.formulations.iter().position(|f| *f == DynamicFormulation::Base).unwrap();

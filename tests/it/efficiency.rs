@@ -109,7 +109,7 @@ fn load_sharing_none_changes_only_what_a_law_sees() {
 #[test]
 fn nasa_scene_benedict_kelley_balances_on_the_normal_load() {
     let scene = crate::scene(&crate::root().join("specs/composite_speed_sweep.gear"));
-    let eval = gearloss::evaluate(&scene.pair_alone());
+    let eval = gearloss::evaluate(&scene.pair_alone().unwrap());
     let point = &eval.points[0];
     let bk = point.laws.iter().find(|l| l.id.name() == "benedict_kelley").expect("benedict_kelley evaluated");
     let eta = 100.0 * bk.efficiency[0].mean.value;
@@ -120,7 +120,7 @@ fn nasa_scene_benedict_kelley_balances_on_the_normal_load() {
 #[test]
 fn efficiency_range_is_located() {
     let scene = crate::scene(&crate::root().join("specs/composite_speed_sweep.gear"));
-    let eval = gearloss::evaluate(&scene.pair_alone());
+    let eval = gearloss::evaluate(&scene.pair_alone().unwrap());
     let ctx = eval.law_context(eval.points[0].state);
     let k = scene.friction.iter().position(|l| l.law.name() == "benedict_kelley").unwrap();
     let law = scene.friction[k].build(&ctx).unwrap();

@@ -26,7 +26,7 @@ fn law_index(scene: &gearloss::Scene, id: &str) -> usize {
 fn catalogue_entries_build_the_law_they_name() {
     use gearloss::friction::catalog::LAWS;
     let scene = spec("fzg_type_c.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let mut ctx = eval.law_context(eval.points[0].state);
     ctx.tribology.rz_mean = Some(2.0e-6); // FZG C gives Ra and Rq; Rz as a scene would give it
     for (i, entry) in LAWS.iter().enumerate() {
@@ -61,7 +61,7 @@ fn laws_name_the_input_they_miss() {
     use gearloss::friction::catalog::{FrictionLawSpec, Needs, LAWS};
     use gearloss::friction::LawContext;
     let scene = spec("fzg_type_c.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let mut full = eval.law_context(eval.points[0].state);
     let t = &mut full.tribology;
     t.rz_mean = t.rz_mean.or(Some(2.0e-6)); // FZG C gives Ra and Rq; Rz as a scene would give it
@@ -142,7 +142,7 @@ fn xu_vanishes_at_the_pitch_point_and_rises_with_slip() {
 #[test]
 fn bernard_table_4_xu_lowest_at_the_pitch_point() {
     let scene = spec("bernard_table4.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let pe = &eval.points[0];
     let xu = &pe.laws[law_index(&scene, "xu")];
     let p_row = pe.table.iter().position(|(n, _)| *n == Some("P")).unwrap();
@@ -166,7 +166,7 @@ fn bernard_table_4_xu_lowest_at_the_pitch_point() {
 #[test]
 fn odonoghue_cameron_radius_unit() {
     let scene = spec("bernard_table4.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let law = ODonoghueCameron::new(&eval.tribology).unwrap();
     let pe = &eval.points[0];
     let a = &pe.table[0].1; // point A: SR ≈ 1
@@ -234,7 +234,7 @@ fn benedict_kelley_hand_value() {
 #[test]
 fn composite_switches_regime_where_lambda_crosses_1_and_4() {
     let scene = spec("composite_speed_sweep.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let k = law_index(&scene, "composite");
     let mut seen = std::collections::BTreeSet::new();
     for pe in &eval.points {
@@ -283,7 +283,7 @@ fn iso_14179_2_hand_value() {
     use gearloss::friction::Iso14179_2;
     let scene = spec("fzg_type_c.gear");
     let g = scene.gears.geometry().unwrap();
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let state =
         gearloss::geometry::OperatingState { pinion_torque: 239.3, pinion_speed: 1000.0 * std::f64::consts::PI / 30.0 };
     let law = Iso14179_2::new(&eval.law_context(state), None).unwrap();
@@ -331,7 +331,7 @@ fn no_scene_report_has_a_non_finite_number() {
 fn divergent_means_converge() {
     use gearloss::numerics::integrate;
     let scene = spec("bernard_table4.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let ctx = eval.law_context(eval.points[0].state);
     let law = BenedictKelley::new(&eval.tribology).unwrap();
     let p = eval.geometry.points;
@@ -347,7 +347,7 @@ fn divergent_means_converge() {
 #[test]
 fn composite_switches_match_a_dense_scan() {
     let scene = spec("composite_speed_sweep.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let g = eval.geometry.points;
     for pe in &eval.points {
         let ctx = eval.law_context(pe.state);

@@ -59,7 +59,7 @@ fn catalogue_oil_at_temperature_by_hand() {
 fn c14_mu_matches_the_peer() {
     use gearloss::friction::Iso14179_2;
     let scene = spec("fzg_c14_gearbox.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let state = OperatingState { pinion_torque: 239.3, pinion_speed: rpm(1500.0) };
     let mu = Iso14179_2::new(&eval.law_context(state), Some(0.846)).unwrap().mu_mz;
     assert!((mu / 0.04487 - 1.0).abs() < 5e-3, "μ_mZ = {mu}");
@@ -79,7 +79,7 @@ fn c14_mesh_loss_matches_the_peer_with_the_load_at_the_wheel() {
     use gearloss::efficiency::{evaluate_efficiencies, Formulation};
     use gearloss::friction::Iso14179_2;
     let scene = spec("fzg_c14_gearbox.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let state = OperatingState { pinion_torque: 239.3 / 1.5, pinion_speed: rpm(2250.0) };
     let input = state.pinion_torque * state.pinion_speed;
     assert!((input - 239.3 * rpm(1500.0)).abs() < 1e-9 * input);
@@ -99,7 +99,7 @@ fn c14_mesh_loss_matches_the_peer_with_the_load_at_the_wheel() {
 #[test]
 fn budget_by_hand() {
     let scene = spec("fzg_c14_gearbox.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let g = &eval.geometry;
     let (t, w1) = (239.3, rpm(1500.0));
     let w2 = w1 / g.gear_ratio;
@@ -143,7 +143,7 @@ fn budget_by_hand() {
 #[test]
 fn injection_and_skf_budget_by_hand() {
     let scene = spec("fzg_c14_injection.gear");
-    let eval = evaluate_mesh(&scene.pair_alone());
+    let eval = evaluate_mesh(&scene.pair_alone().unwrap());
     let g = &eval.geometry;
     let (t, w1) = (239.3, rpm(3000.0));
     let rows = crate::pair_alone::DriveRows::of(&scene);

@@ -181,3 +181,19 @@ fn a_pairs_drive_report_keeps_its_total_efficiency() {
     }
     assert!(compared >= 20 && differs > 0, "{compared} rows compared, {differs} where the drive's η differs");
 }
+
+/// A drive written with `stage` blocks has no pair alone (its operating block is at the drive's
+/// ends; its meshes are analysed at the states its walk gives them): `Scene::pair_alone` is None
+/// and `gearloss::pair_files` refuses it, `FailureKind::NotOnePair` with a hint; a scene of one pair
+/// (lowered with its one-stage drive) has its pair alone.
+#[test]
+fn a_drive_of_stages_has_no_pair_alone() {
+    let drive = crate::scene(&crate::root().join("specs/ev_two_stage_reducer.gear"));
+    assert!(drive.pair_alone().is_none());
+    let e = gearloss::pair_files(&drive).expect_err("a drive of stages is refused");
+    let f = e.failure().expect("a failure with its kind");
+    assert_eq!(f.kind, gearloss::FailureKind::NotOnePair);
+    assert!(f.reason.contains("drive of stages") && !f.hints.is_empty(), "{f:?}");
+    let pair = crate::scene(&crate::root().join("specs/fzg_type_c.gear"));
+    assert!(pair.drive.as_ref().is_some_and(|d| d.one_pair) && pair.pair_alone().is_some());
+}

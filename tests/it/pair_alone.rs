@@ -16,7 +16,7 @@ pub(crate) struct PairAlone<'a> {
 impl<'a> PairAlone<'a> {
     pub(crate) fn new(pair: &'a gearloss::Scene) -> PairAlone<'a> {
         let plan = gearloss::evaluate::Plan::new(&pair.operating, None, &[]);
-        PairAlone { pair, eval: gearloss::evaluate::prepare(&pair.pair_alone(), &plan) }
+        PairAlone { pair, eval: gearloss::evaluate::prepare(&pair.pair_alone().unwrap(), &plan) }
     }
 
     /// The pair's own losses at pinion torque `t` (N·m) and speed `w` (rad/s) in its oil (its

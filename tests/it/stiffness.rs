@@ -284,7 +284,7 @@ fn pair_series_end_with_the_left_limit_at_e() {
     let report = gearloss::report_of(&scene);
     let s = report.stiffness.as_ref().unwrap();
     let g = scene.gears.geometry().unwrap();
-    let details = gearloss::evaluate::teeth_details(&scene.pair_alone(), &g).unwrap();
+    let details = gearloss::evaluate::teeth_details(&scene.pair_alone().unwrap(), &g).unwrap();
     let k = &details.sharing.stiffness;
     let (pos, stiff) = (&s.pair.position.values, &s.pair.stiffness.values);
     let end = *pos.last().unwrap();

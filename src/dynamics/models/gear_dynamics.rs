@@ -38,7 +38,7 @@
 //! use gearloss::friction::Coulomb;
 //! use gearloss::geometry::OperatingState;
 //! let text = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/specs/fzg_type_c.gear"));
-//! let scene = gearloss::check("fzg_type_c.gear", text).unwrap().pair_alone();
+//! let scene = gearloss::check("fzg_type_c.gear", text).unwrap().pair_alone().unwrap();
 //! let eval = gearloss::evaluate(&scene);
 //! let ctx = eval.law_context(OperatingState { pinion_torque: 239.3, pinion_speed: 300.0 });
 //! let law = Coulomb { mu: 0.08 };
