@@ -69,8 +69,8 @@ pub(crate) fn evaluate_drive_into_with(
     let setup = DriveSetup::new(scene, drive);
     let n = row_count(scene, &setup);
     progress.stage("evaluate", n as u64);
-    let keep = kept_rows(scene, &setup);
-    let (kept, tally) = stream_rows(&setup, (scene, drive, &keep), (0..n, records), true, progress)?;
+    let (keep, table) = (kept_rows(scene, &setup), row_ratings(scene, drive));
+    let (kept, tally) = stream_rows(&setup, (scene, drive, &keep, table.as_ref()), (0..n, records), true, progress)?;
     Ok(finish(&setup, scene, drive, kept, tally))
 }
 
@@ -90,21 +90,22 @@ pub(crate) fn evaluate_drive_shard_with(
     let points = shard.range(scene.operating.count());
     let rows = points.start * per_point..points.end * per_point;
     progress.stage("evaluate", rows.len() as u64);
-    Ok(stream_rows(&setup, (scene, drive, &[]), (rows, records), true, progress)?.1)
+    let table = row_ratings(scene, drive);
+    Ok(stream_rows(&setup, (scene, drive, &[], table.as_ref()), (rows, records), true, progress)?.1)
 }
 
 /// After the shards are merged: the report's rows (the [`kept_rows`]) evaluated again, the map,
 /// thermal balance and duty cycle, with `tally` folded from the shards (exactly a single run's).
 pub(crate) fn evaluate_drive_merged(scene: &Scene, drive: &SceneDrive, tally: DriveTally) -> DriveEvaluation {
     let setup = DriveSetup::new(scene, drive);
-    let keep = kept_rows(scene, &setup);
+    let (keep, table) = (kept_rows(scene, &setup), row_ratings(scene, drive));
     let mut kept: Kept = Default::default();
     for range in &keep {
         let sink = &mut drive_records_csv(drive, std::io::sink());
-        let (rows, validity, balanced) =
-            stream_rows(&setup, (scene, drive, &keep), (range.clone(), sink), false, &crate::progress::Quiet)
-                .expect("a sink takes every row")
-                .0;
+        let of = (scene, drive, &keep[..], table.as_ref());
+        let (rows, validity, balanced) = stream_rows(&setup, of, (range.clone(), sink), false, &crate::progress::Quiet)
+            .expect("a sink takes every row")
+            .0;
         kept.0.extend(rows);
         kept.1.extend(validity);
         kept.2.extend(balanced);
@@ -118,6 +119,12 @@ fn kept_rows(scene: &Scene, setup: &DriveSetup) -> Vec<std::ops::Range<usize>> {
     super::plan::drive_kept_rows((rows, per_point), DETAIL_ROWS, &scene.operating.detail_points)
 }
 
+/// Where the drive's rows carry their balance (`SceneDrive::balance_rows`): the table its speeds'
+/// ratings are located in once, for every range of rows a run streams; None otherwise.
+fn row_ratings(scene: &Scene, drive: &SceneDrive) -> Option<super::thermal::RatingTable> {
+    (drive.balance_rows && scene.housing.is_some()).then(|| super::thermal::RatingTable::new(scene))
+}
+
 /// Rows of the operating points: points × laws × formulations.
 fn row_count(scene: &Scene, setup: &DriveSetup) -> usize {
     scene.operating.count() * setup.rows_per_point()
@@ -128,11 +135,12 @@ fn row_count(scene: &Scene, setup: &DriveSetup) -> usize {
 type Kept = (Vec<DriveRow>, Vec<Vec<super::laws::ValiditySummary>>, Vec<super::drive_thermal::DriveBalanceRow>);
 
 /// Rows `range` of the operating points in blocks, each written to `records` (after the header,
-/// when `header`) and tallied; those in `keep` ([`kept_rows`]) kept with their validity. After each block
+/// when `header`) and tallied; those in `keep` ([`kept_rows`]) kept with their validity and, with
+/// a `table` of ratings ([`row_ratings`]), every row balanced. After each block
 /// `progress` advances; where it is cancelled the rows stop with an `Interrupted` error.
 fn stream_rows(
     setup: &DriveSetup,
-    (scene, drive, keep): (&Scene, &SceneDrive, &[std::ops::Range<usize>]),
+    (scene, drive, keep, table): (&Scene, &SceneDrive, &[std::ops::Range<usize>], Option<&super::thermal::RatingTable>),
     (range, records): (std::ops::Range<usize>, &mut dyn DriveRecordSink),
     header: bool,
     progress: &dyn Progress,
@@ -149,8 +157,7 @@ fn stream_rows(
     let mut validity = Vec::new();
     let mut balanced = Vec::new();
     // Every row's balance, when the drive's rows carry theirs; its speeds' ratings located once.
-    let table = super::thermal::RatingTable::new(scene);
-    let heat = scene.housing.as_ref().filter(|_| drive.balance_rows).map(|h| (h, &table));
+    let heat = scene.housing.as_ref().zip(table);
     for start in range.clone().step_by(BLOCK) {
         use rayon::prelude::*;
         let block = setup.grid_rows(&torques, &speeds, drive.layout.operating, start..(start + BLOCK).min(range.end));
