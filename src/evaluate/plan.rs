@@ -173,7 +173,8 @@ pub(crate) fn drive_kept_rows(
     detail_points: &[usize],
 ) -> Vec<std::ops::Range<usize>> {
     let first = 0..rows.min(first);
-    let points = detail_points.iter().map(|p| (p * per_point).min(rows)..((p + 1) * per_point).min(rows));
+    let points = detail_points_past(first.end, per_point, detail_points)
+        .map(|p| (p * per_point).min(rows)..((p + 1) * per_point).min(rows));
     let mut ranges: Vec<_> = std::iter::once(first).chain(points).filter(|r| !r.is_empty()).collect();
     ranges.sort_by_key(|r| r.start);
     let mut out: Vec<std::ops::Range<usize>> = Vec::new();
@@ -184,6 +185,17 @@ pub(crate) fn drive_kept_rows(
         }
     }
     out
+}
+
+/// The detail points (0-based, in the order given) with a row past the first `first` rows, when
+/// each point has `per_point` rows (laws × formulations, point-major): those a drive's report
+/// shows beyond its first rows ([`drive_kept_rows`], the report's `ShownRows`).
+pub(crate) fn detail_points_past(
+    first: usize,
+    per_point: usize,
+    detail_points: &[usize],
+) -> impl Iterator<Item = usize> + '_ {
+    detail_points.iter().copied().filter(move |p| (p + 1) * per_point > first)
 }
 
 #[cfg(test)]

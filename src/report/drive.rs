@@ -15,8 +15,8 @@ pub use super::drive_report::DriveReport;
 fn shown_rows(scene: &Scene, rows: usize) -> Option<super::drive_report::ShownRows> {
     let first = rows.min(crate::evaluate::drive::DETAIL_ROWS);
     let per_point = rows.checked_div(scene.operating.count())?;
-    let detail_points: Vec<usize> =
-        scene.operating.detail_points.iter().filter(|p| (*p + 1) * per_point > first).map(|p| p + 1).collect();
+    let past = crate::evaluate::plan::detail_points_past(first, per_point, &scene.operating.detail_points);
+    let detail_points: Vec<usize> = past.map(|p| p + 1).collect();
     (!detail_points.is_empty()).then_some(super::drive_report::ShownRows { first, detail_points })
 }
 
