@@ -114,7 +114,20 @@ pub(super) fn detail_points(f: &Fields, count: usize, errors: &mut Vec<Diagnosti
             errors.push(bad(format!("`detail_points` names point {x}; the sweep has points 1 to {count}")));
             None
         }
-        None => Some(numbers.iter().map(|x| *x as usize - 1).collect()),
+        None => {
+            if let Some(x) = numbers.iter().enumerate().find_map(|(i, x)| numbers[..i].contains(x).then_some(x)) {
+                errors.push(
+                    Diagnostic::new(
+                        DiagnosticKind::DuplicateKey,
+                        value.span,
+                        format!("`detail_points` names point {x} twice"),
+                    )
+                    .hint("name each point once"),
+                );
+                return None;
+            }
+            Some(numbers.iter().map(|x| *x as usize - 1).collect())
+        }
     }
 }
 

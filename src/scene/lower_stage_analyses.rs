@@ -38,8 +38,14 @@ pub(super) struct StageAnalysesInputs<'a> {
 /// dynamic models), and the lubricant its pressure–viscosity coefficient for the film.
 pub(super) fn check_stage_analyses(i: &StageAnalysesInputs, errors: &mut Vec<Diagnostic>) {
     let a = i.analyses;
-    for (name, span) in a.stages.iter().flatten() {
-        if !i.stages.iter().any(|s| &s.name.text == name) {
+    let listed = a.stages.as_deref().unwrap_or_default();
+    for (k, (name, span)) in listed.iter().enumerate() {
+        if listed[..k].iter().any(|(n, _)| n == name) {
+            errors.push(
+                Diagnostic::new(DiagnosticKind::DuplicateKey, *span, format!("`stages` names stage `{name}` twice"))
+                    .hint("name each stage once"),
+            );
+        } else if !i.stages.iter().any(|s| &s.name.text == name) {
             let names: Vec<String> = i.stages.iter().map(|s| format!("`{}`", s.name.text)).collect();
             errors.push(
                 Diagnostic::new(DiagnosticKind::UnknownName, *span, format!("no stage is named `{name}`"))
