@@ -258,6 +258,15 @@ impl<T> Sweep<T> {
     pub fn label(&self, i: usize) -> String {
         format!("{} {}", self.written_values[i], crate::quantity::shown_written_unit(&self.unit))
     }
+
+    /// Value `i` of an operating sweep as its points' labels show it (`2309.09 rpm`: a computed
+    /// value to the digits that tell it from the values beside it, `crate::quantity::label_number`).
+    pub fn point_label(&self, i: usize) -> String {
+        let w = &self.written_values;
+        let neighbours = [i.checked_sub(1).map(|j| w[j]), w.get(i + 1).copied()];
+        let n: Vec<f64> = neighbours.into_iter().flatten().collect();
+        format!("{} {}", crate::quantity::label_number(w[i], &n), crate::quantity::shown_written_unit(&self.unit))
+    }
 }
 
 #[derive(Debug, Clone, serde::Serialize)]

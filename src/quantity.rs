@@ -170,6 +170,48 @@ pub(crate) fn shown_written_unit(unit: &str) -> String {
     unit.replace('*', "·")
 }
 
+/// A value of an operating sweep as a point's label shows it: as written where it has at most 9
+/// significant digits (every value a person types), else to the fewest significant digits from 6
+/// on that tell it from `neighbours` (the sweep's values beside it): a range's computed
+/// 2309.090909090909 rpm is `2309.09`, and 1000.0001 beside 1000.0002 in a dense range stays apart.
+/// The value itself (records, report.json's numbers) is never rounded.
+pub(crate) fn label_number(x: f64, neighbours: &[f64]) -> String {
+    let full = x.to_string();
+    let digits = full.trim_start_matches('-').replace('.', "");
+    if digits.trim_start_matches('0').trim_end_matches('0').len() <= 9 {
+        return full;
+    }
+    let rounded = |v: f64, d: usize| -> String {
+        format!("{v:.prec$e}", prec = d - 1).parse::<f64>().map_or_else(|_| v.to_string(), |r| (r + 0.0).to_string())
+    };
+    (6..=17)
+        .map(|d| rounded(x, d))
+        .zip(6..)
+        .find(|(s, d)| neighbours.iter().all(|n| *n == x || rounded(*n, *d) != *s))
+        .map_or(full, |(s, _)| s)
+}
+
+#[cfg(test)]
+mod label_number_tests {
+    use super::label_number;
+
+    /// As written up to 9 significant digits; a computed value to 6, more where a neighbour would
+    /// read the same; a value equal to its neighbour is itself.
+    #[test]
+    fn a_label_shows_what_tells_the_point_apart() {
+        assert_eq!(label_number(200.0, &[]), "200");
+        assert_eq!(label_number(-0.05, &[]), "-0.05");
+        assert_eq!(label_number(123456.789, &[]), "123456.789");
+        assert_eq!(label_number(2309.090909090909, &[1781.8181818181818, 2836.3636363636365]), "2309.09");
+        assert_eq!(label_number(87.76372581794031, &[]), "87.7637");
+        assert_eq!(label_number(0.1 + 0.2, &[]), "0.3");
+        // A range of 1000..1001 count 10001 (step 1e-4): 1000.0001000000001 beside 1000 and 1000.0002.
+        let (a, b, c) = (1000.0, 1000.0 + 1e-4 + 1e-13, 1000.0 + 2e-4);
+        assert_eq!(label_number(b, &[a, c]), "1000.0001");
+        assert_eq!(label_number(1000.0, &[1000.0]), "1000");
+    }
+}
+
 #[cfg(test)]
 mod shown_unit_tests {
     #[test]

@@ -30,13 +30,7 @@ pub fn case_at(op: &crate::model::Operating, k: usize) -> Case {
         torque_index: ti,
         speed_index: ni,
         state: state_at(op, k),
-        label: format!(
-            "{} {}, {} {}",
-            op.pinion_torque.written_values[ti],
-            crate::quantity::shown_written_unit(&op.pinion_torque.unit),
-            op.pinion_speed.written_values[ni],
-            crate::quantity::shown_written_unit(&op.pinion_speed.unit)
-        ),
+        label: format!("{}, {}", op.pinion_torque.point_label(ti), op.pinion_speed.point_label(ni)),
     }
 }
 

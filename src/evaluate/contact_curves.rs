@@ -33,14 +33,14 @@ pub(super) fn contact_curves(problem: &MeshProblem, eval: &Setup) -> ContactCurv
     let sliding_velocity = pick(op.pinion_speed.values.len())
         .into_iter()
         .map(|i| {
-            let label = format!("{} {}", op.pinion_speed.written_values[i], op.pinion_speed.unit);
+            let label = op.pinion_speed.point_label(i);
             (label, at(torque0, op.pinion_speed.values[i].value).iter().map(|c| c.sliding_velocity).collect())
         })
         .collect();
     let hertz_pressure = pick(op.pinion_torque.values.len())
         .into_iter()
         .map(|i| {
-            let label = format!("{} {}", op.pinion_torque.written_values[i], op.pinion_torque.unit);
+            let label = op.pinion_torque.point_label(i);
             (label, at(op.pinion_torque.values[i].value, speed0).iter().map(|c| c.hertz_pressure).collect())
         })
         .collect();

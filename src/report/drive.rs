@@ -214,13 +214,11 @@ pub(crate) fn point_words(scene: &Scene, drive: &SceneDrive, torque_index: usize
     // A scene of one pair gives its torque at the pinion gear (evaluate/drive_setup.rs).
     let torque_at = if drive.one_pair && ends.torque_at == ShaftEnd::Input { "pinion" } else { end(ends.torque_at) };
     format!(
-        "T_{} = {} {}, n_{} = {} {}",
+        "T_{} = {}, n_{} = {}",
         torque_at,
-        op.pinion_torque.written_values[torque_index],
-        crate::quantity::shown_written_unit(&op.pinion_torque.unit),
+        op.pinion_torque.point_label(torque_index),
         end(ends.speed_at),
-        op.pinion_speed.written_values[speed_index],
-        crate::quantity::shown_written_unit(&op.pinion_speed.unit)
+        op.pinion_speed.point_label(speed_index)
     )
 }
 
