@@ -24,7 +24,9 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         fixed(r.overall_ratio, 4),
         r.shafts.iter().find(|s| s.role == "input").map_or("", |s| &s.name),
         r.shafts.iter().find(|s| s.role == "output").map_or("", |s| &s.name),
-        r.torque_at.name(),
+        // A scene of one pair gives its torque at the pinion gear (the input's is that plus its
+        // shaft's own losses).
+        if r.one_pair && r.torque_at == crate::drive::ShaftEnd::Input { "pinion gear's" } else { r.torque_at.name() },
         r.speed_at.name(),
         if r.laws.is_empty() { "none (each mesh passes its power whole)".to_string() } else { r.laws.join(", ") }
     );
