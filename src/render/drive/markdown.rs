@@ -174,7 +174,7 @@ fn headline(out: &mut String, r: &DriveReport) {
     if let (Some((lo, lo_at)), Some((hi, hi_at)), true) = (&r.least_efficiency, &r.greatest_efficiency, r.rows > 1) {
         md!(
             out,
-            "\nOver all {} rows: η from {} % ({lo_at}) to {} % ({hi_at}){}.",
+            "\nOver all {} rows: η from {} % at {lo_at} to {} % at {hi_at}{}.",
             r.rows,
             fixed(100.0 * lo, 4),
             fixed(100.0 * hi, 4),
