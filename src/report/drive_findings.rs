@@ -119,7 +119,9 @@ pub(super) fn findings(
 }
 
 /// The laws' notes on each stage at the points shown (an input read at a bound of its range, e.g.
-/// ISO/TR 14179-2's F_bt/b raised to 150 N/mm), one note a stage and kind, naming its points.
+/// ISO/TR 14179-2's F_bt/b raised to 150 N/mm), one note a stage and kind: its figures the first
+/// row's that has it (said where it has figures), then the operating points (of those shown) where
+/// it holds, under each law.
 pub(super) fn stage_notes(
     drive: &SceneDrive,
     rows: &[crate::evaluate::drive::DriveRow],
@@ -127,31 +129,55 @@ pub(super) fn stage_notes(
     points: &[DrivePointReport],
 ) -> Vec<Finding> {
     use crate::evaluate::drive_cycle::note_kind;
-    let mut groups: Vec<(usize, String, String, Vec<String>)> = Vec::new();
+    // (stage, kind, the first note, [(law, [point labels])]).
+    type Group<'a> = (usize, String, String, Vec<(&'a str, Vec<&'a str>)>);
+    let mut groups: Vec<Group> = Vec::new();
     for ((_, stages), p) in rows.iter().zip(validity).zip(points) {
         for (k, v) in stages.iter().enumerate() {
             for note in &v.notes {
                 let kind = note_kind(note);
-                let label = format!("{} ({})", p.label, p.law);
-                match groups.iter_mut().find(|g| g.0 == k && g.1 == kind) {
-                    Some(g) if !g.3.contains(&label) => g.3.push(label),
-                    Some(_) => {}
-                    None => groups.push((k, kind, note.clone(), vec![label])),
+                let g = match groups.iter().position(|g| g.0 == k && g.1 == kind) {
+                    Some(i) => &mut groups[i],
+                    None => {
+                        groups.push((k, kind, note.clone(), Vec::new()));
+                        groups.last_mut().expect("just pushed")
+                    }
+                };
+                let law = match g.3.iter().position(|(l, _)| *l == p.law) {
+                    Some(i) => &mut g.3[i],
+                    None => {
+                        g.3.push((&p.law, Vec::new()));
+                        g.3.last_mut().expect("just pushed")
+                    }
+                };
+                if !law.1.contains(&p.label.as_str()) {
+                    law.1.push(&p.label);
                 }
             }
         }
     }
+    let mut shown: Vec<&str> = points.iter().map(|p| p.label.as_str()).collect();
+    shown.sort_unstable();
+    shown.dedup();
     groups
         .into_iter()
-        .map(|(k, _, note, labels)| Finding {
-            severity: Severity::Note,
-            message: format!(
-                "stage `{}`: {note} (here, at {} of the {} points shown: {})",
-                drive.layout.stages[k].name,
-                labels.len(),
-                points.len(),
-                labels.join("; ")
-            ),
+        .map(|(k, _, note, laws)| {
+            let mut at: Vec<&str> = laws.iter().flat_map(|(_, l)| l.iter().copied()).collect();
+            at.sort_unstable();
+            at.dedup();
+            let under: Vec<String> = laws.iter().map(|(law, l)| format!("under {law}: {}", l.join("; "))).collect();
+            // The kind groups notes that differ in their figures only: those shown are the first's.
+            let figures = if note.chars().any(|c| c.is_ascii_digit()) { "figures at the first; " } else { "" };
+            Finding {
+                severity: Severity::Note,
+                message: format!(
+                    "stage `{}`: {note} ({figures}at {} of the {} operating points shown, {})",
+                    drive.layout.stages[k].name,
+                    at.len(),
+                    shown.len(),
+                    under.join("; ")
+                ),
+            }
         })
         .collect()
 }

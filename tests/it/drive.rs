@@ -797,3 +797,29 @@ fn a_bearing_beyond_its_rating_is_found_past_the_kept_rows() {
     assert_eq!(all, warnings("[110]"));
     assert_eq!(warnings("[10, 20, 30, 40, 50, 60]"), Vec::<String>::new());
 }
+
+/// A law's note on a stage counts and names operating points, not rows: the helical gearbox under
+/// two laws and both formulations (4 points, 16 rows, the first 12 shown: 3 points) has ISO/TR
+/// 14179-2's F_bt/b below 150 N/mm at its 100 N·m points only, and the note says so once, under
+/// that law, each point once, with the first row's figures said to be the first's.
+#[test]
+fn a_stages_law_note_counts_operating_points() {
+    let text = std::fs::read_to_string(crate::root().join("specs/helical_gearbox.gear")).unwrap();
+    let text = text
+        .replace("iso_14179_2\n", "iso_14179_2\n        coulomb(mu = 0.05)\n")
+        .replace("formulations = [external]", "formulations = [external, internal]");
+    let scene = crate::scene_from_text(&text);
+    let drive = scene.drive.as_ref().unwrap();
+    let report = gearloss::report::drive::build_drive_report(&scene, drive, &evaluate_drive(&scene, drive));
+    assert_eq!(report.rows, 16);
+    let notes = crate::messages_with(report.findings, "F_bt/b");
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    assert!(
+        notes[0].ends_with(
+            "(figures at the first; at 2 of the 3 operating points shown, under iso_14179_2: \
+             T_pinion = 100 N·m, n_in = 1000 rpm; T_pinion = 100 N·m, n_in = 3000 rpm)"
+        ),
+        "{}",
+        notes[0]
+    );
+}
