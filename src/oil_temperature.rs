@@ -67,8 +67,15 @@ impl Lubricant {
         use uom::si::mass_density::kilogram_per_cubic_meter;
         use uom::si::thermodynamic_temperature::kelvin;
         let at = oil.at(theta.value.get::<kelvin>());
-        let written =
-            |x: f64, unit: &str, scale: f64| if write { format!("{:.6} {unit}", x * scale) } else { String::new() };
+        // Not written by the user: read from the oil's data at θ, and said so beside the value.
+        let at_theta = format!("the oil's at {}", theta.written);
+        let written = |x: f64, unit: &str, scale: f64| {
+            if write {
+                format!("{:.6} {unit} ({at_theta})", x * scale)
+            } else {
+                String::new()
+            }
+        };
         let alpha_from_oil = alpha.is_none() && at.pressure_viscosity.is_some();
         let alpha = alpha.or_else(|| {
             at.pressure_viscosity.map(|a| Given {
@@ -77,7 +84,11 @@ impl Lubricant {
                     units: std::marker::PhantomData,
                     value: a,
                 },
-                written: if write { format!("{a:.4e} 1/Pa") } else { String::new() },
+                written: if write {
+                    format!("{a:.4e} 1/Pa (the base oil's at {})", theta.written)
+                } else {
+                    String::new()
+                },
                 span,
             })
         });
