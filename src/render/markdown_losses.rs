@@ -63,7 +63,7 @@ pub(crate) fn headline_body(r: &Report) -> String {
     );
     super::headline::efficiency(&mut out, r);
     if !r.efficiency.is_empty() {
-        md!(out, "Mesh losses only: the scene describes no gearbox (lubrication, bearings, seals).\n");
+        md!(out, "Mesh losses only: the losses around the mesh (gears without load, bearings, seals) are the drive's, in the report whose `stages/` folder holds this one.\n");
     }
     if let Some(d) = &r.dynamics {
         super::headline::dynamics(&mut out, d, r.units());
