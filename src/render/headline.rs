@@ -4,7 +4,7 @@
 //! are its one-stage drive's), and the dynamics (per formulation: stability verdict at the operating points,
 //! unstable speed ranges of the map, peak dynamic factor and where, DTE peak-to-peak).
 
-use super::markup::{md, put};
+use super::markup::{counted, md, put};
 
 use super::table::{fixed, header, law_words, row, sig};
 use crate::report::dynamics::{DynamicsReport, FormulationReport};
@@ -130,7 +130,7 @@ pub(crate) fn dynamics(out: &mut String, d: &DynamicsReport, u: crate::report::u
         }
         return;
     };
-    md!(out, "Dynamics ({} model, {} operating point(s)):\n", d.model, d.points.len());
+    md!(out, "Dynamics ({} model, {}):\n", d.model, counted(d.points.len(), "operating point", "operating points"));
     for (i, f) in first.formulations.iter().enumerate() {
         fn nth(p: &crate::report::dynamics::DynamicsPointReport, i: usize) -> Option<&FormulationReport> {
             p.formulations.get(i)

@@ -1,7 +1,7 @@
 //! report.md's headline (the answer first), the lubricant at temperature, the loss budget and the
 //! efficiency map.
 
-use super::markup::md;
+use super::markup::{counted, md};
 
 use super::table::{fixed, header, row};
 use crate::report::{Report, Severity};
@@ -13,7 +13,12 @@ pub(crate) fn headline(r: &Report) -> String {
     out.push_str(&headline_body(r));
     let warnings = r.findings.iter().filter(|f| f.severity == Severity::Warning).count();
     let notes = r.findings.len() - warnings;
-    md!(out, "Findings: {warnings} warning(s), {notes} note(s) (listed at the end).\n");
+    md!(
+        out,
+        "Findings: {}, {} (listed at the end).\n",
+        counted(warnings, "warning", "warnings"),
+        counted(notes, "note", "notes")
+    );
     out
 }
 
@@ -49,7 +54,7 @@ pub(crate) fn headline_body(r: &Report) -> String {
     };
     md!(
         out,
-        "{kind}, z = {}/{}, {}, b = {}{as_written}{oil}; {} operating point(s).\n",
+        "{kind}, z = {}/{}, {}, b = {}{as_written}{oil}; {}.\n",
         r.geometry.pinion.teeth,
         r.geometry.wheel.teeth,
         if u.is_si() {
@@ -59,7 +64,11 @@ pub(crate) fn headline_body(r: &Report) -> String {
             format!("{p} = {} 1/in", fixed(crate::report::units::INCH / g.module.si(), 3))
         },
         u.length().with(g.face_width.si(), 2),
-        r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
+        counted(
+            r.operating_points.len().max(r.records.as_ref().map_or(0, |x| x.operating_points)),
+            "operating point",
+            "operating points"
+        ),
     );
     super::headline::efficiency(&mut out, r);
     if !r.efficiency.is_empty() {

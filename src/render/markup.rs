@@ -55,6 +55,22 @@ macro_rules! put {
 
 pub(crate) use {md, put};
 
+/// `n` things in words, singular or plural: `counted(1, "stage", "stages")` is "1 stage",
+/// `counted(0, "note", "notes")` "0 notes".
+pub(crate) fn counted(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+#[cfg(test)]
+mod counted_tests {
+    #[test]
+    fn one_is_singular_every_other_count_plural() {
+        assert_eq!(super::counted(1, "stage", "stages"), "1 stage");
+        assert_eq!(super::counted(0, "note", "notes"), "0 notes");
+        assert_eq!(super::counted(2, "operating point", "operating points"), "2 operating points");
+    }
+}
+
 #[cfg(test)]
 mod tests {
     /// A line, an empty line and open text append exactly what `writeln!`/`write!` would.

@@ -1,6 +1,7 @@
 //! What `gearloss run` prints when it is done: the answer (the report's headline), how many
 //! warnings and notes the report has with the first warnings, and where the report is.
 
+use super::markup::counted;
 use crate::report::{Report, Severity};
 
 /// Warnings printed in full; the rest are counted.
@@ -16,12 +17,12 @@ pub fn run_summary(report: &Report, label: &str) -> String {
     out
 }
 
-/// "N warning(s), M note(s)" and the first warnings, with how many more report.md holds.
+/// "N warnings, M notes" and the first warnings, with how many more report.md holds.
 fn warnings_tail(out: &mut String, findings: &[crate::report::Finding]) {
     let warnings: Vec<&str> =
         findings.iter().filter(|f| f.severity == Severity::Warning).map(|f| f.message.as_str()).collect();
     let notes = findings.len() - warnings.len();
-    out.push_str(&format!("{} warning(s), {notes} note(s)", warnings.len()));
+    out.push_str(&format!("{}, {}", counted(warnings.len(), "warning", "warnings"), counted(notes, "note", "notes")));
     if warnings.is_empty() {
         out.push_str(".\n");
         return;
@@ -69,8 +70,8 @@ pub fn drive_summary(report: &crate::report::drive::DriveReport, label: &str) ->
     }
     if report.rows > report.points.len() {
         out.push_str(&format!(
-            "  … {} more row(s) in drive_records.csv (η {} over all {}: report.md, \"Headline\")\n",
-            report.rows - report.points.len(),
+            "  … {} more in drive_records.csv (η {} over all {}: report.md, \"Headline\")\n",
+            counted(report.rows - report.points.len(), "row", "rows"),
             match (&report.least_efficiency, &report.greatest_efficiency) {
                 (Some((lo, _)), Some((hi, _))) => format!("from {:.4} % to {:.4} %", 100.0 * lo, 100.0 * hi),
                 _ => "ranges".to_string(),

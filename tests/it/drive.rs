@@ -511,8 +511,10 @@ fn a_drive_at_several_oil_temperatures() {
         let findings = report["findings"].as_array().unwrap();
         let warnings = findings.iter().filter(|f| f["severity"] == "warning").count();
         let line = format!(
-            "[{t} degC](oil_temperature_{t}degC/report.md): {warnings} warning(s), {} note(s)",
-            findings.len() - warnings
+            "[{t} degC](oil_temperature_{t}degC/report.md): {warnings} warning{}, {} note{}",
+            if warnings == 1 { "" } else { "s" },
+            findings.len() - warnings,
+            if findings.len() - warnings == 1 { "" } else { "s" }
         );
         assert!(file("report.md").contains(&line), "{line}");
     }

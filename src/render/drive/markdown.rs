@@ -3,7 +3,7 @@
 //! shafts, bearing places with their loads, the mesh forces the statics read) and the model.
 
 use crate::losses::parts::LossColumn;
-use crate::render::markup::md;
+use crate::render::markup::{counted, md};
 use crate::render::table::{fixed, header, row};
 use crate::report::drive::DriveReport;
 use crate::report::thermal;
@@ -18,8 +18,8 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
     md!(out, "# {}\n", r.title);
     md!(
         out,
-        "A drive of {} stage(s) on {} shafts, overall ratio ω_in/ω_out = {} ({} → {}); operating points given as the {} torque and the {} speed. Laws: {}. README, \"Several stages\", states the model; every number below comes with the values it rests on.\n",
-        r.stages.len(),
+        "A drive of {} on {} shafts, overall ratio ω_in/ω_out = {} ({} → {}); operating points given as the {} torque and the {} speed. Laws: {}. README, \"Several stages\", states the model; every number below comes with the values it rests on.\n",
+        counted(r.stages.len(), "stage", "stages"),
         r.shafts.len(),
         fixed(r.overall_ratio, 4),
         r.shafts.iter().find(|s| s.role == "input").map_or("", |s| &s.name),
@@ -59,8 +59,8 @@ pub(crate) fn render_drive_markdown(r: &DriveReport) -> String {
         md!(out, "![the loss budget of each point, part by part]({})\n", super::loss_budget::FILE);
         md!(
             out,
-            "The loss budget of the {} row(s) above under the {} formulation, one bar a point and law: the meshes, the gears' no-load losses, the bearings' and the seals'.\n",
-            rows.len(),
+            "The loss budget of the {} above under the {} formulation, one bar a point and law: the meshes, the gears' no-load losses, the bearings' and the seals'.\n",
+            counted(rows.len(), "row", "rows"),
             rows[0].formulation
         );
     }

@@ -5,7 +5,7 @@
 //! folder.
 
 use crate::evaluate::plan::evenly;
-use crate::render::markup::md;
+use crate::render::markup::{counted, md};
 use crate::render::svg::{figure_with_legend, Panel};
 use crate::render::table::{fixed, header, row};
 use crate::report::drive_oil_sweep::DriveOilSweepReport;
@@ -28,7 +28,14 @@ pub(crate) fn render_drive_oil_sweep(r: &DriveOilSweepReport) -> Result<Vec<(Str
         r.runs.len()
     );
     for run in &r.runs {
-        md!(out, "- [{}]({}/report.md): {} warning(s), {} note(s)", run.label, run.folder, run.warnings, run.notes);
+        md!(
+            out,
+            "- [{}]({}/report.md): {}, {}",
+            run.label,
+            run.folder,
+            counted(run.warnings, "warning", "warnings"),
+            counted(run.notes, "note", "notes")
+        );
     }
     let runs: Vec<_> = r.runs.iter().map(|x| (x.label.as_str(), x.lubricant.as_ref())).collect();
     lubricant_table(&mut out, &runs, Units::of_system(r.unit_system));
