@@ -172,18 +172,17 @@ pub(crate) fn shown_written_unit(unit: &str) -> String {
 
 /// A value of an operating sweep as a point's label shows it: as written where it has at most 9
 /// significant digits (every value a person types), else to the fewest significant digits from 6
-/// on that tell it from `neighbours` (the sweep's values beside it): a range's computed
-/// 2309.090909090909 rpm is `2309.09`, and 1000.0001 beside 1000.0002 in a dense range stays apart.
-/// The value itself (records, report.json's numbers) is never rounded.
+/// on that tell it from `neighbours` (the sweep's values beside it), rounded as the inputs table
+/// rounds (`sig_digits`): a range's computed 2309.090909090909 rpm is `2309.09`, and 1000.0001
+/// beside 1000.0002 in a dense range stays apart. The value itself (records, report.json's
+/// numbers) is never rounded.
 pub(crate) fn label_number(x: f64, neighbours: &[f64]) -> String {
     let full = x.to_string();
     let digits = full.trim_start_matches('-').replace('.', "");
     if digits.trim_start_matches('0').trim_end_matches('0').len() <= 9 {
         return full;
     }
-    let rounded = |v: f64, d: usize| -> String {
-        format!("{v:.prec$e}", prec = d - 1).parse::<f64>().map_or_else(|_| v.to_string(), |r| (r + 0.0).to_string())
-    };
+    let rounded = crate::numerics::rounding::sig_digits;
     (6..=17)
         .map(|d| rounded(x, d))
         .zip(6..)

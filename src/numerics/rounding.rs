@@ -39,13 +39,20 @@ impl std::fmt::Write for StackText {
 
 /// Six significant digits, for the inputs table (as written and SI columns).
 pub(crate) fn sig(x: f64) -> String {
+    sig_digits(x, 6)
+}
+
+/// `digits` significant digits (1 or more), trailing zeros dropped; plain from 1e-3 to below 1e6,
+/// else with an exponent (`1.5e-8`).
+pub(crate) fn sig_digits(x: f64, digits: usize) -> String {
     if x == 0.0 {
         return "0".into();
     }
-    let s = format!("{x:.5e}");
+    let last = digits.max(1) - 1;
+    let s = format!("{x:.last$e}");
     let v: f64 = s.parse().unwrap_or(x);
     if (1e-3..1e6).contains(&v.abs()) {
-        let decimals = (5 - v.abs().log10().floor() as i32).max(0) as usize;
+        let decimals = (last as i32 - v.abs().log10().floor() as i32).max(0) as usize;
         let t = format!("{v:.decimals$}");
         if t.contains('.') {
             t.trim_end_matches('0').trim_end_matches('.').to_string()
