@@ -1,7 +1,7 @@
 //! report.md: the sweep as a whole — where the record files are and the extremes over every
 //! operating point.
 
-use super::markup::md;
+use super::markup::{counted, md};
 
 use super::table::{fixed, header, row, sig};
 use crate::report::Report;
@@ -10,23 +10,21 @@ use crate::report::Report;
 pub(crate) fn sweep_summary(out: &mut String, r: &Report) {
     let Some(rec) = &r.records else { return };
     md!(out, "## Records and extremes over the sweep\n");
-    let points = |n: usize| format!("{n} operating point{}", if n == 1 { "" } else { "s" });
     md!(
         out,
-        "Every operating point × law × formulation has one row in `{}` and `{}`: {} row{} over {}, SI units named in the column headers. {} reported in full above.\n",
+        "Every operating point × law × formulation has one row in `{}` and `{}`: {} over {}, SI units named in the column headers. {} reported in full above.\n",
         rec.csv,
         rec.jsonl,
-        rec.rows,
-        if rec.rows == 1 { "" } else { "s" },
-        points(rec.operating_points),
+        counted(rec.rows, "row", "rows"),
+        counted(rec.operating_points, "operating point", "operating points"),
         if rec.reported_in_full >= rec.operating_points { "Every point is".to_string() } else { format!("{} of them are", rec.reported_in_full) }
     );
     let te = r.transmission_error.len();
     if te > 0 {
         md!(
             out,
-            "Before them, one `transmission_error` row per torque of the static transmission error ({te} row{}: point 0, speed 0; `ste_peak_to_peak_m`, `ste_mean_m`, `ste_mean_error_m`).\n",
-            if te == 1 { "" } else { "s" }
+            "Before them, one `transmission_error` row per torque of the static transmission error ({}: point 0, speed 0; `ste_peak_to_peak_m`, `ste_mean_m`, `ste_mean_error_m`).\n",
+            counted(te, "row", "rows")
         );
     }
     let Some(s) = &r.sweep else { return };
